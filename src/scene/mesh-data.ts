@@ -1,0 +1,16 @@
+/**
+ * Triangle meshes for `shape: "mesh"` objects. The models ship as OBJ files in
+ * assets/models; each platform loads the text its own way (fetch in the browser,
+ * the file system in Node) and `parseObj` turns it into this plain, transferable form.
+ */
+export interface MeshData {
+  /** xyz per vertex, in the model's own unit space (centred, about 1 m tall). */
+  positions: Float32Array;
+  /** Per-vertex normals for smooth shading, or null for flat (face) normals. */
+  normals: Float32Array | null;
+  /** Three vertex indices per triangle. */
+  indices: Uint32Array;
+}
+
+/** Models by asset name, as the tracer receives them. */
+export type MeshLibrary = ReadonlyMap<string, MeshData>;

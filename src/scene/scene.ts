@@ -1,0 +1,120 @@
+/**
+ * The scene file (spec/scene-and-tracer.md §1): one plain, serializable object that the
+ * view, the tracer and the quest engine all read. Units are metres, angles degrees,
+ * colours linear RGB in 0..1. Defaults live in `scene-defaults.ts`; validation in
+ * `scene-schema.ts` (which is checked against these types at compile time).
+ */
+
+export type Vec3 = [number, number, number];
+export type Color = [number, number, number];
+
+/** The ray tracer's camera and its small screen of pixels (the rays that are visualized). */
+export interface Camera {
+  position: Vec3;
+  /** The point the camera looks at; `up` is +Y. */
+  target: Vec3;
+  /** Vertical field of view in degrees. */
+  fov: number;
+  /** Columns × rows of the visualized screen (1..64 per side; the lab offers 1..16). */
+  pixels: [number, number];
+  /** Distance from the eye to the drawn screen, in metres (only for drawing). */
+  screenDistance: number;
+}
+
+/** Where the s×s sub-pixel samples go: a regular grid (default), jittered cells or uniform random. */
+export type SamplePattern = 'grid' | 'jittered' | 'random';
+
+export interface RenderSettings {
+  shadows: boolean;
+  /** Deepest reflection/refraction recursion; primary rays are depth 0. */
+  maxDepth: number;
+  background: Color;
+  /** s: s×s samples per pixel. */
+  supersampling: number;
+  samplePattern: SamplePattern;
+  /** Width × height of the full rendered image. */
+  imageSize: [number, number];
+  /** Ordered (Bayer) dithering before 8-bit quantization; off by default. */
+  dithering: boolean;
+  /** A switch per light type (the VRT ray tracer panel's toggles). */
+  lightTypes: { point: boolean; spot: boolean; area: boolean };
+}
+
+export interface Material {
+  color: Color;
+  ambient: number;
+  diffuse: number;
+  specular: number;
+  shininess: number;
+  transparent: boolean;
+  refractiveIndex: number;
+}
+
+export type ShapeKind = 'sphere' | 'box' | 'cylinder' | 'plane' | 'mesh';
+
+export interface SceneObject {
+  /** Unique in the scene; ray trees and goals refer to objects by id. */
+  id: string;
+  /** A friendly name for the UI; defaults to the id. */
+  name?: string;
+  shape: ShapeKind;
+  /** The model from assets/models when `shape` is "mesh". */
+  mesh?: string;
+  position: Vec3;
+  /** Euler angles XYZ in degrees. */
+  rotation: Vec3;
+  scale: Vec3;
+  material: Material;
+}
+
+interface LightCommon {
+  id: string;
+  name?: string;
+  position: Vec3;
+  color: Color;
+  intensity: number;
+  ambient: number;
+  diffuse: number;
+  specular: number;
+  /** 1 / (0.04 + 0.1·d + 0.06·d²) when on, for every light type. */
+  distanceAttenuation: boolean;
+}
+
+export interface PointLight extends LightCommon {
+  type: 'point';
+}
+
+/** Emits along its local −Y (a ceiling light by default). */
+export interface SpotLight extends LightCommon {
+  type: 'spot';
+  rotation: Vec3;
+  /** Full cone angle in degrees, 1..170. */
+  spotAngle: number;
+  /** p in cos(α)^p. */
+  angleAttenuation: number;
+}
+
+/** Lies in its local XZ plane, lit face toward local −Y, back face black. */
+export interface AreaLight extends LightCommon {
+  type: 'area';
+  rotation: Vec3;
+  /** Width (local X) × depth (local Z) in metres; a disc uses them as its diameters. */
+  size: [number, number];
+  /** n: n×n jittered samples. */
+  samples: number;
+  angleAttenuation: number;
+  shape: 'rectangle' | 'disc';
+}
+
+export type Light = PointLight | SpotLight | AreaLight;
+export type LightType = Light['type'];
+
+export interface Scene {
+  version: 1;
+  /** Shown in the UI and in exported files. */
+  name?: string;
+  camera: Camera;
+  settings: RenderSettings;
+  objects: SceneObject[];
+  lights: Light[];
+}

@@ -1,0 +1,51 @@
+import type { Color, Vec3 } from '../scene/scene.ts';
+
+/** The ray kinds of spec §3, in the order of VRT's legend. */
+export type RayType = 'primary' | 'reflect' | 'refract' | 'shadow' | 'light' | 'area-light' | 'area-shadow';
+
+/** One ray of a pixel's ray tree (spec §3). */
+export interface RayNode {
+  type: RayType;
+  origin: Vec3;
+  /** Unit direction. */
+  direction: Vec3;
+  /** Distance to the hit, to the light, or 10 for a ray that hit nothing. */
+  length: number;
+  hit: boolean;
+  objectId: string | null;
+  lightId: string | null;
+  /** What the ray carries back to its parent (for a light ray: that light's term). */
+  color: Color;
+  /** The ray's share of the pixel colour, 0..1. */
+  contribution: number;
+  children: RayNode[];
+  /** area-light / area-shadow only: the light's four corners (the cone's base). */
+  corners?: [Vec3, Vec3, Vec3, Vec3];
+}
+
+/** The answer to "which rays made this pixel?" (`rt trace`). */
+export interface PixelTrace {
+  pixel: [number, number];
+  color: Color;
+  /** One root per supersample (s² roots). */
+  rays: RayNode[];
+}
+
+/** Ray counts by kind, for `rt render --stats` and the benchmark. */
+export interface RayStats {
+  primary: number;
+  shadow: number;
+  reflect: number;
+  refract: number;
+}
+
+export function emptyRayStats(): RayStats {
+  return { primary: 0, shadow: 0, reflect: 0, refract: 0 };
+}
+
+export function addRayStats(into: RayStats, from: RayStats): void {
+  into.primary += from.primary;
+  into.shadow += from.shadow;
+  into.reflect += from.reflect;
+  into.refract += from.refract;
+}
