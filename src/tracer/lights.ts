@@ -1,0 +1,107 @@
+import { Euler, Quaternion, Vector3 } from 'three';
+import type { Light } from '../scene/scene.ts';
+import type { RandomStream } from './sampler.ts';
+
+const DEG = Math.PI / 180;
+
+/**
+ * A light ready for shading: world-space position and axes, cone cosines, and how many
+ * samples it takes. Point and spot lights take one sample; an area light n×n jittered ones.
+ */
+export class TracerLight {
+  readonly id: string;
+  readonly type: Light['type'];
+  readonly position: Vector3;
+  /** Lc; intensity and the ambient/diffuse/specular factors stay separate, as in spec §2. */
+  readonly color: Vector3;
+  readonly intensity: number;
+  readonly ambient: number;
+  readonly diffuse: number;
+  readonly specular: number;
+  readonly distanceAttenuation: boolean;
+  /** Where the light shines: its local −Y in the world (spot and area). */
+  readonly direction = new Vector3(0, -1, 0);
+  /** Cosine of half the cone angle: spot spotAngle/2; area 90° (0); point −1 (everywhere). */
+  readonly cosHalfAngle: number;
+  readonly angleExponent: number;
+  /** n: samples per side (1 for point and spot lights). */
+  readonly samplesPerSide: number;
+  /** Area lights: the half-extent axes of the rectangle (or disc radii) in the world. */
+  readonly halfWidth = new Vector3();
+  readonly halfDepth = new Vector3();
+  readonly isDisc: boolean;
+
+  constructor(light: Light) {
+    this.id = light.id;
+    this.type = light.type;
+    this.position = new Vector3(...light.position);
+    this.color = new Vector3(...light.color);
+    this.intensity = light.intensity;
+    this.ambient = light.ambient;
+    this.diffuse = light.diffuse;
+    this.specular = light.specular;
+    this.distanceAttenuation = light.distanceAttenuation;
+    this.cosHalfAngle = -1;
+    this.angleExponent = 0;
+    this.samplesPerSide = 1;
+    this.isDisc = false;
+    if (light.type === 'point') return;
+    const rotation = new Quaternion().setFromEuler(new Euler(light.rotation[0] * DEG, light.rotation[1] * DEG, light.rotation[2] * DEG, 'XYZ'));
+    this.direction.applyQuaternion(rotation);
+    this.angleExponent = light.angleAttenuation;
+    if (light.type === 'spot') {
+      this.cosHalfAngle = Math.cos((light.spotAngle / 2) * DEG);
+      return;
+    }
+    this.cosHalfAngle = 0;
+    this.samplesPerSide = light.samples;
+    this.isDisc = light.shape === 'disc';
+    this.halfWidth.set(light.size[0] / 2, 0, 0).applyQuaternion(rotation);
+    this.halfDepth.set(0, 0, light.size[1] / 2).applyQuaternion(rotation);
+  }
+
+  get sampleCount(): number {
+    return this.samplesPerSide * this.samplesPerSide;
+  }
+
+  /** The four corners of an area light (the base of the cone drawn for merged area rays). */
+  corners(): Vector3[] {
+    return [[-1, -1], [1, -1], [1, 1], [-1, 1]].map(([u, v]) =>
+      this.position.clone().addScaledVector(this.halfWidth, u).addScaledVector(this.halfDepth, v),
+    );
+  }
+
+  /**
+   * The point on the light for sample `index`: the light's position for point and spot
+   * lights; for an area light, a uniform random point in cell (i, j) of its n×n grid
+   * (jittered sampling), mapped onto the disc concentrically for disc lights.
+   */
+  samplePoint(index: number, random: RandomStream, out: Vector3): Vector3 {
+    out.copy(this.position);
+    if (this.type !== 'area') return out;
+    const n = this.samplesPerSide;
+    let u = (((index % n) + random.next()) / n) * 2 - 1;
+    let v = ((Math.floor(index / n) + random.next()) / n) * 2 - 1;
+    if (this.isDisc) [u, v] = concentricDisc(u, v);
+    return out.addScaledVector(this.halfWidth, u).addScaledVector(this.halfDepth, v);
+  }
+}
+
+/**
+ * Shirley & Chiu's concentric map ("A Low Distortion Map Between Disk and Square", 1997):
+ * the square [−1,1]² onto the unit disc, keeping the grid's cells equal in area, so the
+ * jittered cells of a disc light stay stratified.
+ */
+export function concentricDisc(u: number, v: number): [number, number] {
+  if (u === 0 && v === 0) return [0, 0];
+  let r: number;
+  let theta: number;
+  if (Math.abs(u) > Math.abs(v)) {
+    r = u;
+    theta = (Math.PI / 4) * (v / u);
+  } else {
+    r = v;
+    theta = Math.PI / 2 - (Math.PI / 4) * (u / v);
+  }
+  return [r * Math.cos(theta), r * Math.sin(theta)];
+}

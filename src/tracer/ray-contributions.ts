@@ -1,0 +1,26 @@
+import type { RayNode } from './ray-tree.ts';
+
+/**
+ * Fills in each ray's share of the pixel (spec §3): roots get 1/s²; a child gets
+ * parent.contribution × (what the parent adds from it) / (the parent's colour), summed
+ * over the channels, and 0 when the parent is black. `weights` holds what the parent
+ * multiplies the child's colour by (ks, kr or kt; light rays are added as they are).
+ * Example: a ray with 25% whose children give 40% and 20% of its colour has children of
+ * 10% and 5%.
+ */
+export function assignContributions(roots: RayNode[], weights: ReadonlyMap<RayNode, number>): void {
+  for (const root of roots) assign(root, 1 / roots.length, weights);
+}
+
+function assign(node: RayNode, contribution: number, weights: ReadonlyMap<RayNode, number>): void {
+  node.contribution = contribution;
+  const parentSum = sum(node.color);
+  for (const child of node.children) {
+    const added = (weights.get(child) ?? 1) * sum(child.color);
+    assign(child, parentSum > 0 ? (contribution * added) / parentSum : 0, weights);
+  }
+}
+
+function sum(color: readonly number[]): number {
+  return color[0] + color[1] + color[2];
+}

@@ -1,0 +1,40 @@
+/**
+ * Deterministic random numbers keyed by (pixel, sample, light), as pbrt-v4's
+ * IndependentSampler::StartPixelSample does: re-tracing one pixel for its ray tree draws
+ * exactly the numbers the full render drew there, so the tree's colour equals the image's.
+ * No state is shared between pixels, so tiles can be rendered in any order on any worker.
+ */
+
+/** A 32-bit integer hash (Chris Wellons' "lowbias32", https://nullprogram.com/blog/2018/07/31/). */
+function mix32(x: number): number {
+  x ^= x >>> 16;
+  x = Math.imul(x, 0x7feb352d);
+  x ^= x >>> 15;
+  x = Math.imul(x, 0x846ca68b);
+  x ^= x >>> 16;
+  return x >>> 0;
+}
+
+/** Hashes a list of integers into one 32-bit key. */
+export function hashKey(...values: number[]): number {
+  let h = 0x9e3779b9;
+  for (const v of values) h = mix32(h ^ mix32(v | 0));
+  return h;
+}
+
+/** A small stream of uniform numbers in [0, 1) from one key (a counter-based generator). */
+export class RandomStream {
+  private key = 0;
+  private counter = 0;
+
+  /** Restarts the stream for a new key, e.g. hashKey(seed, x, y, sample, light). */
+  reset(key: number): this {
+    this.key = key;
+    this.counter = 0;
+    return this;
+  }
+
+  next(): number {
+    return mix32(this.key ^ mix32(this.counter++)) / 4294967296;
+  }
+}

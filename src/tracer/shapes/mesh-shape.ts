@@ -1,0 +1,110 @@
+import { Box3, BufferAttribute, BufferGeometry, DoubleSide, Ray as ThreeRay, Vector3 } from 'three';
+import { MeshBVH, SAH } from 'three-mesh-bvh';
+import type { Material } from '../../scene/scene.ts';
+import type { MeshData } from '../../scene/mesh-data.ts';
+import type { Hit } from '../hit.ts';
+import type { Matrix4 } from 'three';
+import { Shape } from './shape.ts';
+
+/** A model's BVH, built once per model and shared by every object that uses it. */
+export interface MeshAccel {
+  bvh: MeshBVH;
+  /** The triangle indices in the BVH's (reordered) order. */
+  index: ArrayLike<number>;
+  positions: Float32Array;
+  normals: Float32Array | null;
+  bounds: Box3;
+}
+
+// Built BVHs by model; a worker keeps them across renders, as models never change.
+const accelCache = new WeakMap<MeshData, MeshAccel>();
+
+/**
+ * Builds (or reuses) the BVH of a model. The geometry gets positions only: three-mesh-bvh
+ * allocates a normal, uv and barycentre object per candidate hit for every attribute it
+ * finds, so normals are interpolated here instead, once, for the nearest hit.
+ */
+export function meshAccel(mesh: MeshData): MeshAccel {
+  let accel = accelCache.get(mesh);
+  if (!accel) {
+    const geometry = new BufferGeometry();
+    geometry.setAttribute('position', new BufferAttribute(mesh.positions, 3));
+    geometry.setIndex(new BufferAttribute(mesh.indices.slice(), 1));
+    // SAH: slower to build than CENTER but faster to cast through; models are built once.
+    const bvh = new MeshBVH(geometry, { strategy: SAH, maxLeafSize: 4 });
+    geometry.computeBoundingBox();
+    accel = { bvh, index: geometry.index!.array, positions: mesh.positions, normals: mesh.normals, bounds: geometry.boundingBox! };
+    accelCache.set(mesh, accel);
+  }
+  return accel;
+}
+
+const localRay = new ThreeRay();
+const a = new Vector3();
+const b = new Vector3();
+const c = new Vector3();
+const barycentric = new Vector3();
+const edge1 = new Vector3();
+const edge2 = new Vector3();
+
+/** A triangle mesh from assets/models, intersected through its BVH in object space. */
+export class MeshShape extends Shape {
+  constructor(index: number, id: string, material: Material, objectToWorld: Matrix4, private readonly accel: MeshAccel) {
+    super(index, id, material, objectToWorld, accel.bounds);
+  }
+
+  protected intersectLocal(o: Vector3, d: Vector3, tMax: number, hit: Hit): number | null {
+    // three-mesh-bvh measures distance along a unit direction: scale to and from it.
+    const scale = d.length();
+    localRay.origin.copy(o);
+    localRay.direction.copy(d).divideScalar(scale);
+    const result = this.accel.bvh.raycastFirst(localRay, DoubleSide, 0, tMax * scale);
+    if (!result || result.faceIndex == null) return null;
+    const t = result.distance / scale;
+    if (!(t > 0 && t < tMax)) return null;
+    hit.face = result.faceIndex;
+    return t;
+  }
+
+  protected localNormals(hit: Hit, geometric: Vector3, shading: Vector3): void {
+    const { index, positions, normals } = this.accel;
+    const ia = index[hit.face * 3];
+    const ib = index[hit.face * 3 + 1];
+    const ic = index[hit.face * 3 + 2];
+    a.fromArray(positions, ia * 3);
+    b.fromArray(positions, ib * 3);
+    c.fromArray(positions, ic * 3);
+    geometric.crossVectors(edge1.subVectors(b, a), edge2.subVectors(c, a));
+    if (!normals) {
+      shading.copy(geometric);
+      return;
+    }
+    // Smooth shading: the vertex normals weighted by the hit's barycentric coordinates.
+    barycentricOf(hit.local, a, b, c, barycentric);
+    shading
+      .fromArray(normals, ia * 3).multiplyScalar(barycentric.x)
+      .addScaledVector(a.fromArray(normals, ib * 3), barycentric.y)
+      .addScaledVector(b.fromArray(normals, ic * 3), barycentric.z);
+  }
+}
+
+const v0 = new Vector3();
+const v1 = new Vector3();
+const v2 = new Vector3();
+
+/** Barycentric coordinates of p in triangle abc (Ericson, Real-Time Collision Detection §3.4). */
+function barycentricOf(p: Vector3, pa: Vector3, pb: Vector3, pc: Vector3, out: Vector3): Vector3 {
+  v0.subVectors(pb, pa);
+  v1.subVectors(pc, pa);
+  v2.subVectors(p, pa);
+  const d00 = v0.dot(v0);
+  const d01 = v0.dot(v1);
+  const d11 = v1.dot(v1);
+  const d20 = v2.dot(v0);
+  const d21 = v2.dot(v1);
+  const denom = d00 * d11 - d01 * d01;
+  if (denom === 0) return out.set(1, 0, 0);
+  const v = (d11 * d20 - d01 * d21) / denom;
+  const w = (d00 * d21 - d01 * d20) / denom;
+  return out.set(1 - v - w, v, w);
+}

@@ -1,0 +1,19 @@
+/** A rectangle of the image, in pixels; (0,0) is the top-left pixel. */
+export interface Tile {
+  x: number;
+  y: number;
+  width: number;
+  height: number;
+}
+
+export interface RenderTileOptions {
+  imageWidth: number;
+  imageHeight: number;
+  /** Seeds every random choice together with (pixel, sample, light). */
+  seed: number;
+  /**
+   * Progressive preview: trace one pixel (its centre, one sample) per block×block square
+   * and fill the square with it. 1 (default) is full quality.
+   */
+  block?: number;
+}

@@ -1,0 +1,74 @@
+import { Box3, Euler, Matrix4, Quaternion, Vector3 } from 'three';
+import type { MeshLibrary } from '../scene/mesh-data.ts';
+import type { RenderSettings, Scene, SceneObject } from '../scene/scene.ts';
+import { CameraRays } from './camera-rays.ts';
+import { TracerLight } from './lights.ts';
+import { Box } from './shapes/box.ts';
+import { Cylinder } from './shapes/cylinder.ts';
+import { MeshShape, meshAccel } from './shapes/mesh-shape.ts';
+import { PLANE_BOUNDS, Plane } from './shapes/plane.ts';
+import type { Shape } from './shapes/shape.ts';
+import { Sphere, UNIT_BOUNDS } from './shapes/sphere.ts';
+
+const DEG = Math.PI / 180;
+
+/** Everything the tracer needs, prepared once per scene (and reused for every tile). */
+export interface TracerScene {
+  readonly source: Scene;
+  readonly settings: RenderSettings;
+  readonly camera: CameraRays;
+  readonly shapes: readonly Shape[];
+  /** The lights whose type is switched on in settings.lightTypes. */
+  readonly lights: readonly TracerLight[];
+  /** How far secondary rays start off a surface: 1e-4, scaled up for large scenes. */
+  readonly epsilon: number;
+  /** Time spent building mesh BVHs for this scene (0 when all were cached). */
+  readonly bvhBuildMs: number;
+}
+
+/** Prepares a validated scene for tracing. Throws if a mesh object's model is missing. */
+export function buildTracerScene(scene: Scene, meshes: MeshLibrary): TracerScene {
+  const started = performance.now();
+  const shapes = scene.objects.map((object, index) => createShape(object, index, meshes));
+  const bvhBuildMs = performance.now() - started;
+  const extent = new Box3();
+  for (const shape of shapes) extent.union(shape.worldBounds);
+  const size = extent.isEmpty() ? 1 : extent.getSize(new Vector3()).length();
+  const enabled = scene.settings.lightTypes;
+  return {
+    source: scene,
+    settings: scene.settings,
+    camera: new CameraRays(scene.camera),
+    shapes,
+    lights: scene.lights.filter((light) => enabled[light.type]).map((light) => new TracerLight(light)),
+    epsilon: 1e-4 * Math.max(1, size / 10),
+    bvhBuildMs,
+  };
+}
+
+function createShape(object: SceneObject, index: number, meshes: MeshLibrary): Shape {
+  const toWorld = objectToWorld(object);
+  const { id, material } = object;
+  switch (object.shape) {
+    case 'sphere':
+      return new Sphere(index, id, material, toWorld, UNIT_BOUNDS);
+    case 'box':
+      return new Box(index, id, material, toWorld, UNIT_BOUNDS);
+    case 'cylinder':
+      return new Cylinder(index, id, material, toWorld, UNIT_BOUNDS);
+    case 'plane':
+      return new Plane(index, id, material, toWorld, PLANE_BOUNDS);
+    case 'mesh': {
+      const mesh = object.mesh === undefined ? undefined : meshes.get(object.mesh);
+      if (!mesh) throw new Error(`objects[${index}] ("${id}"): the model "${object.mesh}" was not loaded`);
+      return new MeshShape(index, id, material, toWorld, meshAccel(mesh));
+    }
+  }
+}
+
+/** position · rotation (Euler XYZ, degrees) · scale, as three.js composes an Object3D. */
+export function objectToWorld(object: Pick<SceneObject, 'position' | 'rotation' | 'scale'>): Matrix4 {
+  const [rx, ry, rz] = object.rotation;
+  const rotation = new Quaternion().setFromEuler(new Euler(rx * DEG, ry * DEG, rz * DEG, 'XYZ'));
+  return new Matrix4().compose(new Vector3(...object.position), rotation, new Vector3(...object.scale));
+}

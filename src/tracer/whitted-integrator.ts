@@ -1,0 +1,239 @@
+import { Vector3 } from 'three';
+import type { Material } from '../scene/scene.ts';
+import { angleAttenuation, distanceAttenuation } from './attenuation.ts';
+import { reflect, refract, schlickReflectance } from './fresnel.ts';
+import { Hit } from './hit.ts';
+import type { TracerLight } from './lights.ts';
+import { Ray } from './ray.ts';
+import type { RayNode, RayStats, RayType } from './ray-tree.ts';
+import { emptyRayStats } from './ray-tree.ts';
+import { hashKey, RandomStream } from './sampler.ts';
+import type { Shape } from './shapes/shape.ts';
+import type { TracerScene } from './tracer-scene.ts';
+
+/** Missed rays are drawn this long in the ray tree (spec §3). */
+export const MISS_LENGTH = 10;
+
+/** Area lights with at least this many samples get one merged node when all agree (spec §3). */
+const MERGE_AREA_SAMPLES = 25;
+
+/** Scratch space for one recursion depth, so tracing allocates nothing per ray. */
+class Frame {
+  readonly hit = new Hit();
+  readonly normal = new Vector3();
+  readonly geometricNormal = new Vector3();
+  readonly toViewer = new Vector3();
+  readonly lightPoint = new Vector3();
+  readonly toLight = new Vector3();
+  readonly mirrored = new Vector3();
+  readonly childDirection = new Vector3();
+  readonly childOrigin = new Vector3();
+  readonly childRay = new Ray();
+  readonly childColor = new Vector3();
+  readonly shadowRay = new Ray();
+}
+
+const shadowHit = new Hit();
+
+/**
+ * Whitted-style recursive ray tracing (Whitted 1980) with the Phong model of spec §2:
+ * local light at every hit, plus mirror reflection for opaque specular surfaces and a
+ * Schlick-weighted reflection/refraction split for transparent ones.
+ *
+ * When a RayNode is passed, the rays are recorded as a tree (spec §3); the arithmetic is
+ * the same with or without it, so a pixel's tree has exactly the image's colour.
+ */
+export class WhittedIntegrator {
+  readonly stats: RayStats = emptyRayStats();
+  /** What each recorded child adds to its parent per unit of its colour (ks, kr, kt or 1). */
+  readonly childWeights = new Map<RayNode, number>();
+  private readonly frames: Frame[] = [];
+  private readonly random = new RandomStream();
+  private sampleKey = 0;
+  private lightEvaluation = 0;
+
+  constructor(private readonly scene: TracerScene) {
+    for (let depth = 0; depth <= scene.settings.maxDepth; depth++) this.frames.push(new Frame());
+  }
+
+  /** Keys the random numbers of the coming sample by (seed, pixel, sample). */
+  startPixelSample(seed: number, x: number, y: number, sample: number): void {
+    this.sampleKey = hashKey(seed, x, y, sample);
+    this.lightEvaluation = 0;
+  }
+
+  /** The colour seen along `ray`, clamped to 0..1 per channel, written into `out`. */
+  trace(ray: Ray, depth: number, out: Vector3, node: RayNode | null): Vector3 {
+    const frame = this.frames[depth];
+    const hit = frame.hit.reset(Infinity);
+    for (const shape of this.scene.shapes) shape.intersect(ray, hit);
+    if (!hit.shape) {
+      out.fromArray(this.scene.settings.background);
+      if (node) recordEnd(node, false, MISS_LENGTH, null, out);
+      return out;
+    }
+    hit.shape.surface(ray, hit);
+    this.shade(ray, hit.shape, depth, out, node);
+    out.clampScalar(0, 1);
+    if (node) recordEnd(node, true, hit.t, hit.shape.id, out);
+    return out;
+  }
+
+  private shade(ray: Ray, shape: Shape, depth: number, out: Vector3, node: RayNode | null): void {
+    const frame = this.frames[depth];
+    const { hit, normal: n, geometricNormal: ng, toViewer: v } = frame;
+    const material = shape.material;
+    // Turn the normals toward the incoming ray; a back-face hit means the ray is inside.
+    n.copy(hit.normal);
+    ng.copy(hit.geometricNormal);
+    const entering = ng.dot(ray.direction) < 0;
+    if (!entering) {
+      n.negate();
+      ng.negate();
+    }
+    v.copy(ray.direction).negate();
+
+    // Ambient: ka·C
+    const [cr, cg, cb] = material.color;
+    out.set(cr, cg, cb).multiplyScalar(material.ambient);
+    // Direct light: Σ la·Lc·C + I·A·S·(diffuse + specular)
+    for (let index = 0; index < this.scene.lights.length; index++) {
+      const light = this.scene.lights[index];
+      out.x += light.ambient * light.color.x * cr;
+      out.y += light.ambient * light.color.y * cg;
+      out.z += light.ambient * light.color.z * cb;
+      this.addDirectLight(light, index, frame, material, out, node);
+    }
+
+    if (depth >= this.scene.settings.maxDepth) return;
+    if (material.transparent) this.addTransmission(ray, frame, material, entering, depth, out, node);
+    else if (material.specular > 0) {
+      // Opaque specular surface: ks · trace(reflected ray)
+      reflect(ray.direction, n, frame.childDirection);
+      this.traceChild('reflect', frame, depth, material.specular, out, node);
+    }
+  }
+
+  /** Adds one light's diffuse and specular terms (each sample shaded like a spot light). */
+  private addDirectLight(light: TracerLight, index: number, frame: Frame, material: Material, out: Vector3, node: RayNode | null): void {
+    const { hit, normal: n, toViewer: v, lightPoint, toLight: l, mirrored: r } = frame;
+    const samples = light.sampleCount;
+    if (light.type === 'area') this.random.reset(hashKey(this.sampleKey, index, this.lightEvaluation++));
+    const sampleNodes: RayNode[] | null = node ? [] : null;
+    // The light's colour is divided by n² for an area light's n×n samples (spec §2).
+    const scale = light.intensity / samples;
+    const [cr, cg, cb] = material.color;
+    for (let s = 0; s < samples; s++) {
+      light.samplePoint(s, this.random, lightPoint);
+      l.subVectors(lightPoint, hit.point);
+      const distance = l.length();
+      if (distance === 0) continue;
+      l.divideScalar(distance);
+      const nDotL = n.dot(l);
+      // A light behind the surface adds nothing: no ray is cast toward it.
+      if (nDotL <= 0) continue;
+      let attenuation = light.distanceAttenuation ? distanceAttenuation(distance) : 1;
+      if (light.type !== 'point') attenuation *= angleAttenuation(-light.direction.dot(l), light.cosHalfAngle, light.angleExponent);
+      if (attenuation === 0) continue;
+
+      const blocker = this.scene.settings.shadows ? this.firstBlocker(frame, l, distance) : null;
+      // Phong: R is L mirrored about N; the highlight is not tinted by the object's colour.
+      r.copy(n).multiplyScalar(2 * nDotL).sub(l);
+      const highlight = material.specular > 0 ? Math.pow(Math.max(r.dot(v), 0), material.shininess) * material.specular * light.specular : 0;
+      const diffuse = nDotL * material.diffuse * light.diffuse;
+      const k = scale * attenuation;
+      const tr = blocker ? 0 : k * light.color.x * (diffuse * cr + highlight);
+      const tg = blocker ? 0 : k * light.color.y * (diffuse * cg + highlight);
+      const tb = blocker ? 0 : k * light.color.z * (diffuse * cb + highlight);
+      out.x += tr;
+      out.y += tg;
+      out.z += tb;
+      if (sampleNodes) {
+        const length = blocker ? shadowHit.t : distance;
+        sampleNodes.push(newNode(blocker ? 'shadow' : 'light', hit.point, l, length, true, blocker?.id ?? null, light.id, [tr, tg, tb]));
+      }
+    }
+    if (node && sampleNodes) this.recordLightRays(light, frame, sampleNodes, node);
+  }
+
+  /** The nearest object between the hit point and the light, or null (counts a shadow ray). */
+  private firstBlocker(frame: Frame, toLight: Vector3, distance: number): Shape | null {
+    this.stats.shadow++;
+    const origin = offsetOrigin(frame, toLight, this.scene.epsilon);
+    const ray = frame.shadowRay.set(origin, toLight);
+    shadowHit.reset(distance - this.scene.epsilon);
+    for (const shape of this.scene.shapes) shape.intersect(ray, shadowHit);
+    return shadowHit.shape;
+  }
+
+  /** Transparent surface: kr·trace(reflect) + kt·trace(refract), Schlick's kr (spec §2). */
+  private addTransmission(ray: Ray, frame: Frame, material: Material, entering: boolean, depth: number, out: Vector3, node: RayNode | null): void {
+    const n = frame.normal;
+    const eta = entering ? 1 / material.refractiveIndex : material.refractiveIndex;
+    const refracted = refract(ray.direction, n, eta, frame.childDirection);
+    if (!refracted) {
+      // Total internal reflection: everything is reflected.
+      reflect(ray.direction, n, frame.childDirection);
+      this.traceChild('reflect', frame, depth, 1, out, node);
+      return;
+    }
+    // Schlick with the angle on the less dense side: θi entering, θt leaving.
+    const cosTheta = entering ? -ray.direction.dot(n) : -frame.childDirection.dot(n);
+    const kr = schlickReflectance(cosTheta, material.refractiveIndex);
+    this.traceChild('refract', frame, depth, 1 - kr, out, node);
+    reflect(ray.direction, n, frame.childDirection);
+    this.traceChild('reflect', frame, depth, kr, out, node);
+  }
+
+  /** Traces frame.childDirection from the hit point and adds weight × its colour to `out`. */
+  private traceChild(type: 'reflect' | 'refract', frame: Frame, depth: number, weight: number, out: Vector3, node: RayNode | null): void {
+    this.stats[type]++;
+    const origin = offsetOrigin(frame, frame.childDirection, this.scene.epsilon);
+    const ray = frame.childRay.set(origin, frame.childDirection);
+    let child: RayNode | null = null;
+    if (node) {
+      child = newNode(type, origin, frame.childDirection, 0, false, null, null, [0, 0, 0]);
+      node.children.push(child);
+      this.childWeights.set(child, weight);
+    }
+    const color = this.trace(ray, depth + 1, frame.childColor, child);
+    out.addScaledVector(color, weight);
+  }
+
+  /** Adds a light's sample rays to the tree, merged into one cone when there are many and all agree. */
+  private recordLightRays(light: TracerLight, frame: Frame, samples: RayNode[], node: RayNode): void {
+    const type = samples[0]?.type;
+    const allAgree = samples.length > 0 && samples.every((s) => s.type === type);
+    if (light.type !== 'area' || light.sampleCount < MERGE_AREA_SAMPLES || !allAgree) {
+      node.children.push(...samples);
+      return;
+    }
+    const toCentre = frame.toLight.subVectors(light.position, frame.hit.point);
+    const distance = toCentre.length();
+    const color = samples.reduce<[number, number, number]>((sum, s) => [sum[0] + s.color[0], sum[1] + s.color[1], sum[2] + s.color[2]], [0, 0, 0]);
+    const merged = newNode(type === 'light' ? 'area-light' : 'area-shadow', frame.hit.point, toCentre.divideScalar(distance || 1), distance, true, null, light.id, color);
+    merged.corners = light.corners().map((c) => c.toArray()) as RayNode['corners'];
+    node.children.push(merged);
+  }
+}
+
+/** The hit point moved ε off the surface, to the side `direction` leaves toward (no self-hits). */
+function offsetOrigin(frame: Frame, direction: Vector3, epsilon: number): Vector3 {
+  const ng = frame.geometricNormal;
+  const side = ng.dot(direction) >= 0 ? epsilon : -epsilon;
+  return frame.childOrigin.copy(frame.hit.point).addScaledVector(ng, side);
+}
+
+function newNode(
+  type: RayType, origin: Vector3, direction: Vector3, length: number, hit: boolean,
+  objectId: string | null, lightId: string | null, color: [number, number, number],
+): RayNode {
+  return { type, origin: origin.toArray(), direction: direction.toArray(), length, hit, objectId, lightId, color, contribution: 0, children: [] };
+}
+
+function recordEnd(node: RayNode, hit: boolean, length: number, objectId: string | null, color: Vector3): void {
+  node.hit = hit;
+  node.length = length;
+  node.objectId = objectId;
+  node.color = color.toArray();
+}
