@@ -18,6 +18,8 @@ export interface TracerScene {
   readonly settings: RenderSettings;
   readonly camera: CameraRays;
   readonly shapes: readonly Shape[];
+  /** The same shapes, cheap analytic ones first: the order shadow rays try them in. */
+  readonly occluders: readonly Shape[];
   /** The lights whose type is switched on in settings.lightTypes. */
   readonly lights: readonly TracerLight[];
   /** How far secondary rays start off a surface: 1e-4, scaled up for large scenes. */
@@ -40,6 +42,7 @@ export function buildTracerScene(scene: Scene, meshes: MeshLibrary): TracerScene
     settings: scene.settings,
     camera: new CameraRays(scene.camera),
     shapes,
+    occluders: [...shapes].sort((a, b) => Number(a instanceof MeshShape) - Number(b instanceof MeshShape)),
     lights: scene.lights.filter((light) => enabled[light.type]).map((light) => new TracerLight(light)),
     epsilon: 1e-4 * Math.max(1, size / 10),
     bvhBuildMs,

@@ -31,6 +31,8 @@ class Frame {
   readonly childRay = new Ray();
   readonly childColor = new Vector3();
   readonly shadowRay = new Ray();
+  /** Whether the ray hit the outside of the surface (false: it is inside the object). */
+  entering = true;
 }
 
 const shadowHit = new Hit();
@@ -48,12 +50,15 @@ export class WhittedIntegrator {
   /** What each recorded child adds to its parent per unit of its colour (ks, kr, kt or 1). */
   readonly childWeights = new Map<RayNode, number>();
   private readonly frames: Frame[] = [];
+  /** The shape that last blocked each light: it is likely to block the next sample too. */
+  private readonly lastBlocker: (Shape | null)[];
   private readonly random = new RandomStream();
   private sampleKey = 0;
   private lightEvaluation = 0;
 
   constructor(private readonly scene: TracerScene) {
     for (let depth = 0; depth <= scene.settings.maxDepth; depth++) this.frames.push(new Frame());
+    this.lastBlocker = scene.lights.map(() => null);
   }
 
   /** Keys the random numbers of the coming sample by (seed, pixel, sample). */
@@ -62,11 +67,14 @@ export class WhittedIntegrator {
     this.lightEvaluation = 0;
   }
 
-  /** The colour seen along `ray`, clamped to 0..1 per channel, written into `out`. */
-  trace(ray: Ray, depth: number, out: Vector3, node: RayNode | null): Vector3 {
+  /**
+   * The colour seen along `ray`, clamped to 0..1 per channel, written into `out`.
+   * @param leaving a convex shape the ray leaves outward, which it cannot hit again
+   */
+  trace(ray: Ray, depth: number, out: Vector3, node: RayNode | null, leaving: Shape | null = null): Vector3 {
     const frame = this.frames[depth];
     const hit = frame.hit.reset(Infinity);
-    for (const shape of this.scene.shapes) shape.intersect(ray, hit);
+    for (const shape of this.scene.shapes) if (shape !== leaving) shape.intersect(ray, hit);
     if (!hit.shape) {
       out.fromArray(this.scene.settings.background);
       if (node) recordEnd(node, false, MISS_LENGTH, null, out);
@@ -87,6 +95,7 @@ export class WhittedIntegrator {
     n.copy(hit.normal);
     ng.copy(hit.geometricNormal);
     const entering = ng.dot(ray.direction) < 0;
+    frame.entering = entering;
     if (!entering) {
       n.negate();
       ng.negate();
@@ -110,7 +119,7 @@ export class WhittedIntegrator {
     else if (material.specular > 0) {
       // Opaque specular surface: ks · trace(reflected ray)
       reflect(ray.direction, n, frame.childDirection);
-      this.traceChild('reflect', frame, depth, material.specular, out, node);
+      this.traceChild('reflect', frame, depth, material.specular, out, node, leavingShape(frame, frame.childDirection));
     }
   }
 
@@ -136,7 +145,7 @@ export class WhittedIntegrator {
       if (light.type !== 'point') attenuation *= angleAttenuation(-light.direction.dot(l), light.cosHalfAngle, light.angleExponent);
       if (attenuation === 0) continue;
 
-      const blocker = this.scene.settings.shadows ? this.firstBlocker(frame, l, distance) : null;
+      const blocker = this.scene.settings.shadows ? this.firstBlocker(frame, l, distance, index, node !== null) : null;
       // Phong: R is L mirrored about N; the highlight is not tinted by the object's colour.
       r.copy(n).multiplyScalar(2 * nDotL).sub(l);
       const highlight = material.specular > 0 ? Math.pow(Math.max(r.dot(v), 0), material.shininess) * material.specular * light.specular : 0;
@@ -156,14 +165,31 @@ export class WhittedIntegrator {
     if (node && sampleNodes) this.recordLightRays(light, frame, sampleNodes, node);
   }
 
-  /** The nearest object between the hit point and the light, or null (counts a shadow ray). */
-  private firstBlocker(frame: Frame, toLight: Vector3, distance: number): Shape | null {
+  /**
+   * An object between the hit point and the light, or null (counts one shadow ray).
+   * Rendering only needs to know whether one exists (any-hit: the last blocker of this
+   * light is tried first, then cheap shapes before meshes); a recorded tree shows the
+   * nearest one. Both give the same visibility, so the same colour.
+   */
+  private firstBlocker(frame: Frame, toLight: Vector3, distance: number, lightIndex: number, nearest: boolean): Shape | null {
     this.stats.shadow++;
     const origin = offsetOrigin(frame, toLight, this.scene.epsilon);
     const ray = frame.shadowRay.set(origin, toLight);
-    shadowHit.reset(distance - this.scene.epsilon);
-    for (const shape of this.scene.shapes) shape.intersect(ray, shadowHit);
-    return shadowHit.shape;
+    const hit = shadowHit.reset(distance - this.scene.epsilon);
+    const leaving = leavingShape(frame, toLight);
+    if (nearest) {
+      for (const shape of this.scene.shapes) if (shape !== leaving) shape.intersect(ray, hit);
+      return hit.shape;
+    }
+    const cached = this.lastBlocker[lightIndex];
+    if (cached && cached !== leaving && cached.intersect(ray, hit)) return cached;
+    for (const shape of this.scene.occluders) {
+      if (shape !== leaving && shape.intersect(ray, hit)) {
+        this.lastBlocker[lightIndex] = shape;
+        return shape;
+      }
+    }
+    return null;
   }
 
   /** Transparent surface: kr·trace(reflect) + kt·trace(refract), Schlick's kr (spec §2). */
@@ -186,7 +212,9 @@ export class WhittedIntegrator {
   }
 
   /** Traces frame.childDirection from the hit point and adds weight × its colour to `out`. */
-  private traceChild(type: 'reflect' | 'refract', frame: Frame, depth: number, weight: number, out: Vector3, node: RayNode | null): void {
+  private traceChild(
+    type: 'reflect' | 'refract', frame: Frame, depth: number, weight: number, out: Vector3, node: RayNode | null, leaving: Shape | null = null,
+  ): void {
     this.stats[type]++;
     const origin = offsetOrigin(frame, frame.childDirection, this.scene.epsilon);
     const ray = frame.childRay.set(origin, frame.childDirection);
@@ -196,7 +224,7 @@ export class WhittedIntegrator {
       node.children.push(child);
       this.childWeights.set(child, weight);
     }
-    const color = this.trace(ray, depth + 1, frame.childColor, child);
+    const color = this.trace(ray, depth + 1, frame.childColor, child, leaving);
     out.addScaledVector(color, weight);
   }
 
@@ -215,6 +243,12 @@ export class WhittedIntegrator {
     merged.corners = light.corners().map((c) => c.toArray()) as RayNode['corners'];
     node.children.push(merged);
   }
+}
+
+/** The hit shape, if it is convex and `direction` leaves it from its outside (so cannot meet it again). */
+function leavingShape(frame: Frame, direction: Vector3): Shape | null {
+  const shape = frame.hit.shape;
+  return shape && shape.convex && frame.entering && frame.geometricNormal.dot(direction) > 0 ? shape : null;
 }
 
 /** The hit point moved ε off the surface, to the side `direction` leaves toward (no self-hits). */

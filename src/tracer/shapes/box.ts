@@ -4,6 +4,8 @@ import { Shape } from './shape.ts';
 
 /** The unit cube, 1×1×1 centred on the origin. */
 export class Box extends Shape {
+  readonly convex = true;
+
   protected intersectLocal(o: Vector3, d: Vector3, tMax: number): number | null {
     // Slab test in object space; the exit distance is the hit when the ray starts inside.
     let ix = 1 / d.x;

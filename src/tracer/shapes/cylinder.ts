@@ -4,6 +4,8 @@ import { Shape } from './shape.ts';
 
 /** The unit capped cylinder: radius 0.5, height 1, axis Y, centred on the origin. */
 export class Cylinder extends Shape {
+  readonly convex = true;
+
   protected intersectLocal(o: Vector3, d: Vector3, tMax: number): number | null {
     let best = tMax;
     // Side: x² + z² = r² with |y| ≤ 0.5 (half-b quadratic).

@@ -31,7 +31,7 @@ export function meshAccel(mesh: MeshData): MeshAccel {
     geometry.setAttribute('position', new BufferAttribute(mesh.positions, 3));
     geometry.setIndex(new BufferAttribute(mesh.indices.slice(), 1));
     // SAH: slower to build than CENTER but faster to cast through; models are built once.
-    const bvh = new MeshBVH(geometry, { strategy: SAH, maxLeafSize: 4 });
+    const bvh = new MeshBVH(geometry, { strategy: SAH, targetLeafSize: 4 });
     geometry.computeBoundingBox();
     accel = { bvh, index: geometry.index!.array, positions: mesh.positions, normals: mesh.normals, bounds: geometry.boundingBox! };
     accelCache.set(mesh, accel);
@@ -49,6 +49,9 @@ const edge2 = new Vector3();
 
 /** A triangle mesh from assets/models, intersected through its BVH in object space. */
 export class MeshShape extends Shape {
+  // A model may be concave (a glass's bowl, a character's arms).
+  readonly convex = false;
+
   constructor(index: number, id: string, material: Material, objectToWorld: Matrix4, private readonly accel: MeshAccel) {
     super(index, id, material, objectToWorld, accel.bounds);
   }

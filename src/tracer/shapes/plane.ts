@@ -6,6 +6,8 @@ export const PLANE_BOUNDS = new Box3(new Vector3(-0.5, 0, -0.5), new Vector3(0.5
 
 /** The unit square in the XZ plane, normal +Y; hit from both sides (spec §1). */
 export class Plane extends Shape {
+  readonly convex = true;
+
   protected intersectLocal(o: Vector3, d: Vector3, tMax: number): number | null {
     if (d.y === 0) return null;
     const t = -o.y / d.y;

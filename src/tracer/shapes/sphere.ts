@@ -6,6 +6,8 @@ export const UNIT_BOUNDS = new Box3(new Vector3(-0.5, -0.5, -0.5), new Vector3(0
 
 /** The unit sphere: radius 0.5 at the origin (an ellipsoid once scaled). */
 export class Sphere extends Shape {
+  readonly convex = true;
+
   protected intersectLocal(o: Vector3, d: Vector3, tMax: number): number | null {
     // |o + t·d|² = r²  →  a·t² + 2·b·t + c = 0 with the half-b form of the quadratic.
     const a = d.dot(d);
