@@ -3,12 +3,8 @@ import type { MeshLibrary } from '../scene/mesh-data.ts';
 import type { RenderSettings, Scene, SceneObject } from '../scene/scene.ts';
 import { CameraRays } from './camera-rays.ts';
 import { TracerLight } from './lights.ts';
-import { Box } from './shapes/box.ts';
-import { Cylinder } from './shapes/cylinder.ts';
-import { MeshShape, meshAccel } from './shapes/mesh-shape.ts';
-import { PLANE_BOUNDS, Plane } from './shapes/plane.ts';
-import type { Shape } from './shapes/shape.ts';
-import { Sphere, UNIT_BOUNDS } from './shapes/sphere.ts';
+import { meshAccel } from './shapes/mesh-accel.ts';
+import { Shape } from './shapes/shape.ts';
 
 const DEG = Math.PI / 180;
 
@@ -42,7 +38,7 @@ export function buildTracerScene(scene: Scene, meshes: MeshLibrary): TracerScene
     settings: scene.settings,
     camera: new CameraRays(scene.camera),
     shapes,
-    occluders: [...shapes].sort((a, b) => Number(a instanceof MeshShape) - Number(b instanceof MeshShape)),
+    occluders: [...shapes].sort((a, b) => Number(!a.convex) - Number(!b.convex)),
     lights: scene.lights.filter((light) => enabled[light.type]).map((light) => new TracerLight(light)),
     epsilon: 1e-4 * Math.max(1, size / 10),
     bvhBuildMs,
@@ -51,22 +47,10 @@ export function buildTracerScene(scene: Scene, meshes: MeshLibrary): TracerScene
 
 function createShape(object: SceneObject, index: number, meshes: MeshLibrary): Shape {
   const toWorld = objectToWorld(object);
-  const { id, material } = object;
-  switch (object.shape) {
-    case 'sphere':
-      return new Sphere(index, id, material, toWorld, UNIT_BOUNDS);
-    case 'box':
-      return new Box(index, id, material, toWorld, UNIT_BOUNDS);
-    case 'cylinder':
-      return new Cylinder(index, id, material, toWorld, UNIT_BOUNDS);
-    case 'plane':
-      return new Plane(index, id, material, toWorld, PLANE_BOUNDS);
-    case 'mesh': {
-      const mesh = object.mesh === undefined ? undefined : meshes.get(object.mesh);
-      if (!mesh) throw new Error(`objects[${index}] ("${id}"): the model "${object.mesh}" was not loaded`);
-      return new MeshShape(index, id, material, toWorld, meshAccel(mesh));
-    }
-  }
+  if (object.shape !== 'mesh') return new Shape(index, object.id, object.material, object.shape, toWorld);
+  const mesh = object.mesh === undefined ? undefined : meshes.get(object.mesh);
+  if (!mesh) throw new Error(`objects[${index}] ("${object.id}"): the model "${object.mesh}" was not loaded`);
+  return new Shape(index, object.id, object.material, 'mesh', toWorld, meshAccel(mesh));
 }
 
 /** position · rotation (Euler XYZ, degrees) · scale, as three.js composes an Object3D. */

@@ -1,40 +1,35 @@
 import type { Vector3 } from 'three';
-import type { Hit } from '../hit.ts';
-import { Shape } from './shape.ts';
 
-/** The unit capped cylinder: radius 0.5, height 1, axis Y, centred on the origin. */
-export class Cylinder extends Shape {
-  readonly convex = true;
-
-  protected intersectLocal(o: Vector3, d: Vector3, tMax: number): number | null {
-    let best = tMax;
-    // Side: x² + z² = r² with |y| ≤ 0.5 (half-b quadratic).
-    const a = d.x * d.x + d.z * d.z;
-    if (a > 0) {
-      const b = o.x * d.x + o.z * d.z;
-      const c = o.x * o.x + o.z * o.z - 0.25;
-      const disc = b * b - a * c;
-      if (disc >= 0) {
-        const root = Math.sqrt(disc);
-        best = nearerSideHit((-b - root) / a, o, d, best);
-        best = nearerSideHit((-b + root) / a, o, d, best);
-      }
+/**
+ * The unit capped cylinder: radius 0.5, height 1, axis Y, centred on the origin.
+ * The nearest t in (0, tMax), or Infinity.
+ */
+export function intersectUnitCylinder(o: Vector3, d: Vector3, tMax: number): number {
+  let best = tMax;
+  // Side: x² + z² = r² with |y| ≤ 0.5 (half-b quadratic).
+  const a = d.x * d.x + d.z * d.z;
+  if (a > 0) {
+    const b = o.x * d.x + o.z * d.z;
+    const c = o.x * o.x + o.z * o.z - 0.25;
+    const disc = b * b - a * c;
+    if (disc >= 0) {
+      const root = Math.sqrt(disc);
+      best = nearerSideHit((-b - root) / a, o, d, best);
+      best = nearerSideHit((-b + root) / a, o, d, best);
     }
-    // Caps: y = ±0.5 with x² + z² ≤ r².
-    if (d.y !== 0) {
-      best = nearerCapHit((-0.5 - o.y) / d.y, o, d, best);
-      best = nearerCapHit((0.5 - o.y) / d.y, o, d, best);
-    }
-    return best < tMax ? best : null;
   }
+  // Caps: y = ±0.5 with x² + z² ≤ r².
+  if (d.y !== 0) {
+    best = nearerCapHit((-0.5 - o.y) / d.y, o, d, best);
+    best = nearerCapHit((0.5 - o.y) / d.y, o, d, best);
+  }
+  return best < tMax ? best : Infinity;
+}
 
-  protected localNormals(hit: Hit, geometric: Vector3, shading: Vector3): void {
-    const p = hit.local;
-    // A cap when the point is nearer a cap's plane (0.5 − |y|) than the side (0.5 − radius).
-    if (Math.abs(p.y) > Math.sqrt(p.x * p.x + p.z * p.z)) geometric.set(0, Math.sign(p.y), 0);
-    else geometric.set(p.x, 0, p.z);
-    shading.copy(geometric);
-  }
+/** The outward normal at p: a cap when p is nearer a cap's plane (0.5 − |y|) than the side (0.5 − radius). */
+export function unitCylinderNormal(p: Vector3, out: Vector3): Vector3 {
+  if (Math.abs(p.y) > Math.sqrt(p.x * p.x + p.z * p.z)) return out.set(0, Math.sign(p.y), 0);
+  return out.set(p.x, 0, p.z);
 }
 
 function nearerSideHit(t: number, o: Vector3, d: Vector3, best: number): number {

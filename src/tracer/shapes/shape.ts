@@ -1,7 +1,12 @@
 import { Box3, Matrix3, Matrix4, Vector3 } from 'three';
-import type { Material } from '../../scene/scene.ts';
+import type { Material, ShapeKind } from '../../scene/scene.ts';
 import type { Hit } from '../hit.ts';
 import type { Ray } from '../ray.ts';
+import { intersectUnitBox, unitBoxNormal } from './box.ts';
+import { intersectUnitCylinder, unitCylinderNormal } from './cylinder.ts';
+import { intersectMesh, type MeshAccel, meshNormals } from './mesh-accel.ts';
+import { intersectUnitPlane, unitPlaneNormal } from './plane.ts';
+import { intersectUnitSphere, unitSphereNormal } from './sphere.ts';
 
 // Scratch vectors at module scope: intersection runs millions of times per render, and
 // allocation per test would dominate (three.js does the same in its hot paths).
@@ -9,33 +14,43 @@ const localOrigin = new Vector3();
 const localDirection = new Vector3();
 const corner = new Vector3();
 
+const UNIT_BOUNDS = new Box3(new Vector3(-0.5, -0.5, -0.5), new Vector3(0.5, 0.5, 0.5));
+const PLANE_BOUNDS = new Box3(new Vector3(-0.5, 0, -0.5), new Vector3(0.5, 0, 0.5));
+
 /**
- * A unit shape placed in the world by a transform (spec §1). Rays are moved into object
+ * A unit shape (spec §1) placed in the world by a transform. Rays are moved into object
  * space instead of moving the shape: the direction is not renormalized there, so the ray
  * parameter t means the same world distance in both spaces.
+ *
+ * One class for every kind, dispatching on `kind`: the tracer's inner loop then sees one
+ * object shape, which V8 keeps monomorphic (a class per kind made that loop megamorphic).
  */
-export abstract class Shape {
+export class Shape {
   /**
    * A ray leaving a convex shape's outer surface can never hit it again, so shadow and
    * mirror rays from it skip it (one test fewer per ray, and no self-shadowing acne).
    */
-  abstract readonly convex: boolean;
+  readonly convex: boolean;
   readonly worldBounds = new Box3();
-  protected readonly worldToObject = new Matrix4();
-  /** The linear part of worldToObject: moves directions without renormalizing them. */
-  private readonly worldToObjectLinear = new Matrix3();
+  // The world-to-object affine transform, row by row (m[0..3] is the x row).
+  private readonly m = new Float64Array(12);
+  // worldBounds as min x, y, z then max x, y, z: the slab test reads it per ray.
+  private readonly bounds = new Float64Array(6);
   private readonly normalToWorld = new Matrix3();
 
   constructor(
     readonly index: number,
     readonly id: string,
     readonly material: Material,
-    readonly objectToWorld: Matrix4,
-    objectBounds: Box3,
+    readonly kind: ShapeKind,
+    objectToWorld: Matrix4,
+    private readonly accel: MeshAccel | null = null,
   ) {
-    this.worldToObject.copy(objectToWorld).invert();
-    this.worldToObjectLinear.setFromMatrix4(this.worldToObject);
+    this.convex = kind !== 'mesh';
+    const e = new Matrix4().copy(objectToWorld).invert().elements; // column-major
+    this.m.set([e[0], e[4], e[8], e[12], e[1], e[5], e[9], e[13], e[2], e[6], e[10], e[14]]);
     this.normalToWorld.getNormalMatrix(objectToWorld);
+    const objectBounds = accel ? accel.bounds : kind === 'plane' ? PLANE_BOUNDS : UNIT_BOUNDS;
     for (let i = 0; i < 8; i++) {
       corner.set(
         i & 1 ? objectBounds.max.x : objectBounds.min.x,
@@ -46,6 +61,7 @@ export abstract class Shape {
     }
     // A little slack so that hits on flat or rotated shapes are not lost to rounding.
     this.worldBounds.expandByScalar(1e-6 * (1 + this.worldBounds.getSize(corner).length()));
+    this.bounds.set([...this.worldBounds.min.toArray(), ...this.worldBounds.max.toArray()]);
   }
 
   /**
@@ -53,48 +69,75 @@ export abstract class Shape {
    * returns true.
    */
   intersect(ray: Ray, hit: Hit): boolean {
-    if (!rayMeetsBox(ray, this.worldBounds, hit.t)) return false;
-    localOrigin.copy(ray.origin).applyMatrix4(this.worldToObject);
-    localDirection.copy(ray.direction).applyMatrix3(this.worldToObjectLinear);
-    const t = this.intersectLocal(localOrigin, localDirection, hit.t, hit);
-    if (t === null) return false;
+    if (!rayMeetsBox(ray, this.bounds, hit.t)) return false;
+    const m = this.m;
+    const { x: ox, y: oy, z: oz } = ray.origin;
+    const { x: dx, y: dy, z: dz } = ray.direction;
+    localOrigin.set(m[0] * ox + m[1] * oy + m[2] * oz + m[3], m[4] * ox + m[5] * oy + m[6] * oz + m[7], m[8] * ox + m[9] * oy + m[10] * oz + m[11]);
+    localDirection.set(m[0] * dx + m[1] * dy + m[2] * dz, m[4] * dx + m[5] * dy + m[6] * dz, m[8] * dx + m[9] * dy + m[10] * dz);
+    const t = this.intersectLocal(localOrigin, localDirection, hit);
+    if (t === Infinity) return false;
     hit.t = t;
     hit.shape = this;
     hit.local.copy(localDirection).multiplyScalar(t).add(localOrigin);
     return true;
   }
 
-  /** Fills the hit's world point and outward normals (called once, for the nearest hit). */
+  /** Fills the hit's world point and outward unit normals (called once, for the nearest hit). */
   surface(ray: Ray, hit: Hit): void {
     hit.point.copy(ray.direction).multiplyScalar(hit.t).add(ray.origin);
-    this.localNormals(hit, hit.geometricNormal, hit.normal);
-    hit.geometricNormal.applyMatrix3(this.normalToWorld).normalize();
+    const geometric = hit.geometricNormal;
+    switch (this.kind) {
+      case 'sphere':
+        unitSphereNormal(hit.local, geometric);
+        break;
+      case 'box':
+        unitBoxNormal(hit.local, geometric);
+        break;
+      case 'cylinder':
+        unitCylinderNormal(hit.local, geometric);
+        break;
+      case 'plane':
+        unitPlaneNormal(geometric);
+        break;
+      case 'mesh':
+        meshNormals(this.accel!, hit, geometric, hit.normal);
+    }
+    if (this.kind !== 'mesh') hit.normal.copy(geometric);
+    geometric.applyMatrix3(this.normalToWorld).normalize();
     hit.normal.applyMatrix3(this.normalToWorld).normalize();
   }
 
-  /**
-   * The nearest t in (0, tMax) where the object-space ray o + t·d meets the unit shape,
-   * or null. May store extra details (e.g. the triangle) in `hit`.
-   */
-  protected abstract intersectLocal(o: Vector3, d: Vector3, tMax: number, hit: Hit): number | null;
-
-  /** Outward geometric and shading normals at `hit.local`, in object space (any length). */
-  protected abstract localNormals(hit: Hit, geometric: Vector3, shading: Vector3): void;
+  /** The nearest t in (0, hit.t) where the object-space ray o + t·d meets the unit shape, or Infinity. */
+  private intersectLocal(o: Vector3, d: Vector3, hit: Hit): number {
+    switch (this.kind) {
+      case 'sphere':
+        return intersectUnitSphere(o, d, hit.t);
+      case 'box':
+        return intersectUnitBox(o, d, hit.t);
+      case 'cylinder':
+        return intersectUnitCylinder(o, d, hit.t);
+      case 'plane':
+        return intersectUnitPlane(o, d, hit.t);
+      case 'mesh':
+        return intersectMesh(this.accel!, o, d, hit.t, hit);
+    }
+  }
 }
 
-/** Slab test (Kay & Kajiya 1986): does the ray meet the box before `tMax`? */
-export function rayMeetsBox(ray: Ray, box: Box3, tMax: number): boolean {
+/** Slab test (Kay & Kajiya 1986): does the ray meet the box [min xyz, max xyz] before `tMax`? */
+function rayMeetsBox(ray: Ray, box: Float64Array, tMax: number): boolean {
   const { origin: o, inverseDirection: inv } = ray;
-  let t0 = (box.min.x - o.x) * inv.x;
-  let t1 = (box.max.x - o.x) * inv.x;
+  let t0 = (box[0] - o.x) * inv.x;
+  let t1 = (box[3] - o.x) * inv.x;
   let near = Math.min(t0, t1);
   let far = Math.max(t0, t1);
-  t0 = (box.min.y - o.y) * inv.y;
-  t1 = (box.max.y - o.y) * inv.y;
+  t0 = (box[1] - o.y) * inv.y;
+  t1 = (box[4] - o.y) * inv.y;
   near = Math.max(near, Math.min(t0, t1));
   far = Math.min(far, Math.max(t0, t1));
-  t0 = (box.min.z - o.z) * inv.z;
-  t1 = (box.max.z - o.z) * inv.z;
+  t0 = (box[2] - o.z) * inv.z;
+  t1 = (box[5] - o.z) * inv.z;
   near = Math.max(near, Math.min(t0, t1));
   far = Math.min(far, Math.max(t0, t1));
   // NaN (a ray lying exactly in a slab's plane) compares false, so such rays are kept.

@@ -1,10 +1,7 @@
 import { Box3, BufferAttribute, BufferGeometry, DoubleSide, Ray as ThreeRay, Vector3 } from 'three';
 import { MeshBVH, SAH } from 'three-mesh-bvh';
-import type { Material } from '../../scene/scene.ts';
 import type { MeshData } from '../../scene/mesh-data.ts';
 import type { Hit } from '../hit.ts';
-import type { Matrix4 } from 'three';
-import { Shape } from './shape.ts';
 
 /** A model's BVH, built once per model and shared by every object that uses it. */
 export interface MeshAccel {
@@ -40,6 +37,21 @@ export function meshAccel(mesh: MeshData): MeshAccel {
 }
 
 const localRay = new ThreeRay();
+
+/** The nearest t in (0, tMax) where o + t·d meets the model, or Infinity; records the triangle in `hit.face`. */
+export function intersectMesh(accel: MeshAccel, o: Vector3, d: Vector3, tMax: number, hit: Hit): number {
+  // three-mesh-bvh measures distance along a unit direction: scale to and from it.
+  const scale = d.length();
+  localRay.origin.copy(o);
+  localRay.direction.copy(d).divideScalar(scale);
+  const result = accel.bvh.raycastFirst(localRay, DoubleSide, 0, tMax * scale);
+  if (!result || result.faceIndex == null) return Infinity;
+  const t = result.distance / scale;
+  if (!(t > 0 && t < tMax)) return Infinity;
+  hit.face = result.faceIndex;
+  return t;
+}
+
 const a = new Vector3();
 const b = new Vector3();
 const c = new Vector3();
@@ -47,48 +59,26 @@ const barycentric = new Vector3();
 const edge1 = new Vector3();
 const edge2 = new Vector3();
 
-/** A triangle mesh from assets/models, intersected through its BVH in object space. */
-export class MeshShape extends Shape {
-  // A model may be concave (a glass's bowl, a character's arms).
-  readonly convex = false;
-
-  constructor(index: number, id: string, material: Material, objectToWorld: Matrix4, private readonly accel: MeshAccel) {
-    super(index, id, material, objectToWorld, accel.bounds);
+/** Outward geometric normal of the hit triangle, and the smooth shading normal when the model has vertex normals. */
+export function meshNormals(accel: MeshAccel, hit: Hit, geometric: Vector3, shading: Vector3): void {
+  const { index, positions, normals } = accel;
+  const ia = index[hit.face * 3];
+  const ib = index[hit.face * 3 + 1];
+  const ic = index[hit.face * 3 + 2];
+  a.fromArray(positions, ia * 3);
+  b.fromArray(positions, ib * 3);
+  c.fromArray(positions, ic * 3);
+  geometric.crossVectors(edge1.subVectors(b, a), edge2.subVectors(c, a));
+  if (!normals) {
+    shading.copy(geometric);
+    return;
   }
-
-  protected intersectLocal(o: Vector3, d: Vector3, tMax: number, hit: Hit): number | null {
-    // three-mesh-bvh measures distance along a unit direction: scale to and from it.
-    const scale = d.length();
-    localRay.origin.copy(o);
-    localRay.direction.copy(d).divideScalar(scale);
-    const result = this.accel.bvh.raycastFirst(localRay, DoubleSide, 0, tMax * scale);
-    if (!result || result.faceIndex == null) return null;
-    const t = result.distance / scale;
-    if (!(t > 0 && t < tMax)) return null;
-    hit.face = result.faceIndex;
-    return t;
-  }
-
-  protected localNormals(hit: Hit, geometric: Vector3, shading: Vector3): void {
-    const { index, positions, normals } = this.accel;
-    const ia = index[hit.face * 3];
-    const ib = index[hit.face * 3 + 1];
-    const ic = index[hit.face * 3 + 2];
-    a.fromArray(positions, ia * 3);
-    b.fromArray(positions, ib * 3);
-    c.fromArray(positions, ic * 3);
-    geometric.crossVectors(edge1.subVectors(b, a), edge2.subVectors(c, a));
-    if (!normals) {
-      shading.copy(geometric);
-      return;
-    }
-    // Smooth shading: the vertex normals weighted by the hit's barycentric coordinates.
-    barycentricOf(hit.local, a, b, c, barycentric);
-    shading
-      .fromArray(normals, ia * 3).multiplyScalar(barycentric.x)
-      .addScaledVector(a.fromArray(normals, ib * 3), barycentric.y)
-      .addScaledVector(b.fromArray(normals, ic * 3), barycentric.z);
-  }
+  // Smooth shading: the vertex normals weighted by the hit's barycentric coordinates.
+  barycentricOf(hit.local, a, b, c, barycentric);
+  shading
+    .fromArray(normals, ia * 3).multiplyScalar(barycentric.x)
+    .addScaledVector(a.fromArray(normals, ib * 3), barycentric.y)
+    .addScaledVector(b.fromArray(normals, ic * 3), barycentric.z);
 }
 
 const v0 = new Vector3();
