@@ -1,0 +1,31 @@
+import { readFile } from 'node:fs/promises';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import type { MeshData, MeshLibrary } from './mesh-data.ts';
+import { parseObj } from './obj-parser.ts';
+
+const MODELS_DIR = fileURLToPath(new URL('../../assets/models/', import.meta.url));
+
+/**
+ * Reads the named models from `<dir>/<name>.obj` (Node: the `rt` command and the tests;
+ * the browser has its own loader in src/app).
+ *
+ * @param dir - Defaults to the repository's assets/models.
+ * @throws Error naming the model and file when one is missing or malformed.
+ */
+export async function loadMeshesFromDisk(names: Iterable<string>, dir = MODELS_DIR): Promise<MeshLibrary> {
+  const unique = [...new Set(names)];
+  const meshes = await Promise.all(unique.map((name) => loadMesh(name, join(dir, `${name}.obj`))));
+  return new Map(unique.map((name, i) => [name, meshes[i]]));
+}
+
+async function loadMesh(name: string, path: string): Promise<MeshData> {
+  let text: string;
+  try {
+    text = await readFile(path, 'utf8');
+  } catch (error) {
+    const reason = error instanceof Error ? error.message : String(error);
+    throw new Error(`mesh "${name}": cannot read ${path} (${reason})`);
+  }
+  return parseObj(text, `${name}.obj`);
+}
