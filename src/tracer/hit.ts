@@ -1,5 +1,5 @@
 import { Vector3 } from 'three';
-import type { Shape } from './shapes/shape.ts';
+import type { Intersectable } from './intersectable.ts';
 
 /**
  * The nearest intersection found so far along a ray. Shapes fill `t`, `shape` and the
@@ -8,7 +8,7 @@ import type { Shape } from './shapes/shape.ts';
  */
 export class Hit {
   t = Infinity;
-  shape: Shape | null = null;
+  shape: Intersectable | null = null;
   /** The hit point in the shape's object space. */
   readonly local = new Vector3();
   /** Triangle index, for meshes. */

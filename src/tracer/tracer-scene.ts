@@ -2,6 +2,7 @@ import { Box3, Euler, Matrix4, Quaternion, Vector3 } from 'three';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import type { RenderSettings, Scene, SceneObject } from '../scene/scene.ts';
 import { CameraRays } from './camera-rays.ts';
+import type { Intersectable } from './intersectable.ts';
 import { TracerLight } from './lights.ts';
 import { meshAccel } from './shapes/mesh-accel.ts';
 import { Shape } from './shapes/shape.ts';
@@ -13,9 +14,9 @@ export interface TracerScene {
   readonly source: Scene;
   readonly settings: RenderSettings;
   readonly camera: CameraRays;
-  readonly shapes: readonly Shape[];
+  readonly shapes: readonly Intersectable[];
   /** The same shapes, cheap analytic ones first: the order shadow rays try them in. */
-  readonly occluders: readonly Shape[];
+  readonly occluders: readonly Intersectable[];
   /** The lights whose type is switched on in settings.lightTypes. */
   readonly lights: readonly TracerLight[];
   /** How far secondary rays start off a surface: 1e-4, scaled up for large scenes. */

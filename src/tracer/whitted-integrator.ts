@@ -8,7 +8,7 @@ import { Ray } from './ray.ts';
 import type { RayNode, RayStats, RayType } from './ray-tree.ts';
 import { emptyRayStats } from './ray-tree.ts';
 import { hashKey, RandomStream } from './sampler.ts';
-import type { Shape } from './shapes/shape.ts';
+import type { Intersectable } from './intersectable.ts';
 import type { TracerScene } from './tracer-scene.ts';
 
 /** Missed rays are drawn this long in the ray tree (spec §3). */
@@ -51,7 +51,7 @@ export class WhittedIntegrator {
   readonly childWeights = new Map<RayNode, number>();
   private readonly frames: Frame[] = [];
   /** The shape that last blocked each light: it is likely to block the next sample too. */
-  private readonly lastBlocker: (Shape | null)[];
+  private readonly lastBlocker: (Intersectable | null)[];
   private readonly random = new RandomStream();
   private sampleKey = 0;
   private lightEvaluation = 0;
@@ -71,7 +71,7 @@ export class WhittedIntegrator {
    * The colour seen along `ray`, clamped to 0..1 per channel, written into `out`.
    * @param leaving a convex shape the ray leaves outward, which it cannot hit again
    */
-  trace(ray: Ray, depth: number, out: Vector3, node: RayNode | null, leaving: Shape | null = null): Vector3 {
+  trace(ray: Ray, depth: number, out: Vector3, node: RayNode | null, leaving: Intersectable | null = null): Vector3 {
     const frame = this.frames[depth];
     const hit = frame.hit.reset(Infinity);
     for (const shape of this.scene.shapes) if (shape !== leaving) shape.intersect(ray, hit);
@@ -87,7 +87,7 @@ export class WhittedIntegrator {
     return out;
   }
 
-  private shade(ray: Ray, shape: Shape, depth: number, out: Vector3, node: RayNode | null): void {
+  private shade(ray: Ray, shape: Intersectable, depth: number, out: Vector3, node: RayNode | null): void {
     const frame = this.frames[depth];
     const { hit, normal: n, geometricNormal: ng, toViewer: v } = frame;
     const material = shape.material;
@@ -171,7 +171,7 @@ export class WhittedIntegrator {
    * light is tried first, then cheap shapes before meshes); a recorded tree shows the
    * nearest one. Both give the same visibility, so the same colour.
    */
-  private firstBlocker(frame: Frame, toLight: Vector3, distance: number, lightIndex: number, nearest: boolean): Shape | null {
+  private firstBlocker(frame: Frame, toLight: Vector3, distance: number, lightIndex: number, nearest: boolean): Intersectable | null {
     this.stats.shadow++;
     const origin = offsetOrigin(frame, toLight, this.scene.epsilon);
     const ray = frame.shadowRay.set(origin, toLight);
@@ -213,7 +213,7 @@ export class WhittedIntegrator {
 
   /** Traces frame.childDirection from the hit point and adds weight × its colour to `out`. */
   private traceChild(
-    type: 'reflect' | 'refract', frame: Frame, depth: number, weight: number, out: Vector3, node: RayNode | null, leaving: Shape | null = null,
+    type: 'reflect' | 'refract', frame: Frame, depth: number, weight: number, out: Vector3, node: RayNode | null, leaving: Intersectable | null = null,
   ): void {
     this.stats[type]++;
     const origin = offsetOrigin(frame, frame.childDirection, this.scene.epsilon);
@@ -246,7 +246,7 @@ export class WhittedIntegrator {
 }
 
 /** The hit shape, if it is convex and `direction` leaves it from its outside (so cannot meet it again). */
-function leavingShape(frame: Frame, direction: Vector3): Shape | null {
+function leavingShape(frame: Frame, direction: Vector3): Intersectable | null {
   const shape = frame.hit.shape;
   return shape && shape.convex && frame.entering && frame.geometricNormal.dot(direction) > 0 ? shape : null;
 }

@@ -1,0 +1,18 @@
+import type { Material } from '../scene/scene.ts';
+import type { Hit } from './hit.ts';
+import type { Ray } from './ray.ts';
+
+/**
+ * What the integrator needs of a scene object. The tracer's own implementation is Shape;
+ * the benchmark plugs in a three.js Raycaster version to compare against the same shading.
+ */
+export interface Intersectable {
+  readonly id: string;
+  readonly material: Material;
+  /** A ray leaving a convex object's outer surface cannot hit it again. */
+  readonly convex: boolean;
+  /** If hit nearer than `hit.t` (and farther than 0): records the hit and returns true. */
+  intersect(ray: Ray, hit: Hit): boolean;
+  /** Fills hit.point and the outward unit normals, for the nearest hit only. */
+  surface(ray: Ray, hit: Hit): void;
+}
