@@ -1,0 +1,70 @@
+import type { z } from 'zod';
+import type { Light, LightType, Scene, SceneObject, ShapeKind } from './scene.ts';
+import { MESH_ASSET_NAMES } from './mesh-assets.ts';
+import { lightSchema, sceneObjectSchema, sceneSchema } from './scene-schema.ts';
+
+/**
+ * Ready-made scenes and scene parts. Everything left out here is filled in by the schema's
+ * defaults, so each default value is written down in one place only (scene-schema.ts).
+ */
+
+/**
+ * The scene the lab opens with: one of each kind of material (diffuse, mirror, glass) on a
+ * floor, a box for hard edges, a point light for shadows and a spot light for its cone.
+ */
+export function defaultScene(): Scene {
+  const scene: z.input<typeof sceneSchema> = {
+    version: 1,
+    name: 'Three spheres and a box',
+    objects: [
+      { id: 'floor', shape: 'plane', scale: [10, 1, 10], material: { color: [0.7, 0.7, 0.7] } },
+      { id: 'red-ball', shape: 'sphere', position: [-1.5, 0.5, 0.3], material: { color: [0.9, 0.15, 0.1] } },
+      {
+        id: 'mirror-ball',
+        shape: 'sphere',
+        position: [0.2, 0.5, -1],
+        material: { color: [0.9, 0.9, 0.9], ambient: 0.05, diffuse: 0.1, specular: 0.85, shininess: 200 },
+      },
+      {
+        id: 'glass-ball',
+        shape: 'sphere',
+        position: [1, 0.5, 1.2],
+        material: { ambient: 0, diffuse: 0.05, specular: 0.6, shininess: 200, transparent: true, refractiveIndex: 1.5 },
+      },
+      {
+        id: 'box',
+        shape: 'box',
+        position: [-0.8, 0.35, -2.4],
+        rotation: [0, 30, 0],
+        scale: [0.7, 0.7, 0.7],
+        material: { color: [0.2, 0.4, 0.9] },
+      },
+    ],
+    lights: [
+      { id: 'lamp', type: 'point', position: [2, 4, 3], intensity: 0.7 },
+      // No ambient of its own: the lamp's already lights the shadows.
+      { id: 'spot', type: 'spot', position: [-1.5, 3, 0.3], ambient: 0, intensity: 0.35, spotAngle: 40 },
+    ],
+  };
+  return sceneSchema.parse(scene);
+}
+
+/** A new object of this shape with every default, at the origin, with an id unused in `scene`. */
+export function createObject(shape: ShapeKind, scene: Scene): SceneObject {
+  // Only a mesh has the `mesh` field at all (even `mesh: undefined` would show up as a key).
+  const model = shape === 'mesh' ? { mesh: MESH_ASSET_NAMES[0] } : {};
+  return sceneObjectSchema.parse({ id: unusedId(shape, scene), shape, ...model });
+}
+
+/** A new light of this type with every default, 3 m above the origin, with an id unused in `scene`. */
+export function createLight(type: LightType, scene: Scene): Light {
+  return lightSchema.parse({ id: unusedId(type, scene), type });
+}
+
+/** `sphere-1`, `sphere-2`, …: the first not taken by an object or a light. */
+function unusedId(base: string, scene: Scene): string {
+  const taken = new Set([...scene.objects, ...scene.lights].map((item) => item.id));
+  let number = 1;
+  while (taken.has(`${base}-${number}`)) number++;
+  return `${base}-${number}`;
+}

@@ -1,0 +1,80 @@
+import type { z } from 'zod';
+import { MESH_ASSET_NAMES } from './mesh-assets.ts';
+
+/**
+ * The rules that look at more than one field, which a field's own schema cannot check.
+ * They also run when other fields are broken (so that every problem is listed at once),
+ * so the value they get may be half-parsed: each one checks a field before reading it.
+ */
+
+interface RuleIssue {
+  path: (string | number)[];
+  input: unknown;
+  message: string;
+}
+
+type Rule = (value: Record<string, unknown>) => RuleIssue[];
+
+/** A rule as the function of a zod `superRefine`. */
+export function asRefinement(rule: Rule) {
+  return (value: Record<string, unknown>, context: z.RefinementCtx) => {
+    for (const issue of rule(value)) context.addIssue({ code: 'custom', ...issue });
+  };
+}
+
+/**
+ * The options of a rule's `superRefine`: run whenever the value is an object at all. zod's
+ * default skips refinements once a field has the wrong type.
+ */
+export const alsoWhenFieldsFail = { when: (payload: z.core.ParsePayload) => isRecord(payload.value) };
+
+/** The view direction is target − position; the same point gives no direction at all. */
+export const cameraHasDirection: Rule = (camera) =>
+  isSamePoint(camera.position, camera.target)
+    ? [{ path: ['target'], input: camera.target, message: 'must differ from camera.position' }]
+    : [];
+
+/** `mesh` names the model of a `shape: "mesh"` object and means nothing on any other. */
+export const meshOnlyOnMeshes: Rule = (object) => {
+  if (object.shape === 'mesh' && object.mesh === undefined) {
+    return [{ path: ['mesh'], input: undefined, message: `is required when shape is "mesh" (one of ${MESH_ASSET_NAMES.join(', ')})` }];
+  }
+  if (object.shape !== 'mesh' && object.mesh !== undefined) {
+    return [{ path: ['mesh'], input: object.mesh, message: 'is only allowed when shape is "mesh"' }];
+  }
+  return [];
+};
+
+/**
+ * Ids are unique across objects and lights, so that an id in a goal or a ray tree means one
+ * thing. Every second, third… use is reported where it stands.
+ */
+export const idsAreUnique: Rule = (scene) => {
+  const places: { id: string; path: (string | number)[] }[] = [];
+  for (const list of ['objects', 'lights']) {
+    const items = scene[list];
+    if (!Array.isArray(items)) continue;
+    items.forEach((item: unknown, index) => {
+      if (isRecord(item) && typeof item.id === 'string') places.push({ id: item.id, path: [list, index, 'id'] });
+    });
+  }
+  const uses = new Map<string, number>();
+  for (const { id } of places) uses.set(id, (uses.get(id) ?? 0) + 1);
+  const seen = new Set<string>();
+  return places.flatMap(({ id, path }) => {
+    if (!seen.has(id)) {
+      seen.add(id);
+      return [];
+    }
+    const count = uses.get(id) ?? 0;
+    return [{ path, input: id, message: `${JSON.stringify(id)} is used ${count === 2 ? 'twice' : `${count} times`}` }];
+  });
+};
+
+function isSamePoint(a: unknown, b: unknown): boolean {
+  return Array.isArray(a) && Array.isArray(b) && a.length === b.length && a.every((value, axis) => value === b[axis]);
+}
+
+function isRecord(value: unknown): value is Record<string, unknown> {
+  return typeof value === 'object' && value !== null && !Array.isArray(value);
+}

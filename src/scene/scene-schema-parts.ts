@@ -1,0 +1,47 @@
+import { z } from 'zod';
+import { describeValue } from './scene-issues.ts';
+
+/**
+ * The building blocks the scene schema is made of. Each carries its own error message where
+ * the generic ones in scene-issues.ts cannot say enough (a range issue knows only the bound
+ * it broke, a tuple issue not what its items are).
+ */
+
+type Range = readonly [lowest: number, highest: number];
+
+/** A finite number in the range (zod rejects NaN and ±Infinity by itself). */
+export function numberIn([lowest, highest]: Range) {
+  const error = rangeError(lowest, highest);
+  return z.number().min(lowest, { error }).max(highest, { error });
+}
+
+/**
+ * A whole number in the range. Not `z.int()`: its issue stops all later checks, which would
+ * hide the duplicate-id and mesh problems of the same file until this one is fixed.
+ */
+export function wholeNumberIn([lowest, highest]: Range) {
+  const error = rangeError(lowest, highest);
+  return z
+    .number()
+    .multipleOf(1, { error: (issue) => `must be a whole number, got ${describeValue(issue.input)}` })
+    .min(lowest, { error })
+    .max(highest, { error });
+}
+
+function rangeError(lowest: number, highest: number) {
+  return (issue: { input?: unknown }) => `must be between ${lowest} and ${highest}, got ${describeValue(issue.input)}`;
+}
+
+/** [x, y, z], [r, g, b] and the like. */
+export function triple<Item extends z.ZodType>(item: Item, itemsAre: string) {
+  return z.tuple([item, item, item], { error: listError(3, itemsAre) });
+}
+
+/** [width, height] and the like. */
+export function pair<Item extends z.ZodType>(item: Item, itemsAre: string) {
+  return z.tuple([item, item], { error: listError(2, itemsAre) });
+}
+
+function listError(length: number, itemsAre: string) {
+  return (issue: { input?: unknown }) => `must be a list of ${length} ${itemsAre}, got ${describeValue(issue.input)}`;
+}
