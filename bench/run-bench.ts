@@ -1,0 +1,177 @@
+/**
+ * `npm run bench`: the tracer on the reference scene (bench/scenes/reference.json), side by
+ * side with the baselines, as a table on stdout and bench/results.json.
+ * Goals (issue: the engine): ≤ 5 s with 2 workers (aim 2 s), ≥ 10× the naive tracer,
+ * ≥ 1.8× from 1 to 2 workers, first preview ≤ 250 ms.
+ */
+import { readFileSync, writeFileSync } from 'node:fs';
+import { Ray as ThreeRay, DoubleSide, Vector3 } from 'three';
+import { createNodeRenderPool } from '../src/cli/node-worker-port.ts';
+import type { FinishedRender } from '../src/app/render-job.ts';
+import { loadMeshesFromDisk } from '../src/scene/load-meshes-node.ts';
+import { meshNamesInScene } from '../src/scene/mesh-names.ts';
+import type { MeshLibrary } from '../src/scene/mesh-data.ts';
+import type { Scene } from '../src/scene/scene.ts';
+import { parseSceneJson } from '../src/scene/scene-schema.ts';
+import { Hit } from '../src/tracer/hit.ts';
+import { Ray } from '../src/tracer/ray.ts';
+import { emptyRayStats, type RayStats } from '../src/tracer/ray-tree.ts';
+import { renderTile } from '../src/tracer/render-tile.ts';
+import { buildTracerScene, type TracerScene } from '../src/tracer/tracer-scene.ts';
+import { mergedWorldBvh } from './naive/merged-world-bvh.ts';
+import { naiveTracerScene } from './naive/naive-tracer-scene.ts';
+import { printTable } from './print-table.ts';
+
+const SCENE_FILE = new URL('scenes/reference.json', import.meta.url);
+const RESULTS_FILE = new URL('results.json', import.meta.url);
+/** The naive tracer takes minutes for the whole image: both tracers run on this centre crop. */
+const CROP = { x: 240, y: 232, width: 32, height: 32 };
+
+function loadReferenceScene(): Scene {
+  const parsed = parseSceneJson(readFileSync(SCENE_FILE, 'utf8'));
+  if (!parsed.ok) throw new Error(`bench/scenes/reference.json is invalid:\n${parsed.errors.join('\n')}`);
+  return parsed.scene;
+}
+
+/** A full-quality render with `workers` threads, after one warm-up render so the JIT has compiled the tracer. */
+async function timeRender(scene: Scene, meshes: MeshLibrary, workers: number): Promise<FinishedRender> {
+  const pool = createNodeRenderPool(workers);
+  try {
+    await pool.render(scene, meshes, { width: 128, height: 128, preview: false }).done;
+    const result = await pool.render(scene, meshes, { preview: false }).done;
+    if (result.cancelled) throw new Error('the benchmark render was cancelled');
+    return result;
+  } finally {
+    pool.dispose();
+  }
+}
+
+/**
+ * Time from asking for a render to the first coarse preview, when the user has just
+ * changed the scene (warm workers, a scene they have not built yet).
+ */
+async function timeFirstPreview(scene: Scene, meshes: MeshLibrary): Promise<number> {
+  const pool = createNodeRenderPool(2);
+  try {
+    await pool.render(scene, meshes, { width: 128, height: 128, preview: false }).done;
+    const edited: Scene = { ...scene, objects: scene.objects.map((o, i) => (i === 2 ? { ...o, position: [o.position[0] + 0.1, o.position[1], o.position[2]] } : o)) };
+    const started = performance.now();
+    let firstPreviewMs = NaN;
+    const job = pool.render(edited, meshes, {
+      onPreview: () => {
+        if (Number.isNaN(firstPreviewMs)) {
+          firstPreviewMs = performance.now() - started;
+          job.cancel();
+        }
+      },
+    });
+    await job.done;
+    return firstPreviewMs;
+  } finally {
+    pool.dispose();
+  }
+}
+
+/** Single-thread ms per pixel on the crop, after a warm-up pass. */
+function msPerPixel(tracer: TracerScene, scene: Scene): { msPerPixel: number; stats: RayStats } {
+  const [imageWidth, imageHeight] = scene.settings.imageSize;
+  const options = { imageWidth, imageHeight, seed: 0 };
+  renderTile(tracer, { ...CROP, width: 8, height: 8 }, options);
+  const stats = emptyRayStats();
+  const started = performance.now();
+  renderTile(tracer, CROP, options, stats);
+  return { msPerPixel: (performance.now() - started) / (CROP.width * CROP.height), stats };
+}
+
+/** Nearest-hit time per primary ray of the full image: our shapes vs one merged three-mesh-bvh BVH. */
+function primaryRayCasts(scene: Scene, meshes: MeshLibrary): { oursNsPerRay: number; rawBvhNsPerRay: number; rays: number } {
+  const tracer = buildTracerScene(scene, meshes);
+  const bvh = mergedWorldBvh(scene, meshes);
+  const [width, height] = scene.settings.imageSize;
+  const s = scene.settings.supersampling;
+  const direction = new Vector3();
+  const ray = new Ray();
+  const threeRay = new ThreeRay();
+  const hit = new Hit();
+  const eachPrimaryRay = (cast: () => void) => {
+    const started = performance.now();
+    for (let y = 0; y < height; y++) {
+      for (let x = 0; x < width; x++) {
+        for (let k = 0; k < s * s; k++) {
+          tracer.camera.direction(x + ((k % s) + 0.5) / s, y + (Math.floor(k / s) + 0.5) / s, width, height, direction);
+          ray.set(tracer.camera.eye, direction);
+          cast();
+        }
+      }
+    }
+    return performance.now() - started;
+  };
+  const ours = () => {
+    hit.reset(Infinity);
+    for (const shape of tracer.shapes) shape.intersect(ray, hit);
+  };
+  const raw = () => {
+    threeRay.origin.copy(ray.origin);
+    threeRay.direction.copy(ray.direction);
+    bvh.raycastFirst(threeRay, DoubleSide);
+  };
+  eachPrimaryRay(ours); // warm-up
+  eachPrimaryRay(raw);
+  const rays = width * height * s * s;
+  return { oursNsPerRay: (eachPrimaryRay(ours) * 1e6) / rays, rawBvhNsPerRay: (eachPrimaryRay(raw) * 1e6) / rays, rays };
+}
+
+const round = (value: number, digits = 1) => Number(value.toFixed(digits));
+
+async function main(): Promise<void> {
+  const scene = loadReferenceScene();
+  const [width, height] = scene.settings.imageSize;
+  console.log(`Reference scene: ${width}×${height}, supersampling ${scene.settings.supersampling}, maxDepth ${scene.settings.maxDepth}, ${scene.objects.length} objects, ${scene.lights.length} lights\n`);
+
+  const meshes = await loadMeshesFromDisk(meshNamesInScene(scene));
+  // The first build of these models in this process: their BVHs are built, not cached.
+  const bvhBuildMs = buildTracerScene(scene, meshes).bvhBuildMs;
+
+  const one = await timeRender(scene, meshes, 1);
+  const two = await timeRender(scene, meshes, 2);
+  const firstPreviewMs = await timeFirstPreview(scene, meshes);
+  const ours = msPerPixel(buildTracerScene(scene, meshes), scene);
+  const naive = msPerPixel(naiveTracerScene(scene, meshes), scene);
+  const casts = primaryRayCasts(scene, meshes);
+
+  const rays = { ...two.stats, total: two.stats.primary + two.stats.shadow + two.stats.reflect + two.stats.refract };
+  const results = {
+    date: new Date().toISOString(),
+    machine: { cores: (await import('node:os')).availableParallelism(), node: process.version },
+    scene: { width, height, supersampling: scene.settings.supersampling, maxDepth: scene.settings.maxDepth },
+    referenceMs: { '1': round(one.ms), '2': round(two.ms) },
+    rays,
+    shadowRayShare: round(rays.shadow / rays.total, 3),
+    raysPerSecond: Math.round(rays.total / (two.ms / 1000)),
+    workerScaling: round(one.ms / two.ms, 2),
+    speedupVsNaive: round(naive.msPerPixel / ours.msPerPixel, 1),
+    naiveCrop: { ...CROP, oursMsPerPixel: round(ours.msPerPixel, 4), naiveMsPerPixel: round(naive.msPerPixel, 4) },
+    primaryRayCasts: { rays: casts.rays, oursNsPerRay: round(casts.oursNsPerRay), rawBvhRaycastFirstNsPerRay: round(casts.rawBvhNsPerRay) },
+    firstPreviewMs: round(firstPreviewMs),
+    bvhBuildMs: round(bvhBuildMs),
+    slowestTileMs: round(two.slowestTileMs),
+  };
+  writeFileSync(RESULTS_FILE, `${JSON.stringify(results, null, 2)}\n`);
+
+  printTable([
+    ['reference render, 1 worker', `${results.referenceMs['1']} ms`, ''],
+    ['reference render, 2 workers', `${results.referenceMs['2']} ms`, '≤ 5000 ms (aim 2000)'],
+    ['worker scaling 1 → 2', `${results.workerScaling}×`, '≥ 1.8×'],
+    ['rays (primary/shadow/reflect/refract)', `${rays.primary}/${rays.shadow}/${rays.reflect}/${rays.refract}`, ''],
+    ['shadow ray share', `${(results.shadowRayShare * 100).toFixed(1)} %`, ''],
+    ['rays per second (2 workers)', `${(results.raysPerSecond / 1e6).toFixed(2)} M`, ''],
+    [`vs naive Raycaster tracer (${CROP.width}×${CROP.height} crop)`, `${results.speedupVsNaive}×`, '≥ 10×'],
+    ['primary ray, ours / raw three-mesh-bvh', `${results.primaryRayCasts.oursNsPerRay} / ${results.primaryRayCasts.rawBvhRaycastFirstNsPerRay} ns`, ''],
+    ['first preview after an edit', `${results.firstPreviewMs} ms`, '≤ 250 ms'],
+    ['BVH build (scene meshes)', `${results.bvhBuildMs} ms`, ''],
+    ['slowest tile (bounds cancel latency)', `${results.slowestTileMs} ms`, '< 50 ms'],
+  ]);
+  console.log(`\nwrote ${RESULTS_FILE.pathname}`);
+}
+
+await main();
