@@ -1,0 +1,102 @@
+import { createLight, createObject } from '../scene/scene-defaults.ts';
+import { lightSchema, parseScene } from '../scene/scene-schema.ts';
+import type { Light, Scene } from '../scene/scene.ts';
+import type { AppAction } from './app-action.ts';
+import type { AppState } from './app-state.ts';
+
+/** The next state, or the unchanged state with the reason an action was refused. */
+export type Reduction = { state: AppState; error?: string };
+
+/**
+ * Applies one action (pure: no DOM, so level solutions run headless in Node). A change
+ * that would make the scene invalid (an out-of-range value, an unknown id) is refused with
+ * the schema's `path: reason` message and nothing is lost.
+ */
+export function reduce(state: AppState, action: AppAction): Reduction {
+  switch (action.type) {
+    case 'scene.loaded':
+      return withScene({ ...state, selection: null, selectedPixel: null }, action.scene);
+    case 'selection.changed':
+      return { state: { ...state, selection: action.selection } };
+    case 'object.added': {
+      const object = createObject(action.shape, state.scene);
+      if (action.mesh !== undefined) object.mesh = action.mesh;
+      const next = withScene(state, { ...state.scene, objects: [...state.scene.objects, object] });
+      return next.error ? next : { state: { ...next.state, selection: { kind: 'object', id: object.id } } };
+    }
+    case 'object.deleted':
+      return withScene(deselect(state, action.id), { ...state.scene, objects: state.scene.objects.filter((o) => o.id !== action.id) }, objectExists(state, action.id));
+    case 'object.changed':
+      return withScene(state, mapObject(state.scene, action.id, (o) => ({ ...o, ...action.changes })), objectExists(state, action.id));
+    case 'material.changed':
+      return withScene(state, mapObject(state.scene, action.id, (o) => ({ ...o, material: { ...o.material, ...action.changes } })), objectExists(state, action.id));
+    case 'light.added': {
+      const light = createLight(action.lightType, state.scene);
+      const next = withScene(state, { ...state.scene, lights: [...state.scene.lights, light] });
+      return next.error ? next : { state: { ...next.state, selection: { kind: 'light', id: light.id } } };
+    }
+    case 'light.deleted':
+      return withScene(deselect(state, action.id), { ...state.scene, lights: state.scene.lights.filter((l) => l.id !== action.id) }, lightExists(state, action.id));
+    case 'light.changed':
+      return withScene(state, { ...state.scene, lights: state.scene.lights.map((l) => (l.id === action.id ? changeLight(l, action.changes) : l)) }, lightExists(state, action.id));
+    case 'camera.changed':
+      return withScene(state, { ...state.scene, camera: { ...state.scene.camera, ...action.changes } });
+    case 'settings.changed':
+      return withScene(state, { ...state.scene, settings: { ...state.scene.settings, ...action.changes } });
+    case 'pixel.selected': {
+      const [x, y] = action.pixel;
+      const [columns, rows] = state.scene.camera.pixels;
+      if (!Number.isInteger(x) || !Number.isInteger(y) || x < 0 || y < 0 || x >= columns || y >= rows) {
+        return { state, error: `pixel: must be inside the ${columns}×${rows} screen, got ${x},${y}` };
+      }
+      return { state: { ...state, selectedPixel: [x, y] } };
+    }
+    case 'pixel.deselected':
+      return { state: { ...state, selectedPixel: null } };
+    case 'rays.changed':
+      return { state: { ...state, rays: { ...state.rays, ...action.changes } } };
+    case 'gizmo.changed':
+      return { state: { ...state, gizmo: { ...state.gizmo, ...action.changes } } };
+    default:
+      // Facts reported by the view and the render window: nothing to change.
+      return { state };
+  }
+}
+
+/** Validates the new scene; keeps the old state with the reasons when it is invalid. */
+function withScene(state: AppState, scene: Scene, precondition?: string): Reduction {
+  if (precondition) return { state, error: precondition };
+  const parsed = parseScene(scene);
+  if (!parsed.ok) return { state, error: parsed.errors.join('\n') };
+  const next = { ...state, scene: parsed.scene };
+  // A smaller screen may leave the selected pixel outside it.
+  const [columns, rows] = parsed.scene.camera.pixels;
+  if (next.selectedPixel && (next.selectedPixel[0] >= columns || next.selectedPixel[1] >= rows)) next.selectedPixel = null;
+  return { state: next };
+}
+
+function mapObject(scene: Scene, id: string, change: (o: Scene['objects'][number]) => Scene['objects'][number]): Scene {
+  return { ...scene, objects: scene.objects.map((o) => (o.id === id ? change(o) : o)) };
+}
+
+/** A light with changes; a new type keeps the shared fields and takes the new type's defaults for the rest. */
+function changeLight(light: Light, changes: Partial<Light>): Light {
+  if (changes.type === undefined || changes.type === light.type) return { ...light, ...changes } as Light;
+  const { id, name, position, color, intensity, ambient, diffuse, specular, distanceAttenuation } = light;
+  const rotation = 'rotation' in light ? { rotation: light.rotation } : {};
+  const shared = { id, position, color, intensity, ambient, diffuse, specular, distanceAttenuation, ...rotation, ...(name === undefined ? {} : { name }) };
+  return lightSchema.parse({ ...shared, type: changes.type });
+}
+
+function deselect(state: AppState, id: string): AppState {
+  const selection = state.selection;
+  return selection && selection.kind !== 'camera' && selection.id === id ? { ...state, selection: null } : state;
+}
+
+function objectExists(state: AppState, id: string): string | undefined {
+  return state.scene.objects.some((o) => o.id === id) ? undefined : `objects: there is no object "${id}"`;
+}
+
+function lightExists(state: AppState, id: string): string | undefined {
+  return state.scene.lights.some((l) => l.id === id) ? undefined : `lights: there is no light "${id}"`;
+}

@@ -1,0 +1,77 @@
+import type { Scene } from '../scene/scene.ts';
+
+/** What is selected in the lab: an object, a light, the ray tracer's camera, or nothing. */
+export type Selection = { kind: 'object'; id: string } | { kind: 'light'; id: string } | { kind: 'camera' } | null;
+
+/** The visualization options of the original tool's ray panel (spec §3 colours, issue: the lab). */
+export interface RayViewOptions {
+  showRays: boolean;
+  /** Rays that hit nothing (drawn 10 m long in red). */
+  hideNoHit: boolean;
+  /** Rays whose contribution to their pixel is below `negligibleThreshold`. */
+  hideNegligible: boolean;
+  /** 0..1: the share of the pixel below which a ray counts as negligible. */
+  negligibleThreshold: number;
+  /** 0..1: 0 opaque rays, 1 almost invisible ones. */
+  transparency: number;
+  /** Radius of a drawn ray in metres (when not dynamic). */
+  radius: number;
+  /** Radius from contribution: minRadius at 0 %, maxRadius at 100 % (min > max is allowed). */
+  dynamicRadius: boolean;
+  minRadius: number;
+  maxRadius: number;
+  /** Darken each ray's colour by its contribution instead of its type colour alone. */
+  contributionColor: boolean;
+  /** The colour-blind-safe palette instead of VRT's. */
+  colorBlindPalette: boolean;
+  /** Rays grow from the camera. */
+  animate: boolean;
+  /** Metres per second of growth. */
+  animationSpeed: number;
+  /** One pixel after another instead of all at once. */
+  animatePixelByPixel: boolean;
+  loop: boolean;
+  /** Show the s×s sub-pixel sample points on the camera's screen. */
+  showSamplePoints: boolean;
+}
+
+export interface GizmoOptions {
+  mode: 'translate' | 'rotate' | 'scale';
+  space: 'local' | 'world';
+  snap: boolean;
+}
+
+/** The one source of truth of the app: everything the view, the panels and the quest engine read. */
+export interface AppState {
+  scene: Scene;
+  selection: Selection;
+  /** The camera-screen pixel whose rays alone are shown, or null for all pixels. */
+  selectedPixel: [number, number] | null;
+  rays: RayViewOptions;
+  gizmo: GizmoOptions;
+}
+
+export const DEFAULT_RAY_VIEW: RayViewOptions = {
+  showRays: true,
+  hideNoHit: false,
+  hideNegligible: false,
+  negligibleThreshold: 0.01,
+  transparency: 0,
+  radius: 0.01,
+  dynamicRadius: false,
+  minRadius: 0.004,
+  maxRadius: 0.03,
+  contributionColor: false,
+  colorBlindPalette: false,
+  animate: false,
+  animationSpeed: 4,
+  animatePixelByPixel: false,
+  loop: false,
+  showSamplePoints: false,
+};
+
+export const DEFAULT_GIZMO: GizmoOptions = { mode: 'translate', space: 'world', snap: false };
+
+export function initialState(scene: Scene): AppState {
+  return { scene, selection: null, selectedPixel: null, rays: { ...DEFAULT_RAY_VIEW }, gizmo: { ...DEFAULT_GIZMO } };
+}

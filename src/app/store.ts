@@ -1,0 +1,38 @@
+import type { AppAction } from './app-action.ts';
+import { reduce } from './app-reducer.ts';
+import type { AppState } from './app-state.ts';
+
+/** Called after every dispatched action with the state it produced (unchanged when refused). */
+export type StoreListener = (state: AppState, action: AppAction, error?: string) => void;
+
+/**
+ * Holds the app state and applies named actions to it (three.js editor's "every change is
+ * a command with a name", without its untyped signals). Listeners: the view, the panels,
+ * the quest engine and the timing log.
+ */
+export class Store {
+  private current: AppState;
+  private readonly listeners = new Set<StoreListener>();
+
+  constructor(initial: AppState) {
+    this.current = initial;
+  }
+
+  get state(): AppState {
+    return this.current;
+  }
+
+  /** Applies the action; returns the reason when it was refused (the state is then unchanged). */
+  dispatch(action: AppAction): string | undefined {
+    const { state, error } = reduce(this.current, action);
+    this.current = state;
+    for (const listener of [...this.listeners]) listener(state, action, error);
+    return error;
+  }
+
+  /** Returns the function that unsubscribes. */
+  subscribe(listener: StoreListener): () => void {
+    this.listeners.add(listener);
+    return () => this.listeners.delete(listener);
+  }
+}
