@@ -1,0 +1,20 @@
+/**
+ * What the render pool needs from one worker, whatever runs it: a browser Web Worker
+ * (web-worker-port.ts) or a Node worker thread (src/cli/node-worker-port.ts).
+ */
+import type { RenderRequest, RenderResponse } from '../../workers/protocol.ts';
+
+export interface RenderWorkerPort {
+  post(request: RenderRequest): void;
+  /** Stops the worker at once; no handler is called after this. */
+  terminate(): void;
+}
+
+export interface RenderWorkerHandlers {
+  onResponse(response: RenderResponse): void;
+  /** The worker died or could not start; `message` says why, for the user. Called at most once. */
+  onFailure(message: string): void;
+}
+
+/** Starts one worker that reports to `handlers`. */
+export type CreateRenderWorker = (handlers: RenderWorkerHandlers) => RenderWorkerPort;

@@ -1,0 +1,124 @@
+/**
+ * One render split into passes of tiles (see render-passes.ts). It decides which tile goes
+ * next, pastes finished tiles into the image and reports progress; the pool does the
+ * messaging. Tiles are computed from their number, never listed, so a huge image with
+ * tiny tiles costs no memory up front.
+ */
+import { addRayStats, emptyRayStats, type RayStats } from '../tracer/ray-tree.ts';
+import type { Tile } from '../tracer/tile.ts';
+import type { RenderPass } from './render-passes.ts';
+import type { RenderImage, RenderOptions, RenderProgress } from './render-job.ts';
+
+/** Progress callbacks at most this often: enough for a smooth bar, cheap for the UI thread. */
+const PROGRESS_INTERVAL_MS = 50;
+
+interface PlannedPass extends RenderPass {
+  columns: number;
+  /** Number of tiles. */
+  count: number;
+  /** The tile id of its first tile: ids run on across passes. */
+  firstId: number;
+}
+
+/** A tile handed to a worker: `tileId` comes back with its pixels. */
+export interface TileAssignment {
+  tileId: number;
+  tile: Tile;
+  block: number;
+}
+
+export class TiledRender {
+  readonly image: RenderImage;
+  /** Rays of the full-quality pass only. */
+  readonly stats = emptyRayStats();
+  slowestTileMs = 0;
+
+  private readonly passes: PlannedPass[] = [];
+  private pass = 0;
+  /** Tiles of the current pass handed out, and finished. */
+  private taken = 0;
+  private finishedInPass = 0;
+  private readonly done = { preview: 0, full: 0 };
+  private readonly total = { preview: 0, full: 0 };
+  private lastProgressAt = -Infinity;
+
+  constructor(
+    width: number,
+    height: number,
+    passes: RenderPass[],
+    private readonly callbacks: Pick<RenderOptions, 'onPreview' | 'onProgress'>,
+  ) {
+    this.image = { width, height, rgb: new Float32Array(width * height * 3) };
+    let firstId = 0;
+    for (const pass of passes) {
+      const columns = Math.ceil(width / pass.tileSide);
+      const count = columns * Math.ceil(height / pass.tileSide);
+      this.passes.push({ ...pass, columns, count, firstId });
+      this.total[phaseOf(pass)] += count;
+      firstId += count;
+    }
+  }
+
+  get finished(): boolean {
+    return this.pass === this.passes.length;
+  }
+
+  /** The next tile of the current pass, or null until the pass is complete (a coarse pass
+   *  must not paint over finer tiles that finished before it). */
+  takeTile(): TileAssignment | null {
+    const pass = this.passes[this.pass];
+    if (!pass || this.taken === pass.count) return null;
+    const index = this.taken++;
+    return { tileId: pass.firstId + index, tile: this.tileOf(pass, index), block: pass.block };
+  }
+
+  /**
+   * Pastes a finished tile of the current pass into the image, then reports progress and,
+   * when a coarse pass completes, the preview. The state is updated before the callbacks
+   * run, so a callback that throws leaves the render consistent.
+   */
+  accept(tileId: number, rgb: Float32Array, stats: RayStats, ms: number): void {
+    const pass = this.passes[this.pass];
+    this.paste(this.tileOf(pass, tileId - pass.firstId), rgb);
+    this.slowestTileMs = Math.max(this.slowestTileMs, ms);
+    const phase = phaseOf(pass);
+    if (phase === 'full') addRayStats(this.stats, stats);
+    this.done[phase]++;
+    const passComplete = ++this.finishedInPass === pass.count;
+    if (passComplete) {
+      this.pass++;
+      this.taken = 0;
+      this.finishedInPass = 0;
+    }
+
+    this.reportProgress({ phase, done: this.done[phase], total: this.total[phase] });
+    if (passComplete && phase === 'preview') this.callbacks.onPreview?.(this.image);
+  }
+
+  /** Tiles run row by row, top to bottom; those on the right and bottom edges are cut to fit. */
+  private tileOf({ tileSide, columns }: PlannedPass, index: number): Tile {
+    const x = (index % columns) * tileSide;
+    const y = Math.floor(index / columns) * tileSide;
+    return { x, y, width: Math.min(tileSide, this.image.width - x), height: Math.min(tileSide, this.image.height - y) };
+  }
+
+  private paste({ x, y, width, height }: Tile, rgb: Float32Array): void {
+    const rowLength = width * 3;
+    for (let row = 0; row < height; row++) {
+      const from = row * rowLength;
+      this.image.rgb.set(rgb.subarray(from, from + rowLength), ((y + row) * this.image.width + x) * 3);
+    }
+  }
+
+  private reportProgress(progress: RenderProgress): void {
+    const now = performance.now();
+    const last = progress.done === progress.total;
+    if (!last && now - this.lastProgressAt < PROGRESS_INTERVAL_MS) return;
+    this.lastProgressAt = now;
+    this.callbacks.onProgress?.(progress);
+  }
+}
+
+function phaseOf({ block }: RenderPass): RenderProgress['phase'] {
+  return block > 1 ? 'preview' : 'full';
+}

@@ -1,0 +1,98 @@
+/**
+ * The messages between the render pool and its workers: one protocol for browser Web Workers
+ * and Node worker_threads (spec §4: "same core as the browser"). Everything here is plain,
+ * structured-cloneable data; the only transferable is a finished tile's pixel buffer.
+ *
+ * Ordering guarantee the pool relies on: a worker answers requests in the order they
+ * arrive, except that queued tiles wait behind later `cancel`, `load-scene` and `trace-pixel`
+ * requests (see render-core.ts), and each queued tile keeps the scene that was current when
+ * it arrived.
+ */
+import type { MeshLibrary } from '../src/scene/mesh-data.ts';
+import type { Scene } from '../src/scene/scene.ts';
+import type { PixelTrace, RayStats } from '../src/tracer/ray-tree.ts';
+import type { RenderTileOptions, Tile } from '../src/tracer/tile.ts';
+
+// ── Requests: pool → worker ──────────────────────────────────────────────────────────────
+
+/** Replace the worker's scene (builds shapes, BVHs and lights once, for every later tile). */
+export interface LoadSceneRequest {
+  type: 'load-scene';
+  /** The pool's version number for this scene; echoed by `scene-ready`. */
+  sceneId: number;
+  scene: Scene;
+  /** Only the models the scene uses; a Map survives structured cloning. */
+  meshes: MeshLibrary;
+}
+
+/** Render one rectangle of a job's image with the current scene. */
+export interface RenderTileRequest {
+  type: 'render-tile';
+  jobId: number;
+  /** The tile's index within its job, echoed by `tile-done`. */
+  tileId: number;
+  tile: Tile;
+  options: RenderTileOptions;
+}
+
+/** Trace one pixel of the camera's small screen and return its ray tree (the lab). */
+export interface TracePixelRequest {
+  type: 'trace-pixel';
+  requestId: number;
+  x: number;
+  y: number;
+  seed: number;
+}
+
+/** Drop the job's tiles that are still queued; the tile being rendered still finishes. */
+export interface CancelRequest {
+  type: 'cancel';
+  jobId: number;
+}
+
+export type RenderRequest = LoadSceneRequest | RenderTileRequest | TracePixelRequest | CancelRequest;
+
+// ── Responses: worker → pool ─────────────────────────────────────────────────────────────
+
+export interface SceneReadyResponse {
+  type: 'scene-ready';
+  sceneId: number;
+  /** Time spent building the scene (BVHs and all), in milliseconds. */
+  ms: number;
+}
+
+export interface TileDoneResponse {
+  type: 'tile-done';
+  jobId: number;
+  tileId: number;
+  /** Linear RGB, 3 floats per pixel, row-major over the tile; its buffer is transferred. */
+  rgb: Float32Array<ArrayBuffer>;
+  stats: RayStats;
+  /** Time the worker spent on this tile, in milliseconds. */
+  ms: number;
+}
+
+export interface PixelTracedResponse {
+  type: 'pixel-traced';
+  requestId: number;
+  trace: PixelTrace;
+}
+
+/** Which request failed, so the pool can fail the right job or lab query. */
+export type FailedRequest =
+  | { type: 'load-scene'; sceneId: number }
+  | { type: 'render-tile'; jobId: number; tileId: number }
+  | { type: 'trace-pixel'; requestId: number };
+
+/** A request threw; the worker itself keeps running and answers later requests. */
+export interface ErrorResponse {
+  type: 'error';
+  failed: FailedRequest;
+  /** Text for the user, e.g. `mesh "teapot" is not loaded`. */
+  message: string;
+}
+
+export type RenderResponse = SceneReadyResponse | TileDoneResponse | PixelTracedResponse | ErrorResponse;
+
+/** How a worker posts a response; `transfer` lists buffers to move instead of copy. */
+export type PostResponse = (response: RenderResponse, transfer: ArrayBuffer[]) => void;
