@@ -1,4 +1,4 @@
-import { DoubleSide, type Intersection, Matrix3, Mesh, MeshBasicMaterial, Raycaster } from 'three';
+import { Box3, DoubleSide, type Intersection, Matrix3, Mesh, MeshBasicMaterial, Raycaster } from 'three';
 import type { MeshLibrary } from '../../src/scene/mesh-data.ts';
 import type { Material, SceneObject } from '../../src/scene/scene.ts';
 import type { Hit } from '../../src/tracer/hit.ts';
@@ -18,6 +18,7 @@ export class RaycasterObject implements Intersectable {
   readonly material: Material;
   // Triangles are not convex solids: never skip the object a ray leaves.
   readonly convex = false;
+  readonly worldBounds = new Box3();
   private readonly mesh: Mesh;
   private readonly normalToWorld = new Matrix3();
   private readonly raycaster = new Raycaster();
@@ -32,6 +33,7 @@ export class RaycasterObject implements Intersectable {
     this.mesh.matrix.copy(objectToWorld(object));
     this.mesh.matrixWorld.copy(this.mesh.matrix);
     this.normalToWorld.getNormalMatrix(this.mesh.matrixWorld);
+    this.worldBounds.setFromObject(this.mesh);
   }
 
   intersect(ray: Ray, hit: Hit): boolean {

@@ -1,3 +1,4 @@
+import type { Box3 } from 'three';
 import type { Material } from '../scene/scene.ts';
 import type { Hit } from './hit.ts';
 import type { Ray } from './ray.ts';
@@ -11,6 +12,8 @@ export interface Intersectable {
   readonly material: Material;
   /** A ray leaving a convex object's outer surface cannot hit it again. */
   readonly convex: boolean;
+  /** World-space bounding box: rays that miss it cannot hit the object. */
+  readonly worldBounds: Box3;
   /** If hit nearer than `hit.t` (and farther than 0): records the hit and returns true. */
   intersect(ray: Ray, hit: Hit): boolean;
   /** Fills hit.point and the outward unit normals, for the nearest hit only. */

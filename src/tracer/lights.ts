@@ -1,4 +1,4 @@
-import { Euler, Quaternion, Vector3 } from 'three';
+import { Box3, Euler, Quaternion, Vector3 } from 'three';
 import type { Light } from '../scene/scene.ts';
 import type { RandomStream } from './sampler.ts';
 
@@ -30,6 +30,8 @@ export class TracerLight {
   readonly halfWidth = new Vector3();
   readonly halfDepth = new Vector3();
   readonly isDisc: boolean;
+  /** The box holding every point the light's samples can come from. */
+  readonly extent = new Box3();
 
   constructor(light: Light) {
     this.id = light.id;
@@ -45,6 +47,7 @@ export class TracerLight {
     this.angleExponent = 0;
     this.samplesPerSide = 1;
     this.isDisc = false;
+    this.extent.setFromPoints([this.position]);
     if (light.type === 'point') return;
     const rotation = new Quaternion().setFromEuler(new Euler(light.rotation[0] * DEG, light.rotation[1] * DEG, light.rotation[2] * DEG, 'XYZ'));
     this.direction.applyQuaternion(rotation);
@@ -58,6 +61,7 @@ export class TracerLight {
     this.isDisc = light.shape === 'disc';
     this.halfWidth.set(light.size[0] / 2, 0, 0).applyQuaternion(rotation);
     this.halfDepth.set(0, 0, light.size[1] / 2).applyQuaternion(rotation);
+    for (const corner of this.corners()) this.extent.expandByPoint(corner);
   }
 
   get sampleCount(): number {

@@ -1,4 +1,4 @@
-import { Vector3 } from 'three';
+import { Box3, Vector3 } from 'three';
 import type { Material } from '../scene/scene.ts';
 import { angleAttenuation, distanceAttenuation } from './attenuation.ts';
 import { reflect, refract, schlickReflectance } from './fresnel.ts';
@@ -33,6 +33,11 @@ class Frame {
   readonly shadowRay = new Ray();
   /** Whether the ray hit the outside of the surface (false: it is inside the object). */
   entering = true;
+  /** The box from the hit point to the light being sampled: only objects in it can cast its shadow. */
+  readonly shadowReach = new Box3();
+  /** The objects overlapping shadowReach (the first `candidateCount` entries). */
+  readonly candidates: Intersectable[] = [];
+  candidateCount = 0;
 }
 
 const shadowHit = new Hit();
@@ -132,6 +137,7 @@ export class WhittedIntegrator {
     // The light's colour is divided by n² for an area light's n×n samples (spec §2).
     const scale = light.intensity / samples;
     const [cr, cg, cb] = material.color;
+    if (this.scene.settings.shadows) this.gatherShadowCandidates(frame, light);
     for (let s = 0; s < samples; s++) {
       light.samplePoint(s, this.random, lightPoint);
       l.subVectors(lightPoint, hit.point);
@@ -166,6 +172,18 @@ export class WhittedIntegrator {
   }
 
   /**
+   * Every shadow ray from this hit toward this light stays inside the box spanned by the
+   * hit point and the light's extent, so only objects overlapping that box can block any
+   * of them: found once here, not once per sample.
+   */
+  private gatherShadowCandidates(frame: Frame, light: TracerLight): void {
+    const reach = frame.shadowReach.copy(light.extent).expandByPoint(frame.hit.point);
+    let count = 0;
+    for (const shape of this.scene.occluders) if (shape.worldBounds.intersectsBox(reach)) frame.candidates[count++] = shape;
+    frame.candidateCount = count;
+  }
+
+  /**
    * An object between the hit point and the light, or null (counts one shadow ray).
    * Rendering only needs to know whether one exists (any-hit: the last blocker of this
    * light is tried first, then cheap shapes before meshes); a recorded tree shows the
@@ -177,13 +195,15 @@ export class WhittedIntegrator {
     const ray = frame.shadowRay.set(origin, toLight);
     const hit = shadowHit.reset(distance - this.scene.epsilon);
     const leaving = leavingShape(frame, toLight);
+    const { candidates, candidateCount } = frame;
     if (nearest) {
-      for (const shape of this.scene.shapes) if (shape !== leaving) shape.intersect(ray, hit);
+      for (let i = 0; i < candidateCount; i++) if (candidates[i] !== leaving) candidates[i].intersect(ray, hit);
       return hit.shape;
     }
     const cached = this.lastBlocker[lightIndex];
     if (cached && cached !== leaving && cached.intersect(ray, hit)) return cached;
-    for (const shape of this.scene.occluders) {
+    for (let i = 0; i < candidateCount; i++) {
+      const shape = candidates[i];
       if (shape !== leaving && shape.intersect(ray, hit)) {
         this.lastBlocker[lightIndex] = shape;
         return shape;
