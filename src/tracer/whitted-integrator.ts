@@ -152,21 +152,23 @@ export class WhittedIntegrator {
       if (attenuation === 0) continue;
 
       const blocker = this.scene.settings.shadows ? this.firstBlocker(frame, l, distance, index, node !== null) : null;
+      if (blocker) {
+        // S = 0: a shadow ray carries black.
+        sampleNodes?.push(newNode('shadow', hit.point, l, shadowHit.t, true, blocker.id, light.id, [0, 0, 0]));
+        continue;
+      }
       // Phong: R is L mirrored about N; the highlight is not tinted by the object's colour.
       r.copy(n).multiplyScalar(2 * nDotL).sub(l);
       const highlight = material.specular > 0 ? Math.pow(Math.max(r.dot(v), 0), material.shininess) * material.specular * light.specular : 0;
       const diffuse = nDotL * material.diffuse * light.diffuse;
       const k = scale * attenuation;
-      const tr = blocker ? 0 : k * light.color.x * (diffuse * cr + highlight);
-      const tg = blocker ? 0 : k * light.color.y * (diffuse * cg + highlight);
-      const tb = blocker ? 0 : k * light.color.z * (diffuse * cb + highlight);
+      const tr = k * light.color.x * (diffuse * cr + highlight);
+      const tg = k * light.color.y * (diffuse * cg + highlight);
+      const tb = k * light.color.z * (diffuse * cb + highlight);
       out.x += tr;
       out.y += tg;
       out.z += tb;
-      if (sampleNodes) {
-        const length = blocker ? shadowHit.t : distance;
-        sampleNodes.push(newNode(blocker ? 'shadow' : 'light', hit.point, l, length, true, blocker?.id ?? null, light.id, [tr, tg, tb]));
-      }
+      sampleNodes?.push(newNode('light', hit.point, l, distance, true, null, light.id, [tr, tg, tb]));
     }
     if (node && sampleNodes) this.recordLightRays(light, frame, sampleNodes, node);
   }
