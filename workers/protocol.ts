@@ -21,7 +21,11 @@ export interface LoadSceneRequest {
   /** The pool's version number for this scene; echoed by `scene-ready`. */
   sceneId: number;
   scene: Scene;
-  /** Only the models the scene uses; a Map survives structured cloning. */
+  /**
+   * The models the scene uses that this worker has not been sent before: a worker keeps
+   * every model it receives (a model's name always means the same model), so its BVH is
+   * built once, not on every edit. A Map survives structured cloning.
+   */
   meshes: MeshLibrary;
 }
 

@@ -3,6 +3,7 @@
  * messages in, tracer calls, responses out. It imports no platform API, so both thin worker
  * files only connect it to their message port.
  */
+import type { MeshData } from '../src/scene/mesh-data.ts';
 import { emptyRayStats } from '../src/tracer/ray-tree.ts';
 import { renderTile } from '../src/tracer/render-tile.ts';
 import { tracePixel } from '../src/tracer/trace-pixel.ts';
@@ -34,6 +35,8 @@ interface QueuedTile {
  */
 export function createRenderHandler(post: PostResponse): (request: RenderRequest) => void {
   let scene: LoadedScene = { built: false, reason: 'no scene has been loaded' };
+  /** Every model received so far; their BVHs stay cached with them (see mesh-accel.ts). */
+  const models = new Map<string, MeshData>();
   const queue: QueuedTile[] = [];
   let renderScheduled = false;
 
@@ -49,7 +52,8 @@ export function createRenderHandler(post: PostResponse): (request: RenderRequest
   function loadScene({ sceneId, scene: sceneFile, meshes }: LoadSceneRequest): void {
     const start = performance.now();
     try {
-      scene = { built: true, tracer: buildTracerScene(sceneFile, meshes) };
+      for (const [name, mesh] of meshes) models.set(name, mesh);
+      scene = { built: true, tracer: buildTracerScene(sceneFile, models) };
       post({ type: 'scene-ready', sceneId, ms: performance.now() - start }, []);
     } catch (error) {
       scene = { built: false, reason: messageOf(error) };

@@ -32,6 +32,8 @@ interface PoolWorker {
   builtSceneId: number | null;
   /** Tiles of the current job posted to it and not back yet. */
   inFlight: number;
+  /** Names of the models already sent to it (it keeps them; see LoadSceneRequest). */
+  models: Set<string>;
 }
 
 interface ActiveJob {
@@ -179,6 +181,7 @@ export class RenderPool {
       sceneId: null,
       builtSceneId: null,
       inFlight: 0,
+      models: new Set(),
       port: this.createWorker({
         onResponse: (response) => this.onResponse(worker, response),
         onFailure: (message) => this.onWorkerFailed(worker, message),
@@ -204,7 +207,9 @@ export class RenderPool {
   private sendScene(worker: PoolWorker): void {
     if (!this.scene || worker.sceneId === this.scene.id) return;
     const { id, scene, meshes } = this.scene;
-    worker.port.post({ type: 'load-scene', sceneId: id, scene, meshes });
+    const unsent = new Map([...meshes].filter(([name]) => !worker.models.has(name)));
+    worker.port.post({ type: 'load-scene', sceneId: id, scene, meshes: unsent });
+    for (const name of unsent.keys()) worker.models.add(name);
     worker.sceneId = id;
   }
 
