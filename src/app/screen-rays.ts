@@ -1,0 +1,11 @@
+import type { PixelTrace } from '../tracer/ray-tree.ts';
+
+/**
+ * The ray trees of every pixel of the camera's screen, traced off the main thread for one
+ * version of the scene (see ScreenTracer). `traces[y * columns + x]` is pixel (x, y).
+ */
+export interface ScreenRays {
+  columns: number;
+  rows: number;
+  traces: PixelTrace[];
+}

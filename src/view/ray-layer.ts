@@ -1,0 +1,24 @@
+import type { Object3D, Raycaster } from 'three';
+import type { RayNode, RayType } from '../tracer/ray-tree.ts';
+
+/** What the pointer is over when it hovers a drawn ray (shown in a tooltip). */
+export interface RayHover {
+  type: RayType;
+  contribution: number;
+  color: [number, number, number];
+  pixel: [number, number];
+  node: RayNode;
+}
+
+/**
+ * The drawn rays, as the lab view sees them: a three.js object to add to its scene, a
+ * per-frame hook for the growth animation, and picking for hover. Implemented by RayPool
+ * (src/view/ray-pool.ts); the view does not know how rays are drawn.
+ */
+export interface RayLayer {
+  readonly object: Object3D;
+  /** Advances the animation to `timeMs`; returns true while it needs more frames. */
+  tick(timeMs: number): boolean;
+  /** The nearest ray under the pointer, or null. */
+  pick(raycaster: Raycaster): RayHover | null;
+}
