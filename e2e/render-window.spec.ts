@@ -1,0 +1,148 @@
+import { expect, type Locator, type Page, test } from '@playwright/test';
+import { readFile } from 'node:fs/promises';
+import { PNG } from 'pngjs';
+import type { RtRenderWindow } from '../src/ui/rt-render-window.ts';
+
+/** The page with the lab; the header's "Render image" button opens the render window. */
+const APP_PAGE = './';
+
+let errors: string[] = [];
+
+test.beforeEach(({ page }) => {
+  errors = [];
+  page.on('console', (message) => {
+    if (message.type() === 'error') errors.push(message.text());
+  });
+  page.on('pageerror', (error) => errors.push(error.message));
+});
+
+test.afterEach(() => {
+  expect(errors).toEqual([]);
+});
+
+async function openRenderWindow(page: Page): Promise<Locator> {
+  await page.goto(APP_PAGE);
+  await page.getByRole('button', { name: 'Render image' }).click();
+  const window = page.locator('rt-render-window');
+  await expect(window).toBeVisible();
+  return window;
+}
+
+async function renderAndWait(window: Locator): Promise<void> {
+  await window.getByRole('button', { name: 'Render', exact: true }).click();
+  await expect(window.getByTestId('render-status')).toContainText(/Done in [\d.]+ (ms|s)/, { timeout: 60_000 });
+}
+
+function imageSize(window: Locator): Promise<[number, number]> {
+  return window.evaluate((element: RtRenderWindow) => element.store!.state.scene.settings.imageSize);
+}
+
+/** Distinct RGB colours on the ray traced canvas, and its size in pixels. */
+function tracedPicture(window: Locator): Promise<{ width: number; height: number; colours: number }> {
+  return window.getByRole('img', { name: 'The ray traced image' }).evaluate((canvas: HTMLCanvasElement) => {
+    const { data } = canvas.getContext('2d')!.getImageData(0, 0, canvas.width, canvas.height);
+    const colours = new Set<number>();
+    for (let i = 0; i < data.length; i += 4) colours.add((data[i] << 16) | (data[i + 1] << 8) | data[i + 2]);
+    return { width: canvas.width, height: canvas.height, colours: colours.size };
+  });
+}
+
+/** FNV-1a over RGBA bytes: the same pixels give the same number in the page and in Node. */
+function pixelHash(data: ArrayLike<number>): number {
+  let hash = 0x811c9dc5;
+  for (let i = 0; i < data.length; i++) hash = Math.imul(hash ^ data[i], 0x01000193) >>> 0;
+  return hash;
+}
+
+test('opening focuses Render; a render draws the picture and reports time and rays per second', async ({ page }) => {
+  const window = await openRenderWindow(page);
+  await expect(window.getByRole('button', { name: 'Render', exact: true })).toBeFocused();
+  await page.keyboard.press('Enter'); // on the focused Render button
+  await expect(window.getByTestId('render-status')).toContainText(/Done in [\d.]+ (ms|s): .+ rays, .+ rays per second, on \d+ workers?\./, {
+    timeout: 60_000,
+  });
+  const [width, height] = await imageSize(window);
+  // The final picture is painted on the next frame: poll until it is all there.
+  await expect.poll(async () => (await tracedPicture(window)).colours).toBeGreaterThan(500);
+  expect(await tracedPicture(window)).toMatchObject({ width, height });
+  await page.screenshot({ path: 'test-results/screens/render-window.png' });
+
+  await page.keyboard.press('Escape');
+  await expect(window).toBeHidden();
+});
+
+test('Cancel stops a big render and says so', async ({ page }) => {
+  const window = await openRenderWindow(page);
+  await window.evaluate((element: RtRenderWindow) =>
+    element.store!.dispatch({ type: 'settings.changed', changes: { imageSize: [2048, 1536], supersampling: 3 } }),
+  );
+  await window.getByRole('button', { name: 'Render', exact: true }).click();
+  await expect(window.getByText(/Rendering \d+ %/)).toBeVisible({ timeout: 30_000 });
+  await window.getByRole('button', { name: 'Cancel' }).click();
+  await expect(window.getByTestId('render-status')).toHaveText('Render cancelled.');
+  await expect(window.getByRole('button', { name: 'Cancel' })).toBeDisabled();
+  await expect(window.getByRole('button', { name: 'Save as PNG' })).toBeDisabled();
+  // The partial picture stays.
+  await expect.poll(async () => (await tracedPicture(window)).colours).toBeGreaterThan(50);
+});
+
+test('Save as PNG downloads exactly the rendered pixels at the image size', async ({ page }) => {
+  const window = await openRenderWindow(page);
+  await renderAndWait(window);
+  const [width, height] = await imageSize(window);
+  const downloading = page.waitForEvent('download');
+  await window.getByRole('button', { name: 'Save as PNG' }).click();
+  const download = await downloading;
+  expect(download.suggestedFilename()).toMatch(new RegExp(`^ray-tracer-quest-[a-z0-9-]*${width}x${height}\\.png$`));
+  const png = PNG.sync.read(await readFile((await download.path())!));
+  expect([png.width, png.height]).toEqual([width, height]);
+  const shown = await window.getByRole('img', { name: 'The ray traced image' }).evaluate((canvas: HTMLCanvasElement) => {
+    return [...canvas.getContext('2d')!.getImageData(0, 0, canvas.width, canvas.height).data];
+  });
+  expect(pixelHash(png.data)).toBe(pixelHash(shown));
+});
+
+test('zoom: 200 % shows every pixel as 2 × 2, Fit brings it back', async ({ page }) => {
+  const window = await openRenderWindow(page);
+  await renderAndWait(window);
+  const [width] = await imageSize(window);
+  const canvas = window.getByRole('img', { name: 'The ray traced image' });
+  const fitted = (await canvas.boundingBox())!.width;
+  await window.getByRole('button', { name: '200 %' }).click();
+  await expect.poll(async () => (await canvas.boundingBox())!.width).toBeCloseTo(2 * width, 0);
+  await expect(canvas).toHaveCSS('image-rendering', 'pixelated');
+  await window.getByRole('button', { name: 'Zoom out' }).click();
+  await expect.poll(async () => (await canvas.boundingBox())!.width).toBeCloseTo(width, 0);
+  await window.getByRole('button', { name: 'Fit' }).click();
+  await expect.poll(async () => (await canvas.boundingBox())!.width).toBeCloseTo(fitted, 0);
+});
+
+test('the slider compares the ray traced image with the raster one, by mouse or keys', async ({ page }) => {
+  const window = await openRenderWindow(page);
+  await renderAndWait(window);
+  await window.getByRole('radio', { name: 'Slider' }).check();
+  await expect(window.getByText('Ray traced', { exact: true }).last()).toBeVisible();
+  await expect(window.getByText('Raster (like a game engine)')).toBeVisible();
+  // The raster picture is really there, not an empty canvas.
+  const rasterPixels = await window.getByRole('img', { name: 'The raster image from the same camera' }).evaluate((canvas: HTMLCanvasElement) => {
+    const { data } = canvas.getContext('2d')!.getImageData(0, 0, canvas.width, canvas.height);
+    let lit = 0;
+    for (let i = 0; i < data.length; i += 4) if (data[i + 3] > 0 && data[i] + data[i + 1] + data[i + 2] > 30) lit++;
+    return lit / (data.length / 4);
+  });
+  expect(rasterPixels).toBeGreaterThan(0.3);
+
+  const divider = window.getByRole('slider', { name: 'Divider' });
+  await expect(divider).toHaveValue('50');
+  await divider.focus();
+  await page.keyboard.press('ArrowLeft');
+  await expect(divider).toHaveValue('49');
+  // Dragging the divider to a quarter of the image.
+  const box = (await window.getByRole('img', { name: 'The ray traced image' }).boundingBox())!;
+  await page.mouse.move(box.x + box.width * 0.49, box.y + box.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width * 0.25, box.y + box.height / 2, { steps: 5 });
+  await page.mouse.up();
+  await expect(divider).toHaveValue('25');
+  await page.screenshot({ path: 'test-results/screens/render-window-slider.png' });
+});

@@ -1,0 +1,50 @@
+/**
+ * Zoom and layout of the render window's image(s): the scale that fits them in their frame,
+ * the fixed zoom steps, and which way two images sit side by side.
+ */
+
+export type CompareMode = 'traced' | 'side-by-side' | 'slider';
+
+export interface Size {
+  width: number;
+  height: number;
+}
+
+/** Screen pixels per image pixel: the zoom buttons step through these (× 2 each). */
+export const ZOOM_STEPS: readonly number[] = [1 / 8, 1 / 4, 1 / 2, 1, 2, 4, 8, 16, 32];
+
+/** CSS pixels between the two images of the side-by-side comparison. */
+export const SIDE_BY_SIDE_GAP = 8;
+
+export interface ImageLayout {
+  /** Screen pixels per image pixel. */
+  scale: number;
+  /** Side by side: next to each other ('row') or one above the other ('column'). */
+  direction: 'row' | 'column';
+}
+
+/**
+ * The largest scale at which the image (two of them side by side) fits in `frame`. Side by
+ * side, the images go next to each other or one above the other, whichever shows them bigger:
+ * a wide window puts them in a row, a tall one in a column.
+ */
+export function fitLayout(frame: Size, image: Size, mode: CompareMode): ImageLayout {
+  const single = Math.min(frame.width / image.width, frame.height / image.height);
+  if (mode !== 'side-by-side') return { scale: single, direction: 'row' };
+  const row = Math.min((frame.width - SIDE_BY_SIDE_GAP) / (2 * image.width), frame.height / image.height);
+  const column = Math.min(frame.width / image.width, (frame.height - SIDE_BY_SIDE_GAP) / (2 * image.height));
+  return row >= column ? { scale: row, direction: 'row' } : { scale: column, direction: 'column' };
+}
+
+/**
+ * The next zoom step above `scale`, or null at the largest. A scale that is already (almost)
+ * a step goes to the one after it; from "fit" at 73 % it goes to 100 %.
+ */
+export function zoomInStep(scale: number): number | null {
+  return ZOOM_STEPS.find((step) => step > scale * 1.001) ?? null;
+}
+
+/** The next zoom step below `scale`, or null at the smallest. */
+export function zoomOutStep(scale: number): number | null {
+  return [...ZOOM_STEPS].reverse().find((step) => step < scale / 1.001) ?? null;
+}
