@@ -21,6 +21,7 @@ import { buildTracerScene, type TracerScene } from '../src/tracer/tracer-scene.t
 import { mergedWorldBvh } from './naive/merged-world-bvh.ts';
 import { naiveTracerScene } from './naive/naive-tracer-scene.ts';
 import { printTable } from './print-table.ts';
+import { measureView, roundedView, viewRows } from './view-bench.ts';
 
 const SCENE_FILE = new URL('scenes/reference.json', import.meta.url);
 const RESULTS_FILE = new URL('results.json', import.meta.url);
@@ -139,6 +140,8 @@ async function main(): Promise<void> {
   const naive = msPerPixel(naiveTracerScene(scene, meshes), scene);
   const casts = primaryRayCasts(scene, meshes);
 
+  const view = await measureView();
+
   const rays = { ...two.stats, total: two.stats.primary + two.stats.shadow + two.stats.reflect + two.stats.refract };
   const results = {
     date: new Date().toISOString(),
@@ -155,6 +158,7 @@ async function main(): Promise<void> {
     firstPreviewMs: round(firstPreviewMs),
     bvhBuildMs: round(bvhBuildMs),
     slowestTileMs: round(two.slowestTileMs),
+    view: roundedView(view),
   };
   writeFileSync(RESULTS_FILE, `${JSON.stringify(results, null, 2)}\n`);
 
@@ -170,6 +174,7 @@ async function main(): Promise<void> {
     ['first preview after an edit', `${results.firstPreviewMs} ms`, '≤ 250 ms'],
     ['BVH build (scene meshes)', `${results.bvhBuildMs} ms`, ''],
     ['slowest tile (bounds cancel latency)', `${results.slowestTileMs} ms`, '< 50 ms'],
+    ...viewRows(view),
   ]);
   console.log(`\nwrote ${RESULTS_FILE.pathname}`);
 }

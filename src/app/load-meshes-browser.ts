@@ -24,10 +24,21 @@ const loading = new Map<string, Promise<MeshData>>();
  * @throws Error naming the model when it is not shipped, cannot be downloaded or is malformed.
  */
 export async function loadMeshes(names: Iterable<string>): Promise<MeshLibrary> {
-  const unique = [...new Set(names)];
+  const unique = [...new Set(names)].sort();
+  const key = unique.join('\n');
+  const known = libraries.get(key);
+  if (known) return known;
   const meshes = await Promise.all(unique.map(loadMesh));
-  return new Map(unique.map((name, i) => [name, meshes[i]]));
+  const library: MeshLibrary = new Map(unique.map((name, i) => [name, meshes[i]]));
+  libraries.set(key, library);
+  return library;
 }
+
+/**
+ * The same library object for the same set of names: the render pool reloads its workers'
+ * scene when it is handed a different library object, even one with the same models.
+ */
+const libraries = new Map<string, MeshLibrary>();
 
 function loadMesh(name: string): Promise<MeshData> {
   let mesh = loading.get(name);
