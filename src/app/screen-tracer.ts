@@ -1,0 +1,132 @@
+import type { MeshLibrary } from '../scene/mesh-data.ts';
+import { meshNamesInScene } from '../scene/mesh-names.ts';
+import type { Scene } from '../scene/scene.ts';
+import type { PixelTrace } from '../tracer/ray-tree.ts';
+import { DEFAULT_SEED } from './render-job.ts';
+import type { RenderPool } from './render-pool.ts';
+import type { ScreenRays } from './screen-rays.ts';
+
+/**
+ * Wait after a scene change before tracing. A dragged slider changes the scene once per
+ * frame (~16 ms); 60 ms is about four frames, so a continuous drag starts no trace whose
+ * result would be thrown away at once, while a pause or the release starts one well within
+ * the 0.1 s a response still feels immediate in (Nielsen, "Usability Engineering", 1993).
+ */
+export const TRACE_DEBOUNCE_MS = 60;
+
+/**
+ * Pixel traces requested from the worker before their answers are back. Enough to hide
+ * the message round trip; few enough that when a newer scene arrives the worker finishes
+ * at most this many pixels of the old one (it answers requests in order and cannot drop
+ * them) before it loads the new scene.
+ */
+export const TRACES_IN_FLIGHT = 16;
+
+/** What the tracer needs of a RenderPool (a test can pass a fake). */
+export type ScreenTracePool = Pick<RenderPool, 'setScene' | 'tracePixel'>;
+
+export type ScreenRaysListener = (rays: ScreenRays) => void;
+
+/**
+ * Traces every pixel of the camera's screen (camera.pixels) off the main thread whenever
+ * the scene changes: debounced, and the latest scene wins (a generation counter: results of
+ * an older scene are dropped, and its remaining pixels are never requested). Each finished
+ * screen is published to the subscribers as ScreenRays, with the seed the render window
+ * uses, so the trees match the rendered image.
+ *
+ * The pool is the caller's: give the tracer its own (one worker is enough, e.g.
+ * `createBrowserRenderPool(1)`), so traces never wait behind a full render's tiles, and
+ * dispose it after the tracer.
+ */
+export class ScreenTracer {
+  /** Told when a screen cannot be traced (a model fails to load, a worker dies); default: the console. */
+  onError: (error: Error) => void = (error) => console.error(error);
+  private scene: Scene | null = null;
+  private generation = 0;
+  private timer: ReturnType<typeof setTimeout> | null = null;
+  private latest: ScreenRays | null = null;
+  private readonly listeners = new Set<ScreenRaysListener>();
+  private disposed = false;
+
+  constructor(
+    private readonly pool: ScreenTracePool,
+    private readonly loadMeshes: (names: string[]) => Promise<MeshLibrary>,
+  ) {}
+
+  /** The last published screen, or null before the first. */
+  get rays(): ScreenRays | null {
+    return this.latest;
+  }
+
+  /** Traces `scene` after TRACE_DEBOUNCE_MS unless a newer one arrives first; the same object again is ignored. */
+  update(scene: Scene): void {
+    if (this.disposed || scene === this.scene) return;
+    this.scene = scene;
+    const generation = ++this.generation;
+    if (this.timer !== null) clearTimeout(this.timer);
+    this.timer = setTimeout(() => {
+      this.timer = null;
+      void this.trace(scene, generation);
+    }, TRACE_DEBOUNCE_MS);
+  }
+
+  /** Calls `listener` with every published screen, and at once with the last one if any. Returns the unsubscribe. */
+  subscribe(listener: ScreenRaysListener): () => void {
+    this.listeners.add(listener);
+    if (this.latest) listener(this.latest);
+    return () => this.listeners.delete(listener);
+  }
+
+  /** Stops tracing and publishing (the pool stays open: it is the caller's). */
+  dispose(): void {
+    this.disposed = true;
+    this.generation++;
+    if (this.timer !== null) clearTimeout(this.timer);
+    this.timer = null;
+    this.listeners.clear();
+  }
+
+  private async trace(scene: Scene, generation: number): Promise<void> {
+    const current = () => generation === this.generation;
+    let rays: ScreenRays;
+    try {
+      const meshes = await this.loadMeshes(meshNamesInScene(scene));
+      if (!current()) return;
+      this.pool.setScene(scene, meshes);
+      const [columns, rows] = scene.camera.pixels;
+      const traces = new Array<PixelTrace>(columns * rows);
+      let next = 0;
+      let failed = false;
+      // TRACES_IN_FLIGHT lanes, each requesting the next pixel when its last one is back.
+      const lane = async () => {
+        while (next < traces.length && current() && !failed) {
+          const index = next++;
+          try {
+            traces[index] = await this.pool.tracePixel(index % columns, Math.floor(index / columns), DEFAULT_SEED);
+          } catch (error) {
+            failed = true;
+            throw error;
+          }
+        }
+      };
+      await Promise.all(Array.from({ length: Math.min(TRACES_IN_FLIGHT, traces.length) }, lane));
+      if (!current()) return;
+      rays = { columns, rows, traces };
+    } catch (error) {
+      if (current()) this.reportError(error);
+      return;
+    }
+    this.latest = rays;
+    for (const listener of [...this.listeners]) {
+      try {
+        listener(rays);
+      } catch (error) {
+        this.reportError(error); // one failing subscriber must not starve the others
+      }
+    }
+  }
+
+  private reportError(error: unknown): void {
+    this.onError(error instanceof Error ? error : new Error(String(error)));
+  }
+}

@@ -1,0 +1,81 @@
+import type { Color } from '../scene/scene.ts';
+import type { RayType } from '../tracer/ray-tree.ts';
+
+/**
+ * What a drawn ray is coloured as: its type, except that every ray that hit nothing is
+ * "no-hit" (red in VRT), and area cones take the colour of the light or shadow rays they merge.
+ */
+export type RayColorKey = 'primary' | 'light' | 'shadow' | 'reflect' | 'refract' | 'no-hit';
+
+/** The legend's order (VRT's). */
+export const RAY_COLOR_KEYS: readonly RayColorKey[] = ['primary', 'light', 'shadow', 'reflect', 'refract', 'no-hit'];
+
+export type RayPaletteName = 'vrt' | 'okabe-ito';
+
+/** sRGB hex colours (as a designer writes them), by key. */
+export type RayPalette = Readonly<Record<RayColorKey, string>>;
+
+/** The Virtual Ray Tracer's legend (spec §3). */
+const VRT: RayPalette = {
+  primary: '#70FFFB',
+  light: '#FFE600',
+  shadow: '#656565',
+  reflect: '#008CFF',
+  refract: '#00FF32',
+  'no-hit': '#FF0000',
+};
+
+/**
+ * The colour-blind-safe alternative: Okabe & Ito's eight colours ("Color Universal Design
+ * (CUD): How to make figures and presentations that are friendly to colorblind people",
+ * 2008; also Wong, Nature Methods 8:441, 2011), chosen near VRT's hues so the lesson's
+ * words still fit (primary sky blue, light yellow, reflect blue, refract bluish green,
+ * no-hit vermillion). Shadow stays a neutral grey, which every kind of colour vision sees
+ * as the same grey: it differs from the others by lightness and lack of hue.
+ */
+const OKABE_ITO: RayPalette = {
+  primary: '#56B4E9',
+  light: '#F0E442',
+  shadow: '#656565',
+  reflect: '#0072B2',
+  refract: '#009E73',
+  'no-hit': '#D55E00',
+};
+
+export function rayPalette(name: RayPaletteName): RayPalette {
+  return name === 'okabe-ito' ? OKABE_ITO : VRT;
+}
+
+export function paletteNameFor(colorBlindPalette: boolean): RayPaletteName {
+  return colorBlindPalette ? 'okabe-ito' : 'vrt';
+}
+
+/** The legend entry a ray is drawn as (see RayColorKey). */
+export function rayColorKey(type: RayType, hit: boolean): RayColorKey {
+  if (!hit) return 'no-hit';
+  if (type === 'area-light') return 'light';
+  if (type === 'area-shadow') return 'shadow';
+  return type;
+}
+
+/**
+ * `#RRGGBB` as RGB in 0..1, byte / 255. The lab shows colours as display values with no
+ * gamma, like the ray tracer (lab-view.ts turns three.js's colour management off), so a
+ * drawn ray looks exactly like its swatch in the legend.
+ */
+export function hexToColor(hex: string): Color {
+  const value = Number.parseInt(hex.slice(1), 16);
+  return [((value >> 16) & 255) / 255, ((value >> 8) & 255) / 255, (value & 255) / 255];
+}
+
+/** The palettes as colours, converted once: the visibility rules read them per update. */
+const COLORS = new Map<RayPaletteName, Readonly<Record<RayColorKey, Color>>>(
+  (['vrt', 'okabe-ito'] as const).map((name) => {
+    const palette = rayPalette(name);
+    return [name, Object.fromEntries(RAY_COLOR_KEYS.map((key) => [key, hexToColor(palette[key])])) as Record<RayColorKey, Color>];
+  }),
+);
+
+export function rayColor(palette: RayPaletteName, key: RayColorKey): Color {
+  return (COLORS.get(palette) as Record<RayColorKey, Color>)[key];
+}

@@ -1,0 +1,422 @@
+/**
+ * The drawn rays: one InstancedMesh of unit cylinders for every ray and one of unit
+ * pyramids for the merged area-light cones, so drawing 50k rays takes the same two draw
+ * calls as drawing 10 (DESIGN.md: "the view draws, it does not decide" — the rules are in
+ * ray-visibility.ts). Per instance: a matrix (position, axis, radius, length), a colour,
+ * an alpha and the growth animation's (start, length) (ray-shader.ts).
+ *
+ * Buffers are pooled: they grow by doubling and never shrink, and an update writes only
+ * the instances in use (mesh.count) and uploads only that range.
+ */
+import {
+  BufferGeometry,
+  CylinderGeometry,
+  Float32BufferAttribute,
+  Group,
+  InstancedBufferAttribute,
+  InstancedMesh,
+  type Material,
+  type Raycaster,
+  type Vector3,
+} from 'three';
+import type { RayViewOptions } from '../app/app-state.ts';
+import type { ScreenRays } from '../app/screen-rays.ts';
+import type { RayHover, RayLayer } from './ray-layer.ts';
+import { ALPHA_ATTRIBUTE, createRayMaterial, FULLY_GROWN, GROWTH_ATTRIBUTE, type TravelUniform } from './ray-shader.ts';
+import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
+
+/** Sides of a ray's cylinder: rays are a few pixels wide, where 6 sides already look round. */
+const RADIAL_SEGMENTS = 6;
+
+/** Instances allocated at first; the buffers double from there as needed. */
+const INITIAL_CAPACITY = 256;
+
+/** Floats per instance: matrix 16, colour 3, alpha 1, growth 2. */
+const FLOATS_PER_INSTANCE = 22;
+
+/**
+ * Opacity of the cones relative to the rays: a cone is a solid volume the size of the
+ * light, which at full opacity would hide everything behind it.
+ */
+export const CONE_OPACITY = 0.2;
+
+/**
+ * Picking tolerance as an angle, in radians: the pointer counts as over a ray that passes
+ * within radius + PICK_ANGLE × distance of it, i.e. about 4 px at 45° field of view on a
+ * 768 px high view (45° / 768 px ≈ 0.001 rad per pixel), so 1 cm rays can be hovered from afar.
+ */
+export const PICK_ANGLE = 0.004;
+
+/**
+ * Seconds the finished tree stays on screen before a looping animation starts again, so
+ * the student sees the whole tree before it disappears.
+ */
+export const LOOP_PAUSE_S = 1;
+
+/** Names of the two meshes in RayPool.object (for tests and debugging tools). */
+export const RAY_CYLINDERS_NAME = 'ray-cylinders';
+export const RAY_CONES_NAME = 'ray-cones';
+
+export interface RayPoolStats {
+  /** Cylinders drawn (mesh.count). */
+  rays: number;
+  /** Area cones drawn. */
+  cones: number;
+  /** Meshes that issue a draw call: at most 2, whatever the number of rays. */
+  drawCalls: number;
+  /** Bytes of per-instance buffers allocated (both meshes, at their pooled capacity). */
+  instanceBytes: number;
+}
+
+interface AnimationInputs {
+  rays: ScreenRays | null;
+  selectedPixel: readonly [number, number] | null;
+  animate: boolean;
+  pixelByPixel: boolean;
+}
+
+/** One instanced mesh and its capacity; replaced by a twice larger one when full. */
+class InstanceBuffers {
+  mesh: InstancedMesh;
+  private readonly kind: 'cylinder' | 'cone';
+
+  constructor(kind: 'cylinder' | 'cone', material: Material, private readonly parent: Group) {
+    this.kind = kind;
+    this.mesh = this.createMesh(INITIAL_CAPACITY, material);
+    parent.add(this.mesh);
+  }
+
+  get capacity(): number {
+    return this.mesh.instanceMatrix.count;
+  }
+
+  get alpha(): InstancedBufferAttribute {
+    return this.mesh.geometry.getAttribute(ALPHA_ATTRIBUTE) as InstancedBufferAttribute;
+  }
+
+  get growth(): InstancedBufferAttribute {
+    return this.mesh.geometry.getAttribute(GROWTH_ATTRIBUTE) as InstancedBufferAttribute;
+  }
+
+  get color(): InstancedBufferAttribute {
+    return this.mesh.instanceColor as InstancedBufferAttribute;
+  }
+
+  /** Makes room for `count` instances, replacing the mesh (and freeing its GPU buffers) when too small. */
+  reserve(count: number): void {
+    if (count <= this.capacity) return;
+    let capacity = this.capacity;
+    while (capacity < count) capacity *= 2;
+    const old = this.mesh;
+    this.mesh = this.createMesh(capacity, old.material as Material);
+    this.parent.remove(old);
+    this.parent.add(this.mesh);
+    old.geometry.dispose();
+    old.dispose();
+  }
+
+  /** Uploads the first `count` instances and draws that many. */
+  commit(count: number): void {
+    this.mesh.count = count;
+    this.mesh.visible = count > 0;
+    if (count === 0) return;
+    for (const attribute of [this.mesh.instanceMatrix, this.color, this.alpha, this.growth]) {
+      attribute.clearUpdateRanges();
+      attribute.addUpdateRange(0, count * attribute.itemSize);
+      attribute.needsUpdate = true;
+    }
+  }
+
+  dispose(): void {
+    this.mesh.geometry.dispose();
+    this.mesh.dispose();
+  }
+
+  private createMesh(capacity: number, material: Material): InstancedMesh {
+    const geometry = this.kind === 'cone' ? pyramidGeometry() : cylinderGeometry();
+    geometry.setAttribute(ALPHA_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity), 1));
+    geometry.setAttribute(GROWTH_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity * 2), 2));
+    const mesh = new InstancedMesh(geometry, material, capacity);
+    mesh.name = this.kind === 'cone' ? RAY_CONES_NAME : RAY_CYLINDERS_NAME;
+    mesh.instanceColor = new InstancedBufferAttribute(new Float32Array(capacity * 3), 3);
+    mesh.count = 0;
+    mesh.visible = false;
+    // The rays are spread over the whole scene and change every update: a bounding sphere
+    // over 50k instance matrices would cost more than it ever culls.
+    mesh.frustumCulled = false;
+    // Hover goes through RayPool.pick; three's per-instance raycast would test 50k
+    // instances whenever the view raycasts its scene to select an object.
+    mesh.raycast = () => {};
+    return mesh;
+  }
+}
+
+/** A ray's cylinder: radius 1, from z = 0 to z = 1, open (the ends are never seen at ray widths). */
+function cylinderGeometry(): BufferGeometry {
+  return new CylinderGeometry(1, 1, 1, RADIAL_SEGMENTS, 1, true).rotateX(Math.PI / 2).translate(0, 0, 0.5);
+}
+
+/**
+ * An area cone: apex at the origin, base corners (∓1, ∓1, 1) in RayNode.corners order, so
+ * one affine instance matrix maps it onto any hit point and light rectangle.
+ */
+function pyramidGeometry(): BufferGeometry {
+  const base = [
+    [-1, -1, 1],
+    [1, -1, 1],
+    [1, 1, 1],
+    [-1, 1, 1],
+  ];
+  const positions: number[] = [];
+  for (let k = 0; k < 4; k++) positions.push(0, 0, 0, ...base[k], ...base[(k + 1) % 4]);
+  positions.push(...base[0], ...base[2], ...base[1], ...base[0], ...base[3], ...base[2]);
+  return new BufferGeometry().setAttribute('position', new Float32BufferAttribute(positions, 3));
+}
+
+/** Implements RayLayer for the lab view. Call update() on every change of rays or options. */
+export class RayPool implements RayLayer {
+  readonly object = new Group();
+  /** What contribution colour fades toward; set it to the view's background if you like. */
+  style: RayStyle = { fadeTo: [0, 0, 0] };
+  private readonly travel: TravelUniform = { value: FULLY_GROWN };
+  private readonly rayMaterial = createRayMaterial('cylinder', this.travel);
+  private readonly coneMaterial = createRayMaterial('cone', this.travel);
+  private readonly cylinders = new InstanceBuffers('cylinder', this.rayMaterial, this.object);
+  private readonly cones = new InstanceBuffers('cone', this.coneMaterial, this.object);
+  private readonly drawn = new DrawnRays();
+  private animation: AnimationInputs = { rays: null, selectedPixel: null, animate: false, pixelByPixel: false };
+  private speed = 1;
+  private loop = false;
+  /** Time of travel 0, set by the first tick after a (re)start; null until then. */
+  private startMs: number | null = null;
+  /** Travel to resume from at that first tick (keeps the rays where they were when only the speed changed). */
+  private resumeTravel = 0;
+
+  constructor() {
+    this.object.name = 'rays';
+  }
+
+  get stats(): RayPoolStats {
+    const meshes = [this.cylinders.mesh, this.cones.mesh];
+    return {
+      rays: this.cylinders.mesh.count,
+      cones: this.cones.mesh.count,
+      drawCalls: meshes.filter((mesh) => mesh.visible && mesh.count > 0).length,
+      instanceBytes: (this.cylinders.capacity + this.cones.capacity) * FLOATS_PER_INSTANCE * 4,
+    };
+  }
+
+  /** Rebuilds the instances from the traced rays and the panel's options; then render a frame. */
+  update(rays: ScreenRays | null, options: RayViewOptions, selectedPixel: readonly [number, number] | null): void {
+    const drawn = visibleRays(rays, options, selectedPixel, this.drawn, this.style);
+    this.writeCylinders(drawn.rays);
+    this.writeCones(drawn.cones);
+    // Opaque rays write depth, so rays hide each other correctly; see-through ones do not,
+    // so the rays behind them still show. (The material stays `transparent` either way:
+    // three compiles opaque materials with alpha forced to 1, and switching compiles a new
+    // program: a 528 ms long task in the e2e run on SwiftShader, mid-drag of the slider.)
+    this.rayMaterial.depthWrite = drawn.rays.count === 0 || drawn.rays.alpha[0] >= 1;
+    this.updateAnimation(rays, options, selectedPixel);
+  }
+
+  /** Sets the growth uniform for `timeMs`; true while rays are growing or the animation loops. */
+  tick(timeMs: number): boolean {
+    if (!this.animation.animate) return false;
+    this.startMs ??= timeMs - (this.resumeTravel / this.speed) * 1000;
+    let travel = ((timeMs - this.startMs) / 1000) * this.speed;
+    const end = this.drawn.travelEnd;
+    if (this.loop) travel %= end + LOOP_PAUSE_S * this.speed;
+    this.travel.value = travel;
+    return this.loop || travel < end;
+  }
+
+  /** The nearest drawn ray (or cone) under the pointer, as far as it has grown. */
+  pick(raycaster: Raycaster): RayHover | null {
+    const { origin, direction } = raycaster.ray;
+    const best = { along: Infinity, list: null as SegmentList | null, index: -1 };
+    for (const list of [this.drawn.rays, this.drawn.cones]) {
+      for (let i = 0; i < list.count; i++) {
+        const along = this.pickSegment(list, i, origin, direction);
+        if (along < best.along) Object.assign(best, { along, list, index: i });
+      }
+    }
+    if (!best.list) return null;
+    const node = best.list.nodes[best.index];
+    const pixel = best.list.pixel[best.index];
+    const columns = this.drawn.columns;
+    return { type: node.type, contribution: node.contribution, color: node.color, pixel: [pixel % columns, Math.floor(pixel / columns)], node };
+  }
+
+  dispose(): void {
+    this.cylinders.dispose();
+    this.cones.dispose();
+    this.rayMaterial.dispose();
+    this.coneMaterial.dispose();
+    this.object.clear();
+  }
+
+  private writeCylinders(list: SegmentList): void {
+    const buffers = this.cylinders;
+    buffers.reserve(list.count);
+    const matrix = buffers.mesh.instanceMatrix.array as Float32Array;
+    for (let i = 0; i < list.count; i++) writeCylinderMatrix(matrix, i * 16, list, i);
+    this.writeAttributes(buffers, list, 1);
+  }
+
+  private writeCones(list: SegmentList): void {
+    const buffers = this.cones;
+    buffers.reserve(list.count);
+    const matrix = buffers.mesh.instanceMatrix.array as Float32Array;
+    for (let i = 0; i < list.count; i++) writeConeMatrix(matrix, i * 16, list, i);
+    this.writeAttributes(buffers, list, CONE_OPACITY);
+  }
+
+  private writeAttributes(buffers: InstanceBuffers, list: SegmentList, opacity: number): void {
+    const { count } = list;
+    (buffers.color.array as Float32Array).set(list.color.subarray(0, count * 3));
+    const alpha = buffers.alpha.array as Float32Array;
+    const growth = buffers.growth.array as Float32Array;
+    for (let i = 0; i < count; i++) {
+      alpha[i] = list.alpha[i] * opacity;
+      growth[i * 2] = list.start[i];
+      growth[i * 2 + 1] = list.length[i];
+    }
+    buffers.commit(count);
+  }
+
+  /** Restarts the growth when what grows changed; only re-times it when just the speed did. */
+  private updateAnimation(rays: ScreenRays | null, options: RayViewOptions, selectedPixel: readonly [number, number] | null): void {
+    const next: AnimationInputs = { rays, selectedPixel, animate: options.animate, pixelByPixel: options.animatePixelByPixel };
+    const previous = this.animation;
+    const restart =
+      next.rays !== previous.rays ||
+      next.animate !== previous.animate ||
+      next.pixelByPixel !== previous.pixelByPixel ||
+      next.selectedPixel?.[0] !== previous.selectedPixel?.[0] ||
+      next.selectedPixel?.[1] !== previous.selectedPixel?.[1];
+    const speed = Math.max(options.animationSpeed, 1e-3);
+    this.animation = next;
+    this.loop = options.loop;
+    if (!options.animate) {
+      this.travel.value = FULLY_GROWN;
+    } else if (restart) {
+      this.travel.value = 0;
+      this.startMs = null;
+      this.resumeTravel = 0;
+    } else if (speed !== this.speed && this.startMs !== null) {
+      this.startMs = null;
+      this.resumeTravel = this.travel.value;
+    }
+    this.speed = speed;
+  }
+
+  /** Distance along the pointer ray to segment i when the pointer is over it, else Infinity. */
+  private pickSegment(list: SegmentList, i: number, origin: Vector3, direction: Vector3): number {
+    const grown = Math.min(list.length[i], this.travel.value - list.start[i]);
+    if (grown <= 0) return Infinity;
+    const o = i * 3;
+    const px = list.origin[o];
+    const py = list.origin[o + 1];
+    const pz = list.origin[o + 2];
+    const dx = list.direction[o];
+    const dy = list.direction[o + 1];
+    const dz = list.direction[o + 2];
+    // Closest points of the pointer ray o + t·u (t ≥ 0) and the segment p + s·d (0 ≤ s ≤ grown),
+    // both directions unit (Eberly, "Distance between line segments", 2.4).
+    const wx = origin.x - px;
+    const wy = origin.y - py;
+    const wz = origin.z - pz;
+    const b = direction.x * dx + direction.y * dy + direction.z * dz;
+    const uw = direction.x * wx + direction.y * wy + direction.z * wz;
+    const dw = dx * wx + dy * wy + dz * wz;
+    const denominator = 1 - b * b;
+    let s = denominator > 1e-9 ? (dw - b * uw) / denominator : 0;
+    s = Math.min(grown, Math.max(0, s));
+    const t = Math.max(0, s * b - uw);
+    s = Math.min(grown, Math.max(0, dw + t * b));
+    const ex = wx + t * direction.x - s * dx;
+    const ey = wy + t * direction.y - s * dy;
+    const ez = wz + t * direction.z - s * dz;
+    const reach = (list.withCorners ? coneRadiusAt(list, i, s) : list.radius[i]) + PICK_ANGLE * t;
+    return ex * ex + ey * ey + ez * ez <= reach * reach ? t : Infinity;
+  }
+}
+
+/** A cone's half-width at `s` metres from its apex: the larger half-side of the light, scaled. */
+function coneRadiusAt(list: SegmentList, i: number, s: number): number {
+  const c = list.corners;
+  const k = i * 12;
+  const halfWidth = Math.hypot(c[k + 3] - c[k], c[k + 4] - c[k + 1], c[k + 5] - c[k + 2]) / 2;
+  const halfDepth = Math.hypot(c[k + 9] - c[k], c[k + 10] - c[k + 1], c[k + 11] - c[k + 2]) / 2;
+  return (Math.max(halfWidth, halfDepth) * s) / list.length[i];
+}
+
+/**
+ * Unit cylinder → ray i: column 0 and 1 an orthonormal basis across the ray scaled by its
+ * radius, column 2 the direction scaled by its length, column 3 its origin (column-major,
+ * as three.js stores matrices). The helper axis is +Y unless the ray is nearly vertical.
+ */
+function writeCylinderMatrix(m: Float32Array, at: number, list: SegmentList, i: number): void {
+  const o = i * 3;
+  const dx = list.direction[o];
+  const dy = list.direction[o + 1];
+  const dz = list.direction[o + 2];
+  const r = list.radius[i];
+  const length = list.length[i];
+  // x = normalize(helper × d); y = d × x.
+  let xx: number;
+  let xy: number;
+  let xz: number;
+  if (Math.abs(dy) < 0.99) {
+    const n = 1 / Math.hypot(dz, dx);
+    xx = dz * n;
+    xy = 0;
+    xz = -dx * n;
+  } else {
+    const n = 1 / Math.hypot(dz, dy);
+    xx = 0;
+    xy = -dz * n;
+    xz = dy * n;
+  }
+  const yx = dy * xz - dz * xy;
+  const yy = dz * xx - dx * xz;
+  const yz = dx * xy - dy * xx;
+  m[at] = xx * r;
+  m[at + 1] = xy * r;
+  m[at + 2] = xz * r;
+  m[at + 3] = 0;
+  m[at + 4] = yx * r;
+  m[at + 5] = yy * r;
+  m[at + 6] = yz * r;
+  m[at + 7] = 0;
+  m[at + 8] = dx * length;
+  m[at + 9] = dy * length;
+  m[at + 10] = dz * length;
+  m[at + 11] = 0;
+  m[at + 12] = list.origin[o];
+  m[at + 13] = list.origin[o + 1];
+  m[at + 14] = list.origin[o + 2];
+  m[at + 15] = 1;
+}
+
+/**
+ * Unit pyramid → cone i: apex at the hit point, base (x, y, 1) ↦ centre + x·U + y·V with
+ * U, V the light's half-sides from its corners c0..c3 (U = (c1 − c0)/2, V = (c3 − c0)/2).
+ */
+function writeConeMatrix(m: Float32Array, at: number, list: SegmentList, i: number): void {
+  const c = list.corners;
+  const k = i * 12;
+  const o = i * 3;
+  for (let axis = 0; axis < 3; axis++) {
+    const apex = list.origin[o + axis];
+    const centre = (c[k + axis] + c[k + 3 + axis] + c[k + 6 + axis] + c[k + 9 + axis]) / 4;
+    m[at + axis] = (c[k + 3 + axis] - c[k + axis]) / 2;
+    m[at + 4 + axis] = (c[k + 9 + axis] - c[k + axis]) / 2;
+    m[at + 8 + axis] = centre - apex;
+    m[at + 12 + axis] = apex;
+  }
+  m[at + 3] = 0;
+  m[at + 7] = 0;
+  m[at + 11] = 0;
+  m[at + 15] = 1;
+}

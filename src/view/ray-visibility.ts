@@ -1,0 +1,233 @@
+/**
+ * Which rays of the camera's screen are drawn, and how: the ray panel's rules as pure
+ * functions over the traced ray trees (no three.js objects), so each rule is unit-tested and
+ * the pool (ray-pool.ts) only copies the result into GPU buffers.
+ *
+ * The trees are flattened once per traced screen (flat-rays.ts); each option change is then
+ * one linear pass. The result is struct-of-arrays typed arrays, reused between updates, so
+ * a rebuild allocates nothing per ray.
+ */
+import type { RayViewOptions } from '../app/app-state.ts';
+import type { ScreenRays } from '../app/screen-rays.ts';
+import type { Color } from '../scene/scene.ts';
+import type { RayNode } from '../tracer/ray-tree.ts';
+import { flattenRays, type FlatRays, resized } from './flat-rays.ts';
+import { paletteNameFor, RAY_COLOR_KEYS, rayColor } from './ray-palette.ts';
+
+/**
+ * Opacity at 100 % transparency. The option promises "almost invisible", not gone: a faint
+ * trace still shows where the rays are and can still be hovered.
+ */
+export const MIN_ALPHA = 0.05;
+
+/**
+ * Contribution colour: how many decades of contribution fade a ray from its full colour
+ * (100 %) to the faintest tone (0.1 % and below). Contributions span orders of magnitude
+ * (a root of a 4×4 supersampled pixel already has 6 %, its grandchildren often < 1 %), so a
+ * linear scale would leave every ray but the primaries looking equally dark.
+ */
+export const CONTRIBUTION_DECADES = 3;
+
+/** The faintest tone of a ray in contribution colour: it keeps a hint of its type's hue. */
+export const MIN_CONTRIBUTION_TONE = 0.15;
+
+/** A growing list of drawn segments, as parallel typed arrays (index i is one segment). */
+export class SegmentList {
+  count = 0;
+  /** xyz of the start: the ray's origin, or the apex (hit point) of a cone. */
+  origin = new Float32Array(0);
+  /** Unit xyz: along the ray, or from the apex to the centre of the cone's base. */
+  direction = new Float32Array(0);
+  /** Metres drawn: the ray's length (MISS_LENGTH for a miss), or apex to base centre. */
+  length = new Float32Array(0);
+  /** Cylinder radius in metres (unused for cones, whose base is the light). */
+  radius = new Float32Array(0);
+  /** RGB 0..1 (display values, as the lab draws them), 3 per segment. */
+  color = new Float32Array(0);
+  alpha = new Float32Array(0);
+  /**
+   * Metres of travel from the camera before this segment starts to grow (the animation):
+   * 0 for primary rays, the parent's start + length for a child, plus the pixel's offset in
+   * pixel-by-pixel mode.
+   */
+  start = new Float32Array(0);
+  /** Index into RAY_COLOR_KEYS: the legend entry it is drawn as. */
+  colorKey = new Uint8Array(0);
+  /** The pixel it belongs to, as y · columns + x. */
+  pixel = new Int32Array(0);
+  /** Cones only: the light's four corners, 12 floats per cone (in RayNode.corners order). */
+  corners = new Float32Array(0);
+  /** The traced ray each segment draws (for hover). */
+  readonly nodes: RayNode[] = [];
+
+  constructor(readonly withCorners: boolean) {}
+
+  get capacity(): number {
+    return this.length.length;
+  }
+
+  clear(): void {
+    this.count = 0;
+    this.nodes.length = 0;
+  }
+
+  /** Makes room for one more segment, doubling the arrays when full (never shrinks). */
+  grow(): number {
+    const i = this.count++;
+    if (i < this.capacity) return i;
+    const capacity = Math.max(64, this.capacity * 2);
+    this.origin = resized(this.origin, capacity * 3);
+    this.direction = resized(this.direction, capacity * 3);
+    this.length = resized(this.length, capacity);
+    this.radius = resized(this.radius, capacity);
+    this.color = resized(this.color, capacity * 3);
+    this.alpha = resized(this.alpha, capacity);
+    this.start = resized(this.start, capacity);
+    this.colorKey = resized(this.colorKey, capacity);
+    this.pixel = resized(this.pixel, capacity);
+    if (this.withCorners) this.corners = resized(this.corners, capacity * 12);
+    return i;
+  }
+}
+
+/** Everything drawn for one state: cylinders for rays, cones for merged area rays. */
+export class DrawnRays {
+  readonly rays = new SegmentList(false);
+  readonly cones = new SegmentList(true);
+  /** Columns of the screen the segments' pixel indices refer to. */
+  columns = 0;
+  /** Metres of travel at which the last segment has fully grown (the animation's end). */
+  travelEnd = 0;
+
+  clear(): void {
+    this.rays.clear();
+    this.cones.clear();
+    this.columns = 0;
+    this.travelEnd = 0;
+  }
+}
+
+/** What the rules need besides the options: the colour rays fade toward in contribution colour. */
+export interface RayStyle {
+  /** Default black ("darken by contribution"); the view may pass its background colour. */
+  fadeTo: Color;
+}
+
+const DARKEN: RayStyle = { fadeTo: [0, 0, 0] };
+
+/**
+ * The rays to draw for `rays` under the panel's options:
+ * - showRays off → nothing; a selected pixel → only that pixel's trees (none if it lies
+ *   outside the traced screen, e.g. while a smaller screen is being traced).
+ * - hideNoHit drops rays with hit = false (they have no children).
+ * - hideNegligible drops a ray whose contribution is below the threshold (equal stays)
+ *   together with its whole subtree: a child drawn without its parent would float
+ *   unattached, and a child's share is normally at most its parent's anyway.
+ * - Shadow rays carry black, so their own contribution is 0 by definition (spec §3); for
+ *   the threshold, the dynamic radius and the contribution colour they use their parent's
+ *   contribution instead: how much the point they start from matters. Otherwise "hide
+ *   negligible" would hide every shadow, the very rays that explain a dark spot.
+ * - Colour by type (palette per option), red for any ray that hit nothing; contribution
+ *   colour mixes it toward `style.fadeTo` on a log scale (CONTRIBUTION_DECADES).
+ * - alpha = 1 − transparency · (1 − MIN_ALPHA); radius fixed, or
+ *   lerp(minRadius, maxRadius, contribution), which also works with min > max.
+ * - area-light / area-shadow nodes become cones from the hit point to the light's corners.
+ */
+export function visibleRays(
+  rays: ScreenRays | null,
+  options: RayViewOptions,
+  selectedPixel: readonly [number, number] | null,
+  into = new DrawnRays(),
+  style: RayStyle = DARKEN,
+): DrawnRays {
+  into.clear();
+  if (!rays || !options.showRays) return into;
+  into.columns = rays.columns;
+  const flat = flattenRays(rays);
+  const pass = new VisibilityPass(flat, into, options, style);
+  if (selectedPixel) {
+    const [x, y] = selectedPixel;
+    if (x >= 0 && y >= 0 && x < rays.columns && y < rays.rows) pass.pixel(y * rays.columns + x);
+  } else {
+    for (let p = 0; p < rays.columns * rays.rows; p++) pass.pixel(p);
+  }
+  into.travelEnd = pass.travelEnd;
+  return into;
+}
+
+/** The contribution colour's tone in [MIN_CONTRIBUTION_TONE, 1]: 1 at 100 %, one third less per decade. */
+export function contributionTone(contribution: number): number {
+  if (!(contribution > 0)) return MIN_CONTRIBUTION_TONE;
+  return Math.min(1, Math.max(MIN_CONTRIBUTION_TONE, 1 + Math.log10(contribution) / CONTRIBUTION_DECADES));
+}
+
+/** One application of the rules to a flattened screen, pixel by pixel. */
+class VisibilityPass {
+  /** The palette's colours, 3 per RAY_COLOR_KEYS entry. */
+  private readonly colors = new Float32Array(RAY_COLOR_KEYS.length * 3);
+  private readonly alpha: number;
+  /** Travel added to every start of the current pixel (pixel-by-pixel animation). */
+  private offset = 0;
+  travelEnd = 0;
+
+  constructor(
+    private readonly flat: FlatRays,
+    private readonly out: DrawnRays,
+    private readonly options: RayViewOptions,
+    private readonly style: RayStyle,
+  ) {
+    const palette = paletteNameFor(options.colorBlindPalette);
+    RAY_COLOR_KEYS.forEach((key, index) => this.colors.set(rayColor(palette, key), index * 3));
+    this.alpha = 1 - clamp01(options.transparency) * (1 - MIN_ALPHA);
+  }
+
+  /** Draws pixel p's rays; in pixel-by-pixel mode the next pixel starts when this one has grown. */
+  pixel(p: number): void {
+    const { flat, options } = this;
+    const end = flat.pixelStart[p + 1];
+    for (let i = flat.pixelStart[p]; i < end; ) {
+      const hidden =
+        (options.hideNoHit && flat.hit[i] === 0) || (options.hideNegligible && flat.contribution[i] < options.negligibleThreshold);
+      if (hidden) {
+        i = flat.subtreeEnd[i]; // with its whole subtree
+      } else {
+        this.emit(i, p);
+        i++;
+      }
+    }
+    if (options.animatePixelByPixel) this.offset = this.travelEnd;
+  }
+
+  private emit(i: number, p: number): void {
+    const { flat, options, colors } = this;
+    const { fadeTo } = this.style;
+    const c = flat.cone[i];
+    const list = c >= 0 ? this.out.cones : this.out.rays;
+    const j = list.grow();
+    list.nodes.push(flat.nodes[i]);
+    for (let axis = 0; axis < 3; axis++) {
+      list.origin[j * 3 + axis] = flat.origin[i * 3 + axis];
+      list.direction[j * 3 + axis] = flat.direction[i * 3 + axis];
+    }
+    const length = flat.length[i];
+    const start = flat.start[i] + this.offset;
+    const contribution = flat.contribution[i];
+    list.length[j] = length;
+    list.start[j] = start;
+    list.alpha[j] = this.alpha;
+    list.pixel[j] = p;
+    list.radius[j] = options.dynamicRadius
+      ? options.minRadius + (options.maxRadius - options.minRadius) * clamp01(contribution)
+      : options.radius;
+    const key = flat.colorKey[i];
+    list.colorKey[j] = key;
+    const tone = options.contributionColor ? contributionTone(contribution) : 1;
+    for (let axis = 0; axis < 3; axis++) list.color[j * 3 + axis] = fadeTo[axis] + (colors[key * 3 + axis] - fadeTo[axis]) * tone;
+    if (c >= 0) list.corners.set(flat.corners.subarray(c * 12, c * 12 + 12), j * 12);
+    if (start + length > this.travelEnd) this.travelEnd = start + length;
+  }
+}
+
+function clamp01(value: number): number {
+  return Math.min(1, Math.max(0, value));
+}
