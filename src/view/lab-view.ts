@@ -1,0 +1,570 @@
+import { msg } from '@lit/localize';
+import {
+  BoxHelper,
+  ColorManagement,
+  GridHelper,
+  Group,
+  HemisphereLight,
+  LinearSRGBColorSpace,
+  type Object3D,
+  PerspectiveCamera,
+  Raycaster,
+  Scene as ThreeScene,
+  Vector3,
+  WebGLRenderer,
+} from 'three';
+import type { AppAction } from '../app/app-action.ts';
+import type { AppState } from '../app/app-state.ts';
+import { loadMeshes } from '../app/load-meshes-browser.ts';
+import type { ScreenRays } from '../app/screen-rays.ts';
+import type { Store } from '../app/store.ts';
+import type { Vec3 } from '../scene/scene.ts';
+import { CameraScreen } from './camera-screen.ts';
+import { CameraFlight } from './fly-to-camera.ts';
+import { type Animator, FrameScheduler } from './frame-scheduler.ts';
+import { cameraChanges, effectiveGizmoMode, gizmoModesFor, lightChanges, objectChanges } from './gizmo-changes.ts';
+import { LightGizmos } from './light-gizmos.ts';
+import { Picker, type PickResult } from './picking.ts';
+import { RasterLights } from './raster-lights.ts';
+import { rasterSnapshot } from './raster-snapshot.ts';
+import type { RayHover, RayLayer } from './ray-layer.ts';
+import { type MeshLoader, SceneSync } from './scene-sync.ts';
+import { TransformGizmo } from './transform-gizmo.ts';
+import { keyCommand, type ViewCommand } from './view-commands.ts';
+import { ViewControls } from './view-controls.ts';
+import { framingPose, type ViewPose } from './view-pose.ts';
+
+/** The hovered ray and where the pointer is, for a tooltip next to it. */
+export interface RayHoverDetail {
+  hover: RayHover;
+  /** CSS px from the canvas's top-left corner. */
+  x: number;
+  y: number;
+  clientX: number;
+  clientY: number;
+}
+
+interface LabViewEvents {
+  rayHover: RayHoverDetail | null;
+  /** A refused change or a failure, to show the user (a toast). */
+  message: string;
+  /** Whether the view is at the ray tracer's camera (with a way back). */
+  flight: boolean;
+  /** The user pressed "?". */
+  help: undefined;
+}
+
+type Listener<T> = (value: T) => void;
+
+/** A pointer press that moves less than this (CSS px) before release is a click, not a drag. */
+const CLICK_SLOP = 6;
+/** Toolbar steps: one press orbits 15°, pans a tenth of the view, zooms 1.25×. */
+const BUTTON_ORBIT_DEG = 15;
+const BUTTON_PAN = 0.1;
+const BUTTON_ZOOM = 1.25;
+/** Nearer than this to the tracer camera's eye, its body would fill the view: hide it. */
+const INSIDE_CAMERA = 0.35;
+const SELECTION_COLOR = 0x3b82f6;
+
+/**
+ * The lab's 3D view: the scene from the store drawn with three.js (objects with a Phong look,
+ * lights as gizmos, the ray tracer's camera and its screen), navigation, selection, the
+ * transform gizmo and the flight to the tracer's camera. Draws only when something changed.
+ *
+ * Colours are display values throughout, as in the ray tracer (no gamma): three.js's colour
+ * management is switched off and the canvas shows the linear values as they are, so an
+ * object's colour, its traced pixel and a hex colour in CSS all look the same.
+ */
+export class LabView {
+  readonly renderer: WebGLRenderer;
+  readonly scene = new ThreeScene();
+  /** The user's viewpoint (not the ray tracer's camera). */
+  readonly camera = new PerspectiveCamera(45, 1, 0.05, 500);
+  private readonly scheduler: FrameScheduler;
+  private readonly controls: ViewControls;
+  private readonly gizmo: TransformGizmo;
+  private readonly flight: CameraFlight;
+  private readonly objects: SceneSync;
+  private readonly rasterLights: RasterLights;
+  private readonly lightGizmos: LightGizmos;
+  private readonly cameraScreen: CameraScreen;
+  private readonly picker = new Picker();
+  private readonly rayRaycaster = new Raycaster();
+  private readonly selectionBox: BoxHelper;
+  private readonly grid: GridHelper;
+  private readonly listeners: { [K in keyof LabViewEvents]: Set<Listener<LabViewEvents[K]>> } = {
+    rayHover: new Set(),
+    message: new Set(),
+    flight: new Set(),
+    help: new Set(),
+  };
+  private readonly unsubscribe: () => void;
+  private readonly cleanups: (() => void)[] = [];
+  private previous: AppState | null = null;
+  private rayLayer: RayLayer | null = null;
+  private removeRayAnimator: (() => void) | null = null;
+  private lastHover: RayHover | null = null;
+  private press: { id: number; x: number; y: number; onGizmo: boolean } | null = null;
+  private hoverQueued = false;
+  private pointer: { x: number; y: number } | null = null;
+  private frames = 0;
+  private sized = false;
+
+  constructor(
+    readonly canvas: HTMLCanvasElement,
+    readonly store: Store,
+    meshLoader: MeshLoader = loadMeshes,
+  ) {
+    // Before any colour is made: with management on, hex colours would be linearized.
+    ColorManagement.enabled = false;
+    this.rasterLights = new RasterLights();
+    this.lightGizmos = new LightGizmos();
+    this.cameraScreen = new CameraScreen();
+    this.selectionBox = new BoxHelper(new Group(), SELECTION_COLOR);
+    this.grid = new GridHelper(20, 20, 0x6b7686, 0x8a94a3);
+    this.renderer = new WebGLRenderer({ canvas, antialias: true, alpha: true });
+    this.renderer.outputColorSpace = LinearSRGBColorSpace;
+    this.renderer.setClearColor(0x000000, 0);
+    this.scheduler = new FrameScheduler(() => this.draw());
+
+    // The gizmo first: its pointerdown must claim a drag before the orbit controls see it.
+    this.gizmo = new TransformGizmo(this.camera, canvas, {
+      changed: () => this.requestRender(),
+      draggingChanged: (dragging) => {
+        this.controls.enabled = !dragging;
+      },
+      dragEnded: (object, snapped) => this.commitDrag(object, snapped),
+    });
+    this.controls = new ViewControls(this.camera, canvas, this.scheduler, (action) => this.dispatch(action));
+    this.controls.orbit.addEventListener('start', () => this.flight.userMoved());
+    this.flight = new CameraFlight(this.controls, this.scheduler, (atCamera) => this.emit('flight', atCamera));
+    this.objects = new SceneSync(meshLoader, (error) => {
+      if (error) this.emit('message', msg(`A model could not be loaded: ${error}`));
+      this.requestRender();
+    });
+
+    this.grid.position.y = 0.002;
+    // A faint floor grid: orientation without competing with the scene.
+    this.grid.material.transparent = true;
+    this.grid.material.opacity = 0.28;
+    this.grid.material.depthWrite = false;
+    this.scene.add(
+      new HemisphereLight(0xffffff, 0x5a6270, 0.55),
+      this.grid,
+      this.objects.group,
+      this.rasterLights.group,
+      this.lightGizmos.group,
+      this.cameraScreen.rig,
+      this.selectionBox,
+      this.gizmo.helper,
+    );
+
+    this.listen(canvas, 'pointerdown', (event) => this.pointerDown(event));
+    this.listen(canvas, 'pointerup', (event) => this.pointerUp(event));
+    this.listen(canvas, 'pointermove', (event) => this.pointerMoved(event));
+    this.listen(canvas, 'pointerleave', () => this.pointerLeft());
+    this.listen(canvas, 'keydown', (event) => this.keyDown(event));
+    this.unsubscribe = store.subscribe((state, action) => {
+      this.update(state);
+      if (action.type === 'scene.loaded') {
+        this.flight.forget();
+        this.frameScene();
+      }
+    });
+    this.update(store.state);
+    this.frameScene();
+  }
+
+  /** How many frames were drawn so far (idle means it stops growing). */
+  get frameCount(): number {
+    return this.frames;
+  }
+
+  /** Whether the view is at the ray tracer's camera, or has a way back to where it was. */
+  get atCamera(): boolean {
+    return this.flight.atCamera;
+  }
+
+  /** Draws one frame soon (call after changing anything drawn, like the ray layer's content). */
+  requestRender(): void {
+    this.scheduler.requestRender();
+  }
+
+  /** Calls `animator` every frame; frames keep coming while it returns true. Returns its remover. */
+  addAnimator(animator: Animator): () => void {
+    return this.scheduler.addAnimator(animator);
+  }
+
+  /** The canvas's size in CSS pixels; drawn at up to 2 device pixels per CSS pixel (school laptops). */
+  setSize(width: number, height: number): void {
+    if (width <= 0 || height <= 0) return;
+    this.renderer.setPixelRatio(Math.min(2, window.devicePixelRatio || 1));
+    this.renderer.setSize(width, height, false);
+    const first = !this.sized;
+    this.sized = true;
+    this.camera.aspect = width / height;
+    this.camera.updateProjectionMatrix();
+    // The first framing guessed a square view; frame again for the real shape.
+    if (first) this.frameScene();
+    // A resized canvas is blank until drawn: draw now, not next frame, so it never flickers.
+    this.scheduler.renderNow();
+  }
+
+  /** Colours the camera's screen with the traced pixels. */
+  setScreenRays(rays: ScreenRays): void {
+    this.cameraScreen.setScreenRays(rays);
+    this.requestRender();
+  }
+
+  /** Shows the drawn rays (replacing any before), animates them and picks them for hover. */
+  setRayLayer(layer: RayLayer | null): void {
+    if (this.rayLayer) this.scene.remove(this.rayLayer.object);
+    this.removeRayAnimator?.();
+    this.removeRayAnimator = null;
+    this.rayLayer = layer;
+    if (layer) {
+      this.scene.add(layer.object);
+      this.removeRayAnimator = this.scheduler.addAnimator((time) => layer.tick(time));
+    }
+    this.requestRender();
+  }
+
+  /** Calls `listener` with the ray under the pointer (or null when it leaves it). Returns its remover. */
+  onRayHover(listener: Listener<RayHoverDetail | null>): () => void {
+    return this.on('rayHover', listener);
+  }
+
+  on<K extends keyof LabViewEvents>(type: K, listener: Listener<LabViewEvents[K]>): () => void {
+    const set = this.listeners[type] as Set<Listener<LabViewEvents[K]>>;
+    set.add(listener);
+    return () => set.delete(listener);
+  }
+
+  /** Does what a key or a toolbar button asks; `glide` spreads a step over a few frames (buttons). */
+  execute(command: ViewCommand, glide = false): void {
+    const state = this.store.state;
+    switch (command.kind) {
+      case 'orbit':
+        return this.controls.orbitBy(command.dxDeg, command.dyDeg, glide);
+      case 'pan':
+        return this.controls.panBy(command.dx, command.dy, glide);
+      case 'zoom':
+        return this.controls.zoomBy(command.factor, glide);
+      case 'gizmo-mode':
+        this.dispatch({ type: 'gizmo.changed', changes: { mode: command.mode } });
+        if (state.selection && !gizmoModesFor(state.selection, state.scene).includes(command.mode)) {
+          this.emit('message', msg('The selection cannot be changed that way, so its gizmo moves it instead.'));
+        }
+        return;
+      case 'toggle-space':
+        this.dispatch({ type: 'gizmo.changed', changes: { space: state.gizmo.space === 'local' ? 'world' : 'local' } });
+        return;
+      case 'toggle-snap':
+        this.dispatch({ type: 'gizmo.changed', changes: { snap: !state.gizmo.snap } });
+        return;
+      case 'delete':
+        return this.deleteSelection();
+      case 'escape':
+        if (this.flight.atCamera) this.flyBack();
+        if (state.selection) this.dispatch({ type: 'selection.changed', selection: null });
+        return;
+      case 'fly':
+        return this.flight.atCamera ? this.flyBack() : this.flyToCamera();
+      case 'select-next':
+        return this.selectNext(command.step);
+      case 'help':
+        return this.emit('help', undefined);
+    }
+  }
+
+  /** Orbits the view as a toolbar button does: +dx moves the eye right around the target, +dy up. */
+  orbit(dxDeg = BUTTON_ORBIT_DEG, dyDeg = 0): void {
+    this.controls.orbitBy(dxDeg, dyDeg, true);
+  }
+
+  /** Pans as a toolbar button does: shares of the visible height, +dx right, +dy up. */
+  pan(dx = BUTTON_PAN, dy = 0): void {
+    this.controls.panBy(dx, dy, true);
+  }
+
+  /** Zooms as a toolbar button does: factor > 1 moves closer. */
+  zoom(factor = BUTTON_ZOOM): void {
+    this.controls.zoomBy(factor, true);
+  }
+
+  /** Glides to the ray tracer's camera (eye, target, fov); reports view.flew-to-camera on arrival. */
+  flyToCamera(): void {
+    this.flight.flyTo(this.tracerCameraPose(), () => this.dispatch({ type: 'view.flew-to-camera' }));
+  }
+
+  /** Glides back to where the view was before flying to the camera. */
+  flyBack(): void {
+    this.flight.back();
+  }
+
+  /** The raster view from the ray tracer's camera, `width`×`height`, for the render window's comparison. */
+  rasterSnapshot(width: number, height: number): ImageData {
+    const hidden: Object3D[] = [this.grid, this.lightGizmos.group, this.cameraScreen.rig, this.selectionBox, this.gizmo.helper];
+    if (this.rayLayer) hidden.push(this.rayLayer.object);
+    const { camera, settings } = this.store.state.scene;
+    return rasterSnapshot(this.renderer, this.scene, hidden, camera, settings.background, width, height);
+  }
+
+  /** Looks at the whole scene (objects, lights and the tracer's camera) from the front left, above. */
+  frameScene(): void {
+    const { objects, lights, camera } = this.store.state.scene;
+    const centre = [...objects.map((o) => o.position), camera.position];
+    const pose = framingPose(centre, [...centre, ...lights.map((l) => l.position)], this.camera.fov, this.camera.aspect);
+    this.controls.setPose(pose);
+  }
+
+  /** Where a world point appears on the canvas (CSS px from its top-left), or null behind the eye. */
+  projectToView(point: Vec3): { x: number; y: number } | null {
+    const p = projected.set(...point).project(this.camera);
+    if (p.z > 1) return null;
+    const rect = this.canvas.getBoundingClientRect();
+    return { x: ((p.x + 1) / 2) * rect.width, y: ((1 - p.y) / 2) * rect.height };
+  }
+
+  /** What a click at (clientX, clientY) would select: an object, a light, the camera, a screen pixel, or null for empty space. */
+  pickAt(clientX: number, clientY: number): PickResult | null {
+    this.picker.aim(this.camera, this.canvas, clientX, clientY);
+    return this.picker.pick([this.objects.group, this.lightGizmos.group, this.cameraScreen.rig]);
+  }
+
+  dispose(): void {
+    this.unsubscribe();
+    for (const cleanup of this.cleanups) cleanup();
+    this.removeRayAnimator?.();
+    if (this.rayLayer) this.scene.remove(this.rayLayer.object);
+    this.flight.dispose();
+    this.gizmo.dispose();
+    this.controls.dispose();
+    this.scheduler.dispose();
+    this.objects.dispose();
+    this.rasterLights.dispose();
+    this.lightGizmos.dispose();
+    this.cameraScreen.dispose();
+    this.selectionBox.dispose();
+    this.grid.dispose();
+    this.renderer.dispose();
+  }
+
+  // --- store → drawing ---
+
+  private update(state: AppState): void {
+    const previous = this.previous;
+    this.previous = state;
+    if (state.scene !== previous?.scene) {
+      this.objects.sync(state.scene);
+      this.rasterLights.sync(state.scene);
+      this.lightGizmos.sync(state.scene);
+      if (previous && !sameCamera(previous, state)) this.flight.cameraMoved(this.tracerCameraPose());
+    }
+    if (
+      state.scene !== previous?.scene ||
+      state.selectedPixel !== previous.selectedPixel ||
+      state.rays.showSamplePoints !== previous.rays.showSamplePoints
+    ) {
+      this.cameraScreen.sync({
+        camera: state.scene.camera,
+        settings: state.scene.settings,
+        selectedPixel: state.selectedPixel,
+        showSamplePoints: state.rays.showSamplePoints,
+      });
+    }
+    if (!this.gizmo.dragging) this.updateGizmo(state);
+    this.requestRender();
+  }
+
+  /** Puts the gizmo and the selection outline on the selection, in a mode it allows. */
+  private updateGizmo(state: AppState): void {
+    const target = this.selectedObject(state);
+    const allowed = gizmoModesFor(state.selection, state.scene);
+    this.gizmo.setSnapOption(state.gizmo.snap);
+    this.gizmo.attach(target, effectiveGizmoMode(state.gizmo.mode, allowed), state.gizmo.space);
+    this.outlineSelection(state, target);
+  }
+
+  /** The selection outline: a box around the object or light (around the camera's body only, not its screen). */
+  private outlineSelection(state: AppState, target: Object3D | null): void {
+    this.selectionBox.visible = target !== null;
+    if (target) this.selectionBox.setFromObject(state.selection?.kind === 'camera' ? this.cameraScreen.body : target);
+  }
+
+  private selectedObject(state: AppState): Object3D | null {
+    const selection = state.selection;
+    if (!selection) return null;
+    if (selection.kind === 'camera') return this.cameraScreen.rig;
+    const object = selection.kind === 'object' ? this.objects.objectOf(selection.id) : this.lightGizmos.objectOf(selection.id);
+    return object ?? null;
+  }
+
+  /** Writes a finished gizmo drag to the store; a refused one is shown and undone. */
+  private commitDrag(object: Object3D, snapped: boolean): void {
+    const { selection, scene } = this.store.state;
+    const pose = { position: object.position, quaternion: object.quaternion, scale: object.scale };
+    let action: AppAction | null = null;
+    if (selection?.kind === 'object') action = { type: 'object.changed', id: selection.id, changes: objectChanges(pose, snapped) };
+    if (selection?.kind === 'camera') action = { type: 'camera.changed', changes: cameraChanges(scene.camera, pose, snapped) };
+    if (selection?.kind === 'light') {
+      const light = scene.lights.find((l) => l.id === selection.id);
+      if (light) action = { type: 'light.changed', id: light.id, changes: lightChanges(light, pose, snapped) };
+    }
+    if (action && this.dispatch(action)) this.resync();
+  }
+
+  /** Redraws everything from the store (after a refused drag left the drawing off the state). */
+  private resync(): void {
+    this.previous = null;
+    this.update(this.store.state);
+  }
+
+  private draw(): void {
+    this.cameraScreen.setViewedFromEye(this.camera.position.distanceTo(this.cameraScreen.rig.position) < INSIDE_CAMERA);
+    // The outline follows a drag in progress.
+    if (this.selectionBox.visible && this.gizmo.dragging) this.outlineSelection(this.store.state, this.selectedObject(this.store.state));
+    this.renderer.render(this.scene, this.camera);
+    this.frames++;
+  }
+
+  // --- pointer and keys ---
+
+  private pointerDown(event: PointerEvent): void {
+    if (!event.isPrimary) {
+      this.press = null;
+      return;
+    }
+    this.press = { id: event.pointerId, x: event.clientX, y: event.clientY, onGizmo: this.gizmo.hovering || this.gizmo.dragging };
+  }
+
+  private pointerUp(event: PointerEvent): void {
+    const press = this.press;
+    this.press = null;
+    if (!press || press.id !== event.pointerId || press.onGizmo || event.button !== 0) return;
+    if (Math.hypot(event.clientX - press.x, event.clientY - press.y) > CLICK_SLOP) return;
+    this.click(this.pickAt(event.clientX, event.clientY));
+  }
+
+  /** A click selects what it hit, toggles a screen pixel, or deselects on empty space. */
+  private click(hit: PickResult | null): void {
+    const state = this.store.state;
+    if (hit === null) {
+      if (state.selection) this.dispatch({ type: 'selection.changed', selection: null });
+      return;
+    }
+    if (hit.kind === 'pixel') {
+      const [x, y] = hit.pixel;
+      const again = state.selectedPixel?.[0] === x && state.selectedPixel[1] === y;
+      this.dispatch(again ? { type: 'pixel.deselected' } : { type: 'pixel.selected', pixel: hit.pixel });
+      return;
+    }
+    const selection = hit.kind === 'camera' ? { kind: 'camera' as const } : hit;
+    if (!sameSelection(state.selection, selection)) this.dispatch({ type: 'selection.changed', selection });
+  }
+
+  /** Hover work waits for the next frame: one pick per frame however fast the pointer moves. */
+  private pointerMoved(event: PointerEvent): void {
+    if (event.pointerType === 'touch') return;
+    this.pointer = { x: event.clientX, y: event.clientY };
+    if (this.hoverQueued) return;
+    this.hoverQueued = true;
+    requestAnimationFrame(() => {
+      this.hoverQueued = false;
+      this.hover();
+    });
+  }
+
+  private hover(): void {
+    const pointer = this.pointer;
+    if (!pointer || this.gizmo.dragging || this.press) return;
+    const hit = this.pickAt(pointer.x, pointer.y);
+    this.canvas.style.cursor = hit ? 'pointer' : '';
+    let hover: RayHover | null = null;
+    if (this.rayLayer) {
+      this.rayRaycaster.ray.copy(this.picker.raycaster.ray);
+      this.rayRaycaster.camera = this.camera;
+      hover = this.rayLayer.pick(this.rayRaycaster);
+    }
+    // Over a ray the tooltip follows the pointer; off rays, one null says so.
+    if (hover === null && this.lastHover === null) return;
+    this.lastHover = hover;
+    const rect = this.canvas.getBoundingClientRect();
+    const at = { x: pointer.x - rect.left, y: pointer.y - rect.top, clientX: pointer.x, clientY: pointer.y };
+    this.emit('rayHover', hover ? { hover, ...at } : null);
+  }
+
+  private pointerLeft(): void {
+    this.pointer = null;
+    this.canvas.style.cursor = '';
+    if (this.lastHover) {
+      this.lastHover = null;
+      this.emit('rayHover', null);
+    }
+  }
+
+  private keyDown(event: KeyboardEvent): void {
+    const command = keyCommand(event, this.store.state.selection !== null);
+    if (!command) return;
+    event.preventDefault();
+    this.execute(command);
+  }
+
+  // --- commands ---
+
+  private deleteSelection(): void {
+    const selection = this.store.state.selection;
+    if (selection?.kind === 'object') this.dispatch({ type: 'object.deleted', id: selection.id });
+    else if (selection?.kind === 'light') this.dispatch({ type: 'light.deleted', id: selection.id });
+    else if (selection?.kind === 'camera') this.emit('message', msg("The ray tracer's camera cannot be deleted."));
+    else this.emit('message', msg('Select an object or a light first, then press Delete.'));
+  }
+
+  /** Steps through everything selectable: objects, then lights, then the camera. */
+  private selectNext(step: 1 | -1): void {
+    const { scene, selection } = this.store.state;
+    const all = [
+      ...scene.objects.map((o) => ({ kind: 'object' as const, id: o.id })),
+      ...scene.lights.map((l) => ({ kind: 'light' as const, id: l.id })),
+      { kind: 'camera' as const },
+    ];
+    const index = all.findIndex((item) => sameSelection(selection, item));
+    const next = index < 0 ? (step > 0 ? 0 : all.length - 1) : (index + step + all.length) % all.length;
+    this.dispatch({ type: 'selection.changed', selection: all[next] });
+  }
+
+  private tracerCameraPose(): ViewPose {
+    const { position, target, fov } = this.store.state.scene.camera;
+    return { position: new Vector3(...position), target: new Vector3(...target), fov };
+  }
+
+  /** Dispatches, showing the reason when the store refuses. Returns that reason. */
+  private dispatch(action: AppAction): string | undefined {
+    const error = this.store.dispatch(action);
+    if (error) this.emit('message', error);
+    return error;
+  }
+
+  private emit<K extends keyof LabViewEvents>(type: K, value: LabViewEvents[K]): void {
+    for (const listener of this.listeners[type]) (listener as Listener<LabViewEvents[K]>)(value);
+  }
+
+  private listen<K extends keyof HTMLElementEventMap>(target: HTMLElement, type: K, handler: (event: HTMLElementEventMap[K]) => void): void {
+    target.addEventListener(type, handler);
+    this.cleanups.push(() => target.removeEventListener(type, handler));
+  }
+}
+
+const projected = new Vector3();
+
+function sameCamera(a: AppState, b: AppState): boolean {
+  const x = a.scene.camera;
+  const y = b.scene.camera;
+  return x.fov === y.fov && x.position.every((v, i) => v === y.position[i]) && x.target.every((v, i) => v === y.target[i]);
+}
+
+function sameSelection(a: AppState['selection'], b: AppState['selection']): boolean {
+  if (a === null || b === null) return a === b;
+  if (a.kind === 'camera' || b.kind === 'camera') return a.kind === b.kind;
+  return a.kind === b.kind && a.id === b.id;
+}
