@@ -13,7 +13,6 @@ import type { RayHoverDetail } from '../view/lab-view.ts';
 import { RayPool } from '../view/ray-pool.ts';
 import './rt-light-panel.ts';
 import './rt-object-panel.ts';
-import './rt-ray-legend.ts';
 import './rt-ray-panel.ts';
 import './rt-ray-tooltip.ts';
 import './rt-render-window.ts';
@@ -224,7 +223,6 @@ export class RtLab extends LitElement {
         ${selection?.kind === 'light' ? html`<rt-light-panel .store=${this.store}></rt-light-panel>` : html`<rt-object-panel .store=${this.store}></rt-object-panel>`}
         <rt-tracer-panel .store=${this.store}></rt-tracer-panel>
         <rt-ray-panel .store=${this.store}></rt-ray-panel>
-        <rt-ray-legend .store=${this.store}></rt-ray-legend>
       </aside>
       <main>
         <rt-scene-view
