@@ -1,0 +1,105 @@
+import { z } from 'zod';
+import type { AppAction, AppActionType } from '../app/app-action.ts';
+import { DEFAULT_RAY_VIEW } from '../app/app-state.ts';
+import type { Camera, Light, Material, RenderSettings, SceneObject } from '../scene/scene.ts';
+import { sceneSchema } from '../scene/scene-schema.ts';
+import { describeValue } from '../scene/scene-issues.ts';
+import { isRecord } from './is-record.ts';
+
+/**
+ * The app's named actions as level files write them (a task's `solution`, the `event` of a
+ * goal). Checked when a level loads so that "show me" never dispatches a malformed action.
+ *
+ * The values of scene changes (`changes` of material.changed and the like) are checked by
+ * the reducer, which refuses an invalid scene with the scene schema's own message; the
+ * levels-solvable test runs every solution through it. Ray and gizmo options are not part
+ * of the scene, so their changes are checked here against the options' defaults.
+ */
+
+const id = () => z.string().min(1);
+
+/** An object of fields to change; the reducer validates the changed scene. */
+const sceneChanges = <Fields>() =>
+  z.custom<Partial<Fields>>((value) => isRecord(value), { error: (issue) => `must be an object of fields to change, got ${describeValue(issue.input)}` });
+
+/** Changes to options that have no schema: each field must exist in `defaults` with the same type. */
+function optionChanges<Options extends object>(defaults: Options) {
+  return z.custom<Partial<Options>>((value) => optionProblems(defaults, value).length === 0, {
+    error: (issue) => optionProblems(defaults, issue.input).join('; '),
+  });
+}
+
+function optionProblems(defaults: object, value: unknown): string[] {
+  if (!isRecord(value)) return [`must be an object of fields to change, got ${describeValue(value)}`];
+  return Object.entries(value).flatMap(([field, given]) => {
+    if (!(field in defaults)) return [`unknown field "${field}" (known: ${Object.keys(defaults).join(', ')})`];
+    const expected = typeof defaults[field as keyof typeof defaults];
+    return typeof given === expected ? [] : [`${field} must be a ${expected}, got ${describeValue(given)}`];
+  });
+}
+
+const selectionSchema = z
+  .discriminatedUnion('kind', [
+    z.strictObject({ kind: z.literal('object'), id: id() }),
+    z.strictObject({ kind: z.literal('light'), id: id() }),
+    z.strictObject({ kind: z.literal('camera') }),
+  ])
+  .nullable();
+
+const fact = <Type extends string>(type: Type) => z.strictObject({ type: z.literal(type) });
+
+export const appActionSchema = z.discriminatedUnion('type', [
+  z.strictObject({ type: z.literal('scene.loaded'), scene: sceneSchema }),
+  z.strictObject({ type: z.literal('selection.changed'), selection: selectionSchema }),
+  z.strictObject({ type: z.literal('object.added'), shape: z.enum(['sphere', 'box', 'cylinder', 'plane', 'mesh']), mesh: z.string().optional() }),
+  z.strictObject({ type: z.literal('object.deleted'), id: id() }),
+  z.strictObject({ type: z.literal('object.changed'), id: id(), changes: sceneChanges<Omit<SceneObject, 'id' | 'material'>>() }),
+  z.strictObject({ type: z.literal('material.changed'), id: id(), changes: sceneChanges<Material>() }),
+  z.strictObject({ type: z.literal('light.added'), lightType: z.enum(['point', 'spot', 'area']) }),
+  z.strictObject({ type: z.literal('light.deleted'), id: id() }),
+  z.strictObject({ type: z.literal('light.changed'), id: id(), changes: sceneChanges<Light>() }),
+  z.strictObject({ type: z.literal('camera.changed'), changes: sceneChanges<Camera>() }),
+  z.strictObject({ type: z.literal('settings.changed'), changes: sceneChanges<RenderSettings>() }),
+  z.strictObject({ type: z.literal('pixel.selected'), pixel: z.tuple([z.number(), z.number()]) }),
+  fact('pixel.deselected'),
+  z.strictObject({ type: z.literal('rays.changed'), changes: optionChanges(DEFAULT_RAY_VIEW) }),
+  z.strictObject({
+    type: z.literal('gizmo.changed'),
+    changes: z.strictObject({
+      mode: z.enum(['translate', 'rotate', 'scale']).optional(),
+      space: z.enum(['local', 'world']).optional(),
+      snap: z.boolean().optional(),
+    }),
+  }),
+  fact('view.orbited'),
+  fact('view.panned'),
+  fact('view.zoomed'),
+  fact('view.flew-to-camera'),
+  fact('render.started'),
+  z.strictObject({ type: z.literal('render.finished'), ms: z.number().min(0) }),
+  fact('render.cancelled'),
+  fact('render.saved'),
+  z.strictObject({ type: z.literal('panel.opened'), panel: z.string().min(1) }),
+]);
+
+/** Every action type, for the `event` of a goal. */
+export const APP_ACTION_TYPES = appActionSchema.options.map((option) => option.shape.type.value);
+
+/** The fields an action of this type has besides `type` (what a goal's `with` may look at). */
+export function actionFields(type: AppActionType): string[] {
+  const option = appActionSchema.options.find((candidate) => candidate.shape.type.value === type);
+  return Object.keys(option?.shape ?? {}).filter((field) => field !== 'type');
+}
+
+type SameType<A, B> = [A] extends [B] ? ([B] extends [A] ? true : false) : false;
+type Assert<T extends true> = T;
+
+/**
+ * Compile-time guard that this schema follows src/app/app-action.ts: it knows every action
+ * type, and what it accepts is an AppAction. A new action in the app fails here until it is
+ * added above.
+ */
+export type SchemaMatchesAppActions = [
+  Assert<SameType<z.output<typeof appActionSchema>['type'], AppActionType>>,
+  Assert<z.output<typeof appActionSchema> extends AppAction ? true : false>,
+];

@@ -1,0 +1,162 @@
+import { z } from 'zod';
+import type { AppActionType } from '../app/app-action.ts';
+import { describeValue } from '../scene/scene-issues.ts';
+import { wholeNumberIn } from '../scene/scene-schema-parts.ts';
+import { actionFields, APP_ACTION_TYPES } from './app-action-schema.ts';
+import { chosenBy } from './chosen-schema.ts';
+import { COMPARISONS, conditionSchema, problemWithComparison, type Comparison, type JsonValue } from './condition.ts';
+import { isRecord } from './is-record.ts';
+import { localizedTextSchema, type LocalizedText } from './localized-text.ts';
+import { parsePath } from './state-path.ts';
+
+/**
+ * What a task asks of the learner, as data (DESIGN.md: a discriminated union, not a pile of
+ * booleans). Which field an object has says what kind of goal it is; docs/levels.md has an
+ * example of each.
+ */
+
+/** Conditions per path, on the state (`where`) or on the action (`with`). */
+export type Conditions = Record<string, JsonValue>;
+
+/** Done when this action happens (`times` times since the task was shown, default once),
+ * with these fields, leaving the state like this. */
+export interface EventGoal {
+  event: AppActionType;
+  with?: Conditions;
+  where?: Conditions;
+  times?: number;
+}
+
+/** Done while the state holds this value. */
+export interface StateGoal {
+  state: string;
+  op: Comparison;
+  value: JsonValue;
+}
+
+/** Predict, then check: done when answered, right or wrong (the answer is recorded). */
+export interface QuizGoal {
+  quiz: { question: LocalizedText; choices: LocalizedText[]; answer: number; explanation?: LocalizedText };
+}
+
+/** Read, then press Next. */
+export interface InfoGoal {
+  info: true;
+}
+
+export interface AllGoal {
+  all: SceneGoal[];
+}
+
+export interface AnyGoal {
+  any: SceneGoal[];
+}
+
+/** The goals checked against the app's state and actions, which `all` and `any` combine. */
+export type SceneGoal = EventGoal | StateGoal | AllGoal | AnyGoal;
+
+/** Quiz and info goals are answered through the task panel, so they stand alone. */
+export type Goal = SceneGoal | QuizGoal | InfoGoal;
+
+/** How the learner completes a task: read it, answer it, or do something in the lab. */
+export type TaskKind = 'info' | 'quiz' | 'do';
+
+export function kindOfGoal(goal: Goal): TaskKind {
+  if ('info' in goal) return 'info';
+  if ('quiz' in goal) return 'quiz';
+  return 'do';
+}
+
+const pathSyntax = z.string().superRefine((path, context) => {
+  const parsed = parsePath(path);
+  if (!parsed.ok) context.addIssue({ code: 'custom', input: path, message: parsed.reason });
+});
+
+const eventGoalSchema = z
+  .strictObject({
+    event: z.enum(APP_ACTION_TYPES),
+    with: z.record(pathSyntax, conditionSchema).optional(),
+    where: z.record(pathSyntax, conditionSchema).optional(),
+    times: wholeNumberIn([1, 100]).optional(),
+  })
+  .superRefine((goal, context) => {
+    // `with` looks into the action, so its paths must start at one of that action's fields.
+    const fields = actionFields(goal.event);
+    for (const path of Object.keys(goal.with ?? {})) {
+      const parsed = parsePath(path);
+      const first = parsed.ok ? parsed.steps[0] : undefined;
+      if (first?.kind === 'field' && !fields.includes(first.name)) {
+        const has = fields.length === 0 ? 'has no fields' : `has ${fields.join(', ')}`;
+        context.addIssue({ code: 'custom', path: ['with', path], input: path, message: `a "${goal.event}" action ${has}` });
+      }
+    }
+  });
+
+const stateGoalSchema = z
+  .strictObject({ state: pathSyntax, op: z.enum(COMPARISONS), value: z.json() })
+  .superRefine((goal, context) => {
+    const problem = problemWithComparison(goal.op, goal.value);
+    if (problem) context.addIssue({ code: 'custom', path: ['value'], input: goal.value, message: problem });
+  });
+
+const quizGoalSchema = z.strictObject({
+  quiz: z
+    .strictObject({
+      question: localizedTextSchema,
+      choices: z.array(localizedTextSchema).min(2).max(6),
+      answer: wholeNumberIn([0, 5]).describe('The position of the right choice, counting from 0.'),
+      explanation: localizedTextSchema.optional().describe('Shown after answering: why the answer is what it is.'),
+    })
+    .superRefine((quiz, context) => {
+      if (quiz.answer >= quiz.choices.length) {
+        context.addIssue({ code: 'custom', path: ['answer'], input: quiz.answer, message: `must be the position of a choice, 0 to ${quiz.choices.length - 1}` });
+      }
+    }),
+});
+
+const infoGoalSchema = z.strictObject({ info: z.literal(true) });
+
+const innerGoals = () => z.array(z.lazy(() => sceneGoalSchema)).min(1);
+
+/** The goal kinds by the field that marks them. */
+const SCENE_GOAL_KINDS: Record<string, z.ZodType<SceneGoal>> = {
+  event: eventGoalSchema,
+  state: stateGoalSchema,
+  all: z.strictObject({ all: innerGoals() }),
+  any: z.strictObject({ any: innerGoals() }),
+};
+const GOAL_KINDS: Record<string, z.ZodType<Goal>> = { ...SCENE_GOAL_KINDS, quiz: quizGoalSchema, info: infoGoalSchema };
+
+function chooseByField<Output>(kinds: Record<string, z.ZodType<Output>>, standAlone: readonly string[]) {
+  const names = Object.keys(kinds);
+  return (input: unknown): z.ZodType<Output> | string => {
+    if (!isRecord(input)) return `must be a goal: an object with one of the fields ${names.join(', ')}, got ${describeValue(input)}`;
+    const alone = standAlone.find((name) => name in input);
+    if (alone) return `a "${alone}" goal is a task's whole goal; it cannot be inside "all" or "any"`;
+    const present = names.filter((name) => name in input);
+    if (present.length === 0) return `must have one of the fields ${names.join(', ')}`;
+    if (present.length > 1) return `must have only one of the fields ${names.join(', ')}, got ${present.join(' and ')}`;
+    return kinds[present[0]];
+  };
+}
+
+const sceneGoalSchema: z.ZodType<SceneGoal> = chosenBy(chooseByField(SCENE_GOAL_KINDS, ['quiz', 'info']));
+export const goalSchema: z.ZodType<Goal> = chosenBy(chooseByField(GOAL_KINDS, []));
+
+/** Every goal inside `goal` (itself included) with its path from it, for checks that look at each. */
+export function goalParts(goal: Goal, path: (string | number)[] = []): { goal: Goal; path: (string | number)[] }[] {
+  const inner = 'all' in goal ? { key: 'all', goals: goal.all } : 'any' in goal ? { key: 'any', goals: goal.any } : undefined;
+  if (!inner) return [{ goal, path }];
+  return [{ goal, path }, ...inner.goals.flatMap((part, index) => goalParts(part, [...path, inner.key, index]))];
+}
+
+type Assert<T extends true> = T;
+type SameType<A, B> = [A] extends [B] ? ([B] extends [A] ? true : false) : false;
+
+/** Compile-time guard that the kinds' schemas produce the interfaces above. */
+export type SchemaMatchesGoalTypes = [
+  Assert<SameType<z.output<typeof eventGoalSchema>, EventGoal>>,
+  Assert<SameType<z.output<typeof stateGoalSchema>, StateGoal>>,
+  Assert<SameType<z.output<typeof quizGoalSchema>, QuizGoal>>,
+  Assert<SameType<z.output<typeof infoGoalSchema>, InfoGoal>>,
+];

@@ -1,0 +1,120 @@
+import { initialState, type AppState } from '../app/app-state.ts';
+import type { Scene } from '../scene/scene.ts';
+import { formatIssues } from '../scene/scene-issues.ts';
+import { goalParts, kindOfGoal } from './goal.ts';
+import { ALWAYS_SHOWN, partsOfTarget, type GuideTarget } from './lab-controls.ts';
+import type { Level } from './level-schema.ts';
+import { problemWithPath } from './state-path.ts';
+
+/**
+ * The checks of a level that look at more than one field: ids, how many tasks are
+ * mandatory, whether goals point at parts of the state that exist, whether a guide rings a
+ * control the level shows. They run on a level whose fields are all valid.
+ */
+
+/** The mandatory tasks a level must have (spec: one idea per level, 3–10 tasks to do and see it). */
+export const MANDATORY_TASKS: readonly [fewest: number, most: number] = [3, 10];
+
+interface Problem {
+  path: (string | number)[];
+  message: string;
+}
+
+/** Every problem as a `path: reason` line, like the schema's. */
+export function levelRules(level: Level): string[] {
+  const problems = [
+    ...listedOnce(level.tasks.map((task) => task.id), ['tasks'], 'id'),
+    ...listedOnce(level.badges.map((badge) => badge.id), ['badges'], 'id'),
+    ...listedOnce(level.ui.panels, ['ui', 'panels']),
+    ...mandatoryCount(level),
+    ...level.tasks.flatMap((_, index) => taskProblems(level, index)),
+    ...badgeProblems(level),
+  ];
+  return formatIssues(problems.map(({ path, message }) => ({ code: 'custom', path, message })));
+}
+
+/** `values` name each thing once; the second, third… use is reported where it stands. */
+function listedOnce(values: readonly string[], listPath: (string | number)[], field?: string): Problem[] {
+  const seen = new Set<string>();
+  return values.flatMap((value, index) => {
+    if (!seen.has(value)) {
+      seen.add(value);
+      return [];
+    }
+    return [{ path: [...listPath, index, ...(field ? [field] : [])], message: `"${value}" is used more than once` }];
+  });
+}
+
+function mandatoryCount(level: Level): Problem[] {
+  const count = level.tasks.filter((task) => task.mandatory).length;
+  const [fewest, most] = MANDATORY_TASKS;
+  if (count >= fewest && count <= most) return [];
+  return [{ path: ['tasks'], message: `must have ${fewest} to ${most} mandatory tasks, got ${count}` }];
+}
+
+function taskProblems(level: Level, index: number): Problem[] {
+  const task = level.tasks[index];
+  const at = (...path: (string | number)[]) => ['tasks', index, ...path];
+  const problems: Problem[] = [];
+  const kind = kindOfGoal(task.goal);
+  if (kind === 'do') {
+    if (!task.solution) problems.push({ path: at('solution'), message: 'is required: the actions that complete this task ("show me" performs them)' });
+    if (task.hints.length === 0) problems.push({ path: at('hints'), message: 'must have at least 1 hint for a task done in the lab' });
+  } else if (task.solution) {
+    problems.push({ path: at('solution'), message: `a ${kind} task has no solution: ${kind === 'quiz' ? 'its answer is in its goal' : 'it is done with Next'}` });
+  }
+  if (kind === 'info' && !task.mandatory) problems.push({ path: at('mandatory'), message: 'an info step is read on the way: it must be mandatory' });
+
+  const sample = sampleState(level.scene);
+  for (const { goal, path } of goalParts(task.goal, at('goal'))) {
+    if ('state' in goal) problems.push(...pathProblem(goal.state, sample, [...path, 'state']));
+    if ('event' in goal) {
+      for (const statePath of Object.keys(goal.where ?? {})) problems.push(...pathProblem(statePath, sample, [...path, 'where', statePath]));
+    }
+  }
+  if (task.guide) problems.push(...guideProblems(level, task.guide).map((message) => ({ path: at('guide'), message })));
+  return problems;
+}
+
+/**
+ * The state a level starts in, with the parts that start empty filled in (something
+ * selected, a pixel selected) so that paths into them can be checked too.
+ */
+function sampleState(scene: Scene): AppState {
+  return { ...initialState(scene), selection: { kind: 'object', id: '' }, selectedPixel: [0, 0] };
+}
+
+function pathProblem(path: string, sample: AppState, at: (string | number)[]): Problem[] {
+  const problem = problemWithPath(path, sample);
+  return problem ? [{ path: at, message: problem }] : [];
+}
+
+/** A guide must ring something the learner can see in this level. */
+function guideProblems(level: Level, target: GuideTarget): string[] {
+  const { panel, control, item } = partsOfTarget(target);
+  const shown = (ALWAYS_SHOWN as readonly string[]).includes(panel) || level.ui.panels.some((listed) => listed === panel);
+  if (!shown) return [`"${target}" is in the ${panel} panel, which this level does not show (ui.panels)`];
+  const narrowed: Partial<Record<string, string[]>> = level.ui.controls ?? {};
+  const only = narrowed[panel];
+  if (only && !only.includes(control)) return [`"${target}" is hidden by ui.controls.${panel}`];
+  if (item === undefined) return [];
+  if (control === 'pixel') return pixelProblems(level.scene, item);
+  const ids = [...level.scene.objects, ...level.scene.lights].map((thing) => thing.id);
+  return ids.includes(item) ? [] : [`no object or light "${item}" in this level's scene (it has ${ids.join(', ')})`];
+}
+
+function pixelProblems(scene: Scene, item: string): string[] {
+  const [columns, rows] = scene.camera.pixels;
+  const match = /^(\d+),(\d+)$/.exec(item);
+  if (match && Number(match[1]) < columns && Number(match[2]) < rows) return [];
+  return [`"${item}" must be "column,row" inside the ${columns}×${rows} screen, counting from 0`];
+}
+
+function badgeProblems(level: Level): Problem[] {
+  const taskIds = level.tasks.map((task) => task.id);
+  return level.badges.flatMap((badge, badgeIndex) =>
+    badge.tasks.flatMap((taskId, index) =>
+      taskIds.includes(taskId) ? [] : [{ path: ['badges', badgeIndex, 'tasks', index], message: `no task "${taskId}" in this level` }],
+    ),
+  );
+}

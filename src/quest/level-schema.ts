@@ -1,0 +1,102 @@
+import { z } from 'zod';
+import { sceneSchema } from '../scene/scene-schema.ts';
+import { describeIssue, describeValue, formatIssues } from '../scene/scene-issues.ts';
+import { wholeNumberIn } from '../scene/scene-schema-parts.ts';
+import { appActionSchema } from './app-action-schema.ts';
+import { goalSchema } from './goal.ts';
+import { kebabId } from './kebab-id.ts';
+import { isGuideTarget, LAB_CONTROLS, UI_PANELS, type GuideTarget } from './lab-controls.ts';
+import { levelRules, MANDATORY_TASKS } from './level-rules.ts';
+import { localizedTextSchema } from './localized-text.ts';
+import { readJson } from './read-json.ts';
+
+/**
+ * A level file (`levels/<id>.level.json`): an intro, a starting scene, which parts of the
+ * lab it shows, and its tasks. docs/levels.md is the authors' guide to every field. Every
+ * problem becomes a `path: reason` line, as in scene files; the rules that look at several
+ * fields at once (level-rules.ts) run once every field is valid.
+ */
+
+/** Points a task gives when the level does not say: mandatory tasks are the main path, optional ones a bonus. */
+export const DEFAULT_POINTS = { mandatory: 10, optional: 5 } as const;
+
+const guideTargetSchema = z.custom<GuideTarget>((value) => typeof value === 'string' && isGuideTarget(value), {
+  error: (issue) => `must be a control like "tracer.supersampling" or an item like "view.item:ball" (docs/levels.md lists them), got ${describeValue(issue.input)}`,
+});
+
+const taskSchema = z
+  .strictObject({
+    id: kebabId(),
+    title: localizedTextSchema,
+    text: localizedTextSchema.describe('The instruction: one thing to do or see.'),
+    more: localizedTextSchema.optional().describe('"Explain more": the deeper explanation, formulas welcome.'),
+    mandatory: z.boolean().default(true),
+    points: wholeNumberIn([0, 100]).optional(),
+    goal: goalSchema,
+    hints: z.array(localizedTextSchema).max(5).default([]).describe('Text hints, shown one at a time (the first rung of the hint ladder).'),
+    guide: guideTargetSchema.optional().describe('The control the second rung rings.'),
+    solution: z.array(appActionSchema).min(1).optional().describe('The actions that complete the task: "show me" performs them.'),
+  })
+  .transform((task) => ({ ...task, points: task.points ?? (task.mandatory ? DEFAULT_POINTS.mandatory : DEFAULT_POINTS.optional) }));
+
+const uiSchema = z
+  .strictObject({
+    panels: z.array(z.enum(UI_PANELS)).default([]).describe('The panels shown besides the 3D view.'),
+    controls: z
+      .partialRecord(z.enum(UI_PANELS), z.array(z.string()).min(1))
+      .optional()
+      .describe('Per panel, the only controls it shows; a panel not named here shows all of them.'),
+  })
+  .superRefine((ui, context) => {
+    for (const [panel, controls] of Object.entries(ui.controls ?? {})) {
+      const known: readonly string[] = LAB_CONTROLS[panel as keyof typeof LAB_CONTROLS];
+      if (!ui.panels.some((shown) => shown === panel)) {
+        context.addIssue({ code: 'custom', path: ['controls', panel], input: panel, message: `the ${panel} panel is not in ui.panels` });
+      }
+      controls.forEach((control, index) => {
+        if (!known.includes(control)) {
+          context.addIssue({ code: 'custom', path: ['controls', panel, index], input: control, message: `must be one of ${known.join(', ')}, got ${describeValue(control)}` });
+        }
+      });
+    }
+  });
+
+const levelBadgeSchema = z.strictObject({
+  id: kebabId(),
+  title: localizedTextSchema,
+  text: localizedTextSchema,
+  tasks: z.array(kebabId()).min(1).describe('Earned when the learner has done all of these tasks themself.'),
+});
+
+export const levelSchema = z.strictObject({
+  version: z.literal(1).describe('The level format version.'),
+  id: kebabId().describe('The file is levels/<id>.level.json.'),
+  chapter: kebabId(),
+  title: localizedTextSchema,
+  intro: z.strictObject({ text: localizedTextSchema, more: localizedTextSchema.optional() }),
+  scene: sceneSchema,
+  ui: uiSchema.prefault({}),
+  tasks: z.array(taskSchema).min(MANDATORY_TASKS[0]),
+  badges: z.array(levelBadgeSchema).default([]),
+});
+
+export type Level = z.output<typeof levelSchema>;
+export type Task = Level['tasks'][number];
+export type LevelBadge = Level['badges'][number];
+export type LevelUi = Level['ui'];
+
+export type LevelParseResult = { ok: true; level: Level } | { ok: false; errors: string[] };
+
+/** Checks a level file's parsed JSON, fills in its defaults and lists every problem. */
+export function parseLevel(input: unknown): LevelParseResult {
+  const result = levelSchema.safeParse(input, { error: describeIssue });
+  if (!result.success) return { ok: false, errors: formatIssues(result.error.issues) };
+  const problems = levelRules(result.data);
+  return problems.length === 0 ? { ok: true, level: result.data } : { ok: false, errors: problems };
+}
+
+/** `parseLevel` for the text of a level file; bad JSON gives one line with its place. */
+export function parseLevelJson(text: string): LevelParseResult {
+  const json = readJson(text);
+  return json.ok ? parseLevel(json.value) : { ok: false, errors: [json.error] };
+}

@@ -1,0 +1,26 @@
+import { z } from 'zod';
+import { chosenBy } from './chosen-schema.ts';
+
+/**
+ * Level text is keyed by locale (DESIGN.md: English first, Dutch follows). A text in a level
+ * file is either a plain string, which is English, or an object with one string per
+ * language: `{ "en": "Select the ball.", "nl": "Selecteer de bal." }`. English is always
+ * there, so a missing translation falls back to it instead of to nothing.
+ */
+
+export const LOCALES = ['en', 'nl'] as const;
+export type Locale = (typeof LOCALES)[number];
+
+export type LocalizedText = string | { en: string; nl?: string };
+
+const text = () => z.string().trim().min(1);
+
+export const localizedTextSchema: z.ZodType<LocalizedText> = chosenBy((input): z.ZodType<LocalizedText> =>
+  typeof input === 'object' && input !== null && !Array.isArray(input) ? z.strictObject({ en: text(), nl: text().optional() }) : text(),
+);
+
+/** The text in the learner's language, or the English one when it has not been translated. */
+export function localize(text: LocalizedText, locale: Locale): string {
+  if (typeof text === 'string') return text;
+  return text[locale] ?? text.en;
+}

@@ -1,0 +1,151 @@
+import { describeIssue, describeValue, formatIssues } from '../scene/scene-issues.ts';
+import type { QuestClock } from './event-log.ts';
+import { isRecord } from './is-record.ts';
+import { newProgress, PROGRESS_KIND, PROGRESS_VERSION, progressSchema, type Progress } from './progress.ts';
+import { readJson } from './read-json.ts';
+
+/**
+ * Saves progress between visits (localStorage in the browser) and reads it back. Saved data
+ * that cannot be used (damaged, from another app, from another version) never ends in a
+ * blank screen: the learner starts afresh with a message, and the old text is kept under a
+ * backup key (and handed to the UI, to offer it as a download).
+ */
+
+/** What the store needs of localStorage, so that tests and blocked browsers can use a Map. */
+export interface KeyValueStorage {
+  getItem(key: string): string | null;
+  setItem(key: string, value: string): void;
+  removeItem(key: string): void;
+}
+
+/** A storage that lives as long as the page: for tests, and for browsers that block localStorage. */
+export class MemoryStorage implements KeyValueStorage {
+  private readonly items = new Map<string, string>();
+
+  getItem(key: string): string | null {
+    return this.items.get(key) ?? null;
+  }
+
+  setItem(key: string, value: string): void {
+    this.items.set(key, value);
+  }
+
+  removeItem(key: string): void {
+    this.items.delete(key);
+  }
+}
+
+/** Free play's key; a teacher's assignment keeps its progress apart under a key of its own. */
+export const PROGRESS_KEY = 'rtq.progress';
+
+export type ProgressProblemKind = 'damaged' | 'foreign' | 'other-version' | 'unreadable-storage';
+
+/** Why saved progress could not be used, and where the old data went. */
+export interface ProgressProblem {
+  kind: ProgressProblemKind;
+  /** For the learner, in English; the UI may word it from `kind` instead. */
+  message: string;
+  /** The `path: reason` lines, for the curious and for bug reports. */
+  reasons: string[];
+  /** Where the old text was kept, or null when it could not be kept. */
+  backupKey: string | null;
+  /** The old text itself, for the UI to offer as a download. */
+  raw: string | null;
+}
+
+export type LoadedProgress = { progress: Progress; problem?: ProgressProblem };
+export type SaveResult = { ok: true } | { ok: false; message: string };
+type ParseProblemKind = Exclude<ProgressProblemKind, 'unreadable-storage'>;
+export type ProgressParseResult = { ok: true; progress: Progress } | { ok: false; kind: ParseProblemKind; errors: string[] };
+
+export class ProgressStore {
+  constructor(
+    private readonly storage: KeyValueStorage,
+    private readonly clock: QuestClock,
+    private readonly key = PROGRESS_KEY,
+  ) {}
+
+  load(): LoadedProgress {
+    let raw: string | null;
+    try {
+      raw = this.storage.getItem(this.key);
+    } catch (error) {
+      const reason = error instanceof Error ? error.message : String(error);
+      return this.fresh({ kind: 'unreadable-storage', message: 'This browser does not let the app read its storage, so progress lasts only while this page is open. Export it to keep it.', reasons: [reason], backupKey: null, raw: null });
+    }
+    if (raw === null) return { progress: newProgress(this.clock) };
+    const parsed = parseProgressJson(raw);
+    if (parsed.ok) return { progress: parsed.progress };
+    const backupKey = this.backUp(raw);
+    const kept = backupKey ? `The old data is kept as a backup (${backupKey}).` : 'The old data could not be kept in the browser: download it now if you want it.';
+    return this.fresh({ kind: parsed.kind, message: `${PROBLEM_MESSAGES[parsed.kind]} You start from the beginning. ${kept}`, reasons: parsed.errors, backupKey, raw });
+  }
+
+  /** Saves, or says why not: the caller keeps the progress in memory either way. */
+  save(progress: Progress): SaveResult {
+    try {
+      this.storage.setItem(this.key, JSON.stringify(progress));
+      return { ok: true };
+    } catch (error) {
+      const full = error instanceof Error && (error.name === 'QuotaExceededError' || error.name === 'NS_ERROR_DOM_QUOTA_REACHED');
+      const why = full ? "The browser's storage is full" : 'The browser does not let the app save';
+      return { ok: false, message: `${why}, so progress is not saved. It is kept while this page is open: export it to keep it.` };
+    }
+  }
+
+  /** Forgets the saved progress (the UI asks first) and returns a fresh start. */
+  reset(): Progress {
+    try {
+      this.storage.removeItem(this.key);
+    } catch {
+      // Storage that cannot be written has nothing saved to forget.
+    }
+    return newProgress(this.clock);
+  }
+
+  private fresh(problem: ProgressProblem): LoadedProgress {
+    return { progress: newProgress(this.clock), problem };
+  }
+
+  /** Keeps `raw` under a key of its own (never over an older backup); null when storage refuses. */
+  private backUp(raw: string): string | null {
+    const backupKey = `${this.key}.backup.${new Date(this.clock.wallMs()).toISOString()}`;
+    try {
+      if (this.storage.getItem(backupKey) !== null) return null;
+      this.storage.setItem(backupKey, raw);
+      return backupKey;
+    } catch {
+      return null;
+    }
+  }
+}
+
+const PROBLEM_MESSAGES: Record<ParseProblemKind, string> = {
+  damaged: 'Your saved progress is damaged and could not be read.',
+  foreign: 'The saved data is not Ray Tracer Quest progress.',
+  'other-version': 'Your saved progress was made by another version of Ray Tracer Quest.',
+};
+
+/** Checks progress read from storage or a file: first that it is ours, then its version, then every field. */
+export function parseProgress(input: unknown): ProgressParseResult {
+  if (!isRecord(input) || input.kind !== PROGRESS_KIND) {
+    const got = isRecord(input) ? `"kind" ${describeValue(input.kind)}` : describeValue(input);
+    return { ok: false, kind: 'foreign', errors: [`kind: must be "${PROGRESS_KIND}" in a progress file, got ${got}`] };
+  }
+  if (input.version !== PROGRESS_VERSION) {
+    return { ok: false, kind: 'other-version', errors: [`version: this app reads progress version ${PROGRESS_VERSION}, got ${describeValue(input.version)}`] };
+  }
+  const result = progressSchema.safeParse(input, { error: describeIssue });
+  return result.success ? { ok: true, progress: result.data } : { ok: false, kind: 'damaged', errors: formatIssues(result.error.issues) };
+}
+
+/** Progress from the text of storage or of an imported file (the learner's "import progress"). */
+export function parseProgressJson(text: string): ProgressParseResult {
+  const json = readJson(text);
+  return json.ok ? parseProgress(json.value) : { ok: false, kind: 'damaged', errors: [json.error] };
+}
+
+/** The text of an exported progress file. */
+export function exportProgress(progress: Progress): string {
+  return `${JSON.stringify(progress, null, 2)}\n`;
+}

@@ -1,0 +1,485 @@
+import type { AppAction } from '../app/app-action.ts';
+import type { AppState } from '../app/app-state.ts';
+import type { Scene } from '../scene/scene.ts';
+import { sameBadge, type Badge, type EarnedBadge } from './badges.ts';
+import { EventLog, systemClock, type HintStep, type HowCompleted, type LoggedEvent, type QuestClock, type QuestEvent } from './event-log.ts';
+import { checkGoal, isRightAnswer, NO_EVENTS, tallyAction, type EventTally } from './goal-check.ts';
+import { kindOfGoal, type TaskKind } from './goal.ts';
+import { canShowMe, climb, nextHintStep, NO_HINTS, type HintProgress } from './hint-ladder.ts';
+import type { GuideTarget } from './lab-controls.ts';
+import { currentTask, isCompleted, isPassed, requiredTaskIds, type RequiredTasks } from './level-gate.ts';
+import { levelMap, statusOfLevel, type ChapterMapView, type LevelStatus } from './level-map.ts';
+import { playableLevels, type LevelCatalog } from './level-index.ts';
+import type { Level, Task } from './level-schema.ts';
+import type { LocalizedText } from './localized-text.ts';
+import { pointsOf, PROGRESS_KIND, PROGRESS_VERSION, type LevelProgress, type Progress, type QuestSettings } from './progress.ts';
+import { levelBadgesEarned, pointsFor } from './scoring.ts';
+
+/**
+ * The game's rules, with no DOM: which level is open, which task is the learner's, when a
+ * task is done, points, badges, the gate and the hint ladder, all logged.
+ *
+ * It is fed by the store (`store.subscribe(engine.observe)`: the state and the action that
+ * produced it) and by the task panel's calls (next, answerQuiz, askHint, showMe, skip,
+ * expandExplanation). It never dispatches: "show me" returns the actions for the UI to
+ * perform visibly, through the store, where the engine sees them like any other.
+ * Listeners hear about every change, with the events it logged.
+ */
+
+/** Idle time on a task before its first text hint appears by itself: soon enough to come
+ * before frustration, late enough not to interrupt someone reading or trying. */
+export const IDLE_HINT_MS = 45_000;
+
+export interface QuestEngineOptions {
+  catalog: LevelCatalog;
+  /** From ProgressStore.load(); the engine continues its event log with a new session. */
+  progress: Progress;
+  clock?: QuestClock;
+  /** A teacher's assignment; by default each level requires its mandatory tasks. */
+  requiredTasks?: RequiredTasks;
+  idleHintMs?: number;
+}
+
+/** A task's status: `current` is the required task to do now; `open` a task that is not
+ * required and not done; `waiting` a required task after the current one. */
+export type TaskStatus = 'current' | 'open' | 'waiting' | HowCompleted;
+
+export interface TaskView {
+  task: Task;
+  kind: TaskKind;
+  required: boolean;
+  status: TaskStatus;
+  /** Points earned; 0 until completed. */
+  points: number;
+  /** For an answered quiz: whether the prediction was right. */
+  correct?: boolean;
+  /** The text hints shown so far. */
+  hints: LocalizedText[];
+  /** What asking for help does next (`show-me`: offer the "Show me" button); null when nothing is left. */
+  nextHint: HintStep | null;
+}
+
+export interface LevelView {
+  level: Level;
+  tasks: TaskView[];
+  /** The required task to do now; null once the level is passed. */
+  current: TaskView | null;
+  passed: boolean;
+  points: number;
+  maxPoints: number;
+  /** The control to ring: the guide of the last guidance shown, while its task is not done. */
+  ring: GuideTarget | null;
+}
+
+/** What "show me" performs: the solution's actions, one by one through the store; or a quiz's answer. */
+export type ShowMe = { kind: 'actions'; actions: AppAction[] } | { kind: 'answer'; answer: number };
+
+export type OpenLevelResult = { ok: true; level: Level; scene: Scene } | { ok: false; reason: 'unknown' | 'broken' | 'locked' };
+
+/** Called after every change, with the events it logged (none when only the scene or settings changed). */
+export type QuestListener = (events: readonly LoggedEvent[]) => void;
+
+/** The open level's state that lasts for this visit only. */
+interface ActiveLevel {
+  level: Level;
+  required: ReadonlySet<string>;
+  current: Task | undefined;
+  /** Event goals matched since each watched task was shown. */
+  tallies: Map<string, EventTally>;
+  hints: Map<string, HintProgress>;
+  /** Tasks whose "show me" was used: they complete as shown. */
+  shownByApp: Set<string>;
+  ring: { task: string; target: GuideTarget } | null;
+}
+
+export class QuestEngine {
+  private readonly catalog: LevelCatalog;
+  private readonly levels: Level[];
+  private readonly log: EventLog;
+  private readonly assignment: RequiredTasks | undefined;
+  private readonly idleHintMs: number;
+  private levelProgress: Record<string, LevelProgress>;
+  private earned: EarnedBadge[];
+  private settings: QuestSettings;
+  private sandbox: Scene | null;
+  private resumable: Progress['current'];
+  private active: ActiveLevel | null = null;
+  private lastState: AppState | null = null;
+  private lastActivity: number;
+  private visible = true;
+  private readonly listeners = new Set<QuestListener>();
+  private unpublished: LoggedEvent[] = [];
+  private changed = false;
+
+  constructor(options: QuestEngineOptions) {
+    this.catalog = options.catalog;
+    this.levels = playableLevels(options.catalog);
+    this.assignment = options.requiredTasks;
+    this.idleHintMs = options.idleHintMs ?? IDLE_HINT_MS;
+    const { progress } = options;
+    this.levelProgress = progress.levels;
+    this.earned = progress.badges;
+    this.settings = progress.settings;
+    this.sandbox = progress.sandbox;
+    this.resumable = progress.current;
+    this.log = new EventLog(progress.log, options.clock ?? systemClock);
+    this.lastActivity = this.log.now();
+  }
+
+  // ─── Reading ───────────────────────────────────────────────────────────────
+
+  /** Everything to save; the event log inside is shared and only ever grows. */
+  get progress(): Progress {
+    return {
+      kind: PROGRESS_KIND,
+      version: PROGRESS_VERSION,
+      levels: this.levelProgress,
+      badges: this.earned,
+      settings: this.settings,
+      sandbox: this.sandbox,
+      current: this.resumable,
+      log: this.log.data,
+    };
+  }
+
+  get points(): number {
+    return pointsOf(this.progress);
+  }
+
+  get badges(): readonly EarnedBadge[] {
+    return this.earned;
+  }
+
+  get events(): readonly LoggedEvent[] {
+    return this.log.events;
+  }
+
+  /** The level being played, or null on the level map. */
+  get level(): LevelView | null {
+    const active = this.active;
+    if (!active) return null;
+    const { level, required } = active;
+    const record = this.levelProgress[level.id];
+    const tasks = level.tasks.map((task) => this.taskView(active, task));
+    return {
+      level,
+      tasks,
+      current: tasks.find((view) => view.status === 'current') ?? null,
+      passed: isPassed(level, record, required),
+      points: tasks.reduce((sum, view) => sum + view.points, 0),
+      maxPoints: level.tasks.reduce((sum, task) => sum + task.points, 0),
+      ring: active.ring?.target ?? null,
+    };
+  }
+
+  /** The level map: chapters, each level's lock, tick and points; broken levels with their reasons. */
+  map(): ChapterMapView[] {
+    return levelMap(this.catalog, this.levelProgress, this.assignment);
+  }
+
+  levelStatus(id: string): LevelStatus {
+    return statusOfLevel(this.catalog, this.levelProgress, this.assignment, id);
+  }
+
+  subscribe(listener: QuestListener): () => void {
+    this.listeners.add(listener);
+    return () => this.listeners.delete(listener);
+  }
+
+  // ─── Levels ────────────────────────────────────────────────────────────────
+
+  /**
+   * Opens a level that is not locked. Returns the scene to load into the store: the one the
+   * learner left when resuming this level, else the level's own. The engine checks goals
+   * from the first state the store reports after that.
+   */
+  openLevel(id: string): OpenLevelResult {
+    const level = this.levels.find((candidate) => candidate.id === id);
+    if (!level) return { ok: false, reason: this.catalog.chapters.some((chapter) => chapter.entries.some((entry) => entry.id === id)) ? 'broken' : 'unknown' };
+    if (this.levelStatus(id) === 'locked') return { ok: false, reason: 'locked' };
+    this.closeLevel();
+    const scene = this.resumable?.level === id ? this.resumable.scene : level.scene;
+    this.resumable = { level: id, scene };
+    this.lastState = null;
+    const active: ActiveLevel = {
+      level,
+      required: requiredTaskIds(level, this.assignment),
+      current: undefined,
+      tallies: new Map(),
+      hints: new Map(),
+      shownByApp: new Set(),
+      ring: null,
+    };
+    this.active = active;
+    this.append({ type: 'level.opened', level: id });
+    // Tasks that are not required can be done any time: they are all shown at once.
+    for (const task of level.tasks) {
+      if (active.required.has(task.id) || isCompleted(this.levelProgress[id], task.id)) continue;
+      active.tallies.set(task.id, NO_EVENTS);
+      this.append({ type: 'task.shown', level: id, task: task.id, mandatory: task.mandatory, required: false });
+    }
+    this.showCurrentTask(active);
+    this.publish();
+    return { ok: true, level, scene };
+  }
+
+  /** Back to the level map. The level's scene is remembered for when the learner returns. */
+  closeLevel(): void {
+    if (!this.active) return;
+    this.append({ type: 'level.closed', level: this.active.level.id });
+    this.active = null;
+    this.publish();
+  }
+
+  // ─── Fed by the store ──────────────────────────────────────────────────────
+
+  /** The store's listener: a refused action (error) changed nothing and counts for nothing. */
+  readonly observe = (state: AppState, action: AppAction, error?: string): void => {
+    if (error !== undefined) return;
+    this.lastActivity = this.log.now();
+    const levelId = this.active?.level.id ?? null;
+    if (action.type === 'render.started') this.append({ type: 'render.started', level: levelId });
+    if (action.type === 'render.finished') {
+      this.append({ type: 'render.finished', level: levelId, ms: action.ms });
+      this.award({ kind: 'first-render' });
+    }
+    const active = this.active;
+    if (active) {
+      if (this.resumable?.scene !== state.scene) {
+        this.resumable = { level: active.level.id, scene: state.scene };
+        this.changed = true;
+      }
+      this.lastState = state;
+      for (const [taskId, tally] of [...active.tallies]) {
+        const task = active.level.tasks.find((candidate) => candidate.id === taskId);
+        // A task completed by an earlier one in this loop (the next current task) is no longer watched.
+        if (!task || !active.tallies.has(taskId) || kindOfGoal(task.goal) !== 'do') continue;
+        const next = tallyAction(task.goal, tally, state, action);
+        active.tallies.set(taskId, next);
+        if (checkGoal(task.goal, state, next)) this.complete(active, task, active.shownByApp.has(taskId) ? 'shown' : 'done');
+      }
+    }
+    this.publish();
+  };
+
+  // ─── The task panel ────────────────────────────────────────────────────────
+
+  /** Completes the current task when it is an info step. */
+  next(): boolean {
+    const active = this.active;
+    const task = active?.current;
+    if (!active || !task || kindOfGoal(task.goal) !== 'info') return false;
+    this.complete(active, task, 'done');
+    this.publish();
+    return true;
+  }
+
+  /** Records a prediction, right or wrong, and completes the quiz task. */
+  answerQuiz(taskId: string, choice: number): { correct: boolean } | undefined {
+    const found = this.workableTask(taskId);
+    if (!found || !('quiz' in found.task.goal)) return undefined;
+    const { active, task } = found;
+    const correct = isRightAnswer(found.task.goal, choice);
+    this.lastActivity = this.log.now();
+    this.append({ type: 'quiz.answered', level: active.level.id, task: taskId, choice, correct });
+    this.complete(active, task, 'done', correct);
+    this.publish();
+    return { correct };
+  }
+
+  /**
+   * Climbs the task's hint ladder one rung: the next text hint, else the ring on its guide.
+   * Returns the rung shown, or undefined when only "show me" (or nothing) is left.
+   */
+  askHint(taskId: string, trigger: 'asked' | 'idle' = 'asked'): 'text' | 'guidance' | undefined {
+    const found = this.workableTask(taskId);
+    if (!found) return undefined;
+    const { active, task } = found;
+    const hints = active.hints.get(taskId) ?? NO_HINTS;
+    const step = nextHintStep(task, hints);
+    if (step !== 'text' && step !== 'guidance') return undefined;
+    active.hints.set(taskId, climb(hints, step));
+    if (step === 'guidance' && task.guide) active.ring = { task: taskId, target: task.guide };
+    this.hintShown(active, task, step, trigger);
+    this.publish();
+    return step;
+  }
+
+  /**
+   * The last rung: returns the solution's actions for the UI to perform, visibly, through the
+   * store; the task then completes as shown. For a quiz, reveals the answer and completes it
+   * as shown at once.
+   */
+  showMe(taskId: string): ShowMe | undefined {
+    const found = this.workableTask(taskId);
+    if (!found || !canShowMe(found.task)) return undefined;
+    const { active, task } = found;
+    this.hintShown(active, task, 'show-me', 'asked');
+    let shown: ShowMe | undefined;
+    if ('quiz' in task.goal) {
+      this.complete(active, task, 'shown');
+      shown = { kind: 'answer', answer: task.goal.quiz.answer };
+    } else if (task.solution) {
+      active.shownByApp.add(taskId);
+      shown = { kind: 'actions', actions: task.solution };
+    }
+    this.publish();
+    return shown;
+  }
+
+  /** Leaves out a task that is not required (no points). */
+  skip(taskId: string): boolean {
+    const found = this.workableTask(taskId);
+    if (!found || found.active.required.has(taskId)) return false;
+    this.complete(found.active, found.task, 'skipped');
+    this.publish();
+    return true;
+  }
+
+  /** "Explain more" was opened, for a task or the level's intro. */
+  expandExplanation(taskId: string | 'intro'): void {
+    const active = this.active;
+    if (!active || (taskId !== 'intro' && !active.level.tasks.some((task) => task.id === taskId))) return;
+    this.lastActivity = this.log.now();
+    this.append({ type: 'explanation.expanded', level: active.level.id, task: taskId === 'intro' ? null : taskId });
+    this.publish();
+  }
+
+  // ─── Time and attention ────────────────────────────────────────────────────
+
+  /** Called by the UI's timer: offers the current task's first text hint after idle time. */
+  tick(): void {
+    const task = this.active?.current;
+    if (!task || !this.visible || (this.active?.hints.get(task.id) ?? NO_HINTS).texts > 0) return;
+    if (this.log.now() - this.lastActivity >= this.idleHintMs) this.askHint(task.id, 'idle');
+  }
+
+  /** The tab was hidden or shown (document.visibilitychange, pagehide): active time leaves out hidden time. */
+  visibilityChanged(visible: boolean): void {
+    if (visible === this.visible) return;
+    this.visible = visible;
+    this.append({ type: visible ? 'tab.visible' : 'tab.hidden' });
+    // Time away is not time stuck on the task.
+    if (visible) this.lastActivity = this.log.now();
+    this.publish();
+  }
+
+  // ─── Other progress ────────────────────────────────────────────────────────
+
+  saveSandbox(scene: Scene): void {
+    this.sandbox = scene;
+    this.changed = true;
+    this.award({ kind: 'sandbox-saved' });
+    this.publish();
+  }
+
+  changeSettings(changes: Partial<QuestSettings>): void {
+    this.settings = { ...this.settings, ...changes };
+    this.changed = true;
+    this.publish();
+  }
+
+  // ─── Rules ─────────────────────────────────────────────────────────────────
+
+  /** The task if the learner can work on it now: in the open level, not done, and either current or not required. */
+  private workableTask(taskId: string): { active: ActiveLevel; task: Task } | undefined {
+    const active = this.active;
+    const task = active?.level.tasks.find((candidate) => candidate.id === taskId);
+    if (!active || !task || isCompleted(this.levelProgress[active.level.id], taskId)) return undefined;
+    if (active.required.has(taskId) && active.current?.id !== taskId) return undefined;
+    return { active, task };
+  }
+
+  /** Makes the first required task not yet done the current one, and completes it at once if its goal already holds. */
+  private showCurrentTask(active: ActiveLevel): void {
+    const { level } = active;
+    const task = currentTask(level, this.levelProgress[level.id], active.required);
+    active.current = task;
+    if (!task) return;
+    active.tallies.set(task.id, NO_EVENTS);
+    this.lastActivity = this.log.now();
+    this.append({ type: 'task.shown', level: level.id, task: task.id, mandatory: task.mandatory, required: true });
+    // A learner who already did what the task asks (say, set supersampling to 2 earlier) is not made to do it again.
+    if (this.lastState && kindOfGoal(task.goal) === 'do' && checkGoal(task.goal, this.lastState, NO_EVENTS)) {
+      this.complete(active, task, active.shownByApp.has(task.id) ? 'shown' : 'done');
+    }
+  }
+
+  private complete(active: ActiveLevel, task: Task, how: HowCompleted, correct?: boolean): void {
+    const { level, required } = active;
+    const before = this.recordOf(level.id);
+    const wasPassed = isPassed(level, before, required);
+    const points = pointsFor(task, how, correct);
+    const record = { tasks: { ...before.tasks, [task.id]: { how, points, ...(correct === undefined ? {} : { correct }) } }, hintsUsed: before.hintsUsed };
+    this.levelProgress = { ...this.levelProgress, [level.id]: record };
+    active.tallies.delete(task.id);
+    if (active.ring?.task === task.id) active.ring = null;
+    const isRequired = required.has(task.id);
+    this.append({ type: 'task.completed', level: level.id, task: task.id, mandatory: task.mandatory, required: isRequired, how, points });
+
+    if (isPassed(level, record, required) && !wasPassed) {
+      this.append({ type: 'level.passed', level: level.id });
+      this.awardChapter(level.chapter);
+    }
+    for (const badge of levelBadgesEarned(level, record, required)) this.award(badge);
+    if (active.current?.id === task.id) this.showCurrentTask(active);
+  }
+
+  private hintShown(active: ActiveLevel, task: Task, step: HintStep, trigger: 'asked' | 'idle'): void {
+    const { level } = active;
+    const before = this.recordOf(level.id);
+    this.levelProgress = { ...this.levelProgress, [level.id]: { ...before, hintsUsed: before.hintsUsed + 1 } };
+    this.lastActivity = this.log.now();
+    this.append({ type: 'hint.shown', level: level.id, task: task.id, step, trigger });
+  }
+
+  private recordOf(levelId: string): LevelProgress {
+    return this.levelProgress[levelId] ?? { tasks: {}, hintsUsed: 0 };
+  }
+
+  private awardChapter(chapterId: string): void {
+    const chapter = this.catalog.chapters.find((candidate) => candidate.id === chapterId);
+    const levels = chapter?.entries.flatMap((entry) => (entry.ok ? [entry.level] : [])) ?? [];
+    if (levels.every((level) => isPassed(level, this.levelProgress[level.id], requiredTaskIds(level, this.assignment)))) {
+      this.award({ kind: 'chapter-done', chapter: chapterId });
+    }
+  }
+
+  private award(badge: Badge): void {
+    if (this.earned.some((earned) => sameBadge(earned.badge, badge))) return;
+    const logged = this.append({ type: 'badge.earned', badge });
+    this.earned = [...this.earned, { badge, t: logged.t }];
+  }
+
+  private taskView(active: ActiveLevel, task: Task): TaskView {
+    const done = this.levelProgress[active.level.id]?.tasks[task.id];
+    const required = active.required.has(task.id);
+    const status: TaskStatus = done ? done.how : active.current?.id === task.id ? 'current' : required ? 'waiting' : 'open';
+    const hints = active.hints.get(task.id) ?? NO_HINTS;
+    return {
+      task,
+      kind: kindOfGoal(task.goal),
+      required,
+      status,
+      points: done?.points ?? 0,
+      ...(done?.correct === undefined ? {} : { correct: done.correct }),
+      hints: task.hints.slice(0, hints.texts),
+      nextHint: done ? null : nextHintStep(task, hints),
+    };
+  }
+
+  private append(event: QuestEvent): LoggedEvent {
+    const logged = this.log.append(event);
+    this.unpublished.push(logged);
+    return logged;
+  }
+
+  /** Tells listeners once per call from outside, with everything that call logged. */
+  private publish(): void {
+    if (this.unpublished.length === 0 && !this.changed) return;
+    const events = this.unpublished;
+    this.unpublished = [];
+    this.changed = false;
+    for (const listener of [...this.listeners]) listener(events);
+  }
+}

@@ -1,0 +1,35 @@
+import type { Badge } from './badges.ts';
+import type { HowCompleted } from './event-log.ts';
+import { kindOfGoal } from './goal.ts';
+import { isPassed } from './level-gate.ts';
+import type { Level, Task } from './level-schema.ts';
+import type { LevelProgress } from './progress.ts';
+
+/**
+ * Points for a completed task. A task completed by "show me" is shown, not earned: no
+ * points (it still counts for the gate, so nobody is stuck). Text hints and guidance cost
+ * nothing but the level's no-hints badge. A wrong quiz prediction completes the task
+ * without points: predicting is the exercise, checking in the scene the lesson.
+ */
+export function pointsFor(task: Task, how: HowCompleted, correct?: boolean): number {
+  if (how !== 'done') return 0;
+  if (kindOfGoal(task.goal) === 'quiz' && correct === false) return 0;
+  return task.points;
+}
+
+/** A task the learner did themself: not shown, not skipped, not a wrong prediction. */
+function earnedByLearner(record: LevelProgress | undefined, taskId: string): boolean {
+  const done = record?.tasks[taskId];
+  return done?.how === 'done' && done.correct !== false;
+}
+
+/** The level's badges whose conditions hold now (the engine awards each once). */
+export function levelBadgesEarned(level: Level, record: LevelProgress | undefined, required: ReadonlySet<string>): Badge[] {
+  const badges: Badge[] = [];
+  if (isPassed(level, record, required) && (record?.hintsUsed ?? 0) === 0) badges.push({ kind: 'no-hints', level: level.id });
+  if (level.tasks.every((task) => record?.tasks[task.id]?.how === 'done')) badges.push({ kind: 'every-task', level: level.id });
+  for (const badge of level.badges) {
+    if (badge.tasks.every((taskId) => earnedByLearner(record, taskId))) badges.push({ kind: 'level-badge', level: level.id, badge: badge.id });
+  }
+  return badges;
+}
