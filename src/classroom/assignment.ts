@@ -1,0 +1,21 @@
+/**
+ * A teacher's assignment (spec/classroom.md): which levels, in which order, what is required,
+ * and how the session starts and ends. Encoded in a link (see assignment-link.ts); the game
+ * reads it to limit the level map, to ask for a participant code and to show the survey.
+ */
+export interface Assignment {
+  version: 1;
+  /** Shown to the students, e.g. "Ray tracing, lesson 2". */
+  title: string;
+  /** Level ids in the order the students play them. */
+  levels: string[];
+  /** Per level id: the task ids a student must finish (default: the level's mandatory tasks). */
+  requiredTasks: Record<string, string[]>;
+  /** Levels outside the assignment: hidden from the map, or shown (playable after it). */
+  otherLevels: 'hidden' | 'shown';
+  locale: 'en' | 'nl';
+  /** Ask for a participant code at the start (research studies). */
+  askParticipantCode: boolean;
+  /** The closing survey's id (a data file in src/classroom/surveys), or null for none. */
+  survey: string | null;
+}
