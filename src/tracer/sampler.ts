@@ -34,7 +34,12 @@ export class RandomStream {
     return this;
   }
 
+  /**
+   * One hash per draw of key + counter·φ (a Weyl sequence, as SplitMix does; Steele et al.,
+   * "Fast splittable pseudorandom number generators", 2014): the golden-ratio step keeps
+   * consecutive inputs far apart, so the hash's output is well mixed.
+   */
   next(): number {
-    return mix32(this.key ^ mix32(this.counter++)) / 4294967296;
+    return mix32(this.key + Math.imul(this.counter++, 0x9e3779b9)) / 4294967296;
   }
 }
