@@ -33,6 +33,22 @@ describe('the store and its named actions', () => {
     expect(lamp.type === 'area' && lamp.samples).toBe(3);
   });
 
+  it('a spot or area light can become a point light (it drops its rotation)', () => {
+    const store = newStore();
+    expect(store.dispatch({ type: 'light.changed', id: 'spot', changes: { type: 'point' } })).toBeUndefined();
+    const spot = store.state.scene.lights.find((l) => l.id === 'spot')!;
+    expect(spot.type).toBe('point');
+    expect('rotation' in spot).toBe(false);
+  });
+
+  it('an action that makes the reducer throw is refused with a message, never thrown', () => {
+    const store = newStore();
+    const before = store.state;
+    const bogus = { type: 'light.changed', id: 'spot', changes: { type: 'laser' } } as unknown as Parameters<Store['dispatch']>[0];
+    expect(store.dispatch(bogus)).toMatch(/^light\.changed: /);
+    expect(store.state).toBe(before);
+  });
+
   it('selects only pixels on the screen, and forgets one the screen shrinks away from', () => {
     const store = newStore();
     expect(store.dispatch({ type: 'pixel.selected', pixel: [8, 0] })).toBe('pixel: must be inside the 8×6 screen, got 8,0');

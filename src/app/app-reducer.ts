@@ -83,7 +83,8 @@ function mapObject(scene: Scene, id: string, change: (o: Scene['objects'][number
 function changeLight(light: Light, changes: Partial<Light>): Light {
   if (changes.type === undefined || changes.type === light.type) return { ...light, ...changes } as Light;
   const { id, name, position, color, intensity, ambient, diffuse, specular, distanceAttenuation } = light;
-  const rotation = 'rotation' in light ? { rotation: light.rotation } : {};
+  // A point light has no direction, so no rotation to keep.
+  const rotation = 'rotation' in light && changes.type !== 'point' ? { rotation: light.rotation } : {};
   const shared = { id, position, color, intensity, ambient, diffuse, specular, distanceAttenuation, ...rotation, ...(name === undefined ? {} : { name }) };
   return lightSchema.parse({ ...shared, type: changes.type });
 }

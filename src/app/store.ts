@@ -1,5 +1,5 @@
 import type { AppAction } from './app-action.ts';
-import { reduce } from './app-reducer.ts';
+import { reduce, type Reduction } from './app-reducer.ts';
 import type { AppState } from './app-state.ts';
 
 /** Called after every dispatched action with the state it produced (unchanged when refused). */
@@ -24,7 +24,7 @@ export class Store {
 
   /** Applies the action; returns the reason when it was refused (the state is then unchanged). */
   dispatch(action: AppAction): string | undefined {
-    const { state, error } = reduce(this.current, action);
+    const { state, error } = safeReduce(this.current, action);
     this.current = state;
     for (const listener of [...this.listeners]) listener(state, action, error);
     return error;
@@ -34,5 +34,14 @@ export class Store {
   subscribe(listener: StoreListener): () => void {
     this.listeners.add(listener);
     return () => this.listeners.delete(listener);
+  }
+}
+
+/** A bug in a reducer must not take the app down: the change is refused with its reason. */
+function safeReduce(state: AppState, action: AppAction): Reduction {
+  try {
+    return reduce(state, action);
+  } catch (error) {
+    return { state, error: `${action.type}: ${error instanceof Error ? error.message : String(error)}` };
   }
 }
