@@ -34,9 +34,11 @@ beforeAll(async () => {
   dir = await mkdtemp(join(tmpdir(), 'rt-cli-'));
   const scene = { ...defaultScene(), settings: { ...defaultScene().settings, supersampling: 2 } };
   await writeFile(file('scene.json'), JSON.stringify(scene));
-  await writeFile(file('level.json'), JSON.stringify({ scene, tasks: [] }));
+  const level = JSON.parse(await readFile(join(ROOT, 'levels/01-introduction.level.json'), 'utf8'));
+  level.scene.settings = { ...level.scene.settings, supersampling: 2 };
+  await writeFile(file('level.json'), JSON.stringify(level));
   await writeFile(file('bad-fov.json'), JSON.stringify({ version: 1, camera: { fov: 400 } }));
-  await writeFile(file('bad-level.json'), JSON.stringify({ scene: { version: 1, camera: { fov: 0 } }, tasks: [] }));
+  await writeFile(file('bad-level.json'), JSON.stringify({ ...level, scene: { ...level.scene, camera: { ...level.scene.camera, fov: 0 } } }));
   await writeFile(file('broken.json'), '{"version": 1,');
 });
 
@@ -82,6 +84,13 @@ describe('rt validate', () => {
   it('exits 0 when every file is valid', async () => {
     const run = await rt('validate', file('scene.json'), file('level.json'));
     expect(run).toMatchObject({ code: 0, stderr: '' });
+  });
+
+  it('checks the level index and every level it lists; a render of the index is refused', async () => {
+    expect(await rt('validate', 'levels/index.json')).toMatchObject({ code: 0, stderr: '' });
+    const render = await rt('render', 'levels/index.json', '--out', file('index.png'));
+    expect(render.code).toBe(1);
+    expect(render.stderr.trim()).toBe('rt: levels/index.json: this is the level index, not a scene: name one level');
   });
 
   it('exits 1 and lists every problem as file: path: reason', async () => {

@@ -1,25 +1,31 @@
 /**
  * Reading a scene from the command line: a scene file, a level file (its `scene`), or a
- * level id looked up in levels/. Problems come back as `path: reason` lines.
+ * level id looked up in levels/; `rt validate` also checks the level index. Problems come
+ * back as `path: reason` lines.
  */
+import { readFileSync } from 'node:fs';
 import { readdir, readFile, stat } from 'node:fs/promises';
-import { join, relative } from 'node:path';
+import { dirname, join, relative } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { describeJsonError } from '../scene/json-error.ts';
 import { loadMeshesFromDisk } from '../scene/load-meshes-node.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';
-import { parseScene, type SceneParseResult } from '../scene/scene-schema.ts';
+import { loadLevels } from '../quest/level-index.ts';
+import { parseLevel } from '../quest/level-schema.ts';
+import { parseScene } from '../scene/scene-schema.ts';
 import type { Scene } from '../scene/scene.ts';
 import { describeFileError, InputError } from './cli-errors.ts';
 
 const LEVELS_DIR = fileURLToPath(new URL('../../levels/', import.meta.url));
 
-export type SceneFileCheck = { ok: true; scene: Scene } | { ok: false; problems: string[] };
+/** A checked file: a scene or a level has a scene to trace; the level index has none. */
+export type SceneFileCheck = { ok: true; scene: Scene | null } | { ok: false; problems: string[] };
 
 /**
- * Reads and checks a scene or level file. A level is recognised by its top-level `scene`
- * and `tasks` fields; only its scene is checked until the level schema arrives with the game.
+ * Reads and checks a scene file, a level file (recognised by its `tasks`: the whole level
+ * schema, goal paths included) or the level index (recognised by its `chapters`: every
+ * level it lists is loaded and checked too).
  */
 export async function checkSceneFile(file: string): Promise<SceneFileCheck> {
   let text: string;
@@ -34,8 +40,27 @@ export async function checkSceneFile(file: string): Promise<SceneFileCheck> {
   } catch {
     return { ok: false, problems: [describeJsonError(text)] };
   }
-  const result = isLevel(json) ? inLevel(parseScene(json.scene)) : parseScene(json);
-  return result.ok ? result : { ok: false, problems: result.errors };
+  if (hasField(json, 'chapters')) return checkLevelIndex(file, text);
+  if (hasField(json, 'tasks')) {
+    const level = parseLevel(json);
+    return level.ok ? { ok: true, scene: level.level.scene } : { ok: false, problems: level.errors };
+  }
+  const scene = parseScene(json);
+  return scene.ok ? scene : { ok: false, problems: scene.errors };
+}
+
+function checkLevelIndex(file: string, text: string): SceneFileCheck {
+  const readLevelFile = (name: string) => {
+    try {
+      return readFileSync(join(dirname(file), name), 'utf8');
+    } catch {
+      return undefined;
+    }
+  };
+  const catalog = loadLevels(text, readLevelFile);
+  const broken = catalog.chapters.flatMap((chapter) => chapter.entries.flatMap((entry) => (entry.ok ? [] : entry.errors.map((error) => `level "${entry.id}": ${error}`))));
+  const problems = [...catalog.errors, ...broken];
+  return problems.length === 0 ? { ok: true, scene: null } : { ok: false, problems };
 }
 
 /** The scene named on the command line (a file or a level id); InputError when there is none or it is invalid. */
@@ -43,6 +68,7 @@ export async function readScene(fileOrLevelId: string): Promise<{ file: string; 
   const file = await findSceneFile(fileOrLevelId);
   const check = await checkSceneFile(file);
   if (!check.ok) throw new InputError(check.problems.map((problem) => `${file}: ${problem}`).join('\n'));
+  if (!check.scene) throw new InputError(`${file}: this is the level index, not a scene: name one level`);
   return { file, scene: check.scene };
 }
 
@@ -55,15 +81,8 @@ export async function loadSceneMeshes(scene: Scene): Promise<MeshLibrary> {
   }
 }
 
-function isLevel(json: unknown): json is { scene: unknown; tasks: unknown } {
-  return typeof json === 'object' && json !== null && 'scene' in json && 'tasks' in json;
-}
-
-/** Moves a scene's problems under the level's `scene` field. */
-function inLevel(result: SceneParseResult): SceneParseResult {
-  if (result.ok) return result;
-  const errors = result.errors.map((error) => (error.startsWith('(root)') ? `scene${error.slice('(root)'.length)}` : `scene.${error}`));
-  return { ok: false, errors };
+function hasField(json: unknown, field: string): boolean {
+  return typeof json === 'object' && json !== null && field in json;
 }
 
 /** An existing file as given, else levels/<id>.level.json or levels/*-<id>.level.json. */
