@@ -13,7 +13,7 @@ async function openLab(page: Page, errors: string[]): Promise<void> {
     if (message.type() === 'error') errors.push(message.text());
   });
   page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('./');
+  await page.goto('./#free-lab');
   await expect(page.locator('rt-scene-list').getByRole('option').first()).toBeVisible();
 }
 

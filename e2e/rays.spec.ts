@@ -15,7 +15,7 @@ import type { Store } from '../src/app/store.ts';
  */
 
 /** The page under test: the app. */
-const PAGE = './';
+const PAGE = './#free-lab';
 
 declare global {
   interface Window {

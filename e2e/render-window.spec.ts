@@ -4,7 +4,7 @@ import { PNG } from 'pngjs';
 import type { RtRenderWindow } from '../src/ui/rt-render-window.ts';
 
 /** The page with the lab; the header's "Render image" button opens the render window. */
-const APP_PAGE = './';
+const APP_PAGE = './#free-lab';
 
 let errors: string[] = [];
 

@@ -19,7 +19,7 @@ test.beforeEach(async ({ page }) => {
     if (message.type() === 'error') errors.push(message.text());
   });
   page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto('./');
+  await page.goto('./#free-lab');
   const view = page.locator('rt-scene-view');
   await expect(view).toBeVisible();
   await expect.poll(() => view.evaluate((element: RtSceneView) => element.labView?.frameCount ?? 0)).toBeGreaterThan(0);

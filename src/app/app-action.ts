@@ -1,5 +1,5 @@
 import type { Camera, Light, LightType, Material, RenderSettings, Scene, SceneObject, ShapeKind } from '../scene/scene.ts';
-import type { GizmoOptions, RayViewOptions, Selection } from './app-state.ts';
+import type { BvhViewOptions, GizmoOptions, RayViewOptions, Selection } from './app-state.ts';
 
 /**
  * Every change to the app is one of these named actions, dispatched through the store.
@@ -25,6 +25,7 @@ export type AppAction =
   | { type: 'pixel.deselected' }
   | { type: 'rays.changed'; changes: Partial<RayViewOptions> }
   | { type: 'gizmo.changed'; changes: Partial<GizmoOptions> }
+  | { type: 'bvh.changed'; changes: Partial<BvhViewOptions> }
   | { type: 'view.orbited' }
   | { type: 'view.panned' }
   | { type: 'view.zoomed' }
@@ -33,6 +34,8 @@ export type AppAction =
   | { type: 'render.finished'; ms: number }
   | { type: 'render.cancelled' }
   | { type: 'render.saved' }
+  /** The scene was saved as a file or copied as a link (the sandbox level and its badge listen). */
+  | { type: 'scene.saved'; to: 'file' | 'link' }
   | { type: 'panel.opened'; panel: string };
 
 export type AppActionType = AppAction['type'];

@@ -2,7 +2,7 @@ import { createLight, createObject } from '../scene/scene-defaults.ts';
 import { lightSchema, parseScene } from '../scene/scene-schema.ts';
 import type { Light, Scene } from '../scene/scene.ts';
 import type { AppAction } from './app-action.ts';
-import type { AppState } from './app-state.ts';
+import { type AppState, BVH_MAX_DEPTH, DEFAULT_BVH_VIEW } from './app-state.ts';
 
 /** The next state, or the unchanged state with the reason an action was refused. */
 export type Reduction = { state: AppState; error?: string };
@@ -15,7 +15,8 @@ export type Reduction = { state: AppState; error?: string };
 export function reduce(state: AppState, action: AppAction): Reduction {
   switch (action.type) {
     case 'scene.loaded':
-      return withScene({ ...state, selection: null, selectedPixel: null }, action.scene);
+      // The boxes belong to the scene they were switched on for: a new scene starts without them.
+      return withScene({ ...state, selection: null, selectedPixel: null, bvh: { ...DEFAULT_BVH_VIEW } }, action.scene);
     case 'selection.changed':
       return { state: { ...state, selection: action.selection } };
     case 'object.added': {
@@ -57,6 +58,13 @@ export function reduce(state: AppState, action: AppAction): Reduction {
       return { state: { ...state, rays: { ...state.rays, ...action.changes } } };
     case 'gizmo.changed':
       return { state: { ...state, gizmo: { ...state.gizmo, ...action.changes } } };
+    case 'bvh.changed': {
+      const { depth } = action.changes;
+      if (depth !== undefined && !(Number.isInteger(depth) && depth >= 0 && depth <= BVH_MAX_DEPTH)) {
+        return { state, error: `bvh.depth: must be a whole number from 0 to ${BVH_MAX_DEPTH}, got ${depth}` };
+      }
+      return { state: { ...state, bvh: { ...state.bvh, ...action.changes } } };
+    }
     default:
       // Facts reported by the view and the render window: nothing to change.
       return { state };

@@ -35,6 +35,19 @@ export interface RayViewOptions {
   showSamplePoints: boolean;
 }
 
+/** The acceleration lessons' view: the tracer's BVH boxes and the objects' bounding boxes. */
+export interface BvhViewOptions {
+  /** Draw the BVH of mesh objects (the selected one, or all when no mesh is selected). */
+  show: boolean;
+  /** How deep into the tree to draw, 0 (the root: the whole model) to BVH_MAX_DEPTH. */
+  depth: number;
+  /** Draw every object's world bounding box (the box the tracer's slab test uses). */
+  showBounds: boolean;
+}
+
+/** The deepest BVH level the view offers; trees of the shipped models are about this deep. */
+export const BVH_MAX_DEPTH = 20;
+
 export interface GizmoOptions {
   mode: 'translate' | 'rotate' | 'scale';
   space: 'local' | 'world';
@@ -49,6 +62,7 @@ export interface AppState {
   selectedPixel: [number, number] | null;
   rays: RayViewOptions;
   gizmo: GizmoOptions;
+  bvh: BvhViewOptions;
 }
 
 export const DEFAULT_RAY_VIEW: RayViewOptions = {
@@ -72,6 +86,8 @@ export const DEFAULT_RAY_VIEW: RayViewOptions = {
 
 export const DEFAULT_GIZMO: GizmoOptions = { mode: 'translate', space: 'world', snap: false };
 
+export const DEFAULT_BVH_VIEW: BvhViewOptions = { show: false, depth: 2, showBounds: false };
+
 export function initialState(scene: Scene): AppState {
-  return { scene, selection: null, selectedPixel: null, rays: { ...DEFAULT_RAY_VIEW }, gizmo: { ...DEFAULT_GIZMO } };
+  return { scene, selection: null, selectedPixel: null, rays: { ...DEFAULT_RAY_VIEW }, gizmo: { ...DEFAULT_GIZMO }, bvh: { ...DEFAULT_BVH_VIEW } };
 }

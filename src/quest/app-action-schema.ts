@@ -1,6 +1,6 @@
 import { z } from 'zod';
 import type { AppAction, AppActionType } from '../app/app-action.ts';
-import { DEFAULT_RAY_VIEW } from '../app/app-state.ts';
+import { DEFAULT_BVH_VIEW, DEFAULT_RAY_VIEW } from '../app/app-state.ts';
 import type { Camera, Light, Material, RenderSettings, SceneObject } from '../scene/scene.ts';
 import { sceneSchema } from '../scene/scene-schema.ts';
 import { describeValue } from '../scene/scene-issues.ts';
@@ -71,6 +71,7 @@ export const appActionSchema = z.discriminatedUnion('type', [
       snap: z.boolean().optional(),
     }),
   }),
+  z.strictObject({ type: z.literal('bvh.changed'), changes: optionChanges(DEFAULT_BVH_VIEW) }),
   fact('view.orbited'),
   fact('view.panned'),
   fact('view.zoomed'),
@@ -79,6 +80,7 @@ export const appActionSchema = z.discriminatedUnion('type', [
   z.strictObject({ type: z.literal('render.finished'), ms: z.number().min(0) }),
   fact('render.cancelled'),
   fact('render.saved'),
+  z.strictObject({ type: z.literal('scene.saved'), to: z.enum(['file', 'link']) }),
   z.strictObject({ type: z.literal('panel.opened'), panel: z.string().min(1) }),
 ]);
 

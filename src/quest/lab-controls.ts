@@ -39,7 +39,7 @@ export const LAB_CONTROLS = {
   render: ['open', 'start', 'cancel', 'zoom', 'save', 'compare', 'close'],
   'add-remove': ['add-object', 'add-light', 'delete'],
   file: ['save', 'load', 'share'],
-  bvh: ['show', 'depth'],
+  bvh: ['show', 'depth', 'bounds'],
 } as const satisfies Record<LabPanel, readonly string[]>;
 
 const PANELS = Object.keys(LAB_CONTROLS) as LabPanel[];

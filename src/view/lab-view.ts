@@ -102,6 +102,7 @@ export class LabView {
   private readonly cleanups: (() => void)[] = [];
   private previous: AppState | null = null;
   private rayLayer: RayLayer | null = null;
+  private bvhLayer: Object3D | null = null;
   private removeRayAnimator: (() => void) | null = null;
   private lastHover: RayHover | null = null;
   private press: { id: number; x: number; y: number; onGizmo: boolean } | null = null;
@@ -229,6 +230,14 @@ export class LabView {
     this.requestRender();
   }
 
+  /** Shows the acceleration boxes (BvhBoxes.object), replacing any before; null removes them. */
+  setBvhLayer(object: Object3D | null): void {
+    if (this.bvhLayer) this.scene.remove(this.bvhLayer);
+    this.bvhLayer = object;
+    if (object) this.scene.add(object);
+    this.requestRender();
+  }
+
   /** Calls `listener` with the ray under the pointer (or null when it leaves it). Returns its remover. */
   onRayHover(listener: Listener<RayHoverDetail | null>): () => void {
     return this.on('rayHover', listener);
@@ -306,6 +315,7 @@ export class LabView {
   rasterSnapshot(width: number, height: number): ImageData {
     const hidden: Object3D[] = [this.grid, this.lightGizmos.group, this.cameraScreen.rig, this.selectionBox, this.gizmo.helper];
     if (this.rayLayer) hidden.push(this.rayLayer.object);
+    if (this.bvhLayer) hidden.push(this.bvhLayer);
     const { camera, settings } = this.store.state.scene;
     return rasterSnapshot(this.renderer, this.scene, hidden, camera, settings.background, width, height);
   }

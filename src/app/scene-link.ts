@@ -1,0 +1,83 @@
+import { fromBase64Url, toBase64Url } from '../classroom/base64url.ts';
+import { readJson } from '../quest/read-json.ts';
+import { parseScene, type SceneParseResult } from '../scene/scene-schema.ts';
+import type { Scene } from '../scene/scene.ts';
+import { MAX_SCENE_FILE_BYTES } from './scene-file.ts';
+
+/**
+ * A scene as a link: `#/s/<payload>`, the payload being the scene's JSON compressed with
+ * zlib deflate and written in base64url. Everything is in the fragment, so no server ever
+ * sees the scene and the link works from any static host.
+ *
+ * zlib (not raw deflate) because it ends in a checksum: a link cut short in a chat message
+ * or with one character changed fails with a message instead of opening a subtly different
+ * scene. The scene format carries its own `version`, so the link needs none.
+ */
+
+export const SCENE_LINK_PREFIX = '#/s/';
+
+/** Links longer than this are cut by some chat and mail programs: the panel suggests a file instead. */
+export const LONG_LINK_CHARACTERS = 8000;
+
+/** Whether an address fragment is meant as a scene link (damaged or not). */
+export function isSceneFragment(hash: string): boolean {
+  return hash.startsWith(SCENE_LINK_PREFIX);
+}
+
+/** The fragment (with its `#`) that opens `scene`. */
+export async function encodeSceneLink(scene: Scene): Promise<string> {
+  const packed = await transform(new TextEncoder().encode(JSON.stringify(scene)), new CompressionStream('deflate'));
+  return `${SCENE_LINK_PREFIX}${toBase64Url(packed)}`;
+}
+
+/** The whole address to share: the app's address without its fragment, plus the scene's. */
+export async function sceneLinkUrl(scene: Scene, appAddress: string): Promise<string> {
+  return `${appAddress.replace(/#.*$/, '')}${await encodeSceneLink(scene)}`;
+}
+
+/**
+ * Reads a scene fragment, checking the link (characters, checksum, size), the JSON and the
+ * scene; problems are the scene schema's `path: reason` lines, or one reason for the link.
+ */
+export async function decodeSceneLink(hash: string): Promise<SceneParseResult> {
+  if (!isSceneFragment(hash)) return damaged('it does not start with #/s/');
+  const bytes = fromBase64Url(hash.slice(SCENE_LINK_PREFIX.length));
+  if (bytes === null || bytes.length === 0) return damaged('it contains characters that cannot be part of a link, or it was cut short');
+  let text: string;
+  try {
+    text = new TextDecoder('utf-8', { fatal: true }).decode(await transform(bytes, new DecompressionStream('deflate'), MAX_SCENE_FILE_BYTES));
+  } catch (error) {
+    return damaged(error instanceof TooLarge ? error.message : 'it was cut short or changed');
+  }
+  const json = readJson(text);
+  return json.ok ? parseScene(json.value) : damaged(json.error);
+}
+
+/** A problem with the link itself (not with a field of the scene): a reason without a path. */
+function damaged(reason: string): SceneParseResult {
+  return { ok: false, errors: [reason] };
+}
+
+class TooLarge extends Error {}
+
+/** Runs `bytes` through a (de)compression stream; stops past `limit` bytes (a link that unpacks to gigabytes). */
+async function transform(bytes: Uint8Array, stream: CompressionStream | DecompressionStream, limit = Number.POSITIVE_INFINITY): Promise<Uint8Array> {
+  const reader = new Blob([bytes as BlobPart]).stream().pipeThrough(stream).getReader();
+  const chunks: Uint8Array[] = [];
+  let length = 0;
+  for (let next = await reader.read(); !next.done; next = await reader.read()) {
+    length += next.value.length;
+    if (length > limit) {
+      await reader.cancel();
+      throw new TooLarge(`it unpacks to more than ${limit / 1024} kB, more than any scene`);
+    }
+    chunks.push(next.value);
+  }
+  const joined = new Uint8Array(length);
+  let offset = 0;
+  for (const chunk of chunks) {
+    joined.set(chunk, offset);
+    offset += chunk.length;
+  }
+  return joined;
+}

@@ -1,0 +1,94 @@
+import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
+import type { LevelCatalog } from '../quest/level-index.ts';
+import { readJson } from '../quest/read-json.ts';
+import type { Assignment } from './assignment.ts';
+import { assignmentSchema } from './assignment-schema.ts';
+import { fromBase64Url, toBase64Url } from './base64url.ts';
+
+/**
+ * An assignment as a link: `#/a/<version>.<payload>`, the payload being the assignment's
+ * JSON compressed with zlib deflate and written in base64url. Everything is in the
+ * fragment, so no server ever sees it and any static host (or a USB stick) works.
+ *
+ * zlib's format (not raw deflate) because it ends in a checksum: a link that was cut short
+ * or had a character changed fails to open instead of opening as a different assignment.
+ * Compression keeps a typical link under 300 characters, small enough for a QR code that
+ * reads from the back of a classroom.
+ */
+
+/** The link format's version: a later app that changes the payload bumps it and keeps reading 1. */
+export const LINK_VERSION = 1;
+export const LINK_PREFIX = '#/a/';
+
+/** Why a link did not open: the link itself is damaged, from another version, or names levels or tasks this game does not have. */
+export type LinkProblemKind = 'damaged' | 'other-version' | 'unknown-levels';
+
+export type AssignmentLinkResult = { ok: true; assignment: Assignment } | { ok: false; kind: LinkProblemKind; reasons: string[] };
+
+/** Whether an address fragment is meant as an assignment link (damaged or not). */
+export function isAssignmentFragment(hash: string): boolean {
+  return hash.startsWith(LINK_PREFIX);
+}
+
+/** The fragment (with its `#`) that opens `assignment`. */
+export async function encodeAssignment(assignment: Assignment): Promise<string> {
+  const json = new TextEncoder().encode(JSON.stringify(assignment));
+  const packed = await transform(json, new CompressionStream('deflate'));
+  return `${LINK_PREFIX}${LINK_VERSION}.${toBase64Url(packed)}`;
+}
+
+/** The whole address for students: the app's address without its fragment, plus the assignment's. */
+export async function assignmentUrl(assignment: Assignment, appAddress: string): Promise<string> {
+  return `${appAddress.replace(/#.*$/, '')}${await encodeAssignment(assignment)}`;
+}
+
+/**
+ * Reads an assignment fragment, checking it all the way: the version, the checksum, the
+ * JSON, every field, and (given the catalog) that its levels and tasks exist.
+ */
+export async function decodeAssignment(hash: string, catalog?: LevelCatalog): Promise<AssignmentLinkResult> {
+  if (!isAssignmentFragment(hash)) return damaged('it does not start with #/a/');
+  const body = hash.slice(LINK_PREFIX.length);
+  const dot = body.indexOf('.');
+  if (dot < 0) return damaged('the version number is missing');
+  const version = body.slice(0, dot);
+  if (version !== String(LINK_VERSION)) {
+    return { ok: false, kind: 'other-version', reasons: [`the link has version ${JSON.stringify(version)}; this app opens version ${LINK_VERSION}`] };
+  }
+  const bytes = fromBase64Url(body.slice(dot + 1));
+  if (bytes === null || bytes.length === 0) return damaged('it contains characters that cannot be part of a link, or it was cut short');
+  let text: string;
+  try {
+    text = new TextDecoder('utf-8', { fatal: true }).decode(await transform(bytes, new DecompressionStream('deflate')));
+  } catch {
+    return damaged('it was cut short or changed');
+  }
+  const json = readJson(text);
+  if (!json.ok) return damaged(json.error);
+  const parsed = assignmentSchema.safeParse(json.value, { error: describeIssue });
+  if (!parsed.success) return { ok: false, kind: 'damaged', reasons: formatIssues(parsed.error.issues) };
+  const unknown = catalog ? unknownParts(parsed.data, catalog) : [];
+  return unknown.length === 0 ? { ok: true, assignment: parsed.data } : { ok: false, kind: 'unknown-levels', reasons: unknown };
+}
+
+/** The levels and required tasks of `assignment` that the catalog does not have, as "level" or "level/task". */
+export function unknownParts(assignment: Assignment, catalog: LevelCatalog): string[] {
+  const entries = new Map(catalog.chapters.flatMap((chapter) => chapter.entries.map((entry) => [entry.id, entry] as const)));
+  const unknown: string[] = assignment.levels.filter((id) => !entries.has(id));
+  for (const [levelId, tasks] of Object.entries(assignment.requiredTasks)) {
+    const entry = entries.get(levelId);
+    // A broken level's tasks cannot be checked: the game shows it as broken anyway.
+    if (!entry?.ok) continue;
+    for (const task of tasks) if (!entry.level.tasks.some((known) => known.id === task)) unknown.push(`${levelId}/${task}`);
+  }
+  return unknown;
+}
+
+function damaged(reason: string): AssignmentLinkResult {
+  return { ok: false, kind: 'damaged', reasons: [reason] };
+}
+
+async function transform(bytes: Uint8Array, stream: CompressionStream | DecompressionStream): Promise<Uint8Array> {
+  const output = new Blob([bytes as BlobPart]).stream().pipeThrough(stream);
+  return new Uint8Array(await new Response(output).arrayBuffer());
+}

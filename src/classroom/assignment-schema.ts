@@ -1,0 +1,39 @@
+import { z } from 'zod';
+import { kebabId } from '../quest/kebab-id.ts';
+import { LOCALES } from '../quest/localized-text.ts';
+import type { Assignment } from './assignment.ts';
+
+/**
+ * The zod schema of an Assignment, for links opened by students (assignment-link.ts): a link
+ * may be hand-edited or cut short, so every field is checked before the game trusts it.
+ */
+
+/** Long enough for "Ray tracing, lesson 2: shadows and soft shadows"; short enough for a QR code. */
+export const TITLE_MAX = 120;
+/** More levels than the game will ever have; it only stops absurd links. */
+export const LEVELS_MAX = 100;
+
+export const assignmentSchema = z
+  .strictObject({
+    version: z.literal(1),
+    title: z.string().trim().min(1).max(TITLE_MAX),
+    levels: z.array(kebabId()).min(1).max(LEVELS_MAX),
+    requiredTasks: z.record(kebabId(), z.array(kebabId())),
+    otherLevels: z.enum(['hidden', 'shown']),
+    locale: z.enum(LOCALES),
+    askParticipantCode: z.boolean(),
+    survey: kebabId().nullable(),
+  })
+  .superRefine((assignment, context) => {
+    assignment.levels.forEach((id, index) => {
+      if (assignment.levels.indexOf(id) !== index) context.addIssue({ code: 'custom', path: ['levels', index], input: id, message: `"${id}" is listed more than once` });
+    });
+    for (const id of Object.keys(assignment.requiredTasks)) {
+      if (!assignment.levels.includes(id)) context.addIssue({ code: 'custom', path: ['requiredTasks', id], input: id, message: `"${id}" is not one of the assignment's levels` });
+    }
+  });
+
+// The schema and the shared type must describe the same thing: this fails to compile if they drift.
+type Same<A, B> = [A] extends [B] ? ([B] extends [A] ? true : false) : false;
+const inSync: Same<z.output<typeof assignmentSchema>, Assignment> = true;
+void inSync;

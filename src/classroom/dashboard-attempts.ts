@@ -1,0 +1,156 @@
+import type { EventLogData, HowCompleted, LoggedEvent } from '../quest/event-log.ts';
+
+/**
+ * A learner's event log read back as task attempts and level visits: what the dashboard
+ * counts. An attempt runs from `task.shown` to the task's `task.completed`, or ends
+ * unfinished when its level is closed first (the learner left; opening the level again
+ * starts a new attempt).
+ *
+ * Active time is the time the tab was visible: a hidden tab (tab.hidden → tab.visible) and
+ * a closed page (the last event before a reload → its session.started) do not count.
+ */
+
+export interface TaskAttempt {
+  level: string;
+  task: string;
+  mandatory: boolean;
+  /** ISO 8601 wall-clock time, from the log's start plus its monotonic time. */
+  startedAt: string;
+  /** Null when the attempt ended unfinished. */
+  completedAt: string | null;
+  durationMs: number;
+  activeMs: number;
+  /** Null when the attempt ended unfinished; 'shown' is a "show me". */
+  how: HowCompleted | null;
+  points: number;
+  hintsText: number;
+  hintsGuidance: number;
+  /** Quiz answers given (a wrong prediction and then the right one is 2). */
+  quizAnswers: number;
+}
+
+export interface LevelVisit {
+  level: string;
+  durationMs: number;
+  activeMs: number;
+  /** The level's required tasks were all done during this visit. */
+  passed: boolean;
+}
+
+export interface ReadLog {
+  attempts: TaskAttempt[];
+  visits: LevelVisit[];
+}
+
+/** Time spans when the learner could not have been looking: hidden tab, closed page. */
+function inactiveSpans(events: readonly LoggedEvent[]): [number, number][] {
+  const spans: [number, number][] = [];
+  let hiddenSince: number | null = null;
+  events.forEach((event, index) => {
+    if (event.type === 'tab.hidden') hiddenSince ??= event.t;
+    else if (event.type === 'tab.visible' || event.type === 'session.started') {
+      // A reload while hidden ends the hidden span; otherwise the page was closed since the last event.
+      const from = hiddenSince ?? (event.type === 'session.started' && index > 0 ? events[index - 1].t : null);
+      if (from !== null && event.t > from) spans.push([from, event.t]);
+      hiddenSince = null;
+    }
+  });
+  if (hiddenSince !== null) spans.push([hiddenSince, Number.POSITIVE_INFINITY]);
+  return spans;
+}
+
+/** The visible time between `from` and `to`. */
+function activeBetween(spans: readonly [number, number][], from: number, to: number): number {
+  let inactive = 0;
+  for (const [start, end] of spans) inactive += Math.max(0, Math.min(end, to) - Math.max(start, from));
+  return to - from - inactive;
+}
+
+const key = (level: string, task: string) => `${level}\u0000${task}`;
+
+/** Attempts and level visits in the order they started. */
+export function readLog(log: EventLogData): ReadLog {
+  const spans = inactiveSpans(log.events);
+  const origin = Date.parse(log.startedAt);
+  const iso = (t: number) => new Date(origin + t).toISOString();
+  const attempts: TaskAttempt[] = [];
+  const visits: LevelVisit[] = [];
+  // The open ones with the time they started.
+  const openAttempts = new Map<string, { attempt: TaskAttempt; from: number }>();
+  const openVisits = new Map<string, { visit: LevelVisit; from: number }>();
+  const timed = (from: number, to: number) => ({ durationMs: to - from, activeMs: activeBetween(spans, from, to) });
+
+  const closeAttempt = (open: { attempt: TaskAttempt; from: number }, t: number, finished?: { how: HowCompleted; points: number }) => {
+    Object.assign(open.attempt, timed(open.from, t), finished && { completedAt: iso(t), ...finished });
+    openAttempts.delete(key(open.attempt.level, open.attempt.task));
+  };
+  const closeVisit = (open: { visit: LevelVisit; from: number }, t: number) => {
+    Object.assign(open.visit, timed(open.from, t));
+    openVisits.delete(open.visit.level);
+  };
+
+  for (const event of log.events) {
+    switch (event.type) {
+      case 'level.opened':
+        if (!openVisits.has(event.level)) {
+          const visit: LevelVisit = { level: event.level, durationMs: 0, activeMs: 0, passed: false };
+          openVisits.set(event.level, { visit, from: event.t });
+          visits.push(visit);
+        }
+        break;
+      case 'level.passed': {
+        const open = openVisits.get(event.level);
+        if (open) open.visit.passed = true;
+        break;
+      }
+      case 'level.closed': {
+        const visit = openVisits.get(event.level);
+        if (visit) closeVisit(visit, event.t);
+        for (const open of [...openAttempts.values()]) if (open.attempt.level === event.level) closeAttempt(open, event.t);
+        break;
+      }
+      case 'task.shown':
+        if (!openAttempts.has(key(event.level, event.task))) {
+          const attempt: TaskAttempt = {
+            level: event.level,
+            task: event.task,
+            mandatory: event.mandatory,
+            startedAt: iso(event.t),
+            completedAt: null,
+            durationMs: 0,
+            activeMs: 0,
+            how: null,
+            points: 0,
+            hintsText: 0,
+            hintsGuidance: 0,
+            quizAnswers: 0,
+          };
+          openAttempts.set(key(event.level, event.task), { attempt, from: event.t });
+          attempts.push(attempt);
+        }
+        break;
+      case 'task.completed': {
+        const attempt = openAttempts.get(key(event.level, event.task));
+        if (attempt) closeAttempt(attempt, event.t, { how: event.how, points: event.points });
+        break;
+      }
+      case 'hint.shown': {
+        // The show-me rung is counted when it is used: the task is then completed as 'shown'.
+        const attempt = openAttempts.get(key(event.level, event.task))?.attempt;
+        if (attempt && event.step === 'text') attempt.hintsText++;
+        if (attempt && event.step === 'guidance') attempt.hintsGuidance++;
+        break;
+      }
+      case 'quiz.answered': {
+        const attempt = openAttempts.get(key(event.level, event.task))?.attempt;
+        if (attempt) attempt.quizAnswers++;
+        break;
+      }
+    }
+  }
+  // Still open when the file was exported: timed up to the last event.
+  const lastT = log.events.at(-1)?.t ?? 0;
+  for (const open of [...openAttempts.values()]) closeAttempt(open, lastT);
+  for (const open of [...openVisits.values()]) closeVisit(open, lastT);
+  return { attempts, visits };
+}

@@ -1,0 +1,67 @@
+/**
+ * CSV text (RFC 4180) in both directions: the dashboard reads learners' CSV exports and
+ * writes the class's combined CSV. Fields with a comma, quote or line break are quoted;
+ * a field that a spreadsheet would run as a formula (=, +, -, @ first) is prefixed with
+ * an apostrophe, because participant codes and free text are typed by learners.
+ */
+
+const NEEDS_QUOTES = /[",\r\n]/;
+const FORMULA_START = /^[=+\-@\t\r]/;
+
+/** One field, escaped; numbers are written as they are (a negative number is not a formula). */
+export function csvField(value: string | number | boolean | null): string {
+  if (value === null) return '';
+  if (typeof value !== 'string') return String(value);
+  const safe = FORMULA_START.test(value) ? `'${value}` : value;
+  return NEEDS_QUOTES.test(safe) ? `"${safe.replaceAll('"', '""')}"` : safe;
+}
+
+/** Rows to CSV text with CRLF line ends (what spreadsheets expect). */
+export function csvText(rows: readonly (readonly (string | number | boolean | null)[])[]): string {
+  return rows.map((row) => row.map(csvField).join(',')).join('\r\n') + '\r\n';
+}
+
+export type CsvRead = { ok: true; rows: string[][] } | { ok: false; error: string };
+
+/** Splits CSV text into rows of fields; an unclosed quote is an error with its line. */
+export function parseCsv(text: string): CsvRead {
+  const rows: string[][] = [];
+  let row: string[] = [];
+  let field = '';
+  let quoted = false;
+  let quoteLine = 0;
+  let line = 1;
+  const source = text.replace(/^\uFEFF/, '');
+  for (let i = 0; i < source.length; i++) {
+    const char = source[i];
+    if (quoted) {
+      if (char === '"' && source[i + 1] === '"') {
+        field += '"';
+        i++;
+      } else if (char === '"') quoted = false;
+      else {
+        if (char === '\n') line++;
+        field += char;
+      }
+    } else if (char === '"' && field === '') {
+      quoted = true;
+      quoteLine = line;
+    } else if (char === ',') {
+      row.push(field);
+      field = '';
+    } else if (char === '\n' || char === '\r') {
+      if (char === '\r' && source[i + 1] === '\n') i++;
+      row.push(field);
+      rows.push(row);
+      row = [];
+      field = '';
+      line++;
+    } else field += char;
+  }
+  if (quoted) return { ok: false, error: `a quoted field that starts on line ${quoteLine} is never closed` };
+  if (field !== '' || row.length > 0) {
+    row.push(field);
+    rows.push(row);
+  }
+  return { ok: true, rows: rows.filter((fields) => fields.some((value) => value !== '')) };
+}

@@ -1,0 +1,73 @@
+import { z } from 'zod';
+import { eventLogSchema } from '../quest/event-log.ts';
+import { PROGRESS_KIND } from '../quest/progress.ts';
+import { isRecord } from '../quest/is-record.ts';
+import { readJson } from '../quest/read-json.ts';
+import { readLog } from './dashboard-attempts.ts';
+import { EXPORT_FORMAT, EXPORT_VERSION } from './export-json.ts';
+import type { ClassRecord, FileRead } from './dashboard-record.ts';
+import type { SurveyAnswers } from './survey-answers.ts';
+
+/**
+ * Reads a learner's JSON export (src/classroom/export-json.ts) for the dashboard. The
+ * event log is checked strictly, since every number on the dashboard comes from it; the
+ * rest is read leniently so that a field added to exports later does not make a class's
+ * files unreadable.
+ */
+
+const exportSchema = z.looseObject({
+  format: z.literal(EXPORT_FORMAT),
+  version: z.literal(EXPORT_VERSION),
+  participant: z.string().nullish(),
+  assignment: z.unknown(),
+  events: z.unknown(),
+  survey: z.unknown(),
+});
+
+const issuePath = (path: readonly PropertyKey[]) => (path.length ? path.map(String).join('.') : '(root)');
+
+export function readJsonExport(file: string, text: string): FileRead {
+  const json = readJson(text);
+  if (!json.ok) return { ok: false, file, reason: json.error.replace(/^\(root\): /, '') };
+  const value = json.value;
+  if (!isRecord(value)) return { ok: false, file, reason: 'not a Ray Tracer Quest export (the file holds no JSON object)' };
+  if (value.kind === PROGRESS_KIND) return { ok: false, file, reason: 'a saved progress file, not an export: export the results from the game instead' };
+  if (value.format !== EXPORT_FORMAT) return { ok: false, file, reason: 'not a Ray Tracer Quest export (no "format": "ray-tracer-quest-export")' };
+  if (typeof value.version === 'number' && value.version > EXPORT_VERSION) {
+    return { ok: false, file, reason: `made by a newer version of the app (export version ${value.version}); open the dashboard of that version` };
+  }
+  const parsed = exportSchema.safeParse(value);
+  if (!parsed.success) {
+    const issue = parsed.error.issues[0];
+    return { ok: false, file, reason: `damaged export: ${issuePath(issue.path)}: ${issue.message}` };
+  }
+  const log = eventLogSchema.safeParse(parsed.data.events);
+  if (!log.success) {
+    const issue = log.error.issues[0];
+    return { ok: false, file, reason: `damaged event log: events.${issuePath(issue.path)}: ${issue.message}` };
+  }
+  const { attempts, visits } = readLog(log.data);
+  return {
+    ok: true,
+    record: {
+      file,
+      participant: parsed.data.participant ?? '',
+      ...assignmentOf(parsed.data.assignment),
+      attempts,
+      visits,
+      survey: readSurvey(parsed.data.survey),
+    },
+  };
+}
+
+function assignmentOf(assignment: unknown): { assignment: string; assignmentId: string } {
+  const field = (name: string) => (isRecord(assignment) && typeof assignment[name] === 'string' ? assignment[name] : '');
+  return { assignment: field('title'), assignmentId: field('id') };
+}
+
+/** The survey submission (survey-answers.ts SurveySubmission): its id and the answers that are numbers or text. */
+function readSurvey(survey: unknown): ClassRecord['survey'] {
+  if (!isRecord(survey) || typeof survey.survey !== 'string' || !isRecord(survey.answers)) return null;
+  const answers = Object.fromEntries(Object.entries(survey.answers).filter(([, value]) => typeof value === 'number' || typeof value === 'string'));
+  return { id: survey.survey, answers: answers as SurveyAnswers };
+}

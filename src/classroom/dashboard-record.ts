@@ -1,0 +1,29 @@
+import type { SurveyAnswers } from './survey-answers.ts';
+import type { LevelVisit, TaskAttempt } from './dashboard-attempts.ts';
+
+/**
+ * One learner's export as the dashboard counts it, whatever file it came from (a JSON
+ * export carries everything; a CSV export only the task attempts).
+ */
+export interface ClassRecord {
+  /** The file it was read from (shown when something about it needs explaining). */
+  file: string;
+  /** The participant code, or '' when none was asked. */
+  participant: string;
+  /** The assignment's title and id, or '' for free play. */
+  assignment: string;
+  assignmentId: string;
+  attempts: TaskAttempt[];
+  /** Level visits; empty for a CSV export, which has no level events. */
+  visits: LevelVisit[];
+  /** The closing survey's answers, or null when the learner did not hand one in. */
+  survey: { id: string; answers: SurveyAnswers } | null;
+}
+
+/** A file that was not counted, and why. */
+export interface SkippedFile {
+  file: string;
+  reason: string;
+}
+
+export type FileRead = { ok: true; record: ClassRecord } | ({ ok: false } & SkippedFile);

@@ -1,0 +1,30 @@
+import { version } from '../../package.json';
+import type { Progress } from '../quest/progress.ts';
+import type { Assignment } from './assignment.ts';
+import { assignmentId } from './assignment-id.ts';
+import type { SurveySubmission } from './survey-answers.ts';
+
+/**
+ * Everything an export is made from (export-csv.ts, export-json.ts, export-xapi.ts): the
+ * learner's progress with its event log, and the classroom session around it.
+ */
+export interface ExportInput {
+  progress: Progress;
+  /** The code the learner typed at the start, or null when none was asked. */
+  participant: string | null;
+  /** The teacher's assignment, or null in free play. */
+  assignment: Assignment | null;
+  survey: SurveySubmission | null;
+  /** ISO 8601; the moment of the download. */
+  exportedAt: string;
+  /** The app's version (package.json), so that a researcher knows which game produced the data. */
+  appVersion: string;
+}
+
+/** The app's version, from package.json (vite and Node both import JSON). */
+export const APP_VERSION: string = version;
+
+/** The assignment as exports name it: its id and title, or nulls in free play. */
+export function assignmentLabel(assignment: Assignment | null): { id: string | null; title: string | null } {
+  return assignment ? { id: assignmentId(assignment), title: assignment.title } : { id: null, title: null };
+}

@@ -1,0 +1,48 @@
+import type { EventLogData } from '../quest/event-log.ts';
+import { pointsOf, type Progress } from '../quest/progress.ts';
+import type { Assignment } from './assignment.ts';
+import { assignmentId } from './assignment-id.ts';
+import type { ExportInput } from './export-context.ts';
+import type { SurveySubmission } from './survey-answers.ts';
+
+/**
+ * The JSON export: everything a researcher (or the class dashboard) needs from one
+ * learner, in one file. `events` is the complete event log, never shortened: `t` is
+ * milliseconds since `events.startedAt` on the monotonic clock (src/quest/event-log.ts).
+ */
+
+export const EXPORT_FORMAT = 'ray-tracer-quest-export';
+export const EXPORT_VERSION = 1;
+
+export interface QuestExport {
+  format: typeof EXPORT_FORMAT;
+  version: typeof EXPORT_VERSION;
+  appVersion: string;
+  exportedAt: string;
+  participant: string | null;
+  /** The assignment with its id, or null in free play. */
+  assignment: (Assignment & { id: string }) | null;
+  progress: { points: number; levels: Progress['levels']; badges: Progress['badges'] };
+  events: EventLogData;
+  survey: SurveySubmission | null;
+}
+
+export function buildExport(input: ExportInput): QuestExport {
+  const { progress, assignment } = input;
+  return {
+    format: EXPORT_FORMAT,
+    version: EXPORT_VERSION,
+    appVersion: input.appVersion,
+    exportedAt: input.exportedAt,
+    participant: input.participant,
+    assignment: assignment ? { id: assignmentId(assignment), ...assignment } : null,
+    progress: { points: pointsOf(progress), levels: progress.levels, badges: progress.badges },
+    events: progress.log,
+    survey: input.survey,
+  };
+}
+
+/** The file's text: indented, so that it can be read in any editor. */
+export function exportJson(input: ExportInput): string {
+  return `${JSON.stringify(buildExport(input), null, 2)}\n`;
+}

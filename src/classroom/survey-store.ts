@@ -1,0 +1,48 @@
+import type { KeyValueStorage } from '../quest/progress-store.ts';
+import { readJson } from '../quest/read-json.ts';
+import { isRecord } from '../quest/is-record.ts';
+import type { SurveySubmission } from './survey-answers.ts';
+
+/**
+ * Keeps a learner's survey answers next to their progress, under its key plus `.survey`,
+ * so an assignment's answers are kept apart from free play's just like its progress, and
+ * the exports find them after a reload.
+ *
+ * Saving never throws: storage that refuses (full, blocked) returns false, and the caller
+ * keeps the answers in memory, where the exports still find them.
+ */
+export class SurveyStore {
+  private readonly key: string;
+
+  /** `progressKey`: PROGRESS_KEY, or assignmentProgressKey(assignment). */
+  constructor(
+    private readonly storage: KeyValueStorage,
+    progressKey: string,
+  ) {
+    this.key = `${progressKey}.survey`;
+  }
+
+  /** The saved submission, or null when there is none or it cannot be read. */
+  load(): SurveySubmission | null {
+    let value: unknown;
+    try {
+      const json = readJson(this.storage.getItem(this.key) ?? 'null');
+      value = json.ok ? json.value : null;
+    } catch {
+      return null;
+    }
+    if (!isRecord(value) || typeof value.survey !== 'string' || typeof value.submittedAt !== 'string' || !isRecord(value.answers)) return null;
+    const answers: SurveySubmission['answers'] = {};
+    for (const [id, answer] of Object.entries(value.answers)) if (typeof answer === 'string' || typeof answer === 'number') answers[id] = answer;
+    return { survey: value.survey, submittedAt: value.submittedAt, answers };
+  }
+
+  save(submission: SurveySubmission): boolean {
+    try {
+      this.storage.setItem(this.key, JSON.stringify(submission));
+      return true;
+    } catch {
+      return false;
+    }
+  }
+}

@@ -1,0 +1,15 @@
+/**
+ * What the task panel asks of the game, in one `quest-command` event (bubbling, composed)
+ * that the lab hands to the quest session.
+ */
+export type QuestCommand =
+  | { kind: 'next' }
+  | { kind: 'answer'; task: string; choice: number }
+  | { kind: 'hint'; task: string }
+  | { kind: 'show-me'; task: string }
+  | { kind: 'skip'; task: string }
+  | { kind: 'explain'; task: string | 'intro' }
+  | { kind: 'next-level' }
+  | { kind: 'map' };
+
+export const QUEST_COMMAND = 'quest-command';

@@ -1,0 +1,38 @@
+import { css } from 'lit';
+
+/**
+ * What the dashboard's charts share: a grid of label | chart (| count) rows, bars drawn
+ * across the whole cell, and a legend of small swatches under the chart.
+ */
+export const chartStyles = css`
+  :host {
+    display: block;
+  }
+  .label {
+    text-align: right;
+    overflow-wrap: anywhere;
+    font-size: 0.9rem;
+  }
+  svg.bar {
+    width: 100%;
+    display: block;
+  }
+  .outline {
+    fill: none;
+    stroke: var(--rt-border);
+  }
+  .legend {
+    display: flex;
+    flex-wrap: wrap;
+    gap: 4px 16px;
+    margin: var(--rt-space) 0 0;
+    padding: 0;
+    list-style: none;
+    font-size: 0.85rem;
+  }
+  .legend svg {
+    width: 22px;
+    height: 14px;
+    vertical-align: -2px;
+  }
+`;
