@@ -120,11 +120,27 @@ export class RtLab extends LitElement {
       flex-direction: column;
       gap: var(--rt-space);
     }
+    /* Every area has its cell: the level map, placed over row 2, must not push them into a row of their own. */
     .sidebar {
+      grid-area: 2 / 1;
       border-right: 1px solid var(--rt-border);
     }
+    main {
+      grid-area: 2 / 2;
+    }
     .tasks {
+      grid-area: 2 / 3;
       border-left: 1px solid var(--rt-border);
+      color: var(--rt-muted);
+    }
+    .your-data {
+      margin-top: auto;
+      padding-top: var(--rt-space);
+      border-top: 1px solid var(--rt-border);
+    }
+    .your-data h2 {
+      font-size: 0.875rem;
+      margin: 0 0 var(--rt-space);
       color: var(--rt-muted);
     }
     .header-actions {
@@ -133,7 +149,16 @@ export class RtLab extends LitElement {
       gap: var(--rt-space);
       flex-wrap: wrap;
     }
-    .header-actions button:not(.primary),
+    .header-actions button:not(.primary) {
+      font: inherit;
+      min-height: var(--rt-target);
+      padding: 0 12px;
+      border-radius: 8px;
+      border: 1px solid var(--rt-border);
+      background: var(--rt-surface);
+      color: var(--rt-text);
+      cursor: pointer;
+    }
     .header-actions button:focus-visible {
       outline: 3px solid var(--rt-focus);
       outline-offset: 2px;
