@@ -180,3 +180,41 @@ test('the ray panel, legend and pixel preview by keyboard', async ({ page }) => 
   await page.getByRole('button', { name: 'Show all pixels' }).click();
   await expect(moved).toHaveAttribute('aria-pressed', 'false');
 });
+
+test('every visualization option can be switched on in the ray panel, and the view shows it', async ({ page }) => {
+  const errors: string[] = [];
+  page.on('console', (message) => message.type() === 'error' && errors.push(message.text()));
+  page.on('pageerror', (error) => errors.push(error.message));
+  await page.goto(PAGE);
+  const view = page.locator('[data-ray-instances]').first();
+  await expect(view).toHaveAttribute('data-ray-instances', /^[1-9]\d*$/, { timeout: 60_000 });
+  const canvas = view.locator('canvas').first();
+  const panel = page.locator('rt-ray-panel');
+  const rayState = () => panel.evaluate((element) => (element as HTMLElement & { store: Store }).store.state.rays);
+
+  // The thickness, colour and animation groups may be folded away: open them as a student would.
+  for (const section of ['rays-radius', 'rays-colour', 'rays-animation']) {
+    const group = panel.locator(`rt-panel-section[name="${section}"]`);
+    if ((await group.getAttribute('open')) === null) await group.locator('summary').click();
+  }
+
+  const before = PNG.sync.read(await canvas.screenshot());
+  for (const name of ['hideNegligible', 'dynamicRadius', 'contributionColor', 'animate', 'animatePixelByPixel', 'loop'] as const) {
+    await panel.locator(`rt-switch[name="${name}"] input`).check();
+    await expect.poll(async () => (await rayState())[name]).toBe(true);
+  }
+  for (const [name, typed, expected] of [['negligibleThreshold', '5', 0.05], ['minRadius', '3', 0.03], ['maxRadius', '0.5', 0.005]] as const) {
+    const field = panel.locator(`rt-slider[name="${name}"] input[type="text"]`);
+    await field.fill(typed);
+    await field.press('Enter');
+    await expect.poll(async () => (await rayState())[name]).toBeCloseTo(expected, 6);
+  }
+  // Thick, contribution-coloured, growing rays: the picture is not the one we started with.
+  await page.waitForTimeout(500);
+  const after = PNG.sync.read(await canvas.screenshot());
+  let changed = 0;
+  for (let i = 0; i < after.data.length; i += 4) if (after.data[i] !== before.data[i] || after.data[i + 1] !== before.data[i + 1]) changed++;
+  expect(changed / (after.data.length / 4)).toBeGreaterThan(0.01);
+  expect(await distinctColours(canvas)).toBeGreaterThan(100);
+  expect(errors).toEqual([]);
+});
