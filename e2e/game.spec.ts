@@ -2,6 +2,19 @@ import { expect, test, type Locator, type Page } from '@playwright/test';
 import { existsSync, readdirSync, readFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
 import type { AppState } from '../src/app/app-state.ts';
+import {
+  clickToolbar,
+  closeRenderWindow,
+  collectErrors,
+  current,
+  expectRingAround,
+  expectStatus,
+  openRayTracer,
+  panel,
+  playLevel1UpToTheRayTracer,
+  state,
+  task,
+} from './support/game-steps.ts';
 
 // The game as a student plays it: through the buttons, fields and keys of the page. The
 // store and the view are only read (state, where the ball is on screen), never driven.
@@ -10,27 +23,6 @@ const levelsFolder = new URL('../levels/', import.meta.url);
 const index = JSON.parse(readFileSync(new URL('index.json', levelsFolder), 'utf8')) as { chapters: { levels: string[] }[] };
 const levelIds = index.chapters.flatMap((chapter) => chapter.levels);
 
-async function state(page: Page): Promise<AppState> {
-  return page.evaluate(() => (document.querySelector('rt-app rt-lab') as unknown as { store: { state: AppState } }).store.state);
-}
-
-function collectErrors(page: Page): string[] {
-  const errors: string[] = [];
-  page.on('console', (message) => {
-    if (message.type() === 'error') errors.push(message.text());
-  });
-  page.on('pageerror', (error) => errors.push(error.message));
-  return errors;
-}
-
-const task = (page: Page, title: string) => page.locator('rt-task-card').filter({ hasText: title });
-const current = (page: Page) => page.locator('rt-task-card[status="current"]');
-const panel = (page: Page) => page.locator('rt-quest-panel');
-
-async function expectStatus(page: Page, title: string, status: string): Promise<void> {
-  await expect(task(page, title)).toHaveAttribute('status', status);
-}
-
 async function distinctColours(locator: Locator): Promise<number> {
   const png = PNG.sync.read(await locator.screenshot());
   const colours = new Set<number>();
@@ -38,87 +30,12 @@ async function distinctColours(locator: Locator): Promise<number> {
   return colours.size;
 }
 
-function overlaps(a: { x: number; y: number; width: number; height: number }, b: { x: number; y: number; width: number; height: number }): boolean {
-  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
-}
-
-/** The ring is drawn around `target`: their boxes overlap and the ring is not far bigger. */
-async function expectRingAround(page: Page, target: Locator): Promise<void> {
-  const ring = page.getByTestId('guide-ring');
-  await expect(ring).toBeVisible();
-  await expect.poll(async () => {
-    const [r, t] = [await ring.boundingBox(), await target.boundingBox()];
-    return r !== null && t !== null && overlaps(r, t) && r.width < t.width + 60 && Math.abs(r.x + r.width / 2 - (t.x + t.width / 2)) < 12;
-  }).toBe(true);
-}
-
-async function clickToolbar(page: Page, command: string): Promise<void> {
-  await page.locator(`rt-view-toolbar [data-command="${command}"]`).click();
-}
-
-/** Drags the selected ball by the middle of its gizmo, in the view plane. */
-async function dragBall(page: Page): Promise<void> {
-  const at = await page.evaluate(() => {
-    const view = document.querySelector('rt-app rt-lab')!.shadowRoot!.querySelector('rt-scene-view') as unknown as {
-      labView: { projectToView(p: [number, number, number]): { x: number; y: number } | null };
-      shadowRoot: ShadowRoot;
-    };
-    const lab = document.querySelector('rt-app rt-lab') as unknown as { store: { state: AppState } };
-    const ball = lab.store.state.scene.objects.find((o) => o.id === 'ball')!;
-    const point = view.labView.projectToView(ball.position as [number, number, number])!;
-    const box = view.shadowRoot.querySelector('canvas')!.getBoundingClientRect();
-    return { x: box.left + point.x, y: box.top + point.y };
-  });
-  await page.mouse.move(at.x, at.y);
-  await page.mouse.down();
-  await page.mouse.move(at.x + 30, at.y + 10, { steps: 6 });
-  await page.mouse.move(at.x + 60, at.y + 20, { steps: 6 });
-  await page.mouse.up();
-}
-
 async function playLevel1(page: Page): Promise<void> {
-  await expect(panel(page).getByRole('heading', { name: 'Introduction' })).toBeVisible();
-  await expect(current(page)).toContainText('Look around');
-  await clickToolbar(page, 'orbit-left');
-  await expectStatus(page, 'Look around', 'done');
-
-  // Hints: two texts, then the ring on the zoom buttons.
-  await expect(current(page)).toContainText('Zoom in');
-  await current(page).getByRole('button', { name: 'Hint' }).click();
-  await expect(current(page)).toContainText('Scroll with the mouse wheel');
-  await current(page).getByRole('button', { name: 'Another hint' }).click();
-  await current(page).getByRole('button', { name: 'Show me where' }).click();
-  await expectRingAround(page, page.locator('rt-view-toolbar .group').filter({ has: page.locator('[data-command="zoom-in"]') }));
-  await clickToolbar(page, 'zoom-in');
-  await expectStatus(page, 'Zoom in', 'done');
-  await expect(page.getByTestId('guide-ring')).toHaveCount(0);
-
-  // "Show me" once: the app selects the ball itself; the task counts as shown.
-  await expect(current(page)).toContainText('Select the ball');
-  await current(page).getByRole('button', { name: 'Hint' }).click();
-  await current(page).getByRole('button', { name: 'Show me where' }).click();
-  await expect(page.getByTestId('guide-ring')).toBeVisible();
-  await current(page).getByRole('button', { name: 'Show me', exact: true }).click();
-  await expectStatus(page, 'Select the ball', 'shown');
-  expect((await state(page)).selection).toEqual({ kind: 'object', id: 'ball' });
-
-  const hex = page.locator('rt-object-panel').getByRole('textbox', { name: 'Colour, hex code' });
-  await hex.fill('#22cc44');
-  await hex.press('Enter');
-  await expectStatus(page, 'Paint the ball', 'done');
-
-  await expect(current(page)).toContainText('Move the ball');
-  await dragBall(page);
-  await expectStatus(page, 'Move the ball', 'done');
-
-  await page.locator('rt-scene-view canvas').focus();
-  await page.keyboard.press('Escape');
-  await expectStatus(page, 'Let go', 'done');
-
-  await page.locator('[data-command="render-open"]').click();
+  await playLevel1UpToTheRayTracer(page);
+  await openRayTracer(page);
   await expectStatus(page, 'Open the ray tracer', 'done');
   await expect(panel(page).getByText('Level complete!')).toBeVisible();
-  await page.locator('rt-render-window').getByRole('button', { name: 'Close the render window' }).click();
+  await closeRenderWindow(page);
 }
 
 async function playLevel2(page: Page): Promise<void> {
@@ -142,10 +59,10 @@ async function playLevel2(page: Page): Promise<void> {
     await field.fill(value);
     await field.press('Enter');
   }
-  await page.locator('[data-command="render-open"]').click();
+  await openRayTracer(page);
   await page.locator('rt-render-window button.primary').click();
   await expect(panel(page).getByText('Level complete!')).toBeVisible({ timeout: 60_000 });
-  await page.locator('rt-render-window').getByRole('button', { name: 'Close the render window' }).click();
+  await closeRenderWindow(page);
 }
 
 test('a new player plays levels 1 and 2 through the UI; level 2 opens only after level 1', async ({ page }) => {
@@ -221,10 +138,10 @@ test('progress survives a reload in the middle of a level', async ({ page }) => 
   await expect(page.getByText('Welcome to Ray Tracer Quest!')).toHaveCount(0);
 });
 
-/** A progress file in which every level's mandatory tasks are done: every level is open on the map. */
-function everythingPassed(): string {
+/** A progress file in which the mandatory tasks of `passed` are done: those levels and the next are open on the map. */
+function progressFile(passed: readonly string[]): string {
   const levels: Record<string, { tasks: Record<string, { how: 'done'; points: number }>; hintsUsed: number }> = {};
-  for (const id of levelIds) {
+  for (const id of passed) {
     const file = new URL(`${id}.level.json`, levelsFolder);
     if (!existsSync(file)) continue;
     try {
@@ -247,6 +164,106 @@ function everythingPassed(): string {
   return JSON.stringify(progress);
 }
 
+/** Imports `file` through the progress menu, as a learner continuing on another computer would. */
+async function importProgress(page: Page, file: string): Promise<void> {
+  await page.getByRole('button', { name: 'Menu' }).click();
+  await page.locator('rt-progress-menu input[type=file]').setInputFiles({ name: 'progress.json', mimeType: 'application/json', buffer: Buffer.from(file) });
+  await expect(page.locator('rt-toast')).toContainText('Progress imported');
+  await page.keyboard.press('Escape');
+}
+
+/** Clicks the scene object `id` in the 3D view, where it is drawn now (read from the view, not driven). */
+async function clickInView(page: Page, id: string): Promise<void> {
+  const at = await page.evaluate((objectId) => {
+    const view = document.querySelector('rt-app rt-lab')!.shadowRoot!.querySelector('rt-scene-view') as unknown as {
+      labView: { projectToView(p: readonly number[]): { x: number; y: number } | null };
+      shadowRoot: ShadowRoot;
+    };
+    const lab = document.querySelector('rt-app rt-lab') as unknown as { store: { state: AppState } };
+    const point = view.labView.projectToView(lab.store.state.scene.objects.find((o) => o.id === objectId)!.position)!;
+    const box = view.shadowRoot.querySelector('canvas')!.getBoundingClientRect();
+    return { x: box.left + point.x, y: box.top + point.y };
+  }, id);
+  await page.mouse.click(at.x, at.y);
+}
+
+/** Types `value` into the number field of the object panel's slider `name` and confirms it. */
+async function typeInSlider(page: Page, name: string, value: string): Promise<void> {
+  const field = page.locator('rt-object-panel').getByRole('textbox', { name: `${name}, typed value` });
+  await field.fill(value);
+  await field.press('Enter');
+}
+
+const pixel = (page: Page, column: number, row: number) => page.locator('rt-screen-preview').getByRole('button', { name: `Pixel ${column}, ${row}`, exact: true });
+
+async function playLevel3(page: Page): Promise<void> {
+  await expect(panel(page).getByRole('heading', { name: 'Shading' })).toBeVisible();
+  await expect(current(page)).toContainText('The ray legend');
+  await expect(page.locator('rt-ray-panel rt-ray-legend')).toBeVisible();
+  await current(page).getByRole('button', { name: 'Next' }).click();
+
+  // Pixels of the camera's screen: the hint ladder rings the very pixel to click.
+  await expect(current(page)).toContainText('A light ray');
+  await current(page).getByRole('button', { name: 'Hint' }).click();
+  await current(page).getByRole('button', { name: 'Another hint' }).click();
+  await current(page).getByRole('button', { name: 'Show me where' }).click();
+  await expectRingAround(page, pixel(page, 2, 1));
+  await pixel(page, 2, 1).click();
+  await expectStatus(page, 'A light ray', 'done');
+  await pixel(page, 3, 2).click();
+  await expectStatus(page, 'A shadow ray', 'done');
+  await pixel(page, 2, 2).click();
+  // Its title is also in the next task's text ("The dark side turns black").
+  await expect(page.locator('rt-task-card').filter({ hasText: /^\W*The dark side/ })).toHaveAttribute('status', 'done');
+  await page.locator('rt-screen-preview').getByRole('button', { name: 'Show all pixels' }).click();
+
+  // The material sliders: the ball is selected in the view, values typed or set with keys.
+  await expect(current(page)).toContainText('No ambient light');
+  await clickInView(page, 'ball');
+  await expect.poll(async () => (await state(page)).selection).toEqual({ kind: 'object', id: 'ball' });
+  await typeInSlider(page, 'Ambient (ka)', '0');
+  await expectStatus(page, 'No ambient light', 'done');
+  const diffuse = page.locator('rt-object-panel').getByRole('slider', { name: 'Diffuse (kd)' });
+  await diffuse.focus();
+  await diffuse.press('Home');
+  await expectStatus(page, 'No diffuse light', 'done');
+  await typeInSlider(page, 'Specular (ks)', '0,7');
+  await expectStatus(page, 'A shiny spot', 'done');
+
+  // Predict (wrongly: level 2's test answers right), then check in the scene.
+  await current(page).getByRole('radio', { name: 'bigger and softer' }).check();
+  await current(page).getByRole('button', { name: 'Check' }).click();
+  const quiz = task(page, 'Predict: more shine');
+  await expect(quiz).toContainText('Not quite: the answer is smaller and sharper.');
+  await expect(quiz.locator('label').filter({ hasText: 'bigger and softer' })).toContainText('your answer');
+  await expect(quiz.locator('label').filter({ hasText: 'smaller and sharper' })).toContainText('answer');
+  await expectStatus(page, 'Predict: more shine', 'done');
+  await typeInSlider(page, 'Shininess (n)', '200');
+  await expectStatus(page, 'Polish the ball', 'done');
+  expect((await state(page)).scene.objects.find((o) => o.id === 'ball')?.material).toMatchObject({ ambient: 0, diffuse: 0, specular: 0.7, shininess: 200 });
+
+  await openRayTracer(page);
+  await page.locator('rt-render-window button.primary').click();
+  await expect(panel(page).getByText('Level complete!')).toBeVisible({ timeout: 60_000 });
+  await expectStatus(page, 'Render the shiny ball', 'done');
+  await closeRenderWindow(page);
+}
+
+test('level 3 is played to the end through the UI: pixels, sliders by typing and keys, a quiz, a render', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('./');
+  await page.getByRole('button', { name: 'Got it' }).click();
+  await importProgress(page, progressFile(['01-introduction', '02-rays-from-the-camera']));
+  await page.locator('[data-command="levels"]').click();
+  await expect(page.locator('rt-level-map [data-level="04-shadows"]')).toHaveAttribute('data-status', 'locked');
+  await page.locator('rt-level-map [data-level="03-shading"]').click();
+  await playLevel3(page);
+  await page.locator('[data-command="levels"]').click();
+  await expect(page.locator('rt-level-map [data-level="03-shading"]')).toHaveAttribute('data-status', 'passed');
+  await expect(page.locator('rt-level-map [data-level="04-shadows"]')).toHaveAttribute('data-status', 'open');
+  expect(errors).toEqual([]);
+});
+
 test('every level of levels/index.json loads from the map without errors, and its scene draws', async ({ page }) => {
   test.setTimeout(60_000 + levelIds.length * 15_000);
   expect(readdirSync(levelsFolder).length).toBeGreaterThan(1);
@@ -254,10 +271,7 @@ test('every level of levels/index.json loads from the map without errors, and it
   await page.goto('./');
   await page.getByRole('button', { name: 'Got it' }).click();
   // Import a file that opens every level, as a learner continuing on another computer would.
-  await page.getByRole('button', { name: 'Menu' }).click();
-  await page.locator('rt-progress-menu input[type=file]').setInputFiles({ name: 'progress.json', mimeType: 'application/json', buffer: Buffer.from(everythingPassed()) });
-  await expect(page.locator('rt-toast')).toContainText('Progress imported');
-  await page.keyboard.press('Escape');
+  await importProgress(page, progressFile(levelIds));
   for (const id of levelIds) {
     if (!(await page.locator('rt-level-map').isVisible())) await page.locator('[data-command="levels"]').click();
     const entry = page.locator(`rt-level-map [data-level="${id}"]`);

@@ -149,7 +149,8 @@ export class RtLab extends LitElement {
       gap: var(--rt-space);
       flex-wrap: wrap;
     }
-    .header-actions button:not(.primary) {
+    .header-actions button:not(.primary),
+    .welcome button {
       font: inherit;
       min-height: var(--rt-target);
       padding: 0 12px;
@@ -159,7 +160,8 @@ export class RtLab extends LitElement {
       color: var(--rt-text);
       cursor: pointer;
     }
-    .header-actions button:focus-visible {
+    .header-actions button:focus-visible,
+    .welcome button:focus-visible {
       outline: 3px solid var(--rt-focus);
       outline-offset: 2px;
     }
@@ -170,11 +172,14 @@ export class RtLab extends LitElement {
       z-index: 30;
       min-height: 0;
     }
+    /* The size of the task panel's text below it, so the two read as one column. */
     .welcome {
       padding: 10px;
       border-radius: var(--rt-radius);
       background: var(--rt-accent-soft);
       color: var(--rt-text);
+      font-size: 0.875rem;
+      line-height: 1.3;
     }
     .welcome p {
       margin: 0 0 8px;
@@ -199,6 +204,12 @@ export class RtLab extends LitElement {
       z-index: 5;
       /* A thumbnail of the camera's image: big enough to click a pixel, small enough to leave the scene in view. */
       width: min(240px, 30%);
+      /* On a card like the view's buttons: its caption must stay readable over a light floor in the dark theme. */
+      box-sizing: border-box;
+      padding: 4px;
+      border-radius: var(--rt-radius);
+      background: var(--rt-surface);
+      box-shadow: var(--rt-shadow);
     }
     rt-render-window {
       position: absolute;
@@ -663,6 +674,7 @@ export class RtLab extends LitElement {
         @survey-submitted=${(event: CustomEvent<SurveySubmission>) => {
           new SurveyStore(browserStorage(), session.progressKey).save(event.detail);
           this.surveyDone = true;
+          this.toast(msg('Thank you! Your answers are saved. Download your data below for your teacher.'));
         }}
       ></rt-survey>`;
     }

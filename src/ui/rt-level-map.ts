@@ -79,6 +79,12 @@ export class RtLevelMap extends LitElement {
       .level[data-current] {
         border: 2px solid var(--rt-accent);
       }
+      /* Locked says so in words too; the dashed, flat card lets the open ones stand out. */
+      .level[data-status='locked'] {
+        border-style: dashed;
+        background: var(--rt-surface-2);
+        cursor: not-allowed;
+      }
       .level[data-status='broken'] {
         border-color: var(--rt-danger);
         cursor: default;

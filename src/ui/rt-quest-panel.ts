@@ -63,6 +63,9 @@ export class RtQuestPanel extends LitElement {
         flex-wrap: wrap;
         gap: 8px;
       }
+      .celebration .actions:not(:last-child) {
+        margin-bottom: 8px;
+      }
     `,
   ];
 

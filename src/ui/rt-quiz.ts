@@ -81,6 +81,7 @@ export class RtQuiz extends LitElement {
           (choice, index) => html`<label>
             <input type="radio" name=${name} .checked=${this.picked === index} @change=${() => (this.picked = index)} />
             ${localize(choice, this.locale)} ${answered && index === quiz.answer ? html`<span class="tag right">✓ ${msg('answer')}</span>` : nothing}
+            ${answered && index === this.picked && index !== quiz.answer ? html`<span class="tag wrong">✗ ${msg('your answer')}</span>` : nothing}
           </label>`,
         )}
       </fieldset>

@@ -24,6 +24,7 @@ export class RtTeacherPage extends LitElement {
     url: { state: true },
     qr: { state: true },
     status: { state: true },
+    stale: { state: true },
   };
 
   static override styles = [
@@ -140,6 +141,8 @@ export class RtTeacherPage extends LitElement {
   declare url: string | null;
   declare qr: string | null;
   declare status: string;
+  /** A newer link is being made (compressing, drawing the QR code). */
+  declare stale: boolean;
 
   private readonly levels: Level[] = playableLevels(loadBrowserCatalog());
   private made = 0;
@@ -160,6 +163,7 @@ export class RtTeacherPage extends LitElement {
     this.url = null;
     this.qr = null;
     this.status = '';
+    this.stale = false;
   }
 
   override willUpdate(changed: Map<string, unknown>): void {
@@ -175,6 +179,8 @@ export class RtTeacherPage extends LitElement {
 
   private async makeLink(): Promise<void> {
     const run = ++this.made;
+    // Until the new link is made, the one shown is out of date: it must not be copied or opened.
+    this.stale = true;
     if (this.problem) {
       this.url = this.qr = null;
       return;
@@ -187,6 +193,7 @@ export class RtTeacherPage extends LitElement {
     this.url = url;
     this.qr = `data:image/svg+xml;charset=utf-8,${encodeURIComponent(svg)}`;
     this.status = '';
+    this.stale = false;
   }
 
   private change(changes: Partial<Assignment>): void {
@@ -306,8 +313,8 @@ export class RtTeacherPage extends LitElement {
             : html`
                 <input class="link" type="text" readonly aria-label=${msg('Assignment link')} .value=${this.url ?? ''} @focus=${(e: Event) => (e.target as HTMLInputElement).select()} />
                 <div class="row" style="margin-top: 8px">
-                  <button class="primary" type="button" ?disabled=${!this.url} @click=${this.copy}>${msg('Copy link')}</button>
-                  <a class="button" href=${this.url ?? '#/teacher'} target="_blank" rel="noopener">${msg('Open as a student')}</a>
+                  <button class="primary" type="button" ?disabled=${!this.url || this.stale} @click=${this.copy}>${msg('Copy link')}</button>
+                  <a class="button" href=${(!this.stale && this.url) || '#/teacher'} aria-disabled=${this.stale ? 'true' : 'false'} target="_blank" rel="noopener">${msg('Open as a student')}</a>
                   <span role="status">${this.status}</span>
                 </div>
                 ${this.qr ? html`<img class="qr" src=${this.qr} alt=${msg('QR code of the assignment link')} />` : nothing}

@@ -1,0 +1,122 @@
+import { expect, type Locator, type Page } from '@playwright/test';
+import type { AppState } from '../../src/app/app-state.ts';
+
+// Steps of the game as a student plays it: through the buttons, fields and keys of the page.
+// The store and the view are only read (state, where the ball is on screen), never driven.
+// Shared by the game's and the classroom's specs.
+
+/** The lab's current app state (read only). */
+export async function state(page: Page): Promise<AppState> {
+  return page.evaluate(() => (document.querySelector('rt-app rt-lab') as unknown as { store: { state: AppState } }).store.state);
+}
+
+/** Console errors and uncaught exceptions of the page, collected from now on. */
+export function collectErrors(page: Page): string[] {
+  const errors: string[] = [];
+  page.on('console', (message) => {
+    if (message.type() === 'error') errors.push(message.text());
+  });
+  page.on('pageerror', (error) => errors.push(error.message));
+  return errors;
+}
+
+export const task = (page: Page, title: string) => page.locator('rt-task-card').filter({ hasText: title });
+export const current = (page: Page) => page.locator('rt-task-card[status="current"]');
+export const panel = (page: Page) => page.locator('rt-quest-panel');
+
+export async function expectStatus(page: Page, title: string, status: string): Promise<void> {
+  await expect(task(page, title)).toHaveAttribute('status', status);
+}
+
+function overlaps(a: { x: number; y: number; width: number; height: number }, b: { x: number; y: number; width: number; height: number }): boolean {
+  return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+}
+
+/** The ring is drawn around `target`: their boxes overlap and the ring is not far bigger. */
+export async function expectRingAround(page: Page, target: Locator): Promise<void> {
+  const ring = page.getByTestId('guide-ring');
+  await expect(ring).toBeVisible();
+  await expect.poll(async () => {
+    const [r, t] = [await ring.boundingBox(), await target.boundingBox()];
+    return r !== null && t !== null && overlaps(r, t) && r.width < t.width + 60 && Math.abs(r.x + r.width / 2 - (t.x + t.width / 2)) < 12;
+  }).toBe(true);
+}
+
+export async function clickToolbar(page: Page, command: string): Promise<void> {
+  await page.locator(`rt-view-toolbar [data-command="${command}"]`).click();
+}
+
+/** Drags the selected ball by the middle of its gizmo, in the view plane. */
+async function dragBall(page: Page): Promise<void> {
+  const at = await page.evaluate(() => {
+    const view = document.querySelector('rt-app rt-lab')!.shadowRoot!.querySelector('rt-scene-view') as unknown as {
+      labView: { projectToView(p: [number, number, number]): { x: number; y: number } | null };
+      shadowRoot: ShadowRoot;
+    };
+    const lab = document.querySelector('rt-app rt-lab') as unknown as { store: { state: AppState } };
+    const ball = lab.store.state.scene.objects.find((o) => o.id === 'ball')!;
+    const point = view.labView.projectToView(ball.position as [number, number, number])!;
+    const box = view.shadowRoot.querySelector('canvas')!.getBoundingClientRect();
+    return { x: box.left + point.x, y: box.top + point.y };
+  });
+  await page.mouse.move(at.x, at.y);
+  await page.mouse.down();
+  await page.mouse.move(at.x + 30, at.y + 10, { steps: 6 });
+  await page.mouse.move(at.x + 60, at.y + 20, { steps: 6 });
+  await page.mouse.up();
+}
+
+/**
+ * Level 1's tasks up to its last one, "Open the ray tracer", which the caller does
+ * (`openRayTracer`) and checks: what follows differs in free play (the level's end) and
+ * in an assignment (its survey). Uses two text hints, a "Show me where" and one "Show me".
+ */
+export async function playLevel1UpToTheRayTracer(page: Page): Promise<void> {
+  await expect(panel(page).getByRole('heading', { name: 'Introduction' })).toBeVisible();
+  await expect(current(page)).toContainText('Look around');
+  await clickToolbar(page, 'orbit-left');
+  await expectStatus(page, 'Look around', 'done');
+
+  // Hints: two texts, then the ring on the zoom buttons.
+  await expect(current(page)).toContainText('Zoom in');
+  await current(page).getByRole('button', { name: 'Hint' }).click();
+  await expect(current(page)).toContainText('Scroll with the mouse wheel');
+  await current(page).getByRole('button', { name: 'Another hint' }).click();
+  await current(page).getByRole('button', { name: 'Show me where' }).click();
+  await expectRingAround(page, page.locator('rt-view-toolbar .group').filter({ has: page.locator('[data-command="zoom-in"]') }));
+  await clickToolbar(page, 'zoom-in');
+  await expectStatus(page, 'Zoom in', 'done');
+  await expect(page.getByTestId('guide-ring')).toHaveCount(0);
+
+  // "Show me" once: the app selects the ball itself; the task counts as shown.
+  await expect(current(page)).toContainText('Select the ball');
+  await current(page).getByRole('button', { name: 'Hint' }).click();
+  await current(page).getByRole('button', { name: 'Show me where' }).click();
+  await expect(page.getByTestId('guide-ring')).toBeVisible();
+  await current(page).getByRole('button', { name: 'Show me', exact: true }).click();
+  await expectStatus(page, 'Select the ball', 'shown');
+  expect((await state(page)).selection).toEqual({ kind: 'object', id: 'ball' });
+
+  const hex = page.locator('rt-object-panel').getByRole('textbox', { name: 'Colour, hex code' });
+  await hex.fill('#22cc44');
+  await hex.press('Enter');
+  await expectStatus(page, 'Paint the ball', 'done');
+
+  await expect(current(page)).toContainText('Move the ball');
+  await dragBall(page);
+  await expectStatus(page, 'Move the ball', 'done');
+
+  await page.locator('rt-scene-view canvas').focus();
+  await page.keyboard.press('Escape');
+  await expectStatus(page, 'Let go', 'done');
+  await expect(current(page)).toContainText('Open the ray tracer');
+}
+
+/** Opens the render window with the header's button (level 1's last task). */
+export async function openRayTracer(page: Page): Promise<void> {
+  await page.locator('[data-command="render-open"]').click();
+}
+
+export async function closeRenderWindow(page: Page): Promise<void> {
+  await page.locator('rt-render-window').getByRole('button', { name: 'Close the render window' }).click();
+}
