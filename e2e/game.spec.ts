@@ -104,6 +104,8 @@ test('the ring stays on its control when the sidebar scrolls', async ({ page }) 
   await page.locator('rt-level-map [data-level="01-introduction"]').click();
   await clickToolbar(page, 'orbit-left');
   await clickToolbar(page, 'zoom-in');
+  // The view reports a zoom once it settles: wait for the next task before asking for its hint.
+  await expect(current(page)).toContainText('Select the ball');
   await current(page).getByRole('button', { name: 'Hint' }).click();
   await current(page).getByRole('button', { name: 'Show me where' }).click();
   const ball = page.getByTestId('guide-ring');
