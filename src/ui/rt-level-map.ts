@@ -144,14 +144,16 @@ export class RtLevelMap extends LitElement {
       ${this.welcome
         ? html`<p class="welcome">${msg('Welcome to Ray Tracer Quest! Each level teaches one idea about ray tracing. Start with the first level; the next one opens when you finish its tasks.')}</p>`
         : nothing}
-      ${this.chapters.map(
-        (chapter) => html`<section aria-labelledby=${`chapter-${chapter.id}`}>
+      ${this.chapters.map((chapter, chapterIndex) => {
+        // Levels are numbered through the whole curriculum (level 3 is "3." in its chapter too).
+        const first = this.chapters.slice(0, chapterIndex).reduce((count, earlier) => count + earlier.levels.length, 1);
+        return html`<section aria-labelledby=${`chapter-${chapter.id}`}>
           <h3 id=${`chapter-${chapter.id}`}>${localize(chapter.title, this.locale)}</h3>
-          <ol>
-            ${chapter.levels.map((entry, index) => html`<li>${this.entry(entry, index + 1, choose)}</li>`)}
+          <ol start=${first}>
+            ${chapter.levels.map((entry, index) => html`<li>${this.entry(entry, first + index, choose)}</li>`)}
           </ol>
-        </section>`,
-      )}
+        </section>`;
+      })}
     `;
   }
 
