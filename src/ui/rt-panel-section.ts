@@ -103,8 +103,21 @@ export class RtPanelSection extends LitElement {
     return this.name || this.heading;
   }
 
+  /**
+   * A click on the heading (or Enter/Space on it) toggles at once: the <details> element's own
+   * `toggle` event comes later, asynchronously, and a reload in between would forget the choice.
+   */
+  private onSummaryClick(event: Event): void {
+    event.preventDefault();
+    this.setOpen(!this.open);
+  }
+
+  /** Other ways a <details> opens (the browser's find-in-page reveals hidden text). */
   private onToggle(event: Event): void {
-    const open = (event.target as HTMLDetailsElement).open;
+    this.setOpen((event.target as HTMLDetailsElement).open);
+  }
+
+  private setOpen(open: boolean): void {
     if (open === this.open) return;
     this.open = open;
     writeStorage(STORAGE_PREFIX + this.key, open ? 'open' : 'closed');
@@ -116,7 +129,7 @@ export class RtPanelSection extends LitElement {
   override render() {
     return html`
       <details ?open=${this.open} @toggle=${this.onToggle}>
-        <summary><h2>${this.heading}</h2></summary>
+        <summary @click=${this.onSummaryClick}><h2>${this.heading}</h2></summary>
         <div class="content"><slot></slot></div>
       </details>
     `;
