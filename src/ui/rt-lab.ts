@@ -87,7 +87,7 @@ export class RtLab extends LitElement {
     sharedScene: { attribute: false },
     game: { state: true },
     welcome: { state: true },
-    surveyDone: { state: true },
+    survey: { state: true },
   };
 
   static override styles = css`
@@ -258,7 +258,8 @@ export class RtLab extends LitElement {
   declare private game: number;
   /** A newcomer's welcome, shown once over the first level's tasks. */
   declare private welcome: boolean;
-  declare private surveyDone: boolean;
+  /** The learner's survey answers in this session's progress (read once per session), or null before they hand it in. */
+  declare private survey: SurveySubmission | null;
   private session: QuestSession | null = null;
   private readonly sessionCleanup: (() => void)[] = [];
   private readonly narrowedSheets = new WeakMap<ShadowRoot, CSSStyleSheet>();
@@ -283,7 +284,7 @@ export class RtLab extends LitElement {
     this.sharedScene = null;
     this.game = 0;
     this.welcome = false;
-    this.surveyDone = false;
+    this.survey = null;
   }
 
   override connectedCallback(): void {
@@ -339,7 +340,7 @@ export class RtLab extends LitElement {
     else session.start();
     this.openSharedScene();
     this.welcome = newcomer && session.mode.kind === 'level';
-    this.surveyDone = new SurveyStore(storage, session.progressKey).load() !== null;
+    this.survey = new SurveyStore(storage, session.progressKey).load();
     this.gameChanged();
   }
 
@@ -650,14 +651,13 @@ export class RtLab extends LitElement {
 
   /** Downloads of the learner's own timings (CSV, JSON, xAPI) for their teacher. */
   private exportMenu(session: QuestSession) {
-    const storage = browserStorage();
     return html`<section class="your-data" aria-label=${msg('Your data')}>
       <h2>${msg('Your data for your teacher')}</h2>
       <rt-export-menu
         .progress=${() => session.engine.progress}
         .participant=${session.context.participantCode}
         .assignment=${this.assignment}
-        .survey=${new SurveyStore(storage, session.progressKey).load()}
+        .survey=${this.survey}
         @export-failed=${(event: CustomEvent<string>) => this.toast(event.detail, 'error')}
       ></rt-export-menu>
     </section>`;
@@ -666,14 +666,14 @@ export class RtLab extends LitElement {
   private tasksColumn() {
     const session = this.session;
     const view = session?.mode.kind === 'level' ? session.engine.level : null;
-    const survey = this.assignment?.survey;
-    if (survey && session?.allPassed && !this.surveyDone && customElements.get('rt-survey')) {
+    const surveyId = this.assignment?.survey;
+    if (surveyId && session?.allPassed && !this.survey && customElements.get('rt-survey')) {
       return html`<rt-survey
-        .surveyId=${survey}
+        .surveyId=${surveyId}
         locale=${session.locale}
         @survey-submitted=${(event: CustomEvent<SurveySubmission>) => {
           new SurveyStore(browserStorage(), session.progressKey).save(event.detail);
-          this.surveyDone = true;
+          this.survey = event.detail;
           this.toast(msg('Thank you! Your answers are saved. Download your data below for your teacher.'));
         }}
       ></rt-survey>`;
