@@ -1,7 +1,6 @@
 import { expect, test, type Locator, type Page } from '@playwright/test';
 import { existsSync, readdirSync, readFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
-import type { AppState } from '../src/app/app-state.ts';
 import {
   clickToolbar,
   closeRenderWindow,
@@ -11,6 +10,7 @@ import {
   expectStatus,
   openRayTracer,
   panel,
+  objectOnScreen,
   playLevel1UpToTheRayTracer,
   state,
   task,
@@ -176,16 +176,7 @@ async function importProgress(page: Page, file: string): Promise<void> {
 
 /** Clicks the scene object `id` in the 3D view, where it is drawn now (read from the view, not driven). */
 async function clickInView(page: Page, id: string): Promise<void> {
-  const at = await page.evaluate((objectId) => {
-    const view = document.querySelector('rt-app rt-lab')!.shadowRoot!.querySelector('rt-scene-view') as unknown as {
-      labView: { projectToView(p: readonly number[]): { x: number; y: number } | null };
-      shadowRoot: ShadowRoot;
-    };
-    const lab = document.querySelector('rt-app rt-lab') as unknown as { store: { state: AppState } };
-    const point = view.labView.projectToView(lab.store.state.scene.objects.find((o) => o.id === objectId)!.position)!;
-    const box = view.shadowRoot.querySelector('canvas')!.getBoundingClientRect();
-    return { x: box.left + point.x, y: box.top + point.y };
-  }, id);
+  const at = await objectOnScreen(page, id);
   await page.mouse.click(at.x, at.y);
 }
 

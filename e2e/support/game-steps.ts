@@ -47,18 +47,22 @@ export async function clickToolbar(page: Page, command: string): Promise<void> {
 }
 
 /** Drags the selected ball by the middle of its gizmo, in the view plane. */
-async function dragBall(page: Page): Promise<void> {
-  const at = await page.evaluate(() => {
+/** Where the object `id` (its centre) is on the page, in viewport px, as the 3D view projects it. */
+export async function objectOnScreen(page: Page, id: string): Promise<{ x: number; y: number }> {
+  return page.evaluate((objectId) => {
     const view = document.querySelector('rt-app rt-lab')!.shadowRoot!.querySelector('rt-scene-view') as unknown as {
-      labView: { projectToView(p: [number, number, number]): { x: number; y: number } | null };
+      labView: { projectToView(p: readonly number[]): { x: number; y: number } | null };
       shadowRoot: ShadowRoot;
     };
     const lab = document.querySelector('rt-app rt-lab') as unknown as { store: { state: AppState } };
-    const ball = lab.store.state.scene.objects.find((o) => o.id === 'ball')!;
-    const point = view.labView.projectToView(ball.position as [number, number, number])!;
+    const point = view.labView.projectToView(lab.store.state.scene.objects.find((o) => o.id === objectId)!.position)!;
     const box = view.shadowRoot.querySelector('canvas')!.getBoundingClientRect();
     return { x: box.left + point.x, y: box.top + point.y };
-  });
+  }, id);
+}
+
+async function dragBall(page: Page): Promise<void> {
+  const at = await objectOnScreen(page, 'ball');
   await page.mouse.move(at.x, at.y);
   await page.mouse.down();
   await page.mouse.move(at.x + 30, at.y + 10, { steps: 6 });
