@@ -3,7 +3,7 @@ import { readFileSync } from 'node:fs';
 import { readFile } from 'node:fs/promises';
 import type { Assignment } from '../src/classroom/assignment.ts';
 import { decodeAssignment } from '../src/classroom/assignment-link.ts';
-import { parseCsv } from '../src/classroom/dashboard-csv-text.ts';
+import { parseCsv } from '../src/classroom/csv-text.ts';
 import { eventLogSchema } from '../src/quest/event-log.ts';
 import { closeRenderWindow, collectErrors, openRayTracer, playLevel1UpToTheRayTracer } from './support/game-steps.ts';
 

@@ -1,7 +1,7 @@
 import { expect, test } from '@playwright/test';
 import { readFileSync } from 'node:fs';
 import { readFile } from 'node:fs/promises';
-import { parseCsv } from '../src/classroom/dashboard-csv-text.ts';
+import { parseCsv } from '../src/classroom/csv-text.ts';
 import { readClassFiles } from '../src/classroom/dashboard-class.ts';
 import { summarizeLevels } from '../src/classroom/dashboard-summary.ts';
 import { summarizeSurveys } from '../src/classroom/dashboard-survey.ts';

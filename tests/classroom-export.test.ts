@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import type { Assignment } from '../src/classroom/assignment.ts';
 import { assignmentId } from '../src/classroom/assignment-id.ts';
-import { parseCsv } from '../src/classroom/dashboard-csv-text.ts';
+import { parseCsv } from '../src/classroom/csv-text.ts';
 import type { ExportInput } from '../src/classroom/export-context.ts';
 import { APP_VERSION } from '../src/classroom/export-context.ts';
 import { CSV_COLUMNS, exportCsv } from '../src/classroom/export-csv.ts';

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import type { TaskAttempt } from '../src/classroom/dashboard-attempts.ts';
+import type { TaskAttempt } from '../src/classroom/task-attempts.ts';
 import { readClassFiles, combinedCsv } from '../src/classroom/dashboard-class.ts';
-import { parseCsv } from '../src/classroom/dashboard-csv-text.ts';
+import { parseCsv } from '../src/classroom/csv-text.ts';
 import type { ClassRecord } from '../src/classroom/dashboard-record.ts';
 import { completionRate, summarizeLevels } from '../src/classroom/dashboard-summary.ts';
 import { summarizeSurveys } from '../src/classroom/dashboard-survey.ts';

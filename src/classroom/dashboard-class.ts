@@ -1,5 +1,5 @@
-import { attemptRows, CSV_COLUMNS } from './dashboard-attempt-rows.ts';
-import { csvText } from './dashboard-csv-text.ts';
+import { attemptRows, CSV_COLUMNS } from './attempt-rows.ts';
+import { csvText } from './csv-text.ts';
 import { readExportFile } from './dashboard-read-file.ts';
 import type { ClassRecord, SkippedFile } from './dashboard-record.ts';
 

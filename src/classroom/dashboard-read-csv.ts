@@ -1,6 +1,6 @@
 import { HOW_COMPLETED, type HowCompleted } from '../quest/event-log.ts';
-import type { TaskAttempt } from './dashboard-attempts.ts';
-import { parseCsv } from './dashboard-csv-text.ts';
+import type { TaskAttempt } from './task-attempts.ts';
+import { parseCsv } from './csv-text.ts';
 import type { FileRead } from './dashboard-record.ts';
 
 /**

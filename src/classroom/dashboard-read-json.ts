@@ -3,7 +3,7 @@ import { eventLogSchema } from '../quest/event-log.ts';
 import { PROGRESS_KIND } from '../quest/progress.ts';
 import { isRecord } from '../quest/is-record.ts';
 import { readJson } from '../quest/read-json.ts';
-import { readLog } from './dashboard-attempts.ts';
+import { readLog } from './task-attempts.ts';
 import { EXPORT_FORMAT, EXPORT_VERSION } from './export-json.ts';
 import type { ClassRecord, FileRead } from './dashboard-record.ts';
 import type { SurveyAnswers } from './survey-answers.ts';

@@ -1,5 +1,5 @@
 import type { SurveyAnswers } from './survey-answers.ts';
-import type { LevelVisit, TaskAttempt } from './dashboard-attempts.ts';
+import type { LevelVisit, TaskAttempt } from './task-attempts.ts';
 
 /**
  * One learner's export as the dashboard counts it, whatever file it came from (a JSON

@@ -1,6 +1,6 @@
-import { readLog } from './dashboard-attempts.ts';
-import { attemptRows, CSV_COLUMNS } from './dashboard-attempt-rows.ts';
-import { csvText } from './dashboard-csv-text.ts';
+import { readLog } from './task-attempts.ts';
+import { attemptRows, CSV_COLUMNS } from './attempt-rows.ts';
+import { csvText } from './csv-text.ts';
 import { assignmentLabel, type ExportInput } from './export-context.ts';
 
 /**
@@ -11,12 +11,12 @@ import { assignmentLabel, type ExportInput } from './export-context.ts';
  * back starts the next attempt. `attempts` is the attempt's number for its task (1, 2, …),
  * so the last row of a task says how many it took. `active_ms` leaves out the time the tab
  * was hidden or the page closed. Times are ISO 8601 in UTC. The columns and rows are the
- * dashboard's combined CSV's (dashboard-attempt-rows.ts), so the two files always agree.
+ * dashboard's combined CSV's (attempt-rows.ts), so the two files always agree.
  *
  * Encoding: UTF-8 with a byte-order mark and CRLF line ends (RFC 4180). Without the mark,
  * Excel reads UTF-8 as the local code page and mangles names and typed text; R, Python and
  * LibreOffice skip it. Learner-typed fields that start like a formula get an apostrophe
- * (dashboard-csv-text.ts), so opening the file cannot run anything.
+ * (csv-text.ts), so opening the file cannot run anything.
  */
 
 export { CSV_COLUMNS };

@@ -1,6 +1,6 @@
 import type { LoggedEvent } from '../quest/event-log.ts';
 import { fnv1a } from './assignment-id.ts';
-import { readLog } from './dashboard-attempts.ts';
+import { readLog } from './task-attempts.ts';
 import { assignmentLabel, type ExportInput } from './export-context.ts';
 import { isoAt, isoDuration } from './iso-duration.ts';
 import { activities, EXTENSIONS, VERBS, XAPI_BASE, type XapiActivity, type XapiVerb } from './xapi-vocabulary.ts';

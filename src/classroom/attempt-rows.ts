@@ -1,4 +1,4 @@
-import type { TaskAttempt } from './dashboard-attempts.ts';
+import type { TaskAttempt } from './task-attempts.ts';
 
 /**
  * A learner's task attempts as rows of the CSV export's columns (spec/classroom.md), shared

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { readLog } from '../src/classroom/dashboard-attempts.ts';
+import { readLog } from '../src/classroom/task-attempts.ts';
 import type { LoggedEvent } from '../src/quest/event-log.ts';
 
 const startedAt = '2026-03-09T09:00:00.000Z';
