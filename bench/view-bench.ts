@@ -7,7 +7,7 @@
  * (the e2e run records the browser's long tasks).
  */
 import { Raycaster, Vector3 } from 'three';
-import { DEFAULT_RAY_VIEW } from '../src/app/app-state.ts';
+import { DEFAULT_RAY_VIEW } from '../src/lab-state/lab-state.ts';
 import type { ScreenRays } from '../src/app/screen-rays.ts';
 import { ScreenTracer, TRACE_DEBOUNCE_MS } from '../src/app/screen-tracer.ts';
 import { createNodeRenderPool } from '../src/cli/node-worker-port.ts';

@@ -1,6 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
-import type { AppState } from '../src/app/app-state.ts';
+import type { LabState } from '../src/lab-state/lab-state.ts';
 
 // The acceleration panel and the boxes in the 3D view, used as a student would in levels
 // 15 and 16: switch the boxes on, change the depth (by keys and by typing, also out of
@@ -9,8 +9,8 @@ import type { AppState } from '../src/app/app-state.ts';
 const level16 = JSON.parse(readFileSync(new URL('../levels/16-the-bvh.level.json', import.meta.url), 'utf8'));
 const level15 = JSON.parse(readFileSync(new URL('../levels/15-bounding-boxes.level.json', import.meta.url), 'utf8'));
 
-async function state(page: Page): Promise<AppState> {
-  return page.evaluate(() => (document.querySelector('rt-lab') as unknown as { store: { state: AppState } }).store.state);
+async function state(page: Page): Promise<LabState> {
+  return page.evaluate(() => (document.querySelector('rt-lab') as unknown as { store: { state: LabState } }).store.state);
 }
 
 async function openLab(page: Page, scene: unknown, errors: string[]): Promise<void> {

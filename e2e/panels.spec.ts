@@ -1,11 +1,11 @@
 import { expect, test, type Page } from '@playwright/test';
-import type { AppState } from '../src/app/app-state.ts';
+import type { LabState } from '../src/lab-state/lab-state.ts';
 
 // The lab's panels, used as a student would: select in the scene list, edit, type wrong
 // things, use presets and the keyboard. The state is read from the store that <rt-lab> exposes.
 
-async function state(page: Page): Promise<AppState> {
-  return page.evaluate(() => (document.querySelector('rt-lab') as unknown as { store: { state: AppState } }).store.state);
+async function state(page: Page): Promise<LabState> {
+  return page.evaluate(() => (document.querySelector('rt-lab') as unknown as { store: { state: LabState } }).store.state);
 }
 
 async function openLab(page: Page, errors: string[]): Promise<void> {
@@ -29,7 +29,7 @@ test('select an object in the scene list and change its colour', async ({ page }
   await expect(hex).toHaveValue('#e6261a');
   await hex.fill('#00ff00');
   await hex.press('Enter');
-  const ball = (s: AppState) => s.scene.objects.find((o) => o.id === 'red-ball')!;
+  const ball = (s: LabState) => s.scene.objects.find((o) => o.id === 'red-ball')!;
   expect(ball(await state(page)).material.color).toEqual([0, 1, 0]);
 
   // Unreadable colour text: a message, and the colour stays.
@@ -188,7 +188,7 @@ test('a change the store refuses is explained next to the control and nothing br
   await openLab(page, errors);
   // A scene already holding the most lights a scene may have.
   await page.evaluate(() => {
-    const lab = document.querySelector('rt-lab') as unknown as { store: { state: AppState; dispatch(action: unknown): string | undefined } };
+    const lab = document.querySelector('rt-lab') as unknown as { store: { state: LabState; dispatch(action: unknown): string | undefined } };
     const scene = lab.store.state.scene;
     const lights = Array.from({ length: 32 }, (_, i) => ({ ...scene.lights[0], id: `lamp-${i}` }));
     lab.store.dispatch({ type: 'scene.loaded', scene: { ...scene, lights } });

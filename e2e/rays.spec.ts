@@ -1,8 +1,8 @@
 import { expect, test, type Locator, type Page } from '@playwright/test';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
-import type { AppAction } from '../src/app/app-action.ts';
-import type { Store } from '../src/app/store.ts';
+import type { LabAction } from '../src/lab-state/lab-action.ts';
+import type { Store } from '../src/lab-state/store.ts';
 
 /**
  * The rays as a student meets them: the camera's pixels are traced and drawn, hovering a
@@ -30,7 +30,7 @@ async function drawnRays(page: Page): Promise<number> {
 }
 
 /** Dispatches an action on the lab's store (the one every lab element holds). */
-async function dispatch(page: Page, action: AppAction): Promise<void> {
+async function dispatch(page: Page, action: LabAction): Promise<void> {
   await page.locator('rt-ray-panel').evaluate((panel, a) => (panel as HTMLElement & { store: Store }).store.dispatch(a), action);
 }
 

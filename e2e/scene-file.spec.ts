@@ -1,6 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import { readFile } from 'node:fs/promises';
-import type { AppAction } from '../src/app/app-action.ts';
+import type { LabAction } from '../src/lab-state/lab-action.ts';
 import type { Scene } from '../src/scene/scene.ts';
 
 // The sandbox's save, load and share: a scene saved as a file comes back the same; a file
@@ -13,8 +13,8 @@ async function scene(page: Page): Promise<Scene> {
   return page.evaluate(() => (document.querySelector('rt-lab') as unknown as { store: { state: { scene: Scene } } }).store.state.scene);
 }
 
-async function dispatch(page: Page, action: AppAction): Promise<void> {
-  await page.evaluate((sent) => (document.querySelector('rt-lab') as unknown as { store: { dispatch(action: AppAction): void } }).store.dispatch(sent), action);
+async function dispatch(page: Page, action: LabAction): Promise<void> {
+  await page.evaluate((sent) => (document.querySelector('rt-lab') as unknown as { store: { dispatch(action: LabAction): void } }).store.dispatch(sent), action);
 }
 
 /** The lab's free lab, with the store's action types recorded in `window.actions`. */
@@ -25,7 +25,7 @@ async function openFreeLab(page: Page): Promise<void> {
   await expect(page.locator('rt-file-panel')).toBeVisible();
   await page.evaluate(() => {
     (window as unknown as Recorded).actions = [];
-    (document.querySelector('rt-lab') as unknown as { store: { subscribe(listener: (state: unknown, action: AppAction) => void): void } }).store.subscribe((_state, action) =>
+    (document.querySelector('rt-lab') as unknown as { store: { subscribe(listener: (state: unknown, action: LabAction) => void): void } }).store.subscribe((_state, action) =>
       (window as unknown as Recorded).actions.push(action.type === 'scene.saved' ? `scene.saved:${action.to}` : action.type),
     );
   });

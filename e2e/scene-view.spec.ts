@@ -1,7 +1,7 @@
 import { expect, type Locator, type Page, test } from '@playwright/test';
 import { PNG } from 'pngjs';
 import { Quaternion, Vector3 } from 'three';
-import type { AppState } from '../src/app/app-state.ts';
+import type { LabState } from '../src/lab-state/lab-state.ts';
 import type { Vec3 } from '../src/scene/scene.ts';
 import { CameraRays } from '../src/tracer/camera-rays.ts';
 import type { RtSceneView } from '../src/ui/rt-scene-view.ts';
@@ -43,7 +43,7 @@ function canvas(page: Page): Locator {
   return page.locator('rt-scene-view canvas');
 }
 
-function appState(page: Page): Promise<AppState> {
+function appState(page: Page): Promise<LabState> {
   return sceneView(page).evaluate((element: RtSceneView) => element.store!.state);
 }
 
@@ -116,7 +116,7 @@ function frames(page: Page): Promise<number> {
 }
 
 /** The centre of a screen pixel in the world (the same maths the view draws it with). */
-function pixelCentre(state: AppState, x: number, y: number): Vec3 {
+function pixelCentre(state: LabState, x: number, y: number): Vec3 {
   const camera = state.scene.camera;
   const rays = new CameraRays(camera);
   const local = cellCenter(screenGrid(camera), x, y, new Vector3());

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { Store } from '../src/app/store.ts';
-import { initialState } from '../src/app/app-state.ts';
+import { Store } from '../src/lab-state/store.ts';
+import { initialState } from '../src/lab-state/lab-state.ts';
 import { defaultScene } from '../src/scene/scene-defaults.ts';
 
 const newStore = () => new Store(initialState(defaultScene()));

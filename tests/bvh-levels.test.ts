@@ -1,6 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { initialState } from '../src/app/app-state.ts';
+import { initialState } from '../src/lab-state/lab-state.ts';
 import { checkGoal, NO_EVENTS } from '../src/quest/goal-check.ts';
 import { type Level, parseLevelJson } from '../src/quest/level-schema.ts';
 import { loadMeshesFromDisk } from '../src/scene/load-meshes-node.ts';

@@ -1,7 +1,7 @@
 import { beforeAll, describe, expect, it } from 'vitest';
-import { reduce } from '../src/app/app-reducer.ts';
-import { type AppState, initialState } from '../src/app/app-state.ts';
-import { appActionSchema } from '../src/quest/app-action-schema.ts';
+import { reduce } from '../src/lab-state/lab-reducer.ts';
+import { type LabState, initialState } from '../src/lab-state/lab-state.ts';
+import { labActionSchema } from '../src/quest/lab-action-schema.ts';
 import { loadMeshesFromDisk } from '../src/scene/load-meshes-node.ts';
 import type { MeshLibrary } from '../src/scene/mesh-data.ts';
 import { parseScene } from '../src/scene/scene-schema.ts';
@@ -12,7 +12,7 @@ beforeAll(async () => {
   meshes = await loadMeshesFromDisk(['character', 'capsule']);
 });
 
-function labState(): AppState {
+function labState(): LabState {
   const parsed = parseScene({
     version: 1,
     objects: [
@@ -49,8 +49,8 @@ describe('the BVH view options in the app state', () => {
   });
 
   it('are checked in level files: unknown fields and wrong types are refused', () => {
-    expect(appActionSchema.safeParse({ type: 'bvh.changed', changes: { showBounds: true } }).success).toBe(true);
-    const wrong = appActionSchema.safeParse({ type: 'bvh.changed', changes: { depth: 'deep', colour: 1 } });
+    expect(labActionSchema.safeParse({ type: 'bvh.changed', changes: { showBounds: true } }).success).toBe(true);
+    const wrong = labActionSchema.safeParse({ type: 'bvh.changed', changes: { depth: 'deep', colour: 1 } });
     expect(wrong.success).toBe(false);
     expect(wrong.error?.issues[0].message).toMatch(/depth must be a number.*unknown field "colour"/);
   });
@@ -60,7 +60,7 @@ describe('the boxes drawn in the view', () => {
   const drawn = (boxes: BvhBoxes) =>
     Object.fromEntries(boxes.object.children.map((child) => [child.name, (child as unknown as { geometry: { getAttribute(n: string): { count: number } } }).geometry.getAttribute('position').count / 24]));
 
-  async function boxesFor(state: AppState): Promise<BvhBoxes> {
+  async function boxesFor(state: LabState): Promise<BvhBoxes> {
     let changed = 0;
     const boxes = new BvhBoxes(() => changed++, async () => meshes);
     boxes.update(state);

@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import type { Assignment } from '../src/classroom/assignment.ts';
 import { assignmentId, assignmentProgressKey } from '../src/classroom/assignment-id.ts';
 import { assignmentUrl, decodeAssignment, encodeAssignment, isAssignmentFragment } from '../src/classroom/assignment-link.ts';
-import { fromBase64Url, toBase64Url } from '../src/classroom/base64url.ts';
+import { fromBase64Url, toBase64Url } from '../src/util/base64url.ts';
 import { loadLevels } from '../src/quest/level-index.ts';
 import { PROGRESS_KEY } from '../src/quest/progress-store.ts';
 

@@ -1,8 +1,8 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { initialState } from '../src/app/app-state.ts';
+import { initialState } from '../src/lab-state/lab-state.ts';
 import { QuestSession, readSessionContext } from '../src/app/quest-session.ts';
 import type { ShowMeStage } from '../src/app/show-me-player.ts';
-import { Store } from '../src/app/store.ts';
+import { Store } from '../src/lab-state/store.ts';
 import type { Assignment } from '../src/classroom/assignment.ts';
 import { assignmentProgressKey } from '../src/classroom/assignment-id.ts';
 import { MemoryStorage, PROGRESS_KEY } from '../src/quest/progress-store.ts';

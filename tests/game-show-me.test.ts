@@ -1,5 +1,5 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import type { AppAction } from '../src/app/app-action.ts';
+import type { LabAction } from '../src/lab-state/lab-action.ts';
 import { kindOfAction, playShowMe, showMeSteps, type ShowMeStage } from '../src/app/show-me-player.ts';
 
 describe('show me: facts are performed through the UI, state changes dispatched', () => {
@@ -12,12 +12,12 @@ describe('show me: facts are performed through the UI, state changes dispatched'
   });
 
   it('turns a render solution into opening the window and one real render', () => {
-    const actions: AppAction[] = [{ type: 'panel.opened', panel: 'render' }, { type: 'render.started' }, { type: 'render.finished', ms: 800 }];
+    const actions: LabAction[] = [{ type: 'panel.opened', panel: 'render' }, { type: 'render.started' }, { type: 'render.finished', ms: 800 }];
     expect(showMeSteps(actions)).toEqual([{ kind: 'open-render' }, { kind: 'render' }]);
   });
 
   it('keeps the order of mixed steps', () => {
-    const select: AppAction = { type: 'selection.changed', selection: { kind: 'object', id: 'ball' } };
+    const select: LabAction = { type: 'selection.changed', selection: { kind: 'object', id: 'ball' } };
     expect(showMeSteps([select, { type: 'view.orbited' }, { type: 'view.flew-to-camera' }, { type: 'panel.opened', panel: 'rays' }])).toEqual([
       { kind: 'dispatch', action: select },
       { kind: 'orbit' },

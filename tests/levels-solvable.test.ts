@@ -1,7 +1,7 @@
 import { existsSync, readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { initialState } from '../src/app/app-state.ts';
-import { Store } from '../src/app/store.ts';
+import { initialState } from '../src/lab-state/lab-state.ts';
+import { Store } from '../src/lab-state/store.ts';
 import { kindOfGoal } from '../src/quest/goal.ts';
 import { loadLevels } from '../src/quest/level-index.ts';
 import { newProgress } from '../src/quest/progress.ts';

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { initialState } from '../src/app/app-state.ts';
-import { Store } from '../src/app/store.ts';
+import { initialState } from '../src/lab-state/lab-state.ts';
+import { Store } from '../src/lab-state/store.ts';
 import type { LoggedEvent } from '../src/quest/event-log.ts';
 import type { RequiredTasks } from '../src/quest/level-gate.ts';
 import { newProgress, type Progress } from '../src/quest/progress.ts';

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import type { AppAction } from '../src/app/app-action.ts';
-import { reduce } from '../src/app/app-reducer.ts';
-import { initialState, type AppState } from '../src/app/app-state.ts';
+import type { LabAction } from '../src/lab-state/lab-action.ts';
+import { reduce } from '../src/lab-state/lab-reducer.ts';
+import { initialState, type LabState } from '../src/lab-state/lab-state.ts';
 import { checkGoal, eventMatches, isRightAnswer, NO_EVENTS, tallyAction, type EventTally } from '../src/quest/goal-check.ts';
 import { goalSchema, type Goal } from '../src/quest/goal.ts';
 import { problemWithPath, readPath } from '../src/quest/state-path.ts';
@@ -13,7 +13,7 @@ const start = initialState(defaultScene());
 const goal = (json: unknown): Goal => goalSchema.parse(json);
 
 /** Runs actions through the reducer, tallying for `g`; returns whether `g` is met after each. */
-function play(g: Goal, actions: AppAction[], state: AppState = start): boolean[] {
+function play(g: Goal, actions: LabAction[], state: LabState = start): boolean[] {
   let tally: EventTally = NO_EVENTS;
   return actions.map((action) => {
     state = reduce(state, action).state;
@@ -22,8 +22,8 @@ function play(g: Goal, actions: AppAction[], state: AppState = start): boolean[]
   });
 }
 
-const orbit: AppAction = { type: 'view.orbited' };
-const zoom: AppAction = { type: 'view.zoomed' };
+const orbit: LabAction = { type: 'view.orbited' };
+const zoom: LabAction = { type: 'view.zoomed' };
 
 describe('paths into the state', () => {
   it('read fields, positions, items by id and lengths; what is not there is undefined', () => {
@@ -61,7 +61,7 @@ describe('event goals', () => {
 
   it('take comparisons in where: all of them must hold at the moment of the action', () => {
     const fewSamples = goal({ event: 'render.finished', where: { 'scene.settings.supersampling': { '>=': 2, '<=': 3 } } });
-    const steps = (s: number): AppAction[] => [{ type: 'settings.changed', changes: { supersampling: s } }, { type: 'render.finished', ms: 1 }];
+    const steps = (s: number): LabAction[] => [{ type: 'settings.changed', changes: { supersampling: s } }, { type: 'render.finished', ms: 1 }];
     expect(play(fewSamples, [...steps(4), ...steps(2)])).toEqual([false, false, false, true]);
   });
 

@@ -2,8 +2,8 @@ import { describe, expect, it } from 'vitest';
 import { newProgress, pointsOf, type Progress } from '../src/quest/progress.ts';
 import { exportProgress, MemoryStorage, parseProgressJson, PROGRESS_KEY, ProgressStore, type KeyValueStorage } from '../src/quest/progress-store.ts';
 import { QuestEngine } from '../src/quest/quest-engine.ts';
-import { initialState } from '../src/app/app-state.ts';
-import { Store } from '../src/app/store.ts';
+import { initialState } from '../src/lab-state/lab-state.ts';
+import { Store } from '../src/lab-state/store.ts';
 import { catalogOf, FakeClock, levelWithId } from './quest-fixtures.ts';
 
 /** Progress with something in it: a level's first task done, a render, a badge. */

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { InstancedMesh, Matrix4, Raycaster, ShaderLib, Vector3, type InstancedBufferAttribute, type MeshBasicMaterial } from 'three';
-import { DEFAULT_RAY_VIEW, type RayViewOptions } from '../src/app/app-state.ts';
+import { DEFAULT_RAY_VIEW, type RayViewOptions } from '../src/lab-state/lab-state.ts';
 import { CONE_OPACITY, LOOP_PAUSE_S, RAY_CONES_NAME, RAY_CYLINDERS_NAME, RayPool } from '../src/view/ray-pool.ts';
 import { ALPHA_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, patchRayShader } from '../src/view/ray-shader.ts';
 import { hexToColor, rayPalette } from '../src/view/ray-palette.ts';

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { DEFAULT_RAY_VIEW, type RayViewOptions } from '../src/app/app-state.ts';
+import { DEFAULT_RAY_VIEW, type RayViewOptions } from '../src/lab-state/lab-state.ts';
 import { hexToColor, RAY_COLOR_KEYS, rayPalette, type RayColorKey } from '../src/view/ray-palette.ts';
 import {
   contributionTone,

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { decodeSceneLink, encodeSceneLink, sceneLinkUrl } from '../src/app/scene-link.ts';
-import { toBase64Url } from '../src/classroom/base64url.ts';
+import { toBase64Url } from '../src/util/base64url.ts';
 import { defaultScene } from '../src/scene/scene-defaults.ts';
 
 async function deflate(text: string): Promise<string> {

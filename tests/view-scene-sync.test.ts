@@ -1,8 +1,8 @@
 import { type BufferGeometry, type Mesh, type MeshPhongMaterial, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
-import { type AppAction } from '../src/app/app-action.ts';
-import { reduce } from '../src/app/app-reducer.ts';
-import { type AppState, initialState } from '../src/app/app-state.ts';
+import { type LabAction } from '../src/lab-state/lab-action.ts';
+import { reduce } from '../src/lab-state/lab-reducer.ts';
+import { type LabState, initialState } from '../src/lab-state/lab-state.ts';
 import type { MeshData, MeshLibrary } from '../src/scene/mesh-data.ts';
 import { defaultScene } from '../src/scene/scene-defaults.ts';
 import { TRANSPARENT_OPACITY } from '../src/view/raster-material.ts';
@@ -10,7 +10,7 @@ import { type MeshLoader, SceneSync } from '../src/view/scene-sync.ts';
 
 const TRIANGLE: MeshData = { positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0]), normals: null, indices: new Uint32Array([0, 1, 2]) };
 
-function apply(state: AppState, ...actions: AppAction[]): AppState {
+function apply(state: LabState, ...actions: LabAction[]): LabState {
   for (const action of actions) {
     const { state: next, error } = reduce(state, action);
     if (error) throw new Error(error);

@@ -1,13 +1,13 @@
 import { expect, type Locator, type Page } from '@playwright/test';
-import type { AppState } from '../../src/app/app-state.ts';
+import type { LabState } from '../../src/lab-state/lab-state.ts';
 
 // Steps of the game as a student plays it: through the buttons, fields and keys of the page.
 // The store and the view are only read (state, where the ball is on screen), never driven.
 // Shared by the game's and the classroom's specs.
 
 /** The lab's current app state (read only). */
-export async function state(page: Page): Promise<AppState> {
-  return page.evaluate(() => (document.querySelector('rt-app rt-lab') as unknown as { store: { state: AppState } }).store.state);
+export async function state(page: Page): Promise<LabState> {
+  return page.evaluate(() => (document.querySelector('rt-app rt-lab') as unknown as { store: { state: LabState } }).store.state);
 }
 
 /** Console errors and uncaught exceptions of the page, collected from now on. */
@@ -54,7 +54,7 @@ export async function objectOnScreen(page: Page, id: string): Promise<{ x: numbe
       labView: { projectToView(p: readonly number[]): { x: number; y: number } | null };
       shadowRoot: ShadowRoot;
     };
-    const lab = document.querySelector('rt-app rt-lab') as unknown as { store: { state: AppState } };
+    const lab = document.querySelector('rt-app rt-lab') as unknown as { store: { state: LabState } };
     const point = view.labView.projectToView(lab.store.state.scene.objects.find((o) => o.id === objectId)!.position)!;
     const box = view.shadowRoot.querySelector('canvas')!.getBoundingClientRect();
     return { x: box.left + point.x, y: box.top + point.y };

@@ -9,7 +9,7 @@ import type { Scene } from '../scene/scene.ts';
 import { assignmentProgressKey } from '../classroom/assignment-id.ts';
 import { assignmentCatalog } from './assignment-catalog.ts';
 import { playShowMe, showMeSteps, type ShowMeStage } from './show-me-player.ts';
-import type { Store } from './store.ts';
+import type { Store } from '../lab-state/store.ts';
 
 /**
  * The game's controller: ties the store (the lab), the quest engine (the rules) and the

@@ -1,5 +1,5 @@
-import { isRecord } from '../quest/is-record.ts';
-import { readJson } from '../quest/read-json.ts';
+import { isRecord } from '../util/is-record.ts';
+import { readJson } from '../util/read-json.ts';
 import { parseScene, type SceneParseResult } from '../scene/scene-schema.ts';
 import type { Scene } from '../scene/scene.ts';
 

@@ -1,5 +1,5 @@
-import { fromBase64Url, toBase64Url } from '../classroom/base64url.ts';
-import { readJson } from '../quest/read-json.ts';
+import { fromBase64Url, toBase64Url } from '../util/base64url.ts';
+import { readJson } from '../util/read-json.ts';
 import { parseScene, type SceneParseResult } from '../scene/scene-schema.ts';
 import type { Scene } from '../scene/scene.ts';
 import { MAX_SCENE_FILE_BYTES } from './scene-file.ts';

@@ -1,4 +1,4 @@
-import type { AppAction } from './app-action.ts';
+import type { LabAction } from '../lab-state/lab-action.ts';
 
 /**
  * "Show me" (the hint ladder's last rung) performs a task's solution so the learner SEES it
@@ -10,7 +10,7 @@ import type { AppAction } from './app-action.ts';
 
 /** One visible step of a solution. */
 export type ShowMeStep =
-  | { kind: 'dispatch'; action: AppAction }
+  | { kind: 'dispatch'; action: LabAction }
   | { kind: 'orbit' }
   | { kind: 'pan' }
   | { kind: 'zoom' }
@@ -20,7 +20,7 @@ export type ShowMeStep =
   | { kind: 'open-panel'; panel: string };
 
 /** Whether an action is a fact reported by the UI (performed through it) or a state change (dispatched). */
-export function kindOfAction(action: AppAction): 'fact' | 'state' {
+export function kindOfAction(action: LabAction): 'fact' | 'state' {
   switch (action.type) {
     case 'view.orbited':
     case 'view.panned':
@@ -43,7 +43,7 @@ export function kindOfAction(action: AppAction): 'fact' | 'state' {
  * a real render, whose window reports both; a cancel or a save (of an image or a scene)
  * cannot be shown honestly (nothing to cancel, a file dialog) and is passed over.
  */
-export function showMeSteps(actions: readonly AppAction[]): ShowMeStep[] {
+export function showMeSteps(actions: readonly LabAction[]): ShowMeStep[] {
   const steps: ShowMeStep[] = [];
   const last = () => steps[steps.length - 1];
   for (const action of actions) {
@@ -80,7 +80,7 @@ export function showMeSteps(actions: readonly AppAction[]): ShowMeStep[] {
 
 /** What the player needs of the lab to perform a step; each returns when the step is under way. */
 export interface ShowMeStage {
-  dispatch(action: AppAction): void;
+  dispatch(action: LabAction): void;
   orbit(): void;
   pan(): void;
   zoom(): void;

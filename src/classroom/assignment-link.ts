@@ -1,9 +1,9 @@
 import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
 import type { LevelCatalog } from '../quest/level-index.ts';
-import { readJson } from '../quest/read-json.ts';
+import { readJson } from '../util/read-json.ts';
 import type { Assignment } from './assignment.ts';
 import { assignmentSchema } from './assignment-schema.ts';
-import { fromBase64Url, toBase64Url } from './base64url.ts';
+import { fromBase64Url, toBase64Url } from '../util/base64url.ts';
 
 /**
  * An assignment as a link: `#/a/<version>.<payload>`, the payload being the assignment's

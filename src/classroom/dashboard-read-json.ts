@@ -1,8 +1,8 @@
 import { z } from 'zod';
 import { eventLogSchema } from '../quest/event-log.ts';
 import { PROGRESS_KIND } from '../quest/progress.ts';
-import { isRecord } from '../quest/is-record.ts';
-import { readJson } from '../quest/read-json.ts';
+import { isRecord } from '../util/is-record.ts';
+import { readJson } from '../util/read-json.ts';
 import { readLog } from './task-attempts.ts';
 import { EXPORT_FORMAT, EXPORT_VERSION } from './export-json.ts';
 import type { ClassRecord, FileRead } from './dashboard-record.ts';

@@ -1,6 +1,6 @@
 import type { KeyValueStorage } from '../quest/progress-store.ts';
-import { readJson } from '../quest/read-json.ts';
-import { isRecord } from '../quest/is-record.ts';
+import { readJson } from '../util/read-json.ts';
+import { isRecord } from '../util/is-record.ts';
 import type { SurveySubmission } from './survey-answers.ts';
 
 /**

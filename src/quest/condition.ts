@@ -1,5 +1,5 @@
 import { z } from 'zod';
-import { isRecord } from './is-record.ts';
+import { isRecord } from '../util/is-record.ts';
 
 /**
  * How goals compare a value of the state (or of an action) with the value a level expects.

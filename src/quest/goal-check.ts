@@ -1,5 +1,5 @@
-import type { AppAction } from '../app/app-action.ts';
-import type { AppState } from '../app/app-state.ts';
+import type { LabAction } from '../lab-state/lab-action.ts';
+import type { LabState } from '../lab-state/lab-state.ts';
 import { compare, conditionHolds } from './condition.ts';
 import { goalParts, type EventGoal, type Goal, type QuizGoal } from './goal.ts';
 import { readPath } from './state-path.ts';
@@ -18,7 +18,7 @@ export type EventTally = ReadonlyMap<EventGoal, number>;
 export const NO_EVENTS: EventTally = new Map();
 
 /** The tally after `action`, which left the app in `state`: every event goal it matches counts once more. */
-export function tallyAction(goal: Goal, tally: EventTally, state: AppState, action: AppAction): EventTally {
+export function tallyAction(goal: Goal, tally: EventTally, state: LabState, action: LabAction): EventTally {
   let next: Map<EventGoal, number> | undefined;
   for (const { goal: part } of goalParts(goal)) {
     if (!('event' in part) || !eventMatches(part, state, action)) continue;
@@ -29,7 +29,7 @@ export function tallyAction(goal: Goal, tally: EventTally, state: AppState, acti
 }
 
 /** The action is the goal's event, with the goal's `with` fields, leaving the state as `where` says. */
-export function eventMatches(goal: EventGoal, state: AppState, action: AppAction): boolean {
+export function eventMatches(goal: EventGoal, state: LabState, action: LabAction): boolean {
   if (action.type !== goal.event) return false;
   const holds = (root: unknown, conditions: EventGoal['where']) =>
     Object.entries(conditions ?? {}).every(([path, condition]) => conditionHolds(readPath(root, path), condition));
@@ -41,7 +41,7 @@ export function eventMatches(goal: EventGoal, state: AppState, action: AppAction
  * Quiz and info goals are never met here: they complete through the quest engine's
  * `answerQuiz` and `next`.
  */
-export function checkGoal(goal: Goal, state: AppState, tally: EventTally): boolean {
+export function checkGoal(goal: Goal, state: LabState, tally: EventTally): boolean {
   if ('event' in goal) return (tally.get(goal) ?? 0) >= (goal.times ?? 1);
   if ('state' in goal) return compare(readPath(state, goal.state), goal.op, goal.value);
   if ('all' in goal) return goal.all.every((part) => checkGoal(part, state, tally));

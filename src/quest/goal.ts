@@ -1,11 +1,11 @@
 import { z } from 'zod';
-import type { AppActionType } from '../app/app-action.ts';
+import type { LabActionType } from '../lab-state/lab-action.ts';
 import { describeValue } from '../scene/scene-issues.ts';
 import { wholeNumberIn } from '../scene/scene-schema-parts.ts';
-import { actionFields, APP_ACTION_TYPES } from './app-action-schema.ts';
+import { actionFields, LAB_ACTION_TYPES } from './lab-action-schema.ts';
 import { chosenBy } from './chosen-schema.ts';
 import { COMPARISONS, conditionSchema, problemWithComparison, type Comparison, type JsonValue } from './condition.ts';
-import { isRecord } from './is-record.ts';
+import { isRecord } from '../util/is-record.ts';
 import { localizedTextSchema, type LocalizedText } from './localized-text.ts';
 import { parsePath } from './state-path.ts';
 
@@ -21,7 +21,7 @@ export type Conditions = Record<string, JsonValue>;
 /** Done when this action happens (`times` times since the task was shown, default once),
  * with these fields, leaving the state like this. */
 export interface EventGoal {
-  event: AppActionType;
+  event: LabActionType;
   with?: Conditions;
   where?: Conditions;
   times?: number;
@@ -74,7 +74,7 @@ const pathSyntax = z.string().superRefine((path, context) => {
 
 const eventGoalSchema = z
   .strictObject({
-    event: z.enum(APP_ACTION_TYPES),
+    event: z.enum(LAB_ACTION_TYPES),
     with: z.record(pathSyntax, conditionSchema).optional(),
     where: z.record(pathSyntax, conditionSchema).optional(),
     times: wholeNumberIn([1, 100]).optional(),

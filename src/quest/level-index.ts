@@ -3,7 +3,7 @@ import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
 import { kebabId } from './kebab-id.ts';
 import { parseLevelJson, type Level } from './level-schema.ts';
 import { localizedTextSchema, type LocalizedText } from './localized-text.ts';
-import { readJson } from './read-json.ts';
+import { readJson } from '../util/read-json.ts';
 
 /**
  * `levels/index.json`: the chapters in order, each with its levels in order (Learn Git

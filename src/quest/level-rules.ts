@@ -1,4 +1,4 @@
-import { initialState, type AppState } from '../app/app-state.ts';
+import { initialState, type LabState } from '../lab-state/lab-state.ts';
 import type { Scene } from '../scene/scene.ts';
 import { formatIssues } from '../scene/scene-issues.ts';
 import { goalParts, kindOfGoal } from './goal.ts';
@@ -80,11 +80,11 @@ function taskProblems(level: Level, index: number): Problem[] {
  * The state a level starts in, with the parts that start empty filled in (something
  * selected, a pixel selected) so that paths into them can be checked too.
  */
-function sampleState(scene: Scene): AppState {
+function sampleState(scene: Scene): LabState {
   return { ...initialState(scene), selection: { kind: 'object', id: '' }, selectedPixel: [0, 0] };
 }
 
-function pathProblem(path: string, sample: AppState, at: (string | number)[]): Problem[] {
+function pathProblem(path: string, sample: LabState, at: (string | number)[]): Problem[] {
   const problem = problemWithPath(path, sample);
   return problem ? [{ path: at, message: problem }] : [];
 }

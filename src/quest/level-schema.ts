@@ -2,13 +2,13 @@ import { z } from 'zod';
 import { sceneSchema } from '../scene/scene-schema.ts';
 import { describeIssue, describeValue, formatIssues } from '../scene/scene-issues.ts';
 import { wholeNumberIn } from '../scene/scene-schema-parts.ts';
-import { appActionSchema } from './app-action-schema.ts';
+import { labActionSchema } from './lab-action-schema.ts';
 import { goalSchema } from './goal.ts';
 import { kebabId } from './kebab-id.ts';
 import { isGuideTarget, LAB_CONTROLS, UI_PANELS, type GuideTarget } from './lab-controls.ts';
 import { levelRules, MANDATORY_TASKS } from './level-rules.ts';
 import { localizedTextSchema } from './localized-text.ts';
-import { readJson } from './read-json.ts';
+import { readJson } from '../util/read-json.ts';
 
 /**
  * A level file (`levels/<id>.level.json`): an intro, a starting scene, which parts of the
@@ -35,7 +35,7 @@ const taskSchema = z
     goal: goalSchema,
     hints: z.array(localizedTextSchema).max(5).default([]).describe('Text hints, shown one at a time (the first rung of the hint ladder).'),
     guide: guideTargetSchema.optional().describe('The control the second rung rings.'),
-    solution: z.array(appActionSchema).min(1).optional().describe('The actions that complete the task: "show me" performs them.'),
+    solution: z.array(labActionSchema).min(1).optional().describe('The actions that complete the task: "show me" performs them.'),
   })
   .transform((task) => ({ ...task, points: task.points ?? (task.mandatory ? DEFAULT_POINTS.mandatory : DEFAULT_POINTS.optional) }));
 

@@ -1,8 +1,8 @@
 import { describeIssue, describeValue, formatIssues } from '../scene/scene-issues.ts';
 import type { QuestClock } from './event-log.ts';
-import { isRecord } from './is-record.ts';
+import { isRecord } from '../util/is-record.ts';
 import { newProgress, PROGRESS_KIND, PROGRESS_VERSION, progressSchema, type Progress } from './progress.ts';
-import { readJson } from './read-json.ts';
+import { readJson } from '../util/read-json.ts';
 
 /**
  * Saves progress between visits (localStorage in the browser) and reads it back. Saved data

@@ -1,5 +1,5 @@
-import type { AppAction } from '../app/app-action.ts';
-import type { AppState } from '../app/app-state.ts';
+import type { LabAction } from '../lab-state/lab-action.ts';
+import type { LabState } from '../lab-state/lab-state.ts';
 import type { Scene } from '../scene/scene.ts';
 import { sameBadge, type Badge, type EarnedBadge } from './badges.ts';
 import { EventLog, systemClock, type HintStep, type HowCompleted, type LoggedEvent, type QuestClock, type QuestEvent } from './event-log.ts';
@@ -72,7 +72,7 @@ export interface LevelView {
 }
 
 /** What "show me" performs: the solution's actions, one by one through the store; or a quiz's answer. */
-export type ShowMe = { kind: 'actions'; actions: AppAction[] } | { kind: 'answer'; answer: number };
+export type ShowMe = { kind: 'actions'; actions: LabAction[] } | { kind: 'answer'; answer: number };
 
 export type OpenLevelResult = { ok: true; level: Level; scene: Scene } | { ok: false; reason: 'unknown' | 'broken' | 'locked' };
 
@@ -104,7 +104,7 @@ export class QuestEngine {
   private sandbox: Scene | null;
   private resumable: Progress['current'];
   private active: ActiveLevel | null = null;
-  private lastState: AppState | null = null;
+  private lastState: LabState | null = null;
   private lastActivity: number;
   private visible = true;
   private readonly listeners = new Set<QuestListener>();
@@ -234,7 +234,7 @@ export class QuestEngine {
   // ─── Fed by the store ──────────────────────────────────────────────────────
 
   /** The store's listener: a refused action (error) changed nothing and counts for nothing. */
-  readonly observe = (state: AppState, action: AppAction, error?: string): void => {
+  readonly observe = (state: LabState, action: LabAction, error?: string): void => {
     if (error !== undefined) return;
     this.lastActivity = this.log.now();
     const levelId = this.active?.level.id ?? null;

@@ -1,5 +1,5 @@
 /**
- * Paths into the app state (and into an action), as goals write them:
+ * Paths into the lab state (and into an action), as goals write them:
  *
  *   scene.settings.supersampling          a field of a field
  *   scene.camera.pixels[0]                an item of a list by position (from 0)
@@ -12,7 +12,7 @@
  * there is no ball.
  */
 
-import { isRecord } from './is-record.ts';
+import { isRecord } from '../util/is-record.ts';
 
 export type PathStep = { kind: 'field'; name: string } | { kind: 'index'; index: number } | { kind: 'id'; id: string };
 

@@ -1,7 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { css, html, nothing, type PropertyValues } from 'lit';
-import type { AppAction } from '../app/app-action.ts';
-import { type AppState, BVH_MAX_DEPTH, type BvhViewOptions } from '../app/app-state.ts';
+import type { LabAction } from '../lab-state/lab-action.ts';
+import { type LabState, BVH_MAX_DEPTH, type BvhViewOptions } from '../lab-state/lab-state.ts';
 import { loadMeshes } from '../app/load-meshes-browser.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';
@@ -86,7 +86,7 @@ export class RtBvhPanel extends StorePanel {
   }
 
   /** Counts the tests of the selected pixel's ray and the boxes at the chosen depth, once the models are loaded. */
-  private async count(state: AppState): Promise<void> {
+  private async count(state: LabState): Promise<void> {
     const request = ++this.request;
     const { scene, selectedPixel: pixel } = state;
     const depth = state.bvh.depth;
@@ -116,7 +116,7 @@ export class RtBvhPanel extends StorePanel {
     const state = this.state;
     if (!state) return html``;
     const bvh = state.bvh;
-    const set = (changes: Partial<BvhViewOptions>): AppAction => ({ type: 'bvh.changed', changes });
+    const set = (changes: Partial<BvhViewOptions>): LabAction => ({ type: 'bvh.changed', changes });
     return html`
       <rt-panel-section heading=${msg('Boxes')} name="bvh">
         ${this.switch(
@@ -167,7 +167,7 @@ export class RtBvhPanel extends StorePanel {
     return `${whole} ${boxes}`;
   }
 
-  private rayCounts(state: AppState) {
+  private rayCounts(state: LabState) {
     if (this.failure) return html`<p class="counts" role="alert">${msg(str`The models could not be loaded: ${this.failure}`)}</p>`;
     const pixel = state.selectedPixel;
     if (!pixel) return html`<p class="counts muted">${msg('Select a pixel of the camera’s screen to count what its ray tests.')}</p>`;

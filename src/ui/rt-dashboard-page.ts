@@ -6,7 +6,7 @@ import { MAX_EXPORT_BYTES } from '../classroom/dashboard-read-file.ts';
 import type { SkippedFile } from '../classroom/dashboard-record.ts';
 import { summarizeLevels, type LevelSummary } from '../classroom/dashboard-summary.ts';
 import { summarizeSurveys, type SurveysSummary } from '../classroom/dashboard-survey.ts';
-import { downloadText } from '../classroom/download-file.ts';
+import { downloadText } from '../util/download-file.ts';
 import { surveyById } from '../classroom/surveys.ts';
 import { localize, type Locale } from '../quest/localized-text.ts';
 import { playableLevels } from '../quest/level-index.ts';

@@ -2,7 +2,7 @@ import { msg, str } from '@lit/localize';
 import { css, html, type CSSResultGroup } from 'lit';
 import { readSceneFile, sceneFileName, sceneFileText } from '../app/scene-file.ts';
 import { LONG_LINK_CHARACTERS, sceneLinkUrl } from '../app/scene-link.ts';
-import { downloadText } from '../classroom/download-file.ts';
+import { downloadText } from '../util/download-file.ts';
 import { messageLine } from './status-message.ts';
 import { StorePanel } from './store-panel.ts';
 

@@ -1,12 +1,12 @@
 import { msg, str } from '@lit/localize';
 import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
-import type { AppState } from '../app/app-state.ts';
-import { initialState } from '../app/app-state.ts';
+import type { LabState } from '../lab-state/lab-state.ts';
+import { initialState } from '../lab-state/lab-state.ts';
 import { loadMeshes } from '../app/load-meshes-browser.ts';
 import type { RenderPool } from '../app/render-pool.ts';
 import type { ScreenRays } from '../app/screen-rays.ts';
 import { ScreenTracer } from '../app/screen-tracer.ts';
-import { Store } from '../app/store.ts';
+import { Store } from '../lab-state/store.ts';
 import { createBrowserRenderPool } from '../app/web-worker-port.ts';
 import { loadBrowserCatalog } from '../app/level-catalog-browser.ts';
 import { QuestSession } from '../app/quest-session.ts';
@@ -247,7 +247,7 @@ export class RtLab extends LitElement {
 
   /** The app's one source of truth (public: tests and the game read it). */
   readonly store = new Store(initialState(defaultScene()));
-  declare state: AppState;
+  declare state: LabState;
   declare screenRays: ScreenRays | null;
   declare hover: RayHoverDetail | null;
   declare renderOpen: boolean;

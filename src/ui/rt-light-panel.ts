@@ -1,6 +1,6 @@
 import { msg, str } from '@lit/localize';
 import { html, nothing, type TemplateResult } from 'lit';
-import type { AppAction } from '../app/app-action.ts';
+import type { LabAction } from '../lab-state/lab-action.ts';
 import type { AreaLight, Light, LightType, SpotLight } from '../scene/scene.ts';
 import { LIMITS } from '../scene/scene-limits.ts';
 import { positionSpec, rotationSpec } from './placement-specs.ts';
@@ -29,7 +29,7 @@ export class RtLightPanel extends StorePanel {
         msg('Lights are the bulb, cone and panel shapes in the 3D view.'),
       );
     }
-    const changed = (changes: Partial<Light>): AppAction => ({ type: 'light.changed', id: light.id, changes });
+    const changed = (changes: Partial<Light>): LabAction => ({ type: 'light.changed', id: light.id, changes });
     return html`
       <rt-panel-section heading=${msg('Light')} name="light">
         ${this.identity(light.name ?? light.id, lightTypeName(light.type))}
@@ -89,7 +89,7 @@ export class RtLightPanel extends StorePanel {
     `;
   }
 
-  private angleAttenuation(light: SpotLight | AreaLight, changed: (changes: Partial<Light>) => AppAction): TemplateResult {
+  private angleAttenuation(light: SpotLight | AreaLight, changed: (changes: Partial<Light>) => LabAction): TemplateResult {
     return this.slider(
       {
         name: 'angleAttenuation',
@@ -104,7 +104,7 @@ export class RtLightPanel extends StorePanel {
     );
   }
 
-  private spotControls(light: SpotLight, changed: (changes: Partial<Light>) => AppAction): TemplateResult {
+  private spotControls(light: SpotLight, changed: (changes: Partial<Light>) => LabAction): TemplateResult {
     return html`
       ${this.slider(
         {
@@ -123,7 +123,7 @@ export class RtLightPanel extends StorePanel {
     `;
   }
 
-  private areaControls(light: AreaLight, changed: (changes: Partial<Light>) => AppAction): TemplateResult {
+  private areaControls(light: AreaLight, changed: (changes: Partial<Light>) => LabAction): TemplateResult {
     const n = light.samples;
     return html`
       ${this.angleAttenuation(light, changed)}

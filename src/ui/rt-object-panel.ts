@@ -1,6 +1,6 @@
 import { msg } from '@lit/localize';
 import { css, html, type TemplateResult } from 'lit';
-import type { AppAction } from '../app/app-action.ts';
+import type { LabAction } from '../lab-state/lab-action.ts';
 import type { Material, SceneObject } from '../scene/scene.ts';
 import { LIMITS } from '../scene/scene-limits.ts';
 import { MATERIAL_PRESETS, matchingPreset, type MaterialPresetName } from './material-presets.ts';
@@ -64,7 +64,7 @@ export class RtObjectPanel extends StorePanel {
 
   private materialControls(object: SceneObject): TemplateResult {
     const m = object.material;
-    const material = (changes: Partial<Material>): AppAction => ({ type: 'material.changed', id: object.id, changes });
+    const material = (changes: Partial<Material>): LabAction => ({ type: 'material.changed', id: object.id, changes });
     return html`
       ${this.color(
         { name: 'color', label: msg('Colour'), tooltip: msg('The surface colour, as red, green and blue from 0 to 1 (#ff0000 is 1, 0, 0).') },
@@ -141,7 +141,7 @@ export class RtObjectPanel extends StorePanel {
     ${this.errorLine('presets')}`;
   }
 
-  private changed(object: SceneObject, changes: Partial<Omit<SceneObject, 'id' | 'material'>>): AppAction {
+  private changed(object: SceneObject, changes: Partial<Omit<SceneObject, 'id' | 'material'>>): LabAction {
     return { type: 'object.changed', id: object.id, changes };
   }
 }

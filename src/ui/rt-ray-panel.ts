@@ -1,7 +1,7 @@
 import { msg } from '@lit/localize';
 import { html } from 'lit';
-import type { AppAction } from '../app/app-action.ts';
-import type { RayViewOptions } from '../app/app-state.ts';
+import type { LabAction } from '../lab-state/lab-action.ts';
+import type { RayViewOptions } from '../lab-state/lab-state.ts';
 import './rt-ray-legend.ts';
 import { StorePanel } from './store-panel.ts';
 
@@ -40,7 +40,7 @@ export class RtRayPanel extends StorePanel {
   override render() {
     const rays = this.state?.rays;
     if (!rays) return html``;
-    const set = (changes: Partial<RayViewOptions>): AppAction => ({ type: 'rays.changed', changes });
+    const set = (changes: Partial<RayViewOptions>): LabAction => ({ type: 'rays.changed', changes });
     return html`
       <rt-panel-section heading=${msg('Rays')} name="rays">
         ${this.switch(
@@ -178,7 +178,7 @@ export class RtRayPanel extends StorePanel {
   }
 
   /** A radius slider in centimetres over a value in metres. */
-  private radiusSlider(name: string, label: string, tooltip: string, metres: number, disabled: boolean, action: (metres: number) => AppAction) {
+  private radiusSlider(name: string, label: string, tooltip: string, metres: number, disabled: boolean, action: (metres: number) => LabAction) {
     return this.slider({ name, label, tooltip, ...RADIUS_CM, unit: 'cm', disabled }, metres * CM_PER_M, (cm) => action(cm / CM_PER_M));
   }
 }

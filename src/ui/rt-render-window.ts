@@ -6,8 +6,8 @@ import { loadMeshes } from '../app/load-meshes-browser.ts';
 import type { RenderImage, RenderJob, RenderProgress } from '../app/render-job.ts';
 import type { RenderPool } from '../app/render-pool.ts';
 import { pngFileName, savePng } from '../app/save-png.ts';
-import type { AppState } from '../app/app-state.ts';
-import type { Store } from '../app/store.ts';
+import type { LabState } from '../lab-state/lab-state.ts';
+import type { Store } from '../lab-state/store.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';
 import type { Scene } from '../scene/scene.ts';
 import { BandPainter } from './band-painter.ts';
@@ -46,7 +46,7 @@ interface ShownRender {
  * after it, the window says so and offers to render again.
  *
  * Properties:
- * - `store` (Store): the app state; renders `state.scene` at `settings.imageSize` and
+ * - `store` (Store): the lab state; renders `state.scene` at `settings.imageSize` and
  *   dispatches render.started, render.finished {ms}, render.cancelled and render.saved.
  * - `pool` (RenderPool): the app's worker pool (not disposed by this element).
  * - `rasterSnapshot` (RasterSnapshot, optional): the raster picture, taken when a render
@@ -359,7 +359,7 @@ export class RtRenderWindow extends LitElement {
     if (this.store) this.onState(this.store.state);
   }
 
-  private onState({ scene }: AppState): void {
+  private onState({ scene }: LabState): void {
     if (scene === this.seenScene) return;
     this.seenScene = scene;
     // By content, not identity: every edit makes a new scene object, even one that changes a

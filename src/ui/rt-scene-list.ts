@@ -1,8 +1,8 @@
 import { msg, str } from '@lit/localize';
 import { css, html, nothing, type PropertyValues, type TemplateResult } from 'lit';
 import { repeat } from 'lit/directives/repeat.js';
-import type { AppAction } from '../app/app-action.ts';
-import type { Selection } from '../app/app-state.ts';
+import type { LabAction } from '../lab-state/lab-action.ts';
+import type { Selection } from '../lab-state/lab-state.ts';
 import { MESH_ASSET_NAMES } from '../scene/mesh-assets.ts';
 import type { LightType } from '../scene/scene.ts';
 import { cameraIcon, lightIcon, shapeIcon } from './scene-icons.ts';
@@ -185,7 +185,7 @@ export class RtSceneList extends StorePanel {
     return this.renderRoot.querySelector<HTMLElement>(`[role='option'][data-key='${CSS.escape(key)}']`);
   }
 
-  private add(action: AppAction): void {
+  private add(action: LabAction): void {
     this.adding = false;
     this.focusSelected = true;
     this.send('edit', action);
@@ -269,7 +269,7 @@ export class RtSceneList extends StorePanel {
   }
 
   private addButtons(): TemplateResult {
-    const button = (label: string, title: string, action: AppAction) =>
+    const button = (label: string, title: string, action: LabAction) =>
       html`<button type="button" title=${title} @click=${() => this.add(action)}>${label}</button>`;
     return html`<div class="add" id="add">
       <fieldset>

@@ -1,7 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { css, html, LitElement, type PropertyValues } from 'lit';
-import type { AppState } from '../app/app-state.ts';
-import type { Store } from '../app/store.ts';
+import type { LabState } from '../lab-state/lab-state.ts';
+import type { Store } from '../lab-state/store.ts';
 import { gizmoModesFor } from '../view/gizmo-changes.ts';
 import { LabView, type RayHoverDetail } from '../view/lab-view.ts';
 import type { ViewCommand } from '../view/view-commands.ts';
@@ -53,7 +53,7 @@ export class RtSceneView extends LitElement {
 
   /** The app's store: the view draws its scene and dispatches selections, gizmo drags and view gestures. */
   declare store: Store | undefined;
-  declare private state: AppState | undefined;
+  declare private state: LabState | undefined;
   declare private atCamera: boolean;
   declare private helpOpen: boolean;
   private view: LabView | null = null;
@@ -165,12 +165,12 @@ export class RtSceneView extends LitElement {
 }
 
 /** Modes shown as available: all when nothing is selected (choosing a mode first is fine). */
-function modesShown(state: AppState) {
+function modesShown(state: LabState) {
   return state.selection ? gizmoModesFor(state.selection, state.scene) : (['translate', 'rotate', 'scale'] as const);
 }
 
 /** What a screen reader hears for the canvas: the scene in one sentence, and how to move around. */
-function describe(state: AppState): string {
+function describe(state: LabState): string {
   const { scene, selection } = state;
   const name = scene.name ?? msg('Untitled scene');
   const selected =

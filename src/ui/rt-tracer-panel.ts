@@ -1,6 +1,6 @@
 import { msg, str } from '@lit/localize';
 import { html } from 'lit';
-import type { AppAction } from '../app/app-action.ts';
+import type { LabAction } from '../lab-state/lab-action.ts';
 import type { Camera, LightType, RenderSettings, SamplePattern } from '../scene/scene.ts';
 import { LIMITS } from '../scene/scene-limits.ts';
 import { StorePanel, type ControlText } from './store-panel.ts';
@@ -20,8 +20,8 @@ export class RtTracerPanel extends StorePanel {
   override render() {
     if (!this.state) return html``;
     const { settings, camera } = this.state.scene;
-    const set = (changes: Partial<RenderSettings>): AppAction => ({ type: 'settings.changed', changes });
-    const cam = (changes: Partial<Camera>): AppAction => ({ type: 'camera.changed', changes });
+    const set = (changes: Partial<RenderSettings>): LabAction => ({ type: 'settings.changed', changes });
+    const cam = (changes: Partial<Camera>): LabAction => ({ type: 'camera.changed', changes });
     const s = settings.supersampling;
     return html`
       <rt-panel-section heading=${msg('Ray tracer')} name="tracer">

@@ -1,6 +1,6 @@
 import { msg } from '@lit/localize';
 import { css, html, LitElement, svg, type SVGTemplateResult, type TemplateResult } from 'lit';
-import { DEFAULT_GIZMO, type GizmoOptions } from '../app/app-state.ts';
+import { DEFAULT_GIZMO, type GizmoOptions } from '../lab-state/lab-state.ts';
 import type { GizmoMode } from '../view/gizmo-changes.ts';
 import type { ViewCommand } from '../view/view-commands.ts';
 

@@ -1,7 +1,7 @@
 import { css, html, LitElement, nothing, type CSSResultGroup, type PropertyValues, type TemplateResult } from 'lit';
-import type { AppAction } from '../app/app-action.ts';
-import type { AppState } from '../app/app-state.ts';
-import type { Store } from '../app/store.ts';
+import type { LabAction } from '../lab-state/lab-action.ts';
+import type { LabState } from '../lab-state/lab-state.ts';
+import type { Store } from '../lab-state/store.ts';
 import type { Color } from '../scene/scene.ts';
 import { LIMITS } from '../scene/scene-limits.ts';
 import type { ValueDetail } from './control-element.ts';
@@ -88,7 +88,7 @@ export class StorePanel extends LitElement {
   /** The app's one store. */
   declare store: Store | undefined;
   /** The store's state as last seen. */
-  declare protected state: AppState | undefined;
+  declare protected state: LabState | undefined;
   /** The store's reasons for refusing, by control name. */
   declare protected errors: Readonly<Record<string, string | undefined>>;
   private unsubscribe: (() => void) | undefined;
@@ -124,14 +124,14 @@ export class StorePanel extends LitElement {
     this.show(this.store?.state);
   }
 
-  private show(state: AppState | undefined): void {
+  private show(state: LabState | undefined): void {
     // Reasons belong to the item they were about: another selection starts clean.
     if (state?.selection !== this.state?.selection) this.errors = {};
     this.state = state;
   }
 
   /** Dispatches `action` for the control `name`; keeps (or clears) the reason it was refused. */
-  protected send(name: string, action: AppAction): void {
+  protected send(name: string, action: LabAction): void {
     const error = this.store?.dispatch(action);
     if (error !== this.errors[name]) this.errors = { ...this.errors, [name]: error };
   }
@@ -157,7 +157,7 @@ export class StorePanel extends LitElement {
   }
 
   /** A slider that dispatches `action(value)` while dragging and on commit; `hint` goes under it. */
-  protected slider(spec: SliderSpec, value: number, action: (value: number) => AppAction, hint?: TemplateResult | string): TemplateResult {
+  protected slider(spec: SliderSpec, value: number, action: (value: number) => LabAction, hint?: TemplateResult | string): TemplateResult {
     const send = (event: CustomEvent<ValueDetail<number>>) => this.send(spec.name, action(event.detail.value));
     return html`<rt-slider
       name=${spec.name}
@@ -186,7 +186,7 @@ export class StorePanel extends LitElement {
   protected phongSliders(
     text: Record<PhongTerm, [label: string, tooltip: string]>,
     values: Record<PhongTerm, number>,
-    action: (changes: Partial<Record<PhongTerm, number>>) => AppAction,
+    action: (changes: Partial<Record<PhongTerm, number>>) => LabAction,
   ): TemplateResult[] {
     const [min, max] = LIMITS.coefficient;
     return PHONG_TERMS.map((term) =>
@@ -194,7 +194,7 @@ export class StorePanel extends LitElement {
     );
   }
 
-  protected switch(text: ControlText, checked: boolean, action: (checked: boolean) => AppAction): TemplateResult {
+  protected switch(text: ControlText, checked: boolean, action: (checked: boolean) => LabAction): TemplateResult {
     return html`<rt-switch
       name=${text.name}
       label=${text.label}
@@ -205,7 +205,7 @@ export class StorePanel extends LitElement {
     ></rt-switch>`;
   }
 
-  protected color(text: ControlText, value: Color, action: (value: Color) => AppAction): TemplateResult {
+  protected color(text: ControlText, value: Color, action: (value: Color) => LabAction): TemplateResult {
     const send = (event: CustomEvent<ValueDetail<Color>>) => this.send(text.name, action(event.detail.value));
     return html`<rt-color-field
       name=${text.name}
@@ -218,7 +218,7 @@ export class StorePanel extends LitElement {
     ></rt-color-field>`;
   }
 
-  protected choice<T extends string>(text: ControlText, options: ChoiceOption[], value: T, action: (value: T) => AppAction): TemplateResult {
+  protected choice<T extends string>(text: ControlText, options: ChoiceOption[], value: T, action: (value: T) => LabAction): TemplateResult {
     return html`<rt-choice
       name=${text.name}
       label=${text.label}
@@ -230,7 +230,7 @@ export class StorePanel extends LitElement {
     ></rt-choice>`;
   }
 
-  protected vector<V extends number[]>(spec: VectorSpec, value: V, action: (value: V) => AppAction): TemplateResult {
+  protected vector<V extends number[]>(spec: VectorSpec, value: V, action: (value: V) => LabAction): TemplateResult {
     return html`<rt-vector-field
       name=${spec.name}
       label=${spec.label}

@@ -8,7 +8,7 @@ import {
   LineSegments,
   type Matrix4,
 } from 'three';
-import type { AppState } from '../app/app-state.ts';
+import type { LabState } from '../lab-state/lab-state.ts';
 import { loadMeshes } from '../app/load-meshes-browser.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';
@@ -43,7 +43,7 @@ export class BvhBoxes {
   readonly object = new Group();
   private readonly bvhMaterial = new LineBasicMaterial({ vertexColors: true, transparent: true, depthTest: false, depthWrite: false });
   private readonly boundsMaterial = new LineDashedMaterial({ color: BOUNDS_COLOR, dashSize: 0.08, gapSize: 0.05, depthTest: false, depthWrite: false });
-  private shown: { scene: AppState['scene']; selection: AppState['selection']; bvh: AppState['bvh'] } | null = null;
+  private shown: { scene: LabState['scene']; selection: LabState['selection']; bvh: LabState['bvh'] } | null = null;
   private request = 0;
 
   constructor(
@@ -56,7 +56,7 @@ export class BvhBoxes {
   }
 
   /** Redraws the boxes when what they show changed: the scene, the selection or the BVH options. */
-  update(state: AppState): void {
+  update(state: LabState): void {
     const shown = this.shown;
     if (shown && shown.scene === state.scene && shown.selection === state.selection && shown.bvh === state.bvh) return;
     this.shown = { scene: state.scene, selection: state.selection, bvh: state.bvh };
@@ -80,7 +80,7 @@ export class BvhBoxes {
     this.boundsMaterial.dispose();
   }
 
-  private draw(state: AppState, meshes: MeshLibrary | null): void {
+  private draw(state: LabState, meshes: MeshLibrary | null): void {
     this.clear();
     if (meshes) {
       if (state.bvh.show) for (const lines of this.bvhLines(state, meshes)) this.object.add(lines);
@@ -90,7 +90,7 @@ export class BvhBoxes {
   }
 
   /** The BVH boxes of the selected mesh object, or of every mesh object when no mesh object is selected. */
-  private bvhLines(state: AppState, meshes: MeshLibrary): LineSegments[] {
+  private bvhLines(state: LabState, meshes: MeshLibrary): LineSegments[] {
     const meshObjects = state.scene.objects.filter((object) => object.shape === 'mesh' && object.mesh !== undefined && meshes.has(object.mesh));
     const selected = meshObjects.filter((object) => state.selection?.kind === 'object' && state.selection.id === object.id);
     return (selected.length > 0 ? selected : meshObjects).map((object) => {
@@ -103,7 +103,7 @@ export class BvhBoxes {
   }
 
   /** Every object's world bounding box, exactly as the tracer's shapes compute it. */
-  private boundsLines(state: AppState, meshes: MeshLibrary): LineSegments {
+  private boundsLines(state: LabState, meshes: MeshLibrary): LineSegments {
     const boxes = buildTracerScene(state.scene, meshes).shapes.map((shape) => shape.worldBounds);
     const lines = new LineSegments(boxGeometry(boxes), this.boundsMaterial);
     lines.computeLineDistances();

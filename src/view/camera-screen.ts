@@ -19,7 +19,7 @@ import {
   ShapeGeometry,
   Path,
 } from 'three';
-import type { AppState } from '../app/app-state.ts';
+import type { LabState } from '../lab-state/lab-state.ts';
 import type { ScreenRays } from '../app/screen-rays.ts';
 import type { Camera, RenderSettings } from '../scene/scene.ts';
 import { CameraRays } from '../tracer/camera-rays.ts';
@@ -40,8 +40,8 @@ const SCREEN_OPACITY_FROM_EYE = 0.4;
 /** Overlays float this share of the screen distance in front of it, above the depth test's noise. */
 const LIFT = 0.003;
 
-/** What the screen drawing depends on, from the app state. */
-export type CameraScreenState = Pick<AppState, 'selectedPixel'> & {
+/** What the screen drawing depends on, from the lab state. */
+export type CameraScreenState = Pick<LabState, 'selectedPixel'> & {
   camera: Camera;
   settings: Pick<RenderSettings, 'supersampling' | 'samplePattern'>;
   showSamplePoints: boolean;

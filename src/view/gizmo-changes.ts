@@ -1,5 +1,5 @@
 import { Euler, type Quaternion, Vector3 } from 'three';
-import type { GizmoOptions, Selection } from '../app/app-state.ts';
+import type { GizmoOptions, Selection } from '../lab-state/lab-state.ts';
 import { LIMITS } from '../scene/scene-limits.ts';
 import type { Camera, Light, Scene, SceneObject, Vec3 } from '../scene/scene.ts';
 

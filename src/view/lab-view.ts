@@ -13,11 +13,11 @@ import {
   Vector3,
   WebGLRenderer,
 } from 'three';
-import type { AppAction } from '../app/app-action.ts';
-import type { AppState } from '../app/app-state.ts';
+import type { LabAction } from '../lab-state/lab-action.ts';
+import type { LabState } from '../lab-state/lab-state.ts';
 import { loadMeshes } from '../app/load-meshes-browser.ts';
 import type { ScreenRays } from '../app/screen-rays.ts';
-import type { Store } from '../app/store.ts';
+import type { Store } from '../lab-state/store.ts';
 import type { Vec3 } from '../scene/scene.ts';
 import { CameraScreen } from './camera-screen.ts';
 import { CameraFlight } from './fly-to-camera.ts';
@@ -100,7 +100,7 @@ export class LabView {
   };
   private readonly unsubscribe: () => void;
   private readonly cleanups: (() => void)[] = [];
-  private previous: AppState | null = null;
+  private previous: LabState | null = null;
   private rayLayer: RayLayer | null = null;
   private bvhLayer: Object3D | null = null;
   private removeRayAnimator: (() => void) | null = null;
@@ -362,7 +362,7 @@ export class LabView {
 
   // --- store → drawing ---
 
-  private update(state: AppState): void {
+  private update(state: LabState): void {
     const previous = this.previous;
     this.previous = state;
     if (state.scene !== previous?.scene) {
@@ -388,7 +388,7 @@ export class LabView {
   }
 
   /** Puts the gizmo and the selection outline on the selection, in a mode it allows. */
-  private updateGizmo(state: AppState): void {
+  private updateGizmo(state: LabState): void {
     const target = this.selectedObject(state);
     const allowed = gizmoModesFor(state.selection, state.scene);
     this.gizmo.setSnapOption(state.gizmo.snap);
@@ -397,12 +397,12 @@ export class LabView {
   }
 
   /** The selection outline: a box around the object or light (around the camera's body only, not its screen). */
-  private outlineSelection(state: AppState, target: Object3D | null): void {
+  private outlineSelection(state: LabState, target: Object3D | null): void {
     this.selectionBox.visible = target !== null;
     if (target) this.selectionBox.setFromObject(state.selection?.kind === 'camera' ? this.cameraScreen.body : target);
   }
 
-  private selectedObject(state: AppState): Object3D | null {
+  private selectedObject(state: LabState): Object3D | null {
     const selection = state.selection;
     if (!selection) return null;
     if (selection.kind === 'camera') return this.cameraScreen.rig;
@@ -414,7 +414,7 @@ export class LabView {
   private commitDrag(object: Object3D, snapped: boolean): void {
     const { selection, scene } = this.store.state;
     const pose = { position: object.position, quaternion: object.quaternion, scale: object.scale };
-    let action: AppAction | null = null;
+    let action: LabAction | null = null;
     if (selection?.kind === 'object') action = { type: 'object.changed', id: selection.id, changes: objectChanges(pose, snapped) };
     if (selection?.kind === 'camera') action = { type: 'camera.changed', changes: cameraChanges(scene.camera, pose, snapped) };
     if (selection?.kind === 'light') {
@@ -549,7 +549,7 @@ export class LabView {
   }
 
   /** Dispatches, showing the reason when the store refuses. Returns that reason. */
-  private dispatch(action: AppAction): string | undefined {
+  private dispatch(action: LabAction): string | undefined {
     const error = this.store.dispatch(action);
     if (error) this.emit('message', error);
     return error;
@@ -567,13 +567,13 @@ export class LabView {
 
 const projected = new Vector3();
 
-function sameCamera(a: AppState, b: AppState): boolean {
+function sameCamera(a: LabState, b: LabState): boolean {
   const x = a.scene.camera;
   const y = b.scene.camera;
   return x.fov === y.fov && x.position.every((v, i) => v === y.position[i]) && x.target.every((v, i) => v === y.target[i]);
 }
 
-function sameSelection(a: AppState['selection'], b: AppState['selection']): boolean {
+function sameSelection(a: LabState['selection'], b: LabState['selection']): boolean {
   if (a === null || b === null) return a === b;
   if (a.kind === 'camera' || b.kind === 'camera') return a.kind === b.kind;
   return a.kind === b.kind && a.id === b.id;

@@ -7,7 +7,7 @@
  * one linear pass. The result is struct-of-arrays typed arrays, reused between updates, so
  * a rebuild allocates nothing per ray.
  */
-import type { RayViewOptions } from '../app/app-state.ts';
+import type { RayViewOptions } from '../lab-state/lab-state.ts';
 import type { ScreenRays } from '../app/screen-rays.ts';
 import type { Color } from '../scene/scene.ts';
 import type { RayNode } from '../tracer/ray-tree.ts';

@@ -1,6 +1,6 @@
 import { MOUSE, type PerspectiveCamera, TOUCH } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import type { AppAction } from '../app/app-action.ts';
+import type { LabAction } from '../lab-state/lab-action.ts';
 import type { FrameScheduler } from './frame-scheduler.ts';
 import { copyPose, easeInOutCubic, gestureActions, type ViewPose } from './view-pose.ts';
 
@@ -29,7 +29,7 @@ export class ViewControls {
     private readonly camera: PerspectiveCamera,
     private readonly canvas: HTMLCanvasElement,
     private readonly scheduler: FrameScheduler,
-    private readonly report: (action: AppAction) => void,
+    private readonly report: (action: LabAction) => void,
   ) {
     this.orbit = new OrbitControls(camera, canvas);
     this.orbit.minDistance = 0.3;

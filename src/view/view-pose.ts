@@ -1,5 +1,5 @@
 import { Box3, Spherical, Vector3 } from 'three';
-import type { AppAction } from '../app/app-action.ts';
+import type { LabAction } from '../lab-state/lab-action.ts';
 import type { Vec3 } from '../scene/scene.ts';
 
 /** Where the user's viewpoint is: the eye, the point it orbits around, its vertical fov in degrees. */
@@ -16,7 +16,7 @@ export function copyPose(from: ViewPose, into: ViewPose = { position: new Vector
   return into;
 }
 
-type ViewAction = Extract<AppAction, { type: 'view.orbited' | 'view.panned' | 'view.zoomed' }>;
+type ViewAction = Extract<LabAction, { type: 'view.orbited' | 'view.panned' | 'view.zoomed' }>;
 
 /**
  * Changes smaller than these are not a gesture: a click that wobbled a pixel, or float noise

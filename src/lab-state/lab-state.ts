@@ -55,7 +55,7 @@ export interface GizmoOptions {
 }
 
 /** The one source of truth of the app: everything the view, the panels and the quest engine read. */
-export interface AppState {
+export interface LabState {
   scene: Scene;
   selection: Selection;
   /** The camera-screen pixel whose rays alone are shown, or null for all pixels. */
@@ -88,6 +88,6 @@ export const DEFAULT_GIZMO: GizmoOptions = { mode: 'translate', space: 'world', 
 
 export const DEFAULT_BVH_VIEW: BvhViewOptions = { show: false, depth: 2, showBounds: false };
 
-export function initialState(scene: Scene): AppState {
+export function initialState(scene: Scene): LabState {
   return { scene, selection: null, selectedPixel: null, rays: { ...DEFAULT_RAY_VIEW }, gizmo: { ...DEFAULT_GIZMO }, bvh: { ...DEFAULT_BVH_VIEW } };
 }

@@ -1,10 +1,10 @@
 import { z } from 'zod';
-import type { AppAction, AppActionType } from '../app/app-action.ts';
-import { DEFAULT_BVH_VIEW, DEFAULT_RAY_VIEW } from '../app/app-state.ts';
+import type { LabAction, LabActionType } from '../lab-state/lab-action.ts';
+import { DEFAULT_BVH_VIEW, DEFAULT_RAY_VIEW } from '../lab-state/lab-state.ts';
 import type { Camera, Light, Material, RenderSettings, SceneObject } from '../scene/scene.ts';
 import { sceneSchema } from '../scene/scene-schema.ts';
 import { describeValue } from '../scene/scene-issues.ts';
-import { isRecord } from './is-record.ts';
+import { isRecord } from '../util/is-record.ts';
 
 /**
  * The app's named actions as level files write them (a task's `solution`, the `event` of a
@@ -48,7 +48,7 @@ const selectionSchema = z
 
 const fact = <Type extends string>(type: Type) => z.strictObject({ type: z.literal(type) });
 
-export const appActionSchema = z.discriminatedUnion('type', [
+export const labActionSchema = z.discriminatedUnion('type', [
   z.strictObject({ type: z.literal('scene.loaded'), scene: sceneSchema }),
   z.strictObject({ type: z.literal('selection.changed'), selection: selectionSchema }),
   z.strictObject({ type: z.literal('object.added'), shape: z.enum(['sphere', 'box', 'cylinder', 'plane', 'mesh']), mesh: z.string().optional() }),
@@ -85,11 +85,11 @@ export const appActionSchema = z.discriminatedUnion('type', [
 ]);
 
 /** Every action type, for the `event` of a goal. */
-export const APP_ACTION_TYPES = appActionSchema.options.map((option) => option.shape.type.value);
+export const LAB_ACTION_TYPES = labActionSchema.options.map((option) => option.shape.type.value);
 
 /** The fields an action of this type has besides `type` (what a goal's `with` may look at). */
-export function actionFields(type: AppActionType): string[] {
-  const option = appActionSchema.options.find((candidate) => candidate.shape.type.value === type);
+export function actionFields(type: LabActionType): string[] {
+  const option = labActionSchema.options.find((candidate) => candidate.shape.type.value === type);
   return Object.keys(option?.shape ?? {}).filter((field) => field !== 'type');
 }
 
@@ -97,11 +97,11 @@ type SameType<A, B> = [A] extends [B] ? ([B] extends [A] ? true : false) : false
 type Assert<T extends true> = T;
 
 /**
- * Compile-time guard that this schema follows src/app/app-action.ts: it knows every action
- * type, and what it accepts is an AppAction. A new action in the app fails here until it is
+ * Compile-time guard that this schema follows src/lab-state/lab-action.ts: it knows every action
+ * type, and what it accepts is an LabAction. A new action in the app fails here until it is
  * added above.
  */
-export type SchemaMatchesAppActions = [
-  Assert<SameType<z.output<typeof appActionSchema>['type'], AppActionType>>,
-  Assert<z.output<typeof appActionSchema> extends AppAction ? true : false>,
+export type SchemaMatchesLabActions = [
+  Assert<SameType<z.output<typeof labActionSchema>['type'], LabActionType>>,
+  Assert<z.output<typeof labActionSchema> extends LabAction ? true : false>,
 ];

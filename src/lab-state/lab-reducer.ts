@@ -1,18 +1,18 @@
 import { createLight, createObject } from '../scene/scene-defaults.ts';
 import { lightSchema, parseScene } from '../scene/scene-schema.ts';
 import type { Light, Scene } from '../scene/scene.ts';
-import type { AppAction } from './app-action.ts';
-import { type AppState, BVH_MAX_DEPTH, DEFAULT_BVH_VIEW } from './app-state.ts';
+import type { LabAction } from './lab-action.ts';
+import { type LabState, BVH_MAX_DEPTH, DEFAULT_BVH_VIEW } from './lab-state.ts';
 
 /** The next state, or the unchanged state with the reason an action was refused. */
-export type Reduction = { state: AppState; error?: string };
+export type Reduction = { state: LabState; error?: string };
 
 /**
  * Applies one action (pure: no DOM, so level solutions run headless in Node). A change
  * that would make the scene invalid (an out-of-range value, an unknown id) is refused with
  * the schema's `path: reason` message and nothing is lost.
  */
-export function reduce(state: AppState, action: AppAction): Reduction {
+export function reduce(state: LabState, action: LabAction): Reduction {
   switch (action.type) {
     case 'scene.loaded':
       // The boxes belong to the scene they were switched on for: a new scene starts without them.
@@ -72,7 +72,7 @@ export function reduce(state: AppState, action: AppAction): Reduction {
 }
 
 /** Validates the new scene; keeps the old state with the reasons when it is invalid. */
-function withScene(state: AppState, scene: Scene, precondition?: string): Reduction {
+function withScene(state: LabState, scene: Scene, precondition?: string): Reduction {
   if (precondition) return { state, error: precondition };
   const parsed = parseScene(scene);
   if (!parsed.ok) return { state, error: parsed.errors.join('\n') };
@@ -97,15 +97,15 @@ function changeLight(light: Light, changes: Partial<Light>): Light {
   return lightSchema.parse({ ...shared, type: changes.type });
 }
 
-function deselect(state: AppState, id: string): AppState {
+function deselect(state: LabState, id: string): LabState {
   const selection = state.selection;
   return selection && selection.kind !== 'camera' && selection.id === id ? { ...state, selection: null } : state;
 }
 
-function objectExists(state: AppState, id: string): string | undefined {
+function objectExists(state: LabState, id: string): string | undefined {
   return state.scene.objects.some((o) => o.id === id) ? undefined : `objects: there is no object "${id}"`;
 }
 
-function lightExists(state: AppState, id: string): string | undefined {
+function lightExists(state: LabState, id: string): string | undefined {
   return state.scene.lights.some((l) => l.id === id) ? undefined : `lights: there is no light "${id}"`;
 }

@@ -1,29 +1,29 @@
-import type { AppAction } from './app-action.ts';
-import { reduce, type Reduction } from './app-reducer.ts';
-import type { AppState } from './app-state.ts';
+import type { LabAction } from './lab-action.ts';
+import { reduce, type Reduction } from './lab-reducer.ts';
+import type { LabState } from './lab-state.ts';
 
 /** Called after every dispatched action with the state it produced (unchanged when refused). */
-export type StoreListener = (state: AppState, action: AppAction, error?: string) => void;
+export type StoreListener = (state: LabState, action: LabAction, error?: string) => void;
 
 /**
- * Holds the app state and applies named actions to it (three.js editor's "every change is
+ * Holds the lab state and applies named actions to it (three.js editor's "every change is
  * a command with a name", without its untyped signals). Listeners: the view, the panels,
  * the quest engine and the timing log.
  */
 export class Store {
-  private current: AppState;
+  private current: LabState;
   private readonly listeners = new Set<StoreListener>();
 
-  constructor(initial: AppState) {
+  constructor(initial: LabState) {
     this.current = initial;
   }
 
-  get state(): AppState {
+  get state(): LabState {
     return this.current;
   }
 
   /** Applies the action; returns the reason when it was refused (the state is then unchanged). */
-  dispatch(action: AppAction): string | undefined {
+  dispatch(action: LabAction): string | undefined {
     const { state, error } = safeReduce(this.current, action);
     this.current = state;
     for (const listener of [...this.listeners]) listener(state, action, error);
@@ -38,7 +38,7 @@ export class Store {
 }
 
 /** A bug in a reducer must not take the app down: the change is refused with its reason. */
-function safeReduce(state: AppState, action: AppAction): Reduction {
+function safeReduce(state: LabState, action: LabAction): Reduction {
   try {
     return reduce(state, action);
   } catch (error) {

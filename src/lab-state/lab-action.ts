@@ -1,5 +1,5 @@
 import type { Camera, Light, LightType, Material, RenderSettings, Scene, SceneObject, ShapeKind } from '../scene/scene.ts';
-import type { BvhViewOptions, GizmoOptions, RayViewOptions, Selection } from './app-state.ts';
+import type { BvhViewOptions, GizmoOptions, RayViewOptions, Selection } from './lab-state.ts';
 
 /**
  * Every change to the app is one of these named actions, dispatched through the store.
@@ -9,7 +9,7 @@ import type { BvhViewOptions, GizmoOptions, RayViewOptions, Selection } from './
  * Some actions change no state (view.orbited, render.finished): they are facts the quest
  * engine and the log need, reported by the view or the render window.
  */
-export type AppAction =
+export type LabAction =
   | { type: 'scene.loaded'; scene: Scene }
   | { type: 'selection.changed'; selection: Selection }
   | { type: 'object.added'; shape: ShapeKind; mesh?: string }
@@ -38,4 +38,4 @@ export type AppAction =
   | { type: 'scene.saved'; to: 'file' | 'link' }
   | { type: 'panel.opened'; panel: string };
 
-export type AppActionType = AppAction['type'];
+export type LabActionType = LabAction['type'];
