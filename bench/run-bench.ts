@@ -7,7 +7,7 @@
 import { readFileSync, writeFileSync } from 'node:fs';
 import { Ray as ThreeRay, DoubleSide, Vector3 } from 'three';
 import { createNodeRenderPool } from '../src/cli/node-worker-port.ts';
-import type { FinishedRender } from '../src/app/render-job.ts';
+import type { FinishedRender } from '../src/render/render-job.ts';
 import { loadMeshesFromDisk } from '../src/scene/load-meshes-node.ts';
 import { meshNamesInScene } from '../src/scene/mesh-names.ts';
 import type { MeshLibrary } from '../src/scene/mesh-data.ts';

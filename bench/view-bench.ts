@@ -8,8 +8,8 @@
  */
 import { Raycaster, Vector3 } from 'three';
 import { DEFAULT_RAY_VIEW } from '../src/lab-state/lab-state.ts';
-import type { ScreenRays } from '../src/app/screen-rays.ts';
-import { ScreenTracer, TRACE_DEBOUNCE_MS } from '../src/app/screen-tracer.ts';
+import type { ScreenRays } from '../src/render/screen-rays.ts';
+import { ScreenTracer, TRACE_DEBOUNCE_MS } from '../src/render/screen-tracer.ts';
 import { createNodeRenderPool } from '../src/cli/node-worker-port.ts';
 import { loadMeshesFromDisk } from '../src/scene/load-meshes-node.ts';
 import { defaultScene } from '../src/scene/scene-defaults.ts';

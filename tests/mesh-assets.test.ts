@@ -149,7 +149,7 @@ describe('loadMeshes (browser)', () => {
       return code === 200 ? new Response(readFileSync(new URL(`..${url}`, import.meta.url), 'utf8')) : new Response('', { status: code });
     });
     vi.resetModules();
-    const { loadMeshes } = await import('../src/app/load-meshes-browser.ts');
+    const { loadMeshes } = await import('../src/render/load-meshes-browser.ts');
     return { loadMeshes, fetched };
   }
 

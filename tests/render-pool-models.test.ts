@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { RenderPool } from '../src/app/render-pool.ts';
+import { RenderPool } from '../src/render/render-pool.ts';
 import { loadMeshesFromDisk } from '../src/scene/load-meshes-node.ts';
 import { createRenderHandler } from '../workers/render-core.ts';
 import type { RenderRequest } from '../workers/protocol.ts';

@@ -1,8 +1,8 @@
 import { afterAll, describe, expect, it } from 'vitest';
 import { pathToFileURL } from 'node:url';
-import { RenderPool } from '../src/app/render-pool.ts';
-import type { FinishedRender, RenderImage, RenderProgress, RenderResult } from '../src/app/render-job.ts';
-import { PREVIEW_BLOCKS } from '../src/app/render-passes.ts';
+import { RenderPool } from '../src/render/render-pool.ts';
+import type { FinishedRender, RenderImage, RenderProgress, RenderResult } from '../src/render/render-job.ts';
+import { PREVIEW_BLOCKS } from '../src/render/render-passes.ts';
 import { createNodeRenderPool, createNodeWorkerPort } from '../src/cli/node-worker-port.ts';
 import { defaultScene } from '../src/scene/scene-defaults.ts';
 import { emptyRayStats } from '../src/tracer/ray-tree.ts';

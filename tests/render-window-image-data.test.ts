@@ -1,5 +1,5 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { renderImageData } from '../src/app/image-data.ts';
+import { renderImageData } from '../src/render/image-data.ts';
 
 /**
  * Node has no ImageData: a stand-in with the browser's constructor signature records what the

@@ -1,9 +1,9 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { pathToFileURL } from 'node:url';
-import { DEFAULT_SEED } from '../src/app/render-job.ts';
-import { RenderPool } from '../src/app/render-pool.ts';
-import type { ScreenRays } from '../src/app/screen-rays.ts';
-import { ScreenTracer, TRACE_DEBOUNCE_MS, TRACES_IN_FLIGHT, type ScreenTracePool } from '../src/app/screen-tracer.ts';
+import { DEFAULT_SEED } from '../src/render/render-job.ts';
+import { RenderPool } from '../src/render/render-pool.ts';
+import type { ScreenRays } from '../src/render/screen-rays.ts';
+import { ScreenTracer, TRACE_DEBOUNCE_MS, TRACES_IN_FLIGHT, type ScreenTracePool } from '../src/render/screen-tracer.ts';
 import { createNodeRenderPool, createNodeWorkerPort } from '../src/cli/node-worker-port.ts';
 import { loadMeshesFromDisk } from '../src/scene/load-meshes-node.ts';
 import type { MeshLibrary } from '../src/scene/mesh-data.ts';

@@ -2,8 +2,8 @@
 import { availableParallelism } from 'node:os';
 import { Worker } from 'node:worker_threads';
 import type { RenderResponse } from '../../workers/protocol.ts';
-import { RenderPool } from '../app/render-pool.ts';
-import type { RenderWorkerHandlers, RenderWorkerPort } from '../app/render-worker-port.ts';
+import { RenderPool } from '../render/render-pool.ts';
+import type { RenderWorkerHandlers, RenderWorkerPort } from '../render/render-worker-port.ts';
 
 /** Plain JavaScript that registers tsx in the new thread, then imports `workerData.entry`. */
 const BOOT = new URL('../../workers/node-worker-boot.mjs', import.meta.url);

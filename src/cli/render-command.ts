@@ -1,6 +1,6 @@
 /** `rt render`: renders a scene with the worker pool and writes a PNG (spec §4). */
 import { availableParallelism } from 'node:os';
-import type { FinishedRender } from '../app/render-job.ts';
+import type { FinishedRender } from '../render/render-job.ts';
 import { LIMITS } from '../scene/scene-limits.ts';
 import type { Scene } from '../scene/scene.ts';
 import { toRgba8 } from '../tracer/quantize.ts';

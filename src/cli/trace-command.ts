@@ -1,5 +1,5 @@
 /** `rt trace`: prints the ray tree of one pixel of the camera's screen as JSON (spec §4). */
-import { DEFAULT_SEED } from '../app/render-job.ts';
+import { DEFAULT_SEED } from '../render/render-job.ts';
 import { tracePixel } from '../tracer/trace-pixel.ts';
 import { buildTracerScene } from '../tracer/tracer-scene.ts';
 import { InputError } from './cli-errors.ts';

@@ -1,5 +1,5 @@
-import { DITHER_PERIOD, renderImageData } from '../app/image-data.ts';
-import type { RenderImage } from '../app/render-job.ts';
+import { DITHER_PERIOD, renderImageData } from '../render/image-data.ts';
+import type { RenderImage } from '../render/render-job.ts';
 
 /**
  * Main-thread time a repaint may take per frame. Quantizing a whole 2048 × 1536 image takes

@@ -3,7 +3,7 @@
  * took, how many rays it traced and how many per second.
  */
 import { msg, str } from '@lit/localize';
-import type { RenderProgress } from '../app/render-job.ts';
+import type { RenderProgress } from '../render/render-job.ts';
 import type { RayStats } from '../tracer/ray-tree.ts';
 
 /** Every ray the render traced: primary, shadow, reflected and refracted. */

@@ -2,7 +2,7 @@ import { msg, str } from '@lit/localize';
 import { css, html, nothing, type PropertyValues } from 'lit';
 import type { LabAction } from '../lab-state/lab-action.ts';
 import { type LabState, BVH_MAX_DEPTH, type BvhViewOptions } from '../lab-state/lab-state.ts';
-import { loadMeshes } from '../app/load-meshes-browser.ts';
+import { loadMeshes } from '../render/load-meshes-browser.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';
 import type { Scene } from '../scene/scene.ts';

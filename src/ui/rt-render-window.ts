@@ -1,10 +1,10 @@
 import { msg, str } from '@lit/localize';
 import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
 import { createRef, ref } from 'lit/directives/ref.js';
-import { renderImageData } from '../app/image-data.ts';
-import { loadMeshes } from '../app/load-meshes-browser.ts';
-import type { RenderImage, RenderJob, RenderProgress } from '../app/render-job.ts';
-import type { RenderPool } from '../app/render-pool.ts';
+import { renderImageData } from '../render/image-data.ts';
+import { loadMeshes } from '../render/load-meshes-browser.ts';
+import type { RenderImage, RenderJob, RenderProgress } from '../render/render-job.ts';
+import type { RenderPool } from '../render/render-pool.ts';
 import { pngFileName, savePng } from '../app/save-png.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
 import type { Store } from '../lab-state/store.ts';

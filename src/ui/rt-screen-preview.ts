@@ -1,7 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { css, html, type PropertyValues } from 'lit';
 import { styleMap } from 'lit/directives/style-map.js';
-import type { ScreenRays } from '../app/screen-rays.ts';
+import type { ScreenRays } from '../render/screen-rays.ts';
 import { colorToHex } from './color-hex.ts';
 import { StorePanel } from './store-panel.ts';
 

@@ -9,7 +9,7 @@ import {
   type Matrix4,
 } from 'three';
 import type { LabState } from '../lab-state/lab-state.ts';
-import { loadMeshes } from '../app/load-meshes-browser.ts';
+import { loadMeshes } from '../render/load-meshes-browser.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';
 import { type BvhNode, bvhTree } from '../tracer/bvh-tree.ts';

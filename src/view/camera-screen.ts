@@ -20,7 +20,7 @@ import {
   Path,
 } from 'three';
 import type { LabState } from '../lab-state/lab-state.ts';
-import type { ScreenRays } from '../app/screen-rays.ts';
+import type { ScreenRays } from '../render/screen-rays.ts';
 import type { Camera, RenderSettings } from '../scene/scene.ts';
 import { CameraRays } from '../tracer/camera-rays.ts';
 import { setPickTag, type PickTag } from './picking.ts';

@@ -6,7 +6,7 @@
  * and the flat pass is ~10× faster. A subtree is the index range [i, subtreeEnd[i]), so
  * hiding a ray with its descendants is one jump.
  */
-import type { ScreenRays } from '../app/screen-rays.ts';
+import type { ScreenRays } from '../render/screen-rays.ts';
 import type { RayNode, RayType } from '../tracer/ray-tree.ts';
 import { RAY_COLOR_KEYS, rayColorKey, type RayColorKey } from './ray-palette.ts';
 

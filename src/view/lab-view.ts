@@ -15,8 +15,8 @@ import {
 } from 'three';
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
-import { loadMeshes } from '../app/load-meshes-browser.ts';
-import type { ScreenRays } from '../app/screen-rays.ts';
+import { loadMeshes } from '../render/load-meshes-browser.ts';
+import type { ScreenRays } from '../render/screen-rays.ts';
 import type { Store } from '../lab-state/store.ts';
 import type { Vec3 } from '../scene/scene.ts';
 import { CameraScreen } from './camera-screen.ts';

@@ -20,7 +20,7 @@ import {
   type Vector3,
 } from 'three';
 import type { RayViewOptions } from '../lab-state/lab-state.ts';
-import type { ScreenRays } from '../app/screen-rays.ts';
+import type { ScreenRays } from '../render/screen-rays.ts';
 import type { RayHover, RayLayer } from './ray-layer.ts';
 import { ALPHA_ATTRIBUTE, createRayMaterial, FULLY_GROWN, GROWTH_ATTRIBUTE, type TravelUniform } from './ray-shader.ts';
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';

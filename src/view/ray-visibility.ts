@@ -8,7 +8,7 @@
  * a rebuild allocates nothing per ray.
  */
 import type { RayViewOptions } from '../lab-state/lab-state.ts';
-import type { ScreenRays } from '../app/screen-rays.ts';
+import type { ScreenRays } from '../render/screen-rays.ts';
 import type { Color } from '../scene/scene.ts';
 import type { RayNode } from '../tracer/ray-tree.ts';
 import { flattenRays, type FlatRays, resized } from './flat-rays.ts';

@@ -1,5 +1,5 @@
 import { Matrix4, type Quaternion, Vector3 } from 'three';
-import { DEFAULT_SEED } from '../app/render-job.ts';
+import { DEFAULT_SEED } from '../render/render-job.ts';
 import type { Camera, SamplePattern } from '../scene/scene.ts';
 import type { CameraRays } from '../tracer/camera-rays.ts';
 import { samplePosition } from '../tracer/supersampling.ts';

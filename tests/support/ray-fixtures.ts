@@ -1,5 +1,5 @@
 /** Hand-made ray trees for the ray view's tests and benchmark. */
-import type { ScreenRays } from '../../src/app/screen-rays.ts';
+import type { ScreenRays } from '../../src/render/screen-rays.ts';
 import type { Vec3 } from '../../src/scene/scene.ts';
 import type { PixelTrace, RayNode, RayType } from '../../src/tracer/ray-tree.ts';
 
