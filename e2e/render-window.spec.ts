@@ -1,7 +1,7 @@
 import { expect, type Locator, type Page, test } from '@playwright/test';
 import { readFile } from 'node:fs/promises';
 import { PNG } from 'pngjs';
-import type { RtRenderWindow } from '../src/ui/rt-render-window.ts';
+import type { RtRenderWindow } from '../src/ui/lab/render-window/rt-render-window.ts';
 
 /** The page with the lab; the header's "Render image" button opens the render window. */
 const APP_PAGE = './#free-lab';

@@ -4,7 +4,7 @@ import { Quaternion, Vector3 } from 'three';
 import type { LabState } from '../src/lab-state/lab-state.ts';
 import type { Vec3 } from '../src/scene/scene.ts';
 import { CameraRays } from '../src/tracer/camera-rays.ts';
-import type { RtSceneView } from '../src/ui/rt-scene-view.ts';
+import type { RtSceneView } from '../src/ui/lab/rt-scene-view.ts';
 import { cameraRigQuaternion, cellCenter, screenGrid } from '../src/view/screen-grid.ts';
 
 // The lab's 3D view as a student uses it: by mouse, keys and the on-screen buttons.

@@ -1,2 +1,2 @@
 // The app's entry point: registers the elements; they do the rest when they connect.
-import './ui/rt-app.ts';
+import './ui/shell/rt-app.ts';

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { CONTROL_TARGETS } from '../src/quest/lab-controls.ts';
-import { CONTROL_PATHS, hiddenControlsCss, hiddenToolbarCss, itemPosition, locateGuideTarget } from '../src/ui/guide-targets.ts';
+import { CONTROL_PATHS, hiddenControlsCss, hiddenToolbarCss, itemPosition, locateGuideTarget } from '../src/ui/lab/guide-targets.ts';
 
 describe('guide target names → places on the page', () => {
   it('finds a panel control by its name attribute inside the panel', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { countRays, formatCount, formatDuration, progressText, raysPerSecond } from '../src/ui/render-figures.ts';
+import { countRays, formatCount, formatDuration, progressText, raysPerSecond } from '../src/ui/lab/render-window/render-figures.ts';
 
 describe('render figures', () => {
   it('counts every kind of ray', () => {

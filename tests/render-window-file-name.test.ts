@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { pngFileName } from '../src/app/save-png.ts';
+import { pngFileName } from '../src/ui/lab/render-window/save-png.ts';
 
 describe('pngFileName', () => {
   it('names the scene and the size', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { fitLayout, SIDE_BY_SIDE_GAP, zoomInStep, zoomOutStep } from '../src/ui/image-zoom.ts';
+import { fitLayout, SIDE_BY_SIDE_GAP, zoomInStep, zoomOutStep } from '../src/ui/lab/render-window/image-zoom.ts';
 
 const image = { width: 512, height: 384 };
 

@@ -1,5 +1,5 @@
 import { expect, test } from 'vitest';
-import { colorToHex, hexToColor } from '../src/ui/color-hex.ts';
+import { colorToHex, hexToColor } from '../src/ui/controls/color-hex.ts';
 
 test('a linear colour shows as round(c · 255), with no gamma curve', () => {
   expect(colorToHex([0.9, 0.15, 0.1])).toBe('#e6261a');

@@ -1,5 +1,5 @@
 import { expect, test } from 'vitest';
-import { MATERIAL_PRESETS, matchingPreset } from '../src/ui/material-presets.ts';
+import { MATERIAL_PRESETS, matchingPreset } from '../src/ui/lab/panels/material-presets.ts';
 import { createObject, defaultScene } from '../src/scene/scene-defaults.ts';
 import type { Material } from '../src/scene/scene.ts';
 

@@ -1,5 +1,5 @@
 import { describe, expect, test } from 'vitest';
-import { formatNumber, parseTypedNumber, readTypedNumber, typedNumberMessage, type NumberRange } from '../src/ui/number-input.ts';
+import { formatNumber, parseTypedNumber, readTypedNumber, typedNumberMessage, type NumberRange } from '../src/ui/controls/number-input.ts';
 
 const spot: NumberRange = { min: 1, max: 170 };
 const coefficient: NumberRange = { min: 0, max: 1 };

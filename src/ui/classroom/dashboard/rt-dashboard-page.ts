@@ -1,0 +1,325 @@
+import { msg, str } from '@lit/localize';
+import { css, html, LitElement } from 'lit';
+import { loadBrowserCatalog } from '../../../app/level-catalog-browser.ts';
+import { combinedCsv, readClassFiles, type ClassFiles, type DroppedFile } from '../../../classroom/dashboard-class.ts';
+import { MAX_EXPORT_BYTES } from '../../../classroom/dashboard-read-file.ts';
+import type { SkippedFile } from '../../../classroom/dashboard-record.ts';
+import { summarizeLevels, type LevelSummary } from '../../../classroom/dashboard-summary.ts';
+import { summarizeSurveys, type SurveysSummary } from '../../../classroom/dashboard-survey.ts';
+import { downloadText } from '../../../util/download-file.ts';
+import { surveyById } from '../../../classroom/surveys.ts';
+import { localize, type Locale } from '../../../quest/localized-text.ts';
+import { playableLevels } from '../../../quest/level-index.ts';
+import { classroomStyles, pageStyles } from '../classroom-styles.ts';
+import './rt-dashboard-completion.ts';
+import { formatDuration } from './rt-dashboard-format.ts';
+import './rt-dashboard-stuck.ts';
+import './rt-dashboard-survey.ts';
+import './rt-dashboard-times.ts';
+import '../../shell/rt-theme-toggle.ts';
+
+/** Level and task titles by id, for labels; an id the app does not know is shown as it is. */
+function levelNames(locale: Locale) {
+  const levels = new Map(playableLevels(loadBrowserCatalog()).map((level) => [level.id, level]));
+  return {
+    level: (id: string) => {
+      const level = levels.get(id);
+      return level ? localize(level.title, locale) : id;
+    },
+    task: (levelId: string, id: string) => {
+      const task = levels.get(levelId)?.tasks.find((candidate) => candidate.id === id);
+      return task ? localize(task.title, locale) : id;
+    },
+  };
+}
+
+/**
+ * @summary The class dashboard (route #/dashboard): a teacher drops the export files of a
+ * class (JSON or CSV, tens to hundreds) and sees time per level and task, where learners got
+ * stuck, completion and the survey answers; files that are not exports are listed with the
+ * reason and skipped. Everything is read in the browser; nothing is uploaded.
+ */
+export class RtDashboardPage extends LitElement {
+  static override properties = {
+    files: { state: true },
+    reading: { state: true },
+    dragging: { state: true },
+    locale: {},
+  };
+
+  static override styles = [
+    classroomStyles,
+    pageStyles,
+    css`
+      main {
+        display: flex;
+        flex-direction: column;
+        gap: calc(var(--rt-space) * 2);
+        padding: calc(var(--rt-space) * 2);
+        max-width: 1200px;
+        margin: 0 auto;
+      }
+      h2 {
+        font-size: 1.1rem;
+        margin: 0 0 var(--rt-space);
+      }
+      h3 {
+        font-size: 1rem;
+        margin: calc(var(--rt-space) * 2) 0 var(--rt-space);
+      }
+      .drop {
+        border: 2px dashed var(--rt-border);
+        border-radius: var(--rt-radius);
+        padding: 20px;
+        display: flex;
+        flex-wrap: wrap;
+        align-items: center;
+        gap: var(--rt-space) calc(var(--rt-space) * 2);
+      }
+      .drop.dragging {
+        border-color: var(--rt-accent);
+        border-style: solid;
+        background: var(--rt-accent-soft);
+      }
+      .drop p {
+        margin: 0;
+        flex: 1 1 20em;
+      }
+      .privacy {
+        display: flex;
+        gap: 6px;
+        align-items: center;
+        margin: var(--rt-space) 0 0;
+        color: var(--rt-muted);
+      }
+      .actions {
+        display: flex;
+        flex-wrap: wrap;
+        gap: var(--rt-space);
+        align-items: center;
+        margin-top: var(--rt-space);
+      }
+      /* The file input is reached by Tab inside its label, which shows the focus. */
+      input[type='file'] {
+        position: absolute;
+        width: 1px;
+        height: 1px;
+        opacity: 0;
+      }
+      label.button {
+        position: relative;
+      }
+      label.button:focus-within {
+        outline: 3px solid var(--rt-focus);
+        outline-offset: 2px;
+      }
+      .status {
+        margin: var(--rt-space) 0 0;
+        font-weight: 600;
+      }
+      table.skipped {
+        border-collapse: collapse;
+        width: 100%;
+        font-size: 0.9rem;
+      }
+      table.skipped th,
+      table.skipped td {
+        text-align: left;
+        padding: 4px 8px;
+        border-bottom: 1px solid var(--rt-border);
+        vertical-align: top;
+        overflow-wrap: anywhere;
+      }
+      .level-facts {
+        margin: 0;
+        color: var(--rt-muted);
+      }
+    `,
+  ];
+
+  declare files: ClassFiles;
+  declare reading: boolean;
+  declare dragging: boolean;
+  /** The language of level titles and survey texts. */
+  declare locale: Locale;
+
+  /** Texts already read, to count an export dropped twice once. */
+  private seen = new Map<string, string>();
+  private levels: LevelSummary[] = [];
+  private surveys: SurveysSummary = { surveys: [], unknown: [] };
+
+  constructor() {
+    super();
+    this.files = { records: [], skipped: [] };
+    this.reading = false;
+    this.dragging = false;
+    this.locale = 'en';
+  }
+
+  protected override willUpdate(changed: Map<PropertyKey, unknown>): void {
+    if (changed.has('files')) {
+      this.levels = summarizeLevels(this.files.records);
+      this.surveys = summarizeSurveys(this.files.records, surveyById);
+    }
+  }
+
+  /** Reads dropped or chosen files and adds them to the class (public: tests and other pages may call it). */
+  async addFiles(list: Iterable<File>): Promise<void> {
+    this.reading = true;
+    const tooBig: SkippedFile[] = [];
+    const dropped: DroppedFile[] = [];
+    await Promise.all(
+      [...list].map(async (file) => {
+        if (file.size > MAX_EXPORT_BYTES) tooBig.push({ file: file.name, reason: msg(str`too large for an export (${Math.round(file.size / 1048576)} MB)`) });
+        else dropped.push({ name: file.name, text: await file.text() });
+      }),
+    );
+    // Files finish reading in any order; sorting by name keeps the list and the CSV stable.
+    dropped.sort((a, b) => a.name.localeCompare(b.name, 'en', { numeric: true }));
+    const read = readClassFiles(dropped, this.files, this.seen);
+    this.files = { records: read.records, skipped: [...read.skipped, ...tooBig] };
+    this.reading = false;
+  }
+
+  private clear(): void {
+    this.seen = new Map();
+    this.files = { records: [], skipped: [] };
+  }
+
+  private onDrop(event: DragEvent): void {
+    event.preventDefault();
+    this.dragging = false;
+    if (event.dataTransfer?.files.length) void this.addFiles(event.dataTransfer.files);
+  }
+
+  private onDragOver(event: DragEvent): void {
+    event.preventDefault();
+    if (event.dataTransfer) event.dataTransfer.dropEffect = 'copy';
+    this.dragging = true;
+  }
+
+  private onChoose(event: Event): void {
+    const input = event.target as HTMLInputElement;
+    if (input.files?.length) void this.addFiles(input.files).then(() => (input.value = ''));
+  }
+
+  private downloadCsv(): void {
+    const date = new Date().toISOString().slice(0, 10);
+    downloadText(`\uFEFF${combinedCsv(this.files.records)}`, `ray-tracer-quest-class-${date}.csv`, 'text/csv;charset=utf-8');
+  }
+
+  override render() {
+    const { records, skipped } = this.files;
+    return html`
+      <header>
+        <h1>${msg('Class dashboard')}</h1>
+        <a class="button" href="#/">${msg('Back to the game')}</a>
+        <rt-theme-toggle></rt-theme-toggle>
+      </header>
+      <main>
+        <section aria-labelledby="files-heading">
+          <h2 id="files-heading">${msg('Export files')}</h2>
+          <div
+            class="drop ${this.dragging ? 'dragging' : ''}"
+            @dragover=${this.onDragOver}
+            @dragleave=${() => (this.dragging = false)}
+            @drop=${this.onDrop}
+          >
+            <p>${msg('Drop the files your students exported from the game here: JSON or CSV, as many as you like. You can drop more later; they are added.')}</p>
+            <label class="button primary" title=${msg('Pick export files from your computer')}>
+              ${msg('Choose files…')}
+              <input type="file" multiple accept=".json,.csv,application/json,text/csv" @change=${this.onChoose} />
+            </label>
+          </div>
+          <p class="privacy">
+            <svg viewBox="0 0 16 16" width="16" height="16" aria-hidden="true">
+              <rect x="3" y="7" width="10" height="7" rx="1.5" fill="none" stroke="currentColor" stroke-width="1.5" />
+              <path d="M5 7V5a3 3 0 0 1 6 0v2" fill="none" stroke="currentColor" stroke-width="1.5" />
+            </svg>
+            ${msg('The files are read in this browser only. Nothing is uploaded or sent anywhere.')}
+          </p>
+          <p class="status" role="status">
+            ${this.reading
+              ? msg('Reading the files…')
+              : records.length + skipped.length > 0
+                ? `${records.length === 1 ? msg('1 learner counted') : msg(str`${records.length} learners counted`)}, ${skipped.length === 1 ? msg('1 file skipped.') : msg(str`${skipped.length} files skipped.`)}`
+                : ''}
+          </p>
+          <div class="actions">
+            <button type="button" ?disabled=${records.length === 0} @click=${this.downloadCsv} title=${msg('One CSV with every task attempt of every learner, for a spreadsheet or R')}>
+              ${msg('Download combined CSV')}
+            </button>
+            <button type="button" ?disabled=${records.length + skipped.length === 0} @click=${this.clear} title=${msg('Forget the files read so far and start again')}>
+              ${msg('Clear')}
+            </button>
+          </div>
+        </section>
+        ${skipped.length ? this.renderSkipped(skipped) : null} ${this.levels.map((level) => this.renderLevel(level))} ${this.renderSurveys()}
+      </main>
+    `;
+  }
+
+  private renderSkipped(skipped: readonly SkippedFile[]) {
+    return html`<section class="skipped-files" aria-labelledby="skipped-heading">
+      <h2 id="skipped-heading">⚠ ${msg(str`Skipped files (${skipped.length})`)}</h2>
+      <table class="skipped">
+        <thead>
+          <tr>
+            <th scope="col">${msg('File')}</th>
+            <th scope="col">${msg('Why it was skipped')}</th>
+          </tr>
+        </thead>
+        <tbody>
+          ${skipped.map((file) => html`<tr><td>${file.file}</td><td>${file.reason}</td></tr>`)}
+        </tbody>
+      </table>
+    </section>`;
+  }
+
+  private renderLevel(level: LevelSummary) {
+    const names = levelNames(this.locale);
+    const title = names.level(level.level);
+    const rows = level.tasks.map((task) => ({ ...task, label: task.mandatory ? names.task(level.level, task.task) : msg(str`${names.task(level.level, task.task)} (optional)`) }));
+    return html`<section class="level" data-level=${level.level} aria-label=${title}>
+      <h2>${title}</h2>
+      <p class="level-facts">
+        ${msg(str`${level.passed} of ${level.learners} learners passed`)}${level.stats
+          ? msg(str`; median active time ${formatDuration(level.stats.median)} (middle half ${formatDuration(level.stats.q1)} – ${formatDuration(level.stats.q3)})`)
+          : ''}
+      </p>
+      <h3>${msg('Active time per task')}</h3>
+      <rt-dashboard-times
+        .rows=${[...rows, { label: msg('Whole level'), times: level.times, stats: level.stats }]}
+        caption=${msg(str`Active time per task in ${title}: a box for the middle half, a line for the median, a dot per learner`)}
+      ></rt-dashboard-times>
+      <h3>${msg('Completion')}</h3>
+      <rt-dashboard-completion .rows=${rows} caption=${msg(str`Completion per task in ${title}`)}></rt-dashboard-completion>
+      <h3>${msg('Where learners got stuck')}</h3>
+      <rt-dashboard-stuck .rows=${rows.map((row) => ({ ...row, task: names.task(level.level, row.task) }))} caption=${msg(str`Hints, "show me" and times per task in ${title}`)}></rt-dashboard-stuck>
+    </section>`;
+  }
+
+  private renderSurveys() {
+    const { surveys, unknown } = this.surveys;
+    return html`${surveys.map(
+      (survey) => html`<section class="survey" data-survey=${survey.id}>
+        <h2>${msg(str`Survey: ${localize(survey.title, this.locale)}`)}</h2>
+        <p class="level-facts">${msg(str`${survey.respondents} learners answered.`)}</p>
+        <rt-dashboard-survey .summary=${survey} .locale=${this.locale}></rt-dashboard-survey>
+      </section>`,
+    )}
+    ${unknown.map(
+      (survey) => html`<section>
+        <p>⚠ ${msg(str`${survey.respondents} learners answered a survey this version of the app does not know ("${survey.id}"); their answers are in the files but not shown here.`)}</p>
+      </section>`,
+    )}`;
+  }
+}
+
+customElements.define('rt-dashboard-page', RtDashboardPage);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-dashboard-page': RtDashboardPage;
+  }
+}

@@ -1,0 +1,111 @@
+import { msg } from '@lit/localize';
+import { css, html } from 'lit';
+import { completionRate, type TaskSummary } from '../../../classroom/dashboard-summary.ts';
+import { DashboardChart } from './rt-dashboard-chart.ts';
+import { formatDuration, formatPercent } from './rt-dashboard-format.ts';
+
+/** The share of learners needing help at or above which a task's row is marked as a sticking point. */
+const STUCK_SHARE = 0.4;
+
+/**
+ * @summary Where learners got stuck, per task: how many saw it and finished it, the median
+ * and middle half of their times, hints (learners who needed one, and rungs shown) and
+ * "show me". A row where at least 40 % of the learners needed help (a hint, "show me")
+ * or did not finish a mandatory task is marked with a word and an icon, not colour alone.
+ */
+export class RtDashboardStuck extends DashboardChart<TaskSummary> {
+  static override styles = css`
+    :host {
+      display: block;
+      overflow-x: auto;
+    }
+    table {
+      border-collapse: collapse;
+      width: 100%;
+      font-size: 0.9rem;
+      font-variant-numeric: tabular-nums;
+    }
+    caption {
+      text-align: left;
+      font-weight: 600;
+      padding-bottom: 4px;
+    }
+    th,
+    td {
+      padding: 4px 8px;
+      border-bottom: 1px solid var(--rt-border);
+      text-align: right;
+    }
+    th:first-child,
+    td:first-child {
+      text-align: left;
+    }
+    td {
+      white-space: nowrap;
+    }
+    thead th {
+      color: var(--rt-muted);
+      font-weight: 600;
+      vertical-align: bottom;
+    }
+    tr.stuck td {
+      background: color-mix(in srgb, var(--rt-warning) 14%, transparent);
+    }
+    .muted {
+      color: var(--rt-muted);
+      font-weight: normal;
+    }
+    .flag {
+      color: var(--rt-warning);
+      font-weight: 600;
+      margin-left: 6px;
+      white-space: nowrap;
+    }
+  `;
+
+  override render() {
+    return html`<table>
+      <caption>
+        ${this.caption}
+      </caption>
+      <thead>
+        <tr>
+          <th scope="col">${msg('Task')}</th>
+          <th scope="col" title=${msg('Learners who were shown the task')}>${msg('Learners')}</th>
+          <th scope="col" title=${msg('Done by the learner or shown by "show me"')}>${msg('Completed')}</th>
+          <th scope="col" title=${msg('Median active time of those who completed it')}>${msg('Median')}</th>
+          <th scope="col" title=${msg('From the first to the third quartile: the middle half of the learners')}>${msg('Middle half')}</th>
+          <th scope="col" title=${msg('Learners who were given at least one hint')}>${msg('Needed a hint')}</th>
+          <th scope="col" title=${msg('Text hints and guidance (pointing at the control) shown, in total')}>${msg('Hints / guidance')}</th>
+          <th scope="col" title=${msg('Learners who let the app do the task')}>${msg('Show me')}</th>
+        </tr>
+      </thead>
+      <tbody>
+        ${this.rows.map((task) => {
+          const stuck = task.learners > 0 && task.learnersNeedingHelp / task.learners >= STUCK_SHARE;
+          return html`<tr class=${stuck ? 'stuck' : ''} data-task=${task.task}>
+            <th scope="row">
+              ${task.task}${task.mandatory ? '' : html` <span class="muted">(${msg('optional')})</span>`}
+              ${stuck ? html`<span class="flag" title=${msg('At least 40 % of the learners needed a hint or "show me", or did not finish it')}>⚠ ${msg('sticking point')}</span>` : null}
+            </th>
+            <td>${task.learners}</td>
+            <td>${task.done + task.shown} (${formatPercent(completionRate(task))})</td>
+            <td>${task.stats ? formatDuration(task.stats.median) : '–'}</td>
+            <td>${task.stats ? `${formatDuration(task.stats.q1)} – ${formatDuration(task.stats.q3)}` : '–'}</td>
+            <td>${task.learnersWithHints}</td>
+            <td>${task.hintsText} / ${task.hintsGuidance}</td>
+            <td>${task.shown}</td>
+          </tr>`;
+        })}
+      </tbody>
+    </table>`;
+  }
+}
+
+customElements.define('rt-dashboard-stuck', RtDashboardStuck);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-dashboard-stuck': RtDashboardStuck;
+  }
+}

@@ -1,0 +1,120 @@
+import { msg } from '@lit/localize';
+import { css, html, LitElement } from 'lit';
+import type { Assignment } from '../../classroom/assignment.ts';
+import { downloadText, exportFileName } from '../../util/download-file.ts';
+import { APP_VERSION, type ExportInput } from '../../classroom/export-context.ts';
+import { exportCsv } from '../../classroom/export-csv.ts';
+import { exportJson } from '../../classroom/export-json.ts';
+import { exportXapi } from '../../classroom/export-xapi.ts';
+import type { SurveySubmission } from '../../classroom/survey-answers.ts';
+import type { Progress } from '../../quest/progress.ts';
+
+type Format = 'csv' | 'json' | 'xapi';
+
+const FILES: Record<Format, { extension: string; type: string; text: (input: ExportInput) => string }> = {
+  csv: { extension: 'csv', type: 'text/csv;charset=utf-8', text: exportCsv },
+  json: { extension: 'json', type: 'application/json', text: exportJson },
+  xapi: { extension: 'xapi.json', type: 'application/json', text: (input) => `${JSON.stringify(exportXapi(input), null, 2)}\n` },
+};
+
+/**
+ * @summary The results downloads: CSV (one row per task attempt), JSON (everything, with the
+ * full event log) and xAPI statements. Made in the browser from the current progress; nothing
+ * is uploaded. Set `.progress` (QuestEngine.progress, read at the moment of the click) and the
+ * classroom context: `.participant`, `.assignment`, `.survey`.
+ * @fires export-failed - detail: the message, when a file could not be made (the lab shows it as a toast).
+ */
+export class RtExportMenu extends LitElement {
+  static override properties = {
+    progress: { attribute: false },
+    participant: { attribute: false },
+    assignment: { attribute: false },
+    survey: { attribute: false },
+  };
+
+  static override styles = css`
+    :host {
+      display: flex;
+      flex-wrap: wrap;
+      gap: var(--rt-space);
+    }
+    button {
+      font: inherit;
+      min-height: 36px;
+      padding: 4px 12px;
+      border-radius: var(--rt-radius);
+      border: 1px solid var(--rt-border);
+      background: var(--rt-surface);
+      color: var(--rt-text);
+      cursor: pointer;
+    }
+    button:hover {
+      background: var(--rt-surface-2, var(--rt-surface));
+    }
+    button:focus-visible {
+      outline: 3px solid var(--rt-focus, var(--rt-accent));
+      outline-offset: 2px;
+    }
+    button:disabled {
+      cursor: not-allowed;
+      opacity: 0.6;
+    }
+  `;
+
+  /** The progress to export; a function is called at the click, so the file has the latest events. */
+  declare progress: Progress | (() => Progress) | null;
+  declare participant: string | null;
+  declare assignment: Assignment | null;
+  declare survey: SurveySubmission | null;
+
+  constructor() {
+    super();
+    this.progress = null;
+    this.participant = null;
+    this.assignment = null;
+    this.survey = null;
+  }
+
+  /** The file of one format, exactly as the buttons download it (for tests and other menus). */
+  fileOf(format: Format): { name: string; text: string; type: string } | null {
+    const progress = typeof this.progress === 'function' ? this.progress() : this.progress;
+    if (!progress) return null;
+    const exportedAt = new Date().toISOString();
+    const input: ExportInput = { progress, participant: this.participant, assignment: this.assignment, survey: this.survey, exportedAt, appVersion: APP_VERSION };
+    const file = FILES[format];
+    return { name: exportFileName(this.participant, exportedAt, file.extension), text: file.text(input), type: file.type };
+  }
+
+  private download(format: Format): void {
+    try {
+      const file = this.fileOf(format);
+      if (file) downloadText(file.text, file.name, file.type);
+    } catch (error) {
+      const reason = error instanceof Error ? error.message : String(error);
+      this.dispatchEvent(new CustomEvent('export-failed', { detail: msg(`The results could not be exported: ${reason}`), bubbles: true, composed: true }));
+    }
+  }
+
+  override render() {
+    const none = this.progress === null;
+    return html`
+      <button type="button" ?disabled=${none} @click=${() => this.download('csv')} title=${msg('One row per task attempt, with times and hints: for a spreadsheet')}>
+        ${msg('Download CSV')}
+      </button>
+      <button type="button" ?disabled=${none} @click=${() => this.download('json')} title=${msg('Everything, with the full event log and survey answers: for the class dashboard')}>
+        ${msg('Download JSON')}
+      </button>
+      <button type="button" ?disabled=${none} @click=${() => this.download('xapi')} title=${msg("xAPI statements, for your school's learning record store")}>
+        ${msg('Download xAPI')}
+      </button>
+    `;
+  }
+}
+
+customElements.define('rt-export-menu', RtExportMenu);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-export-menu': RtExportMenu;
+  }
+}

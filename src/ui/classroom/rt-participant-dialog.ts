@@ -1,0 +1,89 @@
+import { msg } from '@lit/localize';
+import { css, html, LitElement } from 'lit';
+import { fire, gameStyles } from '../game/game-styles.ts';
+
+/** Codes are short labels a teacher hands out ("A17", "group-3"): nothing personal is asked. */
+const CODE = /^[\p{L}\p{N}_-]{1,32}$/u;
+
+/**
+ * @summary Asks for the participant code a research study hands out, before the first
+ * level of an assignment. Friendly, one field, checked as typed.
+ *
+ * @fires participant-code - CustomEvent<string>: the code, trimmed.
+ */
+export class RtParticipantDialog extends LitElement {
+  static override properties = { heading: {}, problem: { state: true } };
+  static override styles = [
+    gameStyles,
+    css`
+      dialog {
+        max-width: 420px;
+        border: 1px solid var(--rt-border);
+        border-radius: var(--rt-radius);
+        background: var(--rt-surface);
+        color: var(--rt-text);
+        box-shadow: var(--rt-shadow);
+      }
+      label {
+        display: grid;
+        gap: 4px;
+        margin-bottom: 8px;
+      }
+      .problem {
+        color: var(--rt-danger);
+      }
+      .actions {
+        display: flex;
+        justify-content: flex-end;
+      }
+    `,
+  ];
+
+  /** The assignment's title. */
+  declare heading: string;
+  declare private problem: string;
+
+  constructor() {
+    super();
+    this.heading = '';
+    this.problem = '';
+  }
+
+  override firstUpdated(): void {
+    this.renderRoot.querySelector('dialog')?.showModal();
+  }
+
+  override render() {
+    return html`<dialog aria-labelledby="code-title" @cancel=${(event: Event) => event.preventDefault()}>
+      <form @submit=${this.submit}>
+        <h2 id="code-title">${this.heading || msg('Welcome!')}</h2>
+        <p>${msg('Your teacher gave you a participant code. Type it here, so your work can be matched to you without your name.')}</p>
+        <label>
+          ${msg('Participant code')}
+          <input type="text" name="code" autocomplete="off" required maxlength="32" aria-describedby="code-problem" />
+        </label>
+        <p id="code-problem" class="problem" role="alert">${this.problem}</p>
+        <div class="actions"><button class="primary" type="submit">${msg('Start')}</button></div>
+      </form>
+    </dialog>`;
+  }
+
+  private submit(event: Event): void {
+    event.preventDefault();
+    const code = this.renderRoot.querySelector<HTMLInputElement>('input[name=code]')?.value.trim() ?? '';
+    if (!CODE.test(code)) {
+      this.problem = msg('Use letters, digits, - or _ (up to 32), as on the code you were given.');
+      return;
+    }
+    this.renderRoot.querySelector('dialog')?.close();
+    fire(this, 'participant-code', code);
+  }
+}
+
+customElements.define('rt-participant-dialog', RtParticipantDialog);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-participant-dialog': RtParticipantDialog;
+  }
+}

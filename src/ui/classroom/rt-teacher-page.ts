@@ -1,0 +1,383 @@
+import { msg } from '@lit/localize';
+import { css, html, LitElement, nothing } from 'lit';
+import QRCode from 'qrcode';
+import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
+import type { Assignment } from '../../classroom/assignment.ts';
+import { TITLE_MAX } from '../../classroom/assignment-schema.ts';
+import { assignmentUrl } from '../../classroom/assignment-link.ts';
+import { SURVEY_IDS } from '../../classroom/surveys.ts';
+import type { Level } from '../../quest/level-schema.ts';
+import { playableLevels } from '../../quest/level-index.ts';
+import { localize } from '../../quest/localized-text.ts';
+import { classroomStyles, pageStyles } from './classroom-styles.ts';
+import '../shell/rt-theme-toggle.ts';
+
+/**
+ * @summary The teacher page (`#/teacher`): builds an assignment — title, levels and their
+ * order, required tasks, other levels, language, participant code, closing survey — and
+ * shows its link with a copy button, a QR code for the projector and a link to try it as a
+ * student. Nothing is stored or sent: the link is the assignment.
+ */
+export class RtTeacherPage extends LitElement {
+  static override properties = {
+    assignment: { state: true },
+    url: { state: true },
+    qr: { state: true },
+    status: { state: true },
+    stale: { state: true },
+  };
+
+  static override styles = [
+    classroomStyles,
+    pageStyles,
+    css`
+      main {
+        display: grid;
+        grid-template-columns: minmax(0, 1fr) minmax(300px, 420px);
+        gap: calc(var(--rt-space) * 2);
+        padding: calc(var(--rt-space) * 2);
+        max-width: 1280px;
+        margin: 0 auto;
+      }
+      section {
+        margin-bottom: calc(var(--rt-space) * 2);
+      }
+      h2 {
+        font-size: 1.05rem;
+        margin: 0 0 var(--rt-space);
+      }
+      label.field {
+        display: grid;
+        gap: 4px;
+        font-weight: 600;
+      }
+      ol {
+        padding-left: 1.5em;
+        margin: 0 0 var(--rt-space);
+      }
+      li {
+        margin-bottom: var(--rt-space);
+        padding: 8px;
+        border: 1px solid var(--rt-border);
+        border-radius: 6px;
+        background: var(--rt-surface-2);
+      }
+      .level-head {
+        display: flex;
+        align-items: center;
+        gap: 6px;
+        flex-wrap: wrap;
+      }
+      .level-head strong {
+        flex: 1;
+        min-width: 10em;
+      }
+      .icon {
+        min-width: var(--rt-target);
+        justify-content: center;
+        padding: 4px;
+      }
+      fieldset {
+        border: 0;
+        margin: 6px 0 0;
+        padding: 0;
+      }
+      legend {
+        font-size: 0.9em;
+        color: var(--rt-muted);
+        padding: 0;
+      }
+      .check {
+        display: flex;
+        gap: 6px;
+        align-items: center;
+        min-height: 28px;
+        cursor: pointer;
+      }
+      .row {
+        display: flex;
+        flex-wrap: wrap;
+        gap: var(--rt-space);
+        align-items: center;
+      }
+      .choices {
+        display: flex;
+        flex-wrap: wrap;
+        gap: 4px 16px;
+        margin-bottom: var(--rt-space);
+      }
+      .result {
+        position: sticky;
+        top: calc(var(--rt-space) * 2);
+        align-self: start;
+      }
+      .link {
+        width: 100%;
+        font-family: ui-monospace, monospace;
+        font-size: 0.85em;
+      }
+      .qr {
+        display: block;
+        width: 100%;
+        max-width: 380px;
+        aspect-ratio: 1;
+        margin: var(--rt-space) auto;
+        background: #fff;
+        border-radius: 6px;
+      }
+      @media (max-width: 900px) {
+        main {
+          grid-template-columns: 1fr;
+        }
+        .result {
+          position: static;
+        }
+      }
+    `,
+  ];
+
+  declare assignment: Assignment;
+  /** The student link, or null while it is being made or when the assignment cannot be made. */
+  declare url: string | null;
+  declare qr: string | null;
+  declare status: string;
+  /** A newer link is being made (compressing, drawing the QR code). */
+  declare stale: boolean;
+
+  private readonly levels: Level[] = playableLevels(loadBrowserCatalog());
+  private made = 0;
+
+  constructor() {
+    super();
+    const first = this.levels[0];
+    this.assignment = {
+      version: 1,
+      title: msg('Ray tracing lesson'),
+      levels: first ? [first.id] : [],
+      requiredTasks: first ? { [first.id]: mandatoryTasks(first) } : {},
+      otherLevels: 'hidden',
+      locale: 'en',
+      askParticipantCode: false,
+      survey: null,
+    };
+    this.url = null;
+    this.qr = null;
+    this.status = '';
+    this.stale = false;
+  }
+
+  override willUpdate(changed: Map<string, unknown>): void {
+    if (changed.has('assignment')) void this.makeLink();
+  }
+
+  /** The problem that keeps the assignment from being a link, or null. */
+  private get problem(): string | null {
+    if (this.assignment.title.trim() === '') return msg('Give the assignment a title.');
+    if (this.assignment.levels.length === 0) return msg('Add at least one level.');
+    return null;
+  }
+
+  private async makeLink(): Promise<void> {
+    const run = ++this.made;
+    // Until the new link is made, the one shown is out of date: it must not be copied or opened.
+    this.stale = true;
+    if (this.problem) {
+      this.url = this.qr = null;
+      return;
+    }
+    const assignment = { ...this.assignment, title: this.assignment.title.trim() };
+    const url = await assignmentUrl(assignment, location.href);
+    const svg = await QRCode.toString(url, { type: 'svg', errorCorrectionLevel: 'M', margin: 2 });
+    // A newer change may have finished first: only the latest link is shown.
+    if (run !== this.made) return;
+    this.url = url;
+    this.qr = `data:image/svg+xml;charset=utf-8,${encodeURIComponent(svg)}`;
+    this.status = '';
+    this.stale = false;
+  }
+
+  private change(changes: Partial<Assignment>): void {
+    this.assignment = { ...this.assignment, ...changes };
+  }
+
+  private level(id: string): Level | undefined {
+    return this.levels.find((level) => level.id === id);
+  }
+
+  private addLevel(id: string): void {
+    const level = this.level(id);
+    if (!level || this.assignment.levels.includes(id)) return;
+    this.change({ levels: [...this.assignment.levels, id], requiredTasks: { ...this.assignment.requiredTasks, [id]: mandatoryTasks(level) } });
+  }
+
+  private removeLevel(id: string): void {
+    const { [id]: _removed, ...requiredTasks } = this.assignment.requiredTasks;
+    this.change({ levels: this.assignment.levels.filter((other) => other !== id), requiredTasks });
+  }
+
+  private moveLevel(index: number, by: -1 | 1): void {
+    const levels = [...this.assignment.levels];
+    [levels[index], levels[index + by]] = [levels[index + by], levels[index]];
+    this.change({ levels });
+    // Keep the keyboard on the moved level's button.
+    void this.updateComplete.then(() => this.renderRoot.querySelector<HTMLElement>(`[data-level="${levels[index + by]}"] [data-move="${by}"]`)?.focus());
+  }
+
+  private toggleTask(levelId: string, taskId: string, required: boolean): void {
+    const level = this.level(levelId);
+    const current = new Set(this.assignment.requiredTasks[levelId] ?? []);
+    if (required) current.add(taskId);
+    else current.delete(taskId);
+    // In the level's order, so the link is the same however the boxes were ticked.
+    const tasks = level ? level.tasks.map((task) => task.id).filter((id) => current.has(id)) : [...current];
+    this.change({ requiredTasks: { ...this.assignment.requiredTasks, [levelId]: tasks } });
+  }
+
+  private async copy(): Promise<void> {
+    if (!this.url) return;
+    try {
+      await navigator.clipboard.writeText(this.url);
+      this.status = msg('Link copied.');
+    } catch {
+      // No clipboard permission (an http page, an old browser): select the text for Ctrl+C.
+      const field = this.renderRoot.querySelector<HTMLInputElement>('input.link');
+      field?.select();
+      this.status = msg('Press Ctrl+C (or ⌘C) to copy the selected link.');
+    }
+  }
+
+  override render() {
+    const a = this.assignment;
+    const locale = a.locale;
+    const available = this.levels.filter((level) => !a.levels.includes(level.id));
+    return html`
+      <header>
+        <h1>${msg('Make an assignment')}</h1>
+        <a class="button" href="#/">${msg('Back to the game')}</a>
+        <rt-theme-toggle></rt-theme-toggle>
+      </header>
+      <main>
+        <div>
+          <section>
+            <label class="field">
+              ${msg('Title (the students see it)')}
+              <input type="text" name="title" maxlength=${TITLE_MAX} .value=${a.title} @input=${(e: Event) => this.change({ title: (e.target as HTMLInputElement).value })} />
+            </label>
+          </section>
+          <section aria-labelledby="levels-heading">
+            <h2 id="levels-heading">${msg('Levels, in the order the students play them')}</h2>
+            ${a.levels.length === 0 ? html`<p class="problem">${msg('Add at least one level.')}</p>` : nothing}
+            <ol>
+              ${a.levels.map((id, index) => this.renderLevel(id, index, locale))}
+            </ol>
+            <div class="row">
+              <label for="add-level">${msg('Add a level')}</label>
+              <select id="add-level" name="add-level" ?disabled=${available.length === 0}>
+                ${available.map((level) => html`<option value=${level.id}>${localize(level.title, locale)}</option>`)}
+              </select>
+              <button
+                type="button"
+                ?disabled=${available.length === 0}
+                title=${msg('Add the chosen level at the end of the list')}
+                @click=${() => this.addLevel(this.renderRoot.querySelector<HTMLSelectElement>('#add-level')?.value ?? '')}
+              >
+                ${msg('Add')}
+              </button>
+            </div>
+          </section>
+          <section>
+            <h2>${msg('Settings')}</h2>
+            ${this.renderChoice(msg('Other levels'), 'otherLevels', a.otherLevels, [
+              ['hidden', msg('Hidden: only the assignment')],
+              ['shown', msg('Shown: playable after the assignment')],
+            ])}
+            ${this.renderChoice(msg('Language'), 'locale', a.locale, [
+              ['en', 'English'],
+              ['nl', 'Nederlands'],
+            ])}
+            ${this.renderChoice(msg('Participant code'), 'askParticipantCode', a.askParticipantCode ? 'yes' : 'no', [
+              ['no', msg('Do not ask')],
+              ['yes', msg('Ask for a code at the start (for research)')],
+            ])}
+            ${this.renderChoice(msg('Closing survey'), 'survey', a.survey ?? 'none', [
+              ['none', msg('None')],
+              ...SURVEY_IDS.map((id): [string, string] => [id, id === 'default' ? msg('The standard questions (about 5 minutes)') : id]),
+            ])}
+            ${a.survey ? html`<a href=${`#/survey/${a.survey}`} target="_blank" rel="noopener">${msg('Preview the survey (opens a new tab)')}</a>` : nothing}
+          </section>
+        </div>
+        <section class="result" aria-labelledby="result-heading">
+          <h2 id="result-heading">${msg('Link for the students')}</h2>
+          ${this.problem
+            ? html`<p class="problem" role="alert">${this.problem}</p>`
+            : html`
+                <input class="link" type="text" readonly aria-label=${msg('Assignment link')} .value=${this.url ?? ''} @focus=${(e: Event) => (e.target as HTMLInputElement).select()} />
+                <div class="row" style="margin-top: 8px">
+                  <button class="primary" type="button" ?disabled=${!this.url || this.stale} @click=${this.copy}>${msg('Copy link')}</button>
+                  <a class="button" href=${(!this.stale && this.url) || '#/teacher'} aria-disabled=${this.stale ? 'true' : 'false'} target="_blank" rel="noopener">${msg('Open as a student')}</a>
+                  <span role="status">${this.status}</span>
+                </div>
+                ${this.qr ? html`<img class="qr" src=${this.qr} alt=${msg('QR code of the assignment link')} />` : nothing}
+                <p class="muted">${msg('Show the QR code on the projector; students scan it or type the link. Progress stays in each student\'s browser.')}</p>
+              `}
+        </section>
+      </main>
+    `;
+  }
+
+  private renderLevel(id: string, index: number, locale: Assignment['locale']) {
+    const level = this.level(id);
+    const title = level ? localize(level.title, locale) : id;
+    const required = new Set(this.assignment.requiredTasks[id] ?? []);
+    const last = this.assignment.levels.length - 1;
+    return html`<li data-level=${id}>
+      <div class="level-head">
+        <strong>${title}</strong>
+        <button class="icon" type="button" data-move="-1" ?disabled=${index === 0} aria-label=${msg(`Move ${title} up`)} title=${msg('Move up')} @click=${() => this.moveLevel(index, -1)}>↑</button>
+        <button class="icon" type="button" data-move="1" ?disabled=${index === last} aria-label=${msg(`Move ${title} down`)} title=${msg('Move down')} @click=${() => this.moveLevel(index, 1)}>↓</button>
+        <button class="icon" type="button" aria-label=${msg(`Remove ${title}`)} title=${msg('Remove from the assignment')} @click=${() => this.removeLevel(id)}>✕</button>
+      </div>
+      ${level
+        ? html`<fieldset>
+            <legend>${msg('Required tasks (the others are optional)')}</legend>
+            ${level.tasks.map(
+              (task) => html`<label class="check">
+                <input type="checkbox" name=${`${id}/${task.id}`} .checked=${required.has(task.id)} @change=${(e: Event) => this.toggleTask(id, task.id, (e.target as HTMLInputElement).checked)} />
+                ${localize(task.title, locale)} ${task.mandatory ? nothing : html`<span class="muted">${msg('(optional in the level)')}</span>`}
+              </label>`,
+            )}
+          </fieldset>`
+        : nothing}
+    </li>`;
+  }
+
+  private renderChoice(legend: string, name: 'otherLevels' | 'locale' | 'askParticipantCode' | 'survey', value: string, options: [string, string][]) {
+    const pick = (option: string) => {
+      if (name === 'askParticipantCode') this.change({ askParticipantCode: option === 'yes' });
+      else if (name === 'survey') this.change({ survey: option === 'none' ? null : option });
+      else if (name === 'locale') this.change({ locale: option === 'nl' ? 'nl' : 'en' });
+      else this.change({ otherLevels: option === 'shown' ? 'shown' : 'hidden' });
+    };
+    return html`<fieldset class="choices">
+      <legend>${legend}</legend>
+      ${options.map(
+        ([option, label]) => html`<label class="check">
+          <input type="radio" name=${name} value=${option} .checked=${value === option} @change=${() => pick(option)} />
+          ${label}
+        </label>`,
+      )}
+    </fieldset>`;
+  }
+}
+
+function mandatoryTasks(level: Level): string[] {
+  return level.tasks.filter((task) => task.mandatory).map((task) => task.id);
+}
+
+customElements.define('rt-teacher-page', RtTeacherPage);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-teacher-page': RtTeacherPage;
+  }
+}

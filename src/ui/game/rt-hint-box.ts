@@ -1,0 +1,72 @@
+import { msg } from '@lit/localize';
+import { html, LitElement, nothing } from 'lit';
+import type { Locale } from '../../quest/localized-text.ts';
+import { localize } from '../../quest/localized-text.ts';
+import type { TaskView } from '../../quest/quest-engine.ts';
+import { fire, gameStyles } from './game-styles.ts';
+import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
+
+/**
+ * @summary A task's hint ladder: the text hints shown so far, and one button for the next
+ * rung, named for what it does ("Hint", "Show me where", "Show me").
+ *
+ * @fires quest-command - `hint` or `show-me` for the task.
+ */
+export class RtHintBox extends LitElement {
+  static override properties = { task: { attribute: false }, locale: {} };
+  static override styles = gameStyles;
+
+  declare task: TaskView | undefined;
+  declare locale: Locale;
+
+  constructor() {
+    super();
+    this.locale = 'en';
+  }
+
+  override render() {
+    const view = this.task;
+    if (!view) return nothing;
+    const id = view.task.id;
+    const next = view.nextHint;
+    const command: QuestCommand | null = next === 'show-me' ? { kind: 'show-me', task: id } : next ? { kind: 'hint', task: id } : null;
+    return html`
+      <div aria-live="polite">
+        ${view.hints.map((hint, index) => html`<p class="hint"><strong>${msg('Hint')} ${index + 1}:</strong> ${localize(hint, this.locale)}</p>`)}
+      </div>
+      ${command
+        ? html`<button data-hint=${next ?? ''} title=${this.tooltip(next)} @click=${() => fire(this, QUEST_COMMAND, command)}>${this.label(view)}</button>`
+        : nothing}
+    `;
+  }
+
+  private label(view: TaskView): string {
+    switch (view.nextHint) {
+      case 'text':
+        return view.hints.length === 0 ? msg('Hint') : msg('Another hint');
+      case 'guidance':
+        return msg('Show me where');
+      default:
+        return msg('Show me');
+    }
+  }
+
+  private tooltip(next: TaskView['nextHint']): string {
+    switch (next) {
+      case 'text':
+        return msg('A tip in words');
+      case 'guidance':
+        return msg('A ring shows the control to use');
+      default:
+        return msg('The app does it for you, step by step (the task then gives no points)');
+    }
+  }
+}
+
+customElements.define('rt-hint-box', RtHintBox);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-hint-box': RtHintBox;
+  }
+}

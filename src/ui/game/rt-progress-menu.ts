@@ -1,0 +1,126 @@
+import { msg } from '@lit/localize';
+import { css, html, LitElement } from 'lit';
+import type { Locale } from '../../quest/localized-text.ts';
+import { fire, gameStyles } from './game-styles.ts';
+
+/** The detail of `progress-command`. */
+export type ProgressCommand = { kind: 'locale'; locale: Locale } | { kind: 'export' } | { kind: 'import'; text: string; fileName: string } | { kind: 'reset' };
+
+/**
+ * @summary The header's menu: the language of the level texts, and the learner's progress:
+ * export as a file, import a file, reset (after a confirmation dialog).
+ *
+ * @fires progress-command - CustomEvent<ProgressCommand>.
+ */
+export class RtProgressMenu extends LitElement {
+  static override properties = { locale: {} };
+  static override styles = [
+    gameStyles,
+    css`
+      [popover] {
+        width: 280px;
+      }
+      fieldset {
+        margin: 0 0 12px;
+        padding: 0;
+        border: 0;
+      }
+      legend {
+        font-weight: 600;
+        margin-bottom: 4px;
+      }
+      label {
+        display: flex;
+        align-items: center;
+        gap: 8px;
+        min-height: 32px;
+      }
+      .stack {
+        display: grid;
+        gap: 8px;
+      }
+      input[type='file'] {
+        display: none;
+      }
+      dialog {
+        max-width: 360px;
+        border: 1px solid var(--rt-border);
+        border-radius: var(--rt-radius);
+        background: var(--rt-surface);
+        color: var(--rt-text);
+      }
+      .actions {
+        display: flex;
+        gap: 8px;
+        justify-content: flex-end;
+      }
+      button.danger {
+        border-color: var(--rt-danger);
+        color: var(--rt-danger);
+      }
+    `,
+  ];
+
+  declare locale: Locale;
+
+  constructor() {
+    super();
+    this.locale = 'en';
+  }
+
+  override render() {
+    const send = (command: ProgressCommand) => fire(this, 'progress-command', command);
+    return html`
+      <button popovertarget="menu" title=${msg('Language and progress: export, import, reset')}>☰ ${msg('Menu')}</button>
+      <div id="menu" popover>
+        <fieldset>
+          <legend>${msg('Language of the lessons')}</legend>
+          ${(
+            [
+              ['en', 'English'],
+              ['nl', 'Nederlands'],
+            ] as const
+          ).map(
+            ([locale, name]) => html`<label>
+              <input type="radio" name="locale" .checked=${this.locale === locale} @change=${() => send({ kind: 'locale', locale })} /> ${name}
+            </label>`,
+          )}
+          <p class="muted">${msg('Buttons and menus stay in English for now.')}</p>
+        </fieldset>
+        <fieldset class="stack">
+          <legend>${msg('Your progress')}</legend>
+          <button @click=${() => send({ kind: 'export' })} title=${msg('Download your progress as a file, to keep it or take it to another computer')}>${msg('Export progress…')}</button>
+          <button @click=${() => this.renderRoot.querySelector<HTMLInputElement>('input[type=file]')?.click()} title=${msg('Continue from a progress file you exported')}>
+            ${msg('Import progress…')}
+          </button>
+          <input type="file" accept=".json,application/json" aria-label=${msg('Progress file to import')} @change=${this.imported} />
+          <button class="danger" @click=${() => this.renderRoot.querySelector('dialog')?.showModal()} title=${msg('Start the game from the beginning')}>${msg('Reset progress…')}</button>
+        </fieldset>
+      </div>
+      <dialog aria-labelledby="reset-title">
+        <h3 id="reset-title">${msg('Reset all progress?')}</h3>
+        <p>${msg('Your points, badges and finished levels will be gone. Export your progress first if you may want it back.')}</p>
+        <form method="dialog" class="actions">
+          <button value="cancel" autofocus>${msg('Cancel')}</button>
+          <button value="reset" class="danger" @click=${() => send({ kind: 'reset' })}>${msg('Reset')}</button>
+        </form>
+      </dialog>
+    `;
+  }
+
+  private async imported(event: Event): Promise<void> {
+    const input = event.target as HTMLInputElement;
+    const file = input.files?.[0];
+    input.value = '';
+    if (!file) return;
+    fire<ProgressCommand>(this, 'progress-command', { kind: 'import', text: await file.text(), fileName: file.name });
+  }
+}
+
+customElements.define('rt-progress-menu', RtProgressMenu);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-progress-menu': RtProgressMenu;
+  }
+}

@@ -1,0 +1,148 @@
+import { msg, str } from '@lit/localize';
+import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
+import { localize, type Locale } from '../../quest/localized-text.ts';
+import type { LevelView } from '../../quest/quest-engine.ts';
+import { explainMore, fire, gameStyles } from './game-styles.ts';
+import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
+import './rt-task-card.ts';
+
+/**
+ * @summary The task column of a level: its title and intro (with "Explain more"), the
+ * celebration once the level is passed (points, badges, "Next level"), and the task list
+ * with the current task open. A quiz just answered stays open to show its feedback.
+ *
+ * @fires quest-command - everything the learner asks (QuestCommand).
+ */
+export class RtQuestPanel extends LitElement {
+  static override properties = {
+    view: { attribute: false },
+    locale: {},
+    hasNextLevel: { type: Boolean, attribute: 'has-next-level' },
+    badges: { attribute: false },
+    recentQuiz: { state: true },
+  };
+  static override styles = [
+    gameStyles,
+    css`
+      :host {
+        display: flex;
+        flex-direction: column;
+        gap: 10px;
+        color: var(--rt-text);
+      }
+      h2 {
+        font-size: 1.1rem;
+      }
+      .level-points {
+        font-size: 0.8125rem;
+      }
+      ol {
+        display: flex;
+        flex-direction: column;
+        gap: 6px;
+        margin: 0;
+        padding: 0;
+        list-style: none;
+      }
+      rt-task-card {
+        display: block;
+      }
+      .celebration {
+        border: 2px solid var(--rt-success);
+        background: color-mix(in srgb, var(--rt-success) 10%, var(--rt-surface));
+      }
+      .celebration h3 {
+        font-size: 1.05rem;
+      }
+      .celebration ul {
+        margin: 0 0 8px;
+        padding-left: 1.2em;
+      }
+      .actions {
+        display: flex;
+        flex-wrap: wrap;
+        gap: 8px;
+      }
+      .celebration .actions:not(:last-child) {
+        margin-bottom: 8px;
+      }
+    `,
+  ];
+
+  declare view: LevelView | null;
+  declare locale: Locale;
+  declare hasNextLevel: boolean;
+  /** Names of the badges earned in this level. */
+  declare badges: string[];
+  declare private recentQuiz: string | null;
+
+  constructor() {
+    super();
+    this.view = null;
+    this.locale = 'en';
+    this.hasNextLevel = false;
+    this.badges = [];
+    this.recentQuiz = null;
+    this.addEventListener(QUEST_COMMAND, (event) => {
+      const command = (event as CustomEvent<QuestCommand>).detail;
+      if (command.kind === 'answer' || command.kind === 'show-me') this.recentQuiz = command.task;
+    });
+  }
+
+  protected override willUpdate(changed: PropertyValues<this>): void {
+    if (changed.has('view') && changed.get('view')?.level.id !== this.view?.level.id) this.recentQuiz = null;
+  }
+
+  override render() {
+    const view = this.view;
+    if (!view) return nothing;
+    const { level } = view;
+    const send = (command: QuestCommand) => fire(this, QUEST_COMMAND, command);
+    return html`
+      <header>
+        <h2>${localize(level.title, this.locale)}</h2>
+        <p class="muted level-points">${msg(str`${view.points} of ${view.maxPoints} points`)}</p>
+        <p>${localize(level.intro.text, this.locale)}</p>
+        ${level.intro.more ? explainMore(localize(level.intro.more, this.locale), () => send({ kind: 'explain', task: 'intro' })) : nothing}
+      </header>
+      ${view.passed ? this.celebration(view, send) : nothing}
+      <ol aria-label=${msg('Tasks')}>
+        ${view.tasks.map(
+          (task) => html`<li>
+            <rt-task-card
+              .task=${task}
+              locale=${this.locale}
+              ?expanded=${task.status === 'current' || (task.kind === 'quiz' && task.task.id === this.recentQuiz)}
+            ></rt-task-card>
+          </li>`,
+        )}
+      </ol>
+    `;
+  }
+
+  private celebration(view: LevelView, send: (command: QuestCommand) => void) {
+    return html`<section class="card celebration" role="status" aria-label=${msg('Level complete')}>
+      <h3>★ ${msg('Level complete!')}</h3>
+      <p>${msg(str`You have ${view.points} of ${view.maxPoints} points in this level.`)}</p>
+      ${this.badges.length > 0
+        ? html`<p>${msg('Badges earned:')}</p>
+            <ul>
+              ${this.badges.map((badge) => html`<li>◆ ${badge}</li>`)}
+            </ul>`
+        : nothing}
+      <div class="actions">
+        ${this.hasNextLevel ? html`<button class="primary" data-action="next-level" @click=${() => send({ kind: 'next-level' })}>${msg('Next level')}</button>` : nothing}
+        <button @click=${() => send({ kind: 'map' })}>${msg('Level map')}</button>
+      </div>
+      ${view.tasks.some((task) => task.status === 'open') ? html`<p class="muted">${msg('Optional tasks are still open below, for extra points.')}</p>` : nothing}
+    </section>`;
+  }
+}
+
+customElements.define('rt-quest-panel', RtQuestPanel);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-quest-panel': RtQuestPanel;
+  }
+}

@@ -1,0 +1,157 @@
+import { msg, str } from '@lit/localize';
+import { css, html, LitElement, nothing, type TemplateResult } from 'lit';
+import { localize, type Locale } from '../../quest/localized-text.ts';
+import type { TaskView } from '../../quest/quest-engine.ts';
+import { explainMore, fire, gameStyles } from './game-styles.ts';
+import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
+import './rt-hint-box.ts';
+import './rt-quiz.ts';
+
+/**
+ * @summary One task in the task list: a status mark (in words for screen readers, as a
+ * symbol for the eye), its title and points; expanded, its instruction, "Explain more", the
+ * quiz or the Next button, and the hint ladder. Optional tasks can be skipped.
+ *
+ * @fires quest-command - next, skip, explain (and, from inside, hint, show-me, answer).
+ */
+export class RtTaskCard extends LitElement {
+  static override properties = { task: { attribute: false }, locale: {}, expanded: { type: Boolean, reflect: true }, opened: { state: true } };
+  static override styles = [
+    gameStyles,
+    css`
+      :host {
+        border: 1px solid var(--rt-border);
+        border-radius: var(--rt-radius);
+        background: var(--rt-surface);
+      }
+      :host([status='current']) {
+        border: 2px solid var(--rt-accent);
+        box-shadow: var(--rt-shadow);
+      }
+      button.head {
+        width: 100%;
+        border: 0;
+        background: none;
+        text-align: left;
+      }
+      .head {
+        display: flex;
+        align-items: center;
+        gap: 8px;
+        min-height: 36px;
+        padding: 2px 10px;
+      }
+      .mark {
+        flex: none;
+        width: 1.4em;
+        text-align: center;
+        font-weight: 700;
+      }
+      .title {
+        flex: 1;
+        min-width: 0;
+      }
+      :host([status='current']) .title {
+        font-weight: 700;
+      }
+      .done .mark {
+        color: var(--rt-success);
+      }
+      .body {
+        padding: 0 10px 10px;
+      }
+      .actions {
+        display: flex;
+        flex-wrap: wrap;
+        gap: 8px;
+        margin-top: 8px;
+      }
+      .hint-box {
+        display: block;
+        margin-top: 8px;
+      }
+    `,
+  ];
+
+  declare task: TaskView | undefined;
+  declare locale: Locale;
+  declare expanded: boolean;
+  /** An optional task the learner opened to read. */
+  declare private opened: boolean;
+
+  constructor() {
+    super();
+    this.locale = 'en';
+    this.expanded = false;
+    this.opened = false;
+  }
+
+  override updated(): void {
+    // The status is an attribute so the styles (and browser tests) can see which task is current.
+    if (this.task) this.setAttribute('status', this.task.status);
+  }
+
+  override render() {
+    const view = this.task;
+    if (!view) return nothing;
+    const finished = view.status === 'done' || view.status === 'shown' || view.status === 'skipped';
+    const head = html`
+      <span class="mark" aria-hidden="true">${MARKS[view.status]}</span>
+      <span class="title">${localize(view.task.title, this.locale)}<span class="visually-hidden"> (${statusText(view)})</span></span>
+      ${view.task.mandatory ? nothing : html`<span class="tag muted">${msg('optional')}</span>`}
+      ${view.task.points > 0 ? html`<span class="tag muted" title=${msg('Points')}>${finished ? msg(str`${view.points} pts`) : msg(str`${view.task.points} pts`)}</span>` : nothing}
+    `;
+    // Optional tasks open on request, so the current task keeps the learner's eye.
+    const openable = view.status === 'open' && !this.expanded;
+    return html`
+      ${openable
+        ? html`<button class="head" aria-expanded=${String(this.opened)} title=${msg('Show or hide this optional task')} @click=${() => (this.opened = !this.opened)}>${head}</button>`
+        : html`<div class="head ${finished ? 'done' : ''}">${head}</div>`}
+      ${this.expanded || (openable && this.opened) ? html`<div class="body">${this.body(view, finished)}</div>` : nothing}
+    `;
+  }
+
+  private body(view: TaskView, finished: boolean): TemplateResult {
+    const id = view.task.id;
+    const send = (command: QuestCommand) => fire(this, QUEST_COMMAND, command);
+    return html`
+      <p>${localize(view.task.text, this.locale)}</p>
+      ${view.task.more ? explainMore(localize(view.task.more, this.locale), () => send({ kind: 'explain', task: id })) : nothing}
+      ${view.kind === 'quiz' ? html`<rt-quiz .task=${view} locale=${this.locale}></rt-quiz>` : nothing}
+      ${finished
+        ? nothing
+        : html`
+            ${view.kind === 'info' ? html`<div class="actions"><button class="primary" @click=${() => send({ kind: 'next' })}>${msg('Next')}</button></div>` : nothing}
+            ${view.kind === 'info' ? nothing : html`<rt-hint-box class="hint-box" .task=${view} locale=${this.locale}></rt-hint-box>`}
+            ${view.required ? nothing : html`<div class="actions"><button class="link" title=${msg('Leave this optional task out (no points)')} @click=${() => send({ kind: 'skip', task: id })}>${msg('Skip')}</button></div>`}
+          `}
+    `;
+  }
+}
+
+const MARKS: Record<TaskView['status'], string> = { current: '▶', open: '○', waiting: '·', done: '✓', shown: '✓', skipped: '–' };
+
+function statusText(view: TaskView): string {
+  switch (view.status) {
+    case 'current':
+      return msg('to do now');
+    case 'open':
+      return msg('optional, not done');
+    case 'waiting':
+      return msg('later');
+    case 'done':
+      return msg('done');
+    case 'shown':
+      return msg('shown to you');
+    case 'skipped':
+      return msg('skipped');
+  }
+}
+
+customElements.define('rt-task-card', RtTaskCard);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-task-card': RtTaskCard;
+  }
+}

@@ -1,0 +1,297 @@
+import { msg, str } from '@lit/localize';
+import { css, html, nothing, type PropertyValues, type TemplateResult } from 'lit';
+import { repeat } from 'lit/directives/repeat.js';
+import type { LabAction } from '../../../lab-state/lab-action.ts';
+import type { Selection } from '../../../lab-state/lab-state.ts';
+import { MESH_ASSET_NAMES } from '../../../scene/mesh-assets.ts';
+import type { LightType } from '../../../scene/scene.ts';
+import { cameraIcon, lightIcon, shapeIcon } from '../scene-icons.ts';
+import { lightTypeName, lightTypeShortName, modelName, shapeKindName, shapeName } from '../scene-names.ts';
+import { StorePanel } from './store-panel.ts';
+
+/** One row of the list, in the order the arrow keys walk. */
+interface Item {
+  key: string;
+  selection: Exclude<Selection, null>;
+}
+
+const SHAPES = ['sphere', 'box', 'cylinder', 'plane'] as const;
+const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
+
+/**
+ * @summary The scene's objects, lights and camera as a list to select from, with Add and
+ * Delete (hidden when `allowEditing` is false, as in the game's first levels).
+ *
+ * A single-select listbox: Tab enters it at the selected item; Up/Down, Home and End move
+ * and select (the 3D view follows at once); Delete removes the selected item. Add opens
+ * buttons for each shape, model and light type. Every change is a `selection.changed`,
+ * `object.added`, `light.added`, `object.deleted` or `light.deleted` action on `store`.
+ */
+export class RtSceneList extends StorePanel {
+  static override properties = {
+    ...StorePanel.properties,
+    allowEditing: { type: Boolean, attribute: 'allow-editing' },
+    adding: { state: true },
+  };
+
+  static override styles = [
+    StorePanel.styles,
+    css`
+      [role='listbox'] {
+        display: grid;
+        margin: 0 -8px;
+      }
+      .group-label {
+        padding: 8px 8px 4px;
+        color: var(--rt-muted);
+        font-size: 0.75rem;
+        font-weight: 700;
+        letter-spacing: 0.04em;
+        text-transform: uppercase;
+      }
+      [role='option'] {
+        display: flex;
+        align-items: center;
+        gap: 8px;
+        min-height: 32px;
+        padding: 0 8px;
+        border-radius: 6px;
+        cursor: pointer;
+      }
+      [role='option']:hover {
+        background: var(--rt-bg);
+      }
+      [role='option'][aria-selected='true'] {
+        background: var(--rt-accent);
+        color: var(--rt-accent-text);
+        font-weight: 600;
+      }
+      [role='option']:focus-visible {
+        outline-offset: -3px;
+      }
+      [role='option'][aria-selected='true']:focus-visible {
+        outline-color: var(--rt-text);
+      }
+      .icon {
+        flex: none;
+      }
+      .name {
+        flex: 1 1 auto;
+        min-width: 0;
+        overflow: hidden;
+        text-overflow: ellipsis;
+        white-space: nowrap;
+      }
+      .kind {
+        flex: none;
+        font-size: 0.8125rem;
+        opacity: 0.8;
+      }
+      .actions {
+        display: flex;
+        gap: 8px;
+      }
+      .actions button {
+        flex: 1 1 0;
+      }
+      .add {
+        display: grid;
+        gap: 8px;
+        padding: 8px;
+        border: 1px solid var(--rt-border);
+        border-radius: 6px;
+        background: var(--rt-bg);
+      }
+      .add fieldset {
+        display: grid;
+        grid-template-columns: 1fr 1fr;
+        gap: 8px;
+        margin: 0;
+        padding: 0;
+        border: 0;
+        min-width: 0;
+      }
+      /* Floated, a legend is an ordinary grid item: a row of its own above the buttons. */
+      .add legend {
+        float: left;
+        grid-column: 1 / -1;
+        padding: 0;
+        color: var(--rt-muted);
+        font-size: 0.8125rem;
+      }
+      .add .lights {
+        grid-template-columns: 1fr 1fr 1fr;
+      }
+      .add button {
+        padding: 0 8px;
+      }
+    `,
+  ];
+
+  /** Show Add and Delete (default true); the game's early levels switch them off. */
+  declare allowEditing: boolean;
+  /** Whether the Add buttons are open. */
+  declare private adding: boolean;
+  /** Focus the selected row after the next render (after adding or deleting by keyboard). */
+  private focusSelected = false;
+
+  constructor() {
+    super();
+    this.allowEditing = true;
+    this.adding = false;
+  }
+
+  private items(): Item[] {
+    const scene = this.state?.scene;
+    if (!scene) return [];
+    return [
+      ...scene.objects.map((o): Item => ({ key: `object:${o.id}`, selection: { kind: 'object', id: o.id } })),
+      ...scene.lights.map((l): Item => ({ key: `light:${l.id}`, selection: { kind: 'light', id: l.id } })),
+      { key: 'camera', selection: { kind: 'camera' } },
+    ];
+  }
+
+  private selectedKey(): string | undefined {
+    const selection = this.state?.selection;
+    if (!selection) return undefined;
+    return selection.kind === 'camera' ? 'camera' : `${selection.kind}:${selection.id}`;
+  }
+
+  private select(item: Item): void {
+    if (item.key !== this.selectedKey()) this.send('list', { type: 'selection.changed', selection: item.selection });
+  }
+
+  private onKeydown(event: KeyboardEvent): void {
+    const items = this.items();
+    const current = items.findIndex((item) => item.key === (event.target as HTMLElement).dataset['key']);
+    const moves: Partial<Record<string, number>> = { ArrowDown: current + 1, ArrowUp: current - 1, Home: 0, End: items.length - 1 };
+    const next = moves[event.key];
+    if (next !== undefined) {
+      event.preventDefault();
+      const item = items[Math.max(0, Math.min(items.length - 1, next))];
+      this.select(item);
+      this.optionFor(item.key)?.focus();
+    } else if ((event.key === 'Enter' || event.key === ' ') && current >= 0) {
+      event.preventDefault();
+      this.select(items[current]);
+    } else if (event.key === 'Delete' && this.allowEditing && current >= 0) {
+      // Handled here: the lab's own Delete key must not delete a second time.
+      event.stopPropagation();
+      this.delete(items[current].selection);
+    }
+  }
+
+  private optionFor(key: string): HTMLElement | null {
+    return this.renderRoot.querySelector<HTMLElement>(`[role='option'][data-key='${CSS.escape(key)}']`);
+  }
+
+  private add(action: LabAction): void {
+    this.adding = false;
+    this.focusSelected = true;
+    this.send('edit', action);
+  }
+
+  private delete(selection: Selection): void {
+    if (!selection || selection.kind === 'camera') return;
+    this.focusSelected = true;
+    this.send('edit', selection.kind === 'object' ? { type: 'object.deleted', id: selection.id } : { type: 'light.deleted', id: selection.id });
+  }
+
+  protected override updated(changed: PropertyValues<this>): void {
+    super.updated(changed);
+    if (!this.focusSelected) return;
+    this.focusSelected = false;
+    this.renderRoot.querySelector<HTMLElement>("[role='option'][tabindex='0']")?.focus();
+  }
+
+  override render() {
+    const scene = this.state?.scene;
+    if (!scene) return html``;
+    const selected = this.selectedKey();
+    // Roving tabindex: Tab lands on the selected row, or the first when nothing is selected.
+    const tabStop = selected ?? this.items()[0]?.key;
+    const option = (key: string, icon: TemplateResult, name: string, kind: string, selection: Exclude<Selection, null>) =>
+      html`<div
+        role="option"
+        id=${key}
+        data-key=${key}
+        tabindex=${key === tabStop ? 0 : -1}
+        aria-selected=${key === selected ? 'true' : 'false'}
+        @click=${() => this.select({ key, selection })}
+      >
+        ${icon}<span class="name">${name}</span><span class="kind">${kind}</span>
+      </div>`;
+    const off = (type: LightType) => (scene.settings.lightTypes[type] ? '' : ` (${msg('off')})`);
+    return html`
+      <rt-panel-section heading=${msg('Scene')} name="scene">
+        <div role="listbox" aria-label=${msg('Objects, lights and camera')} @keydown=${this.onKeydown}>
+          <div role="group" aria-labelledby="objects-label">
+            <div role="presentation" class="group-label" id="objects-label">${msg('Objects')}</div>
+            ${repeat(
+              scene.objects,
+              (o) => o.id,
+              (o) => option(`object:${o.id}`, shapeIcon(o.shape, o.material.color), o.name ?? o.id, shapeName(o), { kind: 'object', id: o.id }),
+            )}
+          </div>
+          <div role="group" aria-labelledby="lights-label">
+            <div role="presentation" class="group-label" id="lights-label">${msg('Lights')}</div>
+            ${repeat(
+              scene.lights,
+              (l) => l.id,
+              (l) => option(`light:${l.id}`, lightIcon(l.type, l.color), l.name ?? l.id, lightTypeName(l.type) + off(l.type), { kind: 'light', id: l.id }),
+            )}
+          </div>
+          <div role="group" aria-labelledby="camera-label">
+            <div role="presentation" class="group-label" id="camera-label">${msg('Camera')}</div>
+            ${option('camera', cameraIcon(), msg('Ray tracer camera'), '', { kind: 'camera' })}
+          </div>
+        </div>
+        ${this.errorLine('list')}
+        ${this.allowEditing ? this.editing() : nothing}
+      </rt-panel-section>
+    `;
+  }
+
+  private editing(): TemplateResult {
+    const selection = this.state?.selection ?? null;
+    const deletable = selection !== null && selection.kind !== 'camera';
+    const label = deletable ? msg(str`Delete ${selection.id}`) : msg('Select an object or a light to delete it');
+    return html`
+      <div class="actions">
+        <button type="button" aria-expanded=${this.adding ? 'true' : 'false'} aria-controls="add" @click=${() => (this.adding = !this.adding)}>
+          ${this.adding ? '−' : '+'} ${msg('Add')}
+        </button>
+        <button type="button" title=${label} ?disabled=${!deletable} @click=${() => this.delete(selection)}>${msg('Delete')}</button>
+      </div>
+      ${this.adding ? this.addButtons() : nothing}
+      ${this.errorLine('edit')}
+    `;
+  }
+
+  private addButtons(): TemplateResult {
+    const button = (label: string, title: string, action: LabAction) =>
+      html`<button type="button" title=${title} @click=${() => this.add(action)}>${label}</button>`;
+    return html`<div class="add" id="add">
+      <fieldset>
+        <legend>${msg('Shapes')}</legend>
+        ${SHAPES.map((shape) => button(shapeKindName(shape), msg(str`Add ${shapeKindName(shape)} to the scene`), { type: 'object.added', shape }))}
+      </fieldset>
+      <fieldset>
+        <legend>${msg('Models')}</legend>
+        ${MESH_ASSET_NAMES.map((mesh) => button(modelName(mesh), msg(str`Add the ${modelName(mesh)} model to the scene`), { type: 'object.added', shape: 'mesh', mesh }))}
+      </fieldset>
+      <fieldset class="lights">
+        <legend>${msg('Lights')}</legend>
+        ${LIGHT_TYPES.map((lightType) => button(lightTypeShortName(lightType), msg(str`Add ${lightTypeName(lightType)} to the scene`), { type: 'light.added', lightType }))}
+      </fieldset>
+    </div>`;
+  }
+}
+
+customElements.define('rt-scene-list', RtSceneList);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-scene-list': RtSceneList;
+  }
+}

@@ -1,0 +1,176 @@
+import { msg, str } from '@lit/localize';
+import { html } from 'lit';
+import type { LabAction } from '../../../lab-state/lab-action.ts';
+import type { Camera, LightType, RenderSettings, SamplePattern } from '../../../scene/scene.ts';
+import { LIMITS } from '../../../scene/scene-limits.ts';
+import { StorePanel, type ControlText } from './store-panel.ts';
+
+const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
+
+/**
+ * @summary The ray tracer's settings (the original lab's ray tracer panel): shadows,
+ * recursion depth, background, a switch per light type, dithering; supersampling with its
+ * pattern and "show sample points"; the camera's screen of pixels and field of view; and
+ * the size of the rendered image.
+ *
+ * Edits are `settings.changed`, `camera.changed` and (sample points) `rays.changed`
+ * actions on `store`; a refused edit's reason is shown next to its control.
+ */
+export class RtTracerPanel extends StorePanel {
+  override render() {
+    if (!this.state) return html``;
+    const { settings, camera } = this.state.scene;
+    const set = (changes: Partial<RenderSettings>): LabAction => ({ type: 'settings.changed', changes });
+    const cam = (changes: Partial<Camera>): LabAction => ({ type: 'camera.changed', changes });
+    const s = settings.supersampling;
+    return html`
+      <rt-panel-section heading=${msg('Ray tracer')} name="tracer">
+        ${this.switch(
+          { name: 'shadows', label: msg('Shadows'), tooltip: msg('Send a shadow ray to each light; when off, every light reaches every point.') },
+          settings.shadows,
+          (shadows) => set({ shadows }),
+        )}
+        ${this.slider(
+          {
+            name: 'maxDepth',
+            label: msg('Recursion depth'),
+            tooltip: msg('How many times a ray may reflect or refract; 0 traces only the rays from the camera.'),
+            min: LIMITS.maxDepth[0],
+            max: LIMITS.maxDepth[1],
+            step: 1,
+            whole: true,
+          },
+          settings.maxDepth,
+          (maxDepth) => set({ maxDepth }),
+        )}
+        ${this.color(
+          { name: 'background', label: msg('Background'), tooltip: msg('The colour of a ray that hits nothing.') },
+          settings.background,
+          (background) => set({ background }),
+        )}
+        ${LIGHT_TYPES.map((type) =>
+          this.switch(
+            lightTypeSwitch(type),
+            settings.lightTypes[type],
+            (on) => set({ lightTypes: { ...settings.lightTypes, [type]: on } }),
+          ),
+        )}
+        ${this.switch(
+          {
+            name: 'dithering',
+            label: msg('Dithering'),
+            tooltip: msg('Add a fine pattern before rounding to 8-bit colours, which hides the bands in smooth gradients.'),
+          },
+          settings.dithering,
+          (dithering) => set({ dithering }),
+        )}
+      </rt-panel-section>
+      <rt-panel-section heading=${msg('Anti-aliasing')} name="tracer-supersampling">
+        ${this.slider(
+          {
+            name: 'supersampling',
+            label: msg('Supersampling (s)'),
+            tooltip: msg('s × s rays per pixel, averaged: smoother edges, s² times the work. Type up to 8.'),
+            min: LIMITS.supersampling[0],
+            max: 4,
+            step: 1,
+            inputMax: LIMITS.supersampling[1],
+            whole: true,
+          },
+          s,
+          (supersampling) => set({ supersampling }),
+          s === 1 ? msg('1 ray per pixel') : msg(str`${s} × ${s} = ${s * s} rays per pixel`),
+        )}
+        ${this.choice<SamplePattern>(
+          { name: 'samplePattern', label: msg('Pattern'), tooltip: msg('Where the rays go inside each pixel.') },
+          [
+            { value: 'grid', label: msg('Grid'), tooltip: msg('A regular grid: even, but patterns can show.') },
+            { value: 'jittered', label: msg('Jittered'), tooltip: msg('One random spot in each grid cell: even and without patterns.') },
+            { value: 'random', label: msg('Random'), tooltip: msg('Anywhere in the pixel: can clump and leave gaps.') },
+          ],
+          settings.samplePattern,
+          (samplePattern) => set({ samplePattern }),
+        )}
+        ${this.switch(
+          { name: 'showSamplePoints', label: msg('Show sample points'), tooltip: msg('Draw where each pixel’s rays go on the camera’s screen.') },
+          this.state.rays.showSamplePoints,
+          (showSamplePoints) => ({ type: 'rays.changed', changes: { showSamplePoints } }),
+        )}
+      </rt-panel-section>
+      <rt-panel-section heading=${msg('Camera')} name="tracer-camera">
+        ${([0, 1] as const).map((axis) =>
+          this.slider(
+            {
+              ...pixelsText(axis),
+              min: LIMITS.pixels[0],
+              max: 16,
+              step: 1,
+              inputMax: LIMITS.pixels[1],
+              whole: true,
+            },
+            camera.pixels[axis],
+            (n) => cam({ pixels: axis === 0 ? [n, camera.pixels[1]] : [camera.pixels[0], n] }),
+          ),
+        )}
+        ${this.slider(
+          {
+            name: 'fov',
+            label: msg('Field of view'),
+            tooltip: msg('How wide the camera sees, top to bottom, in degrees: smaller zooms in.'),
+            min: LIMITS.fov[0],
+            max: LIMITS.fov[1],
+            step: 1,
+            unit: '°',
+          },
+          camera.fov,
+          (fov) => cam({ fov }),
+        )}
+      </rt-panel-section>
+      <rt-panel-section heading=${msg('Rendered image')} name="tracer-image">
+        ${this.vector<[number, number]>(
+          {
+            name: 'imageSize',
+            label: msg('Image size'),
+            tooltip: msg('Width and height in pixels of the image the render window makes.'),
+            axes: [msg('width'), msg('height')],
+            min: LIMITS.imageSize[0],
+            max: LIMITS.imageSize[1],
+            step: 1,
+            unit: 'px',
+            whole: true,
+          },
+          settings.imageSize,
+          (imageSize) => set({ imageSize }),
+        )}
+      </rt-panel-section>
+    `;
+  }
+}
+
+/** The camera screen's columns (axis 0) and rows (axis 1). The lab's slider stops at 16 per side, as VRT's did; typing goes to the schema's 64. */
+function pixelsText(axis: 0 | 1): ControlText {
+  return axis === 0
+    ? { name: 'pixels.columns', label: msg('Pixel columns'), tooltip: msg('Columns of the camera’s small screen whose rays are drawn. Type up to 64.') }
+    : { name: 'pixels.rows', label: msg('Pixel rows'), tooltip: msg('Rows of the camera’s small screen whose rays are drawn. Type up to 64.') };
+}
+
+/** Whole phrases per type, so that translations need not build plurals. */
+function lightTypeSwitch(type: LightType): ControlText {
+  const name = `lightTypes.${type}`;
+  switch (type) {
+    case 'point':
+      return { name, label: msg('Point lights'), tooltip: msg('Switch all point lights on or off at once (off: they light nothing).') };
+    case 'spot':
+      return { name, label: msg('Spot lights'), tooltip: msg('Switch all spot lights on or off at once (off: they light nothing).') };
+    case 'area':
+      return { name, label: msg('Area lights'), tooltip: msg('Switch all area lights on or off at once (off: they light nothing).') };
+  }
+}
+
+customElements.define('rt-tracer-panel', RtTracerPanel);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-tracer-panel': RtTracerPanel;
+  }
+}

@@ -1,0 +1,249 @@
+import { css, html, LitElement, nothing, type CSSResultGroup, type PropertyValues, type TemplateResult } from 'lit';
+import type { LabAction } from '../../../lab-state/lab-action.ts';
+import type { LabState } from '../../../lab-state/lab-state.ts';
+import type { Store } from '../../../lab-state/store.ts';
+import type { Color } from '../../../scene/scene.ts';
+import { LIMITS } from '../../../scene/scene-limits.ts';
+import type { ValueDetail } from '../../controls/control-element.ts';
+import { controlStyles } from '../../controls/controls.css.ts';
+import { messageLine } from '../../controls/status-message.ts';
+import '../../controls/rt-choice.ts';
+import type { ChoiceOption } from '../../controls/rt-choice.ts';
+import '../../controls/rt-color-field.ts';
+import '../../controls/rt-panel-section.ts';
+import '../../controls/rt-slider.ts';
+import '../../controls/rt-switch.ts';
+import type { CheckedDetail } from '../../controls/rt-switch.ts';
+import '../../controls/rt-vector-field.ts';
+
+/** The Phong terms that objects and lights both weigh. */
+export type PhongTerm = 'ambient' | 'diffuse' | 'specular';
+const PHONG_TERMS: PhongTerm[] = ['ambient', 'diffuse', 'specular'];
+
+/** What every control of a panel has: its name (for errors and tests), label and tooltip. */
+export interface ControlText {
+  name: string;
+  label: string;
+  tooltip: string;
+}
+
+/** An rt-slider's setup; the typed range defaults to the slider's. */
+export interface SliderSpec extends ControlText {
+  min: number;
+  max: number;
+  step: number;
+  inputMin?: number;
+  inputMax?: number;
+  unit?: string;
+  whole?: boolean;
+  disabled?: boolean;
+}
+
+/** An rt-vector-field's setup. */
+export interface VectorSpec extends ControlText {
+  axes?: string[];
+  min: number;
+  max: number;
+  step: number;
+  unit?: string;
+  whole?: boolean;
+}
+
+/**
+ * What the lab's panels share: the store comes down as a property, the panel subscribes
+ * while it is on the page and shows the store's state (so a change from the gizmo or a
+ * level shows at once), and every change goes up as a named action. A refused action's
+ * reason is kept under the name of the control that asked, to be shown next to it.
+ */
+export class StorePanel extends LitElement {
+  static override properties = {
+    store: { attribute: false },
+    state: { state: true },
+    errors: { state: true },
+  };
+
+  static override styles: CSSResultGroup = [
+    controlStyles,
+    css`
+      .identity {
+        display: flex;
+        align-items: baseline;
+        justify-content: space-between;
+        gap: 8px;
+        margin: 0;
+      }
+      .identity strong {
+        font-size: 1rem;
+        overflow-wrap: anywhere;
+      }
+      .muted {
+        color: var(--rt-muted);
+      }
+      .empty p {
+        margin: 0 0 8px;
+      }
+    `,
+  ];
+
+  /** The app's one store. */
+  declare store: Store | undefined;
+  /** The store's state as last seen. */
+  declare protected state: LabState | undefined;
+  /** The store's reasons for refusing, by control name. */
+  declare protected errors: Readonly<Record<string, string | undefined>>;
+  private unsubscribe: (() => void) | undefined;
+  /** The store `unsubscribe` belongs to. */
+  private subscribed: Store | undefined;
+
+  constructor() {
+    super();
+    this.errors = {};
+  }
+
+  override connectedCallback(): void {
+    super.connectedCallback();
+    this.listen();
+  }
+
+  override disconnectedCallback(): void {
+    super.disconnectedCallback();
+    this.unsubscribe?.();
+    this.unsubscribe = undefined;
+  }
+
+  protected override willUpdate(changed: PropertyValues<this>): void {
+    if (changed.has('store')) this.listen();
+  }
+
+  /** Subscribes to `store` unless already subscribed to it (connecting and a first update both ask). */
+  private listen(): void {
+    if (this.unsubscribe && this.subscribed === this.store) return;
+    this.unsubscribe?.();
+    this.subscribed = this.store;
+    this.unsubscribe = this.store?.subscribe((state) => this.show(state));
+    this.show(this.store?.state);
+  }
+
+  private show(state: LabState | undefined): void {
+    // Reasons belong to the item they were about: another selection starts clean.
+    if (state?.selection !== this.state?.selection) this.errors = {};
+    this.state = state;
+  }
+
+  /** Dispatches `action` for the control `name`; keeps (or clears) the reason it was refused. */
+  protected send(name: string, action: LabAction): void {
+    const error = this.store?.dispatch(action);
+    if (error !== this.errors[name]) this.errors = { ...this.errors, [name]: error };
+  }
+
+  /** The line for a refusal of a change asked by something other than a control (a button). */
+  protected errorLine(name: string): TemplateResult {
+    return messageLine(this.errors[name], true);
+  }
+
+  /** A section that says what to select, for when the panel's kind of item is not selected. */
+  protected emptyState(heading: string, name: string, text: string, hint: string): TemplateResult {
+    return html`<rt-panel-section heading=${heading} name=${name}>
+      <div class="empty">
+        <p>${text}</p>
+        <p class="muted">${hint}</p>
+      </div>
+    </rt-panel-section>`;
+  }
+
+  /** The selected item's name, and what kind of item it is. */
+  protected identity(name: string, kind: string): TemplateResult {
+    return html`<p class="identity"><strong>${name}</strong><span class="muted">${kind}</span></p>`;
+  }
+
+  /** A slider that dispatches `action(value)` while dragging and on commit; `hint` goes under it. */
+  protected slider(spec: SliderSpec, value: number, action: (value: number) => LabAction, hint?: TemplateResult | string): TemplateResult {
+    const send = (event: CustomEvent<ValueDetail<number>>) => this.send(spec.name, action(event.detail.value));
+    return html`<rt-slider
+      name=${spec.name}
+      label=${spec.label}
+      tooltip=${spec.tooltip}
+      .min=${spec.min}
+      .max=${spec.max}
+      .step=${spec.step}
+      .inputMin=${spec.inputMin}
+      .inputMax=${spec.inputMax}
+      unit=${spec.unit ?? ''}
+      ?whole=${spec.whole ?? false}
+      ?disabled=${spec.disabled ?? false}
+      .value=${value}
+      .error=${this.errors[spec.name]}
+      @input=${send}
+      @change=${send}
+      >${hint === undefined ? nothing : html`<p>${hint}</p>`}</rt-slider
+    >`;
+  }
+
+  /**
+   * The three Phong shares, ambient, diffuse and specular, as sliders over 0..1 (an object's
+   * ka, kd, ks and a light's shares alike); `text` gives each one's label and tooltip.
+   */
+  protected phongSliders(
+    text: Record<PhongTerm, [label: string, tooltip: string]>,
+    values: Record<PhongTerm, number>,
+    action: (changes: Partial<Record<PhongTerm, number>>) => LabAction,
+  ): TemplateResult[] {
+    const [min, max] = LIMITS.coefficient;
+    return PHONG_TERMS.map((term) =>
+      this.slider({ name: term, label: text[term][0], tooltip: text[term][1], min, max, step: 0.01 }, values[term], (value) => action({ [term]: value })),
+    );
+  }
+
+  protected switch(text: ControlText, checked: boolean, action: (checked: boolean) => LabAction): TemplateResult {
+    return html`<rt-switch
+      name=${text.name}
+      label=${text.label}
+      tooltip=${text.tooltip}
+      .checked=${checked}
+      .error=${this.errors[text.name]}
+      @change=${(event: CustomEvent<CheckedDetail>) => this.send(text.name, action(event.detail.checked))}
+    ></rt-switch>`;
+  }
+
+  protected color(text: ControlText, value: Color, action: (value: Color) => LabAction): TemplateResult {
+    const send = (event: CustomEvent<ValueDetail<Color>>) => this.send(text.name, action(event.detail.value));
+    return html`<rt-color-field
+      name=${text.name}
+      label=${text.label}
+      tooltip=${text.tooltip}
+      .value=${value}
+      .error=${this.errors[text.name]}
+      @input=${send}
+      @change=${send}
+    ></rt-color-field>`;
+  }
+
+  protected choice<T extends string>(text: ControlText, options: ChoiceOption[], value: T, action: (value: T) => LabAction): TemplateResult {
+    return html`<rt-choice
+      name=${text.name}
+      label=${text.label}
+      tooltip=${text.tooltip}
+      .options=${options}
+      .value=${value}
+      .error=${this.errors[text.name]}
+      @change=${(event: CustomEvent<ValueDetail<string>>) => this.send(text.name, action(event.detail.value as T))}
+    ></rt-choice>`;
+  }
+
+  protected vector<V extends number[]>(spec: VectorSpec, value: V, action: (value: V) => LabAction): TemplateResult {
+    return html`<rt-vector-field
+      name=${spec.name}
+      label=${spec.label}
+      tooltip=${spec.tooltip}
+      .axes=${spec.axes ?? ['x', 'y', 'z']}
+      .min=${spec.min}
+      .max=${spec.max}
+      .step=${spec.step}
+      unit=${spec.unit ?? ''}
+      ?whole=${spec.whole ?? false}
+      .value=${value}
+      .error=${this.errors[spec.name]}
+      @change=${(event: CustomEvent<ValueDetail<number[]>>) => this.send(spec.name, action(event.detail.value as V))}
+    ></rt-vector-field>`;
+  }
+}

@@ -1,0 +1,45 @@
+/**
+ * The figures the render window reports, in words a student can read: how long a render
+ * took, how many rays it traced and how many per second.
+ */
+import { msg, str } from '@lit/localize';
+import type { RenderProgress } from '../../../render/render-job.ts';
+import type { RayStats } from '../../../tracer/ray-tree.ts';
+
+/** Every ray the render traced: primary, shadow, reflected and refracted. */
+export function countRays(stats: RayStats): number {
+  return stats.primary + stats.shadow + stats.reflect + stats.refract;
+}
+
+/** Rays per second; a render faster than 1 ms counts as 1 ms rather than dividing by zero. */
+export function raysPerSecond(rays: number, ms: number): number {
+  return rays / (Math.max(ms, 1) / 1000);
+}
+
+/** 950 → "950", 12 345 → "12.3 thousand", 4 561 000 → "4.56 million", 2.1e9 → "2.1 billion". */
+export function formatCount(count: number): string {
+  // Rounded before the unit is chosen, so that 999 960 reads "1 million", not "1000 thousand".
+  const rounded = Number(count.toPrecision(3));
+  // Re-rounded after dividing: 1.23e6 / 1e6 may come out as 1.2300000000000002.
+  const inUnits = (unit: number) => Number((rounded / unit).toPrecision(3));
+  if (rounded < 1e3) return String(Math.round(rounded));
+  if (rounded < 1e6) return msg(str`${inUnits(1e3)} thousand`);
+  if (rounded < 1e9) return msg(str`${inUnits(1e6)} million`);
+  return msg(str`${inUnits(1e9)} billion`);
+}
+
+/** "850 ms" under a second, "1.23 s" under a minute, "2 min 5 s" beyond. */
+export function formatDuration(ms: number): string {
+  if (ms < 1000) return msg(str`${Math.round(ms)} ms`);
+  if (ms < 60_000) return msg(str`${(ms / 1000).toFixed(2)} s`);
+  const seconds = Math.round(ms / 1000);
+  return msg(str`${Math.floor(seconds / 60)} min ${seconds % 60} s`);
+}
+
+/** "Quick preview…" during the coarse passes, then "Rendering 42 %". */
+export function progressText({ phase, done, total }: RenderProgress): string {
+  if (phase === 'preview') return msg('Quick preview…');
+  const percent = Math.floor((100 * done) / Math.max(total, 1));
+  return msg(str`Rendering ${percent} %`);
+}
+

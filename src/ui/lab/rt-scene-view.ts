@@ -1,0 +1,193 @@
+import { msg, str } from '@lit/localize';
+import { css, html, LitElement, type PropertyValues } from 'lit';
+import type { LabState } from '../../lab-state/lab-state.ts';
+import type { Store } from '../../lab-state/store.ts';
+import { gizmoModesFor } from '../../view/gizmo-changes.ts';
+import { LabView, type RayHoverDetail } from '../../view/lab-view.ts';
+import type { ViewCommand } from '../../view/view-commands.ts';
+import './rt-help-panel.ts';
+import './rt-view-toolbar.ts';
+
+/**
+ * @summary The lab's 3D view: a canvas filling the element's box, drawn by a LabView
+ * (src/view/lab-view.ts) from `store`, with the on-screen controls and the help dialog
+ * laid over it. The canvas takes keyboard focus (arrows orbit, Shift+arrows pan, +/− zoom,
+ * T/R/S gizmo, Delete, Esc, F, ?).
+ *
+ * @fires ray-hover - CustomEvent<RayHoverDetail | null>: the ray under the pointer and where
+ *   the pointer is (x, y in CSS px of this element's box), or null when it leaves the rays.
+ * @fires view-message - CustomEvent<string>: a change the store refused, or a hint, to show as a toast.
+ * @cssprop --rt-view-bg - The view's background behind the scene (a soft vertical gradient by default).
+ */
+export class RtSceneView extends LitElement {
+  static override properties = {
+    store: { attribute: false },
+    state: { state: true },
+    atCamera: { state: true },
+    helpOpen: { state: true },
+  };
+
+  static override styles = css`
+    :host {
+      position: relative;
+      display: block;
+      min-height: 200px;
+      overflow: hidden;
+      /* Follows the theme (color-scheme on the page, light-dark() as in theme.css). */
+      background: var(--rt-view-bg, linear-gradient(180deg, light-dark(#eef1f6, #2b323d) 0%, light-dark(#d3d9e2, #151a21) 100%));
+    }
+    canvas {
+      position: absolute;
+      inset: 0;
+      display: block;
+      width: 100%;
+      height: 100%;
+      touch-action: none;
+      outline: none;
+    }
+    canvas:focus-visible {
+      outline: 3px solid var(--rt-accent);
+      outline-offset: -3px;
+    }
+  `;
+
+  /** The app's store: the view draws its scene and dispatches selections, gizmo drags and view gestures. */
+  declare store: Store | undefined;
+  declare private state: LabState | undefined;
+  declare private atCamera: boolean;
+  declare private helpOpen: boolean;
+  private view: LabView | null = null;
+  private unsubscribe: (() => void) | null = null;
+  private readonly viewCleanups: (() => void)[] = [];
+  private readonly resizeObserver = new ResizeObserver(() => this.resize());
+
+  constructor() {
+    super();
+    this.atCamera = false;
+    this.helpOpen = false;
+  }
+
+  /** The three.js view (after the first update with a store): setScreenRays, setRayLayer, rasterSnapshot, … */
+  get labView(): LabView | null {
+    return this.view;
+  }
+
+  override connectedCallback(): void {
+    super.connectedCallback();
+    this.subscribe();
+  }
+
+  override disconnectedCallback(): void {
+    super.disconnectedCallback();
+    this.unsubscribe?.();
+    this.unsubscribe = null;
+    this.resizeObserver.disconnect();
+    for (const cleanup of this.viewCleanups.splice(0)) cleanup();
+    this.view?.dispose();
+    this.view = null;
+  }
+
+  protected override willUpdate(changed: PropertyValues<this>): void {
+    if (changed.has('store')) {
+      this.unsubscribe?.();
+      this.unsubscribe = null;
+      if (this.isConnected) this.subscribe();
+    }
+  }
+
+  protected override updated(changed: PropertyValues<this>): void {
+    if (changed.has('store') && this.view && this.view.store !== this.store) {
+      for (const cleanup of this.viewCleanups.splice(0)) cleanup();
+      this.view.dispose();
+      this.view = null;
+    }
+    if (!this.view && this.store && this.isConnected) this.createView(this.store);
+  }
+
+  override render() {
+    const state = this.state;
+    return html`
+      <canvas tabindex="0" role="img" aria-label=${state ? describe(state) : msg('3D view')}></canvas>
+      <rt-view-toolbar
+        .gizmo=${state?.gizmo}
+        .allowedModes=${state ? modesShown(state) : []}
+        ?at-camera=${this.atCamera}
+        @view-command=${this.onCommand}
+        @keydown=${this.onToolbarKey}
+      ></rt-view-toolbar>
+      <rt-help-panel ?open=${this.helpOpen} @help-closed=${() => (this.helpOpen = false)}></rt-help-panel>
+    `;
+  }
+
+  private subscribe(): void {
+    if (!this.store || this.unsubscribe) return;
+    this.state = this.store.state;
+    this.unsubscribe = this.store.subscribe((state) => {
+      this.state = state;
+    });
+  }
+
+  private createView(store: Store): void {
+    const canvas = this.renderRoot.querySelector('canvas');
+    if (!canvas) return;
+    const view = new LabView(canvas, store);
+    this.view = view;
+    this.viewCleanups.push(
+      view.onRayHover((detail) => this.fire<RayHoverDetail | null>('ray-hover', detail)),
+      view.on('message', (text) => this.fire('view-message', text)),
+      view.on('flight', (atCamera) => (this.atCamera = atCamera)),
+      view.on('help', () => (this.helpOpen = true)),
+    );
+    this.resizeObserver.observe(this);
+    this.resize();
+  }
+
+  private resize(): void {
+    this.view?.setSize(this.clientWidth, this.clientHeight);
+  }
+
+  private readonly onCommand = (event: CustomEvent<ViewCommand>) => {
+    event.stopPropagation();
+    // Toolbar steps glide; the same commands from keys (which repeat) jump.
+    this.view?.execute(event.detail, true);
+  };
+
+  /** "?" opens the help from the toolbar's buttons too (the canvas handles its own keys). */
+  private readonly onToolbarKey = (event: KeyboardEvent) => {
+    if (event.key !== '?') return;
+    event.preventDefault();
+    this.helpOpen = true;
+  };
+
+  private fire<T>(type: string, detail: T): void {
+    this.dispatchEvent(new CustomEvent<T>(type, { detail, bubbles: true, composed: true }));
+  }
+}
+
+/** Modes shown as available: all when nothing is selected (choosing a mode first is fine). */
+function modesShown(state: LabState) {
+  return state.selection ? gizmoModesFor(state.selection, state.scene) : (['translate', 'rotate', 'scale'] as const);
+}
+
+/** What a screen reader hears for the canvas: the scene in one sentence, and how to move around. */
+function describe(state: LabState): string {
+  const { scene, selection } = state;
+  const name = scene.name ?? msg('Untitled scene');
+  const selected =
+    selection === null
+      ? msg('Nothing is selected.')
+      : selection.kind === 'camera'
+        ? msg("The ray tracer's camera is selected.")
+        : msg(str`Selected: ${selection.id}.`);
+  return msg(
+    str`3D view of "${name}": ${scene.objects.length} objects, ${scene.lights.length} lights and the ray tracer's camera with its ${scene.camera.pixels[0]}×${scene.camera.pixels[1]} screen. ${selected} Arrow keys orbit, Shift with arrows pans, plus and minus zoom; press ? for every key.`,
+  );
+}
+
+customElements.define('rt-scene-view', RtSceneView);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-scene-view': RtSceneView;
+  }
+}

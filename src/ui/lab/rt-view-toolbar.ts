@@ -1,0 +1,306 @@
+import { msg } from '@lit/localize';
+import { css, html, LitElement, svg, type SVGTemplateResult, type TemplateResult } from 'lit';
+import { DEFAULT_GIZMO, type GizmoOptions } from '../../lab-state/lab-state.ts';
+import type { GizmoMode } from '../../view/gizmo-changes.ts';
+import type { ViewCommand } from '../../view/view-commands.ts';
+
+/** How far one button press moves the view (the keys move less, and repeat). */
+const ORBIT_STEP_DEG = 15;
+const PAN_STEP = 0.1;
+const ZOOM_STEP = 1.25;
+
+/**
+ * @summary The 3D view's on-screen controls, laid over the view: gizmo mode (move, rotate,
+ * scale), local/world axes, snapping, the flight to the ray tracer's camera and help (top);
+ * orbit, pan and zoom pads for trackpads and touch screens without a wheel (bottom right).
+ *
+ * Every button has a visible label or a labelled group, a tooltip naming its key, and is a
+ * real <button>; toggles say their state with aria-pressed and a check mark, not colour alone.
+ *
+ * @fires view-command - CustomEvent<ViewCommand>: a button asks the view to do something.
+ */
+export class RtViewToolbar extends LitElement {
+  static override properties = {
+    gizmo: { attribute: false },
+    allowedModes: { attribute: false },
+    atCamera: { type: Boolean, attribute: 'at-camera' },
+  };
+
+  static override styles = css`
+    :host {
+      position: absolute;
+      inset: 0;
+      pointer-events: none;
+      container-type: size;
+      font-family: var(--rt-font);
+      font-size: 0.8125rem;
+      color: var(--rt-text);
+    }
+    .bar {
+      position: absolute;
+      display: flex;
+      flex-wrap: wrap;
+      gap: 8px;
+      align-items: flex-start;
+    }
+    .top {
+      top: 8px;
+      left: 8px;
+      right: 8px;
+    }
+    /* The camera and help buttons keep to the right, and wrap below when the view is narrow. */
+    .top .end {
+      margin-left: auto;
+    }
+    .bottom-right {
+      right: 8px;
+      bottom: 8px;
+      align-items: flex-end;
+    }
+    .group {
+      pointer-events: auto;
+      display: flex;
+      align-items: center;
+      gap: 2px;
+      padding: 3px;
+      border: 1px solid var(--rt-border);
+      border-radius: 10px;
+      background: color-mix(in srgb, var(--rt-surface) 88%, transparent);
+      box-shadow: 0 2px 8px rgb(0 0 0 / 0.12);
+      backdrop-filter: blur(6px);
+    }
+    .pad {
+      flex-direction: column;
+      gap: 0;
+    }
+    .pad-grid {
+      display: grid;
+      grid-template-columns: repeat(3, 32px);
+      grid-template-rows: repeat(3, 32px);
+    }
+    .zoom-grid {
+      display: grid;
+      grid-template-rows: repeat(3, 32px);
+    }
+    .caption {
+      margin-top: 2px;
+      color: var(--rt-muted);
+      font-size: 0.75rem;
+      line-height: 1.2;
+    }
+    button {
+      box-sizing: border-box;
+      min-width: 32px;
+      min-height: 32px;
+      display: inline-flex;
+      align-items: center;
+      justify-content: center;
+      gap: 6px;
+      padding: 0 10px;
+      border: 1px solid transparent;
+      border-radius: 7px;
+      background: transparent;
+      color: inherit;
+      font: inherit;
+      cursor: pointer;
+      touch-action: manipulation;
+    }
+    .pad button,
+    .zoom-grid button {
+      padding: 0;
+    }
+    button:hover {
+      background: color-mix(in srgb, var(--rt-accent) 12%, transparent);
+    }
+    button[aria-pressed='true'] {
+      background: var(--rt-accent);
+      color: var(--rt-accent-text);
+    }
+    button[aria-disabled='true'] {
+      opacity: 0.45;
+    }
+    button:focus-visible {
+      outline: 3px solid var(--rt-accent);
+      outline-offset: 1px;
+    }
+    kbd {
+      min-width: 1.3em;
+      padding: 0 3px;
+      border: 1px solid currentColor;
+      border-radius: 4px;
+      font: inherit;
+      font-size: 0.6875rem;
+      line-height: 1.3;
+      text-align: center;
+      opacity: 0.75;
+    }
+    svg {
+      flex: none;
+    }
+    .check {
+      visibility: hidden;
+    }
+    button[aria-pressed='true'] .check {
+      visibility: visible;
+    }
+    /* A narrow view (a tablet with the panels open) keeps the labels and drops the key hints. */
+    @container (max-width: 860px) {
+      kbd {
+        display: none;
+      }
+    }
+    .centre {
+      width: 6px;
+      height: 6px;
+      margin: auto;
+      border-radius: 50%;
+      background: var(--rt-muted);
+    }
+  `;
+
+  /** The store's gizmo options: the pressed mode and toggles. */
+  declare gizmo: GizmoOptions;
+  /** Modes the selection allows; the others are shown as unavailable (and explain why when pressed). */
+  declare allowedModes: readonly GizmoMode[];
+  /** Whether the view is at the ray tracer's camera: the fly button then flies back. */
+  declare atCamera: boolean;
+
+  constructor() {
+    super();
+    this.gizmo = DEFAULT_GIZMO;
+    this.allowedModes = ['translate', 'rotate', 'scale'];
+    this.atCamera = false;
+  }
+
+  override render() {
+    return html`
+      <div class="bar top">
+        <div class="group" role="group" aria-label=${msg('Gizmo mode')}>
+          ${this.modeButton('translate', msg('Move'), 'T', msg('Move the selection with the gizmo (T)'))}
+          ${this.modeButton('rotate', msg('Rotate'), 'R', msg('Rotate the selection with the gizmo (R)'))}
+          ${this.modeButton('scale', msg('Scale'), 'S', msg('Scale the selection with the gizmo (S)'))}
+        </div>
+        <div class="group" role="group" aria-label=${msg('Gizmo options')}>
+          ${this.toggle(
+            this.gizmo.space === 'local',
+            msg('Local axes'),
+            'Tab',
+            msg("Gizmo along the selection's own axes instead of the world's (Tab while something is selected)"),
+            { kind: 'toggle-space' },
+          )}
+          ${this.toggle(this.gizmo.snap, msg('Snap'), 'G', msg('Snap to 0.25 m, 15° and 0.25× steps (G; or hold Shift while dragging)'), {
+            kind: 'toggle-snap',
+          })}
+        </div>
+        <div class="group end">
+          <button
+            data-command="fly"
+            title=${this.atCamera ? msg('Fly back to where you were (F or Esc)') : msg("Fly to the ray tracer's camera and see what it sees (F)")}
+            @click=${() => this.send({ kind: 'fly' })}
+          >
+            ${icon(this.atCamera ? svg`<path d="M8 4 3 10l5 6M3 10h14" />` : CAMERA)}
+            <span>${this.atCamera ? msg('Back to my view') : msg('Camera view')}</span>
+          </button>
+          <button data-command="help" title=${msg('All keys and gestures (?)')} @click=${() => this.send({ kind: 'help' })}>
+            ${icon(svg`<circle cx="10" cy="10" r="7.5" /><path d="M7.6 7.8a2.5 2.5 0 1 1 3.4 2.3c-.7.3-1 .8-1 1.5v.6" /><circle cx="10" cy="14.6" r=".4" />`)}
+            <span>${msg('Help')}</span>
+          </button>
+        </div>
+      </div>
+      <div class="bar bottom-right">
+        ${this.pad(msg('Orbit'), 'orbit', (dx, dy) => ({ kind: 'orbit', dxDeg: dx * ORBIT_STEP_DEG, dyDeg: dy * ORBIT_STEP_DEG }), {
+          left: msg('Orbit left (←)'),
+          right: msg('Orbit right (→)'),
+          up: msg('Orbit up (↑)'),
+          down: msg('Orbit down (↓)'),
+        })}
+        ${this.pad(msg('Pan'), 'pan', (dx, dy) => ({ kind: 'pan', dx: dx * PAN_STEP, dy: dy * PAN_STEP }), {
+          left: msg('Pan left (Shift + ←)'),
+          right: msg('Pan right (Shift + →)'),
+          up: msg('Pan up (Shift + ↑)'),
+          down: msg('Pan down (Shift + ↓)'),
+        })}
+        <div class="group pad" role="group" aria-label=${msg('Zoom')}>
+          <div class="zoom-grid">
+            <button data-command="zoom-in" title=${msg('Zoom in (+)')} aria-label=${msg('Zoom in')} @click=${() => this.send({ kind: 'zoom', factor: ZOOM_STEP })}>
+              ${icon(svg`<path d="M10 4v12M4 10h12" />`)}
+            </button>
+            <span></span>
+            <button data-command="zoom-out" title=${msg('Zoom out (−)')} aria-label=${msg('Zoom out')} @click=${() => this.send({ kind: 'zoom', factor: 1 / ZOOM_STEP })}>
+              ${icon(svg`<path d="M4 10h12" />`)}
+            </button>
+          </div>
+          <span class="caption" aria-hidden="true">${msg('Zoom')}</span>
+        </div>
+      </div>
+    `;
+  }
+
+  private modeButton(mode: GizmoMode, label: string, key: string, tooltip: string): TemplateResult {
+    const allowed = this.allowedModes.includes(mode);
+    const why = allowed ? '' : ` — ${msg('not for this selection')}`;
+    return html`<button
+      data-command=${mode}
+      aria-pressed=${String(this.gizmo.mode === mode)}
+      aria-disabled=${String(!allowed)}
+      title=${tooltip + why}
+      @click=${() => this.send({ kind: 'gizmo-mode', mode })}
+    >
+      ${label} <kbd aria-hidden="true">${key}</kbd>
+    </button>`;
+  }
+
+  private toggle(on: boolean, label: string, key: string, tooltip: string, command: ViewCommand): TemplateResult {
+    return html`<button data-command=${command.kind} aria-pressed=${String(on)} title=${tooltip} @click=${() => this.send(command)}>
+      ${icon(svg`<rect x="3" y="3" width="14" height="14" rx="3" /><path class="check" d="M6 10.5 9 13.5 14.5 7" />`)} ${label}
+      <kbd aria-hidden="true">${key}</kbd>
+    </button>`;
+  }
+
+  /** A 3×3 pad of arrow buttons around a dot, captioned with its name (the visible label). */
+  private pad(
+    caption: string,
+    name: string,
+    command: (dx: number, dy: number) => ViewCommand,
+    tooltips: { left: string; right: string; up: string; down: string },
+  ): TemplateResult {
+    const arrow = (direction: 'left' | 'right' | 'up' | 'down', dx: number, dy: number, path: SVGTemplateResult) =>
+      html`<button
+        data-command=${`${name}-${direction}`}
+        title=${tooltips[direction]}
+        aria-label=${tooltips[direction]}
+        @click=${() => this.send(command(dx, dy))}
+      >
+        ${icon(path)}
+      </button>`;
+    return html`<div class="group pad" role="group" aria-label=${caption}>
+      <div class="pad-grid">
+        <span></span>${arrow('up', 0, 1, svg`<path d="M5 12l5-5 5 5" />`)}<span></span>
+        ${arrow('left', -1, 0, svg`<path d="M12 5l-5 5 5 5" />`)}<span class="centre"></span>${arrow('right', 1, 0, svg`<path d="M8 5l5 5-5 5" />`)}
+        <span></span>${arrow('down', 0, -1, svg`<path d="M5 8l5 5 5-5" />`)}<span></span>
+      </div>
+      <span class="caption" aria-hidden="true">${caption}</span>
+    </div>`;
+  }
+
+  private send(command: ViewCommand): void {
+    this.dispatchEvent(new CustomEvent<ViewCommand>('view-command', { detail: command, bubbles: true, composed: true }));
+  }
+}
+
+const CAMERA = svg`<rect x="2.5" y="6" width="10" height="8.5" rx="1.5" /><path d="M12.5 9l5-2.5v7.5l-5-2.5" />`;
+
+function icon(body: SVGTemplateResult): TemplateResult {
+  return html`<svg viewBox="0 0 20 20" width="18" height="18" aria-hidden="true" fill="none" stroke="currentColor" stroke-width="1.7" stroke-linecap="round" stroke-linejoin="round">${body}</svg>`;
+}
+
+customElements.define('rt-view-toolbar', RtViewToolbar);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-view-toolbar': RtViewToolbar;
+  }
+  interface HTMLElementEventMap {
+    'view-command': CustomEvent<ViewCommand>;
+  }
+}

@@ -1,0 +1,99 @@
+import { msg } from '@lit/localize';
+import { html, LitElement, nothing } from 'lit';
+import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
+import { isSceneFragment } from '../../app/scene-link.ts';
+import type { Assignment } from '../../classroom/assignment.ts';
+import { decodeAssignment, isAssignmentFragment, type AssignmentLinkResult } from '../../classroom/assignment-link.ts';
+import '../classroom/dashboard/rt-dashboard-page.ts';
+import '../lab/rt-lab.ts';
+import './rt-link-notice.ts';
+import './rt-scene-link-lab.ts';
+import '../classroom/rt-survey.ts';
+import '../classroom/rt-teacher-page.ts';
+
+/** `#/survey/<id>`: a survey on its own page. */
+export const SURVEY_PREVIEW = '#/survey/';
+
+/** An assignment link as opened: the assignment, or why the learner plays freely instead. */
+type Opened = { hash: string; assignment: Assignment | null; problem: string };
+
+/**
+ * @summary The app's top level: picks the page from the address's #fragment. The lab (with
+ * the game) is the default; `#/teacher` is the teacher page; `#/dashboard` the class dashboard;
+ * `#/s/<scene>` a shared scene in the lab; `#/survey/<id>` previews a survey; `#/a/<link>` opens a teacher's
+ * assignment in the lab, or, when the link is damaged, free play with a message.
+ */
+export class RtApp extends LitElement {
+  static override properties = { route: { state: true }, opened: { state: true } };
+
+  declare route: string;
+  /** The assignment link last opened; null until it has been read (reading is asynchronous). */
+  declare opened: Opened | null;
+  private readonly onHashChange = () => (this.route = location.hash);
+
+  constructor() {
+    super();
+    this.route = location.hash;
+    this.opened = null;
+  }
+
+  override connectedCallback(): void {
+    super.connectedCallback();
+    addEventListener('hashchange', this.onHashChange);
+  }
+
+  override disconnectedCallback(): void {
+    super.disconnectedCallback();
+    removeEventListener('hashchange', this.onHashChange);
+  }
+
+  /** No shadow root: a router has no looks of its own, and pages stay reachable from the document. */
+  protected override createRenderRoot(): HTMLElement {
+    return this;
+  }
+
+  override willUpdate(): void {
+    if (isAssignmentFragment(this.route) && this.opened?.hash !== this.route) void this.open(this.route);
+  }
+
+  private async open(hash: string): Promise<void> {
+    const result = await decodeAssignment(hash, loadBrowserCatalog());
+    // The address may have changed while the link was read.
+    if (hash !== this.route) return;
+    this.opened = { hash, assignment: result.ok ? result.assignment : null, problem: result.ok ? '' : problemText(result) };
+  }
+
+  override render() {
+    if (this.route === '#/teacher') return html`<rt-teacher-page></rt-teacher-page>`;
+    if (this.route === '#/dashboard') return html`<rt-dashboard-page></rt-dashboard-page>`;
+    if (isSceneFragment(this.route)) return html`<rt-scene-link-lab .hash=${this.route}></rt-scene-link-lab>`;
+    // A teacher's preview of a survey (linked from the teacher page): nothing is saved.
+    if (this.route.startsWith(SURVEY_PREVIEW)) return html`<rt-survey survey-id=${this.route.slice(SURVEY_PREVIEW.length)}></rt-survey>`;
+    if (isAssignmentFragment(this.route)) {
+      if (this.opened?.hash !== this.route) return nothing;
+      const { assignment, problem } = this.opened;
+      return assignment ? html`<rt-lab .assignment=${assignment}></rt-lab>` : html`<rt-link-notice .text=${problem}></rt-link-notice><rt-lab></rt-lab>`;
+    }
+    return html`<rt-lab></rt-lab>`;
+  }
+}
+
+function problemText(result: Extract<AssignmentLinkResult, { ok: false }>): string {
+  const reasons = result.reasons.join('; ');
+  switch (result.kind) {
+    case 'damaged':
+      return msg(`This assignment link is damaged (${reasons}). You are playing freely.`);
+    case 'other-version':
+      return msg(`This assignment link was made for another version of the game (${reasons}). You are playing freely.`);
+    case 'unknown-levels':
+      return msg(`This assignment link names levels or tasks this version of the game does not have: ${reasons}. You are playing freely.`);
+  }
+}
+
+customElements.define('rt-app', RtApp);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-app': RtApp;
+  }
+}
