@@ -3,7 +3,7 @@ import { parseSurvey, type Survey } from './survey-schema.ts';
 
 /**
  * The surveys an assignment can close with, by id. They ship with the app (a link names
- * one, it does not carry it); tests/classroom-survey.test.ts checks each file.
+ * one, it does not carry it); tests/classroom/survey.test.ts checks each file.
  */
 const FILES: readonly unknown[] = [defaultSurvey];
 

@@ -1,0 +1,141 @@
+import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
+import { initialState } from '../../src/lab-state/lab-state.ts';
+import { QuestSession, readSessionContext } from '../../src/app/quest-session.ts';
+import type { ShowMeStage } from '../../src/app/show-me-player.ts';
+import { Store } from '../../src/lab-state/store.ts';
+import type { Assignment } from '../../src/classroom/assignment.ts';
+import { assignmentProgressKey } from '../../src/classroom/assignment-id.ts';
+import { MemoryStorage, PROGRESS_KEY } from '../../src/quest/progress-store.ts';
+import { defaultScene } from '../../src/scene/scene-defaults.ts';
+import { catalogOf, FakeClock, levelWithId } from '../support/quest-fixtures.ts';
+
+const catalog = catalogOf([{ id: 'test', levels: [levelWithId('first'), levelWithId('second')] }]);
+
+function session(storage = new MemoryStorage(), assignment: Assignment | null = null) {
+  const store = new Store(initialState(defaultScene()));
+  return { store, storage, session: new QuestSession({ store, catalog, storage, assignment, clock: new FakeClock() }) };
+}
+
+const saved = (storage: MemoryStorage, key = PROGRESS_KEY) => JSON.parse(storage.getItem(key) ?? 'null');
+
+describe('the quest session', () => {
+  beforeEach(() => vi.useFakeTimers());
+  afterEach(() => vi.useRealTimers());
+
+  it('starts a newcomer in the first level, with its scene loaded into the store', () => {
+    const { store, session: game } = session();
+    expect(game.start()).toEqual({ kind: 'level', id: 'first' });
+    expect(store.state.scene.camera.pixels).toEqual([4, 3]);
+    expect(game.engine.level?.current?.task.id).toBe('orbit');
+  });
+
+  it('saves every change and resumes the level after a reload', () => {
+    const { store, storage, session: game } = session();
+    game.start();
+    store.dispatch({ type: 'view.orbited' });
+    expect(saved(storage).levels.first.tasks.orbit.how).toBe('done');
+
+    const again = session(storage).session;
+    expect(again.start()).toEqual({ kind: 'level', id: 'first' });
+    expect(again.engine.level?.tasks.find((task) => task.task.id === 'orbit')?.status).toBe('done');
+  });
+
+  it('opens the map for a learner who left the levels, and keeps level 2 locked until level 1 is passed', () => {
+    const { session: game } = session();
+    game.start();
+    game.openMap();
+    expect(game.mode).toEqual({ kind: 'map' });
+    expect(game.openLevel('second')).toEqual({ ok: false, reason: 'locked' });
+    expect(game.nextLevel()).toBeUndefined();
+  });
+
+  it('plays "show me" on the stage, one step after another', () => {
+    const { session: game } = session();
+    game.start();
+    const orbit = vi.fn();
+    const stage = { orbit } as unknown as ShowMeStage;
+    game.engine.askHint('orbit');
+    game.engine.askHint('orbit');
+    game.engine.askHint('orbit');
+    game.showMe('orbit', stage);
+    vi.advanceTimersByTime(600);
+    expect(orbit).toHaveBeenCalledOnce();
+  });
+
+  it('recovers from damaged progress with a message and a backup', () => {
+    const storage = new MemoryStorage();
+    storage.setItem(PROGRESS_KEY, '{ not json');
+    const { session: game } = session(storage);
+    expect(game.problem?.kind).toBe('damaged');
+    expect(game.problem?.backupKey).toMatch(/^rtq\.progress\.backup\./);
+    expect(game.start()).toEqual({ kind: 'level', id: 'first' });
+  });
+
+  it('imports a valid progress file, refuses another, and resets', () => {
+    const { store, session: game } = session();
+    game.start();
+    store.dispatch({ type: 'view.orbited' });
+    const file = game.exportText();
+    game.reset();
+    expect(game.engine.points).toBe(0);
+    expect(game.importText('{"kind": "something else"}')).toMatchObject({ ok: false });
+    expect(game.engine.points).toBe(0);
+    expect(game.importText(file)).toEqual({ ok: true });
+    expect(game.engine.points).toBe(10);
+  });
+
+  it('keeps the free lab scene as the sandbox once edits rest', () => {
+    const { store, session: game } = session();
+    game.openFreeLab();
+    store.dispatch({ type: 'object.added', shape: 'sphere' });
+    expect(game.engine.progress.sandbox).toBeNull();
+    vi.advanceTimersByTime(1000);
+    expect(game.engine.progress.sandbox).toBe(store.state.scene);
+  });
+
+  it('changes the level texts language', () => {
+    const { session: game } = session();
+    game.setLocale('nl');
+    expect(game.locale).toBe('nl');
+  });
+});
+
+describe('an assignment', () => {
+  const assignment: Assignment = {
+    version: 1,
+    title: 'Lesson 2',
+    levels: ['second', 'first'],
+    requiredTasks: { second: ['orbit'] },
+    otherLevels: 'hidden',
+    locale: 'nl',
+    askParticipantCode: true,
+    survey: null,
+  };
+
+  it('plays its levels in its order, with its required tasks, locale and own progress key', () => {
+    const { store, storage, session: game } = session(new MemoryStorage(), assignment);
+    expect(game.catalog.chapters.map((chapter) => chapter.entries.map((entry) => entry.id))).toEqual([['second', 'first']]);
+    expect(game.locale).toBe('nl');
+    expect(game.start()).toEqual({ kind: 'level', id: 'second' });
+    store.dispatch({ type: 'view.orbited' });
+    expect(game.engine.level?.passed).toBe(true);
+    expect(game.nextLevel()).toBe('first');
+    expect(saved(storage, assignmentProgressKey(assignment)).levels.second.tasks.orbit.how).toBe('done');
+    expect(storage.getItem(PROGRESS_KEY)).toBeNull();
+  });
+
+  it('asks for a participant code once and keeps it next to the progress', () => {
+    const { storage, session: game } = session(new MemoryStorage(), assignment);
+    expect(game.needsParticipantCode).toBe(true);
+    game.setParticipantCode('A17');
+    expect(game.needsParticipantCode).toBe(false);
+    expect(readSessionContext(storage, game.progressKey)).toEqual({ participantCode: 'A17' });
+    expect(session(storage, assignment).session.needsParticipantCode).toBe(false);
+  });
+
+  it('lists a level it names that the game does not have as broken', () => {
+    const { session: game } = session(new MemoryStorage(), { ...assignment, levels: ['first', 'nowhere'] });
+    const entry = game.catalog.chapters[0]?.entries[1];
+    expect(entry?.ok).toBe(false);
+  });
+});

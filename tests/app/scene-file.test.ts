@@ -1,0 +1,40 @@
+import { describe, expect, it } from 'vitest';
+import { readFileSync } from 'node:fs';
+import { readSceneFile, sceneFileName, sceneFileText, MAX_SCENE_FILE_BYTES } from '../../src/app/scene-file.ts';
+import { defaultScene } from '../../src/scene/scene-defaults.ts';
+
+describe('scene files', () => {
+  it('round-trips a scene through its file text', () => {
+    const scene = defaultScene();
+    const text = sceneFileText(scene);
+    expect(text).toContain('\n  "name": "Three spheres and a box",\n');
+    expect(text.endsWith('}\n')).toBe(true);
+    expect(readSceneFile(text)).toEqual({ ok: true, scene });
+  });
+
+  it('names the file after the scene, safely', () => {
+    expect(sceneFileName(defaultScene())).toBe('three-spheres-and-a-box.scene.json');
+    expect(sceneFileName({ ...defaultScene(), name: 'Café / Ünïcode: ☀ test' })).toBe('cafe-unicode-test.scene.json');
+    expect(sceneFileName({ ...defaultScene(), name: '☀☀' })).toBe('scene.scene.json');
+    expect(sceneFileName({ ...defaultScene(), name: undefined })).toBe('scene.scene.json');
+  });
+
+  it('says what is wrong with a damaged file', () => {
+    expect(readSceneFile('{"version": 1, "objects": [')).toEqual({ ok: false, errors: [expect.stringMatching(/^\(root\): not valid JSON at line 1, column 28/)] });
+    const wrong = readSceneFile(JSON.stringify({ version: 1, objects: [{ id: 'a', shape: 'cone' }] }));
+    expect(wrong.ok).toBe(false);
+    if (!wrong.ok) expect(wrong.errors[0]).toBe('objects[0].shape: must be one of sphere, box, cylinder, plane, mesh, got "cone"');
+    expect(readSceneFile(JSON.stringify({ version: 2 }))).toMatchObject({ ok: false, errors: [expect.stringMatching(/^version: /)] });
+    expect(readSceneFile('{}', MAX_SCENE_FILE_BYTES + 1)).toMatchObject({ ok: false, errors: [expect.stringMatching(/a scene file is at most 2048 kB/)] });
+  });
+
+  it('reads the scene of a level file, with its problems under scene.', () => {
+    const level = JSON.parse(readFileSync('levels/01-introduction.level.json', 'utf8'));
+    const read = readSceneFile(JSON.stringify(level));
+    expect(read.ok && read.scene.objects.length).toBeGreaterThan(0);
+    expect(readSceneFile(JSON.stringify({ ...level, scene: { version: 1, camera: { fov: 500 } } }))).toMatchObject({
+      ok: false,
+      errors: [expect.stringMatching(/^scene\.camera\.fov: /)],
+    });
+  });
+});

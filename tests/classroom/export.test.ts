@@ -1,0 +1,216 @@
+import { describe, expect, it } from 'vitest';
+import type { Assignment } from '../../src/classroom/assignment.ts';
+import { assignmentId } from '../../src/classroom/assignment-id.ts';
+import { parseCsv } from '../../src/classroom/csv-text.ts';
+import type { ExportInput } from '../../src/classroom/export-context.ts';
+import { APP_VERSION } from '../../src/classroom/export-context.ts';
+import { CSV_COLUMNS, exportCsv } from '../../src/classroom/export-csv.ts';
+import { buildExport, EXPORT_FORMAT } from '../../src/classroom/export-json.ts';
+import { exportXapi } from '../../src/classroom/export-xapi.ts';
+import { isoAt, isoDuration } from '../../src/classroom/iso-duration.ts';
+import type { LoggedEvent } from '../../src/quest/event-log.ts';
+import { newProgress, type Progress } from '../../src/quest/progress.ts';
+
+const START = '2025-03-04T09:00:00.000Z';
+const clock = { monotonicMs: () => 0, wallMs: () => Date.parse(START) };
+const flags = { mandatory: true, required: true };
+
+/**
+ * A learner opens level 1, hides the tab for 20 s while on "orbit", finishes it; "select" is
+ * shown, they leave the level, come back (a second attempt) and finish it by "show me";
+ * an optional task is skipped; a quiz is answered wrong.
+ */
+const events: LoggedEvent[] = [
+  { t: 0, type: 'session.started', at: START },
+  { t: 1_000, type: 'level.opened', level: 'l1' },
+  { t: 1_000, type: 'task.shown', level: 'l1', task: 'orbit', ...flags },
+  { t: 1_000, type: 'task.shown', level: 'l1', task: 'extra', mandatory: false, required: false },
+  { t: 5_000, type: 'hint.shown', level: 'l1', task: 'orbit', step: 'text', trigger: 'asked' },
+  { t: 6_000, type: 'tab.hidden' },
+  { t: 26_000, type: 'tab.visible' },
+  { t: 31_000, type: 'task.completed', level: 'l1', task: 'orbit', ...flags, how: 'done', points: 10 },
+  { t: 31_000, type: 'task.shown', level: 'l1', task: 'select', ...flags },
+  { t: 32_000, type: 'hint.shown', level: 'l1', task: 'select', step: 'guidance', trigger: 'idle' },
+  { t: 40_000, type: 'level.closed', level: 'l1' },
+  { t: 50_000, type: 'level.opened', level: 'l1' },
+  { t: 50_000, type: 'task.shown', level: 'l1', task: 'select', ...flags },
+  { t: 50_000, type: 'task.shown', level: 'l1', task: 'extra', mandatory: false, required: false },
+  { t: 52_000, type: 'explanation.expanded', level: 'l1', task: 'select' },
+  { t: 53_500, type: 'task.completed', level: 'l1', task: 'select', ...flags, how: 'shown', points: 0 },
+  { t: 54_000, type: 'task.completed', level: 'l1', task: 'extra', mandatory: false, required: false, how: 'skipped', points: 0 },
+  { t: 54_000, type: 'level.passed', level: 'l1' },
+  { t: 54_000, type: 'badge.earned', badge: { kind: 'first-render' } },
+  { t: 60_000, type: 'task.shown', level: 'l1', task: 'guess', ...flags },
+  { t: 61_000, type: 'quiz.answered', level: 'l1', task: 'guess', choice: 2, correct: false },
+  { t: 61_000, type: 'task.completed', level: 'l1', task: 'guess', ...flags, how: 'done', points: 5 },
+  { t: 62_000, type: 'render.started', level: 'l1' },
+];
+
+function progress(): Progress {
+  const fresh = newProgress(clock);
+  return { ...fresh, log: { startedAt: START, events }, levels: { l1: { tasks: { orbit: { how: 'done', points: 10 } }, hintsUsed: 2 } } };
+}
+
+const assignment: Assignment = {
+  version: 1,
+  title: 'Lesson, "one", line\nbreak',
+  levels: ['l1'],
+  requiredTasks: {},
+  otherLevels: 'shown',
+  locale: 'nl',
+  askParticipantCode: true,
+  survey: 'default',
+};
+
+function input(overrides: Partial<ExportInput> = {}): ExportInput {
+  return {
+    progress: progress(),
+    participant: 'P-07, ü',
+    assignment,
+    survey: { survey: 'default', submittedAt: '2025-03-04T10:00:00.000Z', answers: { 'computer-skill': 7, feedback: 'Nice, "really"' } },
+    exportedAt: '2025-03-04T10:01:00.000Z',
+    appVersion: '9.9.9',
+    ...overrides,
+  };
+}
+
+function csvRows(text: string): Record<string, string>[] {
+  const parsed = parseCsv(text);
+  if (!parsed.ok) throw new Error(parsed.error);
+  const [header, ...rows] = parsed.rows;
+  return rows.map((row) => Object.fromEntries(header.map((name, i) => [name, row[i]])));
+}
+
+describe('CSV export', () => {
+  const text = exportCsv(input());
+
+  it('starts with a byte-order mark and the header, with CRLF line ends', () => {
+    expect(text.startsWith(`\uFEFF${CSV_COLUMNS.join(',')}\r\n`)).toBe(true);
+    expect(text.endsWith('\r\n')).toBe(true);
+    for (const column of ['participant', 'assignment', 'level', 'task', 'mandatory', 'started_at', 'completed_at', 'duration_ms', 'active_ms', 'hints_text', 'hints_guidance', 'shown_by_app', 'attempts', 'points']) {
+      expect(CSV_COLUMNS).toContain(column);
+    }
+  });
+
+  it('quotes fields with commas, quotes and line breaks (RFC 4180)', () => {
+    expect(text).toContain('"P-07, ü","Lesson, ""one"", line\nbreak"');
+    const [first] = csvRows(text);
+    expect(first.participant).toBe('P-07, ü');
+    expect(first.assignment).toBe('Lesson, "one", line\nbreak');
+    expect(first.assignment_id).toBe(assignmentId(assignment));
+  });
+
+  it('has one row per task attempt with times, hints and how it ended', () => {
+    const rows = csvRows(text);
+    expect(rows.map((row) => `${row.task}#${row.attempts}:${row.how}`)).toEqual(['orbit#1:done', 'extra#1:', 'select#1:', 'select#2:shown', 'extra#2:skipped', 'guess#1:done']);
+    const [orbit, , select1, select2, , guess] = rows;
+    expect(orbit).toMatchObject({ mandatory: 'true', started_at: '2025-03-04T09:00:01.000Z', completed_at: '2025-03-04T09:00:31.000Z', duration_ms: '30000', hints_text: '1', hints_guidance: '0', shown_by_app: 'false', points: '10' });
+    // Unfinished: the level was closed.
+    expect(select1).toMatchObject({ completed_at: '', duration_ms: '9000', hints_guidance: '1' });
+    expect(select2).toMatchObject({ shown_by_app: 'true', duration_ms: '3500', points: '0' });
+    expect(guess).toMatchObject({ quiz_answers: '1', points: '5' });
+  });
+
+  it('leaves hidden-tab time out of active time', () => {
+    const [orbit, , select1] = csvRows(text);
+    expect(orbit.active_ms).toBe('10000');
+    expect(select1.active_ms).toBe('9000');
+  });
+
+  it('leaves participant and assignment empty in anonymous free play', () => {
+    const [first] = csvRows(exportCsv(input({ participant: null, assignment: null })));
+    expect(first).toMatchObject({ participant: '', assignment: '', assignment_id: '' });
+  });
+});
+
+describe('JSON export', () => {
+  it('holds the full log, the app version, the assignment and the survey', () => {
+    const data = buildExport(input());
+    expect(data).toMatchObject({ format: EXPORT_FORMAT, version: 1, appVersion: '9.9.9', exportedAt: '2025-03-04T10:01:00.000Z', participant: 'P-07, ü' });
+    expect(data.assignment).toEqual({ id: assignmentId(assignment), ...assignment });
+    expect(data.events).toEqual({ startedAt: START, events });
+    expect(data.progress.points).toBe(10);
+    expect(data.survey?.answers).toEqual({ 'computer-skill': 7, feedback: 'Nice, "really"' });
+  });
+
+  it('knows the app version from package.json', () => {
+    expect(APP_VERSION).toMatch(/^\d+\.\d+\.\d+/);
+  });
+});
+
+describe('ISO 8601 durations', () => {
+  it.each([
+    [0, 'PT0S'],
+    [4, 'PT0S'],
+    [5, 'PT0.01S'],
+    [1_000, 'PT1S'],
+    [63_500, 'PT1M3.5S'],
+    [60_000, 'PT1M'],
+    [3_600_000, 'PT1H'],
+    [3_723_450, 'PT1H2M3.45S'],
+    [59_999, 'PT1M'],
+    [90_000_000, 'PT25H'],
+  ])('%d ms is %s', (ms, text) => expect(isoDuration(ms)).toBe(text));
+
+  it('refuses negative and non-finite durations', () => {
+    expect(() => isoDuration(-1)).toThrow(RangeError);
+    expect(() => isoDuration(Number.NaN)).toThrow(RangeError);
+  });
+
+  it('turns log times into UTC times', () => {
+    expect(isoAt(START, 1_234)).toBe('2025-03-04T09:00:01.234Z');
+  });
+});
+
+describe('xAPI export', () => {
+  const statements = exportXapi(input());
+
+  it('gives every statement an id, actor, verb, activity and ISO 8601 timestamp', () => {
+    expect(statements.length).toBeGreaterThan(10);
+    for (const statement of statements) {
+      expect(statement.id).toMatch(/^[0-9a-f]{8}-[0-9a-f]{4}-8[0-9a-f]{3}-[89ab][0-9a-f]{3}-[0-9a-f]{12}$/);
+      expect(statement.actor).toEqual({ objectType: 'Agent', account: { homePage: 'https://raytracerquest.example', name: 'P-07, ü' } });
+      expect(statement.verb.id).toMatch(/^http:\/\/(adlnet\.gov\/expapi|id\.tincanapi\.com)\/verb/);
+      expect(statement.verb.display['en-US']).toBeTruthy();
+      expect(statement.object.objectType).toBe('Activity');
+      expect(statement.object.id).toMatch(/^https:\/\/raytracerquest\.example/);
+      expect(new Date(statement.timestamp).toISOString()).toBe(statement.timestamp);
+      expect(statement.context.language).toBe('nl');
+      if (statement.result?.duration) expect(statement.result.duration).toMatch(/^PT(\d+H)?(\d+M)?(\d+(\.\d+)?S)?$/);
+    }
+    expect(new Set(statements.map((s) => s.id)).size).toBe(statements.length);
+  });
+
+  it('reports task completions with success, score and duration', () => {
+    const completed = statements.filter((s) => s.verb.id === 'http://adlnet.gov/expapi/verbs/completed' && s.object.id.includes('/tasks/'));
+    expect(completed.map((s) => [s.object.id.split('/').at(-1), s.result?.success, s.result?.score?.raw, s.result?.duration])).toEqual([
+      ['orbit', true, 10, 'PT30S'],
+      ['select', false, 0, 'PT3.5S'],
+      ['guess', true, 5, 'PT1S'],
+    ]);
+    expect(completed[0].object.id).toBe('https://raytracerquest.example/levels/l1/tasks/orbit');
+    expect(completed[0].context.contextActivities.parent?.[0].id).toBe('https://raytracerquest.example/levels/l1');
+    expect(statements.some((s) => s.verb.id === 'http://id.tincanapi.com/verb/skipped')).toBe(true);
+  });
+
+  it('reports quiz answers, the passed level, and the survey answers', () => {
+    const quiz = statements.find((s) => s.verb.id.endsWith('/answered') && s.object.id.endsWith('/tasks/guess'));
+    expect(quiz?.result).toEqual({ success: false, response: '2' });
+    const passed = statements.find((s) => s.verb.id.endsWith('/passed'));
+    expect(passed?.result).toMatchObject({ success: true, duration: 'PT4S' });
+    const answer = statements.find((s) => s.object.id.endsWith('/questions/computer-skill'));
+    expect(answer?.result?.response).toBe('7');
+  });
+
+  it('keeps the statements in time order and the same ids for the same file', () => {
+    const times = statements.map((s) => Date.parse(s.timestamp));
+    expect(times).toEqual([...times].sort((a, b) => a - b));
+    expect(exportXapi(input()).map((s) => s.id)).toEqual(statements.map((s) => s.id));
+  });
+
+  it('names an anonymous learner by an account of their own', () => {
+    const [first] = exportXapi(input({ participant: null, assignment: null }));
+    expect(first.actor.account.name).toMatch(/^anonymous-[0-9a-f]+$/);
+    expect(first.context.language).toBe('en');
+  });
+});

@@ -1,0 +1,144 @@
+import { describe, expect, it } from 'vitest';
+import type { LabAction } from '../../src/lab-state/lab-action.ts';
+import { reduce } from '../../src/lab-state/lab-reducer.ts';
+import { initialState, type LabState } from '../../src/lab-state/lab-state.ts';
+import { checkGoal, eventMatches, isRightAnswer, NO_EVENTS, tallyAction, type EventTally } from '../../src/quest/goal-check.ts';
+import { goalSchema, type Goal } from '../../src/quest/goal.ts';
+import { problemWithPath, readPath } from '../../src/quest/state-path.ts';
+import { defaultScene } from '../../src/scene/scene-defaults.ts';
+
+const start = initialState(defaultScene());
+
+/** A goal as a level file writes it, parsed. */
+const goal = (json: unknown): Goal => goalSchema.parse(json);
+
+/** Runs actions through the reducer, tallying for `g`; returns whether `g` is met after each. */
+function play(g: Goal, actions: LabAction[], state: LabState = start): boolean[] {
+  let tally: EventTally = NO_EVENTS;
+  return actions.map((action) => {
+    state = reduce(state, action).state;
+    tally = tallyAction(g, tally, state, action);
+    return checkGoal(g, state, tally);
+  });
+}
+
+const orbit: LabAction = { type: 'view.orbited' };
+const zoom: LabAction = { type: 'view.zoomed' };
+
+describe('paths into the state', () => {
+  it('read fields, positions, items by id and lengths; what is not there is undefined', () => {
+    expect(readPath(start, 'scene.settings.supersampling')).toBe(1);
+    expect(readPath(start, 'scene.camera.pixels[1]')).toBe(6);
+    expect(readPath(start, 'scene.objects[id=red-ball].material.color')).toEqual([0.9, 0.15, 0.1]);
+    expect(readPath(start, 'scene.lights[id=spot].spotAngle')).toBe(40);
+    expect(readPath(start, 'scene.objects.length')).toBe(5);
+    expect(readPath(start, 'scene.objects[id=nothing].position')).toBeUndefined();
+    expect(readPath(start, 'selection.id')).toBeUndefined();
+    expect(readPath(start, 'scene.objects[9]')).toBeUndefined();
+  });
+
+  it('are checked against a sample state, with reasons', () => {
+    expect(problemWithPath('scene.camera.fov', start)).toBeUndefined();
+    expect(problemWithPath('scene.camera.fov.x', start)).toBe('scene.camera.fov is a number: it has no field "x"');
+    expect(problemWithPath('scene.settings[0]', start)).toBe('scene.settings is not a list, so [0] cannot select from it');
+    expect(problemWithPath('rays.hideNoHits', start)).toMatch(/^no field "hideNoHits" in rays \(it has showRays, hideNoHit, /);
+    expect(problemWithPath('Scene', start)).toBe('no field "Scene" (it has scene, selection, selectedPixel, rays, gizmo, bvh)');
+    expect(problemWithPath('3d', start)).toBe('must start with a field name, like "scene.settings.shadows", got "3d"');
+  });
+});
+
+describe('event goals', () => {
+  it('are met when their action happens', () => {
+    expect(play(goal({ event: 'view.orbited' }), [zoom, orbit])).toEqual([false, true]);
+  });
+
+  it('look at the action\'s fields (with) and the state it leaves (where)', () => {
+    const topLeft = goal({ event: 'pixel.selected', with: { pixel: [0, 0] } });
+    expect(play(topLeft, [{ type: 'pixel.selected', pixel: [1, 0] }, { type: 'pixel.selected', pixel: [0, 0] }])).toEqual([false, true]);
+    const noShadows = goal({ event: 'render.finished', where: { 'scene.settings.shadows': false } });
+    expect(play(noShadows, [{ type: 'render.finished', ms: 5 }, { type: 'settings.changed', changes: { shadows: false } }, { type: 'render.finished', ms: 5 }])).toEqual([false, false, true]);
+  });
+
+  it('take comparisons in where: all of them must hold at the moment of the action', () => {
+    const fewSamples = goal({ event: 'render.finished', where: { 'scene.settings.supersampling': { '>=': 2, '<=': 3 } } });
+    const steps = (s: number): LabAction[] => [{ type: 'settings.changed', changes: { supersampling: s } }, { type: 'render.finished', ms: 1 }];
+    expect(play(fewSamples, [...steps(4), ...steps(2)])).toEqual([false, false, false, true]);
+  });
+
+  it('count with times, and say exactly which action matched', () => {
+    expect(play(goal({ event: 'view.orbited', times: 3 }), [orbit, zoom, orbit, orbit])).toEqual([false, false, false, true]);
+    const selectBall = goal({ event: 'selection.changed', where: { selection: { kind: 'object', id: 'red-ball' } } });
+    if (!('event' in selectBall)) throw new Error('expected an event goal');
+    const ball = reduce(start, { type: 'selection.changed', selection: { kind: 'object', id: 'red-ball' } }).state;
+    expect(eventMatches(selectBall, ball, { type: 'selection.changed', selection: { kind: 'object', id: 'red-ball' } })).toBe(true);
+    expect(eventMatches(selectBall, start, { type: 'selection.changed', selection: null })).toBe(false);
+  });
+});
+
+describe('state goals', () => {
+  const at = (op: string, value: unknown, path = 'scene.settings.maxDepth') => checkGoal(goal({ state: path, op, value }), start, NO_EVENTS);
+
+  it('compare numbers with every operator', () => {
+    expect([at('==', 3), at('!=', 3), at('>', 2), at('>=', 3), at('<', 3), at('<=', 3)]).toEqual([true, false, true, true, false, true]);
+    expect([at('==', 4), at('!=', 4), at('>', 3), at('>=', 4), at('<', 4), at('<=', 2)]).toEqual([false, true, false, false, true, false]);
+  });
+
+  it('compare lists and objects by content, numbers within a tiny tolerance', () => {
+    expect(at('==', [0.9, 0.15, 0.1], 'scene.objects[id=red-ball].material.color')).toBe(true);
+    expect(at('==', [0.9, 0.15, 0.1 + 1e-9], 'scene.objects[id=red-ball].material.color')).toBe(true);
+    expect(at('==', [0.9, 0.15], 'scene.objects[id=red-ball].material.color')).toBe(false);
+    expect(at('==', { mode: 'translate', space: 'world', snap: false }, 'gizmo')).toBe(true);
+    expect(at('==', null, 'selection')).toBe(true);
+  });
+
+  it('use includes for list items and pieces of text', () => {
+    expect(at('includes', 6, 'scene.camera.pixels')).toBe(true);
+    expect(at('includes', 7, 'scene.camera.pixels')).toBe(false);
+    expect(at('includes', 'spheres', 'scene.name')).toBe(true);
+  });
+
+  it('treat a value that is not there as equal to nothing', () => {
+    expect(at('==', null, 'selection.id')).toBe(false);
+    expect(at('!=', 'ball', 'selection.id')).toBe(true);
+    expect(at('>', 0, 'scene.objects[id=gone].position[0]')).toBe(false);
+  });
+
+  it('hold while the state does, whatever the action', () => {
+    const twoSamples = goal({ state: 'scene.settings.supersampling', op: '>=', value: 2 });
+    expect(play(twoSamples, [{ type: 'settings.changed', changes: { supersampling: 2 } }, orbit, { type: 'settings.changed', changes: { supersampling: 1 } }])).toEqual([true, true, false]);
+  });
+});
+
+describe('all and any', () => {
+  it('all: every event has happened since the task was shown and every state part holds now', () => {
+    const orbitAndZoom = goal({ all: [{ event: 'view.orbited' }, { event: 'view.zoomed' }] });
+    expect(play(orbitAndZoom, [orbit, orbit, zoom])).toEqual([false, false, true]);
+    const orbitWithShadowsOff = goal({ all: [{ event: 'view.orbited' }, { state: 'scene.settings.shadows', op: '==', value: false }] });
+    expect(play(orbitWithShadowsOff, [orbit, { type: 'settings.changed', changes: { shadows: false } }])).toEqual([false, true]);
+  });
+
+  it('any: one part is enough', () => {
+    const orbitOrZoom = goal({ any: [{ event: 'view.orbited' }, { state: 'scene.settings.maxDepth', op: '==', value: 5 }] });
+    expect(play(orbitOrZoom, [zoom, { type: 'settings.changed', changes: { maxDepth: 5 } }])).toEqual([false, true]);
+    expect(play(orbitOrZoom, [zoom, orbit])).toEqual([false, true]);
+  });
+
+  it('nest', () => {
+    const nested = goal({ any: [{ all: [{ event: 'view.orbited' }, { event: 'view.zoomed' }] }, { event: 'view.flew-to-camera' }] });
+    expect(play(nested, [orbit, zoom])).toEqual([false, true]);
+    expect(play(nested, [{ type: 'view.flew-to-camera' }])).toEqual([true]);
+  });
+});
+
+describe('quiz and info goals', () => {
+  it('a quiz knows its right answer', () => {
+    const quiz = goal({ quiz: { question: 'How many?', choices: ['3', '12'], answer: 1 } });
+    if (!('quiz' in quiz)) throw new Error('expected a quiz goal');
+    expect([isRightAnswer(quiz, 0), isRightAnswer(quiz, 1)]).toEqual([false, true]);
+  });
+
+  it('quiz and info goals are never met by actions: they complete through the task panel', () => {
+    expect(play(goal({ info: true }), [orbit])).toEqual([false]);
+    expect(play(goal({ quiz: { question: 'Q', choices: ['a', 'b'], answer: 0 } }), [orbit])).toEqual([false]);
+  });
+});

@@ -1,0 +1,60 @@
+import { existsSync, readFileSync } from 'node:fs';
+import { describe, expect, it } from 'vitest';
+import { initialState } from '../../src/lab-state/lab-state.ts';
+import { Store } from '../../src/lab-state/store.ts';
+import { kindOfGoal } from '../../src/quest/goal.ts';
+import { loadLevels } from '../../src/quest/level-index.ts';
+import { newProgress } from '../../src/quest/progress.ts';
+import { QuestEngine } from '../../src/quest/quest-engine.ts';
+import { FakeClock } from '../support/quest-fixtures.ts';
+
+/**
+ * Every level in levels/index.json is valid and solved by its own solutions, headless, as
+ * Learn Git Branching's levels.spec.js does: each task's solution goes through the real
+ * reducer (the store) and the real quest engine, in the level's order, and must complete
+ * that task as done by the learner. A task that is already complete before its solution
+ * runs would complete itself in the game; that fails too.
+ */
+
+const levelsFolder = new URL('../../levels/', import.meta.url);
+const readLevelFile = (name: string) => (existsSync(new URL(name, levelsFolder)) ? readFileSync(new URL(name, levelsFolder), 'utf8') : undefined);
+const catalog = loadLevels(readFileSync(new URL('index.json', levelsFolder), 'utf8'), readLevelFile);
+
+describe('levels/index.json', () => {
+  it('is valid', () => {
+    expect(catalog.errors).toEqual([]);
+  });
+});
+
+for (const chapter of catalog.chapters) {
+  describe(`chapter ${chapter.id}`, () => {
+    for (const entry of chapter.entries) {
+      it(`${entry.id} is valid and solved by its solutions`, () => {
+        if (!entry.ok) throw new Error(`levels/${entry.id}.level.json is broken:\n${entry.errors.join('\n')}`);
+        const { level } = entry;
+        const clock = new FakeClock();
+        // Every level is open: each one is tested on its own.
+        const engine = new QuestEngine({ catalog: { chapters: [{ ...chapter, entries: [entry] }], errors: [] }, progress: newProgress(clock), clock });
+        const opened = engine.openLevel(level.id);
+        if (!opened.ok) throw new Error(`could not open ${level.id}: ${opened.reason}`);
+        const store = new Store(initialState(opened.scene));
+        store.subscribe(engine.observe);
+        store.dispatch({ type: 'scene.loaded', scene: opened.scene });
+
+        const statusOf = (taskId: string) => engine.level?.tasks.find((view) => view.task.id === taskId)?.status;
+        for (const task of level.tasks) {
+          expect(statusOf(task.id), `task "${task.id}" completed before its solution ran`).toMatch(/^(current|open)$/);
+          const kind = kindOfGoal(task.goal);
+          if ('quiz' in task.goal) expect(engine.answerQuiz(task.id, task.goal.quiz.answer)).toEqual({ correct: true });
+          else if (kind === 'info') expect(engine.next(), `info step "${task.id}" was not the current task`).toBe(true);
+          for (const action of task.solution ?? []) {
+            expect(store.dispatch(action), `task "${task.id}": ${action.type} was refused`).toBeUndefined();
+          }
+          expect(statusOf(task.id), `task "${task.id}" was not completed by its solution`).toBe('done');
+        }
+        expect(engine.level?.passed).toBe(true);
+        expect(engine.level?.points).toBe(engine.level?.maxPoints);
+      });
+    }
+  });
+}

@@ -1,0 +1,148 @@
+import { describe, expect, it } from 'vitest';
+import { newProgress, pointsOf, type Progress } from '../../src/quest/progress.ts';
+import { exportProgress, MemoryStorage, parseProgressJson, PROGRESS_KEY, ProgressStore, type KeyValueStorage } from '../../src/quest/progress-store.ts';
+import { QuestEngine } from '../../src/quest/quest-engine.ts';
+import { initialState } from '../../src/lab-state/lab-state.ts';
+import { Store } from '../../src/lab-state/store.ts';
+import { catalogOf, FakeClock, levelWithId } from '../support/quest-fixtures.ts';
+
+/** Progress with something in it: a level's first task done, a render, a badge. */
+function playedProgress(clock: FakeClock): Progress {
+  const engine = new QuestEngine({ catalog: catalogOf([{ id: 'test', levels: [levelWithId('first')] }]), progress: newProgress(clock), clock });
+  const opened = engine.openLevel('first');
+  if (!opened.ok) throw new Error(opened.reason);
+  const store = new Store(initialState(opened.scene));
+  store.subscribe(engine.observe);
+  store.dispatch({ type: 'view.orbited' });
+  store.dispatch({ type: 'render.finished', ms: 40 });
+  return engine.progress;
+}
+
+/** A store over `storage` and what its load() made of `saved`. */
+function loadFrom(saved: string | null) {
+  const storage = new MemoryStorage();
+  if (saved !== null) storage.setItem(PROGRESS_KEY, saved);
+  const clock = new FakeClock();
+  return { storage, loaded: new ProgressStore(storage, clock).load() };
+}
+
+describe('saving and loading', () => {
+  it('starts fresh, without a problem, when nothing was saved', () => {
+    const { loaded } = loadFrom(null);
+    expect(loaded.problem).toBeUndefined();
+    expect(loaded.progress).toMatchObject({ kind: 'ray-tracer-quest-progress', version: 1, levels: {}, badges: [], sandbox: null, current: null });
+    expect(loaded.progress.settings).toEqual({ locale: 'en', colorBlindPalette: false });
+  });
+
+  it('gives back what it saved: tasks, points, badges, the scene, the log', () => {
+    const clock = new FakeClock();
+    const progress = playedProgress(clock);
+    const storage = new MemoryStorage();
+    const store = new ProgressStore(storage, clock);
+    expect(store.save(progress)).toEqual({ ok: true });
+    const { progress: loaded, problem } = store.load();
+    expect(problem).toBeUndefined();
+    expect(loaded).toEqual(progress);
+    expect(pointsOf(loaded)).toBe(10);
+    expect(loaded.badges.map(({ badge }) => badge.kind)).toEqual(['first-render']);
+    expect(loaded.log.events.map((event) => event.type)).toContain('render.finished');
+  });
+
+  it('fills in settings added after the progress was saved', () => {
+    const saved = { ...newProgress(new FakeClock()), settings: {} };
+    expect(loadFrom(JSON.stringify(saved)).loaded.progress.settings).toEqual({ locale: 'en', colorBlindPalette: false });
+  });
+});
+
+describe('recovering from saved data that cannot be used', () => {
+  const cases: { name: string; saved: string; kind: string; reason: RegExp }[] = [
+    { name: 'garbage', saved: 'ẞ%&not json', kind: 'damaged', reason: /^\(root\): not valid JSON at line 1, column 1/ },
+    { name: 'truncated JSON', saved: JSON.stringify(newProgress(new FakeClock())).slice(0, 60), kind: 'damaged', reason: /^\(root\): not valid JSON/ },
+    { name: 'another app\'s data', saved: JSON.stringify({ theme: 'dark' }), kind: 'foreign', reason: /^kind: must be "ray-tracer-quest-progress" in a progress file, got "kind" nothing$/ },
+    { name: 'a newer version', saved: JSON.stringify({ ...newProgress(new FakeClock()), version: 2 }), kind: 'other-version', reason: /^version: this app reads progress version 1, got 2$/ },
+    { name: 'a damaged field', saved: JSON.stringify({ ...newProgress(new FakeClock()), levels: { first: { tasks: { orbit: { how: 'guessed', points: -1 } }, hintsUsed: 0 } } }), kind: 'damaged', reason: /^levels\.first\.tasks\.orbit\.how: must be one of done, shown, skipped, got "guessed"$/ },
+  ];
+
+  for (const { name, saved, kind, reason } of cases) {
+    it(`${name}: a fresh start, a message, and the old data kept under a backup key`, () => {
+      const { storage, loaded } = loadFrom(saved);
+      const { problem } = loaded;
+      expect(problem?.kind).toBe(kind);
+      expect(problem?.reasons[0]).toMatch(reason);
+      expect(problem?.message).toMatch(/You start from the beginning\. The old data is kept as a backup \(rtq\.progress\.backup\.2025-03-01T09:00:00\.000Z\)\.$/);
+      expect(problem?.raw).toBe(saved);
+      expect(storage.getItem(problem?.backupKey ?? '')).toBe(saved);
+      expect(loaded.progress.levels).toEqual({});
+    });
+  }
+
+  it('never writes a backup over an older one', () => {
+    const storage = new MemoryStorage();
+    const clock = new FakeClock();
+    const store = new ProgressStore(storage, clock);
+    storage.setItem(PROGRESS_KEY, 'first damage');
+    store.load();
+    storage.setItem(PROGRESS_KEY, 'second damage');
+    const { problem } = store.load(); // same clock reading: the backup key is taken
+    expect(problem?.backupKey).toBeNull();
+    expect(problem?.raw).toBe('second damage');
+    expect(problem?.message).toMatch(/could not be kept in the browser: download it now/);
+    expect(storage.getItem(`${PROGRESS_KEY}.backup.2025-03-01T09:00:00.000Z`)).toBe('first damage');
+  });
+
+  it('storage that refuses to be read: progress lasts for the page, with a message', () => {
+    const blocked: KeyValueStorage = {
+      getItem: () => {
+        throw new Error('The operation is insecure.');
+      },
+      setItem: () => {},
+      removeItem: () => {},
+    };
+    const { problem, progress } = new ProgressStore(blocked, new FakeClock()).load();
+    expect(problem).toMatchObject({ kind: 'unreadable-storage', reasons: ['The operation is insecure.'], backupKey: null, raw: null });
+    expect(progress.levels).toEqual({});
+  });
+
+  it('full storage: says why progress was not saved', () => {
+    const full = new MemoryStorage();
+    full.setItem = () => {
+      throw new DOMException('quota', 'QuotaExceededError');
+    };
+    const result = new ProgressStore(full, new FakeClock()).save(newProgress(new FakeClock()));
+    expect(result).toEqual({ ok: false, message: "The browser's storage is full, so progress is not saved. It is kept while this page is open: export it to keep it." });
+  });
+});
+
+describe('export, import and reset', () => {
+  it('exports a file that imports to the same progress', () => {
+    const progress = playedProgress(new FakeClock());
+    expect(parseProgressJson(exportProgress(progress))).toEqual({ ok: true, progress });
+  });
+
+  it('refuses a file that is not progress, with reasons', () => {
+    expect(parseProgressJson('{"version": 1, "objects": []}')).toEqual({
+      ok: false,
+      kind: 'foreign',
+      errors: ['kind: must be "ray-tracer-quest-progress" in a progress file, got "kind" nothing'],
+    });
+    expect(parseProgressJson('[1, 2]')).toMatchObject({ ok: false, kind: 'foreign', errors: ['kind: must be "ray-tracer-quest-progress" in a progress file, got a list of 2 items'] });
+  });
+
+  it('reset forgets the saved progress', () => {
+    const storage = new MemoryStorage();
+    const clock = new FakeClock();
+    const store = new ProgressStore(storage, clock);
+    store.save(playedProgress(clock));
+    expect(store.reset().levels).toEqual({});
+    expect(storage.getItem(PROGRESS_KEY)).toBeNull();
+    expect(store.load().problem).toBeUndefined();
+  });
+
+  it('keeps a teacher assignment\'s progress apart under its own key', () => {
+    const storage = new MemoryStorage();
+    const clock = new FakeClock();
+    new ProgressStore(storage, clock, 'rtq.assignment.abc').save(playedProgress(clock));
+    expect(new ProgressStore(storage, clock).load().progress.levels).toEqual({});
+    expect(new ProgressStore(storage, clock, 'rtq.assignment.abc').load().progress.levels).not.toEqual({});
+  });
+});

@@ -1,0 +1,71 @@
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { renderImageData } from '../../src/render/image-data.ts';
+
+/**
+ * Node has no ImageData: a stand-in with the browser's constructor signature records what the
+ * function hands to the canvas (the browser's own one is exercised by e2e/render-window.spec.ts).
+ */
+class FakeImageData {
+  constructor(
+    readonly data: Uint8ClampedArray,
+    readonly width: number,
+    readonly height: number,
+  ) {}
+}
+
+const globals = globalThis as { ImageData?: unknown };
+beforeAll(() => {
+  globals.ImageData = FakeImageData;
+});
+afterAll(() => {
+  delete globals.ImageData;
+});
+
+/** A 4×4 image of one linear grey, halfway between two 8-bit steps (100.5 / 255). */
+function flatGrey(): { width: number; height: number; rgb: Float32Array } {
+  return { width: 4, height: 4, rgb: new Float32Array(4 * 4 * 3).fill(100.5 / 255) };
+}
+
+describe('renderImageData', () => {
+  it('quantizes linear RGB to 8-bit RGBA without gamma, clamping out-of-range values', () => {
+    const rgb = new Float32Array([0, 0.5, 1, 1.7, -0.2, 0.25]);
+    const pixels = renderImageData({ width: 2, height: 1, rgb }, false);
+    expect([pixels.width, pixels.height]).toEqual([2, 1]);
+    expect([...pixels.data]).toEqual([0, 128, 255, 255, 255, 0, 64, 255]);
+  });
+
+  it('without dithering, a flat colour stays one flat value', () => {
+    const { data } = renderImageData(flatGrey(), false);
+    const reds = new Set([...data].filter((_, i) => i % 4 === 0));
+    expect(reds).toEqual(new Set([101]));
+  });
+
+  it('with dithering, a colour between two steps becomes a pattern of both, averaging to it', () => {
+    const { data } = renderImageData(flatGrey(), true);
+    const reds = [...data].filter((_, i) => i % 4 === 0);
+    expect(new Set(reds)).toEqual(new Set([100, 101]));
+    // The 4×4 Bayer threshold covers the step evenly: half the pixels round each way.
+    expect(reds.reduce((sum, r) => sum + r, 0) / reds.length).toBeCloseTo(100.5, 5);
+    // Opaque either way: a saved PNG must not turn see-through.
+    expect([...data].filter((_, i) => i % 4 === 3).every((a) => a === 255)).toBe(true);
+  });
+});
+
+describe('renderImageData in bands', () => {
+  /** 6 × 10 pixels of a ramp, so that every row and column differs. */
+  const ramp = { width: 6, height: 10, rgb: Float32Array.from({ length: 6 * 10 * 3 }, (_, i) => (i % 97) / 96) };
+
+  it('gives, band by band, exactly the rows of the whole image, dithering included', () => {
+    for (const dithering of [false, true]) {
+      const whole = renderImageData(ramp, dithering).data;
+      const bands = [renderImageData(ramp, dithering, 0, 4), renderImageData(ramp, dithering, 4, 8), renderImageData(ramp, dithering, 8, 10)];
+      expect(bands.map((band) => band.height)).toEqual([4, 4, 2]);
+      expect(bands.flatMap((band) => [...band.data])).toEqual([...whole]);
+    }
+  });
+
+  it('refuses a band that would shift the dither pattern or leave the image', () => {
+    expect(() => renderImageData(ramp, true, 2, 6)).toThrow(RangeError);
+    expect(() => renderImageData(ramp, true, 8, 12)).toThrow(RangeError);
+  });
+});

@@ -1,0 +1,39 @@
+import { describe, expect, it } from 'vitest';
+import { fitLayout, SIDE_BY_SIDE_GAP, zoomInStep, zoomOutStep } from '../../../../src/ui/lab/render-window/image-zoom.ts';
+
+const image = { width: 512, height: 384 };
+
+describe('fitLayout', () => {
+  it('fits one image by its tighter side', () => {
+    expect(fitLayout({ width: 1024, height: 384 }, image, 'traced')).toEqual({ scale: 1, direction: 'row' });
+    expect(fitLayout({ width: 256, height: 768 }, image, 'slider').scale).toBe(0.5);
+  });
+
+  it('enlarges a small image to fill the frame', () => {
+    expect(fitLayout({ width: 640, height: 480 }, { width: 32, height: 24 }, 'traced').scale).toBe(20);
+  });
+
+  it('puts two images in a row in a wide frame and in a column in a tall one', () => {
+    const wide = fitLayout({ width: 1024 + SIDE_BY_SIDE_GAP, height: 400 }, image, 'side-by-side');
+    expect(wide).toEqual({ scale: 1, direction: 'row' });
+    const tall = fitLayout({ width: 512, height: 768 + SIDE_BY_SIDE_GAP }, image, 'side-by-side');
+    expect(tall).toEqual({ scale: 1, direction: 'column' });
+  });
+});
+
+describe('zoom steps', () => {
+  it('steps from a fitted scale to the next whole step', () => {
+    expect(zoomInStep(0.73)).toBe(1);
+    expect(zoomOutStep(0.73)).toBe(0.5);
+  });
+
+  it('steps past a scale that is already a step', () => {
+    expect(zoomInStep(1)).toBe(2);
+    expect(zoomOutStep(2)).toBe(1);
+  });
+
+  it('stops at the ends', () => {
+    expect(zoomInStep(32)).toBeNull();
+    expect(zoomOutStep(1 / 8)).toBeNull();
+  });
+});

@@ -1,0 +1,38 @@
+import { describe, expect, it } from 'vitest';
+import { countRays, formatCount, formatDuration, progressText, raysPerSecond } from '../../../../src/ui/lab/render-window/render-figures.ts';
+
+describe('render figures', () => {
+  it('counts every kind of ray', () => {
+    expect(countRays({ primary: 196_608, shadow: 300_000, reflect: 20_000, refract: 5_000 })).toBe(521_608);
+  });
+
+  it('divides rays by seconds, never by zero', () => {
+    expect(raysPerSecond(3_000_000, 1500)).toBe(2_000_000);
+    expect(raysPerSecond(1000, 0)).toBe(1_000_000);
+  });
+
+  it('writes counts in words with three significant digits', () => {
+    expect(formatCount(950)).toBe('950');
+    expect(formatCount(12_345)).toBe('12.3 thousand');
+    expect(formatCount(4_561_000)).toBe('4.56 million');
+    expect(formatCount(1_230_000)).toBe('1.23 million');
+    expect(formatCount(2.1e9)).toBe('2.1 billion');
+  });
+
+  it('rounds before choosing the unit', () => {
+    expect(formatCount(999_960)).toBe('1 million');
+    expect(formatCount(999.7)).toBe('1 thousand');
+  });
+
+  it('writes durations in ms, seconds, or minutes and seconds', () => {
+    expect(formatDuration(849.6)).toBe('850 ms');
+    expect(formatDuration(1234)).toBe('1.23 s');
+    expect(formatDuration(125_400)).toBe('2 min 5 s');
+  });
+
+  it('says what the progress bar is doing', () => {
+    expect(progressText({ phase: 'preview', done: 3, total: 40 })).toBe('Quick preview…');
+    expect(progressText({ phase: 'full', done: 42, total: 100 })).toBe('Rendering 42 %');
+    expect(progressText({ phase: 'full', done: 199, total: 200 })).toBe('Rendering 99 %');
+  });
+});

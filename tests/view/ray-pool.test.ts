@@ -1,0 +1,287 @@
+import { describe, expect, it } from 'vitest';
+import { InstancedMesh, Matrix4, Raycaster, ShaderLib, Vector3, type InstancedBufferAttribute, type MeshBasicMaterial } from 'three';
+import { DEFAULT_RAY_VIEW, type RayViewOptions } from '../../src/lab-state/lab-state.ts';
+import { CONE_OPACITY, LOOP_PAUSE_S, RAY_CONES_NAME, RAY_CYLINDERS_NAME, RayPool } from '../../src/view/ray-pool.ts';
+import { ALPHA_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, patchRayShader } from '../../src/view/ray-shader.ts';
+import { hexToColor, rayPalette } from '../../src/view/ray-palette.ts';
+import { areaRay, ray, screen, syntheticScreen } from '../support/ray-fixtures.ts';
+
+const options = (changes: Partial<RayViewOptions> = {}): RayViewOptions => ({ ...DEFAULT_RAY_VIEW, ...changes });
+
+function meshes(pool: RayPool): InstancedMesh[] {
+  return pool.object.children.filter((child): child is InstancedMesh => child instanceof InstancedMesh);
+}
+
+function parts(pool: RayPool) {
+  const cylinders = pool.object.getObjectByName(RAY_CYLINDERS_NAME) as InstancedMesh;
+  const cones = pool.object.getObjectByName(RAY_CONES_NAME) as InstancedMesh;
+  const attribute = (mesh: InstancedMesh, name: string) => mesh.geometry.getAttribute(name) as InstancedBufferAttribute;
+  return { cylinders, cones, attribute };
+}
+
+function transform(mesh: InstancedMesh, index: number, point: [number, number, number]): number[] {
+  const matrix = new Matrix4();
+  mesh.getMatrixAt(index, matrix);
+  return new Vector3(...point).applyMatrix4(matrix).toArray();
+}
+
+function expectClose(actual: number[], expected: number[]): void {
+  expect(actual.length).toBe(expected.length);
+  actual.forEach((value, i) => expect(value).toBeCloseTo(expected[i], 5));
+}
+
+/** One pixel: a primary ray along −z from (0, 1, 5), 4 m, with a reflection up and an area-light cone. */
+const oneTree = () =>
+  screen(1, 1, () => [
+    ray('primary', {
+      origin: [0, 1, 5],
+      direction: [0, 0, -1],
+      length: 4,
+      children: [ray('reflect', { origin: [0, 1, 1], direction: [0, 1, 0], length: 2, contribution: 0.2 }), areaRay('area-light', { origin: [0, 0, 0], contribution: 0.3 })],
+    }),
+  ]);
+
+describe('RayPool instances', () => {
+  it('draws one cylinder instance per ray and one cone per merged area node', () => {
+    const pool = new RayPool();
+    pool.update(oneTree(), options(), null);
+    expect(pool.stats).toMatchObject({ rays: 2, cones: 1, drawCalls: 2 });
+    const { cylinders, cones } = parts(pool);
+    expect([cylinders.count, cones.count]).toEqual([2, 1]);
+    pool.update(oneTree(), options({ showRays: false }), null);
+    expect(pool.stats).toMatchObject({ rays: 0, cones: 0, drawCalls: 0 });
+    expect(meshes(pool).every((mesh) => !mesh.visible)).toBe(true);
+  });
+
+  it('maps the unit cylinder onto each ray: origin, end, and radius across', () => {
+    const pool = new RayPool();
+    pool.update(oneTree(), options({ radius: 0.02 }), null);
+    const { cylinders } = parts(pool);
+    expectClose(transform(cylinders, 0, [0, 0, 0]), [0, 1, 5]);
+    expectClose(transform(cylinders, 0, [0, 0, 1]), [0, 1, 1]);
+    const side = new Vector3(...transform(cylinders, 0, [1, 0, 0.5]));
+    expect(side.distanceTo(new Vector3(0, 1, 3))).toBeCloseTo(0.02, 6);
+    // The reflection is vertical: the other helper axis still gives a proper basis.
+    expectClose(transform(cylinders, 1, [0, 0, 1]), [0, 3, 1]);
+    const across = new Vector3(...transform(cylinders, 1, [0, 1, 0.5]));
+    expect(across.distanceTo(new Vector3(0, 2, 1))).toBeCloseTo(0.02, 6);
+  });
+
+  it('maps the unit pyramid onto each cone: apex at the hit point, base on the light corners', () => {
+    const pool = new RayPool();
+    pool.update(oneTree(), options(), null);
+    const { cones } = parts(pool);
+    expectClose(transform(cones, 0, [0, 0, 0]), [0, 0, 0]);
+    expectClose(transform(cones, 0, [-1, -1, 1]), [-1, 3, -0.5]);
+    expectClose(transform(cones, 0, [1, -1, 1]), [1, 3, -0.5]);
+    expectClose(transform(cones, 0, [1, 1, 1]), [1, 3, 0.5]);
+    expectClose(transform(cones, 0, [-1, 1, 1]), [-1, 3, 0.5]);
+  });
+
+  it('writes colour, alpha and growth per instance; cones at CONE_OPACITY of the rays', () => {
+    const pool = new RayPool();
+    pool.update(oneTree(), options({ transparency: 0.5, animate: true }), null);
+    const { cylinders, cones, attribute } = parts(pool);
+    const cyan = hexToColor(rayPalette('vrt').primary);
+    const yellow = hexToColor(rayPalette('vrt').light);
+    expectClose([...(cylinders.instanceColor?.array.slice(0, 3) ?? [])], cyan);
+    expectClose([...(cones.instanceColor?.array.slice(0, 3) ?? [])], yellow);
+    const alpha = 1 - 0.5 * 0.95;
+    expect(attribute(cylinders, ALPHA_ATTRIBUTE).getX(1)).toBeCloseTo(alpha, 6);
+    expect(attribute(cones, ALPHA_ATTRIBUTE).getX(0)).toBeCloseTo(alpha * CONE_OPACITY, 6);
+    // Growth: (start, length) in metres of travel.
+    expect([attribute(cylinders, GROWTH_ATTRIBUTE).getX(1), attribute(cylinders, GROWTH_ATTRIBUTE).getY(1)]).toEqual([4, 2]);
+    expect([attribute(cones, GROWTH_ATTRIBUTE).getX(0), attribute(cones, GROWTH_ATTRIBUTE).getY(0)]).toEqual([4, 3]);
+    // Only the instances in use are uploaded.
+    expect(cylinders.instanceMatrix.updateRanges).toEqual([{ start: 0, count: 2 * 16 }]);
+  });
+
+  it('lets opaque rays write depth and see-through ones not, without compiling a new program', () => {
+    const pool = new RayPool();
+    const material = () => parts(pool).cylinders.material as MeshBasicMaterial;
+    pool.update(oneTree(), options(), null);
+    const version = material().version;
+    expect([material().transparent, material().depthWrite]).toEqual([true, true]);
+    pool.update(oneTree(), options({ transparency: 0.2 }), null);
+    expect([material().transparent, material().depthWrite]).toEqual([true, false]);
+    pool.update(oneTree(), options(), null);
+    expect(material().depthWrite).toBe(true);
+    expect(material().version).toBe(version);
+  });
+
+  it('keeps the draw calls at 2 for 1k, 10k and 50k rays', () => {
+    const pool = new RayPool();
+    const calls = [1_000, 10_000, 50_000].map((total) => {
+      const rays = syntheticScreen(total);
+      pool.update(rays, options(), null);
+      return { rays: pool.stats.rays, meshes: meshes(pool).length, drawCalls: meshes(pool).filter((m) => m.visible && m.count > 0).length };
+    });
+    expect(calls.map((c) => c.rays)).toEqual([1_000, 10_000, 50_000]);
+    expect(calls.every((c) => c.meshes === 2 && c.drawCalls === 1)).toBe(true);
+  });
+
+  it('pools its buffers: grows by doubling, never shrinks, and frees the outgrown mesh', () => {
+    const pool = new RayPool();
+    pool.update(syntheticScreen(1_000), options(), null);
+    const small = parts(pool).cylinders;
+    let disposed = false;
+    small.addEventListener('dispose', () => (disposed = true));
+    expect(small.instanceMatrix.count).toBe(1024);
+    pool.update(syntheticScreen(3_000), options(), null);
+    expect(parts(pool).cylinders.instanceMatrix.count).toBe(4096);
+    expect(disposed).toBe(true);
+    const big = parts(pool).cylinders;
+    pool.update(syntheticScreen(500), options(), null);
+    expect(parts(pool).cylinders).toBe(big);
+    expect(big.instanceMatrix.count).toBe(4096);
+    expect(big.count).toBe(500);
+    expect(pool.stats.instanceBytes).toBe((4096 + 256) * 22 * 4);
+  });
+
+  it('rebuilds 10k rays quickly (the goal is checked by the benchmark; logged here)', () => {
+    const pool = new RayPool();
+    const rays = syntheticScreen(10_000);
+    pool.update(rays, options(), null);
+    const times: number[] = [];
+    for (let i = 0; i < 15; i++) {
+      const started = performance.now();
+      pool.update(rays, options({ transparency: (i % 2) * 0.3 }), null);
+      times.push(performance.now() - started);
+    }
+    times.sort((a, b) => a - b);
+    console.log(`RayPool rebuild of 10k rays: median ${times[7].toFixed(2)} ms`);
+    expect(pool.stats.rays).toBe(10_000);
+  });
+});
+
+describe('RayPool growth animation', () => {
+  const travel = (pool: RayPool) => {
+    const uniforms: Record<string, { value: number }> = {};
+    const shader = { vertexShader: ShaderLib.basic.vertexShader, fragmentShader: ShaderLib.basic.fragmentShader, uniforms };
+    (parts(pool).cylinders.material as MeshBasicMaterial).onBeforeCompile(shader as never, null as never);
+    return uniforms.uTravel;
+  };
+
+  it('does no per-frame work when not animating: everything fully grown, tick says no more frames', () => {
+    const pool = new RayPool();
+    pool.update(oneTree(), options(), null);
+    expect(pool.tick(1000)).toBe(false);
+    expect(travel(pool).value).toBe(FULLY_GROWN);
+  });
+
+  it('grows at the animation speed from the first tick and stops asking for frames when done', () => {
+    const pool = new RayPool();
+    pool.update(oneTree(), options({ animate: true, animationSpeed: 2 }), null);
+    expect(travel(pool).value).toBe(0);
+    expect(pool.tick(5000)).toBe(true);
+    expect(pool.tick(6000)).toBe(true);
+    expect(travel(pool).value).toBeCloseTo(2, 9);
+    // The tree ends at 4 + 3 m (the cone): 3.5 s at 2 m/s.
+    expect(pool.tick(8400)).toBe(true);
+    expect(pool.tick(8500)).toBe(false);
+    expect(travel(pool).value).toBeCloseTo(7, 9);
+  });
+
+  it('loops with a pause, and keeps the rays where they were when only the speed changes', () => {
+    const pool = new RayPool();
+    const rays = oneTree();
+    pool.update(rays, options({ animate: true, animationSpeed: 1, loop: true }), null);
+    pool.tick(0);
+    expect(pool.tick(7000 + LOOP_PAUSE_S * 1000 + 500)).toBe(true);
+    expect(travel(pool).value).toBeCloseTo(0.5, 9);
+    pool.update(rays, options({ animate: true, animationSpeed: 4, loop: true }), null);
+    pool.tick(20_000);
+    expect(travel(pool).value).toBeCloseTo(0.5, 9);
+    pool.tick(20_500);
+    expect(travel(pool).value).toBeCloseTo(2.5, 9);
+  });
+
+  it('restarts when new rays arrive or another pixel is selected', () => {
+    const pool = new RayPool();
+    const rays = oneTree();
+    pool.update(rays, options({ animate: true }), null);
+    pool.tick(0);
+    pool.tick(1000);
+    expect(travel(pool).value).toBeGreaterThan(0);
+    pool.update(rays, options({ animate: true }), [0, 0]);
+    expect(travel(pool).value).toBe(0);
+    pool.tick(3000);
+    expect(travel(pool).value).toBe(0);
+  });
+
+  it('patches three.js\'s basic shader with the growth and alpha attributes, failing loudly if its chunks change', () => {
+    const shader = { vertexShader: ShaderLib.basic.vertexShader, fragmentShader: ShaderLib.basic.fragmentShader, uniforms: {} };
+    const uniform = { value: 3 };
+    patchRayShader(shader, uniform);
+    expect(shader.vertexShader).toContain(`attribute vec2 ${GROWTH_ATTRIBUTE}`);
+    expect(shader.vertexShader).toMatch(/transformed\.z \*= rayGrown/);
+    expect(shader.fragmentShader).toContain('diffuseColor.a *= vRayAlpha');
+    expect(shader.uniforms).toEqual({ uTravel: uniform });
+    expect(() => patchRayShader({ vertexShader: 'void main() {}', fragmentShader: '', uniforms: {} }, uniform)).toThrow(/begin_vertex|common/);
+  });
+});
+
+describe('RayPool.pick', () => {
+  const pointer = (origin: [number, number, number], direction: [number, number, number]) =>
+    new Raycaster(new Vector3(...origin), new Vector3(...direction).normalize());
+
+  it('finds the ray under the pointer with its type, contribution, colour and pixel', () => {
+    const rays = screen(2, 1, (x) => [ray('primary', { origin: [x * 10, 1, 5], direction: [0, 0, -1], length: 4, contribution: 0.5, color: [0.1, 0.2, 0.3] })]);
+    const pool = new RayPool();
+    pool.update(rays, options(), null);
+    const hover = pool.pick(pointer([10, 5, 3], [0, -1, 0]));
+    expect(hover).toMatchObject({ type: 'primary', contribution: 0.5, color: [0.1, 0.2, 0.3], pixel: [1, 0] });
+    expect(hover?.node).toBe(rays.traces[1].rays[0]);
+    expect(pool.pick(pointer([5, 5, 3], [0, -1, 0]))).toBeNull();
+    // Past the ray's end (z < 1) there is nothing.
+    expect(pool.pick(pointer([10, 5, 0.5], [0, -1, 0]))).toBeNull();
+  });
+
+  it('picks the nearest of two rays on the pointer\'s line, and never a hidden one', () => {
+    const rays = screen(1, 1, () => [
+      ray('primary', {
+        origin: [-2, 1, 0],
+        direction: [1, 0, 0],
+        length: 4,
+        children: [ray('reflect', { origin: [-2, 3, 0], direction: [1, 0, 0], length: 4, contribution: 0.001 })],
+      }),
+    ]);
+    const pool = new RayPool();
+    pool.update(rays, options(), null);
+    expect(pool.pick(pointer([0, 10, 0], [0, -1, 0]))?.type).toBe('reflect');
+    pool.update(rays, options({ hideNegligible: true }), null);
+    expect(pool.pick(pointer([0, 10, 0], [0, -1, 0]))?.type).toBe('primary');
+  });
+
+  it('only picks what has grown so far', () => {
+    const rays = screen(1, 1, () => [ray('primary', { origin: [0, 0, 0], direction: [1, 0, 0], length: 10 })]);
+    const pool = new RayPool();
+    pool.update(rays, options({ animate: true, animationSpeed: 1 }), null);
+    pool.tick(0);
+    pool.tick(3000);
+    expect(pool.pick(pointer([2, 5, 0], [0, -1, 0]))).not.toBeNull();
+    expect(pool.pick(pointer([5, 5, 0], [0, -1, 0]))).toBeNull();
+  });
+
+  it('picks a cone anywhere inside it', () => {
+    const rays = screen(1, 1, () => [ray('primary', { hit: true, length: 1, children: [areaRay('area-shadow', { contribution: 0 })] })]);
+    const pool = new RayPool();
+    pool.update(rays, options(), null);
+    // Halfway up the cone (y = 1.5) its half-width is 0.5: x = 0.4 is inside, 0.8 outside.
+    expect(pool.pick(pointer([0.4, 1.5, 10], [0, 0, -1]))?.type).toBe('area-shadow');
+    expect(pool.pick(pointer([0.8, 1.5, 10], [0, 0, -1]))).toBeNull();
+  });
+
+  it('frees its GPU resources on dispose', () => {
+    const pool = new RayPool();
+    pool.update(oneTree(), options(), null);
+    const events: string[] = [];
+    for (const mesh of meshes(pool)) {
+      mesh.geometry.addEventListener('dispose', () => events.push('geometry'));
+      (mesh.material as MeshBasicMaterial).addEventListener('dispose', () => events.push('material'));
+    }
+    pool.dispose();
+    expect(events.sort()).toEqual(['geometry', 'geometry', 'material', 'material']);
+    expect(pool.object.children).toEqual([]);
+  });
+});

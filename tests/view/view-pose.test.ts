@@ -1,0 +1,83 @@
+import { PerspectiveCamera, Vector3 } from 'three';
+import { describe, expect, it } from 'vitest';
+import type { Vec3 } from '../../src/scene/scene.ts';
+import { easeInOutCubic, framingPose, gestureActions, interpolatePose, type ViewPose } from '../../src/view/view-pose.ts';
+
+function pose(position: Vec3, target: Vec3, fov = 45): ViewPose {
+  return { position: new Vector3(...position), target: new Vector3(...target), fov };
+}
+
+const start = pose([0, 2, 8], [0, 0.5, 0]);
+
+describe('what a gesture did to the view', () => {
+  it('is an orbit when the eye turned around an unmoved target at the same distance', () => {
+    const turned = start.position.clone().applyAxisAngle(new Vector3(0, 1, 0), 0.3);
+    expect(gestureActions(start, pose(turned.toArray(), [0, 0.5, 0]))).toEqual([{ type: 'view.orbited' }]);
+  });
+
+  it('is a pan when eye and target slid together', () => {
+    expect(gestureActions(start, pose([1, 2.5, 8], [1, 1, 0]))).toEqual([{ type: 'view.panned' }]);
+  });
+
+  it('is a zoom when only the distance to the target changed', () => {
+    expect(gestureActions(start, pose([0, 1.25, 4], [0, 0.5, 0]))).toEqual([{ type: 'view.zoomed' }]);
+  });
+
+  it('can be a pan and a zoom at once (two fingers)', () => {
+    expect(gestureActions(start, pose([1, 1.25, 4], [1, 0.5, 0]))).toEqual([{ type: 'view.panned' }, { type: 'view.zoomed' }]);
+  });
+
+  it('is nothing for a click that wobbled by float noise', () => {
+    expect(gestureActions(start, pose([1e-7, 2, 8 + 1e-7], [0, 0.5, 0]))).toEqual([]);
+  });
+
+  it('counts an orbit across the ±180° seam as small, not as a whole turn', () => {
+    const a = pose([-0.01, 0, -5], [0, 0, 0]);
+    const b = pose([0.01, 0, -5], [0, 0, 0]);
+    expect(gestureActions(a, b)).toEqual([{ type: 'view.orbited' }]);
+    expect(gestureActions(a, a)).toEqual([]);
+  });
+});
+
+describe('the camera flight', () => {
+  it('eases in and out: starts and ends still, halfway at half time, never overshoots', () => {
+    expect(easeInOutCubic(0)).toBe(0);
+    expect(easeInOutCubic(1)).toBe(1);
+    expect(easeInOutCubic(0.5)).toBeCloseTo(0.5, 12);
+    expect(easeInOutCubic(0.05)).toBeLessThan(0.05);
+    expect(easeInOutCubic(0.95)).toBeGreaterThan(0.95);
+    expect(easeInOutCubic(1.7)).toBe(1);
+    expect(easeInOutCubic(-1)).toBe(0);
+  });
+
+  it('moves eye, target and field of view together', () => {
+    const to = pose([4, 4, 4], [1, 1, 1], 65);
+    const mid = interpolatePose(start, to, 0.5, pose([0, 0, 0], [0, 0, 0]));
+    expect(mid.position.toArray()).toEqual([2, 3, 6]);
+    expect(mid.target.toArray()).toEqual([0.5, 0.75, 0.5]);
+    expect(mid.fov).toBe(55);
+  });
+});
+
+describe('the first view of a scene', () => {
+  it('looks at the middle of the objects and camera, from the front left and above, with every point in view', () => {
+    const objects: Vec3[] = [[-1.5, 0.5, 0.3], [1, 0.5, 1.2], [-0.8, 0.35, -2.4], [0, 1, 5]];
+    const lights: Vec3[] = [[2, 4, 3], [-1.5, 3, 0.3]];
+    for (const aspect of [16 / 9, 1, 0.6]) {
+      const framed = framingPose(objects, [...objects, ...lights], 45, aspect);
+      expect(framed.target.toArray().map((v) => Number(v.toFixed(3)))).toEqual([-0.25, 0.675, 1.3]);
+      expect(framed.position.x).toBeLessThan(framed.target.x);
+      expect(framed.position.y).toBeGreaterThan(framed.target.y);
+      expect(framed.position.z).toBeGreaterThan(framed.target.z);
+      const camera = new PerspectiveCamera(45, aspect, 0.05, 500);
+      camera.position.copy(framed.position);
+      camera.lookAt(framed.target);
+      camera.updateMatrixWorld();
+      for (const point of [...objects, ...lights]) {
+        const ndc = new Vector3(...point).project(camera);
+        expect(Math.abs(ndc.x)).toBeLessThan(1);
+        expect(Math.abs(ndc.y)).toBeLessThan(1);
+      }
+    }
+  });
+});

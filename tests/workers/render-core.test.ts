@@ -1,0 +1,101 @@
+import { describe, expect, it } from 'vitest';
+import { createRenderHandler } from '../../workers/render-core.ts';
+import type { RenderRequest, RenderResponse } from '../../workers/protocol.ts';
+import { defaultScene } from '../../src/scene/scene-defaults.ts';
+import { sceneFrom } from '../support/test-scene.ts';
+
+const scene = defaultScene();
+const load = (sceneId: number, file = scene): RenderRequest => ({ type: 'load-scene', sceneId, scene: file, meshes: new Map() });
+const tile = (jobId: number, tileId: number): RenderRequest => ({
+  type: 'render-tile',
+  jobId,
+  tileId,
+  tile: { x: tileId * 4, y: 0, width: 4, height: 2 },
+  options: { imageWidth: 64, imageHeight: 48, seed: 0 },
+});
+
+/** The worker core with its responses collected; `settle(n)` waits for n responses and any stragglers. */
+function worker() {
+  const responses: RenderResponse[] = [];
+  const transfers: ArrayBuffer[][] = [];
+  const handle = createRenderHandler((response, transfer) => {
+    responses.push(response);
+    transfers.push(transfer);
+  });
+  const settle = async (count: number) => {
+    while (responses.length < count) await new Promise((resolve) => setImmediate(resolve));
+    await new Promise((resolve) => setTimeout(resolve, 10));
+  };
+  return { handle, responses, transfers, settle };
+}
+
+describe('the render worker core', () => {
+  it('builds the scene, then renders queued tiles in order and transfers their pixels', async () => {
+    const { handle, responses, transfers, settle } = worker();
+    handle(load(1));
+    handle(tile(5, 0));
+    handle(tile(5, 1));
+    await settle(3);
+
+    expect(responses.map((r) => r.type)).toEqual(['scene-ready', 'tile-done', 'tile-done']);
+    const done = responses.filter((r) => r.type === 'tile-done');
+    expect(done.map((r) => [r.jobId, r.tileId, r.rgb.length])).toEqual([[5, 0, 24], [5, 1, 24]]);
+    expect(transfers[1]).toEqual([done[0].rgb.buffer]);
+  });
+
+  it('drops the queued tiles of a cancelled job', async () => {
+    const { handle, responses, settle } = worker();
+    handle(load(1));
+    handle(tile(5, 0));
+    handle(tile(5, 1));
+    handle({ type: 'cancel', jobId: 5 });
+    handle(tile(6, 0));
+    await settle(2);
+
+    expect(responses.filter((r) => r.type === 'tile-done').map((r) => r.jobId)).toEqual([6]);
+  });
+
+  it('answers a pixel trace before the tiles queued ahead of it', async () => {
+    const { handle, responses, settle } = worker();
+    handle(load(1));
+    handle(tile(5, 0));
+    handle({ type: 'trace-pixel', requestId: 9, x: 4, y: 3, seed: 0 });
+    await settle(3);
+
+    expect(responses.map((r) => r.type)).toEqual(['scene-ready', 'pixel-traced', 'tile-done']);
+  });
+
+  it('renders a queued tile with the scene that was current when it arrived', async () => {
+    const { handle, responses, settle } = worker();
+    const dark = sceneFrom({ ...scene, settings: { ...scene.settings, background: [0, 0, 0] } });
+    handle(load(1));
+    handle(tile(5, 0));
+    handle(load(2, dark));
+    handle(tile(6, 0));
+    await settle(3);
+
+    const [first, second] = responses.filter((r) => r.type === 'tile-done');
+    expect([...first.rgb.slice(0, 3)]).toEqual(scene.settings.background.map(Math.fround));
+    expect([...second.rgb.slice(0, 3)]).toEqual([0, 0, 0]);
+  });
+
+  it('turns every failure into an error response and keeps working', async () => {
+    const { handle, responses, settle } = worker();
+    handle(tile(1, 0));
+    handle(load(2, sceneFrom({ objects: [{ id: 'gem', shape: 'mesh', mesh: 'prism' }] })));
+    handle({ type: 'trace-pixel', requestId: 3, x: 0, y: 0, seed: 0 });
+    handle(tile(4, 0));
+    handle(load(5));
+    handle(tile(6, 0));
+    await settle(6);
+
+    expect(responses).toEqual([
+      { type: 'error', failed: { type: 'load-scene', sceneId: 2 }, message: expect.stringMatching(/"prism" was not loaded/) },
+      { type: 'error', failed: { type: 'trace-pixel', requestId: 3 }, message: expect.stringMatching(/"prism" was not loaded/) },
+      { type: 'scene-ready', sceneId: 5, ms: expect.any(Number) },
+      { type: 'error', failed: { type: 'render-tile', jobId: 1, tileId: 0 }, message: 'no scene has been loaded' },
+      { type: 'error', failed: { type: 'render-tile', jobId: 4, tileId: 0 }, message: expect.stringMatching(/"prism" was not loaded/) },
+      expect.objectContaining({ type: 'tile-done', jobId: 6 }),
+    ]);
+  });
+});
