@@ -13,6 +13,7 @@ export type StoreListener = (state: LabState, action: LabAction, error?: string)
 export class Store {
   private current: LabState;
   private readonly listeners = new Set<StoreListener>();
+  private revision = 0;
 
   constructor(initial: LabState) {
     this.current = initial;
@@ -22,9 +23,18 @@ export class Store {
     return this.current;
   }
 
+  /**
+   * Counts the scene changes the store has accepted: equal numbers mean the same scene, so a
+   * render can tell it is stale without comparing scenes (a change back still counts).
+   */
+  get sceneRevision(): number {
+    return this.revision;
+  }
+
   /** Applies the action; returns the reason when it was refused (the state is then unchanged). */
   dispatch(action: LabAction): string | undefined {
     const { state, error } = safeReduce(this.current, action);
+    if (state.scene !== this.current.scene) this.revision++;
     this.current = state;
     for (const listener of [...this.listeners]) listener(state, action, error);
     return error;

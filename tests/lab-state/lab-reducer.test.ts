@@ -15,6 +15,19 @@ describe('the store and its named actions', () => {
     expect(seen).toEqual(['material.changed']);
   });
 
+  it('counts accepted scene changes, not refused ones or view-only ones', () => {
+    const store = newStore();
+    expect(store.sceneRevision).toBe(0);
+    store.dispatch({ type: 'material.changed', id: 'red-ball', changes: { color: [0, 1, 0] } });
+    expect(store.sceneRevision).toBe(1);
+    store.dispatch({ type: 'settings.changed', changes: { supersampling: 40 } });
+    store.dispatch({ type: 'selection.changed', selection: { kind: 'camera' } });
+    expect(store.sceneRevision).toBe(1);
+    // A change back is still a change: the scene on show was made from another revision.
+    store.dispatch({ type: 'material.changed', id: 'red-ball', changes: { color: [1, 0, 0] } });
+    expect(store.sceneRevision).toBe(2);
+  });
+
   it('refuses an out-of-range value with the schema message and loses nothing', () => {
     const store = newStore();
     const before = store.state;
