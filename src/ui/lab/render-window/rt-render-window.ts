@@ -1,41 +1,24 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
+import { html, LitElement, nothing, type PropertyValues } from 'lit';
 import { createRef, ref } from 'lit/directives/ref.js';
 import { renderImageData } from '../../../render/image-data.ts';
-import { loadMeshes } from '../../../render/load-meshes-browser.ts';
-import type { RenderImage, RenderJob, RenderProgress } from '../../../render/render-job.ts';
 import type { RenderPool } from '../../../render/render-pool.ts';
-import { pngFileName, savePng } from './save-png.ts';
 import type { LabState } from '../../../lab-state/lab-state.ts';
 import type { Store } from '../../../lab-state/store.ts';
-import { meshNamesInScene } from '../../../scene/mesh-names.ts';
 import type { Scene } from '../../../scene/scene.ts';
+import { GuideHostController } from '../guide-host.ts';
+import { consumeStore } from '../store-context.ts';
 import { BandPainter } from './band-painter.ts';
-import { countRays, formatCount, formatDuration, progressText, raysPerSecond } from './render-figures.ts';
+import { errorMessage, RenderJobController, type ShownRender } from './render-job-controller.ts';
+import { formatCount, formatDuration, progressText, raysPerSecond } from './render-figures.ts';
+import { renderWindowLayout } from './render-window-layout.css.ts';
 import { controlStyles } from './render-window-styles.ts';
+import { pngFileName, savePng } from './save-png.ts';
 import type { RtImageCompare } from './rt-image-compare.ts';
 import './rt-image-compare.ts';
 
 /** The scene view's raster (three.js) picture from the ray tracer's camera, at this size. */
 export type RasterSnapshot = (width: number, height: number) => ImageData;
-
-type RenderStatus =
-  | { kind: 'idle' }
-  /** Models loading and the job starting, before the first progress. */
-  | { kind: 'starting' }
-  | ({ kind: 'rendering' } & RenderProgress)
-  | { kind: 'finished'; ms: number; rays: number; workers: number }
-  /** byUser: the Cancel button; otherwise the pool dropped the job (a new scene or render). */
-  | { kind: 'cancelled'; byUser: boolean }
-  | { kind: 'failed'; message: string };
-
-/** The render on show: what was rendered, to tell when the scene has changed since. */
-interface ShownRender {
-  scene: Scene;
-  json: string;
-  width: number;
-  height: number;
-}
 
 /**
  * @summary The render window: the full image ray traced by the worker pool, with a progressive
@@ -46,7 +29,7 @@ interface ShownRender {
  * after it, the window says so and offers to render again.
  *
  * Properties:
- * - `store` (Store): the lab state; renders `state.scene` at `settings.imageSize` and
+ * - `store` (Store, from the lab's context unless set): the lab state; renders `state.scene` at `settings.imageSize` and
  *   dispatches render.started, render.finished {ms}, render.cancelled and render.saved.
  * - `pool` (RenderPool): the app's worker pool (not disposed by this element).
  * - `rasterSnapshot` (RasterSnapshot, optional): the raster picture, taken when a render
@@ -54,6 +37,9 @@ interface ShownRender {
  * - `open` (boolean, reflected): shown when set; opening focuses the Render button.
  *
  * Methods: `startRender()`, `cancelRender()`.
+ *
+ * Guide ids (lab-controls.ts): render.start, render.cancel, render.save, render.close, and
+ * render.zoom / render.compare on the image.
  *
  * Keys: Enter (not on a control) renders, Escape closes, + − 0 zoom in, out, to fit.
  *
@@ -66,110 +52,17 @@ export class RtRenderWindow extends LitElement {
     pool: { attribute: false },
     rasterSnapshot: { attribute: false },
     open: { type: Boolean, reflect: true },
-    status: { state: true },
-    shown: { state: true },
     sceneChanged: { state: true },
     rasterNote: { state: true },
     saveError: { state: true },
   };
 
-  static override styles = [
-    controlStyles,
-    css`
-      :host {
-        display: none;
-        flex-direction: column;
-        gap: 10px;
-        box-sizing: border-box;
-        min-height: 0;
-        padding: 12px 16px;
-        background: var(--rt-surface);
-        color: var(--rt-text);
-        font-family: var(--rt-font);
-        border: 1px solid var(--rt-border);
-        border-radius: var(--rt-radius);
-        box-shadow: 0 12px 40px rgb(0 0 0 / 0.28);
-      }
-      :host([open]) {
-        display: flex;
-      }
-      :host(:focus) {
-        outline: none;
-      }
-      header,
-      .actions,
-      footer {
-        display: flex;
-        flex-wrap: wrap;
-        align-items: center;
-        gap: 8px 12px;
-      }
-      h2 {
-        margin: 0;
-        font-size: 1.15rem;
-      }
-      .size {
-        flex: 1;
-        color: var(--rt-muted);
-        font-variant-numeric: tabular-nums;
-      }
-      .progress {
-        flex: 1 1 240px;
-        display: flex;
-        align-items: center;
-        gap: 8px;
-      }
-      progress {
-        flex: 1;
-        min-width: 80px;
-        height: 10px;
-        accent-color: var(--rt-accent);
-      }
-      .phase {
-        min-width: 8.5em;
-        font-variant-numeric: tabular-nums;
-      }
-      rt-image-compare,
-      .placeholder {
-        flex: 1;
-        min-height: 0;
-      }
-      .placeholder {
-        display: grid;
-        place-items: center;
-        padding: 16px;
-        border-radius: 8px;
-        background: color-mix(in srgb, var(--rt-text) 8%, var(--rt-bg));
-        color: var(--rt-muted);
-        text-align: center;
-      }
-      footer {
-        min-height: 32px;
-      }
-      footer p {
-        margin: 0;
-      }
-      .error {
-        color: var(--rt-danger);
-      }
-      .stale {
-        display: inline-flex;
-        align-items: center;
-        gap: 8px;
-        padding: 2px 4px 2px 10px;
-        border-radius: 8px;
-        border: 1px solid color-mix(in srgb, #e8a317 60%, var(--rt-border));
-        background: color-mix(in srgb, #e8a317 16%, var(--rt-surface));
-      }
-    `,
-  ];
+  static override styles = [controlStyles, renderWindowLayout];
 
   declare store: Store | undefined;
   declare pool: RenderPool | undefined;
   declare rasterSnapshot: RasterSnapshot | undefined;
   declare open: boolean;
-  declare status: RenderStatus;
-  declare shown: ShownRender | null;
   declare sceneChanged: boolean;
   /** Why the render on show has no raster picture to compare with ('' when it has one). */
   declare rasterNote: string;
@@ -181,26 +74,25 @@ export class RtRenderWindow extends LitElement {
   private readonly tracedCanvas = createRef<HTMLCanvasElement>();
   private readonly rasterCanvas = createRef<HTMLCanvasElement>();
 
-  /** Each render's number; a late answer from an older one is ignored. */
-  private renderId = 0;
-  private job: RenderJob | null = null;
-  /** The finished image, for Save as PNG. */
-  private finished: RenderImage | null = null;
   private readonly painter = new BandPainter(() => this.tracedCanvas.value);
+  private readonly jobs = new RenderJobController(this, {
+    paint: (image, dithering) => this.painter.paint(image, dithering),
+    started: (shown, isCurrent) => this.prepareStage(shown, isCurrent),
+  });
   private unsubscribe: (() => void) | null = null;
   private seenScene: Scene | null = null;
-  /** Focus was on Cancel when the render ended: move it to Render rather than lose it. */
-  private refocusRender = false;
+  /** Whether the last render was running, to move focus from Cancel to Render when it ends. */
+  private wasRunning = false;
 
   constructor() {
     super();
     this.open = false;
-    this.status = { kind: 'idle' };
-    this.shown = null;
     this.sceneChanged = false;
     this.rasterNote = '';
     this.saveError = '';
     this.addEventListener('keydown', (event) => this.onKeyDown(event));
+    consumeStore(this, (store) => (this.store = store));
+    new GuideHostController(this);
   }
 
   override connectedCallback(): void {
@@ -214,7 +106,6 @@ export class RtRenderWindow extends LitElement {
     super.disconnectedCallback();
     this.unsubscribe?.();
     this.unsubscribe = null;
-    if (this.running) this.stopJob();
     this.painter.stop();
   }
 
@@ -223,84 +114,30 @@ export class RtRenderWindow extends LitElement {
   }
 
   override updated(changed: PropertyValues<this>): void {
-    if ((changed.has('open') && this.open) || this.refocusRender) {
-      this.refocusRender = false;
-      this.renderButton.value?.focus();
-    }
+    // Focus was on Cancel when the render ended: move it to Render rather than lose it.
+    const ended = this.wasRunning && !this.jobs.running && this.shadowRoot?.activeElement === this.cancelButton.value;
+    this.wasRunning = this.jobs.running;
+    if ((changed.has('open') && this.open) || ended) this.renderButton.value?.focus();
   }
 
   /** Renders the store's scene at its image size, replacing the image on show. */
   async startRender(): Promise<void> {
-    const { store, pool } = this;
-    if (!store || !pool) return;
-    if (this.running) this.stopJob();
-    const id = ++this.renderId;
-    const scene = store.state.scene;
-    const [width, height] = scene.settings.imageSize;
-    this.shown = { scene, json: JSON.stringify(scene), width, height };
+    if (!this.store || !this.pool) return;
     this.sceneChanged = false;
-    this.finished = null;
     this.saveError = '';
-    this.status = { kind: 'starting' };
-    store.dispatch({ type: 'render.started' });
-    const raster = this.takeRasterSnapshot(width, height);
-    await this.updateComplete; // the canvases exist from here on
-    if (raster) void this.paintRaster(raster, id);
-    const { dithering } = scene.settings;
-    try {
-      const meshes = await loadMeshes(meshNamesInScene(scene));
-      if (id !== this.renderId) return;
-      const job = pool.render(scene, meshes, {
-        onPreview: (image) => {
-          if (id === this.renderId) this.painter.paint(image, dithering);
-        },
-        onProgress: (progress) => {
-          if (id !== this.renderId) return;
-          this.status = { kind: 'rendering', ...progress };
-          this.painter.paint(job.image, dithering);
-        },
-      });
-      this.job = job;
-      const result = await job.done;
-      if (id !== this.renderId) return;
-      this.endJob();
-      if (result.cancelled) {
-        this.status = { kind: 'cancelled', byUser: false };
-        return;
-      }
-      this.finished = result;
-      this.painter.paint(result, dithering);
-      this.status = { kind: 'finished', ms: result.ms, rays: countRays(result.stats), workers: result.workers };
-      store.dispatch({ type: 'render.finished', ms: result.ms });
-    } catch (error) {
-      if (id !== this.renderId) return;
-      this.endJob();
-      this.status = { kind: 'failed', message: errorMessage(error) };
-    }
+    await this.jobs.start(this.store, this.pool);
   }
 
   /** Stops the running render (its partial image stays on show). */
   cancelRender(): void {
-    if (!this.running) return;
-    this.stopJob();
-    this.status = { kind: 'cancelled', byUser: true };
-    this.store?.dispatch({ type: 'render.cancelled' });
+    this.jobs.cancel(this.store);
   }
 
-  private get running(): boolean {
-    return this.status.kind === 'starting' || this.status.kind === 'rendering';
-  }
-
-  /** Drops the current render: its late answers are ignored from now on. */
-  private stopJob(): void {
-    this.renderId++;
-    this.job?.cancel();
-    this.endJob();
-  }
-
-  private endJob(): void {
-    this.job = null;
-    this.refocusRender = this.shadowRoot?.activeElement === this.cancelButton.value;
+  /** A render starts: the raster picture is taken now (same camera, same moment) and drawn once the canvases exist. */
+  private async prepareStage({ width, height }: ShownRender, isCurrent: () => boolean): Promise<void> {
+    const raster = this.takeRasterSnapshot(width, height);
+    await this.updateComplete; // the canvases exist from here on
+    if (raster) void this.paintRaster(raster, isCurrent);
   }
 
   private takeRasterSnapshot(width: number, height: number): ImageData | null {
@@ -322,17 +159,17 @@ export class RtRenderWindow extends LitElement {
    * which the browser makes off the main thread: putImageData of a 2048 × 1536 picture
    * blocked it for 50 ms.
    */
-  private async paintRaster(pixels: ImageData, id: number): Promise<void> {
+  private async paintRaster(pixels: ImageData, isCurrent: () => boolean): Promise<void> {
     let bitmap: ImageBitmap;
     try {
       bitmap = await createImageBitmap(pixels);
     } catch (error) {
-      if (id === this.renderId) this.rasterNote = msg(str`The raster view could not be shown (${errorMessage(error)}).`);
+      if (isCurrent()) this.rasterNote = msg(str`The raster view could not be shown (${errorMessage(error)}).`);
       return;
     }
     const canvas = this.rasterCanvas.value;
     const context = canvas?.getContext('2d');
-    if (id === this.renderId && canvas && context) {
+    if (isCurrent() && canvas && context) {
       canvas.width = bitmap.width;
       canvas.height = bitmap.height;
       context.drawImage(bitmap, 0, 0);
@@ -341,7 +178,7 @@ export class RtRenderWindow extends LitElement {
   }
 
   private async save(): Promise<void> {
-    const { finished, shown } = this;
+    const { finished, shown } = this.jobs;
     if (!finished || !shown) return;
     this.saveError = '';
     try {
@@ -362,9 +199,7 @@ export class RtRenderWindow extends LitElement {
   private onState({ scene }: LabState): void {
     if (scene === this.seenScene) return;
     this.seenScene = scene;
-    // By content, not identity: every edit makes a new scene object, even one that changes a
-    // value back. Scenes are a few kB of JSON, and this runs once per scene change.
-    this.sceneChanged = this.shown !== null && JSON.stringify(scene) !== this.shown.json;
+    this.sceneChanged = this.jobs.isStale(this.store);
     this.requestUpdate(); // the header shows the size the next render will have
   }
 
@@ -398,19 +233,19 @@ export class RtRenderWindow extends LitElement {
         <span class="size" title=${msg('The size of the image the next render makes (set in the ray tracer panel)')}>
           ${msg(str`${width} × ${height} pixels`)}
         </span>
-        <button @click=${this.requestClose} aria-label=${msg('Close the render window')} title=${msg('Close the render window (Esc)')}>✕</button>
+        <button data-guide="render.close" @click=${this.requestClose} aria-label=${msg('Close the render window')} title=${msg('Close the render window (Esc)')}>✕</button>
       </header>
       <div class="actions">
-        <button class="primary" ${ref(this.renderButton)} @click=${() => void this.startRender()} title=${msg('Ray trace the whole image with all workers (Enter)')}>
+        <button class="primary" data-guide="render.start" ${ref(this.renderButton)} @click=${() => void this.startRender()} title=${msg('Ray trace the whole image with all workers (Enter)')}>
           ${msg('Render')}
         </button>
-        <button ${ref(this.cancelButton)} @click=${this.cancelRender} ?disabled=${!this.running} title=${msg('Stop the render')}>${msg('Cancel')}</button>
+        <button data-guide="render.cancel" ${ref(this.cancelButton)} @click=${this.cancelRender} ?disabled=${!this.jobs.running} title=${msg('Stop the render')}>${msg('Cancel')}</button>
         <div class="progress">${this.progress()}</div>
-        <button @click=${() => void this.save()} ?disabled=${this.status.kind !== 'finished'} title=${msg('Save the rendered image as a PNG file, at its exact pixels')}>
+        <button data-guide="render.save" @click=${() => void this.save()} ?disabled=${this.jobs.status.kind !== 'finished'} title=${msg('Save the rendered image as a PNG file, at its exact pixels')}>
           ${msg('Save as PNG')}
         </button>
       </div>
-      ${this.shown ? this.stage(this.shown) : html`<div class="placeholder">${msg(str`Press Render to ray trace the scene at ${width} × ${height} pixels.`)}</div>`}
+      ${this.jobs.shown ? this.stage(this.jobs.shown) : html`<div class="placeholder" data-guide="render.zoom render.compare">${msg(str`Press Render to ray trace the scene at ${width} × ${height} pixels.`)}</div>`}
       <footer>
         ${this.outcome()} ${this.saveError ? html`<p role="alert" class="error">${this.saveError}</p>` : nothing} ${this.staleNote()}
       </footer>
@@ -418,7 +253,7 @@ export class RtRenderWindow extends LitElement {
   }
 
   private progress() {
-    const status = this.status;
+    const status = this.jobs.status;
     const label = msg('Render progress');
     switch (status.kind) {
       case 'starting':
@@ -434,7 +269,7 @@ export class RtRenderWindow extends LitElement {
   }
 
   private stage({ width, height }: ShownRender) {
-    return html`<rt-image-compare ${ref(this.compare)} .imageWidth=${width} .imageHeight=${height} .note=${this.rasterNote}>
+    return html`<rt-image-compare data-guide="render.zoom render.compare" ${ref(this.compare)} .imageWidth=${width} .imageHeight=${height} .note=${this.rasterNote}>
       <canvas slot="traced" ${ref(this.tracedCanvas)} role="img" aria-label=${msg('The ray traced image')}></canvas>
       <canvas slot="raster" ${ref(this.rasterCanvas)} role="img" aria-label=${msg('The raster image from the same camera')}></canvas>
     </rt-image-compare>`;
@@ -442,7 +277,7 @@ export class RtRenderWindow extends LitElement {
 
   /** How the last render ended, for the footer; announced to screen readers. */
   private outcome() {
-    const status = this.status;
+    const status = this.jobs.status;
     switch (status.kind) {
       case 'finished': {
         const workers = status.workers === 1 ? msg('1 worker') : msg(str`${status.workers} workers`);
@@ -464,7 +299,7 @@ export class RtRenderWindow extends LitElement {
   }
 
   private staleNote() {
-    if (!this.sceneChanged || this.running) return nothing;
+    if (!this.sceneChanged || this.jobs.running) return nothing;
     return html`<p class="stale" role="status">
       <span aria-hidden="true">⚠</span>${msg('The scene changed since this render.')}
       <button @click=${() => void this.startRender()} title=${msg('Render the changed scene')}>${msg('Render again')}</button>
@@ -472,10 +307,6 @@ export class RtRenderWindow extends LitElement {
   }
 }
 
-
-function errorMessage(error: unknown): string {
-  return error instanceof Error ? error.message : String(error);
-}
 
 customElements.define('rt-render-window', RtRenderWindow);
 

@@ -1,0 +1,140 @@
+import type { ReactiveController, ReactiveControllerHost } from 'lit';
+import { loadMeshes } from '../../../render/load-meshes-browser.ts';
+import type { RenderImage, RenderJob, RenderProgress } from '../../../render/render-job.ts';
+import type { RenderPool } from '../../../render/render-pool.ts';
+import type { Store } from '../../../lab-state/store.ts';
+import { meshNamesInScene } from '../../../scene/mesh-names.ts';
+import type { Scene } from '../../../scene/scene.ts';
+import { countRays } from './render-figures.ts';
+
+/** Where the render on show is in its life. */
+export type RenderStatus =
+  | { kind: 'idle' }
+  /** Models loading and the job starting, before the first progress. */
+  | { kind: 'starting' }
+  | ({ kind: 'rendering' } & RenderProgress)
+  | { kind: 'finished'; ms: number; rays: number; workers: number }
+  /** byUser: the Cancel button; otherwise the pool dropped the job (a new scene or render). */
+  | { kind: 'cancelled'; byUser: boolean }
+  | { kind: 'failed'; message: string };
+
+/** The render on show: what was rendered, and from which of the store's scene revisions. */
+export interface ShownRender {
+  scene: Scene;
+  revision: number;
+  width: number;
+  height: number;
+}
+
+/** What the window does with a render's pictures while the job runs. */
+export interface RenderPainter {
+  /** A coarse preview, a partly filled image or the finished one. */
+  paint(image: RenderImage, dithering: boolean): void;
+  /** A render starts (after `shown` is set, before any picture): `isCurrent` says whether it still is. */
+  started(shown: ShownRender, isCurrent: () => boolean): Promise<void> | void;
+}
+
+/**
+ * The render window's job as a state machine: idle → starting → rendering → finished,
+ * cancelled or failed. One render at a time; a newer render or a cancel drops the older
+ * one, whose late answers are ignored by number. The store hears render.started,
+ * render.finished {ms} and render.cancelled (the quest engine and the timing log listen).
+ */
+export class RenderJobController implements ReactiveController {
+  status: RenderStatus = { kind: 'idle' };
+  shown: ShownRender | null = null;
+  /** The finished image, for Save as PNG. */
+  finished: RenderImage | null = null;
+  /** Each render's number; a late answer from an older one is ignored. */
+  private renderId = 0;
+  private job: RenderJob | null = null;
+
+  constructor(
+    private readonly host: ReactiveControllerHost,
+    private readonly painter: RenderPainter,
+  ) {
+    host.addController(this);
+  }
+
+  get running(): boolean {
+    return this.status.kind === 'starting' || this.status.kind === 'rendering';
+  }
+
+  /** The scene changed since the render on show (by the store's revision, not by content). */
+  isStale(store: Store | undefined): boolean {
+    return this.shown !== null && store !== undefined && store.sceneRevision !== this.shown.revision;
+  }
+
+  hostDisconnected(): void {
+    if (this.running) this.stop();
+  }
+
+  /** Renders the store's scene at its image size, replacing the render on show. */
+  async start(store: Store, pool: RenderPool): Promise<void> {
+    if (this.running) this.stop();
+    const id = ++this.renderId;
+    const isCurrent = () => id === this.renderId;
+    const scene = store.state.scene;
+    const [width, height] = scene.settings.imageSize;
+    this.shown = { scene, revision: store.sceneRevision, width, height };
+    this.finished = null;
+    this.setStatus({ kind: 'starting' });
+    store.dispatch({ type: 'render.started' });
+    await this.painter.started(this.shown, isCurrent);
+    const { dithering } = scene.settings;
+    try {
+      const meshes = await loadMeshes(meshNamesInScene(scene));
+      if (!isCurrent()) return;
+      const job = pool.render(scene, meshes, {
+        onPreview: (image) => {
+          if (isCurrent()) this.painter.paint(image, dithering);
+        },
+        onProgress: (progress) => {
+          if (!isCurrent()) return;
+          this.setStatus({ kind: 'rendering', ...progress });
+          this.painter.paint(job.image, dithering);
+        },
+      });
+      this.job = job;
+      const result = await job.done;
+      if (!isCurrent()) return;
+      this.job = null;
+      if (result.cancelled) {
+        this.setStatus({ kind: 'cancelled', byUser: false });
+        return;
+      }
+      this.finished = result;
+      this.painter.paint(result, dithering);
+      this.setStatus({ kind: 'finished', ms: result.ms, rays: countRays(result.stats), workers: result.workers });
+      store.dispatch({ type: 'render.finished', ms: result.ms });
+    } catch (error) {
+      if (!isCurrent()) return;
+      this.job = null;
+      this.setStatus({ kind: 'failed', message: errorMessage(error) });
+    }
+  }
+
+  /** Stops the running render (its partial image stays on show). */
+  cancel(store: Store | undefined): void {
+    if (!this.running) return;
+    this.stop();
+    this.setStatus({ kind: 'cancelled', byUser: true });
+    store?.dispatch({ type: 'render.cancelled' });
+  }
+
+  /** Drops the current render: its late answers are ignored from now on. */
+  private stop(): void {
+    this.renderId++;
+    this.job?.cancel();
+    this.job = null;
+  }
+
+  private setStatus(status: RenderStatus): void {
+    this.status = status;
+    this.host.requestUpdate();
+  }
+}
+
+export function errorMessage(error: unknown): string {
+  return error instanceof Error ? error.message : String(error);
+}
