@@ -7,7 +7,7 @@ import { readFileSync } from 'node:fs';
 import { readdir, readFile, stat } from 'node:fs/promises';
 import { dirname, join, relative } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { describeJsonError } from '../scene/json-error.ts';
+import { describeJsonError } from '../util/json-error.ts';
 import { loadMeshesFromDisk } from '../scene/load-meshes-node.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';

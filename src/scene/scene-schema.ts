@@ -5,7 +5,7 @@ import { alsoWhenFieldsFail, asRefinement, cameraHasDirection, idsAreUnique, mes
 import { LIMITS } from './scene-limits.ts';
 import { numberIn, pair, triple, wholeNumberIn } from './scene-schema-parts.ts';
 import { describeIssue, formatIssues } from './scene-issues.ts';
-import { describeJsonError } from './json-error.ts';
+import { describeJsonError } from '../util/json-error.ts';
 
 /**
  * The scene file's schema (spec §1): every field but the ids (and `version`) has a default,

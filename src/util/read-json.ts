@@ -1,4 +1,4 @@
-import { describeJsonError } from '../scene/json-error.ts';
+import { describeJsonError } from './json-error.ts';
 
 export type JsonRead = { ok: true; value: unknown } | { ok: false; error: string };
 

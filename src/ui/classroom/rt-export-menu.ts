@@ -1,7 +1,8 @@
 import { msg } from '@lit/localize';
 import { css, html, LitElement } from 'lit';
 import type { Assignment } from '../../classroom/assignment.ts';
-import { downloadText, exportFileName } from '../../util/download-file.ts';
+import { downloadText } from '../../util/download-file.ts';
+import { exportFileName } from '../../classroom/export-file-name.ts';
 import { APP_VERSION, type ExportInput } from '../../classroom/export-context.ts';
 import { exportCsv } from '../../classroom/export-csv.ts';
 import { exportJson } from '../../classroom/export-json.ts';

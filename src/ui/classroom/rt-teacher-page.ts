@@ -10,7 +10,7 @@ import type { Level } from '../../quest/level-schema.ts';
 import { playableLevels } from '../../quest/level-index.ts';
 import { localize } from '../../quest/localized-text.ts';
 import { classroomStyles, pageStyles } from './classroom-styles.ts';
-import '../shell/rt-theme-toggle.ts';
+import '../controls/rt-theme-toggle.ts';
 
 /**
  * @summary The teacher page (`#/teacher`): builds an assignment — title, levels and their

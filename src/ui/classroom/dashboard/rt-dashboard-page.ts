@@ -16,7 +16,7 @@ import { formatDuration } from './rt-dashboard-format.ts';
 import './rt-dashboard-stuck.ts';
 import './rt-dashboard-survey.ts';
 import './rt-dashboard-times.ts';
-import '../../shell/rt-theme-toggle.ts';
+import '../../controls/rt-theme-toggle.ts';
 
 /** Level and task titles by id, for labels; an id the app does not know is shown as it is. */
 function levelNames(locale: Locale) {

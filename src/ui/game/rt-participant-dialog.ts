@@ -1,6 +1,6 @@
 import { msg } from '@lit/localize';
 import { css, html, LitElement } from 'lit';
-import { fire, gameStyles } from '../game/game-styles.ts';
+import { fire, gameStyles } from './game-styles.ts';
 
 /** Codes are short labels a teacher hands out ("A17", "group-3"): nothing personal is asked. */
 const CODE = /^[\p{L}\p{N}_-]{1,32}$/u;
