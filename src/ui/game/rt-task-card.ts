@@ -12,6 +12,9 @@ import './rt-quiz.ts';
  * symbol for the eye), its title and points; expanded, its instruction, "Explain more", the
  * quiz or the Next button, and the hint ladder. Optional tasks can be skipped.
  *
+ * Reflects `status` (current, open, waiting, done, shown, skipped) and `data-task` (the
+ * task's id) as attributes.
+ *
  * @fires quest-command - next, skip, explain (and, from inside, hint, show-me, answer).
  */
 export class RtTaskCard extends LitElement {
@@ -87,8 +90,10 @@ export class RtTaskCard extends LitElement {
   }
 
   override updated(): void {
-    // The status is an attribute so the styles (and browser tests) can see which task is current.
-    if (this.task) this.setAttribute('status', this.task.status);
+    // The status and the task's id are attributes so the styles (and browser tests) can see which task is current.
+    if (!this.task) return;
+    this.setAttribute('status', this.task.status);
+    this.dataset.task = this.task.task.id;
   }
 
   override render() {

@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
 import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
+import type { ScreenBox } from './guide-targets.ts';
 import { styleMap } from 'lit/directives/style-map.js';
 
 /** Space between the control and the ring, so the ring never hides the control's edge. */
@@ -52,8 +53,8 @@ export class RtGuideRing extends LitElement {
   `;
 
   /** Where the target is now, in viewport px; null while it is not on the page. Null `locate`: no ring. */
-  declare locate: (() => DOMRect | null) | null;
-  declare private box: DOMRect | null;
+  declare locate: (() => ScreenBox | null) | null;
+  declare private box: ScreenBox | null;
   private frame = 0;
   private readonly follow = () => this.measure();
 
@@ -91,7 +92,7 @@ export class RtGuideRing extends LitElement {
 
   private measure(): void {
     const box = this.locate?.() ?? null;
-    const same = box && this.box && box.x === this.box.x && box.y === this.box.y && box.width === this.box.width && box.height === this.box.height;
+    const same = box && this.box && box.left === this.box.left && box.top === this.box.top && box.width === this.box.width && box.height === this.box.height;
     if (!same && (box || this.box)) this.box = box;
   }
 

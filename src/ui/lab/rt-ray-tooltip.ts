@@ -34,6 +34,7 @@ export function formatShare(share: number): string {
  * it is null. It never takes the pointer (pointer-events: none). Reads `store` for the palette.
  */
 export class RtRayTooltip extends StorePanel {
+  protected readonly controlPanel = 'view';
   static override properties = {
     ...StorePanel.properties,
     hover: { attribute: false },

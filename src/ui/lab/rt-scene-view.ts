@@ -6,6 +6,8 @@ import { gizmoModesFor } from '../../view/gizmo-changes.ts';
 import { LabView, type RayHoverDetail } from '../../view/lab-view.ts';
 import type { ViewCommand } from '../../view/view-commands.ts';
 import './rt-help-panel.ts';
+import { GuideHostController } from './guide-host.ts';
+import { consumeStore } from './store-context.ts';
 import './rt-view-toolbar.ts';
 
 /**
@@ -22,6 +24,7 @@ import './rt-view-toolbar.ts';
 export class RtSceneView extends LitElement {
   static override properties = {
     store: { attribute: false },
+    gizmoControls: { attribute: false },
     state: { state: true },
     atCamera: { state: true },
     helpOpen: { state: true },
@@ -53,6 +56,8 @@ export class RtSceneView extends LitElement {
 
   /** The app's store: the view draws its scene and dispatches selections, gizmo drags and view gestures. */
   declare store: Store | undefined;
+  /** The gizmo buttons a level shows (rt-view-toolbar's `gizmoControls`; undefined: all). */
+  declare gizmoControls: readonly string[] | undefined;
   declare private state: LabState | undefined;
   declare private atCamera: boolean;
   declare private helpOpen: boolean;
@@ -65,6 +70,8 @@ export class RtSceneView extends LitElement {
     super();
     this.atCamera = false;
     this.helpOpen = false;
+    consumeStore(this, (store) => (this.store = store));
+    new GuideHostController(this);
   }
 
   /** The three.js view (after the first update with a store): setScreenRays, setRayLayer, rasterSnapshot, … */
@@ -107,10 +114,11 @@ export class RtSceneView extends LitElement {
   override render() {
     const state = this.state;
     return html`
-      <canvas tabindex="0" role="img" aria-label=${state ? describe(state) : msg('3D view')}></canvas>
+      <canvas tabindex="0" data-guide="view.canvas" role="img" aria-label=${state ? describe(state) : msg('3D view')}></canvas>
       <rt-view-toolbar
         .gizmo=${state?.gizmo}
         .allowedModes=${state ? modesShown(state) : []}
+        .gizmoControls=${this.gizmoControls}
         ?at-camera=${this.atCamera}
         @view-command=${this.onCommand}
         @keydown=${this.onToolbarKey}

@@ -27,6 +27,8 @@ const ARROWS: Readonly<Record<string, [number, number]>> = {
  * tracer's latest), and says "Updating…" while they are of an older screen size.
  */
 export class RtScreenPreview extends StorePanel {
+  protected readonly controlPanel = 'screen-preview';
+
   static override properties = {
     ...StorePanel.properties,
     rays: { attribute: false },
@@ -120,6 +122,7 @@ export class RtScreenPreview extends StorePanel {
     return html`
       <div
         class=${stale ? 'grid stale' : 'grid'}
+        data-guide="screen-preview.grid screen.grid"
         role="group"
         aria-label=${msg(str`Camera image, ${rays.columns} × ${rays.rows} pixels`)}
         style=${styleMap({ gridTemplateColumns: `repeat(${rays.columns}, minmax(0, 1fr))` })}
@@ -131,6 +134,7 @@ export class RtScreenPreview extends StorePanel {
           return html`<button
             class="cell"
             data-index=${index}
+            data-guide=${`screen.pixel:${x},${y}`}
             tabindex=${index === this.focusIndex ? 0 : -1}
             aria-label=${msg(str`Pixel ${x}, ${y}`)}
             aria-pressed=${pressed ? 'true' : 'false'}

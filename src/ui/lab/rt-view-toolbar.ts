@@ -1,8 +1,9 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement, svg, type SVGTemplateResult, type TemplateResult } from 'lit';
+import { css, html, LitElement, nothing, svg, type SVGTemplateResult, type TemplateResult } from 'lit';
 import { DEFAULT_GIZMO, type GizmoOptions } from '../../lab-state/lab-state.ts';
 import type { GizmoMode } from '../../view/gizmo-changes.ts';
 import type { ViewCommand } from '../../view/view-commands.ts';
+import { GuideHostController } from './guide-host.ts';
 
 /** How far one button press moves the view (the keys move less, and repeat). */
 const ORBIT_STEP_DEG = 15;
@@ -17,6 +18,10 @@ const ZOOM_STEP = 1.25;
  * Every button has a visible label or a labelled group, a tooltip naming its key, and is a
  * real <button>; toggles say their state with aria-pressed and a check mark, not colour alone.
  *
+ * `gizmoControls` names the gizmo buttons a level shows (lab-controls.ts: translate, rotate,
+ * scale, space, snap); unset, all of them. Every button carries its guide id (gizmo.rotate,
+ * view.fly-to-camera, view.help; the pads view.orbit-buttons, view.pan-buttons, view.zoom-buttons).
+ *
  * @fires view-command - CustomEvent<ViewCommand>: a button asks the view to do something.
  */
 export class RtViewToolbar extends LitElement {
@@ -24,6 +29,7 @@ export class RtViewToolbar extends LitElement {
     gizmo: { attribute: false },
     allowedModes: { attribute: false },
     atCamera: { type: Boolean, attribute: 'at-camera' },
+    gizmoControls: { attribute: false },
   };
 
   static override styles = css`
@@ -164,44 +170,54 @@ export class RtViewToolbar extends LitElement {
   declare allowedModes: readonly GizmoMode[];
   /** Whether the view is at the ray tracer's camera: the fly button then flies back. */
   declare atCamera: boolean;
+  /** The gizmo buttons on show (undefined: all). */
+  declare gizmoControls: readonly string[] | undefined;
 
   constructor() {
     super();
     this.gizmo = DEFAULT_GIZMO;
     this.allowedModes = ['translate', 'rotate', 'scale'];
     this.atCamera = false;
+    this.gizmoControls = undefined;
+    new GuideHostController(this);
+  }
+
+  private showsGizmo(control: string): boolean {
+    return this.gizmoControls === undefined || this.gizmoControls.includes(control);
   }
 
   override render() {
+    const modes = [
+      this.modeButton('translate', msg('Move'), 'T', msg('Move the selection with the gizmo (T)')),
+      this.modeButton('rotate', msg('Rotate'), 'R', msg('Rotate the selection with the gizmo (R)')),
+      this.modeButton('scale', msg('Scale'), 'S', msg('Scale the selection with the gizmo (S)')),
+    ].filter((button) => button !== nothing);
+    const options = [
+      this.toggle(
+        'space',
+        this.gizmo.space === 'local',
+        msg('Local axes'),
+        'Tab',
+        msg("Gizmo along the selection's own axes instead of the world's (Tab while something is selected)"),
+        { kind: 'toggle-space' },
+      ),
+      this.toggle('snap', this.gizmo.snap, msg('Snap'), 'G', msg('Snap to 0.25 m, 15° and 0.25× steps (G; or hold Shift while dragging)'), { kind: 'toggle-snap' }),
+    ].filter((button) => button !== nothing);
     return html`
       <div class="bar top">
-        <div class="group" role="group" aria-label=${msg('Gizmo mode')}>
-          ${this.modeButton('translate', msg('Move'), 'T', msg('Move the selection with the gizmo (T)'))}
-          ${this.modeButton('rotate', msg('Rotate'), 'R', msg('Rotate the selection with the gizmo (R)'))}
-          ${this.modeButton('scale', msg('Scale'), 'S', msg('Scale the selection with the gizmo (S)'))}
-        </div>
-        <div class="group" role="group" aria-label=${msg('Gizmo options')}>
-          ${this.toggle(
-            this.gizmo.space === 'local',
-            msg('Local axes'),
-            'Tab',
-            msg("Gizmo along the selection's own axes instead of the world's (Tab while something is selected)"),
-            { kind: 'toggle-space' },
-          )}
-          ${this.toggle(this.gizmo.snap, msg('Snap'), 'G', msg('Snap to 0.25 m, 15° and 0.25× steps (G; or hold Shift while dragging)'), {
-            kind: 'toggle-snap',
-          })}
-        </div>
+        ${modes.length > 0 ? html`<div class="group" role="group" aria-label=${msg('Gizmo mode')}>${modes}</div>` : nothing}
+        ${options.length > 0 ? html`<div class="group" role="group" aria-label=${msg('Gizmo options')}>${options}</div>` : nothing}
         <div class="group end">
           <button
             data-command="fly"
+            data-guide="view.fly-to-camera"
             title=${this.atCamera ? msg('Fly back to where you were (F or Esc)') : msg("Fly to the ray tracer's camera and see what it sees (F)")}
             @click=${() => this.send({ kind: 'fly' })}
           >
             ${icon(this.atCamera ? svg`<path d="M8 4 3 10l5 6M3 10h14" />` : CAMERA)}
             <span>${this.atCamera ? msg('Back to my view') : msg('Camera view')}</span>
           </button>
-          <button data-command="help" title=${msg('All keys and gestures (?)')} @click=${() => this.send({ kind: 'help' })}>
+          <button data-command="help" data-guide="view.help" title=${msg('All keys and gestures (?)')} @click=${() => this.send({ kind: 'help' })}>
             ${icon(svg`<circle cx="10" cy="10" r="7.5" /><path d="M7.6 7.8a2.5 2.5 0 1 1 3.4 2.3c-.7.3-1 .8-1 1.5v.6" /><circle cx="10" cy="14.6" r=".4" />`)}
             <span>${msg('Help')}</span>
           </button>
@@ -220,7 +236,7 @@ export class RtViewToolbar extends LitElement {
           up: msg('Pan up (Shift + ↑)'),
           down: msg('Pan down (Shift + ↓)'),
         })}
-        <div class="group pad" role="group" aria-label=${msg('Zoom')}>
+        <div class="group pad" role="group" aria-label=${msg('Zoom')} data-guide="view.zoom-buttons">
           <div class="zoom-grid">
             <button data-command="zoom-in" title=${msg('Zoom in (+)')} aria-label=${msg('Zoom in')} @click=${() => this.send({ kind: 'zoom', factor: ZOOM_STEP })}>
               ${icon(svg`<path d="M10 4v12M4 10h12" />`)}
@@ -236,11 +252,13 @@ export class RtViewToolbar extends LitElement {
     `;
   }
 
-  private modeButton(mode: GizmoMode, label: string, key: string, tooltip: string): TemplateResult {
+  private modeButton(mode: GizmoMode, label: string, key: string, tooltip: string): TemplateResult | typeof nothing {
+    if (!this.showsGizmo(mode)) return nothing;
     const allowed = this.allowedModes.includes(mode);
     const why = allowed ? '' : ` — ${msg('not for this selection')}`;
     return html`<button
       data-command=${mode}
+      data-guide=${`gizmo.${mode}`}
       aria-pressed=${String(this.gizmo.mode === mode)}
       aria-disabled=${String(!allowed)}
       title=${tooltip + why}
@@ -250,8 +268,9 @@ export class RtViewToolbar extends LitElement {
     </button>`;
   }
 
-  private toggle(on: boolean, label: string, key: string, tooltip: string, command: ViewCommand): TemplateResult {
-    return html`<button data-command=${command.kind} aria-pressed=${String(on)} title=${tooltip} @click=${() => this.send(command)}>
+  private toggle(control: 'space' | 'snap', on: boolean, label: string, key: string, tooltip: string, command: ViewCommand): TemplateResult | typeof nothing {
+    if (!this.showsGizmo(control)) return nothing;
+    return html`<button data-command=${command.kind} data-guide=${`gizmo.${control}`} aria-pressed=${String(on)} title=${tooltip} @click=${() => this.send(command)}>
       ${icon(svg`<rect x="3" y="3" width="14" height="14" rx="3" /><path class="check" d="M6 10.5 9 13.5 14.5 7" />`)} ${label}
       <kbd aria-hidden="true">${key}</kbd>
     </button>`;
@@ -273,7 +292,7 @@ export class RtViewToolbar extends LitElement {
       >
         ${icon(path)}
       </button>`;
-    return html`<div class="group pad" role="group" aria-label=${caption}>
+    return html`<div class="group pad" role="group" aria-label=${caption} data-guide=${`view.${name}-buttons`}>
       <div class="pad-grid">
         <span></span>${arrow('up', 0, 1, svg`<path d="M5 12l5-5 5 5" />`)}<span></span>
         ${arrow('left', -1, 0, svg`<path d="M12 5l-5 5 5 5" />`)}<span class="centre"></span>${arrow('right', 1, 0, svg`<path d="M8 5l5 5-5 5" />`)}

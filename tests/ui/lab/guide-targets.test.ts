@@ -1,62 +1,91 @@
 import { describe, expect, it } from 'vitest';
-import { CONTROL_TARGETS } from '../../../src/quest/lab-controls.ts';
-import { CONTROL_PATHS, hiddenControlsCss, hiddenToolbarCss, itemPosition, locateGuideTarget } from '../../../src/ui/lab/guide-targets.ts';
+import { LAB_CONTROLS } from '../../../src/quest/lab-controls.ts';
+import { guideRect, itemPosition, viewPointOf, type GuideStage } from '../../../src/ui/lab/guide-targets.ts';
+import { controlIdOf } from '../../../src/ui/lab/panels/control-ids.ts';
+
+const scene: GuideStage['scene'] = {
+  objects: [{ id: 'ball', position: [1, 2, 3] }],
+  lights: [{ id: 'lamp', position: [4, 5, 6] }],
+  camera: { position: [0, 1, 8] },
+};
+
+/** An element whose box is `box` (only what guideRect reads). */
+const boxed = (left: number, top: number, width: number, height: number) =>
+  ({ getBoundingClientRect: () => ({ left, top, width, height, right: left + width, bottom: top + height }) }) as unknown as Element;
+
+function stage(elements: Record<string, Element[]>, project: GuideStage['project'] = () => ({ x: 100, y: 50 })): GuideStage {
+  return { elements: (id) => elements[id] ?? [], project, canvas: boxed(10, 20, 800, 600) as unknown as HTMLElement, scene };
+}
 
 describe('guide target names → places on the page', () => {
-  it('finds a panel control by its name attribute inside the panel', () => {
-    expect(locateGuideTarget('tracer.supersampling')).toEqual({ kind: 'element', path: ['rt-tracer-panel', '[name="supersampling"]'] });
-    expect(locateGuideTarget('object.refractive-index')).toEqual({ kind: 'element', path: ['rt-object-panel', '[name="refractiveIndex"]'] });
+  it('rings the elements that carry the id, around all of them (both pixel sliders)', () => {
+    const rect = guideRect('tracer.pixels', stage({ 'tracer.pixels': [boxed(0, 100, 200, 30), boxed(0, 140, 200, 30)] }));
+    expect(rect).toEqual({ left: 0, top: 100, width: 200, height: 70 });
   });
 
-  it('finds view buttons by their data-command inside the toolbar', () => {
-    expect(locateGuideTarget('view.fly-to-camera')).toEqual({ kind: 'element', path: ['rt-scene-view', 'rt-view-toolbar', '[data-command="fly"]'] });
-    expect(locateGuideTarget('render.open')).toEqual({ kind: 'element', path: ['[data-command="render-open"]'] });
+  it('leaves out elements that take no room (hidden ones)', () => {
+    const rect = guideRect('object.color', stage({ 'object.color': [boxed(0, 0, 0, 0), boxed(5, 6, 7, 8)] }));
+    expect(rect).toEqual({ left: 5, top: 6, width: 7, height: 8 });
   });
 
-  it('reads items and pixels', () => {
-    expect(locateGuideTarget('view.item:ball')).toEqual({ kind: 'view-item', id: 'ball' });
-    expect(locateGuideTarget('screen.pixel:3,2')).toEqual({ kind: 'pixel', column: 3, row: 2 });
-    expect(locateGuideTarget('screen.grid')).toEqual({ kind: 'camera-screen' });
-    const row = locateGuideTarget('scene-list.item:lamp');
-    expect(row?.kind === 'element' && row.path.at(-1)).toContain('[data-key="light:lamp"]');
+  it('rings an item of the 3D view at its projected point, and the camera for its screen without the preview', () => {
+    const seen: number[][] = [];
+    const project: GuideStage['project'] = (point) => (seen.push([...point]), { x: 100, y: 50 });
+    expect(guideRect('view.item:ball', stage({}, project))).toEqual({ left: 10 + 100 - 32, top: 20 + 50 - 32, width: 64, height: 64 });
+    guideRect('screen.pixel:3,2', stage({}, project));
+    guideRect('screen.grid', stage({}, project));
+    expect(seen).toEqual([[1, 2, 3], [0, 1, 8], [0, 1, 8]]);
   });
 
-  it('refuses what is not a target', () => {
-    expect(locateGuideTarget('tracer.nonsense')).toBeUndefined();
-    expect(locateGuideTarget('screen.pixel:a,b')).toBeUndefined();
-    expect(locateGuideTarget('view.item:')).toBeUndefined();
+  it('prefers the flat preview\'s pixel to the camera when the preview is on the page', () => {
+    const rect = guideRect('screen.pixel:3,2', stage({ 'screen.pixel:3,2': [boxed(40, 500, 24, 24)] }));
+    expect(rect).toEqual({ left: 40, top: 500, width: 24, height: 24 });
   });
 
-  it('finds the file and BVH panels\' controls by their names', () => {
-    expect(locateGuideTarget('file.save')).toEqual({ kind: 'element', path: ['rt-file-panel', '[name="save"]'] });
-    expect(locateGuideTarget('bvh.depth')).toEqual({ kind: 'element', path: ['rt-bvh-panel', '[name="depth"]'] });
+  it('rings the Render image button for a control of the closed render window', () => {
+    const header = boxed(900, 8, 120, 32);
+    expect(guideRect('render.start', stage({ 'render.open': [header] }))).toEqual({ left: 900, top: 8, width: 120, height: 32 });
+    expect(guideRect('render.start', stage({ 'render.open': [header], 'render.start': [boxed(300, 100, 80, 32)] }))).toEqual({ left: 300, top: 100, width: 80, height: 32 });
   });
 
-  it('has a place (or an explicit none) for every control name levels may use', () => {
-    expect(Object.keys(CONTROL_PATHS).sort()).toEqual([...CONTROL_TARGETS].sort());
+  it('has no ring for a control that is not on the page, or a point behind the eye', () => {
+    expect(guideRect('tracer.supersampling', stage({}))).toBeNull();
+    expect(guideRect('view.item:ball', stage({}, () => null))).toBeNull();
+    expect(guideRect('view.item:nothing', stage({}))).toBeNull();
+  });
+
+  it('reads items and pixels, and refuses what is not a target', () => {
+    expect(viewPointOf('view.item:lamp', scene)).toEqual([4, 5, 6]);
+    expect(viewPointOf('screen.pixel:3,2', scene)).toEqual([0, 1, 8]);
+    expect(viewPointOf('tracer.nonsense', scene)).toBeUndefined();
+    expect(viewPointOf('view.item:', scene)).toBeUndefined();
+    expect(viewPointOf('tracer.supersampling', scene)).toBeUndefined();
   });
 
   it('finds the position of an object or a light', () => {
-    const scene = { objects: [{ id: 'ball', position: [1, 2, 3] as [number, number, number] }], lights: [{ id: 'lamp', position: [4, 5, 6] as [number, number, number] }] };
     expect(itemPosition(scene, 'ball')).toEqual([1, 2, 3]);
     expect(itemPosition(scene, 'lamp')).toEqual([4, 5, 6]);
     expect(itemPosition(scene, 'nothing')).toBeUndefined();
   });
 });
 
-describe('a level narrows the panels', () => {
-  it('hides the controls it leaves out, and keeps the ones it lists', () => {
-    const css = hiddenControlsCss('tracer', ['pixels']);
-    expect(css).toContain(':not([name^="pixels."])');
-    expect(hiddenControlsCss('tracer', undefined)).toBe('');
-    expect(hiddenControlsCss('view', ['canvas'])).toBe('');
+describe('panels name their controls by the levels\' ids', () => {
+  it('kebab-cases element names, groups dotted ones, and takes a panel\'s own spellings', () => {
+    expect(controlIdOf('object', 'refractiveIndex')).toBe('refractive-index');
+    expect(controlIdOf('tracer', 'pixels.columns')).toBe('pixels');
+    expect(controlIdOf('tracer', 'lightTypes.area')).toBe('light-types');
+    expect(controlIdOf('rays', 'showRays', { showRays: 'show' })).toBe('show');
   });
 
-  it('hides the gizmo buttons a level does not show', () => {
-    expect(hiddenToolbarCss(true, undefined)).toBe('');
-    const some = hiddenToolbarCss(true, ['translate', 'rotate', 'scale']);
-    expect(some).toContain('[data-command="toggle-space"]');
-    expect(some).not.toMatch(/\[data-command="translate"\][^]*\{/);
-    expect(hiddenToolbarCss(false, undefined)).toContain('[data-command="translate"]');
+  it('has no id for controls levels cannot name', () => {
+    expect(controlIdOf('object', 'position')).toBeUndefined();
+    expect(controlIdOf('tracer', 'imageSize')).toBeUndefined();
+    expect(controlIdOf('rays', 'showRays')).toBeUndefined();
+  });
+
+  it('every id a level can name in the narrowed panels is a real control id', () => {
+    for (const panel of ['object', 'light', 'tracer', 'rays', 'bvh'] as const) {
+      for (const id of LAB_CONTROLS[panel]) expect(controlIdOf(panel, id)).toBe(id);
+    }
   });
 });

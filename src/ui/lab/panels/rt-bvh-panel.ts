@@ -36,6 +36,8 @@ const PERCENT = new Intl.NumberFormat('en', { minimumFractionDigits: 1, maximumF
  * 8,624-triangle character) the first time a scene with them needs counting.
  */
 export class RtBvhPanel extends StorePanel {
+  protected readonly controlPanel = 'bvh';
+
   static override properties = {
     ...StorePanel.properties,
     counts: { state: true },
@@ -118,8 +120,8 @@ export class RtBvhPanel extends StorePanel {
     const bvh = state.bvh;
     const set = (changes: Partial<BvhViewOptions>): LabAction => ({ type: 'bvh.changed', changes });
     return html`
-      <rt-panel-section heading=${msg('Boxes')} name="bvh">
-        ${this.switch(
+      ${this.section(msg('Boxes'), 'bvh', [
+        this.switch(
           {
             name: 'bounds',
             label: msg('Show bounding boxes'),
@@ -127,8 +129,8 @@ export class RtBvhPanel extends StorePanel {
           },
           bvh.showBounds,
           (showBounds) => set({ showBounds }),
-        )}
-        ${this.switch(
+        ),
+        this.switch(
           {
             name: 'show',
             label: msg('Show the BVH'),
@@ -136,8 +138,8 @@ export class RtBvhPanel extends StorePanel {
           },
           bvh.show,
           (show) => set({ show }),
-        )}
-        ${this.slider(
+        ),
+        this.slider(
           {
             name: 'depth',
             label: msg('Depth'),
@@ -151,9 +153,9 @@ export class RtBvhPanel extends StorePanel {
           bvh.depth,
           (depth) => set({ depth }),
           this.depthHint(bvh.depth),
-        )}
-      </rt-panel-section>
-      <rt-panel-section heading=${msg('This ray’s tests')} name="bvh-ray">${this.rayCounts(state)}</rt-panel-section>
+        ),
+      ])}
+      ${this.section(msg('This ray’s tests'), 'bvh-ray', [this.rayCounts(state)])}
     `;
   }
 

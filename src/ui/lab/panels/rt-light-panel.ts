@@ -1,11 +1,11 @@
 import { msg, str } from '@lit/localize';
-import { html, nothing, type TemplateResult } from 'lit';
+import { html, nothing } from 'lit';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { AreaLight, Light, LightType, SpotLight } from '../../../scene/scene.ts';
 import { LIMITS } from '../../../scene/scene-limits.ts';
 import { positionSpec, rotationSpec } from './placement-specs.ts';
 import { lightTypeName, lightTypeShortName } from '../scene-names.ts';
-import { StorePanel } from './store-panel.ts';
+import { StorePanel, type ControlPart } from './store-panel.ts';
 
 /**
  * @summary The selected light: its type (changing it keeps the shared fields), colour,
@@ -18,6 +18,8 @@ import { StorePanel } from './store-panel.ts';
  * to its control and the control keeps the store's value.
  */
 export class RtLightPanel extends StorePanel {
+  protected readonly controlPanel = 'light';
+
   override render() {
     const selection = this.state?.selection;
     const light = selection?.kind === 'light' ? this.state?.scene.lights.find((l) => l.id === selection.id) : undefined;
@@ -30,10 +32,8 @@ export class RtLightPanel extends StorePanel {
       );
     }
     const changed = (changes: Partial<Light>): LabAction => ({ type: 'light.changed', id: light.id, changes });
-    return html`
-      <rt-panel-section heading=${msg('Light')} name="light">
-        ${this.identity(light.name ?? light.id, lightTypeName(light.type))}
-        ${this.choice<LightType>(
+    const controls: ControlPart[] = [
+      this.choice<LightType>(
           { name: 'type', label: msg('Type'), tooltip: msg('Point: from one point. Spot: a cone. Area: a panel that casts soft shadows.') },
           [
             { value: 'point', label: lightTypeShortName('point'), tooltip: msg('Light from one point, in every direction: hard shadows.') },
@@ -42,13 +42,13 @@ export class RtLightPanel extends StorePanel {
           ],
           light.type,
           (type) => changed({ type }),
-        )}
-        ${this.color(
+        ),
+        this.color(
           { name: 'color', label: msg('Colour'), tooltip: msg('The colour of the light, as red, green and blue from 0 to 1.') },
           light.color,
           (color) => changed({ color }),
-        )}
-        ${this.slider(
+        ),
+        this.slider(
           {
             name: 'intensity',
             label: msg('Intensity (I)'),
@@ -60,8 +60,8 @@ export class RtLightPanel extends StorePanel {
           },
           light.intensity,
           (intensity) => changed({ intensity }),
-        )}
-        ${this.phongSliders(
+        ),
+        ...this.phongSliders(
           {
             ambient: [msg('Ambient'), msg('How much ambient light it adds everywhere, even in shadow.')],
             diffuse: [msg('Diffuse'), msg('How much it lights surfaces that face it (matte shading).')],
@@ -69,8 +69,8 @@ export class RtLightPanel extends StorePanel {
           },
           light,
           changed,
-        )}
-        ${this.switch(
+        ),
+        this.switch(
           {
             name: 'distanceAttenuation',
             label: msg('Distance attenuation'),
@@ -78,18 +78,20 @@ export class RtLightPanel extends StorePanel {
           },
           light.distanceAttenuation,
           (distanceAttenuation) => changed({ distanceAttenuation }),
-        )}
-        ${light.type === 'spot' ? this.spotControls(light, changed) : nothing}
-        ${light.type === 'area' ? this.areaControls(light, changed) : nothing}
-      </rt-panel-section>
-      <rt-panel-section heading=${msg('Placement')} name="light-placement">
-        ${this.vector(positionSpec(), light.position, (position) => changed({ position }))}
-        ${light.type === 'point' ? nothing : this.vector(rotationSpec(), light.rotation, (rotation) => changed({ rotation }))}
-      </rt-panel-section>
+        ),
+        ...(light.type === 'spot' ? this.spotControls(light, changed) : []),
+        ...(light.type === 'area' ? this.areaControls(light, changed) : []),
+    ];
+    return html`
+      ${this.section(msg('Light'), 'light', controls, this.identity(light.name ?? light.id, lightTypeName(light.type)))}
+      ${this.section(msg('Placement'), 'light-placement', [
+        this.vector(positionSpec(), light.position, (position) => changed({ position })),
+        light.type === 'point' ? nothing : this.vector(rotationSpec(), light.rotation, (rotation) => changed({ rotation })),
+      ])}
     `;
   }
 
-  private angleAttenuation(light: SpotLight | AreaLight, changed: (changes: Partial<Light>) => LabAction): TemplateResult {
+  private angleAttenuation(light: SpotLight | AreaLight, changed: (changes: Partial<Light>) => LabAction): ControlPart {
     return this.slider(
       {
         name: 'angleAttenuation',
@@ -104,9 +106,9 @@ export class RtLightPanel extends StorePanel {
     );
   }
 
-  private spotControls(light: SpotLight, changed: (changes: Partial<Light>) => LabAction): TemplateResult {
-    return html`
-      ${this.slider(
+  private spotControls(light: SpotLight, changed: (changes: Partial<Light>) => LabAction): ControlPart[] {
+    return [
+      this.slider(
         {
           name: 'spotAngle',
           label: msg('Spot angle'),
@@ -118,16 +120,16 @@ export class RtLightPanel extends StorePanel {
         },
         light.spotAngle,
         (spotAngle) => changed({ spotAngle }),
-      )}
-      ${this.angleAttenuation(light, changed)}
-    `;
+      ),
+      this.angleAttenuation(light, changed),
+    ];
   }
 
-  private areaControls(light: AreaLight, changed: (changes: Partial<Light>) => LabAction): TemplateResult {
+  private areaControls(light: AreaLight, changed: (changes: Partial<Light>) => LabAction): ControlPart[] {
     const n = light.samples;
-    return html`
-      ${this.angleAttenuation(light, changed)}
-      ${this.slider(
+    return [
+      this.angleAttenuation(light, changed),
+      this.slider(
         {
           name: 'samples',
           label: msg('Samples per side (n)'),
@@ -140,8 +142,8 @@ export class RtLightPanel extends StorePanel {
         n,
         (samples) => changed({ samples }),
         n === 1 ? msg('1 shadow ray per point') : msg(str`${n} × ${n} = ${n * n} shadow rays per point`),
-      )}
-      ${this.vector(
+      ),
+      this.vector(
         {
           name: 'size',
           label: msg('Size'),
@@ -154,8 +156,8 @@ export class RtLightPanel extends StorePanel {
         },
         light.size,
         (size) => changed({ size }),
-      )}
-      ${this.choice<AreaLight['shape']>(
+      ),
+      this.choice<AreaLight['shape']>(
         { name: 'shape', label: msg('Shape'), tooltip: msg('A rectangle or a disc (an ellipse when width and depth differ).') },
         [
           { value: 'rectangle', label: msg('Rectangle') },
@@ -163,8 +165,8 @@ export class RtLightPanel extends StorePanel {
         ],
         light.shape,
         (shape) => changed({ shape }),
-      )}
-    `;
+      ),
+    ];
   }
 }
 

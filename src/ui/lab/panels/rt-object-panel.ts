@@ -1,12 +1,12 @@
 import { msg } from '@lit/localize';
-import { css, html, type TemplateResult } from 'lit';
+import { css, html, nothing } from 'lit';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { Material, SceneObject } from '../../../scene/scene.ts';
 import { LIMITS } from '../../../scene/scene-limits.ts';
 import { MATERIAL_PRESETS, matchingPreset, type MaterialPresetName } from './material-presets.ts';
 import { positionSpec, rotationSpec, scaleSpec } from './placement-specs.ts';
 import { shapeName } from '../scene-names.ts';
-import { StorePanel } from './store-panel.ts';
+import { StorePanel, type ControlPart } from './store-panel.ts';
 
 /**
  * @summary The selected object's material and placement: colour, the Phong coefficients,
@@ -18,6 +18,8 @@ import { StorePanel } from './store-panel.ts';
  * edit's reason is shown next to its control and the control keeps the store's value.
  */
 export class RtObjectPanel extends StorePanel {
+  protected readonly controlPanel = 'object';
+
   static override styles = [
     StorePanel.styles,
     css`
@@ -50,28 +52,25 @@ export class RtObjectPanel extends StorePanel {
       );
     }
     return html`
-      <rt-panel-section heading=${msg('Object')} name="object">
-        ${this.identity(object.name ?? object.id, shapeName(object))}
-        ${this.materialControls(object)}
-      </rt-panel-section>
-      <rt-panel-section heading=${msg('Placement')} name="object-placement">
-        ${this.vector(positionSpec(), object.position, (position) => this.changed(object, { position }))}
-        ${this.vector(rotationSpec(), object.rotation, (rotation) => this.changed(object, { rotation }))}
-        ${this.vector(scaleSpec(), object.scale, (scale) => this.changed(object, { scale }))}
-      </rt-panel-section>
+      ${this.section(msg('Object'), 'object', this.materialControls(object), this.identity(object.name ?? object.id, shapeName(object)))}
+      ${this.section(msg('Placement'), 'object-placement', [
+        this.vector(positionSpec(), object.position, (position) => this.changed(object, { position })),
+        this.vector(rotationSpec(), object.rotation, (rotation) => this.changed(object, { rotation })),
+        this.vector(scaleSpec(), object.scale, (scale) => this.changed(object, { scale })),
+      ])}
     `;
   }
 
-  private materialControls(object: SceneObject): TemplateResult {
+  private materialControls(object: SceneObject): ControlPart[] {
     const m = object.material;
     const material = (changes: Partial<Material>): LabAction => ({ type: 'material.changed', id: object.id, changes });
-    return html`
-      ${this.color(
+    return [
+      this.color(
         { name: 'color', label: msg('Colour'), tooltip: msg('The surface colour, as red, green and blue from 0 to 1 (#ff0000 is 1, 0, 0).') },
         m.color,
         (color) => material({ color }),
-      )}
-      ${this.phongSliders(
+      ),
+      ...this.phongSliders(
         {
           ambient: [msg('Ambient (ka)'), msg('How much of the lights’ ambient light it reflects everywhere, even in shadow.')],
           diffuse: [msg('Diffuse (kd)'), msg('Matte reflection: brightest where the surface faces the light (cos θ).')],
@@ -79,8 +78,8 @@ export class RtObjectPanel extends StorePanel {
         },
         m,
         material,
-      )}
-      ${this.slider(
+      ),
+      this.slider(
         {
           name: 'shininess',
           label: msg('Shininess (n)'),
@@ -92,13 +91,13 @@ export class RtObjectPanel extends StorePanel {
         },
         m.shininess,
         (shininess) => material({ shininess }),
-      )}
-      ${this.switch(
+      ),
+      this.switch(
         { name: 'transparent', label: msg('Transparent'), tooltip: msg('Let light through: rays refract into the object, and partly reflect (Schlick).') },
         m.transparent,
         (transparent) => material({ transparent }),
-      )}
-      ${this.slider(
+      ),
+      this.slider(
         {
           name: 'refractiveIndex',
           label: msg('Refractive index (η)'),
@@ -113,19 +112,20 @@ export class RtObjectPanel extends StorePanel {
         },
         m.refractiveIndex,
         (refractiveIndex) => material({ refractiveIndex }),
-      )}
-      ${this.presets(object)}
-    `;
+      ),
+      this.presets(object),
+    ];
   }
 
-  private presets(object: SceneObject): TemplateResult {
+  private presets(object: SceneObject): ControlPart {
+    if (!this.shows('presets')) return nothing;
     const current = matchingPreset(object.material);
     const labels: Record<MaterialPresetName, [string, string]> = {
       opaque: [msg('Opaque'), msg('Matte with the default finish; keeps the colour.')],
       mirror: [msg('Mirror'), msg('Little diffuse, strong specular: reflects its surroundings; keeps the colour.')],
       glass: [msg('Glass'), msg('Transparent with η 1.5 and a sharp highlight; keeps the colour.')],
     };
-    return html`<div class="presets" role="group" aria-labelledby="presets-label">
+    return html`<div class="presets" role="group" aria-labelledby="presets-label" data-guide="object.presets">
       <span class="presets-label" id="presets-label">${msg('Presets')}</span>
       ${(Object.keys(MATERIAL_PRESETS) as MaterialPresetName[]).map(
         (name) => html`<button

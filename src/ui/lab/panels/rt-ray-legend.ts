@@ -13,6 +13,7 @@ import { StorePanel } from './store-panel.ts';
  * Reads `store` (rays.colorBlindPalette); changes nothing.
  */
 export class RtRayLegend extends StorePanel {
+  protected readonly controlPanel = 'rays';
   static override styles = [
     StorePanel.styles,
     css`

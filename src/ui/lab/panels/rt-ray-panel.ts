@@ -1,5 +1,5 @@
 import { msg } from '@lit/localize';
-import { html } from 'lit';
+import { html, nothing } from 'lit';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { RayViewOptions } from '../../../lab-state/lab-state.ts';
 import './rt-ray-legend.ts';
@@ -37,18 +37,21 @@ const THRESHOLD = { min: 0, max: 0.2, step: 0.001, inputMax: 1 } as const;
  * Each change is a `rays.changed` action on `store`.
  */
 export class RtRayPanel extends StorePanel {
+  protected readonly controlPanel = 'rays';
+  protected override readonly controlIds = { showRays: 'show', colorBlindPalette: 'color-blind' };
+
   override render() {
     const rays = this.state?.rays;
     if (!rays) return html``;
     const set = (changes: Partial<RayViewOptions>): LabAction => ({ type: 'rays.changed', changes });
     return html`
-      <rt-panel-section heading=${msg('Rays')} name="rays">
-        ${this.switch(
+      ${this.section(msg('Rays'), 'rays', [
+        this.switch(
           { name: 'showRays', label: msg('Show rays'), tooltip: msg('Draw the rays of the camera’s pixels in the 3D view.') },
           rays.showRays,
           (showRays) => set({ showRays }),
-        )}
-        ${this.switch(
+        ),
+        this.switch(
           {
             name: 'hideNoHit',
             label: msg('Hide rays that hit nothing'),
@@ -56,8 +59,8 @@ export class RtRayPanel extends StorePanel {
           },
           rays.hideNoHit,
           (hideNoHit) => set({ hideNoHit }),
-        )}
-        ${this.switch(
+        ),
+        this.switch(
           {
             name: 'hideNegligible',
             label: msg('Hide negligible rays'),
@@ -65,8 +68,8 @@ export class RtRayPanel extends StorePanel {
           },
           rays.hideNegligible,
           (hideNegligible) => set({ hideNegligible }),
-        )}
-        ${this.slider(
+        ),
+        this.slider(
           {
             name: 'negligibleThreshold',
             label: msg('Negligible below'),
@@ -77,8 +80,8 @@ export class RtRayPanel extends StorePanel {
           },
           rays.negligibleThreshold,
           (negligibleThreshold) => set({ negligibleThreshold }),
-        )}
-        ${this.slider(
+        ),
+        this.slider(
           {
             name: 'transparency',
             label: msg('Transparency'),
@@ -90,10 +93,10 @@ export class RtRayPanel extends StorePanel {
           },
           rays.transparency,
           (transparency) => set({ transparency }),
-        )}
-      </rt-panel-section>
-      <rt-panel-section heading=${msg('Ray thickness')} name="rays-radius">
-        ${this.switch(
+        ),
+      ])}
+      ${this.section(msg('Ray thickness'), 'rays-radius', [
+        this.switch(
           {
             name: 'dynamicRadius',
             label: msg('Thickness from contribution'),
@@ -101,27 +104,27 @@ export class RtRayPanel extends StorePanel {
           },
           rays.dynamicRadius,
           (dynamicRadius) => set({ dynamicRadius }),
-        )}
-        ${this.radiusSlider('radius', msg('Radius'), msg('How thick every ray is drawn.'), rays.radius, rays.dynamicRadius, (radius) => set({ radius }))}
-        ${this.radiusSlider(
+        ),
+        this.radiusSlider('radius', msg('Radius'), msg('How thick every ray is drawn.'), rays.radius, rays.dynamicRadius, (radius) => set({ radius })),
+        this.radiusSlider(
           'minRadius',
           msg('Radius at 0 %'),
           msg('Radius of a ray that adds nothing to its pixel. It may be larger than the radius at 100 %, to make small contributions stand out.'),
           rays.minRadius,
           !rays.dynamicRadius,
           (minRadius) => set({ minRadius }),
-        )}
-        ${this.radiusSlider(
+        ),
+        this.radiusSlider(
           'maxRadius',
           msg('Radius at 100 %'),
           msg('Radius of a ray that makes the whole pixel colour.'),
           rays.maxRadius,
           !rays.dynamicRadius,
           (maxRadius) => set({ maxRadius }),
-        )}
-      </rt-panel-section>
-      <rt-panel-section heading=${msg('Ray colours')} name="rays-colour">
-        ${this.switch(
+        ),
+      ])}
+      ${this.section(msg('Ray colours'), 'rays-colour', [
+        this.switch(
           {
             name: 'contributionColor',
             label: msg('Fade by contribution'),
@@ -129,8 +132,8 @@ export class RtRayPanel extends StorePanel {
           },
           rays.contributionColor,
           (contributionColor) => set({ contributionColor }),
-        )}
-        ${this.switch(
+        ),
+        this.switch(
           {
             name: 'colorBlindPalette',
             label: msg('Colour-blind-safe colours'),
@@ -138,16 +141,16 @@ export class RtRayPanel extends StorePanel {
           },
           rays.colorBlindPalette,
           (colorBlindPalette) => set({ colorBlindPalette }),
-        )}
-        <rt-ray-legend .store=${this.store}></rt-ray-legend>
-      </rt-panel-section>
-      <rt-panel-section heading=${msg('Animation')} name="rays-animation">
-        ${this.switch(
+        ),
+        this.shows('legend') ? html`<rt-ray-legend data-guide="rays.legend"></rt-ray-legend>` : nothing,
+      ])}
+      ${this.section(msg('Animation'), 'rays-animation', [
+        this.switch(
           { name: 'animate', label: msg('Animate rays'), tooltip: msg('Let the rays grow from the camera, each one starting when the ray before it arrives.') },
           rays.animate,
           (animate) => set({ animate }),
-        )}
-        ${this.slider(
+        ),
+        this.slider(
           {
             name: 'animationSpeed',
             label: msg('Speed'),
@@ -158,8 +161,8 @@ export class RtRayPanel extends StorePanel {
           },
           rays.animationSpeed,
           (animationSpeed) => set({ animationSpeed }),
-        )}
-        ${this.switch(
+        ),
+        this.switch(
           {
             name: 'animatePixelByPixel',
             label: msg('Pixel by pixel'),
@@ -167,13 +170,13 @@ export class RtRayPanel extends StorePanel {
           },
           rays.animatePixelByPixel,
           (animatePixelByPixel) => set({ animatePixelByPixel }),
-        )}
-        ${this.switch(
+        ),
+        this.switch(
           { name: 'loop', label: msg('Loop'), tooltip: msg('Start the animation again after a short pause.') },
           rays.loop,
           (loop) => set({ loop }),
-        )}
-      </rt-panel-section>
+        ),
+      ])}
     `;
   }
 

@@ -28,6 +28,7 @@ const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
  * `object.added`, `light.added`, `object.deleted` or `light.deleted` action on `store`.
  */
 export class RtSceneList extends StorePanel {
+  protected readonly controlPanel = 'scene-list';
   static override properties = {
     ...StorePanel.properties,
     allowEditing: { type: Boolean, attribute: 'allow-editing' },
@@ -210,11 +211,12 @@ export class RtSceneList extends StorePanel {
     const selected = this.selectedKey();
     // Roving tabindex: Tab lands on the selected row, or the first when nothing is selected.
     const tabStop = selected ?? this.items()[0]?.key;
-    const option = (key: string, icon: TemplateResult, name: string, kind: string, selection: Exclude<Selection, null>) =>
+    const option = (key: string, icon: TemplateResult, name: string, kind: string, selection: Exclude<Selection, null>, guide: string) =>
       html`<div
         role="option"
         id=${key}
         data-key=${key}
+        data-guide=${guide}
         tabindex=${key === tabStop ? 0 : -1}
         aria-selected=${key === selected ? 'true' : 'false'}
         @click=${() => this.select({ key, selection })}
@@ -230,7 +232,7 @@ export class RtSceneList extends StorePanel {
             ${repeat(
               scene.objects,
               (o) => o.id,
-              (o) => option(`object:${o.id}`, shapeIcon(o.shape, o.material.color), o.name ?? o.id, shapeName(o), { kind: 'object', id: o.id }),
+              (o) => option(`object:${o.id}`, shapeIcon(o.shape, o.material.color), o.name ?? o.id, shapeName(o), { kind: 'object', id: o.id }, `scene-list.objects scene-list.item:${o.id}`),
             )}
           </div>
           <div role="group" aria-labelledby="lights-label">
@@ -238,12 +240,12 @@ export class RtSceneList extends StorePanel {
             ${repeat(
               scene.lights,
               (l) => l.id,
-              (l) => option(`light:${l.id}`, lightIcon(l.type, l.color), l.name ?? l.id, lightTypeName(l.type) + off(l.type), { kind: 'light', id: l.id }),
+              (l) => option(`light:${l.id}`, lightIcon(l.type, l.color), l.name ?? l.id, lightTypeName(l.type) + off(l.type), { kind: 'light', id: l.id }, `scene-list.lights scene-list.item:${l.id}`),
             )}
           </div>
           <div role="group" aria-labelledby="camera-label">
             <div role="presentation" class="group-label" id="camera-label">${msg('Camera')}</div>
-            ${option('camera', cameraIcon(), msg('Ray tracer camera'), '', { kind: 'camera' })}
+            ${option('camera', cameraIcon(), msg('Ray tracer camera'), '', { kind: 'camera' }, 'scene-list.item:camera')}
           </div>
         </div>
         ${this.errorLine('list')}
@@ -258,10 +260,10 @@ export class RtSceneList extends StorePanel {
     const label = deletable ? msg(str`Delete ${selection.id}`) : msg('Select an object or a light to delete it');
     return html`
       <div class="actions">
-        <button type="button" aria-expanded=${this.adding ? 'true' : 'false'} aria-controls="add" @click=${() => (this.adding = !this.adding)}>
+        <button type="button" data-guide="add-remove.add-object add-remove.add-light" aria-expanded=${this.adding ? 'true' : 'false'} aria-controls="add" @click=${() => (this.adding = !this.adding)}>
           ${this.adding ? '−' : '+'} ${msg('Add')}
         </button>
-        <button type="button" title=${label} ?disabled=${!deletable} @click=${() => this.delete(selection)}>${msg('Delete')}</button>
+        <button type="button" data-guide="add-remove.delete" title=${label} ?disabled=${!deletable} @click=${() => this.delete(selection)}>${msg('Delete')}</button>
       </div>
       ${this.adding ? this.addButtons() : nothing}
       ${this.errorLine('edit')}
@@ -272,15 +274,15 @@ export class RtSceneList extends StorePanel {
     const button = (label: string, title: string, action: LabAction) =>
       html`<button type="button" title=${title} @click=${() => this.add(action)}>${label}</button>`;
     return html`<div class="add" id="add">
-      <fieldset>
+      <fieldset data-guide="add-remove.add-object">
         <legend>${msg('Shapes')}</legend>
         ${SHAPES.map((shape) => button(shapeKindName(shape), msg(str`Add ${shapeKindName(shape)} to the scene`), { type: 'object.added', shape }))}
       </fieldset>
-      <fieldset>
+      <fieldset data-guide="add-remove.add-object">
         <legend>${msg('Models')}</legend>
         ${MESH_ASSET_NAMES.map((mesh) => button(modelName(mesh), msg(str`Add the ${modelName(mesh)} model to the scene`), { type: 'object.added', shape: 'mesh', mesh }))}
       </fieldset>
-      <fieldset class="lights">
+      <fieldset class="lights" data-guide="add-remove.add-light">
         <legend>${msg('Lights')}</legend>
         ${LIGHT_TYPES.map((lightType) => button(lightTypeShortName(lightType), msg(str`Add ${lightTypeName(lightType)} to the scene`), { type: 'light.added', lightType }))}
       </fieldset>

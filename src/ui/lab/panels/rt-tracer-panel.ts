@@ -17,6 +17,8 @@ const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
  * actions on `store`; a refused edit's reason is shown next to its control.
  */
 export class RtTracerPanel extends StorePanel {
+  protected readonly controlPanel = 'tracer';
+
   override render() {
     if (!this.state) return html``;
     const { settings, camera } = this.state.scene;
@@ -24,13 +26,13 @@ export class RtTracerPanel extends StorePanel {
     const cam = (changes: Partial<Camera>): LabAction => ({ type: 'camera.changed', changes });
     const s = settings.supersampling;
     return html`
-      <rt-panel-section heading=${msg('Ray tracer')} name="tracer">
-        ${this.switch(
+      ${this.section(msg('Ray tracer'), 'tracer', [
+        this.switch(
           { name: 'shadows', label: msg('Shadows'), tooltip: msg('Send a shadow ray to each light; when off, every light reaches every point.') },
           settings.shadows,
           (shadows) => set({ shadows }),
-        )}
-        ${this.slider(
+        ),
+        this.slider(
           {
             name: 'maxDepth',
             label: msg('Recursion depth'),
@@ -42,20 +44,20 @@ export class RtTracerPanel extends StorePanel {
           },
           settings.maxDepth,
           (maxDepth) => set({ maxDepth }),
-        )}
-        ${this.color(
+        ),
+        this.color(
           { name: 'background', label: msg('Background'), tooltip: msg('The colour of a ray that hits nothing.') },
           settings.background,
           (background) => set({ background }),
-        )}
-        ${LIGHT_TYPES.map((type) =>
+        ),
+        ...LIGHT_TYPES.map((type) =>
           this.switch(
             lightTypeSwitch(type),
             settings.lightTypes[type],
             (on) => set({ lightTypes: { ...settings.lightTypes, [type]: on } }),
           ),
-        )}
-        ${this.switch(
+        ),
+        this.switch(
           {
             name: 'dithering',
             label: msg('Dithering'),
@@ -63,10 +65,10 @@ export class RtTracerPanel extends StorePanel {
           },
           settings.dithering,
           (dithering) => set({ dithering }),
-        )}
-      </rt-panel-section>
-      <rt-panel-section heading=${msg('Anti-aliasing')} name="tracer-supersampling">
-        ${this.slider(
+        ),
+      ])}
+      ${this.section(msg('Anti-aliasing'), 'tracer-supersampling', [
+        this.slider(
           {
             name: 'supersampling',
             label: msg('Supersampling (s)'),
@@ -80,8 +82,8 @@ export class RtTracerPanel extends StorePanel {
           s,
           (supersampling) => set({ supersampling }),
           s === 1 ? msg('1 ray per pixel') : msg(str`${s} × ${s} = ${s * s} rays per pixel`),
-        )}
-        ${this.choice<SamplePattern>(
+        ),
+        this.choice<SamplePattern>(
           { name: 'samplePattern', label: msg('Pattern'), tooltip: msg('Where the rays go inside each pixel.') },
           [
             { value: 'grid', label: msg('Grid'), tooltip: msg('A regular grid: even, but patterns can show.') },
@@ -90,15 +92,15 @@ export class RtTracerPanel extends StorePanel {
           ],
           settings.samplePattern,
           (samplePattern) => set({ samplePattern }),
-        )}
-        ${this.switch(
+        ),
+        this.switch(
           { name: 'showSamplePoints', label: msg('Show sample points'), tooltip: msg('Draw where each pixel’s rays go on the camera’s screen.') },
           this.state.rays.showSamplePoints,
           (showSamplePoints) => ({ type: 'rays.changed', changes: { showSamplePoints } }),
-        )}
-      </rt-panel-section>
-      <rt-panel-section heading=${msg('Camera')} name="tracer-camera">
-        ${([0, 1] as const).map((axis) =>
+        ),
+      ])}
+      ${this.section(msg('Camera'), 'tracer-camera', [
+        ...([0, 1] as const).map((axis) =>
           this.slider(
             {
               ...pixelsText(axis),
@@ -111,8 +113,8 @@ export class RtTracerPanel extends StorePanel {
             camera.pixels[axis],
             (n) => cam({ pixels: axis === 0 ? [n, camera.pixels[1]] : [camera.pixels[0], n] }),
           ),
-        )}
-        ${this.slider(
+        ),
+        this.slider(
           {
             name: 'fov',
             label: msg('Field of view'),
@@ -124,10 +126,10 @@ export class RtTracerPanel extends StorePanel {
           },
           camera.fov,
           (fov) => cam({ fov }),
-        )}
-      </rt-panel-section>
-      <rt-panel-section heading=${msg('Rendered image')} name="tracer-image">
-        ${this.vector<[number, number]>(
+        ),
+      ])}
+      ${this.section(msg('Rendered image'), 'tracer-image', [
+        this.vector<[number, number]>(
           {
             name: 'imageSize',
             label: msg('Image size'),
@@ -141,8 +143,8 @@ export class RtTracerPanel extends StorePanel {
           },
           settings.imageSize,
           (imageSize) => set({ imageSize }),
-        )}
-      </rt-panel-section>
+        ),
+      ])}
     `;
   }
 }

@@ -1,9 +1,14 @@
 import { css, html, LitElement, nothing, type CSSResultGroup, type PropertyValues, type TemplateResult } from 'lit';
+import { ifDefined } from 'lit/directives/if-defined.js';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { LabState } from '../../../lab-state/lab-state.ts';
 import type { Store } from '../../../lab-state/store.ts';
 import type { Color } from '../../../scene/scene.ts';
 import { LIMITS } from '../../../scene/scene-limits.ts';
+import type { LabPanel } from '../../../quest/lab-controls.ts';
+import { controlIdOf } from './control-ids.ts';
+import { GuideHostController } from '../guide-host.ts';
+import { consumeStore } from '../store-context.ts';
 import type { ValueDetail } from '../../controls/control-element.ts';
 import { controlStyles } from '../../controls/controls.css.ts';
 import { messageLine } from '../../controls/status-message.ts';
@@ -19,6 +24,9 @@ import '../../controls/rt-vector-field.ts';
 /** The Phong terms that objects and lights both weigh. */
 export type PhongTerm = 'ambient' | 'diffuse' | 'specular';
 const PHONG_TERMS: PhongTerm[] = ['ambient', 'diffuse', 'specular'];
+
+/** A control, or nothing when the level leaves it out. */
+export type ControlPart = TemplateResult | typeof nothing;
 
 /** What every control of a panel has: its name (for errors and tests), label and tooltip. */
 export interface ControlText {
@@ -50,14 +58,20 @@ export interface VectorSpec extends ControlText {
 }
 
 /**
- * What the lab's panels share: the store comes down as a property, the panel subscribes
- * while it is on the page and shows the store's state (so a change from the gizmo or a
- * level shows at once), and every change goes up as a named action. A refused action's
- * reason is kept under the name of the control that asked, to be shown next to it.
+ * What the lab's panels share: the store comes from the lab (context) or as a property, the
+ * panel subscribes while it is on the page and shows the store's state (so a change from the
+ * gizmo or a level shows at once), and every change goes up as a named action. A refused
+ * action's reason is kept under the name of the control that asked, to be shown next to it.
+ *
+ * Each panel draws the controls of one panel of the levels' vocabulary (`controlPanel`, see
+ * quest/lab-controls.ts): every such control carries `data-guide="panel.control"` (the guide
+ * ring finds it through the panel's GuideHostController), and `shownControls` narrows the
+ * panel to the level's choice; a section left with no control is left out.
  */
-export class StorePanel extends LitElement {
+export abstract class StorePanel extends LitElement {
   static override properties = {
     store: { attribute: false },
+    shownControls: { attribute: false },
     state: { state: true },
     errors: { state: true },
   };
@@ -87,6 +101,12 @@ export class StorePanel extends LitElement {
 
   /** The app's one store. */
   declare store: Store | undefined;
+  /** The level's choice of this panel's controls (ids of lab-controls.ts), or undefined for all of them. */
+  declare shownControls: readonly string[] | undefined;
+  /** The panel of lab-controls.ts whose controls this element draws. */
+  protected abstract readonly controlPanel: LabPanel;
+  /** Control names whose level id is not their name in kebab case (showRays → show). */
+  protected readonly controlIds: Readonly<Record<string, string>> = {};
   /** The store's state as last seen. */
   declare protected state: LabState | undefined;
   /** The store's reasons for refusing, by control name. */
@@ -98,6 +118,32 @@ export class StorePanel extends LitElement {
   constructor() {
     super();
     this.errors = {};
+    consumeStore(this, (store) => (this.store = store));
+    new GuideHostController(this);
+  }
+
+  /** The level id of the control `name` ("pixels.columns" → "pixels"), when it is one of this panel's. */
+  protected controlId(name: string): string | undefined {
+    return controlIdOf(this.controlPanel, name, this.controlIds);
+  }
+
+  /** Whether the level shows the control `name` (a narrowed panel hides controls levels cannot name). */
+  protected shows(name: string): boolean {
+    if (!this.shownControls) return true;
+    const id = this.controlId(name);
+    return id !== undefined && this.shownControls.includes(id);
+  }
+
+  /** The `data-guide` id of the control `name` ("tracer.supersampling"), if levels can name it. */
+  protected guideOf(name: string): string | undefined {
+    const id = this.controlId(name);
+    return id === undefined ? undefined : `${this.controlPanel}.${id}`;
+  }
+
+  /** A section of `parts` under `lead` (the item's name); left out when the level hides all its controls. */
+  protected section(heading: string, name: string, parts: ControlPart[], lead: ControlPart = nothing): ControlPart {
+    if (this.shownControls && parts.every((part) => part === nothing)) return nothing;
+    return html`<rt-panel-section heading=${heading} name=${name}>${lead}${parts}</rt-panel-section>`;
   }
 
   override connectedCallback(): void {
@@ -157,10 +203,12 @@ export class StorePanel extends LitElement {
   }
 
   /** A slider that dispatches `action(value)` while dragging and on commit; `hint` goes under it. */
-  protected slider(spec: SliderSpec, value: number, action: (value: number) => LabAction, hint?: TemplateResult | string): TemplateResult {
+  protected slider(spec: SliderSpec, value: number, action: (value: number) => LabAction, hint?: TemplateResult | string): ControlPart {
+    if (!this.shows(spec.name)) return nothing;
     const send = (event: CustomEvent<ValueDetail<number>>) => this.send(spec.name, action(event.detail.value));
     return html`<rt-slider
       name=${spec.name}
+      data-guide=${ifDefined(this.guideOf(spec.name))}
       label=${spec.label}
       tooltip=${spec.tooltip}
       .min=${spec.min}
@@ -187,16 +235,18 @@ export class StorePanel extends LitElement {
     text: Record<PhongTerm, [label: string, tooltip: string]>,
     values: Record<PhongTerm, number>,
     action: (changes: Partial<Record<PhongTerm, number>>) => LabAction,
-  ): TemplateResult[] {
+  ): ControlPart[] {
     const [min, max] = LIMITS.coefficient;
     return PHONG_TERMS.map((term) =>
       this.slider({ name: term, label: text[term][0], tooltip: text[term][1], min, max, step: 0.01 }, values[term], (value) => action({ [term]: value })),
     );
   }
 
-  protected switch(text: ControlText, checked: boolean, action: (checked: boolean) => LabAction): TemplateResult {
+  protected switch(text: ControlText, checked: boolean, action: (checked: boolean) => LabAction): ControlPart {
+    if (!this.shows(text.name)) return nothing;
     return html`<rt-switch
       name=${text.name}
+      data-guide=${ifDefined(this.guideOf(text.name))}
       label=${text.label}
       tooltip=${text.tooltip}
       .checked=${checked}
@@ -205,10 +255,12 @@ export class StorePanel extends LitElement {
     ></rt-switch>`;
   }
 
-  protected color(text: ControlText, value: Color, action: (value: Color) => LabAction): TemplateResult {
+  protected color(text: ControlText, value: Color, action: (value: Color) => LabAction): ControlPart {
+    if (!this.shows(text.name)) return nothing;
     const send = (event: CustomEvent<ValueDetail<Color>>) => this.send(text.name, action(event.detail.value));
     return html`<rt-color-field
       name=${text.name}
+      data-guide=${ifDefined(this.guideOf(text.name))}
       label=${text.label}
       tooltip=${text.tooltip}
       .value=${value}
@@ -218,9 +270,11 @@ export class StorePanel extends LitElement {
     ></rt-color-field>`;
   }
 
-  protected choice<T extends string>(text: ControlText, options: ChoiceOption[], value: T, action: (value: T) => LabAction): TemplateResult {
+  protected choice<T extends string>(text: ControlText, options: ChoiceOption[], value: T, action: (value: T) => LabAction): ControlPart {
+    if (!this.shows(text.name)) return nothing;
     return html`<rt-choice
       name=${text.name}
+      data-guide=${ifDefined(this.guideOf(text.name))}
       label=${text.label}
       tooltip=${text.tooltip}
       .options=${options}
@@ -230,9 +284,11 @@ export class StorePanel extends LitElement {
     ></rt-choice>`;
   }
 
-  protected vector<V extends number[]>(spec: VectorSpec, value: V, action: (value: V) => LabAction): TemplateResult {
+  protected vector<V extends number[]>(spec: VectorSpec, value: V, action: (value: V) => LabAction): ControlPart {
+    if (!this.shows(spec.name)) return nothing;
     return html`<rt-vector-field
       name=${spec.name}
+      data-guide=${ifDefined(this.guideOf(spec.name))}
       label=${spec.label}
       tooltip=${spec.tooltip}
       .axes=${spec.axes ?? ['x', 'y', 'z']}

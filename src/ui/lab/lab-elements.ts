@@ -1,0 +1,25 @@
+/**
+ * Registers every element the lab's template uses (imported for their side effect: each
+ * module defines its custom element).
+ */
+import '../classroom/rt-export-menu.ts';
+import '../game/rt-participant-dialog.ts';
+import '../classroom/rt-survey.ts';
+import '../game/rt-level-map.ts';
+import '../game/rt-progress-menu.ts';
+import '../game/rt-quest-panel.ts';
+import '../game/rt-score.ts';
+import '../controls/rt-theme-toggle.ts';
+import '../controls/rt-toast.ts';
+import './panels/rt-bvh-panel.ts';
+import './panels/rt-file-panel.ts';
+import './panels/rt-light-panel.ts';
+import './panels/rt-object-panel.ts';
+import './panels/rt-ray-panel.ts';
+import './panels/rt-scene-list.ts';
+import './panels/rt-tracer-panel.ts';
+import './render-window/rt-render-window.ts';
+import './rt-guide-ring.ts';
+import './rt-ray-tooltip.ts';
+import './rt-scene-view.ts';
+import './rt-screen-preview.ts';

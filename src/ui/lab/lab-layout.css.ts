@@ -1,0 +1,160 @@
+import { css } from 'lit';
+
+/**
+ * The lab's grid: the header over three columns (panels, the 3D view, the tasks), the level
+ * map over all of them below the header, the render window and the toast over the view.
+ */
+export const labLayout = css`
+    :host {
+      display: grid;
+      grid-template-columns: minmax(260px, 300px) 1fr minmax(220px, 280px);
+      grid-template-rows: auto 1fr;
+      height: 100vh;
+      overflow: hidden;
+    }
+    header {
+      grid-column: 1 / -1;
+      display: flex;
+      align-items: center;
+      gap: var(--rt-space);
+      padding: 6px calc(var(--rt-space) * 2);
+      background: var(--rt-surface);
+      border-bottom: 1px solid var(--rt-border);
+    }
+    h1 {
+      font-size: 1.15rem;
+      margin: 0 auto 0 0;
+    }
+    .sidebar,
+    .tasks {
+      overflow-y: auto;
+      background: var(--rt-surface);
+      padding: var(--rt-space);
+      display: flex;
+      flex-direction: column;
+      gap: var(--rt-space);
+    }
+    /* Every area has its cell: the level map, placed over row 2, must not push them into a row of their own. */
+    .sidebar {
+      grid-area: 2 / 1;
+      border-right: 1px solid var(--rt-border);
+    }
+    main {
+      grid-area: 2 / 2;
+    }
+    .tasks {
+      grid-area: 2 / 3;
+      border-left: 1px solid var(--rt-border);
+      color: var(--rt-muted);
+    }
+    .your-data {
+      margin-top: auto;
+      padding-top: var(--rt-space);
+      border-top: 1px solid var(--rt-border);
+    }
+    .your-data h2 {
+      font-size: 0.875rem;
+      margin: 0 0 var(--rt-space);
+      color: var(--rt-muted);
+    }
+    .header-actions {
+      display: flex;
+      align-items: center;
+      gap: var(--rt-space);
+      flex-wrap: wrap;
+    }
+    .header-actions button:not(.primary),
+    .welcome button {
+      font: inherit;
+      min-height: var(--rt-target);
+      padding: 0 12px;
+      border-radius: 8px;
+      border: 1px solid var(--rt-border);
+      background: var(--rt-surface);
+      color: var(--rt-text);
+      cursor: pointer;
+    }
+    .header-actions button:focus-visible,
+    .welcome button:focus-visible {
+      outline: 3px solid var(--rt-focus);
+      outline-offset: 2px;
+    }
+    /* The map covers the whole lab below the header: the level behind it waits. */
+    rt-level-map {
+      grid-column: 1 / -1;
+      grid-row: 2;
+      z-index: 30;
+      min-height: 0;
+    }
+    /* The size of the task panel's text below it, so the two read as one column. */
+    .welcome {
+      padding: 10px;
+      border-radius: var(--rt-radius);
+      background: var(--rt-accent-soft);
+      color: var(--rt-text);
+      font-size: 0.875rem;
+      line-height: 1.3;
+    }
+    .welcome p {
+      margin: 0 0 8px;
+    }
+    .empty-sidebar {
+      color: var(--rt-muted);
+      font-size: 0.875rem;
+    }
+    main {
+      position: relative;
+      min-width: 0;
+      min-height: 0;
+    }
+    rt-scene-view {
+      position: absolute;
+      inset: 0;
+    }
+    rt-screen-preview {
+      position: absolute;
+      left: var(--rt-space);
+      bottom: var(--rt-space);
+      z-index: 5;
+      /* A thumbnail of the camera's image: big enough to click a pixel, small enough to leave the scene in view. */
+      width: min(240px, 30%);
+      /* On a card like the view's buttons: its caption must stay readable over a light floor in the dark theme. */
+      box-sizing: border-box;
+      padding: 4px;
+      border-radius: var(--rt-radius);
+      background: var(--rt-surface);
+      box-shadow: var(--rt-shadow);
+    }
+    rt-render-window {
+      position: absolute;
+      inset: var(--rt-space);
+      z-index: 10;
+    }
+    .primary {
+      font: inherit;
+      min-height: var(--rt-target);
+      padding: 0 14px;
+      border-radius: 8px;
+      border: 0;
+      background: var(--rt-accent);
+      color: var(--rt-accent-text);
+      cursor: pointer;
+      font-weight: 600;
+    }
+    .primary:focus-visible {
+      outline: 3px solid var(--rt-focus);
+      outline-offset: 2px;
+    }
+    /* Narrow screens (1024 px tablets) keep the tasks and narrow both sides; the free lab gives the tasks' room to the view. */
+    @media (max-width: 1180px) {
+      :host {
+        grid-template-columns: minmax(220px, 240px) 1fr minmax(240px, 260px);
+      }
+      :host([free-lab]) {
+        grid-template-columns: minmax(240px, 280px) 1fr;
+      }
+      :host([free-lab]) .tasks {
+        display: none;
+      }
+    }
+`;
