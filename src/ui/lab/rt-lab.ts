@@ -208,7 +208,7 @@ export class RtLab extends LitElement {
     const catalog = session?.catalog ?? { chapters: [], errors: [] };
     const panel = (name: UiPanel, part: unknown) => (shows(name) ? part : nothing);
     const sidebar = [
-      panel('scene-list', html`<rt-scene-list ?allow-editing=${shows('add-remove')}></rt-scene-list>`),
+      panel('scene-list', html`<rt-scene-list ?allow-editing=${shows('add-remove')} .shownControls=${controls('scene-list')}></rt-scene-list>`),
       state.selection?.kind === 'light' && shows('light')
         ? html`<rt-light-panel .shownControls=${controls('light')}></rt-light-panel>`
         : shows('object')

@@ -26,6 +26,8 @@ const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
  * and select (the 3D view follows at once); Delete removes the selected item. Add opens
  * buttons for each shape, model and light type. Every change is a `selection.changed`,
  * `object.added`, `light.added`, `object.deleted` or `light.deleted` action on `store`.
+ * `shownControls` (scene-list.objects, scene-list.lights) can leave out the objects or the
+ * lights; the camera is always listed.
  */
 export class RtSceneList extends StorePanel {
   protected readonly controlPanel = 'scene-list';
@@ -146,8 +148,8 @@ export class RtSceneList extends StorePanel {
     const scene = this.state?.scene;
     if (!scene) return [];
     return [
-      ...scene.objects.map((o): Item => ({ key: `object:${o.id}`, selection: { kind: 'object', id: o.id } })),
-      ...scene.lights.map((l): Item => ({ key: `light:${l.id}`, selection: { kind: 'light', id: l.id } })),
+      ...(this.shows('objects') ? scene.objects : []).map((o): Item => ({ key: `object:${o.id}`, selection: { kind: 'object', id: o.id } })),
+      ...(this.shows('lights') ? scene.lights : []).map((l): Item => ({ key: `light:${l.id}`, selection: { kind: 'light', id: l.id } })),
       { key: 'camera', selection: { kind: 'camera' } },
     ];
   }
@@ -227,22 +229,26 @@ export class RtSceneList extends StorePanel {
     return html`
       <rt-panel-section heading=${msg('Scene')} name="scene">
         <div role="listbox" aria-label=${msg('Objects, lights and camera')} @keydown=${this.onKeydown}>
-          <div role="group" aria-labelledby="objects-label">
-            <div role="presentation" class="group-label" id="objects-label">${msg('Objects')}</div>
-            ${repeat(
-              scene.objects,
-              (o) => o.id,
-              (o) => option(`object:${o.id}`, shapeIcon(o.shape, o.material.color), o.name ?? o.id, shapeName(o), { kind: 'object', id: o.id }, `scene-list.objects scene-list.item:${o.id}`),
-            )}
-          </div>
-          <div role="group" aria-labelledby="lights-label">
-            <div role="presentation" class="group-label" id="lights-label">${msg('Lights')}</div>
-            ${repeat(
-              scene.lights,
-              (l) => l.id,
-              (l) => option(`light:${l.id}`, lightIcon(l.type, l.color), l.name ?? l.id, lightTypeName(l.type) + off(l.type), { kind: 'light', id: l.id }, `scene-list.lights scene-list.item:${l.id}`),
-            )}
-          </div>
+          ${this.shows('objects')
+            ? html`<div role="group" aria-labelledby="objects-label">
+                <div role="presentation" class="group-label" id="objects-label">${msg('Objects')}</div>
+                ${repeat(
+                  scene.objects,
+                  (o) => o.id,
+                  (o) => option(`object:${o.id}`, shapeIcon(o.shape, o.material.color), o.name ?? o.id, shapeName(o), { kind: 'object', id: o.id }, `scene-list.objects scene-list.item:${o.id}`),
+                )}
+              </div>`
+            : nothing}
+          ${this.shows('lights')
+            ? html`<div role="group" aria-labelledby="lights-label">
+                <div role="presentation" class="group-label" id="lights-label">${msg('Lights')}</div>
+                ${repeat(
+                  scene.lights,
+                  (l) => l.id,
+                  (l) => option(`light:${l.id}`, lightIcon(l.type, l.color), l.name ?? l.id, lightTypeName(l.type) + off(l.type), { kind: 'light', id: l.id }, `scene-list.lights scene-list.item:${l.id}`),
+                )}
+              </div>`
+            : nothing}
           <div role="group" aria-labelledby="camera-label">
             <div role="presentation" class="group-label" id="camera-label">${msg('Camera')}</div>
             ${option('camera', cameraIcon(), msg('Ray tracer camera'), '', { kind: 'camera' }, 'scene-list.item:camera')}

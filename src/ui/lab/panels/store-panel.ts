@@ -5,7 +5,7 @@ import type { LabState } from '../../../lab-state/lab-state.ts';
 import type { Store } from '../../../lab-state/store.ts';
 import type { Color } from '../../../scene/scene.ts';
 import { LIMITS } from '../../../scene/scene-limits.ts';
-import type { LabPanel } from '../../../quest/lab-controls.ts';
+import { LAB_CONTROLS, type LabPanel } from '../../../quest/lab-controls.ts';
 import { controlIdOf } from './control-ids.ts';
 import { GuideHostController } from '../guide-host.ts';
 import { consumeStore } from '../store-context.ts';
@@ -189,8 +189,10 @@ export abstract class StorePanel extends LitElement {
 
   /** A section that says what to select, for when the panel's kind of item is not selected. */
   protected emptyState(heading: string, name: string, text: string, hint: string): TemplateResult {
+    // The ring for any of the panel's controls goes here while they wait for a selection.
+    const guides = LAB_CONTROLS[this.controlPanel].filter((id) => !this.shownControls || this.shownControls.includes(id)).map((id) => `${this.controlPanel}.${id}`);
     return html`<rt-panel-section heading=${heading} name=${name}>
-      <div class="empty">
+      <div class="empty" data-guide=${guides.join(' ')}>
         <p>${text}</p>
         <p class="muted">${hint}</p>
       </div>
