@@ -1,4 +1,4 @@
-import { msg } from '@lit/localize';
+import { msg, str } from '@lit/localize';
 import { html, LitElement, nothing } from 'lit';
 import { loadBrowserCatalog } from '../app/level-catalog-browser.ts';
 import { isSceneFragment } from '../app/scene-link.ts';
@@ -82,11 +82,11 @@ function problemText(result: Extract<AssignmentLinkResult, { ok: false }>): stri
   const reasons = result.reasons.join('; ');
   switch (result.kind) {
     case 'damaged':
-      return msg(`This assignment link is damaged (${reasons}). You are playing freely.`);
+      return msg(str`This assignment link is damaged (${reasons}). You are playing freely.`);
     case 'other-version':
-      return msg(`This assignment link was made for another version of the game (${reasons}). You are playing freely.`);
+      return msg(str`This assignment link was made for another version of the game (${reasons}). You are playing freely.`);
     case 'unknown-levels':
-      return msg(`This assignment link names levels or tasks this version of the game does not have: ${reasons}. You are playing freely.`);
+      return msg(str`This assignment link names levels or tasks this version of the game does not have: ${reasons}. You are playing freely.`);
   }
 }
 

@@ -292,7 +292,7 @@ export class RtLab extends LitElement {
     this.renderPool = createBrowserRenderPool();
     this.tracePool = createBrowserRenderPool(1);
     const tracer = new ScreenTracer(this.tracePool, loadMeshes);
-    tracer.onError = (error) => this.toast(msg(`The rays could not be traced: ${error.message}`), 'error');
+    tracer.onError = (error) => this.toast(msg(str`The rays could not be traced: ${error.message}`), 'error');
     this.screenTracer = tracer;
     this.cleanup.push(
       tracer.subscribe((rays) => {
