@@ -4,6 +4,7 @@ import { loadBrowserCatalog } from '../app/level-catalog-browser.ts';
 import { isSceneFragment } from '../app/scene-link.ts';
 import type { Assignment } from '../classroom/assignment.ts';
 import { decodeAssignment, isAssignmentFragment, type AssignmentLinkResult } from '../classroom/assignment-link.ts';
+import { startLocale } from '../i18n/locale.ts';
 import './rt-dashboard-page.ts';
 import './rt-lab.ts';
 import './rt-link-notice.ts';
@@ -60,6 +61,8 @@ export class RtApp extends LitElement {
     const result = await decodeAssignment(hash, loadBrowserCatalog());
     // The address may have changed while the link was read.
     if (hash !== this.route) return;
+    // The assignment's language is the teacher's choice for the class: set before the lab renders.
+    if (result.ok) await startLocale(result.assignment.locale);
     this.opened = { hash, assignment: result.ok ? result.assignment : null, problem: result.ok ? '' : problemText(result) };
   }
 

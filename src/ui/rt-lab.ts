@@ -14,6 +14,7 @@ import type { ShowMeStage } from '../app/show-me-player.ts';
 import type { Assignment } from '../classroom/assignment.ts';
 import { SurveyStore } from '../classroom/survey-store.ts';
 import type { SurveySubmission } from '../classroom/survey-answers.ts';
+import { chooseLocale, currentLocale } from '../i18n/locale.ts';
 import { ALWAYS_SHOWN, UI_PANELS, type LabPanel } from '../quest/lab-controls.ts';
 import type { LevelCatalog } from '../quest/level-index.ts';
 import { MemoryStorage, type KeyValueStorage } from '../quest/progress-store.ts';
@@ -326,6 +327,8 @@ export class RtLab extends LitElement {
     const storage = browserStorage();
     const session = new QuestSession({ store: this.store, catalog, storage, assignment: this.assignment });
     this.session = session;
+    // The level texts speak the app's language (an address's ?lang= or the menu's choice may differ from the saved one).
+    if (session.locale !== currentLocale()) session.setLocale(currentLocale());
     this.sessionCleanup.push(
       session.subscribe(() => this.gameChanged()),
       session.attach(document),
@@ -488,6 +491,7 @@ export class RtLab extends LitElement {
     switch (command.kind) {
       case 'locale':
         session.setLocale(command.locale);
+        void chooseLocale(command.locale);
         return;
       case 'export': {
         const link = document.createElement('a');
