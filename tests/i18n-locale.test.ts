@@ -36,6 +36,7 @@ describe('the app language at run time', () => {
   const lit = new FakeElement(true);
   const page = { documentElement: { lang: 'en' }, querySelectorAll: () => [lit] };
   let locale: typeof import('../src/i18n/locale.ts');
+  let numbers: typeof import('../src/i18n/number-format.ts');
 
   beforeAll(async () => {
     vi.stubGlobal('window', new EventTarget());
@@ -43,6 +44,7 @@ describe('the app language at run time', () => {
     vi.stubGlobal('localStorage', storage);
     vi.stubGlobal('location', { search: '?lang=nl' });
     locale = await import('../src/i18n/locale.ts');
+    numbers = await import('../src/i18n/number-format.ts');
   });
 
   afterAll(() => {
@@ -76,5 +78,14 @@ describe('the app language at run time', () => {
     expect(await locale.startLocale()).toBe('nl');
     expect(msg('Menu')).toBe('Menu');
     expect(msg('Your progress')).toBe('Jouw voortgang');
+  });
+
+  it('writes numbers the way the current language does, with one formatter kept across a change', async () => {
+    const count = numbers.localNumbers();
+    const share = numbers.localNumbers({ minimumFractionDigits: 1, maximumFractionDigits: 1 });
+    await locale.useLocale('nl');
+    expect([count.format(8624), share.format(99.46)]).toEqual(['8.624', '99,5']);
+    await locale.useLocale('en');
+    expect([count.format(8624), share.format(99.46)]).toEqual(['8,624', '99.5']);
   });
 });

@@ -9,7 +9,8 @@
     /* eslint-disable @typescript-eslint/no-explicit-any */
 
     export const templates = {
-      's003a9c230e9257e9': `Breedte en diepte van de lamp in meter (bij een schijf de diameters).`,
+      'gizmo-mode-scale': `Schalen`,
+'s003a9c230e9257e9': `Breedte en diepte van de lamp in meter (bij een schijf de diameters).`,
 's0043cbab8a7a7cfc': `Schuif`,
 's0044bf95b1930940': `Het geraytracede beeld en het rasterbeeld naast elkaar`,
 's0108d9aff6f5fbcb': `Verborgen: alleen de opdracht`,
