@@ -4,6 +4,7 @@
 import { msg, str } from '@lit/localize';
 import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import { LOCALE_KEY } from '../src/i18n/locale-choice.ts';
+import { progressProblemText } from '../src/i18n/progress-problem-text.ts';
 import { rerenderAll } from '../src/i18n/rerender-all.ts';
 import { MemoryStorage } from '../src/quest/progress-store.ts';
 
@@ -87,5 +88,15 @@ describe('the app language at run time', () => {
     expect([count.format(8624), share.format(99.46)]).toEqual(['8.624', '99,5']);
     await locale.useLocale('en');
     expect([count.format(8624), share.format(99.46)]).toEqual(['8,624', '99.5']);
+  });
+
+  it("words the progress store's problems in the learner's language", async () => {
+    const problem = { kind: 'damaged', reasons: [], backupKey: 'rtq.progress.backup.1', raw: '{' } as const;
+    await locale.useLocale('nl');
+    expect(progressProblemText(problem)).toBe(
+      'Je opgeslagen voortgang is beschadigd en kon niet worden gelezen. Je begint weer vanaf het begin. De oude gegevens zijn bewaard als reservekopie (rtq.progress.backup.1).',
+    );
+    await locale.useLocale('en');
+    expect(progressProblemText(problem)).toMatch(/^Your saved progress is damaged/);
   });
 });

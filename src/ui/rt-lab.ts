@@ -15,6 +15,7 @@ import type { Assignment } from '../classroom/assignment.ts';
 import { SurveyStore } from '../classroom/survey-store.ts';
 import type { SurveySubmission } from '../classroom/survey-answers.ts';
 import { chooseLocale, currentLocale } from '../i18n/locale.ts';
+import { progressProblemText } from '../i18n/progress-problem-text.ts';
 import { ALWAYS_SHOWN, UI_PANELS, type LabPanel } from '../quest/lab-controls.ts';
 import type { LevelCatalog } from '../quest/level-index.ts';
 import { MemoryStorage, type KeyValueStorage } from '../quest/progress-store.ts';
@@ -335,7 +336,7 @@ export class RtLab extends LitElement {
       () => session.dispose(),
     );
     // The toast is on the page after the first render.
-    const problems = [session.problem?.message, catalog.errors.length > 0 ? msg(str`The level list could not be read: ${catalog.errors.join('; ')}`) : undefined];
+    const problems = [session.problem && progressProblemText(session.problem), catalog.errors.length > 0 ? msg(str`The level list could not be read: ${catalog.errors.join('; ')}`) : undefined];
     void this.updateComplete.then(() => problems.forEach((problem) => problem && this.toast(problem, 'error')));
     const newcomer = Object.keys(session.engine.progress.levels).length === 0 && session.engine.progress.current === null;
     // #free-lab (a bookmark, the lab's own browser tests) goes straight to the free lab.
