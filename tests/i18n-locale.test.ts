@@ -6,7 +6,7 @@ import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import { LOCALE_KEY } from '../src/i18n/locale-choice.ts';
 import { progressProblemText } from '../src/i18n/progress-problem-text.ts';
 import { rerenderAll } from '../src/i18n/rerender-all.ts';
-import { MemoryStorage } from '../src/quest/progress-store.ts';
+import { MemoryStorage, type ProgressProblem } from '../src/quest/progress-store.ts';
 
 /** A stand-in element: counts its re-renders, may hold a shadow root with more elements. */
 class FakeElement {
@@ -91,7 +91,7 @@ describe('the app language at run time', () => {
   });
 
   it("words the progress store's problems in the learner's language", async () => {
-    const problem = { kind: 'damaged', reasons: [], backupKey: 'rtq.progress.backup.1', raw: '{' } as const;
+    const problem: ProgressProblem = { kind: 'damaged', reasons: [], backupKey: 'rtq.progress.backup.1', raw: '{' };
     await locale.useLocale('nl');
     expect(progressProblemText(problem)).toBe(
       'Je opgeslagen voortgang is beschadigd en kon niet worden gelezen. Je begint weer vanaf het begin. De oude gegevens zijn bewaard als reservekopie (rtq.progress.backup.1).',
