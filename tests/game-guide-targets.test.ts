@@ -11,6 +11,8 @@ describe('guide target names → places on the page', () => {
   it('finds view buttons by their data-command inside the toolbar', () => {
     expect(locateGuideTarget('view.fly-to-camera')).toEqual({ kind: 'element', path: ['rt-scene-view', 'rt-view-toolbar', '[data-command="fly"]'] });
     expect(locateGuideTarget('render.open')).toEqual({ kind: 'element', path: ['[data-command="render-open"]'] });
+    // Not by its aria-label, which is in the learner's language.
+    expect(locateGuideTarget('render.close')).toEqual({ kind: 'element', path: ['rt-render-window', '[data-command="render-close"]'] });
   });
 
   it('reads items and pixels', () => {

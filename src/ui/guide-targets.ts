@@ -94,7 +94,7 @@ export const CONTROL_PATHS: Record<ControlTarget, ElementPath | null> = {
   'render.zoom': ['rt-render-window'],
   'render.save': ['rt-render-window'],
   'render.compare': ['rt-render-window', 'rt-image-compare'],
-  'render.close': ['rt-render-window', '[aria-label="Close the render window"]'],
+  'render.close': ['rt-render-window', '[data-command="render-close"]'],
   'add-remove.add-object': ['rt-scene-list', '.add'],
   'add-remove.add-light': ['rt-scene-list', '.add'],
   'add-remove.delete': ['rt-scene-list', '.actions'],

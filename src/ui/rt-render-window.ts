@@ -398,7 +398,7 @@ export class RtRenderWindow extends LitElement {
         <span class="size" title=${msg('The size of the image the next render makes (set in the ray tracer panel)')}>
           ${msg(str`${width} × ${height} pixels`)}
         </span>
-        <button @click=${this.requestClose} aria-label=${msg('Close the render window')} title=${msg('Close the render window (Esc)')}>✕</button>
+        <button data-command="render-close" @click=${this.requestClose} aria-label=${msg('Close the render window')} title=${msg('Close the render window (Esc)')}>✕</button>
       </header>
       <div class="actions">
         <button class="primary" ${ref(this.renderButton)} @click=${() => void this.startRender()} title=${msg('Ray trace the whole image with all workers (Enter)')}>
