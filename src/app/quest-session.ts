@@ -2,6 +2,7 @@ import type { Assignment } from '../classroom/assignment.ts';
 import { systemClock, type QuestClock } from '../quest/event-log.ts';
 import { playableLevels, type LevelCatalog } from '../quest/level-index.ts';
 import type { Locale } from '../quest/localized-text.ts';
+import { saveProblemText } from '../i18n/progress-problem-text.ts';
 import { exportProgress, parseProgressJson, PROGRESS_KEY, ProgressStore, type KeyValueStorage, type ProgressProblem } from '../quest/progress-store.ts';
 import { QuestEngine, type OpenLevelResult } from '../quest/quest-engine.ts';
 import { defaultScene } from '../scene/scene-defaults.ts';
@@ -302,7 +303,7 @@ export class QuestSession {
 
   private save(): void {
     const saved = this.progress.save(this.engineNow.progress);
-    this.lastSaveError = saved.ok ? null : saved.message;
+    this.lastSaveError = saved.ok ? null : saveProblemText(saved.kind);
   }
 
   private keepSandbox(scene: Scene): void {

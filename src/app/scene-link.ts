@@ -1,3 +1,4 @@
+import { msg, str } from '@lit/localize';
 import { fromBase64Url, toBase64Url } from '../util/base64url.ts';
 import { readJson } from '../util/read-json.ts';
 import { parseScene, type SceneParseResult } from '../scene/scene-schema.ts';
@@ -40,14 +41,14 @@ export async function sceneLinkUrl(scene: Scene, appAddress: string): Promise<st
  * scene; problems are the scene schema's `path: reason` lines, or one reason for the link.
  */
 export async function decodeSceneLink(hash: string): Promise<SceneParseResult> {
-  if (!isSceneFragment(hash)) return damaged('it does not start with #/s/');
+  if (!isSceneFragment(hash)) return damaged(msg('it does not start with #/s/'));
   const bytes = fromBase64Url(hash.slice(SCENE_LINK_PREFIX.length));
-  if (bytes === null || bytes.length === 0) return damaged('it contains characters that cannot be part of a link, or it was cut short');
+  if (bytes === null || bytes.length === 0) return damaged(msg('it contains characters that cannot be part of a link, or it was cut short'));
   let text: string;
   try {
     text = new TextDecoder('utf-8', { fatal: true }).decode(await transform(bytes, new DecompressionStream('deflate'), MAX_SCENE_FILE_BYTES));
   } catch (error) {
-    return damaged(error instanceof TooLarge ? error.message : 'it was cut short or changed');
+    return damaged(error instanceof TooLarge ? error.message : msg('it was cut short or changed'));
   }
   const json = readJson(text);
   return json.ok ? parseScene(json.value) : damaged(json.error);
@@ -69,7 +70,7 @@ async function transform(bytes: Uint8Array, stream: CompressionStream | Decompre
     length += next.value.length;
     if (length > limit) {
       await reader.cancel();
-      throw new TooLarge(`it unpacks to more than ${limit / 1024} kB, more than any scene`);
+      throw new TooLarge(msg(str`it unpacks to more than ${limit / 1024} kB, more than any scene`));
     }
     chunks.push(next.value);
   }

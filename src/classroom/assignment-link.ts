@@ -1,3 +1,4 @@
+import { msg, str } from '@lit/localize';
 import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
 import type { LevelCatalog } from '../quest/level-index.ts';
 import { readJson } from '../util/read-json.ts';
@@ -47,21 +48,21 @@ export async function assignmentUrl(assignment: Assignment, appAddress: string):
  * JSON, every field, and (given the catalog) that its levels and tasks exist.
  */
 export async function decodeAssignment(hash: string, catalog?: LevelCatalog): Promise<AssignmentLinkResult> {
-  if (!isAssignmentFragment(hash)) return damaged('it does not start with #/a/');
+  if (!isAssignmentFragment(hash)) return damaged(msg('it does not start with #/a/'));
   const body = hash.slice(LINK_PREFIX.length);
   const dot = body.indexOf('.');
-  if (dot < 0) return damaged('the version number is missing');
+  if (dot < 0) return damaged(msg('the version number is missing'));
   const version = body.slice(0, dot);
   if (version !== String(LINK_VERSION)) {
-    return { ok: false, kind: 'other-version', reasons: [`the link has version ${JSON.stringify(version)}; this app opens version ${LINK_VERSION}`] };
+    return { ok: false, kind: 'other-version', reasons: [msg(str`the link has version ${JSON.stringify(version)}; this app opens version ${LINK_VERSION}`)] };
   }
   const bytes = fromBase64Url(body.slice(dot + 1));
-  if (bytes === null || bytes.length === 0) return damaged('it contains characters that cannot be part of a link, or it was cut short');
+  if (bytes === null || bytes.length === 0) return damaged(msg('it contains characters that cannot be part of a link, or it was cut short'));
   let text: string;
   try {
     text = new TextDecoder('utf-8', { fatal: true }).decode(await transform(bytes, new DecompressionStream('deflate')));
   } catch {
-    return damaged('it was cut short or changed');
+    return damaged(msg('it was cut short or changed'));
   }
   const json = readJson(text);
   if (!json.ok) return damaged(json.error);

@@ -1,3 +1,4 @@
+import { msg, str } from '@lit/localize';
 import { HOW_COMPLETED, type HowCompleted } from '../quest/event-log.ts';
 import type { TaskAttempt } from './task-attempts.ts';
 import { parseCsv } from './csv-text.ts';
@@ -27,10 +28,10 @@ export function readCsvExport(file: string, text: string): FileRead {
   const csv = parseCsv(text);
   if (!csv.ok) return { ok: false, file, reason: `damaged CSV: ${csv.error}` };
   const [header, ...rows] = csv.rows;
-  if (!header) return { ok: false, file, reason: 'the file is empty' };
+  if (!header) return { ok: false, file, reason: msg('the file is empty') };
   const column = new Map(header.map((name, index) => [name.trim().toLowerCase(), index]));
   const missing = REQUIRED.filter((name) => !column.has(name));
-  if (missing.length > 0) return { ok: false, file, reason: `not a Ray Tracer Quest CSV export (no column ${missing.map((name) => `"${name}"`).join(', ')})` };
+  if (missing.length > 0) return { ok: false, file, reason: msg(str`not a Ray Tracer Quest CSV export (no column ${missing.map((name) => `"${name}"`).join(', ')})`) };
 
   const cell = (row: string[], name: string) => row[column.get(name) ?? -1] ?? '';
   const attempts: TaskAttempt[] = [];

@@ -1,3 +1,4 @@
+import { msg } from '@lit/localize';
 import type { FileRead } from './dashboard-record.ts';
 import { readCsvExport } from './dashboard-read-csv.ts';
 import { readJsonExport } from './dashboard-read-json.ts';
@@ -10,11 +11,11 @@ export const MAX_EXPORT_BYTES = 20 * 1024 * 1024;
  * first character. Anything else comes back with the reason it was skipped.
  */
 export function readExportFile(file: string, text: string): FileRead {
-  if (text.trim() === '') return { ok: false, file, reason: 'the file is empty' };
-  if (text.includes('\u0000')) return { ok: false, file, reason: 'not a text file (an image, a document or an archive?)' };
+  if (text.trim() === '') return { ok: false, file, reason: msg('the file is empty') };
+  if (text.includes('\u0000')) return { ok: false, file, reason: msg('not a text file (an image, a document or an archive?)') };
   const lower = file.toLowerCase();
   const looksJson = /^\s*[[{]/.test(text.replace(/^\uFEFF/, ''));
   if (lower.endsWith('.json') || (!lower.endsWith('.csv') && looksJson)) return readJsonExport(file, text);
   if (lower.endsWith('.csv') || /^\uFEFF?[\w" ]+,/.test(text)) return readCsvExport(file, text);
-  return { ok: false, file, reason: 'not a Ray Tracer Quest export (expected a .json or .csv file from the game)' };
+  return { ok: false, file, reason: msg('not a Ray Tracer Quest export (expected a .json or .csv file from the game)') };
 }

@@ -1,3 +1,4 @@
+import { msg, str } from '@lit/localize';
 import { z } from 'zod';
 import { eventLogSchema } from '../quest/event-log.ts';
 import { PROGRESS_KIND } from '../quest/progress.ts';
@@ -30,21 +31,21 @@ export function readJsonExport(file: string, text: string): FileRead {
   const json = readJson(text);
   if (!json.ok) return { ok: false, file, reason: json.error.replace(/^\(root\): /, '') };
   const value = json.value;
-  if (!isRecord(value)) return { ok: false, file, reason: 'not a Ray Tracer Quest export (the file holds no JSON object)' };
-  if (value.kind === PROGRESS_KIND) return { ok: false, file, reason: 'a saved progress file, not an export: export the results from the game instead' };
-  if (value.format !== EXPORT_FORMAT) return { ok: false, file, reason: 'not a Ray Tracer Quest export (no "format": "ray-tracer-quest-export")' };
+  if (!isRecord(value)) return { ok: false, file, reason: msg('not a Ray Tracer Quest export (the file holds no JSON object)') };
+  if (value.kind === PROGRESS_KIND) return { ok: false, file, reason: msg('a saved progress file, not an export: export the results from the game instead') };
+  if (value.format !== EXPORT_FORMAT) return { ok: false, file, reason: msg('not a Ray Tracer Quest export (no "format": "ray-tracer-quest-export")') };
   if (typeof value.version === 'number' && value.version > EXPORT_VERSION) {
-    return { ok: false, file, reason: `made by a newer version of the app (export version ${value.version}); open the dashboard of that version` };
+    return { ok: false, file, reason: msg(str`made by a newer version of the app (export version ${value.version}); open the dashboard of that version`) };
   }
   const parsed = exportSchema.safeParse(value);
   if (!parsed.success) {
     const issue = parsed.error.issues[0];
-    return { ok: false, file, reason: `damaged export: ${issuePath(issue.path)}: ${issue.message}` };
+    return { ok: false, file, reason: msg(str`damaged export: ${issuePath(issue.path)}: ${issue.message}`) };
   }
   const log = eventLogSchema.safeParse(parsed.data.events);
   if (!log.success) {
     const issue = log.error.issues[0];
-    return { ok: false, file, reason: `damaged event log: events.${issuePath(issue.path)}: ${issue.message}` };
+    return { ok: false, file, reason: msg(str`damaged event log: events.${issuePath(issue.path)}: ${issue.message}`) };
   }
   const { attempts, visits } = readLog(log.data);
   return {

@@ -42,9 +42,8 @@ export type ProgressProblemKind = 'damaged' | 'foreign' | 'other-version' | 'unr
 
 /** Why saved progress could not be used, and where the old data went. */
 export interface ProgressProblem {
+  /** What went wrong; the UI words it for the learner, in their language (src/i18n/progress-problem-text.ts). */
   kind: ProgressProblemKind;
-  /** For the learner, in English; the UI may word it from `kind` instead. */
-  message: string;
   /** The `path: reason` lines, for the curious and for bug reports. */
   reasons: string[];
   /** Where the old text was kept, or null when it could not be kept. */
@@ -54,7 +53,9 @@ export interface ProgressProblem {
 }
 
 export type LoadedProgress = { progress: Progress; problem?: ProgressProblem };
-export type SaveResult = { ok: true } | { ok: false; message: string };
+/** Why a save failed: the storage is full, or the browser does not let the app write at all. */
+export type SaveProblemKind = 'storage-full' | 'storage-blocked';
+export type SaveResult = { ok: true } | { ok: false; kind: SaveProblemKind };
 type ParseProblemKind = Exclude<ProgressProblemKind, 'unreadable-storage'>;
 export type ProgressParseResult = { ok: true; progress: Progress } | { ok: false; kind: ParseProblemKind; errors: string[] };
 
@@ -71,25 +72,23 @@ export class ProgressStore {
       raw = this.storage.getItem(this.key);
     } catch (error) {
       const reason = error instanceof Error ? error.message : String(error);
-      return this.fresh({ kind: 'unreadable-storage', message: 'This browser does not let the app read its storage, so progress lasts only while this page is open. Export it to keep it.', reasons: [reason], backupKey: null, raw: null });
+      return this.fresh({ kind: 'unreadable-storage', reasons: [reason], backupKey: null, raw: null });
     }
     if (raw === null) return { progress: newProgress(this.clock) };
     const parsed = parseProgressJson(raw);
     if (parsed.ok) return { progress: parsed.progress };
     const backupKey = this.backUp(raw);
-    const kept = backupKey ? `The old data is kept as a backup (${backupKey}).` : 'The old data could not be kept in the browser: download it now if you want it.';
-    return this.fresh({ kind: parsed.kind, message: `${PROBLEM_MESSAGES[parsed.kind]} You start from the beginning. ${kept}`, reasons: parsed.errors, backupKey, raw });
+    return this.fresh({ kind: parsed.kind, reasons: parsed.errors, backupKey, raw });
   }
 
-  /** Saves, or says why not: the caller keeps the progress in memory either way. */
+  /** Saves, or says why not (the UI words it in the learner's language): the caller keeps the progress in memory either way. */
   save(progress: Progress): SaveResult {
     try {
       this.storage.setItem(this.key, JSON.stringify(progress));
       return { ok: true };
     } catch (error) {
       const full = error instanceof Error && (error.name === 'QuotaExceededError' || error.name === 'NS_ERROR_DOM_QUOTA_REACHED');
-      const why = full ? "The browser's storage is full" : 'The browser does not let the app save';
-      return { ok: false, message: `${why}, so progress is not saved. It is kept while this page is open: export it to keep it.` };
+      return { ok: false, kind: full ? 'storage-full' : 'storage-blocked' };
     }
   }
 
@@ -119,12 +118,6 @@ export class ProgressStore {
     }
   }
 }
-
-const PROBLEM_MESSAGES: Record<ParseProblemKind, string> = {
-  damaged: 'Your saved progress is damaged and could not be read.',
-  foreign: 'The saved data is not Ray Tracer Quest progress.',
-  'other-version': 'Your saved progress was made by another version of Ray Tracer Quest.',
-};
 
 /** Checks progress read from storage or a file: first that it is ours, then its version, then every field. */
 export function parseProgress(input: unknown): ProgressParseResult {

@@ -1,3 +1,4 @@
+import { msg, str } from '@lit/localize';
 import type { MeshData, MeshLibrary } from '../scene/mesh-data.ts';
 import { parseObj } from '../scene/obj-parser.ts';
 
@@ -53,9 +54,9 @@ function loadMesh(name: string): Promise<MeshData> {
 async function fetchMesh(name: string): Promise<MeshData> {
   const url = MODEL_URLS.get(name);
   if (url === undefined) {
-    throw new Error(`mesh "${name}" is not one of the shipped models (${[...MODEL_URLS.keys()].join(', ')})`);
+    throw new Error(msg(str`mesh "${name}" is not one of the shipped models (${[...MODEL_URLS.keys()].join(', ')})`));
   }
   const response = await fetch(url);
-  if (!response.ok) throw new Error(`mesh "${name}": downloading ${url} failed (HTTP ${response.status})`);
+  if (!response.ok) throw new Error(msg(str`mesh "${name}": downloading ${url} failed (HTTP ${response.status})`));
   return parseObj(await response.text(), `${name}.obj`);
 }

@@ -1,4 +1,4 @@
-import { msg } from '@lit/localize';
+import { msg, str } from '@lit/localize';
 import {
   BoxHelper,
   ColorManagement,
@@ -140,7 +140,7 @@ export class LabView {
     this.controls.orbit.addEventListener('start', () => this.flight.userMoved());
     this.flight = new CameraFlight(this.controls, this.scheduler, (atCamera) => this.emit('flight', atCamera));
     this.objects = new SceneSync(meshLoader, (error) => {
-      if (error) this.emit('message', msg(`A model could not be loaded: ${error}`));
+      if (error) this.emit('message', msg(str`A model could not be loaded: ${error}`));
       this.requestRender();
     });
 

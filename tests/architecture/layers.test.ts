@@ -17,6 +17,8 @@ const LAYERS: Record<string, number> = {
   'src/lab-state': 3,
   'src/quest': 4,
   'src/render': 4,
+  'src/locales': 4,
+  'src/i18n': 5,
   'src/classroom': 5,
   'src/view': 6,
   'src/app': 7,

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { newProgress, pointsOf, type Progress } from '../../src/quest/progress.ts';
 import { exportProgress, MemoryStorage, parseProgressJson, PROGRESS_KEY, ProgressStore, type KeyValueStorage } from '../../src/quest/progress-store.ts';
+import { progressProblemText, saveProblemText } from '../../src/i18n/progress-problem-text.ts';
 import { QuestEngine } from '../../src/quest/quest-engine.ts';
 import { initialState } from '../../src/lab-state/lab-state.ts';
 import { Store } from '../../src/lab-state/store.ts';
@@ -63,13 +64,19 @@ describe('recovering from saved data that cannot be used', () => {
     { name: 'a damaged field', saved: JSON.stringify({ ...newProgress(new FakeClock()), levels: { first: { tasks: { orbit: { how: 'guessed', points: -1 } }, hintsUsed: 0 } } }), kind: 'damaged', reason: /^levels\.first\.tasks\.orbit\.how: must be one of done, shown, skipped, got "guessed"$/ },
   ];
 
+  const opening: Record<string, RegExp> = {
+    damaged: /^Your saved progress is damaged and could not be read\. /,
+    foreign: /^The saved data is not Ray Tracer Quest progress\. /,
+    'other-version': /^Your saved progress was made by another version of Ray Tracer Quest\. /,
+  };
   for (const { name, saved, kind, reason } of cases) {
     it(`${name}: a fresh start, a message, and the old data kept under a backup key`, () => {
       const { storage, loaded } = loadFrom(saved);
       const { problem } = loaded;
       expect(problem?.kind).toBe(kind);
       expect(problem?.reasons[0]).toMatch(reason);
-      expect(problem?.message).toMatch(/You start from the beginning\. The old data is kept as a backup \(rtq\.progress\.backup\.2025-03-01T09:00:00\.000Z\)\.$/);
+      expect(problem && progressProblemText(problem)).toMatch(opening[kind]);
+      expect(problem && progressProblemText(problem)).toMatch(/You start from the beginning\. The old data is kept as a backup \(rtq\.progress\.backup\.2025-03-01T09:00:00\.000Z\)\.$/);
       expect(problem?.raw).toBe(saved);
       expect(storage.getItem(problem?.backupKey ?? '')).toBe(saved);
       expect(loaded.progress.levels).toEqual({});
@@ -86,7 +93,7 @@ describe('recovering from saved data that cannot be used', () => {
     const { problem } = store.load(); // same clock reading: the backup key is taken
     expect(problem?.backupKey).toBeNull();
     expect(problem?.raw).toBe('second damage');
-    expect(problem?.message).toMatch(/could not be kept in the browser: download it now/);
+    expect(problem && progressProblemText(problem)).toMatch(/could not be kept in the browser: download it now/);
     expect(storage.getItem(`${PROGRESS_KEY}.backup.2025-03-01T09:00:00.000Z`)).toBe('first damage');
   });
 
@@ -100,17 +107,25 @@ describe('recovering from saved data that cannot be used', () => {
     };
     const { problem, progress } = new ProgressStore(blocked, new FakeClock()).load();
     expect(problem).toMatchObject({ kind: 'unreadable-storage', reasons: ['The operation is insecure.'], backupKey: null, raw: null });
+    expect(problem && progressProblemText(problem)).toMatch(/^This browser does not let the app read its storage, so progress lasts only while this page is open\./);
     expect(progress.levels).toEqual({});
   });
 
-  it('full storage: says why progress was not saved', () => {
-    const full = new MemoryStorage();
-    full.setItem = () => {
-      throw new DOMException('quota', 'QuotaExceededError');
-    };
-    const result = new ProgressStore(full, new FakeClock()).save(newProgress(new FakeClock()));
-    expect(result).toEqual({ ok: false, message: "The browser's storage is full, so progress is not saved. It is kept while this page is open: export it to keep it." });
-  });
+  const refusals = [
+    { name: 'full storage', error: 'QuotaExceededError', kind: 'storage-full', text: /^The browser's storage is full, so progress is not saved\. It is kept while this page is open: export it to keep it\.$/ },
+    { name: 'storage that refuses every write', error: 'SecurityError', kind: 'storage-blocked', text: /^The browser does not let the app save, so progress is not saved\./ },
+  ] as const;
+  for (const { name, error, kind, text } of refusals) {
+    it(`${name}: says why progress was not saved`, () => {
+      const storage = new MemoryStorage();
+      storage.setItem = () => {
+        throw new DOMException('refused', error);
+      };
+      const result = new ProgressStore(storage, new FakeClock()).save(newProgress(new FakeClock()));
+      expect(result).toEqual({ ok: false, kind });
+      expect(saveProblemText(kind)).toMatch(text);
+    });
+  }
 });
 
 describe('export, import and reset', () => {

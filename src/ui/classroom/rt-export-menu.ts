@@ -1,4 +1,4 @@
-import { msg } from '@lit/localize';
+import { msg, str } from '@lit/localize';
 import { css, html, LitElement } from 'lit';
 import type { Assignment } from '../../classroom/assignment.ts';
 import { downloadText } from '../../util/download-file.ts';
@@ -92,7 +92,7 @@ export class RtExportMenu extends LitElement {
       if (file) downloadText(file.text, file.name, file.type);
     } catch (error) {
       const reason = error instanceof Error ? error.message : String(error);
-      this.dispatchEvent(new CustomEvent('export-failed', { detail: msg(`The results could not be exported: ${reason}`), bubbles: true, composed: true }));
+      this.dispatchEvent(new CustomEvent('export-failed', { detail: msg(str`The results could not be exported: ${reason}`), bubbles: true, composed: true }));
     }
   }
 

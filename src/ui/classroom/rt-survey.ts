@@ -1,4 +1,4 @@
-import { msg } from '@lit/localize';
+import { msg, str } from '@lit/localize';
 import { css, html, LitElement, nothing } from 'lit';
 import { checkAnswers, cleanAnswers, type AnswerProblem, type SurveyAnswers, type SurveySubmission } from '../../classroom/survey-answers.ts';
 import type { Survey, SurveyQuestion } from '../../classroom/survey-schema.ts';
@@ -159,7 +159,7 @@ export class RtSurvey extends LitElement {
 
   override render() {
     const survey = this.survey;
-    if (!survey) return html`<p class="problem" role="alert">${msg(`The survey "${this.surveyId}" is not part of this version of the game.`)}</p>`;
+    if (!survey) return html`<p class="problem" role="alert">${msg(str`The survey "${this.surveyId}" is not part of this version of the game.`)}</p>`;
     if (this.submitted) return html`<h2>${this.text(survey.title)}</h2><p role="status">${msg('Thank you! Your answers are saved with your results.')}</p>`;
     const count = Object.keys(this.problems).length;
     return html`
@@ -169,7 +169,7 @@ export class RtSurvey extends LitElement {
         ${survey.questions.map((question, index) => this.renderQuestion(question, index + 1))}
         <div class="actions">
           <button class="primary" type="submit">${msg('Hand in')}</button>
-          ${count > 0 ? html`<span class="problem" role="alert">${msg(`${count} answers still need attention.`)}</span>` : nothing}
+          ${count > 0 ? html`<span class="problem" role="alert">${msg(str`${count} answers still need attention.`)}</span>` : nothing}
         </div>
       </form>
     `;
@@ -250,12 +250,12 @@ export class RtSurvey extends LitElement {
         return msg('Please type a whole number.');
       case 'out-of-range':
         return problem.min !== undefined && problem.max !== undefined
-          ? msg(`Please type a number from ${problem.min} to ${problem.max}.`)
+          ? msg(str`Please type a number from ${problem.min} to ${problem.max}.`)
           : problem.min !== undefined
-            ? msg(`Please type a number of at least ${problem.min}.`)
-            : msg(`Please type a number of at most ${problem.max}.`);
+            ? msg(str`Please type a number of at least ${problem.min}.`)
+            : msg(str`Please type a number of at most ${problem.max}.`);
       case 'too-long':
-        return msg(`Please keep it under ${problem.max} characters.`);
+        return msg(str`Please keep it under ${problem.max} characters.`);
       case 'unknown-option':
         return msg('Please pick one of the options.');
     }

@@ -1,4 +1,4 @@
-import { msg } from '@lit/localize';
+import { msg, str } from '@lit/localize';
 import { css, html, LitElement, nothing } from 'lit';
 import QRCode from 'qrcode';
 import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
@@ -333,9 +333,9 @@ export class RtTeacherPage extends LitElement {
     return html`<li data-level=${id}>
       <div class="level-head">
         <strong>${title}</strong>
-        <button class="icon" type="button" data-move="-1" ?disabled=${index === 0} aria-label=${msg(`Move ${title} up`)} title=${msg('Move up')} @click=${() => this.moveLevel(index, -1)}>↑</button>
-        <button class="icon" type="button" data-move="1" ?disabled=${index === last} aria-label=${msg(`Move ${title} down`)} title=${msg('Move down')} @click=${() => this.moveLevel(index, 1)}>↓</button>
-        <button class="icon" type="button" aria-label=${msg(`Remove ${title}`)} title=${msg('Remove from the assignment')} @click=${() => this.removeLevel(id)}>✕</button>
+        <button class="icon" type="button" data-move="-1" ?disabled=${index === 0} aria-label=${msg(str`Move ${title} up`)} title=${msg('Move up')} @click=${() => this.moveLevel(index, -1)}>↑</button>
+        <button class="icon" type="button" data-move="1" ?disabled=${index === last} aria-label=${msg(str`Move ${title} down`)} title=${msg('Move down')} @click=${() => this.moveLevel(index, 1)}>↓</button>
+        <button class="icon" type="button" aria-label=${msg(str`Remove ${title}`)} title=${msg('Remove from the assignment')} @click=${() => this.removeLevel(id)}>✕</button>
       </div>
       ${level
         ? html`<fieldset>

@@ -74,7 +74,7 @@ export class RtProgressMenu extends LitElement {
       <button popovertarget="menu" title=${msg('Language and progress: export, import, reset')}>☰ ${msg('Menu')}</button>
       <div id="menu" popover>
         <fieldset>
-          <legend>${msg('Language of the lessons')}</legend>
+          <legend>${msg('Language')}</legend>
           ${(
             [
               ['en', 'English'],
@@ -85,7 +85,6 @@ export class RtProgressMenu extends LitElement {
               <input type="radio" name="locale" .checked=${this.locale === locale} @change=${() => send({ kind: 'locale', locale })} /> ${name}
             </label>`,
           )}
-          <p class="muted">${msg('Buttons and menus stay in English for now.')}</p>
         </fieldset>
         <fieldset class="stack">
           <legend>${msg('Your progress')}</legend>

@@ -6,6 +6,8 @@ import type { ShowMeStage } from '../../app/show-me-player.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import type { SurveySubmission } from '../../classroom/survey-answers.ts';
 import { SurveyStore } from '../../classroom/survey-store.ts';
+import { chooseLocale, currentLocale } from '../../i18n/locale.ts';
+import { progressProblemText } from '../../i18n/progress-problem-text.ts';
 import type { Store } from '../../lab-state/store.ts';
 import type { LevelCatalog } from '../../quest/level-index.ts';
 import { MemoryStorage, type KeyValueStorage } from '../../quest/progress-store.ts';
@@ -76,12 +78,14 @@ export class QuestController implements ReactiveController {
     const storage = browserStorage();
     const session = new QuestSession({ store: this.host.store, catalog, storage, assignment: this.host.assignment });
     this.session = session;
+    // The level texts speak the app's language (an address's ?lang= or the menu's choice may differ from the saved one).
+    if (session.locale !== currentLocale()) session.setLocale(currentLocale());
     this.cleanup.push(
       session.subscribe(() => this.changed()),
       session.attach(document),
       () => session.dispose(),
     );
-    const problems = [session.problem?.message, catalog.errors.length > 0 ? msg(str`The level list could not be read: ${catalog.errors.join('; ')}`) : undefined];
+    const problems = [session.problem && progressProblemText(session.problem), catalog.errors.length > 0 ? msg(str`The level list could not be read: ${catalog.errors.join('; ')}`) : undefined];
     // The toast is on the page after the first render.
     void this.host.updateComplete.then(() => problems.forEach((problem) => problem && this.host.toast(problem, 'error')));
     const newcomer = Object.keys(session.engine.progress.levels).length === 0 && session.engine.progress.current === null;
@@ -169,7 +173,9 @@ export class QuestController implements ReactiveController {
     if (!session) return;
     switch (command.kind) {
       case 'locale':
-        return session.setLocale(command.locale);
+        session.setLocale(command.locale);
+        void chooseLocale(command.locale);
+        return;
       case 'export':
         return downloadText(session.exportText(), 'ray-tracer-quest-progress.json', 'application/json');
       case 'import': {

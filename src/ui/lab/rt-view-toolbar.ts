@@ -190,7 +190,7 @@ export class RtViewToolbar extends LitElement {
     const modes = [
       this.modeButton('translate', msg('Move'), 'T', msg('Move the selection with the gizmo (T)')),
       this.modeButton('rotate', msg('Rotate'), 'R', msg('Rotate the selection with the gizmo (R)')),
-      this.modeButton('scale', msg('Scale'), 'S', msg('Scale the selection with the gizmo (S)')),
+      this.modeButton('scale', msg('Scale', { id: 'gizmo-mode-scale', desc: 'A gizmo mode, beside Move and Rotate: a verb' }), 'S', msg('Scale the selection with the gizmo (S)')),
     ].filter((button) => button !== nothing);
     const options = [
       this.toggle(

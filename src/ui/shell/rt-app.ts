@@ -1,9 +1,10 @@
-import { msg } from '@lit/localize';
+import { msg, str } from '@lit/localize';
 import { html, LitElement, nothing } from 'lit';
 import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
 import { isSceneFragment } from '../../app/scene-link.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import { decodeAssignment, isAssignmentFragment, type AssignmentLinkResult } from '../../classroom/assignment-link.ts';
+import { startLocale } from '../../i18n/locale.ts';
 import '../classroom/dashboard/rt-dashboard-page.ts';
 import '../lab/rt-lab.ts';
 import './rt-link-notice.ts';
@@ -60,6 +61,8 @@ export class RtApp extends LitElement {
     const result = await decodeAssignment(hash, loadBrowserCatalog());
     // The address may have changed while the link was read.
     if (hash !== this.route) return;
+    // The assignment's language is the teacher's choice for the class: set before the lab renders.
+    if (result.ok) await startLocale(result.assignment.locale);
     this.opened = { hash, assignment: result.ok ? result.assignment : null, problem: result.ok ? '' : problemText(result) };
   }
 
@@ -82,11 +85,11 @@ function problemText(result: Extract<AssignmentLinkResult, { ok: false }>): stri
   const reasons = result.reasons.join('; ');
   switch (result.kind) {
     case 'damaged':
-      return msg(`This assignment link is damaged (${reasons}). You are playing freely.`);
+      return msg(str`This assignment link is damaged (${reasons}). You are playing freely.`);
     case 'other-version':
-      return msg(`This assignment link was made for another version of the game (${reasons}). You are playing freely.`);
+      return msg(str`This assignment link was made for another version of the game (${reasons}). You are playing freely.`);
     case 'unknown-levels':
-      return msg(`This assignment link names levels or tasks this version of the game does not have: ${reasons}. You are playing freely.`);
+      return msg(str`This assignment link names levels or tasks this version of the game does not have: ${reasons}. You are playing freely.`);
   }
 }
 

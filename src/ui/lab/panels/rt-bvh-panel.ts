@@ -3,6 +3,7 @@ import { css, html, nothing, type PropertyValues } from 'lit';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
 import { type LabState, BVH_MAX_DEPTH, type BvhViewOptions } from '../../../lab-state/lab-state.ts';
 import { loadMeshes } from '../../../render/load-meshes-browser.ts';
+import { localNumbers } from '../../../i18n/number-format.ts';
 import type { MeshLibrary } from '../../../scene/mesh-data.ts';
 import { meshNamesInScene } from '../../../scene/mesh-names.ts';
 import type { Scene } from '../../../scene/scene.ts';
@@ -22,8 +23,8 @@ interface Counts {
   boxes: Map<string, number>;
 }
 
-const NUMBER = new Intl.NumberFormat('en');
-const PERCENT = new Intl.NumberFormat('en', { minimumFractionDigits: 1, maximumFractionDigits: 1 });
+const NUMBER = localNumbers();
+const PERCENT = localNumbers({ minimumFractionDigits: 1, maximumFractionDigits: 1 });
 
 /**
  * @summary The acceleration panel: show every object's bounding box, show the BVH of the

@@ -1,5 +1,7 @@
 /** Saving the rendered image as a PNG download, with the exact rendered pixels. */
 
+import { msg } from '@lit/localize';
+
 const FILE_PREFIX = 'ray-tracer-quest';
 
 /** Scene names are free text; file names get the part that is safe everywhere. */
@@ -30,7 +32,7 @@ export function pngFileName(sceneName: string | undefined, width: number, height
 export async function savePng(pixels: ImageData, fileName: string): Promise<void> {
   const canvas = new OffscreenCanvas(pixels.width, pixels.height);
   const context = canvas.getContext('2d');
-  if (!context) throw new Error('this browser cannot draw the image for saving');
+  if (!context) throw new Error(msg('this browser cannot draw the image for saving'));
   context.putImageData(pixels, 0, 0);
   const blob = await canvas.convertToBlob({ type: 'image/png' });
   const url = URL.createObjectURL(blob);

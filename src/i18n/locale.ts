@@ -1,0 +1,56 @@
+import { configureLocalization } from '@lit/localize';
+import { sourceLocale, targetLocales } from '../locales/locale-codes.ts';
+import type { Locale } from '../quest/localized-text.ts';
+import { pickLocale, readRememberedLocale, rememberLocale } from './locale-choice.ts';
+import { rerenderAll } from './rerender-all.ts';
+
+/**
+ * The app's language at run time (@lit/localize in runtime mode): the Dutch messages are a
+ * module of their own (src/locales/nl.ts, built from xliff/nl.xlf), loaded only when Dutch
+ * is chosen. `<html lang>` follows, so screen readers, hyphenation and the browser's own
+ * controls use the right language.
+ */
+
+const localization = configureLocalization({
+  sourceLocale,
+  targetLocales,
+  loadLocale: () => import('../locales/nl.ts'),
+});
+
+const storage = () => localStorage;
+
+/** The language the app speaks now. */
+export function currentLocale(): Locale {
+  return localization.getLocale() === 'nl' ? 'nl' : 'en';
+}
+
+/**
+ * Switches to `locale`: the messages are loaded, then `<html lang>` and every element follow.
+ * Resolves to the language in use afterwards: when the Dutch module cannot be loaded (the
+ * network dropped), the app goes on in the language it had instead of not starting.
+ */
+export async function useLocale(locale: Locale): Promise<Locale> {
+  try {
+    await localization.setLocale(locale);
+  } catch (error) {
+    console.error(`The ${locale} texts could not be loaded`, error);
+  }
+  document.documentElement.lang = currentLocale();
+  rerenderAll(document);
+  return currentLocale();
+}
+
+/** The learner's choice in the menu: used now and remembered for the next visit. */
+export function chooseLocale(locale: Locale): Promise<Locale> {
+  rememberLocale(storage, locale);
+  return useLocale(locale);
+}
+
+/**
+ * The language for the page being opened (see pickLocale): the assignment's when one is
+ * played, else the address's `?lang=`, else the remembered choice, else English. Awaited
+ * before the first render, so no English flashes up first.
+ */
+export function startLocale(assignment: Locale | null = null): Promise<Locale> {
+  return useLocale(pickLocale({ assignment, search: location.search, remembered: readRememberedLocale(storage) }));
+}

@@ -1,0 +1,102 @@
+// The run-time wiring of the language, on a stand-in page (the unit tests run without a browser):
+// the real generated Dutch module is loaded, msg() answers in Dutch, <html lang> follows, and
+// every element on the page is asked to render again.
+import { msg, str } from '@lit/localize';
+import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import { LOCALE_KEY } from '../../src/i18n/locale-choice.ts';
+import { progressProblemText } from '../../src/i18n/progress-problem-text.ts';
+import { rerenderAll } from '../../src/i18n/rerender-all.ts';
+import { MemoryStorage, type ProgressProblem } from '../../src/quest/progress-store.ts';
+
+/** A stand-in element: counts its re-renders, may hold a shadow root with more elements. */
+class FakeElement {
+  updates = 0;
+  shadowRoot: { querySelectorAll(selector: string): FakeElement[] } | null = null;
+  constructor(readonly lit: boolean, inside: FakeElement[] = []) {
+    if (inside.length > 0) this.shadowRoot = { querySelectorAll: () => inside };
+    if (!lit) (this as { requestUpdate?: unknown }).requestUpdate = undefined;
+  }
+  requestUpdate(): void {
+    this.updates++;
+  }
+}
+
+describe('rerenderAll', () => {
+  it('asks every Lit element to render, inside shadow roots too, and skips plain elements', () => {
+    const deep = new FakeElement(true);
+    const plain = new FakeElement(false, [deep]);
+    const inner = new FakeElement(true);
+    const outer = new FakeElement(true, [inner, plain]);
+    rerenderAll({ querySelectorAll: () => [outer] } as unknown as ParentNode);
+    expect([outer.updates, inner.updates, deep.updates]).toEqual([1, 1, 1]);
+  });
+});
+
+describe('the app language at run time', () => {
+  const storage = new MemoryStorage();
+  const lit = new FakeElement(true);
+  const page = { documentElement: { lang: 'en' }, querySelectorAll: () => [lit] };
+  let locale: typeof import('../../src/i18n/locale.ts');
+  let numbers: typeof import('../../src/i18n/number-format.ts');
+
+  beforeAll(async () => {
+    vi.stubGlobal('window', new EventTarget());
+    vi.stubGlobal('document', page);
+    vi.stubGlobal('localStorage', storage);
+    vi.stubGlobal('location', { search: '?lang=nl' });
+    locale = await import('../../src/i18n/locale.ts');
+    numbers = await import('../../src/i18n/number-format.ts');
+  });
+
+  afterAll(() => {
+    vi.unstubAllGlobals();
+  });
+
+  it('starts in the language of the address, in Dutch from the generated catalogue', async () => {
+    expect(await locale.startLocale()).toBe('nl');
+    expect(locale.currentLocale()).toBe('nl');
+    expect(page.documentElement.lang).toBe('nl');
+    expect(msg('Cancel')).toBe('Annuleren');
+    const points = 7;
+    expect(msg(str`${points} points`)).toBe('7 punten');
+    expect(lit.updates).toBe(1);
+    // The address is no choice of the learner's: nothing is remembered.
+    expect(storage.getItem(LOCALE_KEY)).toBeNull();
+  });
+
+  it("puts an assignment's language before the address's", async () => {
+    expect(await locale.startLocale('en')).toBe('en');
+    expect(msg('Cancel')).toBe('Cancel');
+    expect(page.documentElement.lang).toBe('en');
+  });
+
+  it("remembers the learner's choice in the menu, and starts from it next time", async () => {
+    expect(await locale.chooseLocale('nl')).toBe('nl');
+    expect(storage.getItem(LOCALE_KEY)).toBe('nl');
+    vi.stubGlobal('location', { search: '' });
+    await locale.chooseLocale('en');
+    storage.setItem(LOCALE_KEY, 'nl');
+    expect(await locale.startLocale()).toBe('nl');
+    expect(msg('Menu')).toBe('Menu');
+    expect(msg('Your progress')).toBe('Jouw voortgang');
+  });
+
+  it('writes numbers the way the current language does, with one formatter kept across a change', async () => {
+    const count = numbers.localNumbers();
+    const share = numbers.localNumbers({ minimumFractionDigits: 1, maximumFractionDigits: 1 });
+    await locale.useLocale('nl');
+    expect([count.format(8624), share.format(99.46)]).toEqual(['8.624', '99,5']);
+    await locale.useLocale('en');
+    expect([count.format(8624), share.format(99.46)]).toEqual(['8,624', '99.5']);
+  });
+
+  it("words the progress store's problems in the learner's language", async () => {
+    const problem: ProgressProblem = { kind: 'damaged', reasons: [], backupKey: 'rtq.progress.backup.1', raw: '{' };
+    await locale.useLocale('nl');
+    expect(progressProblemText(problem)).toBe(
+      'Je opgeslagen voortgang is beschadigd en kon niet worden gelezen. Je begint weer vanaf het begin. De oude gegevens zijn bewaard als reservekopie (rtq.progress.backup.1).',
+    );
+    await locale.useLocale('en');
+    expect(progressProblemText(problem)).toMatch(/^Your saved progress is damaged/);
+  });
+});
