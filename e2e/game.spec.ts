@@ -1,5 +1,5 @@
 import { expect, test, type Locator, type Page } from '@playwright/test';
-import { existsSync, readdirSync, readFileSync } from 'node:fs';
+import { readdirSync, readFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
 import {
   clickToolbar,
@@ -13,13 +13,15 @@ import {
   objectOnScreen,
   playLevel1UpToTheRayTracer,
   state,
+  importProgress,
+  progressFile,
   task,
 } from './support/game-steps.ts';
 
 // The game as a student plays it: through the buttons, fields and keys of the page. The
 // store and the view are only read (state, where the ball is on screen), never driven.
 
-const levelsFolder = new URL('../levels/', import.meta.url);
+import { levelsFolder } from './support/game-steps.ts';
 const index = JSON.parse(readFileSync(new URL('index.json', levelsFolder), 'utf8')) as { chapters: { levels: string[] }[] };
 const levelIds = index.chapters.flatMap((chapter) => chapter.levels);
 
@@ -139,40 +141,6 @@ test('progress survives a reload in the middle of a level', async ({ page }) => 
   await expect(page.getByTestId('score')).toContainText('20 points');
   await expect(page.getByText('Welcome to Ray Tracer Quest!')).toHaveCount(0);
 });
-
-/** A progress file in which the mandatory tasks of `passed` are done: those levels and the next are open on the map. */
-function progressFile(passed: readonly string[]): string {
-  const levels: Record<string, { tasks: Record<string, { how: 'done'; points: number }>; hintsUsed: number }> = {};
-  for (const id of passed) {
-    const file = new URL(`${id}.level.json`, levelsFolder);
-    if (!existsSync(file)) continue;
-    try {
-      const level = JSON.parse(readFileSync(file, 'utf8')) as { tasks: { id: string; mandatory?: boolean }[] };
-      levels[id] = { tasks: Object.fromEntries(level.tasks.filter((t) => t.mandatory !== false).map((t) => [t.id, { how: 'done', points: 0 }])), hintsUsed: 0 };
-    } catch {
-      // A broken file is shown broken on the map; nothing to pass.
-    }
-  }
-  const progress = {
-    kind: 'ray-tracer-quest-progress',
-    version: 1,
-    levels,
-    badges: [],
-    settings: {},
-    sandbox: null,
-    current: null,
-    log: { startedAt: new Date().toISOString(), events: [] },
-  };
-  return JSON.stringify(progress);
-}
-
-/** Imports `file` through the progress menu, as a learner continuing on another computer would. */
-async function importProgress(page: Page, file: string): Promise<void> {
-  await page.getByRole('button', { name: 'Menu' }).click();
-  await page.locator('rt-progress-menu input[type=file]').setInputFiles({ name: 'progress.json', mimeType: 'application/json', buffer: Buffer.from(file) });
-  await expect(page.locator('rt-toast')).toContainText('Progress imported');
-  await page.keyboard.press('Escape');
-}
 
 /** Clicks the scene object `id` in the 3D view, where it is drawn now (read from the view, not driven). */
 async function clickInView(page: Page, id: string): Promise<void> {

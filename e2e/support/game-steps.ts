@@ -1,4 +1,5 @@
 import { expect, type Locator, type Page } from '@playwright/test';
+import { existsSync, readFileSync } from 'node:fs';
 import type { LabState } from '../../src/lab-state/lab-state.ts';
 
 // Steps of the game as a student plays it: through the buttons, fields and keys of the page.
@@ -19,6 +20,9 @@ export function collectErrors(page: Page): string[] {
   page.on('pageerror', (error) => errors.push(error.message));
   return errors;
 }
+
+/** The levels' folder, read by the specs as the app's own files. */
+export const levelsFolder = new URL('../../levels/', import.meta.url);
 
 export const task = (page: Page, title: string) => page.locator('rt-task-card').filter({ hasText: title });
 export const current = (page: Page) => page.locator('rt-task-card[status="current"]');
@@ -124,3 +128,38 @@ export async function openRayTracer(page: Page): Promise<void> {
 export async function closeRenderWindow(page: Page): Promise<void> {
   await page.locator('rt-render-window').getByRole('button', { name: 'Close the render window' }).click();
 }
+
+/** A progress file in which the mandatory tasks of `passed` are done: those levels and the next are open on the map. */
+export function progressFile(passed: readonly string[]): string {
+  const levels: Record<string, { tasks: Record<string, { how: 'done'; points: number }>; hintsUsed: number }> = {};
+  for (const id of passed) {
+    const file = new URL(`${id}.level.json`, levelsFolder);
+    if (!existsSync(file)) continue;
+    try {
+      const level = JSON.parse(readFileSync(file, 'utf8')) as { tasks: { id: string; mandatory?: boolean }[] };
+      levels[id] = { tasks: Object.fromEntries(level.tasks.filter((t) => t.mandatory !== false).map((t) => [t.id, { how: 'done', points: 0 }])), hintsUsed: 0 };
+    } catch {
+      // A broken file is shown broken on the map; nothing to pass.
+    }
+  }
+  const progress = {
+    kind: 'ray-tracer-quest-progress',
+    version: 1,
+    levels,
+    badges: [],
+    settings: {},
+    sandbox: null,
+    current: null,
+    log: { startedAt: new Date().toISOString(), events: [] },
+  };
+  return JSON.stringify(progress);
+}
+
+/** Imports `file` through the progress menu, as a learner continuing on another computer would. */
+export async function importProgress(page: Page, file: string): Promise<void> {
+  await page.getByRole('button', { name: 'Menu' }).click();
+  await page.locator('rt-progress-menu input[type=file]').setInputFiles({ name: 'progress.json', mimeType: 'application/json', buffer: Buffer.from(file) });
+  await expect(page.locator('rt-toast')).toContainText('Progress imported');
+  await page.keyboard.press('Escape');
+}
+
