@@ -202,11 +202,12 @@ export class WhittedIntegrator {
       for (let i = 0; i < candidateCount; i++) if (candidates[i] !== leaving) candidates[i].intersect(ray, hit);
       return hit.shape;
     }
+    const tMax = hit.t;
     const cached = this.lastBlocker[lightIndex];
-    if (cached && cached !== leaving && cached.intersect(ray, hit)) return cached;
+    if (cached && cached !== leaving && cached.occludes(ray, tMax)) return cached;
     for (let i = 0; i < candidateCount; i++) {
       const shape = candidates[i];
-      if (shape !== leaving && shape.intersect(ray, hit)) {
+      if (shape !== leaving && shape.occludes(ray, tMax)) {
         this.lastBlocker[lightIndex] = shape;
         return shape;
       }

@@ -5,6 +5,7 @@ import type { Ray } from '../ray.ts';
 import { intersectUnitBox, unitBoxNormal } from './box.ts';
 import { intersectUnitCylinder, unitCylinderNormal } from './cylinder.ts';
 import { intersectMesh, type MeshAccel, meshNormals } from './mesh-accel.ts';
+import { meshOccludes } from './mesh-occlusion.ts';
 import { intersectUnitPlane, unitPlaneNormal } from './plane.ts';
 import { intersectUnitSphere, unitSphereNormal } from './sphere.ts';
 
@@ -70,17 +71,43 @@ export class Shape {
    */
   intersect(ray: Ray, hit: Hit): boolean {
     if (!rayMeetsBox(ray, this.bounds, hit.t)) return false;
-    const m = this.m;
-    const { x: ox, y: oy, z: oz } = ray.origin;
-    const { x: dx, y: dy, z: dz } = ray.direction;
-    localOrigin.set(m[0] * ox + m[1] * oy + m[2] * oz + m[3], m[4] * ox + m[5] * oy + m[6] * oz + m[7], m[8] * ox + m[9] * oy + m[10] * oz + m[11]);
-    localDirection.set(m[0] * dx + m[1] * dy + m[2] * dz, m[4] * dx + m[5] * dy + m[6] * dz, m[8] * dx + m[9] * dy + m[10] * dz);
+    this.toLocal(ray);
     const t = this.intersectLocal(localOrigin, localDirection, hit);
     if (t === Infinity) return false;
     hit.t = t;
     hit.shape = this;
     hit.local.copy(localDirection).multiplyScalar(t).add(localOrigin);
     return true;
+  }
+
+  /**
+   * Any-hit for shadow rays: whether the shape is hit nearer than `tMax` (and farther than
+   * 0), exactly when `intersect` would record a hit, without finding the nearest one.
+   */
+  occludes(ray: Ray, tMax: number): boolean {
+    if (!rayMeetsBox(ray, this.bounds, tMax)) return false;
+    this.toLocal(ray);
+    switch (this.kind) {
+      case 'sphere':
+        return intersectUnitSphere(localOrigin, localDirection, tMax) !== Infinity;
+      case 'box':
+        return intersectUnitBox(localOrigin, localDirection, tMax) !== Infinity;
+      case 'cylinder':
+        return intersectUnitCylinder(localOrigin, localDirection, tMax) !== Infinity;
+      case 'plane':
+        return intersectUnitPlane(localOrigin, localDirection, tMax) !== Infinity;
+      case 'mesh':
+        return meshOccludes(this.accel!, localOrigin, localDirection, tMax);
+    }
+  }
+
+  /** The ray in object space, into localOrigin and localDirection (12 multiplies, no renormalizing). */
+  private toLocal(ray: Ray): void {
+    const m = this.m;
+    const { x: ox, y: oy, z: oz } = ray.origin;
+    const { x: dx, y: dy, z: dz } = ray.direction;
+    localOrigin.set(m[0] * ox + m[1] * oy + m[2] * oz + m[3], m[4] * ox + m[5] * oy + m[6] * oz + m[7], m[8] * ox + m[9] * oy + m[10] * oz + m[11]);
+    localDirection.set(m[0] * dx + m[1] * dy + m[2] * dz, m[4] * dx + m[5] * dy + m[6] * dz, m[8] * dx + m[9] * dy + m[10] * dz);
   }
 
   /** Fills the hit's world point and outward unit normals (called once, for the nearest hit). */
