@@ -34,10 +34,17 @@ class Frame {
   entering = true;
   /** The box from the hit point to the light being sampled: only objects in it can cast its shadow. */
   readonly shadowReach = new Box3();
-  /** The objects overlapping shadowReach (the first `candidateCount` entries). */
+  /** The objects overlapping shadowReach (the first `candidateCount` entries), when there are few. */
   readonly candidates: Intersectable[] = [];
+  /** -1: too many candidates to list; shadow rays walk the occluder BVHs, limited to shadowReach. */
   candidateCount = 0;
 }
+
+/**
+ * Up to this many shadow candidates per hit and light are tried in a list by every shadow
+ * ray; with more (a crowded scene), each shadow ray walks the object BVHs instead.
+ */
+const MAX_LISTED_CANDIDATES = 8;
 
 const shadowHit = new Hit();
 
@@ -78,7 +85,7 @@ export class WhittedIntegrator {
   trace(ray: Ray, depth: number, out: Vector3, node: RayNode | null, leaving: Intersectable | null = null): Vector3 {
     const frame = this.frames[depth];
     const hit = frame.hit.reset(Infinity);
-    for (const shape of this.scene.shapes) if (shape !== leaving) shape.intersect(ray, hit);
+    this.scene.objects.nearest(ray, hit, leaving);
     if (!hit.shape) {
       out.fromArray(this.scene.settings.background);
       if (node) recordEnd(node, false, MISS_LENGTH, null, out);
@@ -200,13 +207,16 @@ export class WhittedIntegrator {
   /**
    * Every shadow ray from this hit toward this light stays inside the box spanned by the
    * hit point and the light's extent, so only objects overlapping that box can block any
-   * of them: found once here, not once per sample.
+   * of them: found once here (through the object BVHs, cheap shapes first), not once per sample.
    */
   private gatherShadowCandidates(frame: Frame, light: TracerLight): void {
     const reach = frame.shadowReach.copy(light.extent).expandByPoint(frame.hit.point);
     let count = 0;
-    for (const shape of this.scene.occluders) if (shape.worldBounds.intersectsBox(reach)) frame.candidates[count++] = shape;
-    frame.candidateCount = count;
+    for (const occluders of this.scene.occluders) {
+      count = occluders.overlapping(reach, frame.candidates, count, MAX_LISTED_CANDIDATES);
+      if (count > MAX_LISTED_CANDIDATES) break;
+    }
+    frame.candidateCount = count > MAX_LISTED_CANDIDATES ? -1 : count;
   }
 
   /**
@@ -221,22 +231,23 @@ export class WhittedIntegrator {
     const ray = frame.shadowRay.set(origin, toLight);
     const hit = shadowHit.reset(distance - this.scene.epsilon);
     const leaving = leavingShape(frame, toLight);
-    const { candidates, candidateCount } = frame;
+    const { candidates, candidateCount, shadowReach } = frame;
     if (nearest) {
-      for (let i = 0; i < candidateCount; i++) if (candidates[i] !== leaving) candidates[i].intersect(ray, hit);
+      if (candidateCount < 0) this.scene.objects.nearest(ray, hit, leaving, shadowReach);
+      else for (let i = 0; i < candidateCount; i++) if (candidates[i] !== leaving) candidates[i].intersect(ray, hit);
       return hit.shape;
     }
     const tMax = hit.t;
     const cached = this.lastBlocker[lightIndex];
     if (cached && cached !== leaving && cached.occludes(ray, tMax)) return cached;
-    for (let i = 0; i < candidateCount; i++) {
-      const shape = candidates[i];
-      if (shape !== leaving && shape.occludes(ray, tMax)) {
-        this.lastBlocker[lightIndex] = shape;
-        return shape;
-      }
+    let blocker: Intersectable | null = null;
+    if (candidateCount < 0) {
+      for (const occluders of this.scene.occluders) if ((blocker = occluders.firstBlocker(ray, tMax, leaving, shadowReach))) break;
+    } else {
+      for (let i = 0; i < candidateCount && !blocker; i++) if (candidates[i] !== leaving && candidates[i].occludes(ray, tMax)) blocker = candidates[i];
     }
-    return null;
+    if (blocker) this.lastBlocker[lightIndex] = blocker;
+    return blocker;
   }
 
   /** Transparent surface: kr·trace(reflect) + kt·trace(refract), Schlick's kr (spec §2). */

@@ -2,6 +2,7 @@ import { Box3, Matrix3, Matrix4, Vector3 } from 'three';
 import type { Material, ShapeKind } from '../../scene/scene.ts';
 import type { Hit } from '../hit.ts';
 import type { Ray } from '../ray.ts';
+import { rayMeetsBox } from '../ray-box.ts';
 import { intersectUnitBox, unitBoxNormal } from './box.ts';
 import { intersectUnitCylinder, unitCylinderNormal } from './cylinder.ts';
 import { intersectMesh, type MeshAccel, meshNormals } from './mesh-accel.ts';
@@ -70,7 +71,7 @@ export class Shape {
    * returns true.
    */
   intersect(ray: Ray, hit: Hit): boolean {
-    if (!rayMeetsBox(ray, this.bounds, hit.t)) return false;
+    if (!rayMeetsBox(ray, this.bounds, 0, hit.t)) return false;
     this.toLocal(ray);
     const t = this.intersectLocal(localOrigin, localDirection, hit);
     if (t === Infinity) return false;
@@ -85,7 +86,7 @@ export class Shape {
    * 0), exactly when `intersect` would record a hit, without finding the nearest one.
    */
   occludes(ray: Ray, tMax: number): boolean {
-    if (!rayMeetsBox(ray, this.bounds, tMax)) return false;
+    if (!rayMeetsBox(ray, this.bounds, 0, tMax)) return false;
     this.toLocal(ray);
     switch (this.kind) {
       case 'sphere':
@@ -150,23 +151,4 @@ export class Shape {
         return intersectMesh(this.accel!, o, d, hit.t, hit);
     }
   }
-}
-
-/** Slab test (Kay & Kajiya 1986): does the ray meet the box [min xyz, max xyz] before `tMax`? */
-function rayMeetsBox(ray: Ray, box: Float64Array, tMax: number): boolean {
-  const { origin: o, inverseDirection: inv } = ray;
-  let t0 = (box[0] - o.x) * inv.x;
-  let t1 = (box[3] - o.x) * inv.x;
-  let near = Math.min(t0, t1);
-  let far = Math.max(t0, t1);
-  t0 = (box[1] - o.y) * inv.y;
-  t1 = (box[4] - o.y) * inv.y;
-  near = Math.max(near, Math.min(t0, t1));
-  far = Math.min(far, Math.max(t0, t1));
-  t0 = (box[2] - o.z) * inv.z;
-  t1 = (box[5] - o.z) * inv.z;
-  near = Math.max(near, Math.min(t0, t1));
-  far = Math.min(far, Math.max(t0, t1));
-  // NaN (a ray lying exactly in a slab's plane) compares false, so such rays are kept.
-  return !(near > far || far < 0 || near > tMax);
 }
