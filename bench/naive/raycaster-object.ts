@@ -1,11 +1,13 @@
 import { Box3, DoubleSide, type Intersection, Matrix3, Mesh, MeshBasicMaterial, Raycaster } from 'three';
 import type { MeshLibrary } from '../../src/scene/mesh-data.ts';
 import type { Material, SceneObject } from '../../src/scene/scene.ts';
-import type { Hit } from '../../src/tracer/hit.ts';
+import { Hit } from '../../src/tracer/hit.ts';
 import type { Intersectable } from '../../src/tracer/intersectable.ts';
 import type { Ray } from '../../src/tracer/ray.ts';
 import { objectToWorld } from '../../src/tracer/tracer-scene.ts';
 import { tessellate } from './tessellate.ts';
+
+const scratchHit = new Hit();
 
 /**
  * The baseline most tutorials build: every object a tessellated three.js Mesh, every ray
@@ -50,6 +52,11 @@ export class RaycasterObject implements Intersectable {
     hit.shape = this;
     this.lastHit = nearest;
     return true;
+  }
+
+  /** The naive tracer has no any-hit: a nearest-hit search into a scratch record. */
+  occludes(ray: Ray, tMax: number): boolean {
+    return this.intersect(ray, scratchHit.reset(tMax));
   }
 
   surface(ray: Ray, hit: Hit): void {

@@ -39,14 +39,17 @@ Options:
     const workers = line.wholeNumber('workers', WORKER_RANGE) ?? availableParallelism();
     const seed = line.wholeNumber('seed', SEED_RANGE);
 
-    const { scene } = await readScene(source);
-    const [width, height] = imageSize(line, scene);
-    await checkWritable(out);
-    const meshes = await loadSceneMeshes(scene);
-
+    // The threads start first: their start-up overlaps reading the scene and its models.
     const pool = createNodeRenderPool(workers);
+    let scene: Scene;
+    let width: number;
+    let height: number;
     let result: FinishedRender;
     try {
+      ({ scene } = await readScene(source));
+      [width, height] = imageSize(line, scene);
+      await checkWritable(out);
+      const meshes = await loadSceneMeshes(scene);
       pool.setScene(scene, meshes);
       await pool.ready(); // so that `ms` does not count the threads' start-up
       const outcome = await pool.render(scene, meshes, { width, height, seed, preview: false }).done;

@@ -5,14 +5,15 @@
  */
 import { EXIT_INVALID_INPUT, EXIT_USAGE, UsageError } from './cli-errors.ts';
 import { CommandLine, type Command } from './command-line.ts';
-import { renderCommand } from './render-command.ts';
-import { traceCommand } from './trace-command.ts';
-import { validateCommand } from './validate-command.ts';
 
-const COMMANDS: Record<string, Command> = {
-  render: renderCommand,
-  trace: traceCommand,
-  validate: validateCommand,
+/**
+ * Each command is loaded only when it is run: `rt render` then never loads the tracer in
+ * its main thread (only its workers do), which keeps its start-up short.
+ */
+const COMMANDS: Record<string, () => Promise<Command>> = {
+  render: async () => (await import('./render-command.ts')).renderCommand,
+  trace: async () => (await import('./trace-command.ts')).traceCommand,
+  validate: async () => (await import('./validate-command.ts')).validateCommand,
 };
 
 const HELP = `rt: Ray Tracer Quest's ray tracer on the command line
@@ -33,8 +34,8 @@ async function rt(args: string[]): Promise<number> {
     return 0;
   }
   if (name === undefined) throw new UsageError('', 'no command given');
-  const command = Object.hasOwn(COMMANDS, name) ? COMMANDS[name] : undefined;
-  if (!command) throw new UsageError('', `unknown command "${name}"`);
+  if (!Object.hasOwn(COMMANDS, name)) throw new UsageError('', `unknown command "${name}"`);
+  const command = await COMMANDS[name]();
   const line = new CommandLine(name, rest, command);
   if (line.help) {
     process.stdout.write(command.help);

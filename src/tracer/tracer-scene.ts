@@ -4,6 +4,7 @@ import type { RenderSettings, Scene, SceneObject } from '../scene/scene.ts';
 import { CameraRays } from './camera-rays.ts';
 import type { Intersectable } from './intersectable.ts';
 import { TracerLight } from './lights.ts';
+import { ObjectBvh } from './object-bvh.ts';
 import { meshAccel } from './shapes/mesh-accel.ts';
 import { Shape } from './shapes/shape.ts';
 
@@ -15,8 +16,10 @@ export interface TracerScene {
   readonly settings: RenderSettings;
   readonly camera: CameraRays;
   readonly shapes: readonly Intersectable[];
-  /** The same shapes, cheap analytic ones first: the order shadow rays try them in. */
-  readonly occluders: readonly Intersectable[];
+  /** A BVH over the shapes, for nearest hits. */
+  readonly objects: ObjectBvh;
+  /** BVHs over the cheap analytic shapes, then over the meshes: the order shadow rays try them in. */
+  readonly occluders: readonly ObjectBvh[];
   /** The lights whose type is switched on in settings.lightTypes. */
   readonly lights: readonly TracerLight[];
   /** How far secondary rays start off a surface: 1e-4, scaled up for large scenes. */
@@ -39,10 +42,18 @@ export function buildTracerScene(scene: Scene, meshes: MeshLibrary): TracerScene
     settings: scene.settings,
     camera: new CameraRays(scene.camera),
     shapes,
-    occluders: [...shapes].sort((a, b) => Number(!a.convex) - Number(!b.convex)),
+    ...objectBvhs(shapes),
     lights: scene.lights.filter((light) => enabled[light.type]).map((light) => new TracerLight(light)),
     epsilon: 1e-4 * Math.max(1, size / 10),
     bvhBuildMs,
+  };
+}
+
+/** The object BVHs of a scene's shapes (the benchmark's naive tracer builds its own). */
+export function objectBvhs(shapes: readonly Intersectable[]): Pick<TracerScene, 'objects' | 'occluders'> {
+  return {
+    objects: new ObjectBvh(shapes),
+    occluders: [new ObjectBvh(shapes.filter((s) => s.convex)), new ObjectBvh(shapes.filter((s) => !s.convex))],
   };
 }
 

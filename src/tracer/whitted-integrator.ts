@@ -25,7 +25,6 @@ class Frame {
   readonly toViewer = new Vector3();
   readonly lightPoint = new Vector3();
   readonly toLight = new Vector3();
-  readonly mirrored = new Vector3();
   readonly childDirection = new Vector3();
   readonly childOrigin = new Vector3();
   readonly childRay = new Ray();
@@ -35,10 +34,17 @@ class Frame {
   entering = true;
   /** The box from the hit point to the light being sampled: only objects in it can cast its shadow. */
   readonly shadowReach = new Box3();
-  /** The objects overlapping shadowReach (the first `candidateCount` entries). */
+  /** The objects overlapping shadowReach (the first `candidateCount` entries), when there are few. */
   readonly candidates: Intersectable[] = [];
+  /** -1: too many candidates to list; shadow rays walk the occluder BVHs, limited to shadowReach. */
   candidateCount = 0;
 }
+
+/**
+ * Up to this many shadow candidates per hit and light are tried in a list by every shadow
+ * ray; with more (a crowded scene), each shadow ray walks the object BVHs instead.
+ */
+const MAX_LISTED_CANDIDATES = 8;
 
 const shadowHit = new Hit();
 
@@ -79,7 +85,7 @@ export class WhittedIntegrator {
   trace(ray: Ray, depth: number, out: Vector3, node: RayNode | null, leaving: Intersectable | null = null): Vector3 {
     const frame = this.frames[depth];
     const hit = frame.hit.reset(Infinity);
-    for (const shape of this.scene.shapes) if (shape !== leaving) shape.intersect(ray, hit);
+    this.scene.objects.nearest(ray, hit, leaving);
     if (!hit.shape) {
       out.fromArray(this.scene.settings.background);
       if (node) recordEnd(node, false, MISS_LENGTH, null, out);
@@ -128,43 +134,68 @@ export class WhittedIntegrator {
     }
   }
 
-  /** Adds one light's diffuse and specular terms (each sample shaded like a spot light). */
+  /**
+   * Adds one light's diffuse and specular terms (each sample shaded like a spot light).
+   * The sample loop is the tracer's hottest code: it works on plain numbers, each operation
+   * in the order the Vector3 methods it replaces perform it (l/|l| as l·(1/|l|), as
+   * divideScalar does), so the colours stay the same to the bit.
+   */
   private addDirectLight(light: TracerLight, index: number, frame: Frame, material: Material, out: Vector3, node: RayNode | null): void {
-    const { hit, normal: n, toViewer: v, lightPoint, toLight: l, mirrored: r } = frame;
+    const { hit, normal: n, toViewer: v, lightPoint, toLight: l } = frame;
     const samples = light.sampleCount;
     if (light.type === 'area') this.random.reset(hashKey(this.sampleKey, index, this.lightEvaluation++));
     const sampleNodes: RayNode[] | null = node ? [] : null;
     // The light's colour is divided by n² for an area light's n×n samples (spec §2).
     const scale = light.intensity / samples;
     const [cr, cg, cb] = material.color;
-    if (this.scene.settings.shadows) this.gatherShadowCandidates(frame, light);
+    const { shadows } = this.scene.settings;
+    if (shadows) this.gatherShadowCandidates(frame, light);
+    const { x: px, y: py, z: pz } = hit.point;
+    const { x: nx, y: ny, z: nz } = n;
+    const { x: vx, y: vy, z: vz } = v;
+    const { x: ax, y: ay, z: az } = light.direction;
+    const { x: lr, y: lg, z: lb } = light.color;
+    // pow(max(R·V, 0), n) can only be 0 when R·V ≤ 0 (and n > 0), and the highlight is 0
+    // whenever ks or the light's specular factor is: pow is skipped there.
+    const highlights = material.specular > 0 && light.specular > 0;
+    const shininess = material.shininess;
     for (let s = 0; s < samples; s++) {
       light.samplePoint(s, this.random, lightPoint);
-      l.subVectors(lightPoint, hit.point);
-      const distance = l.length();
+      let lx = lightPoint.x - px;
+      let ly = lightPoint.y - py;
+      let lz = lightPoint.z - pz;
+      const distance = Math.sqrt(lx * lx + ly * ly + lz * lz);
       if (distance === 0) continue;
-      l.divideScalar(distance);
-      const nDotL = n.dot(l);
+      const inverse = 1 / distance;
+      lx *= inverse;
+      ly *= inverse;
+      lz *= inverse;
+      const nDotL = nx * lx + ny * ly + nz * lz;
       // A light behind the surface adds nothing: no ray is cast toward it.
       if (nDotL <= 0) continue;
       let attenuation = light.distanceAttenuation ? distanceAttenuation(distance) : 1;
-      if (light.type !== 'point') attenuation *= angleAttenuation(-light.direction.dot(l), light.cosHalfAngle, light.angleExponent);
+      if (light.type !== 'point') attenuation *= angleAttenuation(-(ax * lx + ay * ly + az * lz), light.cosHalfAngle, light.angleExponent);
       if (attenuation === 0) continue;
+      l.set(lx, ly, lz);
 
-      const blocker = this.scene.settings.shadows ? this.firstBlocker(frame, l, distance, index, node !== null) : null;
+      const blocker = shadows ? this.firstBlocker(frame, l, distance, index, node !== null) : null;
       if (blocker) {
         // S = 0: a shadow ray carries black.
         sampleNodes?.push(newNode('shadow', hit.point, l, shadowHit.t, true, blocker.id, light.id, [0, 0, 0]));
         continue;
       }
-      // Phong: R is L mirrored about N; the highlight is not tinted by the object's colour.
-      r.copy(n).multiplyScalar(2 * nDotL).sub(l);
-      const highlight = material.specular > 0 ? Math.pow(Math.max(r.dot(v), 0), material.shininess) * material.specular * light.specular : 0;
+      // Phong: R = 2(N·L)N − L, L mirrored about N; the highlight is not tinted by the object's colour.
+      let highlight = 0;
+      if (highlights) {
+        const twoNDotL = 2 * nDotL;
+        const rDotV = (nx * twoNDotL - lx) * vx + (ny * twoNDotL - ly) * vy + (nz * twoNDotL - lz) * vz;
+        if (!(rDotV <= 0) || shininess === 0) highlight = Math.pow(Math.max(rDotV, 0), shininess) * material.specular * light.specular;
+      }
       const diffuse = nDotL * material.diffuse * light.diffuse;
       const k = scale * attenuation;
-      const tr = k * light.color.x * (diffuse * cr + highlight);
-      const tg = k * light.color.y * (diffuse * cg + highlight);
-      const tb = k * light.color.z * (diffuse * cb + highlight);
+      const tr = k * lr * (diffuse * cr + highlight);
+      const tg = k * lg * (diffuse * cg + highlight);
+      const tb = k * lb * (diffuse * cb + highlight);
       out.x += tr;
       out.y += tg;
       out.z += tb;
@@ -176,13 +207,16 @@ export class WhittedIntegrator {
   /**
    * Every shadow ray from this hit toward this light stays inside the box spanned by the
    * hit point and the light's extent, so only objects overlapping that box can block any
-   * of them: found once here, not once per sample.
+   * of them: found once here (through the object BVHs, cheap shapes first), not once per sample.
    */
   private gatherShadowCandidates(frame: Frame, light: TracerLight): void {
     const reach = frame.shadowReach.copy(light.extent).expandByPoint(frame.hit.point);
     let count = 0;
-    for (const shape of this.scene.occluders) if (shape.worldBounds.intersectsBox(reach)) frame.candidates[count++] = shape;
-    frame.candidateCount = count;
+    for (const occluders of this.scene.occluders) {
+      count = occluders.overlapping(reach, frame.candidates, count, MAX_LISTED_CANDIDATES);
+      if (count > MAX_LISTED_CANDIDATES) break;
+    }
+    frame.candidateCount = count > MAX_LISTED_CANDIDATES ? -1 : count;
   }
 
   /**
@@ -197,21 +231,23 @@ export class WhittedIntegrator {
     const ray = frame.shadowRay.set(origin, toLight);
     const hit = shadowHit.reset(distance - this.scene.epsilon);
     const leaving = leavingShape(frame, toLight);
-    const { candidates, candidateCount } = frame;
+    const { candidates, candidateCount, shadowReach } = frame;
     if (nearest) {
-      for (let i = 0; i < candidateCount; i++) if (candidates[i] !== leaving) candidates[i].intersect(ray, hit);
+      if (candidateCount < 0) this.scene.objects.nearest(ray, hit, leaving, shadowReach);
+      else for (let i = 0; i < candidateCount; i++) if (candidates[i] !== leaving) candidates[i].intersect(ray, hit);
       return hit.shape;
     }
+    const tMax = hit.t;
     const cached = this.lastBlocker[lightIndex];
-    if (cached && cached !== leaving && cached.intersect(ray, hit)) return cached;
-    for (let i = 0; i < candidateCount; i++) {
-      const shape = candidates[i];
-      if (shape !== leaving && shape.intersect(ray, hit)) {
-        this.lastBlocker[lightIndex] = shape;
-        return shape;
-      }
+    if (cached && cached !== leaving && cached.occludes(ray, tMax)) return cached;
+    let blocker: Intersectable | null = null;
+    if (candidateCount < 0) {
+      for (const occluders of this.scene.occluders) if ((blocker = occluders.firstBlocker(ray, tMax, leaving, shadowReach))) break;
+    } else {
+      for (let i = 0; i < candidateCount && !blocker; i++) if (candidates[i] !== leaving && candidates[i].occludes(ray, tMax)) blocker = candidates[i];
     }
-    return null;
+    if (blocker) this.lastBlocker[lightIndex] = blocker;
+    return blocker;
   }
 
   /** Transparent surface: kr·trace(reflect) + kt·trace(refract), Schlick's kr (spec §2). */

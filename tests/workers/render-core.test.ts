@@ -72,7 +72,7 @@ describe('the render worker core', () => {
     handle(tile(5, 0));
     handle(load(2, dark));
     handle(tile(6, 0));
-    await settle(3);
+    await settle(4); // two scene-ready, two tile-done
 
     const [first, second] = responses.filter((r) => r.type === 'tile-done');
     expect([...first.rgb.slice(0, 3)]).toEqual(scene.settings.background.map(Math.fround));

@@ -2,6 +2,7 @@ import { Box3, BufferAttribute, BufferGeometry, DoubleSide, Ray as ThreeRay, Vec
 import { MeshBVH, SAH } from 'three-mesh-bvh';
 import type { MeshData } from '../../scene/mesh-data.ts';
 import type { Hit } from '../hit.ts';
+import { packedRoot, type PackedRoot } from './mesh-occlusion.ts';
 
 /** A model's BVH, built once per model and shared by every object that uses it. */
 export interface MeshAccel {
@@ -11,6 +12,8 @@ export interface MeshAccel {
   positions: Float32Array;
   normals: Float32Array | null;
   bounds: Box3;
+  /** The BVH's packed node buffers, which shadow rays walk directly (mesh-occlusion.ts). */
+  roots: PackedRoot[];
 }
 
 // Built BVHs by model; a worker keeps them across renders, as models never change.
@@ -30,7 +33,8 @@ export function meshAccel(mesh: MeshData): MeshAccel {
     // SAH: slower to build than CENTER but faster to cast through; models are built once.
     const bvh = new MeshBVH(geometry, { strategy: SAH, targetLeafSize: 4 });
     geometry.computeBoundingBox();
-    accel = { bvh, index: geometry.index!.array, positions: mesh.positions, normals: mesh.normals, bounds: geometry.boundingBox! };
+    const roots = MeshBVH.serialize(bvh, { cloneBuffers: false }).roots.map(packedRoot);
+    accel = { bvh, index: geometry.index!.array, positions: mesh.positions, normals: mesh.normals, bounds: geometry.boundingBox!, roots };
     accelCache.set(mesh, accel);
   }
   return accel;

@@ -2,9 +2,11 @@ import { Box3, Matrix3, Matrix4, Vector3 } from 'three';
 import type { Material, ShapeKind } from '../../scene/scene.ts';
 import type { Hit } from '../hit.ts';
 import type { Ray } from '../ray.ts';
+import { rayMeetsBox } from '../ray-box.ts';
 import { intersectUnitBox, unitBoxNormal } from './box.ts';
 import { intersectUnitCylinder, unitCylinderNormal } from './cylinder.ts';
 import { intersectMesh, type MeshAccel, meshNormals } from './mesh-accel.ts';
+import { meshOccludes } from './mesh-occlusion.ts';
 import { intersectUnitPlane, unitPlaneNormal } from './plane.ts';
 import { intersectUnitSphere, unitSphereNormal } from './sphere.ts';
 
@@ -69,18 +71,44 @@ export class Shape {
    * returns true.
    */
   intersect(ray: Ray, hit: Hit): boolean {
-    if (!rayMeetsBox(ray, this.bounds, hit.t)) return false;
-    const m = this.m;
-    const { x: ox, y: oy, z: oz } = ray.origin;
-    const { x: dx, y: dy, z: dz } = ray.direction;
-    localOrigin.set(m[0] * ox + m[1] * oy + m[2] * oz + m[3], m[4] * ox + m[5] * oy + m[6] * oz + m[7], m[8] * ox + m[9] * oy + m[10] * oz + m[11]);
-    localDirection.set(m[0] * dx + m[1] * dy + m[2] * dz, m[4] * dx + m[5] * dy + m[6] * dz, m[8] * dx + m[9] * dy + m[10] * dz);
+    if (!rayMeetsBox(ray, this.bounds, 0, hit.t)) return false;
+    this.toLocal(ray);
     const t = this.intersectLocal(localOrigin, localDirection, hit);
     if (t === Infinity) return false;
     hit.t = t;
     hit.shape = this;
     hit.local.copy(localDirection).multiplyScalar(t).add(localOrigin);
     return true;
+  }
+
+  /**
+   * Any-hit for shadow rays: whether the shape is hit nearer than `tMax` (and farther than
+   * 0), exactly when `intersect` would record a hit, without finding the nearest one.
+   */
+  occludes(ray: Ray, tMax: number): boolean {
+    if (!rayMeetsBox(ray, this.bounds, 0, tMax)) return false;
+    this.toLocal(ray);
+    switch (this.kind) {
+      case 'sphere':
+        return intersectUnitSphere(localOrigin, localDirection, tMax) !== Infinity;
+      case 'box':
+        return intersectUnitBox(localOrigin, localDirection, tMax) !== Infinity;
+      case 'cylinder':
+        return intersectUnitCylinder(localOrigin, localDirection, tMax) !== Infinity;
+      case 'plane':
+        return intersectUnitPlane(localOrigin, localDirection, tMax) !== Infinity;
+      case 'mesh':
+        return meshOccludes(this.accel!, localOrigin, localDirection, tMax);
+    }
+  }
+
+  /** The ray in object space, into localOrigin and localDirection (12 multiplies, no renormalizing). */
+  private toLocal(ray: Ray): void {
+    const m = this.m;
+    const { x: ox, y: oy, z: oz } = ray.origin;
+    const { x: dx, y: dy, z: dz } = ray.direction;
+    localOrigin.set(m[0] * ox + m[1] * oy + m[2] * oz + m[3], m[4] * ox + m[5] * oy + m[6] * oz + m[7], m[8] * ox + m[9] * oy + m[10] * oz + m[11]);
+    localDirection.set(m[0] * dx + m[1] * dy + m[2] * dz, m[4] * dx + m[5] * dy + m[6] * dz, m[8] * dx + m[9] * dy + m[10] * dz);
   }
 
   /** Fills the hit's world point and outward unit normals (called once, for the nearest hit). */
@@ -123,23 +151,4 @@ export class Shape {
         return intersectMesh(this.accel!, o, d, hit.t, hit);
     }
   }
-}
-
-/** Slab test (Kay & Kajiya 1986): does the ray meet the box [min xyz, max xyz] before `tMax`? */
-function rayMeetsBox(ray: Ray, box: Float64Array, tMax: number): boolean {
-  const { origin: o, inverseDirection: inv } = ray;
-  let t0 = (box[0] - o.x) * inv.x;
-  let t1 = (box[3] - o.x) * inv.x;
-  let near = Math.min(t0, t1);
-  let far = Math.max(t0, t1);
-  t0 = (box[1] - o.y) * inv.y;
-  t1 = (box[4] - o.y) * inv.y;
-  near = Math.max(near, Math.min(t0, t1));
-  far = Math.min(far, Math.max(t0, t1));
-  t0 = (box[2] - o.z) * inv.z;
-  t1 = (box[5] - o.z) * inv.z;
-  near = Math.max(near, Math.min(t0, t1));
-  far = Math.min(far, Math.max(t0, t1));
-  // NaN (a ray lying exactly in a slab's plane) compares false, so such rays are kept.
-  return !(near > far || far < 0 || near > tMax);
 }

@@ -1,0 +1,91 @@
+import { Box3, Vector3 } from 'three';
+import { describe, expect, it } from 'vitest';
+import { Hit } from '../../src/tracer/hit.ts';
+import type { Intersectable } from '../../src/tracer/intersectable.ts';
+import { ObjectBvh } from '../../src/tracer/object-bvh.ts';
+import { Ray } from '../../src/tracer/ray.ts';
+import { hashKey, RandomStream } from '../../src/tracer/sampler.ts';
+import { matte, tracerSceneFrom } from '../support/test-scene.ts';
+
+const random = new RandomStream().reset(hashKey(12));
+const between = (low: number, high: number) => low + (high - low) * random.next();
+const point = (spread: number) => new Vector3(between(-spread, spread), between(-spread, spread), between(-spread, spread));
+
+/** `count` shapes of every kind at random places and sizes, overlapping one another. */
+function randomShapes(count: number): readonly Intersectable[] {
+  const kinds = ['sphere', 'box', 'cylinder', 'plane'];
+  const objects = Array.from({ length: count }, (_, i) => ({
+    id: `o${i}`,
+    shape: kinds[i % kinds.length],
+    position: point(4).toArray(),
+    rotation: [between(0, 90), between(0, 90), between(0, 90)],
+    scale: [between(0.2, 1.5), between(0.2, 1.5), between(0.2, 1.5)],
+    material: matte([1, 1, 1]),
+  }));
+  return tracerSceneFrom({ objects }).shapes;
+}
+
+/**
+ * The object BVH must give exactly what testing every object in the scene's order gives:
+ * the same nearest object at the same distance, the same answer to "is anything in the way",
+ * and the same objects overlapping a box, with objects skipped and boxes limiting the search.
+ */
+describe('the BVH over objects', () => {
+  for (const count of [5, 40, 256]) {
+    it(`answers as a linear search does, over ${count} objects`, () => {
+      random.reset(hashKey(12, count));
+      const shapes = randomShapes(count);
+      const bvh = new ObjectBvh(shapes);
+      const ray = new Ray();
+      const [fromBvh, fromAll] = [new Hit(), new Hit()];
+      let hits = 0;
+      let blocked = 0;
+      for (let i = 0; i < 3000; i++) {
+        // Aimed near one of the objects, so that many rays hit.
+        const origin = point(6);
+        const target = shapes[i % count].worldBounds.getCenter(new Vector3()).add(point(0.5));
+        ray.set(origin, target.sub(origin).normalize());
+        const skip = i % 3 === 0 ? shapes[i % count] : null;
+        const within = i % 2 === 0 ? new Box3().setFromPoints([point(5), point(5)]) : null;
+        const tested = shapes.filter((s) => s !== skip && (!within || s.worldBounds.intersectsBox(within)));
+
+        fromBvh.reset(Infinity);
+        bvh.nearest(ray, fromBvh, skip, within);
+        fromAll.reset(Infinity);
+        for (const shape of tested) shape.intersect(ray, fromAll);
+        expect([fromBvh.shape?.id, fromBvh.t]).toEqual([fromAll.shape?.id, fromAll.t]);
+        if (fromAll.shape) hits++;
+
+        const tMax = between(0, 12);
+        const reach = within ?? new Box3(new Vector3(-9, -9, -9), new Vector3(9, 9, 9));
+        const blocker = bvh.firstBlocker(ray, tMax, skip, reach);
+        const blocks = tested.filter((s) => s.worldBounds.intersectsBox(reach) && s.occludes(ray, tMax));
+        expect(blocker === null).toBe(blocks.length === 0);
+        if (blocker) {
+          expect(blocks).toContain(blocker);
+          blocked++;
+        }
+      }
+      expect(hits).toBeGreaterThan(200);
+      expect(blocked).toBeGreaterThan(200);
+    });
+
+    it(`lists the objects overlapping a box, stopping past a limit, over ${count} objects`, () => {
+      random.reset(hashKey(13, count));
+      const shapes = randomShapes(count);
+      const bvh = new ObjectBvh(shapes);
+      const found: Intersectable[] = [];
+      for (let i = 0; i < 500; i++) {
+        const box = new Box3().setFromPoints([point(5), point(5)]);
+        const expected = shapes.filter((s) => s.worldBounds.intersectsBox(box));
+        const end = bvh.overlapping(box, found, 1, Infinity);
+        expect(new Set(found.slice(1, end))).toEqual(new Set(expected));
+        expect(end - 1).toBe(expected.length);
+        const limited = bvh.overlapping(box, found, 0, 2);
+        expect(limited).toBe(Math.min(expected.length, limited));
+        if (expected.length > 2) expect(limited).toBeGreaterThan(2);
+        else expect(limited).toBe(expected.length);
+      }
+    });
+  }
+});
