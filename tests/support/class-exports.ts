@@ -88,11 +88,18 @@ export function simulatedExport(index: number, seed = 1): QuestExport {
   return buildExport({
     progress,
     participant: `P${String(index + 1).padStart(2, '0')}`,
+    installId: testUuid(seed * 10_000 + index),
+    attemptId: testUuid(seed * 10_000 + index + 5_000),
     assignment: CLASS_ASSIGNMENT,
     survey: answersSurvey ? { survey: 'default', submittedAt: new Date(Date.parse(startedAt) + t).toISOString(), answers: surveyAnswers(rand) } : null,
     exportedAt: new Date(Date.parse(startedAt) + t + 1000).toISOString(),
     appVersion: '0.1.0',
   });
+}
+
+/** A fixed, valid version 4 UUID for test number `n`. */
+export function testUuid(n: number): string {
+  return `00000000-0000-4000-8000-${n.toString(16).padStart(12, '0')}`;
 }
 
 /** Answers to the default survey, leaning towards "helped". */

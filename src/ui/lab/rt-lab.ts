@@ -656,6 +656,7 @@ export class RtLab extends LitElement {
       <rt-export-menu
         .progress=${() => session.engine.progress}
         .participant=${session.context.participantCode}
+        .attemptId=${session.context.attemptId}
         .assignment=${this.assignment}
         .survey=${this.survey}
         @export-failed=${(event: CustomEvent<string>) => this.toast(event.detail, 'error')}

@@ -1,7 +1,8 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html, LitElement, nothing } from 'lit';
 import { loadBrowserCatalog } from '../../../app/level-catalog-browser.ts';
-import { combinedCsv, readClassFiles, type ClassFiles, type DroppedFile } from '../../../classroom/dashboard-class.ts';
+import { combinedCsv, readClassFiles, surveyCsv, type ClassFiles, type DroppedFile } from '../../../classroom/dashboard-class.ts';
+import { assignmentsOf, classCodesOf, classLearners, filterLearners, type ClassLearner, type LearnerFilter } from '../../../classroom/dashboard-learners.ts';
 import { MAX_EXPORT_BYTES } from '../../../classroom/dashboard-read-file.ts';
 import type { SkippedFile } from '../../../classroom/dashboard-record.ts';
 import { summarizeLevels, type LevelSummary } from '../../../classroom/dashboard-summary.ts';
@@ -44,6 +45,7 @@ export class RtDashboardPage extends LitElement {
     files: { state: true },
     reading: { state: true },
     dragging: { state: true },
+    filter: { state: true },
     locale: {},
   };
 
@@ -130,6 +132,18 @@ export class RtDashboardPage extends LitElement {
         vertical-align: top;
         overflow-wrap: anywhere;
       }
+      .filter {
+        display: flex;
+        flex-wrap: wrap;
+        gap: var(--rt-space) calc(var(--rt-space) * 2);
+        align-items: center;
+        margin-top: var(--rt-space);
+      }
+      .filter label {
+        display: flex;
+        gap: 6px;
+        align-items: center;
+      }
       .level-facts {
         margin: 0;
         color: var(--rt-muted);
@@ -140,11 +154,16 @@ export class RtDashboardPage extends LitElement {
   declare files: ClassFiles;
   declare reading: boolean;
   declare dragging: boolean;
+  /** Which assignment and class are shown. */
+  declare filter: LearnerFilter;
   /** The language of level titles and survey texts. */
   declare locale: Locale;
 
   /** Texts already read, to count an export dropped twice once. */
   private seen = new Map<string, string>();
+  /** Every learner of the files read, each counted once; `shown` those the filter keeps. */
+  private learners: ClassLearner[] = [];
+  private shown: ClassLearner[] = [];
   private levels: LevelSummary[] = [];
   private surveys: SurveysSummary = { surveys: [], unknown: [] };
 
@@ -153,13 +172,16 @@ export class RtDashboardPage extends LitElement {
     this.files = { records: [], skipped: [] };
     this.reading = false;
     this.dragging = false;
+    this.filter = { assignmentId: null, classCode: null };
     this.locale = 'en';
   }
 
   protected override willUpdate(changed: Map<PropertyKey, unknown>): void {
-    if (changed.has('files')) {
-      this.levels = summarizeLevels(this.files.records);
-      this.surveys = summarizeSurveys(this.files.records, surveyById);
+    if (changed.has('files')) this.learners = classLearners(this.files.records);
+    if (changed.has('files') || changed.has('filter')) {
+      this.shown = filterLearners(this.learners, this.filter);
+      this.levels = summarizeLevels(this.shown);
+      this.surveys = summarizeSurveys(this.shown, surveyById);
     }
   }
 
@@ -184,6 +206,7 @@ export class RtDashboardPage extends LitElement {
   private clear(): void {
     this.seen = new Map();
     this.files = { records: [], skipped: [] };
+    this.filter = { assignmentId: null, classCode: null };
   }
 
   private onDrop(event: DragEvent): void {
@@ -203,9 +226,56 @@ export class RtDashboardPage extends LitElement {
     if (input.files?.length) void this.addFiles(input.files).then(() => (input.value = ''));
   }
 
-  private downloadCsv(): void {
+  private downloadCsv(kind: 'class' | 'survey'): void {
     const date = new Date().toISOString().slice(0, 10);
-    downloadText(`\uFEFF${combinedCsv(this.files.records)}`, `ray-tracer-quest-class-${date}.csv`, 'text/csv;charset=utf-8');
+    const text = kind === 'class' ? combinedCsv(this.shown) : surveyCsv(this.shown);
+    downloadText(`\uFEFF${text}`, `ray-tracer-quest-${kind}-${date}.csv`, 'text/csv;charset=utf-8');
+  }
+
+  /** "3 learners counted (5 files, 2 merged into their learner's), 1 file skipped." */
+  private statusText(): string {
+    const { records, skipped } = this.files;
+    const learners = this.learners.length;
+    const merged = records.length - learners;
+    const counted = learners === 1 ? msg('1 learner counted') : msg(str`${learners} learners counted`);
+    const files = merged === 0 ? '' : merged === 1 ? msg(str` (from ${records.length} files: 1 merged into its learner's)`) : msg(str` (from ${records.length} files: ${merged} merged into their learner's)`);
+    const skippedText = skipped.length === 1 ? msg('1 file skipped.') : msg(str`${skipped.length} files skipped.`);
+    return `${counted}${files}, ${skippedText}`;
+  }
+
+  /** Choosers for one assignment and one class, when the files hold more than one. */
+  private renderFilter() {
+    const assignments = assignmentsOf(this.learners);
+    const classes = classCodesOf(this.learners);
+    if (assignments.length < 2 && classes.length < 2) return nothing;
+    const pick = (changes: Partial<LearnerFilter>) => (this.filter = { ...this.filter, ...changes });
+    const value = (text: string) => (text === '*' ? null : text);
+    return html`<div class="filter">
+      ${assignments.length < 2
+        ? nothing
+        : html`<label
+            >${msg('Assignment')}
+            <select name="assignment" @change=${(event: Event) => pick({ assignmentId: value((event.target as HTMLSelectElement).value) })}>
+              <option value="*" ?selected=${this.filter.assignmentId === null}>${msg(str`All (${this.learners.length} learners)`)}</option>
+              ${assignments.map(
+                (assignment) =>
+                  html`<option value=${assignment.id} ?selected=${this.filter.assignmentId === assignment.id}>
+                    ${assignment.id === '' ? msg('Free play (no assignment)') : assignment.title} (${assignment.learners})
+                  </option>`,
+              )}
+            </select></label
+          >`}
+      ${classes.length < 2
+        ? nothing
+        : html`<label
+            >${msg('Class')}
+            <select name="class" @change=${(event: Event) => pick({ classCode: value((event.target as HTMLSelectElement).value) })}>
+              <option value="*" ?selected=${this.filter.classCode === null}>${msg('All classes')}</option>
+              ${classes.map((code) => html`<option value=${code} ?selected=${this.filter.classCode === code}>${code === '' ? msg('No class code') : code}</option>`)}
+            </select></label
+          >`}
+      <span>${msg(str`${this.shown.length} learners shown.`)}</span>
+    </div>`;
   }
 
   override render() {
@@ -239,15 +309,15 @@ export class RtDashboardPage extends LitElement {
             ${msg('The files are read in this browser only. Nothing is uploaded or sent anywhere.')}
           </p>
           <p class="status" role="status">
-            ${this.reading
-              ? msg('Reading the files…')
-              : records.length + skipped.length > 0
-                ? `${records.length === 1 ? msg('1 learner counted') : msg(str`${records.length} learners counted`)}, ${skipped.length === 1 ? msg('1 file skipped.') : msg(str`${skipped.length} files skipped.`)}`
-                : ''}
+            ${this.reading ? msg('Reading the files…') : records.length + skipped.length > 0 ? this.statusText() : ''}
           </p>
+          ${this.renderFilter()}
           <div class="actions">
-            <button type="button" ?disabled=${records.length === 0} @click=${this.downloadCsv} title=${msg('One CSV with every task attempt of every learner, for a spreadsheet or R')}>
+            <button type="button" ?disabled=${this.shown.length === 0} @click=${() => this.downloadCsv('class')} title=${msg('One CSV with every task attempt of every learner shown, for a spreadsheet or R')}>
               ${msg('Download combined CSV')}
+            </button>
+            <button type="button" ?disabled=${!this.shown.some((learner) => learner.survey)} @click=${() => this.downloadCsv('survey')} title=${msg('One row per learner shown who answered the survey, one column per question')}>
+              ${msg('Download survey CSV')}
             </button>
             <button type="button" ?disabled=${records.length + skipped.length === 0} @click=${this.clear} title=${msg('Forget the files read so far and start again')}>
               ${msg('Clear')}
