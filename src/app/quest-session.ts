@@ -26,7 +26,8 @@ import type { Store } from '../lab-state/store.ts';
  *   timing) until the code is given: the time spent typing it is no task's time.
  */
 
-export type SessionMode = { kind: 'map' } | { kind: 'level'; id: string } | { kind: 'free-lab' };
+/** `finished`: an assignment all passed, reopened: its closing screen (the survey, then the end) instead of a level. */
+export type SessionMode = { kind: 'map' } | { kind: 'level'; id: string } | { kind: 'free-lab' } | { kind: 'finished' };
 
 /** What the session keeps besides progress, for the classroom's exports. */
 export interface SessionContext {
@@ -151,7 +152,7 @@ export class QuestSession {
   /**
    * Where to start: the level the learner was playing; else, for a newcomer who has done
    * nothing yet, the first level; else the map. Waits (on the map, behind the code dialog)
-   * while a participant code is needed, and shows the map once an assignment is all passed.
+   * while a participant code is needed; a finished assignment opens on its closing screen.
    */
   start(): SessionMode {
     if (this.needsParticipantCode) {
@@ -159,10 +160,13 @@ export class QuestSession {
       this.openMap();
       return this.modeNow;
     }
-    // A finished assignment reopens on its closing screen (the map, with the survey or the
-    // end of the assignment beside it), not on its last level: that would log a new visit.
+    // A finished assignment reopens on its closing screen, not on its last level: that
+    // would start a new visit (and new optional task attempts) in the log.
     if (this.assignment && this.allPassed) {
-      this.openMap();
+      this.leaveMode();
+      this.engineNow.closeLevel();
+      this.modeNow = { kind: 'finished' };
+      this.notify();
       return this.modeNow;
     }
     const progress = this.engineNow.progress;

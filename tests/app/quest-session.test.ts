@@ -159,14 +159,14 @@ describe('an assignment', () => {
     expect(readSessionContext(storage, game.progressKey).attemptId).toBe(game.context.attemptId);
   });
 
-  it('reopens a finished assignment on the map, not on its last level', () => {
+  it('reopens a finished assignment on its closing screen, not on its last level', () => {
     const oneLevel: Assignment = { ...assignment, levels: ['second'], askParticipantCode: false };
     const { store, storage, session: game } = session(new MemoryStorage(), oneLevel);
     expect(game.start()).toEqual({ kind: 'level', id: 'second' });
     store.dispatch({ type: 'view.orbited' });
     expect(game.allPassed).toBe(true);
     const again = session(storage, oneLevel).session;
-    expect(again.start()).toEqual({ kind: 'map' });
+    expect(again.start()).toEqual({ kind: 'finished' });
     expect(again.engine.events.filter((event) => event.type === 'level.opened')).toHaveLength(1);
   });
 

@@ -49,6 +49,7 @@ import './panels/rt-tracer-panel.ts';
 import './panels/rt-file-panel.ts';
 import './panels/rt-bvh-panel.ts';
 import '../classroom/rt-export-menu.ts';
+import '../classroom/rt-assignment-done.ts';
 import type { Scene } from '../../scene/scene.ts';
 import { BvhBoxes } from '../../view/bvh-boxes.ts';
 
@@ -683,6 +684,9 @@ export class RtLab extends LitElement {
       return html`<h2>${msg('Free lab')}</h2>
         <p>${msg('Build and explore your own scene: every panel is here, and your scene is kept for next time.')}</p>
         <button class="primary" @click=${() => session.openMap()}>${msg('Level map')}</button>`;
+    }
+    if (session?.mode.kind === 'finished') {
+      return html`<rt-assignment-done heading=${this.assignment?.title ?? ''} @open-map=${() => session.openMap()}></rt-assignment-done>`;
     }
     if (!session || !view) {
       return html`<p>${msg('Your tasks appear here when you play a level. In the free lab, explore freely.')}</p>
