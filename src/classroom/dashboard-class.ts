@@ -3,7 +3,7 @@ import { csvTable } from './csv-text.ts';
 import { readExportFile } from './dashboard-read-file.ts';
 import type { ClassLearner } from './dashboard-learners.ts';
 import type { ClassRecord, SkippedFile } from './dashboard-record.ts';
-import { surveyQuestionIds } from './survey-columns.ts';
+import { surveyQuestionIds, type SurveyLookup } from './survey-columns.ts';
 
 /**
  * A class's dropped files, read: the records that count and the files skipped with their
@@ -39,18 +39,20 @@ export function readClassFiles(files: readonly DroppedFile[], earlier: ClassFile
   return { records, skipped };
 }
 
-const surveyQuestions = (learners: readonly ClassLearner[]) =>
+const surveyQuestions = (learners: readonly ClassLearner[], surveyById: SurveyLookup) =>
   surveyQuestionIds(
+    surveyById,
     learners.map((learner) => learner.survey?.id),
     learners.map((learner) => learner.survey?.answers),
   );
 
 /**
  * The combined CSV: the learners' CSV export's columns and rows (the kept file of each
- * playthrough, so nothing is counted twice), then the file each row came from.
+ * playthrough, so nothing is counted twice), then the file each row came from. Survey
+ * columns in the order of `surveyById`'s questions (the app's surveys.ts).
  */
-export function combinedCsv(learners: readonly ClassLearner[]): string {
-  const questions = surveyQuestions(learners);
+export function combinedCsv(learners: readonly ClassLearner[], surveyById: SurveyLookup): string {
+  const questions = surveyQuestions(learners, surveyById);
   const rows = learners.flatMap((learner) =>
     learner.parts.flatMap((part) => attemptRows({ ...part, survey: learner.survey }, part.attempts, questions).map((row) => [...row, part.file])),
   );
@@ -58,9 +60,9 @@ export function combinedCsv(learners: readonly ClassLearner[]): string {
 }
 
 /** The survey CSV: one row per learner who answered, one column per question. */
-export function surveyCsv(learners: readonly ClassLearner[]): string {
+export function surveyCsv(learners: readonly ClassLearner[], surveyById: SurveyLookup): string {
   const answered = learners.filter((learner) => learner.survey);
-  const questions = surveyQuestions(answered);
+  const questions = surveyQuestions(answered, surveyById);
   const header = ['learner_id', 'participant', 'assignment', 'assignment_id', 'class_code', 'survey', ...questions];
   const rows = answered.map((learner) => [
     learner.learnerId,

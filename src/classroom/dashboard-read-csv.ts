@@ -5,7 +5,6 @@ import { parseCsv } from './csv-text.ts';
 import { SURVEY_PREFIX } from './attempt-rows.ts';
 import type { ClassRecord, FileRead } from './dashboard-record.ts';
 import type { SurveyAnswers } from './survey-answers.ts';
-import { surveyById } from './surveys.ts';
 
 /**
  * Reads a learner's CSV export (one row per task attempt, the columns of
@@ -89,18 +88,17 @@ function howOf(how: string, shownByApp: boolean): HowCompleted {
   return known ?? (shownByApp ? 'shown' : 'done');
 }
 
-/** The survey columns of a row: numbers where the survey's question is a scale or a number. */
+/**
+ * The survey columns of a row. A cell that is a plain number was a scale's or a number
+ * question's answer (choices are written as their option's id, which starts with a letter).
+ */
 function surveyOf(id: string, names: readonly string[], row: readonly string[]): ClassRecord['survey'] {
   if (id === '') return null;
-  const questions = new Map(surveyById(id)?.questions.map((question) => [question.id, question.type]));
   const answers: SurveyAnswers = {};
   names.forEach((name, index) => {
     const value = row[index] ?? '';
     if (!name.startsWith(SURVEY_PREFIX) || value === '') return;
-    const question = name.slice(SURVEY_PREFIX.length);
-    const type = questions.get(question);
-    const numeric = type === 'scale' || type === 'number' || (type === undefined && /^-?\d+(\.\d+)?$/.test(value));
-    answers[question] = numeric && Number.isFinite(Number(value)) ? Number(value) : value;
+    answers[name.slice(SURVEY_PREFIX.length)] = /^-?\d+(\.\d+)?$/.test(value) ? Number(value) : value;
   });
   return { id, answers };
 }

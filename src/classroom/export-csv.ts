@@ -3,6 +3,7 @@ import { attemptRows, csvHeader, ID_COLUMNS } from './attempt-rows.ts';
 import { csvTable } from './csv-text.ts';
 import { exportOwner, type ExportInput } from './export-context.ts';
 import { surveyQuestionIds } from './survey-columns.ts';
+import { surveyById } from './surveys.ts';
 
 /**
  * The CSV export (spec/classroom.md; every column is defined in docs/classroom.md): one row
@@ -26,6 +27,6 @@ export const BOM = '\uFEFF';
 
 export function exportCsv(input: ExportInput): string {
   const owner = exportOwner(input);
-  const questions = surveyQuestionIds([input.survey?.survey, input.assignment?.survey], [input.survey?.answers]);
+  const questions = surveyQuestionIds(surveyById, [input.survey?.survey, input.assignment?.survey], [input.survey?.answers]);
   return BOM + csvTable(csvHeader(questions), attemptRows(owner, readLog(input.progress.log).attempts, questions), ID_COLUMNS);
 }

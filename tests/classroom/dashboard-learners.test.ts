@@ -2,6 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { readClassFiles, surveyCsv } from '../../src/classroom/dashboard-class.ts';
 import { assignmentsOf, classCodesOf, classLearners, filterLearners } from '../../src/classroom/dashboard-learners.ts';
 import { summarizeLevels } from '../../src/classroom/dashboard-summary.ts';
+import { surveyById } from '../../src/classroom/surveys.ts';
 import { parseCsv } from '../../src/classroom/csv-text.ts';
 import { exportCsv } from '../../src/classroom/export-csv.ts';
 import { buildExport, type QuestExport } from '../../src/classroom/export-json.ts';
@@ -108,7 +109,7 @@ describe('filters and the survey CSV', () => {
   });
 
   it('writes one survey row per learner who answered, one column per question, codes quoted', () => {
-    const text = surveyCsv(learners);
+    const text = surveyCsv(learners, surveyById);
     const csv = parseCsv(text);
     if (!csv.ok) throw new Error(csv.error);
     const [header, ...rows] = csv.rows;

@@ -119,7 +119,7 @@ describe('a class of files', () => {
 
   it('writes every attempt of every learner as one CSV row, with the file it came from', () => {
     const { records } = readClassFiles(files);
-    const csv = parseCsv(combinedCsv(classLearners(records)));
+    const csv = parseCsv(combinedCsv(classLearners(records), surveyById));
     if (!csv.ok) throw new Error(csv.error);
     const [header, ...rows] = csv.rows;
     expect(header.slice(0, 7)).toEqual(['learner_id', 'attempt_id', 'install_id', 'participant', 'assignment', 'assignment_id', 'class_code']);
