@@ -5,7 +5,8 @@ import { combinedCsv, readClassFiles, surveyCsv, type ClassFiles, type DroppedFi
 import { assignmentsOf, classCodesOf, classLearners, filterLearners, type ClassLearner, type LearnerFilter } from '../../../classroom/dashboard-learners.ts';
 import { MAX_EXPORT_BYTES } from '../../../classroom/dashboard-read-file.ts';
 import type { SkippedFile } from '../../../classroom/dashboard-record.ts';
-import { summarizeLevels, type LevelSummary } from '../../../classroom/dashboard-summary.ts';
+import { learnerInLevel, summarizeLevels, type LevelSummary } from '../../../classroom/dashboard-summary.ts';
+import { stickingPoints, STUCK_MIN_LEARNERS, STUCK_MIN_SHARE, STUCK_TIMES_TYPICAL } from '../../../classroom/dashboard-stuck.ts';
 import { summarizeSurveys, type SurveysSummary } from '../../../classroom/dashboard-survey.ts';
 import { downloadText } from '../../../util/download-file.ts';
 import { surveyById } from '../../../classroom/surveys.ts';
@@ -13,6 +14,7 @@ import { localize, type Locale } from '../../../quest/localized-text.ts';
 import { playableLevels } from '../../../quest/level-index.ts';
 import { classroomStyles, pageStyles } from '../classroom-styles.ts';
 import './rt-dashboard-completion.ts';
+import { learnerLabel } from './rt-dashboard-level-times.ts';
 import { formatDuration } from './rt-dashboard-format.ts';
 import './rt-dashboard-stuck.ts';
 import './rt-dashboard-survey.ts';
@@ -144,6 +146,11 @@ export class RtDashboardPage extends LitElement {
         gap: 6px;
         align-items: center;
       }
+      .rule {
+        margin: 0 0 var(--rt-space);
+        color: var(--rt-muted);
+        max-width: 70em;
+      }
       .level-facts {
         margin: 0;
         color: var(--rt-muted);
@@ -228,7 +235,7 @@ export class RtDashboardPage extends LitElement {
 
   private downloadCsv(kind: 'class' | 'survey'): void {
     const date = new Date().toISOString().slice(0, 10);
-    const text = kind === 'class' ? combinedCsv(this.shown) : surveyCsv(this.shown);
+    const text = kind === 'class' ? combinedCsv(this.shown, surveyById) : surveyCsv(this.shown, surveyById);
     downloadText(`\uFEFF${text}`, `ray-tracer-quest-${kind}-${date}.csv`, 'text/csv;charset=utf-8');
   }
 
@@ -324,9 +331,29 @@ export class RtDashboardPage extends LitElement {
             </button>
           </div>
         </section>
-        ${skipped.length ? this.renderSkipped(skipped) : null} ${this.levels.map((level) => this.renderLevel(level))} ${this.renderSurveys()}
+        ${skipped.length ? this.renderSkipped(skipped) : null} ${this.renderLearnerTimes()} ${this.levels.map((level) => this.renderLevel(level))}
+        ${this.renderSurveys()}
       </main>
     `;
+  }
+
+  /** Time per level per learner, every level side by side. */
+  private renderLearnerTimes() {
+    if (this.shown.length === 0 || this.levels.length === 0) return nothing;
+    const names = levelNames(this.locale);
+    const rows = this.shown.map((learner) => ({ learner: learnerLabel(learner), cells: this.levels.map((level) => learnerInLevel(learner, level.level)) }));
+    return html`<section class="learner-times" aria-labelledby="learner-times-heading">
+      <h2 id="learner-times-heading">${msg('Time per level, per learner')}</h2>
+      <!-- A long class folds away, so the levels below stay in reach. -->
+      <details ?open=${this.shown.length <= 40}>
+        <summary>${msg(str`${this.shown.length} learners`)}</summary>
+        <rt-dashboard-level-times
+          .rows=${rows}
+          .levels=${this.levels.map((level) => names.level(level.level))}
+          caption=${msg('Active time of each learner in each level; a striped bar: not passed (yet)')}
+        ></rt-dashboard-level-times>
+      </details>
+    </section>`;
   }
 
   private renderSkipped(skipped: readonly SkippedFile[]) {
@@ -349,6 +376,7 @@ export class RtDashboardPage extends LitElement {
   private renderLevel(level: LevelSummary) {
     const names = levelNames(this.locale);
     const title = names.level(level.level);
+    const stuck = stickingPoints(level.tasks);
     const rows = level.tasks.map((task) => ({ ...task, label: task.mandatory ? names.task(level.level, task.task) : msg(str`${names.task(level.level, task.task)} (optional)`) }));
     return html`<section class="level" data-level=${level.level} aria-label=${title}>
       <h2>${title}</h2>
@@ -359,13 +387,23 @@ export class RtDashboardPage extends LitElement {
       </p>
       <h3>${msg('Active time per task')}</h3>
       <rt-dashboard-times
-        .rows=${[...rows, { label: msg('Whole level'), times: level.times, stats: level.stats }]}
+        .rows=${rows}
         caption=${msg(str`Active time per task in ${title}: a box for the middle half, a line for the median, a dot per learner`)}
+      ></rt-dashboard-times>
+      <h3>${msg('Active time for the whole level (learners who passed)')}</h3>
+      <rt-dashboard-times
+        class="whole-level"
+        .rows=${[{ label: msg('Whole level'), times: level.times, stats: level.stats }]}
+        caption=${msg(str`Active time for the whole of ${title}, of the learners who passed it`)}
       ></rt-dashboard-times>
       <h3>${msg('Completion')}</h3>
       <rt-dashboard-completion .rows=${rows} caption=${msg(str`Completion per task in ${title}`)}></rt-dashboard-completion>
       <h3>${msg('Where learners got stuck')}</h3>
-      <rt-dashboard-stuck .rows=${rows.map((row) => ({ ...row, task: names.task(level.level, row.task) }))} caption=${msg(str`Hints, "show me" and times per task in ${title}`)}></rt-dashboard-stuck>
+      <p class="rule">${stuckRule()}</p>
+      <rt-dashboard-stuck
+        .rows=${rows.map((row) => ({ ...row, task: names.task(level.level, row.task), stuck: stuck.has(row.task) }))}
+        caption=${msg(str`Hints, "show me" and times per task in ${title}`)}
+      ></rt-dashboard-stuck>
     </section>`;
   }
 
@@ -384,6 +422,14 @@ export class RtDashboardPage extends LitElement {
       </section>`,
     )}`;
   }
+}
+
+/** The sticking-point rule (classroom/dashboard-stuck.ts), in words. */
+function stuckRule(): string {
+  const share = `${Math.round(STUCK_MIN_SHARE * 100)} %`;
+  return msg(
+    str`⚠ marks a sticking point: a required task where at least ${share} of the learners needed help (a hint, "show me", or they did not finish it) and at least ${STUCK_TIMES_TYPICAL} times as many as on a typical task of this level (the median). Hints offered after idling count too, so some help on every task is normal. Tasks seen by fewer than ${STUCK_MIN_LEARNERS} learners are not marked.`,
+  );
 }
 
 customElements.define('rt-dashboard-page', RtDashboardPage);

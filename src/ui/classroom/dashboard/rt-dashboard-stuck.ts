@@ -4,16 +4,13 @@ import { completionRate, type TaskSummary } from '../../../classroom/dashboard-s
 import { DashboardChart } from './rt-dashboard-chart.ts';
 import { formatDuration, formatPercent } from './rt-dashboard-format.ts';
 
-/** The share of learners needing help at or above which a task's row is marked as a sticking point. */
-const STUCK_SHARE = 0.4;
-
 /**
  * @summary Where learners got stuck, per task: how many saw it and finished it, the median
  * and middle half of their times, hints (learners who needed one, and rungs shown) and
- * "show me". A row where at least 40 % of the learners needed help (a hint, "show me")
- * or did not finish a mandatory task is marked with a word and an icon, not colour alone.
+ * "show me". A sticking point (`stuck`, from classroom/dashboard-stuck.ts, whose rule the
+ * page explains) is marked with a word and an icon, not colour alone.
  */
-export class RtDashboardStuck extends DashboardChart<TaskSummary> {
+export class RtDashboardStuck extends DashboardChart<TaskSummary & { stuck: boolean }> {
   static override styles = css`
     :host {
       display: block;
@@ -82,11 +79,11 @@ export class RtDashboardStuck extends DashboardChart<TaskSummary> {
       </thead>
       <tbody>
         ${this.rows.map((task) => {
-          const stuck = task.learners > 0 && task.learnersNeedingHelp / task.learners >= STUCK_SHARE;
+          const { stuck } = task;
           return html`<tr class=${stuck ? 'stuck' : ''} data-task=${task.task}>
             <th scope="row">
               ${task.task}${task.mandatory ? '' : html` <span class="muted">(${msg('optional')})</span>`}
-              ${stuck ? html`<span class="flag" title=${msg('At least 40 % of the learners needed a hint or "show me", or did not finish it')}>⚠ ${msg('sticking point')}</span>` : null}
+              ${stuck ? html`<span class="flag">⚠ ${msg('sticking point')}</span>` : null}
             </th>
             <td>${task.learners}</td>
             <td>${task.done + task.shown} (${formatPercent(completionRate(task))})</td>
