@@ -1,6 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { css, html } from 'lit';
 import { DashboardChart } from './rt-dashboard-chart.ts';
+import { tableStyles } from './rt-dashboard-chart-styles.ts';
 import { formatDuration } from './rt-dashboard-format.ts';
 
 /** One learner's row: their active time per level (in the columns' order), null where they never came. */
@@ -17,58 +18,42 @@ export interface LearnerLevelRow {
  */
 export class RtDashboardLevelTimes extends DashboardChart<LearnerLevelRow> {
   static override properties = { ...DashboardChart.properties, levels: { attribute: false } };
-  static override styles = css`
-    :host {
-      display: block;
-      overflow-x: auto;
-    }
-    table {
-      border-collapse: collapse;
-      font-size: 0.9rem;
-      font-variant-numeric: tabular-nums;
-    }
-    caption {
-      text-align: left;
-      font-weight: 600;
-      padding-bottom: 4px;
-    }
-    th,
-    td {
-      padding: 3px 8px;
-      border-bottom: 1px solid var(--rt-border);
-      text-align: left;
-      white-space: nowrap;
-    }
-    thead th {
-      color: var(--rt-muted);
-      font-weight: 600;
-      vertical-align: bottom;
-      white-space: normal;
-      min-width: 8em;
-    }
-    .cell {
-      display: grid;
-      grid-template-columns: 90px auto;
-      align-items: center;
-      gap: 6px;
-    }
-    .track {
-      height: 10px;
-      background: var(--rt-surface-2);
-      border-radius: 3px;
-      overflow: hidden;
-    }
-    .bar {
-      height: 100%;
-      background: var(--rt-accent);
-    }
-    .bar.open {
-      background: repeating-linear-gradient(45deg, var(--rt-muted) 0 3px, transparent 3px 6px);
-    }
-    .none {
-      color: var(--rt-muted);
-    }
-  `;
+  static override styles = [
+    tableStyles,
+    css`
+      th,
+      td {
+        text-align: left;
+        white-space: nowrap;
+      }
+      thead th {
+        white-space: normal;
+        min-width: 8em;
+      }
+      .cell {
+        display: grid;
+        grid-template-columns: 90px auto;
+        align-items: center;
+        gap: 6px;
+      }
+      .track {
+        height: 10px;
+        background: var(--rt-surface-2);
+        border-radius: 3px;
+        overflow: hidden;
+      }
+      .bar {
+        height: 100%;
+        background: var(--rt-accent);
+      }
+      .bar.open {
+        background: repeating-linear-gradient(45deg, var(--rt-muted) 0 3px, transparent 3px 6px);
+      }
+      .none {
+        color: var(--rt-muted);
+      }
+    `,
+  ];
 
   /** The column headings: level titles, in the cells' order. */
   declare levels: readonly string[];

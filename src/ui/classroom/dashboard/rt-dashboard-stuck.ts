@@ -2,6 +2,7 @@ import { msg } from '@lit/localize';
 import { css, html } from 'lit';
 import { completionRate, type TaskSummary } from '../../../classroom/dashboard-summary.ts';
 import { DashboardChart } from './rt-dashboard-chart.ts';
+import { tableStyles } from './rt-dashboard-chart-styles.ts';
 import { formatDuration, formatPercent } from './rt-dashboard-format.ts';
 
 /**
@@ -11,54 +12,38 @@ import { formatDuration, formatPercent } from './rt-dashboard-format.ts';
  * page explains) is marked with a word and an icon, not colour alone.
  */
 export class RtDashboardStuck extends DashboardChart<TaskSummary & { stuck: boolean }> {
-  static override styles = css`
-    :host {
-      display: block;
-      overflow-x: auto;
-    }
-    table {
-      border-collapse: collapse;
-      width: 100%;
-      font-size: 0.9rem;
-      font-variant-numeric: tabular-nums;
-    }
-    caption {
-      text-align: left;
-      font-weight: 600;
-      padding-bottom: 4px;
-    }
-    th,
-    td {
-      padding: 4px 8px;
-      border-bottom: 1px solid var(--rt-border);
-      text-align: right;
-    }
-    th:first-child,
-    td:first-child {
-      text-align: left;
-    }
-    td {
-      white-space: nowrap;
-    }
-    thead th {
-      color: var(--rt-muted);
-      font-weight: 600;
-      vertical-align: bottom;
-    }
-    tr.stuck td {
-      background: color-mix(in srgb, var(--rt-warning) 14%, transparent);
-    }
-    .muted {
-      color: var(--rt-muted);
-      font-weight: normal;
-    }
-    .flag {
-      color: var(--rt-warning);
-      font-weight: 600;
-      margin-left: 6px;
-      white-space: nowrap;
-    }
-  `;
+  static override styles = [
+    tableStyles,
+    css`
+      table {
+        width: 100%;
+      }
+      th,
+      td {
+        text-align: right;
+      }
+      th:first-child,
+      td:first-child {
+        text-align: left;
+      }
+      td {
+        white-space: nowrap;
+      }
+      tr.stuck td {
+        background: color-mix(in srgb, var(--rt-warning) 14%, transparent);
+      }
+      .muted {
+        color: var(--rt-muted);
+        font-weight: normal;
+      }
+      .flag {
+        color: var(--rt-warning);
+        font-weight: 600;
+        margin-left: 6px;
+        white-space: nowrap;
+      }
+    `,
+  ];
 
   override render() {
     return html`<table>
