@@ -4,6 +4,7 @@ import QRCode from 'qrcode';
 import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import { assignmentSchema, CLASS_CODE, TITLE_MAX } from '../../classroom/assignment-schema.ts';
+import { compactAssignment } from '../../classroom/assignment-compact.ts';
 import { assignmentUrl } from '../../classroom/assignment-link.ts';
 import { SURVEY_IDS } from '../../classroom/surveys.ts';
 import type { Level } from '../../quest/level-schema.ts';
@@ -193,9 +194,11 @@ export class RtTeacherPage extends LitElement {
       this.url = this.qr = null;
       return;
     }
-    const assignment = { ...this.assignment, title: this.assignment.title.trim() };
+    const assignment = compactAssignment({ ...this.assignment, title: this.assignment.title.trim() }, this.levels);
     const url = await assignmentUrl(assignment, location.href);
-    const svg = await QRCode.toString(url, { type: 'svg', errorCorrectionLevel: 'M', margin: 2 });
+    // Level L (7 % recovery) is enough for a projected code nothing covers, and gives the
+    // fewest, largest squares: what matters from the back of a classroom.
+    const svg = await QRCode.toString(url, { type: 'svg', errorCorrectionLevel: 'L', margin: 2 });
     // A newer change may have finished first: only the latest link is shown.
     if (run !== this.made) return;
     this.url = url;
