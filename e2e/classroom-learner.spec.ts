@@ -92,3 +92,20 @@ test('one student hands in four files: the dashboard shows one learner who passe
   await expect(dashboard.locator('section.level[data-level="01-introduction"] .level-facts')).toContainText('1 of 1 learners passed');
   expect(errors).toEqual([]);
 });
+
+test('the survey fits the lab\'s task column at 1366×900', async ({ page }) => {
+  await page.setViewportSize({ width: 1366, height: 900 });
+  // No required task: the assignment is passed at once and its survey takes the task column.
+  const hash = await encodeAssignment({ ...assignment, requiredTasks: { '01-introduction': [] }, askParticipantCode: false });
+  await page.goto(`./${hash}`);
+  const survey = page.locator('rt-lab rt-survey');
+  await expect(survey.getByRole('radio', { name: 'Primary school' })).toBeVisible();
+  const overflowing = await survey.evaluate((element) => {
+    const column = element.parentElement!.getBoundingClientRect();
+    const inside = [element, ...element.shadowRoot!.querySelectorAll('*')];
+    return inside.filter((node) => node.getBoundingClientRect().right > column.right + 1).map((node) => node.tagName);
+  });
+  expect(overflowing).toEqual([]);
+  const box = await survey.boundingBox();
+  expect(box!.width).toBeGreaterThan(200);
+});
