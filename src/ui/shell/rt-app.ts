@@ -74,7 +74,8 @@ export class RtApp extends LitElement {
       await page.load();
       this.requestUpdate();
     } catch (error) {
-      this.pageProblem = msg(str`This page could not be loaded (${error instanceof Error ? error.message : String(error)}). Check the connection and reload.`);
+      const reason = error instanceof Error ? error.message : String(error);
+      this.pageProblem = msg(str`This page could not be loaded (${reason}). Check the connection and reload.`);
     }
   }
 
