@@ -7,6 +7,8 @@ import { PNG } from 'pngjs';
 // reload offline plays on (and the teacher's pages open); and the USB-stick build
 // (`npm run build:usb`) opened from disk, file://, draws its scene and ray traces.
 
+test.use({ serviceWorkers: 'allow' });
+
 test('after one visit the app opens offline, with the teacher pages', async ({ page, context }) => {
   await page.goto('./');
   await expect(page.locator('rt-quest-panel').getByRole('heading', { name: 'Introduction' })).toBeVisible();
