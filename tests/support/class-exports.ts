@@ -77,7 +77,11 @@ export function simulatedExport(index: number, seed = 1): QuestExport {
       log({ type: 'task.completed', level: level.id, task, mandatory: true, required: true, how, points: how === 'done' ? 10 : 0 }, between(4000, 45_000));
     }
     if (!passed) break;
-    if (rand() < 0.4) log({ type: 'task.completed', level: level.id, task: level.optional, mandatory: false, required: false, how: 'done', points: 5 }, between(3000, 20_000));
+    if (rand() < 0.4) {
+      // An optional task is timed from the learner's first move towards it.
+      log({ type: 'task.started', level: level.id, task: level.optional }, between(1000, 5000));
+      log({ type: 'task.completed', level: level.id, task: level.optional, mandatory: false, required: false, how: 'done', points: 5 }, between(3000, 20_000));
+    }
     log({ type: 'level.passed', level: level.id });
     log({ type: 'level.closed', level: level.id }, 1000);
   }
