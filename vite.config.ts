@@ -1,11 +1,53 @@
+import { VitePWA } from 'vite-plugin-pwa';
 import { defineConfig } from 'vitest/config';
 
-// base './' so the built app works from any folder of a static host (or a USB stick served locally).
+/**
+ * base './' so the built app works from any folder of a static host. The service worker
+ * (Workbox, through vite-plugin-pwa) precaches every file of the build, so after one visit
+ * the app opens and plays without a network; hash routes mean every page is index.html.
+ * The USB-stick build (vite.usb.config.ts) has no service worker: file:// pages cannot
+ * register one.
+ */
 export default defineConfig({
   base: './',
   worker: { format: 'es' },
+  // The 3D view (three.js) and the level files are the bulk of the student's chunk: it
+  // stays above the 500 kB default; scripts/check-first-load.ts holds the real budget.
   build: { target: 'es2022', outDir: 'dist', chunkSizeWarningLimit: 1500 },
   preview: { host: '127.0.0.1', port: 4173 },
+  plugins: [
+    VitePWA({
+      registerType: 'autoUpdate',
+      injectRegister: 'script-defer',
+      includeAssets: ['icons/*.png'],
+      manifest: {
+        name: 'Ray Tracer Quest',
+        short_name: 'Ray Tracer',
+        description: 'Learn ray tracing by seeing every ray: a game with a real ray tracer.',
+        lang: 'en',
+        start_url: './',
+        scope: './',
+        display: 'standalone',
+        background_color: '#1b2330',
+        theme_color: '#1b2330',
+        icons: [
+          { src: 'icons/icon-192.png', sizes: '192x192', type: 'image/png' },
+          { src: 'icons/icon-512.png', sizes: '512x512', type: 'image/png' },
+          { src: 'icons/icon-512.png', sizes: '512x512', type: 'image/png', purpose: 'maskable' },
+        ],
+      },
+      workbox: {
+        // The models (.obj) are the levels' meshes: without them a level cannot be played offline.
+        globPatterns: ['**/*.{js,css,html,svg,png,obj,webmanifest}'],
+        maximumFileSizeToCacheInBytes: 4 * 1024 * 1024,
+        navigateFallback: 'index.html',
+        cleanupOutdatedCaches: true,
+        // The first visit is the one that must work offline later: take control at once.
+        clientsClaim: true,
+        skipWaiting: true,
+      },
+    }),
+  ],
   test: {
     include: ['tests/**/*.test.ts'],
     environment: 'node',

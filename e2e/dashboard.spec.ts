@@ -84,9 +84,10 @@ test('the dashboard reads a class of exports, shows the charts and skips a damag
   const csv = parseCsv(await readFile(await download.path(), 'utf8'));
   if (!csv.ok) throw new Error(csv.error);
   const [header, ...rows] = csv.rows;
-  expect(header.slice(0, 5)).toEqual(['participant', 'assignment', 'assignment_id', 'level', 'task']);
+  expect(header.slice(0, 9)).toEqual(['learner_id', 'attempt_id', 'install_id', 'participant', 'assignment', 'assignment_id', 'class_code', 'level', 'task']);
+  expect(header).toContain('survey_learned-soft-shadows');
   expect(rows).toHaveLength(expected.records.reduce((total, record) => total + record.attempts.length, 0));
-  expect(new Set(rows.map((row) => row[0]))).toEqual(new Set(expected.records.map((record) => record.participant)));
+  expect(new Set(rows.map((row) => row[header.indexOf('participant')]))).toEqual(new Set(expected.records.map((record) => record.participant)));
   expect(errors).toEqual([]);
 });
 

@@ -8,6 +8,7 @@ import { QuestEngine, type OpenLevelResult } from '../quest/quest-engine.ts';
 import { defaultScene } from '../scene/scene-defaults.ts';
 import type { Scene } from '../scene/scene.ts';
 import { assignmentProgressKey } from '../classroom/assignment-id.ts';
+import { isUuid, randomUuid } from '../classroom/learner-identity.ts';
 import { assignmentCatalog } from './assignment-catalog.ts';
 import { playShowMe, showMeSteps, type ShowMeStage } from './show-me-player.ts';
 import type { Store } from '../lab-state/store.ts';
@@ -20,15 +21,20 @@ import type { Store } from '../lab-state/store.ts';
  * - Opening a level loads its scene (or the one the learner left) with `scene.loaded`.
  * - The free lab plays the sandbox scene, saved as the learner edits it.
  * - An assignment gets its own catalog, required tasks, locale and progress key.
- * - A participant code lives next to the progress, in `<progress key>.context` (see
- *   `readSessionContext`), where the classroom's exports read it.
+ * - A participant code and the playthrough's attempt id live next to the progress, in
+ *   `<progress key>.context` (see `readSessionContext`), where the classroom's exports read them.
+ * - With an assignment that asks for a participant code, nothing starts (no level, no
+ *   timing) until the code is given: the time spent typing it is no task's time.
  */
 
-export type SessionMode = { kind: 'map' } | { kind: 'level'; id: string } | { kind: 'free-lab' };
+/** `finished`: an assignment all passed, reopened: its closing screen (the survey, then the end) instead of a level. */
+export type SessionMode = { kind: 'map' } | { kind: 'level'; id: string } | { kind: 'free-lab' } | { kind: 'finished' };
 
 /** What the session keeps besides progress, for the classroom's exports. */
 export interface SessionContext {
   participantCode: string | null;
+  /** This playthrough's random id (learner-identity.ts); null only in a context saved before attempts had ids. */
+  attemptId: string | null;
 }
 
 export interface QuestSessionOptions {
@@ -52,9 +58,10 @@ export function readSessionContext(storage: KeyValueStorage, progressKey: string
   try {
     const value: unknown = JSON.parse(storage.getItem(sessionContextKey(progressKey)) ?? 'null');
     const code = typeof value === 'object' && value !== null && 'participantCode' in value ? value.participantCode : null;
-    return { participantCode: typeof code === 'string' ? code : null };
+    const attempt = typeof value === 'object' && value !== null && 'attemptId' in value ? value.attemptId : null;
+    return { participantCode: typeof code === 'string' ? code : null, attemptId: isUuid(attempt) ? attempt : null };
   } catch {
-    return { participantCode: null };
+    return { participantCode: null, attemptId: null };
   }
 }
 
@@ -79,6 +86,8 @@ export class QuestSession {
   private pendingSandbox: Scene | null = null;
   private lastSaveError: string | null = null;
   private contextNow: SessionContext;
+  /** `start` was called while the participant code was still needed: it runs again when the code is given. */
+  private waitingForCode = false;
 
   constructor(options: QuestSessionOptions) {
     this.store = options.store;
@@ -90,6 +99,7 @@ export class QuestSession {
     this.progressKey = this.assignment ? assignmentProgressKey(this.assignment) : PROGRESS_KEY;
     this.progress = new ProgressStore(this.storage, this.clock, this.progressKey);
     this.contextNow = readSessionContext(this.storage, this.progressKey);
+    if (this.contextNow.attemptId === null) this.saveContext({ ...this.contextNow, attemptId: randomUuid() });
     const loaded = this.progress.load();
     this.problem = loaded.problem;
     this.engineNow = this.makeEngine(loaded.progress);
@@ -142,9 +152,24 @@ export class QuestSession {
 
   /**
    * Where to start: the level the learner was playing; else, for a newcomer who has done
-   * nothing yet, the first level; else the map.
+   * nothing yet, the first level; else the map. Waits (on the map, behind the code dialog)
+   * while a participant code is needed; a finished assignment opens on its closing screen.
    */
   start(): SessionMode {
+    if (this.needsParticipantCode) {
+      this.waitingForCode = true;
+      this.openMap();
+      return this.modeNow;
+    }
+    // A finished assignment reopens on its closing screen, not on its last level: that
+    // would start a new visit (and new optional task attempts) in the log.
+    if (this.assignment && this.allPassed) {
+      this.leaveMode();
+      this.engineNow.closeLevel();
+      this.modeNow = { kind: 'finished' };
+      this.notify();
+      return this.modeNow;
+    }
     const progress = this.engineNow.progress;
     const resume = progress.current?.level;
     if (resume && this.engineNow.levelStatus(resume) !== 'locked' && this.openLevel(resume).ok) return this.modeNow;
@@ -206,12 +231,12 @@ export class QuestSession {
     this.engineNow.changeSettings({ locale });
   }
 
+  /** The learner's code; a start that waited for it (see `start`) goes on now. */
   setParticipantCode(code: string): void {
-    this.contextNow = { participantCode: code };
-    try {
-      this.storage.setItem(sessionContextKey(this.progressKey), JSON.stringify(this.contextNow));
-    } catch {
-      // Kept for this visit; the progress save reports the storage problem.
+    this.saveContext({ ...this.contextNow, participantCode: code });
+    if (this.waitingForCode) {
+      this.waitingForCode = false;
+      this.start();
     }
     this.notify();
   }
@@ -230,8 +255,9 @@ export class QuestSession {
     return { ok: true };
   }
 
-  /** Forgets all progress (the UI has asked) and starts afresh on the map. */
+  /** Forgets all progress (the UI has asked) and starts afresh on the map: a new attempt. */
   reset(): void {
+    this.saveContext({ ...this.contextNow, attemptId: randomUuid() });
     this.replaceEngine(this.makeEngine(this.progress.reset()));
     this.save();
   }
@@ -299,6 +325,15 @@ export class QuestSession {
   private leaveMode(): void {
     this.stopShowMe();
     this.flushSandbox();
+  }
+
+  private saveContext(context: SessionContext): void {
+    this.contextNow = context;
+    try {
+      this.storage.setItem(sessionContextKey(this.progressKey), JSON.stringify(context));
+    } catch {
+      // Kept for this visit; the progress save reports the storage problem.
+    }
   }
 
   private save(): void {

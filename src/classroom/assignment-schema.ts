@@ -12,6 +12,8 @@ import type { Assignment } from './assignment.ts';
 export const TITLE_MAX = 120;
 /** More levels than the game will ever have; it only stops absurd links. */
 export const LEVELS_MAX = 100;
+/** A class code is a short label like a participant code ("3B", "group-2"). */
+export const CLASS_CODE = /^[\p{L}\p{N}_-]{1,32}$/u;
 
 export const assignmentSchema = z
   .strictObject({
@@ -23,6 +25,8 @@ export const assignmentSchema = z
     locale: z.enum(LOCALES),
     askParticipantCode: z.boolean(),
     survey: kebabId().nullable(),
+    classCode: z.string().regex(CLASS_CODE, 'a class code has 1 to 32 letters, digits, - or _').optional(),
+    xapiHomePage: z.url({ protocol: /^https?$/ }).max(200).optional(),
   })
   .superRefine((assignment, context) => {
     assignment.levels.forEach((id, index) => {

@@ -18,4 +18,8 @@ export interface Assignment {
   askParticipantCode: boolean;
   /** The closing survey's id (a data file in src/classroom/surveys), or null for none. */
   survey: string | null;
+  /** The class the link is for ("3B"): lets the dashboard show one class of several with the same lesson. */
+  classCode?: string;
+  /** The school's own address for xAPI accounts (actor.account.homePage), so that code "P-07" of two schools are two people. */
+  xapiHomePage?: string;
 }

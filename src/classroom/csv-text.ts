@@ -8,17 +8,29 @@
 const NEEDS_QUOTES = /[",\r\n]/;
 const FORMULA_START = /^[=+\-@\t\r]/;
 
-/** One field, escaped; numbers are written as they are (a negative number is not a formula). */
-export function csvField(value: string | number | boolean | null): string {
+/**
+ * One field, escaped; numbers are written as they are (a negative number is not a formula).
+ * `quoted`: always in quotes, for identifiers that must stay text ("007").
+ */
+export function csvField(value: string | number | boolean | null, quoted = false): string {
   if (value === null) return '';
   if (typeof value !== 'string') return String(value);
   const safe = FORMULA_START.test(value) ? `'${value}` : value;
-  return NEEDS_QUOTES.test(safe) ? `"${safe.replaceAll('"', '""')}"` : safe;
+  return quoted || NEEDS_QUOTES.test(safe) ? `"${safe.replaceAll('"', '""')}"` : safe;
 }
 
+type Row = readonly (string | number | boolean | null)[];
+
 /** Rows to CSV text with CRLF line ends (what spreadsheets expect). */
-export function csvText(rows: readonly (readonly (string | number | boolean | null)[])[]): string {
-  return rows.map((row) => row.map(csvField).join(',')).join('\r\n') + '\r\n';
+export function csvText(rows: readonly Row[]): string {
+  return rows.map((row) => row.map((value) => csvField(value)).join(',')).join('\r\n') + '\r\n';
+}
+
+/** A header and its rows, the non-empty cells of the `quoted` columns in quotes. */
+export function csvTable(header: readonly string[], rows: readonly Row[], quoted: ReadonlySet<string>): string {
+  const quote = header.map((name) => quoted.has(name));
+  const lines = rows.map((row) => row.map((value, column) => csvField(value, quote[column] && value !== '')).join(','));
+  return [header.map((name) => csvField(name)).join(','), ...lines].join('\r\n') + '\r\n';
 }
 
 export type CsvRead = { ok: true; rows: string[][] } | { ok: false; error: string };

@@ -1,11 +1,14 @@
-import { attemptRows, CSV_COLUMNS } from './attempt-rows.ts';
-import { csvText } from './csv-text.ts';
+import { attemptRows, csvHeader, ID_COLUMNS } from './attempt-rows.ts';
+import { csvTable } from './csv-text.ts';
 import { readExportFile } from './dashboard-read-file.ts';
+import type { ClassLearner } from './dashboard-learners.ts';
 import type { ClassRecord, SkippedFile } from './dashboard-record.ts';
+import { surveyQuestionIds, type SurveyLookup } from './survey-columns.ts';
 
 /**
  * A class's dropped files, read: the records that count and the files skipped with their
- * reason. The same export dropped twice (or copied under another name) counts once.
+ * reason. The same export dropped twice (or copied under another name) counts once; files
+ * of one learner are merged later (dashboard-learners.ts).
  */
 export interface ClassFiles {
   records: ClassRecord[];
@@ -36,8 +39,39 @@ export function readClassFiles(files: readonly DroppedFile[], earlier: ClassFile
   return { records, skipped };
 }
 
-/** The combined CSV: the learners' CSV export's columns and rows, then the file each row came from. */
-export function combinedCsv(records: readonly ClassRecord[]): string {
-  const rows = records.flatMap((record) => attemptRows(record, record.attempts).map((row) => [...row, record.file]));
-  return csvText([[...CSV_COLUMNS, 'file'], ...rows]);
+const surveyQuestions = (learners: readonly ClassLearner[], surveyById: SurveyLookup) =>
+  surveyQuestionIds(
+    surveyById,
+    learners.map((learner) => learner.survey?.id),
+    learners.map((learner) => learner.survey?.answers),
+  );
+
+/**
+ * The combined CSV: the learners' CSV export's columns and rows (the kept file of each
+ * playthrough, so nothing is counted twice), then the file each row came from. Survey
+ * columns in the order of `surveyById`'s questions (the app's surveys.ts).
+ */
+export function combinedCsv(learners: readonly ClassLearner[], surveyById: SurveyLookup): string {
+  const questions = surveyQuestions(learners, surveyById);
+  const rows = learners.flatMap((learner) =>
+    learner.parts.flatMap((part) => attemptRows({ ...part, survey: learner.survey }, part.attempts, questions).map((row) => [...row, part.file])),
+  );
+  return csvTable([...csvHeader(questions), 'file'], rows, ID_COLUMNS);
+}
+
+/** The survey CSV: one row per learner who answered, one column per question. */
+export function surveyCsv(learners: readonly ClassLearner[], surveyById: SurveyLookup): string {
+  const answered = learners.filter((learner) => learner.survey);
+  const questions = surveyQuestions(answered, surveyById);
+  const header = ['learner_id', 'participant', 'assignment', 'assignment_id', 'class_code', 'survey', ...questions];
+  const rows = answered.map((learner) => [
+    learner.learnerId,
+    learner.participant,
+    learner.assignment,
+    learner.assignmentId,
+    learner.classCode,
+    learner.survey?.id ?? '',
+    ...questions.map((question) => learner.survey?.answers[question] ?? ''),
+  ]);
+  return csvTable(header, rows, ID_COLUMNS);
 }

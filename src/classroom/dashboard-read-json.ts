@@ -20,6 +20,7 @@ const exportSchema = z.looseObject({
   format: z.literal(EXPORT_FORMAT),
   version: z.literal(EXPORT_VERSION),
   participant: z.string().nullish(),
+  learner: z.unknown().optional(),
   assignment: z.unknown(),
   events: z.unknown(),
   survey: z.unknown(),
@@ -31,6 +32,7 @@ export function readJsonExport(file: string, text: string): FileRead {
   const json = readJson(text);
   if (!json.ok) return { ok: false, file, reason: json.error.replace(/^\(root\): /, '') };
   const value = json.value;
+  if (isXapi(value)) return { ok: false, file, reason: msg("xAPI statements, which are for a school's learning record store: drop the learner's JSON or CSV export here instead") };
   if (!isRecord(value)) return { ok: false, file, reason: msg('not a Ray Tracer Quest export (the file holds no JSON object)') };
   if (value.kind === PROGRESS_KIND) return { ok: false, file, reason: msg('a saved progress file, not an export: export the results from the game instead') };
   if (value.format !== EXPORT_FORMAT) return { ok: false, file, reason: msg('not a Ray Tracer Quest export (no "format": "ray-tracer-quest-export")') };
@@ -48,12 +50,19 @@ export function readJsonExport(file: string, text: string): FileRead {
     return { ok: false, file, reason: msg(str`damaged event log: events.${issuePath(issue.path)}: ${issue.message}`) };
   }
   const { attempts, visits } = readLog(log.data);
+  const participant = parsed.data.participant ?? '';
+  const assignment = assignmentOf(parsed.data.assignment);
+  const learner = (name: string) => (isRecord(parsed.data.learner) && typeof parsed.data.learner[name] === 'string' ? parsed.data.learner[name] : '');
   return {
     ok: true,
     record: {
       file,
-      participant: parsed.data.participant ?? '',
-      ...assignmentOf(parsed.data.assignment),
+      participant,
+      learnerId: learner('id') || participant || `file:${file}`,
+      // An older export's log is still one playthrough: its start time tells it apart.
+      attemptId: learner('attemptId') || `log:${assignment.assignmentId}:${participant}:${log.data.startedAt}`,
+      installId: learner('installId'),
+      ...assignment,
       attempts,
       visits,
       survey: readSurvey(parsed.data.survey),
@@ -61,9 +70,15 @@ export function readJsonExport(file: string, text: string): FileRead {
   };
 }
 
-function assignmentOf(assignment: unknown): { assignment: string; assignmentId: string } {
+/** A list of statements (or one) with an actor and a verb, as the xAPI download writes them. */
+function isXapi(value: unknown): boolean {
+  const first = Array.isArray(value) ? value[0] : value;
+  return isRecord(first) && isRecord(first.actor) && isRecord(first.verb);
+}
+
+function assignmentOf(assignment: unknown): { assignment: string; assignmentId: string; classCode: string } {
   const field = (name: string) => (isRecord(assignment) && typeof assignment[name] === 'string' ? assignment[name] : '');
-  return { assignment: field('title'), assignmentId: field('id') };
+  return { assignment: field('title'), assignmentId: field('id'), classCode: field('classCode') };
 }
 
 /** The survey submission (survey-answers.ts SurveySubmission): its id and the answers that are numbers or text. */

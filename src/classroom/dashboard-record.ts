@@ -10,9 +10,20 @@ export interface ClassRecord {
   file: string;
   /** The participant code, or '' when none was asked. */
   participant: string;
+  /**
+   * Who and which playthrough (learner-identity.ts). Files from before exports carried them
+   * get stand-ins: the participant code (else the file) as learner, the log's start time
+   * (else the file) as attempt, so that old files still count once each.
+   */
+  learnerId: string;
+  attemptId: string;
+  /** '' when the file does not say. */
+  installId: string;
   /** The assignment's title and id, or '' for free play. */
   assignment: string;
   assignmentId: string;
+  /** The assignment's class code, or ''. */
+  classCode: string;
   attempts: TaskAttempt[];
   /** Level visits; empty for a CSV export, which has no level events. */
   visits: LevelVisit[];

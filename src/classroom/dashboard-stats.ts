@@ -36,3 +36,18 @@ export function fiveNumbers(values: readonly number[]): FiveNumbers | null {
     max: sorted[sorted.length - 1],
   };
 }
+
+/**
+ * Where a time axis for these rows should end: at the longest time that is not an outlier
+ * by Tukey's rule (above Q3 + 1.5 × IQR; Tukey, Exploratory Data Analysis, 1977), so one
+ * learner who left the tab open for 20 minutes does not squeeze everyone else into the
+ * left edge. Longer times are drawn at the end of the axis, marked as beyond it.
+ */
+export function axisEnd(rows: readonly { times: readonly number[]; stats: FiveNumbers | null }[]): number {
+  const ends = rows.map((row) => {
+    if (!row.stats) return 0;
+    const fence = row.stats.q3 + 1.5 * (row.stats.q3 - row.stats.q1);
+    return Math.max(0, ...row.times.filter((time) => time <= fence));
+  });
+  return Math.max(0, ...ends);
+}

@@ -56,18 +56,25 @@ export function summarizeLevels(records: readonly ClassRecord[]): LevelSummary[]
   return [...levelIds].sort(byId).map((level) => summarizeLevel(level, records));
 }
 
+/** One learner in one level: their active time there and whether they passed; null when they never came. */
+export function learnerInLevel(record: ClassRecord, level: string): { activeMs: number; passed: boolean } | null {
+  const visits = record.visits.filter((visit) => visit.level === level);
+  const attempts = record.attempts.filter((attempt) => attempt.level === level);
+  if (visits.length === 0 && attempts.length === 0) return null;
+  // A CSV export has no level events: passed is then "every mandatory task completed".
+  const completed = new Set(attempts.filter((attempt) => attempt.how !== null).map((attempt) => attempt.task));
+  if (record.visits.length > 0) return { activeMs: sum(visits, (visit) => visit.activeMs), passed: visits.some((visit) => visit.passed) };
+  return { activeMs: sum(attempts, (attempt) => attempt.activeMs), passed: attempts.every((attempt) => !attempt.mandatory || completed.has(attempt.task)) };
+}
+
 function summarizeLevel(level: string, records: readonly ClassRecord[]): LevelSummary {
   let learners = 0;
   const times: number[] = [];
   for (const record of records) {
-    const visits = record.visits.filter((visit) => visit.level === level);
-    const attempts = record.attempts.filter((attempt) => attempt.level === level);
-    if (visits.length === 0 && attempts.length === 0) continue;
+    const here = learnerInLevel(record, level);
+    if (!here) continue;
     learners++;
-    // A CSV export has no level events: passed is then "every mandatory task completed".
-    const completed = new Set(attempts.filter((attempt) => attempt.how !== null).map((attempt) => attempt.task));
-    const passed = record.visits.length > 0 ? visits.some((visit) => visit.passed) : attempts.every((attempt) => !attempt.mandatory || completed.has(attempt.task));
-    if (passed) times.push(record.visits.length > 0 ? sum(visits, (visit) => visit.activeMs) : sum(attempts, (attempt) => attempt.activeMs));
+    if (here.passed) times.push(here.activeMs);
   }
   const taskIds = [...new Set(records.flatMap((record) => record.attempts.filter((attempt) => attempt.level === level).map((attempt) => attempt.task)))];
   return { level, learners, passed: times.length, times, stats: fiveNumbers(times), tasks: taskIds.map((task) => summarizeTask(level, task, records)) };

@@ -2,6 +2,8 @@ import { version } from '../../package.json';
 import type { Progress } from '../quest/progress.ts';
 import type { Assignment } from './assignment.ts';
 import { assignmentId } from './assignment-id.ts';
+import type { AttemptOwner } from './attempt-rows.ts';
+import { learnerId } from './learner-identity.ts';
 import type { SurveySubmission } from './survey-answers.ts';
 
 /**
@@ -12,6 +14,10 @@ export interface ExportInput {
   progress: Progress;
   /** The code the learner typed at the start, or null when none was asked. */
   participant: string | null;
+  /** This browser's random id (learner-identity.ts). */
+  installId: string;
+  /** This playthrough's random id: the same in every file exported from one progress. */
+  attemptId: string;
   /** The teacher's assignment, or null in free play. */
   assignment: Assignment | null;
   survey: SurveySubmission | null;
@@ -27,4 +33,19 @@ export const APP_VERSION: string = version;
 /** The assignment as exports name it: its id and title, or nulls in free play. */
 export function assignmentLabel(assignment: Assignment | null): { id: string | null; title: string | null } {
   return assignment ? { id: assignmentId(assignment), title: assignment.title } : { id: null, title: null };
+}
+
+/** The learner and playthrough the export's rows belong to. */
+export function exportOwner(input: ExportInput): AttemptOwner {
+  const { id, title } = assignmentLabel(input.assignment);
+  return {
+    learnerId: learnerId(input.participant, input.installId),
+    attemptId: input.attemptId,
+    installId: input.installId,
+    participant: input.participant ?? '',
+    assignment: title ?? '',
+    assignmentId: id ?? '',
+    classCode: input.assignment?.classCode ?? '',
+    survey: input.survey && { id: input.survey.survey, answers: input.survey.answers },
+  };
 }

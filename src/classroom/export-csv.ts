@@ -1,30 +1,32 @@
 import { readLog } from './task-attempts.ts';
-import { attemptRows, CSV_COLUMNS } from './attempt-rows.ts';
-import { csvText } from './csv-text.ts';
-import { assignmentLabel, type ExportInput } from './export-context.ts';
+import { attemptRows, csvHeader, ID_COLUMNS } from './attempt-rows.ts';
+import { csvTable } from './csv-text.ts';
+import { exportOwner, type ExportInput } from './export-context.ts';
+import { surveyQuestionIds } from './survey-columns.ts';
+import { surveyById } from './surveys.ts';
 
 /**
- * The CSV export (spec/classroom.md): one row per task attempt, for a spreadsheet or R.
+ * The CSV export (spec/classroom.md; every column is defined in docs/classroom.md): one row
+ * per task attempt, for a spreadsheet, R or pandas.
  *
- * An attempt runs from the moment the task was shown to its completion; leaving the level
- * (or closing the page) first ends it unfinished, with an empty completed_at, and coming
- * back starts the next attempt. `attempts` is the attempt's number for its task (1, 2, …),
- * so the last row of a task says how many it took. `active_ms` leaves out the time the tab
- * was hidden or the page closed. Times are ISO 8601 in UTC. The columns and rows are the
- * dashboard's combined CSV's (attempt-rows.ts), so the two files always agree.
+ * An attempt runs from the moment the task became the learner's (an optional task: from
+ * their first move towards it) to its completion; leaving the level (or closing the page)
+ * first ends it unfinished, with an empty completed_at, and coming back starts the next
+ * attempt. `attempts` is the attempt's number for its task (1, 2, …), so the last row of a
+ * task says how many it took. `active_ms` leaves out the time the tab was hidden or the
+ * page closed. Times are ISO 8601 in UTC. The columns and rows are the dashboard's
+ * combined CSV's (attempt-rows.ts), so the two files always agree.
  *
  * Encoding: UTF-8 with a byte-order mark and CRLF line ends (RFC 4180). Without the mark,
  * Excel reads UTF-8 as the local code page and mangles names and typed text; R, Python and
  * LibreOffice skip it. Learner-typed fields that start like a formula get an apostrophe
- * (csv-text.ts), so opening the file cannot run anything.
+ * (csv-text.ts), so opening the file cannot run anything; identifiers are always quoted.
  */
 
-export { CSV_COLUMNS };
-
-const BOM = '\uFEFF';
+export const BOM = '\uFEFF';
 
 export function exportCsv(input: ExportInput): string {
-  const { id, title } = assignmentLabel(input.assignment);
-  const owner = { participant: input.participant ?? '', assignment: title ?? '', assignmentId: id ?? '' };
-  return BOM + csvText([[...CSV_COLUMNS], ...attemptRows(owner, readLog(input.progress.log).attempts)]);
+  const owner = exportOwner(input);
+  const questions = surveyQuestionIds(surveyById, [input.survey?.survey, input.assignment?.survey], [input.survey?.answers]);
+  return BOM + csvTable(csvHeader(questions), attemptRows(owner, readLog(input.progress.log).attempts, questions), ID_COLUMNS);
 }

@@ -3,6 +3,7 @@ import { pointsOf, type Progress } from '../quest/progress.ts';
 import type { Assignment } from './assignment.ts';
 import { assignmentId } from './assignment-id.ts';
 import type { ExportInput } from './export-context.ts';
+import { learnerId } from './learner-identity.ts';
 import type { SurveySubmission } from './survey-answers.ts';
 
 /**
@@ -20,6 +21,8 @@ export interface QuestExport {
   appVersion: string;
   exportedAt: string;
   participant: string | null;
+  /** Who and which playthrough (learner-identity.ts): the dashboard merges a learner's files by these. */
+  learner: { id: string; installId: string; attemptId: string };
   /** The assignment with its id, or null in free play. */
   assignment: (Assignment & { id: string }) | null;
   progress: { points: number; levels: Progress['levels']; badges: Progress['badges'] };
@@ -35,6 +38,7 @@ export function buildExport(input: ExportInput): QuestExport {
     appVersion: input.appVersion,
     exportedAt: input.exportedAt,
     participant: input.participant,
+    learner: { id: learnerId(input.participant, input.installId), installId: input.installId, attemptId: input.attemptId },
     assignment: assignment ? { id: assignmentId(assignment), ...assignment } : null,
     progress: { points: pointsOf(progress), levels: progress.levels, badges: progress.badges },
     events: progress.log,

@@ -1,7 +1,7 @@
 import type { LoggedEvent } from '../quest/event-log.ts';
 import { fnv1a } from './assignment-id.ts';
 import { readLog } from './task-attempts.ts';
-import { assignmentLabel, type ExportInput } from './export-context.ts';
+import { assignmentLabel, exportOwner, type ExportInput } from './export-context.ts';
 import { isoAt, isoDuration } from './iso-duration.ts';
 import { activities, EXTENSIONS, VERBS, XAPI_BASE, type XapiActivity, type XapiVerb } from './xapi-vocabulary.ts';
 
@@ -13,6 +13,11 @@ import { activities, EXTENSIONS, VERBS, XAPI_BASE, type XapiActivity, type XapiV
  * Statement ids are derived from their content, so sending the same file twice does not
  * record anything twice (the store refuses a known id). Render and tab events are left
  * out: they are the app's, not learning; the JSON export has them.
+ *
+ * The actor is an account on the school's home page (the assignment's `xapiHomePage`, else
+ * the app's own address), named by the participant code or, without one, by the browser's
+ * install id. `context.registration` is the attempt id, so that two playthroughs by one
+ * code stay apart (xAPI 1.0.3 §4.1.6).
  */
 
 export interface XapiAgent {
@@ -36,6 +41,7 @@ export interface XapiStatement {
   object: XapiActivity;
   result?: XapiResult;
   context: {
+    registration: string;
     platform: string;
     language: string;
     contextActivities: { parent?: XapiActivity[]; grouping: XapiActivity[] };
@@ -47,11 +53,9 @@ export interface XapiStatement {
 export function exportXapi(input: ExportInput): XapiStatement[] {
   const { progress, assignment } = input;
   const { startedAt, events } = progress.log;
-  const actor: XapiAgent = {
-    objectType: 'Agent',
-    // Without a code the learner stays anonymous, but one browser's statements still belong together.
-    account: { homePage: XAPI_BASE, name: input.participant ?? `anonymous-${fnv1a(startedAt).toString(16)}` },
-  };
+  const owner = exportOwner(input);
+  // Without a code the learner stays anonymous, but one browser's statements still belong together.
+  const actor: XapiAgent = { objectType: 'Agent', account: { homePage: assignment?.xapiHomePage ?? XAPI_BASE, name: owner.learnerId } };
   const label = assignmentLabel(assignment);
   const grouping = [activities.app(), ...(label.id && label.title ? [activities.assignment(label.id, label.title)] : [])];
   const language = assignment?.locale ?? progress.settings.locale;
@@ -63,6 +67,7 @@ export function exportXapi(input: ExportInput): XapiStatement[] {
       object,
       ...(result ? { result } : {}),
       context: {
+        registration: input.attemptId,
         platform: 'Ray Tracer Quest',
         language,
         contextActivities: { ...(level ? { parent: [activities.level(level)] } : {}), grouping },
@@ -80,7 +85,8 @@ export function exportXapi(input: ExportInput): XapiStatement[] {
     if (attempt.how === null || attempt.completedAt === null) continue;
     const result: XapiResult = {
       completion: attempt.how !== 'skipped',
-      success: attempt.how === 'done',
+      // A quiz answered wrong is completed, not succeeded.
+      success: attempt.how === 'done' && attempt.quizCorrect !== false,
       score: { raw: attempt.points, min: 0 },
       duration: isoDuration(attempt.durationMs),
       extensions: { [EXTENSIONS.how]: attempt.how, [EXTENSIONS.activeMs]: attempt.activeMs },
@@ -126,7 +132,7 @@ function eventStatement(event: LoggedEvent, at: string, openedAt: Map<string, nu
 
 /** A UUID (version 8: made by us) from the statement's content and place: the same file always gives the same ids. */
 function statementId(statement: Omit<XapiStatement, 'id'>, index: number): string {
-  const text = `${index}|${statement.actor.account.name}|${statement.verb.id}|${statement.object.id}|${statement.timestamp}`;
+  const text = `${index}|${statement.context.registration}|${statement.actor.account.name}|${statement.verb.id}|${statement.object.id}|${statement.timestamp}`;
   const hex = [0x811c9dc5, 0x01000193, 0x2545f491, 0x9e3779b9].map((seed) => fnv1a(text, seed).toString(16).padStart(8, '0')).join('');
   const variant = ((parseInt(hex[16], 16) & 0x3) | 0x8).toString(16);
   return `${hex.slice(0, 8)}-${hex.slice(8, 12)}-8${hex.slice(13, 16)}-${variant}${hex.slice(17, 20)}-${hex.slice(20, 32)}`;

@@ -1,10 +1,20 @@
 import type { EventLogData, HowCompleted, LoggedEvent } from '../quest/event-log.ts';
+import type { TaskKind } from '../quest/goal.ts';
 
 /**
  * A learner's event log read back as task attempts and level visits: what the dashboard
- * counts. An attempt runs from `task.shown` to the task's `task.completed`, or ends
- * unfinished when its level is closed first (the learner left; opening the level again
- * starts a new attempt).
+ * counts. An attempt at a required task runs from `task.shown` (the moment it became the
+ * learner's to do) to its `task.completed`, or ends unfinished when its level is closed
+ * first (the learner left; opening the level again starts a new attempt).
+ *
+ * An optional task is shown when its level opens, but the learner may never look at it:
+ * its attempt starts at the learner's first move towards it (`task.started`; in logs from
+ * before that event, the first hint, quiz answer, explanation or completion of the task).
+ * An optional task nobody touched has no attempt at all.
+ *
+ * `mandatory` is whether the task counted for passing the level for this learner (the
+ * teacher's choice of required tasks, else the level's), and never for an info step,
+ * which is read rather than done.
  *
  * Active time is the time the tab was visible: a hidden tab (tab.hidden → tab.visible) and
  * a closed page (the last event before a reload → its session.started) do not count.
@@ -13,7 +23,10 @@ import type { EventLogData, HowCompleted, LoggedEvent } from '../quest/event-log
 export interface TaskAttempt {
   level: string;
   task: string;
+  /** Required to pass the level, and not an info step. */
   mandatory: boolean;
+  /** info, quiz or do; null when the log does not say (logs before 0.1). */
+  kind: TaskKind | null;
   /** ISO 8601 wall-clock time, from the log's start plus its monotonic time. */
   startedAt: string;
   /** Null when the attempt ended unfinished. */
@@ -27,6 +40,8 @@ export interface TaskAttempt {
   hintsGuidance: number;
   /** Quiz answers given (a wrong prediction and then the right one is 2). */
   quizAnswers: number;
+  /** Whether the last quiz answer was right; null when no answer was given (not a quiz, or "show me"). */
+  quizCorrect: boolean | null;
 }
 
 export interface LevelVisit {
@@ -78,11 +93,40 @@ export function readLog(log: EventLogData): ReadLog {
   // The open ones with the time they started.
   const openAttempts = new Map<string, { attempt: TaskAttempt; from: number }>();
   const openVisits = new Map<string, { visit: LevelVisit; from: number }>();
+  // Optional tasks shown but not yet touched: their attempt starts at the first move.
+  const untouched = new Map<string, { level: string; task: string; kind: TaskKind | null }>();
   const timed = (from: number, to: number) => ({ durationMs: to - from, activeMs: activeBetween(spans, from, to) });
 
   const closeAttempt = (open: { attempt: TaskAttempt; from: number }, t: number, finished?: { how: HowCompleted; points: number }) => {
     Object.assign(open.attempt, timed(open.from, t), finished && { completedAt: iso(t), ...finished });
     openAttempts.delete(key(open.attempt.level, open.attempt.task));
+  };
+  const startAttempt = (level: string, task: string, mandatory: boolean, kind: TaskKind | null, t: number) => {
+    const attempt: TaskAttempt = {
+      level,
+      task,
+      mandatory: mandatory && kind !== 'info',
+      kind,
+      startedAt: iso(t),
+      completedAt: null,
+      durationMs: 0,
+      activeMs: 0,
+      how: null,
+      points: 0,
+      hintsText: 0,
+      hintsGuidance: 0,
+      quizAnswers: 0,
+      quizCorrect: null,
+    };
+    openAttempts.set(key(level, task), { attempt, from: t });
+    attempts.push(attempt);
+  };
+  /** The optional task's first move, if it is one: its attempt starts now. */
+  const touch = (level: string, task: string | null, t: number) => {
+    const waiting = task === null ? undefined : untouched.get(key(level, task));
+    if (!waiting) return;
+    untouched.delete(key(level, task!));
+    startAttempt(waiting.level, waiting.task, false, waiting.kind, t);
   };
   const closeVisit = (open: { visit: LevelVisit; from: number }, t: number) => {
     Object.assign(open.visit, timed(open.from, t));
@@ -107,34 +151,28 @@ export function readLog(log: EventLogData): ReadLog {
         const visit = openVisits.get(event.level);
         if (visit) closeVisit(visit, event.t);
         for (const open of [...openAttempts.values()]) if (open.attempt.level === event.level) closeAttempt(open, event.t);
+        for (const [id, waiting] of [...untouched]) if (waiting.level === event.level) untouched.delete(id);
         break;
       }
       case 'task.shown':
-        if (!openAttempts.has(key(event.level, event.task))) {
-          const attempt: TaskAttempt = {
-            level: event.level,
-            task: event.task,
-            mandatory: event.mandatory,
-            startedAt: iso(event.t),
-            completedAt: null,
-            durationMs: 0,
-            activeMs: 0,
-            how: null,
-            points: 0,
-            hintsText: 0,
-            hintsGuidance: 0,
-            quizAnswers: 0,
-          };
-          openAttempts.set(key(event.level, event.task), { attempt, from: event.t });
-          attempts.push(attempt);
-        }
+        if (openAttempts.has(key(event.level, event.task))) break;
+        if (event.required) startAttempt(event.level, event.task, true, event.kind ?? null, event.t);
+        else untouched.set(key(event.level, event.task), { level: event.level, task: event.task, kind: event.kind ?? null });
+        break;
+      case 'task.started':
+        touch(event.level, event.task, event.t);
+        break;
+      case 'explanation.expanded':
+        touch(event.level, event.task, event.t);
         break;
       case 'task.completed': {
+        touch(event.level, event.task, event.t);
         const attempt = openAttempts.get(key(event.level, event.task));
         if (attempt) closeAttempt(attempt, event.t, { how: event.how, points: event.points });
         break;
       }
       case 'hint.shown': {
+        touch(event.level, event.task, event.t);
         // The show-me rung is counted when it is used: the task is then completed as 'shown'.
         const attempt = openAttempts.get(key(event.level, event.task))?.attempt;
         if (attempt && event.step === 'text') attempt.hintsText++;
@@ -142,8 +180,12 @@ export function readLog(log: EventLogData): ReadLog {
         break;
       }
       case 'quiz.answered': {
+        touch(event.level, event.task, event.t);
         const attempt = openAttempts.get(key(event.level, event.task))?.attempt;
-        if (attempt) attempt.quizAnswers++;
+        if (attempt) {
+          attempt.quizAnswers++;
+          attempt.quizCorrect = event.correct;
+        }
         break;
       }
     }

@@ -1,5 +1,6 @@
 import { z } from 'zod';
 import { badgeSchema } from './badges.ts';
+import { TASK_KINDS } from './goal.ts';
 
 /**
  * The research log (spec/classroom.md "Task timings"): every quest event with a timestamp,
@@ -36,8 +37,13 @@ export const loggedEventSchema = z.discriminatedUnion('type', [
   z.strictObject({ t, type: z.literal('level.closed'), level }),
   /** Every required task done: the next level opens. */
   z.strictObject({ t, type: z.literal('level.passed'), level }),
-  /** A task became the one to do (a required task) or available (an optional one, when the level opens). */
-  z.strictObject({ t, type: z.literal('task.shown'), level, task, ...taskFlags }),
+  /**
+   * A task became the one to do (a required task) or available (an optional one, when the
+   * level opens). `kind` (logs from 0.1 on; older ones lack it): info steps are read, not done.
+   */
+  z.strictObject({ t, type: z.literal('task.shown'), level, task, ...taskFlags, kind: z.enum(TASK_KINDS).optional() }),
+  /** The learner's first action towards an optional task (its time starts here, not when the level opened). */
+  z.strictObject({ t, type: z.literal('task.started'), level, task }),
   z.strictObject({ t, type: z.literal('task.completed'), level, task, ...taskFlags, how: z.enum(HOW_COMPLETED), points: z.number().min(0) }),
   /** A rung of the hint ladder; `trigger` says whether the learner asked or sat idle. */
   z.strictObject({ t, type: z.literal('hint.shown'), level, task, step: z.enum(HINT_STEPS), trigger: z.enum(['asked', 'idle']) }),

@@ -49,6 +49,19 @@ export function checkGoal(goal: Goal, state: LabState, tally: EventTally): boole
   return false;
 }
 
+/**
+ * Whether `action` is a step towards `goal`: it is one of the goal's events, or it changed
+ * a value one of its state goals looks at. Used to time an optional task from the learner's
+ * first move towards it rather than from the moment its level opened.
+ */
+export function touchesGoal(goal: Goal, before: LabState | null, state: LabState, action: LabAction): boolean {
+  return goalParts(goal).some(({ goal: part }) => {
+    if ('event' in part) return action.type === part.event;
+    if ('state' in part) return before !== null && readPath(before, part.state) !== readPath(state, part.state);
+    return false;
+  });
+}
+
 /** Whether `choice` (a position in the quiz's choices) is the right answer. */
 export function isRightAnswer(goal: QuizGoal, choice: number): boolean {
   return choice === goal.quiz.answer;

@@ -59,7 +59,8 @@ export type SceneGoal = EventGoal | StateGoal | AllGoal | AnyGoal;
 export type Goal = SceneGoal | QuizGoal | InfoGoal;
 
 /** How the learner completes a task: read it, answer it, or do something in the lab. */
-export type TaskKind = 'info' | 'quiz' | 'do';
+export const TASK_KINDS = ['info', 'quiz', 'do'] as const;
+export type TaskKind = (typeof TASK_KINDS)[number];
 
 export function kindOfGoal(goal: Goal): TaskKind {
   if ('info' in goal) return 'info';

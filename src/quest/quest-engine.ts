@@ -3,7 +3,7 @@ import type { LabState } from '../lab-state/lab-state.ts';
 import type { Scene } from '../scene/scene.ts';
 import { sameBadge, type Badge, type EarnedBadge } from './badges.ts';
 import { EventLog, systemClock, type HintStep, type HowCompleted, type LoggedEvent, type QuestClock, type QuestEvent } from './event-log.ts';
-import { checkGoal, isRightAnswer, NO_EVENTS, tallyAction, type EventTally } from './goal-check.ts';
+import { checkGoal, isRightAnswer, NO_EVENTS, tallyAction, touchesGoal, type EventTally } from './goal-check.ts';
 import { kindOfGoal, type TaskKind } from './goal.ts';
 import { canShowMe, climb, nextHintStep, NO_HINTS, type HintProgress } from './hint-ladder.ts';
 import type { GuideTarget } from './lab-controls.ts';
@@ -89,6 +89,8 @@ interface ActiveLevel {
   hints: Map<string, HintProgress>;
   /** Tasks whose "show me" was used: they complete as shown. */
   shownByApp: Set<string>;
+  /** Optional tasks the learner has started on in this visit (`task.started` logged). */
+  started: Set<string>;
   ring: { task: string; target: GuideTarget } | null;
 }
 
@@ -208,6 +210,7 @@ export class QuestEngine {
       tallies: new Map(),
       hints: new Map(),
       shownByApp: new Set(),
+      started: new Set(),
       ring: null,
     };
     this.active = active;
@@ -216,7 +219,7 @@ export class QuestEngine {
     for (const task of level.tasks) {
       if (active.required.has(task.id) || isCompleted(this.levelProgress[id], task.id)) continue;
       active.tallies.set(task.id, NO_EVENTS);
-      this.append({ type: 'task.shown', level: id, task: task.id, mandatory: task.mandatory, required: false });
+      this.append({ type: 'task.shown', level: id, task: task.id, mandatory: task.mandatory, required: false, kind: kindOfGoal(task.goal) });
     }
     this.showCurrentTask(active);
     this.publish();
@@ -249,11 +252,13 @@ export class QuestEngine {
         this.resumable = { level: active.level.id, scene: state.scene };
         this.changed = true;
       }
+      const before = this.lastState;
       this.lastState = state;
       for (const [taskId, tally] of [...active.tallies]) {
         const task = active.level.tasks.find((candidate) => candidate.id === taskId);
         // A task completed by an earlier one in this loop (the next current task) is no longer watched.
         if (!task || !active.tallies.has(taskId) || kindOfGoal(task.goal) !== 'do') continue;
+        if (touchesGoal(task.goal, before, state, action)) this.startOptional(active, taskId);
         const next = tallyAction(task.goal, tally, state, action);
         active.tallies.set(taskId, next);
         if (checkGoal(task.goal, state, next)) this.complete(active, task, active.shownByApp.has(taskId) ? 'shown' : 'done');
@@ -281,6 +286,7 @@ export class QuestEngine {
     const { active, task } = found;
     const correct = isRightAnswer(found.task.goal, choice);
     this.lastActivity = this.log.now();
+    this.startOptional(active, taskId);
     this.append({ type: 'quiz.answered', level: active.level.id, task: taskId, choice, correct });
     this.complete(active, task, 'done', correct);
     this.publish();
@@ -298,6 +304,7 @@ export class QuestEngine {
     const hints = active.hints.get(taskId) ?? NO_HINTS;
     const step = nextHintStep(task, hints);
     if (step !== 'text' && step !== 'guidance') return undefined;
+    this.startOptional(active, taskId);
     active.hints.set(taskId, climb(hints, step));
     if (step === 'guidance' && task.guide) active.ring = { task: taskId, target: task.guide };
     this.hintShown(active, task, step, trigger);
@@ -314,6 +321,7 @@ export class QuestEngine {
     const found = this.workableTask(taskId);
     if (!found || !canShowMe(found.task)) return undefined;
     const { active, task } = found;
+    this.startOptional(active, taskId);
     this.hintShown(active, task, 'show-me', 'asked');
     let shown: ShowMe | undefined;
     if ('quiz' in task.goal) {
@@ -331,6 +339,7 @@ export class QuestEngine {
   skip(taskId: string): boolean {
     const found = this.workableTask(taskId);
     if (!found || found.active.required.has(taskId)) return false;
+    this.startOptional(found.active, taskId);
     this.complete(found.active, found.task, 'skipped');
     this.publish();
     return true;
@@ -341,6 +350,7 @@ export class QuestEngine {
     const active = this.active;
     if (!active || (taskId !== 'intro' && !active.level.tasks.some((task) => task.id === taskId))) return;
     this.lastActivity = this.log.now();
+    if (taskId !== 'intro') this.startOptional(active, taskId);
     this.append({ type: 'explanation.expanded', level: active.level.id, task: taskId === 'intro' ? null : taskId });
     this.publish();
   }
@@ -398,7 +408,7 @@ export class QuestEngine {
     if (!task) return;
     active.tallies.set(task.id, NO_EVENTS);
     this.lastActivity = this.log.now();
-    this.append({ type: 'task.shown', level: level.id, task: task.id, mandatory: task.mandatory, required: true });
+    this.append({ type: 'task.shown', level: level.id, task: task.id, mandatory: task.mandatory, required: true, kind: kindOfGoal(task.goal) });
     // A learner who already did what the task asks (say, set supersampling to 2 earlier) is not made to do it again.
     if (this.lastState && kindOfGoal(task.goal) === 'do' && checkGoal(task.goal, this.lastState, NO_EVENTS)) {
       this.complete(active, task, active.shownByApp.has(task.id) ? 'shown' : 'done');
@@ -423,6 +433,16 @@ export class QuestEngine {
     }
     for (const badge of levelBadgesEarned(level, record, required)) this.award(badge);
     if (active.current?.id === task.id) this.showCurrentTask(active);
+  }
+
+  /**
+   * Logs the learner's first move towards an optional task in this visit: its time runs
+   * from here (spec/classroom.md), so a task nobody touched is not timed at all.
+   */
+  private startOptional(active: ActiveLevel, taskId: string): void {
+    if (active.required.has(taskId) || active.started.has(taskId) || isCompleted(this.levelProgress[active.level.id], taskId)) return;
+    active.started.add(taskId);
+    this.append({ type: 'task.started', level: active.level.id, task: taskId });
   }
 
   private hintShown(active: ActiveLevel, task: Task, step: HintStep, trigger: 'asked' | 'idle'): void {

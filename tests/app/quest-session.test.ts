@@ -116,6 +116,7 @@ describe('an assignment', () => {
     const { store, storage, session: game } = session(new MemoryStorage(), assignment);
     expect(game.catalog.chapters.map((chapter) => chapter.entries.map((entry) => entry.id))).toEqual([['second', 'first']]);
     expect(game.locale).toBe('nl');
+    game.setParticipantCode('A17');
     expect(game.start()).toEqual({ kind: 'level', id: 'second' });
     store.dispatch({ type: 'view.orbited' });
     expect(game.engine.level?.passed).toBe(true);
@@ -129,8 +130,44 @@ describe('an assignment', () => {
     expect(game.needsParticipantCode).toBe(true);
     game.setParticipantCode('A17');
     expect(game.needsParticipantCode).toBe(false);
-    expect(readSessionContext(storage, game.progressKey)).toEqual({ participantCode: 'A17' });
+    expect(readSessionContext(storage, game.progressKey)).toMatchObject({ participantCode: 'A17' });
     expect(session(storage, assignment).session.needsParticipantCode).toBe(false);
+  });
+
+  it('starts nothing while the code is asked: the level and its first task start when the code is given', () => {
+    const store = new Store(initialState(defaultScene()));
+    const clock = new FakeClock();
+    const game = new QuestSession({ store, catalog, storage: new MemoryStorage(), assignment, clock });
+    expect(game.start()).toEqual({ kind: 'map' });
+    expect(game.engine.events.some((event) => event.type === 'level.opened' || event.type === 'task.shown')).toBe(false);
+    clock.advance(10_000);
+    game.setParticipantCode('A17');
+    expect(game.mode).toEqual({ kind: 'level', id: 'second' });
+    const shown = game.engine.events.find((event) => event.type === 'task.shown');
+    expect(shown?.t).toBeGreaterThanOrEqual(10_000);
+  });
+
+  it('keeps one attempt id across reloads and makes a new one when the learner starts again', () => {
+    const { storage, session: game } = session(new MemoryStorage(), assignment);
+    const first = game.context.attemptId;
+    expect(first).toMatch(/^[0-9a-f]{8}-[0-9a-f]{4}-4[0-9a-f]{3}-[89ab][0-9a-f]{3}-[0-9a-f]{12}$/);
+    game.setParticipantCode('A17');
+    expect(session(storage, assignment).session.context).toEqual({ participantCode: 'A17', attemptId: first });
+    game.reset();
+    expect(game.context.attemptId).not.toBe(first);
+    expect(game.context.participantCode).toBe('A17');
+    expect(readSessionContext(storage, game.progressKey).attemptId).toBe(game.context.attemptId);
+  });
+
+  it('reopens a finished assignment on its closing screen, not on its last level', () => {
+    const oneLevel: Assignment = { ...assignment, levels: ['second'], askParticipantCode: false };
+    const { store, storage, session: game } = session(new MemoryStorage(), oneLevel);
+    expect(game.start()).toEqual({ kind: 'level', id: 'second' });
+    store.dispatch({ type: 'view.orbited' });
+    expect(game.allPassed).toBe(true);
+    const again = session(storage, oneLevel).session;
+    expect(again.start()).toEqual({ kind: 'finished' });
+    expect(again.engine.events.filter((event) => event.type === 'level.opened')).toHaveLength(1);
   });
 
   it('lists a level it names that the game does not have as broken', () => {

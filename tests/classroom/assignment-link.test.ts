@@ -94,6 +94,17 @@ describe('assignment links', () => {
     });
   });
 
+  it('carries an optional class code and xAPI home page, checked', async () => {
+    const school = { ...lesson, classCode: '3B', xapiHomePage: 'https://school.example/' };
+    expect(await decodeAssignment(await encodeAssignment(school), catalog)).toEqual({ ok: true, assignment: school });
+    // Without them the link and the id are the same as before the fields existed.
+    expect(assignmentId({ ...school, classCode: undefined, xapiHomePage: undefined })).toBe(assignmentId(lesson));
+    expect(assignmentId(school)).not.toBe(assignmentId(lesson));
+    const bad = await decodeAssignment(await encodeAssignment({ ...lesson, classCode: '3 B', xapiHomePage: 'ftp://school.example' }), catalog);
+    expect(bad.ok).toBe(false);
+    if (!bad.ok) expect(bad.reasons.join('\n')).toMatch(/classCode[\s\S]*xapiHomePage|xapiHomePage[\s\S]*classCode/);
+  });
+
   it('gives each assignment its own stable id and progress key', () => {
     expect(assignmentId(lesson)).toMatch(/^[0-9a-f]{8}$/);
     expect(assignmentId({ ...lesson })).toBe(assignmentId(lesson));

@@ -26,6 +26,8 @@ describe('reading one dropped file for the dashboard', () => {
     const csv = exportCsv({
       progress: { ...newProgress(clock), log: good.events },
       participant: good.participant,
+      installId: good.learner.installId,
+      attemptId: good.learner.attemptId,
       assignment: CLASS_ASSIGNMENT,
       survey: null,
       exportedAt: good.exportedAt,
@@ -36,6 +38,8 @@ describe('reading one dropped file for the dashboard', () => {
     if (!fromCsv.ok || !fromJson.ok) throw new Error('both should read');
     expect(fromCsv.record.attempts).toEqual(fromJson.record.attempts);
     expect(fromCsv.record).toMatchObject({ participant: 'P01', assignment: CLASS_ASSIGNMENT.title, assignmentId: fromJson.record.assignmentId, visits: [], survey: null });
+    expect(fromCsv.record).toMatchObject({ learnerId: 'P01', attemptId: good.learner.attemptId, installId: good.learner.installId, classCode: '' });
+    expect(fromJson.record).toMatchObject({ learnerId: 'P01', attemptId: good.learner.attemptId, installId: good.learner.installId });
   });
 
   it('names why a file is skipped', () => {
@@ -44,6 +48,7 @@ describe('reading one dropped file for the dashboard', () => {
     expect(reason('photo.png', '\u0089PNG\r\n\u001a\n\u0000\u0000')).toMatch(/not a text file/);
     expect(reason('notes.txt', 'hello there')).toMatch(/not a Ray Tracer Quest export/);
     expect(reason('list.json', '[1, 2]')).toMatch(/holds no JSON object/);
+    expect(reason('p.xapi.json', json([{ actor: { objectType: 'Agent' }, verb: { id: 'x' }, object: {} }]))).toMatch(/^xAPI statements, which are for a school's learning record store/);
     expect(reason('scene.json', json({ version: 1, objects: [] }))).toMatch(/no "format": "ray-tracer-quest-export"/);
     expect(reason('progress.json', json({ kind: 'ray-tracer-quest-progress', version: 1 }))).toMatch(/a saved progress file, not an export/);
     expect(reason('future.json', json({ ...good, version: 2 }))).toMatch(/newer version of the app \(export version 2\)/);

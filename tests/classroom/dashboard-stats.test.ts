@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { fiveNumbers, quantile } from '../../src/classroom/dashboard-stats.ts';
+import { axisEnd, fiveNumbers, quantile } from '../../src/classroom/dashboard-stats.ts';
 
 describe('dashboard statistics', () => {
   it('gives the median of an odd and an even number of values', () => {
@@ -17,5 +17,15 @@ describe('dashboard statistics', () => {
     expect(fiveNumbers([7])).toEqual({ count: 1, min: 7, q1: 7, median: 7, q3: 7, max: 7 });
     expect(fiveNumbers([])).toBeNull();
     expect(quantile([], 0.5)).toBeNaN();
+  });
+
+  it('ends a time axis at the longest time that is not an outlier', () => {
+    const row = (times: number[]) => ({ times, stats: fiveNumbers(times) });
+    // Q1 22.5, Q3 55: the fence is 55 + 1.5 × 32.5 = 103.75; 1200 is beyond it, 60 the last one inside.
+    const tasks = [row([10, 20, 30, 40, 60, 1200]), row([5, 8])];
+    expect(tasks[0].stats).toMatchObject({ q1: 22.5, q3: 55 });
+    expect(axisEnd(tasks)).toBe(60);
+    expect(axisEnd([row([])])).toBe(0);
+    expect(axisEnd([row([100, 100, 100])])).toBe(100);
   });
 });

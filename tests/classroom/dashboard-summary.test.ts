@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import type { TaskAttempt } from '../../src/classroom/task-attempts.ts';
 import { readClassFiles, combinedCsv } from '../../src/classroom/dashboard-class.ts';
+import { classLearners } from '../../src/classroom/dashboard-learners.ts';
 import { parseCsv } from '../../src/classroom/csv-text.ts';
 import type { ClassRecord } from '../../src/classroom/dashboard-record.ts';
 import { completionRate, summarizeLevels } from '../../src/classroom/dashboard-summary.ts';
@@ -12,6 +13,7 @@ const attempt = (task: string, activeMs: number, how: TaskAttempt['how'], extra:
   level: '02-b',
   task,
   mandatory: true,
+  kind: 'do',
   startedAt: '2026-03-09T09:00:00.000Z',
   completedAt: how ? '2026-03-09T09:01:00.000Z' : null,
   durationMs: activeMs,
@@ -21,14 +23,19 @@ const attempt = (task: string, activeMs: number, how: TaskAttempt['how'], extra:
   hintsText: 0,
   hintsGuidance: 0,
   quizAnswers: 0,
+  quizCorrect: null,
   ...extra,
 });
 
 const record = (participant: string, attempts: TaskAttempt[], passed: boolean | null, survey: ClassRecord['survey'] = null): ClassRecord => ({
   file: `${participant}.json`,
   participant,
+  learnerId: participant,
+  attemptId: `attempt-${participant}`,
+  installId: '',
   assignment: 'Lesson',
   assignmentId: 'abc',
+  classCode: '',
   attempts,
   visits: passed === null ? [] : [{ level: '02-b', durationMs: 100_000, activeMs: 90_000, passed }],
   survey,
@@ -112,11 +119,12 @@ describe('a class of files', () => {
 
   it('writes every attempt of every learner as one CSV row, with the file it came from', () => {
     const { records } = readClassFiles(files);
-    const csv = parseCsv(combinedCsv(records));
+    const csv = parseCsv(combinedCsv(classLearners(records), surveyById));
     if (!csv.ok) throw new Error(csv.error);
     const [header, ...rows] = csv.rows;
-    expect(header.slice(0, 3)).toEqual(['participant', 'assignment', 'assignment_id']);
+    expect(header.slice(0, 7)).toEqual(['learner_id', 'attempt_id', 'install_id', 'participant', 'assignment', 'assignment_id', 'class_code']);
     expect(header.at(-1)).toBe('file');
+    expect(header).toContain('survey_computer-skill');
     expect(rows).toHaveLength(records.reduce((total, item) => total + item.attempts.length, 0));
     expect(rows[0].at(-1)).toBe(files[0].name);
     expect(new Set(rows.map((row) => row[0])).size).toBe(30);

@@ -4,7 +4,9 @@ import { assignmentId } from '../../src/classroom/assignment-id.ts';
 import { parseCsv } from '../../src/classroom/csv-text.ts';
 import type { ExportInput } from '../../src/classroom/export-context.ts';
 import { APP_VERSION } from '../../src/classroom/export-context.ts';
-import { CSV_COLUMNS, exportCsv } from '../../src/classroom/export-csv.ts';
+import { CSV_COLUMNS } from '../../src/classroom/attempt-rows.ts';
+import { exportCsv } from '../../src/classroom/export-csv.ts';
+import { surveyById } from '../../src/classroom/surveys.ts';
 import { buildExport, EXPORT_FORMAT } from '../../src/classroom/export-json.ts';
 import { exportXapi } from '../../src/classroom/export-xapi.ts';
 import { isoAt, isoDuration } from '../../src/classroom/iso-duration.ts';
@@ -14,17 +16,21 @@ import { newProgress, type Progress } from '../../src/quest/progress.ts';
 const START = '2025-03-04T09:00:00.000Z';
 const clock = { monotonicMs: () => 0, wallMs: () => Date.parse(START) };
 const flags = { mandatory: true, required: true };
+const INSTALL = '11111111-2222-4333-8444-555555555555';
+const ATTEMPT = '66666666-7777-4888-9999-aaaaaaaaaaaa';
 
 /**
  * A learner opens level 1, hides the tab for 20 s while on "orbit", finishes it; "select" is
  * shown, they leave the level, come back (a second attempt) and finish it by "show me";
- * an optional task is skipped; a quiz is answered wrong.
+ * an optional task is skipped (touched only the second time); a quiz is answered wrong; an
+ * optional info step is never read.
  */
 const events: LoggedEvent[] = [
   { t: 0, type: 'session.started', at: START },
   { t: 1_000, type: 'level.opened', level: 'l1' },
   { t: 1_000, type: 'task.shown', level: 'l1', task: 'orbit', ...flags },
   { t: 1_000, type: 'task.shown', level: 'l1', task: 'extra', mandatory: false, required: false },
+  { t: 1_000, type: 'task.shown', level: 'l1', task: 'about', mandatory: true, required: false, kind: 'info' },
   { t: 5_000, type: 'hint.shown', level: 'l1', task: 'orbit', step: 'text', trigger: 'asked' },
   { t: 6_000, type: 'tab.hidden' },
   { t: 26_000, type: 'tab.visible' },
@@ -35,12 +41,14 @@ const events: LoggedEvent[] = [
   { t: 50_000, type: 'level.opened', level: 'l1' },
   { t: 50_000, type: 'task.shown', level: 'l1', task: 'select', ...flags },
   { t: 50_000, type: 'task.shown', level: 'l1', task: 'extra', mandatory: false, required: false },
+  { t: 51_000, type: 'task.started', level: 'l1', task: 'extra' },
   { t: 52_000, type: 'explanation.expanded', level: 'l1', task: 'select' },
   { t: 53_500, type: 'task.completed', level: 'l1', task: 'select', ...flags, how: 'shown', points: 0 },
   { t: 54_000, type: 'task.completed', level: 'l1', task: 'extra', mandatory: false, required: false, how: 'skipped', points: 0 },
   { t: 54_000, type: 'level.passed', level: 'l1' },
   { t: 54_000, type: 'badge.earned', badge: { kind: 'first-render' } },
-  { t: 60_000, type: 'task.shown', level: 'l1', task: 'guess', ...flags },
+  { t: 60_000, type: 'task.shown', level: 'l1', task: 'guess', ...flags, kind: 'quiz' },
+  { t: 60_500, type: 'task.shown', level: 'l1', task: 'read', ...flags, kind: 'info' },
   { t: 61_000, type: 'quiz.answered', level: 'l1', task: 'guess', choice: 2, correct: false },
   { t: 61_000, type: 'task.completed', level: 'l1', task: 'guess', ...flags, how: 'done', points: 5 },
   { t: 62_000, type: 'render.started', level: 'l1' },
@@ -66,6 +74,8 @@ function input(overrides: Partial<ExportInput> = {}): ExportInput {
   return {
     progress: progress(),
     participant: 'P-07, ü',
+    installId: INSTALL,
+    attemptId: ATTEMPT,
     assignment,
     survey: { survey: 'default', submittedAt: '2025-03-04T10:00:00.000Z', answers: { 'computer-skill': 7, feedback: 'Nice, "really"' } },
     exportedAt: '2025-03-04T10:01:00.000Z',
@@ -83,9 +93,10 @@ function csvRows(text: string): Record<string, string>[] {
 
 describe('CSV export', () => {
   const text = exportCsv(input());
+  const questions = surveyById('default')!.questions.map((question) => `survey_${question.id}`);
 
   it('starts with a byte-order mark and the header, with CRLF line ends', () => {
-    expect(text.startsWith(`\uFEFF${CSV_COLUMNS.join(',')}\r\n`)).toBe(true);
+    expect(text.startsWith(`\uFEFF${[...CSV_COLUMNS, ...questions].join(',')}\r\n`)).toBe(true);
     expect(text.endsWith('\r\n')).toBe(true);
     for (const column of ['participant', 'assignment', 'level', 'task', 'mandatory', 'started_at', 'completed_at', 'duration_ms', 'active_ms', 'hints_text', 'hints_guidance', 'shown_by_app', 'attempts', 'points']) {
       expect(CSV_COLUMNS).toContain(column);
@@ -94,6 +105,8 @@ describe('CSV export', () => {
 
   it('quotes fields with commas, quotes and line breaks (RFC 4180)', () => {
     expect(text).toContain('"P-07, ü","Lesson, ""one"", line\nbreak"');
+    // Identifiers are always quoted, so readers told to keep quoted fields as text keep them.
+    expect(text).toContain(`"P-07, ü","${ATTEMPT}","${INSTALL}","P-07, ü"`);
     const [first] = csvRows(text);
     expect(first.participant).toBe('P-07, ü');
     expect(first.assignment).toBe('Lesson, "one", line\nbreak');
@@ -102,24 +115,53 @@ describe('CSV export', () => {
 
   it('has one row per task attempt with times, hints and how it ended', () => {
     const rows = csvRows(text);
-    expect(rows.map((row) => `${row.task}#${row.attempts}:${row.how}`)).toEqual(['orbit#1:done', 'extra#1:', 'select#1:', 'select#2:shown', 'extra#2:skipped', 'guess#1:done']);
-    const [orbit, , select1, select2, , guess] = rows;
+    // The optional task is timed only from its first move, in the second visit; the optional info step never.
+    expect(rows.map((row) => `${row.task}#${row.attempts}:${row.how}`)).toEqual(['orbit#1:done', 'select#1:', 'select#2:shown', 'extra#1:skipped', 'guess#1:done', 'read#1:']);
+    const [orbit, select1, select2, extra, guess, read] = rows;
     expect(orbit).toMatchObject({ mandatory: 'true', started_at: '2025-03-04T09:00:01.000Z', completed_at: '2025-03-04T09:00:31.000Z', duration_ms: '30000', hints_text: '1', hints_guidance: '0', shown_by_app: 'false', points: '10' });
     // Unfinished: the level was closed.
     expect(select1).toMatchObject({ completed_at: '', duration_ms: '9000', hints_guidance: '1' });
-    expect(select2).toMatchObject({ shown_by_app: 'true', duration_ms: '3500', points: '0' });
-    expect(guess).toMatchObject({ quiz_answers: '1', points: '5' });
+    expect(select2).toMatchObject({ shown_by_app: 'true', duration_ms: '3500', points: '0', quiz_correct: '' });
+    expect(extra).toMatchObject({ mandatory: 'false', started_at: '2025-03-04T09:00:51.000Z', duration_ms: '3000' });
+    expect(guess).toMatchObject({ kind: 'quiz', quiz_answers: '1', quiz_correct: 'false', points: '5' });
+    // An info step is read, not done: never mandatory, even when it is required.
+    expect(read).toMatchObject({ kind: 'info', mandatory: 'false' });
+  });
+
+  it('names the learner and the playthrough in every row', () => {
+    for (const row of csvRows(text)) {
+      expect(row).toMatchObject({ learner_id: 'P-07, ü', attempt_id: ATTEMPT, install_id: INSTALL, class_code: '' });
+    }
+    const [anonymous] = csvRows(exportCsv(input({ participant: null, assignment: { ...assignment, classCode: '3B' } })));
+    expect(anonymous).toMatchObject({ learner_id: `install:${INSTALL}`, participant: '', class_code: '3B' });
+  });
+
+  it('puts the survey answers in one column per question, on each row', () => {
+    const rows = csvRows(text);
+    expect(Object.keys(rows[0]).filter((column) => column.startsWith('survey_'))).toEqual(questions);
+    for (const row of rows) expect(row).toMatchObject({ survey: 'default', 'survey_computer-skill': '7', survey_feedback: 'Nice, "really"', survey_education: '' });
+    // Not answered yet: the assignment's survey columns are there, empty.
+    const [before] = csvRows(exportCsv(input({ survey: null })));
+    expect(before).toMatchObject({ survey: '', 'survey_computer-skill': '' });
+    // Free play without a survey: no survey columns.
+    expect(Object.keys(csvRows(exportCsv(input({ survey: null, assignment: null })))[0]).some((column) => column.startsWith('survey_'))).toBe(false);
+  });
+
+  it('writes a code of digits in quotes and reads it back with its zeros', () => {
+    const digits = exportCsv(input({ participant: '007' }));
+    expect(digits).toContain('\r\n"007",');
+    expect(csvRows(digits)[0]).toMatchObject({ learner_id: '007', participant: '007' });
   });
 
   it('leaves hidden-tab time out of active time', () => {
-    const [orbit, , select1] = csvRows(text);
+    const [orbit, select1] = csvRows(text);
     expect(orbit.active_ms).toBe('10000');
     expect(select1.active_ms).toBe('9000');
   });
 
   it('leaves participant and assignment empty in anonymous free play', () => {
     const [first] = csvRows(exportCsv(input({ participant: null, assignment: null })));
-    expect(first).toMatchObject({ participant: '', assignment: '', assignment_id: '' });
+    expect(first).toMatchObject({ participant: '', assignment: '', assignment_id: '', learner_id: `install:${INSTALL}` });
   });
 });
 
@@ -127,6 +169,7 @@ describe('JSON export', () => {
   it('holds the full log, the app version, the assignment and the survey', () => {
     const data = buildExport(input());
     expect(data).toMatchObject({ format: EXPORT_FORMAT, version: 1, appVersion: '9.9.9', exportedAt: '2025-03-04T10:01:00.000Z', participant: 'P-07, ü' });
+    expect(data.learner).toEqual({ id: 'P-07, ü', installId: INSTALL, attemptId: ATTEMPT });
     expect(data.assignment).toEqual({ id: assignmentId(assignment), ...assignment });
     expect(data.events).toEqual({ startedAt: START, events });
     expect(data.progress.points).toBe(10);
@@ -176,6 +219,7 @@ describe('xAPI export', () => {
       expect(statement.object.id).toMatch(/^https:\/\/raytracerquest\.example/);
       expect(new Date(statement.timestamp).toISOString()).toBe(statement.timestamp);
       expect(statement.context.language).toBe('nl');
+      expect(statement.context.registration).toBe(ATTEMPT);
       if (statement.result?.duration) expect(statement.result.duration).toMatch(/^PT(\d+H)?(\d+M)?(\d+(\.\d+)?S)?$/);
     }
     expect(new Set(statements.map((s) => s.id)).size).toBe(statements.length);
@@ -186,7 +230,8 @@ describe('xAPI export', () => {
     expect(completed.map((s) => [s.object.id.split('/').at(-1), s.result?.success, s.result?.score?.raw, s.result?.duration])).toEqual([
       ['orbit', true, 10, 'PT30S'],
       ['select', false, 0, 'PT3.5S'],
-      ['guess', true, 5, 'PT1S'],
+      // Answered wrong: completed, not a success.
+      ['guess', false, 5, 'PT1S'],
     ]);
     expect(completed[0].object.id).toBe('https://raytracerquest.example/levels/l1/tasks/orbit');
     expect(completed[0].context.contextActivities.parent?.[0].id).toBe('https://raytracerquest.example/levels/l1');
@@ -210,7 +255,17 @@ describe('xAPI export', () => {
 
   it('names an anonymous learner by an account of their own', () => {
     const [first] = exportXapi(input({ participant: null, assignment: null }));
-    expect(first.actor.account.name).toMatch(/^anonymous-[0-9a-f]+$/);
+    expect(first.actor.account.name).toBe(`install:${INSTALL}`);
     expect(first.context.language).toBe('en');
+  });
+
+  it('uses the school\'s home page for accounts and tells two playthroughs apart', () => {
+    const school = exportXapi(input({ assignment: { ...assignment, xapiHomePage: 'https://school.example' } }));
+    expect(new Set(school.map((s) => s.actor.account.homePage))).toEqual(new Set(['https://school.example']));
+    const again = exportXapi(input({ attemptId: '66666666-7777-4888-9999-bbbbbbbbbbbb' }));
+    expect(again.every((s) => s.context.registration === '66666666-7777-4888-9999-bbbbbbbbbbbb')).toBe(true);
+    // Same code, same moments, another attempt: no statement id is shared, so a store keeps both.
+    const ids = new Set(statements.map((s) => s.id));
+    expect(again.some((s) => ids.has(s.id))).toBe(false);
   });
 });

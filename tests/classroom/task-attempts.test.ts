@@ -36,6 +36,7 @@ describe('reading a learner’s log as task attempts', () => {
         level: 'L1',
         task: 'a',
         mandatory: true,
+        kind: null,
         startedAt: '2026-03-09T09:00:01.000Z',
         completedAt: '2026-03-09T09:00:11.000Z',
         durationMs: 10_000,
@@ -45,6 +46,7 @@ describe('reading a learner’s log as task attempts', () => {
         hintsText: 1,
         hintsGuidance: 1,
         quizAnswers: 0,
+        quizCorrect: null,
       },
     ]);
   });

@@ -105,6 +105,28 @@ describe('playing a level', () => {
     expect(setup.engine.answerQuiz('predict', 1)).toBeUndefined(); // answered once
   });
 
+  it('logs an optional task as started at the learner\'s first move towards it, not when the level opens', () => {
+    const setup = setUp();
+    const store = setup.open('first');
+    expect(setup.logged('task.shown').map((event) => [event.task, event.kind])).toEqual([
+      ['red-ball', 'do'],
+      ['zoom', 'do'],
+      ['orbit', 'do'],
+    ]);
+    setup.clock.advance(5_000);
+    // Orbiting is the current task's; it moves neither optional task along.
+    store.dispatch({ type: 'view.orbited' });
+    expect(setup.logged('task.started')).toEqual([]);
+    setup.clock.advance(5_000);
+    store.dispatch({ type: 'material.changed', id: 'ball', changes: { color: [0, 0, 1] } });
+    setup.engine.askHint('red-ball');
+    setup.engine.askHint('red-ball');
+    expect(setup.logged('task.started')).toEqual([{ t: 10_000, type: 'task.started', level: 'first', task: 'red-ball' }]);
+    setup.engine.skip('zoom');
+    expect(setup.logged('task.started').map((event) => event.task)).toEqual(['red-ball', 'zoom']);
+    expect(setup.logged('task.shown').find((event) => event.task === 'predict')?.kind).toBe('quiz');
+  });
+
   it('skips optional tasks only', () => {
     const setup = setUp();
     setup.open('first');

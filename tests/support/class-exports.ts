@@ -77,7 +77,11 @@ export function simulatedExport(index: number, seed = 1): QuestExport {
       log({ type: 'task.completed', level: level.id, task, mandatory: true, required: true, how, points: how === 'done' ? 10 : 0 }, between(4000, 45_000));
     }
     if (!passed) break;
-    if (rand() < 0.4) log({ type: 'task.completed', level: level.id, task: level.optional, mandatory: false, required: false, how: 'done', points: 5 }, between(3000, 20_000));
+    if (rand() < 0.4) {
+      // An optional task is timed from the learner's first move towards it.
+      log({ type: 'task.started', level: level.id, task: level.optional }, between(1000, 5000));
+      log({ type: 'task.completed', level: level.id, task: level.optional, mandatory: false, required: false, how: 'done', points: 5 }, between(3000, 20_000));
+    }
     log({ type: 'level.passed', level: level.id });
     log({ type: 'level.closed', level: level.id }, 1000);
   }
@@ -88,11 +92,18 @@ export function simulatedExport(index: number, seed = 1): QuestExport {
   return buildExport({
     progress,
     participant: `P${String(index + 1).padStart(2, '0')}`,
+    installId: testUuid(seed * 10_000 + index),
+    attemptId: testUuid(seed * 10_000 + index + 5_000),
     assignment: CLASS_ASSIGNMENT,
     survey: answersSurvey ? { survey: 'default', submittedAt: new Date(Date.parse(startedAt) + t).toISOString(), answers: surveyAnswers(rand) } : null,
     exportedAt: new Date(Date.parse(startedAt) + t + 1000).toISOString(),
     appVersion: '0.1.0',
   });
+}
+
+/** A fixed, valid version 4 UUID for test number `n`. */
+export function testUuid(n: number): string {
+  return `00000000-0000-4000-8000-${n.toString(16).padStart(12, '0')}`;
 }
 
 /** Answers to the default survey, leaning towards "helped". */

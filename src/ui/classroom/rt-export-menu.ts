@@ -7,7 +7,9 @@ import { APP_VERSION, type ExportInput } from '../../classroom/export-context.ts
 import { exportCsv } from '../../classroom/export-csv.ts';
 import { exportJson } from '../../classroom/export-json.ts';
 import { exportXapi } from '../../classroom/export-xapi.ts';
+import { installId, randomUuid } from '../../classroom/learner-identity.ts';
 import type { SurveySubmission } from '../../classroom/survey-answers.ts';
+import { MemoryStorage } from '../../quest/progress-store.ts';
 import type { Progress } from '../../quest/progress.ts';
 
 type Format = 'csv' | 'json' | 'xapi';
@@ -22,13 +24,15 @@ const FILES: Record<Format, { extension: string; type: string; text: (input: Exp
  * @summary The results downloads: CSV (one row per task attempt), JSON (everything, with the
  * full event log) and xAPI statements. Made in the browser from the current progress; nothing
  * is uploaded. Set `.progress` (QuestEngine.progress, read at the moment of the click) and the
- * classroom context: `.participant`, `.assignment`, `.survey`.
+ * classroom context: `.participant`, `.attemptId`, `.assignment`, `.survey`; the browser's
+ * install id is read from localStorage.
  * @fires export-failed - detail: the message, when a file could not be made (the lab shows it as a toast).
  */
 export class RtExportMenu extends LitElement {
   static override properties = {
     progress: { attribute: false },
     participant: { attribute: false },
+    attemptId: { attribute: false },
     assignment: { attribute: false },
     survey: { attribute: false },
   };
@@ -65,6 +69,8 @@ export class RtExportMenu extends LitElement {
   /** The progress to export; a function is called at the click, so the file has the latest events. */
   declare progress: Progress | (() => Progress) | null;
   declare participant: string | null;
+  /** The playthrough's id (QuestSession.context.attemptId); a missing one gets an id for this page. */
+  declare attemptId: string | null;
   declare assignment: Assignment | null;
   declare survey: SurveySubmission | null;
 
@@ -72,6 +78,7 @@ export class RtExportMenu extends LitElement {
     super();
     this.progress = null;
     this.participant = null;
+    this.attemptId = null;
     this.assignment = null;
     this.survey = null;
   }
@@ -81,7 +88,17 @@ export class RtExportMenu extends LitElement {
     const progress = typeof this.progress === 'function' ? this.progress() : this.progress;
     if (!progress) return null;
     const exportedAt = new Date().toISOString();
-    const input: ExportInput = { progress, participant: this.participant, assignment: this.assignment, survey: this.survey, exportedAt, appVersion: APP_VERSION };
+    this.attemptId ??= randomUuid();
+    const input: ExportInput = {
+      progress,
+      participant: this.participant,
+      installId: installId(browserStorage()),
+      attemptId: this.attemptId,
+      assignment: this.assignment,
+      survey: this.survey,
+      exportedAt,
+      appVersion: APP_VERSION,
+    };
     const file = FILES[format];
     return { name: exportFileName(this.participant, exportedAt, file.extension), text: file.text(input), type: file.type };
   }
@@ -109,6 +126,15 @@ export class RtExportMenu extends LitElement {
         ${msg('Download xAPI')}
       </button>
     `;
+  }
+}
+
+/** localStorage, or storage for this page when the browser blocks it. */
+function browserStorage(): Storage | MemoryStorage {
+  try {
+    return localStorage;
+  } catch {
+    return new MemoryStorage();
   }
 }
 

@@ -28,6 +28,9 @@ export class RtSurvey extends LitElement {
     css`
       :host {
         display: block;
+        /* Size containment gives the host no width of its own: it takes its column's, or it collapses in a column sized by content. */
+        width: 100%;
+        box-sizing: border-box;
         max-width: 760px;
         margin: 0 auto;
         /* It may sit in the lab's narrow task column: the scales fold by its width, not the window's. */
@@ -43,6 +46,9 @@ export class RtSurvey extends LitElement {
         background: var(--rt-surface);
         margin: 0 0 calc(var(--rt-space) * 1.5);
         padding: 12px 16px;
+        /* A fieldset is as wide as its widest line by default: long options must wrap instead. */
+        min-width: 0;
+        overflow-wrap: anywhere;
       }
       fieldset[aria-invalid='true'] {
         border-color: var(--rt-danger);

@@ -3,7 +3,8 @@ import { css, html, LitElement, nothing } from 'lit';
 import QRCode from 'qrcode';
 import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
-import { TITLE_MAX } from '../../classroom/assignment-schema.ts';
+import { assignmentSchema, CLASS_CODE, TITLE_MAX } from '../../classroom/assignment-schema.ts';
+import { compactAssignment } from '../../classroom/assignment-compact.ts';
 import { assignmentUrl } from '../../classroom/assignment-link.ts';
 import { SURVEY_IDS } from '../../classroom/surveys.ts';
 import type { Level } from '../../quest/level-schema.ts';
@@ -50,6 +51,9 @@ export class RtTeacherPage extends LitElement {
         display: grid;
         gap: 4px;
         font-weight: 600;
+      }
+      label.field + label.field {
+        margin-top: var(--rt-space);
       }
       ol {
         padding-left: 1.5em;
@@ -174,6 +178,11 @@ export class RtTeacherPage extends LitElement {
   private get problem(): string | null {
     if (this.assignment.title.trim() === '') return msg('Give the assignment a title.');
     if (this.assignment.levels.length === 0) return msg('Add at least one level.');
+    const { classCode, xapiHomePage } = this.assignment;
+    if (classCode !== undefined && !CLASS_CODE.test(classCode)) return msg('A class code has up to 32 letters, digits, - or _ (no spaces).');
+    if (xapiHomePage !== undefined && !assignmentSchema.shape.xapiHomePage.safeParse(xapiHomePage).success) {
+      return msg("The school's address for xAPI must be a web address starting with https:// or http://.");
+    }
     return null;
   }
 
@@ -185,9 +194,11 @@ export class RtTeacherPage extends LitElement {
       this.url = this.qr = null;
       return;
     }
-    const assignment = { ...this.assignment, title: this.assignment.title.trim() };
+    const assignment = compactAssignment({ ...this.assignment, title: this.assignment.title.trim() }, this.levels);
     const url = await assignmentUrl(assignment, location.href);
-    const svg = await QRCode.toString(url, { type: 'svg', errorCorrectionLevel: 'M', margin: 2 });
+    // Level L (7 % recovery) is enough for a projected code nothing covers, and gives the
+    // fewest, largest squares: what matters from the back of a classroom.
+    const svg = await QRCode.toString(url, { type: 'svg', errorCorrectionLevel: 'L', margin: 2 });
     // A newer change may have finished first: only the latest link is shown.
     if (run !== this.made) return;
     this.url = url;
@@ -197,7 +208,11 @@ export class RtTeacherPage extends LitElement {
   }
 
   private change(changes: Partial<Assignment>): void {
-    this.assignment = { ...this.assignment, ...changes };
+    const next: Assignment = { ...this.assignment, ...changes };
+    // An optional field left empty is left out, so the link (and the assignment's id) stays as without it.
+    if (next.classCode === undefined) delete next.classCode;
+    if (next.xapiHomePage === undefined) delete next.xapiHomePage;
+    this.assignment = next;
   }
 
   private level(id: string): Level | undefined {
@@ -305,6 +320,25 @@ export class RtTeacherPage extends LitElement {
             ])}
             ${a.survey ? html`<a href=${`#/survey/${a.survey}`} target="_blank" rel="noopener">${msg('Preview the survey (opens a new tab)')}</a>` : nothing}
           </section>
+          <section>
+            <h2>${msg('For the dashboard and research (optional)')}</h2>
+            <label class="field">
+              ${msg('Class code (the dashboard can show one class)')}
+              <input type="text" name="class-code" maxlength="32" placeholder="3B" .value=${a.classCode ?? ''} @input=${(e: Event) => this.change({ classCode: optional((e.target as HTMLInputElement).value) })} />
+            </label>
+            <label class="field">
+              ${msg("Your school's web address, for xAPI accounts")}
+              <input
+                type="url"
+                name="xapi-home-page"
+                maxlength="200"
+                placeholder="https://school.example"
+                .value=${a.xapiHomePage ?? ''}
+                @input=${(e: Event) => this.change({ xapiHomePage: optional((e.target as HTMLInputElement).value) })}
+              />
+            </label>
+            <p class="muted">${msg('With a learning record store shared by schools, this keeps code "P-07" of your school apart from another school\'s.')}</p>
+          </section>
         </div>
         <section class="result" aria-labelledby="result-heading">
           <h2 id="result-heading">${msg('Link for the students')}</h2>
@@ -368,6 +402,11 @@ export class RtTeacherPage extends LitElement {
       )}
     </fieldset>`;
   }
+}
+
+/** A typed optional field: trimmed, undefined when empty. */
+function optional(text: string): string | undefined {
+  return text.trim() === '' ? undefined : text.trim();
 }
 
 function mandatoryTasks(level: Level): string[] {

@@ -2,6 +2,7 @@
  * Registers every element the lab's template uses (imported for their side effect: each
  * module defines its custom element).
  */
+import '../game/rt-assignment-done.ts';
 import '../classroom/rt-export-menu.ts';
 import '../game/rt-participant-dialog.ts';
 import '../classroom/rt-survey.ts';

@@ -31,6 +31,9 @@ function tasks(game: QuestController, assignment: Assignment | null) {
       <p>${msg('Build and explore your own scene: every panel is here, and your scene is kept for next time.')}</p>
       <button class="primary" @click=${() => session.openMap()}>${msg('Level map')}</button>`;
   }
+  if (session?.mode.kind === 'finished') {
+    return html`<rt-assignment-done heading=${assignment?.title ?? ''} @open-map=${() => session.openMap()}></rt-assignment-done>`;
+  }
   if (!session || !view) {
     return html`<p>${msg('Your tasks appear here when you play a level. In the free lab, explore freely.')}</p>
       <button class="primary" @click=${() => session?.openMap()}>${msg('Level map')}</button>`;
@@ -63,6 +66,7 @@ function yourData(game: QuestController, assignment: Assignment | null, toast: (
     <rt-export-menu
       .progress=${() => session.engine.progress}
       .participant=${session.context.participantCode}
+      .attemptId=${session.context.attemptId}
       .assignment=${assignment}
       .survey=${game.survey}
       @export-failed=${(event: CustomEvent<string>) => toast(event.detail, 'error')}

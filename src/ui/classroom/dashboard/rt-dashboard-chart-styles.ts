@@ -36,3 +36,31 @@ export const chartStyles = css`
     vertical-align: -2px;
   }
 `;
+
+/** The dashboard's tables of numbers: scrolling sideways on a narrow screen, figures aligned. */
+export const tableStyles = css`
+  :host {
+    display: block;
+    overflow-x: auto;
+  }
+  table {
+    border-collapse: collapse;
+    font-size: 0.9rem;
+    font-variant-numeric: tabular-nums;
+  }
+  caption {
+    text-align: left;
+    font-weight: 600;
+    padding-bottom: 4px;
+  }
+  th,
+  td {
+    padding: 4px 8px;
+    border-bottom: 1px solid var(--rt-border);
+  }
+  thead th {
+    color: var(--rt-muted);
+    font-weight: 600;
+    vertical-align: bottom;
+  }
+`;

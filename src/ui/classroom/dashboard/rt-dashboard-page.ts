@@ -1,10 +1,12 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html, LitElement, nothing } from 'lit';
 import { loadBrowserCatalog } from '../../../app/level-catalog-browser.ts';
-import { combinedCsv, readClassFiles, type ClassFiles, type DroppedFile } from '../../../classroom/dashboard-class.ts';
+import { combinedCsv, readClassFiles, surveyCsv, type ClassFiles, type DroppedFile } from '../../../classroom/dashboard-class.ts';
+import { assignmentsOf, classCodesOf, classLearners, filterLearners, type ClassLearner, type LearnerFilter } from '../../../classroom/dashboard-learners.ts';
 import { MAX_EXPORT_BYTES } from '../../../classroom/dashboard-read-file.ts';
 import type { SkippedFile } from '../../../classroom/dashboard-record.ts';
-import { summarizeLevels, type LevelSummary } from '../../../classroom/dashboard-summary.ts';
+import { learnerInLevel, summarizeLevels, type LevelSummary } from '../../../classroom/dashboard-summary.ts';
+import { stickingPoints, STUCK_MIN_LEARNERS, STUCK_MIN_SHARE, STUCK_TIMES_TYPICAL } from '../../../classroom/dashboard-stuck.ts';
 import { summarizeSurveys, type SurveysSummary } from '../../../classroom/dashboard-survey.ts';
 import { downloadText } from '../../../util/download-file.ts';
 import { surveyById } from '../../../classroom/surveys.ts';
@@ -12,6 +14,7 @@ import { localize, type Locale } from '../../../quest/localized-text.ts';
 import { playableLevels } from '../../../quest/level-index.ts';
 import { classroomStyles, pageStyles } from '../classroom-styles.ts';
 import './rt-dashboard-completion.ts';
+import { learnerLabel } from './rt-dashboard-level-times.ts';
 import { formatDuration } from './rt-dashboard-format.ts';
 import './rt-dashboard-stuck.ts';
 import './rt-dashboard-survey.ts';
@@ -44,6 +47,7 @@ export class RtDashboardPage extends LitElement {
     files: { state: true },
     reading: { state: true },
     dragging: { state: true },
+    filter: { state: true },
     locale: {},
   };
 
@@ -130,6 +134,23 @@ export class RtDashboardPage extends LitElement {
         vertical-align: top;
         overflow-wrap: anywhere;
       }
+      .filter {
+        display: flex;
+        flex-wrap: wrap;
+        gap: var(--rt-space) calc(var(--rt-space) * 2);
+        align-items: center;
+        margin-top: var(--rt-space);
+      }
+      .filter label {
+        display: flex;
+        gap: 6px;
+        align-items: center;
+      }
+      .rule {
+        margin: 0 0 var(--rt-space);
+        color: var(--rt-muted);
+        max-width: 70em;
+      }
       .level-facts {
         margin: 0;
         color: var(--rt-muted);
@@ -140,11 +161,16 @@ export class RtDashboardPage extends LitElement {
   declare files: ClassFiles;
   declare reading: boolean;
   declare dragging: boolean;
+  /** Which assignment and class are shown. */
+  declare filter: LearnerFilter;
   /** The language of level titles and survey texts. */
   declare locale: Locale;
 
   /** Texts already read, to count an export dropped twice once. */
   private seen = new Map<string, string>();
+  /** Every learner of the files read, each counted once; `shown` those the filter keeps. */
+  private learners: ClassLearner[] = [];
+  private shown: ClassLearner[] = [];
   private levels: LevelSummary[] = [];
   private surveys: SurveysSummary = { surveys: [], unknown: [] };
 
@@ -153,13 +179,16 @@ export class RtDashboardPage extends LitElement {
     this.files = { records: [], skipped: [] };
     this.reading = false;
     this.dragging = false;
+    this.filter = { assignmentId: null, classCode: null };
     this.locale = 'en';
   }
 
   protected override willUpdate(changed: Map<PropertyKey, unknown>): void {
-    if (changed.has('files')) {
-      this.levels = summarizeLevels(this.files.records);
-      this.surveys = summarizeSurveys(this.files.records, surveyById);
+    if (changed.has('files')) this.learners = classLearners(this.files.records);
+    if (changed.has('files') || changed.has('filter')) {
+      this.shown = filterLearners(this.learners, this.filter);
+      this.levels = summarizeLevels(this.shown);
+      this.surveys = summarizeSurveys(this.shown, surveyById);
     }
   }
 
@@ -184,6 +213,7 @@ export class RtDashboardPage extends LitElement {
   private clear(): void {
     this.seen = new Map();
     this.files = { records: [], skipped: [] };
+    this.filter = { assignmentId: null, classCode: null };
   }
 
   private onDrop(event: DragEvent): void {
@@ -203,9 +233,56 @@ export class RtDashboardPage extends LitElement {
     if (input.files?.length) void this.addFiles(input.files).then(() => (input.value = ''));
   }
 
-  private downloadCsv(): void {
+  private downloadCsv(kind: 'class' | 'survey'): void {
     const date = new Date().toISOString().slice(0, 10);
-    downloadText(`\uFEFF${combinedCsv(this.files.records)}`, `ray-tracer-quest-class-${date}.csv`, 'text/csv;charset=utf-8');
+    const text = kind === 'class' ? combinedCsv(this.shown, surveyById) : surveyCsv(this.shown, surveyById);
+    downloadText(`\uFEFF${text}`, `ray-tracer-quest-${kind}-${date}.csv`, 'text/csv;charset=utf-8');
+  }
+
+  /** "3 learners counted (5 files, 2 merged into their learner's), 1 file skipped." */
+  private statusText(): string {
+    const { records, skipped } = this.files;
+    const learners = this.learners.length;
+    const merged = records.length - learners;
+    const counted = learners === 1 ? msg('1 learner counted') : msg(str`${learners} learners counted`);
+    const files = merged === 0 ? '' : merged === 1 ? msg(str` (from ${records.length} files: 1 merged into its learner's)`) : msg(str` (from ${records.length} files: ${merged} merged into their learner's)`);
+    const skippedText = skipped.length === 1 ? msg('1 file skipped.') : msg(str`${skipped.length} files skipped.`);
+    return `${counted}${files}, ${skippedText}`;
+  }
+
+  /** Choosers for one assignment and one class, when the files hold more than one. */
+  private renderFilter() {
+    const assignments = assignmentsOf(this.learners);
+    const classes = classCodesOf(this.learners);
+    if (assignments.length < 2 && classes.length < 2) return nothing;
+    const pick = (changes: Partial<LearnerFilter>) => (this.filter = { ...this.filter, ...changes });
+    const value = (text: string) => (text === '*' ? null : text);
+    return html`<div class="filter">
+      ${assignments.length < 2
+        ? nothing
+        : html`<label
+            >${msg('Assignment')}
+            <select name="assignment" @change=${(event: Event) => pick({ assignmentId: value((event.target as HTMLSelectElement).value) })}>
+              <option value="*" ?selected=${this.filter.assignmentId === null}>${msg(str`All (${this.learners.length} learners)`)}</option>
+              ${assignments.map(
+                (assignment) =>
+                  html`<option value=${assignment.id} ?selected=${this.filter.assignmentId === assignment.id}>
+                    ${assignment.id === '' ? msg('Free play (no assignment)') : assignment.title} (${assignment.learners})
+                  </option>`,
+              )}
+            </select></label
+          >`}
+      ${classes.length < 2
+        ? nothing
+        : html`<label
+            >${msg('Class')}
+            <select name="class" @change=${(event: Event) => pick({ classCode: value((event.target as HTMLSelectElement).value) })}>
+              <option value="*" ?selected=${this.filter.classCode === null}>${msg('All classes')}</option>
+              ${classes.map((code) => html`<option value=${code} ?selected=${this.filter.classCode === code}>${code === '' ? msg('No class code') : code}</option>`)}
+            </select></label
+          >`}
+      <span>${msg(str`${this.shown.length} learners shown.`)}</span>
+    </div>`;
   }
 
   override render() {
@@ -239,24 +316,44 @@ export class RtDashboardPage extends LitElement {
             ${msg('The files are read in this browser only. Nothing is uploaded or sent anywhere.')}
           </p>
           <p class="status" role="status">
-            ${this.reading
-              ? msg('Reading the files…')
-              : records.length + skipped.length > 0
-                ? `${records.length === 1 ? msg('1 learner counted') : msg(str`${records.length} learners counted`)}, ${skipped.length === 1 ? msg('1 file skipped.') : msg(str`${skipped.length} files skipped.`)}`
-                : ''}
+            ${this.reading ? msg('Reading the files…') : records.length + skipped.length > 0 ? this.statusText() : ''}
           </p>
+          ${this.renderFilter()}
           <div class="actions">
-            <button type="button" ?disabled=${records.length === 0} @click=${this.downloadCsv} title=${msg('One CSV with every task attempt of every learner, for a spreadsheet or R')}>
+            <button type="button" ?disabled=${this.shown.length === 0} @click=${() => this.downloadCsv('class')} title=${msg('One CSV with every task attempt of every learner shown, for a spreadsheet or R')}>
               ${msg('Download combined CSV')}
+            </button>
+            <button type="button" ?disabled=${!this.shown.some((learner) => learner.survey)} @click=${() => this.downloadCsv('survey')} title=${msg('One row per learner shown who answered the survey, one column per question')}>
+              ${msg('Download survey CSV')}
             </button>
             <button type="button" ?disabled=${records.length + skipped.length === 0} @click=${this.clear} title=${msg('Forget the files read so far and start again')}>
               ${msg('Clear')}
             </button>
           </div>
         </section>
-        ${skipped.length ? this.renderSkipped(skipped) : null} ${this.levels.map((level) => this.renderLevel(level))} ${this.renderSurveys()}
+        ${skipped.length ? this.renderSkipped(skipped) : null} ${this.renderLearnerTimes()} ${this.levels.map((level) => this.renderLevel(level))}
+        ${this.renderSurveys()}
       </main>
     `;
+  }
+
+  /** Time per level per learner, every level side by side. */
+  private renderLearnerTimes() {
+    if (this.shown.length === 0 || this.levels.length === 0) return nothing;
+    const names = levelNames(this.locale);
+    const rows = this.shown.map((learner) => ({ learner: learnerLabel(learner), cells: this.levels.map((level) => learnerInLevel(learner, level.level)) }));
+    return html`<section class="learner-times" aria-labelledby="learner-times-heading">
+      <h2 id="learner-times-heading">${msg('Time per level, per learner')}</h2>
+      <!-- A long class folds away, so the levels below stay in reach. -->
+      <details ?open=${this.shown.length <= 40}>
+        <summary>${msg(str`${this.shown.length} learners`)}</summary>
+        <rt-dashboard-level-times
+          .rows=${rows}
+          .levels=${this.levels.map((level) => names.level(level.level))}
+          caption=${msg('Active time of each learner in each level; a striped bar: not passed (yet)')}
+        ></rt-dashboard-level-times>
+      </details>
+    </section>`;
   }
 
   private renderSkipped(skipped: readonly SkippedFile[]) {
@@ -279,6 +376,7 @@ export class RtDashboardPage extends LitElement {
   private renderLevel(level: LevelSummary) {
     const names = levelNames(this.locale);
     const title = names.level(level.level);
+    const stuck = stickingPoints(level.tasks);
     const rows = level.tasks.map((task) => ({ ...task, label: task.mandatory ? names.task(level.level, task.task) : msg(str`${names.task(level.level, task.task)} (optional)`) }));
     return html`<section class="level" data-level=${level.level} aria-label=${title}>
       <h2>${title}</h2>
@@ -289,13 +387,23 @@ export class RtDashboardPage extends LitElement {
       </p>
       <h3>${msg('Active time per task')}</h3>
       <rt-dashboard-times
-        .rows=${[...rows, { label: msg('Whole level'), times: level.times, stats: level.stats }]}
+        .rows=${rows}
         caption=${msg(str`Active time per task in ${title}: a box for the middle half, a line for the median, a dot per learner`)}
+      ></rt-dashboard-times>
+      <h3>${msg('Active time for the whole level (learners who passed)')}</h3>
+      <rt-dashboard-times
+        class="whole-level"
+        .rows=${[{ label: msg('Whole level'), times: level.times, stats: level.stats }]}
+        caption=${msg(str`Active time for the whole of ${title}, of the learners who passed it`)}
       ></rt-dashboard-times>
       <h3>${msg('Completion')}</h3>
       <rt-dashboard-completion .rows=${rows} caption=${msg(str`Completion per task in ${title}`)}></rt-dashboard-completion>
       <h3>${msg('Where learners got stuck')}</h3>
-      <rt-dashboard-stuck .rows=${rows.map((row) => ({ ...row, task: names.task(level.level, row.task) }))} caption=${msg(str`Hints, "show me" and times per task in ${title}`)}></rt-dashboard-stuck>
+      <p class="rule">${stuckRule()}</p>
+      <rt-dashboard-stuck
+        .rows=${rows.map((row) => ({ ...row, task: names.task(level.level, row.task), stuck: stuck.has(row.task) }))}
+        caption=${msg(str`Hints, "show me" and times per task in ${title}`)}
+      ></rt-dashboard-stuck>
     </section>`;
   }
 
@@ -314,6 +422,14 @@ export class RtDashboardPage extends LitElement {
       </section>`,
     )}`;
   }
+}
+
+/** The sticking-point rule (classroom/dashboard-stuck.ts), in words. */
+function stuckRule(): string {
+  const share = `${Math.round(STUCK_MIN_SHARE * 100)} %`;
+  return msg(
+    str`⚠ marks a sticking point: a required task where at least ${share} of the learners needed help (a hint, "show me", or they did not finish it) and at least ${STUCK_TIMES_TYPICAL} times as many as on a typical task of this level (the median). Hints offered after idling count too, so some help on every task is normal. Tasks seen by fewer than ${STUCK_MIN_LEARNERS} learners are not marked.`,
+  );
 }
 
 customElements.define('rt-dashboard-page', RtDashboardPage);

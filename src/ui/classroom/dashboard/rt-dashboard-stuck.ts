@@ -2,66 +2,48 @@ import { msg } from '@lit/localize';
 import { css, html } from 'lit';
 import { completionRate, type TaskSummary } from '../../../classroom/dashboard-summary.ts';
 import { DashboardChart } from './rt-dashboard-chart.ts';
+import { tableStyles } from './rt-dashboard-chart-styles.ts';
 import { formatDuration, formatPercent } from './rt-dashboard-format.ts';
-
-/** The share of learners needing help at or above which a task's row is marked as a sticking point. */
-const STUCK_SHARE = 0.4;
 
 /**
  * @summary Where learners got stuck, per task: how many saw it and finished it, the median
  * and middle half of their times, hints (learners who needed one, and rungs shown) and
- * "show me". A row where at least 40 % of the learners needed help (a hint, "show me")
- * or did not finish a mandatory task is marked with a word and an icon, not colour alone.
+ * "show me". A sticking point (`stuck`, from classroom/dashboard-stuck.ts, whose rule the
+ * page explains) is marked with a word and an icon, not colour alone.
  */
-export class RtDashboardStuck extends DashboardChart<TaskSummary> {
-  static override styles = css`
-    :host {
-      display: block;
-      overflow-x: auto;
-    }
-    table {
-      border-collapse: collapse;
-      width: 100%;
-      font-size: 0.9rem;
-      font-variant-numeric: tabular-nums;
-    }
-    caption {
-      text-align: left;
-      font-weight: 600;
-      padding-bottom: 4px;
-    }
-    th,
-    td {
-      padding: 4px 8px;
-      border-bottom: 1px solid var(--rt-border);
-      text-align: right;
-    }
-    th:first-child,
-    td:first-child {
-      text-align: left;
-    }
-    td {
-      white-space: nowrap;
-    }
-    thead th {
-      color: var(--rt-muted);
-      font-weight: 600;
-      vertical-align: bottom;
-    }
-    tr.stuck td {
-      background: color-mix(in srgb, var(--rt-warning) 14%, transparent);
-    }
-    .muted {
-      color: var(--rt-muted);
-      font-weight: normal;
-    }
-    .flag {
-      color: var(--rt-warning);
-      font-weight: 600;
-      margin-left: 6px;
-      white-space: nowrap;
-    }
-  `;
+export class RtDashboardStuck extends DashboardChart<TaskSummary & { stuck: boolean }> {
+  static override styles = [
+    tableStyles,
+    css`
+      table {
+        width: 100%;
+      }
+      th,
+      td {
+        text-align: right;
+      }
+      th:first-child,
+      td:first-child {
+        text-align: left;
+      }
+      td {
+        white-space: nowrap;
+      }
+      tr.stuck td {
+        background: color-mix(in srgb, var(--rt-warning) 14%, transparent);
+      }
+      .muted {
+        color: var(--rt-muted);
+        font-weight: normal;
+      }
+      .flag {
+        color: var(--rt-warning);
+        font-weight: 600;
+        margin-left: 6px;
+        white-space: nowrap;
+      }
+    `,
+  ];
 
   override render() {
     return html`<table>
@@ -82,11 +64,11 @@ export class RtDashboardStuck extends DashboardChart<TaskSummary> {
       </thead>
       <tbody>
         ${this.rows.map((task) => {
-          const stuck = task.learners > 0 && task.learnersNeedingHelp / task.learners >= STUCK_SHARE;
+          const { stuck } = task;
           return html`<tr class=${stuck ? 'stuck' : ''} data-task=${task.task}>
             <th scope="row">
               ${task.task}${task.mandatory ? '' : html` <span class="muted">(${msg('optional')})</span>`}
-              ${stuck ? html`<span class="flag" title=${msg('At least 40 % of the learners needed a hint or "show me", or did not finish it')}>⚠ ${msg('sticking point')}</span>` : null}
+              ${stuck ? html`<span class="flag">⚠ ${msg('sticking point')}</span>` : null}
             </th>
             <td>${task.learners}</td>
             <td>${task.done + task.shown} (${formatPercent(completionRate(task))})</td>

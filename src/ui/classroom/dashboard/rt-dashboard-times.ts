@@ -1,6 +1,6 @@
 import { msg, str } from '@lit/localize';
 import { css, html, svg } from 'lit';
-import type { FiveNumbers } from '../../../classroom/dashboard-stats.ts';
+import { axisEnd, type FiveNumbers } from '../../../classroom/dashboard-stats.ts';
 import { DashboardChart } from './rt-dashboard-chart.ts';
 import { chartStyles } from './rt-dashboard-chart-styles.ts';
 import { formatDuration } from './rt-dashboard-format.ts';
@@ -30,7 +30,9 @@ function tickStep(max: number): number {
  * @summary Times per task as a box plot with every learner as a dot (a strip plot): the box
  * spans the middle half (quartiles), the thick line is the median, whiskers reach the
  * fastest and slowest. Dots are spread up and down so that equal times stay visible. Each
- * row names its numbers in a tooltip; the table beside it has them as text.
+ * row names its numbers in a tooltip; the table beside it has them as text. The axis ends
+ * at the longest time that is not an outlier (axisEnd); longer ones sit at its end as
+ * hollow dots, and whiskers stop there with an arrow.
  */
 export class RtDashboardTimes extends DashboardChart<TimeRow> {
   static override styles = [
@@ -67,6 +69,11 @@ export class RtDashboardTimes extends DashboardChart<TimeRow> {
         stroke: var(--rt-surface);
         stroke-width: 0.75;
       }
+      .dot.beyond {
+        fill: none;
+        stroke: var(--rt-accent);
+        stroke-width: 1.5;
+      }
       .grid {
         stroke: var(--rt-border);
       }
@@ -82,10 +89,10 @@ export class RtDashboardTimes extends DashboardChart<TimeRow> {
   ];
 
   override render() {
-    const max = Math.max(1000, ...this.rows.flatMap((row) => row.times));
+    const max = Math.max(1000, axisEnd(this.rows));
     const step = tickStep(max);
     const end = Math.ceil(max / step) * step;
-    const x = (ms: number) => PAD + ((WIDTH - 2 * PAD) * ms) / end;
+    const x = (ms: number) => PAD + ((WIDTH - 2 * PAD) * Math.min(ms, end)) / end;
     const ticks = Array.from({ length: Math.round(end / step) + 1 }, (_, index) => index * step);
     const grid = (height: number) => ticks.map((tick) => svg`<line class="grid" x1=${x(tick)} x2=${x(tick)} y1="0" y2=${height}></line>`);
     return html`<div class="plot" role="img" aria-label=${this.caption}>
@@ -97,7 +104,7 @@ export class RtDashboardTimes extends DashboardChart<TimeRow> {
             ${row.times.map(
               (ms, index) =>
                 // Golden-ratio spread: deterministic, and neighbours in the list land far apart.
-                svg`<circle class="dot" cx=${x(ms)} cy=${ROW_HEIGHT / 2 + (((index * 0.618034) % 1) - 0.5) * (ROW_HEIGHT - 8)} r="3"></circle>`,
+                svg`<circle class="dot ${ms > end ? 'beyond' : ''}" cx=${x(ms)} cy=${ROW_HEIGHT / 2 + (((index * 0.618034) % 1) - 0.5) * (ROW_HEIGHT - 8)} r="3"></circle>`,
             )}
           </svg>`,
       )}

@@ -1,0 +1,111 @@
+import { expect, test } from '@playwright/test';
+import type { Assignment } from '../src/classroom/assignment.ts';
+import { encodeAssignment } from '../src/classroom/assignment-link.ts';
+import { parseCsv } from '../src/classroom/csv-text.ts';
+import { answerDefaultSurvey, download } from './support/classroom-steps.ts';
+import { closeRenderWindow, collectErrors, openRayTracer, playLevel1UpToTheRayTracer } from './support/game-steps.ts';
+
+// One student, one learner: a student who waits 10 s before typing their code, downloads a
+// file midway, reloads, downloads again, finishes the level and the survey and presses two
+// more buttons. The first task's time leaves the code dialog out; the CSV has the survey's
+// columns; the dashboard counts the four files as one learner who passed; reloading the
+// finished assignment shows its end, not its last level.
+
+const CODE_WAIT_MS = 10_000;
+
+const assignment: Assignment = {
+  version: 1,
+  title: 'Lesson 1',
+  levels: ['01-introduction'],
+  requiredTasks: {},
+  otherLevels: 'hidden',
+  locale: 'en',
+  askParticipantCode: true,
+  survey: 'default',
+  classCode: '3B',
+};
+
+const rowsOf = (text: string) => {
+  const read = parseCsv(text);
+  if (!read.ok) throw new Error(read.error);
+  const [header, ...lines] = read.rows;
+  return lines.map((line) => Object.fromEntries(header.map((column, index) => [column, line[index]])));
+};
+
+test('one student hands in four files: the dashboard shows one learner who passed', async ({ page }) => {
+  test.setTimeout(240_000);
+  const errors = collectErrors(page);
+  await page.goto(`./${await encodeAssignment(assignment)}`);
+
+  // The code dialog stays open for 10 s: nothing is timed yet.
+  const dialog = page.locator('rt-participant-dialog');
+  await expect(dialog.getByRole('textbox', { name: 'Participant code' })).toBeVisible();
+  await page.waitForTimeout(CODE_WAIT_MS);
+  await dialog.getByRole('textbox', { name: 'Participant code' }).fill('007');
+  const codeGiven = Date.now();
+  await dialog.getByRole('button', { name: 'Start' }).click();
+  await expect(dialog.getByRole('textbox', { name: 'Participant code' })).toBeHidden();
+
+  await playLevel1UpToTheRayTracer(page);
+  const midway = await download(page, 'Download JSON');
+  await page.reload();
+  await expect(page.locator('rt-task-card[status="current"]')).toContainText('Open the ray tracer');
+  const afterReload = await download(page, 'Download JSON');
+  await openRayTracer(page);
+  await closeRenderWindow(page);
+  const survey = page.locator('rt-lab rt-survey');
+  await answerDefaultSurvey(survey, '12');
+  await survey.getByRole('button', { name: 'Hand in' }).click();
+  await expect(survey).toHaveCount(0);
+  const finalJson = await download(page, 'Download JSON');
+  const finalCsv = await download(page, 'Download CSV');
+
+  // The CSV: the first task timed from the code, the survey in its own columns, the code kept as text.
+  expect(finalCsv.text).toContain('"007"');
+  const rows = rowsOf(finalCsv.text);
+  const look = rows.find((row) => row.task === 'orbit')!;
+  expect(Date.parse(look.started_at)).toBeGreaterThanOrEqual(codeGiven - 1000);
+  expect(Number(look.duration_ms)).toBeLessThan(CODE_WAIT_MS);
+  for (const row of rows) {
+    expect(row).toMatchObject({ participant: '007', learner_id: '007', class_code: '3B', survey: 'default', survey_education: 'secondary', survey_minutes: '12', 'survey_computer-skill': '7' });
+    expect(row.attempt_id).toMatch(/^[0-9a-f-]{36}$/);
+  }
+  expect(new Set(rows.map((row) => row.attempt_id)).size).toBe(1);
+  const ids = [midway, afterReload, finalJson].map((file) => (JSON.parse(file.text) as { learner: { attemptId: string } }).learner.attemptId);
+  expect(new Set([...ids, rows[0].attempt_id]).size).toBe(1);
+
+  // Reloading the finished assignment shows its end, not the level.
+  await page.reload();
+  await expect(page.locator('rt-assignment-done').getByRole('heading', { name: 'Assignment finished' })).toBeVisible();
+  await expect(page.locator('rt-quest-panel')).toHaveCount(0);
+
+  // The teacher drops all four files: one learner, who passed.
+  await page.goto('./#/dashboard');
+  const dashboard = page.locator('rt-dashboard-page');
+  const files = [midway, afterReload, finalJson, finalCsv].map((file, index) => ({
+    name: `${index}-${file.name}`,
+    mimeType: file.name.endsWith('.csv') ? 'text/csv' : 'application/json',
+    buffer: Buffer.from(file.text),
+  }));
+  await dashboard.locator('input[type=file]').setInputFiles(files);
+  await expect(dashboard.getByRole('status')).toHaveText(/1 learner counted \(from 4 files: 3 merged into their learner's\), 0 files skipped\./);
+  await expect(dashboard.locator('section.level[data-level="01-introduction"] .level-facts')).toContainText('1 of 1 learners passed');
+  expect(errors).toEqual([]);
+});
+
+test('the survey fits the lab\'s task column at 1366×900', async ({ page }) => {
+  await page.setViewportSize({ width: 1366, height: 900 });
+  // No required task: the assignment is passed at once and its survey takes the task column.
+  const hash = await encodeAssignment({ ...assignment, requiredTasks: { '01-introduction': [] }, askParticipantCode: false });
+  await page.goto(`./${hash}`);
+  const survey = page.locator('rt-lab rt-survey');
+  await expect(survey.getByRole('radio', { name: 'Primary school' })).toBeVisible();
+  const overflowing = await survey.evaluate((element) => {
+    const column = element.parentElement!.getBoundingClientRect();
+    const inside = [element, ...element.shadowRoot!.querySelectorAll('*')];
+    return inside.filter((node) => node.getBoundingClientRect().right > column.right + 1).map((node) => node.tagName);
+  });
+  expect(overflowing).toEqual([]);
+  const box = await survey.boundingBox();
+  expect(box!.width).toBeGreaterThan(200);
+});

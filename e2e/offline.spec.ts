@@ -1,0 +1,58 @@
+import { expect, test } from '@playwright/test';
+import { existsSync } from 'node:fs';
+import { resolve } from 'node:path';
+import { PNG } from 'pngjs';
+
+// The app without a network: after one visit the service worker has every file, so a
+// reload offline plays on (and the teacher's pages open); and the USB-stick build
+// (`npm run build:usb`) opened from disk, file://, draws its scene and ray traces.
+
+test.use({ serviceWorkers: 'allow' });
+
+test('after one visit the app opens offline, with the teacher pages', async ({ page, context }) => {
+  await page.goto('./');
+  await expect(page.locator('rt-quest-panel').getByRole('heading', { name: 'Introduction' })).toBeVisible();
+  // The service worker has precached the build and controls the page.
+  await expect.poll(() => page.evaluate(() => navigator.serviceWorker.controller !== null), { timeout: 30_000 }).toBe(true);
+  const manifest = await page.evaluate(() => fetch(document.querySelector<HTMLLinkElement>('link[rel=manifest]')!.href).then((response) => response.json()));
+  expect(manifest).toMatchObject({ name: 'Ray Tracer Quest', display: 'standalone', start_url: './' });
+
+  await context.setOffline(true);
+  await page.reload();
+  await expect(page.locator('rt-quest-panel').getByRole('heading', { name: 'Introduction' })).toBeVisible();
+  // The dashboard is loaded on demand: from the cache too.
+  await page.goto('./#/dashboard');
+  await expect(page.locator('rt-dashboard-page').getByRole('heading', { name: 'Class dashboard' })).toBeVisible();
+  await context.setOffline(false);
+});
+
+/** How many distinct colours a screenshot of `png` bytes has (a blank canvas has one or two). */
+function colours(png: Buffer): number {
+  const { data } = PNG.sync.read(png);
+  const seen = new Set<number>();
+  for (let i = 0; i < data.length; i += 4) seen.add((data[i] << 16) | (data[i + 1] << 8) | data[i + 2]);
+  return seen.size;
+}
+
+test('the USB-stick build opens from file:// and draws its scene', async ({ page }) => {
+  const file = resolve(process.env.E2E_USB_DIST ?? 'dist-usb', 'index.html');
+  expect(existsSync(file), `${file} is missing: run npm run build:usb first`).toBe(true);
+  const errors: string[] = [];
+  page.on('pageerror', (error) => errors.push(error.message));
+  page.on('console', (message) => {
+    if (message.type() === 'error') errors.push(message.text());
+  });
+  await page.goto(`file://${file}#free-lab`);
+  const canvas = page.locator('rt-scene-view canvas');
+  await expect(canvas).toBeVisible();
+  // The 3D view really drew: its pixels hold the scene's many colours, not a blank fill.
+  await expect.poll(async () => colours(await canvas.screenshot()), { timeout: 30_000 }).toBeGreaterThan(50);
+
+  // The render worker runs from inside the page: a full render finishes.
+  await page.getByRole('button', { name: 'Render image' }).click();
+  const window = page.locator('rt-render-window');
+  await window.getByRole('button', { name: 'Render', exact: true }).click();
+  await expect(window.getByTestId('render-status')).toContainText(/Done in [\d.]+ (ms|s)/, { timeout: 90_000 });
+  expect(colours(await window.getByRole('img', { name: 'The ray traced image' }).screenshot())).toBeGreaterThan(50);
+  expect(errors).toEqual([]);
+});

@@ -1,0 +1,41 @@
+import { defineConfig, type Plugin } from 'vite';
+import { viteSingleFile } from 'vite-plugin-singlefile';
+
+/**
+ * The USB-stick build (`npm run build:usb`): one `index.html` that opens by double-click.
+ *
+ * A page opened from disk (file://) may not load module scripts, workers or anything else
+ * from files next to it (browsers treat every file as its own origin). So everything goes
+ * inside the page: the script inline (vite-plugin-singlefile), the models and icons as data
+ * URLs, and the render worker as an inline worker (Vite's `?worker&inline`, started from a
+ * blob). No service worker: file:// pages cannot register one, and nothing needs caching.
+ */
+
+const WORKER_PORT = /src\/render\/web-worker-port\.ts$/;
+const WORKER_URL = "new Worker(new URL('../../workers/render.worker.ts', import.meta.url), { type: 'module' })";
+
+/** Starts the render worker from the page's own text instead of a file beside it. */
+function inlineRenderWorker(): Plugin {
+  return {
+    name: 'inline-render-worker',
+    enforce: 'pre',
+    transform(code, id) {
+      if (!WORKER_PORT.test(id)) return null;
+      if (!code.includes(WORKER_URL)) this.error(`${id} no longer starts the render worker as ${WORKER_URL}: update vite.usb.config.ts`);
+      return `import InlineRenderWorker from '../../workers/render.worker.ts?worker&inline';\n${code.replace(WORKER_URL, 'new InlineRenderWorker()')}`;
+    },
+  };
+}
+
+export default defineConfig({
+  base: './',
+  // A classic worker: a module worker from a blob is refused on a file:// page.
+  worker: { format: 'iife' },
+  build: {
+    target: 'es2022',
+    outDir: 'dist-usb',
+    assetsInlineLimit: () => true,
+    chunkSizeWarningLimit: 8000,
+  },
+  plugins: [inlineRenderWorker(), viteSingleFile()],
+});
