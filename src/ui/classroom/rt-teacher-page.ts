@@ -1,5 +1,5 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { html, LitElement, nothing } from 'lit';
 import QRCode from 'qrcode';
 import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
@@ -10,7 +10,7 @@ import { SURVEY_IDS } from '../../classroom/surveys.ts';
 import type { Level } from '../../quest/level-schema.ts';
 import { playableLevels } from '../../quest/level-index.ts';
 import { localize } from '../../quest/localized-text.ts';
-import { classroomStyles, pageStyles } from './classroom-styles.ts';
+import { teacherPageStyles } from './teacher-page.css.ts';
 import '../controls/rt-theme-toggle.ts';
 
 /**
@@ -28,117 +28,7 @@ export class RtTeacherPage extends LitElement {
     stale: { state: true },
   };
 
-  static override styles = [
-    classroomStyles,
-    pageStyles,
-    css`
-      main {
-        display: grid;
-        grid-template-columns: minmax(0, 1fr) minmax(300px, 420px);
-        gap: calc(var(--rt-space) * 2);
-        padding: calc(var(--rt-space) * 2);
-        max-width: 1280px;
-        margin: 0 auto;
-      }
-      section {
-        margin-bottom: calc(var(--rt-space) * 2);
-      }
-      h2 {
-        font-size: 1.05rem;
-        margin: 0 0 var(--rt-space);
-      }
-      label.field {
-        display: grid;
-        gap: 4px;
-        font-weight: 600;
-      }
-      label.field + label.field {
-        margin-top: var(--rt-space);
-      }
-      ol {
-        padding-left: 1.5em;
-        margin: 0 0 var(--rt-space);
-      }
-      li {
-        margin-bottom: var(--rt-space);
-        padding: 8px;
-        border: 1px solid var(--rt-border);
-        border-radius: 6px;
-        background: var(--rt-surface-2);
-      }
-      .level-head {
-        display: flex;
-        align-items: center;
-        gap: 6px;
-        flex-wrap: wrap;
-      }
-      .level-head strong {
-        flex: 1;
-        min-width: 10em;
-      }
-      .icon {
-        min-width: var(--rt-target);
-        justify-content: center;
-        padding: 4px;
-      }
-      fieldset {
-        border: 0;
-        margin: 6px 0 0;
-        padding: 0;
-      }
-      legend {
-        font-size: 0.9em;
-        color: var(--rt-muted);
-        padding: 0;
-      }
-      .check {
-        display: flex;
-        gap: 6px;
-        align-items: center;
-        min-height: 28px;
-        cursor: pointer;
-      }
-      .row {
-        display: flex;
-        flex-wrap: wrap;
-        gap: var(--rt-space);
-        align-items: center;
-      }
-      .choices {
-        display: flex;
-        flex-wrap: wrap;
-        gap: 4px 16px;
-        margin-bottom: var(--rt-space);
-      }
-      .result {
-        position: sticky;
-        top: calc(var(--rt-space) * 2);
-        align-self: start;
-      }
-      .link {
-        width: 100%;
-        font-family: ui-monospace, monospace;
-        font-size: 0.85em;
-      }
-      .qr {
-        display: block;
-        width: 100%;
-        max-width: 380px;
-        aspect-ratio: 1;
-        margin: var(--rt-space) auto;
-        background: #fff;
-        border-radius: 6px;
-      }
-      @media (max-width: 900px) {
-        main {
-          grid-template-columns: 1fr;
-        }
-        .result {
-          position: static;
-        }
-      }
-    `,
-  ];
+  static override styles = teacherPageStyles;
 
   declare assignment: Assignment;
   /** The student link, or null while it is being made or when the assignment cannot be made. */
