@@ -20,6 +20,9 @@ import { readJson } from '../util/read-json.ts';
 /** Points a task gives when the level does not say: mandatory tasks are the main path, optional ones a bonus. */
 export const DEFAULT_POINTS = { mandatory: 10, optional: 5 } as const;
 
+/** The points a level file may give one task. */
+export const TASK_POINTS: readonly [number, number] = [0, 100];
+
 const guideTargetSchema = z.custom<GuideTarget>((value) => typeof value === 'string' && isGuideTarget(value), {
   error: (issue) => `must be a control like "tracer.supersampling" or an item like "view.item:ball" (docs/levels.md lists them), got ${describeValue(issue.input)}`,
 });
@@ -31,7 +34,7 @@ const taskSchema = z
     text: localizedTextSchema.describe('The instruction: one thing to do or see.'),
     more: localizedTextSchema.optional().describe('"Explain more": the deeper explanation, formulas welcome.'),
     mandatory: z.boolean().default(true),
-    points: wholeNumberIn([0, 100]).optional(),
+    points: wholeNumberIn(TASK_POINTS).optional(),
     goal: goalSchema,
     hints: z.array(localizedTextSchema).max(5).default([]).describe('Text hints, shown one at a time (the first rung of the hint ladder).'),
     guide: guideTargetSchema.optional().describe('The control the second rung rings.'),

@@ -15,6 +15,7 @@ import type { LocalizedText } from './localized-text.ts';
 import { pointsOf, PROGRESS_KIND, PROGRESS_VERSION, type LevelProgress, type Progress, type QuestSettings } from './progress.ts';
 import { levelBadgesEarned, pointsFor } from './scoring.ts';
 import { holdsAll, mergeProgress } from './progress-merge.ts';
+import { reconcileLevels } from './progress-reconcile.ts';
 
 /**
  * The game's rules, with no DOM: which level is open, which task is the learner's, when a
@@ -121,7 +122,7 @@ export class QuestEngine {
     this.assignment = options.requiredTasks;
     this.idleHintMs = options.idleHintMs ?? IDLE_HINT_MS;
     const { progress } = options;
-    this.levelProgress = progress.levels;
+    this.levelProgress = reconcileLevels(progress.levels, this.levels);
     this.earned = progress.badges;
     this.settings = progress.settings;
     this.sandbox = progress.sandbox;
@@ -397,7 +398,7 @@ export class QuestEngine {
     if ((theirs.epoch ?? '') !== (ours.epoch ?? '')) return false;
     if (holdsAll(ours, theirs) && JSON.stringify(theirs.settings) === JSON.stringify(ours.settings)) return false;
     const merged = mergeProgress(ours, theirs);
-    this.levelProgress = merged.levels;
+    this.levelProgress = reconcileLevels(merged.levels, this.levels);
     this.earned = merged.badges;
     this.settings = theirs.settings;
     this.log.adopt(merged.log);
