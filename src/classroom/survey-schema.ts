@@ -9,6 +9,10 @@ import { localizedTextSchema } from '../quest/localized-text.ts';
  * free text; each required or optional. Texts are `{ en, nl }` like level texts.
  */
 
+/** More than any questionnaire a class answers; it keeps a damaged file from costing seconds. */
+export const QUESTIONS_MAX = 100;
+const OPTIONS_MAX = 20;
+
 const common = {
   id: kebabId(),
   text: localizedTextSchema,
@@ -18,7 +22,7 @@ const choiceSchema = z.strictObject({
   ...common,
   type: z.literal('choice'),
   required: z.boolean().default(true),
-  options: z.array(z.strictObject({ id: kebabId(), text: localizedTextSchema })).min(2),
+  options: z.array(z.strictObject({ id: kebabId(), text: localizedTextSchema })).min(2).max(OPTIONS_MAX),
 });
 
 const scaleSchema = z
@@ -59,13 +63,13 @@ export const surveySchema = z
     id: kebabId(),
     title: localizedTextSchema,
     intro: localizedTextSchema.optional(),
-    questions: z.array(surveyQuestionSchema).min(1),
+    questions: z.array(surveyQuestionSchema).min(1).max(QUESTIONS_MAX),
   })
   .superRefine((survey, context) => {
+    const seen = new Set<string>();
     survey.questions.forEach((question, index) => {
-      if (survey.questions.findIndex((other) => other.id === question.id) !== index) {
-        context.addIssue({ code: 'custom', path: ['questions', index, 'id'], input: question.id, message: `"${question.id}" is used more than once` });
-      }
+      if (seen.has(question.id)) context.addIssue({ code: 'custom', path: ['questions', index, 'id'], input: question.id, message: `"${question.id}" is used more than once` });
+      seen.add(question.id);
     });
   });
 

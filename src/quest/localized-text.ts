@@ -13,7 +13,10 @@ export type Locale = (typeof LOCALES)[number];
 
 export type LocalizedText = string | { en: string; nl?: string };
 
-const text = () => z.string().trim().min(1);
+/** Four times the longest text of the game's levels (an "explain more" of 1,300 characters). */
+export const TEXT_MAX = 5000;
+
+const text = () => z.string().trim().min(1).max(TEXT_MAX);
 
 export const localizedTextSchema: z.ZodType<LocalizedText> = chosenBy((input): z.ZodType<LocalizedText> =>
   typeof input === 'object' && input !== null && !Array.isArray(input) ? z.strictObject({ en: text(), nl: text().optional() }) : text(),
