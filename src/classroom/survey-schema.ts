@@ -2,6 +2,7 @@ import { z } from 'zod';
 import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
 import { kebabId } from '../quest/kebab-id.ts';
 import { localizedTextSchema } from '../quest/localized-text.ts';
+import { listOf } from '../scene/scene-schema-parts.ts';
 
 /**
  * A closing questionnaire (spec/classroom.md "Survey"), a data file in ./surveys. Four kinds
@@ -22,7 +23,7 @@ const choiceSchema = z.strictObject({
   ...common,
   type: z.literal('choice'),
   required: z.boolean().default(true),
-  options: z.array(z.strictObject({ id: kebabId(), text: localizedTextSchema })).min(2).max(OPTIONS_MAX),
+  options: listOf(z.strictObject({ id: kebabId(), text: localizedTextSchema }), [2, OPTIONS_MAX]),
 });
 
 const scaleSchema = z
@@ -63,7 +64,7 @@ export const surveySchema = z
     id: kebabId(),
     title: localizedTextSchema,
     intro: localizedTextSchema.optional(),
-    questions: z.array(surveyQuestionSchema).min(1).max(QUESTIONS_MAX),
+    questions: listOf(surveyQuestionSchema, [1, QUESTIONS_MAX]),
   })
   .superRefine((survey, context) => {
     const seen = new Set<string>();
