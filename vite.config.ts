@@ -1,3 +1,4 @@
+import type { Plugin } from 'vite';
 import { VitePWA } from 'vite-plugin-pwa';
 import { defineConfig } from 'vitest/config';
 
@@ -8,6 +9,35 @@ import { defineConfig } from 'vitest/config';
  * The USB-stick build (vite.usb.config.ts) has no service worker: file:// pages cannot
  * register one.
  */
+
+/**
+ * The built app's Content-Security-Policy: scripts only from the app's own files (no inline
+ * script, no eval), workers from them too, nothing from other hosts. Styles may be inline
+ * (lit sets style attributes and the three.js canvas is sized with them); images and fetches
+ * may be data: and blob: URLs (inlined assets, rendered PNGs, QR codes, downloads). Only in
+ * the build: the dev server's hot reload needs a websocket and inline code.
+ */
+const CONTENT_SECURITY_POLICY = [
+  "default-src 'self'",
+  "script-src 'self'",
+  "worker-src 'self' blob:",
+  "style-src 'self' 'unsafe-inline'",
+  "img-src 'self' data: blob:",
+  "font-src 'self' data:",
+  "connect-src 'self' data: blob:",
+  "object-src 'none'",
+  "base-uri 'self'",
+  "form-action 'none'",
+].join('; ');
+
+function contentSecurityPolicy(): Plugin {
+  return {
+    name: 'content-security-policy',
+    apply: 'build',
+    transformIndexHtml: () => [{ tag: 'meta', attrs: { 'http-equiv': 'Content-Security-Policy', content: CONTENT_SECURITY_POLICY }, injectTo: 'head-prepend' }],
+  };
+}
+
 export default defineConfig({
   base: './',
   worker: { format: 'es' },
@@ -16,6 +46,7 @@ export default defineConfig({
   build: { target: 'es2022', outDir: 'dist', chunkSizeWarningLimit: 1500 },
   preview: { host: '127.0.0.1', port: 4173 },
   plugins: [
+    contentSecurityPolicy(),
     VitePWA({
       registerType: 'autoUpdate',
       injectRegister: 'script-defer',

@@ -3,7 +3,9 @@ import { systemClock, type QuestClock } from '../quest/event-log.ts';
 import { playableLevels, type LevelCatalog } from '../quest/level-index.ts';
 import type { Locale } from '../quest/localized-text.ts';
 import { saveProblemText } from '../i18n/progress-problem-text.ts';
-import { exportProgress, parseProgressJson, PROGRESS_KEY, ProgressStore, type KeyValueStorage, type ProgressProblem } from '../quest/progress-store.ts';
+import { exportProgress, parseProgressJson, PROGRESS_KEY, ProgressStore, replacing, type KeyValueStorage, type ProgressProblem } from '../quest/progress-store.ts';
+import { holdsAll } from '../quest/progress-merge.ts';
+import type { Progress } from '../quest/progress.ts';
 import { QuestEngine, type OpenLevelResult } from '../quest/quest-engine.ts';
 import { defaultScene } from '../scene/scene-defaults.ts';
 import type { Scene } from '../scene/scene.ts';
@@ -25,6 +27,11 @@ import type { Store } from '../lab-state/store.ts';
  *   `<progress key>.context` (see `readSessionContext`), where the classroom's exports read them.
  * - With an assignment that asks for a participant code, nothing starts (no level, no
  *   timing) until the code is given: the time spent typing it is no task's time.
+ * - Other tabs of the game share the saved progress: every save merges with theirs, and
+ *   when another tab saves (the window's `storage` event, see `attach`) this one takes in
+ *   what it did and shows it, and writes back what the other tab's save lacked.
+ * - Storage that cannot be written is found at once: the session saves when it starts, so
+ *   `saveError` says so on every page load while the trouble lasts.
  */
 
 /** `finished`: an assignment all passed, reopened: its closing screen (the survey, then the end) instead of a level. */
@@ -106,6 +113,8 @@ export class QuestSession {
     this.listenTo(this.engineNow);
     if (this.assignment && this.engineNow.progress.settings.locale !== this.assignment.locale) {
       this.engineNow.changeSettings({ locale: this.assignment.locale });
+    } else {
+      this.save();
     }
     this.cleanup.push(this.store.subscribe((state, action, error) => {
       this.engineNow.observe(state, action, error);
@@ -250,7 +259,7 @@ export class QuestSession {
   importText(text: string): { ok: true } | { ok: false; errors: string[] } {
     const parsed = parseProgressJson(text);
     if (!parsed.ok) return { ok: false, errors: parsed.errors };
-    this.replaceEngine(this.makeEngine(parsed.progress));
+    this.replaceEngine(this.makeEngine(replacing(parsed.progress, this.engineNow.progress, this.clock)));
     this.save();
     return { ok: true };
   }
@@ -258,13 +267,27 @@ export class QuestSession {
   /** Forgets all progress (the UI has asked) and starts afresh on the map: a new attempt. */
   reset(): void {
     this.saveContext({ ...this.contextNow, attemptId: randomUuid() });
-    this.replaceEngine(this.makeEngine(this.progress.reset()));
+    this.replaceEngine(this.makeEngine(this.progress.reset(this.engineNow.progress)));
     this.save();
   }
 
   /**
+   * Another tab wrote `key` (null: it cleared the storage): takes in its progress. A later
+   * epoch (a reset or an import there) replaces ours; else the two merge, and what the
+   * other tab's save lacked of ours is written back.
+   */
+  storageChanged(key: string | null): void {
+    if (key !== null && key !== this.progressKey) return;
+    const theirs = this.progress.read();
+    if (theirs) this.takeIn(theirs); // when it brought news, the engine's listener saved the merge
+    const saved = this.progress.read();
+    if (!saved || !holdsAll(saved, this.engineNow.progress)) this.save();
+  }
+
+  /**
    * Follows the tab's visibility (hidden time is not idle time) and ticks the engine once a
-   * second, only while a level is open and the tab is seen, so the first hint can come by itself.
+   * second, only while a level is open and the tab is seen, so the first hint can come by
+   * itself. Listens for other tabs' saves (`storage` events of this session's storage).
    */
   attach(document: Document): () => void {
     let timer: ReturnType<typeof setInterval> | undefined;
@@ -280,10 +303,16 @@ export class QuestSession {
     };
     const unsubscribe = this.subscribe(update);
     document.addEventListener('visibilitychange', update);
+    const onStorage = (event: StorageEvent) => {
+      if (event.storageArea === this.storage) this.storageChanged(event.key);
+    };
+    const window = document.defaultView;
+    window?.addEventListener('storage', onStorage);
     update();
     return () => {
       unsubscribe();
       document.removeEventListener('visibilitychange', update);
+      window?.removeEventListener('storage', onStorage);
       clearInterval(timer);
     };
   }
@@ -336,9 +365,17 @@ export class QuestSession {
     }
   }
 
+  /** Saves, merged with other tabs' progress, and takes in what they had added. */
   private save(): void {
-    const saved = this.progress.save(this.engineNow.progress);
-    this.lastSaveError = saved.ok ? null : saveProblemText(saved.kind);
+    const result = this.progress.save(this.engineNow.progress);
+    this.lastSaveError = result.ok ? null : saveProblemText(result.kind);
+    if (result.ok) this.takeIn(result.saved);
+  }
+
+  /** Progress saved by another tab joins ours (absorb tells the listeners, which saves again: the merge is then a no-op). */
+  private takeIn(saved: Progress): void {
+    if ((saved.epoch ?? '') > (this.engineNow.progress.epoch ?? '')) this.replaceEngine(this.makeEngine(saved));
+    else this.engineNow.absorb(saved);
   }
 
   private keepSandbox(scene: Scene): void {

@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
 import { fromBase64Url, toBase64Url } from '../util/base64url.ts';
+import { deflate, inflate, InflatedTooLarge } from '../util/zlib-bytes.ts';
 import { readJson } from '../util/read-json.ts';
 import { parseScene, type SceneParseResult } from '../scene/scene-schema.ts';
 import type { Scene } from '../scene/scene.ts';
@@ -27,7 +28,7 @@ export function isSceneFragment(hash: string): boolean {
 
 /** The fragment (with its `#`) that opens `scene`. */
 export async function encodeSceneLink(scene: Scene): Promise<string> {
-  const packed = await transform(new TextEncoder().encode(JSON.stringify(scene)), new CompressionStream('deflate'));
+  const packed = await deflate(new TextEncoder().encode(JSON.stringify(scene)));
   return `${SCENE_LINK_PREFIX}${toBase64Url(packed)}`;
 }
 
@@ -46,9 +47,9 @@ export async function decodeSceneLink(hash: string): Promise<SceneParseResult> {
   if (bytes === null || bytes.length === 0) return damaged(msg('it contains characters that cannot be part of a link, or it was cut short'));
   let text: string;
   try {
-    text = new TextDecoder('utf-8', { fatal: true }).decode(await transform(bytes, new DecompressionStream('deflate'), MAX_SCENE_FILE_BYTES));
+    text = new TextDecoder('utf-8', { fatal: true }).decode(await inflate(bytes, MAX_SCENE_FILE_BYTES));
   } catch (error) {
-    return damaged(error instanceof TooLarge ? error.message : msg('it was cut short or changed'));
+    return damaged(error instanceof InflatedTooLarge ? msg(str`${error.message}, more than any scene`) : msg('it was cut short or changed'));
   }
   const json = readJson(text);
   return json.ok ? parseScene(json.value) : damaged(json.error);
@@ -57,28 +58,4 @@ export async function decodeSceneLink(hash: string): Promise<SceneParseResult> {
 /** A problem with the link itself (not with a field of the scene): a reason without a path. */
 function damaged(reason: string): SceneParseResult {
   return { ok: false, errors: [reason] };
-}
-
-class TooLarge extends Error {}
-
-/** Runs `bytes` through a (de)compression stream; stops past `limit` bytes (a link that unpacks to gigabytes). */
-async function transform(bytes: Uint8Array, stream: CompressionStream | DecompressionStream, limit = Number.POSITIVE_INFINITY): Promise<Uint8Array> {
-  const reader = new Blob([bytes as BlobPart]).stream().pipeThrough(stream).getReader();
-  const chunks: Uint8Array[] = [];
-  let length = 0;
-  for (let next = await reader.read(); !next.done; next = await reader.read()) {
-    length += next.value.length;
-    if (length > limit) {
-      await reader.cancel();
-      throw new TooLarge(msg(str`it unpacks to more than ${limit / 1024} kB, more than any scene`));
-    }
-    chunks.push(next.value);
-  }
-  const joined = new Uint8Array(length);
-  let offset = 0;
-  for (const chunk of chunks) {
-    joined.set(chunk, offset);
-    offset += chunk.length;
-  }
-  return joined;
 }

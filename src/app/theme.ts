@@ -3,8 +3,14 @@ export type ThemeChoice = 'system' | 'light' | 'dark';
 
 const STORAGE_KEY = 'rtq.theme';
 
+/** The remembered choice; 'system' when there is none or storage is blocked (reading `localStorage` itself can throw). */
 export function savedTheme(): ThemeChoice {
-  const saved = globalThis.localStorage?.getItem(STORAGE_KEY);
+  let saved: string | null | undefined;
+  try {
+    saved = globalThis.localStorage?.getItem(STORAGE_KEY);
+  } catch {
+    saved = null;
+  }
   return saved === 'light' || saved === 'dark' ? saved : 'system';
 }
 

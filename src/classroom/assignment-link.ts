@@ -5,6 +5,7 @@ import { readJson } from '../util/read-json.ts';
 import type { Assignment } from './assignment.ts';
 import { assignmentSchema } from './assignment-schema.ts';
 import { fromBase64Url, toBase64Url } from '../util/base64url.ts';
+import { deflate, inflate, InflatedTooLarge } from '../util/zlib-bytes.ts';
 
 /**
  * An assignment as a link: `#/a/<version>.<payload>`, the payload being the assignment's
@@ -21,6 +22,13 @@ import { fromBase64Url, toBase64Url } from '../util/base64url.ts';
 export const LINK_VERSION = 1;
 export const LINK_PREFIX = '#/a/';
 
+/**
+ * The most an assignment link may unpack to. The largest assignment the schema accepts
+ * (100 levels, each with 100 required tasks of 64-character ids) is about 700 kB; a real
+ * one is under 2 kB. A 408 kB link once unpacked to 300 MB.
+ */
+export const MAX_ASSIGNMENT_BYTES = 1024 * 1024;
+
 /** Why a link did not open: the link itself is damaged, from another version, or names levels or tasks this game does not have. */
 export type LinkProblemKind = 'damaged' | 'other-version' | 'unknown-levels';
 
@@ -34,7 +42,7 @@ export function isAssignmentFragment(hash: string): boolean {
 /** The fragment (with its `#`) that opens `assignment`. */
 export async function encodeAssignment(assignment: Assignment): Promise<string> {
   const json = new TextEncoder().encode(JSON.stringify(assignment));
-  const packed = await transform(json, new CompressionStream('deflate'));
+  const packed = await deflate(json);
   return `${LINK_PREFIX}${LINK_VERSION}.${toBase64Url(packed)}`;
 }
 
@@ -60,9 +68,9 @@ export async function decodeAssignment(hash: string, catalog?: LevelCatalog): Pr
   if (bytes === null || bytes.length === 0) return damaged(msg('it contains characters that cannot be part of a link, or it was cut short'));
   let text: string;
   try {
-    text = new TextDecoder('utf-8', { fatal: true }).decode(await transform(bytes, new DecompressionStream('deflate')));
-  } catch {
-    return damaged(msg('it was cut short or changed'));
+    text = new TextDecoder('utf-8', { fatal: true }).decode(await inflate(bytes, MAX_ASSIGNMENT_BYTES));
+  } catch (error) {
+    return damaged(error instanceof InflatedTooLarge ? msg(str`${error.message}, more than any assignment`) : msg('it was cut short or changed'));
   }
   const json = readJson(text);
   if (!json.ok) return damaged(json.error);
@@ -87,9 +95,4 @@ export function unknownParts(assignment: Assignment, catalog: LevelCatalog): str
 
 function damaged(reason: string): AssignmentLinkResult {
   return { ok: false, kind: 'damaged', reasons: [reason] };
-}
-
-async function transform(bytes: Uint8Array, stream: CompressionStream | DecompressionStream): Promise<Uint8Array> {
-  const output = new Blob([bytes as BlobPart]).stream().pipeThrough(stream);
-  return new Uint8Array(await new Response(output).arrayBuffer());
 }

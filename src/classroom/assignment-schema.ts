@@ -15,12 +15,15 @@ export const LEVELS_MAX = 100;
 /** A class code is a short label like a participant code ("3B", "group-2"). */
 export const CLASS_CODE = /^[\p{L}\p{N}_-]{1,32}$/u;
 
+/** Far more tasks than a level has; it only stops absurd links. */
+export const TASKS_MAX = 100;
+
 export const assignmentSchema = z
   .strictObject({
     version: z.literal(1),
     title: z.string().trim().min(1).max(TITLE_MAX),
     levels: z.array(kebabId()).min(1).max(LEVELS_MAX),
-    requiredTasks: z.record(kebabId(), z.array(kebabId())),
+    requiredTasks: z.record(kebabId(), z.array(kebabId()).max(TASKS_MAX)),
     otherLevels: z.enum(['hidden', 'shown']),
     locale: z.enum(LOCALES),
     askParticipantCode: z.boolean(),

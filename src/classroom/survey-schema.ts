@@ -2,12 +2,17 @@ import { z } from 'zod';
 import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
 import { kebabId } from '../quest/kebab-id.ts';
 import { localizedTextSchema } from '../quest/localized-text.ts';
+import { listOf } from '../scene/scene-schema-parts.ts';
 
 /**
  * A closing questionnaire (spec/classroom.md "Survey"), a data file in ./surveys. Four kinds
  * of question: one choice of several, a scale with labelled ends (1–5, 1–10), a number, and
  * free text; each required or optional. Texts are `{ en, nl }` like level texts.
  */
+
+/** More than any questionnaire a class answers; it keeps a damaged file from costing seconds. */
+export const QUESTIONS_MAX = 100;
+const OPTIONS_MAX = 20;
 
 const common = {
   id: kebabId(),
@@ -18,7 +23,7 @@ const choiceSchema = z.strictObject({
   ...common,
   type: z.literal('choice'),
   required: z.boolean().default(true),
-  options: z.array(z.strictObject({ id: kebabId(), text: localizedTextSchema })).min(2),
+  options: listOf(z.strictObject({ id: kebabId(), text: localizedTextSchema }), [2, OPTIONS_MAX]),
 });
 
 const scaleSchema = z
@@ -59,13 +64,13 @@ export const surveySchema = z
     id: kebabId(),
     title: localizedTextSchema,
     intro: localizedTextSchema.optional(),
-    questions: z.array(surveyQuestionSchema).min(1),
+    questions: listOf(surveyQuestionSchema, [1, QUESTIONS_MAX]),
   })
   .superRefine((survey, context) => {
+    const seen = new Set<string>();
     survey.questions.forEach((question, index) => {
-      if (survey.questions.findIndex((other) => other.id === question.id) !== index) {
-        context.addIssue({ code: 'custom', path: ['questions', index, 'id'], input: question.id, message: `"${question.id}" is used more than once` });
-      }
+      if (seen.has(question.id)) context.addIssue({ code: 'custom', path: ['questions', index, 'id'], input: question.id, message: `"${question.id}" is used more than once` });
+      seen.add(question.id);
     });
   });
 

@@ -34,7 +34,8 @@ export class CommandLine {
     for (const token of tokens) {
       if (token.kind !== 'option') continue;
       const { name, rawName, value, inlineValue } = token;
-      if (!(name in options)) throw this.usageError(`unknown option ${rawName}`);
+      // hasOwn, not `in`: --constructor or --toString must not pass as options of every command.
+      if (!Object.hasOwn(options, name)) throw this.usageError(`unknown option ${rawName}`);
       const takesValue = strings.includes(name);
       if (takesValue && (value === undefined || (!inlineValue && value.startsWith('-')))) {
         throw this.usageError(`${rawName} needs a value`);

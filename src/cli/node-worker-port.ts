@@ -1,7 +1,6 @@
 /** The render pool in Node (`rt render`, tests): each worker is a worker thread running render.worker.node.ts (or its prebuilt JavaScript). */
 import { availableParallelism } from 'node:os';
 import { Worker } from 'node:worker_threads';
-import type { RenderResponse } from '../../workers/protocol.ts';
 import { RenderPool } from '../render/render-pool.ts';
 import type { RenderWorkerHandlers, RenderWorkerPort } from '../render/render-worker-port.ts';
 
@@ -25,8 +24,8 @@ export function createNodeWorkerPort(handlers: RenderWorkerHandlers, entry = REN
     stopped = true;
     handlers.onFailure(message);
   };
-  worker.on('message', (response: RenderResponse) => {
-    if (!stopped) handlers.onResponse(response);
+  worker.on('message', (data: unknown) => {
+    if (!stopped) handlers.onResponse(data);
   });
   worker.on('error', (error) => fail(error.message));
   worker.on('messageerror', () => fail('a message from the render worker could not be read'));

@@ -1,6 +1,8 @@
 /** `rt render`: renders a scene with the worker pool and writes a PNG (spec §4). */
 import { availableParallelism } from 'node:os';
 import type { FinishedRender } from '../render/render-job.ts';
+import { estimateRender, lighterRenders } from '../render/render-estimate.ts';
+import { planPasses } from '../render/render-passes.ts';
 import { LIMITS } from '../scene/scene-limits.ts';
 import type { Scene } from '../scene/scene.ts';
 import { toRgba8 } from '../tracer/quantize.ts';
@@ -10,14 +12,17 @@ import { createNodeRenderPool } from './node-worker-port.ts';
 import { checkWritable, writePng } from './png-file.ts';
 import { loadSceneMeshes, readScene } from './scene-file.ts';
 
-/** More threads than this only cost memory (each holds the scene); 256 is far past any core count. */
-const WORKER_RANGE: readonly [number, number] = [1, 256];
+/**
+ * Threads beyond a few per core only cost memory (each holds the scene and its BVHs):
+ * `--workers 256` once took 8.26 GB for an 8×6 image.
+ */
+const WORKERS_PER_CORE = 4;
 /** The sampler hashes the seed as a 32-bit integer. */
 const SEED_RANGE: readonly [number, number] = [0, 2 ** 32 - 1];
 
 export const renderCommand: Command = {
   strings: ['out', 'width', 'height', 'workers', 'seed'],
-  flags: ['stats'],
+  flags: ['stats', 'force'],
   help: `Usage: rt render <scene.json|level-id> --out <file.png> [options]
 
 Renders a scene file, or the scene of level <level-id> (levels/<id>.level.json or
@@ -27,8 +32,10 @@ Options:
   --out <file.png>  where to write the image (required)
   --width W         image width in pixels (default: the scene's settings.imageSize)
   --height H        image height; with only one of the two, the scene's aspect ratio is kept
-  --workers N       worker threads (default: the number of cores)
+  --workers N       worker threads, at most 4 per core and never more than the image has tiles
+                    (default: the number of cores)
   --seed S          seed of the random choices, 0..4294967295 (default 0)
+  --force           render even when the estimate says it takes more than a minute
   --stats           print, last, one JSON line: {"ms":…,"workers":N,"rays":{"primary":…,"shadow":…,
                     "reflect":…,"refract":…,"total":…}}; ms is the render after the threads started
   -h, --help        show this text
@@ -36,19 +43,21 @@ Options:
   async run(line) {
     const source = line.onePositional('scene file or level id');
     const out = line.requiredText('out', '<file.png>');
-    const workers = line.wholeNumber('workers', WORKER_RANGE) ?? availableParallelism();
+    if (!/\.png$/i.test(out)) throw line.usageError(`--out must name a .png file, the only format rt writes, got "${out}"`);
+    const cores = availableParallelism();
+    const requested = line.wholeNumber('workers', [1, WORKERS_PER_CORE * cores]) ?? cores;
     const seed = line.wholeNumber('seed', SEED_RANGE);
 
-    // The threads start first: their start-up overlaps reading the scene and its models.
+    const { scene } = await readScene(source);
+    const [width, height] = imageSize(line, scene);
+    const workers = Math.min(requested, tileCount(scene, width, height));
+    if (!line.flag('force')) refuseHeavy(scene, width, height, workers);
+    await checkWritable(out);
+
+    // The threads start before the models load: their start-up overlaps reading them.
     const pool = createNodeRenderPool(workers);
-    let scene: Scene;
-    let width: number;
-    let height: number;
     let result: FinishedRender;
     try {
-      ({ scene } = await readScene(source));
-      [width, height] = imageSize(line, scene);
-      await checkWritable(out);
       const meshes = await loadSceneMeshes(scene);
       pool.setScene(scene, meshes);
       await pool.ready(); // so that `ms` does not count the threads' start-up
@@ -84,4 +93,34 @@ function imageSize(line: CommandLine, scene: Scene): [number, number] {
     throw line.usageError(`keeping the aspect ratio makes the image ${size[0]}×${size[1]}, more than ${highest} per side: give both --width and --height`);
   }
   return size;
+}
+
+/** The full-quality pass's tiles: more workers than this would have nothing to do. */
+function tileCount(scene: Scene, width: number, height: number): number {
+  const { tileSide } = planPasses(scene, false)[0];
+  return Math.ceil(width / tileSide) * Math.ceil(height / tileSide);
+}
+
+/** Refuses a render the estimate puts over HEAVY_RENDER_SECONDS, with lighter options to try. */
+function refuseHeavy(scene: Scene, width: number, height: number, workers: number): void {
+  const estimate = estimateRender(scene, width, height, workers);
+  if (!estimate.heavy) return;
+  const options = lighterRenders(scene, width, height, workers).map((lighter) => {
+    const takes = `about ${describeSeconds(lighter.estimate.seconds)}`;
+    if (lighter.change === 'supersampling') return `settings.supersampling ${lighter.supersampling} (${takes})`;
+    if (lighter.change === 'max-depth') return `settings.maxDepth ${lighter.maxDepth} (${takes})`;
+    return `--width ${lighter.width} --height ${lighter.height} (${takes})`;
+  });
+  const lighter = options.length > 0 ? `; lighter: ${options.join(', or ')}` : '';
+  throw new InputError(
+    `this render would take about ${describeSeconds(estimate.seconds)} on ${workers} worker${workers === 1 ? '' : 's'} (${estimate.rays.toPrecision(2)} rays): give --force to render it anyway${lighter}`,
+  );
+}
+
+/** 90 → "2 minutes", 7200 → "2 hours", 3e6 → "35 days", 3e9 → "95 years". */
+export function describeSeconds(seconds: number): string {
+  const units: [number, string][] = [[365 * 86_400, 'year'], [86_400, 'day'], [3600, 'hour'], [60, 'minute'], [1, 'second']];
+  const [size, name] = units.find(([unit]) => seconds >= unit) ?? [1, 'second'];
+  const count = Math.max(1, Math.round(seconds / size));
+  return `${count} ${name}${count === 1 ? '' : 's'}`;
 }

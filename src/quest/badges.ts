@@ -1,4 +1,7 @@
 import { z } from 'zod';
+import { ID_MAX } from './kebab-id.ts';
+
+const id = () => z.string().max(ID_MAX);
 
 /**
  * Badges for milestones (spec: first render, all mandatory tasks of a chapter, no hints used
@@ -10,13 +13,13 @@ export const badgeSchema = z.discriminatedUnion('kind', [
   z.strictObject({ kind: z.literal('first-render') }),
   z.strictObject({ kind: z.literal('sandbox-saved') }),
   /** Every mandatory task of every playable level of the chapter. */
-  z.strictObject({ kind: z.literal('chapter-done'), chapter: z.string() }),
+  z.strictObject({ kind: z.literal('chapter-done'), chapter: id() }),
   /** A level passed without any hint (text, guidance or show-me). */
-  z.strictObject({ kind: z.literal('no-hints'), level: z.string() }),
+  z.strictObject({ kind: z.literal('no-hints'), level: id() }),
   /** Every task of a level, optional ones too, done by the learner (not shown, not skipped). */
-  z.strictObject({ kind: z.literal('every-task'), level: z.string() }),
+  z.strictObject({ kind: z.literal('every-task'), level: id() }),
   /** One of a level's own badges. */
-  z.strictObject({ kind: z.literal('level-badge'), level: z.string(), badge: z.string() }),
+  z.strictObject({ kind: z.literal('level-badge'), level: id(), badge: id() }),
 ]);
 
 export type Badge = z.output<typeof badgeSchema>;

@@ -1,6 +1,7 @@
 import { z } from 'zod';
 import { badgeSchema } from './badges.ts';
 import { TASK_KINDS } from './goal.ts';
+import { ID_MAX } from './kebab-id.ts';
 
 /**
  * The research log (spec/classroom.md "Task timings"): every quest event with a timestamp,
@@ -15,7 +16,15 @@ import { TASK_KINDS } from './goal.ts';
  *
  * Nothing is ever dropped: the log only grows. If storage is full the progress store says
  * so and the log stays in memory, ready to export.
+ *
+ * Tabs. Each page load is a session with a random id; its events are numbered
+ * `<session>.<n>`, so that two tabs writing the same saved log can merge their events by id
+ * (progress-merge.ts) instead of overwriting each other. Events saved before ids existed
+ * get `saved.<index>` when loaded: every tab loading the same old log numbers it the same way.
  */
+
+/** A session id (up to 16 letters and digits), a dot and the event's number in its session. */
+const EVENT_ID = /^[a-z0-9]{1,16}\.\d{1,9}$/;
 
 export const HOW_COMPLETED = ['done', 'shown', 'skipped'] as const;
 /** done: by the learner; shown: by "show me" (or a quiz answer revealed); skipped: an optional task left out. */
@@ -25,43 +34,47 @@ export const HINT_STEPS = ['text', 'guidance', 'show-me'] as const;
 export type HintStep = (typeof HINT_STEPS)[number];
 
 const t = z.number().min(0);
-const level = z.string();
-const task = z.string();
+/** Level and task ids are kebab ids of at most 64 characters (kebab-id.ts); the log allows any short text. */
+const level = z.string().max(ID_MAX);
+const task = z.string().max(ID_MAX);
+/** `<session>.<n>`; optional so that logs saved before ids existed still read. */
+const id = z.string().regex(EVENT_ID).optional();
 /** `mandatory` is the level's flag; `required` whether it counted for the gate (a teacher's assignment may differ). */
 const taskFlags = { mandatory: z.boolean(), required: z.boolean() };
 
 export const loggedEventSchema = z.discriminatedUnion('type', [
   /** A page load: `at` is its wall-clock time. */
-  z.strictObject({ t, type: z.literal('session.started'), at: z.iso.datetime() }),
-  z.strictObject({ t, type: z.literal('level.opened'), level }),
-  z.strictObject({ t, type: z.literal('level.closed'), level }),
+  z.strictObject({ t, id, type: z.literal('session.started'), at: z.iso.datetime() }),
+  z.strictObject({ t, id, type: z.literal('level.opened'), level }),
+  z.strictObject({ t, id, type: z.literal('level.closed'), level }),
   /** Every required task done: the next level opens. */
-  z.strictObject({ t, type: z.literal('level.passed'), level }),
+  z.strictObject({ t, id, type: z.literal('level.passed'), level }),
   /**
    * A task became the one to do (a required task) or available (an optional one, when the
    * level opens). `kind` (logs from 0.1 on; older ones lack it): info steps are read, not done.
    */
-  z.strictObject({ t, type: z.literal('task.shown'), level, task, ...taskFlags, kind: z.enum(TASK_KINDS).optional() }),
+  z.strictObject({ t, id, type: z.literal('task.shown'), level, task, ...taskFlags, kind: z.enum(TASK_KINDS).optional() }),
   /** The learner's first action towards an optional task (its time starts here, not when the level opened). */
-  z.strictObject({ t, type: z.literal('task.started'), level, task }),
-  z.strictObject({ t, type: z.literal('task.completed'), level, task, ...taskFlags, how: z.enum(HOW_COMPLETED), points: z.number().min(0) }),
+  z.strictObject({ t, id, type: z.literal('task.started'), level, task }),
+  z.strictObject({ t, id, type: z.literal('task.completed'), level, task, ...taskFlags, how: z.enum(HOW_COMPLETED), points: z.number().min(0) }),
   /** A rung of the hint ladder; `trigger` says whether the learner asked or sat idle. */
-  z.strictObject({ t, type: z.literal('hint.shown'), level, task, step: z.enum(HINT_STEPS), trigger: z.enum(['asked', 'idle']) }),
+  z.strictObject({ t, id, type: z.literal('hint.shown'), level, task, step: z.enum(HINT_STEPS), trigger: z.enum(['asked', 'idle']) }),
   /** "Explain more" opened, for a task or (task null) the level's intro. */
-  z.strictObject({ t, type: z.literal('explanation.expanded'), level, task: task.nullable() }),
-  z.strictObject({ t, type: z.literal('quiz.answered'), level, task, choice: z.number(), correct: z.boolean() }),
-  z.strictObject({ t, type: z.literal('render.started'), level: level.nullable() }),
-  z.strictObject({ t, type: z.literal('render.finished'), level: level.nullable(), ms: z.number().min(0) }),
+  z.strictObject({ t, id, type: z.literal('explanation.expanded'), level, task: task.nullable() }),
+  z.strictObject({ t, id, type: z.literal('quiz.answered'), level, task, choice: z.number(), correct: z.boolean() }),
+  z.strictObject({ t, id, type: z.literal('render.started'), level: level.nullable() }),
+  z.strictObject({ t, id, type: z.literal('render.finished'), level: level.nullable(), ms: z.number().min(0) }),
   /** The tab was hidden or shown again: active time is the time in between hidden ones. */
-  z.strictObject({ t, type: z.literal('tab.hidden') }),
-  z.strictObject({ t, type: z.literal('tab.visible') }),
-  z.strictObject({ t, type: z.literal('badge.earned'), badge: badgeSchema }),
+  z.strictObject({ t, id, type: z.literal('tab.hidden') }),
+  z.strictObject({ t, id, type: z.literal('tab.visible') }),
+  z.strictObject({ t, id, type: z.literal('badge.earned'), badge: badgeSchema }),
 ]);
 
+/** An event as logged: with its time and, once loaded or appended, its id. */
 export type LoggedEvent = z.output<typeof loggedEventSchema>;
 
-/** An event before it is stamped with its time. */
-export type QuestEvent = LoggedEvent extends infer Event ? (Event extends LoggedEvent ? Omit<Event, 't'> : never) : never;
+/** An event before it is stamped with its time and id. */
+export type QuestEvent = LoggedEvent extends infer Event ? (Event extends LoggedEvent ? Omit<Event, 't' | 'id'> : never) : never;
 
 export const eventLogSchema = z
   .strictObject({ startedAt: z.iso.datetime(), events: z.array(loggedEventSchema) })
@@ -87,24 +100,60 @@ export function newEventLogData(clock: QuestClock): EventLogData {
   return { startedAt: new Date(clock.wallMs()).toISOString(), events: [] };
 }
 
+/** Eight random letters and digits: two tabs opened in the same millisecond still differ. */
+export function randomSessionId(): string {
+  const bytes = crypto.getRandomValues(new Uint8Array(8));
+  return Array.from(bytes, (byte) => (byte % 36).toString(36)).join('');
+}
+
+/** The session part of an event id (`abc123.7` → `abc123`). */
+export function sessionOf(eventId: string): string {
+  return eventId.slice(0, eventId.indexOf('.'));
+}
+
+/** The number part of an event id (`abc123.7` → 7). */
+export function numberOf(eventId: string): number {
+  return Number(eventId.slice(eventId.indexOf('.') + 1));
+}
+
+/** Gives events saved before ids existed the ids every tab gives them: `saved.<index>`. */
+export function withIds(events: readonly LoggedEvent[]): LoggedEvent[] {
+  return events.map((event, index) => (event.id === undefined ? { ...event, id: `saved.${index}` } : event));
+}
+
 /** The log of this page load: continues a saved log with a new session. */
 export class EventLog {
-  private readonly startedAt: string;
-  private readonly logged: LoggedEvent[];
-  /** Log time minus monotonic time, fixed for this session. */
-  private readonly offset: number;
+  private startedAt: string;
+  private logged: LoggedEvent[];
+  /** Log time minus monotonic time, fixed for this session (moved only when a merge moves the log's start). */
+  private offset: number;
   private last: number;
+  private count = 0;
 
   constructor(
     saved: EventLogData,
     private readonly clock: QuestClock,
+    readonly session: string = randomSessionId(),
   ) {
     this.startedAt = saved.startedAt;
-    this.logged = [...saved.events];
+    this.logged = withIds(saved.events);
     this.last = this.logged.at(-1)?.t ?? 0;
     const sessionStart = Math.max(this.last, clock.wallMs() - Date.parse(saved.startedAt));
     this.offset = sessionStart - clock.monotonicMs();
     this.append({ type: 'session.started', at: new Date(clock.wallMs()).toISOString() });
+  }
+
+  /**
+   * Takes over a merged log (progress-merge.ts) that holds every event of this one: other
+   * tabs' events join the list, and when the merged log starts earlier this session's
+   * times move with it, so its clock keeps running on the merged log's time.
+   */
+  adopt(merged: EventLogData): void {
+    const shift = Date.parse(this.startedAt) - Date.parse(merged.startedAt);
+    this.startedAt = merged.startedAt;
+    this.offset += shift;
+    this.logged = [...merged.events];
+    this.last = Math.max(this.last + shift, this.logged.at(-1)?.t ?? 0);
   }
 
   /** The log's time now, in whole milliseconds; never less than the last event's. */
@@ -114,7 +163,7 @@ export class EventLog {
 
   append(event: QuestEvent): LoggedEvent {
     this.last = this.now();
-    const logged: LoggedEvent = { ...event, t: this.last };
+    const logged: LoggedEvent = { ...event, t: this.last, id: `${this.session}.${this.count++}` };
     this.logged.push(logged);
     return logged;
   }

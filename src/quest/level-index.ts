@@ -1,5 +1,6 @@
 import { z } from 'zod';
 import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
+import { listOf } from '../scene/scene-schema-parts.ts';
 import { kebabId } from './kebab-id.ts';
 import { parseLevelJson, type Level } from './level-schema.ts';
 import { localizedTextSchema, type LocalizedText } from './localized-text.ts';
@@ -11,12 +12,14 @@ import { readJson } from '../util/read-json.ts';
  * or invalid is kept in the catalog as broken, with its reasons, and the others still play.
  */
 
+/** Far more than the game will have; lengths are checked before items (listOf), so a damaged index is refused at once. */
+const CHAPTERS_MAX = 50;
+const LEVELS_PER_CHAPTER_MAX = 100;
+
 export const levelIndexSchema = z
   .strictObject({
     version: z.literal(1),
-    chapters: z
-      .array(z.strictObject({ id: kebabId(), title: localizedTextSchema, levels: z.array(kebabId()).min(1) }))
-      .min(1),
+    chapters: listOf(z.strictObject({ id: kebabId(), title: localizedTextSchema, levels: listOf(kebabId(), [1, LEVELS_PER_CHAPTER_MAX]) }), [1, CHAPTERS_MAX]),
   })
   .superRefine((index, context) => {
     const seen = new Set<string>();

@@ -22,12 +22,13 @@ interface Problem {
 
 /** Every problem as a `path: reason` line, like the schema's. */
 export function levelRules(level: Level): string[] {
+  const sample = sampleState(level.scene);
   const problems = [
     ...listedOnce(level.tasks.map((task) => task.id), ['tasks'], 'id'),
     ...listedOnce(level.badges.map((badge) => badge.id), ['badges'], 'id'),
     ...listedOnce(level.ui.panels, ['ui', 'panels']),
     ...mandatoryCount(level),
-    ...level.tasks.flatMap((_, index) => taskProblems(level, index)),
+    ...level.tasks.flatMap((_, index) => taskProblems(level, index, sample)),
     ...badgeProblems(level),
   ];
   return formatIssues(problems.map(({ path, message }) => ({ code: 'custom', path, message })));
@@ -52,7 +53,7 @@ function mandatoryCount(level: Level): Problem[] {
   return [{ path: ['tasks'], message: `must have ${fewest} to ${most} mandatory tasks, got ${count}` }];
 }
 
-function taskProblems(level: Level, index: number): Problem[] {
+function taskProblems(level: Level, index: number, sample: LabState): Problem[] {
   const task = level.tasks[index];
   const at = (...path: (string | number)[]) => ['tasks', index, ...path];
   const problems: Problem[] = [];
@@ -65,7 +66,6 @@ function taskProblems(level: Level, index: number): Problem[] {
   }
   if (kind === 'info' && !task.mandatory) problems.push({ path: at('mandatory'), message: 'an info step is read on the way: it must be mandatory' });
 
-  const sample = sampleState(level.scene);
   for (const { goal, path } of goalParts(task.goal, at('goal'))) {
     if ('state' in goal) problems.push(...pathProblem(goal.state, sample, [...path, 'state']));
     if ('event' in goal) {

@@ -1,7 +1,7 @@
 import { z } from 'zod';
 import { sceneSchema } from '../scene/scene-schema.ts';
 import { describeIssue, describeValue, formatIssues } from '../scene/scene-issues.ts';
-import { wholeNumberIn } from '../scene/scene-schema-parts.ts';
+import { listOf, wholeNumberIn } from '../scene/scene-schema-parts.ts';
 import { labActionSchema } from './lab-action-schema.ts';
 import { goalSchema } from './goal.ts';
 import { kebabId } from './kebab-id.ts';
@@ -20,6 +20,14 @@ import { readJson } from '../util/read-json.ts';
 /** Points a task gives when the level does not say: mandatory tasks are the main path, optional ones a bonus. */
 export const DEFAULT_POINTS = { mandatory: 10, optional: 5 } as const;
 
+/** Far more tasks and badges than a level of one idea has (3–10 mandatory tasks); it bounds the work of reading a damaged file. */
+const TASKS_MAX = 30;
+const SOLUTION_STEPS_MAX = 50;
+const BADGES_MAX = 20;
+
+/** The points a level file may give one task. */
+export const TASK_POINTS: readonly [number, number] = [0, 100];
+
 const guideTargetSchema = z.custom<GuideTarget>((value) => typeof value === 'string' && isGuideTarget(value), {
   error: (issue) => `must be a control like "tracer.supersampling" or an item like "view.item:ball" (docs/levels.md lists them), got ${describeValue(issue.input)}`,
 });
@@ -31,11 +39,11 @@ const taskSchema = z
     text: localizedTextSchema.describe('The instruction: one thing to do or see.'),
     more: localizedTextSchema.optional().describe('"Explain more": the deeper explanation, formulas welcome.'),
     mandatory: z.boolean().default(true),
-    points: wholeNumberIn([0, 100]).optional(),
+    points: wholeNumberIn(TASK_POINTS).optional(),
     goal: goalSchema,
-    hints: z.array(localizedTextSchema).max(5).default([]).describe('Text hints, shown one at a time (the first rung of the hint ladder).'),
+    hints: listOf(localizedTextSchema, [0, 5]).default([]).describe('Text hints, shown one at a time (the first rung of the hint ladder).'),
     guide: guideTargetSchema.optional().describe('The control the second rung rings.'),
-    solution: z.array(labActionSchema).min(1).optional().describe('The actions that complete the task: "show me" performs them.'),
+    solution: listOf(labActionSchema, [1, SOLUTION_STEPS_MAX]).optional().describe('The actions that complete the task: "show me" performs them.'),
   })
   .transform((task) => ({ ...task, points: task.points ?? (task.mandatory ? DEFAULT_POINTS.mandatory : DEFAULT_POINTS.optional) }));
 
@@ -76,8 +84,8 @@ export const levelSchema = z.strictObject({
   intro: z.strictObject({ text: localizedTextSchema, more: localizedTextSchema.optional() }),
   scene: sceneSchema,
   ui: uiSchema.prefault({}),
-  tasks: z.array(taskSchema).min(MANDATORY_TASKS[0]),
-  badges: z.array(levelBadgeSchema).default([]),
+  tasks: listOf(taskSchema, [MANDATORY_TASKS[0], TASKS_MAX]),
+  badges: listOf(levelBadgeSchema, [0, BADGES_MAX]).default([]),
 });
 
 export type Level = z.output<typeof levelSchema>;

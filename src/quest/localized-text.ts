@@ -13,10 +13,17 @@ export type Locale = (typeof LOCALES)[number];
 
 export type LocalizedText = string | { en: string; nl?: string };
 
-const text = () => z.string().trim().min(1);
+/** Four times the longest text of the game's levels (an "explain more" of 1,300 characters). */
+export const TEXT_MAX = 5000;
+
+const text = () => z.string().trim().min(1).max(TEXT_MAX);
+
+// Built once: a zod schema costs far more to build than to run (a survey took 40 ms to read when they were built per text).
+const plainText = text();
+const perLocale = z.strictObject({ en: text(), nl: text().optional() });
 
 export const localizedTextSchema: z.ZodType<LocalizedText> = chosenBy((input): z.ZodType<LocalizedText> =>
-  typeof input === 'object' && input !== null && !Array.isArray(input) ? z.strictObject({ en: text(), nl: text().optional() }) : text(),
+  typeof input === 'object' && input !== null && !Array.isArray(input) ? perLocale : plainText,
 );
 
 /** The text in the learner's language, or the English one when it has not been translated. */

@@ -1,7 +1,8 @@
 import { describeIssue, describeValue, formatIssues } from '../scene/scene-issues.ts';
 import type { QuestClock } from './event-log.ts';
 import { isRecord } from '../util/is-record.ts';
-import { newProgress, PROGRESS_KIND, PROGRESS_VERSION, progressSchema, type Progress } from './progress.ts';
+import { newEpoch, newProgress, PROGRESS_KIND, PROGRESS_VERSION, progressSchema, type Progress } from './progress.ts';
+import { mergeProgress } from './progress-merge.ts';
 import { readJson } from '../util/read-json.ts';
 
 /**
@@ -9,6 +10,9 @@ import { readJson } from '../util/read-json.ts';
  * that cannot be used (damaged, from another app, from another version) never ends in a
  * blank screen: the learner starts afresh with a message, and the old text is kept under a
  * backup key (and handed to the UI, to offer it as a download).
+ *
+ * Several tabs share one saved progress: a save merges with what is saved (progress-merge.ts)
+ * instead of writing over it, and `read()` lets a tab that heard of another's write merge it.
  */
 
 /** What the store needs of localStorage, so that tests and blocked browsers can use a Map. */
@@ -55,7 +59,8 @@ export interface ProgressProblem {
 export type LoadedProgress = { progress: Progress; problem?: ProgressProblem };
 /** Why a save failed: the storage is full, or the browser does not let the app write at all. */
 export type SaveProblemKind = 'storage-full' | 'storage-blocked';
-export type SaveResult = { ok: true } | { ok: false; kind: SaveProblemKind };
+/** `saved`: what is in storage now, ours merged with what other tabs had saved. */
+export type SaveResult = { ok: true; saved: Progress } | { ok: false; kind: SaveProblemKind };
 type ParseProblemKind = Exclude<ProgressProblemKind, 'unreadable-storage'>;
 export type ProgressParseResult = { ok: true; progress: Progress } | { ok: false; kind: ParseProblemKind; errors: string[] };
 
@@ -81,25 +86,42 @@ export class ProgressStore {
     return this.fresh({ kind: parsed.kind, reasons: parsed.errors, backupKey, raw });
   }
 
-  /** Saves, or says why not (the UI words it in the learner's language): the caller keeps the progress in memory either way. */
-  save(progress: Progress): SaveResult {
+  /** The saved progress when it can be used, else null (for merging; load() reports problems). */
+  read(): Progress | null {
     try {
-      this.storage.setItem(this.key, JSON.stringify(progress));
-      return { ok: true };
+      const raw = this.storage.getItem(this.key);
+      if (raw === null) return null;
+      const parsed = parseProgressJson(raw);
+      return parsed.ok ? parsed.progress : null;
+    } catch {
+      return null;
+    }
+  }
+
+  /**
+   * Saves `progress` merged with what is saved (another tab's work), or says why not: the
+   * caller keeps the progress in memory either way. Saved data that cannot be read was
+   * backed up by load() and is written over.
+   */
+  save(progress: Progress): SaveResult {
+    const stored = this.read();
+    const saved = stored ? mergeProgress(progress, stored) : progress;
+    try {
+      this.storage.setItem(this.key, JSON.stringify(saved));
+      return { ok: true, saved };
     } catch (error) {
       const full = error instanceof Error && (error.name === 'QuotaExceededError' || error.name === 'NS_ERROR_DOM_QUOTA_REACHED');
       return { ok: false, kind: full ? 'storage-full' : 'storage-blocked' };
     }
   }
 
-  /** Forgets the saved progress (the UI asks first) and returns a fresh start. */
-  reset(): Progress {
-    try {
-      this.storage.removeItem(this.key);
-    } catch {
-      // Storage that cannot be written has nothing saved to forget.
-    }
-    return newProgress(this.clock);
+  /**
+   * A fresh start that replaces the saved progress once saved (the UI asks first). It is
+   * written, not removed: its new epoch tells other tabs to drop the old progress too
+   * rather than write it back.
+   */
+  reset(before: Progress): Progress {
+    return replacing(newProgress(this.clock), before, this.clock);
   }
 
   private fresh(problem: ProgressProblem): LoadedProgress {
@@ -136,6 +158,11 @@ export function parseProgress(input: unknown): ProgressParseResult {
 export function parseProgressJson(text: string): ProgressParseResult {
   const json = readJson(text);
   return json.ok ? parseProgress(json.value) : { ok: false, kind: 'damaged', errors: [json.error] };
+}
+
+/** `progress` as the one that replaces `before` and all saved earlier (an import, a reset): a new epoch. */
+export function replacing(progress: Progress, before: Progress, clock: QuestClock): Progress {
+  return { ...progress, epoch: newEpoch(clock.wallMs(), before.epoch) };
 }
 
 /** The text of an exported progress file. */

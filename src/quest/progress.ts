@@ -2,7 +2,8 @@ import { z } from 'zod';
 import { sceneSchema } from '../scene/scene-schema.ts';
 import type { Scene } from '../scene/scene.ts';
 import { earnedBadgeSchema } from './badges.ts';
-import { eventLogSchema, HOW_COMPLETED, newEventLogData, type QuestClock } from './event-log.ts';
+import { eventLogSchema, HOW_COMPLETED, newEventLogData, randomSessionId, type QuestClock } from './event-log.ts';
+import { ID_MAX } from './kebab-id.ts';
 import { LOCALES } from './localized-text.ts';
 
 /**
@@ -11,12 +12,19 @@ import { LOCALES } from './localized-text.ts';
  * can never disagree.
  */
 
+/** Level and task ids as keys: short, so that no message quotes a huge one. */
+const idKey = () => z.string().min(1).max(ID_MAX);
+
 /** Marks our files among all JSON a learner might pick by mistake. */
 export const PROGRESS_KIND = 'ray-tracer-quest-progress';
 export const PROGRESS_VERSION = 1;
 
+/** An ISO 8601 time and a random tail (newEpoch): epochs compare as text in time order. */
+const EPOCH = /^\d{4}-\d\d-\d\dT\d\d:\d\d:\d\d\.\d{3}Z\.[a-z0-9]{1,16}$/;
+
 const taskRecordSchema = z.strictObject({
   how: z.enum(HOW_COMPLETED),
+  /** Read as saved, then recomputed from the level files (progress-reconcile.ts): never trusted. */
   points: z.number().min(0),
   /** Quiz tasks only: whether the prediction was right. */
   correct: z.boolean().optional(),
@@ -25,7 +33,7 @@ export type TaskRecord = z.output<typeof taskRecordSchema>;
 
 const levelProgressSchema = z.strictObject({
   /** The completed tasks by id. */
-  tasks: z.record(z.string(), taskRecordSchema),
+  tasks: z.record(idKey(), taskRecordSchema),
   /** Hint rungs shown in this level (for the no-hints badge). */
   hintsUsed: z.number().int().min(0),
 });
@@ -44,17 +52,33 @@ const savedScene = sceneSchema.transform((scene): Scene => scene);
 export const progressSchema = z.strictObject({
   kind: z.literal(PROGRESS_KIND),
   version: z.literal(PROGRESS_VERSION),
-  levels: z.record(z.string(), levelProgressSchema),
+  levels: z.record(idKey(), levelProgressSchema),
   badges: z.array(earnedBadgeSchema),
   settings: settingsSchema.prefault({}),
   /** The sandbox level's saved scene. */
   sandbox: savedScene.nullable(),
   /** The level being played and its scene as the learner left it, to resume after a reload. */
-  current: z.strictObject({ level: z.string(), scene: savedScene }).nullable(),
+  current: z.strictObject({ level: idKey(), scene: savedScene }).nullable(),
   log: eventLogSchema,
+  /**
+   * Set by a reset or an import, which replace the progress rather than add to it: tabs
+   * merge progress of the same epoch and give way to a later one (progress-merge.ts).
+   * Absent in progress that was never replaced.
+   */
+  epoch: z.string().regex(EPOCH).optional(),
 });
 
 export type Progress = z.output<typeof progressSchema>;
+
+/**
+ * The epoch of progress that replaces progress of epoch `before` at `wallMs`: its time is
+ * at least a millisecond after `before`'s, so that it compares later even when the clock
+ * has not moved (or was set back); the random tail tells apart two tabs' epochs.
+ */
+export function newEpoch(wallMs: number, before: string | undefined, random = randomSessionId()): string {
+  const after = before === undefined ? Number.NEGATIVE_INFINITY : Date.parse(before.slice(0, before.lastIndexOf('.'))) + 1;
+  return `${new Date(Math.max(wallMs, after)).toISOString()}.${random}`;
+}
 
 export function newProgress(clock: QuestClock): Progress {
   return {

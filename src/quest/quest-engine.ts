@@ -14,6 +14,8 @@ import type { Level, Task } from './level-schema.ts';
 import type { LocalizedText } from './localized-text.ts';
 import { pointsOf, PROGRESS_KIND, PROGRESS_VERSION, type LevelProgress, type Progress, type QuestSettings } from './progress.ts';
 import { levelBadgesEarned, pointsFor } from './scoring.ts';
+import { holdsAll, mergeProgress } from './progress-merge.ts';
+import { reconcileLevels } from './progress-reconcile.ts';
 
 /**
  * The game's rules, with no DOM: which level is open, which task is the learner's, when a
@@ -38,6 +40,8 @@ export interface QuestEngineOptions {
   /** A teacher's assignment; by default each level requires its mandatory tasks. */
   requiredTasks?: RequiredTasks;
   idleHintMs?: number;
+  /** This page load's id in event ids (event-log.ts); random by default. */
+  session?: string;
 }
 
 /** A task's status: `current` is the required task to do now; `open` a task that is not
@@ -105,6 +109,7 @@ export class QuestEngine {
   private settings: QuestSettings;
   private sandbox: Scene | null;
   private resumable: Progress['current'];
+  private readonly epoch: string | undefined;
   private active: ActiveLevel | null = null;
   private lastState: LabState | null = null;
   private lastActivity: number;
@@ -119,12 +124,13 @@ export class QuestEngine {
     this.assignment = options.requiredTasks;
     this.idleHintMs = options.idleHintMs ?? IDLE_HINT_MS;
     const { progress } = options;
-    this.levelProgress = progress.levels;
+    this.levelProgress = reconcileLevels(progress.levels, this.levels);
     this.earned = progress.badges;
     this.settings = progress.settings;
     this.sandbox = progress.sandbox;
     this.resumable = progress.current;
-    this.log = new EventLog(progress.log, options.clock ?? systemClock);
+    this.epoch = progress.epoch;
+    this.log = new EventLog(progress.log, options.clock ?? systemClock, options.session);
     this.lastActivity = this.log.now();
   }
 
@@ -141,6 +147,7 @@ export class QuestEngine {
       sandbox: this.sandbox,
       current: this.resumable,
       log: this.log.data,
+      ...(this.epoch === undefined ? {} : { epoch: this.epoch }),
     };
   }
 
@@ -387,6 +394,32 @@ export class QuestEngine {
     this.settings = { ...this.settings, ...changes };
     this.changed = true;
     this.publish();
+  }
+
+  /**
+   * Takes in what another tab saved (progress-merge.ts): its events, tasks, badges and hint
+   * counts join ours, and its settings replace ours (the learner changed them there last).
+   * The open level moves on when its current task was completed there. Returns false, and
+   * tells no one, when there was nothing new; progress of a later epoch (a reset or import
+   * there) is not merged: the caller replaces the engine.
+   */
+  absorb(theirs: Progress): boolean {
+    const ours = this.progress;
+    if ((theirs.epoch ?? '') !== (ours.epoch ?? '')) return false;
+    if (holdsAll(ours, theirs) && JSON.stringify(theirs.settings) === JSON.stringify(ours.settings)) return false;
+    const merged = mergeProgress(ours, theirs);
+    this.levelProgress = reconcileLevels(merged.levels, this.levels);
+    this.earned = merged.badges;
+    this.settings = theirs.settings;
+    this.log.adopt(merged.log);
+    const active = this.active;
+    if (active) {
+      for (const taskId of [...active.tallies.keys()]) if (isCompleted(this.levelProgress[active.level.id], taskId)) active.tallies.delete(taskId);
+      if (active.current && isCompleted(this.levelProgress[active.level.id], active.current.id)) this.showCurrentTask(active);
+    }
+    this.changed = true;
+    this.publish();
+    return true;
   }
 
   // ─── Rules ─────────────────────────────────────────────────────────────────

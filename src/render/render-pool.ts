@@ -7,15 +7,25 @@
  * One job runs at a time: a new `render()` cancels the one before. The workers keep the last
  * scene they were sent and get a new `load-scene` only when `scene` or `meshes` is a
  * different object than last time, so pass a new object after every change (never mutate).
+ *
+ * A worker cannot hang a render. One that dies (an error event) or goes silent (a browser
+ * worker that closes itself raises no event at all) is replaced and its tiles go to the
+ * next free worker. Silence is judged against a deadline scaled to the work it holds: the
+ * render estimate's rays for its tiles (render-estimate.ts), at the slower of the assumed
+ * and the measured speed, times a wide margin, plus time to build the scene. Only when
+ * workers fail several times in a row, with no good answer in between, does the job fail.
+ * Messages that are not well-formed responses are dropped and logged.
  */
-import type { FailedRequest, RenderResponse } from '../../workers/protocol.ts';
+import type { FailedRequest, RenderRequest, RenderResponse } from '../../workers/protocol.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import type { Scene } from '../scene/scene.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
 import { DEFAULT_SEED, type RenderJob, type RenderOptions, type RenderResult } from './render-job.ts';
 import type { CreateRenderWorker, RenderWorkerPort } from './render-worker-port.ts';
 import { planPasses } from './render-passes.ts';
-import { TiledRender } from './tiled-render.ts';
+import { RAYS_PER_SECOND_PER_WORKER, raysPerSample } from './render-estimate.ts';
+import { checkResponse } from './render-response-check.ts';
+import { TiledRender, type TileAssignment } from './tiled-render.ts';
 
 /**
  * Tiles posted to a worker ahead of their turn: while one renders, the next is already
@@ -24,16 +34,40 @@ import { TiledRender } from './tiled-render.ts';
  */
 const TILES_IN_FLIGHT = 2;
 
+/** How patient the pool is with a silent worker (see the file comment). */
+export interface WatchdogOptions {
+  /** Silence allowed on top of the work's estimate: message delays, a busy machine. */
+  floorMs: number;
+  /** The margin on a tile's estimated time. */
+  slack: number;
+  /** Silence allowed while a worker builds a new scene (BVHs of large models). */
+  sceneBuildMs: number;
+  /** How often the deadlines are checked. */
+  checkEveryMs: number;
+}
+
+export const DEFAULT_WATCHDOG: WatchdogOptions = { floorMs: 5000, slack: 10, sceneBuildMs: 60_000, checkEveryMs: 1000 };
+
+/** Workers failing this many times in a row, with no good answer in between, fail the job (a scene that crashes every worker). */
+const FAILURES_IN_A_ROW = 3;
+
+/** The assumed cost of one ray, before a tile has measured it. */
+const ASSUMED_MS_PER_RAY = 1000 / RAYS_PER_SECOND_PER_WORKER;
+
 interface PoolWorker {
   port: RenderWorkerPort;
   /** The scene version last sent to this worker. */
   sceneId: number | null;
   /** The scene version this worker has finished building. */
   builtSceneId: number | null;
-  /** Tiles of the current job posted to it and not back yet. */
-  inFlight: number;
+  /** The scene version it last answered for, built or failed. */
+  answeredSceneId: number | null;
+  /** Tiles of the current job posted to it and not back yet, with their estimated rays. */
+  tiles: Map<number, { assignment: TileAssignment; rays: number }>;
   /** Names of the models already sent to it (it keeps them; see LoadSceneRequest). */
   models: Set<string>;
+  /** When it last answered, or was given work while idle: its silence counts from here. */
+  heardAt: number;
 }
 
 interface ActiveJob {
@@ -43,6 +77,11 @@ interface ActiveJob {
   tiles: TiledRender;
   startedAt: number;
   sceneMs: number;
+  /** Rays of one sample of the scene (render-estimate.ts), for the tiles' deadlines. */
+  raysPerSample: number;
+  samples: number;
+  /** The slowest cost per estimated ray a tile has shown, never below the assumed one. */
+  msPerRay: number;
   resolve(result: RenderResult): void;
   reject(error: Error): void;
 }
@@ -62,6 +101,9 @@ export interface RenderPoolOptions {
   createWorker: CreateRenderWorker;
   /** Number of workers, at least 1; the adapters default it to the machine's cores. */
   size: number;
+  /** Where dropped messages and replaced workers are reported; console.warn by default. */
+  log?: (message: string) => void;
+  watchdog?: Partial<WatchdogOptions>;
 }
 
 export class RenderPool {
@@ -76,13 +118,19 @@ export class RenderPool {
   /** Source of scene, job and request ids. */
   private lastId = 0;
   private disposed = false;
+  private readonly log: (message: string) => void;
+  private readonly watchdog: WatchdogOptions;
+  private watchTimer: ReturnType<typeof setInterval> | undefined;
+  private failuresInARow = 0;
 
-  constructor({ createWorker, size }: RenderPoolOptions) {
+  constructor({ createWorker, size, log, watchdog }: RenderPoolOptions) {
     if (!Number.isInteger(size) || size < 1) {
       throw new RangeError(`a render pool needs a whole number of workers, at least 1, got ${size}`);
     }
     this.size = size;
     this.createWorker = createWorker;
+    this.log = log ?? ((message) => console.warn(`render pool: ${message}`));
+    this.watchdog = { ...DEFAULT_WATCHDOG, ...watchdog };
     this.workers = Array.from({ length: size }, () => this.spawn());
   }
 
@@ -108,6 +156,7 @@ export class RenderPool {
       throw new RangeError(`the image size must be whole numbers of at least 1 pixel, got ${width}×${height}`);
     }
     this.cancelJob();
+    this.failuresInARow = 0; // each render gets its own tries
     const sceneId = this.useScene(scene, meshes);
     const tiles = new TiledRender(width, height, planPasses(scene, options.preview ?? true), options);
     const id = ++this.lastId;
@@ -119,6 +168,9 @@ export class RenderPool {
         tiles,
         startedAt: performance.now(),
         sceneMs: 0,
+        raysPerSample: raysPerSample(scene),
+        samples: scene.settings.supersampling ** 2,
+        msPerRay: ASSUMED_MS_PER_RAY,
         resolve,
         reject,
       };
@@ -153,12 +205,11 @@ export class RenderPool {
     this.assertOpen();
     if (!this.scene) return Promise.reject(new Error('there is no scene to trace: render or set one first'));
     // The least busy worker answers soonest: traces skip the tiles queued before them.
-    const worker = this.liveWorkers().reduce((best, w) => (w.inFlight < best.inFlight ? w : best));
+    const worker = this.liveWorkers().reduce((best, w) => (w.tiles.size < best.tiles.size ? w : best));
     this.sendScene(worker);
     const requestId = ++this.lastId;
     return new Promise((resolve, reject) => {
-      this.traces.set(requestId, { worker, resolve, reject });
-      worker.port.post({ type: 'trace-pixel', requestId, x, y, seed });
+      this.post(worker, { type: 'trace-pixel', requestId, x, y, seed }, () => this.traces.set(requestId, { worker, resolve, reject }));
     });
   }
 
@@ -173,6 +224,7 @@ export class RenderPool {
     this.settleReady(new Error('the render pool was closed'));
     for (const worker of this.workers) worker?.port.terminate();
     this.workers.fill(null);
+    this.stopWatching();
     this.disposed = true;
   }
 
@@ -180,14 +232,68 @@ export class RenderPool {
     const worker: PoolWorker = {
       sceneId: null,
       builtSceneId: null,
-      inFlight: 0,
+      answeredSceneId: null,
+      tiles: new Map(),
       models: new Set(),
+      heardAt: performance.now(),
       port: this.createWorker({
-        onResponse: (response) => this.onResponse(worker, response),
-        onFailure: (message) => this.onWorkerFailed(worker, message),
+        onResponse: (data) => this.onMessage(worker, data),
+        onFailure: (message) => this.replaceWorker(worker, `a render worker stopped: ${message}`),
       }),
     };
     return worker;
+  }
+
+  /**
+   * Posts to a worker; a worker that was idle starts its deadline now. `register` records
+   * the work first, as a worker in the same thread (tests) answers during the post.
+   */
+  private post(worker: PoolWorker, request: RenderRequest, register: () => void): void {
+    if (!this.isBusy(worker)) worker.heardAt = performance.now();
+    register();
+    this.startWatching();
+    worker.port.post(request);
+  }
+
+  /** Whether the worker owes an answer: a scene to build, tiles, or a pixel trace. */
+  private isBusy(worker: PoolWorker): boolean {
+    if (worker.sceneId !== worker.answeredSceneId || worker.tiles.size > 0) return true;
+    for (const trace of this.traces.values()) if (trace.worker === worker) return true;
+    return false;
+  }
+
+  /** How long the worker may stay silent with the work it holds (see the file comment). */
+  private allowanceMs(worker: PoolWorker): number {
+    const { floorMs, slack, sceneBuildMs } = this.watchdog;
+    let rays = 0;
+    for (const tile of worker.tiles.values()) rays += tile.rays;
+    const building = worker.sceneId !== worker.builtSceneId ? sceneBuildMs : 0;
+    return floorMs + building + slack * rays * (this.job?.msPerRay ?? ASSUMED_MS_PER_RAY);
+  }
+
+  private startWatching(): void {
+    if (this.watchTimer !== undefined) return;
+    this.watchTimer = setInterval(() => this.checkDeadlines(), this.watchdog.checkEveryMs);
+    // In Node, a pool with nothing to do must not keep the process alive.
+    (this.watchTimer as { unref?: () => void }).unref?.();
+  }
+
+  private stopWatching(): void {
+    clearInterval(this.watchTimer);
+    this.watchTimer = undefined;
+  }
+
+  /** Replaces every worker that has been silent past its allowance; stops when none is busy. */
+  private checkDeadlines(): void {
+    const now = performance.now();
+    let busy = false;
+    for (const worker of [...this.workers]) {
+      if (!worker || !this.isBusy(worker)) continue;
+      busy = true;
+      const silentMs = now - worker.heardAt;
+      if (silentMs > this.allowanceMs(worker)) this.replaceWorker(worker, `a render worker stopped answering (silent for ${Math.round(silentMs / 1000)} s)`);
+    }
+    if (!busy) this.stopWatching();
   }
 
   private liveWorkers(): PoolWorker[] {
@@ -208,9 +314,10 @@ export class RenderPool {
     if (!this.scene || worker.sceneId === this.scene.id) return;
     const { id, scene, meshes } = this.scene;
     const unsent = new Map([...meshes].filter(([name]) => !worker.models.has(name)));
-    worker.port.post({ type: 'load-scene', sceneId: id, scene, meshes: unsent });
-    for (const name of unsent.keys()) worker.models.add(name);
-    worker.sceneId = id;
+    this.post(worker, { type: 'load-scene', sceneId: id, scene, meshes: unsent }, () => {
+      for (const name of unsent.keys()) worker.models.add(name);
+      worker.sceneId = id;
+    });
   }
 
   /** Keeps every worker TILES_IN_FLIGHT tiles busy while the current pass has tiles left. */
@@ -219,33 +326,55 @@ export class RenderPool {
     if (!job) return;
     const { width, height } = job.tiles.image;
     for (const worker of this.liveWorkers()) {
-      while (worker.inFlight < TILES_IN_FLIGHT) {
+      while (worker.tiles.size < TILES_IN_FLIGHT) {
         const next = job.tiles.takeTile();
         if (!next) return;
         this.sendScene(worker);
-        worker.port.post({
+        const request: RenderRequest = {
           type: 'render-tile',
           jobId: job.id,
           tileId: next.tileId,
           tile: next.tile,
           options: { imageWidth: width, imageHeight: height, seed: job.seed, block: next.block },
-        });
-        worker.inFlight++;
+        };
+        this.post(worker, request, () => worker.tiles.set(next.tileId, { assignment: next, rays: tileRays(job, next) }));
       }
     }
+  }
+
+  /** A message from a worker: checked, then handled; a malformed one is dropped and logged. */
+  private onMessage(worker: PoolWorker, data: unknown): void {
+    if (!this.workers.includes(worker)) return; // replaced: its late words do not count
+    const checked = checkResponse(data);
+    if (!checked.ok) {
+      this.log(`dropped a message from a render worker: ${checked.reason}`);
+      return;
+    }
+    worker.heardAt = performance.now();
+    this.onResponse(worker, checked.response);
   }
 
   private onResponse(worker: PoolWorker, response: RenderResponse): void {
     switch (response.type) {
       case 'scene-ready':
+        this.failuresInARow = 0;
         worker.builtSceneId = response.sceneId;
+        worker.answeredSceneId = response.sceneId;
         if (this.job?.sceneId === response.sceneId) this.job.sceneMs = Math.max(this.job.sceneMs, response.ms);
         this.settleReady();
         break;
       case 'tile-done': {
         const job = this.job;
         if (job?.id !== response.jobId) return; // a late tile of a cancelled job
-        worker.inFlight--;
+        const posted = worker.tiles.get(response.tileId);
+        const problem = posted ? job.tiles.problemWith(response.tileId, response.rgb) : `tile ${response.tileId} was not given to this worker`;
+        if (problem !== null) {
+          this.log(`dropped a message from a render worker: ${problem}`);
+          return;
+        }
+        this.failuresInARow = 0;
+        worker.tiles.delete(response.tileId);
+        if (posted && posted.rays > 0) job.msPerRay = Math.max(job.msPerRay, response.ms / posted.rays);
         try {
           job.tiles.accept(response.tileId, response.rgb, response.stats, response.ms);
         } finally {
@@ -257,14 +386,15 @@ export class RenderPool {
         this.takeTrace(response.requestId)?.resolve(response.trace);
         break;
       case 'error':
-        this.onRequestFailed(response.failed, response.message);
+        this.onRequestFailed(worker, response.failed, response.message);
         break;
     }
   }
 
-  private onRequestFailed(failed: FailedRequest, message: string): void {
+  private onRequestFailed(worker: PoolWorker, failed: FailedRequest, message: string): void {
     switch (failed.type) {
       case 'load-scene':
+        if (worker.sceneId === failed.sceneId) worker.answeredSceneId = failed.sceneId;
         if (this.job?.sceneId === failed.sceneId) this.failJob(message);
         if (this.scene?.id === failed.sceneId) this.settleReady(new Error(message));
         break;
@@ -277,18 +407,33 @@ export class RenderPool {
     }
   }
 
-  /** A dead worker fails the job and its traces; its slot gets a new worker on next use. */
-  private onWorkerFailed(worker: PoolWorker, message: string): void {
+  /**
+   * A dead or silent worker: stopped and replaced at once, its tiles handed to the next free
+   * worker, its pixel traces failed (the lab asks again). After FAILURES_IN_A_ROW failures
+   * with no good answer between them the job fails with `reason`, and the slot stays empty
+   * until the pool is next used.
+   */
+  private replaceWorker(worker: PoolWorker, reason: string): void {
     const slot = this.workers.indexOf(worker);
     if (slot < 0) return;
-    this.workers[slot] = null;
     worker.port.terminate();
-    const reason = `a render worker stopped: ${message}`;
-    if (this.job) this.failJob(reason);
-    this.settleReady(new Error(reason));
+    this.workers[slot] = null;
+    this.log(reason);
     for (const [requestId, trace] of this.traces) {
       if (trace.worker === worker) this.takeTrace(requestId)?.reject(new Error(reason));
     }
+    const job = this.job;
+    for (const tileId of worker.tiles.keys()) job?.tiles.requeue(tileId);
+    worker.tiles.clear();
+    if (++this.failuresInARow >= FAILURES_IN_A_ROW) {
+      if (job) this.failJob(reason);
+      this.settleReady(new Error(reason));
+      return;
+    }
+    const replacement = this.spawn();
+    this.workers[slot] = replacement;
+    this.sendScene(replacement);
+    if (job) this.pump();
   }
 
   /** Answers `ready()` callers: with `error`, or when every worker has built the current scene. */
@@ -340,8 +485,8 @@ export class RenderPool {
     if (!job) return null;
     this.job = null;
     for (const worker of this.workers) {
-      if (worker && worker.inFlight > 0) worker.port.post({ type: 'cancel', jobId: job.id });
-      if (worker) worker.inFlight = 0;
+      if (worker && worker.tiles.size > 0) worker.port.post({ type: 'cancel', jobId: job.id });
+      worker?.tiles.clear();
     }
     return job;
   }
@@ -349,4 +494,10 @@ export class RenderPool {
   private assertOpen(): void {
     if (this.disposed) throw new Error('this render pool has been closed');
   }
+}
+
+/** The estimated rays of a tile: one sample per block in a coarse pass, every sample in the full one. */
+function tileRays(job: ActiveJob, { tile, block }: TileAssignment): number {
+  const pixels = tile.width * tile.height;
+  return block > 1 ? (pixels / (block * block)) * job.raysPerSample : pixels * job.raysPerSample * job.samples;
 }

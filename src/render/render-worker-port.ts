@@ -2,7 +2,7 @@
  * What the render pool needs from one worker, whatever runs it: a browser Web Worker
  * (web-worker-port.ts) or a Node worker thread (src/cli/node-worker-port.ts).
  */
-import type { RenderRequest, RenderResponse } from '../../workers/protocol.ts';
+import type { RenderRequest } from '../../workers/protocol.ts';
 
 export interface RenderWorkerPort {
   post(request: RenderRequest): void;
@@ -11,7 +11,8 @@ export interface RenderWorkerPort {
 }
 
 export interface RenderWorkerHandlers {
-  onResponse(response: RenderResponse): void;
+  /** Whatever the worker posted: the pool checks that it is a RenderResponse (render-response-check.ts). */
+  onResponse(data: unknown): void;
   /** The worker died or could not start; `message` says why, for the user. Called at most once. */
   onFailure(message: string): void;
 }

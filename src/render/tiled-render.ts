@@ -35,6 +35,10 @@ export class TiledRender {
 
   private readonly passes: PlannedPass[] = [];
   private pass = 0;
+  /** Tiles of the current pass handed out and not back yet, by id. */
+  private readonly outstanding = new Map<number, TileAssignment>();
+  /** Tiles whose worker died: handed out again before new ones. */
+  private readonly returned: TileAssignment[] = [];
   /** Tiles of the current pass handed out, and finished. */
   private taken = 0;
   private finishedInPass = 0;
@@ -67,18 +71,42 @@ export class TiledRender {
    *  must not paint over finer tiles that finished before it). */
   takeTile(): TileAssignment | null {
     const pass = this.passes[this.pass];
-    if (!pass || this.taken === pass.count) return null;
-    const index = this.taken++;
-    return { tileId: pass.firstId + index, tile: this.tileOf(pass, index), block: pass.block };
+    if (!pass) return null;
+    let next = this.returned.shift();
+    if (!next) {
+      if (this.taken === pass.count) return null;
+      const index = this.taken++;
+      next = { tileId: pass.firstId + index, tile: this.tileOf(pass, index), block: pass.block };
+    }
+    this.outstanding.set(next.tileId, next);
+    return next;
+  }
+
+  /** A tile handed out whose worker died: it goes to the next worker that asks. */
+  requeue(tileId: number): void {
+    const tile = this.outstanding.get(tileId);
+    if (!tile) return;
+    this.outstanding.delete(tileId);
+    this.returned.push(tile);
+  }
+
+  /** Why a finished tile cannot be pasted (not handed out or already back, wrong pixel count), or null when it can. */
+  problemWith(tileId: number, rgb: Float32Array): string | null {
+    const tile = this.outstanding.get(tileId)?.tile;
+    if (!tile) return `tile ${tileId} is not one being rendered`;
+    const expected = tile.width * tile.height * 3;
+    return rgb.length === expected ? null : `tile ${tileId} came back with ${rgb.length} values instead of ${expected}`;
   }
 
   /**
    * Pastes a finished tile of the current pass into the image, then reports progress and,
    * when a coarse pass completes, the preview. The state is updated before the callbacks
-   * run, so a callback that throws leaves the render consistent.
+   * run, so a callback that throws leaves the render consistent. The caller checks the tile
+   * with `problemWith` first.
    */
   accept(tileId: number, rgb: Float32Array, stats: RayStats, ms: number): void {
     const pass = this.passes[this.pass];
+    this.outstanding.delete(tileId);
     this.paste(this.tileOf(pass, tileId - pass.firstId), rgb);
     this.slowestTileMs = Math.max(this.slowestTileMs, ms);
     const phase = phaseOf(pass);

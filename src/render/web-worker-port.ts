@@ -1,5 +1,4 @@
 /** The render pool in the browser: each worker is a module Web Worker running render.worker.ts. */
-import type { RenderResponse } from '../../workers/protocol.ts';
 import { RenderPool } from './render-pool.ts';
 import type { RenderWorkerHandlers, RenderWorkerPort } from './render-worker-port.ts';
 
@@ -9,7 +8,7 @@ const FALLBACK_WORKERS = 4;
 export function createWebWorkerPort({ onResponse, onFailure }: RenderWorkerHandlers): RenderWorkerPort {
   // Written out in full so that Vite finds and bundles the worker.
   const worker = new Worker(new URL('../../workers/render.worker.ts', import.meta.url), { type: 'module' });
-  worker.onmessage = (event: MessageEvent<RenderResponse>) => onResponse(event.data);
+  worker.onmessage = (event: MessageEvent<unknown>) => onResponse(event.data);
   worker.onerror = (event) => {
     event.preventDefault(); // reported to the UI through onFailure, not as an uncaught error
     onFailure(event.message || 'the render worker could not start');

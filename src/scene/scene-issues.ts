@@ -34,7 +34,7 @@ export const describeIssue: z.core.$ZodErrorMap = (issue) => {
       }
       return undefined;
     case 'unrecognized_keys':
-      return `unknown field${issue.keys.length > 1 ? 's' : ''} ${issue.keys.map((key) => JSON.stringify(key)).join(', ')}`;
+      return `unknown field${issue.keys.length > 1 ? 's' : ''} ${issue.keys.map((key) => JSON.stringify(shortened(key))).join(', ')}`;
     default:
       return undefined;
   }
@@ -71,15 +71,20 @@ function formatPath(path: readonly PropertyKey[]): string {
   let text = '';
   for (const key of path) {
     if (typeof key === 'number') text += `[${key}]`;
-    else text += text === '' ? String(key) : `.${String(key)}`;
+    else text += text === '' ? shortened(String(key)) : `.${shortened(String(key))}`;
   }
   return text === '' ? '(root)' : text;
+}
+
+/** Text quoted in a message: at most 40 characters, so that a 2 MB key or value is not echoed back. */
+function shortened(text: string): string {
+  return text.length > 40 ? `${text.slice(0, 40)}…` : text;
 }
 
 /** A short, JSON-like picture of a value for "got …" (never the whole of a big object). */
 export function describeValue(value: unknown): string {
   if (value === undefined) return 'nothing';
-  if (typeof value === 'string') return JSON.stringify(value.length > 40 ? `${value.slice(0, 40)}…` : value);
+  if (typeof value === 'string') return JSON.stringify(shortened(value));
   if (Array.isArray(value)) return value.length === 1 ? 'a list of 1 item' : `a list of ${value.length} items`;
   if (value !== null && typeof value === 'object') return 'an object';
   return String(value);

@@ -45,3 +45,12 @@ export function pair<Item extends z.ZodType>(item: Item, itemsAre: string) {
 function listError(length: number, itemsAre: string) {
   return (issue: { input?: unknown }) => `must be a list of ${length} ${itemsAre}, got ${describeValue(issue.input)}`;
 }
+
+/**
+ * A list of `min` to `max` items, its length checked before any item is: zod checks an
+ * array's length only after parsing every item, so a file of 3,000 copies of one task took
+ * seconds to be told it has too many.
+ */
+export function listOf<Item extends z.ZodType>(item: Item, [min, max]: readonly [number, number]) {
+  return z.array(z.unknown()).min(min).max(max).pipe(z.array(item));
+}

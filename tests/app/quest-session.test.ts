@@ -71,6 +71,19 @@ describe('the quest session', () => {
     expect(game.start()).toEqual({ kind: 'level', id: 'first' });
   });
 
+  it('reports full storage from the start of every visit while it lasts, not only after a change', () => {
+    const storage = new MemoryStorage();
+    session(storage).session.dispose(); // a first visit saved progress
+    const setItem = storage.setItem.bind(storage);
+    storage.setItem = () => {
+      throw new DOMException('quota', 'QuotaExceededError');
+    };
+    expect(session(storage).session.saveError).toMatch(/^The browser's storage is full, so progress is not saved/);
+    expect(session(storage).session.saveError).toMatch(/storage is full/);
+    storage.setItem = setItem;
+    expect(session(storage).session.saveError).toBeNull();
+  });
+
   it('imports a valid progress file, refuses another, and resets', () => {
     const { store, session: game } = session();
     game.start();

@@ -4,6 +4,7 @@ import type { Assignment } from '../../src/classroom/assignment.ts';
 import { assignmentId, assignmentProgressKey } from '../../src/classroom/assignment-id.ts';
 import { assignmentUrl, decodeAssignment, encodeAssignment, isAssignmentFragment } from '../../src/classroom/assignment-link.ts';
 import { fromBase64Url, toBase64Url } from '../../src/util/base64url.ts';
+import { deflate } from '../../src/util/zlib-bytes.ts';
 import { loadLevels } from '../../src/quest/level-index.ts';
 import { PROGRESS_KEY } from '../../src/quest/progress-store.ts';
 
@@ -103,6 +104,24 @@ describe('assignment links', () => {
     const bad = await decodeAssignment(await encodeAssignment({ ...lesson, classCode: '3 B', xapiHomePage: 'ftp://school.example' }), catalog);
     expect(bad.ok).toBe(false);
     if (!bad.ok) expect(bad.reasons.join('\n')).toMatch(/classCode[\s\S]*xapiHomePage|xapiHomePage[\s\S]*classCode/);
+  });
+
+  it('stops unpacking a link that would unpack to far more than an assignment', async () => {
+    const padded = `{"version": 1, "title": "x"${' '.repeat(5 * 1024 * 1024)}}`;
+    const bomb = `#/a/1.${toBase64Url(await deflate(new TextEncoder().encode(padded)))}`;
+    expect(bomb.length).toBeLessThan(20_000);
+    expect(await decodeAssignment(bomb, catalog)).toEqual({ ok: false, kind: 'damaged', reasons: ['it unpacks to more than 1024 kB, more than any assignment'] });
+  });
+
+  it('refuses ids longer than 64 characters and more than 100 required tasks per level, quoting no long value', async () => {
+    const long = 'a'.repeat(100_000);
+    const tasks = Array.from({ length: 101 }, (_, i) => `t${i}`);
+    const result = await decodeAssignment(await encodeAssignment({ ...lesson, levels: [long, '01-introduction'], requiredTasks: { [long]: ['orbit'], '01-introduction': tasks } }));
+    expect(result).toMatchObject({ ok: false, kind: 'damaged' });
+    const reasons = result.ok ? [] : result.reasons;
+    expect(reasons).toContain('levels[0]: must be at most 64 characters long');
+    expect(reasons.some((reason) => /must have at most 100 items/.test(reason))).toBe(true);
+    expect(Math.max(...reasons.map((reason) => reason.length))).toBeLessThan(300);
   });
 
   it('gives each assignment its own stable id and progress key', () => {

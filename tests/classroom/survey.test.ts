@@ -40,6 +40,19 @@ describe('survey files', () => {
   });
 });
 
+describe('survey limits', () => {
+  it('refuses a file of 2,000 copies of one question by its count, not by comparing every pair', () => {
+    const question = { id: 'q', type: 'text', text: 'Why?' };
+    const result = parseSurvey({ version: 1, id: 'big', title: 'Big', questions: Array.from({ length: 2000 }, () => question) });
+    expect(result).toMatchObject({ ok: false, errors: expect.arrayContaining(['questions: must have at most 100 items, got a list of 2000 items']) });
+  });
+
+  it('refuses texts over 5,000 characters and ids over 64', () => {
+    const result = parseSurvey({ version: 1, id: 'x'.repeat(65), title: 'y'.repeat(5001), questions: [{ id: 'q', type: 'text', text: 'Why?' }] });
+    expect(result).toEqual({ ok: false, errors: ['id: must be at most 64 characters long', 'title: must be at most 5000 characters long'] });
+  });
+});
+
 describe('survey answers', () => {
   const survey: Survey = {
     version: 1,

@@ -57,6 +57,12 @@ describe('rt render', () => {
     expect(total).toBe(primary + shadow + reflect + refract);
   });
 
+  it('accepts --force, and never starts more workers than the image has tiles', async () => {
+    const run = await rt('render', file('scene.json'), '--out', file('tiny.png'), '--width', '8', '--height', '6', '--workers', '2', '--force', '--stats');
+    expect(run).toMatchObject({ code: 0, stderr: '' });
+    expect(JSON.parse(run.stdout.trim().split('\n').at(-1) ?? '')).toMatchObject({ workers: 1 });
+  });
+
   it('keeps the aspect ratio when given only a width, and renders a level file’s scene', async () => {
     const out = file('level.png');
     const run = await rt('render', file('level.json'), '--out', out, '--width', '32');
@@ -111,7 +117,17 @@ describe('rt with bad input or asking for help', () => {
     ['no command', () => [], 2, /no command/],
     ['an unknown command', () => ['paint'], 2, /unknown command "paint"/],
     ['an unknown option', () => ['render', file('scene.json'), '--out', file('x.png'), '--fast'], 2, /unknown option --fast/],
+    ['a prototype key as an option', () => ['render', file('scene.json'), '--out', file('x.png'), '--constructor'], 2, /unknown option --constructor/],
+    ['__proto__ as an option', () => ['trace', file('scene.json'), '--pixel', '0,0', '--__proto__', 'x'], 2, /unknown option --__proto__/],
     ['a missing --out', () => ['render', file('scene.json')], 2, /missing --out/],
+    ['an --out that is not a PNG', () => ['render', file('scene.json'), '--out', file('x.jpg')], 2, /--out must name a \.png file, the only format rt writes, got ".*x\.jpg"/],
+    ['far more workers than cores', () => ['render', file('scene.json'), '--out', file('x.png'), '--workers', '100000'], 2, /--workers must be a whole number from 1 to \d+, got "100000"/],
+    [
+      'a render the estimate puts at hours',
+      () => ['render', file('scene.json'), '--out', file('x.png'), '--width', '4096', '--height', '4096', '--workers', '1'],
+      1,
+      /this render would take about \d+ (minutes|hours) on 1 worker \(.* rays\): give --force to render it anyway; lighter: settings\.supersampling 1 \(about \d+ seconds\), or --width \d+ --height \d+/,
+    ],
     ['a malformed --width', () => ['render', file('scene.json'), '--out', file('x.png'), '--width', 'wide'], 2, /--width must be a whole number/],
     ['a malformed --pixel', () => ['trace', file('scene.json'), '--pixel', '3;2'], 2, /--pixel must be/],
     ['validate without files', () => ['validate'], 2, /give one or more files/],

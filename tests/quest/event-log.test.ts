@@ -5,7 +5,7 @@ import { FakeClock } from '../support/quest-fixtures.ts';
 describe('the event log', () => {
   it('stamps events with milliseconds since the log started, from the monotonic clock', () => {
     const clock = new FakeClock();
-    const log = new EventLog(newEventLogData(clock), clock);
+    const log = new EventLog(newEventLogData(clock), clock, 'tab1');
     clock.advance(1234.4);
     log.append({ type: 'level.opened', level: 'first' });
     // The wall clock jumps back an hour (a clock change): durations do not notice.
@@ -14,9 +14,9 @@ describe('the event log', () => {
     log.append({ type: 'level.closed', level: 'first' });
     expect(log.data.startedAt).toBe('2025-03-01T09:00:00.000Z');
     expect(log.events).toEqual([
-      { t: 0, type: 'session.started', at: '2025-03-01T09:00:00.000Z' },
-      { t: 1234, type: 'level.opened', level: 'first' },
-      { t: 1734, type: 'level.closed', level: 'first' },
+      { t: 0, id: 'tab1.0', type: 'session.started', at: '2025-03-01T09:00:00.000Z' },
+      { t: 1234, id: 'tab1.1', type: 'level.opened', level: 'first' },
+      { t: 1734, id: 'tab1.2', type: 'level.closed', level: 'first' },
     ]);
   });
 
@@ -31,12 +31,12 @@ describe('the event log', () => {
     const later = new FakeClock();
     later.monotonic = 20;
     later.wall = clock.wall + 60_000;
-    const resumed = new EventLog(saved, later);
+    const resumed = new EventLog(saved, later, 'tab2');
     later.advance(100);
     resumed.append({ type: 'tab.visible' });
     expect(resumed.events.slice(-2)).toEqual([
-      { t: 65_000, type: 'session.started', at: '2025-03-01T09:01:05.000Z' },
-      { t: 65_100, type: 'tab.visible' },
+      { t: 65_000, id: 'tab2.0', type: 'session.started', at: '2025-03-01T09:01:05.000Z' },
+      { t: 65_100, id: 'tab2.1', type: 'tab.visible' },
     ]);
 
     // Reopened with the computer's clock set back before the log began: time still only moves on.
@@ -58,10 +58,22 @@ describe('the event log', () => {
     expect(times.every((t, i) => i === 0 || t >= times[i - 1])).toBe(true);
   });
 
+  it('numbers events saved before ids existed the same way in every tab', () => {
+    const clock = new FakeClock();
+    const saved = { startedAt: '2025-03-01T09:00:00.000Z', events: [{ t: 0, type: 'tab.hidden' as const }, { t: 5, type: 'tab.visible' as const }] };
+    const first = new EventLog(saved, clock, 'one');
+    const second = new EventLog(saved, clock, 'two');
+    expect(first.events.slice(0, 2).map((event) => event.id)).toEqual(['saved.0', 'saved.1']);
+    expect(second.events.slice(0, 2)).toEqual(first.events.slice(0, 2));
+    expect(first.events[2].id).toBe('one.0');
+  });
+
   it('validates saved logs: known events only, times in order', () => {
     const startedAt = '2025-03-01T09:00:00.000Z';
     expect(eventLogSchema.safeParse({ startedAt, events: [{ t: 5, type: 'tab.hidden' }, { t: 4, type: 'tab.visible' }] }).success).toBe(false);
     expect(eventLogSchema.safeParse({ startedAt, events: [{ t: 5, type: 'tab.spun' }] }).success).toBe(false);
+    expect(eventLogSchema.safeParse({ startedAt, events: [{ t: 5, id: 'x'.repeat(17) + '.1', type: 'tab.hidden' }] }).success).toBe(false);
+    expect(eventLogSchema.safeParse({ startedAt, events: [{ t: 5, type: 'level.opened', level: 'a'.repeat(65) }] }).success).toBe(false);
     expect(eventLogSchema.safeParse({ startedAt, events: [{ t: 5, type: 'task.completed', level: 'a', task: 'b', mandatory: true, required: true, how: 'done', points: 10 }] }).success).toBe(true);
   });
 });

@@ -40,7 +40,7 @@ describe('saving and loading', () => {
     const progress = playedProgress(clock);
     const storage = new MemoryStorage();
     const store = new ProgressStore(storage, clock);
-    expect(store.save(progress)).toEqual({ ok: true });
+    expect(store.save(progress)).toEqual({ ok: true, saved: progress });
     const { progress: loaded, problem } = store.load();
     expect(problem).toBeUndefined();
     expect(loaded).toEqual(progress);
@@ -143,14 +143,22 @@ describe('export, import and reset', () => {
     expect(parseProgressJson('[1, 2]')).toMatchObject({ ok: false, kind: 'foreign', errors: ['kind: must be "ray-tracer-quest-progress" in a progress file, got a list of 2 items'] });
   });
 
-  it('reset forgets the saved progress', () => {
+  it('reset starts a new epoch that replaces the saved progress, even from a tab that still has the old one', () => {
     const storage = new MemoryStorage();
     const clock = new FakeClock();
     const store = new ProgressStore(storage, clock);
-    store.save(playedProgress(clock));
-    expect(store.reset().levels).toEqual({});
-    expect(storage.getItem(PROGRESS_KEY)).toBeNull();
-    expect(store.load().problem).toBeUndefined();
+    const played = playedProgress(clock);
+    store.save(played);
+    const fresh = store.reset(played);
+    expect(fresh.levels).toEqual({});
+    expect(fresh.epoch).toMatch(/^2025-03-01T09:00:00\.000Z\.[a-z0-9]{8}$/);
+    store.save(fresh);
+    // The other tab saves its old progress: the newer epoch wins, nothing old comes back.
+    const afterOld = store.save(played);
+    expect(afterOld).toMatchObject({ ok: true, saved: { levels: {}, epoch: fresh.epoch } });
+    expect(store.load()).toMatchObject({ progress: { levels: {} } });
+    // A second reset in the same millisecond is still later than the first.
+    expect(store.reset(fresh).epoch! > fresh.epoch!).toBe(true);
   });
 
   it('keeps a teacher assignment\'s progress apart under its own key', () => {

@@ -121,7 +121,7 @@ describe('playing a level', () => {
     store.dispatch({ type: 'material.changed', id: 'ball', changes: { color: [0, 0, 1] } });
     setup.engine.askHint('red-ball');
     setup.engine.askHint('red-ball');
-    expect(setup.logged('task.started')).toEqual([{ t: 10_000, type: 'task.started', level: 'first', task: 'red-ball' }]);
+    expect(setup.logged('task.started')).toEqual([{ t: 10_000, id: expect.any(String), type: 'task.started', level: 'first', task: 'red-ball' }]);
     setup.engine.skip('zoom');
     expect(setup.logged('task.started').map((event) => event.task)).toEqual(['red-ball', 'zoom']);
     expect(setup.logged('task.shown').find((event) => event.task === 'predict')?.kind).toBe('quiz');

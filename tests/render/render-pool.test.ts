@@ -130,16 +130,16 @@ describe('RenderPool with worker threads', () => {
     expect(next.cancelled).toBe(false);
   });
 
-  it('rejects the job when a worker dies, and replaces the worker', async () => {
+  it('replaces a worker that dies and completes the job', async () => {
     const crashing = pathToFileURL(new URL('../support/crashing-worker.ts', import.meta.url).pathname).href;
     let started = 0;
     // The first worker crashes on its first message; the second and the replacement work.
     const flaky = new RenderPool({
       size: 2,
+      log: () => {},
       createWorker: (handlers) => (started++ === 0 ? createNodeWorkerPort(handlers, crashing) : createNodeWorkerPort(handlers)),
     });
     try {
-      await expect(flaky.render(scene, NO_MESHES, { width: 20, height: 20 }).done).rejects.toThrow(/crashed on purpose/);
       const next = await flaky.render(scene, NO_MESHES, { width: 20, height: 20 }).done;
       expect(next).toMatchObject({ cancelled: false, width: 20, height: 20 });
       expect(started).toBe(3);

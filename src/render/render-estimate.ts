@@ -1,0 +1,100 @@
+/**
+ * How much a render will cost before it starts: rays and seconds from the scene and the
+ * image size. The render window shows it and asks before a heavy render, `rt render`
+ * refuses one without --force, and the render pool scales its per-tile deadlines by it.
+ *
+ * The model follows the Whitted ray tree (whitted-integrator.ts). Every sample starts a
+ * primary ray; every hit casts one shadow ray per point or spot light and n² per n×n area
+ * light; a mirror (opaque, specular > 0) spawns a reflected ray and glass (transparent) a
+ * reflected and a refracted one, down to settings.maxDepth. With b child rays per hit on
+ * average over the objects and a chance p that a child ray hits anything, the tree has
+ * Σ_{d=0..D} (p·b)^d hits per sample. p = ½ is a guess that puts the schema's heaviest scene
+ * (256 glass objects, depth 10, 32 area lights of 10×10, 8×8 samples, 4096²) at 27 days on
+ * 8 workers, near the 38 days measured, not centuries (p = 1 would say 55 years); the
+ * default scene and the levels' scenes come out at 0.7 to 3 times the rays they really
+ * trace. It is an estimate for deciding, not a promise.
+ */
+import type { Scene } from '../scene/scene.ts';
+
+/**
+ * Rays one worker traces per second, on the slow side of the machines that run the game
+ * (the benchmark measured 4.8 million per worker thread, mostly cheap shadow rays, on the
+ * reference machine): a school laptop should not finish much later than promised.
+ */
+export const RAYS_PER_SECOND_PER_WORKER = 2_000_000;
+
+/** Above this the learner is asked first (the render window) and `rt render` wants --force. */
+export const HEAVY_RENDER_SECONDS = 60;
+
+/** The chance that a reflected or refracted ray hits an object (see the model above). */
+const CHILD_HIT_CHANCE = 0.5;
+
+export interface RenderEstimate {
+  /** Rays of the full-quality image: primary, shadow, reflected and refracted. */
+  rays: number;
+  raysPerPixel: number;
+  /** On `workers` workers at RAYS_PER_SECOND_PER_WORKER each. */
+  seconds: number;
+  /** seconds > HEAVY_RENDER_SECONDS. */
+  heavy: boolean;
+}
+
+/** Rays one sample (one primary ray and its tree) costs. */
+export function raysPerSample({ objects, lights, settings }: Scene): number {
+  const shadowRays = lights
+    .filter((light) => settings.lightTypes[light.type])
+    .reduce((rays, light) => rays + (light.type === 'area' ? light.samples ** 2 : 1), 0);
+  const childRays = objects.reduce((sum, { material }) => sum + (material.transparent ? 2 : material.specular > 0 ? 1 : 0), 0);
+  const branching = objects.length === 0 ? 0 : (CHILD_HIT_CHANCE * childRays) / objects.length;
+  let hits = 0;
+  for (let depth = 0, level = 1; depth <= settings.maxDepth; depth++, level *= branching) hits += level;
+  // Every hit casts its shadow rays; each hit's own ray is counted once (the primary or a child).
+  return hits * (1 + shadowRays);
+}
+
+/** Rays and seconds of a `width × height` render of `scene` on `workers` workers. */
+export function estimateRender(scene: Scene, width: number, height: number, workers = 1): RenderEstimate {
+  const raysPerPixel = raysPerSample(scene) * scene.settings.supersampling ** 2;
+  const rays = raysPerPixel * width * height;
+  const seconds = rays / (RAYS_PER_SECOND_PER_WORKER * Math.max(1, workers));
+  return { rays, raysPerPixel, seconds, heavy: seconds > HEAVY_RENDER_SECONDS };
+}
+
+/** A change that makes a heavy render lighter, with its estimate: for the learner to pick. */
+export type LighterRender =
+  | { change: 'supersampling'; supersampling: number; estimate: RenderEstimate }
+  | { change: 'image-size'; width: number; height: number; estimate: RenderEstimate }
+  | { change: 'max-depth'; maxDepth: number; estimate: RenderEstimate };
+
+/**
+ * For a heavy render, the mildest change of each kind that brings it under
+ * HEAVY_RENDER_SECONDS: fewer samples, a smaller image (same aspect ratio), a shallower
+ * ray tree. A kind that cannot get there alone is left out; none for a render that is not heavy.
+ */
+export function lighterRenders(scene: Scene, width: number, height: number, workers = 1): LighterRender[] {
+  if (!estimateRender(scene, width, height, workers).heavy) return [];
+  const lighter: LighterRender[] = [];
+  const withSettings = (changes: Partial<Scene['settings']>): Scene => ({ ...scene, settings: { ...scene.settings, ...changes } });
+  for (let supersampling = scene.settings.supersampling - 1; supersampling >= 1; supersampling--) {
+    const estimate = estimateRender(withSettings({ supersampling }), width, height, workers);
+    if (!estimate.heavy) {
+      lighter.push({ change: 'supersampling', supersampling, estimate });
+      break;
+    }
+  }
+  // Time grows with the pixel count: scale both sides by the square root of the overshoot.
+  const full = estimateRender(scene, width, height, workers);
+  const factor = Math.sqrt(HEAVY_RENDER_SECONDS / full.seconds);
+  const [smallWidth, smallHeight] = [Math.floor(width * factor), Math.floor(height * factor)];
+  if (smallWidth >= 1 && smallHeight >= 1) {
+    lighter.push({ change: 'image-size', width: smallWidth, height: smallHeight, estimate: estimateRender(scene, smallWidth, smallHeight, workers) });
+  }
+  for (let maxDepth = scene.settings.maxDepth - 1; maxDepth >= 0; maxDepth--) {
+    const estimate = estimateRender(withSettings({ maxDepth }), width, height, workers);
+    if (!estimate.heavy) {
+      lighter.push({ change: 'max-depth', maxDepth, estimate });
+      break;
+    }
+  }
+  return lighter;
+}

@@ -1,0 +1,66 @@
+import { describe, expect, it } from 'vitest';
+import { estimateRender, HEAVY_RENDER_SECONDS, lighterRenders } from '../../src/render/render-estimate.ts';
+import { defaultScene } from '../../src/scene/scene-defaults.ts';
+import { emptyRayStats } from '../../src/tracer/ray-tree.ts';
+import { renderTile } from '../../src/tracer/render-tile.ts';
+import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
+import type { Scene } from '../../src/scene/scene.ts';
+import { sceneFrom } from '../support/test-scene.ts';
+
+/** The rays a real render of `scene` traces. */
+function tracedRays(scene: Scene, width: number, height: number): number {
+  const stats = emptyRayStats();
+  renderTile(buildTracerScene(scene, new Map()), { x: 0, y: 0, width, height }, { imageWidth: width, imageHeight: height, seed: 0 }, stats);
+  return stats.primary + stats.shadow + stats.reflect + stats.refract;
+}
+
+/** The heaviest scene the schema accepts: a 2.6 kB link that used to start a render of about 38 days. */
+const heaviest = sceneFrom({
+  settings: { maxDepth: 10, supersampling: 8, imageSize: [4096, 4096] },
+  objects: Array.from({ length: 256 }, (_, i) => ({ id: `glass-${i}`, position: [(i % 16) - 8, 0, Math.floor(i / 16) - 8], material: { transparent: true, specular: 1 } })),
+  lights: Array.from({ length: 32 }, (_, i) => ({ id: `panel-${i}`, type: 'area', position: [i - 16, 5, 0], samples: 10 })),
+});
+
+describe('the render estimate', () => {
+  it('comes within a factor of three of the rays a render really traces', () => {
+    const mirrors = sceneFrom({ ...defaultScene(), settings: { ...defaultScene().settings, supersampling: 2, maxDepth: 4 } });
+    for (const scene of [defaultScene(), mirrors]) {
+      const ratio = estimateRender(scene, 64, 48).rays / tracedRays(scene, 64, 48);
+      expect(ratio).toBeGreaterThan(1 / 3);
+      expect(ratio).toBeLessThan(3);
+    }
+  });
+
+  it('grows with the pixels and the samples, and shrinks with the workers', () => {
+    const scene = defaultScene();
+    const base = estimateRender(scene, 100, 100);
+    expect(estimateRender(scene, 200, 100).rays).toBeCloseTo(2 * base.rays);
+    expect(estimateRender(sceneFrom({ ...scene, settings: { ...scene.settings, supersampling: 3 } }), 100, 100).rays).toBeCloseTo(9 * base.rays);
+    expect(estimateRender(scene, 100, 100, 4).seconds).toBeCloseTo(base.seconds / 4);
+    expect(base.heavy).toBe(false);
+  });
+
+  it('calls the schema\'s heaviest scene heavy: weeks, even on eight workers', () => {
+    const estimate = estimateRender(heaviest, 4096, 4096, 8);
+    expect(estimate.heavy).toBe(true);
+    expect(estimate.seconds).toBeGreaterThan(7 * 86_400);
+  });
+
+  it('suggests the mildest lighter render of each kind, each under the threshold', () => {
+    const scene = sceneFrom({ ...defaultScene(), settings: { ...defaultScene().settings, supersampling: 8, maxDepth: 6 } });
+    const [width, height] = [4096, 4096];
+    expect(estimateRender(scene, width, height, 2).heavy).toBe(true);
+    const lighter = lighterRenders(scene, width, height, 2);
+    expect(lighter.map((option) => option.change)).toEqual(['supersampling', 'image-size', 'max-depth'].slice(0, lighter.length));
+    expect(lighter.length).toBeGreaterThanOrEqual(2);
+    for (const option of lighter) expect(option.estimate.seconds).toBeLessThanOrEqual(HEAVY_RENDER_SECONDS);
+    const samples = lighter.find((option) => option.change === 'supersampling');
+    if (samples?.change !== 'supersampling') throw new Error('no fewer-samples suggestion');
+    const oneMore = sceneFrom({ ...scene, settings: { ...scene.settings, supersampling: samples.supersampling + 1 } });
+    expect(estimateRender(oneMore, width, height, 2).heavy).toBe(true);
+    const size = lighter.find((option) => option.change === 'image-size');
+    if (size?.change !== 'image-size') throw new Error('no smaller-image suggestion');
+    expect(size.width / size.height).toBeCloseTo(1);
+    expect(lighterRenders(defaultScene(), 512, 384, 2)).toEqual([]);
+  });
+});
