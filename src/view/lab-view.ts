@@ -30,6 +30,7 @@ import { rasterSnapshot } from './raster-snapshot.ts';
 import type { RayHover, RayLayer } from './ray-layer.ts';
 import { type MeshLoader, SceneSync } from './scene-sync.ts';
 import { TransformGizmo } from './transform-gizmo.ts';
+import { sameSelection, stateCommand, type StateCommand } from './state-commands.ts';
 import { keyCommand, type ViewCommand } from './view-commands.ts';
 import { ViewControls } from './view-controls.ts';
 import { framingPose, type ViewPose } from './view-pose.ts';
@@ -259,31 +260,22 @@ export class LabView {
         return this.controls.panBy(command.dx, command.dy, glide);
       case 'zoom':
         return this.controls.zoomBy(command.factor, glide);
-      case 'gizmo-mode':
-        this.dispatch({ type: 'gizmo.changed', changes: { mode: command.mode } });
-        if (state.selection && !gizmoModesFor(state.selection, state.scene).includes(command.mode)) {
-          this.emit('message', msg('The selection cannot be changed that way, so its gizmo moves it instead.'));
-        }
-        return;
-      case 'toggle-space':
-        this.dispatch({ type: 'gizmo.changed', changes: { space: state.gizmo.space === 'local' ? 'world' : 'local' } });
-        return;
-      case 'toggle-snap':
-        this.dispatch({ type: 'gizmo.changed', changes: { snap: !state.gizmo.snap } });
-        return;
-      case 'delete':
-        return this.deleteSelection();
       case 'escape':
         if (this.flight.atCamera) this.flyBack();
-        if (state.selection) this.dispatch({ type: 'selection.changed', selection: null });
-        return;
+        return this.apply(stateCommand(command, state));
       case 'fly':
         return this.flight.atCamera ? this.flyBack() : this.flyToCamera();
-      case 'select-next':
-        return this.selectNext(command.step);
       case 'help':
         return this.emit('help', undefined);
+      default:
+        return this.apply(stateCommand(command, state));
     }
+  }
+
+  /** Dispatches a command's action and shows its note. */
+  private apply(command: StateCommand | null): void {
+    if (command?.action) this.dispatch(command.action);
+    if (command?.message) this.emit('message', command.message);
   }
 
   /** Orbits the view as a toolbar button does: +dx moves the eye right around the target, +dy up. */
@@ -520,29 +512,6 @@ export class LabView {
     this.execute(command);
   }
 
-  // --- commands ---
-
-  private deleteSelection(): void {
-    const selection = this.store.state.selection;
-    if (selection?.kind === 'object') this.dispatch({ type: 'object.deleted', id: selection.id });
-    else if (selection?.kind === 'light') this.dispatch({ type: 'light.deleted', id: selection.id });
-    else if (selection?.kind === 'camera') this.emit('message', msg("The ray tracer's camera cannot be deleted."));
-    else this.emit('message', msg('Select an object or a light first, then press Delete.'));
-  }
-
-  /** Steps through everything selectable: objects, then lights, then the camera. */
-  private selectNext(step: 1 | -1): void {
-    const { scene, selection } = this.store.state;
-    const all = [
-      ...scene.objects.map((o) => ({ kind: 'object' as const, id: o.id })),
-      ...scene.lights.map((l) => ({ kind: 'light' as const, id: l.id })),
-      { kind: 'camera' as const },
-    ];
-    const index = all.findIndex((item) => sameSelection(selection, item));
-    const next = index < 0 ? (step > 0 ? 0 : all.length - 1) : (index + step + all.length) % all.length;
-    this.dispatch({ type: 'selection.changed', selection: all[next] });
-  }
-
   private tracerCameraPose(): ViewPose {
     const { position, target, fov } = this.store.state.scene.camera;
     return { position: new Vector3(...position), target: new Vector3(...target), fov };
@@ -571,10 +540,4 @@ function sameCamera(a: LabState, b: LabState): boolean {
   const x = a.scene.camera;
   const y = b.scene.camera;
   return x.fov === y.fov && x.position.every((v, i) => v === y.position[i]) && x.target.every((v, i) => v === y.target[i]);
-}
-
-function sameSelection(a: LabState['selection'], b: LabState['selection']): boolean {
-  if (a === null || b === null) return a === b;
-  if (a.kind === 'camera' || b.kind === 'camera') return a.kind === b.kind;
-  return a.kind === b.kind && a.id === b.id;
 }
