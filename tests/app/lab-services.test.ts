@@ -1,0 +1,115 @@
+import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
+import { LabServices, type LabViewPort } from '../../src/app/lab-services.ts';
+import type { RenderPool } from '../../src/render/render-pool.ts';
+import type { ScreenRays } from '../../src/render/screen-rays.ts';
+import { TRACE_DEBOUNCE_MS } from '../../src/render/screen-tracer.ts';
+import type { Scene } from '../../src/scene/scene.ts';
+import type { PixelTrace } from '../../src/tracer/ray-tree.ts';
+import { tracePixel } from '../../src/tracer/trace-pixel.ts';
+import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
+
+/** A pool that answers every pixel trace at once with a one-ray tree, and remembers what it was asked. */
+function fakePool(workers: number | undefined) {
+  const scenes: Scene[] = [];
+  let disposed = false;
+  const pool = {
+    workers,
+    scenes,
+    get disposed() {
+      return disposed;
+    },
+    setScene: (scene: Scene) => void scenes.push(scene),
+    // The real tracer on the main thread: the rays are what a worker would send.
+    tracePixel: (x: number, y: number, seed = 0): Promise<PixelTrace> => Promise.resolve(tracePixel(buildTracerScene(scenes.at(-1)!, new Map()), x, y, seed)),
+    dispose: () => void (disposed = true),
+  };
+  return pool;
+}
+
+function fakeView() {
+  const calls: string[] = [];
+  let rays: ScreenRays | null = null;
+  const view: LabViewPort = {
+    setScreenRays: (screen) => void ((rays = screen), calls.push('rays')),
+    setRayLayer: () => void calls.push('ray-layer'),
+    setBvhLayer: () => void calls.push('bvh-layer'),
+    requestRender: () => void calls.push('render'),
+  };
+  return { view, calls, rays: () => rays };
+}
+
+describe('LabServices: the lab wired apart from any page', () => {
+  let pools: ReturnType<typeof fakePool>[];
+  let reports: [string, string][];
+  let services: LabServices;
+
+  beforeEach(() => {
+    vi.useFakeTimers();
+    pools = [];
+    reports = [];
+    services = new LabServices({
+      createPool: (workers) => {
+        const pool = fakePool(workers);
+        pools.push(pool);
+        return pool as unknown as RenderPool;
+      },
+      loadMeshes: () => Promise.resolve(new Map()),
+      report: (text, tone) => void reports.push([text, tone]),
+      traceFailed: (error) => `could not trace: ${error.message}`,
+    });
+  });
+
+  afterEach(() => {
+    services.dispose();
+    vi.useRealTimers();
+  });
+
+  it('makes a render pool with a worker per core and a one-worker pool for the screen', () => {
+    expect(pools.map((pool) => pool.workers)).toEqual([undefined, 1]);
+    expect(services.renderPool).toBe(pools[0]);
+  });
+
+  it('traces the store\'s scene on the screen pool, and the view and listeners get its rays', async () => {
+    const { view, calls, rays } = fakeView();
+    services.attachView(view);
+    expect(calls).toEqual(['ray-layer', 'bvh-layer']);
+    const heard: ScreenRays[] = [];
+    services.subscribe((screen) => heard.push(screen));
+    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS + 1);
+    const [columns, rows] = services.store.state.scene.camera.pixels;
+    expect(pools[1]!.scenes).toEqual([services.store.state.scene]);
+    expect(heard).toHaveLength(1);
+    expect(heard[0]!.traces).toHaveLength(columns * rows);
+    expect(rays()).toBe(heard[0]);
+    expect(services.screenRays).toBe(heard[0]);
+    // Every pixel's primary ray at least (the default scene's rays also bounce and go to lights).
+    expect(services.drawn.rays).toBeGreaterThanOrEqual(columns * rows);
+    expect(calls).toContain('render');
+  });
+
+  it('traces again after a scene edit, not after a view option, and reports a refused edit', async () => {
+    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS + 1);
+    services.store.dispatch({ type: 'rays.changed', changes: { transparency: 0.5 } });
+    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS + 1);
+    expect(pools[1]!.scenes).toHaveLength(1);
+    services.store.dispatch({ type: 'camera.changed', changes: { pixels: [2, 2] } });
+    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS + 1);
+    expect(pools[1]!.scenes).toHaveLength(2);
+    expect(services.screenRays?.traces).toHaveLength(4);
+    services.store.dispatch({ type: 'settings.changed', changes: { supersampling: 40 } });
+    expect(reports).toEqual([['settings.supersampling: must be between 1 and 8, got 40', 'error']]);
+  });
+
+  it('a hidden ray kind redraws the rays without tracing again', async () => {
+    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS + 1);
+    const before = services.drawn.rays;
+    services.store.dispatch({ type: 'rays.changed', changes: { showRays: false } });
+    expect(before).toBeGreaterThan(0);
+    expect(services.drawn.rays).toBe(0);
+  });
+
+  it('disposes both pools', () => {
+    services.dispose();
+    expect(pools.every((pool) => pool.disposed)).toBe(true);
+  });
+});
