@@ -2,7 +2,7 @@ import { createLight, createObject } from '../scene/scene-defaults.ts';
 import { lightSchema, parseScene } from '../scene/scene-schema.ts';
 import type { Light, Scene } from '../scene/scene.ts';
 import type { LabAction } from './lab-action.ts';
-import { type LabState, BVH_MAX_DEPTH, DEFAULT_BVH_VIEW } from './lab-state.ts';
+import { type LabState, BVH_MAX_DEPTH, DEFAULT_BVH_VIEW, DEFAULT_GIZMO, DEFAULT_RAY_VIEW } from './lab-state.ts';
 
 /** The next state, or the unchanged state with the reason an action was refused. */
 export type Reduction = { state: LabState; error?: string };
@@ -15,8 +15,20 @@ export type Reduction = { state: LabState; error?: string };
 export function reduce(state: LabState, action: LabAction): Reduction {
   switch (action.type) {
     case 'scene.loaded':
-      // The boxes belong to the scene they were switched on for: a new scene starts without them.
-      return withScene({ ...state, selection: null, selectedPixel: null, bvh: { ...DEFAULT_BVH_VIEW } }, action.scene);
+      // A new scene (a level, the free lab, a file) starts with a clean view: the last level's
+      // ray filters, gizmo mode and boxes belonged to that level. The palette is the learner's
+      // own choice of colours and stays.
+      return withScene(
+        {
+          ...state,
+          selection: null,
+          selectedPixel: null,
+          rays: { ...DEFAULT_RAY_VIEW, colorBlindPalette: state.rays.colorBlindPalette },
+          gizmo: { ...DEFAULT_GIZMO },
+          bvh: { ...DEFAULT_BVH_VIEW },
+        },
+        action.scene,
+      );
     case 'selection.changed':
       return { state: { ...state, selection: action.selection } };
     case 'object.added': {

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { Store } from '../../src/lab-state/store.ts';
-import { initialState } from '../../src/lab-state/lab-state.ts';
+import { DEFAULT_GIZMO, DEFAULT_RAY_VIEW, initialState } from '../../src/lab-state/lab-state.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 
 const newStore = () => new Store(initialState(defaultScene()));
@@ -26,6 +26,15 @@ describe('the store and its named actions', () => {
     // A change back is still a change: the scene on show was made from another revision.
     store.dispatch({ type: 'material.changed', id: 'red-ball', changes: { color: [1, 0, 0] } });
     expect(store.sceneRevision).toBe(2);
+  });
+
+  it('a loaded scene starts with a clean view: ray filters and gizmo mode reset, the colour palette kept', () => {
+    const store = newStore();
+    store.dispatch({ type: 'rays.changed', changes: { hideNoHit: true, negligibleThreshold: 0.1, transparency: 0.6, colorBlindPalette: true } });
+    store.dispatch({ type: 'gizmo.changed', changes: { mode: 'rotate', snap: true } });
+    store.dispatch({ type: 'scene.loaded', scene: defaultScene() });
+    expect(store.state.rays).toEqual({ ...DEFAULT_RAY_VIEW, colorBlindPalette: true });
+    expect(store.state.gizmo).toEqual(DEFAULT_GIZMO);
   });
 
   it('refuses an out-of-range value with the schema message and loses nothing', () => {

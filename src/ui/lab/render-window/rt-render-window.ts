@@ -137,6 +137,8 @@ export class RtRenderWindow extends LitElement {
   private async prepareStage({ width, height }: ShownRender, isCurrent: () => boolean): Promise<void> {
     const raster = this.takeRasterSnapshot(width, height);
     await this.updateComplete; // the canvases exist from here on
+    // Every new render opens whole: a zoom into the last image means nothing for this one.
+    this.compare.value?.zoomToFit();
     if (raster) void this.paintRaster(raster, isCurrent);
   }
 
