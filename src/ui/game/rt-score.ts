@@ -44,8 +44,8 @@ export class RtScore extends LitElement {
   override render() {
     return html`
       <button popovertarget="badges" title=${msg('Your points and badges')} data-testid="score">
-        <span>★ ${msg(str`${this.points} points`)}</span>
-        <span>◆ ${msg(str`${this.badges.length} badges`)}</span>
+        <span>★ ${this.points === 1 ? msg('1 point') : msg(str`${this.points} points`)}</span>
+        <span>◆ ${this.badges.length === 1 ? msg('1 badge') : msg(str`${this.badges.length} badges`)}</span>
       </button>
       <div id="badges" popover>
         <h3>${msg('Your badges')}</h3>
