@@ -75,6 +75,8 @@ export class RtQuestPanel extends LitElement {
   /** Names of the badges earned in this level. */
   declare badges: string[];
   declare private recentQuiz: string | null;
+  /** The current task last brought into view. */
+  private shownCurrent: string | null = null;
 
   constructor() {
     super();
@@ -93,6 +95,14 @@ export class RtQuestPanel extends LitElement {
     if (changed.has('view') && changed.get('view')?.level.id !== this.view?.level.id) this.recentQuiz = null;
   }
 
+  protected override updated(): void {
+    // A new current task is brought into view: done tasks above it pushed it below the column's edge.
+    const current = this.view?.tasks.find((task) => task.status === 'current')?.task.id ?? null;
+    if (current === this.shownCurrent) return;
+    this.shownCurrent = current;
+    if (current) this.renderRoot.querySelector(`li[data-task="${current}"]`)?.scrollIntoView({ block: 'nearest' });
+  }
+
   override render() {
     const view = this.view;
     if (!view) return nothing;
@@ -108,7 +118,7 @@ export class RtQuestPanel extends LitElement {
       ${view.passed ? this.celebration(view, send) : nothing}
       <ol aria-label=${msg('Tasks')}>
         ${view.tasks.map(
-          (task) => html`<li>
+          (task) => html`<li data-task=${task.task.id}>
             <rt-task-card
               .task=${task}
               locale=${this.locale}
