@@ -22,7 +22,7 @@ import type { Vec3 } from '../scene/scene.ts';
 import { CameraScreen } from './camera-screen.ts';
 import { CameraFlight } from './fly-to-camera.ts';
 import { type Animator, FrameScheduler } from './frame-scheduler.ts';
-import { cameraChanges, effectiveGizmoMode, gizmoModesFor, lightChanges, objectChanges } from './gizmo-changes.ts';
+import { cameraChanges, effectiveGizmoMode, gizmoModesFor, lightChanges, objectChanges, type GizmoMode } from './gizmo-changes.ts';
 import { LightGizmos } from './light-gizmos.ts';
 import { Picker, type PickResult } from './picking.ts';
 import { RasterLights } from './raster-lights.ts';
@@ -84,6 +84,7 @@ export class LabView {
   private readonly scheduler: FrameScheduler;
   private readonly controls: ViewControls;
   private readonly gizmo: TransformGizmo;
+  private offeredModes: readonly GizmoMode[] | undefined = undefined;
   private readonly flight: CameraFlight;
   private readonly objects: SceneSync;
   private readonly rasterLights: RasterLights;
@@ -379,12 +380,23 @@ export class LabView {
     this.requestRender();
   }
 
+  /**
+   * The gizmo modes the page offers (a level's gizmo buttons; undefined: all). With none, a
+   * selection shows its outline but no handles: a level without move tools shows no arrows.
+   */
+  setGizmoModes(modes: readonly GizmoMode[] | undefined): void {
+    this.offeredModes = modes;
+    this.updateGizmo(this.store.state);
+    this.requestRender();
+  }
+
   /** Puts the gizmo and the selection outline on the selection, in a mode it allows. */
   private updateGizmo(state: LabState): void {
     const target = this.selectedObject(state);
     const allowed = gizmoModesFor(state.selection, state.scene);
+    const handles = this.offeredModes === undefined || this.offeredModes.some((mode) => allowed.includes(mode));
     this.gizmo.setSnapOption(state.gizmo.snap);
-    this.gizmo.attach(target, effectiveGizmoMode(state.gizmo.mode, allowed), state.gizmo.space);
+    this.gizmo.attach(handles ? target : null, effectiveGizmoMode(state.gizmo.mode, allowed), state.gizmo.space);
     this.outlineSelection(state, target);
   }
 

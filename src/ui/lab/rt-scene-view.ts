@@ -2,7 +2,7 @@ import { msg, str } from '@lit/localize';
 import { css, html, LitElement, type PropertyValues } from 'lit';
 import type { LabState } from '../../lab-state/lab-state.ts';
 import type { Store } from '../../lab-state/store.ts';
-import { gizmoModesFor } from '../../view/gizmo-changes.ts';
+import { gizmoModesFor, type GizmoMode } from '../../view/gizmo-changes.ts';
 import { LabView, type RayHoverDetail } from '../../view/lab-view.ts';
 import type { ViewCommand } from '../../view/view-commands.ts';
 import './rt-help-panel.ts';
@@ -109,6 +109,7 @@ export class RtSceneView extends LitElement {
       this.view = null;
     }
     if (!this.view && this.store && this.isConnected) this.createView(this.store);
+    if (this.view && (changed.has('gizmoControls') || changed.has('store'))) this.view.setGizmoModes(this.gizmoControls?.filter(isGizmoMode));
   }
 
   override render() {
@@ -198,4 +199,10 @@ declare global {
   interface HTMLElementTagNameMap {
     'rt-scene-view': RtSceneView;
   }
+}
+
+const GIZMO_MODES: readonly GizmoMode[] = ['translate', 'rotate', 'scale'];
+
+function isGizmoMode(control: string): control is GizmoMode {
+  return (GIZMO_MODES as readonly string[]).includes(control);
 }
