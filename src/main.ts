@@ -1,7 +1,9 @@
-// The app's entry point: the language first (so the first render is already in it), then the
-// elements, which do the rest when they connect.
+// The app's entry point: zod is told not to probe for eval first (the page's CSP forbids it),
+// then the language (so the first render is already in it), then the elements, which do the
+// rest when they connect. The later modules are imported dynamically so that none of them
+// runs, and parses, before that first line has.
 import './util/zod-jitless.ts';
-import { startLocale } from './i18n/locale.ts';
 
+const { startLocale } = await import('./i18n/locale.ts');
 await startLocale();
 await import('./ui/shell/rt-app.ts');
