@@ -146,3 +146,31 @@ test('the slider compares the ray traced image with the raster one, by mouse or 
   await expect(divider).toHaveValue('25');
   await page.screenshot({ path: 'test-results/screens/render-window-slider.png' });
 });
+
+test('a render estimated at over a minute waits: a lighter option renders, nothing starts unasked', async ({ page }) => {
+  const window = await openRenderWindow(page);
+  const tracer = page.locator('rt-tracer-panel');
+  for (const [name, value] of [
+    ['Supersampling (s), typed value', '8'],
+    ['Image size width', '2048'],
+    ['Image size height', '1536'],
+  ]) {
+    const field = tracer.getByRole('textbox', { name });
+    await field.fill(value);
+    await field.press('Enter');
+  }
+  await window.getByRole('button', { name: 'Render', exact: true }).click();
+  const heavy = window.getByTestId('heavy-render');
+  await expect(heavy).toContainText(/would take about \d+ (min|h|days)/);
+  await expect(window.getByTestId('render-status')).toHaveCount(0);
+  // The mildest lighter supersampling, with its own estimate, starts the render at once.
+  const lighter = heavy.getByRole('button', { name: /^Supersampling \d \(about \d+ s\)$/ });
+  const chosen = Number((await lighter.textContent())!.match(/Supersampling (\d)/)![1]);
+  expect(chosen).toBeLessThan(8);
+  await lighter.click();
+  await expect(heavy).toHaveCount(0);
+  expect(await window.evaluate((element: RtRenderWindow) => element.store!.state.scene.settings.supersampling)).toBe(chosen);
+  await expect(window.getByRole('button', { name: 'Cancel' })).toBeEnabled();
+  await window.getByRole('button', { name: 'Cancel' }).click();
+  await expect(window.getByTestId('render-status')).toContainText('Render cancelled');
+});

@@ -37,6 +37,14 @@ export function formatDuration(ms: number): string {
 }
 
 /** "Quick preview…" during the coarse passes, then "Rendering 42 %". */
+/** An estimated wait in the largest unit that reads naturally: "40 s", "12 min", "3 h", "27 days". */
+export function formatWait(seconds: number): string {
+  if (seconds < 90) return msg(str`${Math.max(1, Math.round(seconds))} s`);
+  if (seconds < 90 * 60) return msg(str`${Math.round(seconds / 60)} min`);
+  if (seconds < 48 * 3600) return msg(str`${Math.round(seconds / 3600)} h`);
+  return msg(str`${Math.round(seconds / 86_400)} days`);
+}
+
 export function progressText({ phase, done, total }: RenderProgress): string {
   if (phase === 'preview') return msg('Quick preview…');
   const percent = Math.floor((100 * done) / Math.max(total, 1));

@@ -87,4 +87,19 @@ export const renderWindowLayout = css`
         border: 1px solid color-mix(in srgb, #e8a317 60%, var(--rt-border));
         background: color-mix(in srgb, #e8a317 16%, var(--rt-surface));
       }
-    `;
+      .heavy {
+    padding: 8px 12px;
+    border-radius: 8px;
+    border: 1px solid color-mix(in srgb, #e8a317 60%, var(--rt-border));
+    background: color-mix(in srgb, #e8a317 16%, var(--rt-surface));
+  }
+  .heavy p {
+    margin: 0 0 8px;
+  }
+  .heavy .choices {
+    display: flex;
+    flex-wrap: wrap;
+    gap: 8px;
+    margin-bottom: 8px;
+  }
+`;

@@ -8,9 +8,10 @@ import type { Store } from '../../../lab-state/store.ts';
 import type { Scene } from '../../../scene/scene.ts';
 import { GuideHostController } from '../guide-host.ts';
 import { consumeStore } from '../store-context.ts';
+import { estimateRender, lighterRenders, type LighterRender, type RenderEstimate } from '../../../render/render-estimate.ts';
 import { BandPainter } from './band-painter.ts';
 import { errorMessage, RenderJobController, type ShownRender } from './render-job-controller.ts';
-import { formatCount, formatDuration, progressText, raysPerSecond } from './render-figures.ts';
+import { formatCount, formatDuration, formatWait, progressText, raysPerSecond } from './render-figures.ts';
 import { renderWindowLayout } from './render-window-layout.css.ts';
 import { controlStyles } from './render-window-styles.ts';
 import { pngFileName, savePng } from './save-png.ts';
@@ -54,6 +55,7 @@ export class RtRenderWindow extends LitElement {
     open: { type: Boolean, reflect: true },
     sceneChanged: { state: true },
     rasterNote: { state: true },
+    heavy: { state: true },
     saveError: { state: true },
   };
 
@@ -67,6 +69,8 @@ export class RtRenderWindow extends LitElement {
   /** Why the render on show has no raster picture to compare with ('' when it has one). */
   declare rasterNote: string;
   declare saveError: string;
+  /** A render the estimate put over HEAVY_RENDER_SECONDS, waiting for the learner's choice. */
+  declare heavy: { estimate: RenderEstimate; lighter: LighterRender[] } | null;
 
   private readonly renderButton = createRef<HTMLButtonElement>();
   private readonly cancelButton = createRef<HTMLButtonElement>();
@@ -90,6 +94,7 @@ export class RtRenderWindow extends LitElement {
     this.sceneChanged = false;
     this.rasterNote = '';
     this.saveError = '';
+    this.heavy = null;
     this.addEventListener('keydown', (event) => this.onKeyDown(event));
     consumeStore(this, (store) => (this.store = store));
     new GuideHostController(this);
@@ -120,9 +125,17 @@ export class RtRenderWindow extends LitElement {
     if ((changed.has('open') && this.open) || ended) this.renderButton.value?.focus();
   }
 
-  /** Renders the store's scene at its image size, replacing the image on show. */
-  async startRender(): Promise<void> {
+  /**
+   * Renders the store's scene at its image size, replacing the image on show. A render the
+   * estimate puts over a minute waits for the learner: lighter options, or `force`.
+   */
+  async startRender(force = false): Promise<void> {
     if (!this.store || !this.pool) return;
+    const scene = this.store.state.scene;
+    const [width, height] = scene.settings.imageSize;
+    const estimate = estimateRender(scene, width, height, this.pool.size);
+    this.heavy = estimate.heavy && !force ? { estimate, lighter: lighterRenders(scene, width, height, this.pool.size) } : null;
+    if (this.heavy) return;
     this.sceneChanged = false;
     this.saveError = '';
     await this.jobs.start(this.store, this.pool);
@@ -247,6 +260,7 @@ export class RtRenderWindow extends LitElement {
           ${msg('Save as PNG')}
         </button>
       </div>
+      ${this.heavy ? this.heavyNote(this.heavy) : nothing}
       ${this.jobs.shown ? this.stage(this.jobs.shown) : html`<div class="placeholder" data-guide="render.zoom render.compare">${msg(str`Press Render to ray trace the scene at ${width} × ${height} pixels.`)}</div>`}
       <footer>
         ${this.outcome()} ${this.saveError ? html`<p role="alert" class="error">${this.saveError}</p>` : nothing} ${this.staleNote()}
@@ -298,6 +312,30 @@ export class RtRenderWindow extends LitElement {
       default:
         return nothing;
     }
+  }
+
+  /** The estimate of a heavy render, with lighter renders to pick or "Render anyway". */
+  private heavyNote({ estimate, lighter }: { estimate: RenderEstimate; lighter: LighterRender[] }) {
+    const use = (changes: Partial<Scene['settings']>) => {
+      this.store?.dispatch({ type: 'settings.changed', changes });
+      void this.startRender();
+    };
+    const option = (choice: LighterRender) => {
+      const wait = formatWait(choice.estimate.seconds);
+      switch (choice.change) {
+        case 'supersampling':
+          return html`<button @click=${() => use({ supersampling: choice.supersampling })}>${msg(str`Supersampling ${choice.supersampling} (about ${wait})`)}</button>`;
+        case 'image-size':
+          return html`<button @click=${() => use({ imageSize: [choice.width, choice.height] })}>${msg(str`${choice.width} × ${choice.height} pixels (about ${wait})`)}</button>`;
+        case 'max-depth':
+          return html`<button @click=${() => use({ maxDepth: choice.maxDepth })}>${msg(str`Recursion depth ${choice.maxDepth} (about ${wait})`)}</button>`;
+      }
+    };
+    return html`<div class="heavy" role="alert" data-testid="heavy-render">
+      <p>${msg(str`This render would take about ${formatWait(estimate.seconds)} (${formatCount(estimate.rays)} rays). A lighter one shows the same idea:`)}</p>
+      <div class="choices">${lighter.map(option)}</div>
+      <p><button @click=${() => void this.startRender(true)}>${msg('Render anyway')}</button> <button @click=${() => (this.heavy = null)}>${msg('Not now')}</button></p>
+    </div>`;
   }
 
   private staleNote() {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { countRays, formatCount, formatDuration, progressText, raysPerSecond } from '../../../../src/ui/lab/render-window/render-figures.ts';
+import { countRays, formatCount, formatDuration, formatWait, progressText, raysPerSecond } from '../../../../src/ui/lab/render-window/render-figures.ts';
 
 describe('render figures', () => {
   it('counts every kind of ray', () => {
@@ -9,6 +9,14 @@ describe('render figures', () => {
   it('divides rays by seconds, never by zero', () => {
     expect(raysPerSecond(3_000_000, 1500)).toBe(2_000_000);
     expect(raysPerSecond(1000, 0)).toBe(1_000_000);
+  });
+
+  it('writes an estimated wait in seconds, minutes, hours or days', () => {
+    expect(formatWait(0.2)).toBe('1 s');
+    expect(formatWait(75)).toBe('75 s');
+    expect(formatWait(720)).toBe('12 min');
+    expect(formatWait(3 * 3600)).toBe('3 h');
+    expect(formatWait(27 * 86_400)).toBe('27 days');
   });
 
   it('writes counts in words with three significant digits', () => {
