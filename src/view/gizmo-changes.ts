@@ -16,6 +16,9 @@ const FINE = { translate: 1e-4, rotateDegrees: 1e-2, scale: 1e-4 } as const;
 
 const DEG = 180 / Math.PI;
 
+/** Every gizmo mode, in the toolbar's order. */
+export const GIZMO_MODES: readonly GizmoMode[] = ['translate', 'rotate', 'scale'];
+
 /**
  * The gizmo modes that mean something for a selection: a point light has no direction and
  * no size; spot lights and the camera can turn but not grow; an area light's scale is its size.
@@ -23,12 +26,12 @@ const DEG = 180 / Math.PI;
 export function gizmoModesFor(selection: Selection, scene: Scene): readonly GizmoMode[] {
   if (selection === null) return [];
   if (selection.kind === 'camera') return ['translate', 'rotate'];
-  if (selection.kind === 'object') return ['translate', 'rotate', 'scale'];
+  if (selection.kind === 'object') return GIZMO_MODES;
   const light = scene.lights.find((l) => l.id === selection.id);
   if (!light) return [];
   if (light.type === 'point') return ['translate'];
   if (light.type === 'spot') return ['translate', 'rotate'];
-  return ['translate', 'rotate', 'scale'];
+  return GIZMO_MODES;
 }
 
 /** The chosen mode when the selection allows it, else moving (which every selection allows). */

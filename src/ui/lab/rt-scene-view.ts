@@ -2,7 +2,7 @@ import { msg, str } from '@lit/localize';
 import { css, html, LitElement, type PropertyValues } from 'lit';
 import type { LabState } from '../../lab-state/lab-state.ts';
 import type { Store } from '../../lab-state/store.ts';
-import { gizmoModesFor, type GizmoMode } from '../../view/gizmo-changes.ts';
+import { GIZMO_MODES, gizmoModesFor, type GizmoMode } from '../../view/gizmo-changes.ts';
 import { LabView, type RayHoverDetail } from '../../view/lab-view.ts';
 import type { ViewCommand } from '../../view/view-commands.ts';
 import './rt-help-panel.ts';
@@ -175,7 +175,7 @@ export class RtSceneView extends LitElement {
 
 /** Modes shown as available: all when nothing is selected (choosing a mode first is fine). */
 function modesShown(state: LabState) {
-  return state.selection ? gizmoModesFor(state.selection, state.scene) : (['translate', 'rotate', 'scale'] as const);
+  return state.selection ? gizmoModesFor(state.selection, state.scene) : GIZMO_MODES;
 }
 
 /** What a screen reader hears for the canvas: the scene in one sentence, and how to move around. */
@@ -200,8 +200,6 @@ declare global {
     'rt-scene-view': RtSceneView;
   }
 }
-
-const GIZMO_MODES: readonly GizmoMode[] = ['translate', 'rotate', 'scale'];
 
 function isGizmoMode(control: string): control is GizmoMode {
   return (GIZMO_MODES as readonly string[]).includes(control);
