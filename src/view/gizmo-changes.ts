@@ -1,9 +1,6 @@
 import { Euler, type Quaternion, Vector3 } from 'three';
-import type { GizmoOptions, Selection } from '../lab-state/lab-state.ts';
 import { LIMITS } from '../scene/scene-limits.ts';
-import type { Camera, Light, Scene, SceneObject, Vec3 } from '../scene/scene.ts';
-
-export type GizmoMode = GizmoOptions['mode'];
+import type { Camera, Light, SceneObject, Vec3 } from '../scene/scene.ts';
 
 /** What Shift (or the Snap toggle) rounds a gizmo drag to: 0.25 m, 15°, 0.25× (as the lab's snapping did). */
 export const SNAP = { translate: 0.25, rotateDegrees: 15, scale: 0.25 } as const;
@@ -15,29 +12,6 @@ export const SNAP = { translate: 0.25, rotateDegrees: 15, scale: 0.25 } as const
 const FINE = { translate: 1e-4, rotateDegrees: 1e-2, scale: 1e-4 } as const;
 
 const DEG = 180 / Math.PI;
-
-/** Every gizmo mode, in the toolbar's order. */
-export const GIZMO_MODES: readonly GizmoMode[] = ['translate', 'rotate', 'scale'];
-
-/**
- * The gizmo modes that mean something for a selection: a point light has no direction and
- * no size; spot lights and the camera can turn but not grow; an area light's scale is its size.
- */
-export function gizmoModesFor(selection: Selection, scene: Scene): readonly GizmoMode[] {
-  if (selection === null) return [];
-  if (selection.kind === 'camera') return ['translate', 'rotate'];
-  if (selection.kind === 'object') return GIZMO_MODES;
-  const light = scene.lights.find((l) => l.id === selection.id);
-  if (!light) return [];
-  if (light.type === 'point') return ['translate'];
-  if (light.type === 'spot') return ['translate', 'rotate'];
-  return GIZMO_MODES;
-}
-
-/** The chosen mode when the selection allows it, else moving (which every selection allows). */
-export function effectiveGizmoMode(mode: GizmoMode, allowed: readonly GizmoMode[]): GizmoMode {
-  return allowed.includes(mode) ? mode : 'translate';
-}
 
 /** The pose a gizmo drag left an object in (three.js's rotation is in radians). */
 export interface DraggedPose {

@@ -1,7 +1,7 @@
 import { msg } from '@lit/localize';
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState, Selection } from '../lab-state/lab-state.ts';
-import { gizmoModesFor } from './gizmo-changes.ts';
+import { gizmoModesFor } from './gizmo-modes.ts';
 import type { ViewCommand } from './view-commands.ts';
 
 /** What a view command asks of the store: an action to dispatch, and/or a note for the learner. */

@@ -1,7 +1,8 @@
 import type { Object3D, PerspectiveCamera } from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import type { GizmoOptions } from '../lab-state/lab-state.ts';
-import { type GizmoMode, SNAP } from './gizmo-changes.ts';
+import type { GizmoMode } from './gizmo-modes.ts';
+import { SNAP } from './gizmo-changes.ts';
 
 const DEG = Math.PI / 180;
 

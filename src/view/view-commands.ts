@@ -1,5 +1,5 @@
 import { msg } from '@lit/localize';
-import type { GizmoMode } from './gizmo-changes.ts';
+import type { GizmoMode } from './gizmo-modes.ts';
 
 /**
  * Everything the user can ask of the 3D view, whether by key, by toolbar button or by the

@@ -4,9 +4,7 @@ import { createLight, defaultScene } from '../../src/scene/scene-defaults.ts';
 import type { AreaLight, Camera } from '../../src/scene/scene.ts';
 import {
   cameraChanges,
-  effectiveGizmoMode,
   eulerDegrees,
-  gizmoModesFor,
   lightChanges,
   objectChanges,
   roundToStep,
@@ -21,25 +19,6 @@ function pose(position: [number, number, number], degrees: [number, number, numb
     scale: new Vector3(...scale),
   };
 }
-
-describe('gizmo modes per selection', () => {
-  const scene = defaultScene();
-  scene.lights.push(createLight('area', scene));
-
-  it('offers what makes sense: objects and area lights all three, spots and the camera no scale, a point light only moves', () => {
-    expect(gizmoModesFor({ kind: 'object', id: 'box' }, scene)).toEqual(['translate', 'rotate', 'scale']);
-    expect(gizmoModesFor({ kind: 'light', id: 'lamp' }, scene)).toEqual(['translate']);
-    expect(gizmoModesFor({ kind: 'light', id: 'spot' }, scene)).toEqual(['translate', 'rotate']);
-    expect(gizmoModesFor({ kind: 'light', id: 'area-1' }, scene)).toEqual(['translate', 'rotate', 'scale']);
-    expect(gizmoModesFor({ kind: 'camera' }, scene)).toEqual(['translate', 'rotate']);
-    expect(gizmoModesFor(null, scene)).toEqual([]);
-  });
-
-  it('falls back to moving when the chosen mode does not apply', () => {
-    expect(effectiveGizmoMode('scale', ['translate', 'rotate'])).toBe('translate');
-    expect(effectiveGizmoMode('rotate', ['translate', 'rotate'])).toBe('rotate');
-  });
-});
 
 describe('gizmo drag → action payload', () => {
   it('rounds to clean numbers: no float noise, no −0', () => {

@@ -1,7 +1,7 @@
 import { msg } from '@lit/localize';
 import { css, html, LitElement, nothing, svg, type SVGTemplateResult, type TemplateResult } from 'lit';
 import { DEFAULT_GIZMO, type GizmoOptions } from '../../lab-state/lab-state.ts';
-import { GIZMO_MODES, type GizmoMode } from '../../view/gizmo-changes.ts';
+import { GIZMO_MODES, type GizmoMode } from '../../view/gizmo-modes.ts';
 import type { ViewCommand } from '../../view/view-commands.ts';
 import { GuideHostController } from './guide-host.ts';
 
