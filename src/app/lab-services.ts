@@ -4,10 +4,10 @@ import type { RenderPool } from '../render/render-pool.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
 import { ScreenTracer } from '../render/screen-tracer.ts';
 import { defaultScene } from '../scene/scene-defaults.ts';
-import type { MeshLoader } from '../view/scene-sync.ts';
-import { BvhBoxes } from '../view/bvh-boxes.ts';
+import type { BvhBoxes } from '../view/bvh-boxes.ts';
 import type { LabView } from '../view/lab-view.ts';
-import { RayPool, type RayPoolStats } from '../view/ray-pool.ts';
+import type { RayPool, RayPoolStats } from '../view/ray-pool.ts';
+import type { MeshLoader } from '../view/scene-sync.ts';
 
 /** What the services draw into: the lab's three.js view. */
 export type LabViewPort = Pick<LabView, 'setScreenRays' | 'setRayLayer' | 'setBvhLayer' | 'requestRender'>;
@@ -30,14 +30,19 @@ export interface LabServicesOptions {
  * - A new scene is traced again (debounced, latest wins) and its boxes redrawn.
  * - New rays, ray options or a picked pixel redraw the rays; the view draws on demand.
  * - Listeners hear when the screen's rays change (the flat preview shows them).
+ *
+ * The ray pool and the boxes are three.js objects: they are made when the 3D view attaches,
+ * from modules loaded then, so that three.js is not in a student's first load (the panels
+ * and the tasks show while it arrives).
  */
 export class LabServices {
   /** The app's one source of truth. */
   readonly store = new Store(initialState(defaultScene()));
   readonly renderPool: RenderPool;
-  readonly rayPool = new RayPool();
-  /** The bounding boxes and BVH boxes of the acceleration levels, drawn in the 3D view. */
-  readonly bvhBoxes: BvhBoxes;
+  /** The rays' instanced meshes and the acceleration levels' boxes, once a view is attached. */
+  private layers: { rays: RayPool; boxes: BvhBoxes } | null = null;
+  private readonly loadMeshes: MeshLoader;
+  private disposed = false;
   private readonly tracePool: RenderPool;
   private readonly tracer: ScreenTracer;
   private view: LabViewPort | null = null;
@@ -50,7 +55,7 @@ export class LabServices {
     this.renderPool = options.createPool();
     this.tracePool = options.createPool(1);
     this.drawnWith = { rays: this.store.state.rays, selectedPixel: this.store.state.selectedPixel };
-    this.bvhBoxes = new BvhBoxes(() => this.view?.requestRender(), options.loadMeshes);
+    this.loadMeshes = options.loadMeshes;
     this.tracer = new ScreenTracer(this.tracePool, options.loadMeshes);
     this.tracer.onError = (error) => options.report(options.traceFailed(error), 'error');
     this.cleanup.push(
@@ -62,13 +67,12 @@ export class LabServices {
       this.store.subscribe((state, _action, error) => {
         if (error) options.report(error, 'error');
         this.tracer.update(state.scene);
-        this.bvhBoxes.update(state);
+        this.layers?.boxes.update(state);
         // Rebuilding the pool costs ~1 ms per 10k rays: only when what it shows changed.
         if (state.rays !== this.drawnWith.rays || state.selectedPixel !== this.drawnWith.selectedPixel) this.redrawRays();
       }),
     );
     this.tracer.update(this.store.state.scene);
-    this.bvhBoxes.update(this.store.state);
   }
 
   /** The camera's pixels' latest rays, or null before the first trace. */
@@ -76,17 +80,25 @@ export class LabServices {
     return this.tracer.rays;
   }
 
-  /** How many rays and cones are drawn now. */
+  /** How many rays and cones are drawn now (none before a view is attached). */
   get drawn(): RayPoolStats {
-    return this.rayPool.stats;
+    return this.layers?.rays.stats ?? { rays: 0, cones: 0, drawCalls: 0, instanceBytes: 0 };
   }
 
-  /** Draws into `view` from now on (the 3D view exists after the lab's first render). */
-  attachView(view: LabViewPort): void {
+  /**
+   * Draws into `view` from now on (the 3D view loads after the lab's first render): loads and
+   * makes the three.js layers the first time, and draws what is there already.
+   */
+  async attachView(view: LabViewPort): Promise<void> {
+    const [{ RayPool }, { BvhBoxes }] = await Promise.all([import('../view/ray-pool.ts'), import('../view/bvh-boxes.ts')]);
+    if (this.disposed) return;
+    this.layers ??= { rays: new RayPool(), boxes: new BvhBoxes(() => this.view?.requestRender(), this.loadMeshes) };
     this.view = view;
-    view.setRayLayer(this.rayPool);
-    view.setBvhLayer(this.bvhBoxes.object);
+    view.setRayLayer(this.layers.rays);
+    view.setBvhLayer(this.layers.boxes.object);
+    this.layers.boxes.update(this.store.state);
     if (this.screenRays) view.setScreenRays(this.screenRays);
+    this.redrawRays();
   }
 
   /** Calls `listener` with every new screen of rays; returns the function that stops it. */
@@ -96,19 +108,21 @@ export class LabServices {
   }
 
   dispose(): void {
+    this.disposed = true;
     for (const stop of this.cleanup.splice(0)) stop();
     this.tracer.dispose();
     this.tracePool.dispose();
     this.renderPool.dispose();
-    this.rayPool.dispose();
-    this.bvhBoxes.dispose();
+    this.layers?.rays.dispose();
+    this.layers?.boxes.dispose();
+    this.layers = null;
   }
 
   /** The ray pool follows the rays, the ray options and the picked pixel (it skips work when none changed). */
   private redrawRays(): void {
     const { rays, selectedPixel } = this.store.state;
     this.drawnWith = { rays, selectedPixel };
-    this.rayPool.update(this.screenRays, rays, selectedPixel);
+    this.layers?.rays.update(this.screenRays, rays, selectedPixel);
     this.view?.requestRender();
   }
 }

@@ -71,8 +71,8 @@ describe('LabServices: the lab wired apart from any page', () => {
 
   it('traces the store\'s scene on the screen pool, and the view and listeners get its rays', async () => {
     const { view, calls, rays } = fakeView();
-    services.attachView(view);
-    expect(calls).toEqual(['ray-layer', 'bvh-layer']);
+    await services.attachView(view);
+    expect(calls.slice(0, 2)).toEqual(['ray-layer', 'bvh-layer']);
     const heard: ScreenRays[] = [];
     services.subscribe((screen) => heard.push(screen));
     await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS + 1);
@@ -100,7 +100,18 @@ describe('LabServices: the lab wired apart from any page', () => {
     expect(reports).toEqual([['settings.supersampling: must be between 1 and 8, got 40', 'error']]);
   });
 
+  it('draws rays traced before the view attached as soon as it does (the view loads after the panels)', async () => {
+    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS + 1);
+    expect(services.screenRays).not.toBeNull();
+    expect(services.drawn.rays).toBe(0);
+    const { view, rays } = fakeView();
+    await services.attachView(view);
+    expect(rays()).toBe(services.screenRays);
+    expect(services.drawn.rays).toBeGreaterThan(0);
+  });
+
   it('a hidden ray kind redraws the rays without tracing again', async () => {
+    await services.attachView(fakeView().view);
     await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS + 1);
     const before = services.drawn.rays;
     services.store.dispatch({ type: 'rays.changed', changes: { showRays: false } });

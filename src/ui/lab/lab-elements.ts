@@ -1,6 +1,7 @@
+import type { UiPanel } from '../../quest/lab-controls.ts';
 /**
  * Registers every element the lab's template uses (imported for their side effect: each
- * module defines its custom element).
+ * module defines its custom element), but those of ON_DEMAND_PANELS.
  */
 import '../game/rt-assignment-done.ts';
 import '../classroom/rt-export-menu.ts';
@@ -12,7 +13,6 @@ import '../game/rt-quest-panel.ts';
 import '../game/rt-score.ts';
 import '../controls/rt-theme-toggle.ts';
 import '../controls/rt-toast.ts';
-import './panels/rt-bvh-panel.ts';
 import './panels/rt-file-panel.ts';
 import './panels/rt-light-panel.ts';
 import './panels/rt-object-panel.ts';
@@ -24,3 +24,12 @@ import './rt-guide-ring.ts';
 import './rt-ray-tooltip.ts';
 import './rt-scene-view.ts';
 import './rt-screen-preview.ts';
+
+/**
+ * Panels only some levels show, loaded when a level first shows them (the element upgrades
+ * then): the BVH panel builds the tracer's scene on the page, with three.js and
+ * three-mesh-bvh, which a student's first load can do without.
+ */
+export const ON_DEMAND_PANELS: Partial<Record<UiPanel, () => Promise<unknown>>> = {
+  bvh: () => import('./panels/rt-bvh-panel.ts'),
+};

@@ -26,7 +26,7 @@ import { QuestController } from './quest-controller.ts';
 import type { RtRenderWindow } from './render-window/rt-render-window.ts';
 import type { RtSceneView } from './rt-scene-view.ts';
 import { storeContext } from './store-context.ts';
-import './lab-elements.ts';
+import { ON_DEMAND_PANELS } from './lab-elements.ts';
 
 export { FREE_LAB_HASH } from './quest-controller.ts';
 
@@ -127,15 +127,9 @@ export class RtLab extends LitElement {
   }
 
   protected override willUpdate(changed: PropertyValues<this>): void {
+    this.loadOnDemandPanels();
     if (changed.has('assignment') && changed.get('assignment') !== undefined && this.isConnected) this.game.start();
     if (changed.has('sharedScene') && this.sharedScene) this.game.openSharedScene(this.sharedScene);
-  }
-
-  override async firstUpdated(): Promise<void> {
-    const view = this.sceneView();
-    if (!view) return;
-    await view.updateComplete;
-    if (view.labView) this.services.attachView(view.labView);
   }
 
   protected override updated(): void {
@@ -146,6 +140,24 @@ export class RtLab extends LitElement {
     if (view) {
       view.dataset.rayInstances = String(this.services.drawn.rays);
       view.dataset.coneInstances = String(this.services.drawn.cones);
+    }
+  }
+
+  /** The 3D view has loaded: the services draw into it, and the counts below follow. */
+  private readonly onViewReady = async (event: CustomEvent<LabView>) => {
+    await this.services.attachView(event.detail);
+    this.requestUpdate();
+  };
+
+  /** The on-demand panels the level shows, loaded the first time (the module cache makes later calls free). */
+  private loadOnDemandPanels(): void {
+    const { panels } = levelPanels(this.level());
+    for (const [panel, load] of Object.entries(ON_DEMAND_PANELS)) {
+      if (!panels.has(panel as UiPanel) || !load) continue;
+      load().catch((error: unknown) => {
+        const reason = error instanceof Error ? error.message : String(error);
+        this.toast(msg(str`A panel of this level could not be loaded (${reason}). Check the connection and reload.`), 'error');
+      });
     }
   }
 
@@ -242,6 +254,7 @@ export class RtLab extends LitElement {
           .gizmoControls=${gizmo}
           @ray-hover=${(event: CustomEvent<RayHoverDetail | null>) => (this.hover = event.detail)}
           @view-message=${(event: CustomEvent<string>) => this.toast(event.detail, 'error')}
+          @view-ready=${this.onViewReady}
         ></rt-scene-view>
         ${shows('screen-preview') ? html`<rt-screen-preview .rays=${this.services.screenRays}></rt-screen-preview>` : nothing}
         <rt-ray-tooltip .hover=${this.hover?.hover ?? null} .x=${this.hover?.x ?? 0} .y=${this.hover?.y ?? 0}></rt-ray-tooltip>

@@ -1,9 +1,9 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, type PropertyValues } from 'lit';
+import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
 import type { LabState } from '../../lab-state/lab-state.ts';
 import type { Store } from '../../lab-state/store.ts';
-import { GIZMO_MODES, gizmoModesFor, type GizmoMode } from '../../view/gizmo-changes.ts';
-import { LabView, type RayHoverDetail } from '../../view/lab-view.ts';
+import { GIZMO_MODES, gizmoModesFor, type GizmoMode } from '../../view/gizmo-modes.ts';
+import type { LabView, RayHoverDetail } from '../../view/lab-view.ts';
 import type { ViewCommand } from '../../view/view-commands.ts';
 import './rt-help-panel.ts';
 import { GuideHostController } from './guide-host.ts';
@@ -19,6 +19,8 @@ import './rt-view-toolbar.ts';
  * @fires ray-hover - CustomEvent<RayHoverDetail | null>: the ray under the pointer and where
  *   the pointer is (x, y in CSS px of this element's box), or null when it leaves the rays.
  * @fires view-message - CustomEvent<string>: a change the store refused, or a hint, to show as a toast.
+ * @fires view-ready - CustomEvent<LabView>: the three.js view exists and draws (its code loads
+ *   after the element's first render, so the panels and the tasks do not wait for three.js).
  * @cssprop --rt-view-bg - The view's background behind the scene (a soft vertical gradient by default).
  */
 export class RtSceneView extends LitElement {
@@ -28,6 +30,7 @@ export class RtSceneView extends LitElement {
     state: { state: true },
     atCamera: { state: true },
     helpOpen: { state: true },
+    viewProblem: { state: true },
   };
 
   static override styles = css`
@@ -48,6 +51,16 @@ export class RtSceneView extends LitElement {
       touch-action: none;
       outline: none;
     }
+    .view-status {
+      position: absolute;
+      inset: 0;
+      display: grid;
+      place-items: center;
+      margin: 0;
+      padding: 1rem;
+      text-align: center;
+      color: var(--rt-muted, inherit);
+    }
     canvas:focus-visible {
       outline: 3px solid var(--rt-accent);
       outline-offset: -3px;
@@ -61,7 +74,11 @@ export class RtSceneView extends LitElement {
   declare private state: LabState | undefined;
   declare private atCamera: boolean;
   declare private helpOpen: boolean;
+  /** Why the 3D view's code could not be loaded (offline on a first visit), or ''. */
+  declare private viewProblem: string;
   private view: LabView | null = null;
+  /** The store a view is being made for while its code loads. */
+  private loadingFor: Store | null = null;
   private unsubscribe: (() => void) | null = null;
   private readonly viewCleanups: (() => void)[] = [];
   private readonly resizeObserver = new ResizeObserver(() => this.resize());
@@ -70,6 +87,7 @@ export class RtSceneView extends LitElement {
     super();
     this.atCamera = false;
     this.helpOpen = false;
+    this.viewProblem = '';
     consumeStore(this, (store) => (this.store = store));
     new GuideHostController(this);
   }
@@ -108,7 +126,7 @@ export class RtSceneView extends LitElement {
       this.view.dispose();
       this.view = null;
     }
-    if (!this.view && this.store && this.isConnected) this.createView(this.store);
+    if (!this.view && this.store && this.isConnected && this.loadingFor !== this.store) void this.createView(this.store);
     if (this.view && (changed.has('gizmoControls') || changed.has('store'))) this.view.setGizmoModes(this.gizmoControls?.filter(isGizmoMode));
   }
 
@@ -116,6 +134,7 @@ export class RtSceneView extends LitElement {
     const state = this.state;
     return html`
       <canvas tabindex="0" data-guide="view.canvas" role="img" aria-label=${state ? describe(state) : msg('3D view')}></canvas>
+      ${this.view ? nothing : html`<p class="view-status" role="status">${this.viewProblem || msg('Loading the 3D view…')}</p>`}
       <rt-view-toolbar
         .gizmo=${state?.gizmo}
         .allowedModes=${state ? modesShown(state) : []}
@@ -136,11 +155,25 @@ export class RtSceneView extends LitElement {
     });
   }
 
-  private createView(store: Store): void {
+  private async createView(store: Store): Promise<void> {
     const canvas = this.renderRoot.querySelector('canvas');
     if (!canvas) return;
+    this.loadingFor = store;
+    let LabView: typeof import('../../view/lab-view.ts').LabView;
+    try {
+      ({ LabView } = await import('../../view/lab-view.ts'));
+    } catch (error) {
+      const reason = error instanceof Error ? error.message : String(error);
+      this.viewProblem = msg(str`The 3D view could not be loaded (${reason}). Check the connection and reload.`);
+      return;
+    } finally {
+      this.loadingFor = null;
+    }
+    // The element may have left the page, or got another store, while the code loaded.
+    if (this.view || !this.isConnected || this.store !== store) return;
     const view = new LabView(canvas, store);
     this.view = view;
+    this.viewProblem = '';
     this.viewCleanups.push(
       view.onRayHover((detail) => this.fire<RayHoverDetail | null>('ray-hover', detail)),
       view.on('message', (text) => this.fire('view-message', text)),
@@ -149,6 +182,8 @@ export class RtSceneView extends LitElement {
     );
     this.resizeObserver.observe(this);
     this.resize();
+    this.requestUpdate();
+    this.fire('view-ready', view);
   }
 
   private resize(): void {
