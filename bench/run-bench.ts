@@ -23,6 +23,7 @@ import { renderTile } from '../src/tracer/render-tile.ts';
 import { buildTracerScene, type TracerScene } from '../src/tracer/tracer-scene.ts';
 import { mergedWorldBvh } from './naive/merged-world-bvh.ts';
 import { objectGridScene } from './object-grid-scene.ts';
+import { firstLoadRows, measureFirstLoad } from './first-load-bench.ts';
 import { rtRender16Ms } from './start-up-bench.ts';
 import { naiveTracerScene } from './naive/naive-tracer-scene.ts';
 import { printTable } from './print-table.ts';
@@ -177,6 +178,7 @@ async function main(): Promise<void> {
   const objectCount = await timeObjectCounts();
   const rtRender16 = { introductionMs: rtRender16Ms('introduction'), referenceMs: rtRender16Ms(fileURLToPath(SCENE_FILE)) };
   const anchor = JSON.parse(readFileSync(ANCHOR_FILE, 'utf8')) as SideBySide;
+  const firstLoadFigures = measureFirstLoad();
 
   const rays = { ...two.stats, total: two.stats.primary + two.stats.shadow + two.stats.reflect + two.stats.refract };
   const results = {
@@ -198,6 +200,7 @@ async function main(): Promise<void> {
     objectCount,
     rtRender16Ms: { introduction: round(rtRender16.introductionMs), reference: round(rtRender16.referenceMs) },
     view: roundedView(view),
+    firstLoad: firstLoadFigures,
   };
   writeFileSync(RESULTS_FILE, `${JSON.stringify(results, null, 2)}\n`);
 
@@ -222,6 +225,7 @@ async function main(): Promise<void> {
     ['cost of 256 vs 9 objects', `${objectCount.ratio}×`, '≤ 1.3×'],
     ['rt render 16×16, whole command: level 1 / reference', `${results.rtRender16Ms.introduction} / ${results.rtRender16Ms.reference} ms`, '≤ 500 ms'],
     ...viewRows(view),
+    ...firstLoadRows(firstLoadFigures),
   ]);
   console.log(`\nwrote ${RESULTS_FILE.pathname}`);
 }
