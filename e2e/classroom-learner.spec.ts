@@ -45,6 +45,9 @@ test('one student hands in four files: the dashboard shows one learner who passe
   const codeGiven = Date.now();
   await dialog.getByRole('button', { name: 'Start' }).click();
   await expect(dialog.getByRole('textbox', { name: 'Participant code' })).toBeHidden();
+  // A newcomer is welcomed once the first level opens, after the code as without one.
+  await expect(page.getByText('Welcome to Ray Tracer Quest!')).toBeVisible();
+  await page.getByRole('button', { name: 'Got it' }).click();
 
   await playLevel1UpToTheRayTracer(page);
   const midway = await download(page, 'Download JSON');

@@ -55,6 +55,11 @@ export class QuestController implements ReactiveController {
   session: QuestSession | null = null;
   /** A newcomer's welcome, shown once over the first level's tasks. */
   welcome = false;
+  /**
+   * A newcomer whose welcome has not been shown yet: it waits for the first level to open
+   * (after the participant code dialog, in an assignment that asks for one).
+   */
+  private welcomeDue = false;
   /** The learner's survey answers in this session's progress (read once per session), or null before they hand it in. */
   survey: SurveySubmission | null = null;
   private readonly cleanup: (() => void)[] = [];
@@ -92,7 +97,8 @@ export class QuestController implements ReactiveController {
     // #free-lab (a bookmark, the lab's own browser tests) goes straight to the free lab.
     if (location.hash === FREE_LAB_HASH) session.openFreeLab();
     else session.start();
-    this.welcome = newcomer && session.mode.kind === 'level';
+    this.welcome = false;
+    this.welcomeDue = newcomer;
     this.survey = new SurveyStore(storage, session.progressKey).load();
     this.changed();
   }
@@ -110,6 +116,10 @@ export class QuestController implements ReactiveController {
   }
 
   private changed(): void {
+    if (this.welcomeDue && this.session?.mode.kind === 'level') {
+      this.welcomeDue = false;
+      this.welcome = true;
+    }
     const error = this.session?.saveError;
     if (error) this.host.toast(error, 'error');
     this.host.modeChanged(this.session?.mode.kind === 'free-lab');
