@@ -29,6 +29,7 @@ export function levelRules(level: Level): string[] {
     ...listedOnce(level.ui.panels, ['ui', 'panels']),
     ...mandatoryCount(level),
     ...level.tasks.flatMap((_, index) => taskProblems(level, index, sample)),
+    ...pixelPickingProblems(level),
     ...badgeProblems(level),
   ];
   return formatIssues(problems.map(({ path, message }) => ({ code: 'custom', path, message })));
@@ -108,6 +109,27 @@ function pixelProblems(scene: Scene, item: string): string[] {
   const match = /^(\d+),(\d+)$/.exec(item);
   if (match && Number(match[1]) < columns && Number(match[2]) < rows) return [];
   return [`"${item}" must be "column,row" inside the ${columns}×${rows} screen, counting from 0`];
+}
+
+/**
+ * A task that asks for one pixel rings that very pixel (for "any pixel", the whole screen
+ * will do), and a level whose tasks pick pixels shows the flat pixel preview: in the 3D view
+ * a screen cell is a few pixels wide, too small to hit by counting (issue 9).
+ */
+function pixelPickingProblems(level: Level): Problem[] {
+  const problems: Problem[] = [];
+  level.tasks.forEach((task, index) => {
+    const goal = task.goal;
+    const pixel = 'event' in goal && goal.event === 'pixel.selected' ? goal.with?.pixel : undefined;
+    if (!Array.isArray(pixel)) return;
+    const target = `screen.pixel:${pixel[0]},${pixel[1]}`;
+    if (task.guide !== target) problems.push({ path: ['tasks', index, 'guide'], message: `must be "${target}", the pixel its goal asks for` });
+  });
+  const picksPixels = level.tasks.some((task) => task.solution?.some((action) => action.type === 'pixel.selected'));
+  if (picksPixels && !level.ui.panels.includes('screen-preview')) {
+    problems.push({ path: ['ui', 'panels'], message: 'must include "screen-preview": a task picks a pixel, and the flat preview is where one is picked exactly' });
+  }
+  return problems;
 }
 
 function badgeProblems(level: Level): Problem[] {

@@ -201,6 +201,25 @@ describe('rules across fields (once every field is valid)', () => {
     ]);
   });
 
+  it('wants a task that picks a pixel to ring that pixel, in a level with the flat pixel preview', () => {
+    const picking = (level: Json & { tasks: Json[] }, guide: string) => {
+      level.tasks[0].goal = { event: 'pixel.selected', with: { pixel: [1, 2] } };
+      level.tasks[0].solution = [{ type: 'pixel.selected', pixel: [1, 2] }];
+      level.tasks[0].guide = guide;
+    };
+    expect(errorsOf((level) => picking(level, 'screen.pixel:2,1'))).toEqual([
+      'tasks[0].guide: must be "screen.pixel:1,2", the pixel its goal asks for',
+      'ui.panels: must include "screen-preview": a task picks a pixel, and the flat preview is where one is picked exactly',
+    ]);
+    const result = parseLevel(
+      levelFile((level) => {
+        picking(level, 'screen.pixel:1,2');
+        (level.ui as { panels: string[] }).panels.push('screen-preview');
+      }),
+    );
+    expect(result.ok ? [] : result.errors).toEqual([]);
+  });
+
   it('wants level badges to name tasks of the level', () => {
     expect(errorsOf((level) => (level.badges = [{ id: 'painter', title: 'Painter', text: 'You painted.', tasks: ['red-ball', 'paint'] }]))).toEqual([
       'badges[0].tasks[1]: no task "paint" in this level',
