@@ -116,8 +116,12 @@ export const labLayout = css`
       left: var(--rt-space);
       bottom: var(--rt-space);
       z-index: 5;
-      /* A thumbnail of the camera's image: big enough to click a pixel, small enough to leave the scene in view. */
-      width: min(240px, 30%);
+      /* A thumbnail of the camera's image: big enough to click a pixel (its cells are at least
+         26 px, so a wide screen widens it), small enough to leave the scene in view. */
+      width: max-content;
+      min-width: min(240px, 30%);
+      max-width: 60%;
+      overflow: auto;
       /* On a card like the view's buttons: its caption must stay readable over a light floor in the dark theme. */
       box-sizing: border-box;
       padding: 4px;

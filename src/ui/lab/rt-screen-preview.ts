@@ -14,6 +14,12 @@ const ARROWS: Readonly<Record<string, [number, number]>> = {
 };
 
 /**
+ * The smallest a pixel's button gets (CSS px): a target a pupil hits at the first try on a
+ * school laptop's touchpad (WCAG 2.2's 24 px minimum target size, plus the 1 px gaps).
+ */
+const MIN_CELL_PX = 26;
+
+/**
  * @summary The camera's traced image, enlarged: one button per pixel of its small screen,
  * filled with the pixel's colour. Choosing a pixel shows only its rays; choosing it again
  * (or "Show all pixels") shows every pixel's rays again.
@@ -125,7 +131,7 @@ export class RtScreenPreview extends StorePanel {
         data-guide="screen-preview.grid screen.grid"
         role="group"
         aria-label=${msg(str`Camera image, ${rays.columns} × ${rays.rows} pixels`)}
-        style=${styleMap({ gridTemplateColumns: `repeat(${rays.columns}, minmax(0, 1fr))` })}
+        style=${styleMap({ gridTemplateColumns: `repeat(${rays.columns}, minmax(${MIN_CELL_PX}px, 1fr))` })}
         @keydown=${this.onKeyDown}
       >
         ${rays.traces.map((trace, index) => {
