@@ -34,7 +34,7 @@ import { TransformGizmo } from './transform-gizmo.ts';
 import { sameSelection, stateCommand, type StateCommand } from './state-commands.ts';
 import { keyCommand, type ViewCommand } from './view-commands.ts';
 import { ViewControls } from './view-controls.ts';
-import { framingPose, type ViewPose } from './view-pose.ts';
+import { cameraViewFov, framingPose, type ViewPose } from './view-pose.ts';
 
 /** The hovered ray and where the pointer is, for a tooltip next to it. */
 export interface RayHoverDetail {
@@ -525,9 +525,10 @@ export class LabView {
     this.execute(command);
   }
 
+  /** At the tracer's camera, wide enough to show all of its screen of pixels in this view's shape. */
   private tracerCameraPose(): ViewPose {
-    const { position, target, fov } = this.store.state.scene.camera;
-    return { position: new Vector3(...position), target: new Vector3(...target), fov };
+    const { position, target, fov, pixels } = this.store.state.scene.camera;
+    return { position: new Vector3(...position), target: new Vector3(...target), fov: cameraViewFov(fov, pixels[0] / pixels[1], this.camera.aspect) };
   }
 
   /** Dispatches, showing the reason when the store refuses. Returns that reason. */

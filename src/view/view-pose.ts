@@ -64,6 +64,20 @@ export function interpolatePose(from: ViewPose, to: ViewPose, t: number, out: Vi
   return out;
 }
 
+/** Room left around the tracer's screen when the view flies to its camera (10 % each way). */
+const CAMERA_VIEW_MARGIN = 1.1;
+
+/**
+ * The 3D view's vertical field of view (degrees) at the tracer's camera, so that the whole
+ * screen of pixels fits in both directions, with a margin: the tracer frames `fovDeg`
+ * vertically and `fovDeg` widened by its screen's aspect horizontally (camera-rays.ts), and a
+ * view narrower than that screen must open up its vertical angle to show every column.
+ */
+export function cameraViewFov(fovDeg: number, screenAspect: number, viewAspect: number): number {
+  const tanHalf = Math.tan((fovDeg * Math.PI) / 360) * CAMERA_VIEW_MARGIN * Math.max(1, screenAspect / viewAspect);
+  return (Math.atan(tanHalf) * 360) / Math.PI;
+}
+
 /** The side the lab looks from at first: front left, above (the tracer's camera usually looks down −Z). */
 const FRAMING_DIRECTION = new Vector3(-0.5, 0.45, 0.74).normalize();
 

@@ -1,7 +1,7 @@
 import { PerspectiveCamera, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import type { Vec3 } from '../../src/scene/scene.ts';
-import { easeInOutCubic, framingPose, gestureActions, interpolatePose, type ViewPose } from '../../src/view/view-pose.ts';
+import { cameraViewFov, easeInOutCubic, framingPose, gestureActions, interpolatePose, type ViewPose } from '../../src/view/view-pose.ts';
 
 function pose(position: Vec3, target: Vec3, fov = 45): ViewPose {
   return { position: new Vector3(...position), target: new Vector3(...target), fov };
@@ -78,6 +78,35 @@ describe('the first view of a scene', () => {
         expect(Math.abs(ndc.x)).toBeLessThan(1);
         expect(Math.abs(ndc.y)).toBeLessThan(1);
       }
+    }
+  });
+});
+
+describe('the view at the tracer\'s camera', () => {
+  /** Where the tracer screen's corners land in a view of `viewAspect` (normalised device coordinates). */
+  function corners(fovDeg: number, columns: number, rows: number, viewAspect: number) {
+    const camera = new PerspectiveCamera(cameraViewFov(fovDeg, columns / rows, viewAspect), viewAspect, 0.1, 100);
+    camera.updateMatrixWorld();
+    const tan = Math.tan((fovDeg * Math.PI) / 360);
+    const x = tan * (columns / rows);
+    return [
+      [-x, tan],
+      [x, -tan],
+    ].map(([cx, cy]) => new Vector3(cx, cy, -1).project(camera));
+  }
+
+  it('shows every column of a screen wider than the view, with a margin', () => {
+    // Level 7's 10×6 screen in a 1.2:1 view: by height alone only ~72 % of its width would show.
+    for (const corner of corners(50, 10, 6, 1.2)) {
+      expect(Math.abs(corner.x)).toBeCloseTo(1 / 1.1, 6);
+      expect(Math.abs(corner.y)).toBeLessThan(1 / 1.1);
+    }
+  });
+
+  it('shows every row of a screen narrower than the view, with a margin', () => {
+    for (const corner of corners(40, 6, 4, 2)) {
+      expect(Math.abs(corner.y)).toBeCloseTo(1 / 1.1, 6);
+      expect(Math.abs(corner.x)).toBeLessThan(1);
     }
   });
 });
