@@ -22,7 +22,7 @@ import {
 import type { RayViewOptions } from '../lab-state/lab-state.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
 import type { RayHover, RayLayer } from './ray-layer.ts';
-import { ALPHA_ATTRIBUTE, createRayMaterial, FULLY_GROWN, GROWTH_ATTRIBUTE, type TravelUniform } from './ray-shader.ts';
+import { ALPHA_ATTRIBUTE, createRayMaterial, FULLY_GROWN, GROWTH_ATTRIBUTE, type TravelUniform, type ViewHeightUniform } from './ray-shader.ts';
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
 
 /** Sides of a ray's cylinder: rays are a few pixels wide, where 6 sides already look round. */
@@ -179,8 +179,10 @@ export class RayPool implements RayLayer {
   /** What contribution colour fades toward; set it to the view's background if you like. */
   style: RayStyle = { fadeTo: [0, 0, 0] };
   private readonly travel: TravelUniform = { value: FULLY_GROWN };
-  private readonly rayMaterial = createRayMaterial('cylinder', this.travel);
-  private readonly coneMaterial = createRayMaterial('cone', this.travel);
+  /** The canvas height (CSS px) the rays are drawn into: their minimum width on screen follows it. */
+  private readonly viewHeight: ViewHeightUniform = { value: 1 };
+  private readonly rayMaterial = createRayMaterial('cylinder', this.travel, this.viewHeight);
+  private readonly coneMaterial = createRayMaterial('cone', this.travel, this.viewHeight);
   private readonly cylinders = new InstanceBuffers('cylinder', this.rayMaterial, this.object);
   private readonly cones = new InstanceBuffers('cone', this.coneMaterial, this.object);
   private readonly drawn = new DrawnRays();

@@ -6,24 +6,34 @@
  *   shader scales the instance by clamp((uTravel − start) / length, 0, 1), where uTravel =
  *   elapsed time × speed is the one uniform that changes per frame. Cylinders grow along
  *   their axis (local z); cones are scaled as a whole about their apex.
+ * - a minimum width on screen: a cylinder thinner than RAY_MIN_WIDTH_PX at its depth is
+ *   widened to it, so a 1 cm ray stays visible in a scene seen from 10 m (uViewHeight is the
+ *   canvas height in CSS px, set before each draw).
  */
-import { DoubleSide, MeshBasicMaterial, type WebGLProgramParametersWithUniforms } from 'three';
+import { DoubleSide, MeshBasicMaterial, Vector2, type WebGLProgramParametersWithUniforms } from 'three';
 
 export const ALPHA_ATTRIBUTE = 'aAlpha';
 export const GROWTH_ATTRIBUTE = 'aGrowth';
 
+/** The thinnest a ray is drawn, in CSS px (issue 9: readable at a level's starting view). */
+export const RAY_MIN_WIDTH_PX = 3;
+
 /** Travel that every ray has reached: the animation is off or over. */
 export const FULLY_GROWN = 1e30;
 
-/** The shared uniform: one object, so setting `.value` needs no recompile. */
+/** A shared uniform: one object, so setting `.value` needs no recompile. */
 export interface TravelUniform {
   value: number;
 }
+
+/** The canvas height in CSS px, shared like the travel. */
+export type ViewHeightUniform = TravelUniform;
 
 const VERTEX_HEAD = /* glsl */ `#include <common>
 attribute float ${ALPHA_ATTRIBUTE};
 attribute vec2 ${GROWTH_ATTRIBUTE};
 uniform float uTravel;
+uniform float uViewHeight;
 varying float vRayAlpha;`;
 
 const VERTEX_GROW = /* glsl */ `#include <begin_vertex>
@@ -32,6 +42,11 @@ float rayGrown = clamp((uTravel - ${GROWTH_ATTRIBUTE}.x) / max(${GROWTH_ATTRIBUT
 transformed *= rayGrown;
 #else
 transformed.z *= rayGrown;
+// A pixel at view depth d spans 2 d tan(fov / 2) / H, and projectionMatrix[1][1] = 1 / tan(fov / 2).
+vec4 rayAxisView = modelViewMatrix * instanceMatrix * vec4(0.0, 0.0, transformed.z, 1.0);
+float rayPixel = 2.0 * max(-rayAxisView.z, 1e-4) / (projectionMatrix[1][1] * max(uViewHeight, 1.0));
+float rayRadius = length((modelViewMatrix * instanceMatrix * vec4(1.0, 0.0, 0.0, 0.0)).xyz);
+transformed.xy *= max(1.0, 0.5 * ${RAY_MIN_WIDTH_PX.toFixed(1)} * rayPixel / max(rayRadius, 1e-9));
 #endif
 vRayAlpha = ${ALPHA_ATTRIBUTE};`;
 
@@ -41,6 +56,8 @@ varying float vRayAlpha;`;
 const FRAGMENT_ALPHA = /* glsl */ `#include <color_fragment>
 diffuseColor.a *= vRayAlpha;`;
 
+const drawingSize = new Vector2();
+
 /** Replaces one `#include` of three's shader source, failing loudly if three renamed it. */
 function patch(source: string, include: string, replacement: string): string {
   if (!source.includes(include)) throw new Error(`ray shader: three.js's shader has no ${include} any more`);
@@ -48,8 +65,13 @@ function patch(source: string, include: string, replacement: string): string {
 }
 
 /** Applies the ray attributes to a compiled MeshBasicMaterial's shader (exported for the tests). */
-export function patchRayShader(shader: Pick<WebGLProgramParametersWithUniforms, 'vertexShader' | 'fragmentShader' | 'uniforms'>, travel: TravelUniform): void {
+export function patchRayShader(
+  shader: Pick<WebGLProgramParametersWithUniforms, 'vertexShader' | 'fragmentShader' | 'uniforms'>,
+  travel: TravelUniform,
+  viewHeight: ViewHeightUniform,
+): void {
   shader.uniforms.uTravel = travel;
+  shader.uniforms.uViewHeight = viewHeight;
   shader.vertexShader = patch(patch(shader.vertexShader, '#include <common>', VERTEX_HEAD), '#include <begin_vertex>', VERTEX_GROW);
   shader.fragmentShader = patch(patch(shader.fragmentShader, '#include <common>', FRAGMENT_HEAD), '#include <color_fragment>', FRAGMENT_ALPHA);
 }
@@ -58,7 +80,7 @@ export function patchRayShader(shader: Pick<WebGLProgramParametersWithUniforms, 
  * A ray material. Cones are seen from inside and out (double-sided) in one pass: the
  * instances are not sorted anyway, and one pass keeps them at one draw call.
  */
-export function createRayMaterial(kind: 'cylinder' | 'cone', travel: TravelUniform): MeshBasicMaterial {
+export function createRayMaterial(kind: 'cylinder' | 'cone', travel: TravelUniform, viewHeight: ViewHeightUniform): MeshBasicMaterial {
   const material = new MeshBasicMaterial({ color: 0xffffff });
   // Always blended, as alpha comes per instance; ray-pool.ts turns depthWrite off for see-through rays.
   material.transparent = true;
@@ -68,6 +90,9 @@ export function createRayMaterial(kind: 'cylinder' | 'cone', travel: TravelUnifo
     material.forceSinglePass = true;
     material.depthWrite = false;
   }
-  material.onBeforeCompile = (shader) => patchRayShader(shader, travel);
+  material.onBeforeCompile = (shader) => patchRayShader(shader, travel, viewHeight);
+  material.onBeforeRender = (renderer) => {
+    viewHeight.value = renderer.getSize(drawingSize).y;
+  };
   return material;
 }

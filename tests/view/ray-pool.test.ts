@@ -212,12 +212,14 @@ describe('RayPool growth animation', () => {
   it('patches three.js\'s basic shader with the growth and alpha attributes, failing loudly if its chunks change', () => {
     const shader = { vertexShader: ShaderLib.basic.vertexShader, fragmentShader: ShaderLib.basic.fragmentShader, uniforms: {} };
     const uniform = { value: 3 };
-    patchRayShader(shader, uniform);
+    const viewHeight = { value: 768 };
+    patchRayShader(shader, uniform, viewHeight);
     expect(shader.vertexShader).toContain(`attribute vec2 ${GROWTH_ATTRIBUTE}`);
     expect(shader.vertexShader).toMatch(/transformed\.z \*= rayGrown/);
     expect(shader.fragmentShader).toContain('diffuseColor.a *= vRayAlpha');
-    expect(shader.uniforms).toEqual({ uTravel: uniform });
-    expect(() => patchRayShader({ vertexShader: 'void main() {}', fragmentShader: '', uniforms: {} }, uniform)).toThrow(/begin_vertex|common/);
+    expect(shader.vertexShader).toContain('transformed.xy *= max(1.0, 0.5 * 3.0 * rayPixel');
+    expect(shader.uniforms).toEqual({ uTravel: uniform, uViewHeight: viewHeight });
+    expect(() => patchRayShader({ vertexShader: 'void main() {}', fragmentShader: '', uniforms: {} }, uniform, viewHeight)).toThrow(/begin_vertex|common/);
   });
 });
 
