@@ -16,6 +16,7 @@ import '../controls/rt-toast.ts';
 import './panels/rt-file-panel.ts';
 import './panels/rt-light-panel.ts';
 import './panels/rt-object-panel.ts';
+import './panels/rt-ray-legend.ts';
 import './panels/rt-ray-panel.ts';
 import './panels/rt-scene-list.ts';
 import './panels/rt-tracer-panel.ts';

@@ -129,6 +129,19 @@ export const labLayout = css`
       background: var(--rt-surface);
       box-shadow: var(--rt-shadow);
     }
+    /* The ray colours over the view, below its top toolbar, in levels whose ray panel does not show them. */
+    rt-ray-legend.view-legend {
+      position: absolute;
+      top: 60px;
+      left: var(--rt-space);
+      z-index: 5;
+      width: 10.5em;
+      box-sizing: border-box;
+      padding: 6px 8px;
+      border-radius: var(--rt-radius);
+      background: var(--rt-surface);
+      box-shadow: var(--rt-shadow);
+    }
     rt-render-window {
       position: absolute;
       inset: var(--rt-space);

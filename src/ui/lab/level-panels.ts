@@ -8,12 +8,18 @@ export interface LevelPanels {
   controls(panel: LabPanel): readonly string[] | undefined;
   /** The gizmo buttons on show: none without the gizmo panel, else the level's choice (undefined: all). */
   gizmo: readonly string[] | undefined;
+  /**
+   * Whether the ray colours' legend goes over the 3D view: where the level's ray panel does
+   * not show it, which rays are which must still be readable wherever rays are drawn.
+   */
+  viewLegend: boolean;
 }
 
 /** A level's own choice of panels and controls (plus the view and its screen), or everything in the free lab. */
 export function levelPanels(level: Level | undefined): LevelPanels {
-  if (!level) return { panels: new Set<LabPanel>([...ALWAYS_SHOWN, ...UI_PANELS]), controls: () => undefined, gizmo: undefined };
+  if (!level) return { panels: new Set<LabPanel>([...ALWAYS_SHOWN, ...UI_PANELS]), controls: () => undefined, gizmo: undefined, viewLegend: false };
   const panels = new Set<LabPanel>([...ALWAYS_SHOWN, ...level.ui.panels]);
   const chosen = level.ui.controls as Partial<Record<LabPanel, readonly string[]>> | undefined;
-  return { panels, controls: (panel) => chosen?.[panel], gizmo: panels.has('gizmo') ? chosen?.gizmo : [] };
+  const panelLegend = panels.has('rays') && (chosen?.rays?.includes('legend') ?? true);
+  return { panels, controls: (panel) => chosen?.[panel], gizmo: panels.has('gizmo') ? chosen?.gizmo : [], viewLegend: !panelLegend };
 }

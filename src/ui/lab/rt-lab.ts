@@ -215,7 +215,7 @@ export class RtLab extends LitElement {
     const session = this.game.session;
     const engine = session?.engine;
     const locale = session?.locale ?? 'en';
-    const { panels, controls, gizmo } = levelPanels(this.level());
+    const { panels, controls, gizmo, viewLegend } = levelPanels(this.level());
     const shows = (panel: UiPanel) => panels.has(panel);
     const catalog = session?.catalog ?? { chapters: [], errors: [] };
     const panel = (name: UiPanel, part: unknown) => (shows(name) ? part : nothing);
@@ -257,6 +257,7 @@ export class RtLab extends LitElement {
           @view-ready=${this.onViewReady}
         ></rt-scene-view>
         ${shows('screen-preview') ? html`<rt-screen-preview .rays=${this.services.screenRays}></rt-screen-preview>` : nothing}
+        ${viewLegend && state.rays.showRays ? html`<rt-ray-legend class="view-legend"></rt-ray-legend>` : nothing}
         <rt-ray-tooltip .hover=${this.hover?.hover ?? null} .x=${this.hover?.x ?? 0} .y=${this.hover?.y ?? 0}></rt-ray-tooltip>
         <rt-render-window
           .pool=${this.services.renderPool}
