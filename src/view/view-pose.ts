@@ -83,20 +83,29 @@ const FRAMING_DIRECTION = new Vector3(-0.5, 0.45, 0.74).normalize();
 
 /**
  * A first view of a scene: looking at the middle of `centrePoints` (objects and the tracer's
- * camera) from the front left and above, far enough back that every point of `allPoints`
- * (lights too) fits in the vertical fov and, for a narrow view, the horizontal one.
+ * camera) from the front left and above (or from `direction`, a unit vector from the target
+ * towards the eye), far enough back that every point of `allPoints` (lights too) fits in the
+ * vertical fov and, for a narrow view, the horizontal one.
  */
-export function framingPose(centrePoints: readonly Vec3[], allPoints: readonly Vec3[], fov: number, aspect: number): ViewPose {
+export function framingPose(
+  centrePoints: readonly Vec3[],
+  allPoints: readonly Vec3[],
+  fov: number,
+  aspect: number,
+  direction: Vector3 = FRAMING_DIRECTION,
+): ViewPose {
   const box = new Box3();
   for (const point of centrePoints) box.expandByPoint(offset.set(...point));
   const target = box.isEmpty() ? new Vector3() : box.getCenter(new Vector3());
   let radius = 1;
   for (const point of allPoints) radius = Math.max(radius, offset.set(...point).distanceTo(target));
   const halfFov = (fov * Math.PI) / 360;
-  // The tighter of the vertical half-angle and the horizontal one (narrow views).
-  const tan = Math.min(Math.tan(halfFov), Math.tan(halfFov) * aspect);
-  const distance = radius / tan;
-  return { position: target.clone().addScaledVector(FRAMING_DIRECTION, distance), target, fov };
+  // The tighter of the vertical half-angle and the horizontal one (narrow views). A sphere of
+  // radius r fits a cone of half-angle a from distance r / sin(a) (r / tan(a) would cut off
+  // the points on the near side).
+  const half = Math.min(halfFov, Math.atan(Math.tan(halfFov) * aspect));
+  const distance = radius / Math.sin(half);
+  return { position: target.clone().addScaledVector(direction, distance), target, fov };
 }
 
 const offset = new Vector3();
