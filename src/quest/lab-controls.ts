@@ -18,7 +18,7 @@ export type LabPanel = UiPanel | (typeof ALWAYS_SHOWN)[number];
 
 /** Every panel's controls. */
 export const LAB_CONTROLS = {
-  view: ['canvas', 'orbit-buttons', 'pan-buttons', 'zoom-buttons', 'fly-to-camera', 'help'],
+  view: ['canvas', 'orbit-buttons', 'pan-buttons', 'zoom-buttons', 'fly-to-camera', 'show-pixel-rays', 'help'],
   screen: ['grid'],
   'scene-list': ['objects', 'lights'],
   object: ['color', 'ambient', 'diffuse', 'specular', 'shininess', 'transparent', 'refractive-index', 'presets'],

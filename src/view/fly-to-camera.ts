@@ -39,6 +39,12 @@ export class CameraFlight {
     this.changed(true);
   }
 
+  /** Glides to `pose` as the user's own new viewpoint (not the camera's: no way back, no following). */
+  glide(pose: ViewPose): void {
+    this.following = false;
+    this.fly(pose, () => {});
+  }
+
   /** Flies back to where the first flight to the camera started. */
   back(): void {
     const home = this.home;

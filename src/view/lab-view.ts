@@ -34,6 +34,7 @@ import { TransformGizmo } from './transform-gizmo.ts';
 import { sameSelection, stateCommand, type StateCommand } from './state-commands.ts';
 import { keyCommand, type ViewCommand } from './view-commands.ts';
 import { ViewControls } from './view-controls.ts';
+import { rayPathPoints } from './ray-path-points.ts';
 import { cameraViewFov, framingPose, type ViewPose } from './view-pose.ts';
 
 /** The hovered ray and where the pointer is, for a tooltip next to it. */
@@ -112,6 +113,8 @@ export class LabView {
   private hoverQueued = false;
   private pointer: { x: number; y: number } | null = null;
   private frames = 0;
+  /** The camera's pixels' latest rays (for "show its rays"). */
+  private screenRays: ScreenRays | null = null;
   private sized = false;
 
   constructor(
@@ -216,6 +219,7 @@ export class LabView {
 
   /** Colours the camera's screen with the traced pixels. */
   setScreenRays(rays: ScreenRays): void {
+    this.screenRays = rays;
     this.cameraScreen.setScreenRays(rays);
     this.requestRender();
   }
@@ -267,6 +271,8 @@ export class LabView {
         return this.apply(stateCommand(command, state));
       case 'fly':
         return this.flight.atCamera ? this.flyBack() : this.flyToCamera();
+      case 'show-pixel-rays':
+        return this.showPixelRays();
       case 'help':
         return this.emit('help', undefined);
       default:
@@ -298,6 +304,23 @@ export class LabView {
   /** Glides to the ray tracer's camera (eye, target, fov); reports view.flew-to-camera on arrival. */
   flyToCamera(): void {
     this.flight.flyTo(this.tracerCameraPose(), () => this.dispatch({ type: 'view.flew-to-camera' }));
+  }
+
+  /**
+   * "Show its rays": glides, from the side the view looks from now, to where the chosen
+   * pixel's whole ray path (and the camera it starts at) fits the view.
+   */
+  showPixelRays(): void {
+    const pixel = this.store.state.selectedPixel;
+    const trace = pixel && this.screenRays?.traces.find((candidate) => candidate.pixel[0] === pixel[0] && candidate.pixel[1] === pixel[1]);
+    if (!trace) {
+      this.emit('message', msg('Choose a pixel first: its rays are what this shows.'));
+      return;
+    }
+    const points = [...rayPathPoints(trace), this.store.state.scene.camera.position];
+    const pose = this.controls.pose;
+    const direction = pose.position.clone().sub(pose.target).normalize();
+    this.flight.glide(framingPose(points, points, this.camera.fov, this.camera.aspect, direction));
   }
 
   /** Glides back to where the view was before flying to the camera. */

@@ -16,6 +16,7 @@ export type ViewCommand =
   | { kind: 'delete' }
   | { kind: 'escape' }
   | { kind: 'fly' }
+  | { kind: 'show-pixel-rays' }
   | { kind: 'select-next'; step: 1 | -1 }
   | { kind: 'help' };
 
@@ -81,6 +82,8 @@ export function keyCommand(press: KeyPress, hasSelection: boolean): ViewCommand 
       return { kind: 'toggle-snap' };
     case 'f':
       return { kind: 'fly' };
+    case 'p':
+      return { kind: 'show-pixel-rays' };
     case 'n':
       return { kind: 'select-next', step: press.shiftKey ? -1 : 1 };
   }
@@ -109,6 +112,7 @@ export function keyHelp(): KeyHelp[] {
     { keys: ['Delete'], description: msg('Delete the selected object or light') },
     { keys: ['Esc'], description: msg('Deselect; leave the camera view; close this panel') },
     { keys: ['F'], description: msg("Fly to the ray tracer's camera, and back") },
+    { keys: ['P'], description: msg("Show the chosen pixel's rays: the view moves so that its whole ray path fits") },
     { keys: ['?'], description: msg('Open this help') },
   ];
 }

@@ -43,6 +43,7 @@ describe('the view’s keys', () => {
     expect(keyCommand(press('Backspace'), true)).toEqual({ kind: 'delete' });
     expect(keyCommand(press('Escape'), true)).toEqual({ kind: 'escape' });
     expect(keyCommand(press('f'), false)).toEqual({ kind: 'fly' });
+    expect(keyCommand(press('p'), false)).toEqual({ kind: 'show-pixel-rays' });
     expect(keyCommand(press('n'), false)).toEqual({ kind: 'select-next', step: 1 });
     expect(keyCommand(press('N', { shiftKey: true }), false)).toEqual({ kind: 'select-next', step: -1 });
     expect(keyCommand(press('?', { shiftKey: true }), false)).toEqual({ kind: 'help' });
@@ -56,7 +57,7 @@ describe('the view’s keys', () => {
       expect(keyCommand(press(asKey[label] ?? label), true), label).not.toBeNull();
     }
     // Every command a key gives appears in the help (by its key).
-    for (const key of ['ArrowUp', '+', '-', 't', 'r', 's', 'g', 'Tab', 'n', 'Delete', 'Escape', 'f', '?']) {
+    for (const key of ['ArrowUp', '+', '-', 't', 'r', 's', 'g', 'Tab', 'n', 'Delete', 'Escape', 'f', 'p', '?']) {
       const shown = key.length === 1 ? key.toUpperCase() : { ArrowUp: '↑', Delete: 'Delete', Escape: 'Esc', Tab: 'Tab' }[key];
       expect(printed.some((label) => label === shown || (key === '-' && label === '−')), key).toBe(true);
     }

@@ -140,6 +140,7 @@ export class RtSceneView extends LitElement {
         .allowedModes=${state ? modesShown(state) : []}
         .gizmoControls=${this.gizmoControls}
         ?at-camera=${this.atCamera}
+        ?pixel-selected=${state?.selectedPixel != null}
         @view-command=${this.onCommand}
         @keydown=${this.onToolbarKey}
       ></rt-view-toolbar>

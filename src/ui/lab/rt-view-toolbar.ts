@@ -29,6 +29,7 @@ export class RtViewToolbar extends LitElement {
     gizmo: { attribute: false },
     allowedModes: { attribute: false },
     atCamera: { type: Boolean, attribute: 'at-camera' },
+    pixelSelected: { type: Boolean, attribute: 'pixel-selected' },
     gizmoControls: { attribute: false },
   };
 
@@ -170,6 +171,8 @@ export class RtViewToolbar extends LitElement {
   declare allowedModes: readonly GizmoMode[];
   /** Whether the view is at the ray tracer's camera: the fly button then flies back. */
   declare atCamera: boolean;
+  /** Whether a pixel is chosen: "Show its rays" is offered then. */
+  declare pixelSelected: boolean;
   /** The gizmo buttons on show (undefined: all). */
   declare gizmoControls: readonly string[] | undefined;
 
@@ -178,6 +181,7 @@ export class RtViewToolbar extends LitElement {
     this.gizmo = DEFAULT_GIZMO;
     this.allowedModes = GIZMO_MODES;
     this.atCamera = false;
+    this.pixelSelected = false;
     this.gizmoControls = undefined;
     new GuideHostController(this);
   }
@@ -208,6 +212,17 @@ export class RtViewToolbar extends LitElement {
         ${modes.length > 0 ? html`<div class="group" role="group" aria-label=${msg('Gizmo mode')}>${modes}</div>` : nothing}
         ${options.length > 0 ? html`<div class="group" role="group" aria-label=${msg('Gizmo options')}>${options}</div>` : nothing}
         <div class="group end">
+          ${this.pixelSelected
+            ? html`<button
+                data-command="show-pixel-rays"
+                data-guide="view.show-pixel-rays"
+                title=${msg("Move the view so that the chosen pixel's whole ray path fits (P)")}
+                @click=${() => this.send({ kind: 'show-pixel-rays' })}
+              >
+                ${icon(svg`<path d="M3 6V3h3M14 3h3v3M17 14v3h-3M6 17H3v-3" /><circle cx="10" cy="10" r="2.5" />`)}
+                <span>${msg('Show its rays')}</span>
+              </button>`
+            : nothing}
           <button
             data-command="fly"
             data-guide="view.fly-to-camera"

@@ -1,0 +1,21 @@
+import type { Vec3 } from '../scene/scene.ts';
+import type { PixelTrace, RayNode } from '../tracer/ray-tree.ts';
+
+/**
+ * How far a ray that hit nothing counts when a pixel's rays are framed (metres): it is drawn
+ * 10 m long towards the sky, and framing all of it would shrink the path that matters.
+ */
+export const MISS_REACH = 1;
+
+/** Every point a pixel's rays start, end or fan out to (area cones' corners): what "show its rays" frames. */
+export function rayPathPoints(trace: PixelTrace): Vec3[] {
+  const points: Vec3[] = [];
+  const visit = (node: RayNode) => {
+    const reach = node.hit ? node.length : Math.min(node.length, MISS_REACH);
+    points.push(node.origin, [0, 1, 2].map((axis) => node.origin[axis] + node.direction[axis] * reach) as Vec3);
+    if (node.corners) points.push(...node.corners);
+    node.children.forEach(visit);
+  };
+  trace.rays.forEach(visit);
+  return points;
+}
