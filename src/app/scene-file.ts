@@ -2,6 +2,7 @@ import { isRecord } from '../util/is-record.ts';
 import { readJson } from '../util/read-json.ts';
 import { parseScene, type SceneParseResult } from '../scene/scene-schema.ts';
 import type { Scene } from '../scene/scene.ts';
+import { localize, type Locale } from '../util/localized-text.ts';
 
 /**
  * A scene as a file a learner saves, mails and loads again: the scene format of
@@ -19,11 +20,12 @@ export function sceneFileText(scene: Scene): string {
 }
 
 /**
- * `<scene-name>.scene.json`, e.g. `three-spheres-and-a-box.scene.json`: lower-case ASCII
- * letters, digits and hyphens (accents dropped); `scene.scene.json` when nothing remains.
+ * `<scene-name>.scene.json`, e.g. `three-spheres-and-a-box.scene.json`: the name in `locale`
+ * (a learner in Dutch saves `een-bal-en-een-doos.scene.json`), as lower-case ASCII letters,
+ * digits and hyphens (accents dropped); `scene.scene.json` when nothing remains.
  */
-export function sceneFileName(scene: Scene): string {
-  const slug = (scene.name ?? '')
+export function sceneFileName(scene: Scene, locale: Locale = 'en'): string {
+  const slug = (scene.name === undefined ? '' : localize(scene.name, locale))
     .normalize('NFKD')
     .replace(/[\u0300-\u036f]/g, '')
     .toLowerCase()
