@@ -6,10 +6,13 @@ import type { RayHover } from '../../view/ray-layer.ts';
 import { paletteNameFor, rayColorKey, rayPalette } from '../../view/ray-palette.ts';
 import { rayTypeName } from './ray-names.ts';
 import { itemName } from './scene-names.ts';
+import { localNumbers } from '../../i18n/number-format.ts';
 import { StorePanel } from './panels/store-panel.ts';
 
 /** Gap between the pointer and the tooltip, in CSS pixels (clear of the cursor's arrow). */
 const POINTER_GAP = 14;
+
+const percentFormat = localNumbers({ maximumFractionDigits: 1 });
 
 /**
  * A colour as the rendered image shows it: round(clamp(c) · 255) per channel with no gamma,
@@ -19,10 +22,10 @@ export function colorBytes(color: Color): [number, number, number] {
   return color.map((c) => Math.round(Math.min(1, Math.max(0, c)) * 255)) as [number, number, number];
 }
 
-/** A share of the pixel as the tooltip writes it: "12.5 %", "< 0.1 %" for tiny non-zero shares. */
+/** A share of the pixel as the tooltip writes it: "12.5 %" ("12,5 %" in Dutch), "< 0.1 %" for tiny non-zero shares. */
 export function formatShare(share: number): string {
   if (share > 0 && share < 0.001) return msg('< 0.1 %');
-  return msg(str`${Number((share * 100).toFixed(1))} %`);
+  return msg(str`${percentFormat.format(share * 100)} %`);
 }
 
 /**

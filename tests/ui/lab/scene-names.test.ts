@@ -5,11 +5,11 @@
 import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import { defaultScene } from '../../../src/scene/scene-defaults.ts';
 import type { Scene } from '../../../src/scene/scene.ts';
-import { MemoryStorage } from '../../../src/quest/progress-store.ts';
+import { standInPage } from '../../support/page-locale.ts';
 
 describe('names of what is in the scene', () => {
   let names: typeof import('../../../src/ui/lab/scene-names.ts');
-  let locale: typeof import('../../../src/i18n/locale.ts');
+  let speak: (locale: 'en' | 'nl') => Promise<void>;
   const base = defaultScene();
   const scene: Scene = {
     ...base,
@@ -22,11 +22,7 @@ describe('names of what is in the scene', () => {
   };
 
   beforeAll(async () => {
-    vi.stubGlobal('window', new EventTarget());
-    vi.stubGlobal('document', { documentElement: { lang: 'en' }, querySelectorAll: () => [] });
-    vi.stubGlobal('localStorage', new MemoryStorage());
-    vi.stubGlobal('location', { search: '' });
-    locale = await import('../../../src/i18n/locale.ts');
+    speak = await standInPage();
     names = await import('../../../src/ui/lab/scene-names.ts');
   });
 
@@ -36,16 +32,16 @@ describe('names of what is in the scene', () => {
 
   it('are Dutch in Dutch, English in English, and fall back to English, the plain name or the id', async () => {
     const shown = () => ['ball', 'box', 'cube-1', 'key', 'gone'].map((id) => names.itemName(scene, id));
-    await locale.useLocale('nl');
+    await speak('nl');
     expect(shown()).toEqual(['Rode bal', 'Old box', 'cube-1', 'Key light', 'gone']);
-    await locale.useLocale('en');
+    await speak('en');
     expect(shown()).toEqual(['Red ball', 'Old box', 'cube-1', 'Key light', 'gone']);
   });
 
   it('give the scene its name, or what the caller has for a scene without one', async () => {
-    await locale.useLocale('nl');
+    await speak('nl');
     expect(names.shownName({ en: 'A ball and a box', nl: 'Een bal en een doos' }, 'Naamloos')).toBe('Een bal en een doos');
     expect(names.shownName(undefined, 'Naamloos')).toBe('Naamloos');
-    await locale.useLocale('en');
+    await speak('en');
   });
 });
