@@ -1,3 +1,4 @@
+import { msg, str } from '@lit/localize';
 import { isRecord } from '../util/is-record.ts';
 import { readJson } from '../util/read-json.ts';
 import { parseScene, type SceneParseResult } from '../scene/scene-schema.ts';
@@ -41,7 +42,11 @@ export function sceneFileName(scene: Scene, locale: Locale = 'en'): string {
  * for its scene, so a teacher can start the sandbox from a level.
  */
 export function readSceneFile(text: string, bytes = text.length): SceneParseResult {
-  if (bytes > MAX_SCENE_FILE_BYTES) return { ok: false, errors: [`(root): the file is ${Math.round(bytes / 1024)} kB; a scene file is at most ${MAX_SCENE_FILE_BYTES / 1024} kB`] };
+  if (bytes > MAX_SCENE_FILE_BYTES) {
+    const size = Math.round(bytes / 1024);
+    const most = MAX_SCENE_FILE_BYTES / 1024;
+    return { ok: false, errors: [msg(str`(root): the file is ${size} kB; a scene file is at most ${most} kB`)] };
+  }
   const json = readJson(text);
   if (!json.ok) return { ok: false, errors: [json.error] };
   if (!isRecord(json.value) || !('tasks' in json.value && 'scene' in json.value)) return parseScene(json.value);
