@@ -1,7 +1,9 @@
+import { msg, str } from '@lit/localize';
 import { isRecord } from '../util/is-record.ts';
 import { readJson } from '../util/read-json.ts';
 import { parseScene, type SceneParseResult } from '../scene/scene-schema.ts';
 import type { Scene } from '../scene/scene.ts';
+import { localize, type Locale } from '../util/localized-text.ts';
 
 /**
  * A scene as a file a learner saves, mails and loads again: the scene format of
@@ -19,11 +21,12 @@ export function sceneFileText(scene: Scene): string {
 }
 
 /**
- * `<scene-name>.scene.json`, e.g. `three-spheres-and-a-box.scene.json`: lower-case ASCII
- * letters, digits and hyphens (accents dropped); `scene.scene.json` when nothing remains.
+ * `<scene-name>.scene.json`, e.g. `three-spheres-and-a-box.scene.json`: the name in `locale`
+ * (a learner in Dutch saves `een-bal-en-een-doos.scene.json`), as lower-case ASCII letters,
+ * digits and hyphens (accents dropped); `scene.scene.json` when nothing remains.
  */
-export function sceneFileName(scene: Scene): string {
-  const slug = (scene.name ?? '')
+export function sceneFileName(scene: Scene, locale: Locale = 'en'): string {
+  const slug = (scene.name === undefined ? '' : localize(scene.name, locale))
     .normalize('NFKD')
     .replace(/[\u0300-\u036f]/g, '')
     .toLowerCase()
@@ -39,7 +42,11 @@ export function sceneFileName(scene: Scene): string {
  * for its scene, so a teacher can start the sandbox from a level.
  */
 export function readSceneFile(text: string, bytes = text.length): SceneParseResult {
-  if (bytes > MAX_SCENE_FILE_BYTES) return { ok: false, errors: [`(root): the file is ${Math.round(bytes / 1024)} kB; a scene file is at most ${MAX_SCENE_FILE_BYTES / 1024} kB`] };
+  if (bytes > MAX_SCENE_FILE_BYTES) {
+    const size = Math.round(bytes / 1024);
+    const most = MAX_SCENE_FILE_BYTES / 1024;
+    return { ok: false, errors: [msg(str`(root): the file is ${size} kB; a scene file is at most ${most} kB`)] };
+  }
   const json = readJson(text);
   if (!json.ok) return { ok: false, errors: [json.error] };
   if (!isRecord(json.value) || !('tasks' in json.value && 'scene' in json.value)) return parseScene(json.value);

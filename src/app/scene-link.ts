@@ -49,7 +49,8 @@ export async function decodeSceneLink(hash: string): Promise<SceneParseResult> {
   try {
     text = new TextDecoder('utf-8', { fatal: true }).decode(await inflate(bytes, MAX_SCENE_FILE_BYTES));
   } catch (error) {
-    return damaged(error instanceof InflatedTooLarge ? msg(str`${error.message}, more than any scene`) : msg('it was cut short or changed'));
+    // The whole reason in the learner's language: the error's own message is English.
+    return damaged(error instanceof InflatedTooLarge ? msg(str`it unpacks to more than ${error.limit / 1024} kB, more than any scene`) : msg('it was cut short or changed'));
   }
   const json = readJson(text);
   return json.ok ? parseScene(json.value) : damaged(json.error);

@@ -70,7 +70,8 @@ export async function decodeAssignment(hash: string, catalog?: LevelCatalog): Pr
   try {
     text = new TextDecoder('utf-8', { fatal: true }).decode(await inflate(bytes, MAX_ASSIGNMENT_BYTES));
   } catch (error) {
-    return damaged(error instanceof InflatedTooLarge ? msg(str`${error.message}, more than any assignment`) : msg('it was cut short or changed'));
+    // The whole reason in the learner's language: the error's own message is English.
+    return damaged(error instanceof InflatedTooLarge ? msg(str`it unpacks to more than ${error.limit / 1024} kB, more than any assignment`) : msg('it was cut short or changed'));
   }
   const json = readJson(text);
   if (!json.ok) return damaged(json.error);

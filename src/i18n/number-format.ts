@@ -18,3 +18,20 @@ export function localNumbers(options: Intl.NumberFormatOptions = {}): { format(v
     },
   };
 }
+
+const fieldFormats = new Map<string, Intl.NumberFormat>();
+
+/**
+ * `value` with exactly `decimals` decimals as the reader's language writes it, without
+ * thousands separators: "1000,50" in Dutch, "1000.50" in English. For fields a learner
+ * edits and reads back, where "1.000" would read as one in English and 1000 in Dutch.
+ */
+export function fieldNumber(value: number, decimals: number): string {
+  const key = `${currentLocale()} ${decimals}`;
+  let format = fieldFormats.get(key);
+  if (!format) {
+    format = new Intl.NumberFormat(currentLocale(), { minimumFractionDigits: decimals, maximumFractionDigits: decimals, useGrouping: false });
+    fieldFormats.set(key, format);
+  }
+  return format.format(value);
+}

@@ -1,17 +1,13 @@
 import { z } from 'zod';
 import { chosenBy } from './chosen-schema.ts';
+import type { LocalizedText } from '../util/localized-text.ts';
 
 /**
- * Level text is keyed by locale (DESIGN.md: English first, Dutch follows). A text in a level
- * file is either a plain string, which is English, or an object with one string per
- * language: `{ "en": "Select the ball.", "nl": "Selecteer de bal." }`. English is always
- * there, so a missing translation falls back to it instead of to nothing.
+ * Level texts are localized texts (src/util/localized-text.ts): a plain English string or
+ * `{ "en": …, "nl": … }`. This is their schema, with the length a level text may have.
  */
 
-export const LOCALES = ['en', 'nl'] as const;
-export type Locale = (typeof LOCALES)[number];
-
-export type LocalizedText = string | { en: string; nl?: string };
+export { LOCALES, localize, type Locale, type LocalizedText } from '../util/localized-text.ts';
 
 /** Four times the longest text of the game's levels (an "explain more" of 1,300 characters). */
 export const TEXT_MAX = 5000;
@@ -25,9 +21,3 @@ const perLocale = z.strictObject({ en: text(), nl: text().optional() });
 export const localizedTextSchema: z.ZodType<LocalizedText> = chosenBy((input): z.ZodType<LocalizedText> =>
   typeof input === 'object' && input !== null && !Array.isArray(input) ? perLocale : plainText,
 );
-
-/** The text in the learner's language, or the English one when it has not been translated. */
-export function localize(text: LocalizedText, locale: Locale): string {
-  if (typeof text === 'string') return text;
-  return text[locale] ?? text.en;
-}

@@ -18,7 +18,15 @@ const coordinates = () => triple(numberIn(LIMITS.coordinate), 'numbers');
 const color = () => triple(numberIn(LIMITS.channel), 'numbers between 0 and 1');
 const coefficient = () => numberIn(LIMITS.coefficient);
 const id = () => z.string().min(LIMITS.idLength[0]).max(LIMITS.idLength[1]);
-const name = () => z.string().max(LIMITS.nameLength[1]).optional().describe('A friendly name for the UI.');
+const nameText = () => z.string().max(LIMITS.nameLength[1]);
+/** A plain name (English, as older files have it), or one per language like a level text: `{ "en": "Red ball", "nl": "Rode bal" }`. */
+const name = () =>
+  z
+    .union([nameText(), z.strictObject({ en: nameText(), nl: nameText().optional() })], {
+      error: () => `must be a text, or { "en": …, "nl": … } with a text per language (en is required; each at most ${LIMITS.nameLength[1]} characters)`,
+    })
+    .optional()
+    .describe('A friendly name for the UI: a text, or { "en": …, "nl": … } with one per language.');
 
 const cameraSchema = z
   .strictObject({

@@ -5,6 +5,8 @@
  * `scene-schema.ts` (which is checked against these types at compile time).
  */
 
+import type { LocalizedText } from '../util/localized-text.ts';
+
 export type Vec3 = [number, number, number];
 export type Color = [number, number, number];
 
@@ -55,8 +57,8 @@ export type ShapeKind = 'sphere' | 'box' | 'cylinder' | 'plane' | 'mesh';
 export interface SceneObject {
   /** Unique in the scene; ray trees and goals refer to objects by id. */
   id: string;
-  /** A friendly name for the UI; defaults to the id. */
-  name?: string;
+  /** A friendly name for the UI, in one language or per language; defaults to the id. */
+  name?: LocalizedText;
   shape: ShapeKind;
   /** The model from assets/models when `shape` is "mesh". */
   mesh?: string;
@@ -69,7 +71,7 @@ export interface SceneObject {
 
 interface LightCommon {
   id: string;
-  name?: string;
+  name?: LocalizedText;
   position: Vec3;
   color: Color;
   intensity: number;
@@ -112,7 +114,7 @@ export type LightType = Light['type'];
 export interface Scene {
   version: 1;
   /** Shown in the UI and in exported files. */
-  name?: string;
+  name?: LocalizedText;
   camera: Camera;
   settings: RenderSettings;
   objects: SceneObject[];

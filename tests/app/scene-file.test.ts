@@ -19,6 +19,14 @@ describe('scene files', () => {
     expect(sceneFileName({ ...defaultScene(), name: undefined })).toBe('scene.scene.json');
   });
 
+  it('names the file in the learner’s language when the scene has a name per language', () => {
+    const scene = { ...defaultScene(), name: { en: 'A ball and a box', nl: 'Eén bal en een doos' } };
+    expect(sceneFileName(scene, 'nl')).toBe('een-bal-en-een-doos.scene.json');
+    expect(sceneFileName(scene, 'en')).toBe('a-ball-and-a-box.scene.json');
+    // No Dutch name: the English one.
+    expect(sceneFileName({ ...scene, name: { en: 'Only English' } }, 'nl')).toBe('only-english.scene.json');
+  });
+
   it('says what is wrong with a damaged file', () => {
     expect(readSceneFile('{"version": 1, "objects": [')).toEqual({ ok: false, errors: [expect.stringMatching(/^\(root\): not valid JSON at line 1, column 28/)] });
     const wrong = readSceneFile(JSON.stringify({ version: 1, objects: [{ id: 'a', shape: 'cone' }] }));

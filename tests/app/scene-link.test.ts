@@ -1,7 +1,9 @@
-import { describe, expect, it } from 'vitest';
+import { afterAll, describe, expect, it, vi } from 'vitest';
 import { decodeSceneLink, encodeSceneLink, sceneLinkUrl } from '../../src/app/scene-link.ts';
 import { toBase64Url } from '../../src/util/base64url.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
+import { readSceneFile, MAX_SCENE_FILE_BYTES } from '../../src/app/scene-file.ts';
+import { standInPage } from '../support/page-locale.ts';
 
 async function deflate(text: string): Promise<string> {
   const stream = new Blob([text]).stream().pipeThrough(new CompressionStream('deflate'));
@@ -51,5 +53,18 @@ describe('scene links', () => {
     const bomb = `#/s/${await deflate(' '.repeat(3 * 1024 * 1024))}`;
     expect(bomb.length).toBeLessThan(10_000);
     expect(await decodeSceneLink(bomb)).toEqual({ ok: false, errors: ['it unpacks to more than 2048 kB, more than any scene'] });
+  });
+});
+
+describe('size problems in Dutch', () => {
+  afterAll(() => vi.unstubAllGlobals());
+
+  it('are Dutch from start to end: no English detail inside the Dutch sentence', async () => {
+    const speak = await standInPage();
+    await speak('nl');
+    const bomb = `#/s/${await deflate(' '.repeat(3 * 1024 * 1024))}`;
+    expect(await decodeSceneLink(bomb)).toEqual({ ok: false, errors: ['uitgepakt is hij meer dan 2048 kB, groter dan welke scène ook'] });
+    expect(readSceneFile('{}', MAX_SCENE_FILE_BYTES + 1)).toEqual({ ok: false, errors: ['(root): het bestand is 2048 kB; een scènebestand is hooguit 2048 kB'] });
+    await speak('en');
   });
 });

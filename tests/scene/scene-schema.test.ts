@@ -99,6 +99,13 @@ describe('valid scenes', () => {
     const result = parseScene({ version: 1, name: 'Lesson 1', ...withObject({ name: 'Ball' }), ...withLight({ name: 'Sun' }) });
     expect(result.ok).toBe(true);
   });
+
+  it('accepts a name per language, as level texts have them, and keeps it as written', () => {
+    const name = { en: 'Red ball', nl: 'Rode bal' };
+    const result = parseScene({ version: 1, name: { en: 'Two mirrors' }, ...withObject({ name }), ...withLight({ name: { en: 'Key light', nl: 'Hoofdlamp' } }) });
+    if (!result.ok) throw new Error(result.errors.join('\n'));
+    expect([result.scene.name, result.scene.objects[0].name, result.scene.lights[0].name]).toEqual([{ en: 'Two mirrors' }, name, { en: 'Key light', nl: 'Hoofdlamp' }]);
+  });
 });
 
 describe('each kind of problem reads as "path: reason"', () => {
@@ -136,6 +143,10 @@ describe('each kind of problem reads as "path: reason"', () => {
     [{ objects: [{ id: [] }] }, 'objects[0].id: must be a string, got a list of 0 items'],
     [{ objects: [{ id: 'x'.repeat(65) }] }, 'objects[0].id: must be at most 64 characters long'],
     [withObject({ name: 'x'.repeat(101) }), 'objects[0].name: must be at most 100 characters long'],
+    [withObject({ name: { en: 'Ball', nl: 'x'.repeat(101) } }), 'objects[0].name.nl: must be at most 100 characters long'],
+    [withObject({ name: { nl: 'Bal' } }), 'objects[0].name: must be a text, or { "en": …, "nl": … } with a text per language (en is required; each at most 100 characters)'],
+    [withObject({ name: { en: 'Ball', de: 'Kugel' } }), 'objects[0].name: unknown field "de"'],
+    [withObject({ name: 7 }), 'objects[0].name: must be a text, or { "en": …, "nl": … } with a text per language (en is required; each at most 100 characters)'],
     [withObject({ shape: 'cone' }), 'objects[0].shape: must be one of sphere, box, cylinder, plane, mesh, got "cone"'],
     [withObject({ shape: 'mesh' }), 'objects[0].mesh: is required when shape is "mesh" (one of prism, capsule, wine-glass, character)'],
     [withObject({ shape: 'mesh', mesh: 'teapot' }), 'objects[0].mesh: must be one of prism, capsule, wine-glass, character, got "teapot"'],

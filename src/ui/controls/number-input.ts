@@ -1,4 +1,5 @@
 import { msg, str } from '@lit/localize';
+import { fieldNumber } from '../../i18n/number-format.ts';
 
 /**
  * Reading numbers that people type into the panels' fields (pure: no DOM, tested in Node).
@@ -61,15 +62,15 @@ function normalizeSeparators(text: string): string {
 }
 
 /**
- * The value as a field shows it: with as many decimals as the step has ("0.50" for step
- * 0.01), more (up to 4) when the value is finer than the step, as one typed or set by a gizmo.
+ * The value as a field shows it, in the reader's language ("0,50" in Dutch): with as many
+ * decimals as the step has ("0.50" for step 0.01), more (up to 4) when the value is finer
+ * than the step, as one typed or set by a gizmo. parseTypedNumber reads it back either way.
  */
 export function formatNumber(value: number, step: number, percent = false): string {
   const shown = percent ? value * 100 : value;
   const decimals = decimalsOf(percent ? step * 100 : step);
-  const fixed = shown.toFixed(decimals);
   const fine = Number(shown.toFixed(4));
-  return Number(fixed) === fine ? fixed : String(fine);
+  return Number(shown.toFixed(decimals)) === fine ? fieldNumber(shown, decimals) : fieldNumber(fine, decimalsOf(fine));
 }
 
 /** Decimals of a step such as 0.01 (2) or 5 (0), ignoring float noise like 0.1 × 100. */
@@ -79,9 +80,10 @@ function decimalsOf(step: number): number {
   return point < 0 ? 0 : text.length - point - 1;
 }
 
-/** A range end as the field shows it ("0–100 %" for a percent field). */
+/** A range end as the field shows it ("0–100 %" for a percent field, "0,001" in Dutch). */
 function bound(value: number, percent: boolean | undefined): string {
-  return String(Number((percent ? value * 100 : value).toFixed(4)));
+  const shown = Number((percent ? value * 100 : value).toFixed(4));
+  return fieldNumber(shown, decimalsOf(shown));
 }
 
 function rangeText(range: NumberRange): string {

@@ -5,10 +5,14 @@ import type { Color } from '../../scene/scene.ts';
 import type { RayHover } from '../../view/ray-layer.ts';
 import { paletteNameFor, rayColorKey, rayPalette } from '../../view/ray-palette.ts';
 import { rayTypeName } from './ray-names.ts';
+import { itemName } from './scene-names.ts';
+import { localNumbers } from '../../i18n/number-format.ts';
 import { StorePanel } from './panels/store-panel.ts';
 
 /** Gap between the pointer and the tooltip, in CSS pixels (clear of the cursor's arrow). */
 const POINTER_GAP = 14;
+
+const percentFormat = localNumbers({ maximumFractionDigits: 1 });
 
 /**
  * A colour as the rendered image shows it: round(clamp(c) · 255) per channel with no gamma,
@@ -18,10 +22,10 @@ export function colorBytes(color: Color): [number, number, number] {
   return color.map((c) => Math.round(Math.min(1, Math.max(0, c)) * 255)) as [number, number, number];
 }
 
-/** A share of the pixel as the tooltip writes it: "12.5 %", "< 0.1 %" for tiny non-zero shares. */
+/** A share of the pixel as the tooltip writes it: "12.5 %" ("12,5 %" in Dutch), "< 0.1 %" for tiny non-zero shares. */
 export function formatShare(share: number): string {
   if (share > 0 && share < 0.001) return msg('< 0.1 %');
-  return msg(str`${Number((share * 100).toFixed(1))} %`);
+  return msg(str`${percentFormat.format(share * 100)} %`);
 }
 
 /**
@@ -149,15 +153,17 @@ export class RtRayTooltip extends StorePanel {
     `;
   }
 
-  /** What the ray ran into, by id (ids are what the scene list and goals show). */
+  /** What the ray ran into, by the name the scene list shows (the id when it has none). */
   private target(hover: RayHover) {
     const { node } = hover;
+    const scene = this.state?.scene;
+    const name = (id: string | null | undefined) => (id == null ? '' : scene ? itemName(scene, id) : id);
     if (!node.hit) return html`<p class="muted">${msg('Hit nothing: brings back the background colour')}</p>`;
     if (node.type === 'shadow' || node.type === 'area-shadow') {
-      return html`<p class="muted">${node.objectId ? msg(str`Blocked by ${node.objectId} on its way to ${node.lightId ?? ''}`) : msg(str`Blocked on its way to ${node.lightId ?? ''}`)}</p>`;
+      return html`<p class="muted">${node.objectId ? msg(str`Blocked by ${name(node.objectId)} on its way to ${name(node.lightId)}`) : msg(str`Blocked on its way to ${name(node.lightId)}`)}</p>`;
     }
-    if (node.type === 'light' || node.type === 'area-light') return html`<p class="muted">${msg(str`Reaches light ${node.lightId ?? ''}`)}</p>`;
-    return node.objectId ? html`<p class="muted">${msg(str`Hits ${node.objectId}`)}</p>` : nothing;
+    if (node.type === 'light' || node.type === 'area-light') return html`<p class="muted">${msg(str`Reaches light ${name(node.lightId)}`)}</p>`;
+    return node.objectId ? html`<p class="muted">${msg(str`Hits ${name(node.objectId)}`)}</p>` : nothing;
   }
 }
 

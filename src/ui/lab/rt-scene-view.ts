@@ -8,6 +8,7 @@ import type { ViewCommand } from '../../view/view-commands.ts';
 import './rt-help-panel.ts';
 import { GuideHostController } from './guide-host.ts';
 import { consumeStore } from './store-context.ts';
+import { itemName, shownName } from './scene-names.ts';
 import './rt-view-toolbar.ts';
 
 /**
@@ -217,13 +218,13 @@ function modesShown(state: LabState) {
 /** What a screen reader hears for the canvas: the scene in one sentence, and how to move around. */
 function describe(state: LabState): string {
   const { scene, selection } = state;
-  const name = scene.name ?? msg('Untitled scene');
+  const name = shownName(scene.name, msg('Untitled scene'));
   const selected =
     selection === null
       ? msg('Nothing is selected.')
       : selection.kind === 'camera'
         ? msg("The ray tracer's camera is selected.")
-        : msg(str`Selected: ${selection.id}.`);
+        : msg(str`Selected: ${itemName(scene, selection.id)}.`);
   return msg(
     str`3D view of "${name}": ${scene.objects.length} objects, ${scene.lights.length} lights and the ray tracer's camera with its ${scene.camera.pixels[0]}×${scene.camera.pixels[1]} screen. ${selected} Arrow keys orbit, Shift with arrows pans, plus and minus zoom; press ? for every key.`,
   );

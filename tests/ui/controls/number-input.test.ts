@@ -1,5 +1,6 @@
 import { describe, expect, test } from 'vitest';
 import { formatNumber, parseTypedNumber, readTypedNumber, typedNumberMessage, type NumberRange } from '../../../src/ui/controls/number-input.ts';
+import { inDutch } from '../../support/page-locale.ts';
 
 const spot: NumberRange = { min: 1, max: 170 };
 const coefficient: NumberRange = { min: 0, max: 1 };
@@ -105,5 +106,29 @@ describe('formatNumber', () => {
     expect(formatNumber(0.07, 0.01, true)).toBe('7');
     expect(formatNumber(0.5, 0.001, true)).toBe('50.0');
     expect(formatNumber(0.125, 0.01, true)).toBe('12.5');
+  });
+});
+
+describe('in Dutch', () => {
+  inDutch();
+
+  test('a field shows a decimal comma and no thousands separator, and reads its own text back', () => {
+    expect(formatNumber(0.5, 0.01)).toBe('0,50');
+    expect(formatNumber(1234.5, 0.1)).toBe('1234,5');
+    expect(formatNumber(0.12345, 0.01)).toBe('0,1235');
+    expect(formatNumber(0.25, 0.01, true)).toBe('25');
+    for (const value of [0.5, 1234.5, -2.25, 0.1235]) {
+      expect(parseTypedNumber(formatNumber(value, 0.01), { min: -10_000, max: 10_000 })).toEqual({ kind: 'ok', value });
+    }
+  });
+
+  test('takes "0,5" and "0.5" alike, as typed on any keyboard', () => {
+    expect(readTypedNumber('0,5', coefficient)).toEqual({ value: 0.5, note: undefined });
+    expect(readTypedNumber('0.5', coefficient)).toEqual({ value: 0.5, note: undefined });
+  });
+
+  test('writes the ranges of its notes the Dutch way, wholly in Dutch', () => {
+    expect(typedNumberMessage({ kind: 'invalid' }, { min: 0.001, max: 1000 })).toBe('Typ een getal van 0,001 tot en met 1000');
+    expect(typedNumberMessage({ kind: 'clamped', value: 1.5 }, { min: 1, max: 2.5 })).toBe('Aangepast tot binnen 1–2,5');
   });
 });

@@ -7,6 +7,7 @@ import { localNumbers } from '../../../i18n/number-format.ts';
 import type { MeshLibrary } from '../../../scene/mesh-data.ts';
 import { meshNamesInScene } from '../../../scene/mesh-names.ts';
 import type { Scene } from '../../../scene/scene.ts';
+import { itemName } from '../scene-names.ts';
 import { bvhTree, nodesAtDepth } from '../../../tracer/bvh-tree.ts';
 import { meshAccel } from '../../../tracer/shapes/mesh-accel.ts';
 import { buildTracerScene, type TracerScene } from '../../../tracer/tracer-scene.ts';
@@ -202,7 +203,7 @@ export class RtBvhPanel extends StorePanel {
       ${models.length > 0
         ? html`<ul>
             ${models.map((object) => {
-              const name = nameOf(state.scene, object.id);
+              const name = itemName(state.scene, object.id);
               const mesh = object.mesh!;
               return html`<li>
                 ${object.boundsHit
@@ -212,15 +213,9 @@ export class RtBvhPanel extends StorePanel {
             })}
           </ul>`
         : nothing}
-      <p>${tests.hitId === null ? msg('The ray hits nothing.') : msg(str`The ray hits ${nameOf(state.scene, tests.hitId)}.`)}</p>
+      <p>${tests.hitId === null ? msg('The ray hits nothing.') : msg(str`The ray hits ${itemName(state.scene, tests.hitId)}.`)}</p>
     </div>`;
   }
-}
-
-/** An object's name as the scene list shows it: its name, or else its id. */
-function nameOf(scene: Scene, id: string): string {
-  const object = scene.objects.find((candidate) => candidate.id === id);
-  return object?.name ?? id;
 }
 
 customElements.define('rt-bvh-panel', RtBvhPanel);

@@ -5,6 +5,8 @@ import { LONG_LINK_CHARACTERS, sceneLinkUrl } from '../../../app/scene-link.ts';
 import { downloadText } from '../../../util/download-file.ts';
 import { messageLine } from '../../controls/status-message.ts';
 import { StorePanel } from './store-panel.ts';
+import { shownName } from '../scene-names.ts';
+import { currentLocale } from '../../../i18n/locale.ts';
 
 /** A note under the buttons: what happened, or why a file could not be loaded. */
 interface Note {
@@ -63,8 +65,8 @@ export class RtFilePanel extends StorePanel {
   private saveFile(): void {
     const scene = this.state?.scene;
     if (!scene) return;
-    downloadText(sceneFileText(scene), sceneFileName(scene), 'application/json');
-    this.note = { text: msg(str`Saved as ${sceneFileName(scene)} in your downloads.`), problem: false };
+    downloadText(sceneFileText(scene), sceneFileName(scene, currentLocale()), 'application/json');
+    this.note = { text: msg(str`Saved as ${sceneFileName(scene, currentLocale())} in your downloads.`), problem: false };
     this.store?.dispatch({ type: 'scene.saved', to: 'file' });
   }
 
@@ -81,7 +83,7 @@ export class RtFilePanel extends StorePanel {
     const error = this.store?.dispatch({ type: 'scene.loaded', scene: read.scene });
     this.note = error
       ? { text: msg(str`${file.name} could not be loaded; your scene is unchanged.\n${error}`), problem: true }
-      : { text: msg(str`Loaded ${read.scene.name ?? file.name}.`), problem: false };
+      : { text: msg(str`Loaded ${shownName(read.scene.name, file.name)}.`), problem: false };
   }
 
   private async shareLink(): Promise<void> {

@@ -4,7 +4,7 @@ import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { AreaLight, Light, LightType, SpotLight } from '../../../scene/scene.ts';
 import { LIMITS } from '../../../scene/scene-limits.ts';
 import { positionSpec, rotationSpec } from './placement-specs.ts';
-import { lightTypeName, lightTypeShortName } from '../scene-names.ts';
+import { lightTypeName, lightTypeShortName, shownName } from '../scene-names.ts';
 import { StorePanel, type ControlPart } from './store-panel.ts';
 
 /**
@@ -83,7 +83,7 @@ export class RtLightPanel extends StorePanel {
         ...(light.type === 'area' ? this.areaControls(light, changed) : []),
     ];
     return html`
-      ${this.section(msg('Light'), 'light', controls, this.identity(light.name ?? light.id, lightTypeName(light.type)))}
+      ${this.section(msg('Light'), 'light', controls, this.identity(shownName(light.name, light.id), lightTypeName(light.type)))}
       ${this.section(msg('Placement'), 'light-placement', [
         this.vector(positionSpec(), light.position, (position) => changed({ position })),
         light.type === 'point' ? nothing : this.vector(rotationSpec(), light.rotation, (rotation) => changed({ rotation })),

@@ -5,7 +5,7 @@ import type { Material, SceneObject } from '../../../scene/scene.ts';
 import { LIMITS } from '../../../scene/scene-limits.ts';
 import { MATERIAL_PRESETS, matchingPreset, type MaterialPresetName } from './material-presets.ts';
 import { positionSpec, rotationSpec, scaleSpec } from './placement-specs.ts';
-import { shapeName } from '../scene-names.ts';
+import { shapeName, shownName } from '../scene-names.ts';
 import { StorePanel, type ControlPart } from './store-panel.ts';
 
 /**
@@ -52,7 +52,7 @@ export class RtObjectPanel extends StorePanel {
       );
     }
     return html`
-      ${this.section(msg('Object'), 'object', this.materialControls(object), this.identity(object.name ?? object.id, shapeName(object)))}
+      ${this.section(msg('Object'), 'object', this.materialControls(object), this.identity(shownName(object.name, object.id), shapeName(object)))}
       ${this.section(msg('Placement'), 'object-placement', [
         this.vector(positionSpec(), object.position, (position) => this.changed(object, { position })),
         this.vector(rotationSpec(), object.rotation, (rotation) => this.changed(object, { rotation })),

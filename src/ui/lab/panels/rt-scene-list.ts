@@ -6,7 +6,7 @@ import type { Selection } from '../../../lab-state/lab-state.ts';
 import { MESH_ASSET_NAMES } from '../../../scene/mesh-assets.ts';
 import type { LightType } from '../../../scene/scene.ts';
 import { cameraIcon, lightIcon, shapeIcon } from '../scene-icons.ts';
-import { lightTypeName, lightTypeShortName, modelName, shapeKindName, shapeName } from '../scene-names.ts';
+import { itemName, lightTypeName, lightTypeShortName, modelName, shapeKindName, shapeName, shownName } from '../scene-names.ts';
 import { StorePanel } from './store-panel.ts';
 
 /** One row of the list, in the order the arrow keys walk. */
@@ -235,7 +235,7 @@ export class RtSceneList extends StorePanel {
                 ${repeat(
                   scene.objects,
                   (o) => o.id,
-                  (o) => option(`object:${o.id}`, shapeIcon(o.shape, o.material.color), o.name ?? o.id, shapeName(o), { kind: 'object', id: o.id }, `scene-list.objects scene-list.item:${o.id}`),
+                  (o) => option(`object:${o.id}`, shapeIcon(o.shape, o.material.color), shownName(o.name, o.id), shapeName(o), { kind: 'object', id: o.id }, `scene-list.objects scene-list.item:${o.id}`),
                 )}
               </div>`
             : nothing}
@@ -245,7 +245,7 @@ export class RtSceneList extends StorePanel {
                 ${repeat(
                   scene.lights,
                   (l) => l.id,
-                  (l) => option(`light:${l.id}`, lightIcon(l.type, l.color), l.name ?? l.id, lightTypeName(l.type) + off(l.type), { kind: 'light', id: l.id }, `scene-list.lights scene-list.item:${l.id}`),
+                  (l) => option(`light:${l.id}`, lightIcon(l.type, l.color), shownName(l.name, l.id), lightTypeName(l.type) + off(l.type), { kind: 'light', id: l.id }, `scene-list.lights scene-list.item:${l.id}`),
                 )}
               </div>`
             : nothing}
@@ -263,7 +263,7 @@ export class RtSceneList extends StorePanel {
   private editing(): TemplateResult {
     const selection = this.state?.selection ?? null;
     const deletable = selection !== null && selection.kind !== 'camera';
-    const label = deletable ? msg(str`Delete ${selection.id}`) : msg('Select an object or a light to delete it');
+    const label = deletable ? msg(str`Delete ${this.state ? itemName(this.state.scene, selection.id) : selection.id}`) : msg('Select an object or a light to delete it');
     return html`
       <div class="actions">
         <button type="button" data-guide="add-remove.add-object add-remove.add-light" aria-expanded=${this.adding ? 'true' : 'false'} aria-controls="add" @click=${() => (this.adding = !this.adding)}>

@@ -5,6 +5,11 @@
 import { msg, str } from '@lit/localize';
 import type { RenderProgress } from '../../../render/render-job.ts';
 import type { RayStats } from '../../../tracer/ray-tree.ts';
+import { localNumbers } from '../../../i18n/number-format.ts';
+
+/** Counts in units ("12,3 thousand" in Dutch) have 3 significant digits, so at most 2 decimals. */
+const inUnitsFormat = localNumbers({ maximumFractionDigits: 2 });
+const seconds2 = localNumbers({ minimumFractionDigits: 2, maximumFractionDigits: 2 });
 
 /** Every ray the render traced: primary, shadow, reflected and refracted. */
 export function countRays(stats: RayStats): number {
@@ -16,22 +21,22 @@ export function raysPerSecond(rays: number, ms: number): number {
   return rays / (Math.max(ms, 1) / 1000);
 }
 
-/** 950 → "950", 12 345 → "12.3 thousand", 4 561 000 → "4.56 million", 2.1e9 → "2.1 billion". */
+/** In the reader's language: 950 → "950", 12 345 → "12.3 thousand" ("12,3 duizend"), 4 561 000 → "4.56 million", 2.1e9 → "2.1 billion". */
 export function formatCount(count: number): string {
   // Rounded before the unit is chosen, so that 999 960 reads "1 million", not "1000 thousand".
   const rounded = Number(count.toPrecision(3));
   // Re-rounded after dividing: 1.23e6 / 1e6 may come out as 1.2300000000000002.
-  const inUnits = (unit: number) => Number((rounded / unit).toPrecision(3));
+  const inUnits = (unit: number) => inUnitsFormat.format(Number((rounded / unit).toPrecision(3)));
   if (rounded < 1e3) return String(Math.round(rounded));
   if (rounded < 1e6) return msg(str`${inUnits(1e3)} thousand`);
   if (rounded < 1e9) return msg(str`${inUnits(1e6)} million`);
   return msg(str`${inUnits(1e9)} billion`);
 }
 
-/** "850 ms" under a second, "1.23 s" under a minute, "2 min 5 s" beyond. */
+/** "850 ms" under a second, "1.23 s" ("1,23 s" in Dutch) under a minute, "2 min 5 s" beyond. */
 export function formatDuration(ms: number): string {
   if (ms < 1000) return msg(str`${Math.round(ms)} ms`);
-  if (ms < 60_000) return msg(str`${(ms / 1000).toFixed(2)} s`);
+  if (ms < 60_000) return msg(str`${seconds2.format(ms / 1000)} s`);
   const seconds = Math.round(ms / 1000);
   return msg(str`${Math.floor(seconds / 60)} min ${seconds % 60} s`);
 }

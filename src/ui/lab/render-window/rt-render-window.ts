@@ -6,6 +6,7 @@ import type { RenderPool } from '../../../render/render-pool.ts';
 import type { LabState } from '../../../lab-state/lab-state.ts';
 import type { Store } from '../../../lab-state/store.ts';
 import type { Scene } from '../../../scene/scene.ts';
+import { shownName } from '../scene-names.ts';
 import { GuideHostController } from '../guide-host.ts';
 import { consumeStore } from '../store-context.ts';
 import { estimateRender, lighterRenders, type LighterRender, type RenderEstimate } from '../../../render/render-estimate.ts';
@@ -198,7 +199,7 @@ export class RtRenderWindow extends LitElement {
     this.saveError = '';
     try {
       const pixels = renderImageData(finished, shown.scene.settings.dithering);
-      await savePng(pixels, pngFileName(shown.scene.name, shown.width, shown.height));
+      await savePng(pixels, pngFileName(shown.scene.name === undefined ? undefined : shownName(shown.scene.name, ''), shown.width, shown.height));
       this.store?.dispatch({ type: 'render.saved' });
     } catch (error) {
       this.saveError = msg(str`The image could not be saved: ${errorMessage(error)}`);

@@ -1,5 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { countRays, formatCount, formatDuration, formatWait, progressText, raysPerSecond } from '../../../../src/ui/lab/render-window/render-figures.ts';
+import { formatShare } from '../../../../src/ui/lab/rt-ray-tooltip.ts';
+import { inDutch } from '../../../support/page-locale.ts';
 
 describe('render figures', () => {
   it('counts every kind of ray', () => {
@@ -42,5 +44,19 @@ describe('render figures', () => {
     expect(progressText({ phase: 'preview', done: 3, total: 40 })).toBe('Quick preview…');
     expect(progressText({ phase: 'full', done: 42, total: 100 })).toBe('Rendering 42 %');
     expect(progressText({ phase: 'full', done: 199, total: 200 })).toBe('Rendering 99 %');
+  });
+});
+
+describe('render figures in Dutch', () => {
+  inDutch();
+
+  it('write counts, times and shares with a decimal comma, in Dutch words', () => {
+    expect(formatCount(12_345)).toBe('12,3 duizend');
+    expect(formatCount(4_561_000)).toBe('4,56 miljoen');
+    expect(formatDuration(1234)).toBe('1,23 s');
+    expect(formatWait(40)).toBe('40 s');
+    expect(formatShare(0.125)).toBe('12,5 %');
+    // Not "&lt; 0,1 %": an escaped "<" in the catalogue came through as text.
+    expect(formatShare(0.0004)).toBe('minder dan 0,1 %');
   });
 });
