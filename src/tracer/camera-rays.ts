@@ -1,4 +1,5 @@
 import { Vector3 } from 'three';
+import { effectiveFocusDistance } from '../scene/camera-focus.ts';
 import type { Camera } from '../scene/scene.ts';
 
 const DEG = Math.PI / 180;
@@ -39,7 +40,7 @@ export class CameraRays {
     this.up.crossVectors(this.right, this.forward);
     this.tanHalfFov = Math.tan((camera.fov * DEG) / 2);
     this.aperture = camera.aperture;
-    this.focusDistance = camera.focusDistance ?? new Vector3(...camera.target).distanceTo(this.eye);
+    this.focusDistance = effectiveFocusDistance(camera);
     this.lensSamplesPerSide = camera.aperture > 0 ? camera.lensSamples : 1;
   }
 
