@@ -33,6 +33,8 @@ export interface RayViewOptions {
   loop: boolean;
   /** Show the s×s sub-pixel sample points on the camera's screen. */
   showSamplePoints: boolean;
+  /** Colour the rays of a lens/time sample by their shutter time instead of their type (motion blur). */
+  colorByTime: boolean;
 }
 
 /** The acceleration lessons' view: the tracer's BVH boxes and the objects' bounding boxes. */
@@ -82,6 +84,7 @@ export const DEFAULT_RAY_VIEW: RayViewOptions = {
   animatePixelByPixel: false,
   loop: false,
   showSamplePoints: false,
+  colorByTime: false,
 };
 
 export const DEFAULT_GIZMO: GizmoOptions = { mode: 'translate', space: 'world', snap: false };

@@ -21,7 +21,10 @@ export const LAB_CONTROLS = {
   view: ['canvas', 'orbit-buttons', 'pan-buttons', 'zoom-buttons', 'fly-to-camera', 'show-pixel-rays', 'help'],
   screen: ['grid'],
   'scene-list': ['objects', 'lights'],
-  object: ['color', 'ambient', 'diffuse', 'specular', 'shininess', 'transparent', 'refractive-index', 'presets'],
+  object: [
+    'color', 'ambient', 'diffuse', 'specular', 'shininess', 'transparent', 'refractive-index', 'presets',
+    'roughness', 'glossy-samples', 'velocity',
+  ],
   light: [
     'type', 'color', 'intensity', 'ambient', 'diffuse', 'specular', 'distance-attenuation',
     'spot-angle', 'angle-attenuation', 'samples', 'size', 'shape',
@@ -29,10 +32,12 @@ export const LAB_CONTROLS = {
   tracer: [
     'shadows', 'max-depth', 'background', 'supersampling', 'sample-pattern', 'show-sample-points',
     'pixels', 'fov', 'light-types', 'dithering',
+    'aperture', 'focus-distance', 'focus-on-selected', 'lens-samples', 'time-samples',
   ],
   rays: [
     'show', 'hide-no-hit', 'hide-negligible', 'negligible-threshold', 'transparency', 'radius',
     'dynamic-radius', 'min-radius', 'max-radius', 'contribution-color', 'color-blind', 'animate', 'legend',
+    'color-by-time',
   ],
   gizmo: ['translate', 'rotate', 'scale', 'space', 'snap'],
   'screen-preview': ['grid'],

@@ -12,6 +12,7 @@
  * samples), 3 ms (plus a 4×4 area light) and 22 ms (8×8 samples, 10×10 area light: 1-pixel
  * tiles); a new render's first tile arrived 1–13 ms after it started.
  */
+import { primaryRaysPerSample } from './render-estimate.ts';
 import type { Scene } from '../scene/scene.ts';
 
 export interface RenderPass {
@@ -38,7 +39,8 @@ const RAYS_PER_TILE = 32 * 32 * 3;
 const MAX_TILE_SIDE = 32;
 
 export function planPasses(scene: Scene, preview: boolean): RenderPass[] {
-  const raysPerSample = 1 + shadowRaysPerHit(scene);
+  // Each lens and time ray of a sample is a primary ray with its own shadow rays.
+  const raysPerSample = (1 + shadowRaysPerHit(scene)) * primaryRaysPerSample(scene);
   const samples = scene.settings.supersampling ** 2;
   const full: RenderPass = { block: 1, tileSide: tileSide(raysPerSample * samples) };
   if (!preview) return [full];

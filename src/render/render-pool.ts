@@ -23,7 +23,7 @@ import type { PixelTrace } from '../tracer/ray-tree.ts';
 import { DEFAULT_SEED, type RenderJob, type RenderOptions, type RenderResult } from './render-job.ts';
 import type { CreateRenderWorker, RenderWorkerPort } from './render-worker-port.ts';
 import { planPasses } from './render-passes.ts';
-import { RAYS_PER_SECOND_PER_WORKER, raysPerSample } from './render-estimate.ts';
+import { primaryRaysPerSample, RAYS_PER_SECOND_PER_WORKER, raysPerSample } from './render-estimate.ts';
 import { checkResponse } from './render-response-check.ts';
 import { TiledRender, type TileAssignment } from './tiled-render.ts';
 
@@ -77,7 +77,7 @@ interface ActiveJob {
   tiles: TiledRender;
   startedAt: number;
   sceneMs: number;
-  /** Rays of one sample of the scene (render-estimate.ts), for the tiles' deadlines. */
+  /** Rays of one sample of the scene, its lens and time rays included (render-estimate.ts), for the tiles' deadlines. */
   raysPerSample: number;
   samples: number;
   /** The slowest cost per estimated ray a tile has shown, never below the assumed one. */
@@ -168,7 +168,7 @@ export class RenderPool {
         tiles,
         startedAt: performance.now(),
         sceneMs: 0,
-        raysPerSample: raysPerSample(scene),
+        raysPerSample: raysPerSample(scene) * primaryRaysPerSample(scene),
         samples: scene.settings.supersampling ** 2,
         msPerRay: ASSUMED_MS_PER_RAY,
         resolve,

@@ -42,6 +42,22 @@ export const LIMITS = {
   areaSize: [0.01, 100],
   /** n: n×n shadow rays per area light and hit. */
   areaSamples: [1, 10],
+  /** A lens radius in metres: past 0.5 m only the focal plane would be recognisable. */
+  aperture: [0, 0.5],
+  /** Distance of the plane in focus, metres (distribution-effects §1). */
+  focusDistance: [0.05, 100],
+  /** n: n×n lens points per pixel sample. */
+  lensSamples: [1, 8],
+  /** ρ, the spread of glossy rays around the mirror (or refracted) direction. */
+  roughness: [0, 1],
+  /** m: m×m glossy rays per hit; they multiply at every bounce. */
+  glossySamples: [1, 8],
+  /** Each component of an object's movement during the shutter, metres. */
+  velocity: [-10, 10],
+  /** k: shutter times per pixel sample. */
+  timeSamples: [1, 16],
+  /** s²·n²·k, the primary rays of one pixel (distribution-effects §1). */
+  primaryRaysPerPixel: [1, 1024],
   /** Characters in an id (goals and ray trees quote it) and in a display name. */
   idLength: [1, 64],
   nameLength: [0, 100],

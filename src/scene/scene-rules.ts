@@ -1,5 +1,6 @@
 import type { z } from 'zod';
 import { MESH_ASSET_NAMES } from './mesh-assets.ts';
+import { LIMITS } from './scene-limits.ts';
 
 /**
  * The rules that look at more than one field, which a field's own schema cannot check.
@@ -70,6 +71,35 @@ export const idsAreUnique: Rule = (scene) => {
     return [{ path, input: id, message: `${JSON.stringify(id)} is used ${count === 2 ? 'twice' : `${count} times`}` }];
   });
 };
+
+/**
+ * A pixel casts s²·n²·k primary rays (supersampling, lens samples, time samples): at most
+ * LIMITS.primaryRaysPerPixel (distribution-effects §1). Reported on the last factor above 1,
+ * the one most likely just raised.
+ */
+export const primaryRaysWithinLimit: Rule = (scene) => {
+  const s = wholeField(scene.settings, 'supersampling', LIMITS.supersampling);
+  const n = wholeField(scene.camera, 'lensSamples', LIMITS.lensSamples);
+  const k = wholeField(scene.settings, 'timeSamples', LIMITS.timeSamples);
+  const rays = s * s * n * n * k;
+  const [, most] = LIMITS.primaryRaysPerPixel;
+  if (rays <= most) return [];
+  const path = k > 1 ? ['settings', 'timeSamples'] : n > 1 ? ['camera', 'lensSamples'] : ['settings', 'supersampling'];
+  const input = k > 1 ? k : n > 1 ? n : s;
+  return [{
+    path, input,
+    message: `makes supersampling² · lensSamples² · timeSamples = ${s}² · ${n}² · ${k} = ${rays} primary rays per pixel, more than ${most}`,
+  }];
+};
+
+/**
+ * A whole-number field of a half-parsed part, or 1 (its default) when it is missing or
+ * broken: a value outside its own range is reported there, not again here.
+ */
+function wholeField(part: unknown, key: string, [lowest, highest]: readonly [number, number]): number {
+  const value = isRecord(part) ? part[key] : undefined;
+  return typeof value === 'number' && Number.isInteger(value) && value >= lowest && value <= highest ? value : 1;
+}
 
 function isSamePoint(a: unknown, b: unknown): boolean {
   return Array.isArray(a) && Array.isArray(b) && a.length === b.length && a.every((value, axis) => value === b[axis]);

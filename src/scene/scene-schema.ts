@@ -1,7 +1,7 @@
 import { z } from 'zod';
 import type { Camera, Light, Material, RenderSettings, Scene, SceneObject } from './scene.ts';
 import { MESH_ASSET_NAMES } from './mesh-assets.ts';
-import { alsoWhenFieldsFail, asRefinement, cameraHasDirection, idsAreUnique, meshOnlyOnMeshes } from './scene-rules.ts';
+import { alsoWhenFieldsFail, asRefinement, cameraHasDirection, idsAreUnique, meshOnlyOnMeshes, primaryRaysWithinLimit } from './scene-rules.ts';
 import { LIMITS } from './scene-limits.ts';
 import { numberIn, pair, triple, wholeNumberIn } from './scene-schema-parts.ts';
 import { describeIssue, formatIssues } from './scene-issues.ts';
@@ -39,6 +39,13 @@ const cameraSchema = z
     screenDistance: numberIn(LIMITS.screenDistance)
       .default(1)
       .describe('Metres from the eye to the drawn screen (drawing only).'),
+    aperture: numberIn(LIMITS.aperture).default(0).describe('Lens radius in metres; 0 is a pinhole (everything sharp).'),
+    focusDistance: numberIn(LIMITS.focusDistance)
+      .optional()
+      .describe('Metres to the plane in focus, along the view direction; left out: the distance to target.'),
+    lensSamples: wholeNumberIn(LIMITS.lensSamples)
+      .default(1)
+      .describe('n: n×n points on the lens per pixel sample (ignored while aperture is 0).'),
   })
   .superRefine(asRefinement(cameraHasDirection), alsoWhenFieldsFail)
   .describe('The ray tracer camera and its small screen of visualized pixels.');
@@ -64,6 +71,7 @@ const settingsSchema = z
       })
       .prefault({})
       .describe('A switch per light type; a switched-off type lights nothing.'),
+    timeSamples: wholeNumberIn(LIMITS.timeSamples).default(1).describe('k: times in the open shutter per pixel sample (motion blur).'),
   })
   .describe('How the image is rendered.');
 
@@ -78,6 +86,10 @@ const materialSchema = z
     shininess: numberIn(LIMITS.shininess).default(32).describe('Phong exponent n: higher is a smaller highlight.'),
     transparent: z.boolean().default(false),
     refractiveIndex: numberIn(LIMITS.refractiveIndex).default(1.5).describe('η, used when transparent.'),
+    roughness: numberIn(LIMITS.roughness)
+      .default(0)
+      .describe('Spread of reflected (and refracted) rays; 0 is a perfect mirror or clear glass.'),
+    glossySamples: wholeNumberIn(LIMITS.glossySamples).default(3).describe('m: m×m reflected (refracted) rays per hit when roughness > 0.'),
   })
   .describe('Phong material (spec §2).');
 
@@ -90,6 +102,9 @@ export const sceneObjectSchema = z
     position: coordinates().default([0, 0, 0]),
     rotation: coordinates().default([0, 0, 0]).describe('Euler angles XYZ in degrees.'),
     scale: triple(numberIn(LIMITS.scale), 'positive numbers').default([1, 1, 1]),
+    velocity: triple(numberIn(LIMITS.velocity), 'numbers')
+      .default([0, 0, 0])
+      .describe('Metres the object moves while the shutter is open (motion blur).'),
     material: materialSchema.prefault({}),
   })
   .superRefine(asRefinement(meshOnlyOnMeshes), alsoWhenFieldsFail)
@@ -148,12 +163,13 @@ export const sceneSchema = z
     lights: z.array(lightSchema).max(LIMITS.lightCount[1]).default([]),
   })
   .superRefine(asRefinement(idsAreUnique), alsoWhenFieldsFail)
+  .superRefine(asRefinement(primaryRaysWithinLimit), alsoWhenFieldsFail)
   .meta({
     title: 'Ray Tracer Quest scene',
     description:
       'A scene file (version 1): camera, render settings, objects and lights. Two rules JSON Schema ' +
-      'cannot say: ids are unique across objects and lights, and the camera target differs from its ' +
-      'position. See docs/scene-format.md.',
+      'cannot say: ids are unique across objects and lights, the camera target differs from its ' +
+      'position, and supersampling² · lensSamples² · timeSamples is at most 1024. See docs/scene-format.md.',
   });
 
 export type SceneParseResult = { ok: true; scene: Scene } | { ok: false; errors: string[] };

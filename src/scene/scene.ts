@@ -21,6 +21,15 @@ export interface Camera {
   pixels: [number, number];
   /** Distance from the eye to the drawn screen, in metres (only for drawing). */
   screenDistance: number;
+  /** Lens radius in metres; 0 is a pinhole, where everything is sharp (distribution-effects §1). */
+  aperture: number;
+  /**
+   * Distance of the plane in focus along the view direction, in metres. Left out, it is
+   * the distance from `position` to `target`: the target is in focus.
+   */
+  focusDistance?: number;
+  /** n: n×n points on the lens per pixel sample (ignored while aperture is 0). */
+  lensSamples: number;
 }
 
 /** Where the s×s sub-pixel samples go: a regular grid (default), jittered cells or uniform random. */
@@ -40,6 +49,8 @@ export interface RenderSettings {
   dithering: boolean;
   /** A switch per light type (the VRT ray tracer panel's toggles). */
   lightTypes: { point: boolean; spot: boolean; area: boolean };
+  /** k: times in the open shutter per pixel sample (motion blur). */
+  timeSamples: number;
 }
 
 export interface Material {
@@ -50,6 +61,10 @@ export interface Material {
   shininess: number;
   transparent: boolean;
   refractiveIndex: number;
+  /** Spread of reflected (and refracted) rays; 0 is a perfect mirror or clear glass. */
+  roughness: number;
+  /** m: m×m reflected (refracted) rays per hit when roughness > 0. */
+  glossySamples: number;
 }
 
 export type ShapeKind = 'sphere' | 'box' | 'cylinder' | 'plane' | 'mesh';
@@ -66,6 +81,8 @@ export interface SceneObject {
   /** Euler angles XYZ in degrees. */
   rotation: Vec3;
   scale: Vec3;
+  /** How far the object moves while the shutter is open, in metres (motion blur). */
+  velocity: Vec3;
   material: Material;
 }
 

@@ -1,12 +1,20 @@
 import { Vector3 } from 'three';
+import { effectiveFocusDistance } from '../scene/camera-focus.ts';
 import type { Camera } from '../scene/scene.ts';
 
 const DEG = Math.PI / 180;
 
 /**
- * The pinhole camera: turns a point on the image (in pixels, y down) into a primary ray.
+ * The camera: turns a point on the image (in pixels, y down) into a primary ray.
  * The vertical field of view is `camera.fov`; the horizontal one follows the image's
  * aspect ratio, so a 512×384 render frames the same view as an 8×6 screen.
+ *
+ * With an aperture it is a thin lens (Cook, Porter & Carpenter 1984; Potmesil & Chakravarty
+ * 1981): the pinhole ray through an image point meets the plane in focus at F, and the lens
+ * rays go from points on a disc of radius `aperture` around the eye, in the camera's
+ * right/up plane, toward F (distribution-effects §2). Points on that plane are sharp whatever
+ * the aperture; a point at distance z is spread over a circle of confusion of diameter
+ * 2a·|z − f|/z on the plane in focus (f the focus distance, a the lens radius).
  */
 export class CameraRays {
   readonly eye: Vector3;
@@ -14,6 +22,12 @@ export class CameraRays {
   readonly right = new Vector3();
   readonly up = new Vector3();
   private readonly tanHalfFov: number;
+  /** Lens radius a in metres; 0 is the pinhole. */
+  readonly aperture: number;
+  /** f: distance of the plane in focus along `forward`. */
+  readonly focusDistance: number;
+  /** n: n×n lens points per pixel sample, 1 for a pinhole (where n is ignored). */
+  readonly lensSamplesPerSide: number;
 
   constructor(camera: Camera) {
     this.eye = new Vector3(...camera.position);
@@ -25,6 +39,19 @@ export class CameraRays {
     this.right.crossVectors(this.forward, upHint).normalize();
     this.up.crossVectors(this.right, this.forward);
     this.tanHalfFov = Math.tan((camera.fov * DEG) / 2);
+    this.aperture = camera.aperture;
+    this.focusDistance = effectiveFocusDistance(camera);
+    this.lensSamplesPerSide = camera.aperture > 0 ? camera.lensSamples : 1;
+  }
+
+  /** F: where the pinhole ray along unit `direction` meets the plane in focus. */
+  focalPoint(direction: Vector3, out: Vector3): Vector3 {
+    return out.copy(this.eye).addScaledVector(direction, this.focusDistance / direction.dot(this.forward));
+  }
+
+  /** The lens point of unit-disc point (u, v): eye + aperture·(u·right + v·up). */
+  lensPoint(u: number, v: number, out: Vector3): Vector3 {
+    return out.copy(this.eye).addScaledVector(this.right, this.aperture * u).addScaledVector(this.up, this.aperture * v);
   }
 
   /**

@@ -21,6 +21,17 @@ export interface RayNode {
   children: RayNode[];
   /** area-light / area-shadow only: the light's four corners (the cone's base). */
   corners?: [Vec3, Vec3, Vec3, Vec3];
+  /**
+   * Lens or time rays only (a `primary` child of a root, when a pixel sample casts more than
+   * one ray: distribution-effects §3): where on the lens it starts (its origin).
+   */
+  lensPoint?: Vec3;
+  /** Lens or time rays only: τ in [0, 1), when in the open shutter the ray (and its tree) is cast. */
+  time?: number;
+  /** reflect / refract rays spread around the ideal direction by a rough material. */
+  glossy?: true;
+  /** A glossy direction pointing into the surface: not traced, it adds black (length 0). */
+  absorbed?: true;
 }
 
 /** The answer to "which rays made this pixel?" (`rt trace`). */

@@ -6,7 +6,10 @@ export class Ray {
   readonly direction = new Vector3();
   /** 1/direction per axis, for the slab test against bounding boxes. */
   readonly inverseDirection = new Vector3();
+  /** τ in [0, 1): when in the open shutter the ray is cast; moving objects are at position + τ·velocity. */
+  time = 0;
 
+  /** Sets origin and direction; the time is kept (a ray's children share it). */
   set(origin: Vector3, direction: Vector3): this {
     this.origin.copy(origin);
     this.direction.copy(direction);

@@ -1,6 +1,8 @@
 import { Vector3 } from 'three';
+import { discPointBuffer, jitteredDiscPoints } from './disc-samples.ts';
 import type { RayNode } from './ray-tree.ts';
 import { Ray } from './ray.ts';
+import { hashKey, RandomStream } from './sampler.ts';
 import { samplePosition } from './supersampling.ts';
 import type { TracerScene } from './tracer-scene.ts';
 import { WhittedIntegrator } from './whitted-integrator.ts';
@@ -17,15 +19,31 @@ export function integratorFor(scene: TracerScene): WhittedIntegrator {
   return integrator;
 }
 
+/** Salts so that lens points and shutter times never share random numbers with each other or the lights. */
+const LENS_SALT = 0x1e25;
+const TIME_SALT = 0x71fe;
+
 const position: [number, number] = [0, 0];
 const direction = new Vector3();
+const focalPoint = new Vector3();
+const lensPoint = new Vector3();
+const lensDirection = new Vector3();
 const primary = new Ray();
 const sampleColor = new Vector3();
+const subSampleColor = new Vector3();
+const random = new RandomStream();
+const lensPoints = discPointBuffer();
+const times = new Float64Array(16);
 
 /**
  * The colour of pixel (x, y) of a width×height image: the mean of its s×s supersamples,
  * each weighted 1/s² (spec §2). With `roots`, each sample's ray tree is recorded there.
  * The image and the ray tree both come from here, so they always agree.
+ *
+ * A sample with a lens (aperture > 0, n×n lens points) or a shutter (k > 1 times) casts
+ * n²·k primary rays, each weighted 1/(n²·k) (distribution-effects §2). With more than one,
+ * its root is the pinhole ray to the plane in focus (hit, length to F, no object), with one
+ * child per lens point and time (§3); with one, that ray is the root.
  * @param s samples per side; the scene's supersampling unless a preview asks for 1
  */
 export function renderPixel(
@@ -33,21 +51,77 @@ export function renderPixel(
   out: Vector3, roots: RayNode[] | null, s = scene.settings.supersampling,
 ): Vector3 {
   const integrator = integratorFor(scene);
+  const { camera } = scene;
   const samplePattern = scene.settings.samplePattern;
   const samples = s * s;
+  const n = camera.lensSamplesPerSide;
+  const k = scene.settings.timeSamples;
+  const lensRays = n * n;
+  const hasLens = camera.aperture > 0;
+  // One ray per sample through the pinhole at time 0 is today's tracer, to the bit.
+  const distributed = hasLens || k > 1;
+  // More than one ray per sample: the root is the pinhole ray, the rays are its children.
+  const nested = lensRays * k > 1;
+  const weight = 1 / (lensRays * k);
   out.set(0, 0, 0);
-  for (let k = 0; k < samples; k++) {
-    samplePosition(samplePattern, s, k, x, y, seed, position);
-    scene.camera.direction(x + position[0], y + position[1], width, height, direction);
-    primary.set(scene.camera.eye, direction);
-    integrator.startPixelSample(seed, x, y, k);
-    integrator.stats.primary++;
+  for (let sample = 0; sample < samples; sample++) {
+    samplePosition(samplePattern, s, sample, x, y, seed, position);
+    camera.direction(x + position[0], y + position[1], width, height, direction);
+    integrator.startPixelSample(seed, x, y, sample);
+    if (!distributed) {
+      primary.set(camera.eye, direction);
+      primary.time = 0;
+      integrator.stats.primary++;
+      let root: RayNode | null = null;
+      if (roots) {
+        root = primaryNode(primary);
+        roots.push(root);
+      }
+      out.add(integrator.trace(primary, 0, sampleColor, root));
+      continue;
+    }
+    // The pinhole ray meets the plane in focus at F; every lens ray aims at F.
+    camera.focalPoint(direction, focalPoint);
+    if (hasLens) jitteredDiscPoints(n, random.reset(hashKey(seed, x, y, sample, LENS_SALT)), lensPoints);
+    // k stratified times (i + ξ)/k; every lens point is traced at each of them.
+    random.reset(hashKey(seed, x, y, sample, TIME_SALT));
+    for (let i = 0; i < k; i++) times[i] = k === 1 ? 0 : (i + random.next()) / k;
     let root: RayNode | null = null;
-    if (roots) {
-      root = primaryNode(primary);
+    if (roots && nested) {
+      root = primaryNode(primary.set(camera.eye, direction));
+      root.hit = true;
+      root.length = focalPoint.distanceTo(camera.eye);
       roots.push(root);
     }
-    out.add(integrator.trace(primary, 0, sampleColor, root));
+    sampleColor.set(0, 0, 0);
+    for (let lens = 0; lens < lensRays; lens++) {
+      if (hasLens) {
+        camera.lensPoint(lensPoints[lens * 2], lensPoints[lens * 2 + 1], lensPoint);
+        lensDirection.subVectors(focalPoint, lensPoint).normalize();
+      } else {
+        lensPoint.copy(camera.eye);
+        lensDirection.copy(direction);
+      }
+      for (let i = 0; i < k; i++) {
+        integrator.startSubSample(seed, x, y, sample, lens * k + i, times[i]);
+        primary.set(lensPoint, lensDirection);
+        primary.time = times[i];
+        integrator.stats.primary++;
+        let ray: RayNode | null = null;
+        if (roots) {
+          ray = primaryNode(primary);
+          ray.lensPoint = lensPoint.toArray();
+          ray.time = times[i];
+          if (root) {
+            root.children.push(ray);
+            integrator.childWeights.set(ray, weight);
+          } else roots.push(ray);
+        }
+        sampleColor.addScaledVector(integrator.trace(primary, 0, subSampleColor, ray), weight);
+      }
+    }
+    if (root) root.color = sampleColor.toArray();
+    out.add(sampleColor);
   }
   return out.divideScalar(samples);
 }

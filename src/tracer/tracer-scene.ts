@@ -59,10 +59,12 @@ export function objectBvhs(shapes: readonly Intersectable[]): Pick<TracerScene, 
 
 function createShape(object: SceneObject, index: number, meshes: MeshLibrary): Shape {
   const toWorld = objectToWorld(object);
-  if (object.shape !== 'mesh') return new Shape(index, object.id, object.material, object.shape, toWorld);
+  const moves = object.velocity.some((component) => component !== 0);
+  const velocity = moves ? new Vector3(...object.velocity) : null;
+  if (object.shape !== 'mesh') return new Shape(index, object.id, object.material, object.shape, toWorld, null, velocity);
   const mesh = object.mesh === undefined ? undefined : meshes.get(object.mesh);
   if (!mesh) throw new Error(`objects[${index}] ("${object.id}"): the model "${object.mesh}" was not loaded`);
-  return new Shape(index, object.id, object.material, 'mesh', toWorld, meshAccel(mesh));
+  return new Shape(index, object.id, object.material, 'mesh', toWorld, meshAccel(mesh), velocity);
 }
 
 /** position · rotation (Euler XYZ, degrees) · scale, as three.js composes an Object3D. */

@@ -8,6 +8,8 @@ import { Ray } from './ray.ts';
 import type { RayNode, RayStats, RayType } from './ray-tree.ts';
 import { emptyRayStats } from './ray-tree.ts';
 import { hashKey, RandomStream } from './sampler.ts';
+import { discPointBuffer, jitteredDiscPoints } from './disc-samples.ts';
+import { glossyDirection, perpendicularBasis } from './glossy.ts';
 import type { Intersectable } from './intersectable.ts';
 import type { TracerScene } from './tracer-scene.ts';
 
@@ -30,6 +32,11 @@ class Frame {
   readonly childRay = new Ray();
   readonly childColor = new Vector3();
   readonly shadowRay = new Ray();
+  /** Glossy rays: the ideal direction, the basis around it and the jittered disc points. */
+  readonly ideal = new Vector3();
+  readonly tangent = new Vector3();
+  readonly bitangent = new Vector3();
+  readonly discPoints = discPointBuffer();
   /** Whether the ray hit the outside of the surface (false: it is inside the object). */
   entering = true;
   /** The box from the hit point to the light being sampled: only objects in it can cast its shadow. */
@@ -48,10 +55,14 @@ const MAX_LISTED_CANDIDATES = 8;
 
 const shadowHit = new Hit();
 
+/** Salt so that glossy directions never share random numbers with light sampling. */
+const GLOSS_SALT = 0x6c055;
+
 /**
  * Whitted-style recursive ray tracing (Whitted 1980) with the Phong model of spec §2:
  * local light at every hit, plus mirror reflection for opaque specular surfaces and a
- * Schlick-weighted reflection/refraction split for transparent ones.
+ * Schlick-weighted reflection/refraction split for transparent ones; rough materials spread
+ * those rays (Cook et al.'s distributed ray tracing, 1984: distribution-effects §2).
  *
  * When a RayNode is passed, the rays are recorded as a tree (spec §3); the arithmetic is
  * the same with or without it, so a pixel's tree has exactly the image's colour.
@@ -66,6 +77,9 @@ export class WhittedIntegrator {
   private readonly random = new RandomStream();
   private sampleKey = 0;
   private lightEvaluation = 0;
+  private glossEvaluation = 0;
+  /** τ of the primary ray being traced: every ray of its tree shares it. */
+  private time = 0;
 
   constructor(private readonly scene: TracerScene) {
     for (let depth = 0; depth <= scene.settings.maxDepth; depth++) this.frames.push(new Frame());
@@ -76,6 +90,19 @@ export class WhittedIntegrator {
   startPixelSample(seed: number, x: number, y: number, sample: number): void {
     this.sampleKey = hashKey(seed, x, y, sample);
     this.lightEvaluation = 0;
+    this.glossEvaluation = 0;
+    this.time = 0;
+  }
+
+  /**
+   * Keys the random numbers of one lens/time ray of the current pixel sample (when the
+   * sample casts more than one) and sets the time its whole tree is traced at.
+   */
+  startSubSample(seed: number, x: number, y: number, sample: number, subSample: number, time: number): void {
+    this.sampleKey = hashKey(seed, x, y, sample, subSample);
+    this.lightEvaluation = 0;
+    this.glossEvaluation = 0;
+    this.time = time;
   }
 
   /**
@@ -130,7 +157,8 @@ export class WhittedIntegrator {
     else if (material.specular > 0) {
       // Opaque specular surface: ks · trace(reflected ray)
       reflect(ray.direction, n, frame.childDirection);
-      this.traceChild('reflect', frame, depth, material.specular, out, node, leavingShape(frame, frame.childDirection));
+      if (material.roughness > 0) this.traceGlossy('reflect', frame, depth, material.specular, material, out, node);
+      else this.traceChild('reflect', frame, depth, material.specular, out, node, leavingShape(frame, frame.childDirection));
     }
   }
 
@@ -229,6 +257,7 @@ export class WhittedIntegrator {
     this.stats.shadow++;
     const origin = offsetOrigin(frame, toLight, this.scene.epsilon);
     const ray = frame.shadowRay.set(origin, toLight);
+    ray.time = this.time;
     const hit = shadowHit.reset(distance - this.scene.epsilon);
     const leaving = leavingShape(frame, toLight);
     const { candidates, candidateCount, shadowReach } = frame;
@@ -255,27 +284,68 @@ export class WhittedIntegrator {
     const n = frame.normal;
     const eta = entering ? 1 / material.refractiveIndex : material.refractiveIndex;
     const refracted = refract(ray.direction, n, eta, frame.childDirection);
+    const rough = material.roughness > 0;
     if (!refracted) {
       // Total internal reflection: everything is reflected.
       reflect(ray.direction, n, frame.childDirection);
-      this.traceChild('reflect', frame, depth, 1, out, node);
+      if (rough) this.traceGlossy('reflect', frame, depth, 1, material, out, node);
+      else this.traceChild('reflect', frame, depth, 1, out, node);
       return;
     }
     // Schlick with the angle on the less dense side: θi entering, θt leaving.
     const cosTheta = entering ? -ray.direction.dot(n) : -frame.childDirection.dot(n);
     const kr = schlickReflectance(cosTheta, material.refractiveIndex);
-    this.traceChild('refract', frame, depth, 1 - kr, out, node);
+    if (rough) this.traceGlossy('refract', frame, depth, 1 - kr, material, out, node);
+    else this.traceChild('refract', frame, depth, 1 - kr, out, node);
     reflect(ray.direction, n, frame.childDirection);
-    this.traceChild('reflect', frame, depth, kr, out, node);
+    if (rough) this.traceGlossy('reflect', frame, depth, kr, material, out, node);
+    else this.traceChild('reflect', frame, depth, kr, out, node);
   }
 
-  /** Traces frame.childDirection from the hit point and adds weight × its colour to `out`. */
+  /**
+   * A rough surface (distribution-effects §2): m×m rays spread around the ideal direction
+   * in frame.childDirection, each adding weight/m² × its colour. A spread direction on the
+   * wrong side of the surface (into it for a reflection, back out for a refraction) is not
+   * traced and adds black; a recorded tree keeps it as an absorbed ray of length 0.
+   */
+  private traceGlossy(
+    type: 'reflect' | 'refract', frame: Frame, depth: number, weight: number, material: Material, out: Vector3, node: RayNode | null,
+  ): void {
+    const { ideal, tangent, bitangent, discPoints, geometricNormal: ng } = frame;
+    const m = material.glossySamples;
+    ideal.copy(frame.childDirection);
+    perpendicularBasis(ideal, tangent, bitangent);
+    // Drawn before any child is traced: a child's own light samples restart the stream.
+    jitteredDiscPoints(m, this.random.reset(hashKey(this.sampleKey, GLOSS_SALT, this.glossEvaluation++)), discPoints);
+    const share = weight / (m * m);
+    for (let i = 0; i < m * m; i++) {
+      const direction = glossyDirection(ideal, tangent, bitangent, material.roughness, discPoints[i * 2], discPoints[i * 2 + 1], frame.childDirection);
+      // ng faces the incoming ray: a reflection must leave on that side, a refraction on the other.
+      const side = ng.dot(direction);
+      if (type === 'reflect' ? side <= 0 : side >= 0) {
+        if (node) {
+          const absorbed = newNode(type, frame.hit.point, direction, 0, true, frame.hit.shape?.id ?? null, null, [0, 0, 0]);
+          absorbed.glossy = true;
+          absorbed.absorbed = true;
+          node.children.push(absorbed);
+          this.childWeights.set(absorbed, share);
+        }
+        continue;
+      }
+      const leaving = type === 'reflect' ? leavingShape(frame, direction) : null;
+      const child = this.traceChild(type, frame, depth, share, out, node, leaving);
+      if (child) child.glossy = true;
+    }
+  }
+
+  /** Traces frame.childDirection from the hit point and adds weight × its colour to `out`; returns the recorded child. */
   private traceChild(
     type: 'reflect' | 'refract', frame: Frame, depth: number, weight: number, out: Vector3, node: RayNode | null, leaving: Intersectable | null = null,
-  ): void {
+  ): RayNode | null {
     this.stats[type]++;
     const origin = offsetOrigin(frame, frame.childDirection, this.scene.epsilon);
     const ray = frame.childRay.set(origin, frame.childDirection);
+    ray.time = this.time;
     let child: RayNode | null = null;
     if (node) {
       child = newNode(type, origin, frame.childDirection, 0, false, null, null, [0, 0, 0]);
@@ -284,6 +354,7 @@ export class WhittedIntegrator {
     }
     const color = this.trace(ray, depth + 1, frame.childColor, child, leaving);
     out.addScaledVector(color, weight);
+    return child;
   }
 
   /** Adds a light's sample rays to the tree, merged into one cone when there are many and all agree. */

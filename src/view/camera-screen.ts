@@ -73,7 +73,7 @@ export class CameraScreen {
   private readonly owned: { dispose(): void }[] = [];
   private gridKey = '';
   private samplesKey = '';
-  private current: ScreenGrid = screenGrid({ position: [0, 0, 1], target: [0, 0, 0], fov: 45, pixels: [1, 1], screenDistance: 1 });
+  private current: ScreenGrid = screenGrid({ position: [0, 0, 1], target: [0, 0, 0], fov: 45, pixels: [1, 1], screenDistance: 1, aperture: 0, lensSamples: 1 });
 
   constructor() {
     this.rig.name = 'ray tracer camera';

@@ -45,6 +45,8 @@ export class FlatRays {
   colorKey = new Uint8Array(0);
   /** The index after its last descendant. */
   subtreeEnd = new Int32Array(0);
+  /** The shutter time τ of the ray's lens/time ancestor (or its own), −1 for none. */
+  time = new Float32Array(0);
   /** Index into `corners` / 12 for a merged area node drawn as a cone, else −1. */
   cone = new Int32Array(0);
   /** The light corners of each cone, 12 floats per cone. */
@@ -59,7 +61,7 @@ export class FlatRays {
   }
 
   /** Appends `node` and its subtree; returns nothing, fills subtreeEnd on the way back. */
-  add(node: RayNode, parentContribution: number, start: number): void {
+  add(node: RayNode, parentContribution: number, start: number, parentTime = -1): void {
     const i = this.grow();
     this.nodes.push(node);
     const { origin, direction } = node;
@@ -77,9 +79,11 @@ export class FlatRays {
     this.start[i] = start;
     this.hit[i] = node.hit ? 1 : 0;
     this.colorKey[i] = KEY_INDEX[rayColorKey(node.type, node.hit)];
+    const time = node.time ?? parentTime;
+    this.time[i] = time;
     this.cone[i] = node.corners && (node.type === 'area-light' || node.type === 'area-shadow') ? this.addCone(node.corners) : -1;
     const { children } = node;
-    for (let k = 0; k < children.length; k++) this.add(children[k], contribution, start + length);
+    for (let k = 0; k < children.length; k++) this.add(children[k], contribution, start + length, time);
     this.subtreeEnd[i] = this.count;
   }
 
@@ -104,6 +108,7 @@ export class FlatRays {
     this.colorKey = resized(this.colorKey, capacity);
     this.subtreeEnd = resized(this.subtreeEnd, capacity);
     this.cone = resized(this.cone, capacity);
+    this.time = resized(this.time, capacity);
     return i;
   }
 }

@@ -20,6 +20,7 @@ import type { ScreenRays } from '../render/screen-rays.ts';
 import type { Store } from '../lab-state/store.ts';
 import type { Vec3 } from '../scene/scene.ts';
 import { CameraScreen } from './camera-screen.ts';
+import { DistributionGizmos } from './distribution-gizmos.ts';
 import { CameraFlight } from './fly-to-camera.ts';
 import { type Animator, FrameScheduler } from './frame-scheduler.ts';
 import { cameraChanges, lightChanges, objectChanges } from './gizmo-changes.ts';
@@ -92,6 +93,7 @@ export class LabView {
   private readonly rasterLights: RasterLights;
   private readonly lightGizmos: LightGizmos;
   private readonly cameraScreen: CameraScreen;
+  private readonly distribution = new DistributionGizmos();
   private readonly picker = new Picker();
   private readonly rayRaycaster = new Raycaster();
   private readonly selectionBox: BoxHelper;
@@ -162,6 +164,7 @@ export class LabView {
       this.rasterLights.group,
       this.lightGizmos.group,
       this.cameraScreen.rig,
+      this.distribution.group,
       this.selectionBox,
       this.gizmo.helper,
     );
@@ -330,7 +333,7 @@ export class LabView {
 
   /** The raster view from the ray tracer's camera, `width`×`height`, for the render window's comparison. */
   rasterSnapshot(width: number, height: number): ImageData {
-    const hidden: Object3D[] = [this.grid, this.lightGizmos.group, this.cameraScreen.rig, this.selectionBox, this.gizmo.helper];
+    const hidden: Object3D[] = [this.grid, this.lightGizmos.group, this.cameraScreen.rig, this.distribution.group, this.selectionBox, this.gizmo.helper];
     if (this.rayLayer) hidden.push(this.rayLayer.object);
     if (this.bvhLayer) hidden.push(this.bvhLayer);
     const { camera, settings } = this.store.state.scene;
@@ -372,6 +375,7 @@ export class LabView {
     this.rasterLights.dispose();
     this.lightGizmos.dispose();
     this.cameraScreen.dispose();
+    this.distribution.dispose();
     this.selectionBox.dispose();
     this.grid.dispose();
     this.renderer.dispose();
@@ -386,6 +390,7 @@ export class LabView {
       this.objects.sync(state.scene);
       this.rasterLights.sync(state.scene);
       this.lightGizmos.sync(state.scene);
+      this.distribution.sync(state.scene, (id) => this.objects.objectOf(id));
       if (previous && !sameCamera(previous, state)) this.flight.cameraMoved(this.tracerCameraPose());
     }
     if (

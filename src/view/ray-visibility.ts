@@ -13,6 +13,7 @@ import type { Color } from '../scene/scene.ts';
 import type { RayNode } from '../tracer/ray-tree.ts';
 import { flattenRays, type FlatRays, resized } from './flat-rays.ts';
 import { paletteNameFor, RAY_COLOR_KEYS, rayColor } from './ray-palette.ts';
+import { timeColor } from './time-colors.ts';
 
 /**
  * Opacity at 100 % transparency. The option promises "almost invisible", not gone: a faint
@@ -131,6 +132,8 @@ const DARKEN: RayStyle = { fadeTo: [0, 0, 0] };
  *   colour mixes it toward `style.fadeTo` on a log scale (CONTRIBUTION_DECADES).
  * - alpha = 1 − transparency · (1 − MIN_ALPHA); radius fixed, or
  *   lerp(minRadius, maxRadius, contribution), which also works with min > max.
+ * - colorByTime: a ray under a lens/time ray (distribution-effects §3) takes its time's
+ *   colour (time-colors.ts) instead of its type's; rays without a time keep theirs.
  * - area-light / area-shadow nodes become cones from the hit point to the light's corners.
  */
 export function visibleRays(
@@ -165,6 +168,8 @@ export function contributionTone(contribution: number): number {
 class VisibilityPass {
   /** The palette's colours, 3 per RAY_COLOR_KEYS entry. */
   private readonly colors = new Float32Array(RAY_COLOR_KEYS.length * 3);
+  /** Scratch: the time colour of the ray being emitted. */
+  private readonly timeRgb = new Float32Array(3);
   private readonly alpha: number;
   /** Travel added to every start of the current pixel (pixel-by-pixel animation). */
   private offset = 0;
@@ -222,7 +227,13 @@ class VisibilityPass {
     const key = flat.colorKey[i];
     list.colorKey[j] = key;
     const tone = options.contributionColor ? contributionTone(contribution) : 1;
-    for (let axis = 0; axis < 3; axis++) list.color[j * 3 + axis] = fadeTo[axis] + (colors[key * 3 + axis] - fadeTo[axis]) * tone;
+    const time = flat.time[i];
+    const byTime = options.colorByTime && time >= 0;
+    if (byTime) timeColor(time, this.timeRgb);
+    for (let axis = 0; axis < 3; axis++) {
+      const base = byTime ? this.timeRgb[axis] : colors[key * 3 + axis];
+      list.color[j * 3 + axis] = fadeTo[axis] + (base - fadeTo[axis]) * tone;
+    }
     if (c >= 0) list.corners.set(flat.corners.subarray(c * 12, c * 12 + 12), j * 12);
     if (start + length > this.travelEnd) this.travelEnd = start + length;
   }

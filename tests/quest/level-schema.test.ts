@@ -113,7 +113,7 @@ describe('field messages read `path: reason`, like scene files', () => {
     const [unknownType] = errorsOf((level) => (level.tasks[0].solution = [{ type: 'view.spun' }]));
     expect(unknownType).toMatch(/^tasks\[0\]\.solution\[0\]\.type: must be one of scene\.loaded, .*, got "view\.spun"$/);
     expect(errorsOf((level) => (level.tasks[0].solution = [{ type: 'rays.changed', changes: { hideNoHit: 'yes', glow: 1 } }]))).toEqual([
-      'tasks[0].solution[0].changes: hideNoHit must be a boolean, got "yes"; unknown field "glow" (known: showRays, hideNoHit, hideNegligible, negligibleThreshold, transparency, radius, dynamicRadius, minRadius, maxRadius, contributionColor, colorBlindPalette, animate, animationSpeed, animatePixelByPixel, loop, showSamplePoints)',
+      'tasks[0].solution[0].changes: hideNoHit must be a boolean, got "yes"; unknown field "glow" (known: showRays, hideNoHit, hideNegligible, negligibleThreshold, transparency, radius, dynamicRadius, minRadius, maxRadius, contributionColor, colorBlindPalette, animate, animationSpeed, animatePixelByPixel, loop, showSamplePoints, colorByTime)',
     ]);
   });
 
@@ -126,7 +126,7 @@ describe('field messages read `path: reason`, like scene files', () => {
   it('checks ui.controls against the panels and their controls', () => {
     expect(errorsOf((level) => (level.ui = { panels: ['object'], controls: { tracer: ['pixels'], object: ['colour'] } }))).toEqual([
       'ui.controls.tracer: the tracer panel is not in ui.panels',
-      'ui.controls.object[0]: must be one of color, ambient, diffuse, specular, shininess, transparent, refractive-index, presets, got "colour"',
+      'ui.controls.object[0]: must be one of color, ambient, diffuse, specular, shininess, transparent, refractive-index, presets, roughness, glossy-samples, velocity, got "colour"',
     ]);
   });
 
@@ -161,7 +161,7 @@ describe('rules across fields (once every field is valid)', () => {
 
   it('checks state paths against the state the level starts in', () => {
     expect(errorsOf((level) => (level.tasks[2].goal = { state: 'scene.settings.supersample', op: '>=', value: 2 }))).toEqual([
-      'tasks[2].goal.state: no field "supersample" in scene.settings (it has shadows, maxDepth, background, supersampling, samplePattern, imageSize, dithering, lightTypes)',
+      'tasks[2].goal.state: no field "supersample" in scene.settings (it has shadows, maxDepth, background, supersampling, samplePattern, imageSize, dithering, lightTypes, timeSamples)',
     ]);
     expect(errorsOf((level) => (level.tasks[2].goal = { event: 'render.finished', where: { 'scene.objects.color': [1, 0, 0] } }))).toEqual([
       'tasks[2].goal.where.scene.objects.color: scene.objects is a list: use [0], [id=…] or .length, not .color',

@@ -40,6 +40,23 @@ describe('the render estimate', () => {
     expect(base.heavy).toBe(false);
   });
 
+  it('counts lens points, shutter times and glossy rays (distribution-effects §2)', () => {
+    const scene = defaultScene();
+    const base = estimateRender(scene, 100, 100).rays;
+    const lens = sceneFrom({ ...scene, camera: { ...scene.camera, aperture: 0.1, lensSamples: 3 }, settings: { ...scene.settings, timeSamples: 4 } });
+    expect(estimateRender(lens, 100, 100).rays).toBeCloseTo(9 * 4 * base);
+    // Without an aperture the lens samples cost nothing: every lens ray is the pinhole ray.
+    const pinhole = sceneFrom({ ...scene, camera: { ...scene.camera, lensSamples: 3 } });
+    expect(estimateRender(pinhole, 100, 100).rays).toBeCloseTo(base);
+    const rough = sceneFrom({ ...scene, objects: scene.objects.map((o) => ({ ...o, material: { ...o.material, roughness: 0.3 } })) });
+    expect(estimateRender(rough, 100, 100).rays).toBeGreaterThan(5 * base);
+    for (const heavier of [lens, rough]) {
+      const ratio = estimateRender(heavier, 32, 24).rays / tracedRays(heavier, 32, 24);
+      expect(ratio).toBeGreaterThan(1 / 3);
+      expect(ratio).toBeLessThan(3);
+    }
+  });
+
   it('calls the schema\'s heaviest scene heavy: weeks, even on eight workers', () => {
     const estimate = estimateRender(heaviest, 4096, 4096, 8);
     expect(estimate.heavy).toBe(true);

@@ -37,10 +37,11 @@ describe('defaults', () => {
       ok: true,
       scene: {
         version: 1,
-        camera: { position: [0, 1, 5], target: [0, 0.5, 0], fov: 45, pixels: [8, 6], screenDistance: 1 },
+        // No focusDistance: left out, the target is in focus.
+        camera: { position: [0, 1, 5], target: [0, 0.5, 0], fov: 45, pixels: [8, 6], screenDistance: 1, aperture: 0, lensSamples: 1 },
         settings: {
           shadows: true, maxDepth: 3, background: [0.7, 0.7, 0.7], supersampling: 1, samplePattern: 'grid',
-          imageSize: [512, 384], dithering: false, lightTypes: { point: true, spot: true, area: true },
+          imageSize: [512, 384], dithering: false, lightTypes: { point: true, spot: true, area: true }, timeSamples: 1,
         },
         objects: [],
         lights: [],
@@ -60,8 +61,11 @@ describe('defaults', () => {
     };
     expect(result.scene.objects).toEqual([
       {
-        id: 'ball', shape: 'sphere', position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1],
-        material: { color: [1, 1, 1], ambient: 0.2, diffuse: 1, specular: 0, shininess: 32, transparent: false, refractiveIndex: 1.5 },
+        id: 'ball', shape: 'sphere', position: [0, 0, 0], rotation: [0, 0, 0], scale: [1, 1, 1], velocity: [0, 0, 0],
+        material: {
+          color: [1, 1, 1], ambient: 0.2, diffuse: 1, specular: 0, shininess: 32, transparent: false, refractiveIndex: 1.5,
+          roughness: 0, glossySamples: 3,
+        },
       },
     ]);
     expect(result.scene.lights).toEqual([
@@ -239,6 +243,24 @@ function defaultListAt(path: string, key: string): unknown[] {
   return [1, 1, 1];
 }
 
+describe('primary rays per pixel (distribution-effects §1)', () => {
+  it('takes s²·n²·k = 1024 and refuses one more step, on the factor that broke it', () => {
+    expect(parseScene({ version: 1, camera: { lensSamples: 4 }, settings: { supersampling: 2, timeSamples: 16 } }).ok).toBe(true);
+    expect(errorsOf({ camera: { lensSamples: 8 }, settings: { supersampling: 8 } })).toEqual([
+      'camera.lensSamples: makes supersampling² · lensSamples² · timeSamples = 8² · 8² · 1 = 4096 primary rays per pixel, more than 1024',
+    ]);
+    expect(errorsOf({ camera: { lensSamples: 4 }, settings: { supersampling: 3, timeSamples: 16 } })).toEqual([
+      'settings.timeSamples: makes supersampling² · lensSamples² · timeSamples = 3² · 4² · 16 = 2304 primary rays per pixel, more than 1024',
+    ]);
+  });
+
+  it('is checked alongside the other problems of the file', () => {
+    const errors = errorsOf({ camera: { lensSamples: 8, aperture: 2 }, settings: { supersampling: 8 } });
+    expect(errors).toHaveLength(2);
+    expect(errors).toContain('camera.aperture: must be between 0 and 0.5, got 2');
+  });
+});
+
 describe('limits at both ends', () => {
   // [path, lowest, highest, whole numbers only]
   it.each<[string, number, number, boolean]>([
@@ -264,6 +286,14 @@ describe('limits at both ends', () => {
     ['lights.0.angleAttenuation', 0, 64, false],
     ['lights.0.samples', 1, 10, true],
     ['lights.0.size.1', 0.01, 100, false],
+    ['camera.aperture', 0, 0.5, false],
+    ['camera.focusDistance', 0.05, 100, false],
+    ['camera.lensSamples', 1, 8, true],
+    ['settings.timeSamples', 1, 16, true],
+    ['objects.0.material.roughness', 0, 1, false],
+    ['objects.0.material.glossySamples', 1, 8, true],
+    ['objects.0.velocity.0', -10, 10, false],
+    ['objects.0.velocity.2', -10, 10, false],
   ])('%s: %d..%d', (path, lowest, highest, whole) => {
     const step = whole ? 1 : Math.max(Math.abs(highest - lowest) * 1e-3, 1e-6);
     const shownPath = path.replace(/\.(\d+)/g, '[$1]');

@@ -81,3 +81,11 @@ export function syntheticScreen(total: number): ScreenRays {
     ];
   });
 }
+
+/** Visits every node of the trees, parents before children. */
+export function walkRays(nodes: readonly RayNode[], visit: (node: RayNode) => void): void {
+  for (const node of nodes) {
+    visit(node);
+    walkRays(node.children, visit);
+  }
+}

@@ -51,10 +51,55 @@ const glassModels = (): Scene =>
     lights: [{ id: 'lamp', type: 'point', position: [1, 3, 2] }],
   });
 
+/** Four balls from near to far, the second (at the target) in focus (distribution-effects §2, the lens). */
+const depthOfField = (): Scene =>
+  sceneFrom({
+    camera: { position: [0, 0.9, 4], target: [0, 0.5, 0], fov: 40, aperture: 0.12, lensSamples: 4 },
+    settings: { background: [0.75, 0.8, 0.9] },
+    objects: [
+      { id: 'floor', shape: 'plane', scale: [12, 1, 20], material: { color: [0.8, 0.8, 0.7] } },
+      ...[-1, 0, 1, 2].map((step) => ({
+        id: `ball${step + 1}`, shape: 'sphere', position: [step * 0.7, 0.4, -step * 1.6], scale: [0.8, 0.8, 0.8],
+        material: { color: [0.3 + 0.2 * (step + 1), 0.3, 0.9 - 0.2 * (step + 1)] },
+      })),
+    ],
+    lights: [{ id: 'lamp', type: 'point', position: [2, 4, 3] }],
+  });
+
+/** A brushed-metal floor, a rough metal ball and a frosted glass ball (the glossy spread). */
+const glossy = (): Scene =>
+  sceneFrom({
+    camera: { position: [0, 1.1, 3.6], target: [0, 0.4, 0], fov: 45 },
+    settings: { maxDepth: 2, background: [0.5, 0.6, 0.8] },
+    objects: [
+      { id: 'floor', shape: 'plane', scale: [10, 1, 10], material: { color: [0.3, 0.3, 0.3], diffuse: 0.4, specular: 0.6, roughness: 0.12 } },
+      { id: 'red', shape: 'box', position: [-1.3, 0.4, -1], rotation: [0, 30, 0], scale: [0.8, 0.8, 0.8], material: { color: [0.9, 0.2, 0.1] } },
+      { id: 'metal', shape: 'sphere', position: [0.1, 0.5, -0.4], material: { color: [0.9, 0.8, 0.5], diffuse: 0.2, specular: 0.8, roughness: 0.3 } },
+      { id: 'frosted', shape: 'sphere', position: [1.2, 0.4, 0.5], scale: [0.8, 0.8, 0.8], material: { ambient: 0, diffuse: 0.05, transparent: true, roughness: 0.25, glossySamples: 2 } },
+    ],
+    lights: [{ id: 'lamp', type: 'point', position: [2, 4, 3] }],
+  });
+
+/** A ball moving sideways past a still box, the shutter open for 8 times per sample (motion blur). */
+const motionBlur = (): Scene =>
+  sceneFrom({
+    camera: { position: [0, 1, 4], target: [0, 0.5, 0], fov: 40 },
+    settings: { timeSamples: 8, background: [0.85, 0.85, 0.8] },
+    objects: [
+      { id: 'floor', shape: 'plane', scale: [10, 1, 10], material: { color: [0.6, 0.7, 0.6] } },
+      { id: 'box', shape: 'box', position: [0.9, 0.4, -0.6], scale: [0.8, 0.8, 0.8], material: { color: [0.2, 0.4, 0.9] } },
+      { id: 'ball', shape: 'sphere', position: [-1.4, 0.5, 0.3], velocity: [1.4, 0, 0], material: { color: [0.9, 0.3, 0.1] } },
+    ],
+    lights: [{ id: 'lamp', type: 'point', position: [1, 4, 3] }],
+  });
+
 const cases: [string, () => Scene][] = [
   ['default-scene', defaultScene],
   ['soft-shadows', softShadows],
   ['glass-models', glassModels],
+  ['depth-of-field', depthOfField],
+  ['glossy', glossy],
+  ['motion-blur', motionBlur],
 ];
 
 async function render(scene: Scene): Promise<Uint8ClampedArray> {

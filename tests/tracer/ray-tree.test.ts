@@ -6,17 +6,12 @@ import { renderTile } from '../../src/tracer/render-tile.ts';
 import { tracePixel } from '../../src/tracer/trace-pixel.ts';
 import type { TracerScene } from '../../src/tracer/tracer-scene.ts';
 import { matte, pointLight, tracerSceneFrom } from '../support/test-scene.ts';
+import { walkRays } from '../support/ray-fixtures.ts';
 
 function node(type: RayType, color: [number, number, number], children: RayNode[] = []): RayNode {
   return { type, origin: [0, 0, 0], direction: [0, 0, 1], length: 1, hit: true, objectId: null, lightId: null, color, contribution: 0, children };
 }
 
-function walk(nodes: RayNode[], visit: (n: RayNode) => void): void {
-  for (const n of nodes) {
-    visit(n);
-    walk(n.children, visit);
-  }
-}
 
 const areaLight = (samples: number, extra: Record<string, unknown> = {}) => ({
   id: 'panel', type: 'area', position: [0, 3, 0], rotation: [0, 0, 0], size: [1, 1], samples, angleAttenuation: 0, shape: 'rectangle',
@@ -82,7 +77,7 @@ describe('pixel ray trees', () => {
   it('roots have 1/s² each; every node follows the contribution rule; shadow rays carry black', () => {
     const trace = tracePixel(busyScene(2, 'grid'), 4, 4, 1);
     for (const root of trace.rays) expect(root.contribution).toBeCloseTo(0.25, 12);
-    walk(trace.rays, (n) => {
+    walkRays(trace.rays, (n) => {
       expect(n.contribution).toBeGreaterThanOrEqual(0);
       if (n.type === 'shadow') {
         expect(n.color).toEqual([0, 0, 0]);
@@ -91,7 +86,7 @@ describe('pixel ray trees', () => {
       if (!n.hit) expect(n.length).toBe(10);
     });
     const types = new Set<string>();
-    walk(trace.rays, (n) => types.add(n.type));
+    walkRays(trace.rays, (n) => types.add(n.type));
     // This pixel looks into the glass sphere: its tree has every kind of ray.
     expect([...types].sort()).toEqual(['light', 'primary', 'reflect', 'refract', 'shadow']);
   });
@@ -101,7 +96,7 @@ describe('pixel ray trees', () => {
     const stats = emptyRayStats();
     renderTile(scene, { x: 3, y: 2, width: 1, height: 1 }, { imageWidth: 8, imageHeight: 6, seed: 1 }, stats);
     const counted = { primary: 0, shadow: 0, reflect: 0, refract: 0 };
-    walk(tracePixel(scene, 3, 2, 1).rays, (n) => {
+    walkRays(tracePixel(scene, 3, 2, 1).rays, (n) => {
       if (n.type === 'light' || n.type === 'shadow') counted.shadow++;
       else counted[n.type as 'primary' | 'reflect' | 'refract']++;
     });

@@ -5,7 +5,7 @@ import type { PixelTrace } from '../../src/tracer/ray-tree.ts';
 import { CameraScreen, type CameraScreenState } from '../../src/view/camera-screen.ts';
 import { screenGrid } from '../../src/view/screen-grid.ts';
 
-const camera: Camera = { position: [0, 1, 5], target: [0, 0.5, 0], fov: 45, pixels: [4, 3], screenDistance: 1 };
+const camera: Camera = { position: [0, 1, 5], target: [0, 0.5, 0], fov: 45, pixels: [4, 3], screenDistance: 1, aperture: 0, lensSamples: 1 };
 
 function state(changes: Partial<CameraScreenState> = {}): CameraScreenState {
   return { camera, settings: { supersampling: 1, samplePattern: 'grid' }, selectedPixel: null, showSamplePoints: false, ...changes };

@@ -64,7 +64,7 @@ describe('gizmo drag → action payload', () => {
   });
 
   it('turns the camera’s target with it and keeps the distance to it', () => {
-    const camera: Camera = { position: [0, 1, 5], target: [0, 1, 1], fov: 45, pixels: [8, 6], screenDistance: 1 };
+    const camera: Camera = { position: [0, 1, 5], target: [0, 1, 1], fov: 45, pixels: [8, 6], screenDistance: 1, aperture: 0, lensSamples: 1 };
     // The rig looks down its local −z; turned 90° left about +Y it looks down world −x.
     const changes = cameraChanges(camera, pose([2, 1, 5], [0, 90, 0]), false);
     expect(changes.position).toEqual([2, 1, 5]);
@@ -72,7 +72,7 @@ describe('gizmo drag → action payload', () => {
   });
 
   it('aims the target from the snapped position, so snapping keeps the distance too', () => {
-    const camera: Camera = { position: [0, 0, 0], target: [0, 0, -2], fov: 45, pixels: [8, 6], screenDistance: 1 };
+    const camera: Camera = { position: [0, 0, 0], target: [0, 0, -2], fov: 45, pixels: [8, 6], screenDistance: 1, aperture: 0, lensSamples: 1 };
     const changes = cameraChanges(camera, pose([0.1, 0.2, 0.05], [0, 0, 0]), true);
     expect(changes).toEqual({ position: [0, 0.25, 0], target: [0, 0.25, -2] });
   });

@@ -5,7 +5,7 @@ import { CameraRays } from '../../src/tracer/camera-rays.ts';
 import { samplePosition } from '../../src/tracer/supersampling.ts';
 import { cameraRigQuaternion, cellAtUv, cellCenter, samplePoints, screenGrid, screenPoint } from '../../src/view/screen-grid.ts';
 
-const camera: Camera = { position: [1, 2, 6], target: [-0.5, 0.2, -1], fov: 50, pixels: [8, 6], screenDistance: 1.5 };
+const camera: Camera = { position: [1, 2, 6], target: [-0.5, 0.2, -1], fov: 50, pixels: [8, 6], screenDistance: 1.5, aperture: 0, lensSamples: 1 };
 
 /** A local point of the rig, in the world: eye + rotation · point. */
 function toWorld(local: Vector3, rays: CameraRays): Vector3 {

@@ -24,6 +24,8 @@ const PLANE_BOUNDS = new Box3(new Vector3(-0.5, 0, -0.5), new Vector3(0.5, 0, 0.
  * space instead of moving the shape: the direction is not renormalized there, so the ray
  * parameter t means the same world distance in both spaces.
  *
+ * A shape with a velocity (motion blur) is met at the ray's time: see `localVelocity`.
+ *
  * One class for every kind, dispatching on `kind`: the tracer's inner loop then sees one
  * object shape, which V8 keeps monomorphic (a class per kind made that loop megamorphic).
  */
@@ -39,6 +41,8 @@ export class Shape {
   // worldBounds as min x, y, z then max x, y, z: the slab test reads it per ray.
   private readonly bounds = new Float64Array(6);
   private readonly normalToWorld = new Matrix3();
+  /** The object-space offset per unit of time: world-to-object applied to −velocity; null if it stands still. */
+  private readonly localVelocity: Vector3 | null;
 
   constructor(
     readonly index: number,
@@ -47,6 +51,7 @@ export class Shape {
     readonly kind: ShapeKind,
     objectToWorld: Matrix4,
     private readonly accel: MeshAccel | null = null,
+    velocity: Vector3 | null = null,
   ) {
     this.convex = kind !== 'mesh';
     const e = new Matrix4().copy(objectToWorld).invert().elements; // column-major
@@ -60,7 +65,16 @@ export class Shape {
         i & 4 ? objectBounds.max.z : objectBounds.min.z,
       ).applyMatrix4(objectToWorld);
       this.worldBounds.expandByPoint(corner);
+      // A moving shape's box holds it at every time of the shutter: the box swept along the velocity.
+      if (velocity) this.worldBounds.expandByPoint(corner.add(velocity));
     }
+    // At time τ the shape is translated by τ·v, so a ray meets it where the ray moved by −τ·v
+    // meets it unmoved: in object space, the origin shifts by τ times this (the direction does not).
+    this.localVelocity = velocity
+      ? new Vector3(-(this.m[0] * velocity.x + this.m[1] * velocity.y + this.m[2] * velocity.z),
+        -(this.m[4] * velocity.x + this.m[5] * velocity.y + this.m[6] * velocity.z),
+        -(this.m[8] * velocity.x + this.m[9] * velocity.y + this.m[10] * velocity.z))
+      : null;
     // A little slack so that hits on flat or rotated shapes are not lost to rounding.
     this.worldBounds.expandByScalar(1e-6 * (1 + this.worldBounds.getSize(corner).length()));
     this.bounds.set([...this.worldBounds.min.toArray(), ...this.worldBounds.max.toArray()]);
@@ -109,6 +123,7 @@ export class Shape {
     const { x: dx, y: dy, z: dz } = ray.direction;
     localOrigin.set(m[0] * ox + m[1] * oy + m[2] * oz + m[3], m[4] * ox + m[5] * oy + m[6] * oz + m[7], m[8] * ox + m[9] * oy + m[10] * oz + m[11]);
     localDirection.set(m[0] * dx + m[1] * dy + m[2] * dz, m[4] * dx + m[5] * dy + m[6] * dz, m[8] * dx + m[9] * dy + m[10] * dz);
+    if (this.localVelocity) localOrigin.addScaledVector(this.localVelocity, ray.time);
   }
 
   /** Fills the hit's world point and outward unit normals (called once, for the nearest hit). */

@@ -10,9 +10,9 @@ export type MaterialFinish = Omit<Material, 'color'>;
  * looks like what the student has already seen; Opaque is the schema's default material.
  */
 export const MATERIAL_PRESETS = {
-  opaque: { ambient: 0.2, diffuse: 1, specular: 0, shininess: 32, transparent: false, refractiveIndex: 1.5 },
-  mirror: { ambient: 0.05, diffuse: 0.1, specular: 0.85, shininess: 200, transparent: false, refractiveIndex: 1.5 },
-  glass: { ambient: 0, diffuse: 0.05, specular: 0.6, shininess: 200, transparent: true, refractiveIndex: 1.5 },
+  opaque: { ambient: 0.2, diffuse: 1, specular: 0, shininess: 32, transparent: false, refractiveIndex: 1.5, roughness: 0, glossySamples: 3 },
+  mirror: { ambient: 0.05, diffuse: 0.1, specular: 0.85, shininess: 200, transparent: false, refractiveIndex: 1.5, roughness: 0, glossySamples: 3 },
+  glass: { ambient: 0, diffuse: 0.05, specular: 0.6, shininess: 200, transparent: true, refractiveIndex: 1.5, roughness: 0, glossySamples: 3 },
 } as const satisfies Record<string, MaterialFinish>;
 
 export type MaterialPresetName = keyof typeof MATERIAL_PRESETS;

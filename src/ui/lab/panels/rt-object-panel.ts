@@ -5,13 +5,14 @@ import type { Material, SceneObject } from '../../../scene/scene.ts';
 import { LIMITS } from '../../../scene/scene-limits.ts';
 import { MATERIAL_PRESETS, matchingPreset, type MaterialPresetName } from './material-presets.ts';
 import { positionSpec, rotationSpec, scaleSpec } from './placement-specs.ts';
+import { glossySamplesSpec, roughnessSpec, velocitySpec } from './distribution-specs.ts';
 import { shapeName, shownName } from '../scene-names.ts';
 import { StorePanel, type ControlPart } from './store-panel.ts';
 
 /**
  * @summary The selected object's material and placement: colour, the Phong coefficients,
- * shininess, transparency with its refractive index, three presets, and position,
- * rotation and scale fields (the keyboard's way to do what the gizmo does). With no object
+ * shininess, transparency with its refractive index, roughness and glossy samples, three
+ * presets, and position, rotation, scale and velocity fields (the keyboard's way to do what the gizmo does). With no object
  * selected it says how to select one.
  *
  * Every edit is a `material.changed` or `object.changed` action on `store`; a refused
@@ -57,6 +58,7 @@ export class RtObjectPanel extends StorePanel {
         this.vector(positionSpec(), object.position, (position) => this.changed(object, { position })),
         this.vector(rotationSpec(), object.rotation, (rotation) => this.changed(object, { rotation })),
         this.vector(scaleSpec(), object.scale, (scale) => this.changed(object, { scale })),
+        this.vector(velocitySpec(), object.velocity, (velocity) => this.changed(object, { velocity })),
       ])}
     `;
   }
@@ -113,6 +115,8 @@ export class RtObjectPanel extends StorePanel {
         m.refractiveIndex,
         (refractiveIndex) => material({ refractiveIndex }),
       ),
+      this.slider(roughnessSpec(), m.roughness, (roughness) => material({ roughness })),
+      this.slider(glossySamplesSpec(m.roughness === 0), m.glossySamples, (glossySamples) => material({ glossySamples })),
       this.presets(object),
     ];
   }

@@ -142,6 +142,15 @@ export class RtRayPanel extends StorePanel {
           rays.colorBlindPalette,
           (colorBlindPalette) => set({ colorBlindPalette }),
         ),
+        this.switch(
+          {
+            name: 'colorByTime',
+            label: msg('Colour by time'),
+            tooltip: msg('Colour each ray by the moment in the open shutter it was sent: dark violet at the start, yellow at the end (needs more than 1 time sample).'),
+          },
+          rays.colorByTime,
+          (colorByTime) => set({ colorByTime }),
+        ),
         this.shows('legend') ? html`<rt-ray-legend data-guide="rays.legend"></rt-ray-legend>` : nothing,
       ])}
       ${this.section(msg('Animation'), 'rays-animation', [

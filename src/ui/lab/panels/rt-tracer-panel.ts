@@ -1,9 +1,12 @@
 import { msg, str } from '@lit/localize';
-import { html } from 'lit';
+import { html, nothing } from 'lit';
+import { ifDefined } from 'lit/directives/if-defined.js';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { Camera, LightType, RenderSettings, SamplePattern } from '../../../scene/scene.ts';
 import { LIMITS } from '../../../scene/scene-limits.ts';
-import { StorePanel, type ControlText } from './store-panel.ts';
+import { effectiveFocusDistance, focusDistanceTo } from '../../../scene/camera-focus.ts';
+import { apertureSpec, focusDistanceSpec, lensSamplesSpec, timeSamplesSpec } from './distribution-specs.ts';
+import { StorePanel, type ControlPart, type ControlText } from './store-panel.ts';
 
 const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
 
@@ -11,7 +14,8 @@ const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
  * @summary The ray tracer's settings (the original lab's ray tracer panel): shadows,
  * recursion depth, background, a switch per light type, dithering; supersampling with its
  * pattern and "show sample points"; the camera's screen of pixels and field of view; and
- * the size of the rendered image.
+ * the lens and shutter (aperture, focus distance, lens and time samples); and the size of
+ * the rendered image.
  *
  * Edits are `settings.changed`, `camera.changed` and (sample points) `rays.changed`
  * actions on `store`; a refused edit's reason is shown next to its control.
@@ -128,6 +132,7 @@ export class RtTracerPanel extends StorePanel {
           (fov) => cam({ fov }),
         ),
       ])}
+      ${this.section(msg('Lens and shutter'), 'tracer-lens', this.lensControls())}
       ${this.section(msg('Rendered image'), 'tracer-image', [
         this.vector<[number, number]>(
           {
@@ -146,6 +151,35 @@ export class RtTracerPanel extends StorePanel {
         ),
       ])}
     `;
+  }
+
+  /** Depth of field and motion blur: aperture, focus distance (with "focus on the selected object"), lens and time samples. */
+  private lensControls(): ControlPart[] {
+    if (!this.state) return [];
+    const { camera, settings, objects } = this.state.scene;
+    const cam = (changes: Partial<Camera>): LabAction => ({ type: 'camera.changed', changes });
+    const selection = this.state.selection;
+    const selected = selection?.kind === 'object' ? objects.find((o) => o.id === selection.id) : undefined;
+    const n = camera.lensSamples;
+    const k = settings.timeSamples;
+    return [
+      this.slider(apertureSpec(), camera.aperture, (aperture) => cam({ aperture })),
+      this.slider(focusDistanceSpec(), effectiveFocusDistance(camera), (focusDistance) => cam({ focusDistance })),
+      this.shows('focusOnSelected')
+        ? html`<button
+              type="button"
+              data-guide=${ifDefined(this.guideOf('focusOnSelected'))}
+              title=${msg('Put the plane in focus through the selected object’s centre.')}
+              ?disabled=${!selected}
+              @click=${() => selected && this.send('focusOnSelected', cam({ focusDistance: focusDistanceTo(camera, selected.position) }))}
+            >
+              ${selected ? msg(str`Focus on ${selected.name ?? selected.id}`) : msg('Focus on the selected object')}
+            </button>
+            ${this.errorLine('focusOnSelected')}`
+        : nothing,
+      this.slider(lensSamplesSpec(camera.aperture === 0), n, (lensSamples) => cam({ lensSamples }), msg(str`${n} × ${n} = ${n * n} lens rays per sample`)),
+      this.slider(timeSamplesSpec(), k, (timeSamples) => ({ type: 'settings.changed', changes: { timeSamples } }), k === 1 ? msg('The shutter sees one moment') : msg(str`${k} moments per sample`)),
+    ];
   }
 }
 

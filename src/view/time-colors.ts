@@ -1,0 +1,21 @@
+/**
+ * Colours for a ray's shutter time τ in [0, 1) (distribution-effects §4: "rays of a selected
+ * pixel can be coloured by their time"): the viridis ramp (van der Walt and Smith, matplotlib
+ * 2015), dark violet at τ = 0 through teal to yellow at τ → 1. It is perceptually uniform and
+ * readable with every kind of colour vision, and brightness alone already orders the times.
+ */
+const VIRIDIS: readonly [number, number, number][] = [
+  [0.267, 0.005, 0.329],
+  [0.229, 0.322, 0.546],
+  [0.128, 0.567, 0.551],
+  [0.369, 0.789, 0.383],
+  [0.993, 0.906, 0.144],
+];
+
+/** The ramp's colour at τ (clamped to 0..1), linear between its five stops, into `out` at `at`. */
+export function timeColor(time: number, out: Float32Array | number[], at = 0): void {
+  const position = Math.min(1, Math.max(0, time)) * (VIRIDIS.length - 1);
+  const stop = Math.min(VIRIDIS.length - 2, Math.floor(position));
+  const f = position - stop;
+  for (let axis = 0; axis < 3; axis++) out[at + axis] = VIRIDIS[stop][axis] + (VIRIDIS[stop + 1][axis] - VIRIDIS[stop][axis]) * f;
+}
