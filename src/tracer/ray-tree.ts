@@ -1,4 +1,5 @@
 import type { Color, Vec3 } from '../scene/scene.ts';
+import type { ShadingTerms } from './shading-terms.ts';
 
 /** The ray kinds of spec §3, in the order of VRT's legend. */
 export type RayType = 'primary' | 'reflect' | 'refract' | 'shadow' | 'light' | 'area-light' | 'area-shadow';
@@ -21,6 +22,8 @@ export interface RayNode {
   children: RayNode[];
   /** area-light / area-shadow only: the light's four corners (the cone's base). */
   corners?: [Vec3, Vec3, Vec3, Vec3];
+  /** A ray that hit a surface, traced with terms (`rt trace --terms`): the parts of its colour. */
+  terms?: ShadingTerms;
 }
 
 /** The answer to "which rays made this pixel?" (`rt trace`). */
