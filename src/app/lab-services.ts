@@ -2,6 +2,8 @@ import { initialState, type LabState } from '../lab-state/lab-state.ts';
 import { Store } from '../lab-state/store.ts';
 import type { RenderPool } from '../render/render-pool.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
+import type { PixelTrace } from '../tracer/ray-tree.ts';
+import type { RayFocus } from '../view/ray-focus.ts';
 import { ScreenTracer } from '../render/screen-tracer.ts';
 import { defaultScene } from '../scene/scene-defaults.ts';
 import type { MeshLoader } from '../view/scene-sync.ts';
@@ -87,6 +89,17 @@ export class LabServices {
     view.setRayLayer(this.rayPool);
     view.setBvhLayer(this.bvhBoxes.object);
     if (this.screenRays) view.setScreenRays(this.screenRays);
+  }
+
+  /** Pixel (x, y)'s tree with each hit's shading terms, for the ray debugger (the scene of the latest screen). */
+  traceWithTerms(x: number, y: number): Promise<PixelTrace> {
+    return this.tracer.traceWithTerms(x, y);
+  }
+
+  /** The ray debugger's pixel drawn instead of the screen's rays (null: the screen again). */
+  setRayFocus(focus: RayFocus | null): void {
+    this.rayPool.setFocus(focus);
+    this.redrawRays();
   }
 
   /** Calls `listener` with every new screen of rays; returns the function that stops it. */
