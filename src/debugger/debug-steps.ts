@@ -20,6 +20,8 @@ export interface DebugStep {
   ray: RayNode | null;
   /** The surface ray whose hit the equation shows: the ray itself, or the hit a light or child ray leaves from. */
   hit: RayNode | null;
+  /** The hit `ray` leaves from: its parent (null for a primary ray). */
+  from: RayNode | null;
   /** Recursion depth of `ray` (primary rays 0; a light ray has its hit's depth). */
   depth: number;
   /** Which supersample's tree (0 … s²−1). */
@@ -54,31 +56,32 @@ export function debugProgram(trace: PixelTrace, scene: Scene): DebugProgram {
   };
 
   const visit = (node: RayNode, parent: RayNode | null, depth: number, sample: number, line: PseudocodeLine) => {
-    push({ kind: 'cast', line, ray: node, hit: parent, depth, sample }, true);
+    const from = parent;
+    push({ kind: 'cast', line, ray: node, hit: parent, from, depth, sample }, true);
     if (!node.hit) {
-      push({ kind: 'return', line: 'nearest-hit', ray: node, hit: parent, depth, sample }, false);
+      push({ kind: 'return', line: 'nearest-hit', ray: node, hit: parent, from, depth, sample }, false);
       return;
     }
-    push({ kind: 'shade', line: 'ambient', ray: node, hit: node, depth, sample }, false);
+    push({ kind: 'shade', line: 'ambient', ray: node, hit: node, from, depth, sample }, false);
     const glass = isGlass(node, scene);
     let split = false;
     for (const child of node.children) {
       if (child.type === 'reflect' || child.type === 'refract') {
         if (glass && !split) {
-          push({ kind: 'split', line: 'schlick', ray: node, hit: node, depth, sample }, false);
+          push({ kind: 'split', line: 'schlick', ray: node, hit: node, from, depth, sample }, false);
           split = true;
         }
         visit(child, node, depth + 1, sample, glass ? 'glass' : 'mirror');
       } else {
         const blocked = child.type === 'shadow' || child.type === 'area-shadow';
-        push({ kind: 'light', line: blocked ? 'blocked' : 'lit', ray: child, hit: node, depth, sample }, true);
+        push({ kind: 'light', line: blocked ? 'blocked' : 'lit', ray: child, hit: node, from: node, depth, sample }, true);
       }
     }
-    push({ kind: 'return', line: 'return', ray: node, hit: node, depth, sample }, false);
+    push({ kind: 'return', line: 'return', ray: node, hit: node, from, depth, sample }, false);
   };
 
   trace.rays.forEach((root, sample) => visit(root, null, 0, sample, 'trace-primary'));
-  push({ kind: 'average', line: 'average', ray: null, hit: null, depth: 0, sample: trace.rays.length - 1 }, false);
+  push({ kind: 'average', line: 'average', ray: null, hit: null, from: null, depth: 0, sample: trace.rays.length - 1 }, false);
   return { trace, steps, shownUpTo, rays };
 }
 

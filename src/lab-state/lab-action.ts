@@ -12,8 +12,11 @@ export interface DebuggerRay {
   /** 0 for primary rays; a light or shadow ray has the depth of the hit it leaves from. */
   depth: number;
   hit: boolean;
+  /** The object it hit (a shadow ray: the object that blocks it). */
   objectId: string | null;
   lightId: string | null;
+  /** The object it leaves from (light, shadow, reflected and refracted rays); null for a primary ray. */
+  from: string | null;
 }
 
 /**
@@ -58,3 +61,6 @@ export type LabAction =
   | { type: 'debugger.term-clicked'; term: DebuggerTerm; lightId: string | null };
 
 export type LabActionType = LabAction['type'];
+
+/** What the ray debugger reports (and "show me" performs through it). */
+export type DebuggerAction = Extract<LabAction, { type: 'debugger.stepped' | 'debugger.term-clicked' }>;

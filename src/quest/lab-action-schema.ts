@@ -93,6 +93,7 @@ export const labActionSchema = z.discriminatedUnion('type', [
         hit: z.boolean(),
         objectId: id().nullable(),
         lightId: id().nullable(),
+        from: id().nullable(),
       })
       .nullable(),
   }),

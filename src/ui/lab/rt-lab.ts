@@ -191,6 +191,7 @@ export class RtLab extends LitElement {
       void this.updateComplete.then(() => this.renderRoot.querySelector<RtRenderWindow>('rt-render-window')?.startRender());
     },
     openPanel: (panel) => this.store.dispatch({ type: 'panel.opened', panel }),
+    debug: (action) => this.renderRoot.querySelector('rt-ray-debugger')?.perform(action),
   };
 
   /** The ray debugger's pixel, traced with its terms, and drawn in 3D (stable functions: lit compares them). */

@@ -2,8 +2,10 @@ import { msg, str } from '@lit/localize';
 import { html, nothing, type PropertyValues } from 'lit';
 import { equationOf, pixelAverage } from '../../../debugger/debug-equation.ts';
 import { debugProgram, moveCursor, raysShownAt, type DebugProgram, type DebugStep } from '../../../debugger/debug-steps.ts';
+import { debuggerRayOf, findStep, findTerm } from '../../../debugger/debug-goals.ts';
 import { whyDark } from '../../../debugger/why-dark.ts';
-import type { LabAction } from '../../../lab-state/lab-action.ts';
+import type { DebuggerAction, LabAction } from '../../../lab-state/lab-action.ts';
+import { LAB_CONTROLS } from '../../../quest/lab-controls.ts';
 import type { ScreenRays } from '../../../render/screen-rays.ts';
 import type { PixelTrace, RayNode } from '../../../tracer/ray-tree.ts';
 import type { RayFocus } from '../../../view/ray-focus.ts';
@@ -72,6 +74,8 @@ export class RtRayDebugger extends StorePanel {
   /** Which trace request is the latest (older answers are dropped). */
   private request = 0;
   private tracedFor: { pixel: readonly [number, number]; rays: ScreenRays | null } | null = null;
+  /** What "show me" asked for, done once the pixel is traced. */
+  private shown: DebuggerAction | null = null;
 
   constructor() {
     super();
@@ -116,6 +120,7 @@ export class RtRayDebugger extends StorePanel {
       this.program = program;
       this.problem = null;
       this.moveTo(samePixel ? Math.min(this.index, program.steps.length - 1) : 0);
+      this.applyShown();
     } catch (error) {
       if (request === this.request) this.problem = error instanceof Error ? error.message : String(error);
     }
@@ -147,13 +152,38 @@ export class RtRayDebugger extends StorePanel {
     if (pinned) shown.add(pinned.ray);
     this.showFocus?.({ trace: program.trace, shown, highlighted: pinned?.ray ?? step.ray, grow: grows });
     if (pinned) return;
-    const ray = step.ray;
-    this.report({
-      type: 'debugger.stepped',
-      step: index,
-      of: program.steps.length,
-      ray: ray ? { type: ray.type, depth: step.depth, hit: ray.hit, objectId: ray.objectId, lightId: ray.lightId } : null,
-    });
+    this.report({ type: 'debugger.stepped', step: index, of: program.steps.length, ray: debuggerRayOf(step) });
+  }
+
+  /**
+   * "Show me" performs a debugger action visibly: the debugger opens on the selected pixel and
+   * moves to the first step that reaches the action's ray, or clicks the action's term at the
+   * first hit that has it (which the debugger then reports, as for a learner).
+   */
+  perform(action: DebuggerAction): void {
+    this.shown = action;
+    if (!this.open) this.toggleOpen(true);
+    else this.applyShown();
+  }
+
+  private applyShown(): void {
+    const action = this.shown;
+    const program = this.program;
+    const scene = this.state?.scene;
+    if (!action || !program || !scene) return;
+    this.shown = null;
+    if (action.type === 'debugger.stepped') {
+      // The solution's own ray, else (another pixel, a changed scene) the first ray of its kind.
+      let index = action.ray ? findStep(program, action.ray) : program.steps.length - 1;
+      if (index < 0 && action.ray) index = findStep(program, { type: action.ray.type });
+      if (index >= 0) this.moveTo(index);
+      return;
+    }
+    const found = findTerm(program, scene, action.term, action.lightId);
+    if (!found?.term.ray) return;
+    this.moveTo(found.step);
+    this.moveTo(found.step, { id: found.term.id, ray: found.term.ray });
+    this.report({ type: 'debugger.term-clicked', term: found.term.kind, lightId: found.term.lightId });
   }
 
   private report(action: LabAction): void {
@@ -242,14 +272,16 @@ export class RtRayDebugger extends StorePanel {
 
   override render() {
     if (!this.open) {
-      return html`<button class="opener" data-guide=${this.guideOf('open') ?? nothing} title=${msg('Step through one pixel’s rays, as a debugger steps through code')} @click=${() => this.toggleOpen(true)}>
+      // Closed, its button stands for every control of the debugger (the hint ring goes there first).
+      const guides = LAB_CONTROLS.debugger.filter((id) => !this.shownControls || this.shownControls.includes(id)).map((id) => `debugger.${id}`);
+      return html`<button class="opener" data-guide=${guides.join(' ')} title=${msg('Step through one pixel’s rays, as a debugger steps through code')} @click=${() => this.toggleOpen(true)}>
         ${msg('Debug a pixel')}
       </button>`;
     }
     const pixel = this.state?.selectedPixel ?? null;
     return html`<section class="card" role="region" aria-label=${msg('Ray debugger')} tabindex="-1" @keydown=${this.onKeyDown}>
       <header>
-        <h2>${msg('Ray debugger')}</h2>
+        <h2 data-guide=${this.guideOf('open') ?? nothing}>${msg('Ray debugger')}</h2>
         <span class="where">${pixel ? msg(str`Pixel ${pixel[0]}, ${pixel[1]}`) : ''}${this.program ? ` · ${msg(str`step ${this.index + 1} of ${this.program.steps.length}`)}` : ''}</span>
         ${pixel && this.program ? this.renderControls(this.program) : nothing}
         <button class="close" data-guide=${this.guideOf('close') ?? nothing} title=${msg('Close the debugger and show every ray again')} @click=${() => this.toggleOpen(false)}>
