@@ -1,11 +1,12 @@
 import { expect, test, type Page } from '@playwright/test';
-import { mkdirSync } from 'node:fs';
+import { mkdirSync, readFileSync } from 'node:fs';
 import { debugProgram, raysShownAt, type DebugProgram } from '../src/debugger/debug-steps.ts';
 import { DEFAULT_SEED } from '../src/render/render-job.ts';
 import { defaultScene } from '../src/scene/scene-defaults.ts';
 import type { PixelTrace, RayNode } from '../src/tracer/ray-tree.ts';
 import { tracePixel } from '../src/tracer/trace-pixel.ts';
 import { buildTracerScene } from '../src/tracer/tracer-scene.ts';
+import { collectErrors, importProgress, levelsFolder, panel, progressFile } from './support/game-steps.ts';
 
 /**
  * The ray debugger as a student uses it: choose a pixel of the camera's image, open the
@@ -111,5 +112,40 @@ test('step through a mirror pixel and a glass pixel to the end', async ({ page }
   expect(rays(glass.rays).some((ray) => ray.type === 'refract')).toBe(true);
   await stepThrough(page, 'mirror', mirror);
   await stepThrough(page, 'glass', glass);
+  expect(errors).toEqual([]);
+});
+
+test('a level\'s debugger task: the ring shows the way in, and "Show me" steps to the blocked shadow ray', async ({ page }) => {
+  mkdirSync(SHOTS, { recursive: true });
+  const errors = collectErrors(page);
+  const index = JSON.parse(readFileSync(new URL('index.json', levelsFolder), 'utf8')) as { chapters: { levels: string[] }[] };
+  const levelIds = index.chapters.flatMap((chapter) => chapter.levels);
+  await page.goto('./');
+  await page.getByRole('button', { name: 'Got it' }).click();
+  await importProgress(page, progressFile(levelIds.slice(0, levelIds.indexOf('04-shadows'))));
+  if (!(await page.locator('rt-level-map').isVisible())) await page.locator('[data-command="levels"]').click();
+  await page.locator('rt-level-map [data-level="04-shadows"]').click();
+  await expect(panel(page).locator('h2')).toBeVisible();
+
+  const card = page.locator('rt-task-card[data-task="debug-shadow"]');
+  await card.getByRole('button', { name: /What blocks the light\?/ }).click();
+  const ladder = card.locator('rt-hint-box button[data-hint]');
+  for (let rung = 0; rung < 6; rung++) {
+    const kind = await ladder.getAttribute('data-hint');
+    await ladder.click();
+    if (kind === 'guidance') {
+      // The ring is around the debugger's button (it stands for the Step button while closed).
+      const button = (await page.getByRole('button', { name: 'Debug a pixel' }).boundingBox())!;
+      const ring = (await page.getByTestId('guide-ring').boundingBox())!;
+      expect(Math.abs(ring.x + ring.width / 2 - (button.x + button.width / 2))).toBeLessThan(12);
+    }
+    if (kind === 'show-me') break;
+  }
+  const debuggerPanel = page.locator('rt-ray-debugger');
+  await expect(debuggerPanel).toHaveAttribute('data-ray', 'shadow');
+  await expect(debuggerPanel.locator('rt-debug-code [aria-current="step"]')).toHaveAttribute('data-line', 'blocked');
+  await expect(debuggerPanel.getByText(/In shadow: Ball is between the point and Lamp/)).toBeVisible();
+  await expect(card).toHaveAttribute('status', 'shown');
+  await page.screenshot({ path: `${SHOTS}/level-04-show-me.png` });
   expect(errors).toEqual([]);
 });
