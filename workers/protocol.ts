@@ -46,6 +46,8 @@ export interface TracePixelRequest {
   x: number;
   y: number;
   seed: number;
+  /** Add each hit's shading terms to the tree (the ray debugger); default false. */
+  terms?: boolean;
 }
 
 /** Drop the job's tiles that are still queued; the tile being rendered still finishes. */

@@ -61,9 +61,9 @@ export function createRenderHandler(post: PostResponse): (request: RenderRequest
     }
   }
 
-  function traceNow({ requestId, x, y, seed }: TracePixelRequest): void {
+  function traceNow({ requestId, x, y, seed, terms }: TracePixelRequest): void {
     try {
-      post({ type: 'pixel-traced', requestId, trace: tracePixel(tracerOf(scene), x, y, seed) }, []);
+      post({ type: 'pixel-traced', requestId, trace: tracePixel(tracerOf(scene), x, y, seed, { terms }) }, []);
     } catch (error) {
       fail({ type: 'trace-pixel', requestId }, error);
     }

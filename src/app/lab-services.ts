@@ -2,6 +2,8 @@ import { initialState, type LabState } from '../lab-state/lab-state.ts';
 import { Store } from '../lab-state/store.ts';
 import type { RenderPool } from '../render/render-pool.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
+import type { PixelTrace } from '../tracer/ray-tree.ts';
+import type { RayFocus } from '../view/ray-focus.ts';
 import { ScreenTracer } from '../render/screen-tracer.ts';
 import { defaultScene } from '../scene/scene-defaults.ts';
 import type { BvhBoxes } from '../view/bvh-boxes.ts';
@@ -41,6 +43,8 @@ export class LabServices {
   readonly renderPool: RenderPool;
   /** The rays' instanced meshes and the acceleration levels' boxes, once a view is attached. */
   private layers: { rays: RayPool; boxes: BvhBoxes } | null = null;
+  /** The ray debugger's focus, kept for a ray pool made after it was set. */
+  private focus: RayFocus | null = null;
   private readonly loadMeshes: MeshLoader;
   private disposed = false;
   private readonly tracePool: RenderPool;
@@ -92,12 +96,27 @@ export class LabServices {
   async attachView(view: LabViewPort): Promise<void> {
     const [{ RayPool }, { BvhBoxes }] = await Promise.all([import('../view/ray-pool.ts'), import('../view/bvh-boxes.ts')]);
     if (this.disposed) return;
-    this.layers ??= { rays: new RayPool(), boxes: new BvhBoxes(() => this.view?.requestRender(), this.loadMeshes) };
+    if (!this.layers) {
+      this.layers = { rays: new RayPool(), boxes: new BvhBoxes(() => this.view?.requestRender(), this.loadMeshes) };
+      this.layers.rays.setFocus(this.focus);
+    }
     this.view = view;
     view.setRayLayer(this.layers.rays);
     view.setBvhLayer(this.layers.boxes.object);
     this.layers.boxes.update(this.store.state);
     if (this.screenRays) view.setScreenRays(this.screenRays);
+    this.redrawRays();
+  }
+
+  /** Pixel (x, y)'s tree with each hit's shading terms, for the ray debugger (the scene of the latest screen). */
+  traceWithTerms(x: number, y: number): Promise<PixelTrace> {
+    return this.tracer.traceWithTerms(x, y);
+  }
+
+  /** The ray debugger's pixel drawn instead of the screen's rays (null: the screen again). */
+  setRayFocus(focus: RayFocus | null): void {
+    this.focus = focus;
+    this.layers?.rays.setFocus(focus);
     this.redrawRays();
   }
 

@@ -1,4 +1,4 @@
-import type { LabAction } from '../lab-state/lab-action.ts';
+import type { DebuggerAction, LabAction } from '../lab-state/lab-action.ts';
 
 /**
  * "Show me" (the hint ladder's last rung) performs a task's solution so the learner SEES it
@@ -17,7 +17,9 @@ export type ShowMeStep =
   | { kind: 'fly-to-camera' }
   | { kind: 'open-render' }
   | { kind: 'render' }
-  | { kind: 'open-panel'; panel: string };
+  | { kind: 'open-panel'; panel: string }
+  /** The ray debugger goes to the action's ray or clicks its term (and reports it). */
+  | { kind: 'debug'; action: DebuggerAction };
 
 /** Whether an action is a fact reported by the UI (performed through it) or a state change (dispatched). */
 export function kindOfAction(action: LabAction): 'fact' | 'state' {
@@ -32,6 +34,8 @@ export function kindOfAction(action: LabAction): 'fact' | 'state' {
     case 'render.saved':
     case 'scene.saved':
     case 'panel.opened':
+    case 'debugger.stepped':
+    case 'debugger.term-clicked':
       return 'fact';
     default:
       return 'state';
@@ -71,6 +75,10 @@ export function showMeSteps(actions: readonly LabAction[]): ShowMeStep[] {
       case 'panel.opened':
         steps.push(action.panel === 'render' ? { kind: 'open-render' } : { kind: 'open-panel', panel: action.panel });
         break;
+      case 'debugger.stepped':
+      case 'debugger.term-clicked':
+        steps.push({ kind: 'debug', action });
+        break;
       default:
         steps.push({ kind: 'dispatch', action });
     }
@@ -89,6 +97,8 @@ export interface ShowMeStage {
   /** Opens the render window and starts a real render. */
   render(): void;
   openPanel(panel: string): void;
+  /** Has the ray debugger perform the action (open on the selected pixel, go to the ray or click the term). */
+  debug(action: DebuggerAction): void;
 }
 
 /** Time between steps: long enough to see each one happen, short enough not to bore. */
@@ -133,5 +143,7 @@ function performStep(step: ShowMeStep, stage: ShowMeStage): void {
       return stage.render();
     case 'open-panel':
       return stage.openPanel(step.panel);
+    case 'debug':
+      return stage.debug(step.action);
   }
 }

@@ -8,13 +8,17 @@ import { loadSceneMeshes, readScene } from './scene-file.ts';
 
 export const traceCommand: Command = {
   strings: ['pixel'],
-  help: `Usage: rt trace <scene.json|level-id> --pixel X,Y
+  flags: ['terms'],
+  help: `Usage: rt trace <scene.json|level-id> --pixel X,Y [--terms]
 
 Prints the ray tree of one pixel of the camera's screen (camera.pixels, (0,0) top-left) as JSON:
 {"pixel":[x,y],"color":[r,g,b],"rays":[one root per supersample…]}
 
 Options:
   --pixel X,Y       the pixel's column and row (required)
+  --terms           add to every ray that hit a surface the "terms" of its colour:
+                    ambient, per light (ambient, attenuation, visibility, NdotL, RdotV,
+                    diffuse, specular), reflect and refract (weight, color), and their sum
   -h, --help        show this text
 `,
   async run(line) {
@@ -31,7 +35,7 @@ Options:
     }
     // One pixel: tracing here is quicker than starting a worker thread.
     const tracer = buildTracerScene(scene, await loadSceneMeshes(scene));
-    process.stdout.write(`${JSON.stringify(tracePixel(tracer, x, y, DEFAULT_SEED))}\n`);
+    process.stdout.write(`${JSON.stringify(tracePixel(tracer, x, y, DEFAULT_SEED, { terms: line.flag('terms') }))}\n`);
     return 0;
   },
 };

@@ -1,5 +1,23 @@
 import type { Camera, Light, LightType, Material, RenderSettings, Scene, SceneObject, ShapeKind } from '../scene/scene.ts';
+import type { RayType } from '../tracer/ray-tree.ts';
 import type { BvhViewOptions, GizmoOptions, RayViewOptions, Selection } from './lab-state.ts';
+
+/** The terms of a hit's colour the ray debugger's equation shows (a clicked one is reported). */
+export const DEBUGGER_TERMS = ['ambient', 'light-ambient', 'diffuse', 'specular', 'refract', 'reflect'] as const;
+export type DebuggerTerm = (typeof DEBUGGER_TERMS)[number];
+
+/** The ray the debugger's step highlights, as goals look at it: its kind, recursion depth and what it met. */
+export interface DebuggerRay {
+  type: RayType;
+  /** 0 for primary rays; a light or shadow ray has the depth of the hit it leaves from. */
+  depth: number;
+  hit: boolean;
+  /** The object it hit (a shadow ray: the object that blocks it). */
+  objectId: string | null;
+  lightId: string | null;
+  /** The object it leaves from (light, shadow, reflected and refracted rays); null for a primary ray. */
+  from: string | null;
+}
 
 /**
  * Every change to the app is one of these named actions, dispatched through the store.
@@ -36,6 +54,13 @@ export type LabAction =
   | { type: 'render.saved' }
   /** The scene was saved as a file or copied as a link (the sandbox level and its badge listen). */
   | { type: 'scene.saved'; to: 'file' | 'link' }
-  | { type: 'panel.opened'; panel: string };
+  | { type: 'panel.opened'; panel: string }
+  /** The ray debugger moved to a step (`step` of `of`) that highlights `ray` (null: the pixel's average). */
+  | { type: 'debugger.stepped'; step: number; of: number; ray: DebuggerRay | null }
+  /** A term of the debugger's equation was clicked (its ray highlighted). */
+  | { type: 'debugger.term-clicked'; term: DebuggerTerm; lightId: string | null };
 
 export type LabActionType = LabAction['type'];
+
+/** What the ray debugger reports (and "show me" performs through it). */
+export type DebuggerAction = Extract<LabAction, { type: 'debugger.stepped' | 'debugger.term-clicked' }>;

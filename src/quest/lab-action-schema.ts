@@ -1,5 +1,5 @@
 import { z } from 'zod';
-import type { LabAction, LabActionType } from '../lab-state/lab-action.ts';
+import { DEBUGGER_TERMS, type LabAction, type LabActionType } from '../lab-state/lab-action.ts';
 import { DEFAULT_BVH_VIEW, DEFAULT_RAY_VIEW } from '../lab-state/lab-state.ts';
 import type { Camera, Light, Material, RenderSettings, SceneObject } from '../scene/scene.ts';
 import { sceneSchema } from '../scene/scene-schema.ts';
@@ -82,6 +82,22 @@ export const labActionSchema = z.discriminatedUnion('type', [
   fact('render.saved'),
   z.strictObject({ type: z.literal('scene.saved'), to: z.enum(['file', 'link']) }),
   z.strictObject({ type: z.literal('panel.opened'), panel: z.string().min(1) }),
+  z.strictObject({
+    type: z.literal('debugger.stepped'),
+    step: z.int().min(0),
+    of: z.int().min(1),
+    ray: z
+      .strictObject({
+        type: z.enum(['primary', 'reflect', 'refract', 'shadow', 'light', 'area-light', 'area-shadow']),
+        depth: z.int().min(0),
+        hit: z.boolean(),
+        objectId: id().nullable(),
+        lightId: id().nullable(),
+        from: id().nullable(),
+      })
+      .nullable(),
+  }),
+  z.strictObject({ type: z.literal('debugger.term-clicked'), term: z.enum(DEBUGGER_TERMS), lightId: id().nullable() }),
 ]);
 
 /** Every action type, for the `event` of a goal. */

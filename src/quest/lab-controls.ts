@@ -8,7 +8,7 @@
 
 /** The panels a level chooses from in `ui.panels`. */
 export const UI_PANELS = [
-  'scene-list', 'object', 'light', 'tracer', 'rays', 'gizmo', 'screen-preview', 'render', 'add-remove', 'file', 'bvh',
+  'scene-list', 'object', 'light', 'tracer', 'rays', 'gizmo', 'screen-preview', 'render', 'add-remove', 'file', 'bvh', 'debugger',
 ] as const;
 export type UiPanel = (typeof UI_PANELS)[number];
 
@@ -45,6 +45,7 @@ export const LAB_CONTROLS = {
   'add-remove': ['add-object', 'add-light', 'delete'],
   file: ['save', 'load', 'share'],
   bvh: ['show', 'depth', 'bounds'],
+  debugger: ['open', 'step', 'back', 'play', 'reset', 'code', 'equation', 'pixel', 'why-dark', 'close'],
 } as const satisfies Record<LabPanel, readonly string[]>;
 
 const PANELS = Object.keys(LAB_CONTROLS) as LabPanel[];

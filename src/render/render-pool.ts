@@ -200,8 +200,11 @@ export class RenderPool {
     });
   }
 
-  /** The ray tree of pixel (x, y) of the camera's small screen, in the scene last rendered or set. */
-  tracePixel(x: number, y: number, seed = DEFAULT_SEED): Promise<PixelTrace> {
+  /**
+   * The ray tree of pixel (x, y) of the camera's small screen, in the scene last rendered or set;
+   * with `terms`, every hit carries its shading terms (the ray debugger).
+   */
+  tracePixel(x: number, y: number, seed = DEFAULT_SEED, terms = false): Promise<PixelTrace> {
     this.assertOpen();
     if (!this.scene) return Promise.reject(new Error('there is no scene to trace: render or set one first'));
     // The least busy worker answers soonest: traces skip the tiles queued before them.
@@ -209,7 +212,7 @@ export class RenderPool {
     this.sendScene(worker);
     const requestId = ++this.lastId;
     return new Promise((resolve, reject) => {
-      this.post(worker, { type: 'trace-pixel', requestId, x, y, seed }, () => this.traces.set(requestId, { worker, resolve, reject }));
+      this.post(worker, { type: 'trace-pixel', requestId, x, y, seed, ...(terms ? { terms } : {}) }, () => this.traces.set(requestId, { worker, resolve, reject }));
     });
   }
 

@@ -70,6 +70,15 @@ export class ScreenTracer {
     }, TRACE_DEBOUNCE_MS);
   }
 
+  /**
+   * Pixel (x, y)'s tree with every hit's shading terms (the ray debugger), in the scene last
+   * sent to the pool, so with the rays of the screen published for it (the seed is the same).
+   */
+  traceWithTerms(x: number, y: number): Promise<PixelTrace> {
+    if (this.disposed || !this.latest) return Promise.reject(new Error('the camera’s screen has not been traced yet'));
+    return this.pool.tracePixel(x, y, DEFAULT_SEED, true);
+  }
+
   /** Calls `listener` with every published screen, and at once with the last one if any. Returns the unsubscribe. */
   subscribe(listener: ScreenRaysListener): () => void {
     this.listeners.add(listener);

@@ -1,4 +1,5 @@
 import type { Color, Vec3 } from '../scene/scene.ts';
+import type { ShadingTerms } from './shading-terms.ts';
 
 /** The ray kinds of spec §3, in the order of VRT's legend. */
 export type RayType = 'primary' | 'reflect' | 'refract' | 'shadow' | 'light' | 'area-light' | 'area-shadow';
@@ -32,6 +33,8 @@ export interface RayNode {
   glossy?: true;
   /** A glossy direction pointing into the surface: not traced, it adds black (length 0). */
   absorbed?: true;
+  /** A ray that hit a surface, traced with terms (`rt trace --terms`): the parts of its colour. */
+  terms?: ShadingTerms;
 }
 
 /** The answer to "which rays made this pixel?" (`rt trace`). */

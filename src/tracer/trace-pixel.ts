@@ -4,18 +4,30 @@ import type { PixelTrace, RayNode } from './ray-tree.ts';
 import { integratorFor, renderPixel } from './render-pixel.ts';
 import type { TracerScene } from './tracer-scene.ts';
 
+/** What a pixel's tree records besides its rays. */
+export interface TraceOptions {
+  /** Every hit's shading terms (ray-debugger spec §1); the rays and colours are the same without. */
+  terms?: boolean;
+}
+
 /**
  * The ray tree of pixel (px, py) of the camera's screen (`camera.pixels` resolution): one
  * root per supersample. Its colour is exactly that pixel of an image rendered at that
  * resolution with the same seed (the image stores 32-bit floats, so the colour is rounded
  * to them too).
  */
-export function tracePixel(scene: TracerScene, px: number, py: number, seed: number): PixelTrace {
+export function tracePixel(scene: TracerScene, px: number, py: number, seed: number, options: TraceOptions = {}): PixelTrace {
   const [width, height] = scene.source.camera.pixels;
   const integrator = integratorFor(scene);
   const roots: RayNode[] = [];
   integrator.childWeights.clear();
-  const color = renderPixel(scene, px, py, width, height, seed, new Vector3(), roots);
+  integrator.recordTerms = options.terms === true;
+  let color: Vector3;
+  try {
+    color = renderPixel(scene, px, py, width, height, seed, new Vector3(), roots);
+  } finally {
+    integrator.recordTerms = false;
+  }
   assignContributions(roots, integrator.childWeights);
   integrator.childWeights.clear();
   return { pixel: [px, py], color: [Math.fround(color.x), Math.fround(color.y), Math.fround(color.z)], rays: roots };

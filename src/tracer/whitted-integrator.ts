@@ -10,6 +10,7 @@ import { emptyRayStats } from './ray-tree.ts';
 import { hashKey, RandomStream } from './sampler.ts';
 import { discPointBuffer, jitteredDiscPoints } from './disc-samples.ts';
 import { glossyDirection, perpendicularBasis } from './glossy.ts';
+import { LightTermsRecorder, type LightTerms, type ShadingTerms } from './shading-terms.ts';
 import type { Intersectable } from './intersectable.ts';
 import type { TracerScene } from './tracer-scene.ts';
 
@@ -71,6 +72,8 @@ export class WhittedIntegrator {
   readonly stats: RayStats = emptyRayStats();
   /** What each recorded child adds to its parent per unit of its colour (ks, kr, kt or 1). */
   readonly childWeights = new Map<RayNode, number>();
+  /** Whether recorded hits also get their shading terms (ray-debugger spec §1); the colours are the same either way. */
+  recordTerms = false;
   private readonly frames: Frame[] = [];
   /** The shape that last blocked each light: it is likely to block the next sample too. */
   private readonly lastBlocker: (Intersectable | null)[];
@@ -119,13 +122,16 @@ export class WhittedIntegrator {
       return out;
     }
     hit.shape.surface(ray, hit);
-    this.shade(ray, hit.shape, depth, out, node);
+    const terms = this.shade(ray, hit.shape, depth, out, node);
+    if (terms) terms.sum = out.toArray();
     out.clampScalar(0, 1);
     if (node) recordEnd(node, true, hit.t, hit.shape.id, out);
+    if (node && terms) node.terms = terms;
     return out;
   }
 
-  private shade(ray: Ray, shape: Intersectable, depth: number, out: Vector3, node: RayNode | null): void {
+  /** Writes the unclamped colour of the hit into `out`; returns its terms when they are recorded. */
+  private shade(ray: Ray, shape: Intersectable, depth: number, out: Vector3, node: RayNode | null): ShadingTerms | null {
     const frame = this.frames[depth];
     const { hit, normal: n, geometricNormal: ng, toViewer: v } = frame;
     const material = shape.material;
@@ -143,32 +149,47 @@ export class WhittedIntegrator {
     // Ambient: ka·C
     const [cr, cg, cb] = material.color;
     out.set(cr, cg, cb).multiplyScalar(material.ambient);
+    const terms: ShadingTerms | null =
+      node && this.recordTerms ? { ambient: out.toArray(), lights: [], reflect: null, refract: null, sum: [0, 0, 0], depthLimited: false } : null;
     // Direct light: Σ la·Lc·C + I·A·S·(diffuse + specular)
     for (let index = 0; index < this.scene.lights.length; index++) {
       const light = this.scene.lights[index];
-      out.x += light.ambient * light.color.x * cr;
-      out.y += light.ambient * light.color.y * cg;
-      out.z += light.ambient * light.color.z * cb;
-      this.addDirectLight(light, index, frame, material, out, node);
+      const ar = light.ambient * light.color.x * cr;
+      const ag = light.ambient * light.color.y * cg;
+      const ab = light.ambient * light.color.z * cb;
+      out.x += ar;
+      out.y += ag;
+      out.z += ab;
+      const recorder = terms ? new LightTermsRecorder(light.id, [ar, ag, ab]) : null;
+      const lightTerms = this.addDirectLight(light, index, frame, material, out, node, recorder);
+      if (terms && lightTerms) terms.lights.push(lightTerms);
     }
 
-    if (depth >= this.scene.settings.maxDepth) return;
-    if (material.transparent) this.addTransmission(ray, frame, material, entering, depth, out, node);
+    if (depth >= this.scene.settings.maxDepth) {
+      if (terms) terms.depthLimited = material.transparent || material.specular > 0;
+      return terms;
+    }
+    if (material.transparent) this.addTransmission(ray, frame, material, entering, depth, out, node, terms);
     else if (material.specular > 0) {
       // Opaque specular surface: ks · trace(reflected ray)
       reflect(ray.direction, n, frame.childDirection);
-      if (material.roughness > 0) this.traceGlossy('reflect', frame, depth, material.specular, material, out, node);
-      else this.traceChild('reflect', frame, depth, material.specular, out, node, leavingShape(frame, frame.childDirection));
+      if (material.roughness > 0) this.traceGlossy('reflect', frame, depth, material.specular, material, out, node, terms);
+      else this.traceChild('reflect', frame, depth, material.specular, out, node, terms, leavingShape(frame, frame.childDirection));
     }
+    return terms;
   }
 
   /**
    * Adds one light's diffuse and specular terms (each sample shaded like a spot light).
    * The sample loop is the tracer's hottest code: it works on plain numbers, each operation
    * in the order the Vector3 methods it replaces perform it (l/|l| as l·(1/|l|), as
-   * divideScalar does), so the colours stay the same to the bit.
+   * divideScalar does), so the colours stay the same to the bit. The diffuse and the
+   * specular parts are summed over the samples apart and then added to `out`, so a hit's
+   * terms add up to its colour exactly (shading-terms.ts).
    */
-  private addDirectLight(light: TracerLight, index: number, frame: Frame, material: Material, out: Vector3, node: RayNode | null): void {
+  private addDirectLight(
+    light: TracerLight, index: number, frame: Frame, material: Material, out: Vector3, node: RayNode | null, recorder: LightTermsRecorder | null,
+  ): LightTerms | null {
     const { hit, normal: n, toViewer: v, lightPoint, toLight: l } = frame;
     const samples = light.sampleCount;
     if (light.type === 'area') this.random.reset(hashKey(this.sampleKey, index, this.lightEvaluation++));
@@ -181,55 +202,83 @@ export class WhittedIntegrator {
     const { x: px, y: py, z: pz } = hit.point;
     const { x: nx, y: ny, z: nz } = n;
     const { x: vx, y: vy, z: vz } = v;
-    const { x: ax, y: ay, z: az } = light.direction;
     const { x: lr, y: lg, z: lb } = light.color;
     // pow(max(R·V, 0), n) can only be 0 when R·V ≤ 0 (and n > 0), and the highlight is 0
     // whenever ks or the light's specular factor is: pow is skipped there.
     const highlights = material.specular > 0 && light.specular > 0;
     const shininess = material.shininess;
+    // Σ over the samples of the diffuse and the specular parts, per channel.
+    let dr = 0;
+    let dg = 0;
+    let db = 0;
+    let sr = 0;
+    let sg = 0;
+    let sb = 0;
     for (let s = 0; s < samples; s++) {
       light.samplePoint(s, this.random, lightPoint);
       let lx = lightPoint.x - px;
       let ly = lightPoint.y - py;
       let lz = lightPoint.z - pz;
       const distance = Math.sqrt(lx * lx + ly * ly + lz * lz);
-      if (distance === 0) continue;
+      if (distance === 0) {
+        recorder?.sample(0, 0, 0, 'none');
+        continue;
+      }
       const inverse = 1 / distance;
       lx *= inverse;
       ly *= inverse;
       lz *= inverse;
       const nDotL = nx * lx + ny * ly + nz * lz;
       // A light behind the surface adds nothing: no ray is cast toward it.
-      if (nDotL <= 0) continue;
-      let attenuation = light.distanceAttenuation ? distanceAttenuation(distance) : 1;
-      if (light.type !== 'point') attenuation *= angleAttenuation(-(ax * lx + ay * ly + az * lz), light.cosHalfAngle, light.angleExponent);
-      if (attenuation === 0) continue;
+      if (nDotL <= 0) {
+        recorder?.sample(lightAttenuation(light, distance, lx, ly, lz), nDotL, 0, 'none');
+        continue;
+      }
+      const attenuation = lightAttenuation(light, distance, lx, ly, lz);
+      // Phong: R = 2(N·L)N − L, L mirrored about N; only needed for a highlight (or to show it).
+      const twoNDotL = 2 * nDotL;
+      const rDotV = highlights || recorder ? (nx * twoNDotL - lx) * vx + (ny * twoNDotL - ly) * vy + (nz * twoNDotL - lz) * vz : 0;
+      if (attenuation === 0) {
+        recorder?.sample(0, nDotL, rDotV, 'none');
+        continue;
+      }
       l.set(lx, ly, lz);
 
       const blocker = shadows ? this.firstBlocker(frame, l, distance, index, node !== null) : null;
       if (blocker) {
         // S = 0: a shadow ray carries black.
         sampleNodes?.push(newNode('shadow', hit.point, l, shadowHit.t, true, blocker.id, light.id, [0, 0, 0]));
+        recorder?.sample(attenuation, nDotL, rDotV, 'blocked');
         continue;
       }
-      // Phong: R = 2(N·L)N − L, L mirrored about N; the highlight is not tinted by the object's colour.
+      // The highlight is not tinted by the object's colour.
       let highlight = 0;
-      if (highlights) {
-        const twoNDotL = 2 * nDotL;
-        const rDotV = (nx * twoNDotL - lx) * vx + (ny * twoNDotL - ly) * vy + (nz * twoNDotL - lz) * vz;
-        if (!(rDotV <= 0) || shininess === 0) highlight = Math.pow(Math.max(rDotV, 0), shininess) * material.specular * light.specular;
-      }
+      if (highlights && (!(rDotV <= 0) || shininess === 0)) highlight = Math.pow(Math.max(rDotV, 0), shininess) * material.specular * light.specular;
       const diffuse = nDotL * material.diffuse * light.diffuse;
       const k = scale * attenuation;
-      const tr = k * lr * (diffuse * cr + highlight);
-      const tg = k * lg * (diffuse * cg + highlight);
-      const tb = k * lb * (diffuse * cb + highlight);
-      out.x += tr;
-      out.y += tg;
-      out.z += tb;
-      sampleNodes?.push(newNode('light', hit.point, l, distance, true, null, light.id, [tr, tg, tb]));
+      const kr = k * lr;
+      const kg = k * lg;
+      const kb = k * lb;
+      const diffuseR = kr * (diffuse * cr);
+      const diffuseG = kg * (diffuse * cg);
+      const diffuseB = kb * (diffuse * cb);
+      dr += diffuseR;
+      dg += diffuseG;
+      db += diffuseB;
+      sr += kr * highlight;
+      sg += kg * highlight;
+      sb += kb * highlight;
+      sampleNodes?.push(newNode('light', hit.point, l, distance, true, null, light.id, [diffuseR + kr * highlight, diffuseG + kg * highlight, diffuseB + kb * highlight]));
+      recorder?.sample(attenuation, nDotL, rDotV, 'reached');
     }
+    out.x += dr;
+    out.y += dg;
+    out.z += db;
+    out.x += sr;
+    out.y += sg;
+    out.z += sb;
     if (node && sampleNodes) this.recordLightRays(light, frame, sampleNodes, node);
+    return recorder ? recorder.finish([dr, dg, db], [sr, sg, sb]) : null;
   }
 
   /**
@@ -280,7 +329,9 @@ export class WhittedIntegrator {
   }
 
   /** Transparent surface: kr·trace(reflect) + kt·trace(refract), Schlick's kr (spec §2). */
-  private addTransmission(ray: Ray, frame: Frame, material: Material, entering: boolean, depth: number, out: Vector3, node: RayNode | null): void {
+  private addTransmission(
+    ray: Ray, frame: Frame, material: Material, entering: boolean, depth: number, out: Vector3, node: RayNode | null, terms: ShadingTerms | null,
+  ): void {
     const n = frame.normal;
     const eta = entering ? 1 / material.refractiveIndex : material.refractiveIndex;
     const refracted = refract(ray.direction, n, eta, frame.childDirection);
@@ -288,18 +339,18 @@ export class WhittedIntegrator {
     if (!refracted) {
       // Total internal reflection: everything is reflected.
       reflect(ray.direction, n, frame.childDirection);
-      if (rough) this.traceGlossy('reflect', frame, depth, 1, material, out, node);
-      else this.traceChild('reflect', frame, depth, 1, out, node);
+      if (rough) this.traceGlossy('reflect', frame, depth, 1, material, out, node, terms);
+      else this.traceChild('reflect', frame, depth, 1, out, node, terms);
       return;
     }
     // Schlick with the angle on the less dense side: θi entering, θt leaving.
     const cosTheta = entering ? -ray.direction.dot(n) : -frame.childDirection.dot(n);
     const kr = schlickReflectance(cosTheta, material.refractiveIndex);
-    if (rough) this.traceGlossy('refract', frame, depth, 1 - kr, material, out, node);
-    else this.traceChild('refract', frame, depth, 1 - kr, out, node);
+    if (rough) this.traceGlossy('refract', frame, depth, 1 - kr, material, out, node, terms);
+    else this.traceChild('refract', frame, depth, 1 - kr, out, node, terms);
     reflect(ray.direction, n, frame.childDirection);
-    if (rough) this.traceGlossy('reflect', frame, depth, kr, material, out, node);
-    else this.traceChild('reflect', frame, depth, kr, out, node);
+    if (rough) this.traceGlossy('reflect', frame, depth, kr, material, out, node, terms);
+    else this.traceChild('reflect', frame, depth, kr, out, node, terms);
   }
 
   /**
@@ -310,6 +361,7 @@ export class WhittedIntegrator {
    */
   private traceGlossy(
     type: 'reflect' | 'refract', frame: Frame, depth: number, weight: number, material: Material, out: Vector3, node: RayNode | null,
+    terms: ShadingTerms | null,
   ): void {
     const { ideal, tangent, bitangent, discPoints, geometricNormal: ng } = frame;
     const m = material.glossySamples;
@@ -333,14 +385,15 @@ export class WhittedIntegrator {
         continue;
       }
       const leaving = type === 'reflect' ? leavingShape(frame, direction) : null;
-      const child = this.traceChild(type, frame, depth, share, out, node, leaving);
+      const child = this.traceChild(type, frame, depth, share, out, node, terms, leaving);
       if (child) child.glossy = true;
     }
   }
 
   /** Traces frame.childDirection from the hit point and adds weight × its colour to `out`; returns the recorded child. */
   private traceChild(
-    type: 'reflect' | 'refract', frame: Frame, depth: number, weight: number, out: Vector3, node: RayNode | null, leaving: Intersectable | null = null,
+    type: 'reflect' | 'refract', frame: Frame, depth: number, weight: number, out: Vector3, node: RayNode | null, terms: ShadingTerms | null,
+    leaving: Intersectable | null = null,
   ): RayNode | null {
     this.stats[type]++;
     const origin = offsetOrigin(frame, frame.childDirection, this.scene.epsilon);
@@ -354,6 +407,7 @@ export class WhittedIntegrator {
     }
     const color = this.trace(ray, depth + 1, frame.childColor, child, leaving);
     out.addScaledVector(color, weight);
+    if (terms) addChildTerm(terms, type, weight, color);
     return child;
   }
 
@@ -372,6 +426,13 @@ export class WhittedIntegrator {
     merged.corners = light.corners().map((c) => c.toArray()) as RayNode['corners'];
     node.children.push(merged);
   }
+}
+
+/** A: the distance factor (when on) times the angle factor (spot and area lights), for the unit direction l to the light. */
+function lightAttenuation(light: TracerLight, distance: number, lx: number, ly: number, lz: number): number {
+  let attenuation = light.distanceAttenuation ? distanceAttenuation(distance) : 1;
+  if (light.type !== 'point') attenuation *= angleAttenuation(-(light.direction.x * lx + light.direction.y * ly + light.direction.z * lz), light.cosHalfAngle, light.angleExponent);
+  return attenuation;
 }
 
 /** The hit shape, if it is convex and `direction` leaves it from its outside (so cannot meet it again). */
@@ -399,4 +460,19 @@ function recordEnd(node: RayNode, hit: boolean, length: number, objectId: string
   node.length = length;
   node.objectId = objectId;
   node.color = color.toArray();
+}
+
+/**
+ * Records what a reflected or refracted child adds. A rough surface's m² spread rays add up
+ * to one term: their weights summed, their colour the weighted mean (weight × colour is then
+ * what they add together, up to rounding).
+ */
+function addChildTerm(terms: ShadingTerms, type: 'reflect' | 'refract', weight: number, color: Vector3): void {
+  const before = terms[type];
+  if (!before) {
+    terms[type] = { weight, color: color.toArray() };
+    return;
+  }
+  const total = before.weight + weight;
+  terms[type] = { weight: total, color: [0, 1, 2].map((i) => (before.color[i] * before.weight + color.getComponent(i) * weight) / total) as [number, number, number] };
 }

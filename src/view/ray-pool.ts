@@ -21,6 +21,7 @@ import {
 } from 'three';
 import type { RayViewOptions } from '../lab-state/lab-state.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
+import { focusedRays, type RayFocus } from './ray-focus.ts';
 import type { RayHover, RayLayer } from './ray-layer.ts';
 import { ALPHA_ATTRIBUTE, createRayMaterial, FULLY_GROWN, GROWTH_ATTRIBUTE, type TravelUniform, type ViewHeightUniform } from './ray-shader.ts';
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
@@ -193,6 +194,8 @@ export class RayPool implements RayLayer {
   private startMs: number | null = null;
   /** Travel to resume from at that first tick (keeps the rays where they were when only the speed changed). */
   private resumeTravel = 0;
+  /** The ray debugger's pixel, drawn instead of the screen's rays while set (ray-focus.ts). */
+  private focus: RayFocus | null = null;
 
   constructor() {
     this.object.name = 'rays';
@@ -208,17 +211,27 @@ export class RayPool implements RayLayer {
     };
   }
 
+  /**
+   * Draws the ray debugger's pixel instead of the screen's rays from the next update() on:
+   * the rays cast so far, dimmed, one highlighted (growing when just cast); null: as before.
+   */
+  setFocus(focus: RayFocus | null): void {
+    this.focus = focus;
+  }
+
   /** Rebuilds the instances from the traced rays and the panel's options; then render a frame. */
   update(rays: ScreenRays | null, options: RayViewOptions, selectedPixel: readonly [number, number] | null): void {
-    const drawn = visibleRays(rays, options, selectedPixel, this.drawn, this.style);
+    const focus = this.focus;
+    const drawn = focus ? focusedRays(focus, options, this.drawn, this.style) : visibleRays(rays, options, selectedPixel, this.drawn, this.style);
     this.writeCylinders(drawn.rays);
     this.writeCones(drawn.cones);
     // Opaque rays write depth, so rays hide each other correctly; see-through ones do not,
     // so the rays behind them still show. (The material stays `transparent` either way:
     // three compiles opaque materials with alpha forced to 1, and switching compiles a new
     // program: a 528 ms long task in the e2e run on SwiftShader, mid-drag of the slider.)
-    this.rayMaterial.depthWrite = drawn.rays.count === 0 || drawn.rays.alpha[0] >= 1;
-    this.updateAnimation(rays, options, selectedPixel);
+    this.rayMaterial.depthWrite = !focus && (drawn.rays.count === 0 || drawn.rays.alpha[0] >= 1);
+    if (focus) this.growFocus(focus, options);
+    else this.updateAnimation(rays, options, selectedPixel);
   }
 
   /** Sets the growth uniform for `timeMs`; true while rays are growing or the animation loops. */
@@ -310,6 +323,17 @@ export class RayPool implements RayLayer {
       this.resumeTravel = this.travel.value;
     }
     this.speed = speed;
+  }
+
+  /** The debugger's highlighted ray grows once from 0 at the panel's speed (when it was just cast); the others stand. */
+  private growFocus(focus: RayFocus, options: RayViewOptions): void {
+    // Inputs no screen has: leaving the debugger restarts the usual animation.
+    this.animation = { rays: null, selectedPixel: null, animate: focus.grow, pixelByPixel: false };
+    this.loop = false;
+    this.speed = Math.max(options.animationSpeed, 1e-3);
+    this.travel.value = focus.grow ? 0 : FULLY_GROWN;
+    this.startMs = null;
+    this.resumeTravel = 0;
   }
 
   /** Distance along the pointer ray to segment i when the pointer is over it, else Infinity. */

@@ -25,6 +25,17 @@ describe('show me: facts are performed through the UI, state changes dispatched'
       { kind: 'open-panel', panel: 'rays' },
     ]);
   });
+
+  it('has the ray debugger perform what it reports: go to a ray, click a term', () => {
+    const stepped: LabAction = { type: 'debugger.stepped', step: 3, of: 9, ray: { type: 'shadow', depth: 0, hit: true, objectId: 'ball', lightId: 'lamp', from: 'floor' } };
+    const clicked: LabAction = { type: 'debugger.term-clicked', term: 'specular', lightId: 'lamp' };
+    expect(kindOfAction(stepped)).toBe('fact');
+    expect(showMeSteps([{ type: 'pixel.selected', pixel: [2, 2] }, stepped, clicked])).toEqual([
+      { kind: 'dispatch', action: { type: 'pixel.selected', pixel: [2, 2] } },
+      { kind: 'debug', action: stepped },
+      { kind: 'debug', action: clicked },
+    ]);
+  });
 });
 
 describe('playing the steps', () => {
@@ -42,6 +53,7 @@ describe('playing the steps', () => {
       openRender: () => done.push('open-render'),
       render: () => done.push('render'),
       openPanel: (panel) => done.push(`panel ${panel}`),
+      debug: (action) => done.push(`debug ${action.type}`),
     };
     return { done, stage };
   };

@@ -17,6 +17,7 @@ const LAYERS: Record<string, number> = {
   'src/lab-state': 3,
   'src/quest': 4,
   'src/render': 4,
+  'src/debugger': 4,
   'src/locales': 4,
   'src/i18n': 5,
   'src/classroom': 5,

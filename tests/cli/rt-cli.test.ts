@@ -83,6 +83,17 @@ describe('rt trace', () => {
     expect(trace.color).toHaveLength(3);
     expect(trace.rays).toHaveLength(4);
     expect(trace.rays[0]).toMatchObject({ type: 'primary', children: expect.any(Array) });
+    expect(JSON.stringify(trace)).not.toContain('"terms"');
+  });
+
+  it('adds every hit’s shading terms with --terms, summing to the ray’s colour', async () => {
+    const run = await rt('trace', file('scene.json'), '--pixel', '3,3', '--terms');
+
+    expect(run.code).toBe(0);
+    const root = JSON.parse(run.stdout).rays[0];
+    expect(root.hit).toBe(true);
+    expect(root.terms).toMatchObject({ ambient: expect.any(Array), lights: expect.any(Array), sum: expect.any(Array) });
+    for (let c = 0; c < 3; c++) expect(Math.min(1, Math.max(0, root.terms.sum[c]))).toBe(root.color[c]);
   });
 });
 

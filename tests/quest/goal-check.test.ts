@@ -65,6 +65,19 @@ describe('event goals', () => {
     expect(play(fewSamples, [...steps(4), ...steps(2)])).toEqual([false, false, false, true]);
   });
 
+  it('look into the ray debugger’s reports: the ray a step reached (kind, depth, where from) and the term clicked', () => {
+    const stepped = (type: 'primary' | 'shadow' | 'reflect', depth: number, from: string | null): LabAction => ({
+      type: 'debugger.stepped', step: 1, of: 9, ray: { type, depth, hit: true, objectId: 'ball', lightId: null, from },
+    });
+    const deepReflection = goal({ event: 'debugger.stepped', with: { 'ray.type': 'reflect', 'ray.depth': { '>=': 2 } } });
+    expect(play(deepReflection, [stepped('primary', 0, null), stepped('reflect', 1, 'mirror'), stepped('reflect', 2, 'mirror')])).toEqual([false, false, true]);
+    const fromFloor = goal({ event: 'debugger.stepped', with: { 'ray.from': 'floor' } });
+    expect(play(fromFloor, [stepped('shadow', 0, 'ball'), stepped('shadow', 0, 'floor')])).toEqual([false, true]);
+    const highlight = goal({ event: 'debugger.term-clicked', with: { term: 'specular' } });
+    expect(play(highlight, [{ type: 'debugger.term-clicked', term: 'diffuse', lightId: 'lamp' }, { type: 'debugger.term-clicked', term: 'specular', lightId: 'lamp' }])).toEqual([false, true]);
+    expect(() => goal({ event: 'debugger.term-clicked', with: { ray: 'x' } })).toThrow(/has term, lightId/);
+  });
+
   it('count with times, and say exactly which action matched', () => {
     expect(play(goal({ event: 'view.orbited', times: 3 }), [orbit, zoom, orbit, orbit])).toEqual([false, false, false, true]);
     const selectBall = goal({ event: 'selection.changed', where: { selection: { kind: 'object', id: 'red-ball' } } });

@@ -121,6 +121,19 @@ describe('RenderPool with worker threads', () => {
     expect(trace.color).toEqual([...image.rgb.slice(at, at + 3)]);
   });
 
+  it('traces a pixel with its shading terms on request (the ray debugger), the same rays and colour', async () => {
+    pool.setScene(scene, NO_MESHES);
+    // The bottom row sees the floor.
+    const [, rows] = scene.camera.pixels;
+    const plain = await pool.tracePixel(2, rows - 1, 3);
+    const withTerms = await pool.tracePixel(2, rows - 1, 3, true);
+
+    expect(plain.rays[0].terms).toBeUndefined();
+    expect(withTerms.color).toEqual(plain.color);
+    expect(withTerms.rays[0].hit).toBe(true);
+    expect(withTerms.rays[0].terms?.lights.map((light) => light.lightId)).toEqual(scene.lights.map((light) => light.id));
+  });
+
   it('rejects a job whose scene the workers cannot build, with the reason, and renders again', async () => {
     const withMesh = sceneFrom({ objects: [{ id: 'gem', shape: 'mesh', mesh: 'prism' }] });
     await expect(pool.render(withMesh, NO_MESHES, { width: 20, height: 20 }).done).rejects.toThrow(/prism/);

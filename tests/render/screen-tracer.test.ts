@@ -243,6 +243,8 @@ describe('ScreenTracer with a worker thread', () => {
         for (let x = 0; x < 4; x++) expect(rays.traces[y * 4 + x]).toEqual(tracePixel(core, x, y, DEFAULT_SEED));
       }
       expect(rays.traces.some((trace) => trace.rays[0].children.length > 0)).toBe(true);
+      // The debugger's pixel: the same tree, with its shading terms.
+      expect(await tracer.traceWithTerms(1, 2)).toEqual(tracePixel(core, 1, 2, DEFAULT_SEED, { terms: true }));
     } finally {
       tracer.dispose();
       pool.dispose();

@@ -20,6 +20,7 @@ import './panels/rt-ray-legend.ts';
 import './panels/rt-ray-panel.ts';
 import './panels/rt-scene-list.ts';
 import './panels/rt-tracer-panel.ts';
+import './debugger/rt-ray-debugger.ts';
 import './render-window/rt-render-window.ts';
 import './rt-guide-ring.ts';
 import './rt-ray-tooltip.ts';

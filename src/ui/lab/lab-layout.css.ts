@@ -142,6 +142,24 @@ export const labLayout = css`
       background: var(--rt-surface);
       box-shadow: var(--rt-shadow);
     }
+    /* The ray debugger: its button under the view's top-right buttons; open, a dock over the view's lower half. */
+    rt-ray-debugger {
+      position: absolute;
+      z-index: 6;
+      top: 60px;
+      right: var(--rt-space);
+    }
+    rt-ray-debugger[open] {
+      top: auto;
+      bottom: var(--rt-space);
+      left: var(--rt-space);
+      right: var(--rt-space);
+      height: 46%;
+    }
+    /* The debugger shows its pixel; another is chosen on the camera's screen in 3D (or after closing it). */
+    main:has(rt-ray-debugger[open]) rt-screen-preview {
+      display: none;
+    }
     rt-render-window {
       position: absolute;
       inset: var(--rt-space);

@@ -11,6 +11,7 @@ import { loadMeshes } from '../../render/load-meshes-browser.ts';
 import { createBrowserRenderPool } from '../../render/web-worker-port.ts';
 import type { Scene } from '../../scene/scene.ts';
 import type { LabView, RayHoverDetail } from '../../view/lab-view.ts';
+import type { RayFocus } from '../../view/ray-focus.ts';
 import { badgeName } from '../game/badge-names.ts';
 import type { QuestCommand } from '../game/quest-command.ts';
 import type { MapChoice } from '../game/rt-level-map.ts';
@@ -202,7 +203,12 @@ export class RtLab extends LitElement {
       void this.updateComplete.then(() => this.renderRoot.querySelector<RtRenderWindow>('rt-render-window')?.startRender());
     },
     openPanel: (panel) => this.store.dispatch({ type: 'panel.opened', panel }),
+    debug: (action) => this.renderRoot.querySelector('rt-ray-debugger')?.perform(action),
   };
+
+  /** The ray debugger's pixel, traced with its terms, and drawn in 3D (stable functions: lit compares them). */
+  private readonly traceWithTerms = (x: number, y: number) => this.services.traceWithTerms(x, y);
+  private readonly showRayFocus = (focus: RayFocus | null) => this.services.setRayFocus(focus);
 
   /** The level being played, if one is. */
   private level() {
@@ -258,6 +264,14 @@ export class RtLab extends LitElement {
         ></rt-scene-view>
         ${shows('screen-preview') ? html`<rt-screen-preview .rays=${this.services.screenRays}></rt-screen-preview>` : nothing}
         ${viewLegend && state.rays.showRays ? html`<rt-ray-legend class="view-legend"></rt-ray-legend>` : nothing}
+        ${shows('debugger')
+          ? html`<rt-ray-debugger
+              .shownControls=${controls('debugger')}
+              .screenRays=${this.services.screenRays}
+              .tracePixel=${this.traceWithTerms}
+              .showFocus=${this.showRayFocus}
+            ></rt-ray-debugger>`
+          : nothing}
         <rt-ray-tooltip .hover=${this.hover?.hover ?? null} .x=${this.hover?.x ?? 0} .y=${this.hover?.y ?? 0}></rt-ray-tooltip>
         <rt-render-window
           .pool=${this.services.renderPool}

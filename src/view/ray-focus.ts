@@ -1,0 +1,87 @@
+/**
+ * The ray debugger's view of the rays (ray-debugger spec §2): one pixel's trees, only the
+ * rays cast so far, all dimmed but one, which is highlighted (drawn thicker and opaque) and,
+ * when it was just cast, grows from its origin to its hit. Pure, like ray-visibility.ts:
+ * the pool copies the result into its one instanced mesh.
+ */
+import type { RayViewOptions } from '../lab-state/lab-state.ts';
+import type { ScreenRays } from '../render/screen-rays.ts';
+import type { PixelTrace, RayNode } from '../tracer/ray-tree.ts';
+import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
+
+/** What the debugger asks the pool to draw. */
+export interface RayFocus {
+  /** The pixel's trace (with or without terms: the rays are the same). */
+  trace: PixelTrace;
+  /** The rays drawn: those cast so far. */
+  shown: ReadonlySet<RayNode>;
+  /** The one ray drawn highlighted, or null (all dimmed). */
+  highlighted: RayNode | null;
+  /** Whether the highlighted ray grows from its origin (it was just cast). */
+  grow: boolean;
+}
+
+/** Opacity of the rays that are not highlighted: still there to follow, clearly in the background. */
+export const DIMMED_ALPHA = 0.22;
+
+/** The highlighted ray is this many times thicker than the ray panel's radius. */
+export const HIGHLIGHT_RADIUS_SCALE = 2.5;
+
+/** A start so far back that the segment has fully grown at any travel ≥ 0. */
+const GROWN_LONG_AGO = -1e9;
+
+/** One pixel's trace as a 1×1 screen (cached: the flattened rays are cached per screen object). */
+const screens = new WeakMap<PixelTrace, ScreenRays>();
+function screenOf(trace: PixelTrace): ScreenRays {
+  let screen = screens.get(trace);
+  if (!screen) {
+    screen = { columns: 1, rows: 1, traces: [trace] };
+    screens.set(trace, screen);
+  }
+  return screen;
+}
+
+/**
+ * The segments for `focus`: the panel's colours and radius, every filter off (the debugger
+ * shows every ray it steps through), then only the shown rays kept, dimmed but the highlighted.
+ * `travelEnd` is the highlighted ray's length when it grows, else 0 (nothing to animate).
+ */
+export function focusedRays(focus: RayFocus, options: RayViewOptions, into = new DrawnRays(), style?: RayStyle): DrawnRays {
+  const all: RayViewOptions = { ...options, showRays: true, hideNoHit: false, hideNegligible: false, transparency: 0, animatePixelByPixel: false };
+  visibleRays(screenOf(focus.trace), all, null, into, style);
+  let travelEnd = 0;
+  for (const list of [into.rays, into.cones]) {
+    let kept = 0;
+    for (let i = 0; i < list.count; i++) {
+      const node = list.nodes[i];
+      if (!focus.shown.has(node)) continue;
+      moveSegment(list, i, kept);
+      const highlighted = node === focus.highlighted;
+      list.alpha[kept] = highlighted ? 1 : DIMMED_ALPHA;
+      if (highlighted) list.radius[kept] *= HIGHLIGHT_RADIUS_SCALE;
+      list.start[kept] = highlighted && focus.grow ? 0 : GROWN_LONG_AGO;
+      if (highlighted && focus.grow) travelEnd = list.length[kept];
+      kept++;
+    }
+    list.count = kept;
+    list.nodes.length = kept;
+  }
+  into.travelEnd = travelEnd;
+  return into;
+}
+
+/** Copies segment `from` over segment `to` (to ≤ from), every array. */
+function moveSegment(list: SegmentList, from: number, to: number): void {
+  if (from === to) return;
+  list.nodes[to] = list.nodes[from];
+  list.origin.copyWithin(to * 3, from * 3, from * 3 + 3);
+  list.direction.copyWithin(to * 3, from * 3, from * 3 + 3);
+  list.color.copyWithin(to * 3, from * 3, from * 3 + 3);
+  list.length[to] = list.length[from];
+  list.radius[to] = list.radius[from];
+  list.alpha[to] = list.alpha[from];
+  list.start[to] = list.start[from];
+  list.colorKey[to] = list.colorKey[from];
+  list.pixel[to] = list.pixel[from];
+  if (list.withCorners) list.corners.copyWithin(to * 12, from * 12, from * 12 + 12);
+}
