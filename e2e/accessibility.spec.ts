@@ -12,6 +12,8 @@ const classFiles = simulatedClassFiles(3);
 
 for (const lang of ['en', 'nl'] as const) {
   test(`no serious axe violation in the lab, the level map and the render window (${lang})`, async ({ page }) => {
+    // axe's contrast rule walks every element in two themes: minutes on a busy school machine.
+    test.slow();
     const at = (hash: string) => page.goto(`./?lang=${lang}${hash}`);
 
     await at('');
@@ -31,6 +33,7 @@ for (const lang of ['en', 'nl'] as const) {
   });
 
   test(`no serious axe violation on the classroom pages (${lang})`, async ({ page }) => {
+    test.slow();
     const at = (hash: string) => page.goto(`./?lang=${lang}${hash}`);
     await at('#/teacher');
     await expect(page.locator('rt-teacher-page')).toBeVisible();
