@@ -43,8 +43,8 @@ export class RtChoice extends ControlElement {
       legend {
         float: left;
         padding: 0;
-        min-height: 32px;
-        line-height: 32px;
+        min-height: var(--rt-target);
+        line-height: var(--rt-target);
       }
       .segments {
         display: flex;
@@ -59,7 +59,7 @@ export class RtChoice extends ControlElement {
         flex: 1 1 auto;
         align-items: center;
         justify-content: center;
-        min-height: 32px;
+        min-height: var(--rt-target);
         padding: 0 12px;
         cursor: pointer;
         background: var(--rt-surface);

@@ -33,7 +33,7 @@ export class RtProgressMenu extends LitElement {
         display: flex;
         align-items: center;
         gap: 8px;
-        min-height: 32px;
+        min-height: var(--rt-target);
       }
       .stack {
         display: grid;

@@ -58,10 +58,13 @@ export class RtViewToolbar extends LitElement {
     .top .end {
       margin-left: auto;
     }
+    /* Bounded on the left too, so a narrow view (a phone) wraps the pads instead of cutting them off. */
     .bottom-right {
+      left: 8px;
       right: 8px;
       bottom: 8px;
       align-items: flex-end;
+      justify-content: flex-end;
     }
     .group {
       pointer-events: auto;
@@ -81,12 +84,12 @@ export class RtViewToolbar extends LitElement {
     }
     .pad-grid {
       display: grid;
-      grid-template-columns: repeat(3, 32px);
-      grid-template-rows: repeat(3, 32px);
+      grid-template-columns: repeat(3, var(--rt-target));
+      grid-template-rows: repeat(3, var(--rt-target));
     }
     .zoom-grid {
       display: grid;
-      grid-template-rows: repeat(3, 32px);
+      grid-template-rows: repeat(3, var(--rt-target));
     }
     .caption {
       margin-top: 2px;
@@ -96,8 +99,8 @@ export class RtViewToolbar extends LitElement {
     }
     button {
       box-sizing: border-box;
-      min-width: 32px;
-      min-height: 32px;
+      min-width: var(--rt-target);
+      min-height: var(--rt-target);
       display: inline-flex;
       align-items: center;
       justify-content: center;
