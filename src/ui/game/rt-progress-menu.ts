@@ -4,16 +4,20 @@ import type { Locale } from '../../quest/localized-text.ts';
 import { fire, gameStyles } from './game-styles.ts';
 
 /** The detail of `progress-command`. */
-export type ProgressCommand = { kind: 'locale'; locale: Locale } | { kind: 'export' } | { kind: 'import'; text: string; fileName: string } | { kind: 'reset' };
+export type ProgressCommand =
+  | { kind: 'locale'; locale: Locale }
+  | { kind: 'palette'; colorBlind: boolean }
+  | { kind: 'export' } | { kind: 'import'; text: string; fileName: string } | { kind: 'reset' };
 
 /**
- * @summary The header's menu: the language of the level texts, and the learner's progress:
+ * @summary The header's menu: the language, the rays' colours (saved with the progress, for
+ * every level), and the learner's progress:
  * export as a file, import a file, reset (after a confirmation dialog).
  *
  * @fires progress-command - CustomEvent<ProgressCommand>.
  */
 export class RtProgressMenu extends LitElement {
-  static override properties = { locale: {} };
+  static override properties = { locale: {}, colorBlind: { type: Boolean, attribute: 'color-blind' } };
   static override styles = [
     gameStyles,
     css`
@@ -62,16 +66,19 @@ export class RtProgressMenu extends LitElement {
   ];
 
   declare locale: Locale;
+  /** Whether the rays are drawn in the colour-blind-safe palette. */
+  declare colorBlind: boolean;
 
   constructor() {
     super();
     this.locale = 'en';
+    this.colorBlind = false;
   }
 
   override render() {
     const send = (command: ProgressCommand) => fire(this, 'progress-command', command);
     return html`
-      <button popovertarget="menu" title=${msg('Language and progress: export, import, reset')}>☰ ${msg('Menu')}</button>
+      <button popovertarget="menu" title=${msg('Language, ray colours and progress: export, import, reset')}>☰ ${msg('Menu')}</button>
       <div id="menu" popover>
         <fieldset>
           <legend>${msg('Language')}</legend>
@@ -83,6 +90,19 @@ export class RtProgressMenu extends LitElement {
           ).map(
             ([locale, name]) => html`<label>
               <input type="radio" name="locale" .checked=${this.locale === locale} @change=${() => send({ kind: 'locale', locale })} /> ${name}
+            </label>`,
+          )}
+        </fieldset>
+        <fieldset>
+          <legend>${msg('Ray colours')}</legend>
+          ${(
+            [
+              [false, msg('Standard')],
+              [true, msg('Colour-blind safe')],
+            ] as const
+          ).map(
+            ([colorBlind, name]) => html`<label>
+              <input type="radio" name="palette" .checked=${this.colorBlind === colorBlind} @change=${() => send({ kind: 'palette', colorBlind })} /> ${name}
             </label>`,
           )}
         </fieldset>
