@@ -5,12 +5,15 @@
  * - `aGrowth` = (start, length) in metres of travel: the growth animation. The vertex
  *   shader scales the instance by clamp((uTravel − start) / length, 0, 1), where uTravel =
  *   elapsed time × speed is the one uniform that changes per frame. Cylinders grow along
- *   their axis (local z); cones are scaled as a whole about their apex.
+ *   their axis (local z); cones are scaled as a whole about their apex;
+ * - `aDash` = (dash, gap) in metres along a cylinder (0: solid; ray-palette.ts RAY_DASHES):
+ *   the fragment shader discards the gaps, measured from the ray's start.
  */
 import { DoubleSide, MeshBasicMaterial, type WebGLProgramParametersWithUniforms } from 'three';
 
 export const ALPHA_ATTRIBUTE = 'aAlpha';
 export const GROWTH_ATTRIBUTE = 'aGrowth';
+export const DASH_ATTRIBUTE = 'aDash';
 
 /** Travel that every ray has reached: the animation is off or over. */
 export const FULLY_GROWN = 1e30;
@@ -24,7 +27,12 @@ const VERTEX_HEAD = /* glsl */ `#include <common>
 attribute float ${ALPHA_ATTRIBUTE};
 attribute vec2 ${GROWTH_ATTRIBUTE};
 uniform float uTravel;
-varying float vRayAlpha;`;
+varying float vRayAlpha;
+#ifndef RAY_CONE
+attribute vec2 ${DASH_ATTRIBUTE};
+varying vec2 vRayDash;
+varying float vRayAlong;
+#endif`;
 
 const VERTEX_GROW = /* glsl */ `#include <begin_vertex>
 float rayGrown = clamp((uTravel - ${GROWTH_ATTRIBUTE}.x) / max(${GROWTH_ATTRIBUTE}.y, 1e-6), 0.0, 1.0);
@@ -32,14 +40,24 @@ float rayGrown = clamp((uTravel - ${GROWTH_ATTRIBUTE}.x) / max(${GROWTH_ATTRIBUT
 transformed *= rayGrown;
 #else
 transformed.z *= rayGrown;
+vRayDash = ${DASH_ATTRIBUTE};
+// Metres from the ray's start: local z (0..1) times the length the instance matrix gives the axis.
+vRayAlong = position.z * length(instanceMatrix[2].xyz);
 #endif
 vRayAlpha = ${ALPHA_ATTRIBUTE};`;
 
 const FRAGMENT_HEAD = /* glsl */ `#include <common>
-varying float vRayAlpha;`;
+varying float vRayAlpha;
+#ifndef RAY_CONE
+varying vec2 vRayDash;
+varying float vRayAlong;
+#endif`;
 
 const FRAGMENT_ALPHA = /* glsl */ `#include <color_fragment>
-diffuseColor.a *= vRayAlpha;`;
+diffuseColor.a *= vRayAlpha;
+#ifndef RAY_CONE
+if (vRayDash.x > 0.0 && mod(vRayAlong, vRayDash.x + vRayDash.y) > vRayDash.x) discard;
+#endif`;
 
 /** Replaces one `#include` of three's shader source, failing loudly if three renamed it. */
 function patch(source: string, include: string, replacement: string): string {
