@@ -80,32 +80,8 @@ export class RtProgressMenu extends LitElement {
     return html`
       <button popovertarget="menu" title=${msg('Language, ray colours and progress: export, import, reset')}>☰ ${msg('Menu')}</button>
       <div id="menu" popover>
-        <fieldset>
-          <legend>${msg('Language')}</legend>
-          ${(
-            [
-              ['en', 'English'],
-              ['nl', 'Nederlands'],
-            ] as const
-          ).map(
-            ([locale, name]) => html`<label>
-              <input type="radio" name="locale" .checked=${this.locale === locale} @change=${() => send({ kind: 'locale', locale })} /> ${name}
-            </label>`,
-          )}
-        </fieldset>
-        <fieldset>
-          <legend>${msg('Ray colours')}</legend>
-          ${(
-            [
-              [false, msg('Standard')],
-              [true, msg('Colour-blind safe')],
-            ] as const
-          ).map(
-            ([colorBlind, name]) => html`<label>
-              <input type="radio" name="palette" .checked=${this.colorBlind === colorBlind} @change=${() => send({ kind: 'palette', colorBlind })} /> ${name}
-            </label>`,
-          )}
-        </fieldset>
+        ${choices(msg('Language'), 'locale', [['en', 'English'], ['nl', 'Nederlands']] as const, this.locale, (locale) => send({ kind: 'locale', locale }))}
+        ${choices(msg('Ray colours'), 'palette', [[false, msg('Standard')], [true, msg('Colour-blind safe')]] as const, this.colorBlind, (colorBlind) => send({ kind: 'palette', colorBlind }))}
         <fieldset class="stack">
           <legend>${msg('Your progress')}</legend>
           <button @click=${() => send({ kind: 'export' })} title=${msg('Download your progress as a file, to keep it or take it to another computer')}>${msg('Export progress…')}</button>
@@ -134,6 +110,18 @@ export class RtProgressMenu extends LitElement {
     if (!file) return;
     fire<ProgressCommand>(this, 'progress-command', { kind: 'import', text: await file.text(), fileName: file.name });
   }
+}
+
+/** A group of radio buttons: one of `options` (value, name), `current` checked. */
+function choices<T>(legend: string, name: string, options: readonly (readonly [T, string])[], current: T, choose: (value: T) => void) {
+  return html`<fieldset>
+    <legend>${legend}</legend>
+    ${options.map(
+      ([value, label]) => html`<label>
+        <input type="radio" name=${name} .checked=${current === value} @change=${() => choose(value)} /> ${label}
+      </label>`,
+    )}
+  </fieldset>`;
 }
 
 customElements.define('rt-progress-menu', RtProgressMenu);
