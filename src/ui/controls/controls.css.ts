@@ -34,7 +34,7 @@ export const controlStyles = css`
     height: var(--rt-target);
     min-width: 0;
     padding: 0 8px;
-    border: 1px solid var(--rt-border);
+    border: 1px solid var(--rt-control-border);
     border-radius: 6px;
     background: var(--rt-bg);
     color: var(--rt-text);
@@ -72,7 +72,7 @@ export const controlStyles = css`
     box-sizing: border-box;
     min-height: var(--rt-target);
     padding: 0 12px;
-    border: 1px solid var(--rt-border);
+    border: 1px solid var(--rt-control-border);
     border-radius: 6px;
     background: var(--rt-surface);
     color: var(--rt-text);

@@ -49,7 +49,7 @@ export class RtChoice extends ControlElement {
       .segments {
         display: flex;
         flex: 1 0 auto;
-        border: 1px solid var(--rt-border);
+        border: 1px solid var(--rt-control-border);
         border-radius: 6px;
         overflow: hidden;
       }

@@ -38,7 +38,7 @@ export class RtColorField extends ControlElement {
         width: max(40px, var(--rt-target));
         height: var(--rt-target);
         padding: 2px;
-        border: 1px solid var(--rt-border);
+        border: 1px solid var(--rt-control-border);
         border-radius: 6px;
         background: var(--rt-surface);
         cursor: pointer;

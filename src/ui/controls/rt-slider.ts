@@ -43,7 +43,7 @@ export class RtSlider extends ControlElement {
         align-items: center;
         box-sizing: border-box;
         height: var(--rt-target);
-        border: 1px solid var(--rt-border);
+        border: 1px solid var(--rt-control-border);
         border-radius: 6px;
         background: var(--rt-bg);
       }

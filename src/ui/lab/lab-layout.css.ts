@@ -71,7 +71,7 @@ const labGrid = css`
       min-height: var(--rt-target);
       padding: 0 12px;
       border-radius: 8px;
-      border: 1px solid var(--rt-border);
+      border: 1px solid var(--rt-control-border);
       background: var(--rt-surface);
       color: var(--rt-text);
       cursor: pointer;
