@@ -207,7 +207,7 @@ test('T, R, S switch the gizmo, the toolbar shows the mode pressed, and a gizmo 
     await expect.poll(async () => (await appState(page)).gizmo.mode).toBe(mode);
     await expect(page.locator(`rt-view-toolbar button[data-command="${mode}"]`)).toHaveAttribute('aria-pressed', 'true');
   }
-  await page.keyboard.press('Tab');
+  await page.keyboard.press('l');
   await expect.poll(async () => (await appState(page)).gizmo.space).toBe('local');
   await takeActions(page);
 
@@ -256,7 +256,7 @@ test('the help panel opens with ? and lists every key, and Escape closes it', as
   await page.keyboard.press('?');
   const dialog = page.locator('rt-help-panel dialog');
   await expect(dialog).toBeVisible();
-  for (const key of ['T', 'R', 'S', 'Tab', 'Shift', 'Delete', 'Esc', 'F', '?', '+', '−']) {
+  for (const key of ['T', 'R', 'S', 'L', 'P', 'Page Up', 'Tab', 'Shift', 'Delete', 'Esc', 'F', '?', '+', '−']) {
     await expect(dialog.locator('kbd', { hasText: new RegExp(`^${key.replace(/[?+]/g, '\\$&')}$`) }).first()).toBeVisible();
   }
   await expect(dialog).toContainText('Pinch');

@@ -14,6 +14,7 @@ import { isUuid, randomUuid } from '../classroom/learner-identity.ts';
 import { assignmentCatalog } from './assignment-catalog.ts';
 import { playShowMe, showMeSteps, type ShowMeStage } from './show-me-player.ts';
 import type { Store } from '../lab-state/store.ts';
+import type { LabState } from '../lab-state/lab-state.ts';
 
 /**
  * The game's controller: ties the store (the lab), the quest engine (the rules) and the
@@ -116,8 +117,10 @@ export class QuestSession {
     } else {
       this.save();
     }
+    this.applyPalette();
     this.cleanup.push(this.store.subscribe((state, action, error) => {
       this.engineNow.observe(state, action, error);
+      this.keepPalette(state);
       if (this.modeNow.kind === 'free-lab' && action.type !== 'scene.loaded') this.keepSandbox(state.scene);
     }));
   }
@@ -346,6 +349,7 @@ export class QuestSession {
     this.leaveMode();
     this.engineNow = engine;
     this.listenTo(engine);
+    this.applyPalette();
     this.modeNow = { kind: 'map' };
     this.notify();
   }
@@ -354,6 +358,21 @@ export class QuestSession {
   private leaveMode(): void {
     this.stopShowMe();
     this.flushSandbox();
+  }
+
+  /**
+   * The ray palette is the learner's setting, saved with the progress (the ray panel's switch
+   * and the menu both change it through the store): a colour-blind learner chooses it once.
+   */
+  private keepPalette(state: LabState): void {
+    const colorBlindPalette = state.rays.colorBlindPalette;
+    if (colorBlindPalette !== this.engineNow.progress.settings.colorBlindPalette) this.engineNow.changeSettings({ colorBlindPalette });
+  }
+
+  /** The saved palette, into the lab (at the start, after an import or a reset). */
+  private applyPalette(): void {
+    const colorBlindPalette = this.engineNow.progress.settings.colorBlindPalette;
+    if (this.store.state.rays.colorBlindPalette !== colorBlindPalette) this.store.dispatch({ type: 'rays.changed', changes: { colorBlindPalette } });
   }
 
   private saveContext(context: SessionContext): void {

@@ -1,3 +1,5 @@
+import { currentLocale } from '../i18n/locale.ts';
+import { localize, type LocalizedText } from '../util/localized-text.ts';
 import { msg, str } from '@lit/localize';
 import {
   BoxHelper,
@@ -25,6 +27,7 @@ import { CameraFlight } from './fly-to-camera.ts';
 import { type Animator, FrameScheduler } from './frame-scheduler.ts';
 import { cameraChanges, lightChanges, objectChanges } from './gizmo-changes.ts';
 import { effectiveGizmoMode, gizmoModesFor, type GizmoMode } from './gizmo-modes.ts';
+import { nudgeAction, nudgeNote, viewAxesOf } from './gizmo-nudge.ts';
 import { LightGizmos } from './light-gizmos.ts';
 import { Picker, type PickResult } from './picking.ts';
 import { RasterLights } from './raster-lights.ts';
@@ -33,7 +36,7 @@ import type { RayHover, RayLayer } from './ray-layer.ts';
 import { type MeshLoader, SceneSync } from './scene-sync.ts';
 import { TransformGizmo } from './transform-gizmo.ts';
 import { sameSelection, stateCommand, type StateCommand } from './state-commands.ts';
-import { keyCommand, type ViewCommand } from './view-commands.ts';
+import { type ArrowTarget, keyCommand, type ViewCommand } from './view-commands.ts';
 import { ViewControls } from './view-controls.ts';
 import { rayPathPoints } from './ray-path-points.ts';
 import { cameraViewFov, framingPose, type ViewPose } from './view-pose.ts';
@@ -56,6 +59,8 @@ interface LabViewEvents {
   flight: boolean;
   /** The user pressed "?". */
   help: undefined;
+  /** What a key did (a step of the selection, the chosen pixel), to show and announce. */
+  note: string;
 }
 
 type Listener<T> = (value: T) => void;
@@ -103,6 +108,7 @@ export class LabView {
     message: new Set(),
     flight: new Set(),
     help: new Set(),
+    note: new Set(),
   };
   private readonly unsubscribe: () => void;
   private readonly cleanups: (() => void)[] = [];
@@ -278,15 +284,51 @@ export class LabView {
         return this.showPixelRays();
       case 'help':
         return this.emit('help', undefined);
+      case 'nudge':
+        return this.nudge(command);
       default:
         return this.apply(stateCommand(command, state));
     }
   }
 
-  /** Dispatches a command's action and shows its note. */
+  /** Dispatches a command's action and shows its message (or, when it went through, its note). */
   private apply(command: StateCommand | null): void {
-    if (command?.action) this.dispatch(command.action);
+    const refused = command?.action ? this.dispatch(command.action) : undefined;
     if (command?.message) this.emit('message', command.message);
+    if (command?.note && !refused) this.emit('note', command.note);
+  }
+
+  /**
+   * The gizmo mode the arrow keys work in for the selection, or null when its handles are
+   * not shown (nothing selected, or a level without move tools): as the handles, the chosen
+   * mode when the selection and the page allow it.
+   */
+  private nudgeMode(state: LabState): GizmoMode | null {
+    const allowed = gizmoModesFor(state.selection, state.scene).filter((mode) => this.offeredModes?.includes(mode) ?? true);
+    if (allowed.length === 0) return null;
+    const mode = effectiveGizmoMode(state.gizmo.mode, gizmoModesFor(state.selection, state.scene));
+    return allowed.includes(mode) ? mode : allowed[0]!;
+  }
+
+  private arrowTarget(state: LabState): ArrowTarget {
+    if (this.nudgeMode(state)) return 'selection';
+    return state.selectedPixel ? 'pixel' : 'view';
+  }
+
+  /** One key step of the selection in its gizmo mode, along the world axes nearest the viewer's. */
+  private nudge(command: Extract<ViewCommand, { kind: 'nudge' }>): void {
+    const state = this.store.state;
+    const mode = this.nudgeMode(state);
+    const action = mode && nudgeAction(state, { mode, direction: command.direction, big: command.big }, viewAxesOf(this.camera));
+    if (!mode || !action || this.dispatch(action)) return;
+    this.emit('note', nudgeNote(this.selectionName(state), mode, command.big));
+  }
+
+  private selectionName({ scene, selection }: LabState): string {
+    const named = (name: LocalizedText | undefined, id: string) => (name === undefined ? id : localize(name, currentLocale()));
+    if (selection?.kind === 'object') return named(scene.objects.find((o) => o.id === selection.id)?.name, selection.id);
+    if (selection?.kind === 'light') return named(scene.lights.find((l) => l.id === selection.id)?.name, selection.id);
+    return msg("The ray tracer's camera");
   }
 
   /** Orbits the view as a toolbar button does: +dx moves the eye right around the target, +dy up. */
@@ -547,7 +589,7 @@ export class LabView {
   }
 
   private keyDown(event: KeyboardEvent): void {
-    const command = keyCommand(event, this.store.state.selection !== null);
+    const command = keyCommand(event, this.arrowTarget(this.store.state));
     if (!command) return;
     event.preventDefault();
     this.execute(command);

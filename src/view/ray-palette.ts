@@ -42,6 +42,23 @@ const OKABE_ITO: RayPalette = {
   'no-hit': '#D55E00',
 };
 
+/**
+ * Dash and gap along a drawn ray, in metres ([0, 0]: solid), in both palettes: a ray's type
+ * is never told by its hue alone (WCAG 1.4.1). Light rays (yellow) and refracted ones (green)
+ * differ by ΔE 5.5 under deuteranopia and 1.9 under protanopia in VRT's colours, no-hit red
+ * and refract green are the classic red-green pair: refracted rays are dotted, no-hit rays
+ * long-dashed, shadow rays dashed, reflected rays long dashes with short gaps; primary and
+ * light rays, the most numerous, stay solid. The legend draws the same patterns.
+ */
+export const RAY_DASHES: Readonly<Record<RayColorKey, readonly [dash: number, gap: number]>> = {
+  primary: [0, 0],
+  light: [0, 0],
+  shadow: [0.08, 0.05],
+  reflect: [0.12, 0.04],
+  refract: [0.03, 0.03],
+  'no-hit': [0.2, 0.08],
+};
+
 export function rayPalette(name: RayPaletteName): RayPalette {
   return name === 'okabe-ito' ? OKABE_ITO : VRT;
 }

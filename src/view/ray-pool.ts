@@ -23,8 +23,9 @@ import type { RayViewOptions } from '../lab-state/lab-state.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
 import { focusedRays, type RayFocus } from './ray-focus.ts';
 import type { RayHover, RayLayer } from './ray-layer.ts';
-import { ALPHA_ATTRIBUTE, createRayMaterial, FULLY_GROWN, GROWTH_ATTRIBUTE, type TravelUniform, type ViewHeightUniform } from './ray-shader.ts';
+import { ALPHA_ATTRIBUTE, createRayMaterial, DASH_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, type TravelUniform, type ViewHeightUniform } from './ray-shader.ts';
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
+import { RAY_COLOR_KEYS, RAY_DASHES } from './ray-palette.ts';
 
 /** Sides of a ray's cylinder: rays are a few pixels wide, where 6 sides already look round. */
 const RADIAL_SEGMENTS = 6;
@@ -103,6 +104,11 @@ class InstanceBuffers {
     return this.mesh.instanceColor as InstancedBufferAttribute;
   }
 
+  /** The dash pattern by instance (cylinders only; see RAY_DASHES). */
+  get dash(): InstancedBufferAttribute | undefined {
+    return this.mesh.geometry.getAttribute(DASH_ATTRIBUTE) as InstancedBufferAttribute | undefined;
+  }
+
   /** Makes room for `count` instances, replacing the mesh (and freeing its GPU buffers) when too small. */
   reserve(count: number): void {
     if (count <= this.capacity) return;
@@ -121,7 +127,7 @@ class InstanceBuffers {
     this.mesh.count = count;
     this.mesh.visible = count > 0;
     if (count === 0) return;
-    for (const attribute of [this.mesh.instanceMatrix, this.color, this.alpha, this.growth]) {
+    for (const attribute of [this.mesh.instanceMatrix, this.color, this.alpha, this.growth, ...(this.dash ? [this.dash] : [])]) {
       attribute.clearUpdateRanges();
       attribute.addUpdateRange(0, count * attribute.itemSize);
       attribute.needsUpdate = true;
@@ -137,6 +143,7 @@ class InstanceBuffers {
     const geometry = this.kind === 'cone' ? pyramidGeometry() : cylinderGeometry();
     geometry.setAttribute(ALPHA_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity), 1));
     geometry.setAttribute(GROWTH_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity * 2), 2));
+    if (this.kind === 'cylinder') geometry.setAttribute(DASH_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity * 2), 2));
     const mesh = new InstancedMesh(geometry, material, capacity);
     mesh.name = this.kind === 'cone' ? RAY_CONES_NAME : RAY_CYLINDERS_NAME;
     mesh.instanceColor = new InstancedBufferAttribute(new Float32Array(capacity * 3), 3);
@@ -291,10 +298,12 @@ export class RayPool implements RayLayer {
     (buffers.color.array as Float32Array).set(list.color.subarray(0, count * 3));
     const alpha = buffers.alpha.array as Float32Array;
     const growth = buffers.growth.array as Float32Array;
+    const dash = buffers.dash?.array as Float32Array | undefined;
     for (let i = 0; i < count; i++) {
       alpha[i] = list.alpha[i] * opacity;
       growth[i * 2] = list.start[i];
       growth[i * 2 + 1] = list.length[i];
+      if (dash) dash.set(RAY_DASHES[RAY_COLOR_KEYS[list.colorKey[i]]!], i * 2);
     }
     buffers.commit(count);
   }

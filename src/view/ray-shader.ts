@@ -5,15 +5,18 @@
  * - `aGrowth` = (start, length) in metres of travel: the growth animation. The vertex
  *   shader scales the instance by clamp((uTravel − start) / length, 0, 1), where uTravel =
  *   elapsed time × speed is the one uniform that changes per frame. Cylinders grow along
- *   their axis (local z); cones are scaled as a whole about their apex.
+ *   their axis (local z); cones are scaled as a whole about their apex;
  * - a minimum width on screen: a cylinder thinner than RAY_MIN_WIDTH_PX at its depth is
  *   widened to it, so a 1 cm ray stays visible in a scene seen from 10 m (uViewHeight is the
- *   canvas height in CSS px, set before each draw).
+ *   canvas height in CSS px, set before each draw);
+ * - `aDash` = (dash, gap) in metres along a cylinder (0: solid; ray-palette.ts RAY_DASHES):
+ *   the fragment shader discards the gaps, measured from the ray's start.
  */
 import { DoubleSide, MeshBasicMaterial, Vector2, type WebGLProgramParametersWithUniforms } from 'three';
 
 export const ALPHA_ATTRIBUTE = 'aAlpha';
 export const GROWTH_ATTRIBUTE = 'aGrowth';
+export const DASH_ATTRIBUTE = 'aDash';
 
 /** The thinnest a ray is drawn, in CSS px (issue 9: readable at a level's starting view). */
 export const RAY_MIN_WIDTH_PX = 3;
@@ -34,7 +37,12 @@ attribute float ${ALPHA_ATTRIBUTE};
 attribute vec2 ${GROWTH_ATTRIBUTE};
 uniform float uTravel;
 uniform float uViewHeight;
-varying float vRayAlpha;`;
+varying float vRayAlpha;
+#ifndef RAY_CONE
+attribute vec2 ${DASH_ATTRIBUTE};
+varying vec2 vRayDash;
+varying float vRayAlong;
+#endif`;
 
 const VERTEX_GROW = /* glsl */ `#include <begin_vertex>
 float rayGrown = clamp((uTravel - ${GROWTH_ATTRIBUTE}.x) / max(${GROWTH_ATTRIBUTE}.y, 1e-6), 0.0, 1.0);
@@ -47,14 +55,24 @@ vec4 rayAxisView = modelViewMatrix * instanceMatrix * vec4(0.0, 0.0, transformed
 float rayPixel = 2.0 * max(-rayAxisView.z, 1e-4) / (projectionMatrix[1][1] * max(uViewHeight, 1.0));
 float rayRadius = length((modelViewMatrix * instanceMatrix * vec4(1.0, 0.0, 0.0, 0.0)).xyz);
 transformed.xy *= max(1.0, 0.5 * ${RAY_MIN_WIDTH_PX.toFixed(1)} * rayPixel / max(rayRadius, 1e-9));
+vRayDash = ${DASH_ATTRIBUTE};
+// Metres from the ray's start: local z (0..1) times the length the instance matrix gives the axis.
+vRayAlong = position.z * length(instanceMatrix[2].xyz);
 #endif
 vRayAlpha = ${ALPHA_ATTRIBUTE};`;
 
 const FRAGMENT_HEAD = /* glsl */ `#include <common>
-varying float vRayAlpha;`;
+varying float vRayAlpha;
+#ifndef RAY_CONE
+varying vec2 vRayDash;
+varying float vRayAlong;
+#endif`;
 
 const FRAGMENT_ALPHA = /* glsl */ `#include <color_fragment>
-diffuseColor.a *= vRayAlpha;`;
+diffuseColor.a *= vRayAlpha;
+#ifndef RAY_CONE
+if (vRayDash.x > 0.0 && mod(vRayAlong, vRayDash.x + vRayDash.y) > vRayDash.x) discard;
+#endif`;
 
 const drawingSize = new Vector2();
 

@@ -1,4 +1,4 @@
-import { msg } from '@lit/localize';
+import { msg, str } from '@lit/localize';
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState, Selection } from '../lab-state/lab-state.ts';
 import { gizmoModesFor } from './gizmo-modes.ts';
@@ -8,11 +8,14 @@ import type { ViewCommand } from './view-commands.ts';
 export interface StateCommand {
   action?: LabAction;
   message?: string;
+  /** What a key did, for the learner who cannot see it happen (the chosen pixel). */
+  note?: string;
 }
 
 /**
  * The part of a view command that changes the lab state rather than the camera: the gizmo's
- * mode and options, deleting, deselecting (Escape) and stepping through the selection (N).
+ * mode and options, deleting, deselecting (Escape), stepping through the selection (N) and
+ * choosing a pixel of the camera's screen with keys (P, arrows).
  * Pure, so a key, a toolbar button and a test all get the same answer; null for the
  * commands that only move the view (orbit, pan, zoom, fly, help).
  */
@@ -32,12 +35,26 @@ export function stateCommand(command: ViewCommand, state: LabState): StateComman
     case 'delete':
       return deleteSelection(state.selection);
     case 'escape':
-      return state.selection ? { action: { type: 'selection.changed', selection: null } } : {};
+      if (state.selection) return { action: { type: 'selection.changed', selection: null } };
+      return state.selectedPixel ? { action: { type: 'pixel.deselected' } } : {};
+    case 'toggle-pixel':
+      return state.selectedPixel ? { action: { type: 'pixel.deselected' } } : choosePixel(0, 0);
+    case 'pixel-step': {
+      const [columns, rows] = state.scene.camera.pixels;
+      const [x, y] = state.selectedPixel ?? [0, 0];
+      const next = [Math.min(columns - 1, Math.max(0, x + command.dx)), Math.min(rows - 1, Math.max(0, y + command.dy))] as const;
+      return next[0] === x && next[1] === y ? {} : choosePixel(...next);
+    }
     case 'select-next':
       return { action: { type: 'selection.changed', selection: nextSelection(state, command.step) } };
     default:
       return null;
   }
+}
+
+/** Pixel (x, y) of the camera's screen chosen: only its rays are shown (0, 0 is the top left). */
+function choosePixel(x: number, y: number): StateCommand {
+  return { action: { type: 'pixel.selected', pixel: [x, y] }, note: msg(str`Pixel ${x}, ${y}: only its rays are shown. Arrow keys: the next pixel; Esc: every pixel.`) };
 }
 
 function deleteSelection(selection: Selection): StateCommand {

@@ -29,6 +29,26 @@ describe('the quest session', () => {
     expect(game.engine.level?.current?.task.id).toBe('orbit');
   });
 
+  it('keeps the ray palette with the progress: chosen once, in the lab at the next visit and after an import', () => {
+    const { store, storage, session: game } = session();
+    game.start();
+    expect(saved(storage).settings.colorBlindPalette).toBe(false);
+    store.dispatch({ type: 'rays.changed', changes: { colorBlindPalette: true } });
+    expect(saved(storage).settings.colorBlindPalette).toBe(true);
+    game.dispose();
+
+    const next = session(storage);
+    expect(next.store.state.rays.colorBlindPalette).toBe(true);
+    // A level's scene keeps it (the reducer keeps the palette across scene.loaded).
+    next.session.start();
+    expect(next.store.state.rays.colorBlindPalette).toBe(true);
+    // A progress file without it (the default palette) brings the default back.
+    const file = JSON.parse(next.session.exportText());
+    file.settings.colorBlindPalette = false;
+    expect(next.session.importText(JSON.stringify(file))).toEqual({ ok: true });
+    expect(next.store.state.rays.colorBlindPalette).toBe(false);
+  });
+
   it('saves every change and resumes the level after a reload', () => {
     const { store, storage, session: game } = session();
     game.start();

@@ -2,8 +2,8 @@ import { describe, expect, it } from 'vitest';
 import { InstancedMesh, Matrix4, Raycaster, ShaderLib, Vector3, type InstancedBufferAttribute, type MeshBasicMaterial } from 'three';
 import { DEFAULT_RAY_VIEW, type RayViewOptions } from '../../src/lab-state/lab-state.ts';
 import { CONE_OPACITY, LOOP_PAUSE_S, RAY_CONES_NAME, RAY_CYLINDERS_NAME, RayPool } from '../../src/view/ray-pool.ts';
-import { ALPHA_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, patchRayShader } from '../../src/view/ray-shader.ts';
-import { hexToColor, rayPalette } from '../../src/view/ray-palette.ts';
+import { ALPHA_ATTRIBUTE, DASH_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, patchRayShader } from '../../src/view/ray-shader.ts';
+import { hexToColor, RAY_DASHES, rayPalette } from '../../src/view/ray-palette.ts';
 import { areaRay, ray, screen, syntheticScreen } from '../support/ray-fixtures.ts';
 
 const options = (changes: Partial<RayViewOptions> = {}): RayViewOptions => ({ ...DEFAULT_RAY_VIEW, ...changes });
@@ -94,6 +94,29 @@ describe('RayPool instances', () => {
     expect([attribute(cones, GROWTH_ATTRIBUTE).getX(0), attribute(cones, GROWTH_ATTRIBUTE).getY(0)]).toEqual([4, 3]);
     // Only the instances in use are uploaded.
     expect(cylinders.instanceMatrix.updateRanges).toEqual([{ start: 0, count: 2 * 16 }]);
+  });
+
+  it('gives each cylinder its type’s dash pattern, in either palette: the primary ray solid, the reflected one dashed', () => {
+    for (const colorBlindPalette of [false, true]) {
+      const pool = new RayPool();
+      pool.update(oneTree(), options({ colorBlindPalette }), null);
+      const { cylinders, cones, attribute } = parts(pool);
+      const dash = attribute(cylinders, DASH_ATTRIBUTE);
+      expect([dash.getX(0), dash.getY(0)]).toEqual([...RAY_DASHES.primary]);
+      expect([dash.getX(1), dash.getY(1)].map((v) => Math.fround(v))).toEqual(RAY_DASHES.reflect.map((v) => Math.fround(v)));
+      expect(RAY_DASHES.reflect[0]).toBeGreaterThan(0);
+      expect(dash.updateRanges).toEqual([{ start: 0, count: 2 * 2 }]);
+      // Cones are light or shadow volumes, drawn whole.
+      expect(cones.geometry.getAttribute(DASH_ATTRIBUTE)).toBeUndefined();
+    }
+  });
+
+  it('draws the types that colour vision can confuse (light and refract, no-hit and refract) with different patterns', () => {
+    const pattern = (key: keyof typeof RAY_DASHES) => RAY_DASHES[key].join('/');
+    expect(pattern('light')).not.toBe(pattern('refract'));
+    expect(pattern('no-hit')).not.toBe(pattern('refract'));
+    expect(pattern('primary')).not.toBe(pattern('reflect'));
+    expect(new Set(Object.values(RAY_DASHES).map((dash) => dash.join('/'))).size).toBeGreaterThanOrEqual(5);
   });
 
   it('lets opaque rays write depth and see-through ones not, without compiling a new program', () => {
@@ -218,6 +241,8 @@ describe('RayPool growth animation', () => {
     expect(shader.vertexShader).toMatch(/transformed\.z \*= rayGrown/);
     expect(shader.fragmentShader).toContain('diffuseColor.a *= vRayAlpha');
     expect(shader.vertexShader).toContain('transformed.xy *= max(1.0, 0.5 * 3.0 * rayPixel');
+    expect(shader.vertexShader).toContain(`attribute vec2 ${DASH_ATTRIBUTE}`);
+    expect(shader.fragmentShader).toMatch(/mod\(vRayAlong, vRayDash\.x \+ vRayDash\.y\) > vRayDash\.x\) discard/);
     expect(shader.uniforms).toEqual({ uTravel: uniform, uViewHeight: viewHeight });
     expect(() => patchRayShader({ vertexShader: 'void main() {}', fragmentShader: '', uniforms: {} }, uniform, viewHeight)).toThrow(/begin_vertex|common/);
   });

@@ -28,9 +28,23 @@ describe('view commands that change the lab state', () => {
     expect(camera?.message).toMatch(/cannot be changed that way/);
   });
 
-  it('Escape deselects, and does nothing to the state without a selection', () => {
-    expect(stateCommand({ kind: 'escape' }, selecting({ kind: 'camera' }))).toEqual({ action: { type: 'selection.changed', selection: null } });
+  it('Escape deselects, then shows every pixel again, and does nothing to the state when neither is chosen', () => {
+    expect(stateCommand({ kind: 'escape' }, { ...selecting({ kind: 'camera' }), selectedPixel: [1, 1] })).toEqual({ action: { type: 'selection.changed', selection: null } });
+    expect(stateCommand({ kind: 'escape' }, { ...base, selectedPixel: [1, 1] })).toEqual({ action: { type: 'pixel.deselected' } });
     expect(stateCommand({ kind: 'escape' }, base)).toEqual({});
+  });
+
+  it('chooses a pixel of the camera’s screen with P (the top left first) and the arrows, kept on the screen', () => {
+    const [columns, rows] = base.scene.camera.pixels;
+    const chosen = stateCommand({ kind: 'toggle-pixel' }, base);
+    expect(chosen?.action).toEqual({ type: 'pixel.selected', pixel: [0, 0] });
+    expect(chosen?.note).toMatch(/Pixel 0, 0/);
+    expect(stateCommand({ kind: 'toggle-pixel' }, { ...base, selectedPixel: [2, 1] })?.action).toEqual({ type: 'pixel.deselected' });
+    expect(stateCommand({ kind: 'pixel-step', dx: 1, dy: 0 }, { ...base, selectedPixel: [2, 1] })?.action).toEqual({ type: 'pixel.selected', pixel: [3, 1] });
+    expect(stateCommand({ kind: 'pixel-step', dx: 0, dy: -1 }, { ...base, selectedPixel: [2, 1] })?.action).toEqual({ type: 'pixel.selected', pixel: [2, 0] });
+    // At the edge nothing changes (no event that a goal could count twice).
+    expect(stateCommand({ kind: 'pixel-step', dx: 1, dy: 0 }, { ...base, selectedPixel: [columns - 1, 0] })).toEqual({});
+    expect(stateCommand({ kind: 'pixel-step', dx: 0, dy: 1 }, { ...base, selectedPixel: [0, rows - 1] })).toEqual({});
   });
 
   it('leaves camera moves to the view', () => {

@@ -87,7 +87,7 @@ export class RtSurvey extends LitElement {
       .scale .options label {
         flex-direction: column;
         gap: 2px;
-        min-width: 32px;
+        min-width: var(--rt-target);
       }
       .end {
         font-size: 0.9em;

@@ -3,8 +3,8 @@ import { css } from 'lit';
 /**
  * Styles shared by the panel controls (rt-slider, rt-switch, …) and the panels. Colours
  * come only from the theme's --rt-* properties, so light and dark themes follow; spacing
- * is on an 8 px grid (4 px for the tight gaps inside a control), and every touch target is
- * at least 32 px high for a finger on a 1024×768 tablet.
+ * is on an 8 px grid (4 px for the tight gaps inside a control), and every target is
+ * --rt-target high: 32 px for a mouse, 44 px on a touch screen (theme.css).
  */
 export const controlStyles = css`
   :host {
@@ -22,7 +22,7 @@ export const controlStyles = css`
     align-items: center;
     justify-content: space-between;
     gap: 8px;
-    min-height: 32px;
+    min-height: var(--rt-target);
   }
   .label {
     flex: 1 1 auto;
@@ -31,10 +31,10 @@ export const controlStyles = css`
   }
   input[type='text'] {
     box-sizing: border-box;
-    height: 32px;
+    height: var(--rt-target);
     min-width: 0;
     padding: 0 8px;
-    border: 1px solid var(--rt-border);
+    border: 1px solid var(--rt-control-border);
     border-radius: 6px;
     background: var(--rt-bg);
     color: var(--rt-text);
@@ -70,9 +70,9 @@ export const controlStyles = css`
   }
   button {
     box-sizing: border-box;
-    min-height: 32px;
+    min-height: var(--rt-target);
     padding: 0 12px;
-    border: 1px solid var(--rt-border);
+    border: 1px solid var(--rt-control-border);
     border-radius: 6px;
     background: var(--rt-surface);
     color: var(--rt-text);

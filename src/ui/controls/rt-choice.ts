@@ -43,13 +43,13 @@ export class RtChoice extends ControlElement {
       legend {
         float: left;
         padding: 0;
-        min-height: 32px;
-        line-height: 32px;
+        min-height: var(--rt-target);
+        line-height: var(--rt-target);
       }
       .segments {
         display: flex;
         flex: 1 0 auto;
-        border: 1px solid var(--rt-border);
+        border: 1px solid var(--rt-control-border);
         border-radius: 6px;
         overflow: hidden;
       }
@@ -59,7 +59,7 @@ export class RtChoice extends ControlElement {
         flex: 1 1 auto;
         align-items: center;
         justify-content: center;
-        min-height: 32px;
+        min-height: var(--rt-target);
         padding: 0 12px;
         cursor: pointer;
         background: var(--rt-surface);

@@ -35,10 +35,10 @@ export class RtColorField extends ControlElement {
       }
       input[type='color'] {
         box-sizing: border-box;
-        width: 40px;
-        height: 32px;
+        width: max(40px, var(--rt-target));
+        height: var(--rt-target);
         padding: 2px;
-        border: 1px solid var(--rt-border);
+        border: 1px solid var(--rt-control-border);
         border-radius: 6px;
         background: var(--rt-surface);
         cursor: pointer;

@@ -42,8 +42,8 @@ export class RtSlider extends ControlElement {
         display: flex;
         align-items: center;
         box-sizing: border-box;
-        height: 32px;
-        border: 1px solid var(--rt-border);
+        height: var(--rt-target);
+        border: 1px solid var(--rt-control-border);
         border-radius: 6px;
         background: var(--rt-bg);
       }
@@ -71,7 +71,7 @@ export class RtSlider extends ControlElement {
       input[type='range'] {
         display: block;
         width: 100%;
-        height: 32px;
+        height: var(--rt-target);
         margin: 0;
         accent-color: var(--rt-accent);
         cursor: pointer;

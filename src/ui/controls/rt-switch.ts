@@ -40,7 +40,7 @@ export class RtSwitch extends ControlElement {
         width: 44px;
         height: 24px;
         margin: 4px 0;
-        border: 1px solid var(--rt-border);
+        border: 1px solid var(--rt-control-border);
         border-radius: 12px;
         background: var(--rt-bg);
         cursor: pointer;

@@ -16,7 +16,7 @@ export class RtThemeToggle extends LitElement {
       min-height: var(--rt-target);
       padding: 0 10px;
       border-radius: 8px;
-      border: 1px solid var(--rt-border);
+      border: 1px solid var(--rt-control-border);
       background: var(--rt-surface);
       color: var(--rt-text);
       cursor: pointer;

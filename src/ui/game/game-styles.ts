@@ -17,7 +17,7 @@ export const gameStyles = [
       font-weight: 600;
     }
     button.link {
-      min-height: 32px;
+      min-height: var(--rt-target);
       padding: 0 4px;
       border: 0;
       background: none;

@@ -2,6 +2,7 @@ import { msg, str } from '@lit/localize';
 import { css, html, LitElement, nothing, type TemplateResult } from 'lit';
 import type { LevelMapEntry, ChapterMapView } from '../../quest/level-map.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
+import { FocusReturn } from '../controls/focus-return.ts';
 import { fire, gameStyles } from './game-styles.ts';
 
 /** The detail of `map-choice`: a level to play, the free lab, or back to the open level. */
@@ -123,14 +124,35 @@ export class RtLevelMap extends LitElement {
   /** An assignment's title instead of "Levels". */
   declare heading: string;
 
+  private readonly focusReturn = new FocusReturn();
+
   constructor() {
     super();
+    this.addEventListener('keydown', (event) => {
+      if (event.key === 'Escape' && this.closable) fire(this, 'map-choice', { kind: 'close' } satisfies MapChoice);
+    });
     this.chapters = [];
     this.locale = 'en';
     this.current = null;
     this.welcome = false;
     this.closable = false;
     this.heading = '';
+  }
+
+  override connectedCallback(): void {
+    super.connectedCallback();
+    this.focusReturn.remember();
+  }
+
+  override disconnectedCallback(): void {
+    super.disconnectedCallback();
+    this.focusReturn.restore(this);
+  }
+
+  /** The map covers the lab: the focus goes to the level to continue (else the first one to play), not behind the map. */
+  protected override firstUpdated(): void {
+    const levels = this.renderRoot.querySelector<HTMLElement>('.level[data-current]') ?? this.renderRoot.querySelector<HTMLElement>('.level[aria-disabled="false"]');
+    levels?.focus();
   }
 
   override render() {

@@ -4,16 +4,20 @@ import type { Locale } from '../../quest/localized-text.ts';
 import { fire, gameStyles } from './game-styles.ts';
 
 /** The detail of `progress-command`. */
-export type ProgressCommand = { kind: 'locale'; locale: Locale } | { kind: 'export' } | { kind: 'import'; text: string; fileName: string } | { kind: 'reset' };
+export type ProgressCommand =
+  | { kind: 'locale'; locale: Locale }
+  | { kind: 'palette'; colorBlind: boolean }
+  | { kind: 'export' } | { kind: 'import'; text: string; fileName: string } | { kind: 'reset' };
 
 /**
- * @summary The header's menu: the language of the level texts, and the learner's progress:
+ * @summary The header's menu: the language, the rays' colours (saved with the progress, for
+ * every level), and the learner's progress:
  * export as a file, import a file, reset (after a confirmation dialog).
  *
  * @fires progress-command - CustomEvent<ProgressCommand>.
  */
 export class RtProgressMenu extends LitElement {
-  static override properties = { locale: {} };
+  static override properties = { locale: {}, colorBlind: { type: Boolean, attribute: 'color-blind' } };
   static override styles = [
     gameStyles,
     css`
@@ -33,7 +37,7 @@ export class RtProgressMenu extends LitElement {
         display: flex;
         align-items: center;
         gap: 8px;
-        min-height: 32px;
+        min-height: var(--rt-target);
       }
       .stack {
         display: grid;
@@ -62,30 +66,22 @@ export class RtProgressMenu extends LitElement {
   ];
 
   declare locale: Locale;
+  /** Whether the rays are drawn in the colour-blind-safe palette. */
+  declare colorBlind: boolean;
 
   constructor() {
     super();
     this.locale = 'en';
+    this.colorBlind = false;
   }
 
   override render() {
     const send = (command: ProgressCommand) => fire(this, 'progress-command', command);
     return html`
-      <button popovertarget="menu" title=${msg('Language and progress: export, import, reset')}>☰ ${msg('Menu')}</button>
+      <button popovertarget="menu" title=${msg('Language, ray colours and progress: export, import, reset')}>☰ ${msg('Menu')}</button>
       <div id="menu" popover>
-        <fieldset>
-          <legend>${msg('Language')}</legend>
-          ${(
-            [
-              ['en', 'English'],
-              ['nl', 'Nederlands'],
-            ] as const
-          ).map(
-            ([locale, name]) => html`<label>
-              <input type="radio" name="locale" .checked=${this.locale === locale} @change=${() => send({ kind: 'locale', locale })} /> ${name}
-            </label>`,
-          )}
-        </fieldset>
+        ${choices(msg('Language'), 'locale', [['en', 'English'], ['nl', 'Nederlands']] as const, this.locale, (locale) => send({ kind: 'locale', locale }))}
+        ${choices(msg('Ray colours'), 'palette', [[false, msg('Standard')], [true, msg('Colour-blind safe')]] as const, this.colorBlind, (colorBlind) => send({ kind: 'palette', colorBlind }))}
         <fieldset class="stack">
           <legend>${msg('Your progress')}</legend>
           <button @click=${() => send({ kind: 'export' })} title=${msg('Download your progress as a file, to keep it or take it to another computer')}>${msg('Export progress…')}</button>
@@ -114,6 +110,18 @@ export class RtProgressMenu extends LitElement {
     if (!file) return;
     fire<ProgressCommand>(this, 'progress-command', { kind: 'import', text: await file.text(), fileName: file.name });
   }
+}
+
+/** A group of radio buttons: one of `options` (value, name), `current` checked. */
+function choices<T>(legend: string, name: string, options: readonly (readonly [T, string])[], current: T, choose: (value: T) => void) {
+  return html`<fieldset>
+    <legend>${legend}</legend>
+    ${options.map(
+      ([value, label]) => html`<label>
+        <input type="radio" name=${name} .checked=${current === value} @change=${() => choose(value)} /> ${label}
+      </label>`,
+    )}
+  </fieldset>`;
 }
 
 customElements.define('rt-progress-menu', RtProgressMenu);

@@ -30,7 +30,7 @@ export class RtQuiz extends LitElement {
         display: flex;
         align-items: center;
         gap: 8px;
-        min-height: 32px;
+        min-height: var(--rt-target);
         cursor: pointer;
       }
       input[type='radio'] {

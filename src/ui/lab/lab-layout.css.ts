@@ -4,7 +4,7 @@ import { css } from 'lit';
  * The lab's grid: the header over three columns (panels, the 3D view, the tasks), the level
  * map over all of them below the header, the render window and the toast over the view.
  */
-export const labLayout = css`
+const labGrid = css`
     :host {
       display: grid;
       grid-template-columns: minmax(260px, 300px) 1fr minmax(220px, 280px);
@@ -25,8 +25,10 @@ export const labLayout = css`
       font-size: 1.15rem;
       margin: 0 auto 0 0;
     }
+    /* Positioned, so that what sits absolutely in them (visually hidden text) scrolls with them instead of stretching the page. */
     .sidebar,
     .tasks {
+      position: relative;
       overflow-y: auto;
       background: var(--rt-surface);
       padding: var(--rt-space);
@@ -69,7 +71,7 @@ export const labLayout = css`
       min-height: var(--rt-target);
       padding: 0 12px;
       border-radius: 8px;
-      border: 1px solid var(--rt-border);
+      border: 1px solid var(--rt-control-border);
       background: var(--rt-surface);
       color: var(--rt-text);
       cursor: pointer;
@@ -193,3 +195,69 @@ export const labLayout = css`
       }
     }
 `;
+
+/**
+ * Narrow screens: a phone (390 px), or a laptop at 200 % zoom (683 px of CSS width): one
+ * column that scrolls (WCAG 1.4.10, reflow), the 3D view first, then the level's tasks,
+ * then the panels; nothing laid over anything else except the view's own buttons. The
+ * render window takes the whole screen.
+ */
+const labNarrow = css`
+  @media (max-width: 760px) {
+    :host {
+      grid-template-columns: minmax(0, 1fr);
+      grid-template-rows: repeat(4, max-content);
+      overflow-y: auto;
+    }
+    :host([free-lab]) {
+      grid-template-columns: minmax(0, 1fr);
+    }
+    :host([free-lab]) .tasks {
+      display: flex;
+    }
+    header {
+      flex-wrap: wrap;
+      padding: 6px var(--rt-space);
+    }
+    main {
+      grid-area: 2 / 1;
+    }
+    .tasks {
+      grid-area: 3 / 1;
+      border-left: 0;
+      border-top: 1px solid var(--rt-border);
+    }
+    .sidebar {
+      grid-area: 4 / 1;
+      border-right: 0;
+      border-top: 1px solid var(--rt-border);
+    }
+    .sidebar,
+    .tasks {
+      overflow-y: visible;
+    }
+    rt-level-map {
+      grid-column: 1;
+      grid-row: 2 / -1;
+    }
+    rt-scene-view {
+      position: relative;
+      inset: auto;
+      height: max(280px, 55vh);
+    }
+    rt-screen-preview {
+      position: static;
+      width: auto;
+      max-width: 360px;
+      margin: var(--rt-space);
+    }
+    rt-render-window {
+      position: fixed;
+      inset: 0;
+      z-index: 40;
+    }
+  }
+`;
+
+/** The lab's styles: the wide grid, and the one column for narrow screens. */
+export const labLayout = [labGrid, labNarrow];

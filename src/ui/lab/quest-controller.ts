@@ -186,6 +186,10 @@ export class QuestController implements ReactiveController {
         session.setLocale(command.locale);
         void chooseLocale(command.locale);
         return;
+      case 'palette':
+        // Through the store, like the ray panel's switch: the session saves it with the progress.
+        this.host.store.dispatch({ type: 'rays.changed', changes: { colorBlindPalette: command.colorBlind } });
+        return;
       case 'export':
         return downloadText(session.exportText(), 'ray-tracer-quest-progress.json', 'application/json');
       case 'import': {

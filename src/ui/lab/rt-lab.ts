@@ -248,7 +248,7 @@ export class RtLab extends LitElement {
                 ${msg('Render image')}
               </button>`
             : nothing}
-          <rt-progress-menu locale=${locale} @progress-command=${(event: CustomEvent<ProgressCommand>) => this.game.progress(event.detail)}></rt-progress-menu>
+          <rt-progress-menu locale=${locale} ?color-blind=${state.rays.colorBlindPalette} @progress-command=${(event: CustomEvent<ProgressCommand>) => this.game.progress(event.detail)}></rt-progress-menu>
           <rt-theme-toggle></rt-theme-toggle>
         </div>
       </header>

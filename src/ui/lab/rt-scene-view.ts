@@ -14,8 +14,9 @@ import './rt-view-toolbar.ts';
 /**
  * @summary The lab's 3D view: a canvas filling the element's box, drawn by a LabView
  * (src/view/lab-view.ts) from `store`, with the on-screen controls and the help dialog
- * laid over it. The canvas takes keyboard focus (arrows orbit, Shift+arrows pan, +/− zoom,
- * T/R/S gizmo, Delete, Esc, F, ?).
+ * laid over it. The canvas takes keyboard focus (arrows orbit, or step the selection in the
+ * gizmo's mode, or go to the next pixel; Shift+arrows pan, +/− zoom, T/R/S gizmo, P pixel,
+ * Delete, Esc, F, ?; Tab always leaves). What a key did shows in a status line (announced).
  *
  * @fires ray-hover - CustomEvent<RayHoverDetail | null>: the ray under the pointer and where
  *   the pointer is (x, y in CSS px of this element's box), or null when it leaves the rays.
@@ -32,6 +33,7 @@ export class RtSceneView extends LitElement {
     atCamera: { state: true },
     helpOpen: { state: true },
     viewProblem: { state: true },
+    note: { state: true },
   };
 
   static override styles = css`
@@ -66,6 +68,24 @@ export class RtSceneView extends LitElement {
       outline: 3px solid var(--rt-accent);
       outline-offset: -3px;
     }
+    .note {
+      position: absolute;
+      left: 50%;
+      bottom: 12px;
+      max-width: calc(100% - 24px);
+      margin: 0;
+      padding: 4px 12px;
+      border-radius: 6px;
+      background: var(--rt-surface);
+      color: var(--rt-text);
+      box-shadow: var(--rt-shadow);
+      font: 0.875rem var(--rt-font);
+      transform: translateX(-50%);
+      pointer-events: none;
+    }
+    .note:empty {
+      display: none;
+    }
   `;
 
   /** The app's store: the view draws its scene and dispatches selections, gizmo drags and view gestures. */
@@ -77,6 +97,9 @@ export class RtSceneView extends LitElement {
   declare private helpOpen: boolean;
   /** Why the 3D view's code could not be loaded (offline on a first visit), or ''. */
   declare private viewProblem: string;
+  /** What the last key did (a step of the selection, the chosen pixel); cleared after NOTE_MS. */
+  declare private note: string;
+  private noteTimer: ReturnType<typeof setTimeout> | undefined;
   private view: LabView | null = null;
   /** The store a view is being made for while its code loads. */
   private loadingFor: Store | null = null;
@@ -89,6 +112,7 @@ export class RtSceneView extends LitElement {
     this.atCamera = false;
     this.helpOpen = false;
     this.viewProblem = '';
+    this.note = '';
     consumeStore(this, (store) => (this.store = store));
     new GuideHostController(this);
   }
@@ -145,6 +169,7 @@ export class RtSceneView extends LitElement {
         @view-command=${this.onCommand}
         @keydown=${this.onToolbarKey}
       ></rt-view-toolbar>
+      <p class="note" role="status">${this.note}</p>
       <rt-help-panel ?open=${this.helpOpen} @help-closed=${() => (this.helpOpen = false)}></rt-help-panel>
     `;
   }
@@ -181,11 +206,19 @@ export class RtSceneView extends LitElement {
       view.on('message', (text) => this.fire('view-message', text)),
       view.on('flight', (atCamera) => (this.atCamera = atCamera)),
       view.on('help', () => (this.helpOpen = true)),
+      view.on('note', (text) => this.showNote(text)),
+      () => clearTimeout(this.noteTimer),
     );
     this.resizeObserver.observe(this);
     this.resize();
     this.requestUpdate();
     this.fire('view-ready', view);
+  }
+
+  private showNote(text: string): void {
+    this.note = text;
+    clearTimeout(this.noteTimer);
+    this.noteTimer = setTimeout(() => (this.note = ''), NOTE_MS);
   }
 
   private resize(): void {
@@ -210,6 +243,9 @@ export class RtSceneView extends LitElement {
   }
 }
 
+/** How long a key's note stays up: long enough to read twice, gone before it clutters the view. */
+const NOTE_MS = 4000;
+
 /** Modes shown as available: all when nothing is selected (choosing a mode first is fine). */
 function modesShown(state: LabState) {
   return state.selection ? gizmoModesFor(state.selection, state.scene) : GIZMO_MODES;
@@ -226,7 +262,7 @@ function describe(state: LabState): string {
         ? msg("The ray tracer's camera is selected.")
         : msg(str`Selected: ${itemName(scene, selection.id)}.`);
   return msg(
-    str`3D view of "${name}": ${scene.objects.length} objects, ${scene.lights.length} lights and the ray tracer's camera with its ${scene.camera.pixels[0]}×${scene.camera.pixels[1]} screen. ${selected} Arrow keys orbit, Shift with arrows pans, plus and minus zoom; press ? for every key.`,
+    str`3D view of "${name}": ${scene.objects.length} objects, ${scene.lights.length} lights and the ray tracer's camera with its ${scene.camera.pixels[0]}×${scene.camera.pixels[1]} screen. ${selected} Arrow keys orbit (with something selected: move it), Shift with arrows pans, plus and minus zoom, P chooses a pixel; press ? for every key.`,
   );
 }
 

@@ -59,10 +59,13 @@ export class RtViewToolbar extends LitElement {
     .top .end {
       margin-left: auto;
     }
+    /* Bounded on the left too, so a narrow view (a phone) wraps the pads instead of cutting them off. */
     .bottom-right {
+      left: 8px;
       right: 8px;
       bottom: 8px;
       align-items: flex-end;
+      justify-content: flex-end;
     }
     .group {
       pointer-events: auto;
@@ -82,12 +85,12 @@ export class RtViewToolbar extends LitElement {
     }
     .pad-grid {
       display: grid;
-      grid-template-columns: repeat(3, 32px);
-      grid-template-rows: repeat(3, 32px);
+      grid-template-columns: repeat(3, var(--rt-target));
+      grid-template-rows: repeat(3, var(--rt-target));
     }
     .zoom-grid {
       display: grid;
-      grid-template-rows: repeat(3, 32px);
+      grid-template-rows: repeat(3, var(--rt-target));
     }
     .caption {
       margin-top: 2px;
@@ -97,8 +100,8 @@ export class RtViewToolbar extends LitElement {
     }
     button {
       box-sizing: border-box;
-      min-width: 32px;
-      min-height: 32px;
+      min-width: var(--rt-target);
+      min-height: var(--rt-target);
       display: inline-flex;
       align-items: center;
       justify-content: center;
@@ -201,8 +204,8 @@ export class RtViewToolbar extends LitElement {
         'space',
         this.gizmo.space === 'local',
         msg('Local axes'),
-        'Tab',
-        msg("Gizmo along the selection's own axes instead of the world's (Tab while something is selected)"),
+        'L',
+        msg("Gizmo along the selection's own axes instead of the world's (L)"),
         { kind: 'toggle-space' },
       ),
       this.toggle('snap', this.gizmo.snap, msg('Snap'), 'G', msg('Snap to 0.25 m, 15° and 0.25× steps (G; or hold Shift while dragging)'), { kind: 'toggle-snap' }),
@@ -216,7 +219,7 @@ export class RtViewToolbar extends LitElement {
             ? html`<button
                 data-command="show-pixel-rays"
                 data-guide="view.show-pixel-rays"
-                title=${msg("Move the view so that the chosen pixel's whole ray path fits (P)")}
+                title=${msg("Move the view so that the chosen pixel's whole ray path fits (Z)")}
                 @click=${() => this.send({ kind: 'show-pixel-rays' })}
               >
                 ${icon(svg`<path d="M3 6V3h3M14 3h3v3M17 14v3h-3M6 17H3v-3" /><circle cx="10" cy="10" r="2.5" />`)}

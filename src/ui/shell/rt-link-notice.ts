@@ -40,8 +40,8 @@ export class RtLinkNotice extends LitElement {
       background: none;
       color: var(--rt-muted);
       cursor: pointer;
-      min-width: 32px;
-      min-height: 32px;
+      min-width: var(--rt-target);
+      min-height: var(--rt-target);
     }
     button:focus-visible {
       outline: 3px solid var(--rt-focus);

@@ -1,14 +1,15 @@
 import { msg } from '@lit/localize';
 import { css, html } from 'lit';
 import { styleMap } from 'lit/directives/style-map.js';
-import { paletteNameFor, RAY_COLOR_KEYS, rayPalette } from '../../../view/ray-palette.ts';
+import { paletteNameFor, RAY_COLOR_KEYS, RAY_DASHES, type RayColorKey, rayPalette } from '../../../view/ray-palette.ts';
 import { rayColorKeyHint, rayColorKeyName } from '../ray-names.ts';
 import { StorePanel } from './store-panel.ts';
 
 /**
  * @summary The ray colours' legend: a swatch and the name of each kind of ray (never the
  * colour alone), in the palette the ray options choose (VRT's or the colour-blind-safe
- * one); each entry's tooltip says what that ray does.
+ * one) and with the dash pattern the rays are drawn with; each entry's tooltip says what
+ * that ray does.
  *
  * Reads `store` (rays.colorBlindPalette); changes nothing.
  */
@@ -34,7 +35,7 @@ export class RtRayLegend extends StorePanel {
       }
       .swatch {
         flex: none;
-        width: 28px;
+        width: 44px;
         height: 8px;
         border-radius: 4px;
         /* A thin outline keeps pale swatches (yellow, cyan) visible on a light background. */
@@ -48,12 +49,18 @@ export class RtRayLegend extends StorePanel {
     return html`<ul aria-label=${msg('Ray colours')}>
       ${RAY_COLOR_KEYS.map(
         (key) => html`<li title=${rayColorKeyHint(key)} data-key=${key}>
-          <span class="swatch" style=${styleMap({ background: palette[key] })} aria-hidden="true"></span>
+          <span class="swatch" style=${styleMap({ background: swatch(palette[key], key) })} aria-hidden="true"></span>
           <span>${rayColorKeyName(key)}</span>
         </li>`,
       )}
     </ul>`;
   }
+}
+
+/** The swatch's paint: the ray's colour in its dashes (RAY_DASHES at 150 px per metre), or solid. */
+function swatch(color: string, key: RayColorKey): string {
+  const [dash, gap] = RAY_DASHES[key].map((metres) => metres * 150);
+  return dash > 0 ? `repeating-linear-gradient(90deg, ${color} 0 ${dash}px, transparent ${dash}px ${dash + gap}px)` : color;
 }
 
 customElements.define('rt-ray-legend', RtRayLegend);

@@ -56,7 +56,7 @@ export class RtSceneList extends StorePanel {
         display: flex;
         align-items: center;
         gap: 8px;
-        min-height: 32px;
+        min-height: var(--rt-target);
         padding: 0 8px;
         border-radius: 6px;
         cursor: pointer;

@@ -70,7 +70,7 @@ export const renderWindowLayout = css`
         text-align: center;
       }
       footer {
-        min-height: 32px;
+        min-height: var(--rt-target);
       }
       footer p {
         margin: 0;

@@ -9,8 +9,8 @@ export const controlStyles = css`
   button,
   .toggle span {
     box-sizing: border-box;
-    min-height: 32px;
-    min-width: 32px;
+    min-height: var(--rt-target);
+    min-width: var(--rt-target);
     padding: 4px 12px;
     border-radius: 8px;
     border: 1px solid var(--rt-border);

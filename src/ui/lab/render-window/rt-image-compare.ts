@@ -73,7 +73,7 @@ export class RtImageCompare extends LitElement {
       }
       input[type='range'] {
         width: 140px;
-        min-height: 32px;
+        min-height: var(--rt-target);
         accent-color: var(--rt-accent);
       }
       .frame {
@@ -136,7 +136,7 @@ export class RtImageCompare extends LitElement {
         position: absolute;
         top: 0;
         bottom: 0;
-        width: 32px;
+        width: var(--rt-target);
         transform: translateX(-50%);
         cursor: ew-resize;
         touch-action: none;
@@ -155,8 +155,8 @@ export class RtImageCompare extends LitElement {
         position: absolute;
         top: 50%;
         left: 0;
-        width: 32px;
-        height: 32px;
+        width: var(--rt-target);
+        height: var(--rt-target);
         transform: translateY(-50%);
         border-radius: 50%;
         background: #fff;

@@ -7,6 +7,7 @@ import type { LabState } from '../../../lab-state/lab-state.ts';
 import type { Store } from '../../../lab-state/store.ts';
 import type { Scene } from '../../../scene/scene.ts';
 import { shownName } from '../scene-names.ts';
+import { FocusReturn } from '../../controls/focus-return.ts';
 import { GuideHostController } from '../guide-host.ts';
 import { consumeStore } from '../store-context.ts';
 import { estimateRender, lighterRenders, type LighterRender, type RenderEstimate } from '../../../render/render-estimate.ts';
@@ -73,6 +74,7 @@ export class RtRenderWindow extends LitElement {
   /** A render the estimate put over HEAVY_RENDER_SECONDS, waiting for the learner's choice. */
   declare heavy: { estimate: RenderEstimate; lighter: LighterRender[] } | null;
 
+  private readonly focusReturn = new FocusReturn();
   private readonly renderButton = createRef<HTMLButtonElement>();
   private readonly cancelButton = createRef<HTMLButtonElement>();
   private readonly compare = createRef<RtImageCompare>();
@@ -117,9 +119,11 @@ export class RtRenderWindow extends LitElement {
 
   override willUpdate(changed: PropertyValues<this>): void {
     if (changed.has('store') && this.isConnected) this.listenToStore();
+    if (changed.has('open') && this.open) this.focusReturn.remember();
   }
 
   override updated(changed: PropertyValues<this>): void {
+    if (changed.has('open') && !this.open && changed.get('open')) this.focusReturn.restore(this);
     // Focus was on Cancel when the render ended: move it to Render rather than lose it.
     const ended = this.wasRunning && !this.jobs.running && this.shadowRoot?.activeElement === this.cancelButton.value;
     this.wasRunning = this.jobs.running;
