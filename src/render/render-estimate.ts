@@ -39,11 +39,18 @@ export interface RenderEstimate {
   heavy: boolean;
 }
 
-/** Rays one sample (one primary ray and its tree) costs. */
-export function raysPerSample({ objects, lights, settings }: Scene): number {
-  const shadowRays = lights
+/** Shadow rays per hit: one per point or spot light, n² per n×n area light (counted even with
+ *  shadows off: the light is still sampled n² times). */
+export function shadowRaysPerHit({ lights, settings }: Scene): number {
+  return lights
     .filter((light) => settings.lightTypes[light.type])
     .reduce((rays, light) => rays + (light.type === 'area' ? light.samples ** 2 : 1), 0);
+}
+
+/** Rays one sample (one primary ray and its tree) costs. */
+export function raysPerSample(scene: Scene): number {
+  const { objects, settings } = scene;
+  const shadowRays = shadowRaysPerHit(scene);
   const childRays = objects.reduce((sum, { material }) => sum + (material.transparent ? 2 : material.specular > 0 ? 1 : 0), 0);
   const branching = objects.length === 0 ? 0 : (CHILD_HIT_CHANCE * childRays) / objects.length;
   let hits = 0;

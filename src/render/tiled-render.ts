@@ -6,10 +6,10 @@
  */
 import { addRayStats, emptyRayStats, type RayStats } from '../tracer/ray-tree.ts';
 import type { Tile } from '../tracer/tile.ts';
-import type { RenderPass } from './render-passes.ts';
+import { tracedSamples, type RenderPass } from './render-passes.ts';
 import type { RenderImage, RenderOptions, RenderProgress } from './render-job.ts';
 
-/** Progress callbacks at most this often: enough for a smooth bar, cheap for the UI thread. */
+/** Progress callbacks at most this often (besides a pass's first and last tile): enough for a smooth bar, cheap for the UI thread. */
 const PROGRESS_INTERVAL_MS = 50;
 
 interface PlannedPass extends RenderPass {
@@ -18,6 +18,8 @@ interface PlannedPass extends RenderPass {
   count: number;
   /** The tile id of its first tile: ids run on across passes. */
   firstId: number;
+  /** Samples the whole pass traces: its work, for progress. */
+  samples: number;
 }
 
 /** A tile handed to a worker: `tileId` comes back with its pixels. */
@@ -25,6 +27,7 @@ export interface TileAssignment {
   tileId: number;
   tile: Tile;
   block: number;
+  samplesPerSide: number;
 }
 
 export class TiledRender {
@@ -42,8 +45,8 @@ export class TiledRender {
   /** Tiles of the current pass handed out, and finished. */
   private taken = 0;
   private finishedInPass = 0;
-  private readonly done = { preview: 0, full: 0 };
-  private readonly total = { preview: 0, full: 0 };
+  /** Samples of the current pass traced so far. */
+  private samplesDone = 0;
   private lastProgressAt = -Infinity;
 
   constructor(
@@ -57,8 +60,8 @@ export class TiledRender {
     for (const pass of passes) {
       const columns = Math.ceil(width / pass.tileSide);
       const count = columns * Math.ceil(height / pass.tileSide);
-      this.passes.push({ ...pass, columns, count, firstId });
-      this.total[phaseOf(pass)] += count;
+      // Tiles start at multiples of the block, so their samples add up to the whole image's.
+      this.passes.push({ ...pass, columns, count, firstId, samples: tracedSamples({ x: 0, y: 0, width, height }, pass) });
       firstId += count;
     }
   }
@@ -76,7 +79,7 @@ export class TiledRender {
     if (!next) {
       if (this.taken === pass.count) return null;
       const index = this.taken++;
-      next = { tileId: pass.firstId + index, tile: this.tileOf(pass, index), block: pass.block };
+      next = { tileId: pass.firstId + index, tile: this.tileOf(pass, index), block: pass.block, samplesPerSide: pass.samplesPerSide };
     }
     this.outstanding.set(next.tileId, next);
     return next;
@@ -100,27 +103,30 @@ export class TiledRender {
 
   /**
    * Pastes a finished tile of the current pass into the image, then reports progress and,
-   * when a coarse pass completes, the preview. The state is updated before the callbacks
+   * when a pass before the final one completes, the preview. The state is updated before the callbacks
    * run, so a callback that throws leaves the render consistent. The caller checks the tile
    * with `problemWith` first.
    */
   accept(tileId: number, rgb: Float32Array, stats: RayStats, ms: number): void {
     const pass = this.passes[this.pass];
+    const tile = this.tileOf(pass, tileId - pass.firstId);
     this.outstanding.delete(tileId);
-    this.paste(this.tileOf(pass, tileId - pass.firstId), rgb);
+    this.paste(tile, rgb);
     this.slowestTileMs = Math.max(this.slowestTileMs, ms);
-    const phase = phaseOf(pass);
-    if (phase === 'full') addRayStats(this.stats, stats);
-    this.done[phase]++;
-    const passComplete = ++this.finishedInPass === pass.count;
+    if (pass.kind === 'final') addRayStats(this.stats, stats);
+    this.samplesDone += tracedSamples(tile, pass);
+    const progress: RenderProgress = { phase: pass.kind, pass: this.pass + 1, passes: this.passes.length, done: this.samplesDone, total: pass.samples };
+    const first = ++this.finishedInPass === 1;
+    const passComplete = this.finishedInPass === pass.count;
     if (passComplete) {
       this.pass++;
       this.taken = 0;
       this.finishedInPass = 0;
+      this.samplesDone = 0;
     }
 
-    this.reportProgress({ phase, done: this.done[phase], total: this.total[phase] });
-    if (passComplete && phase === 'preview') this.callbacks.onPreview?.(this.image);
+    this.reportProgress(progress, first || passComplete);
+    if (passComplete && pass.kind !== 'final') this.callbacks.onPreview?.(this.image);
   }
 
   /** Tiles run row by row, top to bottom; those on the right and bottom edges are cut to fit. */
@@ -138,15 +144,11 @@ export class TiledRender {
     }
   }
 
-  private reportProgress(progress: RenderProgress): void {
+  /** `always`: a pass's first or last tile, so each pass shows at once and ends at 100 %. */
+  private reportProgress(progress: RenderProgress, always: boolean): void {
     const now = performance.now();
-    const last = progress.done === progress.total;
-    if (!last && now - this.lastProgressAt < PROGRESS_INTERVAL_MS) return;
+    if (!always && now - this.lastProgressAt < PROGRESS_INTERVAL_MS) return;
     this.lastProgressAt = now;
     this.callbacks.onProgress?.(progress);
   }
-}
-
-function phaseOf({ block }: RenderPass): RenderProgress['phase'] {
-  return block > 1 ? 'preview' : 'full';
 }

@@ -276,7 +276,7 @@ export class RtRenderWindow extends LitElement {
         return html`<progress aria-label=${label}></progress><span class="phase">${msg('Starting…')}</span>`;
       case 'rendering':
         return html`<progress aria-label=${label} max=${status.total} value=${status.done}></progress>
-          <span class="phase">${progressText(status)}</span>`;
+          <span class="phase" data-testid="render-progress">${progressText(status)}</span>`;
       case 'finished':
         return html`<progress aria-label=${label} max="1" value="1"></progress><span class="phase">${msg('Done')}</span>`;
       default:
