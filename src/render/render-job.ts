@@ -71,4 +71,9 @@ export interface RenderJob {
   readonly done: Promise<RenderResult>;
   /** Stops the job: no more tiles are sent and late tiles are ignored. Safe to call twice. */
   cancel(): void;
+  /**
+   * The rows of `image` filled in since the last call, [from, to), or null: a painter redraws
+   * those, not the whole image (a 4096² image is 16 M pixels to quantize).
+   */
+  changedRows(): [number, number] | null;
 }

@@ -38,8 +38,9 @@ export interface RenderPass {
   block: number;
   /** Samples per side of each traced pixel: the scene's supersampling in the final pass, else 1. */
   samplesPerSide: number;
-  /** Side of the pass's square tiles in pixels, a multiple of `block`. */
-  tileSide: number;
+  /** The pass's tiles in pixels, multiples of `block` (the image's edges cut the last ones). */
+  tileWidth: number;
+  tileHeight: number;
 }
 
 export interface PassPlanOptions {
@@ -70,16 +71,16 @@ const MAX_TILE_SIDE = 32;
 
 export function planPasses(scene: Scene, { width, height, workers, preview }: PassPlanOptions): RenderPass[] {
   const supersampling = scene.settings.supersampling;
-  const final: RenderPass = { kind: 'final', block: 1, samplesPerSide: supersampling, tileSide: finalTileSide(scene) };
+  const finalSide = finalTileSide(scene);
+  const final: RenderPass = { kind: 'final', block: 1, samplesPerSide: supersampling, tileWidth: finalSide, tileHeight: finalSide };
   if (!preview) return [final];
   const oneSampleSide = tileSide(1 + shadowRaysPerHit(scene));
   const secondsPerSample = raysPerSample(scene) / (RAYS_PER_SECOND_PER_WORKER * Math.max(1, workers));
   const passes: RenderPass[] = [];
-  // A preview traces one sample per block, so its tile covers block² times the pixels.
   for (let block = firstBlock(width, height, secondsPerSample); block >= FINEST_PREVIEW_BLOCK; block /= 2) {
-    passes.push({ kind: 'preview', block, samplesPerSide: 1, tileSide: oneSampleSide * block });
+    passes.push({ kind: 'preview', block, samplesPerSide: 1, ...previewTile(width, block, oneSampleSide ** 2) });
   }
-  if (supersampling > 1) passes.push({ kind: 'sharp', block: 1, samplesPerSide: 1, tileSide: oneSampleSide });
+  if (supersampling > 1) passes.push({ kind: 'sharp', block: 1, samplesPerSide: 1, tileWidth: oneSampleSide, tileHeight: oneSampleSide });
   passes.push(final);
   return passes;
 }
@@ -92,6 +93,18 @@ export function finalTileSide(scene: Scene): number {
 /** Samples a pass traces for `tile`: one per block (rows and columns cut by the edge count whole), s² per pixel in the final pass. */
 export function tracedSamples({ width, height }: Tile, { block, samplesPerSide }: Pick<RenderPass, 'block' | 'samplesPerSide'>): number {
   return Math.ceil(width / block) * Math.ceil(height / block) * samplesPerSide ** 2;
+}
+
+/**
+ * A preview tile of `samples` traced samples (one per block), as whole rows of blocks where
+ * a row has no more than that: the window repaints the rows a tile changed, so a square tile
+ * had it repaint those rows across the whole image for each tile of the row (at 4096² most
+ * of the page's time). A heavy scene's rows are cut into strips one block high.
+ */
+function previewTile(width: number, block: number, samples: number): Pick<RenderPass, 'tileWidth' | 'tileHeight'> {
+  const blocksPerRow = Math.ceil(width / block);
+  if (blocksPerRow > samples) return { tileWidth: samples * block, tileHeight: block };
+  return { tileWidth: blocksPerRow * block, tileHeight: Math.floor(samples / blocksPerRow) * block };
 }
 
 /** The finest power-of-two block from FIRST_PREVIEW_BLOCK up whose pass fits FIRST_PASS_SECONDS; never beyond one block for the whole image. */

@@ -181,6 +181,7 @@ export class RenderPool {
       cancel: () => {
         if (this.job?.id === id) this.cancelJob();
       },
+      changedRows: () => tiles.takeChangedRows(),
     };
   }
 

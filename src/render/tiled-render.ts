@@ -48,6 +48,9 @@ export class TiledRender {
   /** Samples of the current pass traced so far. */
   private samplesDone = 0;
   private lastProgressAt = -Infinity;
+  /** Rows pasted since `takeChangedRows` last asked: [from, to), empty when from ≥ to. */
+  private changedFrom = Infinity;
+  private changedTo = 0;
 
   constructor(
     width: number,
@@ -58,8 +61,8 @@ export class TiledRender {
     this.image = { width, height, rgb: new Float32Array(width * height * 3) };
     let firstId = 0;
     for (const pass of passes) {
-      const columns = Math.ceil(width / pass.tileSide);
-      const count = columns * Math.ceil(height / pass.tileSide);
+      const columns = Math.ceil(width / pass.tileWidth);
+      const count = columns * Math.ceil(height / pass.tileHeight);
       // Tiles start at multiples of the block, so their samples add up to the whole image's.
       this.passes.push({ ...pass, columns, count, firstId, samples: tracedSamples({ x: 0, y: 0, width, height }, pass) });
       firstId += count;
@@ -129,14 +132,29 @@ export class TiledRender {
     if (passComplete && pass.kind !== 'final') this.callbacks.onPreview?.(this.image);
   }
 
+  /** The rows pasted since the last call, [from, to), or null: a painter redraws only those. */
+  takeChangedRows(): [number, number] | null {
+    const rows: [number, number] | null = this.changedFrom < this.changedTo ? [this.changedFrom, this.changedTo] : null;
+    this.changedFrom = Infinity;
+    this.changedTo = 0;
+    return rows;
+  }
+
   /** Tiles run row by row, top to bottom; those on the right and bottom edges are cut to fit. */
-  private tileOf({ tileSide, columns }: PlannedPass, index: number): Tile {
-    const x = (index % columns) * tileSide;
-    const y = Math.floor(index / columns) * tileSide;
-    return { x, y, width: Math.min(tileSide, this.image.width - x), height: Math.min(tileSide, this.image.height - y) };
+  private tileOf({ tileWidth, tileHeight, columns }: PlannedPass, index: number): Tile {
+    const x = (index % columns) * tileWidth;
+    const y = Math.floor(index / columns) * tileHeight;
+    return { x, y, width: Math.min(tileWidth, this.image.width - x), height: Math.min(tileHeight, this.image.height - y) };
   }
 
   private paste({ x, y, width, height }: Tile, rgb: Float32Array): void {
+    this.changedFrom = Math.min(this.changedFrom, y);
+    this.changedTo = Math.max(this.changedTo, y + height);
+    // A tile of whole rows (a preview's) is one contiguous run of the image.
+    if (x === 0 && width === this.image.width) {
+      this.image.rgb.set(rgb, y * width * 3);
+      return;
+    }
     const rowLength = width * 3;
     for (let row = 0; row < height; row++) {
       const from = row * rowLength;

@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { RAYS_PER_SECOND_PER_WORKER, raysPerSample } from '../../src/render/render-estimate.ts';
 import type { RenderProgress } from '../../src/render/render-job.ts';
 import { FIRST_PASS_SECONDS, planPasses, tracedSamples, type RenderPass } from '../../src/render/render-passes.ts';
-import { TiledRender } from '../../src/render/tiled-render.ts';
+import { TiledRender, type TileAssignment } from '../../src/render/tiled-render.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 import type { Scene } from '../../src/scene/scene.ts';
 import { emptyRayStats } from '../../src/tracer/ray-tree.ts';
@@ -45,6 +45,17 @@ describe('the pass plan', () => {
     expect(sharp * 4).toBe(final);
   });
 
+  it('previews in whole rows of blocks, each tile tracing as many samples as a sharp-pass tile', () => {
+    const scene = withSupersampling(2);
+    const passes = planPasses(scene, { width: 512, height: 384, workers: 2, preview: true });
+    const sharp = passes.find((pass) => pass.kind === 'sharp')!;
+    const sharpTile = tracedSamples({ x: 0, y: 0, width: sharp.tileWidth, height: sharp.tileHeight }, sharp);
+    for (const pass of passes.filter((p) => p.kind === 'preview')) {
+      expect(pass.tileWidth).toBeGreaterThanOrEqual(512);
+      expect(tracedSamples({ x: 0, y: 0, width: pass.tileWidth, height: pass.tileHeight }, pass)).toBe(sharpTile);
+    }
+  });
+
   it('leaves out the sharp pass when the final pass already traces one sample per pixel', () => {
     const kinds = planPasses(withSupersampling(1), { width: 512, height: 384, workers: 2, preview: true }).map((pass) => pass.kind);
     expect(kinds).toEqual(['preview', 'preview', 'final']);
@@ -52,7 +63,7 @@ describe('the pass plan', () => {
 
   it('makes only the final pass without previews (rt render)', () => {
     expect(planPasses(withSupersampling(3), { width: 64, height: 64, workers: 1, preview: false })).toEqual([
-      { kind: 'final', block: 1, samplesPerSide: 3, tileSide: expect.any(Number) },
+      { kind: 'final', block: 1, samplesPerSide: 3, tileWidth: expect.any(Number), tileHeight: expect.any(Number) },
     ]);
   });
 
@@ -66,7 +77,7 @@ describe('the pass plan', () => {
     expect(previews.map((pass) => pass.block)).toEqual(previews.map((_, i) => previews[0].block / 2 ** i));
     expect(previews.at(-1)?.block).toBe(4);
     expect(passes.slice(previews.length).map((pass) => pass.kind)).toEqual(['sharp', 'final']);
-    for (const pass of passes) expect(pass.tileSide % pass.block).toBe(0);
+    for (const pass of passes) expect([pass.tileWidth % pass.block, pass.tileHeight % pass.block]).toEqual([0, 0]);
   });
 });
 
@@ -82,8 +93,7 @@ describe('render progress', () => {
       const total = tracedSamples({ x: 0, y: 0, width, height }, pass);
       expect(ofPass.every((report) => report.phase === pass.kind && report.passes === passes.length && report.total === total)).toBe(true);
       // The pass's first tile is reported at once, its last always, and the count only grows.
-      const side = pass.tileSide;
-      expect(ofPass[0].done).toBe(tracedSamples({ x: 0, y: 0, width: Math.min(side, width), height: Math.min(side, height) }, pass));
+      expect(ofPass[0].done).toBe(tracedSamples({ x: 0, y: 0, width: Math.min(pass.tileWidth, width), height: Math.min(pass.tileHeight, height) }, pass));
       expect(ofPass.at(-1)?.done).toBe(total);
       for (let i = 1; i < ofPass.length; i++) expect(ofPass[i].done).toBeGreaterThan(ofPass[i - 1].done);
     }
@@ -98,5 +108,23 @@ describe('render progress', () => {
     for (let next = tiles.takeTile(); next; next = tiles.takeTile()) sizes.push(tracedSamples(next.tile, next));
     expect(sizes.every((samples) => samples === 1)).toBe(true);
     expect(sizes.length).toBe(tracedSamples({ x: 0, y: 0, width, height }, first));
+  });
+});
+
+describe('the rows a painter must redraw', () => {
+  it('are the rows of the tiles pasted since it last asked, and none after', () => {
+    const [pass] = planPasses(withSupersampling(1), { width: 100, height: 70, workers: 1, preview: false });
+    const tiles = new TiledRender(100, 70, [pass], {});
+    expect(tiles.takeChangedRows()).toBeNull();
+    const taken: TileAssignment[] = [];
+    for (let next = tiles.takeTile(); next; next = tiles.takeTile()) taken.push(next);
+    const paste = ({ tileId, tile }: TileAssignment) => tiles.accept(tileId, new Float32Array(tile.width * tile.height * 3), emptyRayStats(), 1);
+    const bottom = taken.filter(({ tile }) => tile.y + tile.height === 70);
+    paste(bottom[0]);
+    expect(tiles.takeChangedRows()).toEqual([bottom[0].tile.y, 70]);
+    expect(tiles.takeChangedRows()).toBeNull();
+    paste(taken[0]);
+    paste(bottom[1]);
+    expect(tiles.takeChangedRows()).toEqual([0, 70]);
   });
 });

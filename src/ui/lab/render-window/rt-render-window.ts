@@ -88,7 +88,7 @@ export class RtRenderWindow extends LitElement {
 
   private readonly painter = new BandPainter(() => this.tracedCanvas.value);
   private readonly jobs = new RenderJobController(this, {
-    paint: (image, dithering) => this.painter.paint(image, dithering),
+    paint: (image, dithering, rows) => this.painter.paint(image, dithering, rows),
     started: (shown, isCurrent) => this.prepareStage(shown, isCurrent),
   });
   private unsubscribe: (() => void) | null = null;
