@@ -2,6 +2,7 @@ import { expect, type Locator, type Page, test } from '@playwright/test';
 import { readFile } from 'node:fs/promises';
 import { PNG } from 'pngjs';
 import type { RtRenderWindow } from '../src/ui/lab/render-window/rt-render-window.ts';
+import { collectPageErrors } from './support/page-errors.ts';
 
 /** The page with the lab; the header's "Render image" button opens the render window. */
 const APP_PAGE = './#free-lab';
@@ -9,11 +10,7 @@ const APP_PAGE = './#free-lab';
 let errors: string[] = [];
 
 test.beforeEach(({ page }) => {
-  errors = [];
-  page.on('console', (message) => {
-    if (message.type() === 'error') errors.push(message.text());
-  });
-  page.on('pageerror', (error) => errors.push(error.message));
+  errors = collectPageErrors(page);
 });
 
 test.afterEach(() => {
@@ -77,7 +74,7 @@ test('Cancel stops a big render and says so', async ({ page }) => {
     element.store!.dispatch({ type: 'settings.changed', changes: { imageSize: [2048, 1536], supersampling: 3 } }),
   );
   await window.getByRole('button', { name: 'Render', exact: true }).click();
-  await expect(window.getByText(/Rendering \d+ %/)).toBeVisible({ timeout: 30_000 });
+  await expect(window.getByText(/^Step \d+ of \d+: .+ \d+(\.\d)? %$/)).toBeVisible({ timeout: 30_000 });
   await window.getByRole('button', { name: 'Cancel' }).click();
   await expect(window.getByTestId('render-status')).toHaveText('Render cancelled.');
   await expect(window.getByRole('button', { name: 'Cancel' })).toBeDisabled();

@@ -307,8 +307,8 @@ test('idle costs nothing: no frames when nothing changes, and a slider drag make
 
 test('the raster snapshot from the tracer’s camera leaves the on-screen view untouched', async ({ page }) => {
   const before = await picture(page);
-  const snapshot = await sceneView(page).evaluate((element: RtSceneView) => {
-    const image = element.labView!.rasterSnapshot(128, 96);
+  const snapshot = await sceneView(page).evaluate(async (element: RtSceneView) => {
+    const image = await element.labView!.rasterSnapshot(128, 96);
     const colours = new Set<number>();
     let red = 0;
     for (let i = 0; i < image.data.length; i += 4) {

@@ -29,7 +29,7 @@ export interface LabServicesOptions {
  * pool for full images, a one-worker pool and the screen tracer that traces the camera's
  * pixels, the ray pool that draws their rays and the BVH boxes.
  *
- * - A new scene is traced again (debounced, latest wins) and its boxes redrawn.
+ * - A new scene is traced again (at once, or after the running trace; latest wins) and its boxes redrawn.
  * - New rays, ray options or a picked pixel redraw the rays; the view draws on demand.
  * - Listeners hear when the screen's rays change (the flat preview shows them).
  *

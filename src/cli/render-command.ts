@@ -2,7 +2,7 @@
 import { availableParallelism } from 'node:os';
 import type { FinishedRender } from '../render/render-job.ts';
 import { estimateRender, lighterRenders } from '../render/render-estimate.ts';
-import { planPasses } from '../render/render-passes.ts';
+import { finalTileSide } from '../render/render-passes.ts';
 import { LIMITS } from '../scene/scene-limits.ts';
 import type { Scene } from '../scene/scene.ts';
 import { toRgba8 } from '../tracer/quantize.ts';
@@ -97,7 +97,7 @@ function imageSize(line: CommandLine, scene: Scene): [number, number] {
 
 /** The full-quality pass's tiles: more workers than this would have nothing to do. */
 function tileCount(scene: Scene, width: number, height: number): number {
-  const { tileSide } = planPasses(scene, false)[0];
+  const tileSide = finalTileSide(scene);
   return Math.ceil(width / tileSide) * Math.ceil(height / tileSide);
 }
 

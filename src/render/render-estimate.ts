@@ -40,11 +40,18 @@ export interface RenderEstimate {
   heavy: boolean;
 }
 
-/** Rays one sample (one primary ray and its tree) costs. */
-export function raysPerSample({ objects, lights, settings }: Scene): number {
-  const shadowRays = lights
+/** Shadow rays per hit: one per point or spot light, n² per n×n area light (counted even with
+ *  shadows off: the light is still sampled n² times). */
+export function shadowRaysPerHit({ lights, settings }: Scene): number {
+  return lights
     .filter((light) => settings.lightTypes[light.type])
     .reduce((rays, light) => rays + (light.type === 'area' ? light.samples ** 2 : 1), 0);
+}
+
+/** Rays one sample (one primary ray and its tree) costs. */
+export function raysPerSample(scene: Scene): number {
+  const { objects, settings } = scene;
+  const shadowRays = shadowRaysPerHit(scene);
   // A rough material spreads each of its reflected and refracted rays into m² (distribution-effects §2).
   const childRays = objects.reduce((sum, { material }) => {
     const spread = material.roughness > 0 ? material.glossySamples ** 2 : 1;

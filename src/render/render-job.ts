@@ -3,6 +3,7 @@
  * The UI shows `image` while it fills in and the finished result at the end.
  */
 import type { RayStats } from '../tracer/ray-tree.ts';
+import type { PassKind } from './render-passes.ts';
 
 /** Any fixed seed works; one default everywhere makes renders and ray trees repeatable. */
 export const DEFAULT_SEED = 0;
@@ -14,9 +15,14 @@ export interface RenderImage {
   rgb: Float32Array;
 }
 
+/** Where a render is: which of its passes (render-passes.ts), and how far into it. */
 export interface RenderProgress {
-  /** 'preview' counts the tiles of all coarse passes together; 'full' the full-quality tiles. */
-  phase: 'preview' | 'full';
+  /** What the current pass makes: coarse blocks, a sharp one-sample picture, or the image. */
+  phase: PassKind;
+  /** The pass's number, 1 to `passes`. */
+  pass: number;
+  passes: number;
+  /** Samples of this pass traced and to trace: its work, as every sample costs about the same and tiles differ in size. */
   done: number;
   total: number;
 }
@@ -27,17 +33,17 @@ export interface RenderOptions {
   height?: number;
   /** Default: DEFAULT_SEED. */
   seed?: number;
-  /** Coarse passes before full quality (default true); `rt render` turns them off. */
+  /** Coarse passes and a sharp one-sample pass before full quality (default true); `rt render` turns them off. */
   preview?: boolean;
-  /** After each coarse pass, with the whole image filled in blocks (the job's live `image`). */
+  /** After each pass before the final one, with the whole image filled in (the job's live `image`). */
   onPreview?: (image: RenderImage) => void;
-  /** At most every 50 ms per phase, and always when a phase completes. */
+  /** After the first tile, then at most every 50 ms, and always when a pass completes. */
   onProgress?: (progress: RenderProgress) => void;
 }
 
 export interface FinishedRender extends RenderImage {
   cancelled: false;
-  /** Rays of the full-quality pass (preview rays are not counted). */
+  /** Rays of the full-quality pass (preview and sharp-pass rays are not counted). */
   stats: RayStats;
   /** Wall-clock time from `render()` to the last tile. */
   ms: number;
@@ -65,4 +71,9 @@ export interface RenderJob {
   readonly done: Promise<RenderResult>;
   /** Stops the job: no more tiles are sent and late tiles are ignored. Safe to call twice. */
   cancel(): void;
+  /**
+   * The rows of `image` filled in since the last call, [from, to), or null: a painter redraws
+   * those, not the whole image (a 4096² image is 16 M pixels to quantize).
+   */
+  changedRows(): [number, number] | null;
 }

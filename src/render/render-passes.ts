@@ -1,6 +1,19 @@
 /**
- * Which sweeps over the image a render makes (coarse previews, then full quality) and how big
- * their tiles are.
+ * Which sweeps over the image a render makes and how big their tiles are: coarse previews,
+ * then a sharp one-sample picture, then full quality (issue: tracer speed, "what the user
+ * waits for").
+ *
+ * - **Coarse previews** trace one sample per block×block square and fill the square. The
+ *   first block is the finest power of two (from 8 up) whose pass the render estimate puts
+ *   under FIRST_PASS_SECONDS, so even the heaviest scene the schema accepts has a whole
+ *   picture, and a moving progress bar, within the first second; each next pass halves the
+ *   block, down to 4. Each costs a quarter of the next, so all previews together cost about
+ *   8 % of the sharp pass (1/16 + 1/64 + …).
+ * - **The sharp pass** traces one sample per pixel (placed as the previews' samples are). With
+ *   s×s supersampling the final pass costs s² times as much, so a sharp picture appears
+ *   after about 1/s² of the final time; without supersampling the final pass is that picture
+ *   and the sharp pass is left out.
+ * - **The final pass** traces every pixel at the scene's supersampling: the image.
  *
  * A worker cannot stop inside a tile, so a tile's time bounds how soon a new render takes
  * over from the old one: the goal is well under 50 ms. Smaller tiles also share the last
@@ -12,21 +25,39 @@
  * samples), 3 ms (plus a 4×4 area light) and 22 ms (8×8 samples, 10×10 area light: 1-pixel
  * tiles); a new render's first tile arrived 1–13 ms after it started.
  */
-import { primaryRaysPerSample } from './render-estimate.ts';
 import type { Scene } from '../scene/scene.ts';
+import type { Tile } from '../tracer/tile.ts';
+import { primaryRaysPerSample, RAYS_PER_SECOND_PER_WORKER, raysPerSample, shadowRaysPerHit } from './render-estimate.ts';
+
+/** What a pass makes: coarse blocks, one sample per pixel, or the finished image. */
+export type PassKind = 'preview' | 'sharp' | 'final';
 
 export interface RenderPass {
-  /** 1 = full quality; n > 1 = one traced pixel (one sample) per n×n block. */
+  kind: PassKind;
+  /** 1, or n > 1 for one traced sample per n×n block (a preview). */
   block: number;
-  /** Side of the pass's square tiles in pixels, a multiple of `block`. */
-  tileSide: number;
+  /** Samples per side of each traced pixel: the scene's supersampling in the final pass, else 1. */
+  samplesPerSide: number;
+  /** The pass's tiles in pixels, multiples of `block` (the image's edges cut the last ones). */
+  tileWidth: number;
+  tileHeight: number;
 }
 
-/**
- * Coarse passes before full quality: one traced pixel per 8×8 block, then per 4×4. Together
- * they cost 1/64 + 1/16 ≈ 8% of a one-sample full pass and show a picture within milliseconds.
- */
-export const PREVIEW_BLOCKS = [8, 4];
+export interface PassPlanOptions {
+  width: number;
+  height: number;
+  /** Workers sharing the render: more of them make a finer first preview affordable. */
+  workers: number;
+  /** Previews and the sharp pass before the final one (the render window); `rt render` turns them off. */
+  preview: boolean;
+}
+
+/** The render estimate's time for the first preview pass: the "first second" with a wide margin. */
+export const FIRST_PASS_SECONDS = 0.25;
+
+/** The finest preview block, and the first one tried (as before the first pass adapted). */
+const FINEST_PREVIEW_BLOCK = 4;
+const FIRST_PREVIEW_BLOCK = 8;
 
 /**
  * Rays one tile should cost: a 32×32 tile of the default scene (one sample, two lights, so
@@ -38,22 +69,51 @@ const RAYS_PER_TILE = 32 * 32 * 3;
 /** Larger tiles save too few messages to matter and make the slowest tiles slower. */
 const MAX_TILE_SIDE = 32;
 
-export function planPasses(scene: Scene, preview: boolean): RenderPass[] {
-  // Each lens and time ray of a sample is a primary ray with its own shadow rays.
-  const raysPerSample = (1 + shadowRaysPerHit(scene)) * primaryRaysPerSample(scene);
-  const samples = scene.settings.supersampling ** 2;
-  const full: RenderPass = { block: 1, tileSide: tileSide(raysPerSample * samples) };
-  if (!preview) return [full];
-  // A preview traces one sample per block, so its tile covers block² times the pixels.
-  return [...PREVIEW_BLOCKS.map((block) => ({ block, tileSide: tileSide(raysPerSample) * block })), full];
+export function planPasses(scene: Scene, { width, height, workers, preview }: PassPlanOptions): RenderPass[] {
+  const supersampling = scene.settings.supersampling;
+  const finalSide = finalTileSide(scene);
+  const final: RenderPass = { kind: 'final', block: 1, samplesPerSide: supersampling, tileWidth: finalSide, tileHeight: finalSide };
+  if (!preview) return [final];
+  // Each lens and time ray of a sample is a primary ray with its own shadow rays (distribution-effects §2).
+  const oneSampleSide = tileSide((1 + shadowRaysPerHit(scene)) * primaryRaysPerSample(scene));
+  const secondsPerSample = (raysPerSample(scene) * primaryRaysPerSample(scene)) / (RAYS_PER_SECOND_PER_WORKER * Math.max(1, workers));
+  const passes: RenderPass[] = [];
+  for (let block = firstBlock(width, height, secondsPerSample); block >= FINEST_PREVIEW_BLOCK; block /= 2) {
+    passes.push({ kind: 'preview', block, samplesPerSide: 1, ...previewTile(width, block, oneSampleSide ** 2) });
+  }
+  if (supersampling > 1) passes.push({ kind: 'sharp', block: 1, samplesPerSide: 1, tileWidth: oneSampleSide, tileHeight: oneSampleSide });
+  passes.push(final);
+  return passes;
 }
 
-/** One per point or spot light, n² per n×n area light (counted even with shadows off: the
- *  light is still sampled n² times). */
-function shadowRaysPerHit({ lights, settings }: Scene): number {
-  return lights
-    .filter((light) => settings.lightTypes[light.type])
-    .reduce((rays, light) => rays + (light.type === 'area' ? light.samples ** 2 : 1), 0);
+/** The tile side of the final pass (`rt render` counts its tiles to cap the workers). */
+export function finalTileSide(scene: Scene): number {
+  return tileSide((1 + shadowRaysPerHit(scene)) * primaryRaysPerSample(scene) * scene.settings.supersampling ** 2);
+}
+
+/** Samples a pass traces for `tile`: one per block (rows and columns cut by the edge count whole), s² per pixel in the final pass. */
+export function tracedSamples({ width, height }: Tile, { block, samplesPerSide }: Pick<RenderPass, 'block' | 'samplesPerSide'>): number {
+  return Math.ceil(width / block) * Math.ceil(height / block) * samplesPerSide ** 2;
+}
+
+/**
+ * A preview tile of `samples` traced samples (one per block), as whole rows of blocks where
+ * a row has no more than that: the window repaints the rows a tile changed, so a square tile
+ * had it repaint those rows across the whole image for each tile of the row (at 4096² most
+ * of the page's time). A heavy scene's rows are cut into strips one block high.
+ */
+function previewTile(width: number, block: number, samples: number): Pick<RenderPass, 'tileWidth' | 'tileHeight'> {
+  const blocksPerRow = Math.ceil(width / block);
+  if (blocksPerRow > samples) return { tileWidth: samples * block, tileHeight: block };
+  return { tileWidth: blocksPerRow * block, tileHeight: Math.floor(samples / blocksPerRow) * block };
+}
+
+/** The finest power-of-two block from FIRST_PREVIEW_BLOCK up whose pass fits FIRST_PASS_SECONDS; never beyond one block for the whole image. */
+function firstBlock(width: number, height: number, secondsPerSample: number): number {
+  let block = FIRST_PREVIEW_BLOCK;
+  const passSeconds = () => Math.ceil(width / block) * Math.ceil(height / block) * secondsPerSample;
+  while (block < Math.max(width, height) && passSeconds() > FIRST_PASS_SECONDS) block *= 2;
+  return block;
 }
 
 function tileSide(raysPerPixel: number): number {

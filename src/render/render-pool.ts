@@ -22,7 +22,7 @@ import type { Scene } from '../scene/scene.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
 import { DEFAULT_SEED, type RenderJob, type RenderOptions, type RenderResult } from './render-job.ts';
 import type { CreateRenderWorker, RenderWorkerPort } from './render-worker-port.ts';
-import { planPasses } from './render-passes.ts';
+import { planPasses, tracedSamples } from './render-passes.ts';
 import { primaryRaysPerSample, RAYS_PER_SECOND_PER_WORKER, raysPerSample } from './render-estimate.ts';
 import { checkResponse } from './render-response-check.ts';
 import { TiledRender, type TileAssignment } from './tiled-render.ts';
@@ -79,7 +79,6 @@ interface ActiveJob {
   sceneMs: number;
   /** Rays of one sample of the scene, its lens and time rays included (render-estimate.ts), for the tiles' deadlines. */
   raysPerSample: number;
-  samples: number;
   /** The slowest cost per estimated ray a tile has shown, never below the assumed one. */
   msPerRay: number;
   resolve(result: RenderResult): void;
@@ -158,7 +157,8 @@ export class RenderPool {
     this.cancelJob();
     this.failuresInARow = 0; // each render gets its own tries
     const sceneId = this.useScene(scene, meshes);
-    const tiles = new TiledRender(width, height, planPasses(scene, options.preview ?? true), options);
+    const passes = planPasses(scene, { width, height, workers: this.size, preview: options.preview ?? true });
+    const tiles = new TiledRender(width, height, passes, options);
     const id = ++this.lastId;
     const done = new Promise<RenderResult>((resolve, reject) => {
       this.job = {
@@ -169,7 +169,6 @@ export class RenderPool {
         startedAt: performance.now(),
         sceneMs: 0,
         raysPerSample: raysPerSample(scene) * primaryRaysPerSample(scene),
-        samples: scene.settings.supersampling ** 2,
         msPerRay: ASSUMED_MS_PER_RAY,
         resolve,
         reject,
@@ -182,6 +181,7 @@ export class RenderPool {
       cancel: () => {
         if (this.job?.id === id) this.cancelJob();
       },
+      changedRows: () => tiles.takeChangedRows(),
     };
   }
 
@@ -338,9 +338,10 @@ export class RenderPool {
           jobId: job.id,
           tileId: next.tileId,
           tile: next.tile,
-          options: { imageWidth: width, imageHeight: height, seed: job.seed, block: next.block },
+          options: { imageWidth: width, imageHeight: height, seed: job.seed, block: next.block, samplesPerSide: next.samplesPerSide },
         };
-        this.post(worker, request, () => worker.tiles.set(next.tileId, { assignment: next, rays: tileRays(job, next) }));
+        const rays = tracedSamples(next.tile, next) * job.raysPerSample;
+        this.post(worker, request, () => worker.tiles.set(next.tileId, { assignment: next, rays }));
       }
     }
   }
@@ -497,10 +498,4 @@ export class RenderPool {
   private assertOpen(): void {
     if (this.disposed) throw new Error('this render pool has been closed');
   }
-}
-
-/** The estimated rays of a tile: one sample per block in a coarse pass, every sample in the full one. */
-function tileRays(job: ActiveJob, { tile, block }: TileAssignment): number {
-  const pixels = tile.width * tile.height;
-  return block > 1 ? (pixels / (block * block)) * job.raysPerSample : pixels * job.raysPerSample * job.samples;
 }

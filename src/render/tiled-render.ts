@@ -6,10 +6,10 @@
  */
 import { addRayStats, emptyRayStats, type RayStats } from '../tracer/ray-tree.ts';
 import type { Tile } from '../tracer/tile.ts';
-import type { RenderPass } from './render-passes.ts';
+import { tracedSamples, type RenderPass } from './render-passes.ts';
 import type { RenderImage, RenderOptions, RenderProgress } from './render-job.ts';
 
-/** Progress callbacks at most this often: enough for a smooth bar, cheap for the UI thread. */
+/** Progress callbacks at most this often (besides a pass's first and last tile): enough for a smooth bar, cheap for the UI thread. */
 const PROGRESS_INTERVAL_MS = 50;
 
 interface PlannedPass extends RenderPass {
@@ -18,6 +18,8 @@ interface PlannedPass extends RenderPass {
   count: number;
   /** The tile id of its first tile: ids run on across passes. */
   firstId: number;
+  /** Samples the whole pass traces: its work, for progress. */
+  samples: number;
 }
 
 /** A tile handed to a worker: `tileId` comes back with its pixels. */
@@ -25,6 +27,7 @@ export interface TileAssignment {
   tileId: number;
   tile: Tile;
   block: number;
+  samplesPerSide: number;
 }
 
 export class TiledRender {
@@ -42,9 +45,12 @@ export class TiledRender {
   /** Tiles of the current pass handed out, and finished. */
   private taken = 0;
   private finishedInPass = 0;
-  private readonly done = { preview: 0, full: 0 };
-  private readonly total = { preview: 0, full: 0 };
+  /** Samples of the current pass traced so far. */
+  private samplesDone = 0;
   private lastProgressAt = -Infinity;
+  /** Rows pasted since `takeChangedRows` last asked: [from, to), empty when from ≥ to. */
+  private changedFrom = Infinity;
+  private changedTo = 0;
 
   constructor(
     width: number,
@@ -55,10 +61,10 @@ export class TiledRender {
     this.image = { width, height, rgb: new Float32Array(width * height * 3) };
     let firstId = 0;
     for (const pass of passes) {
-      const columns = Math.ceil(width / pass.tileSide);
-      const count = columns * Math.ceil(height / pass.tileSide);
-      this.passes.push({ ...pass, columns, count, firstId });
-      this.total[phaseOf(pass)] += count;
+      const columns = Math.ceil(width / pass.tileWidth);
+      const count = columns * Math.ceil(height / pass.tileHeight);
+      // Tiles start at multiples of the block, so their samples add up to the whole image's.
+      this.passes.push({ ...pass, columns, count, firstId, samples: tracedSamples({ x: 0, y: 0, width, height }, pass) });
       firstId += count;
     }
   }
@@ -76,7 +82,7 @@ export class TiledRender {
     if (!next) {
       if (this.taken === pass.count) return null;
       const index = this.taken++;
-      next = { tileId: pass.firstId + index, tile: this.tileOf(pass, index), block: pass.block };
+      next = { tileId: pass.firstId + index, tile: this.tileOf(pass, index), block: pass.block, samplesPerSide: pass.samplesPerSide };
     }
     this.outstanding.set(next.tileId, next);
     return next;
@@ -100,37 +106,55 @@ export class TiledRender {
 
   /**
    * Pastes a finished tile of the current pass into the image, then reports progress and,
-   * when a coarse pass completes, the preview. The state is updated before the callbacks
+   * when a pass before the final one completes, the preview. The state is updated before the callbacks
    * run, so a callback that throws leaves the render consistent. The caller checks the tile
    * with `problemWith` first.
    */
   accept(tileId: number, rgb: Float32Array, stats: RayStats, ms: number): void {
     const pass = this.passes[this.pass];
+    const tile = this.tileOf(pass, tileId - pass.firstId);
     this.outstanding.delete(tileId);
-    this.paste(this.tileOf(pass, tileId - pass.firstId), rgb);
+    this.paste(tile, rgb);
     this.slowestTileMs = Math.max(this.slowestTileMs, ms);
-    const phase = phaseOf(pass);
-    if (phase === 'full') addRayStats(this.stats, stats);
-    this.done[phase]++;
-    const passComplete = ++this.finishedInPass === pass.count;
+    if (pass.kind === 'final') addRayStats(this.stats, stats);
+    this.samplesDone += tracedSamples(tile, pass);
+    const progress: RenderProgress = { phase: pass.kind, pass: this.pass + 1, passes: this.passes.length, done: this.samplesDone, total: pass.samples };
+    const first = ++this.finishedInPass === 1;
+    const passComplete = this.finishedInPass === pass.count;
     if (passComplete) {
       this.pass++;
       this.taken = 0;
       this.finishedInPass = 0;
+      this.samplesDone = 0;
     }
 
-    this.reportProgress({ phase, done: this.done[phase], total: this.total[phase] });
-    if (passComplete && phase === 'preview') this.callbacks.onPreview?.(this.image);
+    this.reportProgress(progress, first || passComplete);
+    if (passComplete && pass.kind !== 'final') this.callbacks.onPreview?.(this.image);
+  }
+
+  /** The rows pasted since the last call, [from, to), or null: a painter redraws only those. */
+  takeChangedRows(): [number, number] | null {
+    const rows: [number, number] | null = this.changedFrom < this.changedTo ? [this.changedFrom, this.changedTo] : null;
+    this.changedFrom = Infinity;
+    this.changedTo = 0;
+    return rows;
   }
 
   /** Tiles run row by row, top to bottom; those on the right and bottom edges are cut to fit. */
-  private tileOf({ tileSide, columns }: PlannedPass, index: number): Tile {
-    const x = (index % columns) * tileSide;
-    const y = Math.floor(index / columns) * tileSide;
-    return { x, y, width: Math.min(tileSide, this.image.width - x), height: Math.min(tileSide, this.image.height - y) };
+  private tileOf({ tileWidth, tileHeight, columns }: PlannedPass, index: number): Tile {
+    const x = (index % columns) * tileWidth;
+    const y = Math.floor(index / columns) * tileHeight;
+    return { x, y, width: Math.min(tileWidth, this.image.width - x), height: Math.min(tileHeight, this.image.height - y) };
   }
 
   private paste({ x, y, width, height }: Tile, rgb: Float32Array): void {
+    this.changedFrom = Math.min(this.changedFrom, y);
+    this.changedTo = Math.max(this.changedTo, y + height);
+    // A tile of whole rows (a preview's) is one contiguous run of the image.
+    if (x === 0 && width === this.image.width) {
+      this.image.rgb.set(rgb, y * width * 3);
+      return;
+    }
     const rowLength = width * 3;
     for (let row = 0; row < height; row++) {
       const from = row * rowLength;
@@ -138,15 +162,11 @@ export class TiledRender {
     }
   }
 
-  private reportProgress(progress: RenderProgress): void {
+  /** `always`: a pass's first or last tile, so each pass shows at once and ends at 100 %. */
+  private reportProgress(progress: RenderProgress, always: boolean): void {
     const now = performance.now();
-    const last = progress.done === progress.total;
-    if (!last && now - this.lastProgressAt < PROGRESS_INTERVAL_MS) return;
+    if (!always && now - this.lastProgressAt < PROGRESS_INTERVAL_MS) return;
     this.lastProgressAt = now;
     this.callbacks.onProgress?.(progress);
   }
-}
-
-function phaseOf({ block }: RenderPass): RenderProgress['phase'] {
-  return block > 1 ? 'preview' : 'full';
 }

@@ -16,4 +16,9 @@ export interface RenderTileOptions {
    * and fill the square with it. 1 (default) is full quality.
    */
   block?: number;
+  /**
+   * Samples per side of each pixel at full quality (block 1): default the scene's
+   * supersampling; 1 gives the render window's sharp one-sample picture. Previews always trace 1.
+   */
+  samplesPerSide?: number;
 }

@@ -374,7 +374,7 @@ export class LabView {
   }
 
   /** The raster view from the ray tracer's camera, `width`×`height`, for the render window's comparison. */
-  rasterSnapshot(width: number, height: number): ImageData {
+  rasterSnapshot(width: number, height: number): Promise<ImageData> {
     const hidden: Object3D[] = [this.grid, this.lightGizmos.group, this.cameraScreen.rig, this.distribution.group, this.selectionBox, this.gizmo.helper];
     if (this.rayLayer) hidden.push(this.rayLayer.object);
     if (this.bvhLayer) hidden.push(this.bvhLayer);

@@ -7,10 +7,14 @@ import type { Camera, Color as RgbColor } from '../scene/scene.ts';
  * side-by-side comparison. The on-screen canvas is not touched: the frame goes to a render
  * target, and everything hidden for it (gizmos, rays, the screen) is shown again after.
  *
+ * The frame is drawn at once (the scene as it is now) and read back asynchronously (a pixel
+ * buffer and a fence): a synchronous read waits on the GPU, which blocked the page for
+ * seconds on a software GPU at 4096 × 4096.
+ *
  * @param hidden parts of the lab that are not part of the scene (helpers, gizmos, rays)
  * @param background the tracer's background colour, so both images share it
  */
-export function rasterSnapshot(
+export async function rasterSnapshot(
   renderer: WebGLRenderer,
   scene: ThreeScene,
   hidden: readonly Object3D[],
@@ -18,7 +22,7 @@ export function rasterSnapshot(
   background: RgbColor,
   width: number,
   height: number,
-): ImageData {
+): Promise<ImageData> {
   const view = new PerspectiveCamera(camera.fov, width / height, 0.01, 1000);
   view.position.set(...camera.position);
   // Looking straight up or down, +Y cannot be "up": use ∓Z as CameraRays does.
@@ -41,11 +45,17 @@ export function rasterSnapshot(
     renderer.setRenderTarget(target);
     renderer.clear();
     renderer.render(scene, view);
-    renderer.readRenderTargetPixels(target, 0, 0, width, height, pixels);
+  } catch (error) {
+    target.dispose();
+    throw error;
   } finally {
     hidden.forEach((object, i) => (object.visible = wasVisible[i]));
     scene.background = previousBackground;
     renderer.setRenderTarget(previousTarget);
+  }
+  try {
+    await renderer.readRenderTargetPixelsAsync(target, 0, 0, width, height, pixels);
+  } finally {
     target.dispose();
   }
   // WebGL reads rows bottom-up; images run top-down.

@@ -2,7 +2,6 @@ import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { LabServices, type LabViewPort } from '../../src/app/lab-services.ts';
 import type { RenderPool } from '../../src/render/render-pool.ts';
 import type { ScreenRays } from '../../src/render/screen-rays.ts';
-import { TRACE_DEBOUNCE_MS } from '../../src/render/screen-tracer.ts';
 import type { Scene } from '../../src/scene/scene.ts';
 import type { PixelTrace } from '../../src/tracer/ray-tree.ts';
 import { tracePixel } from '../../src/tracer/trace-pixel.ts';
@@ -69,50 +68,45 @@ describe('LabServices: the lab wired apart from any page', () => {
     expect(services.renderPool).toBe(pools[0]);
   });
 
-  it('traces the store\'s scene on the screen pool, and the view and listeners get its rays', async () => {
+  it('traces the store\'s scene at once on the screen pool; a view attached later (the 3D view loads after the panels) gets its rays, listeners hear the next ones', async () => {
+    await vi.advanceTimersByTimeAsync(1);
     const { view, calls, rays } = fakeView();
+    expect(services.drawn.rays).toBe(0);
     await services.attachView(view);
-    expect(calls.slice(0, 2)).toEqual(['ray-layer', 'bvh-layer']);
-    const heard: ScreenRays[] = [];
-    services.subscribe((screen) => heard.push(screen));
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS + 1);
+    expect(calls.slice(0, 3)).toEqual(['ray-layer', 'bvh-layer', 'rays']);
     const [columns, rows] = services.store.state.scene.camera.pixels;
     expect(pools[1]!.scenes).toEqual([services.store.state.scene]);
-    expect(heard).toHaveLength(1);
-    expect(heard[0]!.traces).toHaveLength(columns * rows);
-    expect(rays()).toBe(heard[0]);
-    expect(services.screenRays).toBe(heard[0]);
+    expect(services.screenRays?.traces).toHaveLength(columns * rows);
+    expect(rays()).toBe(services.screenRays);
     // Every pixel's primary ray at least (the default scene's rays also bounce and go to lights).
     expect(services.drawn.rays).toBeGreaterThanOrEqual(columns * rows);
+
+    const heard: ScreenRays[] = [];
+    services.subscribe((screen) => heard.push(screen));
+    services.store.dispatch({ type: 'camera.changed', changes: { fov: 50 } });
+    await vi.advanceTimersByTimeAsync(1);
+    expect(heard).toHaveLength(1);
+    expect(rays()).toBe(heard[0]);
+    expect(services.screenRays).toBe(heard[0]);
     expect(calls).toContain('render');
   });
 
   it('traces again after a scene edit, not after a view option, and reports a refused edit', async () => {
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS + 1);
+    await vi.advanceTimersByTimeAsync(1);
     services.store.dispatch({ type: 'rays.changed', changes: { transparency: 0.5 } });
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS + 1);
+    await vi.advanceTimersByTimeAsync(1);
     expect(pools[1]!.scenes).toHaveLength(1);
     services.store.dispatch({ type: 'camera.changed', changes: { pixels: [2, 2] } });
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS + 1);
+    await vi.advanceTimersByTimeAsync(1);
     expect(pools[1]!.scenes).toHaveLength(2);
     expect(services.screenRays?.traces).toHaveLength(4);
     services.store.dispatch({ type: 'settings.changed', changes: { supersampling: 40 } });
     expect(reports).toEqual([['settings.supersampling: must be between 1 and 8, got 40', 'error']]);
   });
 
-  it('draws rays traced before the view attached as soon as it does (the view loads after the panels)', async () => {
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS + 1);
-    expect(services.screenRays).not.toBeNull();
-    expect(services.drawn.rays).toBe(0);
-    const { view, rays } = fakeView();
-    await services.attachView(view);
-    expect(rays()).toBe(services.screenRays);
-    expect(services.drawn.rays).toBeGreaterThan(0);
-  });
-
   it('a hidden ray kind redraws the rays without tracing again', async () => {
     await services.attachView(fakeView().view);
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS + 1);
+    await vi.advanceTimersByTimeAsync(1);
     const before = services.drawn.rays;
     services.store.dispatch({ type: 'rays.changed', changes: { showRays: false } });
     expect(before).toBeGreaterThan(0);

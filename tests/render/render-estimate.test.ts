@@ -5,6 +5,7 @@ import { emptyRayStats } from '../../src/tracer/ray-tree.ts';
 import { renderTile } from '../../src/tracer/render-tile.ts';
 import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
 import type { Scene } from '../../src/scene/scene.ts';
+import { heaviestScene as heaviest } from '../support/heavy-scenes.ts';
 import { sceneFrom } from '../support/test-scene.ts';
 
 /** The rays a real render of `scene` traces. */
@@ -13,13 +14,6 @@ function tracedRays(scene: Scene, width: number, height: number): number {
   renderTile(buildTracerScene(scene, new Map()), { x: 0, y: 0, width, height }, { imageWidth: width, imageHeight: height, seed: 0 }, stats);
   return stats.primary + stats.shadow + stats.reflect + stats.refract;
 }
-
-/** The heaviest scene the schema accepts: a 2.6 kB link that used to start a render of about 38 days. */
-const heaviest = sceneFrom({
-  settings: { maxDepth: 10, supersampling: 8, imageSize: [4096, 4096] },
-  objects: Array.from({ length: 256 }, (_, i) => ({ id: `glass-${i}`, position: [(i % 16) - 8, 0, Math.floor(i / 16) - 8], material: { transparent: true, specular: 1 } })),
-  lights: Array.from({ length: 32 }, (_, i) => ({ id: `panel-${i}`, type: 'area', position: [i - 16, 5, 0], samples: 10 })),
-});
 
 describe('the render estimate', () => {
   it('comes within a factor of three of the rays a render really traces', () => {

@@ -2,7 +2,7 @@ import { afterAll, describe, expect, it } from 'vitest';
 import { pathToFileURL } from 'node:url';
 import { RenderPool } from '../../src/render/render-pool.ts';
 import type { FinishedRender, RenderImage, RenderProgress, RenderResult } from '../../src/render/render-job.ts';
-import { PREVIEW_BLOCKS } from '../../src/render/render-passes.ts';
+import { planPasses } from '../../src/render/render-passes.ts';
 import { createNodeRenderPool, createNodeWorkerPort } from '../../src/cli/node-worker-port.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 import { emptyRayStats } from '../../src/tracer/ray-tree.ts';
@@ -46,7 +46,7 @@ describe('RenderPool with worker threads', () => {
     expect(new Uint8Array(result.rgb.buffer)).toEqual(new Uint8Array(whole.buffer));
   });
 
-  it('shows coarse previews, filled in blocks, before the final image', async () => {
+  it('shows coarse previews, filled in blocks, and a sharp one-sample picture before the final image', async () => {
     const events: string[] = [];
     const previews: RenderImage[] = [];
     const progress: RenderProgress[] = [];
@@ -62,13 +62,15 @@ describe('RenderPool with worker threads', () => {
     const result = finished(await job.done);
     events.push('done');
 
-    expect(events).toEqual([...PREVIEW_BLOCKS.map(() => 'preview'), 'done']);
-    const [block] = PREVIEW_BLOCKS;
+    const passes = planPasses(scene, { width: WIDTH, height: HEIGHT, workers: pool.size, preview: true });
+    expect(passes.map((pass) => pass.kind)).toEqual(['preview', 'preview', 'sharp', 'final']);
+    expect(events).toEqual([...passes.slice(1).map(() => 'preview'), 'done']);
+    const [{ block }] = passes;
     const coarse = previews[0].rgb;
     for (let y = 0; y < block; y++) {
       for (let x = 0; x < block; x++) expect(coarse.slice((y * WIDTH + x) * 3, (y * WIDTH + x) * 3 + 3)).toEqual(coarse.slice(0, 3));
     }
-    expect(progress.at(-1)).toMatchObject({ phase: 'full', done: progress.at(-1)?.total });
+    expect(progress.at(-1)).toMatchObject({ phase: 'final', pass: passes.length, passes: passes.length, done: progress.at(-1)?.total });
     expect(job.image.rgb).toBe(result.rgb);
   });
 

@@ -3,7 +3,7 @@ import { pathToFileURL } from 'node:url';
 import { DEFAULT_SEED } from '../../src/render/render-job.ts';
 import { RenderPool } from '../../src/render/render-pool.ts';
 import type { ScreenRays } from '../../src/render/screen-rays.ts';
-import { ScreenTracer, TRACE_DEBOUNCE_MS, TRACES_IN_FLIGHT, type ScreenTracePool } from '../../src/render/screen-tracer.ts';
+import { ScreenTracer, TRACES_IN_FLIGHT, type ScreenTracePool } from '../../src/render/screen-tracer.ts';
 import { createNodeRenderPool, createNodeWorkerPort } from '../../src/cli/node-worker-port.ts';
 import { loadMeshesFromDisk } from '../../src/scene/load-meshes-node.ts';
 import type { MeshLibrary } from '../../src/scene/mesh-data.ts';
@@ -83,7 +83,7 @@ describe('ScreenTracer (fake pool)', () => {
 
   it('traces every pixel of the camera screen with the render seed and publishes them in order', async () => {
     tracer.update(sceneWithPixels(3, 2));
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS);
+    await vi.advanceTimersByTimeAsync(0);
     await pool.answerAll();
     expect(published).toHaveLength(1);
     const [rays] = published;
@@ -94,57 +94,62 @@ describe('ScreenTracer (fake pool)', () => {
     expect(errors).toEqual([]);
   });
 
-  it('debounces: changes within TRACE_DEBOUNCE_MS of each other trace only the last scene', async () => {
-    const scenes = [sceneWithPixels(1, 1), sceneWithPixels(2, 1), sceneWithPixels(2, 2)];
-    for (const scene of scenes) {
-      tracer.update(scene);
-      await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS - 10);
-    }
-    expect(pool.scenes).toEqual([]);
-    await vi.advanceTimersByTimeAsync(10);
-    expect(pool.scenes).toEqual([scenes[2]]);
+  it('traces a scene at once when idle; the trace that replaced a dropped one is kept, and only the newest scene waits for it', async () => {
+    const scenes = [sceneWithPixels(1, 1), sceneWithPixels(2, 1), sceneWithPixels(2, 2), sceneWithPixels(3, 1)];
+    tracer.update(scenes[0]);
+    await vi.advanceTimersByTimeAsync(0);
+    expect(pool.scenes).toEqual([scenes[0]]);
+    tracer.update(scenes[1]); // drops the first trace
+    await vi.advanceTimersByTimeAsync(0);
+    expect(pool.scenes).toEqual([scenes[0], scenes[1]]);
+    tracer.update(scenes[2]);
+    tracer.update(scenes[3]);
+    await vi.advanceTimersByTimeAsync(0);
+    expect(pool.scenes).toEqual([scenes[0], scenes[1]]); // the kept trace runs on
     await pool.answerAll();
-    expect(published.map((rays) => rays.traces.length)).toEqual([4]);
+    // The kept trace published, then the newest scene was traced; the one in between never.
+    expect(pool.scenes).toEqual([scenes[0], scenes[1], scenes[3]]);
+    expect(published.map((rays) => rays.traces.length)).toEqual([2, 3]);
+    expect(tracer.rays?.columns).toBe(3);
   });
 
   it('ignores the same scene object again (only scene changes trace)', async () => {
     const scene = sceneWithPixels(1, 1);
     tracer.update(scene);
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS);
+    await vi.advanceTimersByTimeAsync(0);
     await pool.answerAll();
     tracer.update(scene);
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS * 2);
+    await vi.advanceTimersByTimeAsync(1000);
     expect(pool.scenes).toHaveLength(1);
     expect(published).toHaveLength(1);
   });
 
   it('keeps at most TRACES_IN_FLIGHT pixel requests waiting', async () => {
     tracer.update(sceneWithPixels(16, 16));
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS);
+    await vi.advanceTimersByTimeAsync(0);
     expect(pool.pending.size).toBe(TRACES_IN_FLIGHT);
     await pool.answerAll();
     expect(pool.requests).toHaveLength(256);
     expect(published[0].traces).toHaveLength(256);
   });
 
-  it('latest wins: a newer scene drops the older one\'s results and stops requesting its pixels', async () => {
+  it('latest wins: a newer scene drops the running trace at once, which stops requesting its pixels', async () => {
     const older = sceneWithPixels(16, 16);
     const newer = sceneWithPixels(2, 1);
     tracer.update(older);
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS);
+    await vi.advanceTimersByTimeAsync(0);
     tracer.update(newer);
+    await vi.advanceTimersByTimeAsync(0);
+    expect(pool.scenes).toEqual([older, newer]);
     await pool.answerAll(); // the old scene's requests come back late
     expect(pool.requests.filter((request) => request.scene === older)).toHaveLength(TRACES_IN_FLIGHT);
-    expect(published).toEqual([]);
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS);
-    await pool.answerAll();
     expect(published).toHaveLength(1);
     expect([published[0].columns, published[0].rows]).toEqual([2, 1]);
   });
 
   it('reports a failed trace to onError once, and publishes nothing for that scene', async () => {
     tracer.update(sceneWithPixels(8, 8));
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS);
+    await vi.advanceTimersByTimeAsync(0);
     const [first, second] = [...pool.pending];
     first.reject(new Error('worker died'));
     second.reject(new Error('worker died again'));
@@ -163,16 +168,16 @@ describe('ScreenTracer (fake pool)', () => {
     const seen: string[] = [];
     loading.onError = (error) => seen.push(error.message);
     loading.update(sceneWithPixels(1, 1));
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS);
+    await vi.advanceTimersByTimeAsync(0);
     expect(seen).toEqual(['mesh "teapot" is not one of the shipped models']);
 
     fail = false;
     loading.update(sceneWithPixels(2, 1));
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS);
+    await vi.advanceTimersByTimeAsync(0);
     const [stale] = [...pool.pending];
     loading.update(sceneWithPixels(1, 2));
     stale.reject(new Error('stale failure'));
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS);
+    await vi.advanceTimersByTimeAsync(0);
     await pool.answerAll();
     expect(seen).toHaveLength(1);
     expect(loading.rays?.rows).toBe(2);
@@ -181,21 +186,21 @@ describe('ScreenTracer (fake pool)', () => {
 
   it('gives a new subscriber the last screen at once; unsubscribe and dispose stop the calls', async () => {
     tracer.update(sceneWithPixels(1, 1));
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS);
+    await vi.advanceTimersByTimeAsync(0);
     await pool.answerAll();
     const late: ScreenRays[] = [];
     const unsubscribe = tracer.subscribe((rays) => late.push(rays));
     expect(late).toEqual([published[0]]);
     unsubscribe();
     tracer.update(sceneWithPixels(2, 1));
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS);
+    await vi.advanceTimersByTimeAsync(0);
     await pool.answerAll();
     expect(late).toHaveLength(1);
     expect(published).toHaveLength(2);
 
     tracer.dispose();
     tracer.update(sceneWithPixels(3, 1));
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS);
+    await vi.advanceTimersByTimeAsync(0);
     expect(pool.scenes).toHaveLength(2);
   });
 
@@ -206,7 +211,7 @@ describe('ScreenTracer (fake pool)', () => {
     const after: ScreenRays[] = [];
     tracer.subscribe((rays) => after.push(rays));
     tracer.update(sceneWithPixels(1, 1));
-    await vi.advanceTimersByTimeAsync(TRACE_DEBOUNCE_MS);
+    await vi.advanceTimersByTimeAsync(0);
     await pool.answerAll();
     expect(errors.map((error) => error.message)).toEqual(['listener bug']);
     expect(after).toHaveLength(1);

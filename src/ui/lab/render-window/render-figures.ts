@@ -41,7 +41,6 @@ export function formatDuration(ms: number): string {
   return msg(str`${Math.floor(seconds / 60)} min ${seconds % 60} s`);
 }
 
-/** "Quick preview…" during the coarse passes, then "Rendering 42 %". */
 /** An estimated wait in the largest unit that reads naturally: "40 s", "12 min", "3 h", "27 days". */
 export function formatWait(seconds: number): string {
   if (seconds < 90) return msg(str`${Math.max(1, Math.round(seconds))} s`);
@@ -50,9 +49,31 @@ export function formatWait(seconds: number): string {
   return msg(str`${Math.round(seconds / 86_400)} days`);
 }
 
-export function progressText({ phase, done, total }: RenderProgress): string {
-  if (phase === 'preview') return msg('Quick preview…');
-  const percent = Math.floor((100 * done) / Math.max(total, 1));
-  return msg(str`Rendering ${percent} %`);
+/**
+ * The pass under way and how far into it: "Step 1 of 4: quick preview 40 %", then "sharp
+ * picture (1 sample per pixel)", then "full quality"; "Rendering 42 %" for a render of one
+ * pass. Each pass counts from 0 to 100 %, so even a render of days shows movement at once.
+ */
+export function progressText({ phase, pass, passes, done, total }: RenderProgress): string {
+  const percent = formatPercent(done, total);
+  if (passes === 1) return msg(str`Rendering ${percent}`);
+  switch (phase) {
+    case 'preview':
+      return msg(str`Step ${pass} of ${passes}: quick preview ${percent}`);
+    case 'sharp':
+      return msg(str`Step ${pass} of ${passes}: sharp picture (1 sample per pixel) ${percent}`);
+    case 'final':
+      return msg(str`Step ${pass} of ${passes}: full quality ${percent}`);
+  }
 }
 
+/**
+ * done / total as a percentage, rounded down so that only a finished pass reads 100 %; with
+ * one decimal under 10 %, where a long pass would otherwise sit at "0 %" for minutes.
+ */
+export function formatPercent(done: number, total: number): string {
+  // Per mille from the whole numbers, so that 57 of 1000 reads 5.7, not 5.6 (0.057 × 1000 = 56.99…).
+  const perMille = Math.min(1000, Math.max(0, Math.floor((1000 * done) / Math.max(total, 1))));
+  if (perMille < 100) return `${(perMille / 10).toFixed(1)} %`;
+  return `${Math.floor(perMille / 10)} %`;
+}

@@ -28,8 +28,8 @@ export interface ShownRender {
 
 /** What the window does with a render's pictures while the job runs. */
 export interface RenderPainter {
-  /** A coarse preview, a partly filled image or the finished one. */
-  paint(image: RenderImage, dithering: boolean): void;
+  /** A coarse preview, a partly filled image (`rows` [from, to) of it changed) or the finished one (all of it). */
+  paint(image: RenderImage, dithering: boolean, rows?: [number, number]): void;
   /** A render starts (after `shown` is set, before any picture): `isCurrent` says whether it still is. */
   started(shown: ShownRender, isCurrent: () => boolean): Promise<void> | void;
 }
@@ -85,14 +85,14 @@ export class RenderJobController implements ReactiveController {
     try {
       const meshes = await loadMeshes(meshNamesInScene(scene));
       if (!isCurrent()) return;
+      // Progress comes after every pass's last tile too, so painting the changed rows there
+      // shows each preview whole without repainting the image at every pass.
       const job = pool.render(scene, meshes, {
-        onPreview: (image) => {
-          if (isCurrent()) this.painter.paint(image, dithering);
-        },
         onProgress: (progress) => {
           if (!isCurrent()) return;
           this.setStatus({ kind: 'rendering', ...progress });
-          this.painter.paint(job.image, dithering);
+          const rows = job.changedRows();
+          if (rows) this.painter.paint(job.image, dithering, rows);
         },
       });
       this.job = job;

@@ -23,7 +23,7 @@ interface ViewCentre {
  * sizes and arranges them, so the parent keeps drawing into the same canvases.
  *
  * @slot traced - The ray traced image (a canvas of imageWidth × imageHeight pixels).
- * @slot raster - The raster image of the same camera, at the same size.
+ * @slot raster - The raster image of the same camera, at the same size or smaller (it is scaled to fit).
  *
  * Properties:
  * - `imageWidth`, `imageHeight`: the images' size in pixels (default 1 × 1).

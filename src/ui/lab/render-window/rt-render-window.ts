@@ -20,8 +20,16 @@ import { pngFileName, savePng } from './save-png.ts';
 import type { RtImageCompare } from './rt-image-compare.ts';
 import './rt-image-compare.ts';
 
-/** The scene view's raster (three.js) picture from the ray tracer's camera, at this size. */
-export type RasterSnapshot = (width: number, height: number) => ImageData;
+/** The scene view's raster (three.js) picture from the ray tracer's camera, at this size (drawn at once, maybe read back later). */
+export type RasterSnapshot = (width: number, height: number) => ImageData | Promise<ImageData>;
+
+/**
+ * The raster picture's longest side. It is drawn and read back on the main thread in one go:
+ * at 4096 × 4096 that blocked the page for 12.8 s on SwiftShader (the e2e run), against the
+ * 50 ms a screen update may take. Larger images get a proportionally smaller picture, which
+ * the comparison scales to the image's size.
+ */
+export const RASTER_MAX_SIDE = 1024;
 
 /**
  * @summary The render window: the full image ray traced by the worker pool, with a progressive
@@ -83,7 +91,7 @@ export class RtRenderWindow extends LitElement {
 
   private readonly painter = new BandPainter(() => this.tracedCanvas.value);
   private readonly jobs = new RenderJobController(this, {
-    paint: (image, dithering) => this.painter.paint(image, dithering),
+    paint: (image, dithering, rows) => this.painter.paint(image, dithering, rows),
     started: (shown, isCurrent) => this.prepareStage(shown, isCurrent),
   });
   private unsubscribe: (() => void) | null = null;
@@ -160,16 +168,18 @@ export class RtRenderWindow extends LitElement {
     if (raster) void this.paintRaster(raster, isCurrent);
   }
 
-  private takeRasterSnapshot(width: number, height: number): ImageData | null {
+  /** Starts the raster picture now (the scene as it is); null, with a note, when there is none. */
+  private takeRasterSnapshot(width: number, height: number): Promise<ImageData> | null {
     this.rasterNote = '';
     if (!this.rasterSnapshot) {
       this.rasterNote = msg('Comparing with the raster view is not available here.');
       return null;
     }
+    const scale = Math.min(1, RASTER_MAX_SIDE / Math.max(width, height));
     try {
-      return this.rasterSnapshot(width, height);
+      return Promise.resolve(this.rasterSnapshot(Math.max(1, Math.round(width * scale)), Math.max(1, Math.round(height * scale))));
     } catch (error) {
-      this.rasterNote = msg(str`The raster view could not be captured (${errorMessage(error)}), so there is nothing to compare with.`);
+      this.rasterNote = notCaptured(error);
       return null;
     }
   }
@@ -179,7 +189,14 @@ export class RtRenderWindow extends LitElement {
    * which the browser makes off the main thread: putImageData of a 2048 × 1536 picture
    * blocked it for 50 ms.
    */
-  private async paintRaster(pixels: ImageData, isCurrent: () => boolean): Promise<void> {
+  private async paintRaster(snapshot: Promise<ImageData>, isCurrent: () => boolean): Promise<void> {
+    let pixels: ImageData;
+    try {
+      pixels = await snapshot;
+    } catch (error) {
+      if (isCurrent()) this.rasterNote = notCaptured(error);
+      return;
+    }
     let bitmap: ImageBitmap;
     try {
       bitmap = await createImageBitmap(pixels);
@@ -281,7 +298,7 @@ export class RtRenderWindow extends LitElement {
         return html`<progress aria-label=${label}></progress><span class="phase">${msg('Starting…')}</span>`;
       case 'rendering':
         return html`<progress aria-label=${label} max=${status.total} value=${status.done}></progress>
-          <span class="phase">${progressText(status)}</span>`;
+          <span class="phase" data-testid="render-progress">${progressText(status)}</span>`;
       case 'finished':
         return html`<progress aria-label=${label} max="1" value="1"></progress><span class="phase">${msg('Done')}</span>`;
       default:
@@ -352,6 +369,9 @@ export class RtRenderWindow extends LitElement {
   }
 }
 
+function notCaptured(error: unknown): string {
+  return msg(str`The raster view could not be captured (${errorMessage(error)}), so there is nothing to compare with.`);
+}
 
 customElements.define('rt-render-window', RtRenderWindow);
 

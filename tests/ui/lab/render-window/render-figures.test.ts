@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { countRays, formatCount, formatDuration, formatWait, progressText, raysPerSecond } from '../../../../src/ui/lab/render-window/render-figures.ts';
+import { countRays, formatCount, formatDuration, formatPercent, formatWait, progressText, raysPerSecond } from '../../../../src/ui/lab/render-window/render-figures.ts';
 import { formatShare } from '../../../../src/ui/lab/rt-ray-tooltip.ts';
 import { inDutch } from '../../../support/page-locale.ts';
 
@@ -40,10 +40,22 @@ describe('render figures', () => {
     expect(formatDuration(125_400)).toBe('2 min 5 s');
   });
 
-  it('says what the progress bar is doing', () => {
-    expect(progressText({ phase: 'preview', done: 3, total: 40 })).toBe('Quick preview…');
-    expect(progressText({ phase: 'full', done: 42, total: 100 })).toBe('Rendering 42 %');
-    expect(progressText({ phase: 'full', done: 199, total: 200 })).toBe('Rendering 99 %');
+  it('says which pass is under way and how far into it', () => {
+    expect(progressText({ phase: 'preview', pass: 1, passes: 4, done: 3, total: 40 })).toBe('Step 1 of 4: quick preview 7.5 %');
+    expect(progressText({ phase: 'sharp', pass: 3, passes: 4, done: 42, total: 100 })).toBe('Step 3 of 4: sharp picture (1 sample per pixel) 42 %');
+    expect(progressText({ phase: 'final', pass: 4, passes: 4, done: 199, total: 200 })).toBe('Step 4 of 4: full quality 99 %');
+    expect(progressText({ phase: 'final', pass: 1, passes: 1, done: 42, total: 100 })).toBe('Rendering 42 %');
+  });
+
+  it('shows a tenth of a percent under 10 %, rounded down, so a long pass moves and only a finished one reads 100 %', () => {
+    expect(formatPercent(0, 16_777_216)).toBe('0.0 %');
+    expect(formatPercent(16_777, 16_777_216)).toBe('0.0 %');
+    expect(formatPercent(16_778, 16_777_216)).toBe('0.1 %');
+    expect(formatPercent(57, 1000)).toBe('5.7 %');
+    expect(formatPercent(99, 1000)).toBe('9.9 %');
+    expect(formatPercent(100, 1000)).toBe('10 %');
+    expect(formatPercent(999, 1000)).toBe('99 %');
+    expect(formatPercent(1000, 1000)).toBe('100 %');
   });
 });
 

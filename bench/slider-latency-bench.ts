@@ -1,0 +1,125 @@
+/**
+ * Slider to rays (issue: tracer speed, "interactive edits": ≤ 100 ms at the 95th
+ * percentile on a 16×16 screen, without skipping the last value). A Node proxy of the lab,
+ * wired as LabServices wires it (the store, the screen tracer on one worker thread, the ray
+ * pool; LabServices itself loads models through the browser), so it measures everything
+ * from the store's dispatch to the ray pool's new instance buffers and leaves out the
+ * browser's parts: the panels' update and the GPU's frame.
+ *
+ * A step's latency runs from its dispatch to the first rays drawn from a scene at least as
+ * new as it (a later step's rays also show it). Two ways of moving a slider: a drag (a step
+ * every 16 ms, one per frame) and arrow-key presses (a step every 150 ms).
+ */
+import { createNodeRenderPool } from '../src/cli/node-worker-port.ts';
+import { initialState } from '../src/lab-state/lab-state.ts';
+import { Store } from '../src/lab-state/store.ts';
+import { ScreenTracer } from '../src/render/screen-tracer.ts';
+import { defaultScene } from '../src/scene/scene-defaults.ts';
+import type { Scene } from '../src/scene/scene.ts';
+import { loadMeshesFromDisk } from '../src/scene/load-meshes-node.ts';
+import { RayPool } from '../src/view/ray-pool.ts';
+
+/** The lab's chain from a scene edit to drawn rays, as LabServices wires it. */
+interface Lab {
+  store: Store;
+  /** Calls `listener` after the ray pool has taken each new screen; returns the unsubscribe. */
+  subscribe(listener: () => void): () => void;
+}
+
+export interface SliderLatency {
+  steps: number;
+  p50Ms: number;
+  p95Ms: number;
+  maxMs: number;
+  /** Whether the last value's rays were drawn. */
+  lastDrawn: boolean;
+}
+
+export interface SliderBenchResults {
+  drag: SliderLatency;
+  keys: SliderLatency;
+}
+
+const sleep = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
+
+function percentile(values: number[], p: number): number {
+  const sorted = [...values].sort((a, b) => a - b);
+  return sorted[Math.min(sorted.length - 1, Math.ceil(p * sorted.length) - 1)];
+}
+
+/** `steps` moves of the first object's x, `everyMs` apart; the rays' scene is the one the screen pool was last given. */
+async function moveSlider(services: Lab, sceneOfRays: () => Scene | null, steps: number, everyMs: number): Promise<SliderLatency> {
+  const dispatched: { scene: Scene; at: number }[] = [];
+  const drawnAt: (number | undefined)[] = [];
+  const stop = services.subscribe(() => {
+    const now = performance.now();
+    const index = dispatched.findIndex(({ scene }) => scene === sceneOfRays());
+    for (let i = 0; i <= index; i++) drawnAt[i] ??= now;
+  });
+  const object = services.store.state.scene.objects[0];
+  for (let i = 0; i < steps; i++) {
+    services.store.dispatch({ type: 'object.changed', id: object.id, changes: { position: [object.position[0] + 0.01 * (i + 1), object.position[1], object.position[2]] } });
+    dispatched.push({ scene: services.store.state.scene, at: performance.now() });
+    await sleep(everyMs);
+  }
+  const deadline = performance.now() + 10_000;
+  while (drawnAt[steps - 1] === undefined && performance.now() < deadline) await sleep(5);
+  stop();
+  const latencies = dispatched.map(({ at }, i) => (drawnAt[i] ?? Infinity) - at);
+  const round = (ms: number) => Number(ms.toFixed(1));
+  return {
+    steps,
+    p50Ms: round(percentile(latencies, 0.5)),
+    p95Ms: round(percentile(latencies, 0.95)),
+    maxMs: round(Math.max(...latencies)),
+    lastDrawn: drawnAt[steps - 1] !== undefined,
+  };
+}
+
+export async function measureSliderLatency(): Promise<SliderBenchResults> {
+  const pool = createNodeRenderPool(1);
+  let sceneOfRays: Scene | null = null;
+  const setScene = pool.setScene.bind(pool);
+  pool.setScene = (scene, meshes) => {
+    sceneOfRays = scene;
+    setScene(scene, meshes);
+  };
+  const store = new Store(initialState(defaultScene()));
+  const tracer = new ScreenTracer(pool, loadMeshesFromDisk);
+  const rayPool = new RayPool();
+  const listeners = new Set<() => void>();
+  tracer.subscribe((rays) => {
+    rayPool.update(rays, store.state.rays, store.state.selectedPixel);
+    for (const listener of listeners) listener();
+  });
+  const stopStore = store.subscribe((state) => tracer.update(state.scene));
+  const lab: Lab = { store, subscribe: (listener) => (listeners.add(listener), () => listeners.delete(listener)) };
+  try {
+    store.dispatch({ type: 'camera.changed', changes: { pixels: [16, 16] } });
+    // Warm-up: the worker starts, compiles the tracer and builds the models' BVHs.
+    await moveSlider(lab, () => sceneOfRays, 3, 400);
+    const drag = await moveSlider(lab, () => sceneOfRays, 60, 16);
+    await sleep(500);
+    const keys = await moveSlider(lab, () => sceneOfRays, 30, 150);
+    return { drag, keys };
+  } finally {
+    stopStore();
+    tracer.dispose();
+    rayPool.dispose();
+    pool.dispose();
+  }
+}
+
+export function sliderRows({ drag, keys }: SliderBenchResults): [string, string, string][] {
+  const row = (name: string, latency: SliderLatency): [string, string, string] => [
+    `slider to rays, 16×16 screen, ${name} (${latency.steps} steps)`,
+    `p50 ${latency.p50Ms} / p95 ${latency.p95Ms} / max ${latency.maxMs} ms${latency.lastDrawn ? '' : ', last value NOT drawn'}`,
+    '≤ 100 ms p95',
+  ];
+  return [row('drag, a step per 16 ms', drag), row('arrow keys, a step per 150 ms', keys)];
+}
+
+if (process.argv[1]?.endsWith('slider-latency-bench.ts')) {
+  const { printTable } = await import('./print-table.ts');
+  printTable(sliderRows(await measureSliderLatency()));
+}

@@ -1,0 +1,130 @@
+import { describe, expect, it } from 'vitest';
+import { RAYS_PER_SECOND_PER_WORKER, raysPerSample } from '../../src/render/render-estimate.ts';
+import type { RenderProgress } from '../../src/render/render-job.ts';
+import { FIRST_PASS_SECONDS, planPasses, tracedSamples, type RenderPass } from '../../src/render/render-passes.ts';
+import { TiledRender, type TileAssignment } from '../../src/render/tiled-render.ts';
+import { defaultScene } from '../../src/scene/scene-defaults.ts';
+import type { Scene } from '../../src/scene/scene.ts';
+import { emptyRayStats } from '../../src/tracer/ray-tree.ts';
+import { heaviestScene } from '../support/heavy-scenes.ts';
+import { sceneFrom } from '../support/test-scene.ts';
+
+function withSupersampling(supersampling: number): Scene {
+  return sceneFrom({ ...defaultScene(), settings: { ...defaultScene().settings, supersampling } });
+}
+
+/** The render estimate's seconds for one pass of a width × height image on `workers` workers. */
+function passSeconds(scene: Scene, pass: RenderPass, width: number, height: number, workers: number): number {
+  return (tracedSamples({ x: 0, y: 0, width, height }, pass) * raysPerSample(scene)) / (RAYS_PER_SECOND_PER_WORKER * workers);
+}
+
+/** Runs a whole render through TiledRender with blank tiles, recording every progress report. */
+function playRender(width: number, height: number, passes: RenderPass[]): { reports: RenderProgress[]; previews: number } {
+  const reports: RenderProgress[] = [];
+  let previews = 0;
+  const tiles = new TiledRender(width, height, passes, { onProgress: (report) => reports.push(report), onPreview: () => previews++ });
+  while (!tiles.finished) {
+    const taken = [];
+    for (let next = tiles.takeTile(); next; next = tiles.takeTile()) taken.push(next);
+    for (const { tileId, tile } of taken) tiles.accept(tileId, new Float32Array(tile.width * tile.height * 3), emptyRayStats(), 1);
+  }
+  return { reports, previews };
+}
+
+describe('the pass plan', () => {
+  it('previews the default scene in 8×8 and 4×4 blocks, then a sharp one-sample pass, then full quality', () => {
+    const passes = planPasses(withSupersampling(2), { width: 512, height: 384, workers: 2, preview: true });
+    expect(passes.map(({ kind, block, samplesPerSide }) => [kind, block, samplesPerSide])).toEqual([
+      ['preview', 8, 1],
+      ['preview', 4, 1],
+      ['sharp', 1, 1],
+      ['final', 1, 2],
+    ]);
+    // The sharp pass costs a quarter of the final one with 2×2 supersampling.
+    const [sharp, final] = passes.slice(2).map((pass) => tracedSamples({ x: 0, y: 0, width: 512, height: 384 }, pass));
+    expect(sharp * 4).toBe(final);
+  });
+
+  it('previews in whole rows of blocks, each tile tracing as many samples as a sharp-pass tile', () => {
+    const scene = withSupersampling(2);
+    const passes = planPasses(scene, { width: 512, height: 384, workers: 2, preview: true });
+    const sharp = passes.find((pass) => pass.kind === 'sharp')!;
+    const sharpTile = tracedSamples({ x: 0, y: 0, width: sharp.tileWidth, height: sharp.tileHeight }, sharp);
+    for (const pass of passes.filter((p) => p.kind === 'preview')) {
+      expect(pass.tileWidth).toBeGreaterThanOrEqual(512);
+      expect(tracedSamples({ x: 0, y: 0, width: pass.tileWidth, height: pass.tileHeight }, pass)).toBe(sharpTile);
+    }
+  });
+
+  it('leaves out the sharp pass when the final pass already traces one sample per pixel', () => {
+    const kinds = planPasses(withSupersampling(1), { width: 512, height: 384, workers: 2, preview: true }).map((pass) => pass.kind);
+    expect(kinds).toEqual(['preview', 'preview', 'final']);
+  });
+
+  it('makes only the final pass without previews (rt render)', () => {
+    expect(planPasses(withSupersampling(3), { width: 64, height: 64, workers: 1, preview: false })).toEqual([
+      { kind: 'final', block: 1, samplesPerSide: 3, tileWidth: expect.any(Number), tileHeight: expect.any(Number) },
+    ]);
+  });
+
+  it('starts the heaviest scene with a pass the estimate puts under the first second, halving the block down to 4', () => {
+    const [width, height] = heaviestScene.settings.imageSize;
+    const passes = planPasses(heaviestScene, { width, height, workers: 2, preview: true });
+    const previews = passes.filter((pass) => pass.kind === 'preview');
+    expect(passSeconds(heaviestScene, previews[0], width, height, 2)).toBeLessThanOrEqual(FIRST_PASS_SECONDS);
+    // The finest block that fits: twice as fine would not.
+    expect(passSeconds(heaviestScene, { ...previews[0], block: previews[0].block / 2 }, width, height, 2)).toBeGreaterThan(FIRST_PASS_SECONDS);
+    expect(previews.map((pass) => pass.block)).toEqual(previews.map((_, i) => previews[0].block / 2 ** i));
+    expect(previews.at(-1)?.block).toBe(4);
+    expect(passes.slice(previews.length).map((pass) => pass.kind)).toEqual(['sharp', 'final']);
+    for (const pass of passes) expect([pass.tileWidth % pass.block, pass.tileHeight % pass.block]).toEqual([0, 0]);
+  });
+});
+
+describe('render progress', () => {
+  it('counts each pass from its first tile to all its samples, and previews after every pass but the last', () => {
+    const [width, height] = [300, 225]; // several tiles per pass, partial ones at the edges
+    const passes = planPasses(withSupersampling(2), { width, height, workers: 2, preview: true });
+    const { reports, previews } = playRender(width, height, passes);
+
+    expect(previews).toBe(passes.length - 1);
+    for (const [index, pass] of passes.entries()) {
+      const ofPass = reports.filter((report) => report.pass === index + 1);
+      const total = tracedSamples({ x: 0, y: 0, width, height }, pass);
+      expect(ofPass.every((report) => report.phase === pass.kind && report.passes === passes.length && report.total === total)).toBe(true);
+      // The pass's first tile is reported at once, its last always, and the count only grows.
+      expect(ofPass[0].done).toBe(tracedSamples({ x: 0, y: 0, width: Math.min(pass.tileWidth, width), height: Math.min(pass.tileHeight, height) }, pass));
+      expect(ofPass.at(-1)?.done).toBe(total);
+      for (let i = 1; i < ofPass.length; i++) expect(ofPass[i].done).toBeGreaterThan(ofPass[i - 1].done);
+    }
+    expect(reports.map((report) => report.pass)).toEqual([...reports.map((report) => report.pass)].sort((a, b) => a - b));
+  });
+
+  it('gives the heaviest scene a first pass of a handful of one-sample tiles, each reported as a step', () => {
+    const [width, height] = heaviestScene.settings.imageSize;
+    const [first] = planPasses(heaviestScene, { width, height, workers: 2, preview: true });
+    const tiles = new TiledRender(width, height, [first], {});
+    const sizes = [];
+    for (let next = tiles.takeTile(); next; next = tiles.takeTile()) sizes.push(tracedSamples(next.tile, next));
+    expect(sizes.every((samples) => samples === 1)).toBe(true);
+    expect(sizes.length).toBe(tracedSamples({ x: 0, y: 0, width, height }, first));
+  });
+});
+
+describe('the rows a painter must redraw', () => {
+  it('are the rows of the tiles pasted since it last asked, and none after', () => {
+    const [pass] = planPasses(withSupersampling(1), { width: 100, height: 70, workers: 1, preview: false });
+    const tiles = new TiledRender(100, 70, [pass], {});
+    expect(tiles.takeChangedRows()).toBeNull();
+    const taken: TileAssignment[] = [];
+    for (let next = tiles.takeTile(); next; next = tiles.takeTile()) taken.push(next);
+    const paste = ({ tileId, tile }: TileAssignment) => tiles.accept(tileId, new Float32Array(tile.width * tile.height * 3), emptyRayStats(), 1);
+    const bottom = taken.filter(({ tile }) => tile.y + tile.height === 70);
+    paste(bottom[0]);
+    expect(tiles.takeChangedRows()).toEqual([bottom[0].tile.y, 70]);
+    expect(tiles.takeChangedRows()).toBeNull();
+    paste(taken[0]);
+    paste(bottom[1]);
+    expect(tiles.takeChangedRows()).toEqual([0, 70]);
+  });
+});
