@@ -103,8 +103,8 @@ export class LabServices {
     this.view = view;
     view.setRayLayer(this.layers.rays);
     view.setBvhLayer(this.layers.boxes.object);
-    this.layers.boxes.update(this.store.state);
     if (this.screenRays) view.setScreenRays(this.screenRays);
+    this.layers.boxes.update(this.store.state);
     this.redrawRays();
   }
 
