@@ -1,12 +1,12 @@
 import { msg, str } from '@lit/localize';
 import { type Camera, Euler, Quaternion, Vector3 } from 'three';
-import { localNumbers } from '../i18n/number-format.ts';
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
 import type { Vec3 } from '../scene/scene.ts';
 import { CameraRays } from '../tracer/camera-rays.ts';
 import { cameraChanges, type DraggedPose, lightChanges, objectChanges } from './gizmo-changes.ts';
 import type { GizmoMode } from './gizmo-modes.ts';
+import { NUDGE_STEPS, type NudgeDirection, nudgeStepText } from './nudge-steps.ts';
 import { cameraRigQuaternion } from './screen-grid.ts';
 
 /**
@@ -18,33 +18,10 @@ import { cameraRigQuaternion } from './screen-grid.ts';
  * can reach, a key can reach too.
  */
 
-/** The arrow keys (and Page Up / Page Down for the third direction) as directions on screen. */
-export type NudgeDirection = 'left' | 'right' | 'up' | 'down' | 'farther' | 'nearer';
-
-/** One key press: a small step, or with Shift a big one (the big ones are the snapping steps). */
-export const NUDGE_STEPS = {
-  /** metres */
-  translate: { small: 0.1, big: 0.5 },
-  /** degrees */
-  rotate: { small: 5, big: 15 },
-  /** the scale is multiplied (up, right) or divided (down, left) by this */
-  scale: { small: 1.1, big: 1.5 },
-} as const;
-
 /** The viewer's right and forward directions in the world (the 3D view's own camera). */
 export interface ViewAxes {
   right: Vec3;
   forward: Vec3;
-}
-
-const numbers = localNumbers({ maximumFractionDigits: 2 });
-
-/** One step of the keys in a gizmo mode, as the learner reads it: "0.1 m", "5°", "×1.1". */
-export function nudgeStepText(mode: GizmoMode, big: boolean): string {
-  const step = NUDGE_STEPS[mode][big ? 'big' : 'small'];
-  if (mode === 'translate') return `${numbers.format(step)} m`;
-  if (mode === 'rotate') return `${numbers.format(step)}°`;
-  return `×${numbers.format(step)}`;
 }
 
 export interface Nudge {

@@ -1,6 +1,6 @@
 import { msg, str } from '@lit/localize';
 import type { GizmoMode } from './gizmo-modes.ts';
-import { type NudgeDirection, nudgeStepText } from './gizmo-nudge.ts';
+import { type NudgeDirection, nudgeStepText } from './nudge-steps.ts';
 
 /**
  * Everything the user can ask of the 3D view, whether by key, by toolbar button or by the
