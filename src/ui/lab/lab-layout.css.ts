@@ -222,6 +222,15 @@ const labNarrow = css`
     main {
       grid-area: 2 / 1;
     }
+    /* Over a phone's small view the legend is smaller, and taps go through it to the scene. */
+    rt-ray-legend.view-legend {
+      width: auto;
+      max-width: 45%;
+      padding: 2px 6px;
+      font-size: 0.75rem;
+      opacity: 0.92;
+      pointer-events: none;
+    }
     .tasks {
       grid-area: 3 / 1;
       border-left: 0;
