@@ -6,6 +6,7 @@ import type { Vec3 } from '../src/scene/scene.ts';
 import { CameraRays } from '../src/tracer/camera-rays.ts';
 import type { RtSceneView } from '../src/ui/lab/rt-scene-view.ts';
 import { cameraRigQuaternion, cellCenter, screenGrid } from '../src/view/screen-grid.ts';
+import { cameraViewFov } from '../src/view/view-pose.ts';
 
 // The lab's 3D view as a student uses it: by mouse, keys and the on-screen buttons.
 // The store is read through the element (rt-scene-view's `store`); the picture through
@@ -234,9 +235,12 @@ test('flies to the ray tracer’s camera and back', async ({ page }) => {
   const at = await sceneView(page).evaluate((element: RtSceneView) => ({
     position: element.labView!.camera.position.toArray(),
     fov: element.labView!.camera.fov,
+    aspect: element.labView!.camera.aspect,
   }));
   at.position.forEach((value, i) => expect(value).toBeCloseTo(camera.position[i]!, 4));
-  expect(at.fov).toBeCloseTo(camera.fov, 6);
+  // At the camera's eye, opened up just enough that its whole screen of pixels shows in this view's shape.
+  expect(at.fov).toBeGreaterThanOrEqual(camera.fov);
+  expect(at.fov).toBeCloseTo(cameraViewFov(camera.fov, camera.pixels[0] / camera.pixels[1], at.aspect), 6);
   await expect(page.locator('rt-view-toolbar button[data-command="fly"]')).toContainText('Back to my view');
   await page.screenshot({ path: 'test-results/screens/scene-view-camera.png' });
 
