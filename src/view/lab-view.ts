@@ -1,5 +1,4 @@
-import { currentLocale } from '../i18n/locale.ts';
-import { localize, type LocalizedText } from '../util/localized-text.ts';
+import { itemName } from '../i18n/scene-item-names.ts';
 import { msg, str } from '@lit/localize';
 import {
   BoxHelper,
@@ -325,9 +324,7 @@ export class LabView {
   }
 
   private selectionName({ scene, selection }: LabState): string {
-    const named = (name: LocalizedText | undefined, id: string) => (name === undefined ? id : localize(name, currentLocale()));
-    if (selection?.kind === 'object') return named(scene.objects.find((o) => o.id === selection.id)?.name, selection.id);
-    if (selection?.kind === 'light') return named(scene.lights.find((l) => l.id === selection.id)?.name, selection.id);
+    if (selection?.kind === 'object' || selection?.kind === 'light') return itemName(scene, selection.id);
     return msg("The ray tracer's camera");
   }
 

@@ -1,21 +1,11 @@
 import { msg } from '@lit/localize';
-import type { LightType, Scene, SceneObject, ShapeKind } from '../../scene/scene.ts';
-import { localize, type LocalizedText } from '../../util/localized-text.ts';
-import { currentLocale } from '../../i18n/locale.ts';
+import type { LightType, SceneObject, ShapeKind } from '../../scene/scene.ts';
 import { MESH_ASSET_NAMES, type MeshAssetName } from '../../scene/mesh-assets.ts';
 
 /** The words the panels use for shapes, models and light types (translated, unlike ids), and the scene's own names. */
 
-/** A scene's, an object's or a light's name in the app's language ("Rode bal"), or `fallback` (its id) when it has none. */
-export function shownName(name: LocalizedText | undefined, fallback: string): string {
-  return name === undefined ? fallback : localize(name, currentLocale());
-}
-
-/** The name of the object or light with this id, as the scene list shows it; the id itself when nothing has it. */
-export function itemName(scene: Scene, id: string): string {
-  const item = scene.objects.find((object) => object.id === id) ?? scene.lights.find((light) => light.id === id);
-  return shownName(item?.name, id);
-}
+// The scene's own names live with the language (the 3D view names the selection too).
+export { itemName, shownName } from '../../i18n/scene-item-names.ts';
 
 export function shapeKindName(shape: Exclude<ShapeKind, 'mesh'>): string {
   switch (shape) {
