@@ -1,4 +1,4 @@
-import type { Camera, Light, LightType, Material, RenderSettings, Scene, SceneObject, ShapeKind } from '../scene/scene.ts';
+import type { Camera, Light, LightType, Material, RenderSettings, Scene, SceneObject, ShapeKind, Vec3 } from '../scene/scene.ts';
 import type { RayType } from '../tracer/ray-tree.ts';
 import type { BvhViewOptions, GizmoOptions, RayViewOptions, Selection } from './lab-state.ts';
 
@@ -17,6 +17,27 @@ export interface DebuggerRay {
   lightId: string | null;
   /** The object it leaves from (light, shadow, reflected and refracted rays); null for a primary ray. */
   from: string | null;
+}
+
+/**
+ * What a level, or one of its tasks, shows when it starts (docs/levels.md, "Views"): where
+ * the 3D view looks, which pixel is chosen, the ray filters. The app applies it; it is never
+ * something the learner did, so no goal counts it.
+ */
+export interface DeclaredView {
+  /**
+   * What the 3D view glides to fit: object or light ids, `camera` (the ray tracer's camera
+   * with its screen) and `pixel-rays` (the chosen pixel's whole ray path).
+   */
+  frame?: string[];
+  /** The side the view looks from, towards what it frames (a world direction); by default the side it looks from now. */
+  from?: Vec3;
+  /** Look through the ray tracer's camera, as "Camera view" does (instead of `frame`). */
+  throughCamera?: boolean;
+  /** The pixel to choose, or null for none (all pixels' rays). */
+  pixel?: [number, number] | null;
+  /** Ray options to set; the rest stay as they are. */
+  rays?: Partial<RayViewOptions>;
 }
 
 /**
@@ -42,6 +63,8 @@ export type LabAction =
   | { type: 'pixel.selected'; pixel: [number, number] }
   | { type: 'pixel.deselected' }
   | { type: 'rays.changed'; changes: Partial<RayViewOptions> }
+  /** A level's or task's declared view was applied by the app (see DeclaredView). */
+  | { type: 'view.applied'; view: DeclaredView }
   | { type: 'gizmo.changed'; changes: Partial<GizmoOptions> }
   | { type: 'bvh.changed'; changes: Partial<BvhViewOptions> }
   | { type: 'view.orbited' }

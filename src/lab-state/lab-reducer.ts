@@ -1,7 +1,7 @@
 import { createLight, createObject } from '../scene/scene-defaults.ts';
 import { lightSchema, parseScene } from '../scene/scene-schema.ts';
 import type { Light, Scene } from '../scene/scene.ts';
-import type { LabAction } from './lab-action.ts';
+import type { DeclaredView, LabAction } from './lab-action.ts';
 import { type LabState, BVH_MAX_DEPTH, DEFAULT_BVH_VIEW, DEFAULT_GIZMO, DEFAULT_RAY_VIEW } from './lab-state.ts';
 
 /** The next state, or the unchanged state with the reason an action was refused. */
@@ -26,6 +26,7 @@ export function reduce(state: LabState, action: LabAction): Reduction {
           rays: { ...DEFAULT_RAY_VIEW, colorBlindPalette: state.rays.colorBlindPalette },
           gizmo: { ...DEFAULT_GIZMO },
           bvh: { ...DEFAULT_BVH_VIEW },
+          look: null,
         },
         action.scene,
       );
@@ -68,6 +69,8 @@ export function reduce(state: LabState, action: LabAction): Reduction {
       return { state: { ...state, selectedPixel: null } };
     case 'rays.changed':
       return { state: { ...state, rays: { ...state.rays, ...action.changes } } };
+    case 'view.applied':
+      return applyView(state, action.view);
     case 'gizmo.changed':
       return { state: { ...state, gizmo: { ...state.gizmo, ...action.changes } } };
     case 'bvh.changed': {
@@ -81,6 +84,22 @@ export function reduce(state: LabState, action: LabAction): Reduction {
       // Facts reported by the view and the render window: nothing to change.
       return { state };
   }
+}
+
+/**
+ * A declared view: its pixel and ray options, and its way of looking for the 3D view to
+ * follow (`look`). A pixel outside the screen (the learner made the screen smaller) is left out
+ * rather than refusing the ray options with it: the view is a courtesy, not a command.
+ */
+function applyView(state: LabState, view: DeclaredView): Reduction {
+  const { frame, from, throughCamera, pixel, rays } = view;
+  const asks = frame !== undefined || throughCamera !== undefined;
+  const look = asks ? { ...(frame ? { frame } : {}), ...(from ? { from } : {}), ...(throughCamera ? { throughCamera } : {}) } : state.look;
+  const next = { ...state, look, ...(rays ? { rays: { ...state.rays, ...rays } } : {}) };
+  if (pixel === undefined) return { state: next };
+  if (pixel === null) return { state: { ...next, selectedPixel: null } };
+  const chosen = reduce(next, { type: 'pixel.selected', pixel });
+  return chosen.error ? { state: next } : chosen;
 }
 
 /** Validates the new scene; keeps the old state with the reasons when it is invalid. */

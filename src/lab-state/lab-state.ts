@@ -1,4 +1,5 @@
 import type { Scene } from '../scene/scene.ts';
+import type { DeclaredView } from './lab-action.ts';
 
 /** What is selected in the lab: an object, a light, the ray tracer's camera, or nothing. */
 export type Selection = { kind: 'object'; id: string } | { kind: 'light'; id: string } | { kind: 'camera' } | null;
@@ -56,6 +57,9 @@ export interface GizmoOptions {
   snap: boolean;
 }
 
+/** How a declared view asked the 3D view to look (what it frames, from where, or through the camera). */
+export type ViewLook = Pick<DeclaredView, 'frame' | 'from' | 'throughCamera'>;
+
 /** The one source of truth of the app: everything the view, the panels and the quest engine read. */
 export interface LabState {
   scene: Scene;
@@ -65,6 +69,12 @@ export interface LabState {
   rays: RayViewOptions;
   gizmo: GizmoOptions;
   bvh: BvhViewOptions;
+  /**
+   * The last declared view's way of looking, a new object for each view that asks: the 3D
+   * view follows it when it changes, and at once when it loads after it was set. Null after a
+   * new scene, or a view that only sets pixels and filters.
+   */
+  look: ViewLook | null;
 }
 
 export const DEFAULT_RAY_VIEW: RayViewOptions = {
@@ -92,5 +102,5 @@ export const DEFAULT_GIZMO: GizmoOptions = { mode: 'translate', space: 'world', 
 export const DEFAULT_BVH_VIEW: BvhViewOptions = { show: false, depth: 2, showBounds: false };
 
 export function initialState(scene: Scene): LabState {
-  return { scene, selection: null, selectedPixel: null, rays: { ...DEFAULT_RAY_VIEW }, gizmo: { ...DEFAULT_GIZMO }, bvh: { ...DEFAULT_BVH_VIEW } };
+  return { scene, selection: null, selectedPixel: null, rays: { ...DEFAULT_RAY_VIEW }, gizmo: { ...DEFAULT_GIZMO }, bvh: { ...DEFAULT_BVH_VIEW }, look: null };
 }

@@ -2,7 +2,7 @@ import { z } from 'zod';
 import type { LabActionType } from '../lab-state/lab-action.ts';
 import { describeValue } from '../scene/scene-issues.ts';
 import { wholeNumberIn } from '../scene/scene-schema-parts.ts';
-import { actionFields, LAB_ACTION_TYPES } from './lab-action-schema.ts';
+import { actionFields, APP_ONLY_ACTION, LAB_ACTION_TYPES } from './lab-action-schema.ts';
 import { chosenBy } from './chosen-schema.ts';
 import { COMPARISONS, conditionSchema, problemWithComparison, type Comparison, type JsonValue } from './condition.ts';
 import { isRecord } from '../util/is-record.ts';
@@ -81,6 +81,9 @@ const eventGoalSchema = z
     times: wholeNumberIn([1, 100]).optional(),
   })
   .superRefine((goal, context) => {
+    if (goal.event === APP_ONLY_ACTION) {
+      context.addIssue({ code: 'custom', path: ['event'], input: goal.event, message: 'a level\'s own view is applied by the app, not done by the learner: no goal can wait for it' });
+    }
     // `with` looks into the action, so its paths must start at one of that action's fields.
     const fields = actionFields(goal.event);
     for (const path of Object.keys(goal.with ?? {})) {

@@ -5,6 +5,8 @@ import type { Camera, Light, Material, RenderSettings, SceneObject } from '../sc
 import { sceneSchema } from '../scene/scene-schema.ts';
 import { describeValue } from '../scene/scene-issues.ts';
 import { isRecord } from '../util/is-record.ts';
+import { declaredViewSchema } from './declared-view-schema.ts';
+import { optionChanges } from './option-changes.ts';
 
 /**
  * The app's named actions as level files write them (a task's `solution`, the `event` of a
@@ -21,22 +23,6 @@ const id = () => z.string().min(1);
 /** An object of fields to change; the reducer validates the changed scene. */
 const sceneChanges = <Fields>() =>
   z.custom<Partial<Fields>>((value) => isRecord(value), { error: (issue) => `must be an object of fields to change, got ${describeValue(issue.input)}` });
-
-/** Changes to options that have no schema: each field must exist in `defaults` with the same type. */
-function optionChanges<Options extends object>(defaults: Options) {
-  return z.custom<Partial<Options>>((value) => optionProblems(defaults, value).length === 0, {
-    error: (issue) => optionProblems(defaults, issue.input).join('; '),
-  });
-}
-
-function optionProblems(defaults: object, value: unknown): string[] {
-  if (!isRecord(value)) return [`must be an object of fields to change, got ${describeValue(value)}`];
-  return Object.entries(value).flatMap(([field, given]) => {
-    if (!(field in defaults)) return [`unknown field "${field}" (known: ${Object.keys(defaults).join(', ')})`];
-    const expected = typeof defaults[field as keyof typeof defaults];
-    return typeof given === expected ? [] : [`${field} must be a ${expected}, got ${describeValue(given)}`];
-  });
-}
 
 const selectionSchema = z
   .discriminatedUnion('kind', [
@@ -63,6 +49,7 @@ export const labActionSchema = z.discriminatedUnion('type', [
   z.strictObject({ type: z.literal('pixel.selected'), pixel: z.tuple([z.number(), z.number()]) }),
   fact('pixel.deselected'),
   z.strictObject({ type: z.literal('rays.changed'), changes: optionChanges(DEFAULT_RAY_VIEW) }),
+  z.strictObject({ type: z.literal('view.applied'), view: declaredViewSchema }),
   z.strictObject({
     type: z.literal('gizmo.changed'),
     changes: z.strictObject({
@@ -99,6 +86,9 @@ export const labActionSchema = z.discriminatedUnion('type', [
   }),
   z.strictObject({ type: z.literal('debugger.term-clicked'), term: z.enum(DEBUGGER_TERMS), lightId: id().nullable() }),
 ]);
+
+/** The action only the app dispatches (a declared view): no goal waits for it, no solution performs it. */
+export const APP_ONLY_ACTION = 'view.applied' satisfies LabActionType;
 
 /** Every action type, for the `event` of a goal. */
 export const LAB_ACTION_TYPES = labActionSchema.options.map((option) => option.shape.type.value);

@@ -1,7 +1,10 @@
 import { initialState, type LabState } from '../lab-state/lab-state.ts';
+import type { DeclaredView } from '../lab-state/lab-action.ts';
 import type { Scene } from '../scene/scene.ts';
 import { formatIssues } from '../scene/scene-issues.ts';
+import { FRAMED_PARTS } from './declared-view-schema.ts';
 import { goalParts, kindOfGoal } from './goal.ts';
+import { APP_ONLY_ACTION } from './lab-action-schema.ts';
 import { ALWAYS_SHOWN, partsOfTarget, type GuideTarget } from './lab-controls.ts';
 import type { Level } from './level-schema.ts';
 import { problemWithPath } from './state-path.ts';
@@ -30,6 +33,8 @@ export function levelRules(level: Level): string[] {
     ...mandatoryCount(level),
     ...level.tasks.flatMap((_, index) => taskProblems(level, index, sample)),
     ...pixelPickingProblems(level),
+    ...(level.view ? viewProblems(level.scene, level.view, ['view']) : []),
+    ...level.tasks.flatMap((task, index) => (task.view ? viewProblems(level.scene, task.view, ['tasks', index, 'view']) : [])),
     ...badgeProblems(level),
   ];
   return formatIssues(problems.map(({ path, message }) => ({ code: 'custom', path, message })));
@@ -62,6 +67,9 @@ function taskProblems(level: Level, index: number, sample: LabState): Problem[] 
   if (kind === 'do') {
     if (!task.solution) problems.push({ path: at('solution'), message: 'is required: the actions that complete this task ("show me" performs them)' });
     if (task.hints.length === 0) problems.push({ path: at('hints'), message: 'must have at least 1 hint for a task done in the lab' });
+    task.solution?.forEach((action, step) => {
+      if (action.type === APP_ONLY_ACTION) problems.push({ path: at('solution', step), message: 'a view is the task\'s "view", not a step of its solution' });
+    });
   } else if (task.solution) {
     problems.push({ path: at('solution'), message: `a ${kind} task has no solution: ${kind === 'quiz' ? 'its answer is in its goal' : 'it is done with Next'}` });
   }
@@ -128,6 +136,25 @@ function pixelPickingProblems(level: Level): Problem[] {
   const picksPixels = level.tasks.some((task) => task.solution?.some((action) => action.type === 'pixel.selected'));
   if (picksPixels && !level.ui.panels.includes('screen-preview')) {
     problems.push({ path: ['ui', 'panels'], message: 'must include "screen-preview": a task picks a pixel, and the flat preview is where one is picked exactly' });
+  }
+  return problems;
+}
+
+/**
+ * A view frames things the scene has, chooses a pixel its screen has, and frames a pixel's
+ * rays only together with the pixel it chooses (an earlier task's pick may have been undone).
+ */
+function viewProblems(scene: Scene, view: DeclaredView, at: (string | number)[]): Problem[] {
+  const problems: Problem[] = [];
+  const names = [...FRAMED_PARTS, ...scene.objects.map((thing) => thing.id), ...scene.lights.map((thing) => thing.id)];
+  (view.frame ?? []).forEach((name, index) => {
+    if (!names.includes(name)) problems.push({ path: [...at, 'frame', index], message: `must be one of ${names.join(', ')}, got "${name}"` });
+  });
+  if (view.pixel) {
+    for (const message of pixelProblems(scene, view.pixel.join(','))) problems.push({ path: [...at, 'pixel'], message });
+  }
+  if (view.frame?.includes('pixel-rays') && !view.pixel) {
+    problems.push({ path: [...at, 'frame'], message: '"pixel-rays" needs the view to choose its pixel ("pixel": [column, row])' });
   }
   return problems;
 }

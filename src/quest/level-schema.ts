@@ -3,6 +3,7 @@ import { sceneSchema } from '../scene/scene-schema.ts';
 import { describeIssue, describeValue, formatIssues } from '../scene/scene-issues.ts';
 import { listOf, wholeNumberIn } from '../scene/scene-schema-parts.ts';
 import { labActionSchema } from './lab-action-schema.ts';
+import { declaredViewSchema } from './declared-view-schema.ts';
 import { goalSchema } from './goal.ts';
 import { kebabId } from './kebab-id.ts';
 import { isGuideTarget, LAB_CONTROLS, UI_PANELS, type GuideTarget } from './lab-controls.ts';
@@ -44,6 +45,7 @@ const taskSchema = z
     hints: listOf(localizedTextSchema, [0, 5]).default([]).describe('Text hints, shown one at a time (the first rung of the hint ladder).'),
     guide: guideTargetSchema.optional().describe('The control the second rung rings.'),
     solution: listOf(labActionSchema, [1, SOLUTION_STEPS_MAX]).optional().describe('The actions that complete the task: "show me" performs them.'),
+    view: declaredViewSchema.optional().describe('What the lab shows when this task becomes the current one.'),
   })
   .transform((task) => ({ ...task, points: task.points ?? (task.mandatory ? DEFAULT_POINTS.mandatory : DEFAULT_POINTS.optional) }));
 
@@ -84,6 +86,7 @@ export const levelSchema = z.strictObject({
   intro: z.strictObject({ text: localizedTextSchema, more: localizedTextSchema.optional() }),
   scene: sceneSchema,
   ui: uiSchema.prefault({}),
+  view: declaredViewSchema.optional().describe('What the lab shows when the level opens (a task\'s own view comes on top).'),
   tasks: listOf(taskSchema, [MANDATORY_TASKS[0], TASKS_MAX]),
   badges: listOf(levelBadgeSchema, [0, BADGES_MAX]).default([]),
 });

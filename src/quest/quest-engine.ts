@@ -3,6 +3,7 @@ import type { LabState } from '../lab-state/lab-state.ts';
 import type { Scene } from '../scene/scene.ts';
 import { sameBadge, type Badge, type EarnedBadge } from './badges.ts';
 import { EventLog, systemClock, type HintStep, type HowCompleted, type LoggedEvent, type QuestClock, type QuestEvent } from './event-log.ts';
+import { APP_ONLY_ACTION } from './lab-action-schema.ts';
 import { checkGoal, isRightAnswer, NO_EVENTS, tallyAction, touchesGoal, type EventTally } from './goal-check.ts';
 import { kindOfGoal, type TaskKind } from './goal.ts';
 import { canShowMe, climb, nextHintStep, NO_HINTS, type HintProgress } from './hint-ladder.ts';
@@ -261,6 +262,8 @@ export class QuestEngine {
       }
       const before = this.lastState;
       this.lastState = state;
+      // A declared view is the app's doing: it neither starts a task nor counts towards one.
+      if (action.type === APP_ONLY_ACTION) return this.publish();
       for (const [taskId, tally] of [...active.tallies]) {
         const task = active.level.tasks.find((candidate) => candidate.id === taskId);
         // A task completed by an earlier one in this loop (the next current task) is no longer watched.
