@@ -15,13 +15,15 @@ import { assignmentCatalog } from './assignment-catalog.ts';
 import { playShowMe, showMeSteps, type ShowMeStage } from './show-me-player.ts';
 import type { Store } from '../lab-state/store.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
+import { TaskViews } from './task-views.ts';
 
 /**
  * The game's controller: ties the store (the lab), the quest engine (the rules) and the
  * progress store (localStorage) together, and tells the UI when anything changed.
  *
  * - Every store action goes to the engine; every engine change is saved at once.
- * - Opening a level loads its scene (or the one the learner left) with `scene.loaded`.
+ * - Opening a level loads its scene (or the one the learner left) with `scene.loaded`, then
+ *   applies its declared view, and each task's view when it becomes current (task-views.ts).
  * - The free lab plays the sandbox scene, saved as the learner edits it.
  * - An assignment gets its own catalog, required tasks, locale and progress key.
  * - A participant code and the playthrough's attempt id live next to the progress, in
@@ -90,6 +92,7 @@ export class QuestSession {
   private readonly cleanup: (() => void)[] = [];
   private stopEngine: () => void = () => {};
   private stopShowMe: () => void = () => {};
+  private readonly views = new TaskViews();
   private sandboxTimer: ReturnType<typeof setTimeout> | undefined;
   private pendingSandbox: Scene | null = null;
   private lastSaveError: string | null = null;
@@ -197,6 +200,8 @@ export class QuestSession {
     if (opened.ok) {
       this.modeNow = { kind: 'level', id };
       this.store.dispatch({ type: 'scene.loaded', scene: opened.scene });
+      const view = this.views.opened(opened.level, this.engineNow.level?.current?.task ?? null);
+      if (view) this.store.dispatch(view);
     }
     this.notify();
     return opened;
@@ -342,6 +347,7 @@ export class QuestSession {
     this.stopEngine = engine.subscribe(() => {
       this.save();
       this.notify();
+      this.followTask();
     });
   }
 
@@ -354,9 +360,21 @@ export class QuestSession {
     this.notify();
   }
 
+  /**
+   * Applies the view of a task that has just become current. The engine moves on while the
+   * store is still telling its listeners about the action that completed the last task, so
+   * the view waits for that to end: every listener then sees the two actions in order.
+   */
+  private followTask(): void {
+    const level = this.engineNow.level;
+    const view = this.views.changed(level?.level ?? null, level?.current?.task ?? null);
+    if (view) queueMicrotask(() => this.store.dispatch(view));
+  }
+
   /** Stops what belongs to the mode being left: a "show me" still playing, the sandbox not yet saved. */
   private leaveMode(): void {
     this.stopShowMe();
+    this.views.closed();
     this.flushSandbox();
   }
 

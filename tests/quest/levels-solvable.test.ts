@@ -2,6 +2,8 @@ import { existsSync, readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { initialState } from '../../src/lab-state/lab-state.ts';
 import { Store } from '../../src/lab-state/store.ts';
+import { TaskViews } from '../../src/app/task-views.ts';
+import { checkGoal, NO_EVENTS } from '../../src/quest/goal-check.ts';
 import { kindOfGoal } from '../../src/quest/goal.ts';
 import { loadLevels } from '../../src/quest/level-index.ts';
 import { newProgress } from '../../src/quest/progress.ts';
@@ -13,7 +15,9 @@ import { FakeClock } from '../support/quest-fixtures.ts';
  * Learn Git Branching's levels.spec.js does: each task's solution goes through the real
  * reducer (the store) and the real quest engine, in the level's order, and must complete
  * that task as done by the learner. A task that is already complete before its solution
- * runs would complete itself in the game; that fails too.
+ * runs would complete itself in the game; that fails too. The level's and tasks' declared
+ * views are applied as the game applies them (task-views.ts), and a view must not do its
+ * task's work: after it, the task's goal must still be unmet.
  */
 
 const levelsFolder = new URL('../../levels/', import.meta.url);
@@ -40,10 +44,17 @@ for (const chapter of catalog.chapters) {
         const store = new Store(initialState(opened.scene));
         store.subscribe(engine.observe);
         store.dispatch({ type: 'scene.loaded', scene: opened.scene });
+        const views = new TaskViews();
+        const applyView = (action: ReturnType<TaskViews['opened']>) => {
+          if (action) expect(store.dispatch(action), 'the declared view was refused').toBeUndefined();
+        };
+        applyView(views.opened(level, engine.level?.current?.task ?? null));
 
         const statusOf = (taskId: string) => engine.level?.tasks.find((view) => view.task.id === taskId)?.status;
         for (const task of level.tasks) {
+          applyView(views.changed(level, engine.level?.current?.task ?? null));
           expect(statusOf(task.id), `task "${task.id}" completed before its solution ran`).toMatch(/^(current|open)$/);
+          if (kindOfGoal(task.goal) === 'do') expect(checkGoal(task.goal, store.state, NO_EVENTS), `task "${task.id}" is done by its view`).toBe(false);
           const kind = kindOfGoal(task.goal);
           if ('quiz' in task.goal) expect(engine.answerQuiz(task.id, task.goal.quiz.answer)).toEqual({ correct: true });
           else if (kind === 'info') expect(engine.next(), `info step "${task.id}" was not the current task`).toBe(true);
