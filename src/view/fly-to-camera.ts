@@ -29,6 +29,11 @@ export class CameraFlight {
     return this.home !== null;
   }
 
+  /** Whether a flight or glide is under way. */
+  get flying(): boolean {
+    return this.cancel !== null;
+  }
+
   /** Flies to `camera`; `arrived` runs when the flight ends. */
   flyTo(camera: ViewPose, arrived: () => void): void {
     if (this.home === null) this.home = this.controls.pose;

@@ -39,6 +39,7 @@ import { type ArrowTarget, keyCommand, type ViewCommand } from './view-commands.
 import { ViewControls } from './view-controls.ts';
 import { rayPathPoints } from './ray-path-points.ts';
 import { cameraViewFov, framingPose, type ViewPose } from './view-pose.ts';
+import { framedPoints, LookFollower } from './view-look.ts';
 
 /** The hovered ray and where the pointer is, for a tooltip next to it. */
 export interface RayHoverDetail {
@@ -74,6 +75,9 @@ const BUTTON_ZOOM = 1.25;
 const INSIDE_CAMERA = 0.35;
 const SELECTION_COLOR = 0x3b82f6;
 
+/** The 3D view's own vertical field of view (degrees), which declared views frame with. */
+const VIEW_FOV = 45;
+
 /**
  * The lab's 3D view: the scene from the store drawn with three.js (objects with a Phong look,
  * lights as gizmos, the ray tracer's camera and its screen), navigation, selection, the
@@ -87,7 +91,7 @@ export class LabView {
   readonly renderer: WebGLRenderer;
   readonly scene = new ThreeScene();
   /** The user's viewpoint (not the ray tracer's camera). */
-  readonly camera = new PerspectiveCamera(45, 1, 0.05, 500);
+  readonly camera = new PerspectiveCamera(VIEW_FOV, 1, 0.05, 500);
   private readonly scheduler: FrameScheduler;
   private readonly controls: ViewControls;
   private readonly gizmo: TransformGizmo;
@@ -123,6 +127,9 @@ export class LabView {
   /** The camera's pixels' latest rays (for "show its rays"). */
   private screenRays: ScreenRays | null = null;
   private sized = false;
+  /** A scene was loaded and nothing drawn since: a declared look then jumps instead of gliding. */
+  private sceneJustLoaded = false;
+  private readonly look: LookFollower;
 
   constructor(
     readonly canvas: HTMLCanvasElement,
@@ -150,8 +157,24 @@ export class LabView {
       dragEnded: (object, snapped) => this.commitDrag(object, snapped),
     });
     this.controls = new ViewControls(this.camera, canvas, this.scheduler, (action) => this.dispatch(action));
-    this.controls.orbit.addEventListener('start', () => this.flight.userMoved());
+    this.controls.orbit.addEventListener('start', () => {
+      this.flight.userMoved();
+      this.look.userMoved();
+    });
     this.flight = new CameraFlight(this.controls, this.scheduler, (atCamera) => this.emit('flight', atCamera));
+    this.look = new LookFollower({
+      pointsOf: (name) => framedPoints(name, this.store.state.scene, (id) => this.objects.objectOf(id), this.cameraScreen.rig),
+      pixelRayPoints: () => this.pixelRayPoints(),
+      pose: () => this.controls.pose,
+      fov: VIEW_FOV,
+      aspect: () => this.camera.aspect,
+      moveTo: (pose, glide) => {
+        if (glide) return this.flight.glide(pose);
+        this.flight.forget();
+        this.controls.setPose(pose);
+      },
+      throughCamera: () => this.flight.flyTo(this.tracerCameraPose(), () => {}),
+    });
     this.objects = new SceneSync(meshLoader, (error) => {
       if (error) this.emit('message', msg(str`A model could not be loaded: ${error}`));
       this.requestRender();
@@ -184,10 +207,17 @@ export class LabView {
       if (action.type === 'scene.loaded') {
         this.flight.forget();
         this.frameScene();
+        this.sceneJustLoaded = true;
       }
     });
     this.update(store.state);
     this.frameScene();
+    this.look.follow(store.state.look, false);
+  }
+
+  /** Whether the view is still on its way: a flight or glide under way, or a framing waiting for its pixel's rays. */
+  get moving(): boolean {
+    return this.flight.flying || this.look.waitingForRays;
   }
 
   /** How many frames were drawn so far (idle means it stops growing). */
@@ -220,7 +250,10 @@ export class LabView {
     this.camera.aspect = width / height;
     this.camera.updateProjectionMatrix();
     // The first framing guessed a square view; frame again for the real shape.
-    if (first) this.frameScene();
+    if (first) {
+      this.frameScene();
+      this.look.follow(this.store.state.look, false);
+    }
     // A resized canvas is blank until drawn: draw now, not next frame, so it never flickers.
     this.scheduler.renderNow();
   }
@@ -229,6 +262,7 @@ export class LabView {
   setScreenRays(rays: ScreenRays): void {
     this.screenRays = rays;
     this.cameraScreen.setScreenRays(rays);
+    this.look.raysArrived();
     this.requestRender();
   }
 
@@ -353,16 +387,21 @@ export class LabView {
    * pixel's whole ray path (and the camera it starts at) fits the view.
    */
   showPixelRays(): void {
-    const pixel = this.store.state.selectedPixel;
-    const trace = pixel && this.screenRays?.traces.find((candidate) => candidate.pixel[0] === pixel[0] && candidate.pixel[1] === pixel[1]);
-    if (!trace) {
+    const points = this.pixelRayPoints();
+    if (!points) {
       this.emit('message', msg('Choose a pixel first: its rays are what this shows.'));
       return;
     }
-    const points = [...rayPathPoints(trace), this.store.state.scene.camera.position];
     const pose = this.controls.pose;
     const direction = pose.position.clone().sub(pose.target).normalize();
     this.flight.glide(framingPose(points, points, this.camera.fov, this.camera.aspect, direction));
+  }
+
+  /** The chosen pixel's whole ray path and the camera it starts at, or null without a pixel or its trace. */
+  private pixelRayPoints(): Vec3[] | null {
+    const pixel = this.store.state.selectedPixel;
+    const trace = pixel && this.screenRays?.traces.find((candidate) => candidate.pixel[0] === pixel[0] && candidate.pixel[1] === pixel[1]);
+    return trace ? [...rayPathPoints(trace), this.store.state.scene.camera.position] : null;
   }
 
   /** Glides back to where the view was before flying to the camera. */
@@ -425,6 +464,8 @@ export class LabView {
   private update(state: LabState): void {
     const previous = this.previous;
     this.previous = state;
+    // A level's first view is where it starts, not a flight away from the scene's framing.
+    if (previous && state.look !== previous.look) this.look.follow(state.look, !this.sceneJustLoaded);
     if (state.scene !== previous?.scene) {
       this.objects.sync(state.scene);
       this.rasterLights.sync(state.scene);
@@ -508,6 +549,7 @@ export class LabView {
     if (this.selectionBox.visible && this.gizmo.dragging) this.outlineSelection(this.store.state, this.selectedObject(this.store.state));
     this.renderer.render(this.scene, this.camera);
     this.frames++;
+    this.sceneJustLoaded = false;
   }
 
   // --- pointer and keys ---

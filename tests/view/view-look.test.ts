@@ -1,0 +1,88 @@
+import { Vector3 } from 'three';
+import { describe, expect, it } from 'vitest';
+import type { Vec3 } from '../../src/scene/scene.ts';
+import { LookFollower, PIXEL_RAYS_WAIT_MS, type LookStage } from '../../src/view/view-look.ts';
+import type { ViewPose } from '../../src/view/view-pose.ts';
+
+/** A stage that records where it was sent; the ball is at x = 2, the lamp at y = 4. */
+function stage(rays: Vec3[] | null = null) {
+  const moves: { pose: ViewPose; glide: boolean }[] = [];
+  let throughCamera = 0;
+  let pixelRays = rays;
+  const here: ViewPose = { position: new Vector3(0, 0, 10), target: new Vector3(), fov: 45 };
+  const fake: LookStage = {
+    pointsOf: (name) => ({ ball: [[2, 0, 0]] as Vec3[], lamp: [[0, 4, 0]] as Vec3[] })[name] ?? [],
+    pixelRayPoints: () => pixelRays,
+    pose: () => here,
+    fov: 45,
+    aspect: () => 1.5,
+    moveTo: (pose, glide) => moves.push({ pose, glide }),
+    throughCamera: () => throughCamera++,
+  };
+  return { fake, moves, setRays: (points: Vec3[]) => (pixelRays = points), throughCamera: () => throughCamera };
+}
+
+describe('following a declared look', () => {
+  it('frames what it names from the side it names, far enough back to fit them', () => {
+    const { fake, moves } = stage();
+    new LookFollower(fake).follow({ frame: ['ball', 'lamp'], from: [0, 0, 3] }, true);
+    expect(moves).toHaveLength(1);
+    const { pose, glide } = moves[0]!;
+    expect(glide).toBe(true);
+    expect(pose.target.toArray()).toEqual([1, 2, 0]);
+    // From +z only: the eye is straight in front of the target.
+    expect(pose.position.x).toBeCloseTo(1);
+    expect(pose.position.y).toBeCloseTo(2);
+    // The two points are √5 from the target: r / sin(22.5°) away.
+    expect(pose.position.z).toBeCloseTo(Math.sqrt(5) / Math.sin((22.5 * Math.PI) / 180));
+  });
+
+  it('keeps the side it looks from now when the look names none', () => {
+    const { fake, moves } = stage();
+    new LookFollower(fake).follow({ frame: ['ball'] }, false);
+    const { pose, glide } = moves[0]!;
+    expect(glide).toBe(false);
+    expect(pose.position.x).toBeCloseTo(2);
+    expect(pose.position.z).toBeGreaterThan(0);
+  });
+
+  it('looks through the camera, and does nothing for an empty look or unknown names', () => {
+    const { fake, moves, throughCamera } = stage();
+    const follower = new LookFollower(fake);
+    follower.follow({ throughCamera: true }, true);
+    follower.follow(null, true);
+    follower.follow({ frame: ['teapot'] }, true);
+    expect(throughCamera()).toBe(1);
+    expect(moves).toEqual([]);
+  });
+
+  it('frames a pixel\'s rays when their trace comes in, and again for a newer one, until the learner moves', () => {
+    let time = 0;
+    const { fake, moves, setRays } = stage();
+    const follower = new LookFollower(fake, () => time);
+    follower.follow({ frame: ['pixel-rays'] }, true);
+    expect(moves).toEqual([]);
+    expect(follower.waitingForRays).toBe(true);
+    setRays([[0, 0, 0], [0, 0, -6]]);
+    follower.raysArrived();
+    setRays([[0, 0, 0], [0, 0, -8]]);
+    follower.raysArrived();
+    expect(moves.map((move) => move.pose.target.z)).toEqual([-3, -4]);
+    follower.userMoved();
+    follower.raysArrived();
+    expect(moves).toHaveLength(2);
+    expect(follower.waitingForRays).toBe(false);
+  });
+
+  it('stops waiting for a pixel\'s rays after a while', () => {
+    let time = 0;
+    const { fake, moves, setRays } = stage();
+    const follower = new LookFollower(fake, () => time);
+    follower.follow({ frame: ['pixel-rays'] }, true);
+    time = PIXEL_RAYS_WAIT_MS + 1;
+    setRays([[0, 0, 0], [0, 0, -6]]);
+    follower.raysArrived();
+    expect(moves).toEqual([]);
+    expect(follower.waitingForRays).toBe(false);
+  });
+});
