@@ -86,7 +86,7 @@ export class LabServices {
 
   /** How many rays and cones are drawn now (none before a view is attached). */
   get drawn(): RayPoolStats {
-    return this.layers?.rays.stats ?? { rays: 0, cones: 0, drawCalls: 0, instanceBytes: 0 };
+    return this.layers?.rays.stats ?? { rays: 0, cones: 0, arrows: 0, drawCalls: 0, instanceBytes: 0 };
   }
 
   /**

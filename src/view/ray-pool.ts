@@ -23,6 +23,7 @@ import type { RayViewOptions } from '../lab-state/lab-state.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
 import { focusedRays, type RayFocus } from './ray-focus.ts';
 import type { RayHover, RayLayer } from './ray-layer.ts';
+import { RayExtras } from './ray-extras.ts';
 import { ALPHA_ATTRIBUTE, createRayMaterial, DASH_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, type TravelUniform, type ViewHeightUniform } from './ray-shader.ts';
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
 import { RAY_COLOR_KEYS, RAY_DASHES } from './ray-palette.ts';
@@ -64,7 +65,9 @@ export interface RayPoolStats {
   rays: number;
   /** Area cones drawn. */
   cones: number;
-  /** Meshes that issue a draw call: at most 2, whatever the number of rays. */
+  /** Arrowheads drawn (one per ray of a chosen pixel; none for a whole screen). */
+  arrows: number;
+  /** Meshes that issue a draw call: at most 4 (rays, cones, and a chosen pixel's arrowheads and hidden parts), whatever the number of rays. */
   drawCalls: number;
   /** Bytes of per-instance buffers allocated (both meshes, at their pooled capacity). */
   instanceBytes: number;
@@ -193,6 +196,9 @@ export class RayPool implements RayLayer {
   private readonly coneMaterial = createRayMaterial('cone', this.travel, this.viewHeight);
   private readonly cylinders = new InstanceBuffers('cylinder', this.rayMaterial, this.object);
   private readonly cones = new InstanceBuffers('cone', this.coneMaterial, this.object);
+  private readonly arrowMaterial = createRayMaterial('arrow', this.travel, this.viewHeight);
+  private readonly hiddenMaterial = createRayMaterial('hidden', this.travel, this.viewHeight);
+  private readonly extras = new RayExtras(this.object, this.arrowMaterial, this.hiddenMaterial);
   private readonly drawn = new DrawnRays();
   private animation: AnimationInputs = { rays: null, selectedPixel: null, animate: false, pixelByPixel: false };
   private speed = 1;
@@ -209,10 +215,11 @@ export class RayPool implements RayLayer {
   }
 
   get stats(): RayPoolStats {
-    const meshes = [this.cylinders.mesh, this.cones.mesh];
+    const meshes = this.object.children.filter((child): child is InstancedMesh => child instanceof InstancedMesh);
     return {
       rays: this.cylinders.mesh.count,
       cones: this.cones.mesh.count,
+      arrows: this.extras.count,
       drawCalls: meshes.filter((mesh) => mesh.visible && mesh.count > 0).length,
       instanceBytes: (this.cylinders.capacity + this.cones.capacity) * FLOATS_PER_INSTANCE * 4,
     };
@@ -232,6 +239,7 @@ export class RayPool implements RayLayer {
     const drawn = focus ? focusedRays(focus, options, this.drawn, this.style) : visibleRays(rays, options, selectedPixel, this.drawn, this.style);
     this.writeCylinders(drawn.rays);
     this.writeCones(drawn.cones);
+    this.extras.update(this.cylinders.mesh, drawn.rays.count, focus !== null || selectedPixel !== null);
     // Opaque rays write depth, so rays hide each other correctly; see-through ones do not,
     // so the rays behind them still show. (The material stays `transparent` either way:
     // three compiles opaque materials with alpha forced to 1, and switching compiles a new
@@ -270,10 +278,10 @@ export class RayPool implements RayLayer {
   }
 
   dispose(): void {
+    this.extras.dispose();
     this.cylinders.dispose();
     this.cones.dispose();
-    this.rayMaterial.dispose();
-    this.coneMaterial.dispose();
+    for (const material of [this.rayMaterial, this.coneMaterial, this.arrowMaterial, this.hiddenMaterial]) material.dispose();
     this.object.clear();
   }
 

@@ -11,8 +11,13 @@
  *   canvas height in CSS px, set before each draw);
  * - `aDash` = (dash, gap) in metres along a cylinder (0: solid; ray-palette.ts RAY_DASHES):
  *   the fragment shader discards the gaps, measured from the ray's start.
+ *
+ * Two variants draw one pixel's rays more plainly (ray-extras.ts), from the cylinders' own
+ * instances: `arrow` puts an arrowhead of a fixed size on screen halfway along each ray,
+ * pointing the way it travels, drawn over everything; `hidden` draws, faintly, the parts of the rays that objects
+ * hide (it passes only where something nearer was drawn: depth test "greater").
  */
-import { DoubleSide, MeshBasicMaterial, Vector2, type WebGLProgramParametersWithUniforms } from 'three';
+import { DoubleSide, GreaterDepth, MeshBasicMaterial, Vector2, type WebGLProgramParametersWithUniforms } from 'three';
 
 export const ALPHA_ATTRIBUTE = 'aAlpha';
 export const GROWTH_ATTRIBUTE = 'aGrowth';
@@ -20,6 +25,16 @@ export const DASH_ATTRIBUTE = 'aDash';
 
 /** The thinnest a ray is drawn, in CSS px (issue 9: readable at a level's starting view). */
 export const RAY_MIN_WIDTH_PX = 3;
+
+/** An arrowhead's size on screen, in CSS px: plainly a head on a 3 px ray, small beside an object. */
+export const ARROW_LENGTH_PX = 14;
+export const ARROW_WIDTH_PX = 10;
+
+/** Where along its grown part a ray's arrowhead points from (its tip), as a share of it. */
+export const ARROW_AT = 0.55;
+
+/** How strongly the hidden parts of a chosen pixel's rays show through what hides them. */
+export const HIDDEN_ALPHA = 0.35;
 
 /** Travel that every ray has reached: the animation is off or over. */
 export const FULLY_GROWN = 1e30;
@@ -38,7 +53,7 @@ attribute vec2 ${GROWTH_ATTRIBUTE};
 uniform float uTravel;
 uniform float uViewHeight;
 varying float vRayAlpha;
-#ifndef RAY_CONE
+#if !defined(RAY_CONE) && !defined(RAY_ARROW)
 attribute vec2 ${DASH_ATTRIBUTE};
 varying vec2 vRayDash;
 varying float vRayAlong;
@@ -46,8 +61,18 @@ varying float vRayAlong;
 
 const VERTEX_GROW = /* glsl */ `#include <begin_vertex>
 float rayGrown = clamp((uTravel - ${GROWTH_ATTRIBUTE}.x) / max(${GROWTH_ATTRIBUTE}.y, 1e-6), 0.0, 1.0);
-#ifdef RAY_CONE
+#if defined(RAY_CONE)
 transformed *= rayGrown;
+#elif defined(RAY_ARROW)
+// The head's tip ARROW_AT of the way along the grown ray; its size is fixed in screen pixels
+// (at the tip's depth), but never longer than half of what has grown.
+vec4 rayTipView = modelViewMatrix * instanceMatrix * vec4(0.0, 0.0, ${ARROW_AT.toFixed(2)} * rayGrown, 1.0);
+float rayPixel = 2.0 * max(-rayTipView.z, 1e-4) / (projectionMatrix[1][1] * max(uViewHeight, 1.0));
+float rayLength = max(length((modelViewMatrix * instanceMatrix * vec4(0.0, 0.0, 1.0, 0.0)).xyz), 1e-6);
+float rayRadius = max(length((modelViewMatrix * instanceMatrix * vec4(1.0, 0.0, 0.0, 0.0)).xyz), 1e-9);
+float headLength = min(${ARROW_LENGTH_PX.toFixed(1)} * rayPixel, 0.5 * rayLength * rayGrown);
+float headRadius = 0.5 * ${ARROW_WIDTH_PX.toFixed(1)} * rayPixel * headLength / (${ARROW_LENGTH_PX.toFixed(1)} * rayPixel);
+transformed = vec3(position.xy * headRadius / rayRadius, ${ARROW_AT.toFixed(2)} * rayGrown + position.z * headLength / rayLength);
 #else
 transformed.z *= rayGrown;
 // A pixel at view depth d spans 2 d tan(fov / 2) / H, and projectionMatrix[1][1] = 1 / tan(fov / 2).
@@ -63,14 +88,17 @@ vRayAlpha = ${ALPHA_ATTRIBUTE};`;
 
 const FRAGMENT_HEAD = /* glsl */ `#include <common>
 varying float vRayAlpha;
-#ifndef RAY_CONE
+#if !defined(RAY_CONE) && !defined(RAY_ARROW)
 varying vec2 vRayDash;
 varying float vRayAlong;
 #endif`;
 
 const FRAGMENT_ALPHA = /* glsl */ `#include <color_fragment>
 diffuseColor.a *= vRayAlpha;
-#ifndef RAY_CONE
+#ifdef RAY_HIDDEN
+diffuseColor.a *= ${HIDDEN_ALPHA.toFixed(2)};
+#endif
+#if !defined(RAY_CONE) && !defined(RAY_ARROW)
 if (vRayDash.x > 0.0 && mod(vRayAlong, vRayDash.x + vRayDash.y) > vRayDash.x) discard;
 #endif`;
 
@@ -98,7 +126,7 @@ export function patchRayShader(
  * A ray material. Cones are seen from inside and out (double-sided) in one pass: the
  * instances are not sorted anyway, and one pass keeps them at one draw call.
  */
-export function createRayMaterial(kind: 'cylinder' | 'cone', travel: TravelUniform, viewHeight: ViewHeightUniform): MeshBasicMaterial {
+export function createRayMaterial(kind: 'cylinder' | 'cone' | 'arrow' | 'hidden', travel: TravelUniform, viewHeight: ViewHeightUniform): MeshBasicMaterial {
   const material = new MeshBasicMaterial({ color: 0xffffff });
   // Always blended, as alpha comes per instance; ray-pool.ts turns depthWrite off for see-through rays.
   material.transparent = true;
@@ -106,6 +134,15 @@ export function createRayMaterial(kind: 'cylinder' | 'cone', travel: TravelUnifo
     material.defines = { RAY_CONE: '' };
     material.side = DoubleSide;
     material.forceSinglePass = true;
+    material.depthWrite = false;
+  } else if (kind === 'arrow') {
+    material.defines = { RAY_ARROW: '' };
+    // Over everything: a head behind the camera's screen or an object still says which way its ray goes.
+    material.depthTest = false;
+    material.depthWrite = false;
+  } else if (kind === 'hidden') {
+    material.defines = { RAY_HIDDEN: '' };
+    material.depthFunc = GreaterDepth;
     material.depthWrite = false;
   }
   material.onBeforeCompile = (shader) => patchRayShader(shader, travel, viewHeight);

@@ -58,7 +58,7 @@ describe('the ray debugger’s focus (ray-focus.ts)', () => {
     const cylinders = pool.object.getObjectByName(RAY_CYLINDERS_NAME) as InstancedMesh;
     const alpha = cylinders.geometry.getAttribute(ALPHA_ATTRIBUTE) as InstancedBufferAttribute;
     const growth = cylinders.geometry.getAttribute(GROWTH_ATTRIBUTE) as InstancedBufferAttribute;
-    expect(pool.stats).toMatchObject({ rays: 2, cones: 0, drawCalls: 1 });
+    expect(pool.stats).toMatchObject({ rays: 2, cones: 0, arrows: 2, drawCalls: 3 });
     expect([alpha.getX(0), alpha.getX(1)]).toEqual([Math.fround(DIMMED_ALPHA), 1]);
     expect(growth.getX(1)).toBe(0);
     // It grows over its 3 m at 4 m/s, then stops asking for frames.

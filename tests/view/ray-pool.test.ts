@@ -1,3 +1,4 @@
+import { RAY_ARROWS_NAME, RAY_HIDDEN_NAME } from '../../src/view/ray-extras.ts';
 import { describe, expect, it } from 'vitest';
 import { InstancedMesh, Matrix4, Raycaster, ShaderLib, Vector3, type InstancedBufferAttribute, type MeshBasicMaterial } from 'three';
 import { DEFAULT_RAY_VIEW, type RayViewOptions } from '../../src/lab-state/lab-state.ts';
@@ -132,7 +133,26 @@ describe('RayPool instances', () => {
     expect(material().version).toBe(version);
   });
 
-  it('keeps the draw calls at 2 for 1k, 10k and 50k rays', () => {
+  it('draws a chosen pixel\'s rays with arrowheads and their hidden parts, from the rays\' own buffers, also after they grow', () => {
+    const pool = new RayPool();
+    const rays = syntheticScreen(1_000);
+    pool.update(rays, options(), [0, 0]);
+    const chosen = pool.stats.rays;
+    expect(chosen).toBeGreaterThan(0);
+    expect(pool.stats).toMatchObject({ arrows: chosen, drawCalls: 3 });
+    const cylinders = () => pool.object.getObjectByName(RAY_CYLINDERS_NAME) as InstancedMesh;
+    for (const name of [RAY_ARROWS_NAME, RAY_HIDDEN_NAME]) {
+      const extra = pool.object.getObjectByName(name) as InstancedMesh;
+      expect(extra.instanceMatrix, name).toBe(cylinders().instanceMatrix);
+      expect(extra.count, name).toBe(chosen);
+    }
+    pool.update(syntheticScreen(5_000), options(), null);
+    expect(pool.stats).toMatchObject({ arrows: 0, drawCalls: 1 });
+    pool.update(syntheticScreen(5_000), options(), [0, 0]);
+    expect((pool.object.getObjectByName(RAY_ARROWS_NAME) as InstancedMesh).instanceMatrix).toBe(cylinders().instanceMatrix);
+  });
+
+  it('keeps one draw call for a whole screen of 1k, 10k and 50k rays', () => {
     const pool = new RayPool();
     const calls = [1_000, 10_000, 50_000].map((total) => {
       const rays = syntheticScreen(total);
@@ -140,7 +160,7 @@ describe('RayPool instances', () => {
       return { rays: pool.stats.rays, meshes: meshes(pool).length, drawCalls: meshes(pool).filter((m) => m.visible && m.count > 0).length };
     });
     expect(calls.map((c) => c.rays)).toEqual([1_000, 10_000, 50_000]);
-    expect(calls.every((c) => c.meshes === 2 && c.drawCalls === 1)).toBe(true);
+    expect(calls.every((c) => c.meshes === 4 && c.drawCalls === 1)).toBe(true);
   });
 
   it('pools its buffers: grows by doubling, never shrinks, and frees the outgrown mesh', () => {
@@ -302,13 +322,13 @@ describe('RayPool.pick', () => {
   it('frees its GPU resources on dispose', () => {
     const pool = new RayPool();
     pool.update(oneTree(), options(), null);
-    const events: string[] = [];
-    for (const mesh of meshes(pool)) {
-      mesh.geometry.addEventListener('dispose', () => events.push('geometry'));
-      (mesh.material as MeshBasicMaterial).addEventListener('dispose', () => events.push('material'));
-    }
+    // The hidden parts share the rays' geometry: each resource once.
+    const resources = new Set(meshes(pool).flatMap((mesh) => [mesh.geometry, mesh.material as MeshBasicMaterial]));
+    const disposed = new Set<unknown>();
+    for (const resource of resources) resource.addEventListener('dispose', () => disposed.add(resource));
     pool.dispose();
-    expect(events.sort()).toEqual(['geometry', 'geometry', 'material', 'material']);
+    expect(resources.size).toBe(7);
+    expect(disposed).toEqual(resources);
     expect(pool.object.children).toEqual([]);
   });
 });
