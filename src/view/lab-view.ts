@@ -37,8 +37,8 @@ import { TransformGizmo } from './transform-gizmo.ts';
 import { sameSelection, stateCommand, type StateCommand } from './state-commands.ts';
 import { type ArrowTarget, keyCommand, type ViewCommand } from './view-commands.ts';
 import { ViewControls } from './view-controls.ts';
-import { rayPathPoints } from './ray-path-points.ts';
-import { cameraViewFov, framingPose, type ViewPose } from './view-pose.ts';
+import { rayPathPoints, raySegments } from './ray-path-points.ts';
+import { cameraViewFov, framingPose, framingPoseAbove, type ViewPose } from './view-pose.ts';
 import { framedPoints, LookFollower } from './view-look.ts';
 
 /** The hovered ray and where the pointer is, for a tooltip next to it. */
@@ -74,6 +74,9 @@ const BUTTON_ZOOM = 1.25;
 /** Nearer than this to the tracer camera's eye, its body would fill the view: hide it. */
 const INSIDE_CAMERA = 0.35;
 const SELECTION_COLOR = 0x3b82f6;
+
+/** How much (sum over RGB, 0–765) drawing the rays must change a pixel for rayCoverage to count it. */
+const COVERAGE_CHANGE = 24;
 
 /** The 3D view's own vertical field of view (degrees), which declared views frame with. */
 const VIEW_FOV = 45;
@@ -127,6 +130,7 @@ export class LabView {
   /** The camera's pixels' latest rays (for "show its rays"). */
   private screenRays: ScreenRays | null = null;
   private sized = false;
+  private coveredBottom = 0;
   /** A scene was loaded and nothing drawn since: a declared look then jumps instead of gliding. */
   private sceneJustLoaded = false;
   private readonly look: LookFollower;
@@ -168,6 +172,7 @@ export class LabView {
       pose: () => this.controls.pose,
       fov: VIEW_FOV,
       aspect: () => this.camera.aspect,
+      visibleShare: () => this.visibleShare(),
       moveTo: (pose, glide) => {
         if (glide) return this.flight.glide(pose);
         this.flight.forget();
@@ -394,7 +399,21 @@ export class LabView {
     }
     const pose = this.controls.pose;
     const direction = pose.position.clone().sub(pose.target).normalize();
-    this.flight.glide(framingPose(points, points, this.camera.fov, this.camera.aspect, direction));
+    this.flight.glide(framingPoseAbove(points, VIEW_FOV, this.camera.aspect, direction, this.visibleShare()));
+  }
+
+  /**
+   * How much of the canvas's bottom (CSS px) panels over the view cover (the pixel preview,
+   * the ray debugger): framing then fits what it shows into the part above.
+   */
+  setCoveredBottom(px: number): void {
+    this.coveredBottom = Math.max(0, px);
+  }
+
+  private visibleShare(): number {
+    const height = this.canvas.clientHeight;
+    // Never frame into a sliver: below 40 % the panels cover the view and it is better whole.
+    return height > 0 ? Math.max(0.4, 1 - this.coveredBottom / height) : 1;
   }
 
   /** The chosen pixel's whole ray path and the camera it starts at, or null without a pixel or its trace. */
@@ -424,6 +443,59 @@ export class LabView {
     const centre = [...objects.map((o) => o.position), camera.position];
     const pose = framingPose(centre, [...centre, ...lights.map((l) => l.position)], this.camera.fov, this.camera.aspect);
     this.controls.setPose(pose);
+  }
+
+  /**
+   * For tests and tools: where the things a declared view frames appear on the canvas (CSS
+   * px): the points `frame` fits for `name` (view-look.ts), each projected (null behind the eye).
+   */
+  projectedPointsOf(name: string): ({ x: number; y: number } | null)[] {
+    return framedPoints(name, this.store.state.scene, (id) => this.objects.objectOf(id), this.cameraScreen.rig).map((point) => this.projectToView(point));
+  }
+
+  /** For tests and tools: the chosen pixel's rays as segments on the canvas (CSS px), none without a pixel or its trace. */
+  pixelRaySegments(): { from: { x: number; y: number }; to: { x: number; y: number } }[] {
+    const pixel = this.store.state.selectedPixel;
+    const trace = pixel && this.screenRays?.traces.find((candidate) => candidate.pixel[0] === pixel[0] && candidate.pixel[1] === pixel[1]);
+    if (!trace) return [];
+    return raySegments(trace).flatMap(([start, end]) => {
+      const from = this.projectToView(start);
+      const to = this.projectToView(end);
+      return from && to ? [{ from, to }] : [];
+    });
+  }
+
+  /**
+   * For tests and tools: where the drawn rays show, as one byte per CSS pixel of the canvas
+   * (1 where drawing the rays changed the picture), from a frame drawn now with them and one
+   * without: what is covered or off screen counts as not shown.
+   */
+  rayCoverage(): { width: number; height: number; mask: Uint8Array } {
+    const gl = this.renderer.getContext();
+    const width = gl.drawingBufferWidth;
+    const height = gl.drawingBufferHeight;
+    const frames = [true, false].map((shown) => {
+      if (this.rayLayer) this.rayLayer.object.visible = shown;
+      this.renderer.render(this.scene, this.camera);
+      const pixels = new Uint8Array(width * height * 4);
+      gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+      return pixels;
+    });
+    if (this.rayLayer) this.rayLayer.object.visible = true;
+    this.requestRender();
+    const ratio = this.renderer.getPixelRatio();
+    const cssWidth = Math.round(width / ratio);
+    const cssHeight = Math.round(height / ratio);
+    const mask = new Uint8Array(cssWidth * cssHeight);
+    for (let y = 0; y < cssHeight; y++) {
+      for (let x = 0; x < cssWidth; x++) {
+        // readPixels rows run bottom-up.
+        const i = ((height - 1 - Math.floor(y * ratio)) * width + Math.floor(x * ratio)) * 4;
+        const change = Math.abs(frames[0]![i]! - frames[1]![i]!) + Math.abs(frames[0]![i + 1]! - frames[1]![i + 1]!) + Math.abs(frames[0]![i + 2]! - frames[1]![i + 2]!);
+        mask[y * cssWidth + x] = change > COVERAGE_CHANGE ? 1 : 0;
+      }
+    }
+    return { width: cssWidth, height: cssHeight, mask };
   }
 
   /** Where a world point appears on the canvas (CSS px from its top-left), or null behind the eye. */

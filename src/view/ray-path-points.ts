@@ -7,15 +7,25 @@ import type { PixelTrace, RayNode } from '../tracer/ray-tree.ts';
  */
 export const MISS_REACH = 1;
 
-/** Every point a pixel's rays start, end or fan out to (area cones' corners): what "show its rays" frames. */
-export function rayPathPoints(trace: PixelTrace): Vec3[] {
-  const points: Vec3[] = [];
+/** Each of a pixel's rays as its start and end (a miss: MISS_REACH along it), parents before children. */
+export function raySegments(trace: PixelTrace): [Vec3, Vec3][] {
+  const segments: [Vec3, Vec3][] = [];
   const visit = (node: RayNode) => {
     const reach = node.hit ? node.length : Math.min(node.length, MISS_REACH);
-    points.push(node.origin, [0, 1, 2].map((axis) => node.origin[axis] + node.direction[axis] * reach) as Vec3);
-    if (node.corners) points.push(...node.corners);
+    segments.push([node.origin, [0, 1, 2].map((axis) => node.origin[axis] + node.direction[axis] * reach) as Vec3]);
     node.children.forEach(visit);
   };
   trace.rays.forEach(visit);
-  return points;
+  return segments;
+}
+
+/** Every point a pixel's rays start, end or fan out to (area cones' corners): what "show its rays" frames. */
+export function rayPathPoints(trace: PixelTrace): Vec3[] {
+  const corners: Vec3[] = [];
+  const visit = (node: RayNode) => {
+    if (node.corners) corners.push(...node.corners);
+    node.children.forEach(visit);
+  };
+  trace.rays.forEach(visit);
+  return [...raySegments(trace).flat(), ...corners];
 }

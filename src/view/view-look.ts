@@ -1,7 +1,7 @@
 import { Box3, type Object3D, Vector3 } from 'three';
 import type { ViewLook } from '../lab-state/lab-state.ts';
 import type { Scene, Vec3 } from '../scene/scene.ts';
-import { framingPose, type ViewPose } from './view-pose.ts';
+import { framingPoseAbove, type ViewPose } from './view-pose.ts';
 
 /** What following a declared view's look needs of the 3D view. */
 export interface LookStage {
@@ -14,6 +14,8 @@ export interface LookStage {
   /** The view's own field of view (degrees) and aspect, which a framing fits. */
   fov: number;
   aspect(): number;
+  /** The share of the view's height, from the top, that no panel covers: what a framing fits into. */
+  visibleShare(): number;
   /** Puts the view at `pose`: gliding there, or at once. */
   moveTo(pose: ViewPose, glide: boolean): void;
   /** Looks through the ray tracer's camera, as "Camera view" does, without reporting it as the learner's doing. */
@@ -29,7 +31,8 @@ export const PIXEL_RAYS_WAIT_MS = 3000;
 
 /**
  * The 3D view following a level's or task's declared look (docs/levels.md, "Views"): it
- * glides to fit what the look names, from the side it names or the side it looks from now.
+ * glides to fit what the look names, from the side it names or the side it looks from now,
+ * into the part of the view that no panel covers.
  * A look that frames a pixel's rays frames them again as their trace comes in, until the
  * learner moves the view or PIXEL_RAYS_WAIT_MS have passed.
  */
@@ -76,7 +79,7 @@ export class LookFollower {
     if (points.length === 0) return;
     const pose = this.stage.pose();
     const direction = look.from ? new Vector3(...look.from).normalize() : pose.position.clone().sub(pose.target).normalize();
-    this.stage.moveTo(framingPose(points, points, this.stage.fov, this.stage.aspect(), direction), glide);
+    this.stage.moveTo(framingPoseAbove(points, this.stage.fov, this.stage.aspect(), direction, this.stage.visibleShare()), glide);
   }
 }
 

@@ -108,6 +108,34 @@ export function framingPose(
   return { position: target.clone().addScaledVector(direction, distance), target, fov };
 }
 
+/**
+ * framingPose for a view whose lower part is covered by panels: everything fits in the top
+ * `visibleShare` (0..1] of its height and is centred there. The band has the vertical fov
+ * 2·atan(tan(fov/2)·share) and the aspect aspect/share; framing it from distance d puts the
+ * framed centre in the middle of the canvas, and panning down by (1 − share)·d·tan(fov/2)
+ * (half the covered height at that depth) moves it to the middle of the band.
+ */
+export function framingPoseAbove(
+  points: readonly Vec3[],
+  fov: number,
+  aspect: number,
+  direction: Vector3,
+  visibleShare: number,
+): ViewPose {
+  const share = Math.min(1, Math.max(0.05, visibleShare));
+  const tanHalf = Math.tan((fov * Math.PI) / 360);
+  const bandFov = (Math.atan(tanHalf * share) * 360) / Math.PI;
+  const pose = framingPose(points, points, bandFov, aspect / share, direction);
+  const distance = pose.position.distanceTo(pose.target);
+  const up = new Vector3(0, 1, 0).addScaledVector(direction, -direction.y);
+  if (up.lengthSq() < 1e-9) up.set(0, 0, -1); // looking straight down: "up" on screen is −z
+  up.normalize().multiplyScalar((1 - share) * distance * tanHalf);
+  pose.position.sub(up);
+  pose.target.sub(up);
+  pose.fov = fov;
+  return pose;
+}
+
 const offset = new Vector3();
 const sphericalBefore = new Spherical();
 const sphericalAfter = new Spherical();

@@ -16,6 +16,7 @@ function stage(rays: Vec3[] | null = null) {
     pose: () => here,
     fov: 45,
     aspect: () => 1.5,
+    visibleShare: () => 1,
     moveTo: (pose, glide) => moves.push({ pose, glide }),
     throughCamera: () => throughCamera++,
   };

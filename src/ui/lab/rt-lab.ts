@@ -28,6 +28,7 @@ import type { RtRenderWindow } from './render-window/rt-render-window.ts';
 import type { RtSceneView } from './rt-scene-view.ts';
 import { storeContext } from './store-context.ts';
 import { ON_DEMAND_PANELS } from './lab-elements.ts';
+import { ViewCoverController } from './view-cover.ts';
 
 export { FREE_LAB_HASH } from './quest-controller.ts';
 
@@ -80,6 +81,11 @@ export class RtLab extends LitElement {
     this.services = this.createServices();
     this.storeProvider = new ContextProvider(this, { context: storeContext, initialValue: this.services.store });
     new GuideHostController(this);
+    new ViewCoverController(this, () => ({
+      view: this.sceneView(),
+      overlays: [...this.renderRoot.querySelectorAll('rt-screen-preview, rt-ray-debugger')],
+      tell: (px) => this.labView()?.setCoveredBottom(px),
+    }));
   }
 
   /** The app's one source of truth. */
