@@ -1,7 +1,7 @@
 import { PerspectiveCamera, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import type { Vec3 } from '../../src/scene/scene.ts';
-import { cameraViewFov, easeInOutCubic, framingPose, gestureActions, interpolatePose, type ViewPose } from '../../src/view/view-pose.ts';
+import { cameraViewFov, easeInOutCubic, framingPose, framingPoseAbove, gestureActions, interpolatePose, type ViewPose } from '../../src/view/view-pose.ts';
 
 function pose(position: Vec3, target: Vec3, fov = 45): ViewPose {
   return { position: new Vector3(...position), target: new Vector3(...target), fov };
@@ -108,5 +108,38 @@ describe('the view at the tracer\'s camera', () => {
       expect(Math.abs(corner.y)).toBeCloseTo(1 / 1.1, 6);
       expect(Math.abs(corner.x)).toBeLessThan(1);
     }
+  });
+});
+
+describe('framing above panels that cover the bottom of the view', () => {
+  it('centres what it frames in the free band at the top, and keeps every point inside it', () => {
+    const points: Vec3[] = [[-1, 0, 0], [1, 0, 0], [0, 1, 0], [0, -1, 0]];
+    const direction = new Vector3(0, 0, 1);
+    const share = 0.6;
+    const pose = framingPoseAbove(points, 45, 1.5, direction, share);
+    const camera = new PerspectiveCamera(45, 1.5, 0.01, 100);
+    camera.position.copy(pose.position);
+    camera.lookAt(pose.target);
+    camera.updateMatrixWorld();
+    // Screen y from −1 (bottom) to 1 (top): the free band is y > 1 − 2·share.
+    const bandBottom = 1 - 2 * share;
+    const centre = new Vector3(0, 0, 0).project(camera);
+    expect(centre.x).toBeCloseTo(0);
+    expect(centre.y).toBeCloseTo((1 + bandBottom) / 2);
+    for (const point of points) {
+      const seen = new Vector3(...point).project(camera);
+      expect(seen.y).toBeGreaterThanOrEqual(bandBottom - 1e-9);
+      expect(seen.y).toBeLessThanOrEqual(1 + 1e-9);
+      expect(Math.abs(seen.x)).toBeLessThanOrEqual(1 + 1e-9);
+    }
+  });
+
+  it('is the plain framing when nothing is covered', () => {
+    const points: Vec3[] = [[0, 0, 0], [2, 1, 0]];
+    const direction = new Vector3(-0.5, 0.45, 0.74).normalize();
+    const above = framingPoseAbove(points, 45, 1.5, direction, 1);
+    const plain = framingPose(points, points, 45, 1.5, direction);
+    expect(above.position.distanceTo(plain.position)).toBeCloseTo(0);
+    expect(above.target.distanceTo(plain.target)).toBeCloseTo(0);
   });
 });

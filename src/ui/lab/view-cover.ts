@@ -40,8 +40,10 @@ export class ViewCoverController implements ReactiveController {
   }
 }
 
+type Box = Pick<DOMRectReadOnly, 'left' | 'top' | 'right' | 'bottom' | 'width' | 'height'>;
+
 /** The height of the view's bottom that overlays starting in its lower 70 % cover (CSS px). */
-export function coveredBottom(view: DOMRectReadOnly, overlays: DOMRectReadOnly[]): number {
+export function coveredBottom(view: Box, overlays: Box[]): number {
   let covered = 0;
   for (const overlay of overlays) {
     const overlapsAcross = overlay.right > view.left && overlay.left < view.right && overlay.width > 0 && overlay.height > 0;
