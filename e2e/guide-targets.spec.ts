@@ -1,21 +1,27 @@
 import { expect, test, type Page } from '@playwright/test';
 import { mkdirSync, readFileSync } from 'node:fs';
 import { LAB_CONTROLS, type LabPanel } from '../src/quest/lab-controls.ts';
+import type { DeclaredView } from '../src/lab-state/lab-action.ts';
 import { collectErrors, current, importProgress, levelsFolder, panel, progressFile } from './support/game-steps.ts';
+import { expectViewShows, viewAtStart, viewSettled } from './support/view-checks.ts';
 
 // Every level, played task by task through the hint ladder as a stuck student would: for
 // each task the ring goes to a control (or a point of the 3D view) that is on screen, and
-// every control the level leaves out of a panel is not on the page at all. One browser run
-// per level; each task's start view is saved under test-results/task-views/.
+// every control the level leaves out of a panel is not on the page at all. A task that
+// declares a view starts in it, with what the view frames on screen and its pixel's rays
+// readable. One browser run per level; each task's start view is saved under
+// test-results/task-views/.
 
 interface LevelTask {
   id: string;
   guide?: string;
   mandatory?: boolean;
   goal: Record<string, unknown>;
+  view?: DeclaredView;
 }
 interface LevelFile {
   id: string;
+  view?: DeclaredView;
   ui: { panels: string[]; controls?: Partial<Record<LabPanel, string[]>> };
   tasks: LevelTask[];
 }
@@ -100,8 +106,11 @@ for (const [position, levelId] of levelIds.entries()) {
       expect(task, `${levelId}: the current task ${id} is in the file`).toBeDefined();
       expect(visited, `${levelId}: ${id} comes up once`).not.toContain(id);
       visited.push(id!);
-      await page.waitForTimeout(300);
+      const view = viewAtStart(level, task!, visited.length === 1);
+      if (view) await viewSettled(page, `${levelId}/${id}`);
+      else await page.waitForTimeout(300);
       await page.screenshot({ path: `test-results/task-views/${levelId}--${id}.png` });
+      if (view) await expectViewShows(page, `${levelId}/${id}`, view);
       await expectHiddenControlsAbsent(page, level);
       await solveCurrentTask(page, level, task!);
       await expect(page.locator(`rt-task-card[data-task="${id}"]`)).not.toHaveAttribute('status', 'current', { timeout: 30_000 });
