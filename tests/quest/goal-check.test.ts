@@ -42,7 +42,7 @@ describe('paths into the state', () => {
     expect(problemWithPath('scene.camera.fov.x', start)).toBe('scene.camera.fov is a number: it has no field "x"');
     expect(problemWithPath('scene.settings[0]', start)).toBe('scene.settings is not a list, so [0] cannot select from it');
     expect(problemWithPath('rays.hideNoHits', start)).toMatch(/^no field "hideNoHits" in rays \(it has showRays, hideNoHit, /);
-    expect(problemWithPath('Scene', start)).toBe('no field "Scene" (it has scene, selection, selectedPixel, rays, gizmo, bvh)');
+    expect(problemWithPath('Scene', start)).toBe('no field "Scene" (it has scene, selection, selectedPixel, rays, gizmo, bvh, look)');
     expect(problemWithPath('3d', start)).toBe('must start with a field name, like "scene.settings.shadows", got "3d"');
   });
 });
