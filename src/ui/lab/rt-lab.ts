@@ -214,7 +214,16 @@ export class RtLab extends LitElement {
 
   /** The ray debugger's pixel, traced with its terms, and drawn in 3D (stable functions: lit compares them). */
   private readonly traceWithTerms = (x: number, y: number) => this.services.traceWithTerms(x, y);
-  private readonly showRayFocus = (focus: RayFocus | null) => this.services.setRayFocus(focus);
+  private readonly showRayFocus = (focus: RayFocus | null) => {
+    const opening = focus !== null && !this.focusShown;
+    this.focusShown = focus !== null;
+    this.services.setRayFocus(focus);
+    // The open debugger covers the view's lower part: as it opens, its pixel's rays are
+    // framed in the part above, once its size is known (two frames: layout, then the cover's measure).
+    if (opening && this.store.state.selectedPixel) requestAnimationFrame(() => requestAnimationFrame(() => this.labView()?.showPixelRays()));
+  };
+  /** Whether the ray debugger is drawing its pixel now. */
+  private focusShown = false;
 
   /** The level being played, if one is. */
   private level() {
