@@ -68,10 +68,17 @@ test.describe('a phone, by touch', () => {
     await expectTouchTargets(page);
     await page.screenshot({ path: 'test-results/screens/layout-phone.png' });
 
+    // A task done in the view makes the next one current without scrolling the page: the view stays where the learner looks.
+    const pageScroll = () => page.evaluate(() => new Promise<number>((resolve) => requestAnimationFrame(() => resolve(scrollY))));
+    const scrollBefore = await pageScroll();
     await page.locator('rt-view-toolbar [data-command="orbit-left"]').tap();
     await expectStatus(page, 'Look around', 'done');
+    await expectStatus(page, 'Zoom in', 'current');
+    expect(await pageScroll()).toBe(scrollBefore);
     await page.locator('rt-view-toolbar [data-command="zoom-in"]').tap();
     await expectStatus(page, 'Zoom in', 'done');
+    expect(await pageScroll()).toBe(scrollBefore);
+    expect((await page.getByRole('main').boundingBox())!.y).toBeGreaterThanOrEqual(0);
 
     // The touch gestures are in the help.
     await page.locator('rt-view-toolbar [data-command="help"]').tap();
@@ -83,6 +90,7 @@ test.describe('a phone, by touch', () => {
     const ball = await objectOnScreen(page, 'ball');
     await page.touchscreen.tap(ball.x, ball.y);
     await expectStatus(page, 'Select the ball', 'done');
+    expect(await pageScroll()).toBe(scrollBefore);
 
     const hex = page.locator('rt-object-panel').getByRole('textbox', { name: 'Colour, hex code' });
     await hex.tap();

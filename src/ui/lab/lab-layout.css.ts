@@ -207,7 +207,11 @@ const labNarrow = css`
     :host {
       grid-template-columns: minmax(0, 1fr);
       grid-template-rows: repeat(4, max-content);
-      overflow-y: auto;
+      /* The page scrolls, not the lab: the task list then has no scroll box of its own, and a
+         new current task does not scroll the view away (scroll-in-box.ts). */
+      height: auto;
+      min-height: 100vh;
+      overflow: visible;
     }
     :host([free-lab]) {
       grid-template-columns: minmax(0, 1fr);
