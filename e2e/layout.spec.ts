@@ -68,6 +68,26 @@ test.describe('a phone, by touch', () => {
     await expectTouchTargets(page);
     await page.screenshot({ path: 'test-results/screens/layout-phone.png' });
 
+    // The ray legend folds away behind a small button that does not cover the ball; a tap (or Enter) opens it.
+    const legendButton = page.getByRole('button', { name: 'Ray colours' });
+    const legend = page.getByRole('list', { name: 'Ray colours' });
+    await expect(legendButton).toHaveAttribute('aria-expanded', 'false');
+    await expect(legend).toBeHidden();
+    const ballAtStart = await objectOnScreen(page, 'ball');
+    const folded = (await legendButton.boundingBox())!;
+    expect(overlap(folded, { x: ballAtStart.x - 20, y: ballAtStart.y - 20, width: 40, height: 40 }), JSON.stringify({ folded, ballAtStart })).toBe(false);
+    await legendButton.tap();
+    await expect(legend).toBeVisible();
+    await expect(legend).toContainText('Shadow ray');
+    await page.screenshot({ path: 'test-results/screens/layout-phone-legend-open.png' });
+    await legendButton.tap();
+    await expect(legend).toBeHidden();
+    await legendButton.focus();
+    await page.keyboard.press('Enter');
+    await expect(legendButton).toHaveAttribute('aria-expanded', 'true');
+    await page.keyboard.press('Enter');
+    await expect(legend).toBeHidden();
+
     // A task done in the view makes the next one current without scrolling the page: the view stays where the learner looks.
     const pageScroll = () => page.evaluate(() => new Promise<number>((resolve) => requestAnimationFrame(() => resolve(scrollY))));
     const scrollBefore = await pageScroll();
