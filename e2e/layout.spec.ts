@@ -162,5 +162,15 @@ test.describe('200 % zoom', () => {
     await page.getByRole('button', { name: 'Got it' }).click();
     await expectLaidOut(page);
     await page.screenshot({ path: 'test-results/screens/layout-zoom-200.png' });
+
+    // A task done with a button of the view that is on screen: the next task becomes current, the page does not move.
+    await page.evaluate(() => scrollTo(0, 0));
+    const orbit = (await page.locator('rt-view-toolbar [data-command="orbit-left"]').boundingBox())!;
+    expect(orbit.y + orbit.height).toBeLessThanOrEqual(384);
+    await page.mouse.click(orbit.x + orbit.width / 2, orbit.y + orbit.height / 2);
+    await expectStatus(page, 'Look around', 'done');
+    await expectStatus(page, 'Zoom in', 'current');
+    expect(await page.evaluate(() => new Promise<number>((resolve) => requestAnimationFrame(() => resolve(scrollY))))).toBe(0);
+    await page.screenshot({ path: 'test-results/screens/layout-zoom-200-task-done.png' });
   });
 });
