@@ -10,7 +10,8 @@ import { msg, str } from '@lit/localize';
  * English detail beats none. Paths are field names of the file and stay as written.
  */
 
-type Rule = readonly [RegExp, (...parts: string[]) => string];
+/** A pattern and what to say for a match; null when, after all, it is not this rule's to say. */
+type Rule = readonly [RegExp, (...parts: string[]) => string | null];
 
 /** The values in "got …" (describeValue in scene-issues.ts); JSON literals and quoted text stay. */
 const VALUES: readonly Rule[] = [
@@ -33,6 +34,8 @@ const KINDS: readonly Rule[] = [
   [/^a list of (\d+) whole numbers$/, (count) => msg(str`a list of ${count} whole numbers`)],
   [/^a list of (\d+) positive numbers$/, (count) => msg(str`a list of ${count} positive numbers`)],
   [/^a list of (\d+) numbers between 0 and 1$/, (count) => msg(str`a list of ${count} numbers between 0 and 1`)],
+  // One allowed value (oneOf in scene-issues.ts): a quoted text or a JSON literal, the same in every language.
+  [/^(".*"|-?\d[\d.e+-]*|true|false|null)$/, (literal) => literal],
 ];
 
 /** What JSON.parse's reader expected or found (json-error.ts). */
@@ -66,10 +69,18 @@ const REASONS: readonly Rule[] = [
     /^must be a text, or \{ "en": …, "nl": … \} with a text per language \(en is required; each at most (\d+) characters\)$/,
     (most) => msg(str`must be a text, or { "en": …, "nl": … } with a text per language (en is required; each at most ${most} characters)`),
   ],
-  [/^must be (.+), got (.+)$/, (kind, got) => msg(str`must be ${translated(KINDS, kind)}, got ${value(got)}`)],
-  [/^unknown field (.+)$/, (name) => msg(str`unknown field ${name}`)],
-  [/^unknown fields (.+)$/, (names) => msg(str`unknown fields ${names}`)],
+  [/^must be lower-case letters and digits joined by "-", like "([^"]*)", got (.+)$/, (example, got) => msg(str`must be lower-case letters and digits joined by "-", like "${example}", got ${value(got)}`)],
+  [/^must have (\d+) to (\d+) mandatory tasks, got (\d+)$/, (fewest, most, count) => msg(str`must have ${fewest} to ${most} mandatory tasks, got ${count}`)],
+  [/^must be the position of a choice, 0 to (\d+)$/, (last) => msg(str`must be the position of a choice, 0 to ${last}`)],
+  // Any other "must be …, got …" only when what it must be is known: half a sentence in each language reads worse than English.
+  [/^must be (.+), got (.+)$/, (kind, got) => {
+    const must = translatedOrNull(KINDS, kind);
+    return must === null ? null : msg(str`must be ${must}, got ${value(got)}`);
+  }],
+  [/^unknown field (".*")$/, (name) => msg(str`unknown field ${name}`)],
+  [/^unknown fields (".*")$/, (names) => msg(str`unknown fields ${names}`)],
   [/^(".*") is used twice$/, (id) => msg(str`${id} is used twice`)],
+  [/^(".*") is used more than once$/, (id) => msg(str`${id} is used more than once`)],
   [/^(".*") is used (\d+) times$/, (id, count) => msg(str`${id} is used ${count} times`)],
   [/^makes (.+) = (\d+) primary rays per pixel, more than (\d+)$/, (sum, rays, most) => msg(str`makes ${sum} = ${rays} primary rays per pixel, more than ${most}`)],
   [
@@ -78,13 +89,19 @@ const REASONS: readonly Rule[] = [
   ],
 ];
 
-/** The first rule that matches all of `text`, applied; `text` itself when none does. */
-function translated(rules: readonly Rule[], text: string): string {
+/** What the first rule that matches all of `text` says, or null when none does. */
+function translatedOrNull(rules: readonly Rule[], text: string): string | null {
   for (const [pattern, say] of rules) {
     const match = pattern.exec(text);
-    if (match) return say(...match.slice(1));
+    const said = match ? say(...match.slice(1)) : null;
+    if (said !== null) return said;
   }
-  return text;
+  return null;
+}
+
+/** `text` said by the first rule that knows it; `text` itself when none does. */
+function translated(rules: readonly Rule[], text: string): string {
+  return translatedOrNull(rules, text) ?? text;
 }
 
 const value = (text: string) => translated(VALUES, text);

@@ -4,6 +4,8 @@
 // stays English whatever the app speaks.
 import { describe, expect, it } from 'vitest';
 import { issueLines, issueText } from '../../src/i18n/issue-text.ts';
+import { readFileSync } from 'node:fs';
+import { parseLevel } from '../../src/quest/level-schema.ts';
 import { parseSceneJson } from '../../src/scene/scene-schema.ts';
 import { inDutch } from '../support/page-locale.ts';
 
@@ -61,8 +63,34 @@ describe('a broken scene file in Dutch', () => {
     expect(errorsOf('{ "version": 1').map(issueText)).toEqual(['(het geheel): geen geldige JSON op regel 1, kolom 15: verwacht werd "," of "}", maar er staat het einde van de tekst']);
   });
 
+  it('says a broken level\'s reasons in Dutch', () => {
+    const level = JSON.parse(readFileSync(new URL('../../levels/02-rays-from-the-camera.level.json', import.meta.url), 'utf8')) as {
+      id: string;
+      tasks: { id: string; mandatory?: boolean }[];
+    };
+    const wrong = (change: (copy: typeof level) => void) => {
+      const copy = structuredClone(level);
+      change(copy);
+      const result = parseLevel(copy);
+      if (result.ok) throw new Error('the broken level was accepted');
+      return result.errors.map(issueText);
+    };
+    expect(wrong((copy) => (copy.id = 'Rays 2'))).toEqual(['id: moet bestaan uit kleine letters en cijfers met "-" ertussen, zoals "rays-from-the-camera", maar is "Rays 2"']);
+    const firstId = level.tasks[0]!.id;
+    expect(
+      wrong((copy) => {
+        copy.tasks[1]!.id = firstId;
+        for (const task of copy.tasks.slice(3)) task.mandatory = false;
+      }),
+    ).toEqual([`tasks[1].id: "${firstId}" komt meer dan één keer voor`, 'tasks: moet 3 tot 10 verplichte taken hebben, maar heeft er 2']);
+  });
+
   it('keeps a reason no pattern knows as it is, and turns every line of a refusal', () => {
     expect(issueText('tasks[2]: something new the schema says')).toBe('tasks[2]: something new the schema says');
+    // Half known is kept whole: no Dutch frame around English words.
+    expect(issueText('with: must be an object of fields to change, got 3')).toBe('with: must be an object of fields to change, got 3');
+    expect(issueText('options: unknown field "glow" (known: shadows, depth)')).toBe('options: unknown field "glow" (known: shadows, depth)');
+    expect(issueText('shape: must be "mesh", got "cube"')).toBe('shape: moet "mesh" zijn, maar is "cube"');
     expect(issueLines('camera.fov: must be at least 1, got nothing\nobjects: must have at most 64 items, got a list of 70 items')).toBe(
       'camera.fov: moet minstens 1 zijn, maar is niets\nobjects: mag hoogstens 64 elementen hebben, maar is een lijst met 70 elementen',
     );
