@@ -3,12 +3,14 @@ import { simulatedClassFiles } from '../tests/support/class-exports.ts';
 import { expectAccessible } from './support/axe.ts';
 
 // axe-core on every page of the app, in both languages and both themes: the lab in level 1,
-// the level map, the render window, the teacher page, the dashboard (with a class read) and
+// the level map, the render window, the free lab with every panel (each section open) and
+// the ray debugger's dock open, the teacher page, the dashboard (with a class read) and
 // the survey. No serious or critical violation anywhere (WCAG 2.1 AA as axe checks it:
 // names, roles, contrast, labels). The map and the render window are checked on their own
 // (the lab under them was checked just before).
 
 const classFiles = simulatedClassFiles(3);
+const DEBUG_A_PIXEL = { en: 'Debug a pixel', nl: 'Debug een pixel' } as const;
 
 for (const lang of ['en', 'nl'] as const) {
   test(`no serious axe violation in the lab, the level map and the render window (${lang})`, async ({ page }) => {
@@ -30,6 +32,18 @@ for (const lang of ['en', 'nl'] as const) {
     await page.locator('[data-command="render-open"]').click();
     await expect(page.locator('rt-render-window')).toBeVisible();
     await expectAccessible(page, 'the render window', { fromShadowDom: ['rt-app rt-lab', 'rt-render-window'] });
+
+    // The free lab: every panel, each of its sections open, and the ray debugger's dock open on a pixel.
+    // Only the hash changed: the page is loaded again for the free lab to open.
+    await at('#free-lab');
+    await page.reload();
+    const pixel = page.locator('rt-screen-preview').getByRole('button', { name: 'Pixel 2, 1', exact: true });
+    await pixel.click();
+    await page.getByRole('button', { name: DEBUG_A_PIXEL[lang] }).click();
+    await expect(page.locator('rt-ray-debugger')).toHaveAttribute('open', '');
+    await page.locator('rt-panel-section').evaluateAll((sections) => sections.forEach((section) => ((section as HTMLElement & { open: boolean }).open = true)));
+    await page.screenshot({ path: `test-results/screens/axe-free-lab-debugger-${lang}.png` });
+    await expectAccessible(page, 'the free lab with every panel and the ray debugger');
   });
 
   test(`no serious axe violation on the classroom pages (${lang})`, async ({ page }) => {

@@ -1,4 +1,4 @@
-import { expect, test } from '@playwright/test';
+import { expect, test, type Locator } from '@playwright/test';
 import type { Assignment } from '../src/classroom/assignment.ts';
 import { encodeAssignment } from '../src/classroom/assignment-link.ts';
 import { parseCsv } from '../src/classroom/csv-text.ts';
@@ -111,4 +111,36 @@ test('the survey fits the lab\'s task column at 1366×900', async ({ page }) => 
   expect(overflowing).toEqual([]);
   const box = await survey.boundingBox();
   expect(box!.width).toBeGreaterThan(200);
+  await expectNoWordPerLine(survey);
+  await page.screenshot({ path: 'test-results/screens/survey-lab-column.png' });
+
+  // On a phone the survey is in the one column, under the view: still whole lines, not a word a line.
+  await page.setViewportSize({ width: 390, height: 844 });
+  await survey.scrollIntoViewIfNeeded();
+  await expect(survey.getByRole('radio', { name: 'Primary school' })).toBeVisible();
+  expect((await survey.boundingBox())!.width).toBeGreaterThan(330);
+  await expectNoWordPerLine(survey);
+  await page.screenshot({ path: 'test-results/screens/survey-phone.png' });
 });
+
+/**
+ * Every question and every option of four words or more is laid out at least two words to a
+ * line on average: a column squeezed to a word's width (the bug of a survey sized by its
+ * content) breaks after every word.
+ */
+async function expectNoWordPerLine(survey: Locator): Promise<void> {
+  const squeezed = await survey.evaluate((element) => {
+    const texts = [...element.shadowRoot!.querySelectorAll('legend, label, p')];
+    return texts.flatMap((node) => {
+      const words = (node.textContent ?? '').trim().split(/\s+/).length;
+      if (words < 4) return [];
+      const range = document.createRange();
+      range.selectNodeContents(node);
+      // Inline boxes of one line (a span in a smaller font) start a few pixels apart; a new line starts a line's height lower.
+      const tops = [...range.getClientRects()].filter((rect) => rect.width > 0).map((rect) => rect.top).sort((a, b) => a - b);
+      const lines = tops.filter((top, i) => i === 0 || top > tops[i - 1]! + 8).length;
+      return words / lines < 2 ? [`${node.tagName} "${node.textContent?.trim()}": ${words} words on ${lines} lines, ${Math.round(node.getBoundingClientRect().width)} px wide`] : [];
+    });
+  });
+  expect(squeezed).toEqual([]);
+}

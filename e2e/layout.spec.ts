@@ -68,10 +68,37 @@ test.describe('a phone, by touch', () => {
     await expectTouchTargets(page);
     await page.screenshot({ path: 'test-results/screens/layout-phone.png' });
 
+    // The ray legend folds away behind a small button that does not cover the ball; a tap (or Enter) opens it.
+    const legendButton = page.getByRole('button', { name: 'Ray colours' });
+    const legend = page.getByRole('list', { name: 'Ray colours' });
+    await expect(legendButton).toHaveAttribute('aria-expanded', 'false');
+    await expect(legend).toBeHidden();
+    const ballAtStart = await objectOnScreen(page, 'ball');
+    const folded = (await legendButton.boundingBox())!;
+    expect(overlap(folded, { x: ballAtStart.x - 20, y: ballAtStart.y - 20, width: 40, height: 40 }), JSON.stringify({ folded, ballAtStart })).toBe(false);
+    await legendButton.tap();
+    await expect(legend).toBeVisible();
+    await expect(legend).toContainText('Shadow ray');
+    await page.screenshot({ path: 'test-results/screens/layout-phone-legend-open.png' });
+    await legendButton.tap();
+    await expect(legend).toBeHidden();
+    await legendButton.focus();
+    await page.keyboard.press('Enter');
+    await expect(legendButton).toHaveAttribute('aria-expanded', 'true');
+    await page.keyboard.press('Enter');
+    await expect(legend).toBeHidden();
+
+    // A task done in the view makes the next one current without scrolling the page: the view stays where the learner looks.
+    const pageScroll = () => page.evaluate(() => new Promise<number>((resolve) => requestAnimationFrame(() => resolve(scrollY))));
+    const scrollBefore = await pageScroll();
     await page.locator('rt-view-toolbar [data-command="orbit-left"]').tap();
     await expectStatus(page, 'Look around', 'done');
+    await expectStatus(page, 'Zoom in', 'current');
+    expect(await pageScroll()).toBe(scrollBefore);
     await page.locator('rt-view-toolbar [data-command="zoom-in"]').tap();
     await expectStatus(page, 'Zoom in', 'done');
+    expect(await pageScroll()).toBe(scrollBefore);
+    expect((await page.getByRole('main').boundingBox())!.y).toBeGreaterThanOrEqual(0);
 
     // The touch gestures are in the help.
     await page.locator('rt-view-toolbar [data-command="help"]').tap();
@@ -83,6 +110,7 @@ test.describe('a phone, by touch', () => {
     const ball = await objectOnScreen(page, 'ball');
     await page.touchscreen.tap(ball.x, ball.y);
     await expectStatus(page, 'Select the ball', 'done');
+    expect(await pageScroll()).toBe(scrollBefore);
 
     const hex = page.locator('rt-object-panel').getByRole('textbox', { name: 'Colour, hex code' });
     await hex.tap();
@@ -134,5 +162,15 @@ test.describe('200 % zoom', () => {
     await page.getByRole('button', { name: 'Got it' }).click();
     await expectLaidOut(page);
     await page.screenshot({ path: 'test-results/screens/layout-zoom-200.png' });
+
+    // A task done with a button of the view that is on screen: the next task becomes current, the page does not move.
+    await page.evaluate(() => scrollTo(0, 0));
+    const orbit = (await page.locator('rt-view-toolbar [data-command="orbit-left"]').boundingBox())!;
+    expect(orbit.y + orbit.height).toBeLessThanOrEqual(384);
+    await page.mouse.click(orbit.x + orbit.width / 2, orbit.y + orbit.height / 2);
+    await expectStatus(page, 'Look around', 'done');
+    await expectStatus(page, 'Zoom in', 'current');
+    expect(await page.evaluate(() => new Promise<number>((resolve) => requestAnimationFrame(() => resolve(scrollY))))).toBe(0);
+    await page.screenshot({ path: 'test-results/screens/layout-zoom-200-task-done.png' });
   });
 });

@@ -63,6 +63,15 @@ test('save a scene as a file and load it back; a broken file changes nothing', a
   await input.setInputFiles({ name: 'notes.json', mimeType: 'application/json', buffer: Buffer.from('{"version": 1,') });
   await expect(panel.getByRole('status')).toContainText('not valid JSON at line 1');
   expect(await scene(page)).toEqual(saved);
+
+  // In Dutch the detail lines are Dutch too, not only the sentence around them.
+  await page.goto('./?lang=nl#free-lab');
+  await panel.locator('input[type=file]').setInputFiles({ name: 'wide.scene.json', mimeType: 'application/json', buffer: Buffer.from(broken) });
+  await expect(panel.getByRole('status')).toContainText('wide.scene.json is geen scènebestand');
+  await expect(panel.getByRole('status')).toContainText('camera.fov: moet tussen 1 en 179 liggen, maar is 500');
+  await panel.locator('input[type=file]').setInputFiles({ name: 'notes.json', mimeType: 'application/json', buffer: Buffer.from('{"version": 1,') });
+  await expect(panel.getByRole('status')).toContainText('(het geheel): geen geldige JSON op regel 1, kolom 15: verwacht werd een veldnaam tussen dubbele aanhalingstekens');
+  await page.screenshot({ path: 'test-results/screens/scene-file-broken-nl.png' });
 });
 
 test('a shared link opens the scene in the free lab; a damaged link says why', async ({ page, context }) => {

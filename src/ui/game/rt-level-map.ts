@@ -1,4 +1,5 @@
 import { msg, str } from '@lit/localize';
+import { issueText } from '../../i18n/issue-text.ts';
 import { css, html, LitElement, nothing, type TemplateResult } from 'lit';
 import type { LevelMapEntry, ChapterMapView } from '../../quest/level-map.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
@@ -196,7 +197,7 @@ export class RtLevelMap extends LitElement {
       <span class="status">${this.statusText(entry, current)}</span>
       ${entry.status === 'broken'
         ? html`<ul class="reasons">
-            ${entry.errors.slice(0, 4).map((error) => html`<li>${error}</li>`)}
+            ${entry.errors.slice(0, 4).map((error) => html`<li>${issueText(error)}</li>`)}
           </ul>`
         : nothing}
     </button>`;

@@ -5,6 +5,7 @@ import type { LevelView } from '../../quest/quest-engine.ts';
 import { explainMore, fire, gameStyles } from './game-styles.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 import './rt-task-card.ts';
+import { scrollInBox } from './scroll-in-box.ts';
 
 /**
  * @summary The task column of a level: its title and intro (with "Explain more"), the
@@ -96,11 +97,12 @@ export class RtQuestPanel extends LitElement {
   }
 
   protected override updated(): void {
-    // A new current task is brought into view: done tasks above it pushed it below the column's edge.
+    // A new current task is brought into view in the task column: done tasks above it pushed it below the column's edge.
     const current = this.view?.tasks.find((task) => task.status === 'current')?.task.id ?? null;
     if (current === this.shownCurrent) return;
     this.shownCurrent = current;
-    if (current) this.renderRoot.querySelector(`li[data-task="${current}"]`)?.scrollIntoView({ block: 'nearest' });
+    const item = current ? this.renderRoot.querySelector(`li[data-task="${current}"]`) : null;
+    if (item) scrollInBox(item);
   }
 
   override render() {

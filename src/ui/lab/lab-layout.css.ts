@@ -66,7 +66,8 @@ const labGrid = css`
       flex-wrap: wrap;
     }
     .header-actions button:not(.primary),
-    .welcome button {
+    .welcome button,
+    .legend-toggle {
       font: inherit;
       min-height: var(--rt-target);
       padding: 0 12px;
@@ -77,7 +78,8 @@ const labGrid = css`
       cursor: pointer;
     }
     .header-actions button:focus-visible,
-    .welcome button:focus-visible {
+    .welcome button:focus-visible,
+    .legend-toggle:focus-visible {
       outline: 3px solid var(--rt-focus);
       outline-offset: 2px;
     }
@@ -132,7 +134,7 @@ const labGrid = css`
       box-shadow: var(--rt-shadow);
     }
     /* The ray colours over the view, below its top toolbar, in levels whose ray panel does not show them. */
-    rt-ray-legend.view-legend {
+    .view-legend {
       position: absolute;
       top: 60px;
       left: var(--rt-space);
@@ -143,6 +145,10 @@ const labGrid = css`
       border-radius: var(--rt-radius);
       background: var(--rt-surface);
       box-shadow: var(--rt-shadow);
+    }
+    /* Its button only folds it away on a phone (below); it looks like the header's buttons. */
+    .legend-toggle {
+      display: none;
     }
     /* The ray debugger: its button under the view's top-right buttons; open, a dock over the view's lower half. */
     rt-ray-debugger {
@@ -207,7 +213,11 @@ const labNarrow = css`
     :host {
       grid-template-columns: minmax(0, 1fr);
       grid-template-rows: repeat(4, max-content);
-      overflow-y: auto;
+      /* The page scrolls, not the lab: the task list then has no scroll box of its own, and a
+         new current task does not scroll the view away (scroll-in-box.ts). */
+      height: auto;
+      min-height: 100vh;
+      overflow: visible;
     }
     :host([free-lab]) {
       grid-template-columns: minmax(0, 1fr);
@@ -222,12 +232,35 @@ const labNarrow = css`
     main {
       grid-area: 2 / 1;
     }
-    /* Over a phone's small view the legend is smaller, and taps go through it to the scene. */
-    rt-ray-legend.view-legend {
+    /* Over a phone's small view the legend folds away behind a small button; open, it is
+       smaller, and taps go through it to the scene. */
+    .view-legend {
       width: auto;
       max-width: 45%;
-      padding: 2px 6px;
+      padding: 0;
+      background: none;
+      box-shadow: none;
       font-size: 0.75rem;
+    }
+    .legend-toggle {
+      display: block;
+      box-shadow: var(--rt-shadow);
+    }
+    .legend-toggle::after {
+      content: ' ▾' / '';
+    }
+    .view-legend[data-open] .legend-toggle::after {
+      content: ' ▴' / '';
+    }
+    .view-legend:not([data-open]) rt-ray-legend {
+      display: none;
+    }
+    .view-legend rt-ray-legend {
+      margin-top: 4px;
+      padding: 2px 6px;
+      border-radius: var(--rt-radius);
+      background: var(--rt-surface);
+      box-shadow: var(--rt-shadow);
       opacity: 0.92;
       pointer-events: none;
     }

@@ -7,6 +7,7 @@ import type { Assignment } from '../../classroom/assignment.ts';
 import type { SurveySubmission } from '../../classroom/survey-answers.ts';
 import { SurveyStore } from '../../classroom/survey-store.ts';
 import { chooseLocale, currentLocale } from '../../i18n/locale.ts';
+import { issueText } from '../../i18n/issue-text.ts';
 import { progressProblemText } from '../../i18n/progress-problem-text.ts';
 import type { Store } from '../../lab-state/store.ts';
 import type { LevelCatalog } from '../../quest/level-index.ts';
@@ -90,7 +91,7 @@ export class QuestController implements ReactiveController {
       session.attach(document),
       () => session.dispose(),
     );
-    const problems = [session.problem && progressProblemText(session.problem), catalog.errors.length > 0 ? msg(str`The level list could not be read: ${catalog.errors.join('; ')}`) : undefined];
+    const problems = [session.problem && progressProblemText(session.problem), catalog.errors.length > 0 ? msg(str`The level list could not be read: ${catalog.errors.map(issueText).join('; ')}`) : undefined];
     // The toast is on the page after the first render.
     void this.host.updateComplete.then(() => problems.forEach((problem) => problem && this.host.toast(problem, 'error')));
     const newcomer = Object.keys(session.engine.progress.levels).length === 0 && session.engine.progress.current === null;
@@ -195,7 +196,7 @@ export class QuestController implements ReactiveController {
       case 'import': {
         const imported = session.importText(command.text);
         if (imported.ok) this.host.toast(msg(str`Progress imported from ${command.fileName}.`));
-        else this.host.toast(msg(str`${command.fileName} is not a progress file this app can read, so nothing changed:\n${imported.errors.slice(0, 3).join('\n')}`), 'error');
+        else this.host.toast(msg(str`${command.fileName} is not a progress file this app can read, so nothing changed:\n${imported.errors.slice(0, 3).map(issueText).join('\n')}`), 'error');
         return;
       }
       case 'reset':

@@ -23,6 +23,7 @@ import type { ScreenBox } from './guide-targets.ts';
 import { labLayout } from './lab-layout.css.ts';
 import { taskColumn } from './task-column.ts';
 import { levelPanels } from './level-panels.ts';
+import { viewLegendBox } from './view-legend.ts';
 import { QuestController } from './quest-controller.ts';
 import type { RtRenderWindow } from './render-window/rt-render-window.ts';
 import type { RtSceneView } from './rt-scene-view.ts';
@@ -50,6 +51,7 @@ export class RtLab extends LitElement {
   static override properties = {
     hover: { state: true },
     renderOpen: { state: true },
+    legendOpen: { state: true },
     assignment: { attribute: false },
     sharedScene: { attribute: false },
   };
@@ -58,6 +60,8 @@ export class RtLab extends LitElement {
 
   declare private hover: RayHoverDetail | null;
   declare private renderOpen: boolean;
+  /** Whether the ray legend over the view is open where it folds away (phones). */
+  declare private legendOpen: boolean;
   declare assignment: Assignment | null;
   declare sharedScene: Scene | null;
 
@@ -76,6 +80,7 @@ export class RtLab extends LitElement {
     super();
     this.hover = null;
     this.renderOpen = false;
+    this.legendOpen = false;
     this.assignment = null;
     this.sharedScene = null;
     this.services = this.createServices();
@@ -278,7 +283,7 @@ export class RtLab extends LitElement {
           @view-ready=${this.onViewReady}
         ></rt-scene-view>
         ${shows('screen-preview') ? html`<rt-screen-preview .rays=${this.services.screenRays}></rt-screen-preview>` : nothing}
-        ${viewLegend && state.rays.showRays ? html`<rt-ray-legend class="view-legend"></rt-ray-legend>` : nothing}
+        ${viewLegend && state.rays.showRays ? viewLegendBox(this.legendOpen, () => (this.legendOpen = !this.legendOpen)) : nothing}
         ${shows('debugger')
           ? html`<rt-ray-debugger
               .shownControls=${controls('debugger')}

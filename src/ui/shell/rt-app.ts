@@ -1,4 +1,5 @@
 import { msg, str } from '@lit/localize';
+import { issueText } from '../../i18n/issue-text.ts';
 import { html, LitElement, nothing } from 'lit';
 import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
 import { isSceneFragment } from '../../app/scene-link.ts';
@@ -108,7 +109,7 @@ export class RtApp extends LitElement {
 }
 
 function problemText(result: Extract<AssignmentLinkResult, { ok: false }>): string {
-  const reasons = result.reasons.join('; ');
+  const reasons = result.reasons.map(issueText).join('; ');
   switch (result.kind) {
     case 'damaged':
       return msg(str`This assignment link is damaged (${reasons}). You are playing freely.`);

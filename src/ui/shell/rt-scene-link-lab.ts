@@ -1,4 +1,5 @@
 import { msg, str } from '@lit/localize';
+import { issueText } from '../../i18n/issue-text.ts';
 import { html, LitElement, nothing } from 'lit';
 import type { SceneParseResult } from '../../scene/scene-schema.ts';
 import { decodeSceneLink } from '../../app/scene-link.ts';
@@ -42,7 +43,7 @@ export class RtSceneLinkLab extends LitElement {
     const { result } = this.read;
     return result.ok
       ? html`<rt-lab .sharedScene=${result.scene}></rt-lab>`
-      : html`<rt-link-notice .text=${msg(str`This scene link is damaged (${result.errors.join('; ')}). The lab opens without it.`)}></rt-link-notice><rt-lab></rt-lab>`;
+      : html`<rt-link-notice .text=${msg(str`This scene link is damaged (${result.errors.map(issueText).join('; ')}). The lab opens without it.`)}></rt-link-notice><rt-lab></rt-lab>`;
   }
 }
 

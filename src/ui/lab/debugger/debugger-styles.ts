@@ -86,6 +86,10 @@ export const debuggerStyles = css`
     min-height: 0;
     overflow-y: auto;
   }
+  .columns > :focus-visible {
+    outline: 3px solid var(--rt-focus);
+    outline-offset: -3px;
+  }
   .why {
     font-size: 0.8rem;
   }

@@ -311,7 +311,8 @@ export class RtRayDebugger extends StorePanel {
         <span class="keys">${msg('Keys: → ← Space Home End')}</span>
       </div>
       <div class="columns">
-        <rt-debug-code data-guide=${this.guideOf('code') ?? nothing} .line=${step.line}></rt-debug-code>
+        <!-- Focusable: its lines scroll in a short dock, and a keyboard must be able to scroll them too (WCAG 2.1.1). -->
+        <rt-debug-code tabindex="0" data-guide=${this.guideOf('code') ?? nothing} .line=${step.line}></rt-debug-code>
         <div class="right">
           <rt-debug-equation
             data-guide=${[this.guideOf('equation'), step.kind === 'average' ? this.guideOf('pixel') : undefined].filter(Boolean).join(' ')}

@@ -7,6 +7,7 @@ import { messageLine } from '../../controls/status-message.ts';
 import { StorePanel } from './store-panel.ts';
 import { shownName } from '../scene-names.ts';
 import { currentLocale } from '../../../i18n/locale.ts';
+import { issueText } from '../../../i18n/issue-text.ts';
 
 /** A note under the buttons: what happened, or why a file could not be loaded. */
 interface Note {
@@ -77,7 +78,7 @@ export class RtFilePanel extends StorePanel {
     if (!file) return;
     const read = readSceneFile(await file.text(), file.size);
     if (!read.ok) {
-      this.note = { text: msg(str`${file.name} is not a scene file this app can open; your scene is unchanged.\n${read.errors.join('\n')}`), problem: true };
+      this.note = { text: msg(str`${file.name} is not a scene file this app can open; your scene is unchanged.\n${read.errors.map(issueText).join('\n')}`), problem: true };
       return;
     }
     const error = this.store?.dispatch({ type: 'scene.loaded', scene: read.scene });

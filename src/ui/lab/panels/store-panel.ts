@@ -1,5 +1,6 @@
 import { css, html, LitElement, nothing, type CSSResultGroup, type PropertyValues, type TemplateResult } from 'lit';
 import { ifDefined } from 'lit/directives/if-defined.js';
+import { issueLines } from '../../../i18n/issue-text.ts';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { LabState } from '../../../lab-state/lab-state.ts';
 import type { Store } from '../../../lab-state/store.ts';
@@ -178,7 +179,8 @@ export abstract class StorePanel extends LitElement {
 
   /** Dispatches `action` for the control `name`; keeps (or clears) the reason it was refused. */
   protected send(name: string, action: LabAction): void {
-    const error = this.store?.dispatch(action);
+    const refused = this.store?.dispatch(action);
+    const error = refused && issueLines(refused);
     if (error !== this.errors[name]) this.errors = { ...this.errors, [name]: error };
   }
 
