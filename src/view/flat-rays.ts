@@ -8,6 +8,7 @@
  */
 import type { ScreenRays } from '../render/screen-rays.ts';
 import type { RayNode, RayType } from '../tracer/ray-tree.ts';
+import { type GlossyCone, glossyCones } from './glossy-cone.ts';
 import { RAY_COLOR_KEYS, rayColorKey, type RayColorKey } from './ray-palette.ts';
 
 /** A ray that hits nothing is drawn this long, in metres (spec §3). */
@@ -56,7 +57,8 @@ export class FlatRays {
   /** Pixel p's rays are [pixelStart[p], pixelStart[p + 1]); pixel p = y · columns + x. */
   readonly pixelStart: Int32Array;
 
-  constructor(readonly columns: number, readonly rows: number) {
+  /** `mergeGlossy`: draw a glossy fan of more than 25 rays on one object as one cone (the ray debugger steps through every ray, so it keeps them). */
+  constructor(readonly columns: number, readonly rows: number, private readonly mergeGlossy = true) {
     this.pixelStart = new Int32Array(columns * rows + 1);
   }
 
@@ -82,8 +84,37 @@ export class FlatRays {
     const time = node.time ?? parentTime;
     this.time[i] = time;
     this.cone[i] = node.corners && (node.type === 'area-light' || node.type === 'area-shadow') ? this.addCone(node.corners) : -1;
-    const { children } = node;
-    for (let k = 0; k < children.length; k++) this.add(children[k], contribution, start + length, time);
+    this.addChildren(node.children, contribution, start + length, time);
+    this.subtreeEnd[i] = this.count;
+  }
+
+  /** Appends `children` and their subtrees; a glossy fan drawn as a cone (glossy-cone.ts) goes in as one entry. */
+  private addChildren(children: readonly RayNode[], contribution: number, start: number, time: number): void {
+    const cones = this.mergeGlossy ? glossyCones(children) : null;
+    for (let k = 0; k < children.length; k++) {
+      const child = children[k];
+      const cone = cones?.get(child);
+      if (cone) this.addGlossyCone(cone, start, time);
+      else if (!cones || !inCone(child, cones)) this.add(child, contribution, start, time);
+    }
+  }
+
+  /** One entry for the fan, its rays' own children under it, each starting where its ray arrives. */
+  private addGlossyCone({ node, corners }: GlossyCone, start: number, time: number): void {
+    const i = this.grow();
+    this.nodes.push(node);
+    for (let axis = 0; axis < 3; axis++) {
+      this.origin[i * 3 + axis] = node.origin[axis];
+      this.direction[i * 3 + axis] = node.direction[axis];
+    }
+    this.length[i] = node.length;
+    this.contribution[i] = node.contribution;
+    this.start[i] = start;
+    this.hit[i] = 1;
+    this.colorKey[i] = KEY_INDEX[rayColorKey(node.type, true)];
+    this.time[i] = time;
+    this.cone[i] = this.addCone(corners);
+    for (const ray of node.children) this.addChildren(ray.children, ray.contribution, start + ray.length, time);
     this.subtreeEnd[i] = this.count;
   }
 
@@ -113,13 +144,20 @@ export class FlatRays {
   }
 }
 
-/** Flattened once per ScreenRays object (they are never mutated: a new trace is a new object). */
-const flattened = new WeakMap<ScreenRays, FlatRays>();
+/** A ray of a fan drawn as one of `cones` (it is one of their nodes' children). */
+function inCone(ray: RayNode, cones: ReadonlyMap<RayNode, GlossyCone>): boolean {
+  for (const cone of cones.values()) if (cone.node.children.includes(ray)) return true;
+  return false;
+}
 
-export function flattenRays(rays: ScreenRays): FlatRays {
-  let flat = flattened.get(rays);
+/** Flattened once per ScreenRays object (they are never mutated: a new trace is a new object), with and without glossy cones. */
+const flattened = { true: new WeakMap<ScreenRays, FlatRays>(), false: new WeakMap<ScreenRays, FlatRays>() };
+
+export function flattenRays(rays: ScreenRays, glossyCones = true): FlatRays {
+  const cache = flattened[`${glossyCones}`];
+  let flat = cache.get(rays);
   if (flat) return flat;
-  flat = new FlatRays(rays.columns, rays.rows);
+  flat = new FlatRays(rays.columns, rays.rows, glossyCones);
   const pixels = rays.columns * rays.rows;
   for (let p = 0; p < pixels; p++) {
     flat.pixelStart[p] = flat.count;
@@ -127,6 +165,6 @@ export function flattenRays(rays: ScreenRays): FlatRays {
     for (const root of roots) flat.add(root, root.contribution, 0);
   }
   flat.pixelStart[pixels] = flat.count;
-  flattened.set(rays, flat);
+  cache.set(rays, flat);
   return flat;
 }

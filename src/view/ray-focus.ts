@@ -48,7 +48,8 @@ function screenOf(trace: PixelTrace): ScreenRays {
  */
 export function focusedRays(focus: RayFocus, options: RayViewOptions, into = new DrawnRays(), style?: RayStyle): DrawnRays {
   const all: RayViewOptions = { ...options, showRays: true, hideNoHit: false, hideNegligible: false, transparency: 0, animatePixelByPixel: false };
-  visibleRays(screenOf(focus.trace), all, null, into, style);
+  // Every glossy ray as itself: the debugger steps through (and highlights) each one.
+  visibleRays(screenOf(focus.trace), all, null, into, style, false);
   let travelEnd = 0;
   for (const list of [into.rays, into.cones]) {
     let kept = 0;

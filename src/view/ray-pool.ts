@@ -1,6 +1,6 @@
 /**
  * The drawn rays: one InstancedMesh of unit cylinders for every ray and one of unit
- * pyramids for the merged area-light cones, so drawing 50k rays takes the same two draw
+ * pyramids for the cones (merged area-light rays, wide glossy fans), so drawing 50k rays takes the same two draw
  * calls as drawing 10 (DESIGN.md: "the view draws, it does not decide" — the rules are in
  * ray-visibility.ts). Per instance: a matrix (position, axis, radius, length), a colour,
  * an alpha and the growth animation's (start, length) (ray-shader.ts).
@@ -63,7 +63,7 @@ export const RAY_CONES_NAME = 'ray-cones';
 export interface RayPoolStats {
   /** Cylinders drawn (mesh.count). */
   rays: number;
-  /** Area cones drawn. */
+  /** Cones drawn (area lights, wide glossy fans). */
   cones: number;
   /** Arrowheads drawn (one per ray of a chosen pixel; none for a whole screen). */
   arrows: number;
@@ -169,7 +169,7 @@ function cylinderGeometry(): BufferGeometry {
 
 /**
  * An area cone: apex at the origin, base corners (∓1, ∓1, 1) in RayNode.corners order, so
- * one affine instance matrix maps it onto any hit point and light rectangle.
+ * one affine instance matrix maps it onto any hit point and light rectangle (or glossy fan base).
  */
 function pyramidGeometry(): BufferGeometry {
   const base = [

@@ -56,7 +56,7 @@ export class SegmentList {
   colorKey = new Uint8Array(0);
   /** The pixel it belongs to, as y · columns + x. */
   pixel = new Int32Array(0);
-  /** Cones only: the light's four corners, 12 floats per cone (in RayNode.corners order). */
+  /** Cones only: the four corners of the base (the light, or across a glossy fan), 12 floats per cone (in RayNode.corners order). */
   corners = new Float32Array(0);
   /** The traced ray each segment draws (for hover). */
   readonly nodes: RayNode[] = [];
@@ -91,7 +91,7 @@ export class SegmentList {
   }
 }
 
-/** Everything drawn for one state: cylinders for rays, cones for merged area rays. */
+/** Everything drawn for one state: cylinders for rays, cones for merged area rays and wide glossy fans. */
 export class DrawnRays {
   readonly rays = new SegmentList(false);
   readonly cones = new SegmentList(true);
@@ -134,7 +134,9 @@ const DARKEN: RayStyle = { fadeTo: [0, 0, 0] };
  *   lerp(minRadius, maxRadius, contribution), which also works with min > max.
  * - colorByTime: a ray under a lens/time ray (distribution-effects §3) takes its time's
  *   colour (time-colors.ts) instead of its type's; rays without a time keep theirs.
- * - area-light / area-shadow nodes become cones from the hit point to the light's corners.
+ * - area-light / area-shadow nodes become cones from the hit point to the light's corners;
+ *   so does a glossy fan of more than 25 rays that all hit one object (glossy-cone.ts),
+ *   unless `glossyCones` is false (the ray debugger, which steps through each ray).
  */
 export function visibleRays(
   rays: ScreenRays | null,
@@ -142,11 +144,12 @@ export function visibleRays(
   selectedPixel: readonly [number, number] | null,
   into = new DrawnRays(),
   style: RayStyle = DARKEN,
+  glossyCones = true,
 ): DrawnRays {
   into.clear();
   if (!rays || !options.showRays) return into;
   into.columns = rays.columns;
-  const flat = flattenRays(rays);
+  const flat = flattenRays(rays, glossyCones);
   const pass = new VisibilityPass(flat, into, options, style);
   if (selectedPixel) {
     const [x, y] = selectedPixel;

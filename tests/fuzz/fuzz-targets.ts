@@ -82,7 +82,7 @@ export async function fuzzTargets(): Promise<FuzzTarget[]> {
     askParticipantCode: true,
     survey: 'default',
   };
-  // The index is fuzzed over two small levels: reading the game's seventeen on every case would take minutes.
+  // The index is fuzzed over two small levels: reading the game's twenty on every case would take minutes.
   const smallLevels = new Map(['first', 'second'].map((id) => [levelFileName(id), JSON.stringify(levelWithId(id))]));
   const smallIndex = { version: 1, chapters: [{ id: 'test', title: { en: 'Test', nl: 'Test' }, levels: ['first', 'second'] }] };
   return [

@@ -5,6 +5,7 @@ import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { Camera, LightType, RenderSettings, SamplePattern } from '../../../scene/scene.ts';
 import { LIMITS } from '../../../scene/scene-limits.ts';
 import { effectiveFocusDistance, focusDistanceTo } from '../../../scene/camera-focus.ts';
+import { shownName } from '../scene-names.ts';
 import { apertureSpec, focusDistanceSpec, lensSamplesSpec, timeSamplesSpec } from './distribution-specs.ts';
 import { StorePanel, type ControlPart, type ControlText } from './store-panel.ts';
 
@@ -173,7 +174,7 @@ export class RtTracerPanel extends StorePanel {
               ?disabled=${!selected}
               @click=${() => selected && this.send('focusOnSelected', cam({ focusDistance: focusDistanceTo(camera, selected.position) }))}
             >
-              ${selected ? msg(str`Focus on ${selected.name ?? selected.id}`) : msg('Focus on the selected object')}
+              ${selected ? msg(str`Focus on ${shownName(selected.name, selected.id)}`) : msg('Focus on the selected object')}
             </button>
             ${this.errorLine('focusOnSelected')}`
         : nothing,
