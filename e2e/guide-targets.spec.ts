@@ -66,6 +66,34 @@ async function expectGuideOnScreen(page: Page, levelId: string, task: LevelTask)
   const ring = await page.getByTestId('guide-ring').boundingBox();
   expect(ring, `${levelId}/${task.id}: the ring is drawn`).not.toBeNull();
   expect(Math.abs(ring!.x + ring!.width / 2 - (box.left + box.width / 2)), `${levelId}/${task.id}: the ring is around ${target}`).toBeLessThan(12);
+  await expectHitWhereRingPoints(page, `${levelId}/${task.id}`, target, { x: ring!.x + ring!.width / 2, y: ring!.y + ring!.height / 2 });
+}
+
+/**
+ * What a learner would click where the ring points is the guide's target: a control that
+ * carries its id (under the pointer, nothing on top of it), or in the 3D view the object,
+ * light or pixel it names.
+ */
+async function expectHitWhereRingPoints(page: Page, where: string, target: string, centre: { x: number; y: number }): Promise<void> {
+  await page.mouse.move(centre.x, centre.y);
+  const hit = await lab(page).evaluate((element, id) => {
+    const sized = (element as unknown as { guideElements(id: string): Element[] }).guideElements(id).filter((carrier) => carrier.getBoundingClientRect().width > 0);
+    if (sized.length > 0) return { control: sized.some((carrier) => carrier.matches(':hover')) };
+    return { control: null };
+  }, target);
+  if (hit.control !== null) {
+    expect(hit.control, `${where}: the pointer where the ring points is over ${target}`).toBe(true);
+    return;
+  }
+  const item = /^view\.item:(.+)$/.exec(target)?.[1];
+  const pixel = /^screen\.pixel:(\d+),(\d+)$/.exec(target);
+  if (!item && !pixel) return; // a control reached through another (its panel's note) until it is shown
+  const picked = await page.locator('rt-scene-view').evaluate(
+    (element, point) => (element as unknown as { labView: { pickAt(x: number, y: number): unknown } }).labView.pickAt(point.x, point.y),
+    centre,
+  );
+  if (item) expect(picked, `${where}: a click where the ring points picks ${item}`).toMatchObject({ id: item });
+  else expect(picked, `${where}: a click where the ring points picks pixel ${pixel![1]},${pixel![2]}`).toEqual({ kind: 'pixel', pixel: [Number(pixel![1]), Number(pixel![2])] });
 }
 
 /** Climbs the current task's hint ladder to "Show me", checking the ring on the way, then lets the app do the task. */
