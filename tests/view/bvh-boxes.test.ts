@@ -5,6 +5,8 @@ import { labActionSchema } from '../../src/quest/lab-action-schema.ts';
 import { loadMeshesFromDisk } from '../../src/scene/load-meshes-node.ts';
 import type { MeshLibrary } from '../../src/scene/mesh-data.ts';
 import { parseScene } from '../../src/scene/scene-schema.ts';
+import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
+import { countPixelTests } from '../../src/tracer/triangle-test-count.ts';
 import { BvhBoxes } from '../../src/view/bvh-boxes.ts';
 
 let meshes: MeshLibrary;
@@ -12,9 +14,10 @@ beforeAll(async () => {
   meshes = await loadMeshesFromDisk(['character', 'capsule']);
 });
 
-function labState(): LabState {
+function labState(camera: object = {}): LabState {
   const parsed = parseScene({
     version: 1,
+    camera,
     objects: [
       { id: 'ball', shape: 'sphere' },
       { id: 'hero', shape: 'mesh', mesh: 'character', position: [0, 0.9, 0] },
@@ -77,6 +80,32 @@ describe('the boxes drawn in the view', () => {
     let state = reduce(labState(), { type: 'bvh.changed', changes: { show: true, depth: 0, showBounds: true } }).state;
     state = reduce(state, { type: 'selection.changed', selection: { kind: 'object', id: 'pill' } }).state;
     expect(drawn(await boxesFor(state))).toEqual({ 'bvh:pill': 1, bounds: 3 });
+  });
+
+  it('with a pixel selected, draw the boxes its ray entered (green) and missed (red) over a dimmed tree', async () => {
+    // Close up on the character, so that several pixels show it.
+    let state = reduce(labState({ position: [0, 0.9, 1.5], target: [0, 0.9, 0] }), { type: 'bvh.changed', changes: { show: true, depth: 1 } }).state;
+    const traced = buildTracerScene(state.scene, meshes);
+    const [columns, rows] = state.scene.camera.pixels;
+    const pixels = Array.from({ length: columns * rows }, (_, i) => [i % columns, Math.floor(i / columns)] as const);
+    const pixel = pixels.find((p) => countPixelTests(traced, meshes, p).hitId === 'hero')!;
+    expect(pixel).toBeDefined();
+    state = reduce(state, { type: 'pixel.selected', pixel: [...pixel] }).state;
+    const boxes = await boxesFor(state);
+    const visits = countPixelTests(traced, meshes, pixel).objects.find((o) => o.id === 'hero')!.mesh!.visits;
+    const drawnBoxes = drawn(boxes);
+    expect(drawnBoxes['bvh-ray:hero']).toBe(visits.length);
+    expect(drawnBoxes['bvh:hero']).toBe(3);
+    const colours = (name: string) => {
+      const line = boxes.object.getObjectByName(name) as unknown as { geometry: { getAttribute(n: string): { array: ArrayLike<number> } } };
+      const array = line.geometry.getAttribute('color').array;
+      // One RGBA per box (its first corner).
+      return Array.from({ length: array.length / 96 }, (_, box) => Array.from(array).slice(box * 96, box * 96 + 4));
+    };
+    const ray = colours('bvh-ray:hero');
+    visits.forEach((visit, i) => expect(ray[i]![1]! > ray[i]![0]!).toBe(visit.entered));
+    expect(visits.some((v) => !v.entered)).toBe(true);
+    expect(Math.max(...colours('bvh:hero').map((c) => c[3]!))).toBeLessThan(0.5);
   });
 
   it('draw nothing when both are off, and keep the newest state when models load late', async () => {
