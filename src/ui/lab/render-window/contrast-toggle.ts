@@ -61,13 +61,15 @@ export class ContrastToggle implements ReactiveController {
     this.host.requestUpdate();
   }
 
-  /** The switch, and which levels the stretch spreads over 0–255 while it is on. */
+  /** The switch, and which levels the stretch spreads over 0–255 while it is on: for the viewer's toolbar. */
   control() {
     const range = this.on ? this.range : null;
-    return html`<label class="toggle" data-guide="render.contrast" title=${msg('Show the image’s darkest level as black and its brightest as white, so steps of one level stand out (C). The saved image is not changed.')}>
+    return html`<span slot="tools" class="group">
+      <label class="toggle" data-guide="render.contrast" title=${msg('Show the image’s darkest level as black and its brightest as white, so steps of one level stand out (C). The saved image is not changed.')}>
         <input type="checkbox" .checked=${this.on} @change=${() => this.toggle()} /><span>${msg('Stretch contrast')}</span>
       </label>
-      ${range ? html`<span class="phase" role="status">${msg(str`Levels ${range.low}–${range.high} shown as 0–255`)}</span>` : nothing}`;
+      ${range ? html`<span class="group-label" role="status">${msg(str`Levels ${range.low}–${range.high} shown as 0–255`)}</span>` : nothing}
+    </span>`;
   }
 
   /** The stretched picture, slotted as the traced image while the switch is on. */

@@ -284,7 +284,6 @@ export class RtRenderWindow extends LitElement {
         </button>
         <button data-guide="render.cancel" ${ref(this.cancelButton)} @click=${this.cancelRender} ?disabled=${!this.jobs.running} title=${msg('Stop the render')}>${msg('Cancel')}</button>
         <div class="progress">${this.progress()}</div>
-        ${this.contrast.control()}
         <button data-guide="render.save" @click=${() => void this.save()} ?disabled=${this.jobs.status.kind !== 'finished'} title=${msg('Save the rendered image as a PNG file, at its exact pixels')}>
           ${msg('Save as PNG')}
         </button>
@@ -316,7 +315,7 @@ export class RtRenderWindow extends LitElement {
   private stage({ width, height }: ShownRender) {
     return html`<rt-image-compare data-guide="render.zoom render.compare" ${ref(this.compare)} .imageWidth=${width} .imageHeight=${height} .note=${this.rasterNote}>
       <canvas slot=${this.contrast.tracedSlot} ${ref(this.tracedCanvas)} role="img" aria-label=${msg('The ray traced image')}></canvas>
-      ${this.contrast.stretchedCanvas()}
+      ${this.contrast.stretchedCanvas()} ${this.contrast.control()}
       <canvas slot="raster" ${ref(this.rasterCanvas)} role="img" aria-label=${msg('The raster image from the same camera')}></canvas>
     </rt-image-compare>`;
   }
