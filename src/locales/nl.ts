@@ -85,6 +85,7 @@
 's1bc562a576ae7b45': `Lens en sluiter`,
 's1c0335f2a71b9fe6': `Vraag bij de start om een code (voor onderzoek)`,
 's1c06a80a3ea32f92': str`beschadigde export: ${0}: ${1}`,
+'s1c880fc49e79ebd8': `In het beeld: de dozen waar deze straal in ging zijn doorgetrokken groen; de dozen die hij testte en miste zijn rood gestippeld, en alles daarbinnen werd overgeslagen.`,
 's1c8cc3603762c768': `In- en uitzoomen`,
 's1cfb3df378ae8625': `Spiegelend (ks)`,
 's1cfed58a94923719': `glas, diepte &lt; max: kr ← Schlick, kt ← 1 − kr`,

@@ -1,6 +1,7 @@
 import {
   type Box3,
   BufferGeometry,
+  Color,
   Float32BufferAttribute,
   Group,
   LineBasicMaterial,
@@ -15,7 +16,7 @@ import { meshNamesInScene } from '../scene/mesh-names.ts';
 import { type BvhNode, bvhTree } from '../tracer/bvh-tree.ts';
 import { meshAccel } from '../tracer/shapes/mesh-accel.ts';
 import { buildTracerScene, objectToWorld } from '../tracer/tracer-scene.ts';
-import { type BoxVisit, countPixelTests } from '../tracer/triangle-test-count.ts';
+import { countPixelTests } from '../tracer/triangle-test-count.ts';
 import type { MeshLoader } from './scene-sync.ts';
 
 /** BVH boxes: solid orange lines; the level asked for at full strength, the boxes around them faint. */
@@ -23,9 +24,12 @@ const BVH_COLOR = [0.96, 0.45, 0.05] as const;
 const PARENT_ALPHA = 0.22;
 /** With a pixel selected, the tree steps back so that its ray's boxes stand out. */
 const BEHIND_RAY_ALPHA = 0.12;
-/** The selected pixel's ray: boxes it entered bright green, boxes whose test failed (their subtree skipped) red. */
-const ENTERED_COLOR = [0.13, 0.9, 0.35, 1] as const;
-const MISSED_COLOR = [0.95, 0.15, 0.2, 0.7] as const;
+/**
+ * The selected pixel's ray: boxes it entered solid bright green, boxes whose test failed
+ * (their subtree skipped) dashed red, so the two differ by more than colour.
+ */
+const ENTERED_COLOR = [0.13, 0.9, 0.35] as const;
+const MISSED_COLOR = 0xef2636;
 /** Whole-object bounding boxes: dashed cyan, so that they differ from BVH boxes by more than colour. */
 const BOUNDS_COLOR = 0x0891b2;
 /** Drawn over the scene: the boxes inside a model would otherwise be hidden by it. */
@@ -40,7 +44,7 @@ const EDGES = [0, 1, 2, 3, 4, 5, 6, 7, 0, 2, 1, 3, 4, 6, 5, 7, 0, 4, 1, 5, 2, 6,
  * selected) down to `bvh.depth`, and, with `bvh.showBounds`, every object's world bounding
  * box, the one the tracer's slab test tries before the object itself. With a pixel selected,
  * the BVH boxes its primary ray tested stand out (src/tracer/triangle-test-count.ts walks
- * the tree as the tracer's cast does): entered ones green, failed ones red, whatever the depth.
+ * the tree as the tracer's cast does): entered ones solid green, failed ones dashed red, whatever the depth.
  *
  * Both come from the tracer's own code (buildTracerScene, meshAccel), so they are the real
  * boxes, not a look-alike. Models load asynchronously; `changed` is called when the boxes
@@ -51,6 +55,8 @@ export class BvhBoxes {
   readonly object = new Group();
   private readonly bvhMaterial = new LineBasicMaterial({ vertexColors: true, transparent: true, depthTest: false, depthWrite: false });
   private readonly boundsMaterial = new LineDashedMaterial({ color: BOUNDS_COLOR, dashSize: 0.08, gapSize: 0.05, depthTest: false, depthWrite: false });
+  private readonly enteredMaterial = new LineBasicMaterial({ color: new Color(...ENTERED_COLOR), depthTest: false, depthWrite: false });
+  private readonly missedMaterial = new LineDashedMaterial({ color: MISSED_COLOR, dashSize: 0.02, gapSize: 0.015, depthTest: false, depthWrite: false });
   private shown: Pick<LabState, 'scene' | 'selection' | 'selectedPixel' | 'bvh'> | null = null;
   private request = 0;
 
@@ -84,8 +90,7 @@ export class BvhBoxes {
 
   dispose(): void {
     this.clear();
-    this.bvhMaterial.dispose();
-    this.boundsMaterial.dispose();
+    for (const material of [this.bvhMaterial, this.boundsMaterial, this.enteredMaterial, this.missedMaterial]) material.dispose();
   }
 
   private draw(state: LabState, meshes: MeshLibrary | null): void {
@@ -111,18 +116,23 @@ export class BvhBoxes {
     });
   }
 
-  /** The BVH boxes the selected pixel's primary ray tested, per model it reached: entered and missed. */
+  /** The BVH boxes the selected pixel's primary ray tested, per model it reached: entered, and missed. */
   private rayLines(state: LabState, meshes: MeshLibrary): LineSegments[] {
     if (!state.selectedPixel) return [];
     const tests = countPixelTests(buildTracerScene(state.scene, meshes), meshes, state.selectedPixel);
     return tests.objects.flatMap(({ id, mesh }) => {
       const object = state.scene.objects.find((candidate) => candidate.id === id);
-      if (!object || !mesh || mesh.visits.length === 0) return [];
-      const lines = new LineSegments(visitGeometry(mesh.visits), this.bvhMaterial);
-      placeAt(lines, objectToWorld(object));
-      lines.renderOrder = ON_TOP + 1;
-      lines.name = `bvh-ray:${id}`;
-      return [lines];
+      if (!object || !mesh) return [];
+      return (['entered', 'missed'] as const).flatMap((outcome) => {
+        const nodes = mesh.visits.filter((visit) => visit.entered === (outcome === 'entered')).map((visit) => visit.node);
+        if (nodes.length === 0) return [];
+        const lines = new LineSegments(nodeGeometry(nodes), outcome === 'entered' ? this.enteredMaterial : this.missedMaterial);
+        placeAt(lines, objectToWorld(object));
+        if (outcome === 'missed') lines.computeLineDistances();
+        lines.renderOrder = ON_TOP + 1;
+        lines.name = `bvh-ray-${outcome}:${id}`;
+        return [lines];
+      });
     });
   }
 
@@ -174,18 +184,12 @@ function treeGeometry(root: BvhNode, depth: number, strength: number): BufferGeo
   return geometry;
 }
 
-/** One box per test of a ray's walk, coloured by its outcome. */
-function visitGeometry(visits: readonly BoxVisit[]): BufferGeometry {
+/** The edges of BVH nodes' boxes, in the model's own space. */
+function nodeGeometry(nodes: readonly BvhNode[]): BufferGeometry {
   const positions: number[] = [];
-  const colors: number[] = [];
-  for (const { node, entered } of visits) {
-    const b = node.bounds;
-    pushBox(positions, b[0], b[1], b[2], b[3], b[4], b[5]);
-    for (let i = 0; i < EDGES.length; i++) colors.push(...(entered ? ENTERED_COLOR : MISSED_COLOR));
-  }
+  for (const { bounds: b } of nodes) pushBox(positions, b[0], b[1], b[2], b[3], b[4], b[5]);
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new Float32BufferAttribute(positions, 3));
-  geometry.setAttribute('color', new Float32BufferAttribute(colors, 4));
   return geometry;
 }
 
