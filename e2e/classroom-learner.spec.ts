@@ -3,7 +3,7 @@ import type { Assignment } from '../src/classroom/assignment.ts';
 import { encodeAssignment } from '../src/classroom/assignment-link.ts';
 import { parseCsv } from '../src/classroom/csv-text.ts';
 import { answerDefaultSurvey, download } from './support/classroom-steps.ts';
-import { closeRenderWindow, collectErrors, openRayTracer, playLevel1UpToTheRayTracer } from './support/game-steps.ts';
+import { closeRenderWindow, collectErrors, playLevel1UpToTheRayTracer, renderFirstImage } from './support/game-steps.ts';
 
 // One student, one learner: a student who waits 10 s before typing their code, downloads a
 // file midway, reloads, downloads again, finishes the level and the survey and presses two
@@ -54,7 +54,7 @@ test('one student hands in four files: the dashboard shows one learner who passe
   await page.reload();
   await expect(page.locator('rt-task-card[status="current"]')).toContainText('Open the ray tracer');
   const afterReload = await download(page, 'Download JSON');
-  await openRayTracer(page);
+  await renderFirstImage(page);
   await closeRenderWindow(page);
   const survey = page.locator('rt-lab rt-survey');
   await answerDefaultSurvey(survey, '12');

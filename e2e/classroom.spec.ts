@@ -5,7 +5,7 @@ import { decodeAssignment } from '../src/classroom/assignment-link.ts';
 import { parseCsv } from '../src/classroom/csv-text.ts';
 import { eventLogSchema } from '../src/quest/event-log.ts';
 import { answerDefaultSurvey, download } from './support/classroom-steps.ts';
-import { closeRenderWindow, collectErrors, openRayTracer, playLevel1UpToTheRayTracer } from './support/game-steps.ts';
+import { closeRenderWindow, collectErrors, playLevel1UpToTheRayTracer, renderFirstImage } from './support/game-steps.ts';
 
 // The classroom as a teacher and a student use it: build an assignment on #/teacher, open
 // its link as a student (participant code), play it, answer the survey and download the
@@ -176,7 +176,7 @@ test('a student plays a one-level assignment, answers the survey and downloads C
   await expect(dialog.getByRole('textbox', { name: 'Participant code' })).toBeHidden();
   await page.getByRole('button', { name: 'Got it' }).click();
   await playLevel1UpToTheRayTracer(page);
-  await openRayTracer(page);
+  await renderFirstImage(page);
   await closeRenderWindow(page);
 
   // The assignment's only level is passed: its survey takes the task column.

@@ -76,7 +76,7 @@ async function dragBall(page: Page): Promise<void> {
 
 /**
  * Level 1's tasks up to its last one, "Open the ray tracer", which the caller does
- * (`openRayTracer`) and checks: what follows differs in free play (the level's end) and
+ * (`renderFirstImage`) and checks: what follows differs in free play (the level's end) and
  * in an assignment (its survey). Uses two text hints, a "Show me where" and one "Show me".
  */
 export async function playLevel1UpToTheRayTracer(page: Page): Promise<void> {
@@ -120,9 +120,16 @@ export async function playLevel1UpToTheRayTracer(page: Page): Promise<void> {
   await expect(current(page)).toContainText('Open the ray tracer');
 }
 
-/** Opens the render window with the header's button (level 1's last task). */
+/** Opens the render window with the header's button. */
 export async function openRayTracer(page: Page): Promise<void> {
   await page.locator('[data-command="render-open"]').click();
+}
+
+/** Level 1's last task: open the render window and render the image (opening alone shows no image yet). */
+export async function renderFirstImage(page: Page): Promise<void> {
+  await openRayTracer(page);
+  await page.locator('rt-render-window button.primary').click();
+  await expect(page.locator('rt-render-window [data-testid="render-status"]')).toContainText('Done in', { timeout: 60_000 });
 }
 
 export async function closeRenderWindow(page: Page): Promise<void> {

@@ -41,7 +41,7 @@ export const LAB_CONTROLS = {
   ],
   gizmo: ['translate', 'rotate', 'scale', 'space', 'snap'],
   'screen-preview': ['grid'],
-  render: ['open', 'start', 'cancel', 'zoom', 'save', 'compare', 'close'],
+  render: ['open', 'start', 'cancel', 'zoom', 'save', 'compare', 'close', 'contrast'],
   'add-remove': ['add-object', 'add-light', 'delete'],
   file: ['save', 'load', 'share'],
   bvh: ['show', 'depth', 'bounds'],

@@ -2,9 +2,13 @@
  * Light attenuation (spec §2), the same formulas as the Virtual Ray Tracer.
  */
 
+/** The constant, linear and quadratic terms of the distance attenuation (spec §2). */
+export const DISTANCE_ATTENUATION = { constant: 0.04, linear: 0.1, quadratic: 0.06 } as const;
+
 /** Distance attenuation 1 / (0.04 + 0.1·d + 0.06·d²): constant, linear and quadratic terms. */
 export function distanceAttenuation(d: number): number {
-  return 1 / (0.04 + 0.1 * d + 0.06 * d * d);
+  const { constant, linear, quadratic } = DISTANCE_ATTENUATION;
+  return 1 / (constant + linear * d + quadratic * d * d);
 }
 
 /**

@@ -16,6 +16,15 @@ export interface MeshTests {
   bruteForce: number;
   /** The nearest hit's t along the given direction, or Infinity. */
   t: number;
+  /** Every box tested, in the walk's order: entered (the ray meets it) or missed (its subtree skipped). */
+  visits: BoxVisit[];
+}
+
+/** One BVH box test of a ray's walk. */
+export interface BoxVisit {
+  node: BvhNode;
+  /** True when the ray met the box and the walk went inside; false when the test failed. */
+  entered: boolean;
 }
 
 /** What one ray cost against one object of a scene. */
@@ -74,7 +83,7 @@ function walkMesh(
   unitRay.direction.copy(d).divideScalar(scale);
   const counter = new MeshTestCounter(accel, unitRay, tMax * scale);
   const hit = search(counter, tree.root, tree.triangles);
-  return { boxes: counter.boxes, triangles: counter.triangles, bruteForce: tree.triangles, t: hit ? hit.distance / scale : Infinity };
+  return { boxes: counter.visits.length, triangles: counter.triangles, bruteForce: tree.triangles, t: hit ? hit.distance / scale : Infinity, visits: counter.visits };
 }
 
 /**
@@ -98,7 +107,7 @@ export function countRayTests(scene: TracerScene, meshes: MeshLibrary, ray: Ray)
       const toLocal = objectToWorld(object).invert();
       const o = ray.origin.clone().applyMatrix4(toLocal);
       const d = ray.direction.clone().applyMatrix3(new Matrix3().setFromMatrix4(toLocal));
-      mesh = boundsHit ? countMeshTests(accel, o, d, hit.t) : { boxes: 0, triangles: 0, bruteForce: bvhTree(accel.bvh).triangles, t: Infinity };
+      mesh = boundsHit ? countMeshTests(accel, o, d, hit.t) : { boxes: 0, triangles: 0, bruteForce: bvhTree(accel.bvh).triangles, t: Infinity, visits: [] };
       result.triangles += mesh.triangles;
       result.bruteForce += mesh.bruteForce;
     }
@@ -141,7 +150,7 @@ interface TriangleHit {
 
 /** The raycastFirst walk of one ray, counting as it goes. */
 class MeshTestCounter {
-  boxes = 0;
+  readonly visits: BoxVisit[] = [];
   triangles = 0;
 
   constructor(
@@ -152,8 +161,12 @@ class MeshTestCounter {
 
   /** three-mesh-bvh's intersectsNodeBounds: the box test with (near, far) = (0, far). */
   meetsBox(node: BvhNode): boolean {
-    this.boxes++;
-    const box = node.bounds;
+    const entered = this.slab(node.bounds);
+    this.visits.push({ node, entered });
+    return entered;
+  }
+
+  private slab(box: Float32Array): boolean {
     const { origin, direction } = this.ray;
     let near = -Infinity;
     let far = Infinity;

@@ -24,6 +24,7 @@ import type { ScreenRays } from '../render/screen-rays.ts';
 import type { Camera, RenderSettings } from '../scene/scene.ts';
 import { CameraRays } from '../tracer/camera-rays.ts';
 import { setPickTag, type PickTag } from './picking.ts';
+import { useTracerFalloff } from './raster-falloff.ts';
 import { cameraRigQuaternion, samplePoints, type ScreenGrid, screenGrid } from './screen-grid.ts';
 
 /** A pixel not traced yet: a neutral slate, so the grid reads as "empty" rather than black. */
@@ -81,6 +82,7 @@ export class CameraScreen {
     setPickTag(this.frustum, { kind: 'camera' });
     // Partly self-lit, so the body reads as a dark grey shape whatever the scene's lights do.
     const bodyMaterial = new MeshPhongMaterial({ color: BODY_COLOR, emissive: BODY_EMISSIVE, specular: 0x444444, shininess: 40 });
+    useTracerFalloff(bodyMaterial);
     const box = new BoxGeometry(0.22, 0.16, 0.26).translate(0, 0, 0.13);
     // The lens: a short cylinder along −z, in front of the eye.
     const lens = new CylinderGeometry(0.06, 0.075, 0.08, 24).rotateX(Math.PI / 2).translate(0, 0, -0.04);

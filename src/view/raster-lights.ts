@@ -1,6 +1,6 @@
-import { Group, Object3D, PointLight, SpotLight, Vector3 } from 'three';
+import { Group, Object3D, PointLight, SpotLight } from 'three';
 import type { Light, Scene } from '../scene/scene.ts';
-import { distanceAttenuation } from '../tracer/attenuation.ts';
+import { FOLLOWS_DISTANCE } from './raster-falloff.ts';
 
 const DEG = Math.PI / 180;
 
@@ -15,9 +15,9 @@ interface RasterLight {
  * The scene's lights approximated for the raster look (no shadows, reflections or soft
  * light: that is what the ray tracer is for). Three.js's Phong divides diffuse by π, so a
  * light of intensity π·I·ld gives the tracer's I·ld·kd·C·(N·L). Spot and area lights become
- * spot lights along local −Y (an area light as a 180° cone); cos(α)^p fall-off becomes
- * three.js's penumbra. Distance attenuation is evaluated once, at the camera's target, so
- * the overall brightness matches without three.js's inverse-square fall-off.
+ * spot lights along local −Y (an area light as a 180° cone). The view's materials shade with
+ * the tracer's distance and angle attenuation per fragment (raster-falloff.ts): a light's
+ * `decay` says whether distance attenuation is on, a spot's `distance` carries p.
  */
 export class RasterLights {
   readonly group = new Group();
@@ -29,7 +29,6 @@ export class RasterLights {
 
   sync(scene: Scene): void {
     const seen = new Set<string>();
-    focus.set(...scene.camera.target);
     for (const light of scene.lights) {
       seen.add(light.id);
       let entry = this.entries.get(light.id);
@@ -67,14 +66,13 @@ export class RasterLights {
   private update(entry: RasterLight, light: Light, enabled: boolean): void {
     entry.holder.position.set(...light.position);
     if (light.type !== 'point') entry.holder.rotation.set(light.rotation[0] * DEG, light.rotation[1] * DEG, light.rotation[2] * DEG, 'XYZ');
-    const attenuation = light.distanceAttenuation ? distanceAttenuation(entry.holder.position.distanceTo(focus)) : 1;
     entry.light.visible = enabled;
     entry.light.color.setRGB(...light.color);
-    entry.light.intensity = Math.PI * light.intensity * light.diffuse * attenuation;
+    entry.light.intensity = Math.PI * light.intensity * light.diffuse;
+    entry.light.decay = light.distanceAttenuation ? FOLLOWS_DISTANCE : 0;
     if (entry.light instanceof SpotLight && light.type !== 'point') {
       entry.light.angle = light.type === 'spot' ? (light.spotAngle / 2) * DEG : Math.PI / 2;
-      const p = light.angleAttenuation;
-      entry.light.penumbra = p / (p + 4);
+      entry.light.distance = light.angleAttenuation;
     }
   }
 
@@ -84,5 +82,3 @@ export class RasterLights {
     this.entries.delete(id);
   }
 }
-
-const focus = new Vector3();

@@ -14,6 +14,7 @@ import {
 import type { MeshData, MeshLibrary } from '../scene/mesh-data.ts';
 import type { Scene, SceneObject } from '../scene/scene.ts';
 import { setPickTag } from './picking.ts';
+import { useTracerFalloff } from './raster-falloff.ts';
 import { ambientLight, applyRasterMaterial } from './raster-material.ts';
 
 const DEG = Math.PI / 180;
@@ -99,6 +100,7 @@ export class SceneSync {
     let entry = this.entries.get(object.id);
     if (!entry) {
       const mesh = new Mesh(LOADING, new MeshPhongMaterial());
+      useTracerFalloff(mesh.material);
       mesh.name = object.id;
       setPickTag(mesh, { kind: 'object', id: object.id });
       entry = { mesh, shapeKey: '' };

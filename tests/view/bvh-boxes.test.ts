@@ -5,6 +5,8 @@ import { labActionSchema } from '../../src/quest/lab-action-schema.ts';
 import { loadMeshesFromDisk } from '../../src/scene/load-meshes-node.ts';
 import type { MeshLibrary } from '../../src/scene/mesh-data.ts';
 import { parseScene } from '../../src/scene/scene-schema.ts';
+import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
+import { countPixelTests } from '../../src/tracer/triangle-test-count.ts';
 import { BvhBoxes } from '../../src/view/bvh-boxes.ts';
 
 let meshes: MeshLibrary;
@@ -12,9 +14,10 @@ beforeAll(async () => {
   meshes = await loadMeshesFromDisk(['character', 'capsule']);
 });
 
-function labState(): LabState {
+function labState(camera: object = {}): LabState {
   const parsed = parseScene({
     version: 1,
+    camera,
     objects: [
       { id: 'ball', shape: 'sphere' },
       { id: 'hero', shape: 'mesh', mesh: 'character', position: [0, 0.9, 0] },
@@ -77,6 +80,29 @@ describe('the boxes drawn in the view', () => {
     let state = reduce(labState(), { type: 'bvh.changed', changes: { show: true, depth: 0, showBounds: true } }).state;
     state = reduce(state, { type: 'selection.changed', selection: { kind: 'object', id: 'pill' } }).state;
     expect(drawn(await boxesFor(state))).toEqual({ 'bvh:pill': 1, bounds: 3 });
+  });
+
+  it('with a pixel selected, draw the boxes its ray entered (solid green) and missed (dashed red) over a dimmed tree', async () => {
+    // Close up on the character, so that several pixels show it.
+    let state = reduce(labState({ position: [0, 0.9, 1.5], target: [0, 0.9, 0] }), { type: 'bvh.changed', changes: { show: true, depth: 1 } }).state;
+    const traced = buildTracerScene(state.scene, meshes);
+    const [columns, rows] = state.scene.camera.pixels;
+    const pixels = Array.from({ length: columns * rows }, (_, i) => [i % columns, Math.floor(i / columns)] as const);
+    const pixel = pixels.find((p) => countPixelTests(traced, meshes, p).hitId === 'hero')!;
+    expect(pixel).toBeDefined();
+    state = reduce(state, { type: 'pixel.selected', pixel: [...pixel] }).state;
+    const boxes = await boxesFor(state);
+    const visits = countPixelTests(traced, meshes, pixel).objects.find((o) => o.id === 'hero')!.mesh!.visits;
+    const entered = visits.filter((v) => v.entered).length;
+    expect(entered).toBeGreaterThan(0);
+    expect(entered).toBeLessThan(visits.length);
+    expect(drawn(boxes)).toEqual({ 'bvh:hero': 3, 'bvh:pill': 3, 'bvh-ray-entered:hero': entered, 'bvh-ray-missed:hero': visits.length - entered });
+    const material = (name: string) => (boxes.object.getObjectByName(name) as unknown as { material: { type: string } }).material.type;
+    expect(material('bvh-ray-entered:hero')).toBe('LineBasicMaterial');
+    expect(material('bvh-ray-missed:hero')).toBe('LineDashedMaterial');
+    // The tree steps back: every one of its boxes is faint.
+    const tree = (boxes.object.getObjectByName('bvh:hero') as unknown as { geometry: { getAttribute(n: string): { array: ArrayLike<number> } } }).geometry.getAttribute('color').array;
+    expect(Math.max(...Array.from(tree).filter((_, i) => i % 4 === 3))).toBeLessThan(0.5);
   });
 
   it('draw nothing when both are off, and keep the newest state when models load late', async () => {

@@ -2,6 +2,7 @@ import { msg, str } from '@lit/localize';
 import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
 import { localize, type Locale } from '../../quest/localized-text.ts';
 import type { LevelView } from '../../quest/quest-engine.ts';
+import { AnsweredQuiz } from './answered-quiz.ts';
 import { explainMore, fire, gameStyles } from './game-styles.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 import './rt-task-card.ts';
@@ -10,7 +11,8 @@ import { scrollInBox } from './scroll-in-box.ts';
 /**
  * @summary The task column of a level: its title and intro (with "Explain more"), the
  * celebration once the level is passed (points, badges, "Next level"), and the task list
- * with the current task open. A quiz just answered stays open to show its feedback.
+ * with the current task open. A quiz just answered stays open to show its feedback until the
+ * task after it is done. Back in a passed level, a note says its scene started afresh.
  *
  * @fires quest-command - everything the learner asks (QuestCommand).
  */
@@ -20,7 +22,8 @@ export class RtQuestPanel extends LitElement {
     locale: {},
     hasNextLevel: { type: Boolean, attribute: 'has-next-level' },
     badges: { attribute: false },
-    recentQuiz: { state: true },
+    openQuiz: { state: true },
+    returned: { state: true },
   };
   static override styles = [
     gameStyles,
@@ -75,7 +78,11 @@ export class RtQuestPanel extends LitElement {
   declare hasNextLevel: boolean;
   /** Names of the badges earned in this level. */
   declare badges: string[];
-  declare private recentQuiz: string | null;
+  /** The answered quiz still open, if any. */
+  declare private openQuiz: string | null;
+  /** The level was already passed when it was opened: its scene is the level's own again. */
+  declare private returned: boolean;
+  private readonly answered = new AnsweredQuiz();
   /** The current task last brought into view. */
   private shownCurrent: string | null = null;
 
@@ -85,15 +92,22 @@ export class RtQuestPanel extends LitElement {
     this.locale = 'en';
     this.hasNextLevel = false;
     this.badges = [];
-    this.recentQuiz = null;
+    this.openQuiz = null;
+    this.returned = false;
     this.addEventListener(QUEST_COMMAND, (event) => {
       const command = (event as CustomEvent<QuestCommand>).detail;
-      if (command.kind === 'answer' || command.kind === 'show-me') this.recentQuiz = command.task;
+      if (command.kind !== 'answer' && command.kind !== 'show-me') return;
+      this.answered.answered(command.task);
+      this.requestUpdate();
     });
   }
 
   protected override willUpdate(changed: PropertyValues<this>): void {
-    if (changed.has('view') && changed.get('view')?.level.id !== this.view?.level.id) this.recentQuiz = null;
+    if (changed.has('view') && changed.get('view')?.level.id !== this.view?.level.id) {
+      this.answered.clear();
+      this.returned = this.view?.passed ?? false;
+    }
+    this.openQuiz = this.answered.openFor(this.view?.tasks.find((task) => task.status === 'current')?.task.id ?? null);
   }
 
   protected override updated(): void {
@@ -124,7 +138,7 @@ export class RtQuestPanel extends LitElement {
             <rt-task-card
               .task=${task}
               locale=${this.locale}
-              ?expanded=${task.status === 'current' || (task.kind === 'quiz' && task.task.id === this.recentQuiz)}
+              ?expanded=${task.status === 'current' || (task.kind === 'quiz' && task.task.id === this.openQuiz)}
             ></rt-task-card>
           </li>`,
         )}
@@ -136,6 +150,7 @@ export class RtQuestPanel extends LitElement {
     return html`<section class="card celebration" role="status" aria-label=${msg('Level complete')}>
       <h3>★ ${msg('Level complete!')}</h3>
       <p>${msg(str`You have ${view.points} of ${view.maxPoints} points in this level.`)}</p>
+      ${this.returned ? html`<p class="muted" data-note="returned">${msg('You passed this level before, so its scene has started afresh: your points and finished tasks are kept.')}</p>` : nothing}
       ${this.badges.length > 0
         ? html`<p>${msg('Badges earned:')}</p>
             <ul>

@@ -214,6 +214,9 @@ export class RtBvhPanel extends StorePanel {
           </ul>`
         : nothing}
       <p>${tests.hitId === null ? msg('The ray hits nothing.') : msg(str`The ray hits ${itemName(state.scene, tests.hitId)}.`)}</p>
+      ${state.bvh.show && tests.triangles > 0
+        ? html`<p class="muted">${msg('In the view: the boxes this ray went into are solid green; the ones it tested and missed are dashed red, and everything inside them was skipped.')}</p>`
+        : nothing}
     </div>`;
   }
 }

@@ -24,6 +24,7 @@ interface ViewCentre {
  *
  * @slot traced - The ray traced image (a canvas of imageWidth × imageHeight pixels).
  * @slot raster - The raster image of the same camera, at the same size or smaller (it is scaled to fit).
+ * @slot tools - More controls for the image, at the end of the toolbar.
  *
  * Properties:
  * - `imageWidth`, `imageHeight`: the images' size in pixels (default 1 × 1).
@@ -274,6 +275,7 @@ export class RtImageCompare extends LitElement {
       <div class="toolbar">
         ${this.zoomControls(scale)} ${this.note ? html`<p class="note">${this.note}</p>` : this.modeControls()}
         ${mode === 'slider' ? this.dividerControl() : nothing}
+        <slot name="tools"></slot>
       </div>
       <div
         class="frame ${this.zoom === 'fit' ? 'fit' : ''}"

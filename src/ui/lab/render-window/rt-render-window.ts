@@ -12,6 +12,7 @@ import { GuideHostController } from '../guide-host.ts';
 import { consumeStore } from '../store-context.ts';
 import { estimateRender, lighterRenders, type LighterRender, type RenderEstimate } from '../../../render/render-estimate.ts';
 import { BandPainter } from './band-painter.ts';
+import { ContrastToggle } from './contrast-toggle.ts';
 import { errorMessage, RenderJobController, type ShownRender } from './render-job-controller.ts';
 import { formatCount, formatDuration, formatWait, progressText, raysPerSecond } from './render-figures.ts';
 import { renderWindowLayout } from './render-window-layout.css.ts';
@@ -49,10 +50,10 @@ export const RASTER_MAX_SIDE = 1024;
  *
  * Methods: `startRender()`, `cancelRender()`.
  *
- * Guide ids (lab-controls.ts): render.start, render.cancel, render.save, render.close, and
- * render.zoom / render.compare on the image.
+ * Guide ids (lab-controls.ts): render.start, render.cancel, render.save, render.close,
+ * render.contrast, and render.zoom / render.compare on the image.
  *
- * Keys: Enter (not on a control) renders, Escape closes, + − 0 zoom in, out, to fit.
+ * Keys: Enter (not on a control) renders, Escape closes, + − 0 zoom in, out, to fit, C stretches the contrast.
  *
  * @fires close - The user asked to close the window (close button or Escape); the parent
  *   removes `open` and returns focus where it was.
@@ -93,6 +94,10 @@ export class RtRenderWindow extends LitElement {
   private readonly jobs = new RenderJobController(this, {
     paint: (image, dithering, rows) => this.painter.paint(image, dithering, rows),
     started: (shown, isCurrent) => this.prepareStage(shown, isCurrent),
+  });
+  private readonly contrast = new ContrastToggle(this, () => {
+    const { finished, shown } = this.jobs;
+    return finished && shown ? { image: finished, dithering: shown.scene.settings.dithering } : null;
   });
   private unsubscribe: (() => void) | null = null;
   private seenScene: Scene | null = null;
@@ -251,6 +256,7 @@ export class RtRenderWindow extends LitElement {
       '=': () => this.compare.value?.zoomIn(),
       '-': () => this.compare.value?.zoomOut(),
       '0': () => this.compare.value?.zoomToFit(),
+      c: () => this.contrast.toggle(),
     };
     const run = action[event.key];
     if (!run) return;
@@ -308,7 +314,8 @@ export class RtRenderWindow extends LitElement {
 
   private stage({ width, height }: ShownRender) {
     return html`<rt-image-compare data-guide="render.zoom render.compare" ${ref(this.compare)} .imageWidth=${width} .imageHeight=${height} .note=${this.rasterNote}>
-      <canvas slot="traced" ${ref(this.tracedCanvas)} role="img" aria-label=${msg('The ray traced image')}></canvas>
+      <canvas slot=${this.contrast.tracedSlot} ${ref(this.tracedCanvas)} role="img" aria-label=${msg('The ray traced image')}></canvas>
+      ${this.contrast.stretchedCanvas()} ${this.contrast.control()}
       <canvas slot="raster" ${ref(this.rasterCanvas)} role="img" aria-label=${msg('The raster image from the same camera')}></canvas>
     </rt-image-compare>`;
   }
