@@ -182,7 +182,7 @@ export class RenderPool {
       cancel: () => {
         if (this.job?.id === id) this.cancelJob();
       },
-      changedRows: () => tiles.takeChangedRows(),
+      changes: () => tiles.takeChanges(),
     };
   }
 
