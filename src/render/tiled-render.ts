@@ -170,16 +170,38 @@ export class TiledRender {
     return changes.preview || changes.tiles.length > 0 ? changes : null;
   }
 
-  /** A preview pass gets a picture of its own; the others paste into the image. */
+  /**
+   * A preview pass gets a picture of its own, starting as the coarser one before it scaled
+   * up (so its rows not traced yet show that, not black); the others paste into the image.
+   */
   private startPass(): void {
     const pass = this.passes[this.pass];
+    const coarser = this.preview;
     if (pass?.kind !== 'preview') {
       this.preview = null;
       return;
     }
     const width = Math.ceil(this.image.width / pass.block);
     const height = Math.ceil(this.image.height / pass.block);
-    this.preview = { width, height, block: pass.block, rgb: new Float32Array(width * height * 3) };
+    const preview: PreviewImage = { width, height, block: pass.block, rgb: new Float32Array(width * height * 3) };
+    if (coarser) {
+      const ratio = coarser.block / pass.block;
+      const [to, from] = [preview.rgb, coarser.rgb];
+      for (let y = 0, i = 0; y < height; y++) {
+        const row = Math.floor(y / ratio) * coarser.width;
+        for (let x = 0; x < width; x++, i += 3) {
+          const at = (row + Math.floor(x / ratio)) * 3;
+          to[i] = from[at];
+          to[i + 1] = from[at + 1];
+          to[i + 2] = from[at + 2];
+        }
+      }
+      // The coarser one's rows not yet asked for are now these rows of this one.
+      if (this.changedPreview === coarser && this.previewFrom < this.previewTo) {
+        [this.changedPreview, this.previewFrom, this.previewTo] = [preview, this.previewFrom * ratio, Math.min(height, this.previewTo * ratio)];
+      }
+    }
+    this.preview = preview;
   }
 
   /** A preview tile's first value of every block (the worker repeats it over the block). */
@@ -187,7 +209,6 @@ export class TiledRender {
     const { block } = preview;
     const [left, top] = [x / block, y / block];
     const [columns, rows] = [Math.ceil(width / block), Math.ceil(height / block)];
-    // A finer preview's rows replace a coarser one's not yet asked for: it is drawn over it.
     if (this.changedPreview !== preview) [this.changedPreview, this.previewFrom, this.previewTo] = [preview, Infinity, 0];
     this.previewFrom = Math.min(this.previewFrom, top);
     this.previewTo = Math.max(this.previewTo, top + rows);

@@ -162,6 +162,19 @@ describe('what a painter must redraw', () => {
     expect(tiles.image.rgb[0]).toBe(0.5);
   });
 
+  it('a finer preview starts as the coarser one scaled up, and takes over its rows not yet asked for', () => {
+    const coarse: RenderPass = { kind: 'preview', block: 4, samplesPerSide: 1, tileWidth: 8, tileHeight: 8 };
+    const fine: RenderPass = { ...coarse, block: 2 };
+    const tiles = new TiledRender(8, 8, [coarse, fine], {});
+    const only = tiles.takeTile()!;
+    const rgb = new Float32Array(8 * 8 * 3).map((_, i) => Math.floor(i / 3) % 8 < 4 ? 1 : 2); // left blocks 1, right blocks 2
+    tiles.accept(only.tileId, rgb, emptyRayStats(), 1);
+    const changes = tiles.takeChanges()!;
+    expect(changes.preview).toMatchObject({ rows: [0, 4] });
+    expect(changes.preview?.image).toMatchObject({ width: 4, height: 4, block: 2 });
+    expect([...changes.preview!.image.rgb.filter((_, i) => i % 3 === 0)]).toEqual([1, 1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2]);
+  });
+
   it('past 256 tiles, the rows they span as one full-width tile', () => {
     const pass: RenderPass = { kind: 'final', block: 1, samplesPerSide: 1, tileWidth: 1, tileHeight: 1 };
     const tiles = new TiledRender(30, 20, [pass], {});

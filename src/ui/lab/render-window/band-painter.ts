@@ -62,9 +62,17 @@ export class BandPainter {
     this.take(image, dithering);
     if (changes.preview) {
       const { image: preview, rows } = changes.preview;
-      // A finer preview is drawn over a coarser one: the coarser one's rows are not needed.
-      if (preview !== this.preview) [this.preview, this.previewFrom, this.previewTo] = [preview, rows[0], rows[1]];
-      else [this.previewFrom, this.previewTo] = this.previewFrom < this.previewTo ? [Math.min(this.previewFrom, rows[0]), Math.max(this.previewTo, rows[1])] : rows;
+      // A finer preview starts as the coarser one scaled up (TiledRender): the coarser one's
+      // rows not drawn yet are drawn from it, as its rows.
+      const old = this.preview;
+      if (old && preview !== old && this.previewFrom < this.previewTo) {
+        const ratio = old.block / preview.block;
+        [this.previewFrom, this.previewTo] = [this.previewFrom * ratio, Math.min(preview.height, this.previewTo * ratio)];
+      } else if (preview !== old) {
+        [this.previewFrom, this.previewTo] = rows;
+      }
+      this.preview = preview;
+      [this.previewFrom, this.previewTo] = [Math.min(this.previewFrom, rows[0]), Math.max(this.previewTo, rows[1])];
     }
     this.tiles.push(...changes.tiles);
     this.schedule();

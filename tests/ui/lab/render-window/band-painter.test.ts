@@ -95,7 +95,7 @@ describe('the render window painter', () => {
     expect(puts.map((call) => call.args)).toEqual([[8, 5, 4, 4, 1, 2, 7, 3], [4, 4, 0, 0, 0, 0, 4, 4]]);
   });
 
-  it('clears the canvas for a new render; a finer preview replaces the coarser one’s rows not yet drawn', () => {
+  it('clears the canvas for a new render; the coarser preview’s rows not yet drawn are drawn from the finer one that follows', () => {
     const painter = painterOn(64, 64);
     const full = image(64, 64);
     const coarse: PreviewImage = { ...image(8, 8), block: 8 };
@@ -103,7 +103,7 @@ describe('the render window painter', () => {
     painter.paintChanges(full, { preview: { image: coarse, rows: [0, 8] }, tiles: [] }, false);
     painter.paintChanges(full, { preview: { image: fine, rows: [4, 8] }, tiles: [] }, false);
     runFrames();
-    expect(perFrame.flat().map((call) => [call.kind, ...call.args])).toEqual([['clear'], ['draw', 0, 4, 16, 4, 0, 16, 64, 16]]);
+    expect(perFrame.flat().map((call) => [call.kind, ...call.args])).toEqual([['clear'], ['draw', 0, 0, 16, 16, 0, 0, 64, 64]]);
     painter.paintChanges(full, { preview: null, tiles: [{ x: 0, y: 0, width: 4, height: 4 }] }, false);
     runFrames();
     expect(perFrame.at(-1)!.map((call) => call.kind)).toEqual(['put']); // the same render: no clearing
