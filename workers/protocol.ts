@@ -4,8 +4,8 @@
  * structured-cloneable data; the only transferable is a finished tile's pixel buffer.
  *
  * Ordering guarantee the pool relies on: a worker answers requests in the order they
- * arrive, except that queued tiles wait behind later `cancel`, `load-scene` and `trace-pixel`
- * requests (see render-core.ts), and each queued tile keeps the scene that was current when
+ * arrive, except that queued tiles wait behind later `cancel`, `load-scene`, `trace-pixel` and
+ * `trace-pixels` requests (see render-core.ts), and each queued tile keeps the scene that was current when
  * it arrived.
  */
 import type { MeshLibrary } from '../src/scene/mesh-data.ts';
@@ -50,13 +50,26 @@ export interface TracePixelRequest {
   terms?: boolean;
 }
 
+/**
+ * Trace `count` pixels of the camera's small screen from pixel index `first` (row-major over
+ * camera.pixels) and return their ray trees in one message: the lab's screen in a few
+ * messages instead of one per pixel (a message per pixel cost more than its trace).
+ */
+export interface TracePixelsRequest {
+  type: 'trace-pixels';
+  requestId: number;
+  first: number;
+  count: number;
+  seed: number;
+}
+
 /** Drop the job's tiles that are still queued; the tile being rendered still finishes. */
 export interface CancelRequest {
   type: 'cancel';
   jobId: number;
 }
 
-export type RenderRequest = LoadSceneRequest | RenderTileRequest | TracePixelRequest | CancelRequest;
+export type RenderRequest = LoadSceneRequest | RenderTileRequest | TracePixelRequest | TracePixelsRequest | CancelRequest;
 
 // ── Responses: worker → pool ─────────────────────────────────────────────────────────────
 
@@ -84,11 +97,19 @@ export interface PixelTracedResponse {
   trace: PixelTrace;
 }
 
+export interface PixelsTracedResponse {
+  type: 'pixels-traced';
+  requestId: number;
+  /** Pixels first … first + count - 1 of the request, in that order. */
+  traces: PixelTrace[];
+}
+
 /** Which request failed, so the pool can fail the right job or lab query. */
 export type FailedRequest =
   | { type: 'load-scene'; sceneId: number }
   | { type: 'render-tile'; jobId: number; tileId: number }
-  | { type: 'trace-pixel'; requestId: number };
+  | { type: 'trace-pixel'; requestId: number }
+  | { type: 'trace-pixels'; requestId: number };
 
 /** A request threw; the worker itself keeps running and answers later requests. */
 export interface ErrorResponse {
@@ -98,7 +119,7 @@ export interface ErrorResponse {
   message: string;
 }
 
-export type RenderResponse = SceneReadyResponse | TileDoneResponse | PixelTracedResponse | ErrorResponse;
+export type RenderResponse = SceneReadyResponse | TileDoneResponse | PixelTracedResponse | PixelsTracedResponse | ErrorResponse;
 
 /** How a worker posts a response; `transfer` lists buffers to move instead of copy. */
 export type PostResponse = (response: RenderResponse, transfer: ArrayBuffer[]) => void;

@@ -16,6 +16,7 @@ import type {
   RenderRequest,
   RenderTileRequest,
   TracePixelRequest,
+  TracePixelsRequest,
 } from './protocol.ts';
 
 /** The scene that tiles and traces use: built, or why it could not be built. */
@@ -29,7 +30,7 @@ interface QueuedTile {
 
 /**
  * Returns the handler for the pool's requests. Tiles are queued and rendered one per
- * event-loop task (see next-task.ts), so `cancel`, `load-scene` and `trace-pixel` requests
+ * event-loop task (see next-task.ts), so `cancel`, `load-scene` and pixel-trace requests
  * never wait behind more than the tile being rendered. Every error becomes an `error`
  * response; the worker keeps running.
  */
@@ -69,6 +70,21 @@ export function createRenderHandler(post: PostResponse): (request: RenderRequest
     }
   }
 
+  function traceManyNow({ requestId, first, count, seed }: TracePixelsRequest): void {
+    try {
+      const tracer = tracerOf(scene);
+      const [columns, rows] = tracer.source.camera.pixels;
+      if (!Number.isInteger(first) || !Number.isInteger(count) || first < 0 || count < 1 || first + count > columns * rows) {
+        throw new RangeError(`pixels ${first} to ${first + count - 1} are not on the ${columns}×${rows} screen`);
+      }
+      const traces = [];
+      for (let index = first; index < first + count; index++) traces.push(tracePixel(tracer, index % columns, Math.floor(index / columns), seed));
+      post({ type: 'pixels-traced', requestId, traces }, []);
+    } catch (error) {
+      fail({ type: 'trace-pixels', requestId }, error);
+    }
+  }
+
   function scheduleRender(): void {
     if (renderScheduled || queue.length === 0) return;
     renderScheduled = true;
@@ -103,6 +119,9 @@ export function createRenderHandler(post: PostResponse): (request: RenderRequest
         break;
       case 'trace-pixel':
         traceNow(request);
+        break;
+      case 'trace-pixels':
+        traceManyNow(request);
         break;
       case 'cancel':
         for (let i = queue.length - 1; i >= 0; i--) {

@@ -3,6 +3,7 @@
  * The UI shows `image` while it fills in and the finished result at the end.
  */
 import type { RayStats } from '../tracer/ray-tree.ts';
+import type { Tile } from '../tracer/tile.ts';
 import type { PassKind } from './render-passes.ts';
 
 /** Any fixed seed works; one default everywhere makes renders and ray trees repeatable. */
@@ -13,6 +14,22 @@ export interface RenderImage {
   width: number;
   height: number;
   rgb: Float32Array;
+}
+
+/**
+ * A coarse preview at its own resolution: one pixel per block×block square of the image
+ * (the last column and row cover what is left at the edges). The window draws it scaled up.
+ */
+export interface PreviewImage extends RenderImage {
+  block: number;
+}
+
+/** What a painter must redraw since it last asked (RenderJob.changes). */
+export interface RenderChanges {
+  /** The running preview pass's picture and its rows [from, to) that changed, in its own pixels. */
+  preview: { image: PreviewImage; rows: [number, number] } | null;
+  /** Rectangles of the full-resolution image pasted since (tiles, or whole rows when many). */
+  tiles: Tile[];
 }
 
 /** Where a render is: which of its passes (render-passes.ts), and how far into it. */
@@ -35,8 +52,11 @@ export interface RenderOptions {
   seed?: number;
   /** Coarse passes and a sharp one-sample pass before full quality (default true); `rt render` turns them off. */
   preview?: boolean;
-  /** After each pass before the final one, with the whole image filled in (the job's live `image`). */
-  onPreview?: (image: RenderImage) => void;
+  /**
+   * After each pass before the final one: a preview pass's picture at its own resolution,
+   * or (after the sharp pass) the job's live `image`, filled in whole.
+   */
+  onPreview?: (image: RenderImage | PreviewImage) => void;
   /** After the first tile, then at most every 50 ms, and always when a pass completes. */
   onProgress?: (progress: RenderProgress) => void;
 }
@@ -65,15 +85,20 @@ export interface CancelledRender {
 export type RenderResult = FinishedRender | CancelledRender;
 
 export interface RenderJob {
-  /** The picture so far: coarse blocks first, then full-quality tiles as they arrive. */
+  /**
+   * The full-resolution picture so far: black until the first pass at one sample per pixel
+   * (the previews are kept apart, at their own resolution: `changes`), then its tiles and
+   * the final ones as they arrive.
+   */
   readonly image: RenderImage;
   /** Resolves when finished or cancelled; rejects with an Error whose message the UI can show. */
   readonly done: Promise<RenderResult>;
   /** Stops the job: no more tiles are sent and late tiles are ignored. Safe to call twice. */
   cancel(): void;
   /**
-   * The rows of `image` filled in since the last call, [from, to), or null: a painter redraws
-   * those, not the whole image (a 4096² image is 16 M pixels to quantize).
+   * What changed since the last call, or null: a painter redraws the preview's new rows
+   * scaled up and the tiles of `image`, not the whole image (a 4096² image is 16 M pixels to
+   * quantize).
    */
-  changedRows(): [number, number] | null;
+  changes(): RenderChanges | null;
 }

@@ -16,7 +16,7 @@
  * workers fail several times in a row, with no good answer in between, does the job fail.
  * Messages that are not well-formed responses are dropped and logged.
  */
-import type { FailedRequest, RenderRequest, RenderResponse } from '../../workers/protocol.ts';
+import type { FailedRequest, PixelsTracedResponse, PixelTracedResponse, RenderRequest, RenderResponse } from '../../workers/protocol.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import type { Scene } from '../scene/scene.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
@@ -92,7 +92,8 @@ interface Waiter {
 
 interface PendingTrace {
   worker: PoolWorker;
-  resolve(trace: PixelTrace): void;
+  /** The worker's answer: `pixel-traced` for tracePixel, `pixels-traced` for tracePixels. */
+  resolve(answer: PixelTracedResponse | PixelsTracedResponse): void;
   reject(error: Error): void;
 }
 
@@ -181,7 +182,7 @@ export class RenderPool {
       cancel: () => {
         if (this.job?.id === id) this.cancelJob();
       },
-      changedRows: () => tiles.takeChangedRows(),
+      changes: () => tiles.takeChanges(),
     };
   }
 
@@ -205,6 +206,26 @@ export class RenderPool {
    * with `terms`, every hit carries its shading terms (the ray debugger).
    */
   tracePixel(x: number, y: number, seed = DEFAULT_SEED, terms = false): Promise<PixelTrace> {
+    return this.askForTraces({ type: 'trace-pixel', requestId: 0, x, y, seed, ...(terms ? { terms } : {}) }, (answer) =>
+      answer.type === 'pixel-traced' ? answer.trace : null,
+    );
+  }
+
+  /**
+   * The ray trees of `count` pixels of the camera's small screen from pixel index `first`
+   * (row-major over camera.pixels), in one message each way (the lab's screen).
+   */
+  tracePixels(first: number, count: number, seed = DEFAULT_SEED): Promise<PixelTrace[]> {
+    return this.askForTraces({ type: 'trace-pixels', requestId: 0, first, count, seed }, (answer) =>
+      answer.type === 'pixels-traced' && answer.traces.length === count ? answer.traces : null,
+    );
+  }
+
+  /** Posts a pixel-trace request (its requestId is assigned here); `read` takes the answer apart, null for a wrong one. */
+  private askForTraces<T>(
+    request: Extract<RenderRequest, { type: 'trace-pixel' | 'trace-pixels' }>,
+    read: (answer: PixelTracedResponse | PixelsTracedResponse) => T | null,
+  ): Promise<T> {
     this.assertOpen();
     if (!this.scene) return Promise.reject(new Error('there is no scene to trace: render or set one first'));
     // The least busy worker answers soonest: traces skip the tiles queued before them.
@@ -212,7 +233,12 @@ export class RenderPool {
     this.sendScene(worker);
     const requestId = ++this.lastId;
     return new Promise((resolve, reject) => {
-      this.post(worker, { type: 'trace-pixel', requestId, x, y, seed, ...(terms ? { terms } : {}) }, () => this.traces.set(requestId, { worker, resolve, reject }));
+      const resolveAnswer = (answer: PixelTracedResponse | PixelsTracedResponse) => {
+        const value = read(answer);
+        if (value === null) reject(new Error(`a render worker answered a ${request.type} request with a ${answer.type} of the wrong size`));
+        else resolve(value);
+      };
+      this.post(worker, { ...request, requestId }, () => this.traces.set(requestId, { worker, resolve: resolveAnswer, reject }));
     });
   }
 
@@ -387,7 +413,8 @@ export class RenderPool {
         break;
       }
       case 'pixel-traced':
-        this.takeTrace(response.requestId)?.resolve(response.trace);
+      case 'pixels-traced':
+        this.takeTrace(response.requestId)?.resolve(response);
         break;
       case 'error':
         this.onRequestFailed(worker, response.failed, response.message);
@@ -406,6 +433,7 @@ export class RenderPool {
         if (this.job?.id === failed.jobId) this.failJob(message);
         break;
       case 'trace-pixel':
+      case 'trace-pixels':
         this.takeTrace(failed.requestId)?.reject(new Error(message));
         break;
     }

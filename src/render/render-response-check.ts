@@ -31,8 +31,13 @@ export function checkResponse(data: unknown): CheckedResponse {
       return accept({ type: 'tile-done', jobId, tileId, rgb: rgb as Float32Array<ArrayBuffer>, stats: counts, ms });
     }
     case 'pixel-traced':
-      if (!isId(data.requestId) || !isRecord(data.trace) || !Array.isArray(data.trace.rays) || !Array.isArray(data.trace.pixel) || !Array.isArray(data.trace.color)) {
+      if (!isId(data.requestId) || !isRayTree(data.trace)) {
         return refuse('a pixel-traced without a request id and a ray tree');
+      }
+      return accept(data as unknown as RenderResponse);
+    case 'pixels-traced':
+      if (!isId(data.requestId) || !Array.isArray(data.traces) || !data.traces.every(isRayTree)) {
+        return refuse('a pixels-traced without a request id and ray trees');
       }
       return accept(data as unknown as RenderResponse);
     case 'error': {
@@ -50,8 +55,13 @@ function checkFailed(failed: unknown): FailedRequest | null {
   if (!isRecord(failed)) return null;
   if (failed.type === 'load-scene' && isId(failed.sceneId)) return { type: 'load-scene', sceneId: failed.sceneId };
   if (failed.type === 'render-tile' && isId(failed.jobId) && isId(failed.tileId)) return { type: 'render-tile', jobId: failed.jobId, tileId: failed.tileId };
-  if (failed.type === 'trace-pixel' && isId(failed.requestId)) return { type: 'trace-pixel', requestId: failed.requestId };
+  if ((failed.type === 'trace-pixel' || failed.type === 'trace-pixels') && isId(failed.requestId)) return { type: failed.type, requestId: failed.requestId };
   return null;
+}
+
+/** The outline of a PixelTrace: its pixel, colour and roots (the trees' insides are the tracer's). */
+function isRayTree(trace: unknown): boolean {
+  return isRecord(trace) && Array.isArray(trace.rays) && Array.isArray(trace.pixel) && Array.isArray(trace.color);
 }
 
 function accept(response: RenderResponse): CheckedResponse {

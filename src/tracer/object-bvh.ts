@@ -3,6 +3,7 @@ import type { Hit } from './hit.ts';
 import type { Intersectable } from './intersectable.ts';
 import type { Ray } from './ray.ts';
 import { rayMeetsBox } from './ray-box.ts';
+import type { ShadowCone } from './shadow-cone.ts';
 
 /** Objects per leaf: past two, testing a leaf's objects costs more than one more level of boxes. */
 const LEAF_SIZE = 2;
@@ -77,10 +78,11 @@ export class ObjectBvh {
   }
 
   /**
-   * Writes the objects whose box overlaps `box` into `out` from `start` on, and returns the
-   * new end; stops early once it is past `limit`.
+   * Writes the objects whose box overlaps `box` (and is not wholly outside `cone`, when
+   * given) into `out` from `start` on, and returns the new end; stops early once it is past
+   * `limit`.
    */
-  overlapping(box: Box3, out: Intersectable[], start: number, limit: number): number {
+  overlapping(box: Box3, out: Intersectable[], start: number, limit: number, cone: ShadowCone | null = null): number {
     const { boxes, link, count, items, itemBoxes, stack } = this;
     if (items.length === 0) return start;
     setWithin(box);
@@ -89,10 +91,12 @@ export class ObjectBvh {
     stack[size++] = 0;
     while (size > 0 && end <= limit) {
       const node = stack[--size];
-      if (!overlapsWithin(boxes, node * 6)) continue;
+      if (!overlapsWithin(boxes, node * 6) || cone?.excludes(boxes, node * 6)) continue;
       const n = count[node];
       if (n > 0) {
-        for (let i = link[node], last = i + n; i < last; i++) if (overlapsWithin(itemBoxes, i * 6)) out[end++] = items[i];
+        for (let i = link[node], last = i + n; i < last; i++) {
+          if (overlapsWithin(itemBoxes, i * 6) && !cone?.excludes(itemBoxes, i * 6)) out[end++] = items[i];
+        }
         continue;
       }
       stack[size++] = link[node];

@@ -11,6 +11,7 @@ import { hashKey, RandomStream } from './sampler.ts';
 import { discPointBuffer, jitteredDiscPoints } from './disc-samples.ts';
 import { glossyDirection, perpendicularBasis } from './glossy.ts';
 import { LightTermsRecorder, type LightTerms, type ShadingTerms } from './shading-terms.ts';
+import { ShadowCone } from './shadow-cone.ts';
 import type { Intersectable } from './intersectable.ts';
 import type { TracerScene } from './tracer-scene.ts';
 
@@ -42,6 +43,8 @@ class Frame {
   entering = true;
   /** The box from the hit point to the light being sampled: only objects in it can cast its shadow. */
   readonly shadowReach = new Box3();
+  /** An area light's pyramid from the hit point: it culls the candidates in shadowReach further. */
+  readonly shadowCone = new ShadowCone();
   /** The objects overlapping shadowReach (the first `candidateCount` entries), when there are few. */
   readonly candidates: Intersectable[] = [];
   /** -1: too many candidates to list; shadow rays walk the occluder BVHs, limited to shadowReach. */
@@ -198,7 +201,8 @@ export class WhittedIntegrator {
     const scale = light.intensity / samples;
     const [cr, cg, cb] = material.color;
     const { shadows } = this.scene.settings;
-    if (shadows) this.gatherShadowCandidates(frame, light);
+    // Gathered at the first shadow ray: a light wholly behind the surface casts none.
+    let gathered = false;
     const { x: px, y: py, z: pz } = hit.point;
     const { x: nx, y: ny, z: nz } = n;
     const { x: vx, y: vy, z: vz } = v;
@@ -244,6 +248,10 @@ export class WhittedIntegrator {
       }
       l.set(lx, ly, lz);
 
+      if (shadows && !gathered) {
+        this.gatherShadowCandidates(frame, light);
+        gathered = true;
+      }
       const blocker = shadows ? this.firstBlocker(frame, l, distance, index, node !== null) : null;
       if (blocker) {
         // S = 0: a shadow ray carries black.
@@ -283,14 +291,23 @@ export class WhittedIntegrator {
 
   /**
    * Every shadow ray from this hit toward this light stays inside the box spanned by the
-   * hit point and the light's extent, so only objects overlapping that box can block any
-   * of them: found once here (through the object BVHs, cheap shapes first), not once per sample.
+   * hit point and the light's extent, and for an area light inside the pyramid from the
+   * point to its rectangle, so only objects overlapping both can block any of them: found
+   * once here (through the object BVHs, cheap shapes first), not once per sample.
    */
   private gatherShadowCandidates(frame: Frame, light: TracerLight): void {
     const reach = frame.shadowReach.copy(light.extent).expandByPoint(frame.hit.point);
+    // One shadow ray (a point or spot light): listing its candidates would cost a walk of
+    // the BVHs on top of the ray's own, which prunes by the ray and not by a box.
+    if (light.sampleCount === 1) {
+      frame.candidateCount = -1;
+      return;
+    }
+    // The margin covers the shadow rays' ε offsets at both ends (see ShadowCone).
+    const cone = light.type === 'area' ? frame.shadowCone.set(frame.hit.point, light, 4 * this.scene.epsilon) : null;
     let count = 0;
     for (const occluders of this.scene.occluders) {
-      count = occluders.overlapping(reach, frame.candidates, count, MAX_LISTED_CANDIDATES);
+      count = occluders.overlapping(reach, frame.candidates, count, MAX_LISTED_CANDIDATES, cone);
       if (count > MAX_LISTED_CANDIDATES) break;
     }
     frame.candidateCount = count > MAX_LISTED_CANDIDATES ? -1 : count;

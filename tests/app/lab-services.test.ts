@@ -20,6 +20,11 @@ function fakePool(workers: number | undefined) {
     setScene: (scene: Scene) => void scenes.push(scene),
     // The real tracer on the main thread: the rays are what a worker would send.
     tracePixel: (x: number, y: number, seed = 0): Promise<PixelTrace> => Promise.resolve(tracePixel(buildTracerScene(scenes.at(-1)!, new Map()), x, y, seed)),
+    tracePixels: (first: number, count: number, seed = 0): Promise<PixelTrace[]> => {
+      const scene = buildTracerScene(scenes.at(-1)!, new Map());
+      const columns = scene.source.camera.pixels[0];
+      return Promise.resolve(Array.from({ length: count }, (_, i) => tracePixel(scene, (first + i) % columns, Math.floor((first + i) / columns), seed)));
+    },
     dispose: () => void (disposed = true),
   };
   return pool;

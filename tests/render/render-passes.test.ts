@@ -111,20 +111,78 @@ describe('render progress', () => {
   });
 });
 
-describe('the rows a painter must redraw', () => {
-  it('are the rows of the tiles pasted since it last asked, and none after', () => {
+describe('what a painter must redraw', () => {
+  it('the tiles pasted into the image since it last asked, and none after', () => {
     const [pass] = planPasses(withSupersampling(1), { width: 100, height: 70, workers: 1, preview: false });
     const tiles = new TiledRender(100, 70, [pass], {});
-    expect(tiles.takeChangedRows()).toBeNull();
+    expect(tiles.takeChanges()).toBeNull();
     const taken: TileAssignment[] = [];
     for (let next = tiles.takeTile(); next; next = tiles.takeTile()) taken.push(next);
     const paste = ({ tileId, tile }: TileAssignment) => tiles.accept(tileId, new Float32Array(tile.width * tile.height * 3), emptyRayStats(), 1);
     const bottom = taken.filter(({ tile }) => tile.y + tile.height === 70);
     paste(bottom[0]);
-    expect(tiles.takeChangedRows()).toEqual([bottom[0].tile.y, 70]);
-    expect(tiles.takeChangedRows()).toBeNull();
+    expect(tiles.takeChanges()).toEqual({ preview: null, tiles: [bottom[0].tile] });
+    expect(tiles.takeChanges()).toBeNull();
     paste(taken[0]);
     paste(bottom[1]);
-    expect(tiles.takeChangedRows()).toEqual([0, 70]);
+    expect(tiles.takeChanges()).toEqual({ preview: null, tiles: [taken[0].tile, bottom[1].tile] });
+  });
+
+  it('a preview pass at its own resolution, one value per block, and the image untouched until the sharp pass', () => {
+    const [width, height, block] = [10, 7, 4];
+    const preview: RenderPass = { kind: 'preview', block, samplesPerSide: 1, tileWidth: 12, tileHeight: 4 };
+    const sharp: RenderPass = { kind: 'sharp', block: 1, samplesPerSide: 1, tileWidth: 5, tileHeight: 5 };
+    const shown: unknown[] = [];
+    const tiles = new TiledRender(width, height, [preview, sharp], { onPreview: (image) => shown.push(image) });
+    // As a worker fills a preview tile: every pixel of a block has the block's value.
+    const filled = ({ tile }: TileAssignment) => {
+      const rgb = new Float32Array(tile.width * tile.height * 3);
+      for (let y = 0; y < tile.height; y++) {
+        for (let x = 0; x < tile.width; x++) rgb.set([tile.x + x - (x % block), tile.y + y - (y % block), 1], (y * tile.width + x) * 3);
+      }
+      return rgb;
+    };
+    const [top, lower] = [tiles.takeTile()!, tiles.takeTile()!];
+    tiles.accept(lower.tileId, filled(lower), emptyRayStats(), 1);
+    const changes = tiles.takeChanges()!;
+    expect(changes.tiles).toEqual([]);
+    expect(changes.preview?.rows).toEqual([1, 2]);
+    const image = changes.preview!.image;
+    expect([image.width, image.height, image.block]).toEqual([3, 2, block]);
+    tiles.accept(top.tileId, filled(top), emptyRayStats(), 1);
+    expect(tiles.takeChanges()?.preview?.rows).toEqual([0, 1]);
+    // Block (i, j)'s value is its top-left pixel's: (4i, 4j).
+    expect([...image.rgb]).toEqual([0, 0, 1, 4, 0, 1, 8, 0, 1, 0, 4, 1, 4, 4, 1, 8, 4, 1]);
+    expect(shown).toEqual([image]);
+    expect(tiles.image.rgb.every((value) => value === 0)).toBe(true);
+    // The sharp pass pastes into the image, and is the one the painter hears of next.
+    const first = tiles.takeTile()!;
+    tiles.accept(first.tileId, new Float32Array(25 * 3).fill(0.5), emptyRayStats(), 1);
+    expect(tiles.takeChanges()).toEqual({ preview: null, tiles: [first.tile] });
+    expect(tiles.image.rgb[0]).toBe(0.5);
+  });
+
+  it('a finer preview starts as the coarser one scaled up, and takes over its rows not yet asked for', () => {
+    const coarse: RenderPass = { kind: 'preview', block: 4, samplesPerSide: 1, tileWidth: 8, tileHeight: 8 };
+    const fine: RenderPass = { ...coarse, block: 2 };
+    const tiles = new TiledRender(8, 8, [coarse, fine], {});
+    const only = tiles.takeTile()!;
+    const rgb = new Float32Array(8 * 8 * 3).map((_, i) => Math.floor(i / 3) % 8 < 4 ? 1 : 2); // left blocks 1, right blocks 2
+    tiles.accept(only.tileId, rgb, emptyRayStats(), 1);
+    const changes = tiles.takeChanges()!;
+    expect(changes.preview).toMatchObject({ rows: [0, 4] });
+    expect(changes.preview?.image).toMatchObject({ width: 4, height: 4, block: 2 });
+    expect([...changes.preview!.image.rgb.filter((_, i) => i % 3 === 0)]).toEqual([1, 1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2, 1, 1, 2, 2]);
+  });
+
+  it('past 256 tiles, the rows they span as one full-width tile', () => {
+    const pass: RenderPass = { kind: 'final', block: 1, samplesPerSide: 1, tileWidth: 1, tileHeight: 1 };
+    const tiles = new TiledRender(30, 20, [pass], {});
+    for (let i = 0; i < 300; i++) {
+      const next = tiles.takeTile()!;
+      tiles.accept(next.tileId, new Float32Array(3), emptyRayStats(), 1);
+    }
+    // Tiles 0–299 cover rows 0–9 of the 30-pixel rows.
+    expect(tiles.takeChanges()).toEqual({ preview: null, tiles: [{ x: 0, y: 0, width: 30, height: 10 }] });
   });
 });

@@ -7,6 +7,7 @@ import type { CreateRenderWorker } from '../../src/render/render-worker-port.ts'
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 import { emptyRayStats } from '../../src/tracer/ray-tree.ts';
 import { renderTile } from '../../src/tracer/render-tile.ts';
+import { tracePixel } from '../../src/tracer/trace-pixel.ts';
 import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
 import { createRenderHandler } from '../../workers/render-core.ts';
 import type { RenderResponse } from '../../workers/protocol.ts';
@@ -131,6 +132,28 @@ describe('render workers that fail', () => {
       pool.setScene(scene, NO_MESHES);
       await pool.ready();
       await expect(pool.tracePixel(1, 1)).rejects.toThrow(/stopped answering/);
+    } finally {
+      pool.dispose();
+    }
+  });
+
+  it('a block of pixel traces that comes back malformed is dropped, one of the wrong size fails its request', async () => {
+    let tampered = 0;
+    const { pool, log } = poolWith(
+      inProcessWorker((response, send) => {
+        if (response.type !== 'pixels-traced') return send(response);
+        if (tampered++ === 0) send({ ...response, traces: 'no trees' });
+        send(tampered === 1 ? response : { ...response, traces: response.traces.slice(1) });
+      }),
+      { size: 1 },
+    );
+    try {
+      pool.setScene(scene, NO_MESHES);
+      const core = buildTracerScene(scene, NO_MESHES);
+      const columns = scene.camera.pixels[0];
+      expect(await pool.tracePixels(1, 3, 5)).toEqual([1, 2, 3].map((i) => tracePixel(core, i % columns, Math.floor(i / columns), 5)));
+      expect(log).toEqual(['dropped a message from a render worker: a pixels-traced without a request id and ray trees']);
+      await expect(pool.tracePixels(0, 2)).rejects.toThrow('a render worker answered a trace-pixels request with a pixels-traced of the wrong size');
     } finally {
       pool.dispose();
     }

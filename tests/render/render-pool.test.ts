@@ -65,11 +65,16 @@ describe('RenderPool with worker threads', () => {
     const passes = planPasses(scene, { width: WIDTH, height: HEIGHT, workers: pool.size, preview: true });
     expect(passes.map((pass) => pass.kind)).toEqual(['preview', 'preview', 'sharp', 'final']);
     expect(events).toEqual([...passes.slice(1).map(() => 'preview'), 'done']);
-    const [{ block }] = passes;
-    const coarse = previews[0].rgb;
-    for (let y = 0; y < block; y++) {
-      for (let x = 0; x < block; x++) expect(coarse.slice((y * WIDTH + x) * 3, (y * WIDTH + x) * 3 + 3)).toEqual(coarse.slice(0, 3));
-    }
+    // Each coarse preview at its own resolution: pixel (x, y) is block (x, y)'s one sample.
+    passes.filter((pass) => pass.kind === 'preview').forEach(({ block }, i) => {
+      const blocks = renderTile(buildTracerScene(scene, NO_MESHES), { x: 0, y: 0, width: WIDTH, height: HEIGHT }, { imageWidth: WIDTH, imageHeight: HEIGHT, seed: 0, block });
+      const [width, height] = [Math.ceil(WIDTH / block), Math.ceil(HEIGHT / block)];
+      const expected = Array.from({ length: width * height }, (_, p) => [...blocks.slice((Math.floor(p / width) * block * WIDTH + (p % width) * block) * 3).subarray(0, 3)]).flat();
+      expect(previews[i]).toMatchObject({ width, height, block });
+      expect([...previews[i].rgb]).toEqual(expected);
+    });
+    // The sharp pass shows the whole image.
+    expect([previews.at(-1)!.width, previews.at(-1)!.height]).toEqual([WIDTH, HEIGHT]);
     expect(progress.at(-1)).toMatchObject({ phase: 'final', pass: passes.length, passes: passes.length, done: progress.at(-1)?.total });
     expect(job.image.rgb).toBe(result.rgb);
   });

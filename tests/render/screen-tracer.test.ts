@@ -3,7 +3,7 @@ import { pathToFileURL } from 'node:url';
 import { DEFAULT_SEED } from '../../src/render/render-job.ts';
 import { RenderPool } from '../../src/render/render-pool.ts';
 import type { ScreenRays } from '../../src/render/screen-rays.ts';
-import { ScreenTracer, TRACES_IN_FLIGHT, type ScreenTracePool } from '../../src/render/screen-tracer.ts';
+import { PIXELS_PER_REQUEST, REQUESTS_IN_FLIGHT, ScreenTracer, type ScreenTracePool } from '../../src/render/screen-tracer.ts';
 import { createNodeRenderPool, createNodeWorkerPort } from '../../src/cli/node-worker-port.ts';
 import { loadMeshesFromDisk } from '../../src/scene/load-meshes-node.ts';
 import type { MeshLibrary } from '../../src/scene/mesh-data.ts';
@@ -21,12 +21,13 @@ function sceneWithPixels(columns: number, rows: number): Scene {
   return { ...scene, camera: { ...scene.camera, pixels: [columns, rows] } };
 }
 
+/** A request for pixels first … first + count - 1 of the screen. */
 interface Request {
   scene: Scene;
-  x: number;
-  y: number;
+  first: number;
+  count: number;
   seed: number | undefined;
-  resolve(trace: PixelTrace): void;
+  resolve(traces: PixelTrace[]): void;
   reject(error: Error): void;
 }
 
@@ -40,11 +41,15 @@ class FakePool implements ScreenTracePool {
     this.scenes.push(scene);
   }
 
-  tracePixel(x: number, y: number, seed?: number): Promise<PixelTrace> {
+  tracePixel(): Promise<PixelTrace> {
+    return Promise.reject(new Error('the screen tracer traces pixels in blocks'));
+  }
+
+  tracePixels(first: number, count: number, seed?: number): Promise<PixelTrace[]> {
     const scene = this.scenes[this.scenes.length - 1];
     return new Promise((resolve, reject) => {
-      const request: Request = { scene, x, y, seed, resolve, reject };
-      request.resolve = (trace) => (this.pending.delete(request), resolve(trace));
+      const request: Request = { scene, first, count, seed, resolve, reject };
+      request.resolve = (traces) => (this.pending.delete(request), resolve(traces));
       request.reject = (error) => (this.pending.delete(request), reject(error));
       this.requests.push(request);
       this.pending.add(request);
@@ -54,7 +59,15 @@ class FakePool implements ScreenTracePool {
   /** Answers every pending request (and those they lead to), letting the tracer's awaits run. */
   async answerAll(): Promise<void> {
     while (this.pending.size > 0) {
-      for (const request of [...this.pending]) request.resolve({ pixel: [request.x, request.y], color: [request.x, request.y, 0], rays: [] });
+      for (const request of [...this.pending]) {
+        const columns = request.scene.camera.pixels[0];
+        request.resolve(
+          Array.from({ length: request.count }, (_, i) => {
+            const [x, y] = [(request.first + i) % columns, Math.floor((request.first + i) / columns)];
+            return { pixel: [x, y], color: [x, y, 0], rays: [] };
+          }),
+        );
+      }
       await vi.advanceTimersByTimeAsync(0);
     }
   }
@@ -94,22 +107,20 @@ describe('ScreenTracer (fake pool)', () => {
     expect(errors).toEqual([]);
   });
 
-  it('traces a scene at once when idle; the trace that replaced a dropped one is kept, and only the newest scene waits for it', async () => {
+  it('traces a scene at once when idle, else after the running trace, with only the newest scene that came meanwhile', async () => {
     const scenes = [sceneWithPixels(1, 1), sceneWithPixels(2, 1), sceneWithPixels(2, 2), sceneWithPixels(3, 1)];
     tracer.update(scenes[0]);
     await vi.advanceTimersByTimeAsync(0);
     expect(pool.scenes).toEqual([scenes[0]]);
-    tracer.update(scenes[1]); // drops the first trace
-    await vi.advanceTimersByTimeAsync(0);
-    expect(pool.scenes).toEqual([scenes[0], scenes[1]]);
+    tracer.update(scenes[1]);
     tracer.update(scenes[2]);
     tracer.update(scenes[3]);
     await vi.advanceTimersByTimeAsync(0);
-    expect(pool.scenes).toEqual([scenes[0], scenes[1]]); // the kept trace runs on
+    expect(pool.scenes).toEqual([scenes[0]]); // the running trace is never dropped
     await pool.answerAll();
-    // The kept trace published, then the newest scene was traced; the one in between never.
-    expect(pool.scenes).toEqual([scenes[0], scenes[1], scenes[3]]);
-    expect(published.map((rays) => rays.traces.length)).toEqual([2, 3]);
+    // The running trace published, then the newest scene was traced; the ones in between never.
+    expect(pool.scenes).toEqual([scenes[0], scenes[3]]);
+    expect(published.map((rays) => rays.traces.length)).toEqual([1, 3]);
     expect(tracer.rays?.columns).toBe(3);
   });
 
@@ -124,38 +135,40 @@ describe('ScreenTracer (fake pool)', () => {
     expect(published).toHaveLength(1);
   });
 
-  it('keeps at most TRACES_IN_FLIGHT pixel requests waiting', async () => {
-    tracer.update(sceneWithPixels(16, 16));
+  it('asks for PIXELS_PER_REQUEST pixels a request, at most REQUESTS_IN_FLIGHT requests at a time', async () => {
+    tracer.update(sceneWithPixels(16, 10));
     await vi.advanceTimersByTimeAsync(0);
-    expect(pool.pending.size).toBe(TRACES_IN_FLIGHT);
+    expect(pool.pending.size).toBe(REQUESTS_IN_FLIGHT);
     await pool.answerAll();
-    expect(pool.requests).toHaveLength(256);
-    expect(published[0].traces).toHaveLength(256);
+    const blocks = Array.from({ length: Math.ceil(160 / PIXELS_PER_REQUEST) }, (_, i) => [i * PIXELS_PER_REQUEST, Math.min(PIXELS_PER_REQUEST, 160 - i * PIXELS_PER_REQUEST)]);
+    expect(pool.requests.map(({ first, count }) => [first, count])).toEqual(blocks);
+    expect(published[0].traces.map((trace) => trace.pixel)).toEqual(Array.from({ length: 160 }, (_, i) => [i % 16, Math.floor(i / 16)]));
   });
 
-  it('latest wins: a newer scene drops the running trace at once, which stops requesting its pixels', async () => {
+  it('a newer scene waits for the running trace, which is published whole before the newer one is traced', async () => {
     const older = sceneWithPixels(16, 16);
     const newer = sceneWithPixels(2, 1);
     tracer.update(older);
     await vi.advanceTimersByTimeAsync(0);
     tracer.update(newer);
     await vi.advanceTimersByTimeAsync(0);
+    expect(pool.scenes).toEqual([older]);
+    await pool.answerAll();
     expect(pool.scenes).toEqual([older, newer]);
-    await pool.answerAll(); // the old scene's requests come back late
-    expect(pool.requests.filter((request) => request.scene === older)).toHaveLength(TRACES_IN_FLIGHT);
-    expect(published).toHaveLength(1);
-    expect([published[0].columns, published[0].rows]).toEqual([2, 1]);
+    expect(pool.requests.filter((request) => request.scene === older)).toHaveLength(256 / PIXELS_PER_REQUEST);
+    expect(published.map((rays) => [rays.columns, rays.rows])).toEqual([[16, 16], [2, 1]]);
   });
 
   it('reports a failed trace to onError once, and publishes nothing for that scene', async () => {
-    tracer.update(sceneWithPixels(8, 8));
+    tracer.update(sceneWithPixels(16, 16));
     await vi.advanceTimersByTimeAsync(0);
     const [first, second] = [...pool.pending];
     first.reject(new Error('worker died'));
     second.reject(new Error('worker died again'));
+    await vi.advanceTimersByTimeAsync(0);
     await pool.answerAll();
     expect(errors.map((error) => error.message)).toEqual(['worker died']);
-    expect(pool.requests).toHaveLength(TRACES_IN_FLIGHT);
+    expect(pool.requests).toHaveLength(REQUESTS_IN_FLIGHT);
     expect(published).toEqual([]);
   });
 

@@ -65,6 +65,26 @@ describe('the render worker core', () => {
     expect(responses.map((r) => r.type)).toEqual(['scene-ready', 'pixel-traced', 'tile-done']);
   });
 
+  it('traces a block of the screen in one answer, the same trees as one pixel at a time, and refuses pixels off the screen', async () => {
+    const { handle, responses, settle } = worker();
+    const [columns, rows] = scene.camera.pixels;
+    const first = columns + 2; // wraps onto the next row
+    handle(load(1));
+    handle({ type: 'trace-pixels', requestId: 7, first, count: columns, seed: 3 });
+    for (let i = 0; i < columns; i++) handle({ type: 'trace-pixel', requestId: 10 + i, x: (first + i) % columns, y: Math.floor((first + i) / columns), seed: 3 });
+    handle({ type: 'trace-pixels', requestId: 8, first: columns * rows - 1, count: 2, seed: 3 });
+    await settle(2 + columns + 1);
+
+    const [, block, ...rest] = responses;
+    const singles = rest.slice(0, columns).map((r) => (r.type === 'pixel-traced' ? r.trace : null));
+    expect(block).toEqual({ type: 'pixels-traced', requestId: 7, traces: singles });
+    expect(rest.at(-1)).toEqual({
+      type: 'error',
+      failed: { type: 'trace-pixels', requestId: 8 },
+      message: `pixels ${columns * rows - 1} to ${columns * rows} are not on the ${columns}×${rows} screen`,
+    });
+  });
+
   it('renders a queued tile with the scene that was current when it arrived', async () => {
     const { handle, responses, settle } = worker();
     const dark = sceneFrom({ ...scene, settings: { ...scene.settings, background: [0, 0, 0] } });

@@ -1,6 +1,6 @@
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import { loadMeshes } from '../../../render/load-meshes-browser.ts';
-import type { RenderImage, RenderJob, RenderProgress } from '../../../render/render-job.ts';
+import type { RenderChanges, RenderImage, RenderJob, RenderProgress } from '../../../render/render-job.ts';
 import type { RenderPool } from '../../../render/render-pool.ts';
 import type { Store } from '../../../lab-state/store.ts';
 import { meshNamesInScene } from '../../../scene/mesh-names.ts';
@@ -28,8 +28,10 @@ export interface ShownRender {
 
 /** What the window does with a render's pictures while the job runs. */
 export interface RenderPainter {
-  /** A coarse preview, a partly filled image (`rows` [from, to) of it changed) or the finished one (all of it). */
-  paint(image: RenderImage, dithering: boolean, rows?: [number, number]): void;
+  /** The finished image, all of it. */
+  paint(image: RenderImage, dithering: boolean): void;
+  /** A running job's changes (new preview rows, tiles of its full-resolution `image`). */
+  paintChanges(image: RenderImage, changes: RenderChanges, dithering: boolean): void;
   /** A render starts (after `shown` is set, before any picture): `isCurrent` says whether it still is. */
   started(shown: ShownRender, isCurrent: () => boolean): Promise<void> | void;
 }
@@ -85,14 +87,14 @@ export class RenderJobController implements ReactiveController {
     try {
       const meshes = await loadMeshes(meshNamesInScene(scene));
       if (!isCurrent()) return;
-      // Progress comes after every pass's last tile too, so painting the changed rows there
-      // shows each preview whole without repainting the image at every pass.
+      // Progress comes after every pass's last tile too, so painting the changes there shows
+      // each preview whole without repainting the image at every pass.
       const job = pool.render(scene, meshes, {
         onProgress: (progress) => {
           if (!isCurrent()) return;
           this.setStatus({ kind: 'rendering', ...progress });
-          const rows = job.changedRows();
-          if (rows) this.painter.paint(job.image, dithering, rows);
+          const changes = job.changes();
+          if (changes) this.painter.paintChanges(job.image, changes, dithering);
         },
       });
       this.job = job;

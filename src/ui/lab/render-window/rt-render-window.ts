@@ -92,7 +92,8 @@ export class RtRenderWindow extends LitElement {
 
   private readonly painter = new BandPainter(() => this.tracedCanvas.value);
   private readonly jobs = new RenderJobController(this, {
-    paint: (image, dithering, rows) => this.painter.paint(image, dithering, rows),
+    paint: (image, dithering) => this.painter.paint(image, dithering),
+    paintChanges: (image, changes, dithering) => this.painter.paintChanges(image, changes, dithering),
     started: (shown, isCurrent) => this.prepareStage(shown, isCurrent),
   });
   private readonly contrast = new ContrastToggle(this, () => {

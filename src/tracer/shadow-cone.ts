@@ -1,0 +1,86 @@
+import type { Vector3 } from 'three';
+import type { TracerLight } from './lights.ts';
+
+/**
+ * The solid that every shadow ray from a hit point to an area light stays in: the pyramid
+ * with its apex at the point and the light's rectangle as its base (every sample point lies
+ * in the rectangle position ± halfWidth ± halfDepth, lights.ts; a disc's points lie in its
+ * square). Its side planes and its base plane cull the shadow candidates far tighter than the
+ * box around point and light does: above a crowd of objects, that box overlaps dozens of them
+ * while the pyramid's narrow end near the point meets a few (the 256-object benchmark grid).
+ *
+ * Conservative by `margin`: a box is excluded only when it lies wholly outside one plane by
+ * more than the margin, which covers the shadow ray's offset origin (ε along the normal) and
+ * its end (ε short of the sample), so no possible blocker is ever dropped and the image stays
+ * the same. A plane that degenerates (the point in the light's plane) is left out, which only
+ * makes the test looser. Culling a box by separating planes: Assarsson & Möller, "Optimized
+ * View Frustum Culling Algorithms for Bounding Boxes" (2000), the n-vertex test.
+ */
+export class ShadowCone {
+  /** Per plane: unit normal x, y, z (pointing out) and offset d, outside where n·x > d. */
+  private readonly planes = new Float64Array(5 * 4);
+  /** Per plane: where in a box's six numbers its n-vertex's x, y and z are (min or max per axis). */
+  private readonly corner = new Uint8Array(5 * 3);
+  private planeCount = 0;
+
+  /** The cone from `point` over `light` (an area light), widened by `margin`. */
+  set(point: Vector3, light: TracerLight, margin: number): this {
+    const { position: c, halfWidth: w, halfDepth: h } = light;
+    // The corners in order around the rectangle.
+    const xs = [c.x - w.x - h.x, c.x + w.x - h.x, c.x + w.x + h.x, c.x - w.x + h.x];
+    const ys = [c.y - w.y - h.y, c.y + w.y - h.y, c.y + w.y + h.y, c.y - w.y + h.y];
+    const zs = [c.z - w.z - h.z, c.z + w.z - h.z, c.z + w.z + h.z, c.z - w.z + h.z];
+    // A point inside the pyramid, to orient the planes outward.
+    const mx = (point.x + c.x) / 2;
+    const my = (point.y + c.y) / 2;
+    const mz = (point.z + c.z) / 2;
+    this.planeCount = 0;
+    for (let i = 0; i < 4; i++) {
+      const j = (i + 1) & 3;
+      const ax = xs[i] - point.x, ay = ys[i] - point.y, az = zs[i] - point.z;
+      const bx = xs[j] - point.x, by = ys[j] - point.y, bz = zs[j] - point.z;
+      this.addPlane(ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx, point.x, point.y, point.z, mx, my, mz, margin);
+    }
+    // The base: the light's own plane, normal w × h.
+    this.addPlane(w.y * h.z - w.z * h.y, w.z * h.x - w.x * h.z, w.x * h.y - w.y * h.x, c.x, c.y, c.z, mx, my, mz, margin);
+    return this;
+  }
+
+  /** Whether the box at boxes[at..at+5] (min x, y, z, max x, y, z) lies wholly outside the cone. */
+  excludes(boxes: Float64Array, at: number): boolean {
+    const { planes: p, corner: c } = this;
+    for (let i = 0; i < this.planeCount; i++) {
+      const k = i * 4;
+      const j = i * 3;
+      // n · the box's corner farthest inside the plane (the n-vertex).
+      if (p[k] * boxes[at + c[j]] + p[k + 1] * boxes[at + c[j + 1]] + p[k + 2] * boxes[at + c[j + 2]] > p[k + 3]) return true;
+    }
+    return false;
+  }
+
+  /** The plane through (px, py, pz) with normal (nx, ny, nz), turned away from (mx, my, mz) and moved out by `margin`. */
+  private addPlane(nx: number, ny: number, nz: number, px: number, py: number, pz: number, mx: number, my: number, mz: number, margin: number): void {
+    const length = Math.sqrt(nx * nx + ny * ny + nz * nz);
+    if (!(length > 0)) return;
+    let ux = nx / length, uy = ny / length, uz = nz / length;
+    let d = ux * px + uy * py + uz * pz;
+    const inner = ux * mx + uy * my + uz * mz - d;
+    // The inner point on the plane: the pyramid is flat there, this plane cannot orient.
+    if (!(Math.abs(inner) > margin)) return;
+    if (inner > 0) {
+      ux = -ux;
+      uy = -uy;
+      uz = -uz;
+      d = -d;
+    }
+    const i = this.planeCount++;
+    this.corner[i * 3] = ux > 0 ? 0 : 3;
+    this.corner[i * 3 + 1] = uy > 0 ? 1 : 4;
+    this.corner[i * 3 + 2] = uz > 0 ? 2 : 5;
+    const at = i * 4;
+    this.planes[at] = ux;
+    this.planes[at + 1] = uy;
+    this.planes[at + 2] = uz;
+    this.planes[at + 3] = d + margin;
+  }
+}
