@@ -75,16 +75,18 @@ async function expectGuideOnScreen(page: Page, levelId: string, task: LevelTask)
  * light or pixel it names.
  */
 async function expectHitWhereRingPoints(page: Page, where: string, target: string, centre: { x: number; y: number }): Promise<void> {
-  await page.mouse.move(centre.x, centre.y);
-  const hit = await lab(page).evaluate((element, id) => {
-    const sized = (element as unknown as { guideElements(id: string): Element[] }).guideElements(id).filter((carrier) => carrier.getBoundingClientRect().width > 0);
-    if (sized.length > 0) return { control: sized.some((carrier) => carrier.matches(':hover')) };
-    return { control: null };
+  // A control's elements (a group such as columns and rows has several): each one, at its middle, is what the pointer is over.
+  const carriers = await lab(page).evaluate((element, id) => {
+    const boxes = (element as unknown as { guideElements(id: string): Element[] }).guideElements(id).map((carrier) => carrier.getBoundingClientRect());
+    return boxes.filter((box) => box.width > 0).map((box) => ({ x: box.left + box.width / 2, y: box.top + box.height / 2 }));
   }, target);
-  if (hit.control !== null) {
-    expect(hit.control, `${where}: the pointer where the ring points is over ${target}`).toBe(true);
-    return;
+  for (const [index, point] of carriers.entries()) {
+    await page.mouse.move(point.x, point.y);
+    const over = await lab(page).evaluate((element, [id, at]) => (element as unknown as { guideElements(id: string): Element[] }).guideElements(id).filter((carrier) => carrier.getBoundingClientRect().width > 0)[at]?.matches(':hover') ?? false, [target, index] as const);
+    expect(over, `${where}: the pointer on ${target} (part ${index + 1} of ${carriers.length}) is over it, not over something on top`).toBe(true);
   }
+  if (carriers.length > 0) return;
+  await page.mouse.move(centre.x, centre.y);
   const item = /^view\.item:(.+)$/.exec(target)?.[1];
   const pixel = /^screen\.pixel:(\d+),(\d+)$/.exec(target);
   if (!item && !pixel) return; // a control reached through another (its panel's note) until it is shown
