@@ -17,6 +17,8 @@ export default defineConfig({
     viewport: { width: 1366, height: 768 },
     // The app's service worker would precache the whole build in every test; e2e/offline.spec.ts allows it.
     serviceWorkers: 'block',
+    // A failing test leaves the page it saw, to look at.
+    screenshot: 'only-on-failure',
     launchOptions: {
       executablePath,
       args: [

@@ -129,7 +129,10 @@ test.describe('a phone, by touch', () => {
     await page.touchscreen.tap(sky.x, sky.y);
     await expectStatus(page, 'Let go', 'done');
 
+    // The level ends on a finished image, not on an open window.
     await page.locator('[data-command="render-open"]').tap();
+    await page.locator('rt-render-window button.primary').tap();
+    await expect(page.locator('rt-render-window [data-testid="render-status"]')).toContainText('Done in', { timeout: 60_000 });
     await expect(panel(page).getByText('Level complete!')).toBeAttached();
     const window = (await page.locator('rt-render-window').boundingBox())!;
     expect(window).toEqual({ x: 0, y: 0, width: 390, height: 844 });

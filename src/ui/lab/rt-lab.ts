@@ -142,7 +142,25 @@ export class RtLab extends LitElement {
     this.loadOnDemandPanels();
     if (changed.has('assignment') && changed.get('assignment') !== undefined && this.isConnected) this.game.start();
     if (changed.has('sharedScene') && this.sharedScene) this.game.openSharedScene(this.sharedScene);
+    this.closeRenderWindowWhenInTheWay();
   }
+
+  /**
+   * The render window covers the 3D view and the pixel preview: it closes when the hint
+   * ring points at something outside it, or a task's view frames something in the 3D view
+   * (after a render task, the next task's pixel or ray was under it).
+   */
+  private closeRenderWindowWhenInTheWay(): void {
+    const ring = this.game.session?.mode.kind === 'level' ? (this.game.session.engine.level?.ring ?? null) : null;
+    const look = this.store.state.look;
+    const newRing = ring !== this.lastRing && ring !== null && !ring.startsWith('render.');
+    const newLook = look !== this.lastLook && (look?.frame !== undefined || look?.throughCamera === true);
+    this.lastRing = ring;
+    this.lastLook = look;
+    if (this.renderOpen && (newRing || newLook)) this.renderOpen = false;
+  }
+  private lastRing: string | null = null;
+  private lastLook: LabState['look'] = null;
 
   protected override updated(): void {
     const session = this.game.session;
