@@ -133,6 +133,47 @@ describe('shading terms on every level scene (ray-debugger spec §1)', () => {
   });
 });
 
+describe('shading terms of a rough (glossy) surface (distribution-effects)', () => {
+  it('add its fan up to one term: the rays\' shares summed, their colour the mean of those that left the surface', async () => {
+    const scene = sceneFrom({
+      camera: { position: [0, 1.2, 3], target: [0, 0.3, 0], fov: 45, pixels: [6, 4] },
+      settings: { maxDepth: 2, background: [0.6, 0.7, 0.9] },
+      objects: [
+        { id: 'floor', shape: 'plane', scale: [10, 1, 10], material: matte([0.3, 0.3, 0.3], { specular: 0.7, roughness: 0.3, glossySamples: 3 }) },
+        { id: 'ball', shape: 'sphere', position: [0, 0.5, -0.6], material: matte([0.9, 0.2, 0.1], { specular: 0.4, roughness: 0.2, glossySamples: 2 }) },
+      ],
+      lights: [pointLight([1, 3, 2])],
+    });
+    const tracer = await tracerFor(scene);
+    const image = renderTile(tracer, { x: 0, y: 0, width: 6, height: 4 }, { imageWidth: 6, imageHeight: 4, seed: 1 });
+    let fans = 0;
+    for (let y = 0; y < 4; y++) {
+      for (let x = 0; x < 6; x++) {
+        const traced = tracePixel(tracer, x, y, 1, { terms: true });
+        expect(traced.color).toEqual(Array.from(image.subarray((y * 6 + x) * 3, (y * 6 + x) * 3 + 3)));
+        walk(traced.rays, (node) => {
+          const fan = node.children.filter((child) => child.type === 'reflect');
+          if (!node.terms || fan.length < 2) return;
+          fans++;
+          const { specular, glossySamples } = scene.objects.find((object) => object.id === node.objectId)!.material;
+          const share = specular / (glossySamples * glossySamples);
+          expect(fan).toHaveLength(glossySamples * glossySamples);
+          const left = fan.filter((child) => !child.absorbed);
+          const reflect = node.terms.reflect;
+          if (left.length === 0) return expect(reflect).toBeNull();
+          expect(reflect!.weight).toBeCloseTo(share * left.length, 12);
+          for (let c = 0; c < 3; c++) {
+            expect(reflect!.color[c]).toBeCloseTo(left.reduce((sum, child) => sum + child.color[c], 0) / left.length, 12);
+            expect(sumOfParts(node.terms)[c]).toBeCloseTo(node.terms.sum[c], 12);
+          }
+          expect(clamp01(node.terms.sum)).toEqual(node.color);
+        });
+      }
+    }
+    expect(fans).toBeGreaterThan(4);
+  });
+});
+
 /** The terms of the primary ray through pixel (x, y) of a 1×1 screen looking straight down at a plane. */
 function primaryTerms(extra: { lights: unknown[]; objects?: unknown[]; material?: Record<string, unknown>; shadows?: boolean; maxDepth?: number }): ShadingTerms {
   const tracer = tracerSceneFrom({
