@@ -18,6 +18,7 @@ import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
 import { loadMeshes } from '../render/load-meshes-browser.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
+import type { PixelTrace } from '../tracer/ray-tree.ts';
 import type { Store } from '../lab-state/store.ts';
 import type { Vec3 } from '../scene/scene.ts';
 import { CameraScreen } from './camera-screen.ts';
@@ -416,10 +417,15 @@ export class LabView {
     return height > 0 ? Math.max(0.4, 1 - this.coveredBottom / height) : 1;
   }
 
+  /** The chosen pixel's latest trace, or null without a pixel or its trace. */
+  private selectedTrace(): PixelTrace | null {
+    const pixel = this.store.state.selectedPixel;
+    return (pixel && this.screenRays?.traces.find((candidate) => candidate.pixel[0] === pixel[0] && candidate.pixel[1] === pixel[1])) ?? null;
+  }
+
   /** The chosen pixel's whole ray path and the camera it starts at, or null without a pixel or its trace. */
   private pixelRayPoints(): Vec3[] | null {
-    const pixel = this.store.state.selectedPixel;
-    const trace = pixel && this.screenRays?.traces.find((candidate) => candidate.pixel[0] === pixel[0] && candidate.pixel[1] === pixel[1]);
+    const trace = this.selectedTrace();
     return trace ? [...rayPathPoints(trace), this.store.state.scene.camera.position] : null;
   }
 
@@ -455,8 +461,7 @@ export class LabView {
 
   /** For tests and tools: the chosen pixel's rays as segments on the canvas (CSS px), none without a pixel or its trace. */
   pixelRaySegments(): { from: { x: number; y: number }; to: { x: number; y: number } }[] {
-    const pixel = this.store.state.selectedPixel;
-    const trace = pixel && this.screenRays?.traces.find((candidate) => candidate.pixel[0] === pixel[0] && candidate.pixel[1] === pixel[1]);
+    const trace = this.selectedTrace();
     if (!trace) return [];
     return raySegments(trace).flatMap(([start, end]) => {
       const from = this.projectToView(start);

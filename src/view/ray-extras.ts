@@ -52,16 +52,18 @@ export class RayExtras {
 
   /** Shares the (possibly new, larger) ray mesh's instance buffers. */
   private link(cylinders: InstancedMesh): void {
-    this.linkedTo = cylinders;
     for (const name of [ALPHA_ATTRIBUTE, GROWTH_ATTRIBUTE, DASH_ATTRIBUTE]) {
       const attribute = cylinders.geometry.getAttribute(name);
       if (attribute) this.arrowGeometry.setAttribute(name, attribute);
     }
+    // The empty geometry the mesh was made with (the rays' own is not ours to dispose).
+    if (this.linkedTo === null) this.hidden.geometry.dispose();
     this.hidden.geometry = cylinders.geometry;
     for (const mesh of [this.arrows, this.hidden]) {
       mesh.instanceMatrix = cylinders.instanceMatrix;
       mesh.instanceColor = cylinders.instanceColor;
     }
+    this.linkedTo = cylinders;
   }
 }
 

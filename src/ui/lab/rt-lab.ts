@@ -151,7 +151,7 @@ export class RtLab extends LitElement {
    * (after a render task, the next task's pixel or ray was under it).
    */
   private closeRenderWindowWhenInTheWay(): void {
-    const ring = this.game.session?.mode.kind === 'level' ? (this.game.session.engine.level?.ring ?? null) : null;
+    const ring = this.currentRing();
     const look = this.store.state.look;
     const newRing = ring !== this.lastRing && ring !== null && !ring.startsWith('render.');
     const newLook = look !== this.lastLook && (look?.frame !== undefined || look?.throughCamera === true);
@@ -159,12 +159,16 @@ export class RtLab extends LitElement {
     this.lastLook = look;
     if (this.renderOpen && (newRing || newLook)) this.renderOpen = false;
   }
+  /** What the hint ring points at in the level being played, or null. */
+  private currentRing(): string | null {
+    const session = this.game.session;
+    return session?.mode.kind === 'level' ? (session.engine.level?.ring ?? null) : null;
+  }
   private lastRing: string | null = null;
   private lastLook: LabState['look'] = null;
 
   protected override updated(): void {
-    const session = this.game.session;
-    this.ring.follow(session?.mode.kind === 'level' ? (session.engine.level?.ring ?? null) : null);
+    this.ring.follow(this.currentRing());
     // How many rays are drawn, readable from outside (browser tests, curious teachers).
     const view = this.sceneView();
     if (view) {
