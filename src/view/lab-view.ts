@@ -168,7 +168,7 @@ export class LabView {
     });
     this.flight = new CameraFlight(this.controls, this.scheduler, (atCamera) => this.emit('flight', atCamera));
     this.look = new LookFollower({
-      pointsOf: (name) => framedPoints(name, this.store.state.scene, (id) => this.objects.objectOf(id), this.cameraScreen.rig),
+      pointsOf: (name) => this.framedPointsOf(name),
       pixelRayPoints: () => this.pixelRayPoints(),
       pose: () => this.controls.pose,
       fov: VIEW_FOV,
@@ -456,7 +456,13 @@ export class LabView {
    * px): the points `frame` fits for `name` (view-look.ts), each projected (null behind the eye).
    */
   projectedPointsOf(name: string): ({ x: number; y: number } | null)[] {
-    return framedPoints(name, this.store.state.scene, (id) => this.objects.objectOf(id), this.cameraScreen.rig).map((point) => this.projectToView(point));
+    return this.framedPointsOf(name).map((point) => this.projectToView(point));
+  }
+
+  /** The world points a declared view fits for `name` (view-look.ts), from what is drawn now. */
+  private framedPointsOf(name: string): Vec3[] {
+    const drawn = (id: string) => this.objects.objectOf(id) ?? this.lightGizmos.objectOf(id);
+    return framedPoints(name, this.store.state.scene, drawn, this.cameraScreen.rig);
   }
 
   /** For tests and tools: the chosen pixel's rays as segments on the canvas (CSS px), none without a pixel or its trace. */

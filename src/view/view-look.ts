@@ -85,12 +85,14 @@ export class LookFollower {
 
 /**
  * The points a framed name stands for: an object's drawn box (a plane only its centre: a
- * floor would fill any view), a light's position, the tracer's camera with its screen.
+ * floor would fill any view), a light's drawn shape (a spot's cone shows where it points,
+ * the very thing a task may ask about) or its position, the tracer's camera with its screen.
+ * `drawn` gives an object's or a light's drawing by id.
  */
 export function framedPoints(name: string, scene: Scene, drawn: (id: string) => Object3D | undefined, cameraRig: Object3D): Vec3[] {
   if (name === 'camera') return [scene.camera.position, ...boxCorners(cameraRig)];
   const light = scene.lights.find((candidate) => candidate.id === name);
-  if (light) return [light.position];
+  if (light) return [light.position, ...boxCorners(drawn(name))];
   const object = scene.objects.find((candidate) => candidate.id === name);
   if (!object) return [];
   const corners = object.shape === 'plane' ? [] : boxCorners(drawn(name));

@@ -1,7 +1,8 @@
-import { Vector3 } from 'three';
+import { BoxGeometry, Mesh, Object3D, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import type { Vec3 } from '../../src/scene/scene.ts';
-import { LookFollower, PIXEL_RAYS_WAIT_MS, type LookStage } from '../../src/view/view-look.ts';
+import { framedPoints, LookFollower, PIXEL_RAYS_WAIT_MS, type LookStage } from '../../src/view/view-look.ts';
+import { matte, pointLight, sceneFrom } from '../support/test-scene.ts';
 import type { ViewPose } from '../../src/view/view-pose.ts';
 
 /** A stage that records where it was sent; the ball is at x = 2, the lamp at y = 4. */
@@ -85,5 +86,28 @@ describe('following a declared look', () => {
     follower.raysArrived();
     expect(moves).toEqual([]);
     expect(follower.waitingForRays).toBe(false);
+  });
+});
+
+describe('the points a framed name stands for', () => {
+  const scene = sceneFrom({
+    camera: { position: [0, 1, 5], target: [0, 0, 0] },
+    objects: [{ id: 'ball', shape: 'sphere', position: [2, 0.5, 0], material: matte([1, 0, 0]) }],
+    lights: [{ ...pointLight([0, 3, 0]), id: 'spot', type: 'spot', spotAngle: 40 }],
+  });
+  const cone = new Mesh(new BoxGeometry(1, 1, 1));
+  cone.position.set(0, 3.5, 0);
+  const drawn = (id: string) => (id === 'spot' ? cone : undefined);
+
+  it('takes a light\'s drawn shape as well as its place: a spot\'s cone shows where it points', () => {
+    const points = framedPoints('spot', scene, drawn, new Object3D());
+    expect(points[0]).toEqual([0, 3, 0]);
+    expect(Math.max(...points.map((point) => point[1]))).toBeCloseTo(4);
+    expect(points).toHaveLength(9);
+  });
+
+  it('falls back to a light\'s place while it is not drawn, and knows no unknown name', () => {
+    expect(framedPoints('spot', scene, () => undefined, new Object3D())).toEqual([[0, 3, 0]]);
+    expect(framedPoints('nothing', scene, drawn, new Object3D())).toEqual([]);
   });
 });
