@@ -1,7 +1,7 @@
 import type { DeclaredView, LabAction } from '../lab-state/lab-action.ts';
+import type { Level, Task } from '../quest/level-schema.ts';
 
 type ViewApplied = Extract<LabAction, { type: 'view.applied' }>;
-import type { Level, Task } from '../quest/level-schema.ts';
 
 /**
  * When the declared views of a level (docs/levels.md, "Views") are applied: the level's own
