@@ -129,7 +129,7 @@ export class ScreenTracer {
       };
       await Promise.all(Array.from({ length: Math.min(REQUESTS_IN_FLIGHT, Math.ceil(traces.length / PIXELS_PER_REQUEST)) }, lane));
       if (this.disposed) return;
-      rays = { columns, rows, traces };
+      rays = { columns, rows, traces, scene };
     } catch (error) {
       // Not for a scene already replaced: a newer one is waiting.
       if (!this.disposed && this.pending === null) this.reportError(error);

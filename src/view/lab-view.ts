@@ -20,7 +20,7 @@ import { loadMeshes } from '../render/load-meshes-browser.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
 import type { Store } from '../lab-state/store.ts';
-import type { Vec3 } from '../scene/scene.ts';
+import type { Scene, Vec3 } from '../scene/scene.ts';
 import { CameraScreen } from './camera-screen.ts';
 import { DistributionGizmos } from './distribution-gizmos.ts';
 import { CameraFlight } from './fly-to-camera.ts';
@@ -130,6 +130,11 @@ export class LabView {
   private frames = 0;
   /** The camera's pixels' latest rays (for "show its rays"). */
   private screenRays: ScreenRays | null = null;
+  /**
+   * For tests and tools: the scene whose traced rays the last drawn frame showed (null
+   * before any), so a browser test can time a slider step to its rays on screen.
+   */
+  drawnRaysScene: Scene | null = null;
   private sized = false;
   private coveredBottom = 0;
   /** A scene was loaded and nothing drawn since: a declared look then jumps instead of gliding. */
@@ -631,6 +636,7 @@ export class LabView {
     // The outline follows a drag in progress.
     if (this.selectionBox.visible && this.gizmo.dragging) this.outlineSelection(this.store.state, this.selectedObject(this.store.state));
     this.renderer.render(this.scene, this.camera);
+    this.drawnRaysScene = this.screenRays?.scene ?? null;
     this.frames++;
     this.sceneJustLoaded = false;
   }
