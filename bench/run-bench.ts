@@ -30,6 +30,7 @@ import { naiveTracerScene } from './naive/naive-tracer-scene.ts';
 import { printTable } from './print-table.ts';
 import { measureView, roundedView, viewRows } from './view-bench.ts';
 import { measureSliderLatency, sliderRows } from './slider-latency-bench.ts';
+import { browserSliderFigures, browserSliderRows } from './browser-slider-figures.ts';
 
 const SCENE_FILE = new URL('scenes/reference.json', import.meta.url);
 const RESULTS_FILE = new URL('results.json', import.meta.url);
@@ -205,6 +206,7 @@ async function main(): Promise<void> {
     view: roundedView(view),
     firstLoad: firstLoadFigures,
     sliderToRays,
+    sliderToRaysInBrowser: browserSliderFigures(),
   };
   writeFileSync(RESULTS_FILE, `${JSON.stringify(results, null, 2)}\n`);
 
@@ -231,6 +233,7 @@ async function main(): Promise<void> {
     ...viewRows(view),
     ...firstLoadRows(firstLoadFigures),
     ...sliderRows(sliderToRays),
+    ...browserSliderRows(results.sliderToRaysInBrowser),
   ]);
   console.log(`\nwrote ${RESULTS_FILE.pathname}`);
 }
