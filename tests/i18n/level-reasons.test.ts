@@ -6,11 +6,13 @@ import { readFileSync } from 'node:fs';
 import ts from 'typescript';
 import { describe, expect, it } from 'vitest';
 import { decodeAssignment, encodeAssignment } from '../../src/classroom/assignment-link.ts';
+import { readExportFile } from '../../src/classroom/dashboard-read-file.ts';
 import type { Assignment } from '../../src/classroom/assignment.ts';
 import { issueText } from '../../src/i18n/issue-text.ts';
 import { loadLevels } from '../../src/quest/level-index.ts';
 import { parseProgress } from '../../src/quest/progress-store.ts';
 import { newProgress } from '../../src/quest/progress.ts';
+import { simulatedExport } from '../support/class-exports.ts';
 import { inDutch } from '../support/page-locale.ts';
 
 const levelText = (name: string) => readFileSync(new URL(`../../levels/${name}`, import.meta.url), 'utf8');
@@ -196,6 +198,28 @@ describe('a broken level in Dutch', () => {
       'levels[1]: "shading" staat er meer dan één keer in',
       'requiredTasks.shadows: "shadows" hoort niet bij de levels van de opdracht',
     ]);
+  });
+});
+
+describe('a file the dashboard skips, in Dutch', () => {
+  inDutch();
+
+  /** Why `text` is skipped, as the dashboard page shows it. */
+  const skipped = (name: string, text: string) => {
+    const read = readExportFile(name, text);
+    if (read.ok) throw new Error('the damaged export was read');
+    return read.detail === undefined ? read.reason : `${read.reason}: ${issueText(read.detail)}`;
+  };
+  const good = simulatedExport(0);
+
+  it('says the damage of a JSON export, an event log and a CSV export in Dutch', () => {
+    expect(skipped('p.json', JSON.stringify(good).slice(0, 40))).toMatch(/^het bestand is beschadigd: \(het geheel\): geen geldige JSON op regel 1, kolom 41: verwacht werd .*, maar er staat het einde van de tekst$/);
+    expect(skipped('p.json', JSON.stringify({ ...good, participant: 42 }))).toBe('beschadigde export: participant: moet een tekst zijn, maar is 42');
+    const backwards = good.events.events.map((event, index) => (index === 4 ? { ...event, t: 0 } : event));
+    expect(skipped('p.json', JSON.stringify({ ...good, events: { ...good.events, events: backwards } }))).toBe('beschadigd logboek: events.events[4].t: mag niet eerder zijn dan de gebeurtenis ervoor');
+    const header = 'participant,level,task,started_at,duration_ms,active_ms\n';
+    expect(skipped('a.csv', `${header}P1,L1,a,2026-03-09T09:00:00Z,ten,5\n`)).toBe('beschadigde CSV: regel 2: duration_ms moet een getal van minstens 0 zijn, maar is "ten"');
+    expect(skipped('a.csv', `${header}"P1,L1,a,2026-03-09T09:00:00Z,10,5\n`)).toBe('beschadigde CSV: een veld tussen aanhalingstekens dat op regel 2 begint, wordt nooit gesloten');
   });
 });
 
