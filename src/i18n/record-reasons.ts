@@ -14,5 +14,6 @@ export const RECORD_REASONS: readonly Rule[] = [
   [/^(".*") is not one of the assignment's levels$/, (id) => msg(str`${id} is not one of the assignment's levels`)],
   // zod's own wording for a text that breaks its pattern (an event's id in the log).
   [/^Invalid string: must match pattern (.+)$/, (pattern) => msg(str`Invalid string: must match pattern ${pattern}`)],
+  [/^must be a web address that starts with http:\/\/ or https:\/\/$/, () => msg('must be a web address that starts with http:// or https://')],
   [/^a class code has 1 to 32 letters, digits, - or _$/, () => msg('a class code has 1 to 32 letters, digits, - or _')],
 ];

@@ -131,7 +131,7 @@ function progressReasons(): string[] {
   });
 }
 
-/** An assignment link that lists a level twice, requires tasks of a level it does not list, and has a wrong class code. */
+/** An assignment link that lists a level twice, requires tasks of a level it does not list, and has a wrong class code and home page. */
 async function assignmentReasons(): Promise<string[]> {
   const assignment = {
     version: 1,
@@ -143,6 +143,7 @@ async function assignmentReasons(): Promise<string[]> {
     askParticipantCode: false,
     survey: null,
     classCode: '3B and 3C',
+    xapiHomePage: 'ftp://school.example',
   } satisfies Assignment;
   const decoded = await decodeAssignment(await encodeAssignment(assignment));
   if (decoded.ok) throw new Error('the broken assignment was accepted');
@@ -195,6 +196,7 @@ describe('a broken level in Dutch', () => {
     ]);
     expect((await assignmentReasons()).map(issueText)).toEqual([
       'classCode: een klascode heeft 1 tot 32 letters, cijfers, - of _',
+      'xapiHomePage: moet een webadres zijn dat begint met http:// of https://',
       'levels[1]: "shading" staat er meer dan één keer in',
       'requiredTasks.shadows: "shadows" hoort niet bij de levels van de opdracht',
     ]);
