@@ -4,8 +4,8 @@ import type { LabAction } from '../src/lab-state/lab-action.ts';
 import type { Scene } from '../src/scene/scene.ts';
 
 // The sandbox's save, load and share: a scene saved as a file comes back the same; a file
-// that is not a scene leaves the scene alone with a message; a shared link opens the scene
-// in the free lab, and a damaged link says so.
+// that is not a scene leaves the scene alone with a message (in Dutch too, as is a progress
+// file's); a shared link opens the scene in the free lab, and a damaged link says so.
 
 type Recorded = Window & { actions: string[] };
 
@@ -72,6 +72,13 @@ test('save a scene as a file and load it back; a broken file changes nothing', a
   await panel.locator('input[type=file]').setInputFiles({ name: 'notes.json', mimeType: 'application/json', buffer: Buffer.from('{"version": 1,') });
   await expect(panel.getByRole('status')).toContainText('(het geheel): geen geldige JSON op regel 1, kolom 15: verwacht werd een veldnaam tussen dubbele aanhalingstekens');
   await page.screenshot({ path: 'test-results/screens/scene-file-broken-nl.png' });
+
+  // So are a progress file's reasons (the patterns for them load with the Dutch texts).
+  await page.getByRole('button', { name: 'Menu' }).click();
+  const progress = JSON.stringify({ kind: 'ray-tracer-quest-progress', version: 7 });
+  await page.locator('rt-progress-menu input[type=file]').setInputFiles({ name: 'voortgang.json', mimeType: 'application/json', buffer: Buffer.from(progress) });
+  await expect(page.locator('rt-toast')).toContainText('version: deze app leest voortgang van versie 1, maar de versie is 7');
+  await page.screenshot({ path: 'test-results/screens/progress-file-broken-nl.png' });
 });
 
 test('a shared link opens the scene in the free lab; a damaged link says why', async ({ page, context }) => {

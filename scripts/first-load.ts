@@ -10,7 +10,8 @@ import { gzipSync } from 'node:zlib';
  * - the entry script and every chunk it imports statically;
  * - the entry's dynamic imports with their static imports: `src/main.ts` awaits each of them
  *   before the first render (the language, then the app);
- * - for a learner in another language, that language's catalogue (`src/locales/<code>.ts`).
+ * - for a learner in another language, that language's catalogue (`src/locales/<code>.ts`)
+ *   and what src/i18n/locale.ts loads together with it (CATALOGUE_COMPANIONS).
  *
  * What loads once that screen is up is listed apart ("after the first screen"): the 3D view
  * (three.js), the BVH panel, the teacher's pages. The render worker is a file of its own,
@@ -19,6 +20,9 @@ import { gzipSync } from 'node:zlib';
 
 /** The budget of spec issue 11: a school laptop on a busy classroom network. */
 export const FIRST_LOAD_BUDGET_BYTES = 250 * 1024;
+
+/** Loaded together with any catalogue (src/i18n/locale.ts): the patterns that say a refused file's reasons in that language. */
+export const CATALOGUE_COMPANIONS = ['src/i18n/issue-translation.ts'];
 
 /** One chunk of vite's build manifest (the fields used here). */
 export interface ManifestChunk {
@@ -62,7 +66,8 @@ export function firstLoadKeys(manifest: Manifest, locale = 'en'): string[] {
   const [entry] = entries;
   const catalogue = `src/locales/${locale}.ts`;
   if (locale !== 'en' && !manifest[catalogue]) throw new Error(`the build has no catalogue for "${locale}" (${catalogue})`);
-  return staticClosure(manifest, [entry, ...(manifest[entry].dynamicImports ?? []), ...(locale === 'en' ? [] : [catalogue])]);
+  const withCatalogue = locale === 'en' ? [] : [catalogue, ...CATALOGUE_COMPANIONS];
+  return staticClosure(manifest, [entry, ...(manifest[entry].dynamicImports ?? []), ...withCatalogue]);
 }
 
 function gzipBytes(dist: string, file: string): number {
@@ -79,7 +84,7 @@ export function afterFirstScreen(dist: string, manifest = readManifest(dist)): {
   const first = new Set(firstLoadKeys(manifest));
   const dynamicEntries = new Set(Object.values(manifest).flatMap((chunk) => chunk.dynamicImports ?? []));
   return [...dynamicEntries]
-    .filter((key) => !first.has(key) && !key.startsWith('src/locales/'))
+    .filter((key) => !first.has(key) && !key.startsWith('src/locales/') && !CATALOGUE_COMPANIONS.includes(key))
     .map((key) => ({
       source: key,
       gzipBytes: staticClosure(manifest, [key])

@@ -29,7 +29,7 @@ export const assignmentSchema = z
     askParticipantCode: z.boolean(),
     survey: kebabId().nullable(),
     classCode: z.string().regex(CLASS_CODE, 'a class code has 1 to 32 letters, digits, - or _').optional(),
-    xapiHomePage: z.url({ protocol: /^https?$/ }).max(200).optional(),
+    xapiHomePage: z.url({ protocol: /^https?$/, error: 'must be a web address that starts with http:// or https://' }).max(200).optional(),
   })
   .superRefine((assignment, context) => {
     assignment.levels.forEach((id, index) => {

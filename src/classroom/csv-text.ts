@@ -33,7 +33,8 @@ export function csvTable(header: readonly string[], rows: readonly Row[], quoted
   return [header.map((name) => csvField(name)).join(','), ...lines].join('\r\n') + '\r\n';
 }
 
-export type CsvRead = { ok: true; rows: string[][] } | { ok: false; error: string };
+/** A failure names the line of the quote that is never closed, and says so in English for scripts and tests. */
+export type CsvRead = { ok: true; rows: string[][] } | { ok: false; error: string; openQuoteLine: number };
 
 /** Splits CSV text into rows of fields; an unclosed quote is an error with its line. */
 export function parseCsv(text: string): CsvRead {
@@ -70,7 +71,7 @@ export function parseCsv(text: string): CsvRead {
       line++;
     } else field += char;
   }
-  if (quoted) return { ok: false, error: `a quoted field that starts on line ${quoteLine} is never closed` };
+  if (quoted) return { ok: false, error: `a quoted field that starts on line ${quoteLine} is never closed`, openQuoteLine: quoteLine };
   if (field !== '' || row.length > 0) {
     row.push(field);
     rows.push(row);

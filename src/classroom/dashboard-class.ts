@@ -1,3 +1,4 @@
+import { msg, str } from '@lit/localize';
 import { attemptRows, csvHeader, ID_COLUMNS } from './attempt-rows.ts';
 import { csvTable } from './csv-text.ts';
 import { readExportFile } from './dashboard-read-file.ts';
@@ -27,14 +28,14 @@ export function readClassFiles(files: readonly DroppedFile[], earlier: ClassFile
   for (const { name, text } of files) {
     const first = seen.get(text);
     if (first !== undefined) {
-      skipped.push({ file: name, reason: `the same export as ${first}, counted once` });
+      skipped.push({ file: name, reason: msg(str`the same export as ${first}, counted once`) });
       continue;
     }
     const read = readExportFile(name, text);
     if (read.ok) {
       seen.set(text, name);
       records.push(read.record);
-    } else skipped.push({ file: read.file, reason: read.reason });
+    } else skipped.push({ file: read.file, reason: read.reason, ...(read.detail === undefined ? {} : { detail: read.detail }) });
   }
   return { records, skipped };
 }

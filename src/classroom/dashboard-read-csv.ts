@@ -30,7 +30,7 @@ type Counts = { -readonly [Field in keyof typeof NUMBER_COLUMNS]: number };
 
 export function readCsvExport(file: string, text: string): FileRead {
   const csv = parseCsv(text);
-  if (!csv.ok) return { ok: false, file, reason: `damaged CSV: ${csv.error}` };
+  if (!csv.ok) return { ok: false, file, reason: msg(str`damaged CSV: a quoted field that starts on line ${csv.openQuoteLine} is never closed`) };
   const [header, ...rows] = csv.rows;
   if (!header) return { ok: false, file, reason: msg('the file is empty') };
   const names = header.map((name) => name.trim().toLowerCase());
@@ -45,10 +45,10 @@ export function readCsvExport(file: string, text: string): FileRead {
     const counts = {} as Counts;
     for (const [field, name] of Object.entries(NUMBER_COLUMNS) as [keyof Counts, string][]) {
       const value = cell(row, name) === '' ? 0 : Number(cell(row, name));
-      if (!Number.isFinite(value) || value < 0) return { ok: false, file, reason: `damaged CSV: line ${line}: ${name} must be a number of at least 0, got "${cell(row, name)}"` };
+      if (!Number.isFinite(value) || value < 0) return { ok: false, file, reason: msg(str`damaged CSV: line ${line}: ${name} must be a number of at least 0, got "${cell(row, name)}"`) };
       counts[field] = value;
     }
-    if (Number.isNaN(Date.parse(cell(row, 'started_at')))) return { ok: false, file, reason: `damaged CSV: line ${line}: started_at is not a date` };
+    if (Number.isNaN(Date.parse(cell(row, 'started_at')))) return { ok: false, file, reason: msg(str`damaged CSV: line ${line}: started_at is not a date`) };
     const completedAt = cell(row, 'completed_at');
     const quizCorrect = cell(row, 'quiz_correct');
     attempts.push({

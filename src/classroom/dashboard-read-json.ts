@@ -1,6 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { z } from 'zod';
 import { eventLogSchema } from '../quest/event-log.ts';
+import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
 import { PROGRESS_KIND } from '../quest/progress.ts';
 import { isRecord } from '../util/is-record.ts';
 import { readJson } from '../util/read-json.ts';
@@ -26,11 +27,9 @@ const exportSchema = z.looseObject({
   survey: z.unknown(),
 });
 
-const issuePath = (path: readonly PropertyKey[]) => (path.length ? path.map(String).join('.') : '(root)');
-
 export function readJsonExport(file: string, text: string): FileRead {
   const json = readJson(text);
-  if (!json.ok) return { ok: false, file, reason: json.error.replace(/^\(root\): /, '') };
+  if (!json.ok) return { ok: false, file, reason: msg('the file is damaged'), detail: json.error };
   const value = json.value;
   if (isXapi(value)) return { ok: false, file, reason: msg("xAPI statements, which are for a school's learning record store: drop the learner's JSON or CSV export here instead") };
   if (!isRecord(value)) return { ok: false, file, reason: msg('not a Ray Tracer Quest export (the file holds no JSON object)') };
@@ -39,16 +38,10 @@ export function readJsonExport(file: string, text: string): FileRead {
   if (typeof value.version === 'number' && value.version > EXPORT_VERSION) {
     return { ok: false, file, reason: msg(str`made by a newer version of the app (export version ${value.version}); open the dashboard of that version`) };
   }
-  const parsed = exportSchema.safeParse(value);
-  if (!parsed.success) {
-    const issue = parsed.error.issues[0];
-    return { ok: false, file, reason: msg(str`damaged export: ${issuePath(issue.path)}: ${issue.message}`) };
-  }
-  const log = eventLogSchema.safeParse(parsed.data.events);
-  if (!log.success) {
-    const issue = log.error.issues[0];
-    return { ok: false, file, reason: msg(str`damaged event log: events.${issuePath(issue.path)}: ${issue.message}`) };
-  }
+  const parsed = exportSchema.safeParse(value, { error: describeIssue });
+  if (!parsed.success) return { ok: false, file, reason: msg('damaged export'), detail: formatIssues(parsed.error.issues)[0] };
+  const log = eventLogSchema.safeParse(parsed.data.events, { error: describeIssue });
+  if (!log.success) return { ok: false, file, reason: msg('damaged event log'), detail: `events.${formatIssues(log.error.issues)[0]}` };
   const { attempts, visits } = readLog(log.data);
   const participant = parsed.data.participant ?? '';
   const assignment = assignmentOf(parsed.data.assignment);

@@ -34,7 +34,13 @@ export interface ClassRecord {
 /** A file that was not counted, and why. */
 export interface SkippedFile {
   file: string;
+  /** Why, in the app's language. */
   reason: string;
+  /**
+   * The schema's or the JSON reader's own `path: reason` line, in English as they word it
+   * (src/scene/scene-issues.ts): the page says it in its language after `reason`.
+   */
+  detail?: string;
 }
 
 export type FileRead = { ok: true; record: ClassRecord } | ({ ok: false } & SkippedFile);

@@ -1,6 +1,7 @@
 import { configureLocalization } from '@lit/localize';
 import { sourceLocale, targetLocales } from '../locales/locale-codes.ts';
 import type { Locale } from '../quest/localized-text.ts';
+import { loadIssueTranslation } from './issue-text.ts';
 import { pickLocale, readRememberedLocale, rememberLocale } from './locale-choice.ts';
 import { rerenderAll } from './rerender-all.ts';
 
@@ -14,7 +15,8 @@ import { rerenderAll } from './rerender-all.ts';
 const localization = configureLocalization({
   sourceLocale,
   targetLocales,
-  loadLocale: () => import('../locales/nl.ts'),
+  // The reasons a file is refused for are said in Dutch by patterns of their own (issue-text.ts).
+  loadLocale: async () => (await Promise.all([import('../locales/nl.ts'), loadIssueTranslation()]))[0],
 });
 
 const storage = () => localStorage;

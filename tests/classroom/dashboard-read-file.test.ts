@@ -6,9 +6,11 @@ import { CLASS_ASSIGNMENT, simulatedExport } from '../support/class-exports.ts';
 
 const good = simulatedExport(0);
 const json = (value: unknown) => JSON.stringify(value);
+/** Why a file is skipped, with the schema's own line after it when there is one (as the page shows it). */
 const reason = (name: string, text: string) => {
   const read = readExportFile(name, text);
-  return read.ok ? 'read' : read.reason;
+  if (read.ok) return 'read';
+  return read.detail === undefined ? read.reason : `${read.reason}: ${read.detail}`;
 };
 
 describe('reading one dropped file for the dashboard', () => {
@@ -44,7 +46,7 @@ describe('reading one dropped file for the dashboard', () => {
 
   it('names why a file is skipped', () => {
     expect(reason('a.json', '')).toBe('the file is empty');
-    expect(reason('a.json', json(good).slice(0, 200))).toMatch(/^not valid JSON at line \d+, column \d+/);
+    expect(reason('a.json', json(good).slice(0, 200))).toMatch(/^the file is damaged: \(root\): not valid JSON at line \d+, column \d+/);
     expect(reason('photo.png', '\u0089PNG\r\n\u001a\n\u0000\u0000')).toMatch(/not a text file/);
     expect(reason('notes.txt', 'hello there')).toMatch(/not a Ray Tracer Quest export/);
     expect(reason('list.json', '[1, 2]')).toMatch(/holds no JSON object/);
@@ -52,15 +54,15 @@ describe('reading one dropped file for the dashboard', () => {
     expect(reason('scene.json', json({ version: 1, objects: [] }))).toMatch(/no "format": "ray-tracer-quest-export"/);
     expect(reason('progress.json', json({ kind: 'ray-tracer-quest-progress', version: 1 }))).toMatch(/a saved progress file, not an export/);
     expect(reason('future.json', json({ ...good, version: 2 }))).toMatch(/newer version of the app \(export version 2\)/);
-    expect(reason('p.json', json({ ...good, participant: 42 }))).toMatch(/^damaged export: participant: /);
+    expect(reason('p.json', json({ ...good, participant: 42 }))).toBe('damaged export: participant: must be a string, got 42');
   });
 
   it('points at the damaged event in a log', () => {
     const events = good.events.events.map((event, index) => (index === 3 ? { ...event, t: -5 } : event));
-    expect(reason('p.json', json({ ...good, events: { ...good.events, events } }))).toMatch(/^damaged event log: events\.events\.3\.t: /);
+    expect(reason('p.json', json({ ...good, events: { ...good.events, events } }))).toBe('damaged event log: events.events[3].t: must be at least 0, got -5');
     const backwards = good.events.events.map((event, index) => (index === 4 ? { ...event, t: 0 } : event));
     expect(reason('p.json', json({ ...good, events: { ...good.events, events: backwards } }))).toBe(
-      'damaged event log: events.events.4.t: must not be earlier than the event before it',
+      'damaged event log: events.events[4].t: must not be earlier than the event before it',
     );
   });
 

@@ -106,7 +106,7 @@ describe('a class of files', () => {
     const read = readClassFiles([...files, { name: 'broken.json', text: '{"format": "ray-tracer-quest-export", ' }, { name: 'copy.json', text: files[3].text }]);
     expect(read.records).toHaveLength(30);
     expect(read.skipped).toEqual([
-      { file: 'broken.json', reason: expect.stringMatching(/^not valid JSON at line 1/) },
+      { file: 'broken.json', reason: 'the file is damaged', detail: expect.stringMatching(/^\(root\): not valid JSON at line 1/) },
       { file: 'copy.json', reason: `the same export as ${files[3].name}, counted once` },
     ]);
   });

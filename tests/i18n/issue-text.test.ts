@@ -88,8 +88,10 @@ describe('a broken scene file in Dutch', () => {
   it('keeps a reason no pattern knows as it is, and turns every line of a refusal', () => {
     expect(issueText('tasks[2]: something new the schema says')).toBe('tasks[2]: something new the schema says');
     // Half known is kept whole: no Dutch frame around English words.
-    expect(issueText('with: must be an object of fields to change, got 3')).toBe('with: must be an object of fields to change, got 3');
-    expect(issueText('options: unknown field "glow" (known: shadows, depth)')).toBe('options: unknown field "glow" (known: shadows, depth)');
+    expect(issueText('with: must be a colour of some sort, got 3')).toBe('with: must be a colour of some sort, got 3');
+    expect(issueText('options: unknown field "glow", try "shine"')).toBe('options: unknown field "glow", try "shine"');
+    // Reasons joined by "; " are said one by one, each known one in Dutch.
+    expect(issueText('rays: unknown field "glow" (known: shadows, depth); depth must be deep, got 3')).toBe('rays: onbekend veld "glow" (bekend zijn: shadows, depth); depth must be deep, got 3');
     expect(issueText('shape: must be "mesh", got "cube"')).toBe('shape: moet "mesh" zijn, maar is "cube"');
     expect(issueLines('camera.fov: must be at least 1, got nothing\nobjects: must have at most 64 items, got a list of 70 items')).toBe(
       'camera.fov: moet minstens 1 zijn, maar is niets\nobjects: mag hoogstens 64 elementen hebben, maar is een lijst met 70 elementen',

@@ -8,7 +8,7 @@ import { afterFirstScreen, checkFirstLoad, FIRST_LOAD_BUDGET_BYTES, firstLoad, t
 
 /**
  * A built app as vite writes it: an entry that awaits the app (a dynamic import), the app
- * importing a shared chunk, the Dutch catalogue, and the 3D view and the dashboard loaded on
+ * importing a shared chunk, the Dutch catalogue and the patterns loaded with it, and the 3D view and the dashboard loaded on
  * demand from the app, sharing a chunk of their own.
  */
 function dist(appBytes: number): string {
@@ -22,6 +22,7 @@ function dist(appBytes: number): string {
     'assets/app.js': noise(appBytes),
     'assets/shared.js': 'export const a = 1;'.repeat(100),
     'assets/nl.js': noise(2000),
+    'assets/issue-translation.js': noise(500),
     'assets/view.js': noise(150_000),
     'assets/three.js': noise(100_000),
     'assets/dashboard.js': noise(40_000),
@@ -29,7 +30,8 @@ function dist(appBytes: number): string {
   for (const [file, content] of Object.entries(files)) writeFileSync(join(dir, file), content);
   const manifest: Manifest = {
     'index.html': { file: 'assets/index.js', isEntry: true, dynamicImports: ['src/app.ts'] },
-    'src/app.ts': { file: 'assets/app.js', imports: ['_shared.js'], dynamicImports: ['src/locales/nl.ts', 'src/view.ts', 'src/dashboard.ts'] },
+    'src/app.ts': { file: 'assets/app.js', imports: ['_shared.js'], dynamicImports: ['src/locales/nl.ts', 'src/i18n/issue-translation.ts', 'src/view.ts', 'src/dashboard.ts'] },
+    'src/i18n/issue-translation.ts': { file: 'assets/issue-translation.js', imports: ['_shared.js'] },
     '_shared.js': { file: 'assets/shared.js' },
     'src/locales/nl.ts': { file: 'assets/nl.js', imports: ['_shared.js'] },
     'src/view.ts': { file: 'assets/view.js', imports: ['_three.js', '_shared.js'] },
@@ -50,11 +52,11 @@ describe('the first-load budget', () => {
     expect(checkFirstLoad(load).ok).toBe(true);
   });
 
-  it('adds the catalogue of a learner in another language', () => {
+  it('adds the catalogue of a learner in another language, and what loads with it', () => {
     const dir = dist(1000);
     const dutch = firstLoad(dir, 'nl');
-    expect(dutch.files.map((file) => file.file)).toEqual(['assets/index.js', 'assets/app.js', 'assets/shared.js', 'assets/nl.js']);
-    expect(dutch.gzipBytes).toBeGreaterThan(firstLoad(dir).gzipBytes + 2000);
+    expect(dutch.files.map((file) => file.file)).toEqual(['assets/index.js', 'assets/app.js', 'assets/shared.js', 'assets/nl.js', 'assets/issue-translation.js']);
+    expect(dutch.gzipBytes).toBeGreaterThan(firstLoad(dir).gzipBytes + 2500);
     expect(() => firstLoad(dir, 'fr')).toThrow(/no catalogue for "fr"/);
   });
 

@@ -9,6 +9,7 @@ import { learnerInLevel, summarizeLevels, type LevelSummary } from '../../../cla
 import { stickingPoints, STUCK_MIN_LEARNERS, STUCK_MIN_SHARE, STUCK_TIMES_TYPICAL } from '../../../classroom/dashboard-stuck.ts';
 import { summarizeSurveys, type SurveysSummary } from '../../../classroom/dashboard-survey.ts';
 import { downloadText } from '../../../util/download-file.ts';
+import { issueText } from '../../../i18n/issue-text.ts';
 import { surveyById } from '../../../classroom/surveys.ts';
 import { localize, type Locale } from '../../../quest/localized-text.ts';
 import { playableLevels } from '../../../quest/level-index.ts';
@@ -262,7 +263,7 @@ export class RtDashboardPage extends LitElement {
           </tr>
         </thead>
         <tbody>
-          ${skipped.map((file) => html`<tr><td>${file.file}</td><td>${file.reason}</td></tr>`)}
+          ${skipped.map((file) => html`<tr><td>${file.file}</td><td>${file.detail === undefined ? file.reason : `${file.reason}: ${issueText(file.detail)}`}</td></tr>`)}
         </tbody>
       </table>
     </section>`;
