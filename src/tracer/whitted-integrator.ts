@@ -218,8 +218,10 @@ export class WhittedIntegrator {
     let sr = 0;
     let sg = 0;
     let sb = 0;
-    for (let s = 0; s < samples; s++) {
-      light.samplePoint(s, this.random, lightPoint);
+    // The samples row by row: cell (i, j) of the light's n×n grid.
+    const perSide = light.samplesPerSide;
+    for (let j = 0; j < perSide; j++) for (let i = 0; i < perSide; i++) {
+      light.samplePoint(i, j, this.random, lightPoint);
       let lx = lightPoint.x - px;
       let ly = lightPoint.y - py;
       let lz = lightPoint.z - pz;
