@@ -49,6 +49,11 @@ class Frame {
   readonly candidates: Intersectable[] = [];
   /** -1: too many candidates to list; shadow rays walk the occluder BVHs, limited to shadowReach. */
   candidateCount = 0;
+  /** Whether the hit's own shape is listed, and how many other objects are. */
+  selfListed = false;
+  othersListed = 0;
+  /** The distance to the light sample being tested (a field: a number passed to a call is boxed by V8). */
+  shadowDistance = 0;
 }
 
 /**
@@ -206,6 +211,9 @@ export class WhittedIntegrator {
     const { x: px, y: py, z: pz } = hit.point;
     const { x: nx, y: ny, z: nz } = n;
     const { x: vx, y: vy, z: vz } = v;
+    const { x: ngx, y: ngy, z: ngz } = frame.geometricNormal;
+    // The hit's shape is left by every ray toward its outer side (see leavingShape).
+    const selfConvex = hit.shape!.convex && frame.entering;
     const { x: lr, y: lg, z: lb } = light.color;
     // pow(max(R·V, 0), n) can only be 0 when R·V ≤ 0 (and n > 0), and the highlight is 0
     // whenever ks or the light's specular factor is: pow is skipped there.
@@ -254,7 +262,15 @@ export class WhittedIntegrator {
         this.gatherShadowCandidates(frame, light, index, node === null);
         gathered = true;
       }
-      const blocker = shadows ? this.firstBlocker(frame, l, distance, index, node !== null) : null;
+      let blocker: Intersectable | null = null;
+      if (shadows) {
+        this.stats.shadow++;
+        frame.shadowDistance = distance;
+        // Nothing to test when the list holds only the hit's own shape and the ray leaves it
+        // (leavingShape, on plain numbers): most shadow rays on an open floor cost no call.
+        const leavesSelf = selfConvex && ngx * lx + ngy * ly + ngz * lz > 0;
+        if (frame.candidateCount < 0 || frame.othersListed > 0 || (frame.selfListed && !leavesSelf)) blocker = this.firstBlocker(frame, l, index, node !== null);
+      }
       if (blocker) {
         // S = 0: a shadow ray carries black.
         sampleNodes?.push(newNode('shadow', hit.point, l, shadowHit.t, true, blocker.id, light.id, [0, 0, 0]));
@@ -317,11 +333,15 @@ export class WhittedIntegrator {
     // that blocked this light last is the likeliest to block again, so it is tried first.
     // Only when rendering: a recorded tree keeps the BVH's order, so that of two blockers at
     // exactly the same distance it always shows the same one.
+    if (frame.candidateCount < 0) return;
     if (lastBlockerFirst && count > 1) moveToFront(frame.candidates, count, this.lastBlocker[lightIndex]);
+    frame.selfListed = false;
+    for (let i = 0; i < count; i++) if (frame.candidates[i] === frame.hit.shape) frame.selfListed = true;
+    frame.othersListed = count - (frame.selfListed ? 1 : 0);
   }
 
   /**
-   * An object between the hit point and the light, or null (counts one shadow ray).
+   * An object between the hit point and the light at frame.shadowDistance, or null.
    * Rendering only needs to know whether one exists (any-hit: cheap shapes before meshes,
    * the light's last blocker first); a recorded tree shows the nearest one. Both give the
    * same visibility, so the same colour.
@@ -330,9 +350,8 @@ export class WhittedIntegrator {
    * toward this light), only those are tested, and the ray itself is set up only when one
    * of them is not the shape the ray leaves: on an open floor no shadow ray needs one.
    */
-  private firstBlocker(frame: Frame, toLight: Vector3, distance: number, lightIndex: number, nearest: boolean): Intersectable | null {
-    this.stats.shadow++;
-    const tMax = distance - this.scene.epsilon;
+  private firstBlocker(frame: Frame, toLight: Vector3, lightIndex: number, nearest: boolean): Intersectable | null {
+    const tMax = frame.shadowDistance - this.scene.epsilon;
     const leaving = leavingShape(frame, toLight);
     const { candidates, candidateCount, shadowReach } = frame;
     if (nearest) {

@@ -80,4 +80,25 @@ describe('shadow rays toward an area light', () => {
     // The primary ray only.
     expect(raySet).toHaveBeenCalledTimes(1);
   });
+
+  it('still test the hit\'s own shape when a ray can meet it again (a model shadowing itself)', () => {
+    // A model (in the place of the prism): a floor square at y = 0 and a roof square at y = 1 above it.
+    const square = (y: number) => [-1, y, -1, 1, y, -1, 1, y, 1, -1, y, 1];
+    const model = {
+      positions: new Float32Array([...square(0), ...square(1)]),
+      normals: null,
+      indices: new Uint32Array([0, 2, 1, 0, 3, 2, 4, 6, 5, 4, 7, 6]),
+    };
+    const scene = tracerSceneFrom(
+      {
+        settings: { background: [0, 0, 0], shadows: true },
+        objects: [{ id: 'shed', shape: 'mesh', mesh: 'prism', material: matte([1, 1, 1]) }],
+        lights: [{ id: 'panel', type: 'area', position: [0, 3, 0], size: [0.5, 0.5], samples: 4, ambient: 0, angleAttenuation: 0 }],
+      },
+      new Map([['prism', model]]),
+    );
+    const counts = countOccludes(scene);
+    expect(shadeFloor(scene, 0.1, 0.1)).toEqual([0, 0, 0]);
+    expect(counts.get('shed')).toBe(SAMPLES);
+  });
 });
