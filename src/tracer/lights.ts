@@ -76,18 +76,25 @@ export class TracerLight {
   }
 
   /**
-   * The point on the light for sample `index`: the light's position for point and spot
-   * lights; for an area light, a uniform random point in cell (i, j) of its n×n grid
-   * (jittered sampling), mapped onto the disc concentrically for disc lights.
+   * The point on the light for sample (i, j), column i and row j of the n×n grid: the
+   * light's position for point and spot lights; for an area light, a uniform random point in
+   * cell (i, j) (jittered sampling), mapped onto the disc concentrically for disc lights.
+   * Written on plain numbers in the order of the Vector3 methods it stands for (position +
+   * halfWidth·u, then + halfDepth·v), so every point is the same to the bit.
    */
-  samplePoint(index: number, random: RandomStream, out: Vector3): Vector3 {
-    out.copy(this.position);
-    if (this.type !== 'area') return out;
+  samplePoint(i: number, j: number, random: RandomStream, out: Vector3): Vector3 {
+    const p = this.position;
+    if (this.type !== 'area') return out.copy(p);
     const n = this.samplesPerSide;
-    let u = (((index % n) + random.next()) / n) * 2 - 1;
-    let v = ((Math.floor(index / n) + random.next()) / n) * 2 - 1;
+    let u = ((i + random.next()) / n) * 2 - 1;
+    let v = ((j + random.next()) / n) * 2 - 1;
     if (this.isDisc) [u, v] = concentricDisc(u, v);
-    return out.addScaledVector(this.halfWidth, u).addScaledVector(this.halfDepth, v);
+    const w = this.halfWidth;
+    const d = this.halfDepth;
+    out.x = p.x + w.x * u + d.x * v;
+    out.y = p.y + w.y * u + d.y * v;
+    out.z = p.z + w.z * u + d.z * v;
+    return out;
   }
 }
 

@@ -166,17 +166,26 @@ export class ObjectBvh {
   }
 }
 
-// The box of the current query, as plain numbers (set by setWithin).
-let wMinX = 0, wMinY = 0, wMinZ = 0, wMaxX = 0, wMaxY = 0, wMaxZ = 0;
+/**
+ * The box of the current query (set by setWithin): min x, y, z, max x, y, z. A typed array,
+ * not module-level variables: V8 boxes every number stored into one of those, and this is
+ * set for every hit and light.
+ */
+const within = new Float64Array(6);
 
 function setWithin({ min, max }: Box3): void {
-  wMinX = min.x; wMinY = min.y; wMinZ = min.z;
-  wMaxX = max.x; wMaxY = max.y; wMaxZ = max.z;
+  within[0] = min.x;
+  within[1] = min.y;
+  within[2] = min.z;
+  within[3] = max.x;
+  within[4] = max.y;
+  within[5] = max.z;
 }
 
 /** Box3.intersectsBox between the query box and boxes[at..at+5]. */
 function overlapsWithin(boxes: Float64Array, at: number): boolean {
-  return wMaxX >= boxes[at] && wMinX <= boxes[at + 3] && wMaxY >= boxes[at + 1] && wMinY <= boxes[at + 4] && wMaxZ >= boxes[at + 2] && wMinZ <= boxes[at + 5];
+  const w = within;
+  return w[3] >= boxes[at] && w[0] <= boxes[at + 3] && w[4] >= boxes[at + 1] && w[1] <= boxes[at + 4] && w[5] >= boxes[at + 2] && w[2] <= boxes[at + 5];
 }
 
 function centreOf(object: Intersectable, axis: number): number {

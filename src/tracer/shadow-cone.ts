@@ -22,23 +22,31 @@ export class ShadowCone {
   /** Per plane: where in a box's six numbers its n-vertex's x, y and z are (min or max per axis). */
   private readonly corner = new Uint8Array(5 * 3);
   private planeCount = 0;
+  /** The light's four corners, x, y, z each (scratch: set() runs for every hit and area light). */
+  private readonly corners = new Float64Array(4 * 3);
 
   /** The cone from `point` over `light` (an area light), widened by `margin`. */
   set(point: Vector3, light: TracerLight, margin: number): this {
     const { position: c, halfWidth: w, halfDepth: h } = light;
-    // The corners in order around the rectangle.
-    const xs = [c.x - w.x - h.x, c.x + w.x - h.x, c.x + w.x + h.x, c.x - w.x + h.x];
-    const ys = [c.y - w.y - h.y, c.y + w.y - h.y, c.y + w.y + h.y, c.y - w.y + h.y];
-    const zs = [c.z - w.z - h.z, c.z + w.z - h.z, c.z + w.z + h.z, c.z - w.z + h.z];
+    // The corners in order around the rectangle: c − w − h, c + w − h, c + w + h, c − w + h.
+    const corners = this.corners;
+    for (let i = 0; i < 4; i++) {
+      const u = i === 1 || i === 2 ? 1 : -1;
+      const v = i < 2 ? -1 : 1;
+      corners[i * 3] = c.x + u * w.x + v * h.x;
+      corners[i * 3 + 1] = c.y + u * w.y + v * h.y;
+      corners[i * 3 + 2] = c.z + u * w.z + v * h.z;
+    }
     // A point inside the pyramid, to orient the planes outward.
     const mx = (point.x + c.x) / 2;
     const my = (point.y + c.y) / 2;
     const mz = (point.z + c.z) / 2;
     this.planeCount = 0;
     for (let i = 0; i < 4; i++) {
-      const j = (i + 1) & 3;
-      const ax = xs[i] - point.x, ay = ys[i] - point.y, az = zs[i] - point.z;
-      const bx = xs[j] - point.x, by = ys[j] - point.y, bz = zs[j] - point.z;
+      const a = i * 3;
+      const b = ((i + 1) & 3) * 3;
+      const ax = corners[a] - point.x, ay = corners[a + 1] - point.y, az = corners[a + 2] - point.z;
+      const bx = corners[b] - point.x, by = corners[b + 1] - point.y, bz = corners[b + 2] - point.z;
       this.addPlane(ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx, point.x, point.y, point.z, mx, my, mz, margin);
     }
     // The base: the light's own plane, normal w × h.

@@ -49,6 +49,11 @@ class Frame {
   readonly candidates: Intersectable[] = [];
   /** -1: too many candidates to list; shadow rays walk the occluder BVHs, limited to shadowReach. */
   candidateCount = 0;
+  /** Whether the hit's own shape is listed, and how many other objects are. */
+  selfListed = false;
+  othersListed = 0;
+  /** The distance to the light sample being tested (a field: a number passed to a call is boxed by V8). */
+  shadowDistance = 0;
 }
 
 /**
@@ -206,6 +211,9 @@ export class WhittedIntegrator {
     const { x: px, y: py, z: pz } = hit.point;
     const { x: nx, y: ny, z: nz } = n;
     const { x: vx, y: vy, z: vz } = v;
+    const { x: ngx, y: ngy, z: ngz } = frame.geometricNormal;
+    // The hit's shape is left by every ray toward its outer side (see leavingShape).
+    const selfConvex = hit.shape!.convex && frame.entering;
     const { x: lr, y: lg, z: lb } = light.color;
     // pow(max(R·V, 0), n) can only be 0 when R·V ≤ 0 (and n > 0), and the highlight is 0
     // whenever ks or the light's specular factor is: pow is skipped there.
@@ -218,8 +226,10 @@ export class WhittedIntegrator {
     let sr = 0;
     let sg = 0;
     let sb = 0;
-    for (let s = 0; s < samples; s++) {
-      light.samplePoint(s, this.random, lightPoint);
+    // The samples row by row: cell (i, j) of the light's n×n grid.
+    const perSide = light.samplesPerSide;
+    for (let j = 0; j < perSide; j++) for (let i = 0; i < perSide; i++) {
+      light.samplePoint(i, j, this.random, lightPoint);
       let lx = lightPoint.x - px;
       let ly = lightPoint.y - py;
       let lz = lightPoint.z - pz;
@@ -249,10 +259,18 @@ export class WhittedIntegrator {
       l.set(lx, ly, lz);
 
       if (shadows && !gathered) {
-        this.gatherShadowCandidates(frame, light);
+        this.gatherShadowCandidates(frame, light, index, node === null);
         gathered = true;
       }
-      const blocker = shadows ? this.firstBlocker(frame, l, distance, index, node !== null) : null;
+      let blocker: Intersectable | null = null;
+      if (shadows) {
+        this.stats.shadow++;
+        frame.shadowDistance = distance;
+        // Nothing to test when the list holds only the hit's own shape and the ray leaves it
+        // (leavingShape, on plain numbers): most shadow rays on an open floor cost no call.
+        const leavesSelf = selfConvex && ngx * lx + ngy * ly + ngz * lz > 0;
+        if (frame.candidateCount < 0 || frame.othersListed > 0 || (frame.selfListed && !leavesSelf)) blocker = this.firstBlocker(frame, l, index, node !== null);
+      }
       if (blocker) {
         // S = 0: a shadow ray carries black.
         sampleNodes?.push(newNode('shadow', hit.point, l, shadowHit.t, true, blocker.id, light.id, [0, 0, 0]));
@@ -295,7 +313,7 @@ export class WhittedIntegrator {
    * point to its rectangle, so only objects overlapping both can block any of them: found
    * once here (through the object BVHs, cheap shapes first), not once per sample.
    */
-  private gatherShadowCandidates(frame: Frame, light: TracerLight): void {
+  private gatherShadowCandidates(frame: Frame, light: TracerLight, lightIndex: number, lastBlockerFirst: boolean): void {
     const reach = frame.shadowReach.copy(light.extent).expandByPoint(frame.hit.point);
     // One shadow ray (a point or spot light): listing its candidates would cost a walk of
     // the BVHs on top of the ray's own, which prunes by the ray and not by a box.
@@ -311,38 +329,67 @@ export class WhittedIntegrator {
       if (count > MAX_LISTED_CANDIDATES) break;
     }
     frame.candidateCount = count > MAX_LISTED_CANDIDATES ? -1 : count;
+    // Shadow-ray coherence (the light buffer's idea, Haines & Greenberg 1986): the object
+    // that blocked this light last is the likeliest to block again, so it is tried first.
+    // Only when rendering: a recorded tree keeps the BVH's order, so that of two blockers at
+    // exactly the same distance it always shows the same one.
+    if (frame.candidateCount < 0) return;
+    if (lastBlockerFirst && count > 1) moveToFront(frame.candidates, count, this.lastBlocker[lightIndex]);
+    frame.selfListed = false;
+    for (let i = 0; i < count; i++) if (frame.candidates[i] === frame.hit.shape) frame.selfListed = true;
+    frame.othersListed = count - (frame.selfListed ? 1 : 0);
   }
 
   /**
-   * An object between the hit point and the light, or null (counts one shadow ray).
-   * Rendering only needs to know whether one exists (any-hit: the last blocker of this
-   * light is tried first, then cheap shapes before meshes); a recorded tree shows the
-   * nearest one. Both give the same visibility, so the same colour.
+   * An object between the hit point and the light at frame.shadowDistance, or null.
+   * Rendering only needs to know whether one exists (any-hit: cheap shapes before meshes,
+   * the light's last blocker first); a recorded tree shows the nearest one. Both give the
+   * same visibility, so the same colour.
+   *
+   * With a list of candidates (every object that can block any shadow ray from this hit
+   * toward this light), only those are tested, and the ray itself is set up only when one
+   * of them is not the shape the ray leaves: on an open floor no shadow ray needs one.
    */
-  private firstBlocker(frame: Frame, toLight: Vector3, distance: number, lightIndex: number, nearest: boolean): Intersectable | null {
-    this.stats.shadow++;
-    const origin = offsetOrigin(frame, toLight, this.scene.epsilon);
-    const ray = frame.shadowRay.set(origin, toLight);
-    ray.time = this.time;
-    const hit = shadowHit.reset(distance - this.scene.epsilon);
+  private firstBlocker(frame: Frame, toLight: Vector3, lightIndex: number, nearest: boolean): Intersectable | null {
+    const tMax = frame.shadowDistance - this.scene.epsilon;
     const leaving = leavingShape(frame, toLight);
     const { candidates, candidateCount, shadowReach } = frame;
     if (nearest) {
+      const ray = this.shadowRay(frame, toLight);
+      const hit = shadowHit.reset(tMax);
       if (candidateCount < 0) this.scene.objects.nearest(ray, hit, leaving, shadowReach);
       else for (let i = 0; i < candidateCount; i++) if (candidates[i] !== leaving) candidates[i].intersect(ray, hit);
       return hit.shape;
     }
-    const tMax = hit.t;
+    if (candidateCount >= 0) {
+      let ray: Ray | null = null;
+      for (let i = 0; i < candidateCount; i++) {
+        const candidate = candidates[i];
+        if (candidate === leaving) continue;
+        ray ??= this.shadowRay(frame, toLight);
+        if (!candidate.occludes(ray, tMax)) continue;
+        // Move to front: the next shadow rays of this hit try it first too.
+        candidates[i] = candidates[0];
+        candidates[0] = candidate;
+        this.lastBlocker[lightIndex] = candidate;
+        return candidate;
+      }
+      return null;
+    }
+    const ray = this.shadowRay(frame, toLight);
     const cached = this.lastBlocker[lightIndex];
     if (cached && cached !== leaving && cached.occludes(ray, tMax)) return cached;
     let blocker: Intersectable | null = null;
-    if (candidateCount < 0) {
-      for (const occluders of this.scene.occluders) if ((blocker = occluders.firstBlocker(ray, tMax, leaving, shadowReach))) break;
-    } else {
-      for (let i = 0; i < candidateCount && !blocker; i++) if (candidates[i] !== leaving && candidates[i].occludes(ray, tMax)) blocker = candidates[i];
-    }
+    for (const occluders of this.scene.occluders) if ((blocker = occluders.firstBlocker(ray, tMax, leaving, shadowReach))) break;
     if (blocker) this.lastBlocker[lightIndex] = blocker;
     return blocker;
+  }
+
+  /** The shadow ray from the hit point (moved ε off the surface) along the unit direction `toLight`. */
+  private shadowRay(frame: Frame, toLight: Vector3): Ray {
+    const ray = frame.shadowRay.set(offsetOrigin(frame, toLight, this.scene.epsilon), toLight);
+    ray.time = this.time;
+    return ray;
   }
 
   /** Transparent surface: kr·trace(reflect) + kt·trace(refract), Schlick's kr (spec §2). */
@@ -450,6 +497,14 @@ function lightAttenuation(light: TracerLight, distance: number, lx: number, ly: 
   let attenuation = light.distanceAttenuation ? distanceAttenuation(distance) : 1;
   if (light.type !== 'point') attenuation *= angleAttenuation(-(light.direction.x * lx + light.direction.y * ly + light.direction.z * lz), light.cosHalfAngle, light.angleExponent);
   return attenuation;
+}
+
+/** Moves `first` (when it is among list[0..count-1]) to the front, the others keeping their order. */
+function moveToFront(list: Intersectable[], count: number, first: Intersectable | null): void {
+  const at = first ? list.indexOf(first) : -1;
+  if (at <= 0 || at >= count) return;
+  list.copyWithin(1, 0, at);
+  list[0] = first!;
 }
 
 /** The hit shape, if it is convex and `direction` leaves it from its outside (so cannot meet it again). */

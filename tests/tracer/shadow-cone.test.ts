@@ -39,7 +39,7 @@ describe('the shadow cone from a hit point to an area light', () => {
       const point = new Vector3(between(-4, 4), between(-1, 6), between(-4, 4));
       cone.set(point, light, 4 * epsilon);
       for (let s = 0; s < light.sampleCount; s++) {
-        light.samplePoint(s, random, sample);
+        light.samplePoint(s % light.samplesPerSide, Math.floor(s / light.samplesPerSide), random, sample);
         const toLight = sample.clone().sub(point);
         const distance = toLight.length();
         toLight.normalize();
