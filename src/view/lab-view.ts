@@ -40,6 +40,7 @@ import { type ArrowTarget, keyCommand, type ViewCommand } from './view-commands.
 import { ViewControls } from './view-controls.ts';
 import { rayPathPoints, raySegments } from './ray-path-points.ts';
 import { cameraViewFov, framingPose, framingPoseAbove, type ViewPose } from './view-pose.ts';
+import { drawsInSoftware } from './software-renderer.ts';
 import { framedPoints, LookFollower } from './view-look.ts';
 
 /** The hovered ray and where the pointer is, for a tooltip next to it. */
@@ -153,7 +154,7 @@ export class LabView {
     this.cameraScreen = new CameraScreen();
     this.selectionBox = new BoxHelper(new Group(), SELECTION_COLOR);
     this.grid = new GridHelper(20, 20, 0x6b7686, 0x8a94a3);
-    this.renderer = new WebGLRenderer({ canvas, antialias: true, alpha: true });
+    this.renderer = new WebGLRenderer({ canvas, antialias: !drawsInSoftware(), alpha: true });
     this.renderer.outputColorSpace = LinearSRGBColorSpace;
     this.renderer.setClearColor(0x000000, 0);
     this.scheduler = new FrameScheduler(() => this.draw());
