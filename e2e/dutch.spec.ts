@@ -25,8 +25,11 @@ function dutchOfLevel(value: unknown): string[] {
 const levelFiles = JSON.parse(readFileSync(new URL('index.json', levelsFolder), 'utf8')) as { chapters: { levels: string[] }[] };
 const dutchLevelTexts = levelFiles.chapters.flatMap((chapter) => chapter.levels).flatMap((id) => dutchOfLevel(JSON.parse(readFileSync(new URL(`${id}.level.json`, levelsFolder), 'utf8'))));
 
+/** A text without what it quotes: a Dutch reason may quote a field path ("scene.settings.shadows"), which is no Dutch word. */
+const prose = (text: string) => text.replace(/"[^"]*"/g, ' ');
+
 /** Words Dutch uses too (in the Dutch catalogue or a Dutch level text): "lens", "pixel", "ray tracer". */
-const dutchWords = new Set([...catalogue.flatMap((message) => message.nl), ...dutchLevelTexts].flatMap(words));
+const dutchWords = new Set([...catalogue.flatMap((message) => message.nl.map(prose)), ...dutchLevelTexts].flatMap(words));
 /** The English-only words of the UI: what may not show in Dutch. */
 const englishOnly = new Set(catalogue.flatMap((message) => message.en).flatMap(words).filter((word) => !dutchWords.has(word)));
 
