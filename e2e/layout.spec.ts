@@ -60,33 +60,13 @@ async function emptySpot(page: Page): Promise<{ x: number; y: number }> {
 test.describe('a phone, by touch', () => {
   test.use({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true, deviceScaleFactor: 2 });
 
-  test('level 1 at 390×844 by touch: taps, a finger drag on the gizmo, the render window on the whole screen', async ({ page }) => {
+  test('level 1 at 390×844 by touch: taps, a finger drag on the gizmo, the render window on the whole screen; level 2\'s folded ray legend', async ({ page }) => {
     const errors = collectErrors(page);
     await page.goto('./');
     await page.getByRole('button', { name: 'Got it' }).tap();
     await expectLaidOut(page);
     await expectTouchTargets(page);
     await page.screenshot({ path: 'test-results/screens/layout-phone.png' });
-
-    // The ray legend folds away behind a small button that does not cover the ball; a tap (or Enter) opens it.
-    const legendButton = page.getByRole('button', { name: 'Ray colours' });
-    const legend = page.getByRole('list', { name: 'Ray colours' });
-    await expect(legendButton).toHaveAttribute('aria-expanded', 'false');
-    await expect(legend).toBeHidden();
-    const ballAtStart = await objectOnScreen(page, 'ball');
-    const folded = (await legendButton.boundingBox())!;
-    expect(overlap(folded, { x: ballAtStart.x - 20, y: ballAtStart.y - 20, width: 40, height: 40 }), JSON.stringify({ folded, ballAtStart })).toBe(false);
-    await legendButton.tap();
-    await expect(legend).toBeVisible();
-    await expect(legend).toContainText('Shadow ray');
-    await page.screenshot({ path: 'test-results/screens/layout-phone-legend-open.png' });
-    await legendButton.tap();
-    await expect(legend).toBeHidden();
-    await legendButton.focus();
-    await page.keyboard.press('Enter');
-    await expect(legendButton).toHaveAttribute('aria-expanded', 'true');
-    await page.keyboard.press('Enter');
-    await expect(legend).toBeHidden();
 
     // A task done in the view makes the next one current without scrolling the page: the view stays where the learner looks.
     const pageScroll = () => page.evaluate(() => new Promise<number>((resolve) => requestAnimationFrame(() => resolve(scrollY))));
@@ -140,6 +120,31 @@ test.describe('a phone, by touch', () => {
     await page.locator('rt-render-window').getByRole('button', { name: 'Close the render window' }).tap();
     await page.getByRole('complementary', { name: 'Tasks' }).scrollIntoViewIfNeeded();
     await page.screenshot({ path: 'test-results/screens/layout-phone-level-done.png' });
+
+    // Level 2 draws the camera's rays (level 1 starts without them): the ray legend folds away
+    // behind a small button that does not cover the ball; a tap (or Enter) opens it.
+    await panel(page).getByRole('button', { name: 'Next level' }).tap();
+    await expect(page.getByRole('heading', { name: 'Rays from the camera' })).toBeVisible();
+    await page.getByRole('main').scrollIntoViewIfNeeded();
+    const legendButton = page.getByRole('button', { name: 'Ray colours' });
+    const legend = page.getByRole('list', { name: 'Ray colours' });
+    await expect(legendButton).toHaveAttribute('aria-expanded', 'false');
+    await expect(legend).toBeHidden();
+    const ballAtStart = await objectOnScreen(page, 'ball');
+    const folded = (await legendButton.boundingBox())!;
+    expect(overlap(folded, { x: ballAtStart.x - 20, y: ballAtStart.y - 20, width: 40, height: 40 }), JSON.stringify({ folded, ballAtStart })).toBe(false);
+    await legendButton.tap();
+    await expect(legend).toBeVisible();
+    await expect(legend).toContainText('Shadow ray');
+    await page.screenshot({ path: 'test-results/screens/layout-phone-legend-open.png' });
+    await legendButton.tap();
+    await expect(legend).toBeHidden();
+    await legendButton.focus();
+    await page.keyboard.press('Enter');
+    await expect(legendButton).toHaveAttribute('aria-expanded', 'true');
+    await page.keyboard.press('Enter');
+    await expect(legend).toBeHidden();
+
     expect(errors).toEqual([]);
   });
 });
