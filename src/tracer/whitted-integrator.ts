@@ -12,6 +12,7 @@ import { discPointBuffer, jitteredDiscPoints } from './disc-samples.ts';
 import { glossyDirection, perpendicularBasis } from './glossy.ts';
 import { LightTermsRecorder, type LightTerms, type ShadingTerms } from './shading-terms.ts';
 import { ShadowCone } from './shadow-cone.ts';
+import { phongPower } from './phong-power.ts';
 import type { Intersectable } from './intersectable.ts';
 import type { TracerScene } from './tracer-scene.ts';
 
@@ -279,7 +280,7 @@ export class WhittedIntegrator {
       }
       // The highlight is not tinted by the object's colour.
       let highlight = 0;
-      if (highlights && (!(rDotV <= 0) || shininess === 0)) highlight = Math.pow(Math.max(rDotV, 0), shininess) * material.specular * light.specular;
+      if (highlights && (!(rDotV <= 0) || shininess === 0)) highlight = phongPower(Math.max(rDotV, 0), shininess) * material.specular * light.specular;
       const diffuse = nDotL * material.diffuse * light.diffuse;
       const k = scale * attenuation;
       const kr = k * lr;
