@@ -155,8 +155,10 @@ export class WhittedIntegrator {
     }
     v.copy(ray.direction).negate();
 
-    // Ambient: ka·C
-    const [cr, cg, cb] = material.color;
+    // Ambient: ka·C. The colour is read by index: destructuring an array runs its iterator,
+    // which showed as 1 % of a render.
+    const color = material.color;
+    const cr = color[0], cg = color[1], cb = color[2];
     out.set(cr, cg, cb).multiplyScalar(material.ambient);
     const terms: ShadingTerms | null =
       node && this.recordTerms ? { ambient: out.toArray(), lights: [], reflect: null, refract: null, sum: [0, 0, 0], depthLimited: false } : null;
@@ -205,7 +207,8 @@ export class WhittedIntegrator {
     const sampleNodes: RayNode[] | null = node ? [] : null;
     // The light's colour is divided by n² for an area light's n×n samples (spec §2).
     const scale = light.intensity / samples;
-    const [cr, cg, cb] = material.color;
+    const color = material.color;
+    const cr = color[0], cg = color[1], cb = color[2];
     const { shadows } = this.scene.settings;
     // Gathered at the first shadow ray: a light wholly behind the surface casts none.
     let gathered = false;
