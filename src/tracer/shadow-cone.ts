@@ -74,8 +74,9 @@ export class ShadowCone {
    * out a little further and the test stays conservative.
    */
   private addPlane(nx: number, ny: number, nz: number, px: number, py: number, pz: number, mx: number, my: number, mz: number, margin: number): void {
-    const scaledMargin = margin * (Math.abs(nx) + Math.abs(ny) + Math.abs(nz));
-    if (!(scaledMargin > 0)) return;
+    const l1Length = Math.abs(nx) + Math.abs(ny) + Math.abs(nz);
+    if (!(l1Length > 0)) return;
+    const scaledMargin = margin * l1Length;
     let d = nx * px + ny * py + nz * pz;
     const inner = nx * mx + ny * my + nz * mz - d;
     // The inner point on the plane: the pyramid is flat there, this plane cannot orient.
