@@ -11,7 +11,8 @@ import { sliderLatencyOf, type SliderFrame, type SliderInput } from './support/s
  * value or a later one (rt-scene-view's `labView.drawnRaysScene`), on SwiftShader. The
  * figures go to test-results/slider-latency.json for `npm run bench`; the ≤ 100 ms target is
  * the benchmark's, so this test asserts only what must always hold: every step's rays came,
- * and the last value's rays are the ones on screen.
+ * and the last value's rays are the ones on screen, and that the view, drawn coarse during
+ * the drags (BurstResolution), is drawn sharp again once they stop.
  */
 
 const LABEL = 'Shininess (n)';
@@ -21,9 +22,9 @@ const BALL = 'red-ball';
 async function startRecording(page: Page): Promise<void> {
   await page.locator('rt-scene-view').evaluate(
     (element, [label, ball]) => {
-      type View = { drawnRaysScene: { objects: { id: string; material: { shininess: number } }[] } | null };
+      type View = { drawnRaysScene: { objects: { id: string; material: { shininess: number } }[] } | null; canvas: HTMLCanvasElement };
       const view = (element as unknown as { labView: View }).labView;
-      const record = { inputs: [] as { at: number; value: number }[], frames: [] as { at: number; value: number }[] };
+      const record = { inputs: [] as { at: number; value: number }[], frames: [] as { at: number; value: number }[], narrowest: view.canvas.width };
       (window as unknown as { sliderRecord: typeof record }).sliderRecord = record;
       window.addEventListener(
         'input',
@@ -39,6 +40,7 @@ async function startRecording(page: Page): Promise<void> {
         const value = view.drawnRaysScene?.objects.find((object) => object.id === ball)?.material.shininess;
         if (value !== undefined && value !== last) record.frames.push({ at: performance.now(), value });
         last = value;
+        record.narrowest = Math.min(record.narrowest, view.canvas.width);
         requestAnimationFrame(frame);
       };
       requestAnimationFrame(frame);
@@ -112,6 +114,14 @@ test('a slider step reaches the rays on screen, and the last value always does (
     expect(latency.lastDrawn, `${name}: the last value's rays were drawn`).toBe(true);
     expect(latency.undrawn, `${name}: every step's rays (or a later step's) came`).toBe(0);
   }
+  // On a CPU rasterizer the drags are drawn at reduced resolution, and sharp again after.
+  const widths = () => page.locator('rt-scene-view').evaluate((element) => {
+    const { canvas } = (element as unknown as { labView: { canvas: HTMLCanvasElement } }).labView;
+    return { narrowest: (window as unknown as { sliderRecord: { narrowest: number } }).sliderRecord.narrowest, now: canvas.width, full: Math.round(canvas.clientWidth * Math.min(2, devicePixelRatio)) };
+  });
+  const { narrowest, full } = await widths();
+  expect(narrowest, 'a drag is drawn at reduced resolution').toBeLessThan(full);
+  await expect.poll(async () => (await widths()).now, { message: 'the view is sharp again once the slider stops' }).toBe(full);
   mkdirSync('test-results', { recursive: true });
   writeFileSync('test-results/slider-latency.json', `${JSON.stringify({ measured: new Date().toISOString(), screen: [16, 16], ...figures }, null, 2)}\n`);
   expect(errors).toEqual([]);

@@ -41,6 +41,7 @@ import { ViewControls } from './view-controls.ts';
 import { rayPathPoints, raySegments } from './ray-path-points.ts';
 import { cameraViewFov, framingPose, framingPoseAbove, type ViewPose } from './view-pose.ts';
 import { drawsInSoftware } from './software-renderer.ts';
+import { BurstResolution } from './burst-resolution.ts';
 import { framedPoints, LookFollower } from './view-look.ts';
 
 /** The hovered ray and where the pointer is, for a tooltip next to it. */
@@ -137,6 +138,12 @@ export class LabView {
    */
   drawnRaysScene: Scene | null = null;
   private sized = false;
+  /** The canvas's size in CSS pixels, as last set. */
+  private cssSize = { width: 0, height: 0 };
+  /** On a CPU rasterizer: a burst of edits is drawn at reduced resolution (null on a GPU). */
+  private readonly burst: BurstResolution | null;
+  /** The share of the device pixel ratio drawn now (below 1 during a burst). */
+  private resolutionScale = 1;
   private coveredBottom = 0;
   /** A scene was loaded and nothing drawn since: a declared look then jumps instead of gliding. */
   private sceneJustLoaded = false;
@@ -154,7 +161,9 @@ export class LabView {
     this.cameraScreen = new CameraScreen();
     this.selectionBox = new BoxHelper(new Group(), SELECTION_COLOR);
     this.grid = new GridHelper(20, 20, 0x6b7686, 0x8a94a3);
-    this.renderer = new WebGLRenderer({ canvas, antialias: !drawsInSoftware(), alpha: true });
+    const software = drawsInSoftware();
+    this.renderer = new WebGLRenderer({ canvas, antialias: !software, alpha: true });
+    this.burst = software ? new BurstResolution((scale) => this.setResolutionScale(scale)) : null;
     this.renderer.outputColorSpace = LinearSRGBColorSpace;
     this.renderer.setClearColor(0x000000, 0);
     this.scheduler = new FrameScheduler(() => this.draw());
@@ -255,7 +264,8 @@ export class LabView {
   /** The canvas's size in CSS pixels; drawn at up to 2 device pixels per CSS pixel (school laptops). */
   setSize(width: number, height: number): void {
     if (width <= 0 || height <= 0) return;
-    this.renderer.setPixelRatio(Math.min(2, window.devicePixelRatio || 1));
+    this.cssSize = { width, height };
+    this.renderer.setPixelRatio(Math.min(2, window.devicePixelRatio || 1) * this.resolutionScale);
     this.renderer.setSize(width, height, false);
     const first = !this.sized;
     this.sized = true;
@@ -268,6 +278,12 @@ export class LabView {
     }
     // A resized canvas is blank until drawn: draw now, not next frame, so it never flickers.
     this.scheduler.renderNow();
+  }
+
+  /** Draws at `scale` × the device pixel ratio from now on (redrawn at once). */
+  private setResolutionScale(scale: number): void {
+    this.resolutionScale = scale;
+    if (this.sized) this.setSize(this.cssSize.width, this.cssSize.height);
   }
 
   /** Colours the camera's screen with the traced pixels. */
@@ -534,6 +550,7 @@ export class LabView {
     for (const cleanup of this.cleanups) cleanup();
     this.removeRayAnimator?.();
     if (this.rayLayer) this.scene.remove(this.rayLayer.object);
+    this.burst?.dispose();
     this.flight.dispose();
     this.gizmo.dispose();
     this.controls.dispose();
@@ -575,6 +592,7 @@ export class LabView {
       });
     }
     if (!this.gizmo.dragging) this.updateGizmo(state);
+    if (previous && state.scene !== previous.scene) this.burst?.edited();
     this.requestRender();
   }
 
