@@ -24,6 +24,8 @@ export interface TracerScene {
   readonly lights: readonly TracerLight[];
   /** How far secondary rays start off a surface: 1e-4, scaled up for large scenes. */
   readonly epsilon: number;
+  /** The diagonal of the objects' bounds (1 for a scene without objects). */
+  readonly size: number;
   /** Time spent building mesh BVHs for this scene (0 when all were cached). */
   readonly bvhBuildMs: number;
 }
@@ -45,6 +47,7 @@ export function buildTracerScene(scene: Scene, meshes: MeshLibrary): TracerScene
     ...objectBvhs(shapes),
     lights: scene.lights.filter((light) => enabled[light.type]).map((light) => new TracerLight(light)),
     epsilon: 1e-4 * Math.max(1, size / 10),
+    size,
     bvhBuildMs,
   };
 }

@@ -1,0 +1,58 @@
+import { Box3, type Vector3 } from 'three';
+import type { Intersectable } from './intersectable.ts';
+import type { TracerLight } from './lights.ts';
+import type { ObjectBvh } from './object-bvh.ts';
+import { ShadowCone } from './shadow-cone.ts';
+
+/** √3: a cube of half-side h lies within h·√3 of its centre. */
+const CUBE_RADIUS = Math.sqrt(3);
+
+/**
+ * The shadow candidates of one light for a patch of hit points: a cube of half-side `half`
+ * around the hit that started it. Neighbouring pixels hit neighbouring points, and every
+ * shadow ray from any point of the cube toward the light stays inside the box spanned by the
+ * cube and the light, and inside the light's pyramid from the cube's centre widened by the
+ * cube's radius (a segment from p to a light point q lies within |p − p₀| of the segment from
+ * p₀ to q, and a convex solid's ε-neighbourhood lies inside its planes each moved out by ε).
+ * So the objects found for the patch include every object that can block a shadow ray from
+ * any of its points: the list is gathered once per patch instead of once per hit, and each
+ * hit tests the same shadow rays against a few more objects at most, with the same result.
+ */
+export class ShadowPatch {
+  /** The objects found (the first `count`; -1: too many to list). */
+  readonly list: Intersectable[] = [];
+  count = 0;
+  private x = 0;
+  private y = 0;
+  private z = 0;
+  private filled = false;
+  private readonly reach = new Box3();
+  private readonly cone = new ShadowCone();
+
+  /** Whether `point` lies in this patch's cube. */
+  covers(point: Vector3, half: number): boolean {
+    return this.filled && Math.abs(point.x - this.x) <= half && Math.abs(point.y - this.y) <= half && Math.abs(point.z - this.z) <= half;
+  }
+
+  /**
+   * Starts the patch around `point`: lists the objects of `occluders` that overlap the box of
+   * the cube and `light`, and (an area light) its widened pyramid; `margin` covers the shadow
+   * rays' ε offsets, `limit` is how many are worth listing.
+   */
+  fill(point: Vector3, half: number, light: TracerLight, occluders: readonly ObjectBvh[], margin: number, limit: number): void {
+    this.x = point.x;
+    this.y = point.y;
+    this.z = point.z;
+    this.filled = true;
+    const reach = this.reach.copy(light.extent);
+    reach.min.set(Math.min(reach.min.x, point.x - half), Math.min(reach.min.y, point.y - half), Math.min(reach.min.z, point.z - half));
+    reach.max.set(Math.max(reach.max.x, point.x + half), Math.max(reach.max.y, point.y + half), Math.max(reach.max.z, point.z + half));
+    const cone = light.type === 'area' ? this.cone.set(point, light, margin + half * CUBE_RADIUS) : null;
+    let count = 0;
+    for (const bvh of occluders) {
+      count = bvh.overlapping(reach, this.list, count, limit, cone);
+      if (count > limit) break;
+    }
+    this.count = count > limit ? -1 : count;
+  }
+}
