@@ -20,6 +20,20 @@ const ONE_LEAF_UP_TO = 12;
  * splits along the widest axis of the objects' centres, nodes stored depth first (a node's
  * left child follows it), boxes in one Float64Array.
  */
+/**
+ * The objects of `bvhs` (in their order) whose box overlaps `box` and is not wholly outside
+ * `cone` (when given), written into `out`: how many, or -1 when there are more than `limit`
+ * (the shadow candidates of a hit or a patch of hits; more are not worth listing).
+ */
+export function listOverlapping(bvhs: readonly ObjectBvh[], box: Box3, out: Intersectable[], limit: number, cone: ShadowCone | null): number {
+  let count = 0;
+  for (const bvh of bvhs) {
+    count = bvh.overlapping(box, out, count, limit, cone);
+    if (count > limit) return -1;
+  }
+  return count;
+}
+
 export class ObjectBvh {
   /** min x, y, z, max x, y, z per node. */
   private readonly boxes: Float64Array;

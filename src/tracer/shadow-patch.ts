@@ -1,7 +1,7 @@
 import { Box3, type Vector3 } from 'three';
 import type { Intersectable } from './intersectable.ts';
 import type { TracerLight } from './lights.ts';
-import type { ObjectBvh } from './object-bvh.ts';
+import { listOverlapping, type ObjectBvh } from './object-bvh.ts';
 import { ShadowCone } from './shadow-cone.ts';
 
 /** √3: a cube of half-side h lies within h·√3 of its centre. */
@@ -44,15 +44,11 @@ export class ShadowPatch {
     this.y = point.y;
     this.z = point.z;
     this.filled = true;
-    const reach = this.reach.copy(light.extent);
-    reach.min.set(Math.min(reach.min.x, point.x - half), Math.min(reach.min.y, point.y - half), Math.min(reach.min.z, point.z - half));
-    reach.max.set(Math.max(reach.max.x, point.x + half), Math.max(reach.max.y, point.y + half), Math.max(reach.max.z, point.z + half));
+    const reach = this.reach;
+    reach.min.set(point.x - half, point.y - half, point.z - half);
+    reach.max.set(point.x + half, point.y + half, point.z + half);
+    reach.union(light.extent);
     const cone = light.type === 'area' ? this.cone.set(point, light, margin + half * CUBE_RADIUS) : null;
-    let count = 0;
-    for (const bvh of occluders) {
-      count = bvh.overlapping(reach, this.list, count, limit, cone);
-      if (count > limit) break;
-    }
-    this.count = count > limit ? -1 : count;
+    this.count = listOverlapping(occluders, reach, this.list, limit, cone);
   }
 }

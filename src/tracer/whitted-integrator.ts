@@ -15,6 +15,7 @@ import { ShadowCone } from './shadow-cone.ts';
 import { ShadowPatch } from './shadow-patch.ts';
 import { phongPower } from './phong-power.ts';
 import type { Intersectable } from './intersectable.ts';
+import { listOverlapping } from './object-bvh.ts';
 import type { TracerScene } from './tracer-scene.ts';
 
 /** Missed rays are drawn this long in the ray tree (spec §3). */
@@ -346,28 +347,24 @@ export class WhittedIntegrator {
     }
     // The margin covers the shadow rays' ε offsets at both ends (see ShadowCone).
     const margin = 4 * this.scene.epsilon;
-    let count = 0;
     if (rendering) {
       // Rendering: the patch's list, gathered again only when the hit leaves its cube.
       const patch = frame.patches[lightIndex];
       const point = frame.hit.point;
       if (!patch.covers(point, this.patchHalf)) patch.fill(point, this.patchHalf, light, this.scene.occluders, margin, MAX_LISTED_CANDIDATES);
-      count = patch.count < 0 ? MAX_LISTED_CANDIDATES + 1 : patch.count;
+      frame.candidateCount = patch.count;
       for (let i = 0; i < patch.count; i++) frame.candidates[i] = patch.list[i];
     } else {
       // A recorded tree lists exactly this hit's candidates, in the BVH's order (below).
       const cone = light.type === 'area' ? frame.shadowCone.set(frame.hit.point, light, margin) : null;
-      for (const occluders of this.scene.occluders) {
-        count = occluders.overlapping(reach, frame.candidates, count, MAX_LISTED_CANDIDATES, cone);
-        if (count > MAX_LISTED_CANDIDATES) break;
-      }
+      frame.candidateCount = listOverlapping(this.scene.occluders, reach, frame.candidates, MAX_LISTED_CANDIDATES, cone);
     }
-    frame.candidateCount = count > MAX_LISTED_CANDIDATES ? -1 : count;
     // Shadow-ray coherence (the light buffer's idea, Haines & Greenberg 1986): the object
     // that blocked this light last is the likeliest to block again, so it is tried first.
     // Only when rendering: a recorded tree keeps the BVH's order, so that of two blockers at
     // exactly the same distance it always shows the same one.
-    if (frame.candidateCount < 0) return;
+    const count = frame.candidateCount;
+    if (count < 0) return;
     if (rendering && count > 1) moveToFront(frame.candidates, count, this.lastBlocker[lightIndex]);
     frame.selfListed = false;
     for (let i = 0; i < count; i++) if (frame.candidates[i] === frame.hit.shape) frame.selfListed = true;
