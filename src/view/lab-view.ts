@@ -11,6 +11,7 @@ import {
   PerspectiveCamera,
   Raycaster,
   Scene as ThreeScene,
+  Vector2,
   Vector3,
   WebGLRenderer,
 } from 'three';
@@ -138,8 +139,6 @@ export class LabView {
    */
   drawnRaysScene: Scene | null = null;
   private sized = false;
-  /** The canvas's size in CSS pixels, as last set. */
-  private cssSize = { width: 0, height: 0 };
   /** On a CPU rasterizer: a burst of edits is drawn at reduced resolution (null on a GPU). */
   private readonly burst: BurstResolution | null;
   /** The share of the device pixel ratio drawn now (below 1 during a burst). */
@@ -264,7 +263,6 @@ export class LabView {
   /** The canvas's size in CSS pixels; drawn at up to 2 device pixels per CSS pixel (school laptops). */
   setSize(width: number, height: number): void {
     if (width <= 0 || height <= 0) return;
-    this.cssSize = { width, height };
     this.renderer.setPixelRatio(Math.min(2, window.devicePixelRatio || 1) * this.resolutionScale);
     this.renderer.setSize(width, height, false);
     const first = !this.sized;
@@ -283,7 +281,9 @@ export class LabView {
   /** Draws at `scale` × the device pixel ratio from now on (redrawn at once). */
   private setResolutionScale(scale: number): void {
     this.resolutionScale = scale;
-    if (this.sized) this.setSize(this.cssSize.width, this.cssSize.height);
+    // The renderer keeps the size last set in CSS pixels.
+    const { x: width, y: height } = this.renderer.getSize(cssSize);
+    if (this.sized) this.setSize(width, height);
   }
 
   /** Colours the camera's screen with the traced pixels. */
@@ -766,6 +766,8 @@ export class LabView {
 }
 
 const projected = new Vector3();
+/** Scratch for the canvas size read back from the renderer. */
+const cssSize = new Vector2();
 
 function sameCamera(a: LabState, b: LabState): boolean {
   const x = a.scene.camera;
