@@ -5,6 +5,15 @@ const executablePath = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
 // Overridable so that several people (or helpers) can run browser tests at once on one machine.
 const port = Number(process.env.E2E_PORT ?? 4174);
 const outDir = process.env.E2E_DIST ?? 'dist';
+const browserArgs = [
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--no-first-run',
+  '--disable-sync',
+  '--no-sandbox',
+  '--use-angle=swiftshader',
+  '--enable-unsafe-swiftshader',
+];
 
 export default defineConfig({
   testDir: 'e2e',
@@ -19,19 +28,19 @@ export default defineConfig({
     serviceWorkers: 'block',
     // A failing test leaves the page it saw, to look at.
     screenshot: 'only-on-failure',
-    launchOptions: {
-      executablePath,
-      args: [
-        '--disable-background-networking',
-        '--disable-component-update',
-        '--no-first-run',
-        '--disable-sync',
-        '--no-sandbox',
-        '--use-angle=swiftshader',
-        '--enable-unsafe-swiftshader',
-      ],
-    },
+    launchOptions: { executablePath, args: browserArgs },
   },
+  projects: [
+    // Everything, with SwiftShader as the GPU: WebGL, and the page's compositing too.
+    { name: 'chromium' },
+    // The slider's time again as Chrome runs on a machine without a usable GPU: the page is
+    // composited on the CPU and only WebGL runs on SwiftShader (docs/benchmarks.md, sixth round).
+    {
+      name: 'software-compositing',
+      testMatch: 'slider-latency.spec.ts',
+      use: { launchOptions: { executablePath, args: [...browserArgs, '--disable-gpu-compositing'] } },
+    },
+  ],
   webServer: {
     command: `npx vite preview --port ${port} --strictPort --outDir ${outDir}`,
     url: `http://127.0.0.1:${port}/`,
