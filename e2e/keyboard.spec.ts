@@ -1,5 +1,5 @@
 import { expect, test, type Locator, type Page } from '@playwright/test';
-import { collectErrors, current, expectStatus, importProgress, panel, progressFile, state } from './support/game-steps.ts';
+import { collectErrors, current, expectStatus, importProgress, panel, progressFile, state, viewLoaded } from './support/game-steps.ts';
 
 // Level 1, and the shadows level (its pixel, its quiz, its switches, two renders and a lamp to
 // move), played with the keyboard alone: every mandatory task earned ("done", not "shown"),
@@ -31,6 +31,7 @@ test('level 1 by keyboard only: every mandatory task done, Tab leaves the view, 
   await page.goto('./');
   await press(page.getByRole('button', { name: 'Got it' }), 'Enter');
 
+  await viewLoaded(page);
   await press(canvas(page), 'ArrowLeft');
   await expectStatus(page, 'Look around', 'done');
   await page.keyboard.press('+');
@@ -109,6 +110,7 @@ test('the shadows level by keyboard only: a pixel of the camera’s screen with 
   await expect(panel(page).getByRole('heading', { name: 'Shadows' })).toBeVisible();
 
   // No flat preview in this level: the pixel is chosen in the 3D view, 0,0 first, then 2 right and 2 down.
+  await viewLoaded(page);
   await press(canvas(page), 'p');
   await expect(keyNote(page)).toContainText('Pixel 0, 0');
   for (const key of ['ArrowRight', 'ArrowRight', 'ArrowDown', 'ArrowDown']) await page.keyboard.press(key);

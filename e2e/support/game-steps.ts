@@ -28,6 +28,14 @@ export const task = (page: Page, title: string) => page.locator('rt-task-card').
 export const current = (page: Page) => page.locator('rt-task-card[status="current"]');
 export const panel = (page: Page) => page.locator('rt-quest-panel');
 
+/**
+ * Waits until the 3D view's code has loaded: until then the page says "Loading the 3D view…"
+ * and keys pressed on the canvas reach nothing (a slow machine can take seconds).
+ */
+export async function viewLoaded(page: Page): Promise<void> {
+  await expect(page.getByText('Loading the 3D view…')).toHaveCount(0);
+}
+
 export async function expectStatus(page: Page, title: string, status: string): Promise<void> {
   await expect(task(page, title)).toHaveAttribute('status', status);
 }
