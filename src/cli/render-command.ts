@@ -97,7 +97,7 @@ function imageSize(line: CommandLine, scene: Scene): [number, number] {
 
 /** The full-quality pass's tiles: more workers than this would have nothing to do. */
 function tileCount(scene: Scene, width: number, height: number): number {
-  const tileSide = finalTileSide(scene);
+  const tileSide = finalTileSide(scene, false);
   return Math.ceil(width / tileSide) * Math.ceil(height / tileSide);
 }
 

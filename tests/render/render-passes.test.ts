@@ -67,6 +67,17 @@ describe('the pass plan', () => {
     ]);
   });
 
+  it('gives a render without previews (rt render) final tiles of four times the rays: twice the side, up to 32', () => {
+    const finalSide = (supersampling: number, preview: boolean) =>
+      planPasses(withSupersampling(supersampling), { width: 512, height: 384, workers: 2, preview }).at(-1)!.tileWidth;
+    for (const supersampling of [3, 4, 6, 8]) {
+      const watched = finalSide(supersampling, true);
+      expect(finalSide(supersampling, false), `supersampling ${supersampling}`).toBeGreaterThanOrEqual(2 * watched);
+      expect(finalSide(supersampling, false), `supersampling ${supersampling}`).toBeLessThanOrEqual(2 * watched + 1);
+    }
+    expect(finalSide(2, false)).toBe(32);
+  });
+
   it('starts the heaviest scene with a pass the estimate puts under the first second, halving the block down to 4', () => {
     const [width, height] = heaviestScene.settings.imageSize;
     const passes = planPasses(heaviestScene, { width, height, workers: 2, preview: true });
