@@ -14,13 +14,6 @@ const LEAF_SIZE = 2;
 const ONE_LEAF_UP_TO = 12;
 
 /**
- * A top-level BVH over a scene's objects (their world bounding boxes), so that a ray tests
- * the objects near its path, not every object: the cost of a ray grows with the log of the
- * object count instead of the count (up to the scene limit of 256 objects). Built by median
- * splits along the widest axis of the objects' centres, nodes stored depth first (a node's
- * left child follows it), boxes in one Float64Array.
- */
-/**
  * The objects of `bvhs` (in their order) whose box overlaps `box` and is not wholly outside
  * `cone` (when given), written into `out`: how many, or -1 when there are more than `limit`
  * (the shadow candidates of a hit or a patch of hits; more are not worth listing).
@@ -34,6 +27,13 @@ export function listOverlapping(bvhs: readonly ObjectBvh[], box: Box3, out: Inte
   return count;
 }
 
+/**
+ * A top-level BVH over a scene's objects (their world bounding boxes), so that a ray tests
+ * the objects near its path, not every object: the cost of a ray grows with the log of the
+ * object count instead of the count (up to the scene limit of 256 objects). Built by median
+ * splits along the widest axis of the objects' centres, nodes stored depth first (a node's
+ * left child follows it), boxes in one Float64Array.
+ */
 export class ObjectBvh {
   /** min x, y, z, max x, y, z per node. */
   private readonly boxes: Float64Array;
