@@ -281,9 +281,10 @@ export class LabView {
   /** Draws at `scale` × the device pixel ratio from now on (redrawn at once). */
   private setResolutionScale(scale: number): void {
     this.resolutionScale = scale;
+    if (!this.sized) return;
     // The renderer keeps the size last set in CSS pixels.
     const { x: width, y: height } = this.renderer.getSize(cssSize);
-    if (this.sized) this.setSize(width, height);
+    this.setSize(width, height);
   }
 
   /** Colours the camera's screen with the traced pixels. */
