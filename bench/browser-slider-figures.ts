@@ -15,8 +15,9 @@ import { existsSync, readFileSync } from 'node:fs';
  */
 
 /** The Playwright projects whose figures are reported, and how the table names them. */
-export const COMPOSITING = { chromium: 'page composited on SwiftShader', 'software-compositing': 'page composited on the CPU' } as const;
-export type Compositing = keyof typeof COMPOSITING;
+const COMPOSITING = { chromium: 'page composited on SwiftShader', 'software-compositing': 'page composited on the CPU' } as const;
+type Compositing = keyof typeof COMPOSITING;
+const COMPOSITINGS = Object.keys(COMPOSITING) as Compositing[];
 
 interface Latency {
   steps: number;
@@ -37,8 +38,12 @@ function figuresFile(compositing: Compositing): URL {
   return new URL(`../test-results/slider-latency-${compositing}.json`, import.meta.url);
 }
 
-/** The last browser run's figures for one way of compositing, or null when there is none (or it cannot be read). */
-export function browserSliderFigures(compositing: Compositing): BrowserSliderFigures | null {
+/** Per way of compositing, the last browser run's figures, or null when there is none (or it cannot be read). */
+export function browserSliderFigures(): Record<Compositing, BrowserSliderFigures | null> {
+  return Object.fromEntries(COMPOSITINGS.map((compositing) => [compositing, figuresOf(compositing)])) as Record<Compositing, BrowserSliderFigures | null>;
+}
+
+function figuresOf(compositing: Compositing): BrowserSliderFigures | null {
   const file = figuresFile(compositing);
   if (!existsSync(file)) return null;
   try {
@@ -49,7 +54,11 @@ export function browserSliderFigures(compositing: Compositing): BrowserSliderFig
   }
 }
 
-export function browserSliderRows(compositing: Compositing, figures: BrowserSliderFigures | null): [string, string, string][] {
+export function browserSliderRows(all: Record<Compositing, BrowserSliderFigures | null>): [string, string, string][] {
+  return COMPOSITINGS.flatMap((compositing) => rowsOf(compositing, all[compositing]));
+}
+
+function rowsOf(compositing: Compositing, figures: BrowserSliderFigures | null): [string, string, string][] {
   const how = COMPOSITING[compositing];
   if (!figures) return [[`slider to rays in the browser (e2e, ${how})`, 'not measured: run npx playwright test e2e/slider-latency.spec.ts', '≤ 100 ms p95']];
   const row = (name: string, latency: Latency): [string, string, string] => [

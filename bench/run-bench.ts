@@ -30,7 +30,7 @@ import { naiveTracerScene } from './naive/naive-tracer-scene.ts';
 import { printTable } from './print-table.ts';
 import { measureView, roundedView, viewRows } from './view-bench.ts';
 import { measureSliderLatency, sliderRows } from './slider-latency-bench.ts';
-import { browserSliderFigures, browserSliderRows, COMPOSITING, type Compositing } from './browser-slider-figures.ts';
+import { browserSliderFigures, browserSliderRows } from './browser-slider-figures.ts';
 
 const SCENE_FILE = new URL('scenes/reference.json', import.meta.url);
 const RESULTS_FILE = new URL('results.json', import.meta.url);
@@ -185,7 +185,6 @@ async function main(): Promise<void> {
   const firstLoadFigures = measureFirstLoad();
 
   const rays = { ...two.stats, total: two.stats.primary + two.stats.shadow + two.stats.reflect + two.stats.refract };
-  const compositings = Object.keys(COMPOSITING) as Compositing[];
   const results = {
     date: new Date().toISOString(),
     machine: { cores: (await import('node:os')).availableParallelism(), node: process.version },
@@ -207,7 +206,7 @@ async function main(): Promise<void> {
     view: roundedView(view),
     firstLoad: firstLoadFigures,
     sliderToRays,
-    sliderToRaysInBrowser: Object.fromEntries(compositings.map((c) => [c, browserSliderFigures(c)])),
+    sliderToRaysInBrowser: browserSliderFigures(),
   };
   writeFileSync(RESULTS_FILE, `${JSON.stringify(results, null, 2)}\n`);
 
@@ -234,7 +233,7 @@ async function main(): Promise<void> {
     ...viewRows(view),
     ...firstLoadRows(firstLoadFigures),
     ...sliderRows(sliderToRays),
-    ...compositings.flatMap((c) => browserSliderRows(c, results.sliderToRaysInBrowser[c])),
+    ...browserSliderRows(results.sliderToRaysInBrowser),
   ]);
   console.log(`\nwrote ${RESULTS_FILE.pathname}`);
 }
