@@ -54,6 +54,11 @@ export class CameraRays {
     return out.copy(this.eye).addScaledVector(this.right, this.aperture * u).addScaledVector(this.up, this.aperture * v);
   }
 
+  /** The side of one pixel of an image `height` pixels high, at distance 1 in front of the eye. */
+  pixelSpread(height: number): number {
+    return (2 * this.tanHalfFov) / height;
+  }
+
   /**
    * The unit direction through image point (px, py) of a width×height image;
    * (0, 0) is the top-left corner of the top-left pixel.

@@ -20,6 +20,8 @@ export function renderTile(scene: TracerScene, tile: Tile, options: RenderTileOp
   const block = Math.max(1, Math.floor(options.block ?? 1));
   const rgb = new Float32Array(tile.width * tile.height * 3);
   const integrator = integratorFor(scene);
+  // A preview traces an image `block` times smaller: its pixels are that much wider.
+  integrator.pixelSpread = scene.camera.pixelSpread(imageHeight / block);
   integrator.stats.primary = integrator.stats.shadow = integrator.stats.reflect = integrator.stats.refract = 0;
 
   const rowLength = tile.width * 3;

@@ -25,12 +25,14 @@ export class ShadowPatch {
   private x = 0;
   private y = 0;
   private z = 0;
+  private half = 0;
   private filled = false;
   private readonly reach = new Box3();
   private readonly cone = new ShadowCone();
 
   /** Whether `point` lies in this patch's cube. */
-  covers(point: Vector3, half: number): boolean {
+  covers(point: Vector3): boolean {
+    const half = this.half;
     return this.filled && Math.abs(point.x - this.x) <= half && Math.abs(point.y - this.y) <= half && Math.abs(point.z - this.z) <= half;
   }
 
@@ -43,6 +45,7 @@ export class ShadowPatch {
     this.x = point.x;
     this.y = point.y;
     this.z = point.z;
+    this.half = half;
     this.filled = true;
     const reach = this.reach;
     reach.min.set(point.x - half, point.y - half, point.z - half);

@@ -24,8 +24,6 @@ export interface TracerScene {
   readonly lights: readonly TracerLight[];
   /** How far secondary rays start off a surface: 1e-4, scaled up for large scenes. */
   readonly epsilon: number;
-  /** The diagonal of the objects' bounds (1 for a scene without objects). */
-  readonly size: number;
   /** Time spent building mesh BVHs for this scene (0 when all were cached). */
   readonly bvhBuildMs: number;
 }
@@ -37,6 +35,7 @@ export function buildTracerScene(scene: Scene, meshes: MeshLibrary): TracerScene
   const bvhBuildMs = performance.now() - started;
   const extent = new Box3();
   for (const shape of shapes) extent.union(shape.worldBounds);
+  // The diagonal of the objects' bounds (1 for a scene without objects).
   const size = extent.isEmpty() ? 1 : extent.getSize(new Vector3()).length();
   const enabled = scene.settings.lightTypes;
   return {
@@ -47,7 +46,6 @@ export function buildTracerScene(scene: Scene, meshes: MeshLibrary): TracerScene
     ...objectBvhs(shapes),
     lights: scene.lights.filter((light) => enabled[light.type]).map((light) => new TracerLight(light)),
     epsilon: 1e-4 * Math.max(1, size / 10),
-    size,
     bvhBuildMs,
   };
 }

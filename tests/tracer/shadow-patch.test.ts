@@ -23,7 +23,7 @@ function patchAround(center: Vector3, half: number): Set<Intersectable> {
   const patch = new ShadowPatch();
   patch.fill(center, half, light, scene.occluders, margin, LIMIT);
   expect(patch.count).toBeGreaterThanOrEqual(0);
-  expect(patch.covers(center, half)).toBe(true);
+  expect(patch.covers(center)).toBe(true);
   return new Set(patch.list.slice(0, patch.count));
 }
 
@@ -87,10 +87,10 @@ describe('a shadow patch: one list of shadow candidates for neighbouring hits', 
 
   it('covers the points of its cube only, and none before it is filled', () => {
     const patch = new ShadowPatch();
-    expect(patch.covers(above, 1)).toBe(false);
+    expect(patch.covers(above)).toBe(false);
     patch.fill(above, 0.1, light, scene.occluders, margin, LIMIT);
-    expect(patch.covers(above.clone().add(new Vector3(0.1, -0.1, 0.1)), 0.1)).toBe(true);
-    expect(patch.covers(above.clone().add(new Vector3(0.1001, 0, 0)), 0.1)).toBe(false);
+    expect(patch.covers(above.clone().add(new Vector3(0.1, -0.1, 0.1)))).toBe(true);
+    expect(patch.covers(above.clone().add(new Vector3(0.1001, 0, 0)))).toBe(false);
   });
 
   it('says when there are more objects than are worth listing', () => {
