@@ -143,12 +143,14 @@ export class ObjectBvh {
         }
         continue;
       }
-      // The child on the side the ray comes from is taken first (pushed last).
+      // The child on the side the ray comes from is taken first (pushed last): the right
+      // child holds the larger centres on the split axis, so a ray going toward −axis
+      // meets it first. Its hit then skips the farther boxes.
       const left = node + 1;
       const right = link[node];
-      const towardLeft = (axis[node] === 0 ? direction.x : axis[node] === 1 ? direction.y : direction.z) < 0;
-      stack[size++] = towardLeft ? right : left;
-      stack[size++] = towardLeft ? left : right;
+      const backward = (axis[node] === 0 ? direction.x : axis[node] === 1 ? direction.y : direction.z) < 0;
+      stack[size++] = backward ? left : right;
+      stack[size++] = backward ? right : left;
     }
   }
 

@@ -88,4 +88,27 @@ describe('the BVH over objects', () => {
       }
     });
   }
+
+  it('tests the objects front to back, so that a near hit skips the far ones', () => {
+    // 64 spheres in a row along x; a ray along the row from either end hits the first one.
+    const objects = Array.from({ length: 64 }, (_, i) => ({ id: `s${i}`, shape: 'sphere', position: [i * 2, 0, 0], material: matte([1, 1, 1]) }));
+    const shapes = tracerSceneFrom({ objects }).shapes;
+    let tested = 0;
+    for (const shape of shapes) {
+      const intersect = shape.intersect.bind(shape);
+      shape.intersect = (ray, hit) => {
+        tested++;
+        return intersect(ray, hit);
+      };
+    }
+    const bvh = new ObjectBvh(shapes);
+    for (const [from, direction, first] of [[-10, 1, 's0'], [140, -1, 's63']] as const) {
+      tested = 0;
+      const hit = new Hit().reset(Infinity);
+      bvh.nearest(new Ray().set(new Vector3(from, 0.01, 0.02), new Vector3(direction, 0, 0)), hit, null);
+      expect(hit.shape?.id).toBe(first);
+      // Back to front it would test every sphere (each is nearer than the last).
+      expect(tested).toBeLessThanOrEqual(4);
+    }
+  });
 });
