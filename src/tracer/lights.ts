@@ -26,6 +26,13 @@ export class TracerLight {
   readonly angleExponent: number;
   /** n: samples per side (1 for point and spot lights). */
   readonly samplesPerSide: number;
+  /**
+   * 2/n: a grid cell's side in the rectangle's −1..1 coordinates. Multiplying by it gives
+   * the same numbers to the bit as dividing by n and doubling when n is a power of two (the
+   * benchmark's 4 × 4), within one unit in the last place otherwise; it saves a division per
+   * coordinate in the tracer's hottest loop.
+   */
+  private readonly cellSide: number;
   /** Area lights: the half-extent axes of the rectangle (or disc radii) in the world. */
   readonly halfWidth = new Vector3();
   readonly halfDepth = new Vector3();
@@ -46,6 +53,7 @@ export class TracerLight {
     this.cosHalfAngle = -1;
     this.angleExponent = 0;
     this.samplesPerSide = 1;
+    this.cellSide = 2;
     this.isDisc = false;
     this.extent.setFromPoints([this.position]);
     if (light.type === 'point') return;
@@ -58,6 +66,7 @@ export class TracerLight {
     }
     this.cosHalfAngle = 0;
     this.samplesPerSide = light.samples;
+    this.cellSide = 2 / light.samples;
     this.isDisc = light.shape === 'disc';
     this.halfWidth.set(light.size[0] / 2, 0, 0).applyQuaternion(rotation);
     this.halfDepth.set(0, 0, light.size[1] / 2).applyQuaternion(rotation);
@@ -79,15 +88,15 @@ export class TracerLight {
    * The point on the light for sample (i, j), column i and row j of the n×n grid: the
    * light's position for point and spot lights; for an area light, a uniform random point in
    * cell (i, j) (jittered sampling), mapped onto the disc concentrically for disc lights.
-   * Written on plain numbers in the order of the Vector3 methods it stands for (position +
-   * halfWidth·u, then + halfDepth·v), so every point is the same to the bit.
+   * Written on plain numbers (it runs once per shadow ray), in the order of the Vector3
+   * methods it stands for: position + halfWidth·u, then + halfDepth·v.
    */
   samplePoint(i: number, j: number, random: RandomStream, out: Vector3): Vector3 {
     const p = this.position;
     if (this.type !== 'area') return out.copy(p);
-    const n = this.samplesPerSide;
-    let u = ((i + random.next()) / n) * 2 - 1;
-    let v = ((j + random.next()) / n) * 2 - 1;
+    const cell = this.cellSide;
+    let u = (i + random.next()) * cell - 1;
+    let v = (j + random.next()) * cell - 1;
     if (this.isDisc) [u, v] = concentricDisc(u, v);
     const w = this.halfWidth;
     const d = this.halfDepth;

@@ -238,6 +238,8 @@ export class WhittedIntegrator {
     const { shadows } = this.scene.settings;
     // Gathered at the first shadow ray: a light wholly behind the surface casts none.
     let gathered = false;
+    // Counted here and added to the stats once: a field written per ray costs a store each time.
+    let shadowRays = 0;
     const { x: px, y: py, z: pz } = hit.point;
     const { x: nx, y: ny, z: nz } = n;
     const { x: vx, y: vy, z: vz } = v;
@@ -286,7 +288,8 @@ export class WhittedIntegrator {
         recorder?.sample(0, nDotL, rDotV, 'none');
         continue;
       }
-      l.set(lx, ly, lz);
+      // The unit vector as a Vector3 only for the calls that take one.
+      if (node) l.set(lx, ly, lz);
 
       if (shadows && !gathered) {
         this.gatherShadowCandidates(frame, light, index, node === null);
@@ -294,12 +297,15 @@ export class WhittedIntegrator {
       }
       let blocker: Intersectable | null = null;
       if (shadows) {
-        this.stats.shadow++;
+        shadowRays++;
         frame.shadowDistance = distance;
         // Nothing to test when the list holds only the hit's own shape and the ray leaves it
         // (leavingShape, on plain numbers): most shadow rays on an open floor cost no call.
         const leavesSelf = selfConvex && ngx * lx + ngy * ly + ngz * lz > 0;
-        if (frame.candidateCount < 0 || frame.othersListed > 0 || (frame.selfListed && !leavesSelf)) blocker = this.firstBlocker(frame, l, index, node !== null);
+        if (frame.candidateCount < 0 || frame.othersListed > 0 || (frame.selfListed && !leavesSelf)) {
+          l.set(lx, ly, lz);
+          blocker = this.firstBlocker(frame, l, index, node !== null);
+        }
       }
       if (blocker) {
         // S = 0: a shadow ray carries black.
@@ -327,6 +333,7 @@ export class WhittedIntegrator {
       sampleNodes?.push(newNode('light', hit.point, l, distance, true, null, light.id, [diffuseR + kr * highlight, diffuseG + kg * highlight, diffuseB + kb * highlight]));
       recorder?.sample(attenuation, nDotL, rDotV, 'reached');
     }
+    this.stats.shadow += shadowRays;
     out.x += dr;
     out.y += dg;
     out.z += db;
