@@ -9,7 +9,7 @@ const CUBE_RADIUS = Math.sqrt(3);
 
 /**
  * The shadow candidates of one light for a patch of hit points: a cube of half-side `half`
- * that holds the hit that started it. Neighbouring pixels hit neighbouring points, and every
+ * around the hit that started it. Neighbouring pixels hit neighbouring points, and every
  * shadow ray from any point of the cube toward the light stays inside the box spanned by the
  * cube and the light, and inside the light's pyramid from the cube's centre widened by the
  * cube's radius (a segment from p to a light point q lies within |p − p₀| of the segment from
@@ -37,21 +37,21 @@ export class ShadowPatch {
   }
 
   /**
-   * Starts the patch, a cube centred on `centre`: lists the objects of `occluders` that
-   * overlap the box of the cube and `light`, and (an area light) its widened pyramid; `margin` covers the shadow
+   * Starts the patch around `point`: lists the objects of `occluders` that overlap the box of
+   * the cube and `light`, and (an area light) its widened pyramid; `margin` covers the shadow
    * rays' ε offsets, `limit` is how many are worth listing.
    */
-  fill(centre: Vector3, half: number, light: TracerLight, occluders: readonly ObjectBvh[], margin: number, limit: number): void {
-    this.x = centre.x;
-    this.y = centre.y;
-    this.z = centre.z;
+  fill(point: Vector3, half: number, light: TracerLight, occluders: readonly ObjectBvh[], margin: number, limit: number): void {
+    this.x = point.x;
+    this.y = point.y;
+    this.z = point.z;
     this.half = half;
     this.filled = true;
     const reach = this.reach;
-    reach.min.set(centre.x - half, centre.y - half, centre.z - half);
-    reach.max.set(centre.x + half, centre.y + half, centre.z + half);
+    reach.min.set(point.x - half, point.y - half, point.z - half);
+    reach.max.set(point.x + half, point.y + half, point.z + half);
     reach.union(light.extent);
-    const cone = light.type === 'area' ? this.cone.set(centre, light, margin + half * CUBE_RADIUS) : null;
+    const cone = light.type === 'area' ? this.cone.set(point, light, margin + half * CUBE_RADIUS) : null;
     this.count = listOverlapping(occluders, reach, this.list, limit, cone);
   }
 }

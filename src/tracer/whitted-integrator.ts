@@ -86,15 +86,6 @@ const MAX_LISTED_CANDIDATES = 8;
  */
 const PATCH_HALF_IN_PIXELS = 1;
 
-/**
- * How far ahead of a camera ray's hit its patch's centre lies, in half-sides along the
- * camera's right: the hit stays inside the cube (each coordinate moves by at most 0.9 of a
- * half-side), and the next pixels' hits fall in it for about twice as long as in a cube
- * centred on the hit. Reference scene 0.96×, 9-object grid 0.96×, 256-object grid 1.00×.
- */
-const PATCH_AHEAD = 0.9;
-const patchCentre = new Vector3();
-
 const shadowHit = new Hit();
 
 /** Salt so that glossy directions never share random numbers with light sampling. */
@@ -376,10 +367,7 @@ export class WhittedIntegrator {
       const point = frame.hit.point;
       if (!patch.covers(point)) {
         const half = PATCH_HALF_IN_PIXELS * this.pixelSpread * frame.pathLength;
-        // A camera ray's cube reaches ahead along the row being traced (renderTile walks a
-        // row toward the camera's right), not back over the pixels already traced.
-        const centre = frame === this.frames[0] ? patchCentre.copy(point).addScaledVector(this.scene.camera.right, PATCH_AHEAD * half) : point;
-        patch.fill(centre, half, light, this.scene.occluders, margin, MAX_LISTED_CANDIDATES);
+        patch.fill(point, half, light, this.scene.occluders, margin, MAX_LISTED_CANDIDATES);
       }
       frame.candidateCount = patch.count;
       for (let i = 0; i < patch.count; i++) frame.candidates[i] = patch.list[i];
