@@ -12,7 +12,7 @@ import { discPointBuffer, jitteredDiscPoints } from './disc-samples.ts';
 import { glossyDirection, perpendicularBasis } from './glossy.ts';
 import { LightTermsRecorder, type LightTerms, type ShadingTerms } from './shading-terms.ts';
 import { ShadowCone } from './shadow-cone.ts';
-import { ShadowPatch } from './shadow-patch.ts';
+import { ShadowPatchPair } from './shadow-patch.ts';
 import { phongPower } from './phong-power.ts';
 import type { Intersectable } from './intersectable.ts';
 import { listOverlapping } from './object-bvh.ts';
@@ -59,11 +59,11 @@ class Frame {
   shadowDistance = 0;
   /** How far the light travelled from the camera to this hit, over all the ray's bounces. */
   pathLength = 0;
-  /** Per light: the candidates of the patch of hits at this depth (when rendering). */
-  readonly patches: ShadowPatch[];
+  /** Per light: the candidates of the patches of hits at this depth (when rendering). */
+  readonly patches: ShadowPatchPair[];
 
   constructor(lightCount: number) {
-    this.patches = Array.from({ length: lightCount }, () => new ShadowPatch());
+    this.patches = Array.from({ length: lightCount }, () => new ShadowPatchPair());
   }
 }
 
@@ -349,7 +349,7 @@ export class WhittedIntegrator {
    * hit point and the light's extent, and for an area light inside the pyramid from the
    * point to its rectangle, so only objects overlapping both can block any of them: found
    * once here (through the object BVHs, cheap shapes first), not once per sample; when
-   * rendering, once per patch of neighbouring hits (ShadowPatch).
+   * rendering, once per patch of neighbouring hits (ShadowPatchPair).
    */
   private gatherShadowCandidates(frame: Frame, light: TracerLight, lightIndex: number, rendering: boolean): void {
     const reach = frame.shadowReach.copy(light.extent).expandByPoint(frame.hit.point);
@@ -362,9 +362,9 @@ export class WhittedIntegrator {
     // The margin covers the shadow rays' ε offsets at both ends (see ShadowCone).
     const margin = 4 * this.scene.epsilon;
     if (rendering) {
-      // Rendering: the patch's list, gathered again only when the hit leaves its cube.
-      const patch = frame.patches[lightIndex];
+      // Rendering: a patch's list, gathered again only when the hit leaves both cubes.
       const point = frame.hit.point;
+      const patch = frame.patches[lightIndex].for(point);
       if (!patch.covers(point)) {
         const half = PATCH_HALF_IN_PIXELS * this.pixelSpread * frame.pathLength;
         patch.fill(point, half, light, this.scene.occluders, margin, MAX_LISTED_CANDIDATES);

@@ -5,7 +5,7 @@ import type { Intersectable } from '../../src/tracer/intersectable.ts';
 import { Ray } from '../../src/tracer/ray.ts';
 import { hashKey, RandomStream } from '../../src/tracer/sampler.ts';
 import { ShadowCone } from '../../src/tracer/shadow-cone.ts';
-import { ShadowPatch } from '../../src/tracer/shadow-patch.ts';
+import { ShadowPatch, ShadowPatchPair } from '../../src/tracer/shadow-patch.ts';
 import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
 
 const random = new RandomStream().reset(hashKey(47));
@@ -97,5 +97,30 @@ describe('a shadow patch: one list of shadow candidates for neighbouring hits', 
     const patch = new ShadowPatch();
     patch.fill(above, 0.5, light, scene.occluders, margin, 2);
     expect(patch.count).toBe(-1);
+  });
+
+  it('keeps two patches, so that hits alternating between two places are listed once each', () => {
+    const pair = new ShadowPatchPair();
+    const upper = above.clone();
+    const lower = above.clone().add(new Vector3(0, 0, 0.5));
+    let fills = 0;
+    // Two rows of hits, as a pixel's supersamples on a floor far apart in depth.
+    for (let sample = 0; sample < 8; sample++) {
+      const point = sample % 2 === 0 ? upper : lower;
+      const patch = pair.for(point);
+      if (!patch.covers(point)) {
+        patch.fill(point, 0.1, light, scene.occluders, margin, LIMIT);
+        fills++;
+      }
+      expect(patch.covers(point)).toBe(true);
+    }
+    expect(fills).toBe(2);
+    // A third place takes the patch used less recently (the upper one); the lower one stays.
+    const third = above.clone().add(new Vector3(1, 0, 0));
+    const replaced = pair.for(third);
+    expect(replaced.covers(upper)).toBe(true);
+    replaced.fill(third, 0.1, light, scene.occluders, margin, LIMIT);
+    expect(pair.for(lower).covers(lower)).toBe(true);
+    expect(pair.for(upper).covers(upper)).toBe(false);
   });
 });
