@@ -52,11 +52,17 @@ function loadReferenceScene(): Scene {
   return parsed.scene;
 }
 
-/** A full-quality render with `workers` threads, after one warm-up render so the JIT has compiled the tracer. */
+/**
+ * A full-quality render with `workers` threads, after the same render once so that the JIT
+ * has compiled all of the tracer's code the image needs. After a 128 × 128 warm-up, V8
+ * still optimized 53 functions during the timed render (its --trace-opt log), the model's
+ * and the cylinder's code among them, on the cores the workers need; after a full one, 30,
+ * all but one of them the pool's messaging.
+ */
 async function timeRender(scene: Scene, meshes: MeshLibrary, workers: number): Promise<FinishedRender> {
   const pool = createNodeRenderPool(workers);
   try {
-    await pool.render(scene, meshes, { width: 128, height: 128, preview: false }).done;
+    await pool.render(scene, meshes, { preview: false }).done;
     const result = await pool.render(scene, meshes, { preview: false }).done;
     if (result.cancelled) throw new Error('the benchmark render was cancelled');
     return result;
