@@ -150,7 +150,7 @@ const round = (value: number, digits = 1) => Number(value.toFixed(digits));
 
 /** Pairs of grid renders: their median ratio is the figure (pairs keep it meaningful when the machine's speed drifts). */
 const OBJECT_COUNT_PAIRS = 7;
-/** The grids are rendered at twice their scene's size: a 256 × 256 render took about 0.12 s, short enough for noise to move one pair's ratio by 20 %. */
+/** The grids are rendered at 512 × 512, not their scenes' 256 × 256: a 256 × 256 render took about 0.12 s, short enough for noise to move one pair's ratio by 20 %. */
 const OBJECT_COUNT_SIZE = 512;
 
 /**
