@@ -11,7 +11,8 @@ import { readFileSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { Ray as ThreeRay, DoubleSide, Vector3 } from 'three';
 import { createNodeRenderPool } from '../src/cli/node-worker-port.ts';
-import type { FinishedRender } from '../src/render/render-job.ts';
+import type { FinishedRender, RenderOptions } from '../src/render/render-job.ts';
+import type { RenderPool } from '../src/render/render-pool.ts';
 import { loadMeshesFromDisk } from '../src/scene/load-meshes-node.ts';
 import { meshNamesInScene } from '../src/scene/mesh-names.ts';
 import type { MeshLibrary } from '../src/scene/mesh-data.ts';
@@ -23,6 +24,7 @@ import { emptyRayStats, type RayStats } from '../src/tracer/ray-tree.ts';
 import { renderTile } from '../src/tracer/render-tile.ts';
 import { buildTracerScene, type TracerScene } from '../src/tracer/tracer-scene.ts';
 import { mergedWorldBvh } from './naive/merged-world-bvh.ts';
+import { median } from './median.ts';
 import { objectGridScene } from './object-grid-scene.ts';
 import { firstLoadRows, measureFirstLoad } from './first-load-bench.ts';
 import { rtRender16Ms } from './start-up-bench.ts';
@@ -62,13 +64,18 @@ function loadReferenceScene(): Scene {
 async function timeRender(scene: Scene, meshes: MeshLibrary, workers: number): Promise<FinishedRender> {
   const pool = createNodeRenderPool(workers);
   try {
-    await pool.render(scene, meshes, { preview: false }).done;
-    const result = await pool.render(scene, meshes, { preview: false }).done;
-    if (result.cancelled) throw new Error('the benchmark render was cancelled');
-    return result;
+    return await renderAfter(pool, scene, meshes, { preview: false }, { preview: false });
   } finally {
     pool.dispose();
   }
+}
+
+/** `options`' render of `scene` by `pool`, after one untimed render with `warmUp` (which builds the scene in the workers). */
+async function renderAfter(pool: RenderPool, scene: Scene, meshes: MeshLibrary, warmUp: RenderOptions, options: RenderOptions): Promise<FinishedRender> {
+  await pool.render(scene, meshes, warmUp).done;
+  const result = await pool.render(scene, meshes, options).done;
+  if (result.cancelled) throw new Error('the benchmark render was cancelled');
+  return result;
 }
 
 /**
@@ -164,18 +171,12 @@ async function timeObjectCounts() {
   const many = objectGridScene(16);
   const pool = createNodeRenderPool(2);
   const size = { width: OBJECT_COUNT_SIZE, height: OBJECT_COUNT_SIZE, preview: false };
-  const timed = async (scene: Scene): Promise<FinishedRender> => {
-    await pool.render(scene, new Map(), { width: 64, height: 64, preview: false }).done;
-    const result = await pool.render(scene, new Map(), size).done;
-    if (result.cancelled) throw new Error('the benchmark render was cancelled');
-    return result;
-  };
+  const timed = (scene: Scene) => renderAfter(pool, scene, new Map(), { width: 64, height: 64, preview: false }, size);
   try {
     await timed(few);
     await timed(many);
     const times: { few: FinishedRender; many: FinishedRender }[] = [];
     for (let i = 0; i < OBJECT_COUNT_PAIRS; i++) times.push({ few: await timed(few), many: await timed(many) });
-    const median = (values: number[]) => [...values].sort((a, b) => a - b)[values.length >> 1];
     const rays = (render: FinishedRender) => render.stats.primary + render.stats.shadow + render.stats.reflect + render.stats.refract;
     return {
       ms: { '9': round(median(times.map((t) => t.few.ms))), '256': round(median(times.map((t) => t.many.ms))) },

@@ -15,6 +15,7 @@ import { loadMeshesFromDisk } from '../src/scene/load-meshes-node.ts';
 import { defaultScene } from '../src/scene/scene-defaults.ts';
 import { RayPool } from '../src/view/ray-pool.ts';
 import { syntheticScreen } from '../tests/support/ray-fixtures.ts';
+import { median } from './median.ts';
 
 const SIZES = [1_000, 10_000, 50_000] as const;
 /** Timed repetitions per figure; the median is reported (robust to a GC pause or another process). */
@@ -35,11 +36,6 @@ export interface ViewBenchResults {
   pick50kMs: number;
   /** Camera screen 16×16 of the default scene, traced by the screen tracer's one worker. */
   screenTrace16x16Ms: number;
-}
-
-function median(times: number[]): number {
-  const sorted = [...times].sort((a, b) => a - b);
-  return sorted[Math.floor(sorted.length / 2)];
 }
 
 function timeMedian(run: (i: number) => void): number {
