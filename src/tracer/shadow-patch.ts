@@ -67,11 +67,16 @@ export class ShadowPatchPair {
   private readonly patches = [new ShadowPatch(), new ShadowPatch()];
   private used = 0;
 
-  /** The patch whose cube covers `point`, else the one used less recently, to be filled. */
-  for(point: Vector3): ShadowPatch {
+  /**
+   * The patch whose cube covers `point`; else the one used less recently, filled around
+   * `point` (ShadowPatch.fill's arguments).
+   */
+  listFor(point: Vector3, half: number, light: TracerLight, occluders: readonly ObjectBvh[], margin: number, limit: number): ShadowPatch {
     const last = this.patches[this.used];
     if (last.covers(point)) return last;
     this.used ^= 1;
-    return this.patches[this.used];
+    const other = this.patches[this.used];
+    if (!other.covers(point)) other.fill(point, half, light, occluders, margin, limit);
+    return other;
   }
 }

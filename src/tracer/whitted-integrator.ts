@@ -364,12 +364,8 @@ export class WhittedIntegrator {
     const margin = 4 * this.scene.epsilon;
     if (rendering) {
       // Rendering: a patch's list, gathered again only when the hit leaves both cubes.
-      const point = frame.hit.point;
-      const patch = frame.patches[lightIndex].for(point);
-      if (!patch.covers(point)) {
-        const half = PATCH_HALF_IN_PIXELS * this.pixelSpread * frame.pathLength;
-        patch.fill(point, half, light, this.scene.occluders, margin, MAX_LISTED_CANDIDATES);
-      }
+      const half = PATCH_HALF_IN_PIXELS * this.pixelSpread * frame.pathLength;
+      const patch = frame.patches[lightIndex].listFor(frame.hit.point, half, light, this.scene.occluders, margin, MAX_LISTED_CANDIDATES);
       frame.candidateCount = patch.count;
       for (let i = 0; i < patch.count; i++) frame.candidates[i] = patch.list[i];
     } else {

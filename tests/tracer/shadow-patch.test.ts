@@ -1,5 +1,5 @@
 import { Vector3 } from 'three';
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 import { objectGridScene } from '../../bench/object-grid-scene.ts';
 import type { Intersectable } from '../../src/tracer/intersectable.ts';
 import { Ray } from '../../src/tracer/ray.ts';
@@ -104,23 +104,27 @@ describe('a shadow patch: one list of shadow candidates for neighbouring hits', 
     const upper = above.clone();
     const lower = above.clone().add(new Vector3(0, 0, 0.5));
     let fills = 0;
+    const fill = ShadowPatch.prototype.fill;
+    const spy = vi.spyOn(ShadowPatch.prototype, 'fill').mockImplementation(function (this: ShadowPatch, ...args) {
+      fills++;
+      fill.apply(this, args);
+    });
+    const listFor = (point: Vector3) => pair.listFor(point, 0.1, light, scene.occluders, margin, LIMIT);
     // Two rows of hits, as a pixel's supersamples on a floor far apart in depth.
     for (let sample = 0; sample < 8; sample++) {
       const point = sample % 2 === 0 ? upper : lower;
-      const patch = pair.for(point);
-      if (!patch.covers(point)) {
-        patch.fill(point, 0.1, light, scene.occluders, margin, LIMIT);
-        fills++;
-      }
-      expect(patch.covers(point)).toBe(true);
+      expect(listFor(point).covers(point)).toBe(true);
     }
     expect(fills).toBe(2);
     // A third place takes the patch used less recently (the upper one); the lower one stays.
     const third = above.clone().add(new Vector3(1, 0, 0));
-    const replaced = pair.for(third);
-    expect(replaced.covers(upper)).toBe(true);
-    replaced.fill(third, 0.1, light, scene.occluders, margin, LIMIT);
-    expect(pair.for(lower).covers(lower)).toBe(true);
-    expect(pair.for(upper).covers(upper)).toBe(false);
+    const replaced = listFor(third);
+    expect(replaced.covers(upper)).toBe(false);
+    expect(replaced.covers(third)).toBe(true);
+    expect(listFor(lower).covers(lower)).toBe(true);
+    expect(fills).toBe(3);
+    expect(listFor(upper).covers(upper)).toBe(true);
+    expect(fills).toBe(4);
+    spy.mockRestore();
   });
 });
