@@ -20,6 +20,7 @@ export class RaycasterObject implements Intersectable {
   readonly material: Material;
   // Triangles are not convex solids: never skip the object a ray leaves.
   readonly convex = false;
+  readonly solid = false;
   readonly worldBounds = new Box3();
   private readonly mesh: Mesh;
   private readonly normalToWorld = new Matrix3();

@@ -12,6 +12,8 @@ export interface Intersectable {
   readonly material: Material;
   /** A ray leaving a convex object's outer surface cannot hit it again. */
   readonly convex: boolean;
+  /** It encloses a volume (not a flat plane): when convex too, a ray from inside it meets its surface whichever way it goes. */
+  readonly solid: boolean;
   /** World-space bounding box: rays that miss it cannot hit the object. */
   readonly worldBounds: Box3;
   /** If hit nearer than `hit.t` (and farther than 0): records the hit and returns true. */

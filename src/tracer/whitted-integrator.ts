@@ -246,7 +246,13 @@ export class WhittedIntegrator {
     const { x: vx, y: vy, z: vz } = v;
     const { x: ngx, y: ngy, z: ngz } = frame.geometricNormal;
     // The hit's shape is left by every ray toward its outer side (see leavingShape).
-    const selfConvex = hit.shape!.convex && frame.entering;
+    const shape = hit.shape!;
+    const selfConvex = shape.convex && frame.entering;
+    // A hit inside a convex solid (a ray refracted into a glass ball), with the light apart
+    // from it: every ray into the solid's inside meets its far side before the light. So
+    // when rendering it is blocked by the solid itself, with no test (a recorded tree tests
+    // it, to show its nearest blocker). A plane seen from behind has no inside.
+    const insideSelf = node === null && shadows && shape.convex && shape.solid && !frame.entering && boxesApart(shape.worldBounds, light.extent, 4 * this.scene.epsilon);
     const { x: lr, y: lg, z: lb } = light.color;
     // pow(max(R·V, 0), n) can only be 0 when R·V ≤ 0 (and n > 0), and the highlight is 0
     // whenever ks or the light's specular factor is: pow is skipped there.
@@ -292,20 +298,25 @@ export class WhittedIntegrator {
       // The unit vector as a Vector3 only for the calls that take one.
       if (node) l.set(lx, ly, lz);
 
-      if (shadows && !gathered) {
-        this.gatherShadowCandidates(frame, light, index, node === null);
-        gathered = true;
-      }
       let blocker: Intersectable | null = null;
       if (shadows) {
         shadowRays++;
-        frame.shadowDistance = distance;
-        // Nothing to test when the list holds only the hit's own shape and the ray leaves it
-        // (leavingShape, on plain numbers): most shadow rays on an open floor cost no call.
-        const leavesSelf = selfConvex && ngx * lx + ngy * ly + ngz * lz > 0;
-        if (frame.candidateCount < 0 || frame.othersListed > 0 || (frame.selfListed && !leavesSelf)) {
-          l.set(lx, ly, lz);
-          blocker = this.firstBlocker(frame, l, index, node !== null);
+        // The ray starts ε off the surface on the side it leaves toward (offsetOrigin).
+        const towardNormal = ngx * lx + ngy * ly + ngz * lz > 0;
+        if (insideSelf && towardNormal) blocker = shape;
+        else {
+          if (!gathered) {
+            this.gatherShadowCandidates(frame, light, index, node === null);
+            gathered = true;
+          }
+          frame.shadowDistance = distance;
+          // Nothing to test when the list holds only the hit's own shape and the ray leaves it
+          // (leavingShape, on plain numbers): most shadow rays on an open floor cost no call.
+          const leavesSelf = selfConvex && towardNormal;
+          if (frame.candidateCount < 0 || frame.othersListed > 0 || (frame.selfListed && !leavesSelf)) {
+            l.set(lx, ly, lz);
+            blocker = this.firstBlocker(frame, l, index, node !== null);
+          }
         }
       }
       if (blocker) {
@@ -556,6 +567,14 @@ function moveToFront(list: Intersectable[], count: number, first: Intersectable 
 function leavingShape(frame: Frame, direction: Vector3): Intersectable | null {
   const shape = frame.hit.shape;
   return shape && shape.convex && frame.entering && frame.geometricNormal.dot(direction) > 0 ? shape : null;
+}
+
+/** Whether the nearest points of two boxes are more than `margin` apart. */
+function boxesApart(a: Box3, b: Box3, margin: number): boolean {
+  const gx = Math.max(0, a.min.x - b.max.x, b.min.x - a.max.x);
+  const gy = Math.max(0, a.min.y - b.max.y, b.min.y - a.max.y);
+  const gz = Math.max(0, a.min.z - b.max.z, b.min.z - a.max.z);
+  return gx * gx + gy * gy + gz * gz > margin * margin;
 }
 
 /** The hit point moved ε off the surface, to the side `direction` leaves toward (no self-hits). */

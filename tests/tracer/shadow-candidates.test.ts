@@ -101,4 +101,47 @@ describe('shadow rays toward an area light', () => {
     expect(shadeFloor(scene, 0.1, 0.1)).toEqual([0, 0, 0]);
     expect(counts.get('shed')).toBe(SAMPLES);
   });
+
+  it('are blocked without a test inside a convex object, unless the light is inside it too', () => {
+    // A ball of radius 1 around (0, 1, 0), seen from its centre: the ray hits the inside of its bottom.
+    const ballWithLightAt = (y: number, size: number) =>
+      tracerSceneFrom({
+        settings: { background: [0, 0, 0], shadows: true },
+        objects: [{ id: 'ball', shape: 'sphere', position: [0, 1, 0], scale: [2, 2, 2], material: matte([1, 1, 1]) }],
+        lights: [{ id: 'panel', type: 'area', position: [0, y, 0], size: [size, size], samples: 4, ambient: 0, angleAttenuation: 0 }],
+      });
+    const shadeInside = (scene: TracerScene) => {
+      const integrator = integratorFor(scene);
+      integrator.startPixelSample(7, 0, 0, 0);
+      const before = integrator.stats.shadow;
+      const color = integrator.trace(new Ray().set(new Vector3(0, 1, 0), new Vector3(0, -1, 0)), 0, new Vector3(), null).toArray();
+      return { color, shadowRays: integrator.stats.shadow - before };
+    };
+    // The light above the ball: every ray meets the ball's top on its way.
+    const outside = ballWithLightAt(4, 0.5);
+    const outsideCounts = countOccludes(outside);
+    expect(shadeInside(outside)).toEqual({ color: [0, 0, 0], shadowRays: SAMPLES });
+    expect(outsideCounts.get('ball')).toBeUndefined();
+    // The light inside the ball: the rays reach it, so each is tested.
+    const inside = ballWithLightAt(1.5, 0.2);
+    const insideCounts = countOccludes(inside);
+    const lit = shadeInside(inside);
+    expect(lit.shadowRays).toBe(SAMPLES);
+    expect(lit.color[0]).toBeGreaterThan(0);
+    expect(insideCounts.get('ball')).toBe(SAMPLES);
+  });
+
+  it('are tested from behind a plane, which has no inside', () => {
+    // A ceiling at y = 1 facing up, seen from below, with the light below it too: the rays reach the light.
+    const scene = tracerSceneFrom({
+      settings: { background: [0, 0, 0], shadows: true },
+      objects: [{ id: 'ceiling', shape: 'plane', position: [0, 1, 0], scale: [20, 1, 20], material: matte([1, 1, 1]) }],
+      lights: [{ id: 'panel', type: 'area', position: [0, -2, 0], rotation: [180, 0, 0], size: [0.5, 0.5], samples: 4, ambient: 0, angleAttenuation: 0 }],
+    });
+    const integrator = integratorFor(scene);
+    integrator.startPixelSample(7, 0, 0, 0);
+    const color = integrator.trace(new Ray().set(new Vector3(0, 0, 0), new Vector3(0, 1, 0)), 0, new Vector3(), null).toArray();
+    expect(integrator.stats.shadow).toBe(SAMPLES);
+    expect(color[0]).toBeGreaterThan(0);
+  });
 });

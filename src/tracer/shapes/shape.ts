@@ -35,6 +35,8 @@ export class Shape {
    * mirror rays from it skip it (one test fewer per ray, and no self-shadowing acne).
    */
   readonly convex: boolean;
+  /** Every kind but the plane encloses a volume. */
+  readonly solid: boolean;
   readonly worldBounds = new Box3();
   // The world-to-object affine transform, row by row (m[0..3] is the x row).
   private readonly m = new Float64Array(12);
@@ -54,6 +56,7 @@ export class Shape {
     velocity: Vector3 | null = null,
   ) {
     this.convex = kind !== 'mesh';
+    this.solid = kind !== 'plane';
     const e = new Matrix4().copy(objectToWorld).invert().elements; // column-major
     this.m.set([e[0], e[4], e[8], e[12], e[1], e[5], e[9], e[13], e[2], e[6], e[10], e[14]]);
     this.normalToWorld.getNormalMatrix(objectToWorld);
