@@ -56,8 +56,8 @@ const b = new Vector3();
 const c = new Vector3();
 
 /**
- * Counts the tests the tracer's mesh intersection (three-mesh-bvh's `raycastFirst` on the
- * model's BVH, called by `intersectMesh`) does for the object-space ray o + t·d, t in
+ * Counts the tests the tracer's mesh intersection (`meshNearest`, which walks the model's
+ * BVH as three-mesh-bvh's `raycastFirst` does) makes for the object-space ray o + t·d, t in
  * (0, tMax). It walks the same tree in the same way: the near child first (by the split
  * axis and the ray's direction), and the far child skipped when the near one's hit lies on
  * the near side of it. Every box and triangle test it makes is counted.

@@ -1,8 +1,9 @@
-import { Box3, BufferAttribute, BufferGeometry, DoubleSide, Ray as ThreeRay, Vector3 } from 'three';
+import { Box3, BufferAttribute, BufferGeometry, Vector3 } from 'three';
 import { MeshBVH, SAH } from 'three-mesh-bvh';
 import type { MeshData } from '../../scene/mesh-data.ts';
 import type { Hit } from '../hit.ts';
-import { packedRoot, type PackedRoot } from './mesh-occlusion.ts';
+import { meshNearest, nearestFace } from './mesh-nearest.ts';
+import { packedRoot, type PackedRoot } from './mesh-walk.ts';
 
 /** A model's BVH, built once per model and shared by every object that uses it. */
 export interface MeshAccel {
@@ -12,7 +13,7 @@ export interface MeshAccel {
   positions: Float32Array;
   normals: Float32Array | null;
   bounds: Box3;
-  /** The BVH's packed node buffers, which shadow rays walk directly (mesh-occlusion.ts). */
+  /** The BVH's packed node buffers, which the tracer's rays walk directly (mesh-walk.ts). */
   roots: PackedRoot[];
 }
 
@@ -40,19 +41,15 @@ export function meshAccel(mesh: MeshData): MeshAccel {
   return accel;
 }
 
-const localRay = new ThreeRay();
-
 /** The nearest t in (0, tMax) where o + t·d meets the model, or Infinity; records the triangle in `hit.face`. */
 export function intersectMesh(accel: MeshAccel, o: Vector3, d: Vector3, tMax: number, hit: Hit): number {
-  // three-mesh-bvh measures distance along a unit direction: scale to and from it.
-  const scale = d.length();
-  localRay.origin.copy(o);
-  localRay.direction.copy(d).divideScalar(scale);
-  const result = accel.bvh.raycastFirst(localRay, DoubleSide, 0, tMax * scale);
-  if (!result || result.faceIndex == null) return Infinity;
-  const t = result.distance / scale;
+  // meshNearest measures distance along a unit direction: scale to and from it.
+  const scale = Math.sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  const distance = meshNearest(accel, o, d, tMax * scale);
+  if (distance === Infinity) return Infinity;
+  const t = distance / scale;
   if (!(t > 0 && t < tMax)) return Infinity;
-  hit.face = result.faceIndex;
+  hit.face = nearestFace;
   return t;
 }
 

@@ -1,29 +1,14 @@
 import type { Vector3 } from 'three';
 import type { MeshAccel } from './mesh-accel.ts';
+import { isLeaf, nodeMeets, type PackedRoot, ray, setUnitRay, triangleDistance, UINT32_PER_NODE } from './mesh-walk.ts';
 
 /**
- * Any-hit for shadow rays: does o + t·d meet the model for some t in (0, tMax)? Walks
- * three-mesh-bvh's packed node buffers directly (its node layout: 8 × 32 bits a node, six
- * float32 bounds, then a leaf's triangle offset and count, flagged 0xFFFF, or an inner node's
- * right-child offset; the left child follows its parent), with no allocation per ray or per
- * triangle (its `raycastFirst` allocates 4–5 objects per candidate triangle), and stops at the
- * first hit.
- *
- * The box and triangle tests repeat `raycastFirst`'s arithmetic operation for operation (its
- * `intersectsNodeBounds`, three.js's watertight `Ray.intersectTriangle`, the distance to the
- * hit point), so a shadow ray is blocked exactly when `intersectMesh` would find a hit: the
- * image does not change by a bit.
+ * Any-hit for shadow rays: does o + t·d meet the model for some t in (0, tMax)? Walks the
+ * model's BVH (mesh-walk.ts) and stops at the first hit; a shadow ray is blocked exactly
+ * when `intersectMesh` would find a hit, so the image does not change by a bit.
  */
 export function meshOccludes(accel: MeshAccel, o: Vector3, d: Vector3, tMax: number): boolean {
-  // As intersectMesh: three-mesh-bvh measures distance along a unit direction.
-  const scale = Math.sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-  const inverseScale = 1 / scale; // Vector3.divideScalar multiplies by the reciprocal
-  ray.ox = o.x;
-  ray.oy = o.y;
-  ray.oz = o.z;
-  ray.dx = d.x * inverseScale;
-  ray.dy = d.y * inverseScale;
-  ray.dz = d.z * inverseScale;
+  const scale = setUnitRay(o, d);
   const far = tMax * scale;
   for (const root of accel.roots) {
     if (rootOccludes(root, accel, far, scale, tMax)) return true;
@@ -31,31 +16,6 @@ export function meshOccludes(accel: MeshAccel, o: Vector3, d: Vector3, tMax: num
   return false;
 }
 
-/** The node buffers of one BVH root, read through three views as three-mesh-bvh does. */
-export interface PackedRoot {
-  readonly float32: Float32Array;
-  readonly uint32: Uint32Array;
-  readonly uint16: Uint16Array;
-}
-
-export function packedRoot(buffer: ArrayBuffer): PackedRoot {
-  return { float32: new Float32Array(buffer), uint32: new Uint32Array(buffer), uint16: new Uint16Array(buffer) };
-}
-
-interface UnitRay {
-  ox: number;
-  oy: number;
-  oz: number;
-  dx: number;
-  dy: number;
-  dz: number;
-}
-
-/** The ray being tested, in the model's space with a unit direction (one object, reused). */
-const ray: UnitRay = { ox: 0, oy: 0, oz: 0, dx: 0, dy: 0, dz: 0 };
-
-const UINT32_PER_NODE = 8;
-const IS_LEAF_FLAG = 0xffff;
 /** Nodes waiting to be visited (uint32 offsets); three-mesh-bvh's trees are at most 40 deep. */
 const stack = new Uint32Array(256);
 
@@ -68,11 +28,13 @@ function rootOccludes(root: PackedRoot, accel: MeshAccel, far: number, scale: nu
   if (nodeMeets(float32, 0, ix, iy, iz, far)) stack[size++] = 0;
   while (size > 0) {
     const node = stack[--size];
-    if (uint16[node * 2 + 15] === IS_LEAF_FLAG) {
+    if (isLeaf(uint16, node)) {
       const offset = uint32[node + 6];
       const end = offset + uint16[node * 2 + 14];
       for (let triangle = offset; triangle < end; triangle++) {
-        if (triangleBlocks(accel, triangle, far, scale, tMax)) return true;
+        // A hit at t in (0, tMax) of the unscaled ray, as intersectMesh checks its nearest one.
+        const tWorld = triangleDistance(accel, triangle, far) / scale;
+        if (tWorld > 0 && tWorld < tMax) return true;
       }
       continue;
     }
@@ -82,109 +44,4 @@ function rootOccludes(root: PackedRoot, accel: MeshAccel, far: number, scale: nu
     if (nodeMeets(float32, left, ix, iy, iz, far)) stack[size++] = left;
   }
   return false;
-}
-
-/** three-mesh-bvh's intersectsNodeBounds with near = 0, the reciprocals computed once per ray. */
-function nodeMeets(box: Float32Array, n: number, ix: number, iy: number, iz: number, far: number): boolean {
-  let tmin: number;
-  let tmax: number;
-  let tymin: number;
-  let tymax: number;
-  let tzmin: number;
-  let tzmax: number;
-  if (ix >= 0) {
-    tmin = (box[n] - ray.ox) * ix;
-    tmax = (box[n + 3] - ray.ox) * ix;
-  } else {
-    tmin = (box[n + 3] - ray.ox) * ix;
-    tmax = (box[n] - ray.ox) * ix;
-  }
-  if (iy >= 0) {
-    tymin = (box[n + 1] - ray.oy) * iy;
-    tymax = (box[n + 4] - ray.oy) * iy;
-  } else {
-    tymin = (box[n + 4] - ray.oy) * iy;
-    tymax = (box[n + 1] - ray.oy) * iy;
-  }
-  if (tmin > tymax || tymin > tmax) return false;
-  if (tymin > tmin || tmin !== tmin) tmin = tymin;
-  if (tymax < tmax || tmax !== tmax) tmax = tymax;
-  if (iz >= 0) {
-    tzmin = (box[n + 2] - ray.oz) * iz;
-    tzmax = (box[n + 5] - ray.oz) * iz;
-  } else {
-    tzmin = (box[n + 5] - ray.oz) * iz;
-    tzmax = (box[n + 2] - ray.oz) * iz;
-  }
-  if (tmin > tzmax || tzmin > tmax) return false;
-  if (tzmin > tmin || tmin !== tmin) tmin = tzmin;
-  if (tzmax < tmax || tmax !== tmax) tmax = tzmax;
-  return tmin <= far && tmax >= 0;
-}
-
-/**
- * Whether the ray meets triangle `triangle` (BVH order) at a distance in [0, far] whose t
- * lies in (0, tMax): Woop, Benthin & Wald, "Watertight Ray/Triangle Intersection" (JCGT 2013),
- * written as three.js's Ray.intersectTriangle without back-face culling.
- */
-function triangleBlocks(accel: MeshAccel, triangle: number, far: number, scale: number, tMax: number): boolean {
-  const { index, positions } = accel;
-  const a = index[triangle * 3] * 3;
-  const b = index[triangle * 3 + 1] * 3;
-  const c = index[triangle * 3 + 2] * 3;
-  const { ox, oy, oz, dx, dy, dz } = ray;
-  const aox = positions[a] - ox, aoy = positions[a + 1] - oy, aoz = positions[a + 2] - oz;
-  const box = positions[b] - ox, boy = positions[b + 1] - oy, boz = positions[b + 2] - oz;
-  const cox = positions[c] - ox, coy = positions[c + 1] - oy, coz = positions[c + 2] - oz;
-  const adx = Math.abs(dx), ady = Math.abs(dy), adz = Math.abs(dz);
-  let dkx: number, dky: number, dkz: number;
-  let akx: number, aky: number, akz: number, bkx: number, bky: number, bkz: number, ckx: number, cky: number, ckz: number;
-  if (adx >= ady && adx >= adz) {
-    dkz = dx; akz = aox; bkz = box; ckz = cox;
-    if (dx >= 0) {
-      dkx = dy; dky = dz;
-      akx = aoy; aky = aoz; bkx = boy; bky = boz; ckx = coy; cky = coz;
-    } else {
-      dkx = dz; dky = dy;
-      akx = aoz; aky = aoy; bkx = boz; bky = boy; ckx = coz; cky = coy;
-    }
-  } else if (ady >= adz) {
-    dkz = dy; akz = aoy; bkz = boy; ckz = coy;
-    if (dy >= 0) {
-      dkx = dz; dky = dx;
-      akx = aoz; aky = aox; bkx = boz; bky = box; ckx = coz; cky = cox;
-    } else {
-      dkx = dx; dky = dz;
-      akx = aox; aky = aoz; bkx = box; bky = boz; ckx = cox; cky = coz;
-    }
-  } else {
-    dkz = dz; akz = aoz; bkz = boz; ckz = coz;
-    if (dz >= 0) {
-      dkx = dx; dky = dy;
-      akx = aox; aky = aoy; bkx = box; bky = boy; ckx = cox; cky = coy;
-    } else {
-      dkx = dy; dky = dx;
-      akx = aoy; aky = aox; bkx = boy; bky = box; ckx = coy; cky = cox;
-    }
-  }
-  if (dkz === 0) return false;
-  const sx = dkx / dkz, sy = dky / dkz, sz = 1 / dkz;
-  const ax = akx - sx * akz, ay = aky - sy * akz;
-  const bx = bkx - sx * bkz, by = bky - sy * bkz;
-  const cx = ckx - sx * ckz, cy = cky - sy * ckz;
-  const u = cx * by - cy * bx;
-  const v = ax * cy - ay * cx;
-  const w = bx * ay - by * ax;
-  if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return false;
-  const det = u + v + w;
-  if (det === 0) return false;
-  const tScaled = sz * (u * akz + v * bkz + w * ckz);
-  if (det > 0 ? tScaled < 0 : tScaled > 0) return false;
-  // The hit point o + t·d and its distance from o, as Ray.at and Vector3.distanceTo compute them.
-  const t = tScaled / det;
-  const ex = ox - (ox + dx * t), ey = oy - (oy + dy * t), ez = oz - (oz + dz * t);
-  const distance = Math.sqrt(ex * ex + ey * ey + ez * ez);
-  if (distance > far) return false;
-  const tWorld = distance / scale;
-  return tWorld > 0 && tWorld < tMax;
 }
