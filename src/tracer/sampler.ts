@@ -39,14 +39,20 @@ export function hashKey(a: number, b?: number, c?: number, d?: number, e?: numbe
   return e === undefined ? key : hashIn(key, e);
 }
 
+/** 2^-32: multiplying by it is dividing by 2^32, to the bit, without a division. */
+const TWO_TO_MINUS_32 = 1 / 4294967296;
+
 /** A small stream of uniform numbers in [0, 1) from one key (a counter-based generator). */
 export class RandomStream {
+  // Kept as a signed 32-bit integer: the hash reads its input modulo 2^32 whatever its sign,
+  // and V8 then adds and hashes in integer registers, where a key above 2^31 (a double)
+  // cost a conversion per draw.
   private key = 0;
   private counter = 0;
 
   /** Restarts the stream for a new key, e.g. hashKey(seed, x, y, sample, light). */
   reset(key: number): this {
-    this.key = key;
+    this.key = key | 0;
     this.counter = 0;
     return this;
   }
@@ -57,6 +63,6 @@ export class RandomStream {
    * consecutive inputs far apart, so the hash's output is well mixed.
    */
   next(): number {
-    return mix32(this.key + Math.imul(this.counter++, 0x9e3779b9)) / 4294967296;
+    return mix32((this.key + Math.imul(this.counter++, 0x9e3779b9)) | 0) * TWO_TO_MINUS_32;
   }
 }
