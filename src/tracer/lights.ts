@@ -97,7 +97,13 @@ export class TracerLight {
     const cell = this.cellSide;
     let u = (i + random.next()) * cell - 1;
     let v = (j + random.next()) * cell - 1;
-    if (this.isDisc) [u, v] = concentricDisc(u, v);
+    if (this.isDisc) {
+      // Read by index: destructuring runs the array's iterator, whose bytecode made this
+      // method too big for V8 to inline into the shading loop together with the highlight's power.
+      const disc = concentricDisc(u, v);
+      u = disc[0];
+      v = disc[1];
+    }
     const w = this.halfWidth;
     const d = this.halfDepth;
     out.x = p.x + w.x * u + d.x * v;
