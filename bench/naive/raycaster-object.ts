@@ -56,8 +56,8 @@ export class RaycasterObject implements Intersectable {
   }
 
   /** The naive tracer has no any-hit: a nearest-hit search into a scratch record. */
-  occludes(ray: Ray, tMax: number): boolean {
-    return this.intersect(ray, scratchHit.reset(tMax));
+  occludes(ray: Ray): boolean {
+    return this.intersect(ray, scratchHit.reset(ray.far));
   }
 
   surface(ray: Ray, hit: Hit): void {

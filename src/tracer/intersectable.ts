@@ -18,8 +18,8 @@ export interface Intersectable {
   readonly worldBounds: Box3;
   /** If hit nearer than `hit.t` (and farther than 0): records the hit and returns true. */
   intersect(ray: Ray, hit: Hit): boolean;
-  /** Any-hit: whether it is hit nearer than `tMax` (and farther than 0), exactly when `intersect` would hit. */
-  occludes(ray: Ray, tMax: number): boolean;
+  /** Any-hit: whether it is hit nearer than `ray.far` (and farther than 0), exactly when `intersect` would hit. */
+  occludes(ray: Ray): boolean;
   /** Fills hit.point and the outward unit normals, for the nearest hit only. */
   surface(ray: Ray, hit: Hit): void;
 }

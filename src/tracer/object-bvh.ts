@@ -155,10 +155,11 @@ export class ObjectBvh {
   }
 
   /**
-   * The first object found that the ray hits closer than tMax (any-hit, for shadow rays), or
-   * null. `skip` is not tested, nor the objects whose box does not overlap `within`.
+   * The first object found that the ray hits closer than ray.far (any-hit, for shadow rays),
+   * or null. `skip` is not tested, nor the objects whose box does not overlap `within`.
    */
-  firstBlocker(ray: Ray, tMax: number, skip: Intersectable | null, within: Box3): Intersectable | null {
+  firstBlocker(ray: Ray, skip: Intersectable | null, within: Box3): Intersectable | null {
+    const tMax = ray.far;
     const { boxes, link, count, items, itemBoxes, stack } = this;
     if (items.length === 0) return null;
     setWithin(within);
@@ -171,7 +172,7 @@ export class ObjectBvh {
       if (n > 0) {
         for (let i = link[node], end = i + n; i < end; i++) {
           const item = items[i];
-          if (item !== skip && overlapsWithin(itemBoxes, i * 6) && item.occludes(ray, tMax)) return item;
+          if (item !== skip && overlapsWithin(itemBoxes, i * 6) && item.occludes(ray)) return item;
         }
         continue;
       }

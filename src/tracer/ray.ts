@@ -8,6 +8,12 @@ export class Ray {
   readonly inverseDirection = new Vector3();
   /** τ in [0, 1): when in the open shutter the ray is cast; moving objects are at position + τ·velocity. */
   time = 0;
+  /**
+   * How far an any-hit test looks (Intersectable.occludes): only hits at t < far count. A
+   * field, not an argument: V8 allocates a box for a fractional number passed to a call it
+   * does not inline, once per shadow ray and object tested.
+   */
+  far = Infinity;
 
   /** Sets origin and direction; the time is kept (a ray's children share it). */
   set(origin: Vector3, direction: Vector3): this {

@@ -407,12 +407,11 @@ export class WhittedIntegrator {
    * of them is not the shape the ray leaves: on an open floor no shadow ray needs one.
    */
   private firstBlocker(frame: Frame, toLight: Vector3, lightIndex: number, nearest: boolean): Intersectable | null {
-    const tMax = frame.shadowDistance - this.scene.epsilon;
     const leaving = leavingShape(frame, toLight);
     const { candidates, candidateCount, shadowReach } = frame;
     if (nearest) {
       const ray = this.shadowRay(frame, toLight);
-      const hit = shadowHit.reset(tMax);
+      const hit = shadowHit.reset(ray.far);
       if (candidateCount < 0) this.scene.objects.nearest(ray, hit, leaving, shadowReach);
       else for (let i = 0; i < candidateCount; i++) if (candidates[i] !== leaving) candidates[i].intersect(ray, hit);
       return hit.shape;
@@ -423,7 +422,7 @@ export class WhittedIntegrator {
         const candidate = candidates[i];
         if (candidate === leaving) continue;
         ray ??= this.shadowRay(frame, toLight);
-        if (!candidate.occludes(ray, tMax)) continue;
+        if (!candidate.occludes(ray)) continue;
         // Move to front: the next shadow rays of this hit try it first too.
         candidates[i] = candidates[0];
         candidates[0] = candidate;
@@ -434,17 +433,21 @@ export class WhittedIntegrator {
     }
     const ray = this.shadowRay(frame, toLight);
     const cached = this.lastBlocker[lightIndex];
-    if (cached && cached !== leaving && cached.occludes(ray, tMax)) return cached;
+    if (cached && cached !== leaving && cached.occludes(ray)) return cached;
     let blocker: Intersectable | null = null;
-    for (const occluders of this.scene.occluders) if ((blocker = occluders.firstBlocker(ray, tMax, leaving, shadowReach))) break;
+    for (const occluders of this.scene.occluders) if ((blocker = occluders.firstBlocker(ray, leaving, shadowReach))) break;
     if (blocker) this.lastBlocker[lightIndex] = blocker;
     return blocker;
   }
 
-  /** The shadow ray from the hit point (moved ε off the surface) along the unit direction `toLight`. */
+  /**
+   * The shadow ray from the hit point (moved ε off the surface) along the unit direction
+   * `toLight`, reaching to ε short of the light sample at frame.shadowDistance.
+   */
   private shadowRay(frame: Frame, toLight: Vector3): Ray {
     const ray = frame.shadowRay.set(offsetOrigin(frame, toLight, this.scene.epsilon), toLight);
     ray.time = this.time;
+    ray.far = frame.shadowDistance - this.scene.epsilon;
     return ray;
   }
 

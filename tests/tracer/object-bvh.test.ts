@@ -56,10 +56,10 @@ describe('the BVH over objects', () => {
         expect([fromBvh.shape?.id, fromBvh.t]).toEqual([fromAll.shape?.id, fromAll.t]);
         if (fromAll.shape) hits++;
 
-        const tMax = between(0, 12);
+        ray.far = between(0, 12);
         const reach = within ?? new Box3(new Vector3(-9, -9, -9), new Vector3(9, 9, 9));
-        const blocker = bvh.firstBlocker(ray, tMax, skip, reach);
-        const blocks = tested.filter((s) => s.worldBounds.intersectsBox(reach) && s.occludes(ray, tMax));
+        const blocker = bvh.firstBlocker(ray, skip, reach);
+        const blocks = tested.filter((s) => s.worldBounds.intersectsBox(reach) && s.occludes(ray));
         expect(blocker === null).toBe(blocks.length === 0);
         if (blocker) {
           expect(blocks).toContain(blocker);

@@ -39,9 +39,9 @@ describe('any-hit occlusion', () => {
         const target = new Vector3(random.next() - 0.5, random.next() - 0.5, random.next() - 0.5).multiplyScalar(1.2);
         ray.set(origin, target.sub(origin).normalize());
         // Distances from short of the object to past it: blocked and unblocked rays both.
-        const tMax = random.next() * 4;
-        const nearest = shape.intersect(ray, hit.reset(tMax));
-        expect(shape.occludes(ray, tMax)).toBe(nearest);
+        ray.far = random.next() * 4;
+        const nearest = shape.intersect(ray, hit.reset(ray.far));
+        expect(shape.occludes(ray)).toBe(nearest);
         if (nearest) blocked++;
         else open++;
       }

@@ -32,9 +32,9 @@ function countOccludes(scene: TracerScene): Map<string, number> {
   const counts = new Map<string, number>();
   for (const shape of scene.shapes) {
     const occludes = shape.occludes.bind(shape);
-    vi.spyOn(shape as Intersectable, 'occludes').mockImplementation((ray, tMax) => {
+    vi.spyOn(shape as Intersectable, 'occludes').mockImplementation((ray) => {
       counts.set(shape.id, (counts.get(shape.id) ?? 0) + 1);
-      return occludes(ray, tMax);
+      return occludes(ray);
     });
   }
   return counts;

@@ -75,8 +75,9 @@ describe('a shadow patch: one list of shadow candidates for neighbouring hits', 
         const toLight = sample.clone().sub(point);
         const distance = toLight.length();
         ray.set(point, toLight.normalize());
+        ray.far = distance - scene.epsilon;
         for (const shape of scene.shapes) {
-          if (!shape.occludes(ray, distance - scene.epsilon)) continue;
+          if (!shape.occludes(ray)) continue;
           expect(listed.has(shape)).toBe(true);
           blocked++;
         }

@@ -1,13 +1,16 @@
 import type { Vector3 } from 'three';
+import type { Ray } from '../ray.ts';
 import type { MeshAccel } from './mesh-accel.ts';
 import { isLeaf, nodeMeets, type PackedRoot, ray, setUnitRay, triangleDistance, UINT32_PER_NODE } from './mesh-walk.ts';
 
 /**
- * Any-hit for shadow rays: does o + t·d meet the model for some t in (0, tMax)? Walks the
- * model's BVH (mesh-walk.ts) and stops at the first hit; a shadow ray is blocked exactly
- * when `intersectMesh` would find a hit, so the image does not change by a bit.
+ * Any-hit for shadow rays: does o + t·d (the world ray `limit` in the model's space, where t
+ * means the same) meet the model for some t in (0, limit.far)? Walks the model's BVH
+ * (mesh-walk.ts) and stops at the first hit; a shadow ray is blocked exactly when
+ * `intersectMesh` would find a hit, so the image does not change by a bit.
  */
-export function meshOccludes(accel: MeshAccel, o: Vector3, d: Vector3, tMax: number): boolean {
+export function meshOccludes(accel: MeshAccel, o: Vector3, d: Vector3, limit: Ray): boolean {
+  const tMax = limit.far;
   const scale = setUnitRay(o, d);
   const far = tMax * scale;
   for (const root of accel.roots) {

@@ -99,10 +99,11 @@ export class Shape {
   }
 
   /**
-   * Any-hit for shadow rays: whether the shape is hit nearer than `tMax` (and farther than
-   * 0), exactly when `intersect` would record a hit, without finding the nearest one.
+   * Any-hit for shadow rays: whether the shape is hit nearer than `ray.far` (and farther
+   * than 0), exactly when `intersect` would record a hit, without finding the nearest one.
    */
-  occludes(ray: Ray, tMax: number): boolean {
+  occludes(ray: Ray): boolean {
+    const tMax = ray.far;
     if (!rayMeetsBox(ray, this.bounds, 0, tMax)) return false;
     this.toLocal(ray);
     switch (this.kind) {
@@ -115,7 +116,7 @@ export class Shape {
       case 'plane':
         return intersectUnitPlane(localOrigin, localDirection, tMax) !== Infinity;
       case 'mesh':
-        return meshOccludes(this.accel!, localOrigin, localDirection, tMax);
+        return meshOccludes(this.accel!, localOrigin, localDirection, ray);
     }
   }
 
