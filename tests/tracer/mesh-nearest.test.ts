@@ -4,7 +4,7 @@ import { loadMeshesFromDisk } from '../../src/scene/load-meshes-node.ts';
 import type { MeshData } from '../../src/scene/mesh-data.ts';
 import { hashKey, RandomStream } from '../../src/tracer/sampler.ts';
 import { meshAccel } from '../../src/tracer/shapes/mesh-accel.ts';
-import { meshNearest, nearestFace } from '../../src/tracer/shapes/mesh-nearest.ts';
+import { meshNearest, nearest } from '../../src/tracer/shapes/mesh-nearest.ts';
 
 /**
  * The tracer's own nearest-hit walk of a model's BVH must find exactly what three-mesh-bvh's
@@ -17,17 +17,18 @@ beforeAll(async () => {
   character = (await loadMeshesFromDisk(['character'])).get('character')!;
 });
 
-/** raycastFirst's distance and triangle for o + t·d (d of any length, as the tracer passes it). */
-function threeMeshBvhNearest(o: Vector3, d: Vector3, far: number): { distance: number; face: number } {
+/** raycastFirst's distance and triangle for o + t·d, t < tMax (d of any length, as the tracer passes it). */
+function threeMeshBvhNearest(o: Vector3, d: Vector3, tMax: number): { distance: number; face: number } {
   const accel = meshAccel(character);
   const unit = new ThreeRay(o.clone(), d.clone().divideScalar(d.length()));
-  const result = accel.bvh.raycastFirst(unit, DoubleSide, 0, far);
+  const result = accel.bvh.raycastFirst(unit, DoubleSide, 0, tMax * d.length());
   return result ? { distance: result.distance, face: result.faceIndex! } : { distance: Infinity, face: -1 };
 }
 
-function ours(o: Vector3, d: Vector3, far: number): { distance: number; face: number } {
-  const distance = meshNearest(meshAccel(character), o, d, far);
-  return { distance, face: distance === Infinity ? -1 : nearestFace };
+function ours(o: Vector3, d: Vector3, tMax: number): { distance: number; face: number } {
+  const found = meshNearest(meshAccel(character), o, d, tMax);
+  expect(found).toBe(nearest.distance !== Infinity);
+  return { distance: nearest.distance, face: found ? nearest.face : -1 };
 }
 
 describe('the nearest hit on a model', () => {
@@ -43,9 +44,9 @@ describe('the nearest hit on a model', () => {
       const target = i % 2 ? new Vector3().fromArray(positions, vertex * 3) : new Vector3(along() * 0.3, along() * 0.5, along() * 0.2);
       // Unnormalized, as a shape passes its object-space direction; a far limit on some rays.
       const d = target.sub(o).multiplyScalar(0.5 + random.next());
-      const far = i % 3 === 0 ? 2.5 : Infinity;
-      const expected = threeMeshBvhNearest(o, d, far);
-      expect(ours(o, d, far)).toEqual(expected);
+      const tMax = i % 3 === 0 ? 2.5 : Infinity;
+      const expected = threeMeshBvhNearest(o, d, tMax);
+      expect(ours(o, d, tMax)).toEqual(expected);
       if (expected.distance !== Infinity) hits++;
     }
     expect(hits).toBeGreaterThan(600);

@@ -2,7 +2,7 @@ import { Box3, BufferAttribute, BufferGeometry, Vector3 } from 'three';
 import { MeshBVH, SAH } from 'three-mesh-bvh';
 import type { MeshData } from '../../scene/mesh-data.ts';
 import type { Hit } from '../hit.ts';
-import { meshNearest, nearestFace } from './mesh-nearest.ts';
+import { meshNearest, nearest } from './mesh-nearest.ts';
 import { packedRoot, type PackedRoot } from './mesh-walk.ts';
 
 /** A model's BVH, built once per model and shared by every object that uses it. */
@@ -41,15 +41,14 @@ export function meshAccel(mesh: MeshData): MeshAccel {
   return accel;
 }
 
-/** The nearest t in (0, tMax) where o + t·d meets the model, or Infinity; records the triangle in `hit.face`. */
-export function intersectMesh(accel: MeshAccel, o: Vector3, d: Vector3, tMax: number, hit: Hit): number {
-  // meshNearest measures distance along a unit direction: scale to and from it.
-  const scale = Math.sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-  const distance = meshNearest(accel, o, d, tMax * scale);
-  if (distance === Infinity) return Infinity;
-  const t = distance / scale;
+/** The nearest t in (0, hit.t) where o + t·d meets the model, or Infinity; records the triangle in `hit.face`. */
+export function intersectMesh(accel: MeshAccel, o: Vector3, d: Vector3, hit: Hit): number {
+  const tMax = hit.t;
+  if (!meshNearest(accel, o, d, tMax)) return Infinity;
+  // meshNearest measures distance along a unit direction: back to the ray as given.
+  const t = nearest.distance / Math.sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
   if (!(t > 0 && t < tMax)) return Infinity;
-  hit.face = nearestFace;
+  hit.face = nearest.face;
   return t;
 }
 

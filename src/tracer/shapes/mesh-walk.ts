@@ -12,6 +12,10 @@ import type { MeshAccel } from './mesh-accel.ts';
  * The box and triangle tests repeat `raycastFirst`'s arithmetic operation for operation (its
  * `intersectsNodeBounds`, three.js's watertight `Ray.intersectTriangle`, the distance to the
  * hit point), so the walks find exactly what it finds.
+ *
+ * The ray, its reach and the last hit's numbers live in one shared object (`ray`), not in
+ * arguments and return values: V8 allocates a box for every fractional number passed to or
+ * returned from a call it does not inline, and these calls run per node and per triangle.
  */
 
 /** The node buffers of one BVH root, read through three views as three-mesh-bvh does. */
@@ -32,23 +36,35 @@ export function isLeaf(uint16: Uint16Array, node: number): boolean {
   return uint16[node * 2 + 15] === IS_LEAF_FLAG;
 }
 
-interface UnitRay {
+interface WalkRay {
+  /** The origin and the unit direction, in the model's space. */
   ox: number;
   oy: number;
   oz: number;
   dx: number;
   dy: number;
   dz: number;
+  /** 1 / the direction, per axis, for the box tests. */
+  ix: number;
+  iy: number;
+  iz: number;
+  /** |d| of the ray as given: distances along the unit direction are t·scale. */
+  scale: number;
+  /** The greatest distance along the unit direction that counts. */
+  far: number;
+  /** The last hit `meetsTriangle` found: its distance along the unit direction, and its t for three.js's Ray.at. */
+  hitDistance: number;
+  hitParameter: number;
 }
 
-/** The ray being tested, in the model's space with a unit direction (one object, reused). */
-export const ray: UnitRay = { ox: 0, oy: 0, oz: 0, dx: 0, dy: 0, dz: 0 };
+/** The ray being walked (one object, reused). */
+export const ray: WalkRay = { ox: 0, oy: 0, oz: 0, dx: 0, dy: 0, dz: 0, ix: 0, iy: 0, iz: 0, scale: 1, far: 0, hitDistance: 0, hitParameter: 0 };
 
 /**
- * Sets `ray` to o + t·d with d made unit, as three-mesh-bvh measures distance along a unit
- * direction (Vector3.divideScalar multiplies by the reciprocal); returns |d|.
+ * Sets `ray` to o + t·d, t < tMax, with d made unit, as three-mesh-bvh measures distance
+ * along a unit direction (Vector3.divideScalar multiplies by the reciprocal).
  */
-export function setUnitRay(o: Vector3, d: Vector3): number {
+export function setWalkRay(o: Vector3, d: Vector3, tMax: number): void {
   const scale = Math.sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
   const inverseScale = 1 / scale;
   ray.ox = o.x;
@@ -57,14 +73,16 @@ export function setUnitRay(o: Vector3, d: Vector3): number {
   ray.dx = d.x * inverseScale;
   ray.dy = d.y * inverseScale;
   ray.dz = d.z * inverseScale;
-  return scale;
+  ray.ix = 1 / ray.dx;
+  ray.iy = 1 / ray.dy;
+  ray.iz = 1 / ray.dz;
+  ray.scale = scale;
+  ray.far = tMax * scale;
 }
 
-/** The ray parameter of the last hit `triangleDistance` found (three.js's t, for Ray.at). */
-export let lastHitParameter = 0;
-
-/** three-mesh-bvh's intersectsNodeBounds with near = 0, the reciprocals computed once per ray. */
-export function nodeMeets(box: Float32Array, n: number, ix: number, iy: number, iz: number, far: number): boolean {
+/** three-mesh-bvh's intersectsNodeBounds with near = 0 and far = ray.far, for node `n`'s box. */
+export function nodeMeets(box: Float32Array, n: number): boolean {
+  const { ix, iy, iz, far } = ray;
   let tmin: number;
   let tmax: number;
   let tymin: number;
@@ -102,12 +120,13 @@ export function nodeMeets(box: Float32Array, n: number, ix: number, iy: number, 
 }
 
 /**
- * The distance from the ray's origin at which it meets triangle `triangle` (BVH order), when
- * it is at most `far`, else Infinity (or NaN, which no comparison accepts, as in
- * three-mesh-bvh): Woop, Benthin & Wald, "Watertight Ray/Triangle Intersection" (JCGT 2013),
- * written as three.js's Ray.intersectTriangle without back-face culling.
+ * Whether the ray meets triangle `triangle` (BVH order) no farther than ray.far; the hit's
+ * distance from the origin (which may be NaN, which no comparison accepts, as in
+ * three-mesh-bvh) and t go into ray.hitDistance and ray.hitParameter. Woop, Benthin & Wald,
+ * "Watertight Ray/Triangle Intersection" (JCGT 2013), written as three.js's
+ * Ray.intersectTriangle without back-face culling.
  */
-export function triangleDistance(accel: MeshAccel, triangle: number, far: number): number {
+export function meetsTriangle(accel: MeshAccel, triangle: number): boolean {
   const { index, positions } = accel;
   const a = index[triangle * 3] * 3;
   const b = index[triangle * 3 + 1] * 3;
@@ -147,7 +166,7 @@ export function triangleDistance(accel: MeshAccel, triangle: number, far: number
       akx = aoy; aky = aox; bkx = boy; bky = box; ckx = coy; cky = cox;
     }
   }
-  if (dkz === 0) return Infinity;
+  if (dkz === 0) return false;
   const sx = dkx / dkz, sy = dky / dkz, sz = 1 / dkz;
   const ax = akx - sx * akz, ay = aky - sy * akz;
   const bx = bkx - sx * bkz, by = bky - sy * bkz;
@@ -155,16 +174,17 @@ export function triangleDistance(accel: MeshAccel, triangle: number, far: number
   const u = cx * by - cy * bx;
   const v = ax * cy - ay * cx;
   const w = bx * ay - by * ax;
-  if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return Infinity;
+  if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return false;
   const det = u + v + w;
-  if (det === 0) return Infinity;
+  if (det === 0) return false;
   const tScaled = sz * (u * akz + v * bkz + w * ckz);
-  if (det > 0 ? tScaled < 0 : tScaled > 0) return Infinity;
+  if (det > 0 ? tScaled < 0 : tScaled > 0) return false;
   // The hit point o + t·d and its distance from o, as Ray.at and Vector3.distanceTo compute them.
   const t = tScaled / det;
   const ex = ox - (ox + dx * t), ey = oy - (oy + dy * t), ez = oz - (oz + dz * t);
   const distance = Math.sqrt(ex * ex + ey * ey + ez * ez);
-  if (distance > far) return Infinity;
-  lastHitParameter = t;
-  return distance;
+  if (distance > ray.far) return false;
+  ray.hitDistance = distance;
+  ray.hitParameter = t;
+  return true;
 }

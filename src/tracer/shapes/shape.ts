@@ -167,7 +167,7 @@ export class Shape {
       case 'plane':
         return intersectUnitPlane(o, d, hit.t);
       case 'mesh':
-        return intersectMesh(this.accel!, o, d, hit.t, hit);
+        return intersectMesh(this.accel!, o, d, hit);
     }
   }
 }
