@@ -75,6 +75,9 @@ test('Cancel stops a big render and says so', async ({ page }) => {
   );
   await window.getByRole('button', { name: 'Render', exact: true }).click();
   await expect(window.getByText(/^Step \d+ of \d+: .+ \d+(\.\d)? %$/)).toBeVisible({ timeout: 30_000 });
+  // Cancelled once part of the picture is painted: on a busy machine the first step's text
+  // can show before its first tile is on the canvas.
+  await expect.poll(async () => (await tracedPicture(window)).colours, { timeout: 30_000 }).toBeGreaterThan(50);
   await window.getByRole('button', { name: 'Cancel' }).click();
   await expect(window.getByTestId('render-status')).toHaveText('Render cancelled.');
   await expect(window.getByRole('button', { name: 'Cancel' })).toBeDisabled();
