@@ -13,10 +13,14 @@ import type { ScreenRays } from './screen-rays.ts';
 export const PIXELS_PER_REQUEST = 64;
 
 /**
- * Requests posted before their answers are back: while the worker traces one, the main
- * thread reads the one before, which hides the round trip.
+ * Requests posted before their answers are back: the worker goes on tracing while the main
+ * thread is busy. On a CPU rasterizer the main thread waits 23–32 ms of each 50 ms frame
+ * for the 3D view's read-back, and with 2 in flight a 16 × 16 screen's third block was asked
+ * for only after that wait, so its rays often missed the next frame: a drag's p95 was
+ * 138–140 ms with the page composited on the CPU, 94–98 ms with 4 (the whole of such a
+ * screen asked for at once; docs/benchmarks.md).
  */
-export const REQUESTS_IN_FLIGHT = 2;
+export const REQUESTS_IN_FLIGHT = 4;
 
 /** What the tracer needs of a RenderPool (a test can pass a fake). */
 export type ScreenTracePool = Pick<RenderPool, 'setScene' | 'tracePixel' | 'tracePixels'>;

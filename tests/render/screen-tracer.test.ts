@@ -136,13 +136,17 @@ describe('ScreenTracer (fake pool)', () => {
   });
 
   it('asks for PIXELS_PER_REQUEST pixels a request, at most REQUESTS_IN_FLIGHT requests at a time', async () => {
-    tracer.update(sceneWithPixels(16, 10));
+    // More blocks than may be in flight, the last one short.
+    const rows = Math.ceil(((REQUESTS_IN_FLIGHT + 1) * PIXELS_PER_REQUEST) / 16) + 1;
+    const pixels = 16 * rows;
+    tracer.update(sceneWithPixels(16, rows));
     await vi.advanceTimersByTimeAsync(0);
     expect(pool.pending.size).toBe(REQUESTS_IN_FLIGHT);
     await pool.answerAll();
-    const blocks = Array.from({ length: Math.ceil(160 / PIXELS_PER_REQUEST) }, (_, i) => [i * PIXELS_PER_REQUEST, Math.min(PIXELS_PER_REQUEST, 160 - i * PIXELS_PER_REQUEST)]);
+    const blocks = Array.from({ length: Math.ceil(pixels / PIXELS_PER_REQUEST) }, (_, i) => [i * PIXELS_PER_REQUEST, Math.min(PIXELS_PER_REQUEST, pixels - i * PIXELS_PER_REQUEST)]);
+    expect(blocks.length).toBeGreaterThan(REQUESTS_IN_FLIGHT);
     expect(pool.requests.map(({ first, count }) => [first, count])).toEqual(blocks);
-    expect(published[0].traces.map((trace) => trace.pixel)).toEqual(Array.from({ length: 160 }, (_, i) => [i % 16, Math.floor(i / 16)]));
+    expect(published[0].traces.map((trace) => trace.pixel)).toEqual(Array.from({ length: pixels }, (_, i) => [i % 16, Math.floor(i / 16)]));
   });
 
   it('a newer scene waits for the running trace, which is published whole before the newer one is traced', async () => {
@@ -160,7 +164,8 @@ describe('ScreenTracer (fake pool)', () => {
   });
 
   it('reports a failed trace to onError once, and publishes nothing for that scene', async () => {
-    tracer.update(sceneWithPixels(16, 16));
+    // Twice as many blocks as may be in flight: none is asked for after the failure.
+    tracer.update(sceneWithPixels(16, (2 * REQUESTS_IN_FLIGHT * PIXELS_PER_REQUEST) / 16));
     await vi.advanceTimersByTimeAsync(0);
     const [first, second] = [...pool.pending];
     first.reject(new Error('worker died'));
