@@ -21,6 +21,10 @@ export class FrameScheduler {
   private readonly animators = new Set<Animator>();
   private pending: number | null = null;
   private disposed = false;
+  /** The timer that ends a hold (holdFor), or null when frames are not held. */
+  private hold: ReturnType<typeof setTimeout> | null = null;
+  /** Whether a frame was asked for during the hold. */
+  private heldFrame = false;
 
   /** `draw` renders one frame; it runs after the animators of that frame. */
   constructor(
@@ -28,10 +32,43 @@ export class FrameScheduler {
     private readonly host: FrameHost = browserFrames,
   ) {}
 
-  /** Schedules one frame, unless one is already scheduled. */
+  /** Schedules one frame, unless one is already scheduled (or frames are held: then at the hold's end). */
   requestRender(): void {
-    if (this.pending !== null || this.disposed) return;
+    if (this.disposed) return;
+    if (this.hold !== null) {
+      this.heldFrame = true;
+      return;
+    }
+    if (this.pending !== null) return;
     this.pending = this.host.requestFrame((timeMs) => this.frame(timeMs));
+  }
+
+  /**
+   * Draws no frame for up to `ms`, or until `release()`: a frame asked for meanwhile (or
+   * already scheduled) is drawn then. The lab holds its frames after an edit until the
+   * edit's rays arrive, so that one frame shows both (see LabView). A hold running already
+   * is not made longer, so a stream of edits still gets a frame at least every `ms`.
+   * `renderNow` still draws.
+   */
+  holdFor(ms: number): void {
+    if (this.disposed || this.hold !== null) return;
+    if (this.pending !== null) {
+      this.host.cancelFrame(this.pending);
+      this.pending = null;
+      this.heldFrame = true;
+    }
+    this.hold = setTimeout(() => this.release(), ms);
+  }
+
+  /** Ends a hold: the frame asked for during it, if any, is scheduled. */
+  release(): void {
+    if (this.hold === null) return;
+    clearTimeout(this.hold);
+    this.hold = null;
+    if (this.heldFrame) {
+      this.heldFrame = false;
+      this.requestRender();
+    }
   }
 
   /**
@@ -54,7 +91,9 @@ export class FrameScheduler {
 
   dispose(): void {
     if (this.pending !== null) this.host.cancelFrame(this.pending);
+    if (this.hold !== null) clearTimeout(this.hold);
     this.pending = null;
+    this.hold = null;
     this.animators.clear();
     this.disposed = true;
   }

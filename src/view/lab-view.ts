@@ -86,6 +86,18 @@ const COVERAGE_CHANGE = 24;
 const VIEW_FOV = 45;
 
 /**
+ * How long the view waits after an edit of the scene for the edit's rays, before it draws
+ * the edit without them. On a CPU rasterizer a frame costs about 50 ms, and the main thread
+ * waits most of it for the 3D view's read-back: drawing the edit at once made its rays, back
+ * from the screen tracer 10–20 ms later, wait for a second frame. Held until they come, one
+ * frame shows both: in five e2e runs with the page composited on the CPU, an arrow key's
+ * step went from p95 95–106 to 71–84 ms, a drag's from 64–98 to 64–68 ms and the first
+ * drag's from 103–134 to 62–72 ms (docs/benchmarks.md). A 16 × 16 screen takes about 15 ms
+ * to trace; a bigger one is drawn after this wait, and its rays when they come.
+ */
+const RAYS_WAIT_MS = 60;
+
+/**
  * The lab's 3D view: the scene from the store drawn with three.js (objects with a Phong look,
  * lights as gizmos, the ray tracer's camera and its screen), navigation, selection, the
  * transform gizmo and the flight to the tracer's camera. Draws only when something changed.
@@ -289,6 +301,7 @@ export class LabView {
 
   /** Colours the camera's screen with the traced pixels. */
   setScreenRays(rays: ScreenRays): void {
+    this.scheduler.release();
     this.screenRays = rays;
     this.cameraScreen.setScreenRays(rays);
     this.look.raysArrived();
@@ -593,7 +606,10 @@ export class LabView {
       });
     }
     if (!this.gizmo.dragging) this.updateGizmo(state);
-    if (previous && state.scene !== previous.scene) this.burst?.edited();
+    if (previous && state.scene !== previous.scene) {
+      this.burst?.edited();
+      this.scheduler.holdFor(RAYS_WAIT_MS);
+    }
     this.requestRender();
   }
 

@@ -1,4 +1,4 @@
-import { describe, expect, it } from 'vitest';
+import { afterEach, describe, expect, it, vi } from 'vitest';
 import { FrameScheduler, type FrameHost } from '../../src/view/frame-scheduler.ts';
 
 /** A frame host driven by the test: frames run only when `tick()` is called. */
@@ -95,6 +95,76 @@ describe('rendering on demand', () => {
     expect(draws).toBe(1);
     scheduler.dispose();
     scheduler.requestRender();
+    frames.tick();
+    expect(draws).toBe(1);
+  });
+});
+
+describe('holding frames back (an edit waits for its rays)', () => {
+  afterEach(() => vi.useRealTimers());
+
+  it('draws a frame asked for during a hold once it is released, and only one', () => {
+    vi.useFakeTimers();
+    const frames = manualFrames();
+    let draws = 0;
+    const scheduler = new FrameScheduler(() => draws++, frames.host);
+    scheduler.requestRender(); // scheduled before the hold: held too
+    scheduler.holdFor(60);
+    scheduler.requestRender();
+    frames.tick();
+    expect(draws).toBe(0);
+    scheduler.release();
+    scheduler.release();
+    frames.tick();
+    frames.tick();
+    expect(draws).toBe(1);
+  });
+
+  it('ends a hold by itself after its time, and draws nothing then if nothing was asked for', () => {
+    vi.useFakeTimers();
+    const frames = manualFrames();
+    let draws = 0;
+    const scheduler = new FrameScheduler(() => draws++, frames.host);
+    scheduler.holdFor(60);
+    vi.advanceTimersByTime(60);
+    frames.tick();
+    expect(draws).toBe(0);
+    scheduler.holdFor(60);
+    scheduler.requestRender();
+    vi.advanceTimersByTime(59);
+    frames.tick();
+    expect(draws).toBe(0);
+    vi.advanceTimersByTime(1);
+    frames.tick();
+    expect(draws).toBe(1);
+  });
+
+  it('is not made longer by a second hold, so a stream of edits still gets frames', () => {
+    vi.useFakeTimers();
+    const frames = manualFrames();
+    let draws = 0;
+    const scheduler = new FrameScheduler(() => draws++, frames.host);
+    for (let edit = 0; edit < 6; edit++) {
+      scheduler.holdFor(60);
+      scheduler.requestRender();
+      vi.advanceTimersByTime(20);
+      frames.tick(20);
+    }
+    // 120 ms of edits every 20 ms: the holds ended at 60 and 120 ms.
+    expect(draws).toBe(2);
+  });
+
+  it('still draws at once on renderNow, and holds nothing after dispose', () => {
+    vi.useFakeTimers();
+    const frames = manualFrames();
+    let draws = 0;
+    const scheduler = new FrameScheduler(() => draws++, frames.host);
+    scheduler.holdFor(60);
+    scheduler.renderNow(5);
+    expect(draws).toBe(1);
+    scheduler.dispose();
+    scheduler.holdFor(60);
+    vi.advanceTimersByTime(100);
     frames.tick();
     expect(draws).toBe(1);
   });
