@@ -100,50 +100,50 @@ describe('rendering on demand', () => {
   });
 });
 
+/** A scheduler on manual frames and fake timers (for holds); `draws()` counts its frames. */
+function withFakeTimers() {
+  vi.useFakeTimers();
+  const frames = manualFrames();
+  let count = 0;
+  const scheduler = new FrameScheduler(() => count++, frames.host);
+  return { frames, scheduler, draws: () => count };
+}
+
 describe('holding frames back (an edit waits for its rays)', () => {
   afterEach(() => vi.useRealTimers());
 
   it('draws a frame asked for during a hold once it is released, and only one', () => {
-    vi.useFakeTimers();
-    const frames = manualFrames();
-    let draws = 0;
-    const scheduler = new FrameScheduler(() => draws++, frames.host);
+    const { frames, scheduler, draws } = withFakeTimers();
     scheduler.requestRender(); // scheduled before the hold: held too
     scheduler.holdFor(60);
     scheduler.requestRender();
     frames.tick();
-    expect(draws).toBe(0);
+    expect(draws()).toBe(0);
     scheduler.release();
     scheduler.release();
     frames.tick();
     frames.tick();
-    expect(draws).toBe(1);
+    expect(draws()).toBe(1);
   });
 
   it('ends a hold by itself after its time, and draws nothing then if nothing was asked for', () => {
-    vi.useFakeTimers();
-    const frames = manualFrames();
-    let draws = 0;
-    const scheduler = new FrameScheduler(() => draws++, frames.host);
+    const { frames, scheduler, draws } = withFakeTimers();
     scheduler.holdFor(60);
     vi.advanceTimersByTime(60);
     frames.tick();
-    expect(draws).toBe(0);
+    expect(draws()).toBe(0);
     scheduler.holdFor(60);
     scheduler.requestRender();
     vi.advanceTimersByTime(59);
     frames.tick();
-    expect(draws).toBe(0);
+    expect(draws()).toBe(0);
     vi.advanceTimersByTime(1);
     frames.tick();
-    expect(draws).toBe(1);
+    expect(draws()).toBe(1);
   });
 
   it('is not made longer by a second hold, so a stream of edits still gets frames', () => {
-    vi.useFakeTimers();
-    const frames = manualFrames();
-    let draws = 0;
-    const scheduler = new FrameScheduler(() => draws++, frames.host);
+    const { frames, scheduler, draws } = withFakeTimers();
     for (let edit = 0; edit < 6; edit++) {
       scheduler.holdFor(60);
       scheduler.requestRender();
@@ -151,21 +151,18 @@ describe('holding frames back (an edit waits for its rays)', () => {
       frames.tick(20);
     }
     // 120 ms of edits every 20 ms: the holds ended at 60 and 120 ms.
-    expect(draws).toBe(2);
+    expect(draws()).toBe(2);
   });
 
   it('still draws at once on renderNow, and holds nothing after dispose', () => {
-    vi.useFakeTimers();
-    const frames = manualFrames();
-    let draws = 0;
-    const scheduler = new FrameScheduler(() => draws++, frames.host);
+    const { frames, scheduler, draws } = withFakeTimers();
     scheduler.holdFor(60);
     scheduler.renderNow(5);
-    expect(draws).toBe(1);
+    expect(draws()).toBe(1);
     scheduler.dispose();
     scheduler.holdFor(60);
     vi.advanceTimersByTime(100);
     frames.tick();
-    expect(draws).toBe(1);
+    expect(draws()).toBe(1);
   });
 });
