@@ -124,6 +124,11 @@ export class WhittedIntegrator {
     this.lastBlocker = scene.lights.map(() => null);
   }
 
+  /** How far a shadow ray may stray from its ideal segment: it covers the rays' ε offsets at both ends (see ShadowCone). */
+  private get shadowMargin(): number {
+    return 4 * this.scene.epsilon;
+  }
+
   /** Keys the random numbers of the coming sample by (seed, pixel, sample). */
   startPixelSample(seed: number, x: number, y: number, sample: number): void {
     this.sampleKey = hashKey(seed, x, y, sample);
@@ -252,7 +257,7 @@ export class WhittedIntegrator {
     // from it: every ray into the solid's inside meets its far side before the light. So
     // when rendering it is blocked by the solid itself, with no test (a recorded tree tests
     // it, to show its nearest blocker). A plane seen from behind has no inside.
-    const insideSelf = node === null && shadows && shape.convex && shape.solid && !frame.entering && boxesApart(shape.worldBounds, light.extent, 4 * this.scene.epsilon);
+    const insideSelf = node === null && shadows && shape.convex && shape.solid && !frame.entering && boxesApart(shape.worldBounds, light.extent, this.shadowMargin);
     const { x: lr, y: lg, z: lb } = light.color;
     // pow(max(R·V, 0), n) can only be 0 when R·V ≤ 0 (and n > 0), and the highlight is 0
     // whenever ks or the light's specular factor is: pow is skipped there.
@@ -371,8 +376,7 @@ export class WhittedIntegrator {
       frame.candidateCount = -1;
       return;
     }
-    // The margin covers the shadow rays' ε offsets at both ends (see ShadowCone).
-    const margin = 4 * this.scene.epsilon;
+    const margin = this.shadowMargin;
     if (rendering) {
       // Rendering: a patch's list, gathered again only when the hit leaves both cubes.
       const half = PATCH_HALF_IN_PIXELS * this.pixelSpread * frame.pathLength;

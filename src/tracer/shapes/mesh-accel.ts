@@ -3,7 +3,7 @@ import { MeshBVH, SAH } from 'three-mesh-bvh';
 import type { MeshData } from '../../scene/mesh-data.ts';
 import type { Hit } from '../hit.ts';
 import { meshNearest, nearest } from './mesh-nearest.ts';
-import { packedRoot, type PackedRoot } from './mesh-walk.ts';
+import { packedRoot, type PackedRoot, ray } from './mesh-walk.ts';
 
 /** A model's BVH, built once per model and shared by every object that uses it. */
 export interface MeshAccel {
@@ -45,8 +45,8 @@ export function meshAccel(mesh: MeshData): MeshAccel {
 export function intersectMesh(accel: MeshAccel, o: Vector3, d: Vector3, hit: Hit): number {
   const tMax = hit.t;
   if (!meshNearest(accel, o, d, tMax)) return Infinity;
-  // meshNearest measures distance along a unit direction: back to the ray as given.
-  const t = nearest.distance / Math.sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  // meshNearest measures distance along a unit direction: back to the ray as given (|d| is the walk's scale).
+  const t = nearest.distance / ray.scale;
   if (!(t > 0 && t < tMax)) return Infinity;
   hit.face = nearest.face;
   return t;
