@@ -25,6 +25,8 @@ export class FrameScheduler {
   private hold: ReturnType<typeof setTimeout> | null = null;
   /** Whether a frame was asked for during the hold. */
   private heldFrame = false;
+  /** Set by release(): the next frame shows what a hold waited for, so no new hold delays it. */
+  private releasedFrame = false;
 
   /** `draw` renders one frame; it runs after the animators of that frame. */
   constructor(
@@ -47,11 +49,14 @@ export class FrameScheduler {
    * Draws no frame for up to `ms`, or until `release()`: a frame asked for meanwhile (or
    * already scheduled) is drawn then. The lab holds its frames after an edit until the
    * edit's rays arrive, so that one frame shows both (see LabView). A hold running already
-   * is not made longer, so a stream of edits still gets a frame at least every `ms`.
+   * is not made longer, so a stream of edits still gets a frame at least every `ms`; nor
+   * does a hold start between a release and the frame it lets through: an edit that came
+   * before the previous edit's rays were drawn would otherwise hold them back again, and
+   * edits faster than the rays' round trip would starve the view of rays.
    * `renderNow` still draws.
    */
   holdFor(ms: number): void {
-    if (this.disposed || this.hold !== null) return;
+    if (this.disposed || this.hold !== null || this.releasedFrame) return;
     if (this.pending !== null) {
       this.host.cancelFrame(this.pending);
       this.pending = null;
@@ -60,15 +65,21 @@ export class FrameScheduler {
     this.hold = setTimeout(() => this.release(), ms);
   }
 
-  /** Ends a hold: the frame asked for during it, if any, is scheduled. */
+  /**
+   * What frames were held for has come (or the hold ran out): the frame asked for during the
+   * hold, if any, is scheduled, and no hold delays the frame scheduled now (ask for the
+   * frame first, then release).
+   */
   release(): void {
-    if (this.hold === null) return;
-    clearTimeout(this.hold);
-    this.hold = null;
-    if (this.heldFrame) {
-      this.heldFrame = false;
-      this.requestRender();
+    if (this.hold !== null) {
+      clearTimeout(this.hold);
+      this.hold = null;
+      if (this.heldFrame) {
+        this.heldFrame = false;
+        this.requestRender();
+      }
     }
+    this.releasedFrame = this.pending !== null;
   }
 
   /**
@@ -100,6 +111,7 @@ export class FrameScheduler {
 
   private frame(timeMs: number): void {
     this.pending = null;
+    this.releasedFrame = false;
     let moving = false;
     // A copy: an animator may remove itself (a finished flight) while we iterate.
     for (const animator of [...this.animators]) {

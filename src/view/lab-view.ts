@@ -301,11 +301,13 @@ export class LabView {
 
   /** Colours the camera's screen with the traced pixels. */
   setScreenRays(rays: ScreenRays): void {
-    this.scheduler.release();
     this.screenRays = rays;
     this.cameraScreen.setScreenRays(rays);
     this.look.raysArrived();
     this.requestRender();
+    // After asking for the frame: the rays an edit's hold waited for are drawn in it, and the
+    // next edit's hold does not delay it.
+    this.scheduler.release();
   }
 
   /** Shows the drawn rays (replacing any before), animates them and picks them for hover. */

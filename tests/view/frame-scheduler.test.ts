@@ -154,6 +154,31 @@ describe('holding frames back (an edit waits for its rays)', () => {
     expect(draws()).toBe(2);
   });
 
+  it('does not hold again, for the next edit, a frame released for the rays it waited for', () => {
+    const { frames, scheduler, draws } = withFakeTimers();
+    scheduler.holdFor(60);
+    scheduler.requestRender();
+    scheduler.release(); // the edit's rays
+    scheduler.holdFor(60); // the next edit, before the frame that draws them
+    scheduler.requestRender();
+    frames.tick();
+    expect(draws()).toBe(1);
+    // Once that frame is drawn, an edit holds frames again.
+    scheduler.holdFor(60);
+    scheduler.requestRender();
+    frames.tick();
+    expect(draws()).toBe(1);
+  });
+
+  it('does not hold a frame for rays that came with no hold running', () => {
+    const { frames, scheduler, draws } = withFakeTimers();
+    scheduler.requestRender(); // rays arrive after a hold ran out
+    scheduler.release();
+    scheduler.holdFor(60);
+    frames.tick();
+    expect(draws()).toBe(1);
+  });
+
   it('still draws at once on renderNow, and holds nothing after dispose', () => {
     const { frames, scheduler, draws } = withFakeTimers();
     scheduler.holdFor(60);
