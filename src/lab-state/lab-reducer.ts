@@ -1,6 +1,7 @@
 import { createLight, createObject } from '../scene/scene-defaults.ts';
 import { lightSchema, parseScene } from '../scene/scene-schema.ts';
 import type { Light, Scene } from '../scene/scene.ts';
+import { sameValue } from '../util/same-value.ts';
 import type { DeclaredView, LabAction } from './lab-action.ts';
 import { type LabState, BVH_MAX_DEPTH, DEFAULT_BVH_VIEW, DEFAULT_GIZMO, DEFAULT_RAY_VIEW } from './lab-state.ts';
 
@@ -41,8 +42,10 @@ export function reduce(state: LabState, action: LabAction): Reduction {
     case 'object.deleted':
       return withScene(deselect(state, action.id), { ...state.scene, objects: state.scene.objects.filter((o) => o.id !== action.id) }, objectExists(state, action.id));
     case 'object.changed':
+      if (keepsAll(findObject(state, action.id), action.changes)) return { state };
       return withScene(state, mapObject(state.scene, action.id, (o) => ({ ...o, ...action.changes })), objectExists(state, action.id));
     case 'material.changed':
+      if (keepsAll(findObject(state, action.id)?.material, action.changes)) return { state };
       return withScene(state, mapObject(state.scene, action.id, (o) => ({ ...o, material: { ...o.material, ...action.changes } })), objectExists(state, action.id));
     case 'light.added': {
       const light = createLight(action.lightType, state.scene);
@@ -52,10 +55,13 @@ export function reduce(state: LabState, action: LabAction): Reduction {
     case 'light.deleted':
       return withScene(deselect(state, action.id), { ...state.scene, lights: state.scene.lights.filter((l) => l.id !== action.id) }, lightExists(state, action.id));
     case 'light.changed':
+      if (keepsAll(state.scene.lights.find((l) => l.id === action.id), action.changes)) return { state };
       return withScene(state, { ...state.scene, lights: state.scene.lights.map((l) => (l.id === action.id ? changeLight(l, action.changes) : l)) }, lightExists(state, action.id));
     case 'camera.changed':
+      if (keepsAll(state.scene.camera, action.changes)) return { state };
       return withScene(state, { ...state.scene, camera: { ...state.scene.camera, ...action.changes } });
     case 'settings.changed':
+      if (keepsAll(state.scene.settings, action.changes)) return { state };
       return withScene(state, { ...state.scene, settings: { ...state.scene.settings, ...action.changes } });
     case 'pixel.selected': {
       const [x, y] = action.pixel;
@@ -112,6 +118,20 @@ function withScene(state: LabState, scene: Scene, precondition?: string): Reduct
   const [columns, rows] = parsed.scene.camera.pixels;
   if (next.selectedPixel && (next.selectedPixel[0] >= columns || next.selectedPixel[1] >= rows)) next.selectedPixel = null;
   return { state: next };
+}
+
+/**
+ * Whether `changes` would leave `target` as it is: then the scene is kept as it is, so the
+ * view, the tracer and the render see no change. A slider's commit repeats the value its
+ * last `input` sent (an arrow key sends both at once), which would otherwise trace the
+ * camera's screen, and draw the 3D view, twice per step.
+ */
+function keepsAll(target: object | undefined, changes: object): boolean {
+  return target !== undefined && Object.entries(changes).every(([key, value]) => sameValue((target as Record<string, unknown>)[key], value));
+}
+
+function findObject(state: LabState, id: string): Scene['objects'][number] | undefined {
+  return state.scene.objects.find((o) => o.id === id);
 }
 
 function mapObject(scene: Scene, id: string, change: (o: Scene['objects'][number]) => Scene['objects'][number]): Scene {

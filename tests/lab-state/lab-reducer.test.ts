@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import type { LabAction } from '../../src/lab-state/lab-action.ts';
 import { Store } from '../../src/lab-state/store.ts';
 import { DEFAULT_GIZMO, DEFAULT_RAY_VIEW, initialState } from '../../src/lab-state/lab-state.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
@@ -25,6 +26,30 @@ describe('the store and its named actions', () => {
     expect(store.sceneRevision).toBe(1);
     // A change back is still a change: the scene on show was made from another revision.
     store.dispatch({ type: 'material.changed', id: 'red-ball', changes: { color: [1, 0, 0] } });
+    expect(store.sceneRevision).toBe(2);
+  });
+
+  it('keeps the scene as it is for a change to the values it has (a slider\'s commit after its last input)', () => {
+    const store = newStore();
+    const seen: string[] = [];
+    store.subscribe((_, action) => seen.push(action.type));
+    store.dispatch({ type: 'material.changed', id: 'red-ball', changes: { shininess: 80 } });
+    const changed = store.state;
+    const same: LabAction[] = [
+      { type: 'material.changed', id: 'red-ball', changes: { shininess: 80 } },
+      { type: 'object.changed', id: 'red-ball', changes: { position: [...changed.scene.objects.find((o) => o.id === 'red-ball')!.position] } },
+      { type: 'camera.changed', changes: { pixels: [...changed.scene.camera.pixels] } },
+      { type: 'settings.changed', changes: { supersampling: changed.scene.settings.supersampling } },
+      { type: 'light.changed', id: changed.scene.lights[0].id, changes: { intensity: changed.scene.lights[0].intensity } },
+    ];
+    for (const action of same) expect(store.dispatch(action), action.type).toBeUndefined();
+    expect(store.state).toBe(changed);
+    expect(store.sceneRevision).toBe(1);
+    // The listeners still hear every action (the timing log records the commit).
+    expect(seen).toEqual(['material.changed', ...same.map((action) => action.type)]);
+    // A value that differs in one element of a list is a change.
+    const [x, y, z] = changed.scene.objects.find((o) => o.id === 'red-ball')!.position;
+    store.dispatch({ type: 'object.changed', id: 'red-ball', changes: { position: [x, y, z + 0.5] } });
     expect(store.sceneRevision).toBe(2);
   });
 
