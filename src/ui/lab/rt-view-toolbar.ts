@@ -75,9 +75,11 @@ export class RtViewToolbar extends LitElement {
       padding: 3px;
       border: 1px solid var(--rt-border);
       border-radius: 10px;
-      background: color-mix(in srgb, var(--rt-surface) 88%, transparent);
+      /* Nearly opaque, with no backdrop blur: a blurred group is blurred again from the 3D
+         view under it at every frame the view draws, and on a CPU compositor (SwiftShader)
+         the six groups' blur cost 18 ms of a 116 ms frame (docs/benchmarks.md, ninth round). */
+      background: color-mix(in srgb, var(--rt-surface) 94%, transparent);
       box-shadow: 0 2px 8px rgb(0 0 0 / 0.12);
-      backdrop-filter: blur(6px);
     }
     .pad {
       flex-direction: column;
