@@ -1,5 +1,6 @@
 /**
- * The drawn rays: one InstancedMesh of unit cylinders for every ray and one of unit
+ * The drawn rays: one InstancedMesh of ribbons for every ray (each placed by a unit
+ * cylinder's matrix, and turned to the eye by its shader) and one of unit
  * pyramids for the cones (merged area-light rays, wide glossy fans), so drawing 50k rays takes the same two draw
  * calls as drawing 10 (DESIGN.md: "the view draws, it does not decide" — the rules are in
  * ray-visibility.ts). Per instance: a matrix (position, axis, radius, length), a colour,
@@ -10,7 +11,6 @@
  */
 import {
   BufferGeometry,
-  CylinderGeometry,
   Float32BufferAttribute,
   Group,
   InstancedBufferAttribute,
@@ -27,9 +27,6 @@ import { RayExtras } from './ray-extras.ts';
 import { ALPHA_ATTRIBUTE, createRayMaterial, DASH_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, type TravelUniform, type ViewHeightUniform } from './ray-shader.ts';
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
 import { RAY_COLOR_KEYS, RAY_DASHES } from './ray-palette.ts';
-
-/** Sides of a ray's cylinder: rays are a few pixels wide, where 6 sides already look round. */
-const RADIAL_SEGMENTS = 6;
 
 /** Instances allocated at first; the buffers double from there as needed. */
 const INITIAL_CAPACITY = 256;
@@ -143,7 +140,7 @@ class InstanceBuffers {
   }
 
   private createMesh(capacity: number, material: Material): InstancedMesh {
-    const geometry = this.kind === 'cone' ? pyramidGeometry() : cylinderGeometry();
+    const geometry = this.kind === 'cone' ? pyramidGeometry() : ribbonGeometry();
     geometry.setAttribute(ALPHA_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity), 1));
     geometry.setAttribute(GROWTH_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity * 2), 2));
     if (this.kind === 'cylinder') geometry.setAttribute(DASH_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity * 2), 2));
@@ -162,9 +159,14 @@ class InstanceBuffers {
   }
 }
 
-/** A ray's cylinder: radius 1, from z = 0 to z = 1, open (the ends are never seen at ray widths). */
-function cylinderGeometry(): BufferGeometry {
-  return new CylinderGeometry(1, 1, 1, RADIAL_SEGMENTS, 1, true).rotateX(Math.PI / 2).translate(0, 0, 0.5);
+/**
+ * A ray's ribbon: x = ±1 across it, z from 0 to 1 along it. The vertex shader turns it to
+ * face the eye at the width of the instance's cylinder (ray-shader.ts): the instances keep
+ * a cylinder's matrix (axis and radius), and 2 triangles do what a six-sided cylinder's 12 did.
+ */
+function ribbonGeometry(): BufferGeometry {
+  const positions = [-1, 0, 0, 1, 0, 0, -1, 0, 1, 1, 0, 1];
+  return new BufferGeometry().setAttribute('position', new Float32BufferAttribute(positions, 3)).setIndex([0, 1, 2, 2, 1, 3]);
 }
 
 /**

@@ -4,12 +4,17 @@
  * - `aAlpha`: the instance's opacity (the built-in instanceColor is RGB only);
  * - `aGrowth` = (start, length) in metres of travel: the growth animation. The vertex
  *   shader scales the instance by clamp((uTravel − start) / length, 0, 1), where uTravel =
- *   elapsed time × speed is the one uniform that changes per frame. Cylinders grow along
- *   their axis (local z); cones are scaled as a whole about their apex;
- * - a minimum width on screen: a cylinder thinner than RAY_MIN_WIDTH_PX at its depth is
+ *   elapsed time × speed is the one uniform that changes per frame. Rays grow along their
+ *   axis (local z); cones are scaled as a whole about their apex;
+ * - a ray is a ribbon turned to face the eye (ray-pool.ts ribbonGeometry): its two long
+ *   edges lie on either side of the axis, perpendicular to both the axis and the line of
+ *   sight, so it covers what a cylinder of its radius would. An unlit ray looks the same
+ *   either way, and a CPU rasterizer draws 2 long thin triangles instead of a six-sided
+ *   cylinder's 6 in front (docs/benchmarks.md, ninth round);
+ * - a minimum width on screen: a ray thinner than RAY_MIN_WIDTH_PX at its depth is
  *   widened to it, so a 1 cm ray stays visible in a scene seen from 10 m (uViewHeight is the
  *   canvas height in CSS px, set before each draw);
- * - `aDash` = (dash, gap) in metres along a cylinder (0: solid; ray-palette.ts RAY_DASHES):
+ * - `aDash` = (dash, gap) in metres along a ray (0: solid; ray-palette.ts RAY_DASHES):
  *   the fragment shader discards the gaps, measured from the ray's start.
  *
  * Two variants draw one pixel's rays more plainly (ray-extras.ts), from the cylinders' own
@@ -74,17 +79,30 @@ float headLength = min(${ARROW_LENGTH_PX.toFixed(1)} * rayPixel, 0.5 * rayLength
 float headRadius = 0.5 * ${ARROW_WIDTH_PX.toFixed(1)} * rayPixel * headLength / (${ARROW_LENGTH_PX.toFixed(1)} * rayPixel);
 transformed = vec3(position.xy * headRadius / rayRadius, ${ARROW_AT.toFixed(2)} * rayGrown + position.z * headLength / rayLength);
 #else
-transformed.z *= rayGrown;
+// The ribbon's vertex: position.z along the grown axis, position.x = ±1 across it.
+vec3 rayPointView = (modelViewMatrix * instanceMatrix * vec4(0.0, 0.0, position.z * rayGrown, 1.0)).xyz;
+vec3 rayAxisView = (modelViewMatrix * instanceMatrix * vec4(0.0, 0.0, 1.0, 0.0)).xyz;
 // A pixel at view depth d spans 2 d tan(fov / 2) / H, and projectionMatrix[1][1] = 1 / tan(fov / 2).
-vec4 rayAxisView = modelViewMatrix * instanceMatrix * vec4(0.0, 0.0, transformed.z, 1.0);
-float rayPixel = 2.0 * max(-rayAxisView.z, 1e-4) / (projectionMatrix[1][1] * max(uViewHeight, 1.0));
+float rayPixel = 2.0 * max(-rayPointView.z, 1e-4) / (projectionMatrix[1][1] * max(uViewHeight, 1.0));
 float rayRadius = length((modelViewMatrix * instanceMatrix * vec4(1.0, 0.0, 0.0, 0.0)).xyz);
-transformed.xy *= max(1.0, 0.5 * ${RAY_MIN_WIDTH_PX.toFixed(1)} * rayPixel / max(rayRadius, 1e-9));
+// Across the axis and across the line of sight from the eye (the view's origin) to the point.
+vec3 raySide = cross(rayAxisView, rayPointView);
+// Seen straight along its axis a ray shows no length, only its width: any side will do.
+if (dot(raySide, raySide) <= 1e-12 * dot(rayAxisView, rayAxisView) * dot(rayPointView, rayPointView)) raySide = cross(rayAxisView, abs(rayAxisView.y) < 0.9 * length(rayAxisView) ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0));
+vec3 rayViewPosition = rayPointView + normalize(raySide) * position.x * max(rayRadius, 0.5 * ${RAY_MIN_WIDTH_PX.toFixed(1)} * rayPixel);
 vRayDash = ${DASH_ATTRIBUTE};
 // Metres from the ray's start: local z (0..1) times the length the instance matrix gives the axis.
 vRayAlong = position.z * length(instanceMatrix[2].xyz);
 #endif
 vRayAlpha = ${ALPHA_ATTRIBUTE};`;
+
+/** A ribbon's vertex is placed in view space already (VERTEX_GROW); cones and arrowheads go through three's own projection. */
+const VERTEX_PROJECT = /* glsl */ `#if defined(RAY_CONE) || defined(RAY_ARROW)
+#include <project_vertex>
+#else
+vec4 mvPosition = vec4(rayViewPosition, 1.0);
+gl_Position = projectionMatrix * mvPosition;
+#endif`;
 
 const FRAGMENT_HEAD = /* glsl */ `#include <common>
 varying float vRayAlpha;
@@ -118,7 +136,8 @@ export function patchRayShader(
 ): void {
   shader.uniforms.uTravel = travel;
   shader.uniforms.uViewHeight = viewHeight;
-  shader.vertexShader = patch(patch(shader.vertexShader, '#include <common>', VERTEX_HEAD), '#include <begin_vertex>', VERTEX_GROW);
+  const vertex = patch(patch(shader.vertexShader, '#include <common>', VERTEX_HEAD), '#include <begin_vertex>', VERTEX_GROW);
+  shader.vertexShader = patch(vertex, '#include <project_vertex>', VERTEX_PROJECT);
   shader.fragmentShader = patch(patch(shader.fragmentShader, '#include <common>', FRAGMENT_HEAD), '#include <color_fragment>', FRAGMENT_ALPHA);
 }
 
@@ -144,6 +163,12 @@ export function createRayMaterial(kind: 'cylinder' | 'cone' | 'arrow' | 'hidden'
     material.defines = { RAY_HIDDEN: '' };
     material.depthFunc = GreaterDepth;
     material.depthWrite = false;
+  }
+  if (kind === 'cylinder' || kind === 'hidden') {
+    // A ribbon turns to the eye, so which of its faces is in front depends on the view:
+    // both are drawn, in one pass.
+    material.side = DoubleSide;
+    material.forceSinglePass = true;
   }
   material.onBeforeCompile = (shader) => patchRayShader(shader, travel, viewHeight);
   material.onBeforeRender = (renderer) => {

@@ -258,13 +258,16 @@ describe('RayPool growth animation', () => {
     const viewHeight = { value: 768 };
     patchRayShader(shader, uniform, viewHeight);
     expect(shader.vertexShader).toContain(`attribute vec2 ${GROWTH_ATTRIBUTE}`);
-    expect(shader.vertexShader).toMatch(/transformed\.z \*= rayGrown/);
+    expect(shader.vertexShader).toContain('vec4(0.0, 0.0, position.z * rayGrown, 1.0)');
+    // A ray is placed in view space by its own code; three's projection stays for cones and arrowheads.
+    expect(shader.vertexShader).toContain('gl_Position = projectionMatrix * mvPosition');
+    expect(shader.vertexShader).toMatch(/#if defined\(RAY_CONE\) \|\| defined\(RAY_ARROW\)\n#include <project_vertex>/);
     expect(shader.fragmentShader).toContain('diffuseColor.a *= vRayAlpha');
-    expect(shader.vertexShader).toContain('transformed.xy *= max(1.0, 0.5 * 3.0 * rayPixel');
+    expect(shader.vertexShader).toContain('position.x * max(rayRadius, 0.5 * 3.0 * rayPixel)');
     expect(shader.vertexShader).toContain(`attribute vec2 ${DASH_ATTRIBUTE}`);
     expect(shader.fragmentShader).toMatch(/mod\(vRayAlong, vRayDash\.x \+ vRayDash\.y\) > vRayDash\.x\) discard/);
     expect(shader.uniforms).toEqual({ uTravel: uniform, uViewHeight: viewHeight });
-    expect(() => patchRayShader({ vertexShader: 'void main() {}', fragmentShader: '', uniforms: {} }, uniform, viewHeight)).toThrow(/begin_vertex|common/);
+    expect(() => patchRayShader({ vertexShader: 'void main() {}', fragmentShader: '', uniforms: {} }, uniform, viewHeight)).toThrow(/begin_vertex|common|project_vertex/);
   });
 });
 
