@@ -1,10 +1,12 @@
 import type { Vector3 } from 'three';
+import { FOUND, REACH, type UnitSpan } from './unit-span.ts';
 
 /**
  * The unit cube, 1×1×1 centred on the origin (slab test in object space; the exit
- * distance is the hit when the ray starts inside). The nearest t in (0, tMax), or Infinity.
+ * distance is the hit when the ray starts inside). Whether a t in (0, span[REACH]) meets
+ * it; the nearest goes to span[FOUND].
  */
-export function intersectUnitBox(o: Vector3, d: Vector3, tMax: number): number {
+export function intersectUnitBox(o: Vector3, d: Vector3, span: UnitSpan): boolean {
   let inv = 1 / d.x;
   let t0 = (-0.5 - o.x) * inv;
   let t1 = (0.5 - o.x) * inv;
@@ -20,9 +22,11 @@ export function intersectUnitBox(o: Vector3, d: Vector3, tMax: number): number {
   t1 = (0.5 - o.z) * inv;
   near = Math.max(near, Math.min(t0, t1));
   far = Math.min(far, Math.max(t0, t1));
-  if (!(near <= far) || far <= 0) return Infinity;
+  if (!(near <= far) || far <= 0) return false;
   const t = near > 0 ? near : far;
-  return t < tMax ? t : Infinity;
+  if (!(t < span[REACH])) return false;
+  span[FOUND] = t;
+  return true;
 }
 
 /** The outward normal of the face a point p of the unit cube lies on: the axis it lies farthest out on. */

@@ -1,10 +1,12 @@
 import type { Vector3 } from 'three';
+import { FOUND, REACH, type UnitSpan } from './unit-span.ts';
 
 /**
  * The unit capped cylinder: radius 0.5, height 1, axis Y, centred on the origin.
- * The nearest t in (0, tMax), or Infinity.
+ * Whether a t in (0, span[REACH]) meets it; the nearest goes to span[FOUND].
  */
-export function intersectUnitCylinder(o: Vector3, d: Vector3, tMax: number): number {
+export function intersectUnitCylinder(o: Vector3, d: Vector3, span: UnitSpan): boolean {
+  const tMax = span[REACH];
   let best = tMax;
   // Side: x² + z² = r² with |y| ≤ 0.5 (half-b quadratic).
   const a = d.x * d.x + d.z * d.z;
@@ -23,7 +25,9 @@ export function intersectUnitCylinder(o: Vector3, d: Vector3, tMax: number): num
     best = nearerCapHit((-0.5 - o.y) / d.y, o, d, best);
     best = nearerCapHit((0.5 - o.y) / d.y, o, d, best);
   }
-  return best < tMax ? best : Infinity;
+  if (!(best < tMax)) return false;
+  span[FOUND] = best;
+  return true;
 }
 
 /** The outward normal at p: a cap when p is nearer a cap's plane (0.5 − |y|) than the side (0.5 − radius). */

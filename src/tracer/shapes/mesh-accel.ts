@@ -4,6 +4,7 @@ import type { MeshData } from '../../scene/mesh-data.ts';
 import type { Hit } from '../hit.ts';
 import { meshNearest, nearest } from './mesh-nearest.ts';
 import { packedRoot, type PackedRoot, ray } from './mesh-walk.ts';
+import { FOUND, REACH, type UnitSpan } from './unit-span.ts';
 
 /** A model's BVH, built once per model and shared by every object that uses it. */
 export interface MeshAccel {
@@ -41,15 +42,19 @@ export function meshAccel(mesh: MeshData): MeshAccel {
   return accel;
 }
 
-/** The nearest t in (0, hit.t) where o + t·d meets the model, or Infinity; records the triangle in `hit.face`. */
-export function intersectMesh(accel: MeshAccel, o: Vector3, d: Vector3, hit: Hit): number {
-  const tMax = hit.t;
-  if (!meshNearest(accel, o, d, tMax)) return Infinity;
+/**
+ * Whether o + t·d meets the model for a t in (0, span[REACH]): the nearest such t goes to
+ * span[FOUND] (unit-span.ts) and its triangle to `hit.face`.
+ */
+export function intersectMesh(accel: MeshAccel, o: Vector3, d: Vector3, hit: Hit, span: UnitSpan): boolean {
+  const tMax = span[REACH];
+  if (!meshNearest(accel, o, d, tMax)) return false;
   // meshNearest measures distance along a unit direction: back to the ray as given (|d| is the walk's scale).
   const t = nearest.distance / ray.scale;
-  if (!(t > 0 && t < tMax)) return Infinity;
+  if (!(t > 0 && t < tMax)) return false;
   hit.face = nearest.face;
-  return t;
+  span[FOUND] = t;
+  return true;
 }
 
 const a = new Vector3();

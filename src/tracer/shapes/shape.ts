@@ -9,12 +9,14 @@ import { intersectMesh, type MeshAccel, meshNormals } from './mesh-accel.ts';
 import { meshOccludes } from './mesh-occlusion.ts';
 import { intersectUnitPlane, unitPlaneNormal } from './plane.ts';
 import { intersectUnitSphere, unitSphereNormal } from './sphere.ts';
+import { FOUND, REACH, unitSpan } from './unit-span.ts';
 
 // Scratch vectors at module scope: intersection runs millions of times per render, and
 // allocation per test would dominate (three.js does the same in its hot paths).
 const localOrigin = new Vector3();
 const localDirection = new Vector3();
 const corner = new Vector3();
+const span = unitSpan();
 
 const UNIT_BOUNDS = new Box3(new Vector3(-0.5, -0.5, -0.5), new Vector3(0.5, 0.5, 0.5));
 const PLANE_BOUNDS = new Box3(new Vector3(-0.5, 0, -0.5), new Vector3(0.5, 0, 0.5));
@@ -90,8 +92,9 @@ export class Shape {
   intersect(ray: Ray, hit: Hit): boolean {
     if (!rayMeetsBox(ray, this.bounds, 0, hit.t)) return false;
     this.toLocal(ray);
-    const t = this.intersectLocal(localOrigin, localDirection, hit);
-    if (t === Infinity) return false;
+    span[REACH] = hit.t;
+    if (!this.intersectLocal(localOrigin, localDirection, hit)) return false;
+    const t = span[FOUND];
     hit.t = t;
     hit.shape = this;
     hit.local.copy(localDirection).multiplyScalar(t).add(localOrigin);
@@ -103,18 +106,18 @@ export class Shape {
    * than 0), exactly when `intersect` would record a hit, without finding the nearest one.
    */
   occludes(ray: Ray): boolean {
-    const tMax = ray.far;
-    if (!rayMeetsBox(ray, this.bounds, 0, tMax)) return false;
+    if (!rayMeetsBox(ray, this.bounds, 0, ray.far)) return false;
     this.toLocal(ray);
+    span[REACH] = ray.far;
     switch (this.kind) {
       case 'sphere':
-        return intersectUnitSphere(localOrigin, localDirection, tMax) !== Infinity;
+        return intersectUnitSphere(localOrigin, localDirection, span);
       case 'box':
-        return intersectUnitBox(localOrigin, localDirection, tMax) !== Infinity;
+        return intersectUnitBox(localOrigin, localDirection, span);
       case 'cylinder':
-        return intersectUnitCylinder(localOrigin, localDirection, tMax) !== Infinity;
+        return intersectUnitCylinder(localOrigin, localDirection, span);
       case 'plane':
-        return intersectUnitPlane(localOrigin, localDirection, tMax) !== Infinity;
+        return intersectUnitPlane(localOrigin, localDirection, span);
       case 'mesh':
         return meshOccludes(this.accel!, localOrigin, localDirection, ray);
     }
@@ -155,19 +158,19 @@ export class Shape {
     hit.normal.applyMatrix3(this.normalToWorld).normalize();
   }
 
-  /** The nearest t in (0, hit.t) where the object-space ray o + t·d meets the unit shape, or Infinity. */
-  private intersectLocal(o: Vector3, d: Vector3, hit: Hit): number {
+  /** Whether the object-space ray o + t·d meets the shape for a t in (0, span[REACH]); the nearest such t goes to span[FOUND]. */
+  private intersectLocal(o: Vector3, d: Vector3, hit: Hit): boolean {
     switch (this.kind) {
       case 'sphere':
-        return intersectUnitSphere(o, d, hit.t);
+        return intersectUnitSphere(o, d, span);
       case 'box':
-        return intersectUnitBox(o, d, hit.t);
+        return intersectUnitBox(o, d, span);
       case 'cylinder':
-        return intersectUnitCylinder(o, d, hit.t);
+        return intersectUnitCylinder(o, d, span);
       case 'plane':
-        return intersectUnitPlane(o, d, hit.t);
+        return intersectUnitPlane(o, d, span);
       case 'mesh':
-        return intersectMesh(this.accel!, o, d, hit);
+        return intersectMesh(this.accel!, o, d, hit, span);
     }
   }
 }
