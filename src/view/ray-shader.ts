@@ -89,7 +89,10 @@ float rayRadius = length((modelViewMatrix * instanceMatrix * vec4(1.0, 0.0, 0.0,
 vec3 raySide = cross(rayAxisView, rayPointView);
 // Seen straight along its axis a ray shows no length, only its width: any side will do.
 if (dot(raySide, raySide) <= 1e-12 * dot(rayAxisView, rayAxisView) * dot(rayPointView, rayPointView)) raySide = cross(rayAxisView, abs(rayAxisView.y) < 0.9 * length(rayAxisView) ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0));
-vec3 rayViewPosition = rayPointView + normalize(raySide) * position.x * max(rayRadius, 0.5 * ${RAY_MIN_WIDTH_PX.toFixed(1)} * rayPixel);
+// A ray of length 0 has no side at all: its ribbon stays a point (normalize would give NaN).
+float raySideLength = length(raySide);
+vec3 rayAcross = raySideLength > 0.0 ? raySide / raySideLength : vec3(0.0);
+vec3 rayViewPosition = rayPointView + rayAcross * position.x * max(rayRadius, 0.5 * ${RAY_MIN_WIDTH_PX.toFixed(1)} * rayPixel);
 vRayDash = ${DASH_ATTRIBUTE};
 // Metres from the ray's start: local z (0..1) times the length the instance matrix gives the axis.
 vRayAlong = position.z * length(instanceMatrix[2].xyz);
