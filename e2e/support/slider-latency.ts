@@ -17,6 +17,8 @@ export interface SliderLatencyFigures {
   lastDrawn: boolean;
   /** Steps no frame ever showed (neither their value nor a later one). */
   undrawn: number;
+  /** Frames that showed new rays before the last step: rays kept coming while the slider moved. */
+  shownDuring: number;
 }
 
 /**
@@ -43,5 +45,6 @@ export function sliderLatencyOf({ inputs, frames }: { inputs: SliderInput[]; fra
     maxMs: round(sorted.at(-1) ?? NaN),
     lastDrawn: steps.length > 0 && frames.at(-1)?.value === steps.at(-1)!.value,
     undrawn,
+    shownDuring: steps.length > 0 ? frames.filter((frame) => frame.at < steps.at(-1)!.at).length : 0,
   };
 }
