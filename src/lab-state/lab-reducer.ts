@@ -42,11 +42,9 @@ export function reduce(state: LabState, action: LabAction): Reduction {
     case 'object.deleted':
       return withScene(deselect(state, action.id), { ...state.scene, objects: state.scene.objects.filter((o) => o.id !== action.id) }, objectExists(state, action.id));
     case 'object.changed':
-      if (keepsAll(findObject(state, action.id), action.changes)) return { state };
-      return withScene(state, mapObject(state.scene, action.id, (o) => ({ ...o, ...action.changes })), objectExists(state, action.id));
+      return withChange(state, mapObject(state.scene, action.id, (o) => ({ ...o, ...action.changes })), objectExists(state, action.id));
     case 'material.changed':
-      if (keepsAll(findObject(state, action.id)?.material, action.changes)) return { state };
-      return withScene(state, mapObject(state.scene, action.id, (o) => ({ ...o, material: { ...o.material, ...action.changes } })), objectExists(state, action.id));
+      return withChange(state, mapObject(state.scene, action.id, (o) => ({ ...o, material: { ...o.material, ...action.changes } })), objectExists(state, action.id));
     case 'light.added': {
       const light = createLight(action.lightType, state.scene);
       const next = withScene(state, { ...state.scene, lights: [...state.scene.lights, light] });
@@ -55,14 +53,11 @@ export function reduce(state: LabState, action: LabAction): Reduction {
     case 'light.deleted':
       return withScene(deselect(state, action.id), { ...state.scene, lights: state.scene.lights.filter((l) => l.id !== action.id) }, lightExists(state, action.id));
     case 'light.changed':
-      if (keepsAll(state.scene.lights.find((l) => l.id === action.id), action.changes)) return { state };
-      return withScene(state, { ...state.scene, lights: state.scene.lights.map((l) => (l.id === action.id ? changeLight(l, action.changes) : l)) }, lightExists(state, action.id));
+      return withChange(state, { ...state.scene, lights: state.scene.lights.map((l) => (l.id === action.id ? changeLight(l, action.changes) : l)) }, lightExists(state, action.id));
     case 'camera.changed':
-      if (keepsAll(state.scene.camera, action.changes)) return { state };
-      return withScene(state, { ...state.scene, camera: { ...state.scene.camera, ...action.changes } });
+      return withChange(state, { ...state.scene, camera: { ...state.scene.camera, ...action.changes } });
     case 'settings.changed':
-      if (keepsAll(state.scene.settings, action.changes)) return { state };
-      return withScene(state, { ...state.scene, settings: { ...state.scene.settings, ...action.changes } });
+      return withChange(state, { ...state.scene, settings: { ...state.scene.settings, ...action.changes } });
     case 'pixel.selected': {
       const [x, y] = action.pixel;
       const [columns, rows] = state.scene.camera.pixels;
@@ -108,6 +103,20 @@ function applyView(state: LabState, view: DeclaredView): Reduction {
   return chosen.error ? { state: next } : chosen;
 }
 
+/**
+ * A change of the scene's values (the `*.changed` actions): one that leaves every value as
+ * it is keeps the current scene object, so the view, the tracer and the render see no change.
+ * A slider's commit repeats the value its last `input` sent, and an arrow key sends both at
+ * once: a new scene object traced the camera's screen, and drew the 3D view, twice per step.
+ * The changed scene shares the untouched objects of the old one, so the comparison passes
+ * them by identity. (A loaded scene is new even with the same values: listeners take it as
+ * a fresh start.)
+ */
+function withChange(state: LabState, scene: Scene, precondition?: string): Reduction {
+  if (!precondition && sameValue(scene, state.scene)) return { state };
+  return withScene(state, scene, precondition);
+}
+
 /** Validates the new scene; keeps the old state with the reasons when it is invalid. */
 function withScene(state: LabState, scene: Scene, precondition?: string): Reduction {
   if (precondition) return { state, error: precondition };
@@ -118,20 +127,6 @@ function withScene(state: LabState, scene: Scene, precondition?: string): Reduct
   const [columns, rows] = parsed.scene.camera.pixels;
   if (next.selectedPixel && (next.selectedPixel[0] >= columns || next.selectedPixel[1] >= rows)) next.selectedPixel = null;
   return { state: next };
-}
-
-/**
- * Whether `changes` would leave `target` as it is: then the scene is kept as it is, so the
- * view, the tracer and the render see no change. A slider's commit repeats the value its
- * last `input` sent (an arrow key sends both at once), which would otherwise trace the
- * camera's screen, and draw the 3D view, twice per step.
- */
-function keepsAll(target: object | undefined, changes: object): boolean {
-  return target !== undefined && Object.entries(changes).every(([key, value]) => sameValue((target as Record<string, unknown>)[key], value));
-}
-
-function findObject(state: LabState, id: string): Scene['objects'][number] | undefined {
-  return state.scene.objects.find((o) => o.id === id);
 }
 
 function mapObject(scene: Scene, id: string, change: (o: Scene['objects'][number]) => Scene['objects'][number]): Scene {
