@@ -1,13 +1,13 @@
 /** Advances something animated to `timeMs`; returns true while it needs more frames. */
 export type Animator = (timeMs: number) => boolean;
 
-/** The browser's frame hook, injectable so the scheduler runs (and is tested) without a page. */
+/** The browser's frame hook, injectable so the scheduler (and the controls' FrameThrottle) runs and is tested without a page. */
 export interface FrameHost {
   requestFrame(callback: (timeMs: number) => void): number;
   cancelFrame(handle: number): void;
 }
 
-const browserFrames: FrameHost = {
+export const browserFrames: FrameHost = {
   requestFrame: (callback) => requestAnimationFrame(callback),
   cancelFrame: (handle) => cancelAnimationFrame(handle),
 };

@@ -1,27 +1,6 @@
 import { afterEach, describe, expect, it, vi } from 'vitest';
-import { FrameScheduler, type FrameHost } from '../../src/view/frame-scheduler.ts';
-
-/** A frame host driven by the test: frames run only when `tick()` is called. */
-function manualFrames() {
-  let queue: ((time: number) => void)[] = [];
-  let time = 0;
-  const host: FrameHost = {
-    requestFrame: (callback) => queue.push(callback),
-    cancelFrame: () => {
-      queue = [];
-    },
-  };
-  return {
-    host,
-    pending: () => queue.length,
-    tick(ms = 16) {
-      time += ms;
-      const run = queue;
-      queue = [];
-      for (const callback of run) callback(time);
-    },
-  };
-}
+import { FrameScheduler } from '../../src/view/frame-scheduler.ts';
+import { manualFrames } from '../support/manual-frames.ts';
 
 describe('rendering on demand', () => {
   it('draws once per request, however many requests a frame gets, and nothing when idle', () => {

@@ -1,13 +1,4 @@
-/** The browser's frame hook, injectable so the throttle is tested without a page. */
-export interface ThrottleFrames {
-  request(callback: () => void): number;
-  cancel(handle: number): void;
-}
-
-const browserFrames: ThrottleFrames = {
-  request: (callback) => requestAnimationFrame(callback),
-  cancel: (handle) => cancelAnimationFrame(handle),
-};
+import { browserFrames, type FrameHost } from '../../view/frame-scheduler.ts';
 
 /**
  * Passes on the values of a dragged control (a slider's or colour picker's `input` events):
@@ -29,7 +20,7 @@ export class FrameThrottle<T> {
 
   constructor(
     private readonly send: (value: T) => void,
-    private readonly frames: ThrottleFrames = browserFrames,
+    private readonly frames: FrameHost = browserFrames,
   ) {}
 
   /** Sends `value` now if none was sent since the last frame; else at the next frame, replacing any value still waiting. */
@@ -39,13 +30,13 @@ export class FrameThrottle<T> {
       return;
     }
     // The window opens before the value goes out, so a push made while it is being sent waits.
-    this.frame = this.frames.request(() => this.flush());
+    this.frame = this.frames.requestFrame(() => this.flush());
     this.send(value);
   }
 
   /** Drops a waiting value (a commit replaces it, or the element left the page). */
   cancel(): void {
-    if (this.frame) this.frames.cancel(this.frame);
+    if (this.frame) this.frames.cancelFrame(this.frame);
     this.frame = 0;
     this.pending = null;
   }
