@@ -1,7 +1,8 @@
-import type { MeshLibrary } from '../scene/mesh-data.ts';
+import type { MeshData, MeshLibrary } from '../scene/mesh-data.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';
 import type { Scene } from '../scene/scene.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
+import type { InlineScreenTracer } from './inline-screen-tracer.ts';
 import { DEFAULT_SEED } from './render-job.ts';
 import type { RenderPool } from './render-pool.ts';
 import type { ScreenRays } from './screen-rays.ts';
@@ -28,15 +29,20 @@ export type ScreenTracePool = Pick<RenderPool, 'setScene' | 'tracePixel' | 'trac
 export type ScreenRaysListener = (rays: ScreenRays) => void;
 
 /**
- * Traces every pixel of the camera's screen (camera.pixels) off the main thread whenever
- * the scene changes, latest wins: at once when idle, else right after the running trace,
- * with the newest scene that arrived meanwhile (the ones in between are never traced). A
- * running trace is never dropped: a step therefore waits at most one trace plus its own
- * (≤ 2 traces), where dropping it for a newer scene and keeping only the replacement cost up
- * to 2 traces plus the dropped one's lost pixels during a drag (p95 131–195 ms against
- * the ≤ 100 ms goal in the slider benchmark). The last value is always traced. Each finished
- * screen is published to the subscribers as ScreenRays, with the seed the render window
- * uses, so the trees match the rendered image.
+ * Traces every pixel of the camera's screen (camera.pixels) whenever the scene changes,
+ * latest wins, and publishes each finished screen to the subscribers as ScreenRays, with the
+ * seed the render window uses, so the trees match the rendered image. The last value is
+ * always traced.
+ *
+ * - A cheap screen is traced at once, inside `update` (given an inline tracer, see
+ *   inline-screen-tracer.ts): its rays are drawn in the frame that shows the edit.
+ * - Any other goes to the pool's worker: at once when idle, else right after the running
+ *   trace, with the newest scene that arrived meanwhile (the ones in between are never
+ *   traced). A running trace is never dropped: a step therefore waits at most one trace plus
+ *   its own (≤ 2 traces), where dropping it for a newer scene and keeping only the
+ *   replacement cost up to 2 traces plus the dropped one's lost pixels during a drag (p95
+ *   131–195 ms against the ≤ 100 ms goal in the slider benchmark). A worker's screen that
+ *   comes back after a newer scene was traced inline is not published.
  *
  * The pool is the caller's: give the tracer its own (one worker is enough, e.g.
  * `createBrowserRenderPool(1)`), so traces never wait behind a full render's tiles, and
@@ -46,10 +52,18 @@ export class ScreenTracer {
   /** Told when a screen cannot be traced (a model fails to load, a worker dies); default: the console. */
   onError: (error: Error) => void = (error) => console.error(error);
   private scene: Scene | null = null;
-  /** The newest scene, not traced yet. */
-  private pending: Scene | null = null;
+  /** Scenes given to `update` so far: a trace is published only if it is of a newer one than the last published. */
+  private updates = 0;
+  private publishedUpdate = 0;
+  /** The newest scene, not traced yet, and its number among the updates. */
+  private pending: { scene: Scene; update: number } | null = null;
   private running = false;
   private latest: ScreenRays | null = null;
+  /** Whether `latest` was traced inline (then the ray debugger's pixel is too). */
+  private latestInline = false;
+  private inline: InlineScreenTracer | null = null;
+  /** Every model loaded so far, by name (a name always means the same model). */
+  private readonly models = new Map<string, MeshData>();
   private readonly listeners = new Set<ScreenRaysListener>();
   private disposed = false;
 
@@ -63,20 +77,45 @@ export class ScreenTracer {
     return this.latest;
   }
 
-  /** Traces `scene` now, or after the running trace unless a newer one arrives first; the same object again is ignored. */
+  /**
+   * From now on traces the screens `inline` affords where `update` is called; the lab gives it
+   * one when its 3D view loads (the tracer's code comes with the view's, not with the first page).
+   */
+  traceInline(inline: InlineScreenTracer): void {
+    this.inline = inline;
+    inline.prepare(this.models);
+  }
+
+  /**
+   * Traces `scene`: now if it is cheap (see traceInline), else in the worker at once or after
+   * the running trace unless a newer one arrives first. The same object again is ignored.
+   */
   update(scene: Scene): void {
     if (this.disposed || scene === this.scene) return;
     this.scene = scene;
-    this.pending = scene;
+    const update = ++this.updates;
+    if (this.inline?.affords(scene, this.models)) {
+      this.pending = null;
+      this.traceInlineNow(this.inline, scene, update);
+      return;
+    }
+    this.pending = { scene, update };
     this.startPending();
   }
 
   /**
-   * Pixel (x, y)'s tree with every hit's shading terms (the ray debugger), in the scene last
-   * sent to the pool, so with the rays of the screen published for it (the seed is the same).
+   * Pixel (x, y)'s tree with every hit's shading terms (the ray debugger), in the scene of
+   * the latest published screen, so with its rays (the seed is the same).
    */
   traceWithTerms(x: number, y: number): Promise<PixelTrace> {
     if (this.disposed || !this.latest) return Promise.reject(new Error('the camera’s screen has not been traced yet'));
+    if (this.latestInline && this.inline) {
+      try {
+        return Promise.resolve(this.inline.traceWithTerms(x, y));
+      } catch (error) {
+        return Promise.reject(error instanceof Error ? error : new Error(String(error)));
+      }
+    }
     return this.pool.tracePixel(x, y, DEFAULT_SEED, true);
   }
 
@@ -94,23 +133,36 @@ export class ScreenTracer {
     this.listeners.clear();
   }
 
-  /** Traces the pending scene unless a trace is running (its end comes back here). */
+  private traceInlineNow(inline: InlineScreenTracer, scene: Scene, update: number): void {
+    let rays: ScreenRays;
+    try {
+      rays = inline.trace(scene, this.models);
+    } catch (error) {
+      this.reportError(error);
+      return;
+    }
+    this.publish(rays, update, true);
+  }
+
+  /** Traces the pending scene in the worker unless a trace is running (its end comes back here). */
   private startPending(): void {
-    const scene = this.pending;
-    if (!scene || this.disposed || this.running) return;
+    const pending = this.pending;
+    if (!pending || this.disposed || this.running) return;
     this.pending = null;
     this.running = true;
-    void this.trace(scene).finally(() => {
+    void this.trace(pending.scene, pending.update).finally(() => {
       this.running = false;
       this.startPending();
     });
   }
 
-  private async trace(scene: Scene): Promise<void> {
+  private async trace(scene: Scene, update: number): Promise<void> {
     let rays: ScreenRays;
     try {
       const meshes = await this.loadMeshes(meshNamesInScene(scene));
       if (this.disposed) return;
+      for (const [name, mesh] of meshes) this.models.set(name, mesh);
+      this.inline?.prepare(meshes);
       this.pool.setScene(scene, meshes);
       const [columns, rows] = scene.camera.pixels;
       const traces = new Array<PixelTrace>(columns * rows);
@@ -135,11 +187,19 @@ export class ScreenTracer {
       if (this.disposed) return;
       rays = { columns, rows, traces, scene };
     } catch (error) {
-      // Not for a scene already replaced: a newer one is waiting.
-      if (!this.disposed && this.pending === null) this.reportError(error);
+      // Not for a scene already replaced: a newer one is waiting or was traced.
+      if (!this.disposed && update === this.updates) this.reportError(error);
       return;
     }
+    this.publish(rays, update, false);
+  }
+
+  /** Gives `rays` to the subscribers, unless a newer update's rays went out already. */
+  private publish(rays: ScreenRays, update: number, inline: boolean): void {
+    if (this.disposed || update < this.publishedUpdate) return;
+    this.publishedUpdate = update;
     this.latest = rays;
+    this.latestInline = inline;
     for (const listener of [...this.listeners]) {
       try {
         listener(rays);

@@ -1,8 +1,9 @@
-import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
+import { afterEach, beforeAll, beforeEach, describe, expect, it, vi } from 'vitest';
 import { pathToFileURL } from 'node:url';
 import { DEFAULT_SEED } from '../../src/render/render-job.ts';
 import { RenderPool } from '../../src/render/render-pool.ts';
 import type { ScreenRays } from '../../src/render/screen-rays.ts';
+import { InlineScreenTracer } from '../../src/render/inline-screen-tracer.ts';
 import { PIXELS_PER_REQUEST, REQUESTS_IN_FLIGHT, ScreenTracer, type ScreenTracePool } from '../../src/render/screen-tracer.ts';
 import { createNodeRenderPool, createNodeWorkerPort } from '../../src/cli/node-worker-port.ts';
 import { loadMeshesFromDisk } from '../../src/scene/load-meshes-node.ts';
@@ -233,6 +234,114 @@ describe('ScreenTracer (fake pool)', () => {
     await pool.answerAll();
     expect(errors.map((error) => error.message)).toEqual(['listener bug']);
     expect(after).toHaveLength(1);
+  });
+});
+
+describe('ScreenTracer with an inline tracer (fake pool)', () => {
+  let pool: FakePool;
+  let tracer: ScreenTracer;
+  let inline: InlineScreenTracer;
+  let idle: (() => void)[];
+  let published: ScreenRays[];
+  let errors: Error[];
+  let prism: MeshLibrary;
+  /** The default scene's 16 × 16 screen: cheap enough to trace inline. */
+  const cheap = (intensity = 1): Scene => {
+    const scene = sceneWithPixels(16, 16);
+    return { ...scene, lights: scene.lights.map((light) => ({ ...light, intensity })) };
+  };
+  /** The same with 4 × 4 supersampling: too dear, so the worker's. */
+  const dear = (): Scene => {
+    const scene = cheap();
+    return { ...scene, settings: { ...scene.settings, supersampling: 4 } };
+  };
+
+  beforeAll(async () => {
+    prism = await loadMeshesFromDisk(['prism']);
+  });
+
+  beforeEach(() => {
+    vi.useFakeTimers();
+    pool = new FakePool();
+    idle = [];
+    inline = new InlineScreenTracer((callback) => void idle.push(callback));
+    // Resolved at once, as a fake timer's advance cannot wait for the disk.
+    tracer = new ScreenTracer(pool, (names) => Promise.resolve(new Map(names.map((name) => [name, prism.get(name)!]))));
+    published = [];
+    errors = [];
+    tracer.onError = (error) => errors.push(error);
+    tracer.subscribe((rays) => published.push(rays));
+    tracer.traceInline(inline);
+  });
+
+  afterEach(() => {
+    tracer.dispose();
+    vi.useRealTimers();
+  });
+
+  it('traces a cheap screen inside update, with the trees the core gives, and the debugger’s pixel too', async () => {
+    const scene = cheap(0.8);
+    tracer.update(scene);
+    // Published before update returned: no worker, no await.
+    expect(published).toHaveLength(1);
+    expect(pool.scenes).toEqual([]);
+    const core = buildTracerScene(scene, NO_MESHES);
+    expect(published[0].scene).toBe(scene);
+    expect(published[0].traces[37]).toEqual(tracePixel(core, 5, 2, DEFAULT_SEED));
+    // The fake pool refuses single pixels: the debugger's trace is the inline one.
+    expect(await tracer.traceWithTerms(5, 2)).toEqual(tracePixel(core, 5, 2, DEFAULT_SEED, { terms: true }));
+  });
+
+  it('sends a dear screen to the worker, and the debugger’s pixel with it', async () => {
+    tracer.update(dear());
+    expect(published).toEqual([]);
+    await vi.advanceTimersByTimeAsync(0);
+    expect(pool.scenes).toHaveLength(1);
+    await pool.answerAll();
+    expect(published).toHaveLength(1);
+    await expect(tracer.traceWithTerms(0, 0)).rejects.toThrow(/in blocks/);
+  });
+
+  it('does not publish a worker’s screen that comes back after a newer scene was traced inline', async () => {
+    const newer = cheap(0.5);
+    tracer.update(dear());
+    await vi.advanceTimersByTimeAsync(0);
+    tracer.update(newer);
+    expect(published.map((rays) => rays.scene)).toEqual([newer]);
+    await pool.answerAll();
+    expect(published.map((rays) => rays.scene)).toEqual([newer]);
+    expect(tracer.rays?.scene).toBe(newer);
+    expect(pool.scenes).toHaveLength(1); // nothing was waiting for the worker
+    expect(errors).toEqual([]);
+  });
+
+  it('traces a scene with a model in the worker until the model is loaded and its BVH built, then inline', async () => {
+    const base = cheap();
+    const withPrism = (x: number): Scene => ({ ...base, objects: [...base.objects, { ...base.objects[1], id: 'prism', shape: 'mesh', mesh: 'prism', position: [x, 0.5, 2] }] });
+    tracer.update(withPrism(0.5));
+    await vi.advanceTimersByTimeAsync(0);
+    await pool.answerAll();
+    expect(pool.scenes).toHaveLength(1);
+    expect(published).toHaveLength(1);
+    expect(idle).toHaveLength(1); // the prism's BVH waits for an idle moment
+    tracer.update(withPrism(0.6));
+    await vi.advanceTimersByTimeAsync(0);
+    await pool.answerAll();
+    expect(pool.scenes).toHaveLength(2);
+    idle.splice(0).forEach((build) => build());
+    const later = withPrism(0.7);
+    tracer.update(later);
+    expect(published.at(-1)?.scene).toBe(later);
+    expect(pool.scenes).toHaveLength(2);
+  });
+
+  it('reports an inline trace that throws, and publishes nothing for it', () => {
+    vi.spyOn(inline, 'trace').mockImplementation(() => {
+      throw new Error('inline bug');
+    });
+    tracer.update(cheap());
+    expect(errors.map((error) => error.message)).toEqual(['inline bug']);
+    expect(published).toEqual([]);
   });
 });
 
