@@ -29,7 +29,9 @@ export interface LabServicesOptions {
  * pool for full images, a one-worker pool and the screen tracer that traces the camera's
  * pixels, the ray pool that draws their rays and the BVH boxes.
  *
- * - A new scene is traced again (at once, or after the running trace; latest wins) and its boxes redrawn.
+ * - A new scene is traced again (a cheap screen at once, on the main thread once the 3D view
+ *   has loaded; else in the worker, at once or after the running trace, latest wins) and its
+ *   boxes redrawn.
  * - New rays, ray options or a picked pixel redraw the rays; the view draws on demand.
  * - Listeners hear when the screen's rays change (the flat preview shows them).
  *
@@ -91,14 +93,20 @@ export class LabServices {
 
   /**
    * Draws into `view` from now on (the 3D view loads after the lab's first render): loads and
-   * makes the three.js layers the first time, and draws what is there already.
+   * makes the three.js layers the first time (and lets the screen tracer trace cheap screens
+   * inline: its code comes with them), and draws what is there already.
    */
   async attachView(view: LabViewPort): Promise<void> {
-    const [{ RayPool }, { BvhBoxes }] = await Promise.all([import('../view/ray-pool.ts'), import('../view/bvh-boxes.ts')]);
+    const [{ RayPool }, { BvhBoxes }, { InlineScreenTracer }] = await Promise.all([
+      import('../view/ray-pool.ts'),
+      import('../view/bvh-boxes.ts'),
+      import('../render/inline-screen-tracer.ts'),
+    ]);
     if (this.disposed) return;
     if (!this.layers) {
       this.layers = { rays: new RayPool(), boxes: new BvhBoxes(() => this.view?.requestRender(), this.loadMeshes) };
       this.layers.rays.setFocus(this.focus);
+      this.tracer.traceInline(new InlineScreenTracer());
     }
     this.view = view;
     view.setRayLayer(this.layers.rays);

@@ -73,7 +73,7 @@ describe('LabServices: the lab wired apart from any page', () => {
     expect(services.renderPool).toBe(pools[0]);
   });
 
-  it('traces the store\'s scene at once on the screen pool; a view attached later (the 3D view loads after the panels) gets its rays, listeners hear the next ones', async () => {
+  it('traces the store\'s scene at once on the screen pool; a view attached later (the 3D view loads after the panels) gets its rays, listeners hear the next ones, traced inline', async () => {
     await vi.advanceTimersByTimeAsync(1);
     const { view, calls, rays } = fakeView();
     expect(services.drawn.rays).toBe(0);
@@ -89,6 +89,10 @@ describe('LabServices: the lab wired apart from any page', () => {
     const heard: ScreenRays[] = [];
     services.subscribe((screen) => heard.push(screen));
     services.store.dispatch({ type: 'camera.changed', changes: { fov: 50 } });
+    // With the view came the inline tracer: the default screen is cheap, so its rays are
+    // traced inside the dispatch (in the edit's frame), not by the screen pool's worker.
+    expect(heard).toHaveLength(1);
+    expect(pools[1]!.scenes).toHaveLength(1);
     await vi.advanceTimersByTimeAsync(1);
     expect(heard).toHaveLength(1);
     expect(rays()).toBe(heard[0]);
