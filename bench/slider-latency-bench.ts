@@ -1,8 +1,8 @@
 /**
  * Slider to rays (issue: tracer speed, "interactive edits": ≤ 100 ms at the 95th
  * percentile on a 16×16 screen, without skipping the last value). A Node proxy of the lab,
- * wired as LabServices wires it (the store, the screen tracer on one worker thread, the ray
- * pool; LabServices itself loads models through the browser), so it measures everything
+ * wired as LabServices wires it (the store, the screen tracer with its inline tracer and one
+ * worker thread, the ray pool; LabServices itself loads models through the browser), so it measures everything
  * from the store's dispatch to the ray pool's new instance buffers and leaves out the
  * browser's parts: the panels' update and the GPU's frame.
  *
@@ -16,6 +16,7 @@
 import { createNodeRenderPool } from '../src/cli/node-worker-port.ts';
 import { initialState } from '../src/lab-state/lab-state.ts';
 import { Store } from '../src/lab-state/store.ts';
+import { InlineScreenTracer } from '../src/render/inline-screen-tracer.ts';
 import { ScreenTracer } from '../src/render/screen-tracer.ts';
 import { defaultScene } from '../src/scene/scene-defaults.ts';
 import type { Scene } from '../src/scene/scene.ts';
@@ -52,52 +53,50 @@ function percentile(values: number[], p: number): number {
   return sorted[Math.min(sorted.length - 1, Math.ceil(p * sorted.length) - 1)];
 }
 
-/** `steps` moves of the first object's x, `everyMs` apart; the rays' scene is the one the screen pool was last given. */
+/** `steps` moves of the first object's x, `everyMs` apart; the rays' scene is the one the last published screen was traced in. */
 async function moveSlider(services: Lab, sceneOfRays: () => Scene | null, steps: number, everyMs: number): Promise<SliderLatency> {
   const dispatched: { scene: Scene; at: number }[] = [];
-  const drawnAt: (number | undefined)[] = [];
-  const stop = services.subscribe(() => {
-    const now = performance.now();
-    const index = dispatched.findIndex(({ scene }) => scene === sceneOfRays());
-    for (let i = 0; i <= index; i++) drawnAt[i] ??= now;
-  });
+  // What each published screen showed, and when: a cheap screen is published inside the dispatch, before it returns.
+  const shown: { scene: Scene | null; at: number }[] = [];
+  const stop = services.subscribe(() => shown.push({ scene: sceneOfRays(), at: performance.now() }));
+  const drawnAt = (step: number): number | undefined =>
+    shown.find(({ scene }) => dispatched.findIndex((sent) => sent.scene === scene) >= step)?.at;
   const object = services.store.state.scene.objects[0];
   for (let i = 0; i < steps; i++) {
+    const at = performance.now();
     services.store.dispatch({ type: 'object.changed', id: object.id, changes: { position: [object.position[0] + 0.01 * (i + 1), object.position[1], object.position[2]] } });
-    dispatched.push({ scene: services.store.state.scene, at: performance.now() });
+    dispatched.push({ scene: services.store.state.scene, at });
     await sleep(everyMs);
   }
   const deadline = performance.now() + 10_000;
-  while (drawnAt[steps - 1] === undefined && performance.now() < deadline) await sleep(5);
+  while (drawnAt(steps - 1) === undefined && performance.now() < deadline) await sleep(5);
   stop();
-  const latencies = dispatched.map(({ at }, i) => (drawnAt[i] ?? Infinity) - at);
+  const latencies = dispatched.map(({ at }, i) => (drawnAt(i) ?? Infinity) - at);
   const round = (ms: number) => Number(ms.toFixed(1));
   return {
     steps,
     p50Ms: round(percentile(latencies, 0.5)),
     p95Ms: round(percentile(latencies, 0.95)),
     maxMs: round(Math.max(...latencies)),
-    lastDrawn: drawnAt[steps - 1] !== undefined,
+    lastDrawn: drawnAt(steps - 1) !== undefined,
   };
 }
 
 export async function measureSliderLatency(): Promise<SliderBenchResults> {
   const pool = createNodeRenderPool(1);
   let sceneOfRays: Scene | null = null;
-  const setScene = pool.setScene.bind(pool);
-  pool.setScene = (scene, meshes) => {
-    sceneOfRays = scene;
-    setScene(scene, meshes);
-  };
   const store = new Store(initialState(defaultScene()));
   const tracer = new ScreenTracer(pool, loadMeshesFromDisk);
   const rayPool = new RayPool();
   const listeners = new Set<() => void>();
   tracer.subscribe((rays) => {
+    sceneOfRays = rays.scene ?? null;
     rayPool.update(rays, store.state.rays, store.state.selectedPixel);
     for (const listener of listeners) listener();
   });
   const stopStore = store.subscribe((state) => tracer.update(state.scene));
+  // As the lab does once its 3D view has loaded: cheap screens are traced inside the dispatch.
+  tracer.traceInline(new InlineScreenTracer());
   const lab: Lab = { store, subscribe: (listener) => (listeners.add(listener), () => listeners.delete(listener)) };
   try {
     store.dispatch({ type: 'camera.changed', changes: { pixels: [16, 16] } });
