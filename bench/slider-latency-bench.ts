@@ -2,9 +2,9 @@
  * Slider to rays (issue: tracer speed, "interactive edits": ≤ 100 ms at the 95th
  * percentile on a 16×16 screen, without skipping the last value). A Node proxy of the lab,
  * wired as LabServices wires it (the store, the screen tracer with its inline tracer and one
- * worker thread, the ray pool; LabServices itself loads models through the browser), so it measures everything
- * from the store's dispatch to the ray pool's new instance buffers and leaves out the
- * browser's parts: the panels' update and the GPU's frame.
+ * worker thread, the ray pool; LabServices itself loads models through the browser), so it
+ * measures everything from the store's dispatch to the ray pool's new instance buffers and
+ * leaves out the browser's parts: the panels' update and the GPU's frame.
  *
  * A step's latency runs from its dispatch to the first rays drawn from a scene at least as
  * new as it (a later step's rays also show it). Two ways of moving a slider: a drag (a step
