@@ -6,7 +6,7 @@
 import type { MeshData } from '../src/scene/mesh-data.ts';
 import { emptyRayStats } from '../src/tracer/ray-tree.ts';
 import { renderTile } from '../src/tracer/render-tile.ts';
-import { tracePixel } from '../src/tracer/trace-pixel.ts';
+import { tracePixel, tracePixels } from '../src/tracer/trace-pixel.ts';
 import { buildTracerScene, type TracerScene } from '../src/tracer/tracer-scene.ts';
 import { nextTask } from './next-task.ts';
 import type {
@@ -77,9 +77,7 @@ export function createRenderHandler(post: PostResponse): (request: RenderRequest
       if (!Number.isInteger(first) || !Number.isInteger(count) || first < 0 || count < 1 || first + count > columns * rows) {
         throw new RangeError(`pixels ${first} to ${first + count - 1} are not on the ${columns}×${rows} screen`);
       }
-      const traces = [];
-      for (let index = first; index < first + count; index++) traces.push(tracePixel(tracer, index % columns, Math.floor(index / columns), seed));
-      post({ type: 'pixels-traced', requestId, traces }, []);
+      post({ type: 'pixels-traced', requestId, traces: tracePixels(tracer, first, count, seed) }, []);
     } catch (error) {
       fail({ type: 'trace-pixels', requestId }, error);
     }

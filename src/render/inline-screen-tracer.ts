@@ -3,7 +3,7 @@ import { meshNamesInScene } from '../scene/mesh-names.ts';
 import type { Scene } from '../scene/scene.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
 import { meshAccel } from '../tracer/shapes/mesh-accel.ts';
-import { tracePixel } from '../tracer/trace-pixel.ts';
+import { tracePixel, tracePixels } from '../tracer/trace-pixel.ts';
 import { buildTracerScene, type TracerScene } from '../tracer/tracer-scene.ts';
 import { estimateRender } from './render-estimate.ts';
 import { DEFAULT_SEED } from './render-job.ts';
@@ -30,7 +30,7 @@ const whenIdle: (callback: () => void) => void =
  * docs/benchmarks.md). Only cheap screens (INLINE_RAY_BUDGET) whose models' BVHs are built
  * already come here; the rest, and every full render, stay in the workers.
  *
- * The trees are the worker's to the bit: the same tracePixel with the same seed.
+ * The trees are the worker's to the bit: the same tracePixels with the same seed.
  */
 export class InlineScreenTracer {
   /** The scene last traced here, built: the ray debugger's pixel is traced in it. */
@@ -70,8 +70,7 @@ export class InlineScreenTracer {
   trace(scene: Scene, models: MeshLibrary): ScreenRays {
     const built = buildTracerScene(scene, models);
     const [columns, rows] = scene.camera.pixels;
-    const traces = new Array<PixelTrace>(columns * rows);
-    for (let index = 0; index < traces.length; index++) traces[index] = tracePixel(built, index % columns, Math.floor(index / columns), DEFAULT_SEED);
+    const traces = tracePixels(built, 0, columns * rows, DEFAULT_SEED);
     this.built = built;
     return { columns, rows, traces, scene };
   }

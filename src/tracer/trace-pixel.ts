@@ -32,3 +32,15 @@ export function tracePixel(scene: TracerScene, px: number, py: number, seed: num
   integrator.childWeights.clear();
   return { pixel: [px, py], color: [Math.fround(color.x), Math.fround(color.y), Math.fround(color.z)], rays: roots };
 }
+
+/**
+ * Pixels `first` … `first + count - 1` of the camera's screen (row-major over
+ * `camera.pixels`), each as tracePixel gives it: the lab's screen, whether a worker traces it
+ * in blocks or the main thread traces it whole.
+ */
+export function tracePixels(scene: TracerScene, first: number, count: number, seed: number): PixelTrace[] {
+  const columns = scene.source.camera.pixels[0];
+  const traces = new Array<PixelTrace>(count);
+  for (let i = 0; i < count; i++) traces[i] = tracePixel(scene, (first + i) % columns, Math.floor((first + i) / columns), seed);
+  return traces;
+}
