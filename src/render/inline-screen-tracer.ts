@@ -2,7 +2,7 @@ import type { MeshData, MeshLibrary } from '../scene/mesh-data.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';
 import type { Scene } from '../scene/scene.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
-import { meshAccel } from '../tracer/shapes/mesh-accel.ts';
+import { hasMeshAccel, meshAccel } from '../tracer/shapes/mesh-accel.ts';
 import { tracePixel, tracePixels } from '../tracer/trace-pixel.ts';
 import { buildTracerScene, type TracerScene } from '../tracer/tracer-scene.ts';
 import { estimateRender } from './render-estimate.ts';
@@ -35,19 +35,18 @@ const whenIdle: (callback: () => void) => void =
 export class InlineScreenTracer {
   /** The scene last traced here, built: the ray debugger's pixel is traced in it. */
   private built: TracerScene | null = null;
-  /** Models whose BVH is built here (built in an idle moment by prepare, never inside an edit). */
-  private readonly prepared = new WeakSet<MeshData>();
+  /** Models whose BVH prepare has asked to build in an idle moment (never inside an edit). */
   private readonly preparing = new WeakSet<MeshData>();
 
   constructor(private readonly idle: (callback: () => void) => void = whenIdle) {}
 
-  /** Whether `scene`'s screen is cheap enough to trace here, with every model it uses in `models` and prepared. */
+  /** Whether `scene`'s screen is cheap enough to trace here, with every model it uses in `models` and its BVH built (by prepare, or by the BVH view). */
   affords(scene: Scene, models: MeshLibrary): boolean {
     const [columns, rows] = scene.camera.pixels;
     if (estimateRender(scene, columns, rows).rays > INLINE_RAY_BUDGET) return false;
     return meshNamesInScene(scene).every((name) => {
       const mesh = models.get(name);
-      return mesh !== undefined && this.prepared.has(mesh);
+      return mesh !== undefined && hasMeshAccel(mesh);
     });
   }
 
@@ -57,12 +56,9 @@ export class InlineScreenTracer {
    */
   prepare(models: MeshLibrary): void {
     for (const mesh of models.values()) {
-      if (this.prepared.has(mesh) || this.preparing.has(mesh)) continue;
+      if (hasMeshAccel(mesh) || this.preparing.has(mesh)) continue;
       this.preparing.add(mesh);
-      this.idle(() => {
-        meshAccel(mesh);
-        this.prepared.add(mesh);
-      });
+      this.idle(() => meshAccel(mesh));
     }
   }
 

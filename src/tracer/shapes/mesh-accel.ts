@@ -21,6 +21,11 @@ export interface MeshAccel {
 // Built BVHs by model; a worker keeps them across renders, as models never change.
 const accelCache = new WeakMap<MeshData, MeshAccel>();
 
+/** Whether the model's BVH is built already (so meshAccel returns at once). */
+export function hasMeshAccel(mesh: MeshData): boolean {
+  return accelCache.has(mesh);
+}
+
 /**
  * Builds (or reuses) the BVH of a model. The geometry gets positions only: three-mesh-bvh
  * allocates a normal, uv and barycentre object per candidate hit for every attribute it
