@@ -109,13 +109,9 @@ export class ScreenTracer {
    */
   traceWithTerms(x: number, y: number): Promise<PixelTrace> {
     if (this.disposed || !this.latest) return Promise.reject(new Error('the camera’s screen has not been traced yet'));
-    if (this.latestInline && this.inline) {
-      try {
-        return Promise.resolve(this.inline.traceWithTerms(x, y));
-      } catch (error) {
-        return Promise.reject(error instanceof Error ? error : new Error(String(error)));
-      }
-    }
+    const inline = this.latestInline ? this.inline : null;
+    // A promise's executor turns a throw into a rejection.
+    if (inline) return new Promise((resolve) => resolve(inline.traceWithTerms(x, y)));
     return this.pool.tracePixel(x, y, DEFAULT_SEED, true);
   }
 
