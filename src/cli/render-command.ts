@@ -11,6 +11,7 @@ import type { Command, CommandLine } from './command-line.ts';
 import { createNodeRenderPool } from './node-worker-port.ts';
 import { checkWritable, writePng } from './png-file.ts';
 import { loadSceneMeshes, readScene } from './scene-file.ts';
+import { workersWorthStarting } from './workers-worth-starting.ts';
 
 /**
  * Threads beyond a few per core only cost memory (each holds the scene and its BVHs):
@@ -33,7 +34,8 @@ Options:
   --width W         image width in pixels (default: the scene's settings.imageSize)
   --height H        image height; with only one of the two, the scene's aspect ratio is kept
   --workers N       worker threads, at most 4 per core and never more than the image has tiles
-                    (default: the number of cores)
+                    (default: one per core, fewer for a small render, where starting a thread
+                    costs more than it saves)
   --seed S          seed of the random choices, 0..4294967295 (default 0)
   --force           render even when the estimate says it takes more than a minute
   --stats           print, last, one JSON line: {"ms":…,"workers":N,"rays":{"primary":…,"shadow":…,
@@ -45,12 +47,12 @@ Options:
     const out = line.requiredText('out', '<file.png>');
     if (!/\.png$/i.test(out)) throw line.usageError(`--out must name a .png file, the only format rt writes, got "${out}"`);
     const cores = availableParallelism();
-    const requested = line.wholeNumber('workers', [1, WORKERS_PER_CORE * cores]) ?? cores;
+    const requested = line.wholeNumber('workers', [1, WORKERS_PER_CORE * cores]);
     const seed = line.wholeNumber('seed', SEED_RANGE);
 
     const { scene } = await readScene(source);
     const [width, height] = imageSize(line, scene);
-    const workers = Math.min(requested, tileCount(scene, width, height));
+    const workers = Math.min(requested ?? workersWorthStarting(scene, width, height, cores), tileCount(scene, width, height));
     if (!line.flag('force')) refuseHeavy(scene, width, height, workers);
     await checkWritable(out);
 

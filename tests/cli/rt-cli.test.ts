@@ -63,6 +63,12 @@ describe('rt render', () => {
     expect(JSON.parse(run.stdout.trim().split('\n').at(-1) ?? '')).toMatchObject({ workers: 1 });
   });
 
+  it('starts one worker for a small render when --workers is not given', async () => {
+    const run = await rt('render', file('scene.json'), '--out', file('small.png'), '--width', '64', '--height', '48', '--stats');
+    expect(run).toMatchObject({ code: 0, stderr: '' });
+    expect(JSON.parse(run.stdout.trim().split('\n').at(-1) ?? '')).toMatchObject({ workers: 1, rays: { primary: 64 * 48 * 4 } });
+  });
+
   it('keeps the aspect ratio when given only a width, and renders a level file’s scene', async () => {
     const out = file('level.png');
     const run = await rt('render', file('level.json'), '--out', out, '--width', '32');
