@@ -21,7 +21,7 @@ const inputsFile = (dir) => join(dir, 'inputs.json');
 
 const ENTRIES = {
   rt: 'src/cli/rt.ts',
-  // Its name is fixed: src/cli/node-worker-port.ts starts it by this name from the build.
+  // Its name is fixed: src/cli/render-worker-thread.ts starts it by this name from the build.
   'render-worker': 'workers/render.worker.node.ts',
 };
 

@@ -5,13 +5,18 @@
  */
 import { EXIT_INVALID_INPUT, EXIT_USAGE, UsageError } from './cli-errors.ts';
 import { CommandLine, type Command } from './command-line.ts';
+import { prestartRenderWorker } from './render-worker-thread.ts';
 
 /**
  * Each command is loaded only when it is run: `rt render` then never loads the tracer in
- * its main thread (only its workers do), which keeps its start-up short.
+ * its main thread (only its workers do), which keeps its start-up short. Its first worker
+ * thread starts before the command's modules load, so that the two start-ups overlap.
  */
 const COMMANDS: Record<string, () => Promise<Command>> = {
-  render: async () => (await import('./render-command.ts')).renderCommand,
+  render: async () => {
+    prestartRenderWorker();
+    return (await import('./render-command.ts')).renderCommand;
+  },
   trace: async () => (await import('./trace-command.ts')).traceCommand,
   validate: async () => (await import('./validate-command.ts')).validateCommand,
 };
