@@ -34,8 +34,8 @@ Options:
   --width W         image width in pixels (default: the scene's settings.imageSize)
   --height H        image height; with only one of the two, the scene's aspect ratio is kept
   --workers N       worker threads, at most 4 per core and never more than the image has tiles
-                    (default: one per core, fewer for a small render, where starting a thread
-                    costs more than it saves)
+                    (default: one per core, but one for a small render, where starting
+                    more threads costs more than they save)
   --seed S          seed of the random choices, 0..4294967295 (default 0)
   --force           render even when the estimate says it takes more than a minute
   --stats           print, last, one JSON line: {"ms":…,"workers":N,"rays":{"primary":…,"shadow":…,
@@ -52,7 +52,8 @@ Options:
 
     const { scene } = await readScene(source);
     const [width, height] = imageSize(line, scene);
-    const workers = Math.min(requested ?? workersWorthStarting(scene, width, height, cores), tileCount(scene, width, height));
+    const byDefault = workersWorthStarting(scene, width, height, cores);
+    const workers = Math.min(requested ?? byDefault, tileCount(scene, width, height));
     if (!line.flag('force')) refuseHeavy(scene, width, height, workers);
     await checkWritable(out);
 

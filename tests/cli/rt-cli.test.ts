@@ -63,6 +63,7 @@ describe('rt render', () => {
     expect(JSON.parse(run.stdout.trim().split('\n').at(-1) ?? '')).toMatchObject({ workers: 1 });
   });
 
+  // On 2 or more cores (as in CI), where the default once started one worker per core.
   it('starts one worker for a small render when --workers is not given', async () => {
     const run = await rt('render', file('scene.json'), '--out', file('small.png'), '--width', '64', '--height', '48', '--stats');
     expect(run).toMatchObject({ code: 0, stderr: '' });

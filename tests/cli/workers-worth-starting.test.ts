@@ -1,27 +1,26 @@
 import { describe, expect, it } from 'vitest';
 import { estimateRender } from '../../src/render/render-estimate.ts';
-import { ESTIMATED_SECONDS_PER_WORKER, workersWorthStarting } from '../../src/cli/workers-worth-starting.ts';
+import { SINGLE_WORKER_SECONDS, workersWorthStarting } from '../../src/cli/workers-worth-starting.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 
 const scene = defaultScene();
-/** The side of a square image whose one-worker estimate is about `seconds`. */
-function sideFor(seconds: number): number {
-  return Math.round(Math.sqrt(seconds / estimateRender(scene, 1, 1, 1).seconds));
-}
+const estimate = (side: number) => estimateRender(scene, side, side, 1).seconds;
+/** The side of the largest square image whose one-worker estimate is under SINGLE_WORKER_SECONDS. */
+const largestSmall = Math.floor(Math.sqrt(SINGLE_WORKER_SECONDS / estimate(1)) - 1e-9);
 
 describe('the workers rt render starts by default', () => {
-  it('one for a small render, whatever the cores', () => {
-    for (const cores of [1, 2, 8]) expect(workersWorthStarting(scene, 16, 16, cores)).toBe(1);
-    const justUnder = sideFor(2 * ESTIMATED_SECONDS_PER_WORKER) - 2;
-    expect(estimateRender(scene, justUnder, justUnder, 1).seconds).toBeLessThan(2 * ESTIMATED_SECONDS_PER_WORKER);
-    expect(workersWorthStarting(scene, justUnder, justUnder, 8)).toBe(1);
+  it('one for a render estimated under SINGLE_WORKER_SECONDS on one worker, whatever the cores', () => {
+    expect(estimate(largestSmall)).toBeLessThan(SINGLE_WORKER_SECONDS);
+    for (const cores of [1, 2, 8]) {
+      expect(workersWorthStarting(scene, 16, 16, cores)).toBe(1);
+      expect(workersWorthStarting(scene, largestSmall, largestSmall, cores)).toBe(1);
+    }
   });
 
-  it('one more for each ESTIMATED_SECONDS_PER_WORKER of the one-worker estimate, up to one per core', () => {
-    const side = sideFor(3.2 * ESTIMATED_SECONDS_PER_WORKER);
-    expect(workersWorthStarting(scene, side, side, 8)).toBe(3);
-    expect(workersWorthStarting(scene, side, side, 2)).toBe(2);
-    expect(workersWorthStarting(scene, side, side, 1)).toBe(1);
+  it('one per core for a longer render', () => {
+    const side = largestSmall + 1;
+    expect(estimate(side)).toBeGreaterThanOrEqual(SINGLE_WORKER_SECONDS);
+    for (const cores of [1, 2, 8]) expect(workersWorthStarting(scene, side, side, cores)).toBe(cores);
     expect(workersWorthStarting(scene, 4096, 4096, 8)).toBe(8);
   });
 });
