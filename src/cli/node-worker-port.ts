@@ -2,7 +2,7 @@
 import { availableParallelism } from 'node:os';
 import { RenderPool } from '../render/render-pool.ts';
 import type { RenderWorkerHandlers, RenderWorkerPort } from '../render/render-worker-port.ts';
-import { RENDER_WORKER_ENTRY, startRenderWorkerThread, takePrestartedRenderWorker } from './render-worker-thread.ts';
+import { RENDER_WORKER_ENTRY, startRenderWorkerThread, takePrestartedRenderWorker, workerExitMessage } from './render-worker-thread.ts';
 
 /**
  * `entry` (a file URL) is the worker module; tests pass a failing one to check recovery.
@@ -22,7 +22,7 @@ export function createNodeWorkerPort(handlers: RenderWorkerHandlers, entry = REN
   });
   worker.on('error', (error) => fail(error.message));
   worker.on('messageerror', () => fail('a message from the render worker could not be read'));
-  worker.on('exit', (code) => fail(`the render worker exited with code ${code}`));
+  worker.on('exit', (code) => fail(workerExitMessage(code)));
   // A prestarted thread that died while it waited: the pool hears it as it would have heard it live.
   const failure = prestarted?.failure;
   if (failure) queueMicrotask(() => fail(failure));

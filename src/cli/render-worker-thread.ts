@@ -16,7 +16,7 @@ export const RENDER_WORKER_ENTRY = import.meta.url.endsWith('.ts')
 const BOOT = new URL('../../workers/node-worker-boot.mjs', import.meta.url);
 
 /** A thread running `entry` (a file URL): prebuilt JavaScript directly, TypeScript through tsx. */
-export function startRenderWorkerThread(entry = RENDER_WORKER_ENTRY): Worker {
+export function startRenderWorkerThread(entry: string): Worker {
   return entry.endsWith('.ts') ? new Worker(BOOT, { workerData: { entry } }) : new Worker(new URL(entry));
 }
 
@@ -36,11 +36,13 @@ let waiting: { entry: string; prestarted: PrestartedWorker; stopListening: () =>
  * first still exits at once. Returns the waiting thread (the one already waiting, if any).
  */
 export function prestartRenderWorker(entry = RENDER_WORKER_ENTRY): PrestartedWorker {
-  if (waiting) return waiting.prestarted;
+  if (waiting?.entry === entry) return waiting.prestarted;
+  // One thread waits at a time: one of another entry is not what any pool will ask for now.
+  if (waiting) void takePrestartedRenderWorker(waiting.entry)?.worker.terminate();
   const prestarted: PrestartedWorker = { worker: startRenderWorkerThread(entry), failure: null };
   // Kept for the pool to hear; an 'error' nobody listens to would also end the process.
   const onError = (error: Error) => (prestarted.failure ??= error.message);
-  const onExit = (code: number) => (prestarted.failure ??= `the render worker exited with code ${code}`);
+  const onExit = (code: number) => (prestarted.failure ??= workerExitMessage(code));
   prestarted.worker.on('error', onError).on('exit', onExit).unref();
   waiting = {
     entry,
@@ -56,6 +58,12 @@ export function takePrestartedRenderWorker(entry = RENDER_WORKER_ENTRY): Prestar
   const { prestarted, stopListening } = waiting;
   waiting = null;
   stopListening();
+  // Adding the pool's 'message' listener would reference it too; said here, where it was unreferenced.
   prestarted.worker.ref();
   return prestarted;
+}
+
+/** What the pool is told when a render worker thread ends. */
+export function workerExitMessage(code: number): string {
+  return `the render worker exited with code ${code}`;
 }

@@ -40,4 +40,16 @@ describe('a render worker started ahead of its pool', () => {
     port.terminate();
     expect(takePrestartedRenderWorker(entry)).toBeNull();
   });
+
+  it('is one thread at a time: asking for one of another entry replaces the one waiting', async () => {
+    const entry = pathToFileURL(fileURLToPath(new URL('../support/failing-to-start-worker.ts', import.meta.url))).href;
+    const first = prestartRenderWorker();
+    const second = prestartRenderWorker(entry);
+    expect(second).not.toBe(first);
+    // The replaced thread is stopped (a thread no longer running has the id -1).
+    await vi.waitFor(() => expect(first.worker.threadId).toBe(-1));
+    expect(takePrestartedRenderWorker()).toBeNull();
+    expect(takePrestartedRenderWorker(entry)).toBe(second);
+    await second.worker.terminate();
+  });
 });
