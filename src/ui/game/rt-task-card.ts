@@ -50,9 +50,25 @@ export class RtTaskCard extends LitElement {
         text-align: center;
         font-weight: 700;
       }
-      .title {
+      /* A title that does not fit on one line beside its tags moves them to a line of their
+         own (right-aligned): a long Dutch title beside two tags was squeezed into a column a
+         word wide. */
+      .label {
         flex: 1;
         min-width: 0;
+        display: flex;
+        flex-wrap: wrap;
+        align-items: center;
+        gap: 4px 8px;
+      }
+      .title {
+        flex: 1 1 auto;
+        min-width: 0;
+      }
+      .tags {
+        display: flex;
+        gap: 8px;
+        margin-left: auto;
       }
       :host([status='current']) .title {
         font-weight: 700;
@@ -102,9 +118,13 @@ export class RtTaskCard extends LitElement {
     const finished = view.status === 'done' || view.status === 'shown' || view.status === 'skipped';
     const head = html`
       <span class="mark" aria-hidden="true">${MARKS[view.status]}</span>
-      <span class="title">${localize(view.task.title, this.locale)}<span class="visually-hidden"> (${statusText(view)})</span></span>
-      ${view.task.mandatory ? nothing : html`<span class="tag muted">${msg('optional')}</span>`}
-      ${view.task.points > 0 ? html`<span class="tag muted" title=${msg('Points')}>${finished ? msg(str`${view.points} pts`) : msg(str`${view.task.points} pts`)}</span>` : nothing}
+      <span class="label">
+        <span class="title">${localize(view.task.title, this.locale)}<span class="visually-hidden"> (${statusText(view)})</span></span>
+        <span class="tags">
+          ${view.task.mandatory ? nothing : html`<span class="tag muted">${msg('optional')}</span>`}
+          ${view.task.points > 0 ? html`<span class="tag muted" title=${msg('Points')}>${finished ? msg(str`${view.points} pts`) : msg(str`${view.task.points} pts`)}</span>` : nothing}
+        </span>
+      </span>
     `;
     // Optional tasks open on request, so the current task keeps the learner's eye.
     const openable = view.status === 'open' && !this.expanded;
