@@ -9,6 +9,7 @@ import { assignmentUrl } from '../../classroom/assignment-link.ts';
 import { SURVEY_IDS } from '../../classroom/surveys.ts';
 import type { Level } from '../../quest/level-schema.ts';
 import { playableLevels } from '../../quest/level-index.ts';
+import { currentLocale } from '../../i18n/locale.ts';
 import { localize } from '../../quest/localized-text.ts';
 import { teacherPageStyles } from './teacher-page.css.ts';
 import '../controls/rt-theme-toggle.ts';
@@ -50,7 +51,8 @@ export class RtTeacherPage extends LitElement {
       levels: first ? [first.id] : [],
       requiredTasks: first ? { [first.id]: mandatoryTasks(first) } : {},
       otherLevels: 'hidden',
-      locale: 'en',
+      // The teacher's own language: a Dutch teacher's pupils get Dutch unless chosen otherwise.
+      locale: currentLocale(),
       askParticipantCode: false,
       survey: null,
     };
