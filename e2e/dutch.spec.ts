@@ -27,6 +27,8 @@ const dutchLevelTexts = levelFiles.chapters.flatMap((chapter) => chapter.levels)
 
 /** A text without what it quotes: a Dutch reason may quote a field path ("scene.settings.shadows"), which is no Dutch word. */
 const prose = (text: string) => text.replace(/"[^"]*"/g, ' ');
+/** A text without web addresses: a field's example (https://school.example) is in no language. */
+const withoutAddresses = (text: string) => text.replace(/\bhttps?:\/\/\S+/g, ' ');
 
 /** Words Dutch uses too (in the Dutch catalogue or a Dutch level text): "lens", "pixel", "ray tracer". */
 const dutchWords = new Set([...catalogue.flatMap((message) => message.nl.map(prose)), ...dutchLevelTexts].flatMap(words));
@@ -57,7 +59,7 @@ async function shownTexts(page: Page): Promise<string[]> {
 /** Each shown text that has an English-only word, with the words. */
 async function englishShown(page: Page): Promise<string[]> {
   return (await shownTexts(page)).flatMap((text) => {
-    const english = words(text).filter((word) => englishOnly.has(word));
+    const english = words(withoutAddresses(text)).filter((word) => englishOnly.has(word));
     return english.length > 0 ? [`${english.join(', ')} in "${text.slice(0, 120)}"`] : [];
   });
 }
@@ -130,4 +132,16 @@ test('a later level in Dutch, opened from a Dutch assignment, shows no English',
   await expect(page.getByRole('heading', { name: 'Breking' }).first()).toBeVisible();
   await expectNoEnglish(page, 'level 6');
   await page.screenshot({ path: 'test-results/dutch-level-6.png' });
+});
+
+test('the teacher page in Dutch makes a Dutch assignment by default and shows no English', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('./?lang=nl#/teacher');
+  const teacher = page.locator('rt-teacher-page');
+  await expect(teacher.getByRole('radio', { name: 'Nederlands' })).toBeChecked();
+  // The levels and their tasks in the pupils' language, as they will see them.
+  await expect(teacher.locator('li[data-level]').first()).toContainText('Introductie');
+  await expectNoEnglish(page, 'the teacher page');
+  await page.screenshot({ path: 'test-results/dutch-teacher.png' });
+  expect(errors).toEqual([]);
 });
