@@ -145,3 +145,12 @@ test('the teacher page in Dutch makes a Dutch assignment by default and shows no
   await page.screenshot({ path: 'test-results/dutch-teacher.png' });
   expect(errors).toEqual([]);
 });
+
+test("the teacher's survey preview in Dutch asks its questions in Dutch", async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('./?lang=nl#/survey/default');
+  await expect(page.locator('rt-survey').getByRole('group').first()).toBeVisible();
+  await expectNoEnglish(page, 'the survey preview');
+  await page.screenshot({ path: 'test-results/dutch-survey.png' });
+  expect(errors).toEqual([]);
+});

@@ -3,6 +3,7 @@ import { css, html, LitElement, nothing } from 'lit';
 import { checkAnswers, cleanAnswers, type AnswerProblem, type SurveyAnswers, type SurveySubmission } from '../../classroom/survey-answers.ts';
 import type { Survey, SurveyQuestion } from '../../classroom/survey-schema.ts';
 import { surveyById } from '../../classroom/surveys.ts';
+import { currentLocale } from '../../i18n/locale.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
 import { classroomStyles } from './classroom-styles.ts';
 
@@ -121,7 +122,8 @@ export class RtSurvey extends LitElement {
   constructor() {
     super();
     this.surveyId = 'default';
-    this.locale = 'en';
+    // The page's language, unless the assignment names its own (a teacher's preview names none).
+    this.locale = currentLocale();
     this.answers = {};
     this.problems = {};
     this.submitted = false;
