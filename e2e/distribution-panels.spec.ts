@@ -55,7 +55,7 @@ test('aperture, roughness and movement set in the panels change what the 3D view
 
   // Focus on the selected object: the plane in focus goes through the red ball's centre.
   const list = page.locator('rt-scene-list');
-  await list.getByRole('option', { name: /red-ball/ }).click();
+  await list.getByRole('option', { name: /Red ball/ }).click();
   await page.locator('rt-tracer-panel').getByRole('button', { name: /^Focus on / }).click();
   const { camera } = (await state(page)).scene;
   const forward = camera.target.map((t, axis) => t - camera.position[axis]);
@@ -63,13 +63,13 @@ test('aperture, roughness and movement set in the panels change what the 3D view
   expect(camera.focusDistance).toBeCloseTo(along, 6);
 
   // Gloss: the mirror ball's one reflected ray per hit becomes a fan of 3 × 3.
-  await list.getByRole('option', { name: /mirror-ball/ }).click();
+  await list.getByRole('option', { name: /Mirror ball/ }).click();
   await typeInto(page, 'rt-object-panel', 'Roughness (ρ)', '0.3');
   expect((await state(page)).scene.objects.find((o) => o.id === 'mirror-ball')!.material.roughness).toBe(0.3);
   const glossy = await expectMoreRays(page, withLens, 'roughness 0.3 on the mirror ball');
 
   // Motion: the red ball moves 1 m right while the shutter is open; its copy in time is drawn.
-  await list.getByRole('option', { name: /red-ball/ }).click();
+  await list.getByRole('option', { name: /Red ball/ }).click();
   const canvas = page.locator('rt-scene-view canvas').first();
   const still = await canvas.screenshot();
   const x = page.locator('rt-object-panel').getByRole('textbox', { name: 'Movement while the shutter is open x' });

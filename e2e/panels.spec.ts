@@ -21,7 +21,7 @@ test('select an object in the scene list and change its colour', async ({ page }
   const errors: string[] = [];
   await openLab(page, errors);
   const list = page.locator('rt-scene-list');
-  await list.getByRole('option', { name: /red-ball/ }).click();
+  await list.getByRole('option', { name: /Red ball/ }).click();
   expect((await state(page)).selection).toEqual({ kind: 'object', id: 'red-ball' });
 
   const panel = page.locator('rt-object-panel');
@@ -39,9 +39,9 @@ test('select an object in the scene list and change its colour', async ({ page }
   expect(ball(await state(page)).material.color).toEqual([0, 1, 0]);
 
   // Select something else and come back: the field shows the store's colour.
-  await list.getByRole('option', { name: /box/ }).click();
+  await list.getByRole('option', { name: /Box/ }).click();
   await expect(hex).toHaveValue('#3366e6');
-  await list.getByRole('option', { name: /red-ball/ }).click();
+  await list.getByRole('option', { name: /Red ball/ }).click();
   await expect(hex).toHaveValue('#00ff00');
   expect(errors).toEqual([]);
 });
@@ -49,7 +49,7 @@ test('select an object in the scene list and change its colour', async ({ page }
 test('typed numbers: clamped with a message, unreadable text keeps the value', async ({ page }) => {
   const errors: string[] = [];
   await openLab(page, errors);
-  await page.locator('rt-scene-list').getByRole('option', { name: /spot/ }).click();
+  await page.locator('rt-scene-list').getByRole('option', { name: /Spot / }).click();
   const slider = page.locator('rt-light-panel rt-slider[name="spotAngle"]');
   const field = slider.getByRole('textbox', { name: 'Spot angle, typed value' });
   const spotAngle = async () => (await state(page)).scene.lights.find((l) => l.id === 'spot')!;
@@ -83,7 +83,7 @@ test('typed numbers: clamped with a message, unreadable text keeps the value', a
 test('the Glass preset makes the object transparent and enables its refractive index', async ({ page }) => {
   const errors: string[] = [];
   await openLab(page, errors);
-  await page.locator('rt-scene-list').getByRole('option', { name: /red-ball/ }).click();
+  await page.locator('rt-scene-list').getByRole('option', { name: /Red ball/ }).click();
   const panel = page.locator('rt-object-panel');
   const index = panel.getByRole('slider', { name: 'Refractive index (η)' });
   await expect(index).toBeDisabled();
@@ -101,10 +101,10 @@ test('the scene list by keyboard: arrows select, Add and Delete', async ({ page 
   const errors: string[] = [];
   await openLab(page, errors);
   const list = page.locator('rt-scene-list');
-  await list.getByRole('option', { name: /floor/ }).click();
+  await list.getByRole('option', { name: /Floor/ }).click();
   await page.keyboard.press('ArrowDown');
   expect((await state(page)).selection).toEqual({ kind: 'object', id: 'red-ball' });
-  await expect(list.getByRole('option', { name: /red-ball/ })).toBeFocused();
+  await expect(list.getByRole('option', { name: /Red ball/ })).toBeFocused();
   await page.keyboard.press('End');
   expect((await state(page)).selection).toEqual({ kind: 'camera' });
 
@@ -122,7 +122,7 @@ test('the scene list by keyboard: arrows select, Add and Delete', async ({ page 
 test('every control of the object panel can be reached by Tab and shows its focus', async ({ page }) => {
   const errors: string[] = [];
   await openLab(page, errors);
-  await page.locator('rt-scene-list').getByRole('option', { name: /red-ball/ }).click();
+  await page.locator('rt-scene-list').getByRole('option', { name: /Red ball/ }).click();
   await page.locator('rt-object-panel rt-color-field input[type="color"]').focus();
 
   const stops: { label: string; ring: boolean; panel: boolean }[] = [];
@@ -160,7 +160,7 @@ test('every control of the object panel can be reached by Tab and shows its focu
 test('dragging a slider changes the store before the release; a change elsewhere shows in the fields', async ({ page }) => {
   const errors: string[] = [];
   await openLab(page, errors);
-  await page.locator('rt-scene-list').getByRole('option', { name: /red-ball/ }).click();
+  await page.locator('rt-scene-list').getByRole('option', { name: /Red ball/ }).click();
   const panel = page.locator('rt-object-panel');
   const shininess = async () => (await state(page)).scene.objects.find((o) => o.id === 'red-ball')!.material.shininess;
   const slider = panel.getByRole('slider', { name: 'Shininess (n)' });
@@ -199,7 +199,7 @@ test('a change the store refuses is explained next to the control and nothing br
   await expect(list.getByRole('status').filter({ hasText: /lights: must have at most 32/ })).toBeVisible();
   expect((await state(page)).scene.lights).toHaveLength(32);
   // Still working: select and edit.
-  await list.getByRole('option', { name: /red-ball/ }).click();
+  await list.getByRole('option', { name: /Red ball/ }).click();
   await expect(page.locator('rt-object-panel').getByRole('textbox', { name: 'Colour, hex code' })).toHaveValue('#e6261a');
   expect(errors).toEqual([]);
 });
@@ -207,13 +207,13 @@ test('a change the store refuses is explained next to the control and nothing br
 test('a closed section stays closed after a reload', async ({ page }) => {
   const errors: string[] = [];
   await openLab(page, errors);
-  await page.locator('rt-scene-list').getByRole('option', { name: /red-ball/ }).click();
+  await page.locator('rt-scene-list').getByRole('option', { name: /Red ball/ }).click();
   const position = page.locator('rt-object-panel').getByRole('textbox', { name: 'Position x' });
   await expect(position).toBeVisible();
   await page.locator('rt-object-panel rt-panel-section[name="object-placement"] summary').click();
   await expect(position).toBeHidden();
   await page.reload();
-  await page.locator('rt-scene-list').getByRole('option', { name: /red-ball/ }).click();
+  await page.locator('rt-scene-list').getByRole('option', { name: /Red ball/ }).click();
   await expect(page.locator('rt-object-panel').getByRole('textbox', { name: 'Colour, hex code' })).toBeVisible();
   await expect(position).toBeHidden();
   expect(errors).toEqual([]);
@@ -225,7 +225,7 @@ test('on a 1024×768 tablet every control is at least 32 px high for a finger', 
   await openLab(page, errors);
   await page.locator('rt-scene-list').getByRole('button', { name: 'Add' }).click();
   const small: string[] = [];
-  for (const item of [/red-ball/, /spot/]) {
+  for (const item of [/Red ball/, /Spot /]) {
     await page.locator('rt-scene-list').getByRole('option', { name: item }).click();
     small.push(...(await page.evaluate(measureTargets)));
   }
@@ -254,7 +254,7 @@ function measureTargets(): string[] {
 test('changing a light’s type by keyboard converts it and shows that type’s controls', async ({ page }) => {
   const errors: string[] = [];
   await openLab(page, errors);
-  await page.locator('rt-scene-list').getByRole('option', { name: /spot/ }).click();
+  await page.locator('rt-scene-list').getByRole('option', { name: /Spot / }).click();
   const panel = page.locator('rt-light-panel');
   await expect(panel.getByRole('slider', { name: 'Spot angle' })).toBeVisible();
   await panel.getByRole('radio', { name: 'Spot' }).focus();
@@ -286,6 +286,6 @@ test('ray tracer settings: typed values beyond the slider, light types, sample p
   expect(s.scene.settings).toMatchObject({ supersampling: 8, lightTypes: { point: true, spot: false, area: true } });
   expect(s.scene.camera.pixels).toEqual([64, 6]);
   expect(s.rays.showSamplePoints).toBe(true);
-  await expect(page.locator('rt-scene-list').getByRole('option', { name: /spot/ })).toContainText('(off)');
+  await expect(page.locator('rt-scene-list').getByRole('option', { name: /Spot / })).toContainText('(off)');
   expect(errors).toEqual([]);
 });

@@ -20,6 +20,8 @@ import { sliderLatencyOf, type SliderFrame, type SliderInput } from './support/s
 
 const LABEL = 'Shininess (n)';
 const BALL = 'red-ball';
+/** Its name in the scene list. */
+const BALL_NAME = 'Red ball';
 
 /** Starts recording the slider's inputs and the values whose rays each frame shows. */
 async function startRecording(page: Page): Promise<void> {
@@ -80,7 +82,7 @@ test('a slider step reaches the rays on screen, and the last value always does (
     await field.fill('16');
     await field.press('Enter');
   }
-  await page.locator('rt-scene-list').getByRole('option', { name: new RegExp(BALL) }).click();
+  await page.locator('rt-scene-list').getByRole('option', { name: new RegExp(BALL_NAME) }).click();
   const slider = page.locator('rt-object-panel').getByRole('slider', { name: LABEL });
   await slider.scrollIntoViewIfNeeded();
   await startRecording(page);

@@ -10,29 +10,33 @@ import { lightSchema, sceneObjectSchema, sceneSchema } from './scene-schema.ts';
 
 /**
  * The scene the lab opens with: one of each kind of material (diffuse, mirror, glass) on a
- * floor, a box for hard edges, a point light for shadows and a spot light for its cone.
+ * floor, a box for hard edges, a point light for shadows and a spot light for its cone. Its
+ * names are in both languages (the scene list shows a name, else the id).
  */
 export function defaultScene(): Scene {
   const scene: z.input<typeof sceneSchema> = {
     version: 1,
-    name: 'Three spheres and a box',
+    name: { en: 'Three spheres and a box', nl: 'Drie bollen en een doos' },
     objects: [
-      { id: 'floor', shape: 'plane', scale: [10, 1, 10], material: { color: [0.7, 0.7, 0.7] } },
-      { id: 'red-ball', shape: 'sphere', position: [-1.5, 0.5, 0.3], material: { color: [0.9, 0.15, 0.1] } },
+      { id: 'floor', name: { en: 'Floor', nl: 'Vloer' }, shape: 'plane', scale: [10, 1, 10], material: { color: [0.7, 0.7, 0.7] } },
+      { id: 'red-ball', name: { en: 'Red ball', nl: 'Rode bal' }, shape: 'sphere', position: [-1.5, 0.5, 0.3], material: { color: [0.9, 0.15, 0.1] } },
       {
         id: 'mirror-ball',
+        name: { en: 'Mirror ball', nl: 'Spiegelbal' },
         shape: 'sphere',
         position: [0.2, 0.5, -1],
         material: { color: [0.9, 0.9, 0.9], ambient: 0.05, diffuse: 0.1, specular: 0.85, shininess: 200 },
       },
       {
         id: 'glass-ball',
+        name: { en: 'Glass ball', nl: 'Glazen bal' },
         shape: 'sphere',
         position: [1, 0.5, 1.2],
         material: { ambient: 0, diffuse: 0.05, specular: 0.6, shininess: 200, transparent: true, refractiveIndex: 1.5 },
       },
       {
         id: 'box',
+        name: { en: 'Box', nl: 'Doos' },
         shape: 'box',
         position: [-0.8, 0.35, -2.4],
         rotation: [0, 30, 0],
@@ -41,9 +45,9 @@ export function defaultScene(): Scene {
       },
     ],
     lights: [
-      { id: 'lamp', type: 'point', position: [2, 4, 3], intensity: 0.7 },
+      { id: 'lamp', name: { en: 'Lamp', nl: 'Lamp' }, type: 'point', position: [2, 4, 3], intensity: 0.7 },
       // No ambient of its own: the lamp's already lights the shadows.
-      { id: 'spot', type: 'spot', position: [-1.5, 3, 0.3], ambient: 0, intensity: 0.35, spotAngle: 40 },
+      { id: 'spot', name: { en: 'Spot', nl: 'Spot' }, type: 'spot', position: [-1.5, 3, 0.3], ambient: 0, intensity: 0.35, spotAngle: 40 },
     ],
   };
   return sceneSchema.parse(scene);

@@ -7,7 +7,7 @@ describe('scene files', () => {
   it('round-trips a scene through its file text', () => {
     const scene = defaultScene();
     const text = sceneFileText(scene);
-    expect(text).toContain('\n  "name": "Three spheres and a box",\n');
+    expect(text).toContain('\n  "name": {\n    "en": "Three spheres and a box",\n    "nl": "Drie bollen en een doos"\n  },\n');
     expect(text.endsWith('}\n')).toBe(true);
     expect(readSceneFile(text)).toEqual({ ok: true, scene });
   });

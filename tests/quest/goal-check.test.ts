@@ -107,7 +107,8 @@ describe('state goals', () => {
   it('use includes for list items and pieces of text', () => {
     expect(at('includes', 6, 'scene.camera.pixels')).toBe(true);
     expect(at('includes', 7, 'scene.camera.pixels')).toBe(false);
-    expect(at('includes', 'spheres', 'scene.name')).toBe(true);
+    expect(at('includes', 'spheres', 'scene.name.en')).toBe(true);
+    expect(at('includes', 'bollen', 'scene.name.en')).toBe(false);
   });
 
   it('treat a value that is not there as equal to nothing', () => {
