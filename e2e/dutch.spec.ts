@@ -134,6 +134,17 @@ test('a later level in Dutch, opened from a Dutch assignment, shows no English',
   await page.screenshot({ path: 'test-results/dutch-level-6.png' });
 });
 
+test('the free lab in Dutch names its scene and objects in Dutch and shows no English', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('./?lang=nl#free-lab');
+  const list = page.locator('rt-scene-list');
+  await expect(list.getByRole('option', { name: /Rode bal/ })).toBeVisible({ timeout: 60_000 });
+  await list.getByRole('option', { name: /Rode bal/ }).click();
+  await expectNoEnglish(page, 'the free lab');
+  await page.screenshot({ path: 'test-results/dutch-free-lab.png' });
+  expect(errors).toEqual([]);
+});
+
 test('the teacher page in Dutch makes a Dutch assignment by default and shows no English', async ({ page }) => {
   const errors = collectErrors(page);
   await page.goto('./?lang=nl#/teacher');
