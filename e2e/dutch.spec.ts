@@ -3,6 +3,7 @@ import { readFileSync } from 'node:fs';
 import { encodeAssignment } from '../src/classroom/assignment-link.ts';
 import { readDutchCatalogue } from '../tests/support/dutch-catalogue.ts';
 import { collectErrors, current, levelsFolder } from './support/game-steps.ts';
+import { simulatedClassFiles } from '../tests/support/class-exports.ts';
 
 // Level 1 played in Dutch (?lang=nl), task by task with its hints and "Laat zien", up to a
 // finished render: at every step, no word the page shows may be an English word of the UI's
@@ -163,5 +164,19 @@ test("the teacher's survey preview in Dutch asks its questions in Dutch", async 
   await expect(page.locator('rt-survey').getByRole('group').first()).toBeVisible();
   await expectNoEnglish(page, 'the survey preview');
   await page.screenshot({ path: 'test-results/dutch-survey.png' });
+  expect(errors).toEqual([]);
+});
+
+test('the class dashboard in Dutch names the levels and tasks in Dutch and shows no English', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('./?lang=nl#/dashboard');
+  const dashboard = page.locator('rt-dashboard-page');
+  await dashboard.locator('input[type=file]').setInputFiles(
+    simulatedClassFiles(6).map((file) => ({ name: file.name, mimeType: 'application/json', buffer: Buffer.from(file.text) })),
+  );
+  await expect(dashboard.getByRole('status').filter({ hasText: '6 leerlingen geteld' })).toBeVisible();
+  await expect(dashboard.getByRole('heading', { name: 'Introductie' })).toBeVisible();
+  await expectNoEnglish(page, 'the class dashboard');
+  await page.screenshot({ path: 'test-results/dutch-dashboard.png', fullPage: true });
   expect(errors).toEqual([]);
 });

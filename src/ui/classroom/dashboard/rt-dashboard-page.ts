@@ -10,6 +10,7 @@ import { stickingPoints, STUCK_MIN_LEARNERS, STUCK_MIN_SHARE, STUCK_TIMES_TYPICA
 import { summarizeSurveys, type SurveysSummary } from '../../../classroom/dashboard-survey.ts';
 import { downloadText } from '../../../util/download-file.ts';
 import { issueText } from '../../../i18n/issue-text.ts';
+import { currentLocale } from '../../../i18n/locale.ts';
 import { surveyById } from '../../../classroom/surveys.ts';
 import { localize, type Locale } from '../../../quest/localized-text.ts';
 import { playableLevels } from '../../../quest/level-index.ts';
@@ -76,7 +77,8 @@ export class RtDashboardPage extends LitElement {
     this.reading = false;
     this.dragging = false;
     this.filter = { assignmentId: null, classCode: null };
-    this.locale = 'en';
+    // The page's language: a Dutch teacher reads the levels' and tasks' Dutch titles.
+    this.locale = currentLocale();
   }
 
   protected override willUpdate(changed: Map<PropertyKey, unknown>): void {
