@@ -113,7 +113,7 @@ test('the scene list by keyboard: arrows select, Add and Delete', async ({ page 
   const added = await state(page);
   expect(added.scene.lights.map((l) => l.id)).toContain('spot-1');
   expect(added.selection).toEqual({ kind: 'light', id: 'spot-1' });
-  await expect(list.getByRole('option', { name: /spot-1/ })).toBeFocused();
+  await expect(list.getByRole('option', { name: /Spot light 1/ })).toBeFocused();
   await page.keyboard.press('Delete');
   expect((await state(page)).scene.lights.map((l) => l.id)).not.toContain('spot-1');
   expect(errors).toEqual([]);

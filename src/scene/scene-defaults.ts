@@ -1,5 +1,6 @@
 import type { z } from 'zod';
 import type { Light, LightType, Scene, SceneObject, ShapeKind } from './scene.ts';
+import type { LocalizedText } from '../util/localized-text.ts';
 import { MESH_ASSET_NAMES } from './mesh-assets.ts';
 import { lightSchema, sceneObjectSchema, sceneSchema } from './scene-schema.ts';
 
@@ -53,22 +54,38 @@ export function defaultScene(): Scene {
   return sceneSchema.parse(scene);
 }
 
+/**
+ * What a new object or light is called in the scene list, in both languages, before its
+ * number: a Dutch pupil who adds a sphere reads "Bol 1", not its id "sphere-1".
+ */
+const NEW_ITEM_NAMES: Record<ShapeKind | LightType, { en: string; nl: string }> = {
+  sphere: { en: 'Sphere', nl: 'Bol' },
+  box: { en: 'Box', nl: 'Doos' },
+  cylinder: { en: 'Cylinder', nl: 'Cilinder' },
+  plane: { en: 'Plane', nl: 'Vlak' },
+  mesh: { en: 'Model', nl: 'Model' },
+  point: { en: 'Point light', nl: 'Puntlamp' },
+  spot: { en: 'Spot light', nl: 'Spotlamp' },
+  area: { en: 'Area light', nl: 'Vlaklamp' },
+};
+
 /** A new object of this shape with every default, at the origin, with an id unused in `scene`. */
 export function createObject(shape: ShapeKind, scene: Scene): SceneObject {
   // Only a mesh has the `mesh` field at all (even `mesh: undefined` would show up as a key).
   const model = shape === 'mesh' ? { mesh: MESH_ASSET_NAMES[0] } : {};
-  return sceneObjectSchema.parse({ id: unusedId(shape, scene), shape, ...model });
+  return sceneObjectSchema.parse({ ...newItem(shape, scene), shape, ...model });
 }
 
 /** A new light of this type with every default, 3 m above the origin, with an id unused in `scene`. */
 export function createLight(type: LightType, scene: Scene): Light {
-  return lightSchema.parse({ id: unusedId(type, scene), type });
+  return lightSchema.parse({ ...newItem(type, scene), type });
 }
 
-/** `sphere-1`, `sphere-2`, …: the first not taken by an object or a light. */
-function unusedId(base: string, scene: Scene): string {
+/** `sphere-1` named "Sphere 1" / "Bol 1", `sphere-2`, …: the first id not taken by an object or a light. */
+function newItem(kind: ShapeKind | LightType, scene: Scene): { id: string; name: LocalizedText } {
   const taken = new Set([...scene.objects, ...scene.lights].map((item) => item.id));
   let number = 1;
-  while (taken.has(`${base}-${number}`)) number++;
-  return `${base}-${number}`;
+  while (taken.has(`${kind}-${number}`)) number++;
+  const { en, nl } = NEW_ITEM_NAMES[kind];
+  return { id: `${kind}-${number}`, name: { en: `${en} ${number}`, nl: `${nl} ${number}` } };
 }

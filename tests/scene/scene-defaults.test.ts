@@ -60,4 +60,11 @@ describe('createObject and createLight', () => {
     expect(ids).toEqual(['box-1', 'box-2', 'box-3']);
     expect(createLight('spot', scene).id).toBe('spot-2');
   });
+
+  it('names a new object or light in both languages, with the number of its id', () => {
+    const scene = defaultScene();
+    expect(createObject('sphere', scene).name).toEqual({ en: 'Sphere 1', nl: 'Bol 1' });
+    scene.lights.push(createLight('area', scene));
+    expect(createLight('area', scene)).toMatchObject({ id: 'area-2', name: { en: 'Area light 2', nl: 'Vlaklamp 2' } });
+  });
 });
