@@ -135,48 +135,49 @@ test('a later level in Dutch, opened from a Dutch assignment, shows no English',
   await page.screenshot({ path: 'test-results/dutch-level-6.png' });
 });
 
-test('the free lab in Dutch names its scene and objects in Dutch and shows no English', async ({ page }) => {
+/**
+ * Opens `route` in Dutch and runs `check` (what the page must show); then the page may show
+ * no English and have logged no error, and its screenshot is kept as test-results/dutch-<name>.png.
+ */
+async function checkDutchPage(page: Page, route: string, name: string, check: () => Promise<void>): Promise<void> {
   const errors = collectErrors(page);
-  await page.goto('./?lang=nl#free-lab');
-  const list = page.locator('rt-scene-list');
-  await expect(list.getByRole('option', { name: /Rode bal/ })).toBeVisible({ timeout: 60_000 });
-  await list.getByRole('option', { name: /Rode bal/ }).click();
-  await expectNoEnglish(page, 'the free lab');
-  await page.screenshot({ path: 'test-results/dutch-free-lab.png' });
+  await page.goto(`./?lang=nl${route}`);
+  await check();
+  await expectNoEnglish(page, `the ${name} page`);
+  await page.screenshot({ path: `test-results/dutch-${name}.png`, fullPage: true });
   expect(errors).toEqual([]);
+}
+
+test('the free lab in Dutch names its scene and objects in Dutch and shows no English', async ({ page }) => {
+  await checkDutchPage(page, '#free-lab', 'free-lab', async () => {
+    const list = page.locator('rt-scene-list');
+    await expect(list.getByRole('option', { name: /Rode bal/ })).toBeVisible({ timeout: 60_000 });
+    await list.getByRole('option', { name: /Rode bal/ }).click();
+  });
 });
 
 test('the teacher page in Dutch makes a Dutch assignment by default and shows no English', async ({ page }) => {
-  const errors = collectErrors(page);
-  await page.goto('./?lang=nl#/teacher');
-  const teacher = page.locator('rt-teacher-page');
-  await expect(teacher.getByRole('radio', { name: 'Nederlands' })).toBeChecked();
-  // The levels and their tasks in the pupils' language, as they will see them.
-  await expect(teacher.locator('li[data-level]').first()).toContainText('Introductie');
-  await expectNoEnglish(page, 'the teacher page');
-  await page.screenshot({ path: 'test-results/dutch-teacher.png' });
-  expect(errors).toEqual([]);
+  await checkDutchPage(page, '#/teacher', 'teacher', async () => {
+    const teacher = page.locator('rt-teacher-page');
+    await expect(teacher.getByRole('radio', { name: 'Nederlands' })).toBeChecked();
+    // The levels and their tasks in the pupils' language, as they will see them.
+    await expect(teacher.locator('li[data-level]').first()).toContainText('Introductie');
+  });
 });
 
 test("the teacher's survey preview in Dutch asks its questions in Dutch", async ({ page }) => {
-  const errors = collectErrors(page);
-  await page.goto('./?lang=nl#/survey/default');
-  await expect(page.locator('rt-survey').getByRole('group').first()).toBeVisible();
-  await expectNoEnglish(page, 'the survey preview');
-  await page.screenshot({ path: 'test-results/dutch-survey.png' });
-  expect(errors).toEqual([]);
+  await checkDutchPage(page, '#/survey/default', 'survey', async () => {
+    await expect(page.locator('rt-survey').getByRole('group').first()).toBeVisible();
+  });
 });
 
 test('the class dashboard in Dutch names the levels and tasks in Dutch and shows no English', async ({ page }) => {
-  const errors = collectErrors(page);
-  await page.goto('./?lang=nl#/dashboard');
-  const dashboard = page.locator('rt-dashboard-page');
-  await dashboard.locator('input[type=file]').setInputFiles(
-    simulatedClassFiles(6).map((file) => ({ name: file.name, mimeType: 'application/json', buffer: Buffer.from(file.text) })),
-  );
-  await expect(dashboard.getByRole('status').filter({ hasText: '6 leerlingen geteld' })).toBeVisible();
-  await expect(dashboard.getByRole('heading', { name: 'Introductie' })).toBeVisible();
-  await expectNoEnglish(page, 'the class dashboard');
-  await page.screenshot({ path: 'test-results/dutch-dashboard.png', fullPage: true });
-  expect(errors).toEqual([]);
+  await checkDutchPage(page, '#/dashboard', 'dashboard', async () => {
+    const dashboard = page.locator('rt-dashboard-page');
+    await dashboard.locator('input[type=file]').setInputFiles(
+      simulatedClassFiles(6).map((file) => ({ name: file.name, mimeType: 'application/json', buffer: Buffer.from(file.text) })),
+    );
+    await expect(dashboard.getByRole('status').filter({ hasText: '6 leerlingen geteld' })).toBeVisible();
+    await expect(dashboard.getByRole('heading', { name: 'Introductie' })).toBeVisible();
+  });
 });
