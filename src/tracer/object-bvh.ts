@@ -3,7 +3,7 @@ import type { Hit } from './hit.ts';
 import type { Intersectable } from './intersectable.ts';
 import type { Ray } from './ray.ts';
 import { rayMeetsBox } from './ray-box.ts';
-import type { ShadowCone } from './shadow-cone.ts';
+import type { RayCone } from './ray-cone.ts';
 
 /** Objects per leaf: past two, testing a leaf's objects costs more than one more level of boxes. */
 const LEAF_SIZE = 2;
@@ -18,7 +18,7 @@ const ONE_LEAF_UP_TO = 12;
  * `cone` (when given), written into `out`: how many, or -1 when there are more than `limit`
  * (the shadow candidates of a hit or a patch of hits; more are not worth listing).
  */
-export function listOverlapping(bvhs: readonly ObjectBvh[], box: Box3, out: Intersectable[], limit: number, cone: ShadowCone | null): number {
+export function listOverlapping(bvhs: readonly ObjectBvh[], box: Box3, out: Intersectable[], limit: number, cone: RayCone | null): number {
   let count = 0;
   for (const bvh of bvhs) {
     count = bvh.overlapping(box, out, count, limit, cone);
@@ -96,7 +96,7 @@ export class ObjectBvh {
    * given) into `out` from `start` on, and returns the new end; stops early once it is past
    * `limit`.
    */
-  overlapping(box: Box3, out: Intersectable[], start: number, limit: number, cone: ShadowCone | null = null): number {
+  overlapping(box: Box3, out: Intersectable[], start: number, limit: number, cone: RayCone | null = null): number {
     const { boxes, link, count, items, itemBoxes, stack } = this;
     if (items.length === 0) return start;
     setWithin(box);

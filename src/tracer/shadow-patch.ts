@@ -2,7 +2,7 @@ import { Box3, type Vector3 } from 'three';
 import type { Intersectable } from './intersectable.ts';
 import type { TracerLight } from './lights.ts';
 import { listOverlapping, type ObjectBvh } from './object-bvh.ts';
-import { ShadowCone } from './shadow-cone.ts';
+import { RayCone } from './ray-cone.ts';
 
 /** √3: a cube of half-side h lies within h·√3 of its centre. */
 const CUBE_RADIUS = Math.sqrt(3);
@@ -28,7 +28,7 @@ export class ShadowPatch {
   private half = 0;
   private filled = false;
   private readonly reach = new Box3();
-  private readonly cone = new ShadowCone();
+  private readonly cone = new RayCone();
 
   /** Whether `point` lies in this patch's cube. */
   covers(point: Vector3): boolean {
@@ -51,7 +51,7 @@ export class ShadowPatch {
     reach.min.set(point.x - half, point.y - half, point.z - half);
     reach.max.set(point.x + half, point.y + half, point.z + half);
     reach.union(light.extent);
-    const cone = light.type === 'area' ? this.cone.set(point, light, margin + half * CUBE_RADIUS) : null;
+    const cone = light.type === 'area' ? this.cone.toLight(point, light, margin + half * CUBE_RADIUS) : null;
     this.count = listOverlapping(occluders, reach, this.list, limit, cone);
   }
 }

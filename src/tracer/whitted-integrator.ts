@@ -11,7 +11,7 @@ import { hashKey, RandomStream } from './sampler.ts';
 import { discPointBuffer, jitteredDiscPoints } from './disc-samples.ts';
 import { glossyDirection, perpendicularBasis } from './glossy.ts';
 import { LightTermsRecorder, type LightTerms, type ShadingTerms } from './shading-terms.ts';
-import { ShadowCone } from './shadow-cone.ts';
+import { RayCone } from './ray-cone.ts';
 import { ShadowPatchPair } from './shadow-patch.ts';
 import { phongPower } from './phong-power.ts';
 import type { Intersectable } from './intersectable.ts';
@@ -47,7 +47,7 @@ class Frame {
   /** The box from the hit point to the light being sampled: only objects in it can cast its shadow. */
   readonly shadowReach = new Box3();
   /** An area light's pyramid from the hit point: it culls the candidates in shadowReach further. */
-  readonly shadowCone = new ShadowCone();
+  readonly shadowCone = new RayCone();
   /** The objects overlapping shadowReach (the first `candidateCount` entries), when there are few. */
   readonly candidates: Intersectable[] = [];
   /** -1: too many candidates to list; shadow rays walk the occluder BVHs, limited to shadowReach. */
@@ -124,7 +124,7 @@ export class WhittedIntegrator {
     this.lastBlocker = scene.lights.map(() => null);
   }
 
-  /** How far a shadow ray may stray from its ideal segment: it covers the rays' ε offsets at both ends (see ShadowCone). */
+  /** How far a shadow ray may stray from its ideal segment: it covers the rays' ε offsets at both ends (see RayCone). */
   private get shadowMargin(): number {
     return 4 * this.scene.epsilon;
   }
@@ -390,7 +390,7 @@ export class WhittedIntegrator {
       for (let i = 0; i < patch.count; i++) frame.candidates[i] = patch.list[i];
     } else {
       // A recorded tree lists exactly this hit's candidates, in the BVH's order (below).
-      const cone = light.type === 'area' ? frame.shadowCone.set(frame.hit.point, light, margin) : null;
+      const cone = light.type === 'area' ? frame.shadowCone.toLight(frame.hit.point, light, margin) : null;
       frame.candidateCount = listOverlapping(this.scene.occluders, reach, frame.candidates, MAX_LISTED_CANDIDATES, cone);
     }
     // Shadow-ray coherence (the light buffer's idea, Haines & Greenberg 1986): the object

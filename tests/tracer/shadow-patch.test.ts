@@ -4,7 +4,7 @@ import { objectGridScene } from '../../bench/object-grid-scene.ts';
 import type { Intersectable } from '../../src/tracer/intersectable.ts';
 import { Ray } from '../../src/tracer/ray.ts';
 import { hashKey, RandomStream } from '../../src/tracer/sampler.ts';
-import { ShadowCone } from '../../src/tracer/shadow-cone.ts';
+import { RayCone } from '../../src/tracer/ray-cone.ts';
 import { ShadowPatch, ShadowPatchPair } from '../../src/tracer/shadow-patch.ts';
 import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
 
@@ -38,7 +38,7 @@ describe('a shadow patch: one list of shadow candidates for neighbouring hits', 
   const above = new Vector3((top.min.x + top.max.x) / 2, top.max.y + 0.01, (top.min.z + top.max.z) / 2);
 
   it("lists every object a point of its cube would list, so each hit's shadow rays test all they must", () => {
-    const cone = new ShadowCone();
+    const cone = new RayCone();
     let compared = 0;
     for (let trial = 0; trial < 40; trial++) {
       // Among the objects (where a floor's hits would be) and above them.
@@ -50,7 +50,7 @@ describe('a shadow patch: one list of shadow candidates for neighbouring hits', 
         expect(Math.max(Math.abs(point.x - center.x), Math.abs(point.y - center.y), Math.abs(point.z - center.z))).toBeLessThanOrEqual(half * (1 + 1e-12));
         // What the integrator lists for this one hit: the box from it to the light, cut by its cone.
         const reach = light.extent.clone().expandByPoint(point);
-        cone.set(point, light, margin);
+        cone.toLight(point, light, margin);
         for (const shape of scene.shapes) {
           if (!shape.worldBounds.intersectsBox(reach) || cone.excludes(boxOf(shape), 0)) continue;
           expect(listed.has(shape)).toBe(true);

@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import type { Intersectable } from '../../src/tracer/intersectable.ts';
 import { TracerLight } from '../../src/tracer/lights.ts';
 import { hashKey, RandomStream } from '../../src/tracer/sampler.ts';
-import { ShadowCone } from '../../src/tracer/shadow-cone.ts';
+import { RayCone } from '../../src/tracer/ray-cone.ts';
 import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
 import { objectGridScene } from '../../bench/object-grid-scene.ts';
 import { tracerSceneFrom } from '../support/test-scene.ts';
@@ -29,7 +29,7 @@ function areaLight(shape: 'rectangle' | 'disc', samples: number): TracerLight {
 describe('the shadow cone from a hit point to an area light', () => {
   it('never excludes a box that a shadow ray toward the light passes through, up to both of its ends', () => {
     const epsilon = 1e-4;
-    const cone = new ShadowCone();
+    const cone = new RayCone();
     const sample = new Vector3();
     const onRay = new Vector3();
     const tiny = 1e-9;
@@ -37,7 +37,7 @@ describe('the shadow cone from a hit point to an area light', () => {
     for (let trial = 0; trial < 200; trial++) {
       const light = areaLight(trial % 2 === 0 ? 'rectangle' : 'disc', 3);
       const point = new Vector3(between(-4, 4), between(-1, 6), between(-4, 4));
-      cone.set(point, light, 4 * epsilon);
+      cone.toLight(point, light, 4 * epsilon);
       for (let s = 0; s < light.sampleCount; s++) {
         light.samplePoint(s % light.samplesPerSide, Math.floor(s / light.samplesPerSide), random, sample);
         const toLight = sample.clone().sub(point);
@@ -63,7 +63,7 @@ describe('the shadow cone from a hit point to an area light', () => {
     const point = new Vector3((top.min.x + top.max.x) / 2, top.max.y, (top.min.z + top.max.z) / 2);
     const reach = light.extent.clone().expandByPoint(point);
     const inBox = scene.shapes.filter((shape) => shape.worldBounds.intersectsBox(reach));
-    const cone = new ShadowCone().set(point, light, 4 * scene.epsilon);
+    const cone = new RayCone().toLight(point, light, 4 * scene.epsilon);
     const inCone = inBox.filter((shape) => !cone.excludes(boxOf(shape), 0));
     expect(inBox.length).toBeGreaterThan(20);
     expect(inCone.length).toBeLessThan(inBox.length / 4);

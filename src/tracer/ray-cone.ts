@@ -2,31 +2,35 @@ import type { Vector3 } from 'three';
 import type { TracerLight } from './lights.ts';
 
 /**
- * The solid that every shadow ray from a hit point to an area light stays in: the pyramid
- * with its apex at the point and the light's rectangle as its base (every sample point lies
- * in the rectangle position ± halfWidth ± halfDepth, lights.ts; a disc's points lie in its
- * square). Its side planes and its base plane cull the shadow candidates far tighter than the
- * box around point and light does: above a crowd of objects, that box overlaps dozens of them
- * while the pyramid's narrow end near the point meets a few (the 256-object benchmark grid).
+ * A cone of rays from one apex through a quadrilateral, as planes that cull boxes: what
+ * cannot meet any of its rays.
+ *
+ * `toLight`: every shadow ray from a hit point to an area light, the pyramid with its apex
+ * at the point and the light's rectangle as its base (every sample point lies in the
+ * rectangle position ± halfWidth ± halfDepth, lights.ts; a disc's points lie in its
+ * square). Its side planes and its base plane cull the shadow candidates far tighter than
+ * the box around point and light does: above a crowd of objects, that box overlaps dozens
+ * of them while the pyramid's narrow end near the point meets a few (the 256-object
+ * benchmark grid).
  *
  * Conservative by `margin`: a box is excluded only when it lies wholly outside one plane by
- * more than the margin, which covers the shadow ray's offset origin (ε along the normal) and
+ * more than the margin, which covers a shadow ray's offset origin (ε along the normal) and
  * its end (ε short of the sample), so no possible blocker is ever dropped and the image stays
  * the same. A plane that degenerates (the point in the light's plane) is left out, which only
  * makes the test looser. Culling a box by separating planes: Assarsson & Möller, "Optimized
  * View Frustum Culling Algorithms for Bounding Boxes" (2000), the n-vertex test.
  */
-export class ShadowCone {
+export class RayCone {
   /** Per plane: normal x, y, z (pointing out, not unit length) and offset d, outside where n·x > d. */
   private readonly planes = new Float64Array(5 * 4);
   /** Per plane: where in a box's six numbers its n-vertex's x, y and z are (min or max per axis). */
   private readonly corner = new Uint8Array(5 * 3);
   private planeCount = 0;
-  /** The light's four corners, x, y, z each (scratch: set() runs for every hit and area light). */
+  /** The light's four corners, x, y, z each (scratch: toLight() runs for every hit and area light). */
   private readonly corners = new Float64Array(4 * 3);
 
   /** The cone from `point` over `light` (an area light), widened by `margin`. */
-  set(point: Vector3, light: TracerLight, margin: number): this {
+  toLight(point: Vector3, light: TracerLight, margin: number): this {
     const { position: c, halfWidth: w, halfDepth: h } = light;
     // The corners in order around the rectangle: c − w − h, c + w − h, c + w + h, c − w + h.
     const corners = this.corners;
@@ -41,17 +45,22 @@ export class ShadowCone {
     const mx = (point.x + c.x) / 2;
     const my = (point.y + c.y) / 2;
     const mz = (point.z + c.z) / 2;
+    this.setSides(point, corners, mx, my, mz, margin);
+    // The base: the light's own plane, normal w × h.
+    this.addPlane(w.y * h.z - w.z * h.y, w.z * h.x - w.x * h.z, w.x * h.y - w.y * h.x, c.x, c.y, c.z, mx, my, mz, margin);
+    return this;
+  }
+
+  /** Starts the planes afresh with the four sides from `apex` through the edges of `corners`, oriented away from (mx, my, mz). */
+  private setSides(apex: Vector3, corners: Float64Array, mx: number, my: number, mz: number, margin: number): void {
     this.planeCount = 0;
     for (let i = 0; i < 4; i++) {
       const a = i * 3;
       const b = ((i + 1) & 3) * 3;
-      const ax = corners[a] - point.x, ay = corners[a + 1] - point.y, az = corners[a + 2] - point.z;
-      const bx = corners[b] - point.x, by = corners[b + 1] - point.y, bz = corners[b + 2] - point.z;
-      this.addPlane(ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx, point.x, point.y, point.z, mx, my, mz, margin);
+      const ax = corners[a] - apex.x, ay = corners[a + 1] - apex.y, az = corners[a + 2] - apex.z;
+      const bx = corners[b] - apex.x, by = corners[b + 1] - apex.y, bz = corners[b + 2] - apex.z;
+      this.addPlane(ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx, apex.x, apex.y, apex.z, mx, my, mz, margin);
     }
-    // The base: the light's own plane, normal w × h.
-    this.addPlane(w.y * h.z - w.z * h.y, w.z * h.x - w.x * h.z, w.x * h.y - w.y * h.x, c.x, c.y, c.z, mx, my, mz, margin);
-    return this;
   }
 
   /** Whether the box at boxes[at..at+5] (min x, y, z, max x, y, z) lies wholly outside the cone. */
