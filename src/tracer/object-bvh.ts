@@ -155,6 +155,41 @@ export class ObjectBvh {
   }
 
   /**
+   * The objects whose box is not wholly outside `cone`, into `out` and their boxes into
+   * `outBoxes` (how many; -1 past `limit`), in the order `nearest` tests them for a ray
+   * whose direction has the signs `backwardAxes` (bit k set: negative along axis k): testing
+   * them in that order finds exactly the hit `nearest` finds for every such ray inside the
+   * cone (primary-candidates.ts says why).
+   */
+  itemsInCone(cone: RayCone, backwardAxes: number, out: Intersectable[], outBoxes: Float64Array, limit: number): number {
+    const { boxes, link, count, axis, items, itemBoxes, stack } = this;
+    if (items.length === 0) return 0;
+    let end = 0;
+    let size = 0;
+    stack[size++] = 0;
+    while (size > 0) {
+      const node = stack[--size];
+      if (cone.excludes(boxes, node * 6)) continue;
+      const n = count[node];
+      if (n > 0) {
+        for (let i = link[node], last = i + n; i < last; i++) {
+          if (cone.excludes(itemBoxes, i * 6)) continue;
+          if (end === limit) return -1;
+          outBoxes.set(itemBoxes.subarray(i * 6, i * 6 + 6), end * 6);
+          out[end++] = items[i];
+        }
+        continue;
+      }
+      const left = node + 1;
+      const right = link[node];
+      const backward = (backwardAxes >> axis[node]) & 1;
+      stack[size++] = backward ? left : right;
+      stack[size++] = backward ? right : left;
+    }
+    return end;
+  }
+
+  /**
    * The first object found that the ray hits closer than ray.far (any-hit, for shadow rays),
    * or null. `skip` is not tested, nor the objects whose box does not overlap `within`.
    */

@@ -3,15 +3,17 @@ import type { TracerLight } from './lights.ts';
 
 /**
  * A cone of rays from one apex through a quadrilateral, as planes that cull boxes: what
- * cannot meet any of its rays.
+ * cannot meet any of its rays. Two kinds (the ray tracer's two coherent bundles):
  *
- * `toLight`: every shadow ray from a hit point to an area light, the pyramid with its apex
- * at the point and the light's rectangle as its base (every sample point lies in the
- * rectangle position ± halfWidth ± halfDepth, lights.ts; a disc's points lie in its
- * square). Its side planes and its base plane cull the shadow candidates far tighter than
- * the box around point and light does: above a crowd of objects, that box overlaps dozens
- * of them while the pyramid's narrow end near the point meets a few (the 256-object
- * benchmark grid).
+ * - `toLight`: every shadow ray from a hit point to an area light, the pyramid with its apex
+ *   at the point and the light's rectangle as its base (every sample point lies in the
+ *   rectangle position ± halfWidth ± halfDepth, lights.ts; a disc's points lie in its
+ *   square). Its side planes and its base plane cull the shadow candidates far tighter than
+ *   the box around point and light does: above a crowd of objects, that box overlaps dozens
+ *   of them while the pyramid's narrow end near the point meets a few (the 256-object
+ *   benchmark grid).
+ * - `throughQuad`: the camera's rays through a rectangle of the image (a tile), with no base
+ *   (primary-candidates.ts).
  *
  * Conservative by `margin`: a box is excluded only when it lies wholly outside one plane by
  * more than the margin, which covers a shadow ray's offset origin (ε along the normal) and
@@ -48,6 +50,22 @@ export class RayCone {
     this.setSides(point, corners, mx, my, mz, margin);
     // The base: the light's own plane, normal w × h.
     this.addPlane(w.y * h.z - w.z * h.y, w.z * h.x - w.x * h.z, w.x * h.y - w.y * h.x, c.x, c.y, c.z, mx, my, mz, margin);
+    return this;
+  }
+
+  /**
+   * The rays from `apex` through the quadrilateral `corners` (x, y, z of four points, in
+   * order around it) and on past it, widened by `margin`.
+   */
+  throughQuad(apex: Vector3, corners: Float64Array, margin: number): this {
+    // The quadrilateral's centre is inside the cone.
+    let mx = 0, my = 0, mz = 0;
+    for (let i = 0; i < 4; i++) {
+      mx += corners[i * 3] / 4;
+      my += corners[i * 3 + 1] / 4;
+      mz += corners[i * 3 + 2] / 4;
+    }
+    this.setSides(apex, corners, mx, my, mz, margin);
     return this;
   }
 

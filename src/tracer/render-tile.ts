@@ -4,8 +4,10 @@ import { addRayStats } from './ray-tree.ts';
 import { integratorFor, renderPixel } from './render-pixel.ts';
 import type { RenderTileOptions, Tile } from './tile.ts';
 import type { TracerScene } from './tracer-scene.ts';
+import { PrimaryCandidates } from './primary-candidates.ts';
 
 const color = new Vector3();
+const primaryCandidates = new PrimaryCandidates();
 
 /**
  * Renders one tile of the image: linear RGB, 3 floats per pixel, row-major over the tile,
@@ -16,14 +18,28 @@ const color = new Vector3();
  * `options.samplesPerSide` 1 at block 1 traces one sample per pixel (the sharp pass).
  */
 export function renderTile(scene: TracerScene, tile: Tile, options: RenderTileOptions, stats?: RayStats): Float32Array {
-  const { imageWidth, imageHeight, seed } = options;
+  const { imageWidth, imageHeight } = options;
   const block = Math.max(1, Math.floor(options.block ?? 1));
   const rgb = new Float32Array(tile.width * tile.height * 3);
   const integrator = integratorFor(scene);
   // A preview traces an image `block` times smaller: its pixels are that much wider.
   integrator.pixelSpread = scene.camera.pixelSpread(imageHeight / block);
   integrator.stats.primary = integrator.stats.shadow = integrator.stats.reflect = integrator.stats.refract = 0;
+  // The tile's primary rays, in the image traced (a preview's is block times smaller).
+  integrator.primaryCandidates = primaryCandidates.set(
+    scene, tile.x / block, tile.y / block, (tile.x + tile.width) / block, (tile.y + tile.height) / block, imageWidth / block, imageHeight / block,
+  );
+  try {
+    renderPixels(scene, tile, options, block, rgb);
+  } finally {
+    integrator.primaryCandidates = null;
+  }
+  if (stats) addRayStats(stats, integrator.stats);
+  return rgb;
+}
 
+function renderPixels(scene: TracerScene, tile: Tile, options: RenderTileOptions, block: number, rgb: Float32Array): void {
+  const { imageWidth, imageHeight, seed } = options;
   const rowLength = tile.width * 3;
   for (let by = 0; by < tile.height; by += block) {
     for (let bx = 0; bx < tile.width; bx += block) {
@@ -39,7 +55,4 @@ export function renderTile(scene: TracerScene, tile: Tile, options: RenderTileOp
     // 4096² preview fills 16 M pixels whatever its block, which dominated its time).
     for (let y = by + 1; y < Math.min(by + block, tile.height); y++) rgb.copyWithin(y * rowLength, by * rowLength, (by + 1) * rowLength);
   }
-
-  if (stats) addRayStats(stats, integrator.stats);
-  return rgb;
 }

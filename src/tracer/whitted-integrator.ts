@@ -16,6 +16,8 @@ import { ShadowPatchPair } from './shadow-patch.ts';
 import { phongPower } from './phong-power.ts';
 import type { Intersectable } from './intersectable.ts';
 import { listOverlapping } from './object-bvh.ts';
+import type { PrimaryCandidates } from './primary-candidates.ts';
+import { rayMeetsBox } from './ray-box.ts';
 import type { TracerScene } from './tracer-scene.ts';
 
 /** Missed rays are drawn this long in the ray tree (spec §3). */
@@ -118,6 +120,8 @@ export class WhittedIntegrator {
   private time = 0;
   /** The side of a pixel at distance 1 from the eye in the image being rendered (CameraRays.pixelSpread). */
   pixelSpread = 0;
+  /** The objects the primary rays of the tile being rendered can hit (renderTile); null or none listed: they walk the BVH. */
+  primaryCandidates: PrimaryCandidates | null = null;
 
   constructor(private readonly scene: TracerScene) {
     for (let depth = 0; depth <= scene.settings.maxDepth; depth++) this.frames.push(new Frame(scene.lights.length));
@@ -155,7 +159,11 @@ export class WhittedIntegrator {
   trace(ray: Ray, depth: number, out: Vector3, node: RayNode | null, leaving: Intersectable | null = null): Vector3 {
     const frame = this.frames[depth];
     const hit = frame.hit.reset(Infinity);
-    this.scene.objects.nearest(ray, hit, leaving);
+    const listed = depth === 0 ? this.primaryCandidates : null;
+    if (listed !== null && listed.covers(ray)) {
+      for (let i = 0; i < listed.count; i++) if (rayMeetsBox(ray, listed.boxes, i * 6, hit.t)) listed.list[i].intersect(ray, hit);
+    }
+    else this.scene.objects.nearest(ray, hit, leaving);
     if (!hit.shape) {
       out.fromArray(this.scene.settings.background);
       if (node) recordEnd(node, false, MISS_LENGTH, null, out);
