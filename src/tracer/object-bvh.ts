@@ -175,7 +175,7 @@ export class ObjectBvh {
         for (let i = link[node], last = i + n; i < last; i++) {
           if (cone.excludes(itemBoxes, i * 6)) continue;
           if (end === limit) return -1;
-          outBoxes.set(itemBoxes.subarray(i * 6, i * 6 + 6), end * 6);
+          for (let k = 0; k < 6; k++) outBoxes[end * 6 + k] = itemBoxes[i * 6 + k];
           out[end++] = items[i];
         }
         continue;

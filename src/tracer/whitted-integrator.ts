@@ -161,9 +161,9 @@ export class WhittedIntegrator {
     const hit = frame.hit.reset(Infinity);
     const listed = depth === 0 ? this.primaryCandidates : null;
     if (listed !== null && listed.covers(ray)) {
+      // A primary ray of the tile being rendered: its list, in the BVH walk's order (the same hit).
       for (let i = 0; i < listed.count; i++) if (rayMeetsBox(ray, listed.boxes, i * 6, hit.t)) listed.list[i].intersect(ray, hit);
-    }
-    else this.scene.objects.nearest(ray, hit, leaving);
+    } else this.scene.objects.nearest(ray, hit, leaving);
     if (!hit.shape) {
       out.fromArray(this.scene.settings.background);
       if (node) recordEnd(node, false, MISS_LENGTH, null, out);
