@@ -52,8 +52,7 @@ Options:
 
     const { scene } = await readScene(source);
     const [width, height] = imageSize(line, scene);
-    const byDefault = workersWorthStarting(scene, width, height, cores);
-    const workers = Math.min(requested ?? byDefault, tileCount(scene, width, height));
+    const workers = Math.min(requested ?? workersWorthStarting(scene, width, height, cores), tileCount(scene, width, height));
     if (!line.flag('force')) refuseHeavy(scene, width, height, workers);
     await checkWritable(out);
 
