@@ -8,7 +8,6 @@ import { readdir, readFile, stat } from 'node:fs/promises';
 import { dirname, join, relative } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { describeJsonError } from '../util/json-error.ts';
-import { loadMeshesFromDisk } from '../scene/load-meshes-node.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';
 import { loadLevels } from '../quest/level-index.ts';
@@ -16,6 +15,7 @@ import { parseLevel } from '../quest/level-schema.ts';
 import { parseScene } from '../scene/scene-schema.ts';
 import type { Scene } from '../scene/scene.ts';
 import { describeFileError, InputError } from './cli-errors.ts';
+import { loadMeshesCached } from './mesh-cache.ts';
 
 const LEVELS_DIR = fileURLToPath(new URL('../../levels/', import.meta.url));
 
@@ -72,10 +72,10 @@ export async function readScene(fileOrLevelId: string): Promise<{ file: string; 
   return { file, scene: check.scene };
 }
 
-/** The models the scene's mesh objects use, from assets/models; InputError when one is missing. */
+/** The models the scene's mesh objects use, from assets/models (through the cache); InputError when one is missing. */
 export async function loadSceneMeshes(scene: Scene): Promise<MeshLibrary> {
   try {
-    return await loadMeshesFromDisk(meshNamesInScene(scene));
+    return await loadMeshesCached(meshNamesInScene(scene));
   } catch (error) {
     throw new InputError(error instanceof Error ? error.message : String(error));
   }

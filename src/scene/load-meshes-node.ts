@@ -4,7 +4,7 @@ import { fileURLToPath } from 'node:url';
 import type { MeshData, MeshLibrary } from './mesh-data.ts';
 import { parseObj } from './obj-parser.ts';
 
-const MODELS_DIR = fileURLToPath(new URL('../../assets/models/', import.meta.url));
+export const MODELS_DIR = fileURLToPath(new URL('../../assets/models/', import.meta.url));
 
 /**
  * Reads the named models from `<dir>/<name>.obj` (Node: the `rt` command and the tests;
@@ -15,17 +15,24 @@ const MODELS_DIR = fileURLToPath(new URL('../../assets/models/', import.meta.url
  */
 export async function loadMeshesFromDisk(names: Iterable<string>, dir = MODELS_DIR): Promise<MeshLibrary> {
   const unique = [...new Set(names)];
-  const meshes = await Promise.all(unique.map((name) => loadMesh(name, join(dir, `${name}.obj`))));
+  const meshes = await Promise.all(unique.map((name) => loadMesh(name, dir)));
   return new Map(unique.map((name, i) => [name, meshes[i]]));
 }
 
-async function loadMesh(name: string, path: string): Promise<MeshData> {
-  let text: string;
+async function loadMesh(name: string, dir: string): Promise<MeshData> {
+  return parseObj(await readModelText(name, dir), `${name}.obj`);
+}
+
+/**
+ * The text of `<dir>/<name>.obj`.
+ * @throws Error naming the model and file when it cannot be read.
+ */
+export async function readModelText(name: string, dir: string): Promise<string> {
+  const path = join(dir, `${name}.obj`);
   try {
-    text = await readFile(path, 'utf8');
+    return await readFile(path, 'utf8');
   } catch (error) {
     const reason = error instanceof Error ? error.message : String(error);
     throw new Error(`mesh "${name}": cannot read ${path} (${reason})`);
   }
-  return parseObj(text, `${name}.obj`);
 }

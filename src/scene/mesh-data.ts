@@ -10,6 +10,20 @@ export interface MeshData {
   normals: Float32Array | null;
   /** Three vertex indices per triangle. */
   indices: Uint32Array;
+  /**
+   * The model's BVH, built before (the `rt` command's cache, src/cli/mesh-cache.ts), so that
+   * a worker deserializes it instead of building it; absent: the tracer builds it.
+   */
+  bvh?: PrebuiltBvh;
+}
+
+/**
+ * A built BVH as three-mesh-bvh serializes it (format version 1): its root node buffers and
+ * the triangle indices in the BVH's order.
+ */
+export interface PrebuiltBvh {
+  roots: ArrayBuffer[];
+  index: Uint32Array;
 }
 
 /** Models by asset name, as the tracer receives them. */

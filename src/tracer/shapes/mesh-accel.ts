@@ -1,7 +1,8 @@
 import { Box3, BufferAttribute, BufferGeometry, Vector3 } from 'three';
 import { MeshBVH, SAH } from 'three-mesh-bvh';
-import type { MeshData } from '../../scene/mesh-data.ts';
+import type { MeshData, PrebuiltBvh } from '../../scene/mesh-data.ts';
 import type { Hit } from '../hit.ts';
+import { MESH_BVH_BUILD } from './mesh-bvh-build.ts';
 import { meshNearest, nearest } from './mesh-nearest.ts';
 import { packedRoot, type PackedRoot, ray } from './mesh-walk.ts';
 import { FOUND, REACH, type UnitSpan } from './unit-span.ts';
@@ -27,24 +28,40 @@ export function hasMeshAccel(mesh: MeshData): boolean {
 }
 
 /**
- * Builds (or reuses) the BVH of a model. The geometry gets positions only: three-mesh-bvh
- * allocates a normal, uv and barycentre object per candidate hit for every attribute it
- * finds, so normals are interpolated here instead, once, for the nearest hit.
+ * Builds (or reuses) the BVH of a model, or deserializes the one it comes with (mesh.bvh).
+ * The geometry gets positions only: three-mesh-bvh allocates a normal, uv and barycentre
+ * object per candidate hit for every attribute it finds, so normals are interpolated here
+ * instead, once, for the nearest hit.
  */
 export function meshAccel(mesh: MeshData): MeshAccel {
   let accel = accelCache.get(mesh);
   if (!accel) {
     const geometry = new BufferGeometry();
     geometry.setAttribute('position', new BufferAttribute(mesh.positions, 3));
-    geometry.setIndex(new BufferAttribute(mesh.indices.slice(), 1));
-    // SAH: slower to build than CENTER but faster to cast through; models are built once.
-    const bvh = new MeshBVH(geometry, { strategy: SAH, targetLeafSize: 4 });
+    let bvh: MeshBVH;
+    if (mesh.bvh) {
+      geometry.setIndex(new BufferAttribute(mesh.bvh.index, 1));
+      // `version` is missing from three-mesh-bvh's typings but read by deserialize: without
+      // it the buffers are taken for the old format and rewritten.
+      const serialized = { version: 1, roots: mesh.bvh.roots, index: mesh.bvh.index, indirectBuffer: null };
+      bvh = MeshBVH.deserialize(serialized, geometry, { setIndex: false });
+    } else {
+      geometry.setIndex(new BufferAttribute(mesh.indices.slice(), 1));
+      bvh = new MeshBVH(geometry, { strategy: { SAH }[MESH_BVH_BUILD.strategy], targetLeafSize: MESH_BVH_BUILD.targetLeafSize });
+    }
     geometry.computeBoundingBox();
     const roots = MeshBVH.serialize(bvh, { cloneBuffers: false }).roots.map(packedRoot);
     accel = { bvh, index: geometry.index!.array, positions: mesh.positions, normals: mesh.normals, bounds: geometry.boundingBox!, roots };
     accelCache.set(mesh, accel);
   }
   return accel;
+}
+
+/** The model's BVH (built now if it was not yet), copied out so that it can be stored and sent. */
+export function prebuiltBvh(mesh: MeshData): PrebuiltBvh {
+  const { bvh } = meshAccel(mesh);
+  const serialized = MeshBVH.serialize(bvh, { cloneBuffers: true });
+  return { roots: serialized.roots, index: Uint32Array.from(serialized.index!) };
 }
 
 /**
