@@ -56,6 +56,7 @@ async function loadMeshCached(name: string, modelsDir: string, cacheDir: string)
   // Loaded only now: a run that finds its models cached never compiles three.js and three-mesh-bvh.
   const { prebuiltBvh } = await import('../tracer/shapes/mesh-accel.ts');
   mesh.bvh = prebuiltBvh(mesh);
+  // Not written (a read-only checkout, a full disk): the render goes on, and the next run builds again.
   await writeAtomically(file, encodeMesh(mesh, key)).catch(() => {});
   return mesh;
 }
