@@ -16,6 +16,11 @@ const ROOT = fileURLToPath(new URL('..', import.meta.url));
 export const BUILD_DIR = join(ROOT, 'build', 'node');
 /** The command's entry in the build; bin/rt.mjs imports it. */
 export const RT_ENTRY = join(BUILD_DIR, 'rt.mjs');
+/**
+ * The command's parsed models with their BVHs (src/cli/mesh-cache.ts, MESH_CACHE_DIR): made by
+ * the parser and BVH builder of the build that wrote them, so a new build starts without them.
+ */
+const MESH_CACHE_DIR = join(ROOT, 'build', 'mesh-cache');
 /** Every file the build was made from, with the build's time: what the staleness check reads. */
 const inputsFile = (dir) => join(dir, 'inputs.json');
 
@@ -28,8 +33,10 @@ const ENTRIES = {
 /**
  * Bundles the entries (packages included, tree-shaken) into `dir` and records their inputs.
  * `dir` must be two folders below the root (see above); tests build into one of their own.
+ * `meshCache`, the folder of the command's cached models, is emptied (the real build's
+ * folder for the real build, none for others unless given).
  */
-export async function buildNode(dir = BUILD_DIR) {
+export async function buildNode(dir = BUILD_DIR, meshCache = dir === BUILD_DIR ? MESH_CACHE_DIR : null) {
   const { build } = await import('esbuild');
   const started = Date.now();
   const result = await build({
@@ -64,6 +71,7 @@ export async function buildNode(dir = BUILD_DIR) {
   for (const name of await readdir(dir)) {
     if (name.endsWith('.mjs') && !written.has(join(dir, name))) await rm(join(dir, name), { force: true });
   }
+  if (meshCache) await rm(meshCache, { recursive: true, force: true });
   const inputs = Object.keys(result.metafile.inputs).map((input) => join(ROOT, input));
   inputs.push(fileURLToPath(import.meta.url), join(ROOT, 'tsconfig.json'));
   const temporary = `${inputsFile(dir)}.${process.pid}.tmp`;

@@ -1,6 +1,5 @@
-import { createHash } from 'node:crypto';
-import { mkdir, readFile, rename, writeFile } from 'node:fs/promises';
-import { createRequire } from 'node:module';
+import { createHash, randomUUID } from 'node:crypto';
+import { mkdir, readFile, rename, rm, writeFile } from 'node:fs/promises';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import type { MeshData, MeshLibrary } from '../scene/mesh-data.ts';
@@ -14,12 +13,13 @@ import { MESH_BVH_BUILD } from '../tracer/shapes/mesh-bvh-build.ts';
  * 8 624-triangle character took 50–60 ms to parse and 65–105 ms to build its BVH, each run
  * anew in a cold JIT, of a 16 × 16 render's 450–580 ms.
  *
- * A file is used only when its key matches: the hash of the model's OBJ text, the BVH's build
- * options and three-mesh-bvh's version, so an edited model or a new builder makes a new one.
- * A checksum guards the rest: a damaged, truncated or foreign file is rebuilt and replaced,
- * and a folder that cannot be written only costs the time the cache would have saved.
- * (Relative to this file, so that the bundled command, two folders below the root as the
- * sources are, finds the same folder.)
+ * A file is used only when its key matches, the hash of the model's OBJ text and the BVH's
+ * build options, so an edited model makes a new one; and each new build of the command
+ * (scripts/node-build.mjs, made whenever its code or three-mesh-bvh changed) empties the
+ * folder, so a changed parser or builder does too. A checksum guards the rest: a damaged,
+ * truncated or foreign file is rebuilt and replaced, and a folder that cannot be written only
+ * costs the time the cache would have saved. (Relative to this file, so that the bundled
+ * command, two folders below the root as the sources are, finds the same folder.)
  */
 export const MESH_CACHE_DIR = fileURLToPath(new URL('../../build/mesh-cache/', import.meta.url));
 
@@ -30,10 +30,12 @@ const ALIGN = 8;
 
 interface Header {
   key: string;
-  /** SHA-1 of everything after the header, hex. */
-  checksum: string;
+  /** Of the BVH as three-mesh-bvh serialized it. */
+  bvhVersion: number;
   /** positions, normals (0 when flat), indices, the BVH's index, then its roots' byte lengths. */
   lengths: number[];
+  /** SHA-1 of the lengths and everything after the header, hex (checksumOf). */
+  checksum: string;
 }
 
 /** Like loadMeshesFromDisk, through the cache: the same models, each with its built BVH. */
@@ -45,7 +47,7 @@ export async function loadMeshesCached(names: Iterable<string>, modelsDir = MODE
 
 async function loadMeshCached(name: string, modelsDir: string, cacheDir: string): Promise<MeshData> {
   const text = await readModelText(name, modelsDir);
-  const key = createHash('sha1').update(text).update(`\n${JSON.stringify(MESH_BVH_BUILD)}\nthree-mesh-bvh ${bvhLibraryVersion()}`).digest('hex');
+  const key = createHash('sha1').update(text).update(`\n${JSON.stringify(MESH_BVH_BUILD)}`).digest('hex');
   const file = join(cacheDir, `${name}.mesh`);
   const cached = await readFile(file).then(
     (bytes) => decodeMesh(bytes, key),
@@ -61,12 +63,20 @@ async function loadMeshCached(name: string, modelsDir: string, cacheDir: string)
   return mesh;
 }
 
-/** Written beside its place and renamed into it: a command running at the same time reads the old file or the new one. */
+/**
+ * Written beside its place under a name of its own and renamed into it: a command running at
+ * the same time reads the old file or the new one. A file left half-written is removed.
+ */
 async function writeAtomically(file: string, bytes: Uint8Array): Promise<void> {
   await mkdir(join(file, '..'), { recursive: true });
-  const temporary = `${file}.${process.pid}.tmp`;
-  await writeFile(temporary, bytes);
-  await rename(temporary, file);
+  const temporary = `${file}.${randomUUID()}.tmp`;
+  try {
+    await writeFile(temporary, bytes);
+    await rename(temporary, file);
+  } catch (error) {
+    await rm(temporary, { force: true });
+    throw error;
+  }
 }
 
 /** The cache file of `mesh` (which has its BVH): MAGIC, the header's length, the header as JSON, then the arrays. */
@@ -79,7 +89,8 @@ export function encodeMesh(mesh: MeshData, key: string): Uint8Array {
     payload.set(new Uint8Array(section.buffer, section.byteOffset, section.byteLength), at);
     at += padded(section.byteLength);
   }
-  const header: Header = { key, checksum: sha1(payload), lengths: sections.map((section) => section.byteLength) };
+  const lengths = sections.map((section) => section.byteLength);
+  const header: Header = { key, bvhVersion: bvh.version, lengths, checksum: checksumOf(lengths, payload) };
   const json = new TextEncoder().encode(JSON.stringify(header));
   const start = padded(MAGIC.length + 4 + json.length);
   const file = new Uint8Array(start + payload.length);
@@ -100,11 +111,11 @@ export function decodeMesh(bytes: Uint8Array, key: string): MeshData | null {
     const start = padded(MAGIC.length + 4 + jsonLength);
     if (start > file.length) return null;
     const header = JSON.parse(new TextDecoder().decode(file.subarray(MAGIC.length + 4, MAGIC.length + 4 + jsonLength))) as Partial<Header>;
-    const { lengths } = header;
-    if (header.key !== key || !Array.isArray(lengths) || lengths.length < 5) return null;
+    const { lengths, bvhVersion } = header;
+    if (header.key !== key || !Number.isInteger(bvhVersion) || !Array.isArray(lengths) || lengths.length < 5) return null;
     if (!lengths.every((length) => Number.isInteger(length) && length >= 0 && length % 4 === 0)) return null;
     const payload = file.subarray(start);
-    if (lengths.reduce((size, length) => size + padded(length), 0) !== payload.length || sha1(payload) !== header.checksum) return null;
+    if (lengths.reduce((size, length) => size + padded(length), 0) !== payload.length || checksumOf(lengths, payload) !== header.checksum) return null;
     // Copies, each in a buffer of its own: they are sent to workers and kept there.
     const sections: ArrayBuffer[] = [];
     let at = 0;
@@ -117,7 +128,7 @@ export function decodeMesh(bytes: Uint8Array, key: string): MeshData | null {
       positions: new Float32Array(positions),
       normals: normals.byteLength > 0 ? new Float32Array(normals) : null,
       indices: new Uint32Array(indices),
-      bvh: { index: new Uint32Array(bvhIndex), roots },
+      bvh: { version: bvhVersion!, index: new Uint32Array(bvhIndex), roots },
     };
     return holdsTogether(mesh) ? mesh : null;
   } catch {
@@ -134,23 +145,7 @@ function padded(length: number): number {
   return Math.ceil(length / ALIGN) * ALIGN;
 }
 
-function sha1(bytes: Uint8Array): string {
-  return createHash('sha1').update(bytes).digest('hex');
-}
-
-let libraryVersion: string | undefined;
-
-/** The installed three-mesh-bvh's version ('unknown' if it cannot be read): a new one may build other trees. */
-function bvhLibraryVersion(): string {
-  if (libraryVersion === undefined) {
-    try {
-      // Its package.json is not among the package's exports: found beside its main file.
-      const main = createRequire(import.meta.url).resolve('three-mesh-bvh');
-      const require = createRequire(main);
-      libraryVersion = String((require('../package.json') as { version: unknown }).version);
-    } catch {
-      libraryVersion = 'unknown';
-    }
-  }
-  return libraryVersion;
+/** SHA-1 of the sections' lengths and the payload: a file whose numbers were altered in either fails it. */
+function checksumOf(lengths: number[], payload: Uint8Array): string {
+  return createHash('sha1').update(JSON.stringify(lengths)).update(payload).digest('hex');
 }

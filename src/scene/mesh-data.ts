@@ -18,10 +18,11 @@ export interface MeshData {
 }
 
 /**
- * A built BVH as three-mesh-bvh serializes it (format version 1): its root node buffers and
- * the triangle indices in the BVH's order.
+ * A built BVH as three-mesh-bvh serializes it: the serialized format's version, its root node
+ * buffers and the triangle indices in the BVH's order.
  */
 export interface PrebuiltBvh {
+  version: number;
   roots: ArrayBuffer[];
   index: Uint32Array;
 }

@@ -4,10 +4,13 @@ import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
 import { decodeMesh, encodeMesh, loadMeshesCached } from '../../src/cli/mesh-cache.ts';
+import { createNodeRenderPool } from '../../src/cli/node-worker-port.ts';
 import { loadMeshesFromDisk, MODELS_DIR } from '../../src/scene/load-meshes-node.ts';
 import type { MeshData } from '../../src/scene/mesh-data.ts';
 import { parseSceneJson } from '../../src/scene/scene-schema.ts';
+import type { Scene } from '../../src/scene/scene.ts';
 import { renderTile } from '../../src/tracer/render-tile.ts';
+import type { RenderTileOptions, Tile } from '../../src/tracer/tile.ts';
 import { meshAccel } from '../../src/tracer/shapes/mesh-accel.ts';
 import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
 
@@ -26,6 +29,28 @@ beforeEach(() => {
 
 afterEach(() => rmSync(join(cacheDir, '..'), { recursive: true, force: true }));
 
+function referenceScene(): Scene {
+  const parsed = parseSceneJson(readFileSync(REFERENCE, 'utf8'));
+  if (!parsed.ok) throw new Error(parsed.errors.join('\n'));
+  return parsed.scene;
+}
+
+/**
+ * The reference scene's robot, loaded through the cache (read back from its file) and afresh,
+ * and `tile` of the scene rendered with the fresh one; checks that the robot shows in it.
+ */
+async function robotRenderedAfresh(tile: Tile, options: RenderTileOptions) {
+  const scene = referenceScene();
+  copyFileSync(join(MODELS_DIR, 'character.obj'), join(modelsDir, 'character.obj'));
+  await loadMeshesCached(['character'], modelsDir, cacheDir);
+  const cached = await loadMeshesCached(['character'], modelsDir, cacheDir);
+  const fresh = await loadMeshesFromDisk(['character'], modelsDir);
+  const afresh = renderTile(buildTracerScene(scene, fresh), tile, options);
+  const withoutRobot = { ...scene, objects: scene.objects.filter((object) => object.shape !== 'mesh') };
+  expect(renderTile(buildTracerScene(withoutRobot, fresh), tile, options), 'the robot shows').not.toEqual(afresh);
+  return { scene, cached, fresh, afresh };
+}
+
 const cacheFile = () => join(cacheDir, 'capsule.mesh');
 const loadCapsule = async () => (await loadMeshesCached(['capsule'], modelsDir, cacheDir)).get('capsule')!;
 
@@ -41,36 +66,40 @@ describe("the rt command's model cache", () => {
     const first = await loadCapsule();
     expectSameModel(first, parsed);
     expect(first.bvh!.roots.length).toBeGreaterThan(0);
-    const written = statSync(cacheFile()).mtimeMs;
+    // A write renames a new file into place: a new inode, whatever the clock's resolution.
+    const { ino, mtimeMs } = statSync(cacheFile());
 
     const second = await loadCapsule();
     expectSameModel(second, parsed);
     // The same tree, byte for byte, from the file (not built and written again).
+    expect(second.bvh!.version).toBe(first.bvh!.version);
     expect(second.bvh!.index).toEqual(first.bvh!.index);
     expect(second.bvh!.roots.map((root) => new Uint8Array(root))).toEqual(first.bvh!.roots.map((root) => new Uint8Array(root)));
-    expect(statSync(cacheFile()).mtimeMs).toBe(written);
+    expect(statSync(cacheFile())).toMatchObject({ ino, mtimeMs });
   });
 
   it('renders a scene with a cached model exactly as with the model built afresh', async () => {
-    const parsed = parseSceneJson(readFileSync(REFERENCE, 'utf8'));
-    if (!parsed.ok) throw new Error(parsed.errors.join('\n'));
-    const scene = parsed.scene;
-    copyFileSync(join(MODELS_DIR, 'character.obj'), join(modelsDir, 'character.obj'));
-    await loadMeshesCached(['character'], modelsDir, cacheDir);
-    const cached = await loadMeshesCached(['character'], modelsDir, cacheDir);
-    const fresh = await loadMeshesFromDisk(['character'], modelsDir);
-    expect(cached.get('character')!.bvh).toBeDefined();
     // A tile of the 512 × 512 reference image with the robot in it.
     const tile = { x: 320, y: 208, width: 16, height: 16 };
     const options = { imageWidth: 512, imageHeight: 512, seed: 0 };
-    const fromCache = renderTile(buildTracerScene(scene, cached), tile, options);
-    const afresh = renderTile(buildTracerScene(scene, fresh), tile, options);
-    const withoutRobot = { ...scene, objects: scene.objects.filter((object) => object.shape !== 'mesh') };
-    expect(renderTile(buildTracerScene(withoutRobot, fresh), tile, options), 'the tile shows the robot').not.toEqual(afresh);
-    expect(fromCache).toEqual(afresh);
+    const { scene, cached, fresh, afresh } = await robotRenderedAfresh(tile, options);
+    expect(cached.get('character')!.bvh).toBeDefined();
+    expect(renderTile(buildTracerScene(scene, cached), tile, options)).toEqual(afresh);
     // The deserialized tree is the model's own: its box is the model's.
     expect(meshAccel(cached.get('character')!).bounds).toEqual(meshAccel(fresh.get('character')!).bounds);
   });
+
+  it('reaches a worker thread whole: the pool renders from a cached model the image a fresh one gives', async () => {
+    const { scene, cached, afresh } = await robotRenderedAfresh({ x: 0, y: 0, width: 24, height: 24 }, { imageWidth: 24, imageHeight: 24, seed: 0 });
+    const pool = createNodeRenderPool(1);
+    try {
+      const result = await pool.render(scene, cached, { width: 24, height: 24, seed: 0, preview: false }).done;
+      if (result.cancelled) throw new Error('the render was cancelled');
+      expect(result.rgb).toEqual(afresh);
+    } finally {
+      pool.dispose();
+    }
+  }, 30_000);
 
   it('rebuilds a damaged, truncated or emptied file, and writes it again whole', async () => {
     const parsed = (await loadMeshesFromDisk(['capsule'], modelsDir)).get('capsule')!;

@@ -1,6 +1,6 @@
 import { afterAll, describe, expect, it } from 'vitest';
 import { execFile } from 'node:child_process';
-import { readFile, rm, writeFile } from 'node:fs/promises';
+import { mkdir, readdir, readFile, rm, writeFile } from 'node:fs/promises';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { promisify } from 'node:util';
@@ -25,6 +25,14 @@ describe('the prebuilt rt command', () => {
     // As if every input had been saved after the build.
     await writeFile(recordFile, JSON.stringify({ ...record, builtAt: 0 }));
     expect(await staleReason(DIR)).toMatch(/ changed$/);
+  }, 60_000);
+
+  it("empties the command's model cache, which the previous build's parser and BVH builder made", async () => {
+    const meshCache = join(DIR, 'mesh-cache');
+    await mkdir(meshCache, { recursive: true });
+    await writeFile(join(meshCache, 'capsule.mesh'), 'made by an older build');
+    await buildNode(DIR, meshCache);
+    await expect(readdir(meshCache)).rejects.toThrow(/ENOENT/);
   }, 60_000);
 
   it('runs without TypeScript: its help, and a render whose worker threads run the build too', async () => {

@@ -1,5 +1,5 @@
 import { Box3, BufferAttribute, BufferGeometry, Vector3 } from 'three';
-import { MeshBVH, SAH } from 'three-mesh-bvh';
+import { MeshBVH, SAH, type SerializedBVH } from 'three-mesh-bvh';
 import type { MeshData, PrebuiltBvh } from '../../scene/mesh-data.ts';
 import type { Hit } from '../hit.ts';
 import { MESH_BVH_BUILD } from './mesh-bvh-build.ts';
@@ -43,8 +43,8 @@ export function meshAccel(mesh: MeshData): MeshAccel {
       geometry.setIndex(new BufferAttribute(mesh.bvh.index, 1));
       // `version` is missing from three-mesh-bvh's typings but read by deserialize: without
       // it the buffers are taken for the old format and rewritten.
-      const serialized = { version: 1, roots: mesh.bvh.roots, index: mesh.bvh.index, indirectBuffer: null };
-      bvh = MeshBVH.deserialize(serialized, geometry, { setIndex: false });
+      const { version, roots, index } = mesh.bvh;
+      bvh = MeshBVH.deserialize({ version, roots, index, indirectBuffer: null } as SerializedBVH, geometry, { setIndex: false });
     } else {
       geometry.setIndex(new BufferAttribute(mesh.indices.slice(), 1));
       bvh = new MeshBVH(geometry, { strategy: { SAH }[MESH_BVH_BUILD.strategy], targetLeafSize: MESH_BVH_BUILD.targetLeafSize });
@@ -60,8 +60,8 @@ export function meshAccel(mesh: MeshData): MeshAccel {
 /** The model's BVH (built now if it was not yet), copied out so that it can be stored and sent. */
 export function prebuiltBvh(mesh: MeshData): PrebuiltBvh {
   const { bvh } = meshAccel(mesh);
-  const serialized = MeshBVH.serialize(bvh, { cloneBuffers: true });
-  return { roots: serialized.roots, index: Uint32Array.from(serialized.index!) };
+  const serialized = MeshBVH.serialize(bvh, { cloneBuffers: false }) as SerializedBVH & { version: number };
+  return { version: serialized.version, roots: serialized.roots.map((root) => root.slice(0)), index: Uint32Array.from(serialized.index!) };
 }
 
 /**
