@@ -3,7 +3,7 @@ import { mkdir, readFile, rename, rm, writeFile } from 'node:fs/promises';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import type { MeshData, MeshLibrary } from '../scene/mesh-data.ts';
-import { MODELS_DIR, readModelText } from '../scene/load-meshes-node.ts';
+import { loadEachModel, MODELS_DIR, readModelText } from '../scene/load-meshes-node.ts';
 import { parseObj } from '../scene/obj-parser.ts';
 import { MESH_BVH_BUILD } from '../tracer/shapes/mesh-bvh-build.ts';
 
@@ -39,10 +39,8 @@ interface Header {
 }
 
 /** Like loadMeshesFromDisk, through the cache: the same models, each with its built BVH. */
-export async function loadMeshesCached(names: Iterable<string>, modelsDir = MODELS_DIR, cacheDir = MESH_CACHE_DIR): Promise<MeshLibrary> {
-  const unique = [...new Set(names)];
-  const meshes = await Promise.all(unique.map((name) => loadMeshCached(name, modelsDir, cacheDir)));
-  return new Map(unique.map((name, i) => [name, meshes[i]]));
+export function loadMeshesCached(names: Iterable<string>, modelsDir = MODELS_DIR, cacheDir = MESH_CACHE_DIR): Promise<MeshLibrary> {
+  return loadEachModel(names, (name) => loadMeshCached(name, modelsDir, cacheDir));
 }
 
 async function loadMeshCached(name: string, modelsDir: string, cacheDir: string): Promise<MeshData> {

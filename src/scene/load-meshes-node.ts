@@ -13,14 +13,15 @@ export const MODELS_DIR = fileURLToPath(new URL('../../assets/models/', import.m
  * @param dir - Defaults to the repository's assets/models.
  * @throws Error naming the model and file when one is missing or malformed.
  */
-export async function loadMeshesFromDisk(names: Iterable<string>, dir = MODELS_DIR): Promise<MeshLibrary> {
-  const unique = [...new Set(names)];
-  const meshes = await Promise.all(unique.map((name) => loadMesh(name, dir)));
-  return new Map(unique.map((name, i) => [name, meshes[i]]));
+export function loadMeshesFromDisk(names: Iterable<string>, dir = MODELS_DIR): Promise<MeshLibrary> {
+  return loadEachModel(names, async (name) => parseObj(await readModelText(name, dir), `${name}.obj`));
 }
 
-async function loadMesh(name: string, dir: string): Promise<MeshData> {
-  return parseObj(await readModelText(name, dir), `${name}.obj`);
+/** Each named model once, loaded by `load` at the same time as the others, by name. */
+export async function loadEachModel(names: Iterable<string>, load: (name: string) => Promise<MeshData>): Promise<MeshLibrary> {
+  const unique = [...new Set(names)];
+  const meshes = await Promise.all(unique.map(load));
+  return new Map(unique.map((name, i) => [name, meshes[i]]));
 }
 
 /**
