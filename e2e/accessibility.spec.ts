@@ -34,9 +34,9 @@ for (const lang of ['en', 'nl'] as const) {
     await expectAccessible(page, 'the render window', { fromShadowDom: ['rt-app rt-lab', 'rt-render-window'] });
 
     // The free lab: every panel, each of its sections open, and the ray debugger's dock open on a pixel.
-    // Only the hash changed: the page is loaded again for the free lab to open.
+    // Only the hash changes: the game follows it to the free lab without a new page.
     await at('#free-lab');
-    await page.reload();
+    await expect(page.locator('rt-lab')).toHaveAttribute('free-lab', '');
     const pixel = page.locator('rt-screen-preview').getByRole('button', { name: 'Pixel 2, 1', exact: true });
     await pixel.click();
     await page.getByRole('button', { name: DEBUG_A_PIXEL[lang] }).click();

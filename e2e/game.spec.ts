@@ -99,6 +99,19 @@ test('a new player plays levels 1 and 2 through the UI; level 2 opens only after
   expect(errors).toEqual([]);
 });
 
+test('a free lab link pasted into the tab the game is open in opens the free lab', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('./');
+  await page.getByRole('button', { name: 'Got it' }).click();
+  await expect(page.locator('rt-lab')).not.toHaveAttribute('free-lab');
+  // Only the fragment changes: the browser loads no page, the game follows it.
+  await page.evaluate(() => (location.hash = '#free-lab'));
+  await expect(page.locator('rt-lab')).toHaveAttribute('free-lab', '');
+  await expect(page.getByRole('heading', { name: 'Free lab' })).toBeVisible();
+  await expect(page.locator('rt-scene-list').getByRole('option', { name: /Red ball/ })).toBeVisible();
+  expect(errors).toEqual([]);
+});
+
 test('the ring stays on its control when the sidebar scrolls', async ({ page }) => {
   await page.goto('./');
   await page.getByRole('button', { name: 'Got it' }).click();

@@ -95,9 +95,15 @@ export class QuestController implements ReactiveController {
     // The toast is on the page after the first render.
     void this.host.updateComplete.then(() => problems.forEach((problem) => problem && this.host.toast(problem, 'error')));
     const newcomer = Object.keys(session.engine.progress.levels).length === 0 && session.engine.progress.current === null;
-    // #free-lab (a bookmark, the lab's own browser tests) goes straight to the free lab.
+    // #free-lab (a bookmark, the lab's own browser tests) goes straight to the free lab,
+    // also when it is pasted into a tab the game is open in: a new fragment loads no page.
     if (location.hash === FREE_LAB_HASH) session.openFreeLab();
     else session.start();
+    const onHashChange = () => {
+      if (location.hash === FREE_LAB_HASH) this.map({ kind: 'free-lab' });
+    };
+    addEventListener('hashchange', onHashChange);
+    this.cleanup.push(() => removeEventListener('hashchange', onHashChange));
     this.welcome = false;
     this.welcomeDue = newcomer;
     this.survey = new SurveyStore(storage, session.progressKey).load();
