@@ -109,6 +109,13 @@ test('a free lab link pasted into the tab the game is open in opens the free lab
   await expect(page.locator('rt-lab')).toHaveAttribute('free-lab', '');
   await expect(page.getByRole('heading', { name: 'Free lab' })).toBeVisible();
   await expect(page.locator('rt-scene-list').getByRole('option', { name: /Red ball/ })).toBeVisible();
+  // Back to a level: the address stops saying free lab, and the same link works again.
+  await page.locator('[data-command="levels"]').click();
+  await page.locator('rt-level-map [data-level="01-introduction"]').click();
+  await expect(page.locator('rt-lab')).not.toHaveAttribute('free-lab');
+  expect(new URL(page.url()).hash).toBe('');
+  await page.evaluate(() => (location.hash = '#free-lab'));
+  await expect(page.locator('rt-lab')).toHaveAttribute('free-lab', '');
   expect(errors).toEqual([]);
 });
 

@@ -123,6 +123,9 @@ export class QuestController implements ReactiveController {
   }
 
   private changed(): void {
+    // Left the free lab a #free-lab address opened: the address no longer says so, so that a
+    // reload returns to the game where the learner is, and the same link pasted again opens it.
+    if (this.session && this.session.mode.kind !== 'free-lab' && location.hash === FREE_LAB_HASH) history.replaceState(history.state, '', location.pathname + location.search);
     if (this.welcomeDue && this.session?.mode.kind === 'level') {
       this.welcomeDue = false;
       this.welcome = true;
