@@ -2,6 +2,9 @@
 import { parseArgs } from 'node:util';
 import { UsageError } from './cli-errors.ts';
 
+/** A negative number such as -5 or -0.5, which is a value, not an option. */
+const NEGATIVE_NUMBER = /^-\.?\d/;
+
 export interface Command {
   /** Options that take a value (`--out x.png`). */
   strings?: string[];
@@ -37,7 +40,9 @@ export class CommandLine {
       // hasOwn, not `in`: --constructor or --toString must not pass as options of every command.
       if (!Object.hasOwn(options, name)) throw this.usageError(`unknown option ${rawName}`);
       const takesValue = strings.includes(name);
-      if (takesValue && (value === undefined || (!inlineValue && value.startsWith('-')))) {
+      // A value starting with "-" is the next option, unless it reads as a negative number
+      // (--width -5), which is then refused by its own range check with the value named.
+      if (takesValue && (value === undefined || (!inlineValue && value.startsWith('-') && !NEGATIVE_NUMBER.test(value)))) {
         throw this.usageError(`${rawName} needs a value`);
       }
       if (!takesValue && value !== undefined) throw this.usageError(`${rawName} takes no value`);

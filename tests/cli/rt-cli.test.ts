@@ -147,6 +147,8 @@ describe('rt with bad input or asking for help', () => {
       /this render would take about \d+ (minutes|hours) on 1 worker \(.* rays\): give --force to render it anyway; lighter: settings\.supersampling 1 \(about \d+ seconds\), or --width \d+ --height \d+/,
     ],
     ['a malformed --width', () => ['render', file('scene.json'), '--out', file('x.png'), '--width', 'wide'], 2, /--width must be a whole number/],
+    ['a negative --width', () => ['render', file('scene.json'), '--out', file('x.png'), '--width', '-5'], 2, /--width must be a whole number from 1 to 4096, got "-5"/],
+    ['an option where a value belongs', () => ['render', file('scene.json'), '--width', '--out', file('x.png')], 2, /--width needs a value/],
     ['a malformed --pixel', () => ['trace', file('scene.json'), '--pixel', '3;2'], 2, /--pixel must be/],
     ['validate without files', () => ['validate'], 2, /give one or more files/],
     ['a missing file', () => ['render', file('missing.json'), '--out', file('x.png')], 1, /missing\.json: cannot read/],
