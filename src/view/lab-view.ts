@@ -84,6 +84,8 @@ const COVERAGE_CHANGE = 24;
 
 /** The 3D view's own vertical field of view (degrees), which declared views frame with. */
 const VIEW_FOV = 45;
+/** Multisampling of the render window's raster picture on a GPU (none on a CPU rasterizer, as the view itself). */
+const SNAPSHOT_SAMPLES = 4;
 
 /**
  * How long the view waits after an edit of the scene for the edit's rays, before it draws
@@ -151,6 +153,8 @@ export class LabView {
    */
   drawnRaysScene: Scene | null = null;
   private sized = false;
+  /** WebGL draws on a CPU rasterizer (SwiftShader, llvmpipe): no antialiasing, bursts drawn coarse. */
+  private readonly software: boolean;
   /** On a CPU rasterizer: a burst of edits is drawn at reduced resolution (null on a GPU). */
   private readonly burst: BurstResolution | null;
   /** The share of the device pixel ratio drawn now (below 1 during a burst). */
@@ -172,9 +176,9 @@ export class LabView {
     this.cameraScreen = new CameraScreen();
     this.selectionBox = new BoxHelper(new Group(), SELECTION_COLOR);
     this.grid = new GridHelper(20, 20, 0x6b7686, 0x8a94a3);
-    const software = drawsInSoftware();
-    this.renderer = new WebGLRenderer({ canvas, antialias: !software, alpha: true });
-    this.burst = software ? new BurstResolution((scale) => this.setResolutionScale(scale)) : null;
+    this.software = drawsInSoftware();
+    this.renderer = new WebGLRenderer({ canvas, antialias: !this.software, alpha: true });
+    this.burst = this.software ? new BurstResolution((scale) => this.setResolutionScale(scale)) : null;
     this.renderer.outputColorSpace = LinearSRGBColorSpace;
     this.renderer.setClearColor(0x000000, 0);
     this.scheduler = new FrameScheduler(() => this.draw());
@@ -478,7 +482,7 @@ export class LabView {
     if (this.rayLayer) hidden.push(this.rayLayer.object);
     if (this.bvhLayer) hidden.push(this.bvhLayer);
     const { camera, settings } = this.store.state.scene;
-    return rasterSnapshot(this.renderer, this.scene, hidden, camera, settings.background, width, height);
+    return rasterSnapshot(this.renderer, this.scene, hidden, camera, settings.background, width, height, this.software ? 0 : SNAPSHOT_SAMPLES);
   }
 
   /** Looks at the whole scene (objects, lights and the tracer's camera) from the front left, above. */
