@@ -78,6 +78,18 @@ export class BandPainter {
     this.schedule();
   }
 
+  /**
+   * Sets up the page's 2D drawing before a render needs it. The browser connects a page's
+   * first 2D drawing to the GPU process in a synchronous round trip; made during a render it
+   * waited there 190–220 ms behind the GPU process's frames (a software GPU, both cores
+   * tracing), a frozen page when the first preview arrived. Made with the window's opening,
+   * while the machine is idle, it takes a few ms.
+   */
+  warmUp(): void {
+    this.previewCanvas ??= new OffscreenCanvas(1, 1);
+    this.previewCanvas.getContext('2d')?.putImageData(new ImageData(1, 1), 0, 0);
+  }
+
   /** Forgets the image: nothing more is painted. */
   stop(): void {
     cancelAnimationFrame(this.frame);

@@ -142,6 +142,7 @@ export class RtRenderWindow extends LitElement {
     const ended = this.wasRunning && !this.jobs.running && this.shadowRoot?.activeElement === this.cancelButton.value;
     this.wasRunning = this.jobs.running;
     if ((changed.has('open') && this.open) || ended) this.renderButton.value?.focus();
+    if (changed.has('open') && this.open) this.painter.warmUp();
   }
 
   /**

@@ -8,11 +8,14 @@ import { BandPainter } from '../../../../src/ui/lab/render-window/band-painter.t
  * exercised by e2e/render-progress.spec.ts.
  */
 class FakeImageData {
-  constructor(
-    readonly data: Uint8ClampedArray,
-    readonly width: number,
-    readonly height: number,
-  ) {}
+  readonly data: Uint8ClampedArray;
+  readonly width: number;
+  readonly height: number;
+  /** As ImageData: (data, width, height) or a blank (width, height). */
+  constructor(data: Uint8ClampedArray | number, width: number, height?: number) {
+    if (typeof data === 'number') [this.data, this.width, this.height] = [new Uint8ClampedArray(data * width * 4), data, width];
+    else [this.data, this.width, this.height] = [data, width, height!];
+  }
 }
 
 interface Call {
@@ -107,5 +110,24 @@ describe('the render window painter', () => {
     painter.paintChanges(full, { preview: null, tiles: [{ x: 0, y: 0, width: 4, height: 4 }] }, false);
     runFrames();
     expect(perFrame.at(-1)!.map((call) => call.kind)).toEqual(['put']); // the same render: no clearing
+  });
+
+  it('warms up by putting one pixel into a preview canvas of its own, which a real preview replaces at its size', () => {
+    const made: { width: number; height: number; puts: number[][] }[] = [];
+    vi.stubGlobal('OffscreenCanvas', class {
+      readonly puts: number[][] = [];
+      constructor(readonly width: number, readonly height: number) {
+        made.push(this);
+      }
+      getContext = () => ({ putImageData: (data: FakeImageData, ...at: number[]) => void this.puts.push([data.width, data.height, ...at]) });
+    });
+    const painter = painterOn(64, 64);
+    painter.warmUp();
+    expect(made).toMatchObject([{ width: 1, height: 1, puts: [[1, 1, 0, 0]] }]);
+    expect(frames).toHaveLength(0); // nothing for the visible canvas
+    painter.paintChanges(image(64, 64), { preview: { image: { ...image(8, 8), block: 8 }, rows: [0, 8] }, tiles: [] }, false);
+    runFrames();
+    expect(made.map(({ width, height }) => [width, height])).toEqual([[1, 1], [8, 8]]);
+    expect(perFrame.flat().map((call) => [call.kind, ...call.args])).toEqual([['clear'], ['draw', 0, 0, 8, 8, 0, 0, 64, 64]]);
   });
 });
