@@ -174,3 +174,37 @@ test('a render estimated at over a minute waits: a lighter option renders, nothi
   await window.getByRole('button', { name: 'Cancel' }).click();
   await expect(window.getByTestId('render-status')).toContainText('Render cancelled');
 });
+
+test('the workers start once the raster picture is read back, or a second later without it', async ({ page }) => {
+  const window = await openRenderWindow(page);
+  // The render's progress as the window says it: 'starting' until the workers answer.
+  const run = (releaseAfterMs: number | null) =>
+    window.evaluate(async (element: RtRenderWindow, releaseAfter) => {
+      const sleep = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
+      let release = () => {};
+      // A raster picture read back when the test says so (or never).
+      element.rasterSnapshot = (width, height) => new Promise((resolve) => (release = () => resolve(new ImageData(width, height))));
+      const phase = () => element.shadowRoot!.querySelector('[data-testid="render-progress"], [data-testid="render-status"]')?.textContent?.trim() ?? 'starting';
+      const start = performance.now();
+      void element.startRender();
+      await element.updateComplete; // the last render's outcome gives way to 'Starting…'
+      let whileHeld = '';
+      if (releaseAfter !== null) {
+        await sleep(releaseAfter);
+        whileHeld = phase();
+        release();
+      }
+      while (phase() === 'starting') await sleep(5);
+      const startedAfterMs = performance.now() - start;
+      while (!/^Done/.test(phase())) await sleep(20);
+      return { whileHeld, startedAfterMs };
+    }, releaseAfterMs);
+
+  // Held for 600 ms (the free lab's image renders in a fraction of that): nothing traced until released.
+  const released = await run(600);
+  expect(released.whileHeld).toBe('starting');
+  expect(released.startedAfterMs).toBeGreaterThanOrEqual(600);
+  // Never read back (a lost GPU): the render starts anyway, after the window's wait.
+  const never = await run(null);
+  expect(never.startedAfterMs).toBeGreaterThanOrEqual(1000); // RASTER_WAIT_MS
+});

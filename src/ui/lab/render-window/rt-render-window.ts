@@ -33,6 +33,13 @@ export type RasterSnapshot = (width: number, height: number) => ImageData | Prom
 export const RASTER_MAX_SIDE = 1024;
 
 /**
+ * How long a render waits for its raster picture before its workers start: about 250 ms for a
+ * 1024² picture on a software GPU, a few ms on a real one; a picture that never comes (a lost
+ * GPU) does not hold the render back.
+ */
+export const RASTER_WAIT_MS = 1000;
+
+/**
  * @summary The render window: the full image ray traced by the worker pool, with a progressive
  * preview, progress, cancel, time and rays per second, zoom, Save as PNG and a comparison with
  * the raster view from the same camera.
@@ -166,13 +173,22 @@ export class RtRenderWindow extends LitElement {
     this.jobs.cancel(this.store);
   }
 
-  /** A render starts: the raster picture is taken now (same camera, same moment) and drawn once the canvases exist. */
+  /**
+   * A render starts: the raster picture is taken now (same camera, same moment) and drawn once
+   * the canvases exist. The workers start once it is read back, or after RASTER_WAIT_MS: the
+   * read-back ends in a synchronous round trip to the GPU process, which on a software GPU
+   * with both cores tracing waited 100–250 ms behind the GPU process's frames, the page frozen
+   * meanwhile (docs/benchmarks.md, fifteenth round).
+   */
   private async prepareStage({ width, height }: ShownRender, isCurrent: () => boolean): Promise<void> {
     const raster = this.takeRasterSnapshot(width, height);
     await this.updateComplete; // the canvases exist from here on
     // Every new render opens whole: a zoom into the last image means nothing for this one.
     this.compare.value?.zoomToFit();
-    if (raster) void this.paintRaster(raster, isCurrent);
+    if (!raster) return;
+    void this.paintRaster(raster, isCurrent);
+    const waited = new Promise<void>((resolve) => setTimeout(resolve, RASTER_WAIT_MS));
+    await Promise.race([raster.catch(() => undefined), waited]); // paintRaster says why it failed
   }
 
   /** Starts the raster picture now (the scene as it is); null, with a note, when there is none. */
