@@ -272,7 +272,7 @@ test('the help panel opens with ? and lists every key, and Escape closes it', as
   await expect(dialog).toBeHidden();
 });
 
-test('idle costs nothing: no frames when nothing changes, and a slider drag makes no new geometry', async ({ page }) => {
+test('idle costs nothing: no frames when nothing changes or a fact is reported, and a slider drag makes no new geometry', async ({ page }) => {
   // Idle from when the camera's rays are drawn (the 3D view loads, then its rays arrive, and
   // on SwiftShader their first frame compiles shaders for a second or two): from then on a
   // whole second passes without a frame. A render loop would never get there.
@@ -287,6 +287,14 @@ test('idle costs nothing: no frames when nothing changes, and a slider drag make
       { timeout: 20_000 },
     )
     .toBe(0);
+  // Facts the store hears (a render started and finished) change nothing drawn: no frame.
+  const idle = await frames(page);
+  await sceneView(page).evaluate((element: RtSceneView) => {
+    element.store!.dispatch({ type: 'render.started' });
+    element.store!.dispatch({ type: 'render.finished', ms: 5 });
+  });
+  await page.waitForTimeout(500);
+  expect(await frames(page)).toBe(idle);
 
   const geometries = () => sceneView(page).evaluate((element: RtSceneView) => element.labView!.renderer.info.memory.geometries);
   const drag = (from: number, to: number) =>

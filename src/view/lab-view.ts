@@ -588,6 +588,10 @@ export class LabView {
   // --- store → drawing ---
 
   private update(state: LabState): void {
+    // A fact (render.started, view.orbited, …) changes nothing drawn. A frame for it made a
+    // page composited on the CPU read the canvas back at Render, waiting 110–150 ms for the
+    // software GPU to finish the render window's raster picture first.
+    if (state === this.previous) return;
     const previous = this.previous;
     this.previous = state;
     // A level's first view is where it starts, not a flight away from the scene's framing.
