@@ -33,11 +33,12 @@ export default defineConfig({
   projects: [
     // Everything, with SwiftShader as the GPU: WebGL, and the page's compositing too.
     { name: 'chromium' },
-    // The slider's time again as Chrome runs on a machine without a usable GPU: the page is
-    // composited on the CPU and only WebGL runs on SwiftShader (docs/benchmarks.md, sixth round).
+    // The slider's time and a heavy render's long tasks again as Chrome runs on a machine
+    // without a usable GPU: the page is composited on the CPU and only WebGL runs on
+    // SwiftShader (docs/benchmarks.md, sixth and fifteenth rounds).
     {
       name: 'software-compositing',
-      testMatch: 'slider-latency.spec.ts',
+      testMatch: ['slider-latency.spec.ts', 'render-progress.spec.ts'],
       use: { launchOptions: { executablePath, args: [...browserArgs, '--disable-gpu-compositing'] } },
     },
   ],
