@@ -1,23 +1,13 @@
 import { existsSync, readFileSync } from 'node:fs';
+import { COMPOSITING, COMPOSITINGS, type Compositing } from './browser-compositing.ts';
 
 /**
  * Slider to rays in the browser, as the last browser test run measured it
  * (e2e/slider-latency.spec.ts writes test-results/slider-latency-<project>.json, WebGL on
  * SwiftShader): the benchmark reports it beside its own Node figures, which leave out the
  * panels and the GPU's frame. The browser is not started here: the figure is as old as that
- * run, and says so.
- *
- * Two ways of compositing the page, one Playwright project each (playwright.config.ts):
- * - 'chromium': SwiftShader is the GPU for everything, the page's compositing too. No real
- *   machine composites like this; on this project's machine that alone costs 22 ms a frame.
- * - 'software-compositing': the page is composited on the CPU and only WebGL runs on
- *   SwiftShader, as Chrome runs on a machine without a usable GPU.
+ * run, and says so. One file per way of compositing the page (browser-compositing.ts).
  */
-
-/** The Playwright projects whose figures are reported, and how the table names them. */
-const COMPOSITING = { chromium: 'page composited on SwiftShader', 'software-compositing': 'page composited on the CPU' } as const;
-type Compositing = keyof typeof COMPOSITING;
-const COMPOSITINGS = Object.keys(COMPOSITING) as Compositing[];
 
 interface Latency {
   steps: number;

@@ -32,6 +32,7 @@ import { naiveTracerScene } from './naive/naive-tracer-scene.ts';
 import { printTable } from './print-table.ts';
 import { measureView, roundedView, viewRows } from './view-bench.ts';
 import { measureSliderLatency, sliderRows } from './slider-latency-bench.ts';
+import { browserRenderFigures, browserRenderRows } from './browser-render-figures.ts';
 import { browserSliderFigures, browserSliderRows } from './browser-slider-figures.ts';
 
 const SCENE_FILE = new URL('scenes/reference.json', import.meta.url);
@@ -235,6 +236,7 @@ async function main(): Promise<void> {
     firstLoad: firstLoadFigures,
     sliderToRays,
     sliderToRaysInBrowser: browserSliderFigures(),
+    heavyRenderInBrowser: browserRenderFigures(),
   };
   writeFileSync(RESULTS_FILE, `${JSON.stringify(results, null, 2)}\n`);
 
@@ -262,6 +264,7 @@ async function main(): Promise<void> {
     ...firstLoadRows(firstLoadFigures),
     ...sliderRows(sliderToRays),
     ...browserSliderRows(results.sliderToRaysInBrowser),
+    ...browserRenderRows(results.heavyRenderInBrowser),
   ]);
   console.log(`\nwrote ${RESULTS_FILE.pathname}`);
 }
