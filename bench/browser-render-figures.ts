@@ -1,5 +1,4 @@
-import { existsSync, readFileSync } from 'node:fs';
-import { COMPOSITING, COMPOSITINGS, type Compositing } from './browser-compositing.ts';
+import { COMPOSITING, COMPOSITINGS, type Compositing, lastBrowserRun } from './browser-compositing.ts';
 
 /**
  * The page's long tasks during a heavy render, as the last browser test run measured them
@@ -17,25 +16,13 @@ export interface BrowserRenderFigures {
   coveredWithinMs: number;
 }
 
-function figuresFile(compositing: Compositing): URL {
-  return new URL(`../test-results/render-metrics-${compositing}.json`, import.meta.url);
-}
-
 /** Per way of compositing, the last browser run's figures, or null when there is none (or it cannot be read). */
 export function browserRenderFigures(): Record<Compositing, BrowserRenderFigures | null> {
-  return Object.fromEntries(COMPOSITINGS.map((compositing) => [compositing, figuresOf(compositing)])) as Record<Compositing, BrowserRenderFigures | null>;
-}
-
-function figuresOf(compositing: Compositing): BrowserRenderFigures | null {
-  const file = figuresFile(compositing);
-  if (!existsSync(file)) return null;
-  try {
-    const { date, heavyRender } = JSON.parse(readFileSync(file, 'utf8')) as { date: string; heavyRender: Omit<BrowserRenderFigures, 'measured'> };
+  return lastBrowserRun('render-metrics', (json) => {
+    const { date, heavyRender } = json as { date: string; heavyRender: Omit<BrowserRenderFigures, 'measured'> };
     if (!Array.isArray(heavyRender?.longTasks) || typeof heavyRender.coveredWithinMs !== 'number') return null;
     return { measured: date, longTasks: heavyRender.longTasks, maxLongTaskMs: heavyRender.maxLongTaskMs, coveredWithinMs: heavyRender.coveredWithinMs };
-  } catch {
-    return null;
-  }
+  });
 }
 
 export function browserRenderRows(all: Record<Compositing, BrowserRenderFigures | null>): [string, string, string][] {

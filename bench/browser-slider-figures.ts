@@ -1,5 +1,4 @@
-import { existsSync, readFileSync } from 'node:fs';
-import { COMPOSITING, COMPOSITINGS, type Compositing } from './browser-compositing.ts';
+import { COMPOSITING, COMPOSITINGS, type Compositing, lastBrowserRun } from './browser-compositing.ts';
 
 /**
  * Slider to rays in the browser, as the last browser test run measured it
@@ -24,24 +23,12 @@ export interface BrowserSliderFigures {
   keys: Latency;
 }
 
-function figuresFile(compositing: Compositing): URL {
-  return new URL(`../test-results/slider-latency-${compositing}.json`, import.meta.url);
-}
-
 /** Per way of compositing, the last browser run's figures, or null when there is none (or it cannot be read). */
 export function browserSliderFigures(): Record<Compositing, BrowserSliderFigures | null> {
-  return Object.fromEntries(COMPOSITINGS.map((compositing) => [compositing, figuresOf(compositing)])) as Record<Compositing, BrowserSliderFigures | null>;
-}
-
-function figuresOf(compositing: Compositing): BrowserSliderFigures | null {
-  const file = figuresFile(compositing);
-  if (!existsSync(file)) return null;
-  try {
-    const figures = JSON.parse(readFileSync(file, 'utf8')) as BrowserSliderFigures;
+  return lastBrowserRun('slider-latency', (json) => {
+    const figures = json as BrowserSliderFigures;
     return figures.drag && figures.keys && figures.firstDrag ? figures : null;
-  } catch {
-    return null;
-  }
+  });
 }
 
 export function browserSliderRows(all: Record<Compositing, BrowserSliderFigures | null>): [string, string, string][] {
