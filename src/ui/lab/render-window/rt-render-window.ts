@@ -20,24 +20,7 @@ import { controlStyles } from './render-window-styles.ts';
 import { pngFileName, savePng } from './save-png.ts';
 import type { RtImageCompare } from './rt-image-compare.ts';
 import './rt-image-compare.ts';
-
-/** The scene view's raster (three.js) picture from the ray tracer's camera, at this size (drawn at once, maybe read back later). */
-export type RasterSnapshot = (width: number, height: number) => ImageData | Promise<ImageData>;
-
-/**
- * The raster picture's longest side. It is drawn and read back on the main thread in one go:
- * at 4096 × 4096 that blocked the page for 12.8 s on SwiftShader (the e2e run), against the
- * 50 ms a screen update may take. Larger images get a proportionally smaller picture, which
- * the comparison scales to the image's size.
- */
-export const RASTER_MAX_SIDE = 1024;
-
-/**
- * How long a render waits for its raster picture before its workers start: about 250 ms for a
- * 1024² picture on a software GPU, a few ms on a real one; a picture that never comes (a lost
- * GPU) does not hold the render back.
- */
-export const RASTER_WAIT_MS = 1000;
+import { paintRasterPicture, type RasterSnapshot, readBackOrWait, takeRasterPicture } from './raster-picture.ts';
 
 /**
  * @summary The render window: the full image ray traced by the worker pool, with a progressive
@@ -175,66 +158,19 @@ export class RtRenderWindow extends LitElement {
 
   /**
    * A render starts: the raster picture is taken now (same camera, same moment) and drawn once
-   * the canvases exist. The workers start once it is read back, or after RASTER_WAIT_MS: the
-   * read-back ends in a synchronous round trip to the GPU process, which on a software GPU
-   * with both cores tracing waited 100–250 ms behind the GPU process's frames, the page frozen
-   * meanwhile (docs/benchmarks.md, fifteenth round).
+   * the canvases exist. The workers start once it is read back (readBackOrWait).
    */
   private async prepareStage({ width, height }: ShownRender, isCurrent: () => boolean): Promise<void> {
-    const raster = this.takeRasterSnapshot(width, height);
+    const picture = takeRasterPicture(this.rasterSnapshot, width, height);
+    this.rasterNote = 'note' in picture ? picture.note : '';
     await this.updateComplete; // the canvases exist from here on
     // Every new render opens whole: a zoom into the last image means nothing for this one.
     this.compare.value?.zoomToFit();
-    if (!raster) return;
-    void this.paintRaster(raster, isCurrent);
-    const waited = new Promise<void>((resolve) => setTimeout(resolve, RASTER_WAIT_MS));
-    await Promise.race([raster.catch(() => undefined), waited]); // paintRaster says why it failed
-  }
-
-  /** Starts the raster picture now (the scene as it is); null, with a note, when there is none. */
-  private takeRasterSnapshot(width: number, height: number): Promise<ImageData> | null {
-    this.rasterNote = '';
-    if (!this.rasterSnapshot) {
-      this.rasterNote = msg('Comparing with the raster view is not available here.');
-      return null;
-    }
-    const scale = Math.min(1, RASTER_MAX_SIDE / Math.max(width, height));
-    try {
-      return Promise.resolve(this.rasterSnapshot(Math.max(1, Math.round(width * scale)), Math.max(1, Math.round(height * scale))));
-    } catch (error) {
-      this.rasterNote = notCaptured(error);
-      return null;
-    }
-  }
-
-  /**
-   * Draws the raster picture at its own size (CSS scales it on screen). Through an ImageBitmap,
-   * which the browser makes off the main thread: putImageData of a 2048 × 1536 picture
-   * blocked it for 50 ms.
-   */
-  private async paintRaster(snapshot: Promise<ImageData>, isCurrent: () => boolean): Promise<void> {
-    let pixels: ImageData;
-    try {
-      pixels = await snapshot;
-    } catch (error) {
-      if (isCurrent()) this.rasterNote = notCaptured(error);
-      return;
-    }
-    let bitmap: ImageBitmap;
-    try {
-      bitmap = await createImageBitmap(pixels);
-    } catch (error) {
-      if (isCurrent()) this.rasterNote = msg(str`The raster view could not be shown (${errorMessage(error)}).`);
-      return;
-    }
-    const canvas = this.rasterCanvas.value;
-    const context = canvas?.getContext('2d');
-    if (isCurrent() && canvas && context) {
-      canvas.width = bitmap.width;
-      canvas.height = bitmap.height;
-      context.drawImage(bitmap, 0, 0);
-    }
-    bitmap.close();
+    if (!('pixels' in picture)) return;
+    void paintRasterPicture(picture.pixels, () => this.rasterCanvas.value, isCurrent).then((note) => {
+      if (note && isCurrent()) this.rasterNote = note;
+    });
+    await readBackOrWait(picture.pixels);
   }
 
   private async save(): Promise<void> {
@@ -392,10 +328,6 @@ export class RtRenderWindow extends LitElement {
       <button @click=${() => void this.startRender()} title=${msg('Render the changed scene')}>${msg('Render again')}</button>
     </p>`;
   }
-}
-
-function notCaptured(error: unknown): string {
-  return msg(str`The raster view could not be captured (${errorMessage(error)}), so there is nothing to compare with.`);
 }
 
 customElements.define('rt-render-window', RtRenderWindow);
