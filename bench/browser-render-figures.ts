@@ -3,15 +3,15 @@ import { COMPOSITING, COMPOSITINGS, type Compositing, lastBrowserRun } from './b
 /**
  * The page's long tasks during a heavy render, as the last browser test run measured them
  * (e2e/render-progress.spec.ts writes test-results/render-metrics-<project>.json: a 4096²
- * render on two workers, in the first 5 s after the click on Render). Issue 12 asks that no screen update during a render take over 50 ms. The
- * browser is not started here: the figure is as old as that run, and says so.
+ * render on two workers, in the first 5 s after the click on Render). Issue 12 asks that no
+ * screen update during a render take over 50 ms. The browser is not started here: the figure
+ * is as old as that run, and says so.
  */
 
 export interface BrowserRenderFigures {
   measured: string;
   /** [start after the click, duration] in ms, of every task over 50 ms in the first 5 s. */
   longTasks: [number, number][];
-  maxLongTaskMs: number;
   /** From the click until three quarters of the picture were painted. */
   coveredWithinMs: number;
 }
@@ -21,7 +21,7 @@ export function browserRenderFigures(): Record<Compositing, BrowserRenderFigures
   return lastBrowserRun('render-metrics', (json) => {
     const { date, heavyRender } = json as { date: string; heavyRender: Omit<BrowserRenderFigures, 'measured'> };
     if (!Array.isArray(heavyRender?.longTasks) || typeof heavyRender.coveredWithinMs !== 'number') return null;
-    return { measured: date, longTasks: heavyRender.longTasks, maxLongTaskMs: heavyRender.maxLongTaskMs, coveredWithinMs: heavyRender.coveredWithinMs };
+    return { measured: date, longTasks: heavyRender.longTasks, coveredWithinMs: heavyRender.coveredWithinMs };
   });
 }
 
@@ -30,11 +30,11 @@ export function browserRenderRows(all: Record<Compositing, BrowserRenderFigures 
     const how = COMPOSITING[compositing];
     const figures = all[compositing];
     if (!figures) return [`longest page task, heavy render's first 5 s (e2e, ${how})`, 'not measured: run npx playwright test e2e/render-progress.spec.ts', '≤ 50 ms'];
-    const { measured, longTasks, maxLongTaskMs, coveredWithinMs } = figures;
+    const { measured, longTasks, coveredWithinMs } = figures;
     const covered = `picture ¾ painted in ${(coveredWithinMs / 1000).toFixed(1)} s`;
     return [
       `longest page task, heavy render's first 5 s (e2e ${measured.slice(0, 10)}, ${how})`,
-      longTasks.length === 0 ? `none over 50 ms; ${covered}` : `${maxLongTaskMs} ms (${longTasks.length} over 50 ms); ${covered}`,
+      longTasks.length === 0 ? `none over 50 ms; ${covered}` : `${Math.max(...longTasks.map(([, duration]) => duration))} ms (${longTasks.length} over 50 ms); ${covered}`,
       '≤ 50 ms',
     ];
   });

@@ -131,8 +131,9 @@ export class RtRenderWindow extends LitElement {
     // Focus was on Cancel when the render ended: move it to Render rather than lose it.
     const ended = this.wasRunning && !this.jobs.running && this.shadowRoot?.activeElement === this.cancelButton.value;
     this.wasRunning = this.jobs.running;
-    if ((changed.has('open') && this.open) || ended) this.renderButton.value?.focus();
-    if (changed.has('open') && this.open) this.painter.warmUp();
+    const opened = changed.has('open') && this.open;
+    if (opened || ended) this.renderButton.value?.focus();
+    if (opened) this.painter.warmUp();
   }
 
   /**
