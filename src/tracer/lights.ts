@@ -1,8 +1,11 @@
 import { Box3, Euler, Quaternion, Vector3 } from 'three';
-import type { Light } from '../scene/scene.ts';
+import type { Light, LightType } from '../scene/scene.ts';
+import { interned } from './interned.ts';
 import type { RandomStream } from './sampler.ts';
 
 const DEG = Math.PI / 180;
+
+const LIGHT_TYPES: { readonly [K in LightType]: K } = { point: 'point', spot: 'spot', area: 'area' };
 
 /**
  * A light ready for shading: world-space position and axes, cone cosines, and how many
@@ -42,7 +45,7 @@ export class TracerLight {
 
   constructor(light: Light) {
     this.id = light.id;
-    this.type = light.type;
+    this.type = interned(light.type, LIGHT_TYPES);
     this.position = new Vector3(...light.position);
     this.color = new Vector3(...light.color);
     this.intensity = light.intensity;

@@ -1,14 +1,19 @@
 import { Box3, Euler, Matrix4, Quaternion, Vector3 } from 'three';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
-import type { RenderSettings, Scene, SceneObject } from '../scene/scene.ts';
+import type { RenderSettings, SamplePattern, Scene, SceneObject, ShapeKind } from '../scene/scene.ts';
 import { CameraRays } from './camera-rays.ts';
 import type { Intersectable } from './intersectable.ts';
+import { interned } from './interned.ts';
 import { TracerLight } from './lights.ts';
 import { ObjectBvh } from './object-bvh.ts';
 import { meshAccel } from './shapes/mesh-accel.ts';
 import { Shape } from './shapes/shape.ts';
 
 const DEG = Math.PI / 180;
+
+/** The kinds the tracer compares in its hot code, kept as this program's own constants (see interned.ts). */
+const SHAPE_KINDS: { readonly [K in ShapeKind]: K } = { sphere: 'sphere', box: 'box', cylinder: 'cylinder', plane: 'plane', mesh: 'mesh' };
+const SAMPLE_PATTERNS: { readonly [K in SamplePattern]: K } = { grid: 'grid', jittered: 'jittered', random: 'random' };
 
 /** Everything the tracer needs, prepared once per scene (and reused for every tile). */
 export interface TracerScene {
@@ -40,7 +45,7 @@ export function buildTracerScene(scene: Scene, meshes: MeshLibrary): TracerScene
   const enabled = scene.settings.lightTypes;
   return {
     source: scene,
-    settings: scene.settings,
+    settings: { ...scene.settings, samplePattern: interned(scene.settings.samplePattern, SAMPLE_PATTERNS) },
     camera: new CameraRays(scene.camera),
     shapes,
     ...objectBvhs(shapes),
@@ -62,7 +67,7 @@ function createShape(object: SceneObject, index: number, meshes: MeshLibrary): S
   const toWorld = objectToWorld(object);
   const moves = object.velocity.some((component) => component !== 0);
   const velocity = moves ? new Vector3(...object.velocity) : null;
-  if (object.shape !== 'mesh') return new Shape(index, object.id, object.material, object.shape, toWorld, null, velocity);
+  if (object.shape !== 'mesh') return new Shape(index, object.id, object.material, interned(object.shape, SHAPE_KINDS), toWorld, null, velocity);
   const mesh = object.mesh === undefined ? undefined : meshes.get(object.mesh);
   if (!mesh) throw new Error(`objects[${index}] ("${object.id}"): the model "${object.mesh}" was not loaded`);
   return new Shape(index, object.id, object.material, 'mesh', toWorld, meshAccel(mesh), velocity);
