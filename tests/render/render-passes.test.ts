@@ -67,13 +67,15 @@ describe('the pass plan', () => {
     ]);
   });
 
-  it('gives a render without previews (rt render) final tiles of four times the rays: twice the side, up to 32', () => {
+  it('gives a render without previews (rt render) final tiles of 24 times the rays: √24 times the side, up to 32', () => {
     const finalSide = (supersampling: number, preview: boolean) =>
       planPasses(withSupersampling(supersampling), { width: 512, height: 384, workers: 2, preview }).at(-1)!.tileWidth;
     for (const supersampling of [3, 4, 6, 8]) {
+      // The watched side is floor(√(rays per tile / rays per pixel)), so that root lies in [watched, watched + 1).
       const watched = finalSide(supersampling, true);
-      expect(finalSide(supersampling, false), `supersampling ${supersampling}`).toBeGreaterThanOrEqual(2 * watched);
-      expect(finalSide(supersampling, false), `supersampling ${supersampling}`).toBeLessThanOrEqual(2 * watched + 1);
+      const unwatched = finalSide(supersampling, false);
+      expect(unwatched, `supersampling ${supersampling}`).toBeGreaterThanOrEqual(Math.min(32, Math.floor(Math.sqrt(24) * watched)));
+      expect(unwatched, `supersampling ${supersampling}`).toBeLessThan(Math.min(33, Math.sqrt(24) * (watched + 1)));
     }
     expect(finalSide(2, false)).toBe(32);
   });
