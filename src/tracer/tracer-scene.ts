@@ -5,6 +5,7 @@ import { CameraRays } from './camera-rays.ts';
 import type { Intersectable } from './intersectable.ts';
 import { interned } from './interned.ts';
 import { TracerLight } from './lights.ts';
+import { tracerMaterial } from './tracer-material.ts';
 import { ObjectBvh } from './object-bvh.ts';
 import { meshAccel } from './shapes/mesh-accel.ts';
 import { Shape } from './shapes/shape.ts';
@@ -67,10 +68,10 @@ function createShape(object: SceneObject, index: number, meshes: MeshLibrary): S
   const toWorld = objectToWorld(object);
   const moves = object.velocity.some((component) => component !== 0);
   const velocity = moves ? new Vector3(...object.velocity) : null;
-  if (object.shape !== 'mesh') return new Shape(index, object.id, object.material, interned(object.shape, SHAPE_KINDS), toWorld, null, velocity);
+  if (object.shape !== 'mesh') return new Shape(index, object.id, tracerMaterial(object.material), interned(object.shape, SHAPE_KINDS), toWorld, null, velocity);
   const mesh = object.mesh === undefined ? undefined : meshes.get(object.mesh);
   if (!mesh) throw new Error(`objects[${index}] ("${object.id}"): the model "${object.mesh}" was not loaded`);
-  return new Shape(index, object.id, object.material, 'mesh', toWorld, meshAccel(mesh), velocity);
+  return new Shape(index, object.id, tracerMaterial(object.material), 'mesh', toWorld, meshAccel(mesh), velocity);
 }
 
 /** position · rotation (Euler XYZ, degrees) · scale, as three.js composes an Object3D. */
