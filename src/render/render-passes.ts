@@ -74,12 +74,13 @@ const MAX_TILE_SIDE = 32;
 /**
  * Rays a tile costs in a render without previews (`rt render`): nobody waits on one of its
  * tiles to cancel it or to see it, so they are sized for throughput. Every tile costs a
- * message each way (about 20 µs of a worker's time), a fresh list of the objects its primary
- * rays can meet, and at each of its rows' starts a jump that leaves the shadow patches of the
- * row before (see whitted-integrator.ts). The reference scene's 6 × 6 tiles spent about 6 %
- * of a worker's time in messages; with four times the rays (13 × 13 tiles there) the
- * 2-worker render took about 0.93× as long, and with 24 times (32 × 32, MAX_TILE_SIDE)
+ * message each way (about 20 µs of a worker's time) and a fresh list of the objects its
+ * primary rays can meet (primary-candidates.ts). The reference scene's 6 × 6 tiles spent
+ * about 6 % of a worker's time in messages; with four times the rays (13 × 13 tiles there)
+ * the 2-worker render took about 0.93× as long, and with 24 times (32 × 32, MAX_TILE_SIDE)
  * 0.95× as long again (7 alternating runs of 3 renders each, the same image to the bit).
+ * The order of the pixels inside a tile is not what costs: rows alternating in direction
+ * changed nothing (docs/benchmarks.md, sixteenth round).
  */
 const RAYS_PER_UNWATCHED_TILE = 24 * RAYS_PER_TILE;
 
