@@ -5,6 +5,7 @@ import type { RandomStream } from './sampler.ts';
 
 const DEG = Math.PI / 180;
 
+/** The types the sample loop compares, kept as this program's own constants (see interned.ts). */
 const LIGHT_TYPES: { readonly [K in LightType]: K } = { point: 'point', spot: 'spot', area: 'area' };
 
 /**

@@ -12,7 +12,7 @@ import { Shape } from './shapes/shape.ts';
 
 const DEG = Math.PI / 180;
 
-/** The kinds the tracer compares in its hot code, kept as this program's own constants (see interned.ts). */
+/** The shape kinds and sample patterns the tracer compares in its hot code, kept as this program's own constants (see interned.ts). */
 const SHAPE_KINDS: { readonly [K in ShapeKind]: K } = { sphere: 'sphere', box: 'box', cylinder: 'cylinder', plane: 'plane', mesh: 'mesh' };
 const SAMPLE_PATTERNS: { readonly [K in SamplePattern]: K } = { grid: 'grid', jittered: 'jittered', random: 'random' };
 
