@@ -14,12 +14,23 @@ export class Ray {
    * does not inline, once per shadow ray and object tested.
    */
   far = Infinity;
+  /**
+   * Per axis, where the side of a box the ray enters through lies in the box's six numbers
+   * (min x, y, z, max x, y, z): the max when the ray goes toward −axis, else the min. For
+   * the slab test (ray-box.ts).
+   */
+  nearX = 0;
+  nearY = 1;
+  nearZ = 2;
 
   /** Sets origin and direction; the time is kept (a ray's children share it). */
   set(origin: Vector3, direction: Vector3): this {
     this.origin.copy(origin);
     this.direction.copy(direction);
-    this.inverseDirection.set(1 / direction.x, 1 / direction.y, 1 / direction.z);
+    const inverse = this.inverseDirection.set(1 / direction.x, 1 / direction.y, 1 / direction.z);
+    this.nearX = inverse.x < 0 ? 3 : 0;
+    this.nearY = inverse.y < 0 ? 4 : 1;
+    this.nearZ = inverse.z < 0 ? 5 : 2;
     return this;
   }
 }
