@@ -4,6 +4,7 @@ import type { Intersectable } from './intersectable.ts';
 import type { Ray } from './ray.ts';
 import { rayMeetsBox } from './ray-box.ts';
 import type { RayCone } from './ray-cone.ts';
+import { WalkStarts } from './walk-starts.ts';
 
 /** Objects per leaf: past two, testing a leaf's objects costs more than one more level of boxes. */
 const LEAF_SIZE = 2;
@@ -18,10 +19,10 @@ const ONE_LEAF_UP_TO = 12;
  * `cone` (when given), written into `out`: how many, or -1 when there are more than `limit`
  * (the shadow candidates of a hit or a patch of hits; more are not worth listing).
  */
-export function listOverlapping(bvhs: readonly ObjectBvh[], box: Box3, out: Intersectable[], limit: number, cone: RayCone | null): number {
+export function listOverlapping(bvhs: readonly ObjectBvh[], box: Box3, out: Intersectable[], limit: number, cone: RayCone | null, from: Intersectable | null = null): number {
   let count = 0;
   for (const bvh of bvhs) {
-    count = bvh.overlapping(box, out, count, limit, cone);
+    count = bvh.overlapping(box, out, count, limit, cone, from);
     if (count > limit) return -1;
   }
   return count;
@@ -46,8 +47,9 @@ export class ObjectBvh {
   private readonly items: Intersectable[] = [];
   /** The items' world boxes, 6 numbers each in the same order, for the overlap tests. */
   private readonly itemBoxes: Float64Array;
-  /** Nodes still to visit; a depth-first walk holds at most one per level. */
+  /** Nodes still to visit: a walk from the root holds at most one per level, one from an object's leaf twice that. */
   private readonly stack: Int32Array;
+  private readonly starts: WalkStarts;
 
   constructor(objects: readonly Intersectable[]) {
     const nodes = Math.max(1, 2 * objects.length - 1);
@@ -89,20 +91,20 @@ export class ObjectBvh {
     };
     if (objects.length > 0) build([...objects]);
     this.items.forEach(({ worldBounds: { min, max } }, i) => this.itemBoxes.set([min.x, min.y, min.z, max.x, max.y, max.z], i * 6));
+    this.starts = new WalkStarts(this.link, this.count, this.items);
   }
 
   /**
    * Writes the objects whose box overlaps `box` (and is not wholly outside `cone`, when
    * given) into `out` from `start` on, and returns the new end; stops early once it is past
-   * `limit`.
+   * `limit`. `from`: an object the box holds a point of, where the walk starts (walk-starts.ts).
    */
-  overlapping(box: Box3, out: Intersectable[], start: number, limit: number, cone: RayCone | null = null): number {
+  overlapping(box: Box3, out: Intersectable[], start: number, limit: number, cone: RayCone | null = null, from: Intersectable | null = null): number {
     const { boxes, link, count, items, itemBoxes, stack } = this;
     if (items.length === 0) return start;
     setWithin(box);
     let end = start;
-    let size = 0;
-    stack[size++] = 0;
+    let size = this.starts.fill(stack, from);
     while (size > 0 && end <= limit) {
       const node = stack[--size];
       if (!overlapsWithin(boxes, node * 6) || cone?.excludes(boxes, node * 6)) continue;
@@ -122,15 +124,16 @@ export class ObjectBvh {
   /**
    * The nearest hit along the ray closer than hit.t, as testing every object would find it
    * (each object's own test keeps only hits nearer than hit.t). `skip` is not tested, nor,
-   * when `within` is given, the objects whose box does not overlap it.
+   * when `within` is given, the objects whose box does not overlap it. `from`: the object the
+   * ray starts on, where the walk starts (walk-starts.ts); of two objects hit at exactly the
+   * same distance, the one found first is kept, so the walk's start decides such a tie.
    */
-  nearest(ray: Ray, hit: Hit, skip: Intersectable | null, within: Box3 | null = null): void {
+  nearest(ray: Ray, hit: Hit, skip: Intersectable | null, within: Box3 | null = null, from: Intersectable | null = null): void {
     const { boxes, link, count, axis, items, itemBoxes, stack } = this;
     if (items.length === 0) return;
     if (within) setWithin(within);
     const direction = ray.direction;
-    let size = 0;
-    stack[size++] = 0;
+    let size = this.starts.fill(stack, from);
     while (size > 0) {
       const node = stack[--size];
       // Tested when taken, against the nearest hit so far: farther boxes are skipped.
@@ -192,14 +195,14 @@ export class ObjectBvh {
   /**
    * The first object found that the ray hits closer than ray.far (any-hit, for shadow rays),
    * or null. `skip` is not tested, nor the objects whose box does not overlap `within`.
+   * `from`: the object the ray starts on, where the walk starts (walk-starts.ts).
    */
-  firstBlocker(ray: Ray, skip: Intersectable | null, within: Box3): Intersectable | null {
+  firstBlocker(ray: Ray, skip: Intersectable | null, within: Box3, from: Intersectable | null = null): Intersectable | null {
     const tMax = ray.far;
     const { boxes, link, count, items, itemBoxes, stack } = this;
     if (items.length === 0) return null;
     setWithin(within);
-    let size = 0;
-    stack[size++] = 0;
+    let size = this.starts.fill(stack, from);
     while (size > 0) {
       const node = stack[--size];
       if (!rayMeetsBox(ray, boxes, node * 6, tMax)) continue;

@@ -39,9 +39,10 @@ export class ShadowPatch {
   /**
    * Starts the patch around `point`: lists the objects of `occluders` that overlap the box of
    * the cube and `light`, and (an area light) its widened pyramid; `margin` covers the shadow
-   * rays' ε offsets, `limit` is how many are worth listing.
+   * rays' ε offsets, `limit` is how many are worth listing; `from` is the object `point`
+   * lies on, where the BVH walks start (walk-starts.ts).
    */
-  fill(point: Vector3, half: number, light: TracerLight, occluders: readonly ObjectBvh[], margin: number, limit: number): void {
+  fill(point: Vector3, half: number, light: TracerLight, occluders: readonly ObjectBvh[], margin: number, limit: number, from: Intersectable | null = null): void {
     this.x = point.x;
     this.y = point.y;
     this.z = point.z;
@@ -52,7 +53,7 @@ export class ShadowPatch {
     reach.max.set(point.x + half, point.y + half, point.z + half);
     reach.union(light.extent);
     const cone = light.type === 'area' ? this.cone.toLight(point, light, margin + half * CUBE_RADIUS) : null;
-    this.count = listOverlapping(occluders, reach, this.list, limit, cone);
+    this.count = listOverlapping(occluders, reach, this.list, limit, cone, from);
   }
 }
 
@@ -71,12 +72,12 @@ export class ShadowPatchPair {
    * The patch whose cube covers `point`; else the one used less recently, filled around
    * `point` (ShadowPatch.fill's arguments).
    */
-  listFor(point: Vector3, half: number, light: TracerLight, occluders: readonly ObjectBvh[], margin: number, limit: number): ShadowPatch {
+  listFor(point: Vector3, half: number, light: TracerLight, occluders: readonly ObjectBvh[], margin: number, limit: number, from: Intersectable | null = null): ShadowPatch {
     const last = this.patches[this.used];
     if (last.covers(point)) return last;
     this.used ^= 1;
     const other = this.patches[this.used];
-    if (!other.covers(point)) other.fill(point, half, light, occluders, margin, limit);
+    if (!other.covers(point)) other.fill(point, half, light, occluders, margin, limit, from);
     return other;
   }
 }

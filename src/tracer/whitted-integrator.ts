@@ -163,7 +163,10 @@ export class WhittedIntegrator {
     if (listed !== null && listed.covers(ray)) {
       // A primary ray of the tile being rendered: its list, in the BVH walk's order (the same hit).
       for (let i = 0; i < listed.count; i++) if (rayMeetsBox(ray, listed.boxes, i * 6, hit.t)) listed.list[i].intersect(ray, hit);
-    } else this.scene.objects.nearest(ray, hit, leaving);
+    } else {
+      // A reflected or refracted ray starts on the last hit's object: the walk starts at its leaf.
+      this.scene.objects.nearest(ray, hit, leaving, null, depth > 0 ? this.frames[depth - 1].hit.shape : null);
+    }
     if (!hit.shape) {
       out.fromArray(this.scene.settings.background);
       if (node) recordEnd(node, false, MISS_LENGTH, null, out);
@@ -393,7 +396,7 @@ export class WhittedIntegrator {
     if (rendering) {
       // Rendering: a patch's list, gathered again only when the hit leaves both cubes.
       const half = PATCH_HALF_IN_PIXELS * this.pixelSpread * frame.pathLength;
-      const patch = frame.patches[lightIndex].listFor(frame.hit.point, half, light, this.scene.occluders, margin, MAX_LISTED_CANDIDATES);
+      const patch = frame.patches[lightIndex].listFor(frame.hit.point, half, light, this.scene.occluders, margin, MAX_LISTED_CANDIDATES, frame.hit.shape);
       frame.candidateCount = patch.count;
       for (let i = 0; i < patch.count; i++) frame.candidates[i] = patch.list[i];
     } else {
@@ -452,7 +455,7 @@ export class WhittedIntegrator {
     const cached = this.lastBlocker[lightIndex];
     if (cached && cached !== leaving && cached.occludes(ray)) return cached;
     let blocker: Intersectable | null = null;
-    for (const occluders of this.scene.occluders) if ((blocker = occluders.firstBlocker(ray, leaving, shadowReach))) break;
+    for (const occluders of this.scene.occluders) if ((blocker = occluders.firstBlocker(ray, leaving, shadowReach, frame.hit.shape))) break;
     if (blocker) this.lastBlocker[lightIndex] = blocker;
     return blocker;
   }
