@@ -5,25 +5,13 @@ import type { Intersectable } from '../../src/tracer/intersectable.ts';
 import { ObjectBvh } from '../../src/tracer/object-bvh.ts';
 import { Ray } from '../../src/tracer/ray.ts';
 import { hashKey, RandomStream } from '../../src/tracer/sampler.ts';
+import { between as betweenOf, randomPoint, randomShapes as randomShapesOf } from '../support/random-shapes.ts';
 import { matte, tracerSceneFrom } from '../support/test-scene.ts';
 
 const random = new RandomStream().reset(hashKey(12));
-const between = (low: number, high: number) => low + (high - low) * random.next();
-const point = (spread: number) => new Vector3(between(-spread, spread), between(-spread, spread), between(-spread, spread));
-
-/** `count` shapes of every kind at random places and sizes, overlapping one another. */
-function randomShapes(count: number): readonly Intersectable[] {
-  const kinds = ['sphere', 'box', 'cylinder', 'plane'];
-  const objects = Array.from({ length: count }, (_, i) => ({
-    id: `o${i}`,
-    shape: kinds[i % kinds.length],
-    position: point(4).toArray(),
-    rotation: [between(0, 90), between(0, 90), between(0, 90)],
-    scale: [between(0.2, 1.5), between(0.2, 1.5), between(0.2, 1.5)],
-    material: matte([1, 1, 1]),
-  }));
-  return tracerSceneFrom({ objects }).shapes;
-}
+const between = (low: number, high: number) => betweenOf(random, low, high);
+const point = (spread: number) => randomPoint(random, spread);
+const randomShapes = (count: number) => randomShapesOf(random, count);
 
 /**
  * The object BVH must give exactly what testing every object in the scene's order gives:
