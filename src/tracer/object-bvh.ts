@@ -94,6 +94,11 @@ export class ObjectBvh {
     this.starts = new WalkStarts(this.link, this.count, this.items);
   }
 
+  /** Its objects, in the order of its leaves. */
+  objectsInOrder(): readonly Intersectable[] {
+    return this.items;
+  }
+
   /**
    * Writes the objects whose box overlaps `box` (and is not wholly outside `cone`, when
    * given) into `out` from `start` on, and returns the new end; stops early once it is past

@@ -15,6 +15,7 @@ import { RayCone } from './ray-cone.ts';
 import { ShadowPatchPair } from './shadow-patch.ts';
 import { phongPower } from './phong-power.ts';
 import type { Intersectable } from './intersectable.ts';
+import { LightBuffer } from './light-buffer.ts';
 import { listOverlapping } from './object-bvh.ts';
 import type { PrimaryCandidates } from './primary-candidates.ts';
 import { rayMeetsBox } from './ray-box.ts';
@@ -112,6 +113,8 @@ export class WhittedIntegrator {
   private readonly frames: Frame[] = [];
   /** The shape that last blocked each light: it is likely to block the next sample too. */
   private readonly lastBlocker: (Intersectable | null)[];
+  /** Per point or spot light, its light buffer, made on its first shadow ray that needs it (null until then, and for area lights). */
+  private readonly lightBuffers: (LightBuffer | null)[];
   private readonly random = new RandomStream();
   private sampleKey = 0;
   private lightEvaluation = 0;
@@ -126,6 +129,7 @@ export class WhittedIntegrator {
   constructor(private readonly scene: TracerScene) {
     for (let depth = 0; depth <= scene.settings.maxDepth; depth++) this.frames.push(new Frame(scene.lights.length));
     this.lastBlocker = scene.lights.map(() => null);
+    this.lightBuffers = scene.lights.map(() => null);
   }
 
   /** How far a shadow ray may stray from its ideal segment: it covers the rays' ε offsets at both ends (see RayCone). */
@@ -455,9 +459,19 @@ export class WhittedIntegrator {
     const cached = this.lastBlocker[lightIndex];
     if (cached && cached !== leaving && cached.occludes(ray)) return cached;
     let blocker: Intersectable | null = null;
-    for (const occluders of this.scene.occluders) if ((blocker = occluders.firstBlocker(ray, leaving, shadowReach, frame.hit.shape))) break;
+    const buffer = this.lightBuffer(lightIndex);
+    if (buffer !== null) blocker = buffer.firstBlocker(ray, leaving);
+    else for (const occluders of this.scene.occluders) if ((blocker = occluders.firstBlocker(ray, leaving, shadowReach, frame.hit.shape))) break;
     if (blocker) this.lastBlocker[lightIndex] = blocker;
     return blocker;
+  }
+
+  /** The light buffer of a point or spot light (every shadow ray toward it ends at one point), null for an area light. */
+  private lightBuffer(lightIndex: number): LightBuffer | null {
+    const light = this.scene.lights[lightIndex];
+    if (light.type === 'area') return null;
+    // Listed in the occluders' order: cheap shapes before meshes.
+    return (this.lightBuffers[lightIndex] ??= new LightBuffer(light.position, this.scene.occluders.flatMap((bvh) => bvh.objectsInOrder()), this.shadowMargin));
   }
 
   /**
