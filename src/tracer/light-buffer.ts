@@ -107,11 +107,12 @@ export class LightBuffer {
     // The widened box relative to the light, per axis.
     const lo = [min.x - margin - this.x, min.y - margin - this.y, min.z - margin - this.z];
     const hi = [max.x + margin - this.x, max.y + margin - this.y, max.z + margin - this.z];
-    const whole = [0, 0, n - 1, n - 1];
-    if (![...lo, ...hi].every(Number.isFinite)) return [whole, whole, whole, whole, whole, whole];
+    const everyCell = Array(6).fill([0, 0, n - 1, n - 1]);
+    if (![...lo, ...hi].every(Number.isFinite)) return everyCell;
     const distance = Math.max(...[0, 1, 2].map((k) => Math.max(lo[k], -hi[k], 0)));
-    if (distance === 0) return [whole, whole, whole, whole, whole, whole];
-    const toCell = (t: number, round: (x: number) => number) => Math.min(n - 1, Math.max(0, round((t + 1) * 0.5 * n)));
+    if (distance === 0) return everyCell;
+    // The cell of coordinate t (−1..1), moved by `margin` cells first.
+    const toCell = (t: number, margin: number) => Math.min(n - 1, Math.max(0, Math.floor((t + 1) * 0.5 * n + margin)));
     return [0, 1, 2, 3, 4, 5].map((face) => {
       const axis = face >> 1;
       // The face's (u, v) axes, as in cell(): y, z for x; z, x for y; x, y for z.
@@ -121,12 +122,7 @@ export class LightBuffer {
       if (far < near) return null;
       const us = [lo[ua] / near, hi[ua] / near, lo[ua] / far, hi[ua] / far];
       const vs = [lo[va] / near, hi[va] / near, lo[va] / far, hi[va] / far];
-      return [
-        toCell(Math.min(...us), (t) => Math.floor(t - CELL_MARGIN)),
-        toCell(Math.min(...vs), (t) => Math.floor(t - CELL_MARGIN)),
-        toCell(Math.max(...us), (t) => Math.floor(t + CELL_MARGIN)),
-        toCell(Math.max(...vs), (t) => Math.floor(t + CELL_MARGIN)),
-      ];
+      return [toCell(Math.min(...us), -CELL_MARGIN), toCell(Math.min(...vs), -CELL_MARGIN), toCell(Math.max(...us), CELL_MARGIN), toCell(Math.max(...vs), CELL_MARGIN)];
     });
   }
 }
