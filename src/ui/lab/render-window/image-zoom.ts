@@ -48,3 +48,14 @@ export function zoomInStep(scale: number): number | null {
 export function zoomOutStep(scale: number): number | null {
   return [...ZOOM_STEPS].reverse().find((step) => step < scale / 1.001) ?? null;
 }
+
+/**
+ * The canvas size that shows an `image` in a box of `shown` CSS pixels: one canvas pixel per
+ * device pixel of the box, never more than the image's own pixels. A canvas as large as a
+ * 4096² image, shown in a few hundred CSS pixels, cost the page 40 ms to size and 56 ms per
+ * frame for the compositor to copy (docs/benchmarks.md, eighteenth round).
+ */
+export function canvasSizeFor(image: Size, shown: Size, devicePixelRatio: number): Size {
+  const side = (own: number, onScreen: number) => Math.min(own, Math.max(1, Math.round(onScreen * devicePixelRatio)));
+  return { width: side(image.width, shown.width), height: side(image.height, shown.height) };
+}

@@ -19,10 +19,11 @@ interface ViewCentre {
  * image scrolls inside its frame when larger) and a comparison of the ray traced image with
  * the raster one: alone, side by side, or stacked with a draggable divider.
  *
- * The images are the parent's canvases, slotted in at their own pixel size; the viewer only
- * sizes and arranges them, so the parent keeps drawing into the same canvases.
+ * The images are the parent's canvases, slotted in and stretched to the image's box on
+ * screen; the viewer only sizes and arranges them, so the parent keeps drawing into the same
+ * canvases, at whatever size it chooses (shownSize says how large they are shown).
  *
- * @slot traced - The ray traced image (a canvas of imageWidth × imageHeight pixels).
+ * @slot traced - The ray traced image (imageWidth × imageHeight pixels, in a canvas of that size or smaller).
  * @slot raster - The raster image of the same camera, at the same size or smaller (it is scaled to fit).
  * @slot tools - More controls for the image, at the end of the toolbar.
  *
@@ -35,6 +36,10 @@ interface ViewCentre {
  *   ray traced image is shown.
  *
  * Methods: `zoomIn()`, `zoomOut()`, `zoomToFit()` (the window's + − 0 keys).
+ * Read-only: `scale` (screen pixels per image pixel), `shownSize` (each image's box on screen, CSS pixels).
+ *
+ * @fires shown-size-change - `shownSize` changed (a zoom, a resized window, another image
+ *   size): the parent may draw its canvases at the new size.
  */
 export class RtImageCompare extends LitElement {
   static override properties = {
@@ -184,6 +189,8 @@ export class RtImageCompare extends LitElement {
   private readonly resizeObserver = new ResizeObserver(([entry]) => this.onFrameResized(entry.contentRect));
   /** The layout last drawn, and the view centre to restore after a zoom. */
   private layout: ImageLayout = { scale: 1, direction: 'row' };
+  /** The box size last announced by shown-size-change. */
+  private announced: Size | null = null;
   private keepCentre: ViewCentre | null = null;
 
   constructor() {
@@ -200,6 +207,15 @@ export class RtImageCompare extends LitElement {
   /** Screen pixels per image pixel as shown now (the fitted scale when zoom is 'fit'). */
   get scale(): number {
     return this.currentLayout().scale;
+  }
+
+  /**
+   * Each image's box on screen, in whole CSS pixels (rounded down, so that a fitted image
+   * never overflows its frame by a fraction).
+   */
+  get shownSize(): Size {
+    const { scale } = this.currentLayout();
+    return { width: Math.floor(this.imageWidth * scale), height: Math.floor(this.imageHeight * scale) };
   }
 
   zoomIn(): void {
@@ -225,7 +241,12 @@ export class RtImageCompare extends LitElement {
   }
 
   override firstUpdated(): void {
-    if (this.frameRef.value) this.resizeObserver.observe(this.frameRef.value);
+    const frame = this.frameRef.value;
+    if (!frame) return;
+    this.resizeObserver.observe(frame);
+    // Measured now rather than at the observer's first report (after the next animation
+    // frame's callbacks), so that the parent's first drawing knows the size it is shown at.
+    this.onFrameResized({ width: frame.clientWidth, height: frame.clientHeight });
   }
 
   override willUpdate(): void {
@@ -242,6 +263,11 @@ export class RtImageCompare extends LitElement {
   }
 
   override updated(): void {
+    const shown = this.shownSize;
+    if (shown.width !== this.announced?.width || shown.height !== this.announced.height) {
+      this.announced = shown;
+      this.dispatchEvent(new Event('shown-size-change'));
+    }
     const frame = this.frameRef.value;
     if (!frame || !this.keepCentre) return;
     frame.scrollLeft = this.keepCentre.x * frame.scrollWidth - frame.clientWidth / 2;
@@ -259,7 +285,7 @@ export class RtImageCompare extends LitElement {
     return this.zoom === 'fit' ? fit : { scale: this.zoom, direction: fit.direction };
   }
 
-  private onFrameResized({ width, height }: DOMRectReadOnly): void {
+  private onFrameResized({ width, height }: Size): void {
     // A hidden window measures 0 × 0: keep the last size rather than fitting to nothing.
     if (width <= 0 || height <= 0) return;
     const inner = { width: width - 2 * FRAME_PADDING, height: height - 2 * FRAME_PADDING };
@@ -269,8 +295,8 @@ export class RtImageCompare extends LitElement {
   override render() {
     const { scale, direction } = this.layout;
     const mode = this.shownMode();
-    // Whole CSS pixels, rounded down, so a fitted image never overflows its frame by a fraction.
-    const box = styleMap({ width: `${Math.floor(this.imageWidth * scale)}px`, height: `${Math.floor(this.imageHeight * scale)}px` });
+    const { width, height } = this.shownSize;
+    const box = styleMap({ width: `${width}px`, height: `${height}px` });
     return html`
       <div class="toolbar">
         ${this.zoomControls(scale)} ${this.note ? html`<p class="note">${this.note}</p>` : this.modeControls()}

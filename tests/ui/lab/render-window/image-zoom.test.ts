@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { fitLayout, SIDE_BY_SIDE_GAP, zoomInStep, zoomOutStep } from '../../../../src/ui/lab/render-window/image-zoom.ts';
+import { canvasSizeFor, fitLayout, SIDE_BY_SIDE_GAP, zoomInStep, zoomOutStep } from '../../../../src/ui/lab/render-window/image-zoom.ts';
 
 const image = { width: 512, height: 384 };
 
@@ -35,5 +35,21 @@ describe('zoom steps', () => {
   it('stops at the ends', () => {
     expect(zoomInStep(32)).toBeNull();
     expect(zoomOutStep(1 / 8)).toBeNull();
+  });
+});
+
+describe('the canvas an image is shown in', () => {
+  it('has one pixel per device pixel of its box on screen', () => {
+    expect(canvasSizeFor({ width: 4096, height: 4096 }, { width: 600, height: 600 }, 1)).toEqual({ width: 600, height: 600 });
+    expect(canvasSizeFor({ width: 4096, height: 3072 }, { width: 601, height: 450 }, 1.25)).toEqual({ width: 751, height: 563 });
+  });
+
+  it('never has more pixels than the image, zoomed in or on a dense screen', () => {
+    expect(canvasSizeFor(image, { width: 1024, height: 768 }, 1)).toEqual(image);
+    expect(canvasSizeFor(image, { width: 400, height: 300 }, 2)).toEqual(image);
+  });
+
+  it('keeps at least one pixel a side', () => {
+    expect(canvasSizeFor(image, { width: 0, height: 0 }, 1)).toEqual({ width: 1, height: 1 });
   });
 });
