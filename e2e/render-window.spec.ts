@@ -51,6 +51,40 @@ function pixelHash(data: ArrayLike<number>): number {
   return hash;
 }
 
+/** `png` shrunk to `width` × `height` RGBA: each pixel the mean of the image pixels whose centres it covers. */
+function shrink(png: PNG, width: number, height: number): number[] {
+  const sums = new Float64Array(width * height * 4);
+  const counts = new Float64Array(width * height);
+  for (let y = 0; y < png.height; y++) {
+    const row = Math.floor(((y + 0.5) * height) / png.height);
+    for (let x = 0; x < png.width; x++) {
+      const at = row * width + Math.floor(((x + 0.5) * width) / png.width);
+      for (let c = 0; c < 4; c++) sums[at * 4 + c] += png.data[(y * png.width + x) * 4 + c];
+      counts[at]++;
+    }
+  }
+  return [...sums].map((sum, i) => sum / counts[i >> 2]);
+}
+
+/**
+ * The largest mean RGB difference along one row or one column of two pictures: a line of
+ * pixels missing or doubled where two pieces meet stands out against a small difference of
+ * filters spread over the picture.
+ */
+function worstLineDifference(a: number[], b: number[], width: number, height: number): number {
+  const rows = new Float64Array(height);
+  const columns = new Float64Array(width);
+  for (let y = 0; y < height; y++) {
+    for (let x = 0; x < width; x++) {
+      const i = (y * width + x) * 4;
+      const difference = (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2])) / 3;
+      rows[y] += difference / width;
+      columns[x] += difference / height;
+    }
+  }
+  return Math.max(...rows, ...columns);
+}
+
 test('opening focuses Render; a render draws the picture and reports time and rays per second', async ({ page }) => {
   const window = await openRenderWindow(page);
   await expect(window.getByRole('button', { name: 'Render', exact: true })).toBeFocused();
@@ -84,6 +118,36 @@ test('Cancel stops a big render and says so', async ({ page }) => {
   await expect(window.getByRole('button', { name: 'Save as PNG' })).toBeDisabled();
   // The partial picture stays.
   await expect.poll(async () => (await tracedPicture(window)).colours).toBeGreaterThan(50);
+  // Shown whole, it is drawn into a canvas the size of its place on screen; at 100 % into one
+  // of the image's own size, painted again (not stretched from the small one).
+  const box = (await window.getByRole('img', { name: 'The ray traced image' }).boundingBox())!;
+  expect(box.width).toBeLessThan(1366);
+  expect(await tracedPicture(window)).toMatchObject({ width: Math.round(box.width), height: Math.round(box.height) });
+  await window.getByRole('button', { name: '100 %' }).click();
+  await expect.poll(async () => (await tracedPicture(window)).width).toBe(2048);
+  await expect.poll(async () => (await tracedPicture(window)).colours).toBeGreaterThan(50);
+});
+
+test('an image larger than its window is drawn at the size it is shown: the saved file scaled, no seams', async ({ page }) => {
+  const window = await openRenderWindow(page);
+  await window.evaluate((element: RtRenderWindow) => element.store!.dispatch({ type: 'settings.changed', changes: { imageSize: [1600, 1200] } }));
+  await renderAndWait(window);
+  const traced = window.getByRole('img', { name: 'The ray traced image' });
+  const box = (await traced.boundingBox())!;
+  const [width, height] = [Math.round(box.width), Math.round(box.height)];
+  expect(width).toBeLessThan(1600);
+  // Painted (in bands, over a few frames) into a canvas of the box's size.
+  await expect.poll(async () => (await tracedPicture(window)).width).toBe(width);
+  const downloading = page.waitForEvent('download');
+  await window.getByRole('button', { name: 'Save as PNG' }).click();
+  const png = PNG.sync.read(await readFile((await (await downloading).path())!));
+  const shrunk = shrink(png, width, height);
+  await expect
+    .poll(async () => {
+      const shown = await traced.evaluate((canvas: HTMLCanvasElement) => [...canvas.getContext('2d')!.getImageData(0, 0, canvas.width, canvas.height).data]);
+      return worstLineDifference(shown, shrunk, width, height);
+    })
+    .toBeLessThan(3); // 0.9 seen; a line of wrong pixels would be tens of levels
 });
 
 test('Save as PNG downloads exactly the rendered pixels at the image size', async ({ page }) => {

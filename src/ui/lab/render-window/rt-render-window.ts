@@ -12,6 +12,7 @@ import { GuideHostController } from '../guide-host.ts';
 import { consumeStore } from '../store-context.ts';
 import { estimateRender, lighterRenders, type LighterRender, type RenderEstimate } from '../../../render/render-estimate.ts';
 import { BandPainter } from './band-painter.ts';
+import { canvasSizeFor } from './image-zoom.ts';
 import { ContrastToggle } from './contrast-toggle.ts';
 import { errorMessage, RenderJobController, type ShownRender } from './render-job-controller.ts';
 import { formatCount, formatDuration, formatWait, progressText, raysPerSecond } from './render-figures.ts';
@@ -80,7 +81,13 @@ export class RtRenderWindow extends LitElement {
   private readonly tracedCanvas = createRef<HTMLCanvasElement>();
   private readonly rasterCanvas = createRef<HTMLCanvasElement>();
 
-  private readonly painter = new BandPainter(() => this.tracedCanvas.value);
+  private readonly painter = new BandPainter(
+    () => this.tracedCanvas.value,
+    (image) => {
+      const shown = this.compare.value?.shownSize;
+      return shown ? canvasSizeFor(image, shown, devicePixelRatio) : image;
+    },
+  );
   private readonly jobs = new RenderJobController(this, {
     paint: (image, dithering) => this.painter.paint(image, dithering),
     paintChanges: (image, changes, dithering) => this.painter.paintChanges(image, changes, dithering),
@@ -268,7 +275,14 @@ export class RtRenderWindow extends LitElement {
   }
 
   private stage({ width, height }: ShownRender) {
-    return html`<rt-image-compare data-guide="render.zoom render.compare" ${ref(this.compare)} .imageWidth=${width} .imageHeight=${height} .note=${this.rasterNote}>
+    return html`<rt-image-compare
+      data-guide="render.zoom render.compare"
+      ${ref(this.compare)}
+      .imageWidth=${width}
+      .imageHeight=${height}
+      .note=${this.rasterNote}
+      @shown-size-change=${() => this.painter.resize()}
+    >
       <canvas slot=${this.contrast.tracedSlot} ${ref(this.tracedCanvas)} role="img" aria-label=${msg('The ray traced image')}></canvas>
       ${this.contrast.stretchedCanvas()} ${this.contrast.control()}
       <canvas slot="raster" ${ref(this.rasterCanvas)} role="img" aria-label=${msg('The raster image from the same camera')}></canvas>

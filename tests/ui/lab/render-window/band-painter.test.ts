@@ -23,14 +23,24 @@ interface Call {
   /** Pixels quantized for a put; the destination rectangle's for a draw. */
   pixels: number;
   args: number[];
+  /** A put's pixels. */
+  data?: Uint8ClampedArray;
 }
 
-function fakeContext(calls: Call[], own: boolean) {
+function fakeContext(calls: Call[], own: boolean, canvas?: { width: number; height: number }) {
   return {
+    canvas,
     imageSmoothingEnabled: true,
+    imageSmoothingQuality: 'low',
     clearRect: () => void calls.push({ kind: 'clear', pixels: 0, args: [] }),
-    putImageData: (data: FakeImageData, ...args: number[]) => void (own || calls.push({ kind: 'put', pixels: data.width * data.height, args: [data.width, data.height, ...args] })),
-    drawImage: (_: unknown, ...args: number[]) => void calls.push({ kind: 'draw', pixels: args[6] * args[7], args }),
+    putImageData: (data: FakeImageData, ...args: number[]) =>
+      void (own || calls.push({ kind: 'put', pixels: data.width * data.height, args: [data.width, data.height, ...args], data: data.data })),
+    // drawImage(source, dx, dy, dw, dh) or (source, sx, sy, sw, sh, dx, dy, dw, dh): recorded as the latter.
+    drawImage: (source: { width: number; height: number }, ...args: number[]) => {
+      if (own) return;
+      const all = args.length === 4 ? [0, 0, source.width, source.height, ...args] : args;
+      calls.push({ kind: 'draw', pixels: all[6] * all[7], args: all });
+    },
   };
 }
 
@@ -58,9 +68,14 @@ afterEach(() => {
   vi.restoreAllMocks();
 });
 
-function painterOn(width: number, height: number) {
-  const canvas = { width, height, getContext: () => fakeContext(perFrame.at(-1)!, false) };
-  return new BandPainter(() => canvas as unknown as HTMLCanvasElement);
+/** A painter on a canvas now `width` × `height`, which it sizes to `shown` (default: the image's own size). */
+function painterOn(width: number, height: number, shown?: { width: number; height: number }) {
+  const canvas: { width: number; height: number; getContext: () => unknown } = { width, height, getContext: () => fakeContext(perFrame.at(-1)!, false, canvas) };
+  const painter = new BandPainter(
+    () => canvas as unknown as HTMLCanvasElement,
+    (image) => shown ?? image,
+  );
+  return { painter, canvas };
 }
 
 /** Runs animation frames until the painter asks for no more. */
@@ -75,7 +90,7 @@ const image = (width: number, height: number): RenderImage => ({ width, height, 
 
 describe('the render window painter', () => {
   it('quantizes a 4096² render’s 4×4 preview at its own resolution and draws it scaled up, a few bands a frame', () => {
-    const painter = painterOn(4096, 4096);
+    const { painter } = painterOn(4096, 4096);
     const preview: PreviewImage = { ...image(1024, 1024), block: 4 };
     painter.paintChanges(image(4096, 4096), { preview: { image: preview, rows: [0, 1024] }, tiles: [] }, true);
     runFrames();
@@ -89,7 +104,7 @@ describe('the render window painter', () => {
   });
 
   it('puts each tile of the image exactly as its rectangle, quantized from the dither pattern’s corner before it', () => {
-    const painter = painterOn(64, 48);
+    const { painter } = painterOn(64, 48);
     const full = image(64, 48);
     painter.paintChanges(full, { preview: null, tiles: [{ x: 5, y: 6, width: 7, height: 3 }, { x: 0, y: 0, width: 4, height: 4 }] }, true);
     runFrames();
@@ -99,7 +114,7 @@ describe('the render window painter', () => {
   });
 
   it('clears the canvas for a new render; the coarser preview’s rows not yet drawn are drawn from the finer one that follows', () => {
-    const painter = painterOn(64, 64);
+    const { painter } = painterOn(64, 64);
     const full = image(64, 64);
     const coarse: PreviewImage = { ...image(8, 8), block: 8 };
     const fine: PreviewImage = { ...image(16, 16), block: 4 };
@@ -121,7 +136,7 @@ describe('the render window painter', () => {
       }
       getContext = () => ({ putImageData: (data: FakeImageData, ...at: number[]) => void this.puts.push([data.width, data.height, ...at]) });
     });
-    const painter = painterOn(64, 64);
+    const { painter } = painterOn(64, 64);
     painter.warmUp();
     expect(made).toMatchObject([{ width: 1, height: 1, puts: [[1, 1, 0, 0]] }]);
     expect(frames).toHaveLength(0); // nothing for the visible canvas
@@ -129,5 +144,70 @@ describe('the render window painter', () => {
     runFrames();
     expect(made.map(({ width, height }) => [width, height])).toEqual([[1, 1], [8, 8]]);
     expect(perFrame.flat().map((call) => [call.kind, ...call.args])).toEqual([['clear'], ['draw', 0, 0, 8, 8, 0, 0, 64, 64]]);
+  });
+
+  it('puts the canvas pixels each tile of an image shown smaller touches, averaging only the traced image pixels', () => {
+    const { painter, canvas } = painterOn(100, 100, { width: 30, height: 30 });
+    // Traced so far: columns [0, 33), white; the rest holds 0 (black) until its tile comes.
+    const full = image(100, 100);
+    for (let y = 0; y < 100; y++) full.rgb.fill(1, y * 300, y * 300 + 33 * 3);
+    painter.paintChanges(full, { preview: null, tiles: [{ x: 0, y: 0, width: 33, height: 100 }] }, false);
+    runFrames();
+    expect([canvas.width, canvas.height]).toEqual([30, 30]);
+    const [first] = perFrame.flat().filter((call) => call.kind === 'put');
+    // [pixels' width, height, x, y, then the part put: x, y, width, height]: canvas columns
+    // [0, 10), the last of them shared with the next tile (33 × 0.3 = 9.9)
+    expect(first.args).toEqual([10, 30, 0, 0, 0, 0, 10, 30]);
+    expect(first.data![9 * 4]).toBe(255); // the shared pixel: white, not mixed with the black not traced yet
+    painter.paintChanges(full, { preview: null, tiles: [{ x: 33, y: 0, width: 67, height: 100 }] }, false);
+    runFrames();
+    const second = perFrame.flat().filter((call) => call.kind === 'put')[1];
+    // From column 8 (a multiple of the dither period); the part put starts at the shared pixel 9.
+    expect(second.args).toEqual([22, 30, 8, 0, 1, 0, 21, 30]);
+    // Pixel 9 now: 0.9 of it white, 0.1 black (traced now): 229.5, rounded either way.
+    expect(Math.abs(second.data![1 * 4] - 0.9 * 255)).toBeLessThanOrEqual(0.5);
+  });
+
+  it('paints a finished image again at a new canvas size, over the old picture scaled', () => {
+    const shown = { width: 4096, height: 64 };
+    const { painter, canvas } = painterOn(4096, 64, shown);
+    painter.paint(image(4096, 64), false);
+    runFrames();
+    expect(new Set(perFrame.flat().map((call) => call.kind))).toEqual(new Set(['clear', 'put'])); // at its own size: put exactly
+    [shown.width, shown.height] = [1024, 16];
+    perFrame = [];
+    painter.resize();
+    runFrames();
+    expect([canvas.width, canvas.height]).toEqual([1024, 16]);
+    const [ground, ...bands] = perFrame.flat();
+    expect(ground.args).toEqual([0, 0, 4096, 64, 0, 0, 1024, 16]);
+    // Bands of 16 image rows (65 536 pixels), 4 canvas rows each, top to bottom.
+    expect(bands.map((call) => [call.kind, ...call.args])).toEqual([0, 4, 8, 12].map((top) => ['put', 1024, 4, 0, top, 0, 0, 1024, 4]));
+  });
+
+  it('paints a running render again at a new canvas size: the preview over the old picture, then the tiles', () => {
+    const shown = { width: 64, height: 64 };
+    const { painter } = painterOn(64, 64, shown);
+    const full = image(64, 64);
+    painter.paintChanges(full, { preview: { image: { ...image(8, 8), block: 8 }, rows: [0, 8] }, tiles: [{ x: 0, y: 0, width: 16, height: 16 }] }, false);
+    runFrames();
+    expect(perFrame.flat().map((call) => call.kind)).toEqual(['clear', 'draw', 'put']);
+    painter.paintChanges(full, { preview: null, tiles: [{ x: 0, y: 0, width: 16, height: 16 }] }, false); // the next pass's same tile
+    runFrames();
+    [shown.width, shown.height] = [32, 32];
+    perFrame = [];
+    painter.resize();
+    runFrames();
+    expect(perFrame.flat().map((call) => [call.kind, ...call.args])).toEqual([
+      ['draw', 0, 0, 64, 64, 0, 0, 32, 32], // the old canvas
+      ['draw', 0, 0, 8, 8, 0, 0, 32, 32], // the preview
+      ['put', 8, 8, 0, 0, 0, 0, 8, 8], // the tile, once
+    ]);
+  });
+
+  it('asks for no frame when the size changes with no image to paint', () => {
+    const { painter } = painterOn(64, 64, { width: 32, height: 32 });
+    painter.resize();
+    expect(frames).toHaveLength(0);
   });
 });
