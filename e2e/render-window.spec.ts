@@ -1,6 +1,8 @@
 import { expect, type Locator, type Page, test } from '@playwright/test';
 import { readFile } from 'node:fs/promises';
 import { PNG } from 'pngjs';
+import { levelRange, stretchContrast } from '../src/ui/lab/render-window/contrast-stretch.ts';
+import type { RtImageCompare } from '../src/ui/lab/render-window/rt-image-compare.ts';
 import type { RtRenderWindow } from '../src/ui/lab/render-window/rt-render-window.ts';
 import { collectPageErrors } from './support/page-errors.ts';
 
@@ -119,13 +121,51 @@ test('Cancel stops a big render and says so', async ({ page }) => {
   // The partial picture stays.
   await expect.poll(async () => (await tracedPicture(window)).colours).toBeGreaterThan(50);
   // Shown whole, it is drawn into a canvas the size of its place on screen; at 100 % into one
-  // of the image's own size, painted again (not stretched from the small one).
-  const box = (await window.getByRole('img', { name: 'The ray traced image' }).boundingBox())!;
+  // of the part on screen, a canvas pixel per image pixel, painted again (not stretched from the small one).
+  const traced = window.getByRole('img', { name: 'The ray traced image' });
+  const box = (await traced.boundingBox())!;
   expect(box.width).toBeLessThan(1366);
   expect(await tracedPicture(window)).toMatchObject({ width: Math.round(box.width), height: Math.round(box.height) });
   await window.getByRole('button', { name: '100 %' }).click();
-  await expect.poll(async () => (await tracedPicture(window)).width).toBe(2048);
+  await expect.poll(async () => (await traced.boundingBox())!.width).toBeLessThan(1366);
+  await expect.poll(async () => (await tracedPicture(window)).width).toBe(Math.round((await traced.boundingBox())!.width));
   await expect.poll(async () => (await tracedPicture(window)).colours).toBeGreaterThan(50);
+});
+
+test('zoomed in, the canvas holds the part on screen: exactly the saved pixels there, after a scroll too, and stretched', async ({ page }) => {
+  const window = await openRenderWindow(page);
+  await renderAndWait(window);
+  const downloading = page.waitForEvent('download');
+  await window.getByRole('button', { name: 'Save as PNG' }).click();
+  const png = PNG.sync.read(await readFile((await (await downloading).path())!));
+  const compare = window.locator('rt-image-compare');
+  const traced = window.getByRole('img', { name: 'The ray traced image' });
+  /** The saved pixels of the part the viewer says the canvas shows, against the canvas's (a hash each). */
+  const shownAndSaved = async (change: (rgba: number[]) => number[] = (rgba) => rgba) => {
+    const { full, window: part } = await compare.evaluate((element: RtImageCompare) => element.tracedView);
+    expect(full).toEqual({ width: png.width, height: png.height }); // a canvas pixel per image pixel
+    const saved: number[] = [];
+    for (let y = part.y; y < part.y + part.height; y++) saved.push(...png.data.subarray((y * png.width + part.x) * 4, (y * png.width + part.x + part.width) * 4));
+    const shown = await traced.evaluate((canvas: HTMLCanvasElement) => [...canvas.getContext('2d')!.getImageData(0, 0, canvas.width, canvas.height).data]);
+    return { shown: pixelHash(shown), saved: pixelHash(change(saved)), part };
+  };
+  await window.getByRole('button', { name: '200 %' }).click();
+  await expect.poll(async () => (await traced.boundingBox())!.width).toBeLessThan(2 * png.width);
+  await expect.poll(async () => { const { shown, saved } = await shownAndSaved(); return shown === saved; }).toBe(true);
+  const before = (await shownAndSaved()).part;
+  // A scroll down and to the right with the mouse wheel: another part, painted exactly too.
+  const frame = window.getByRole('group', { name: 'Image view: scroll with the arrow keys when zoomed in' });
+  const area = (await frame.boundingBox())!;
+  await page.mouse.move(area.x + area.width / 2, area.y + area.height / 2);
+  await page.mouse.wheel(150, 120);
+  await expect.poll(async () => (await shownAndSaved()).part.y).toBeGreaterThan(before.y);
+  await expect.poll(async () => { const { shown, saved } = await shownAndSaved(); return shown === saved; }).toBe(true);
+  // Stretch contrast: the same part with the whole image's levels spread over 0–255.
+  await window.getByRole('checkbox', { name: 'Stretch contrast' }).check();
+  const range = levelRange(png.data);
+  await expect.poll(async () => { const { shown, saved } = await shownAndSaved((rgba) => [...stretchContrast(rgba, range)]); return shown === saved; }).toBe(true);
+  await window.getByRole('checkbox', { name: 'Stretch contrast' }).uncheck();
+  await expect.poll(async () => { const { shown, saved } = await shownAndSaved(); return shown === saved; }).toBe(true);
 });
 
 test('an image larger than its window is drawn at the size it is shown: the saved file scaled, no seams', async ({ page }) => {
@@ -171,14 +211,20 @@ test('zoom: 200 % shows every pixel as 2 × 2, Fit brings it back', async ({ pag
   await renderAndWait(window);
   const [width] = await imageSize(window);
   const canvas = window.getByRole('img', { name: 'The ray traced image' });
+  // The canvas holds image pixels (the part on screen): screen pixels per canvas pixel is the zoom.
+  const zoomOnScreen = () => canvas.evaluate((element: HTMLCanvasElement) => element.getBoundingClientRect().width / element.width);
+  const canvasPixelsPerImagePixel = () => window.locator('rt-image-compare').evaluate((element: RtImageCompare) => element.tracedView.full.width / element.imageWidth);
   const fitted = (await canvas.boundingBox())!.width;
   await window.getByRole('button', { name: '200 %' }).click();
-  await expect.poll(async () => (await canvas.boundingBox())!.width).toBeCloseTo(2 * width, 0);
+  await expect.poll(zoomOnScreen).toBeCloseTo(2, 2);
+  expect(await canvasPixelsPerImagePixel()).toBe(1);
   await expect(canvas).toHaveCSS('image-rendering', 'pixelated');
   await window.getByRole('button', { name: 'Zoom out' }).click();
-  await expect.poll(async () => (await canvas.boundingBox())!.width).toBeCloseTo(width, 0);
+  await expect.poll(zoomOnScreen).toBeCloseTo(1, 2);
+  expect(await canvasPixelsPerImagePixel()).toBe(1);
   await window.getByRole('button', { name: 'Fit' }).click();
   await expect.poll(async () => (await canvas.boundingBox())!.width).toBeCloseTo(fitted, 0);
+  expect(fitted).toBeLessThan(2 * width);
 });
 
 test('the slider compares the ray traced image with the raster one, by mouse or keys', async ({ page }) => {

@@ -1,7 +1,8 @@
 import { DITHER_PERIOD, renderImageData } from '../../../render/image-data.ts';
 import type { PreviewImage, RenderChanges, RenderImage } from '../../../render/render-job.ts';
 import type { Tile } from '../../../tracer/tile.ts';
-import type { Size } from './image-zoom.ts';
+import { type LevelRange, stretchContrast } from './contrast-stretch.ts';
+import type { CanvasView, Rect, Size } from './image-zoom.ts';
 import { shrinkPiece } from './shrink-piece.ts';
 
 /**
@@ -14,15 +15,15 @@ const FRAME_BUDGET_MS = 8;
 /** Pixels per band: about 2 ms of quantizing, so a frame rarely overruns its budget by much. */
 const BAND_PIXELS = 65_536;
 
-/** Rows per band of an image `width` wide: a multiple of the dither pattern's period (renderImageData). */
+/** Rows per band of an image (or a part of it) `width` wide: a multiple of the dither pattern's period (renderImageData). */
 const bandRows = (width: number) => Math.max(DITHER_PERIOD, Math.floor(BAND_PIXELS / width / DITHER_PERIOD) * DITHER_PERIOD);
 
 /**
  * Paints a render into a canvas over as many frames as it needs, within a budget per frame,
- * and only what changed. The canvas is as large as the image is shown (canvasSizeFor), never
- * larger than the image: at the image's own size the pixels are put exactly; smaller, each
- * piece puts the canvas pixels it touches, each the mean of the image under it (shrinkPiece).
- * It paints:
+ * and only what changed. The canvas holds the part of the image on screen (a CanvasView from
+ * the viewer) at one canvas pixel per device pixel at most: at the image's own scale the
+ * pixels are put exactly; smaller, each piece puts the canvas pixels it touches, each the
+ * mean of the image under it (shrinkPiece). It paints:
  *
  * - a coarse preview at its own resolution (one pixel per block), quantized into a canvas of
  *   that size and drawn scaled up onto the visible one, its new rows only: pasting a 4096²
@@ -32,8 +33,9 @@ const bandRows = (width: number) => Math.max(DITHER_PERIOD, Math.floor(BAND_PIXE
  *   the preview shows around them until the pass covers it;
  * - a whole image (the finished one shown again), in bands of rows.
  *
- * A new canvas size (a zoom, a resized window) paints all of that again, over the old canvas
- * scaled and the preview, so the picture never goes black meanwhile.
+ * A new view (a zoom, a scroll, a resized window) or contrast stretch paints what is on
+ * screen again, over the old canvas moved to its new place (and the preview), so the picture
+ * never goes black meanwhile.
  *
  * With nothing left to paint it stops, so there is no per-frame work while nothing happens.
  */
@@ -52,24 +54,28 @@ export class BandPainter {
   /** The preview's own pixels, drawn scaled from here. */
   private previewCanvas: OffscreenCanvas | null = null;
   private tiles: Tile[] = [];
-  /** The tiles of this image already on the canvas: a new canvas size paints them again. */
+  /** The tiles of this image already painted: a new view paints them again. */
   private painted: Tile[] = [];
   /**
-   * Which image pixels hold traced values (1), for a canvas smaller than the image: its pixels
-   * average only those. Null until needed, and for a finished image (all of them do).
+   * Which image pixels hold traced values (1): a canvas smaller than the image averages only
+   * those. Null for a finished image (all of them do).
    */
   private rendered: Uint8Array | null = null;
+  /** The view the canvas holds; null before the first frame. */
+  private shown: CanvasView | null = null;
+  /** The contrast stretch applied to what is painted (ContrastToggle), or none. */
+  private stretch: LevelRange | null = null;
   /** A new image: the canvas still shows the last one and is cleared first. */
   private clear = false;
   private frame = 0;
 
   /**
    * @param canvas The canvas to paint (none while the window is not drawn).
-   * @param canvasSize The canvas size to show an image at: its own or smaller (canvasSizeFor).
+   * @param view What the canvas is to show of an image of that size (the viewer's tracedView).
    */
   constructor(
     private readonly canvas: () => HTMLCanvasElement | undefined,
-    private readonly canvasSize: (image: Size) => Size,
+    private readonly view: (image: Size) => CanvasView,
   ) {}
 
   /** The whole of `image` is to be shown (a finished render). */
@@ -101,13 +107,24 @@ export class BandPainter {
       this.preview = preview;
       [this.previewFrom, this.previewTo] = [Math.min(this.previewFrom, rows[0]), Math.max(this.previewTo, rows[1])];
     }
+    const rendered = (this.rendered ??= new Uint8Array(image.width * image.height));
+    for (const tile of changes.tiles) markRendered(rendered, image.width, tile);
     this.tiles.push(...changes.tiles);
     this.schedule();
   }
 
-  /** The image is shown at another size: the next frame paints it into a canvas of that size. */
-  resize(): void {
+  /** The viewer shows another part of the image, or at another scale: the next frame paints that. */
+  reframe(): void {
     if (this.image) this.schedule();
+  }
+
+  /** The image's levels stretched by `range` from now on (null: as they are); what is on screen is painted again. */
+  setStretch(range: LevelRange | null): void {
+    if (range?.low === this.stretch?.low && range?.high === this.stretch?.high) return;
+    this.stretch = range;
+    if (!this.image) return;
+    this.paintAgain();
+    this.schedule();
   }
 
   /**
@@ -150,6 +167,14 @@ export class BandPainter {
     this.painted = [];
   }
 
+  /** Everything painted so far is to be painted again (each tile once: a later pass paints the same tiles again). */
+  private paintAgain(): void {
+    const queued = new Map([...this.painted, ...this.tiles].map((tile) => [`${tile.x},${tile.y},${tile.width},${tile.height}`, tile]));
+    this.tiles = [...queued.values()];
+    this.painted = [];
+    if (this.whole) [this.from, this.to] = [0, this.image!.height];
+  }
+
   private schedule(): void {
     this.frame ||= requestAnimationFrame(this.onFrame);
   }
@@ -160,92 +185,109 @@ export class BandPainter {
     const canvas = this.canvas();
     const context = canvas?.getContext('2d');
     if (!image || !canvas || !context) return;
-    const size = this.canvasSize(image);
-    if (canvas.width !== size.width || canvas.height !== size.height) this.resizeCanvas(canvas, context, image, size);
-    else if (this.clear) context.clearRect(0, 0, canvas.width, canvas.height);
-    this.clear = false;
+    const view = this.view(image);
+    if (this.clear) {
+      // A new image: nothing of the old one to keep.
+      if (canvas.width !== view.window.width || canvas.height !== view.window.height) [canvas.width, canvas.height] = [view.window.width, view.window.height];
+      else context.clearRect(0, 0, canvas.width, canvas.height);
+      this.shown = view;
+      this.clear = false;
+    } else if (!sameView(view, this.shown)) {
+      this.moveTo(canvas, context, image, view);
+    }
     const start = performance.now();
     const inBudget = () => performance.now() - start < FRAME_BUDGET_MS;
-    while (this.preview && this.previewFrom < this.previewTo && inBudget()) this.drawPreviewBand(context, this.preview, image);
+    while (this.preview && this.previewFrom < this.previewTo && inBudget()) this.drawPreviewBand(context, this.preview, image, view);
     while (this.tiles.length > 0 && inBudget()) {
       const tile = this.tiles.shift()!;
-      this.drawTile(context, image, tile);
+      this.drawPiece(context, image, view, tile);
       this.painted.push(tile);
     }
-    this.from -= this.from % DITHER_PERIOD; // bands start at a multiple of the dither period
+    const onScreen = imagePart(view, image);
     this.to = Math.min(this.to, image.height);
     while (this.from < this.to && inBudget()) {
-      const toRow = Math.min(this.to, this.from + bandRows(image.width));
-      if (isFullSize(context, image)) context.putImageData(renderImageData(image, this.dithering, this.from, toRow), 0, this.from);
-      else this.putShrunk(context, image, { x: 0, y: this.from, width: image.width, height: toRow - this.from });
+      const toRow = Math.min(this.to, this.from + bandRows(onScreen.width));
+      this.drawPiece(context, image, view, { x: 0, y: this.from, width: image.width, height: toRow - this.from });
       this.from = toRow;
     }
     if ((this.preview && this.previewFrom < this.previewTo) || this.tiles.length > 0 || this.from < this.to) this.schedule();
   };
 
   /**
-   * Gives the canvas its new size, which clears it, and paints again what it showed: the old
-   * canvas scaled as the ground, the running preview's rows drawn so far over it, then again
-   * every tile and, for a finished image, every row. A new image has nothing to keep (it
-   * starts on a cleared canvas).
+   * Makes the canvas hold `view` instead of the one it holds: sized to its window (which
+   * clears it), the old canvas drawn where its pixels now belong as the ground, the running
+   * preview's rows drawn so far over it, and everything painted queued to be painted again.
    */
-  private resizeCanvas(canvas: HTMLCanvasElement, context: CanvasRenderingContext2D, image: RenderImage, size: Size): void {
-    const old = this.clear ? null : copyOf(canvas);
-    [canvas.width, canvas.height] = [size.width, size.height];
-    if (!old) return;
+  private moveTo(canvas: HTMLCanvasElement, context: CanvasRenderingContext2D, image: RenderImage, view: CanvasView): void {
+    const before = this.shown!;
+    const old = copyOf(canvas);
+    [canvas.width, canvas.height] = [view.window.width, view.window.height];
+    this.shown = view;
+    const scaleX = view.full.width / before.full.width;
+    const scaleY = view.full.height / before.full.height;
     // Smooth when shrinking; when growing, pixels as squares until painted again, as a zoom shows them.
-    context.imageSmoothingEnabled = size.width < old.width;
-    context.drawImage(old, 0, 0, size.width, size.height);
+    context.imageSmoothingEnabled = scaleX < 1;
+    context.drawImage(
+      old,
+      before.window.x * scaleX - view.window.x,
+      before.window.y * scaleY - view.window.y,
+      before.window.width * scaleX,
+      before.window.height * scaleY,
+    );
     const own = this.previewCanvas;
-    if (this.preview && own?.width === this.preview.width && own.height === this.preview.height) this.drawPreviewRows(context, this.preview, image, 0, this.preview.height);
-    // A later pass paints the same tiles again: each once is enough.
-    const queued = new Map([...this.painted, ...this.tiles].map((tile) => [`${tile.x},${tile.y},${tile.width},${tile.height}`, tile]));
-    this.tiles = [...queued.values()];
-    this.painted = [];
-    if (this.whole) [this.from, this.to] = [0, image.height];
+    if (this.preview && own?.width === this.preview.width && own.height === this.preview.height) this.drawPreviewRows(context, this.preview, image, view, 0, this.preview.height);
+    this.paintAgain();
   }
 
   /** The preview's next band of rows, into its own canvas and from there scaled up onto the visible one. */
-  private drawPreviewBand(context: CanvasRenderingContext2D, preview: PreviewImage, image: RenderImage): void {
+  private drawPreviewBand(context: CanvasRenderingContext2D, preview: PreviewImage, image: RenderImage, view: CanvasView): void {
     let own = this.previewCanvas;
     if (!own || own.width !== preview.width || own.height !== preview.height) own = this.previewCanvas = new OffscreenCanvas(preview.width, preview.height);
     const from = this.previewFrom - (this.previewFrom % DITHER_PERIOD);
     const to = Math.min(this.previewTo, preview.height, from + bandRows(preview.width));
     own.getContext('2d')!.putImageData(renderImageData(preview, this.dithering, from, to), 0, from);
-    this.drawPreviewRows(context, preview, image, from, to);
+    this.drawPreviewRows(context, preview, image, view, from, to);
     this.previewFrom = to;
   }
 
-  /** Rows [from, to) of the preview's own canvas, each block as the image pixels it stands for, at the canvas's scale. */
-  private drawPreviewRows(context: CanvasRenderingContext2D, preview: PreviewImage, image: RenderImage, from: number, to: number): void {
+  /** Rows [from, to) of the preview's own canvas, each block as the image pixels it stands for, in the view. */
+  private drawPreviewRows(context: CanvasRenderingContext2D, preview: PreviewImage, image: RenderImage, view: CanvasView, from: number, to: number): void {
     const { block } = preview;
-    const scaleX = context.canvas.width / image.width;
-    const scaleY = context.canvas.height / image.height;
+    const scaleX = view.full.width / image.width;
+    const scaleY = view.full.height / image.height;
     const top = Math.round(from * block * scaleY);
     // Blocks as blocks, as the worker filled them (no blur between the samples).
     context.imageSmoothingEnabled = false;
-    context.drawImage(this.previewCanvas!, 0, from, preview.width, to - from, 0, top, Math.round(preview.width * block * scaleX), Math.round(to * block * scaleY) - top);
-  }
-
-  /** The canvas pixels that the image's rectangle `piece` touches, on a canvas smaller than the image (shrinkPiece). */
-  private putShrunk(context: CanvasRenderingContext2D, image: RenderImage, piece: Tile): void {
-    const { x, y, pixels, part } = shrinkPiece(image, this.rendered, context.canvas, this.dithering, piece);
-    context.putImageData(pixels, x, y, part.x, part.y, part.width, part.height);
+    context.drawImage(
+      this.previewCanvas!,
+      0,
+      from,
+      preview.width,
+      to - from,
+      -view.window.x,
+      top - view.window.y,
+      Math.round(preview.width * block * scaleX),
+      Math.round(to * block * scaleY) - top,
+    );
   }
 
   /**
-   * One tile of the image. On a canvas of the image's size exactly its rectangle: quantized
-   * from the multiples of the dither period at or before its corner, so the pattern matches
-   * the whole image's, and put without those extra rows and columns (they may not be rendered
-   * yet). On a smaller canvas, marked as traced and the canvas pixels it touches put again.
+   * The part of the image's rectangle `piece` (a tile, or a band of rows) that is on screen.
+   * At the image's own scale exactly its pixels: quantized from the multiples of the dither
+   * period at or before its corner, so the pattern matches the whole image's, and put
+   * without those extra rows and columns (they may not be rendered yet). Smaller, the canvas
+   * pixels it touches (shrinkPiece).
    */
-  private drawTile(context: CanvasRenderingContext2D, image: RenderImage, tile: Tile): void {
-    const { x, y, width, height } = tile;
-    if (!isFullSize(context, image)) {
-      markRendered((this.rendered ??= new Uint8Array(image.width * image.height)), image.width, tile);
-      this.putShrunk(context, image, tile);
+  private drawPiece(context: CanvasRenderingContext2D, image: RenderImage, view: CanvasView, piece: Tile): void {
+    const part = overlap(piece, imagePart(view, image));
+    if (!part) return;
+    const { x: offsetX, y: offsetY } = view.window;
+    if (view.full.width !== image.width || view.full.height !== image.height) {
+      const shrunk = shrinkPiece(image, this.rendered, view.full, this.dithering, part);
+      context.putImageData(this.stretched(shrunk.pixels), shrunk.x - offsetX, shrunk.y - offsetY, shrunk.part.x, shrunk.part.y, shrunk.part.width, shrunk.part.height);
       return;
     }
+    const { x, y, width, height } = part;
     const left = x - (x % DITHER_PERIOD);
     const top = y - (y % DITHER_PERIOD);
     const rect = { width: x + width - left, height: y + height - top, rgb: new Float32Array((x + width - left) * (y + height - top) * 3) };
@@ -253,11 +295,45 @@ export class BandPainter {
       const from = ((top + row) * image.width + left) * 3;
       rect.rgb.set(image.rgb.subarray(from, from + rect.width * 3), row * rect.width * 3);
     }
-    context.putImageData(renderImageData(rect, this.dithering), left, top, x - left, y - top, width, height);
+    context.putImageData(this.stretched(renderImageData(rect, this.dithering)), left - offsetX, top - offsetY, x - left, y - top, width, height);
+  }
+
+  private stretched(pixels: ImageData): ImageData {
+    if (!this.stretch) return pixels;
+    return new ImageData(stretchContrast(pixels.data, this.stretch) as Uint8ClampedArray<ArrayBuffer>, pixels.width, pixels.height);
   }
 }
 
-const isFullSize = ({ canvas }: CanvasRenderingContext2D, image: RenderImage) => canvas.width === image.width && canvas.height === image.height;
+function sameView(a: CanvasView, b: CanvasView | null): boolean {
+  return (
+    b !== null &&
+    a.full.width === b.full.width &&
+    a.full.height === b.full.height &&
+    a.window.x === b.window.x &&
+    a.window.y === b.window.y &&
+    a.window.width === b.window.width &&
+    a.window.height === b.window.height
+  );
+}
+
+/** The image pixels the view's window shows (partly or wholly). */
+function imagePart(view: CanvasView, image: Size): Rect {
+  const scaleX = view.full.width / image.width;
+  const scaleY = view.full.height / image.height;
+  const left = Math.floor(view.window.x / scaleX + 1e-9);
+  const top = Math.floor(view.window.y / scaleY + 1e-9);
+  const right = Math.min(image.width, Math.ceil((view.window.x + view.window.width) / scaleX - 1e-9));
+  const bottom = Math.min(image.height, Math.ceil((view.window.y + view.window.height) / scaleY - 1e-9));
+  return { x: left, y: top, width: right - left, height: bottom - top };
+}
+
+function overlap(a: Rect, b: Rect): Rect | null {
+  const x = Math.max(a.x, b.x);
+  const y = Math.max(a.y, b.y);
+  const width = Math.min(a.x + a.width, b.x + b.width) - x;
+  const height = Math.min(a.y + a.height, b.y + b.height) - y;
+  return width > 0 && height > 0 ? { x, y, width, height } : null;
+}
 
 /** Marks the image pixels of `tile` in `rendered` (one byte per pixel, rows `width` long). */
 function markRendered(rendered: Uint8Array, width: number, { x, y, width: tileWidth, height }: Tile): void {

@@ -1,9 +1,8 @@
 import { msg, str } from '@lit/localize';
 import { html, nothing, type ReactiveController, type ReactiveControllerHost } from 'lit';
-import { createRef, ref } from 'lit/directives/ref.js';
 import { renderImageData } from '../../../render/image-data.ts';
 import type { RenderImage } from '../../../render/render-job.ts';
-import { type LevelRange, levelRange, stretchContrast } from './contrast-stretch.ts';
+import { type LevelRange, levelRange } from './contrast-stretch.ts';
 
 /** The finished image and whether it was dithered: what a stretch is made from. */
 export interface FinishedImage {
@@ -14,20 +13,24 @@ export interface FinishedImage {
 /**
  * The render window's "Stretch contrast" switch (key C, guide id render.contrast): the
  * finished image with its own darkest level shown black and its brightest white
- * (contrast-stretch.ts), so bands one level apart become visible on screen. The stretched
- * picture is a canvas of its own that takes the traced canvas's place in the viewer, so
- * zoom and comparison work on it as on the image; the image and a saved PNG are untouched.
+ * (contrast-stretch.ts), so bands one level apart become visible on screen. The window's
+ * painter draws the stretch (BandPainter.setStretch), so zoom and comparison work on it as on
+ * the image; the image and a saved PNG are untouched.
  */
 export class ContrastToggle implements ReactiveController {
   on = false;
   /** The levels of the image now stretched; null while there is none. */
   private range: LevelRange | null = null;
   private source: RenderImage | null = null;
-  private readonly canvas = createRef<HTMLCanvasElement>();
 
+  /**
+   * @param finished The image to stretch: the finished render on show, or none.
+   * @param apply Shows the image stretched by the range, or as it is (null).
+   */
   constructor(
     private readonly host: ReactiveControllerHost,
     private readonly finished: () => FinishedImage | null,
+    private readonly apply: (range: LevelRange | null) => void,
   ) {
     host.addController(this);
   }
@@ -37,28 +40,19 @@ export class ContrastToggle implements ReactiveController {
     this.host.requestUpdate();
   }
 
-  /** Where the traced canvas goes: out of the viewer while the stretched one stands in. */
-  get tracedSlot(): string {
-    return this.on && this.range ? 'unstretched' : 'traced';
-  }
-
   hostUpdated(): void {
     const finished = this.on ? this.finished() : null;
-    const canvas = this.canvas.value;
     if (!finished) {
-      if (this.range) [this.range, this.source] = [null, null];
-      else return;
-    } else if (finished.image !== this.source && canvas) {
-      const pixels = renderImageData(finished.image, finished.dithering);
-      this.range = levelRange(pixels.data);
-      canvas.width = pixels.width;
-      canvas.height = pixels.height;
-      canvas.getContext('2d')?.putImageData(new ImageData(stretchContrast(pixels.data, this.range) as Uint8ClampedArray<ArrayBuffer>, pixels.width, pixels.height), 0, 0);
+      if (!this.range) return;
+      [this.range, this.source] = [null, null];
+    } else if (finished.image !== this.source) {
+      this.range = levelRange(renderImageData(finished.image, finished.dithering).data);
       this.source = finished.image;
     } else {
       return;
     }
-    this.host.requestUpdate();
+    this.apply(this.range);
+    this.host.requestUpdate(); // the control shows the range
   }
 
   /** The switch, and which levels the stretch spreads over 0–255 while it is on: for the viewer's toolbar. */
@@ -70,10 +64,5 @@ export class ContrastToggle implements ReactiveController {
       </label>
       ${range ? html`<span class="group-label" role="status">${msg(str`Levels ${range.low}–${range.high} shown as 0–255`)}</span>` : nothing}
     </span>`;
-  }
-
-  /** The stretched picture, slotted as the traced image while the switch is on. */
-  stretchedCanvas() {
-    return html`<canvas slot=${this.on && this.range ? 'traced' : 'stretched'} ${ref(this.canvas)} role="img" aria-label=${msg('The ray traced image with stretched contrast')}></canvas>`;
   }
 }

@@ -49,13 +49,44 @@ export function zoomOutStep(scale: number): number | null {
   return [...ZOOM_STEPS].reverse().find((step) => step < scale / 1.001) ?? null;
 }
 
+export interface Rect extends Size {
+  x: number;
+  y: number;
+}
+
+/**
+ * What a canvas shows of an image: the whole image at the canvas's scale would be `full`
+ * canvas pixels; the canvas is its `window` part (in those pixels), the part on screen.
+ */
+export interface CanvasView {
+  full: Size;
+  window: Rect;
+}
+
 /**
  * The canvas size that shows an `image` in a box of `shown` CSS pixels: one canvas pixel per
  * device pixel of the box, never more than the image's own pixels. A canvas as large as a
- * 4096² image, shown in a few hundred CSS pixels, cost the page 40 ms to size and 56 ms per
- * frame for the compositor to copy (docs/benchmarks.md, eighteenth round).
+ * 4096² image cost the page 40 ms to size and 56–260 ms per changed frame for a compositor
+ * on the CPU to copy (docs/benchmarks.md, eighteenth round).
  */
 export function canvasSizeFor(image: Size, shown: Size, devicePixelRatio: number): Size {
   const side = (own: number, onScreen: number) => Math.min(own, Math.max(1, Math.round(onScreen * devicePixelRatio)));
   return { width: side(image.width, shown.width), height: side(image.height, shown.height) };
+}
+
+/**
+ * The canvas for an image shown in a box of `shown` CSS pixels of which the part `visible`
+ * (CSS pixels from the box's top left) is on screen: its scale as canvasSizeFor's, its
+ * window the whole canvas pixels that cover the visible part (at least one).
+ */
+export function canvasView(image: Size, shown: Size, visible: Rect, devicePixelRatio: number): CanvasView {
+  const full = canvasSizeFor(image, shown, devicePixelRatio);
+  const span = (from: number, length: number, shownLength: number, fullLength: number): [number, number] => {
+    const scale = fullLength / Math.max(1, shownLength);
+    const start = Math.min(fullLength - 1, Math.max(0, Math.floor(from * scale + 1e-9)));
+    return [start, Math.max(start + 1, Math.min(fullLength, Math.ceil((from + length) * scale - 1e-9)))];
+  };
+  const [left, right] = span(visible.x, visible.width, shown.width, full.width);
+  const [top, bottom] = span(visible.y, visible.height, shown.height, full.height);
+  return { full, window: { x: left, y: top, width: right - left, height: bottom - top } };
 }

@@ -1,12 +1,11 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { html, LitElement, nothing } from 'lit';
 import { createRef, ref } from 'lit/directives/ref.js';
 import { styleMap } from 'lit/directives/style-map.js';
-import { type CompareMode, fitLayout, type ImageLayout, type Size, SIDE_BY_SIDE_GAP, zoomInStep, zoomOutStep } from './image-zoom.ts';
+import { type CanvasView, canvasView, type CompareMode, fitLayout, type Rect, type ImageLayout, type Size, zoomInStep, zoomOutStep } from './image-zoom.ts';
+import { FRAME_PADDING, imageCompareLayout } from './image-compare-layout.css.ts';
 import { controlStyles } from './render-window-styles.ts';
 
-/** Space kept free around the image(s) inside the frame, in CSS pixels. */
-const FRAME_PADDING = 8;
 
 /** Where the centre of the view was, as fractions of the content, to keep it there across a zoom. */
 interface ViewCentre {
@@ -19,11 +18,13 @@ interface ViewCentre {
  * image scrolls inside its frame when larger) and a comparison of the ray traced image with
  * the raster one: alone, side by side, or stacked with a draggable divider.
  *
- * The images are the parent's canvases, slotted in and stretched to the image's box on
- * screen; the viewer only sizes and arranges them, so the parent keeps drawing into the same
- * canvases, at whatever size it chooses (shownSize says how large they are shown).
+ * The images are the parent's canvases, slotted in; the viewer only sizes and arranges them,
+ * so the parent keeps drawing into the same canvases. The raster canvas is stretched over
+ * the image's box. The traced canvas covers only the part of the box on screen
+ * (`tracedView`): zoomed into a 4096² image, a canvas of the image's size cost a page
+ * composited on the CPU 200–260 ms for every frame it changed in.
  *
- * @slot traced - The ray traced image (imageWidth × imageHeight pixels, in a canvas of that size or smaller).
+ * @slot traced - The ray traced image: a canvas showing `tracedView.window` of the image at `tracedView.full` canvas pixels.
  * @slot raster - The raster image of the same camera, at the same size or smaller (it is scaled to fit).
  * @slot tools - More controls for the image, at the end of the toolbar.
  *
@@ -36,10 +37,11 @@ interface ViewCentre {
  *   ray traced image is shown.
  *
  * Methods: `zoomIn()`, `zoomOut()`, `zoomToFit()` (the window's + − 0 keys).
- * Read-only: `scale` (screen pixels per image pixel), `shownSize` (each image's box on screen, CSS pixels).
+ * Read-only: `scale` (screen pixels per image pixel), `shownSize` (each image's box on screen,
+ * CSS pixels), `tracedView` (what the traced canvas is to show, image-zoom.ts's CanvasView).
  *
- * @fires shown-size-change - `shownSize` changed (a zoom, a resized window, another image
- *   size): the parent may draw its canvases at the new size.
+ * @fires view-change - `tracedView` changed (a zoom, a scroll, a resized window, another
+ *   image size): the parent draws the traced canvas for the new view.
  */
 export class RtImageCompare extends LitElement {
   static override properties = {
@@ -52,128 +54,7 @@ export class RtImageCompare extends LitElement {
     frame: { state: true },
   };
 
-  static override styles = [
-    controlStyles,
-    css`
-      :host {
-        display: flex;
-        flex-direction: column;
-        min-height: 0;
-        gap: 8px;
-      }
-      .toolbar {
-        display: flex;
-        flex-wrap: wrap;
-        align-items: center;
-        gap: 8px 20px;
-      }
-      .readout {
-        min-width: 4.5em;
-        font-variant-numeric: tabular-nums;
-        color: var(--rt-muted);
-      }
-      .note {
-        margin: 0;
-        color: var(--rt-muted);
-        font-size: 0.9rem;
-      }
-      input[type='range'] {
-        width: 140px;
-        min-height: var(--rt-target);
-        accent-color: var(--rt-accent);
-      }
-      .frame {
-        flex: 1;
-        min-height: 0;
-        display: flex;
-        overflow: auto;
-        border-radius: 8px;
-        background: color-mix(in srgb, var(--rt-text) 8%, var(--rt-bg));
-      }
-      .frame.fit {
-        overflow: hidden;
-      }
-      /* Auto margins centre the content while it is smaller than the frame and fall to 0 when
-         it is larger, so that it scrolls to every edge (centring with place-items would cut
-         off its left and top). */
-      .content {
-        margin: auto;
-        padding: ${FRAME_PADDING}px;
-        display: flex;
-        gap: ${SIDE_BY_SIDE_GAP}px;
-      }
-      .pixelated {
-        image-rendering: pixelated;
-      }
-      .image {
-        position: relative;
-        flex: none;
-        background: #000;
-      }
-      ::slotted(canvas) {
-        display: block;
-        width: 100%;
-        height: 100%;
-      }
-      .layer {
-        position: absolute;
-        inset: 0;
-      }
-      .chip {
-        position: absolute;
-        top: 6px;
-        left: 6px;
-        max-width: calc(50% - 12px);
-        padding: 2px 8px;
-        border-radius: 6px;
-        background: rgb(0 0 0 / 0.7);
-        color: #fff;
-        font-size: 0.8rem;
-        pointer-events: none;
-        z-index: 1; /* above the divider's line */
-      }
-      .chip.right {
-        left: auto;
-        right: 6px;
-        text-align: right;
-      }
-      /* The divider: a thin line, with a 32 px wide strip around it to grab (touch). */
-      .divider {
-        position: absolute;
-        top: 0;
-        bottom: 0;
-        width: var(--rt-target);
-        transform: translateX(-50%);
-        cursor: ew-resize;
-        touch-action: none;
-      }
-      .divider::before {
-        content: '';
-        position: absolute;
-        top: 0;
-        bottom: 0;
-        left: 15px;
-        width: 2px;
-        background: #fff;
-        box-shadow: 0 0 0 1px rgb(0 0 0 / 0.5);
-      }
-      .grip {
-        position: absolute;
-        top: 50%;
-        left: 0;
-        width: var(--rt-target);
-        height: var(--rt-target);
-        transform: translateY(-50%);
-        border-radius: 50%;
-        background: #fff;
-        color: #000;
-        box-shadow: 0 1px 4px rgb(0 0 0 / 0.5);
-        display: grid;
-        place-items: center;
-        font-size: 1rem;
-      }
-    `,
-  ];
+  static override styles = [controlStyles, imageCompareLayout];
 
   declare imageWidth: number;
   declare imageHeight: number;
@@ -189,8 +70,11 @@ export class RtImageCompare extends LitElement {
   private readonly resizeObserver = new ResizeObserver(([entry]) => this.onFrameResized(entry.contentRect));
   /** The layout last drawn, and the view centre to restore after a zoom. */
   private layout: ImageLayout = { scale: 1, direction: 'row' };
-  /** The box size last announced by shown-size-change. */
-  private announced: Size | null = null;
+  /** The traced image's box element, and the part of it on screen (CSS pixels from its top left; null: not measured). */
+  private readonly tracedBoxRef = createRef<HTMLElement>();
+  private visible: Rect | null = null;
+  /** The view last announced by view-change. */
+  private announced = '';
   private keepCentre: ViewCentre | null = null;
 
   constructor() {
@@ -216,6 +100,12 @@ export class RtImageCompare extends LitElement {
   get shownSize(): Size {
     const { scale } = this.currentLayout();
     return { width: Math.floor(this.imageWidth * scale), height: Math.floor(this.imageHeight * scale) };
+  }
+
+  /** What the traced canvas is to show: the part of the image on screen, at one canvas pixel per device pixel at most. */
+  get tracedView(): CanvasView {
+    const shown = this.shownSize;
+    return canvasView({ width: this.imageWidth, height: this.imageHeight }, shown, this.visible ?? { x: 0, y: 0, ...shown }, devicePixelRatio);
   }
 
   zoomIn(): void {
@@ -263,16 +153,41 @@ export class RtImageCompare extends LitElement {
   }
 
   override updated(): void {
-    const shown = this.shownSize;
-    if (shown.width !== this.announced?.width || shown.height !== this.announced.height) {
-      this.announced = shown;
-      this.dispatchEvent(new Event('shown-size-change'));
-    }
     const frame = this.frameRef.value;
-    if (!frame || !this.keepCentre) return;
-    frame.scrollLeft = this.keepCentre.x * frame.scrollWidth - frame.clientWidth / 2;
-    frame.scrollTop = this.keepCentre.y * frame.scrollHeight - frame.clientHeight / 2;
-    this.keepCentre = null;
+    if (frame && this.keepCentre) {
+      frame.scrollLeft = this.keepCentre.x * frame.scrollWidth - frame.clientWidth / 2;
+      frame.scrollTop = this.keepCentre.y * frame.scrollHeight - frame.clientHeight / 2;
+      this.keepCentre = null;
+    }
+    this.measureVisible();
+    const view = JSON.stringify(this.tracedView);
+    if (view !== this.announced) {
+      this.announced = view;
+      this.dispatchEvent(new Event('view-change'));
+    }
+  }
+
+  /**
+   * Measures the part of the traced image's box inside the frame's visible area; when it
+   * moved, draws the traced canvas's place again (an update, which announces the view).
+   */
+  private measureVisible(): void {
+    const frame = this.frameRef.value;
+    const box = this.tracedBoxRef.value;
+    if (!frame || !box) return;
+    const outer = frame.getBoundingClientRect();
+    const inner = box.getBoundingClientRect();
+    const [left, top] = [outer.left + frame.clientLeft, outer.top + frame.clientTop];
+    const x = Math.max(inner.left, left);
+    const y = Math.max(inner.top, top);
+    const width = Math.min(inner.right, left + frame.clientWidth) - x;
+    const height = Math.min(inner.bottom, top + frame.clientHeight) - y;
+    if (width <= 0 || height <= 0) return; // hidden: keep the last
+    const visible = { x: x - inner.left, y: y - inner.top, width, height };
+    const last = this.visible;
+    if (last && visible.x === last.x && visible.y === last.y && visible.width === last.width && visible.height === last.height) return;
+    this.visible = visible;
+    this.requestUpdate();
   }
 
   private shownMode(): CompareMode {
@@ -306,6 +221,7 @@ export class RtImageCompare extends LitElement {
       <div
         class="frame ${this.zoom === 'fit' ? 'fit' : ''}"
         ${ref(this.frameRef)}
+        @scroll=${this.measureVisible}
         tabindex="0"
         role="group"
         aria-label=${msg('Image view: scroll with the arrow keys when zoomed in')}
@@ -360,18 +276,32 @@ export class RtImageCompare extends LitElement {
   }
 
   private image(slot: 'traced' | 'raster', box: ReturnType<typeof styleMap>) {
-    return html`<div class="image" style=${box}>
-      <slot name=${slot}></slot>
+    return html`<div class="image" style=${box} ${slot === 'traced' ? ref(this.tracedBoxRef) : nothing}>
+      ${slot === 'traced' ? this.tracedWindow() : html`<slot name="raster"></slot>`}
       <span class="chip">${slot === 'traced' ? msg('Ray traced') : msg('Raster (like a game engine)')}</span>
     </div>`;
+  }
+
+  /** The traced canvas's place: the window of tracedView, in the box's CSS pixels. */
+  private tracedWindow() {
+    const { full, window } = this.tracedView;
+    const { width, height } = this.shownSize;
+    const [toCssX, toCssY] = [width / full.width, height / full.height];
+    const place = styleMap({
+      left: `${window.x * toCssX}px`,
+      top: `${window.y * toCssY}px`,
+      width: `${window.width * toCssX}px`,
+      height: `${window.height * toCssY}px`,
+    });
+    return html`<div class="window" style=${place}><slot name="traced"></slot></div>`;
   }
 
   /** The raster image underneath, the ray traced one on top, cut off right of the divider. */
   private sliderImage(box: ReturnType<typeof styleMap>) {
     const percent = this.position * 100;
-    return html`<div class="image" style=${box} ${ref(this.stackRef)}>
+    return html`<div class="image" style=${box} ${ref(this.stackRef)} ${ref(this.tracedBoxRef)}>
       <div class="layer"><slot name="raster"></slot></div>
-      <div class="layer" style=${styleMap({ clipPath: `inset(0 ${100 - percent}% 0 0)` })}><slot name="traced"></slot></div>
+      <div class="layer" style=${styleMap({ clipPath: `inset(0 ${100 - percent}% 0 0)` })}>${this.tracedWindow()}</div>
       <span class="chip">${msg('Ray traced')}</span>
       <span class="chip right">${msg('Raster (like a game engine)')}</span>
       <div

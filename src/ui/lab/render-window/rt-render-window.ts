@@ -12,7 +12,7 @@ import { GuideHostController } from '../guide-host.ts';
 import { consumeStore } from '../store-context.ts';
 import { estimateRender, lighterRenders, type LighterRender, type RenderEstimate } from '../../../render/render-estimate.ts';
 import { BandPainter } from './band-painter.ts';
-import { canvasSizeFor } from './image-zoom.ts';
+import { canvasView } from './image-zoom.ts';
 import { ContrastToggle } from './contrast-toggle.ts';
 import { errorMessage, RenderJobController, type ShownRender } from './render-job-controller.ts';
 import { formatCount, formatDuration, formatWait, progressText, raysPerSecond } from './render-figures.ts';
@@ -84,8 +84,11 @@ export class RtRenderWindow extends LitElement {
   private readonly painter = new BandPainter(
     () => this.tracedCanvas.value,
     (image) => {
-      const shown = this.compare.value?.shownSize;
-      return shown ? canvasSizeFor(image, shown, devicePixelRatio) : image;
+      const compare = this.compare.value;
+      if (compare?.imageWidth === image.width && compare.imageHeight === image.height) return compare.tracedView;
+      // Not the viewer's image (yet): all of it, no larger than the viewer's box.
+      const shown = compare?.shownSize ?? image;
+      return canvasView(image, shown, { x: 0, y: 0, ...shown }, devicePixelRatio);
     },
   );
   private readonly jobs = new RenderJobController(this, {
@@ -93,10 +96,14 @@ export class RtRenderWindow extends LitElement {
     paintChanges: (image, changes, dithering) => this.painter.paintChanges(image, changes, dithering),
     started: (shown, isCurrent) => this.prepareStage(shown, isCurrent),
   });
-  private readonly contrast = new ContrastToggle(this, () => {
-    const { finished, shown } = this.jobs;
-    return finished && shown ? { image: finished, dithering: shown.scene.settings.dithering } : null;
-  });
+  private readonly contrast = new ContrastToggle(
+    this,
+    () => {
+      const { finished, shown } = this.jobs;
+      return finished && shown ? { image: finished, dithering: shown.scene.settings.dithering } : null;
+    },
+    (range) => this.painter.setStretch(range),
+  );
   private unsubscribe: (() => void) | null = null;
   private seenScene: Scene | null = null;
   /** Whether the last render was running, to move focus from Cancel to Render when it ends. */
@@ -281,10 +288,10 @@ export class RtRenderWindow extends LitElement {
       .imageWidth=${width}
       .imageHeight=${height}
       .note=${this.rasterNote}
-      @shown-size-change=${() => this.painter.resize()}
+      @view-change=${() => this.painter.reframe()}
     >
-      <canvas slot=${this.contrast.tracedSlot} ${ref(this.tracedCanvas)} role="img" aria-label=${msg('The ray traced image')}></canvas>
-      ${this.contrast.stretchedCanvas()} ${this.contrast.control()}
+      <canvas slot="traced" ${ref(this.tracedCanvas)} role="img" aria-label=${msg('The ray traced image')}></canvas>
+      ${this.contrast.control()}
       <canvas slot="raster" ${ref(this.rasterCanvas)} role="img" aria-label=${msg('The raster image from the same camera')}></canvas>
     </rt-image-compare>`;
   }

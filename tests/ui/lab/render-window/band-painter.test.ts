@@ -1,6 +1,7 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import type { PreviewImage, RenderImage } from '../../../../src/render/render-job.ts';
 import { BandPainter } from '../../../../src/ui/lab/render-window/band-painter.ts';
+import type { CanvasView } from '../../../../src/ui/lab/render-window/image-zoom.ts';
 
 /**
  * Node has no canvas: stand-ins record what the painter does in each animation frame (how
@@ -38,7 +39,8 @@ function fakeContext(calls: Call[], own: boolean, canvas?: { width: number; heig
     // drawImage(source, dx, dy, dw, dh) or (source, sx, sy, sw, sh, dx, dy, dw, dh): recorded as the latter.
     drawImage: (source: { width: number; height: number }, ...args: number[]) => {
       if (own) return;
-      const all = args.length === 4 ? [0, 0, source.width, source.height, ...args] : args;
+      // (+ 0: a draw at -0 is a draw at 0)
+      const all = (args.length === 4 ? [0, 0, source.width, source.height, ...args] : args).map((value) => value + 0);
       calls.push({ kind: 'draw', pixels: all[6] * all[7], args: all });
     },
   };
@@ -68,12 +70,19 @@ afterEach(() => {
   vi.restoreAllMocks();
 });
 
-/** A painter on a canvas now `width` × `height`, which it sizes to `shown` (default: the image's own size). */
-function painterOn(width: number, height: number, shown?: { width: number; height: number }) {
+/** All of an image shown at `full` canvas pixels. */
+const whole = (full: { width: number; height: number }): CanvasView => ({ full, window: { x: 0, y: 0, ...full } });
+
+/** A painter on a canvas now `width` × `height`, showing `view` (default: all of the image at its own size). */
+function painterOn(width: number, height: number, view?: CanvasView) {
   const canvas: { width: number; height: number; getContext: () => unknown } = { width, height, getContext: () => fakeContext(perFrame.at(-1)!, false, canvas) };
   const painter = new BandPainter(
     () => canvas as unknown as HTMLCanvasElement,
-    (image) => shown ?? image,
+    // A new object each time, as the viewer's tracedView is.
+    (image) => {
+      const { full, window } = view ?? whole(image);
+      return { full: { ...full }, window: { ...window } };
+    },
   );
   return { painter, canvas };
 }
@@ -147,7 +156,7 @@ describe('the render window painter', () => {
   });
 
   it('puts the canvas pixels each tile of an image shown smaller touches, averaging only the traced image pixels', () => {
-    const { painter, canvas } = painterOn(100, 100, { width: 30, height: 30 });
+    const { painter, canvas } = painterOn(100, 100, whole({ width: 30, height: 30 }));
     // Traced so far: columns [0, 33), white; the rest holds 0 (black) until its tile comes.
     const full = image(100, 100);
     for (let y = 0; y < 100; y++) full.rgb.fill(1, y * 300, y * 300 + 33 * 3);
@@ -168,15 +177,15 @@ describe('the render window painter', () => {
     expect(Math.abs(second.data![1 * 4] - 0.9 * 255)).toBeLessThanOrEqual(0.5);
   });
 
-  it('paints a finished image again at a new canvas size, over the old picture scaled', () => {
-    const shown = { width: 4096, height: 64 };
+  it('paints a finished image again at a new scale, over the old picture scaled', () => {
+    const shown = whole({ width: 4096, height: 64 });
     const { painter, canvas } = painterOn(4096, 64, shown);
     painter.paint(image(4096, 64), false);
     runFrames();
     expect(new Set(perFrame.flat().map((call) => call.kind))).toEqual(new Set(['clear', 'put'])); // at its own size: put exactly
-    [shown.width, shown.height] = [1024, 16];
+    Object.assign(shown, whole({ width: 1024, height: 16 }));
     perFrame = [];
-    painter.resize();
+    painter.reframe();
     runFrames();
     expect([canvas.width, canvas.height]).toEqual([1024, 16]);
     const [ground, ...bands] = perFrame.flat();
@@ -185,8 +194,8 @@ describe('the render window painter', () => {
     expect(bands.map((call) => [call.kind, ...call.args])).toEqual([0, 4, 8, 12].map((top) => ['put', 1024, 4, 0, top, 0, 0, 1024, 4]));
   });
 
-  it('paints a running render again at a new canvas size: the preview over the old picture, then the tiles', () => {
-    const shown = { width: 64, height: 64 };
+  it('paints a running render again at a new scale: the preview over the old picture, then the tiles', () => {
+    const shown = whole({ width: 64, height: 64 });
     const { painter } = painterOn(64, 64, shown);
     const full = image(64, 64);
     painter.paintChanges(full, { preview: { image: { ...image(8, 8), block: 8 }, rows: [0, 8] }, tiles: [{ x: 0, y: 0, width: 16, height: 16 }] }, false);
@@ -194,9 +203,9 @@ describe('the render window painter', () => {
     expect(perFrame.flat().map((call) => call.kind)).toEqual(['clear', 'draw', 'put']);
     painter.paintChanges(full, { preview: null, tiles: [{ x: 0, y: 0, width: 16, height: 16 }] }, false); // the next pass's same tile
     runFrames();
-    [shown.width, shown.height] = [32, 32];
+    Object.assign(shown, whole({ width: 32, height: 32 }));
     perFrame = [];
-    painter.resize();
+    painter.reframe();
     runFrames();
     expect(perFrame.flat().map((call) => [call.kind, ...call.args])).toEqual([
       ['draw', 0, 0, 64, 64, 0, 0, 32, 32], // the old canvas
@@ -205,9 +214,52 @@ describe('the render window painter', () => {
     ]);
   });
 
-  it('asks for no frame when the size changes with no image to paint', () => {
-    const { painter } = painterOn(64, 64, { width: 32, height: 32 });
-    painter.resize();
+  it('asks for no frame when the view changes with no image to paint', () => {
+    const { painter } = painterOn(64, 64, whole({ width: 32, height: 32 }));
+    painter.reframe();
+    expect(frames).toHaveLength(0);
+  });
+
+  it('paints only the window on screen, at its place in the canvas', () => {
+    // A 64 × 64 image at its own scale, of which columns 16–47 and rows 8–23 are on screen.
+    const view: CanvasView = { full: { width: 64, height: 64 }, window: { x: 16, y: 8, width: 32, height: 16 } };
+    const { painter, canvas } = painterOn(64, 64, view);
+    painter.paintChanges(image(64, 64), { preview: null, tiles: [{ x: 0, y: 0, width: 32, height: 32 }, { x: 0, y: 32, width: 32, height: 32 }] }, false);
+    runFrames();
+    expect([canvas.width, canvas.height]).toEqual([32, 16]);
+    // The first tile's part on screen, columns 16–31 and rows 8–23, at the canvas's (0, 0); the second tile is off screen.
+    expect(perFrame.flat().map((call) => [call.kind, ...call.args])).toEqual([['put', 16, 16, 0, 0, 0, 0, 16, 16]]);
+  });
+
+  it('a scroll moves the old pixels to their new place and paints the window again', () => {
+    const view: CanvasView = { full: { width: 64, height: 64 }, window: { x: 16, y: 8, width: 32, height: 16 } };
+    const { painter } = painterOn(64, 64, view);
+    painter.paint(image(64, 64), false);
+    runFrames();
+    view.window = { x: 24, y: 8, width: 32, height: 16 };
+    perFrame = [];
+    painter.reframe();
+    runFrames();
+    const [ground, ...bands] = perFrame.flat();
+    expect(ground.args).toEqual([0, 0, 32, 16, -8, 0, 32, 16]); // 8 pixels to the left
+    // Rows 8–23 of columns 24–55 again (quantized from the dither period's corner, row 8 and column 24).
+    expect(bands.map((call) => [call.kind, ...call.args])).toEqual([['put', 32, 16, 0, 0, 0, 0, 32, 16]]);
+  });
+
+  it('stretches the contrast of what it paints, and paints it all again when the stretch changes', () => {
+    const { painter } = painterOn(16, 16);
+    const grey = image(16, 16);
+    grey.rgb.fill(15 / 255);
+    painter.paint(grey, false);
+    runFrames();
+    expect(perFrame.flat().filter((call) => call.kind === 'put').map((call) => call.data![0])).toEqual([15]);
+    perFrame = [];
+    painter.setStretch({ low: 10, high: 20 });
+    runFrames();
+    // 15 on a stretch of 10–20: round(255 · 5 / 10) = 128.
+    expect(perFrame.flat().map((call) => [call.kind, call.data?.[0]])).toEqual([['put', 128]]);
+    perFrame = [];
+    painter.setStretch({ low: 10, high: 20 }); // the same stretch: nothing to do
     expect(frames).toHaveLength(0);
   });
 });

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { canvasSizeFor, fitLayout, SIDE_BY_SIDE_GAP, zoomInStep, zoomOutStep } from '../../../../src/ui/lab/render-window/image-zoom.ts';
+import { canvasSizeFor, canvasView, fitLayout, SIDE_BY_SIDE_GAP, zoomInStep, zoomOutStep } from '../../../../src/ui/lab/render-window/image-zoom.ts';
 
 const image = { width: 512, height: 384 };
 
@@ -51,5 +51,31 @@ describe('the canvas an image is shown in', () => {
 
   it('keeps at least one pixel a side', () => {
     expect(canvasSizeFor(image, { width: 0, height: 0 }, 1)).toEqual({ width: 1, height: 1 });
+  });
+});
+
+describe('what the traced canvas shows', () => {
+  it('is all of an image shown whole', () => {
+    expect(canvasView({ width: 4096, height: 4096 }, { width: 600, height: 600 }, { x: 0, y: 0, width: 600, height: 600 }, 1)).toEqual({
+      full: { width: 600, height: 600 },
+      window: { x: 0, y: 0, width: 600, height: 600 },
+    });
+  });
+
+  it('is the part on screen of an image zoomed in, in whole image pixels at most one per device pixel', () => {
+    // 4096² at 200 %: a box of 8192 CSS pixels, of which 736 × 460 from (1000.5, 2000) are on screen.
+    const view = canvasView({ width: 4096, height: 4096 }, { width: 8192, height: 8192 }, { x: 1000.5, y: 2000, width: 736, height: 460 }, 1);
+    expect(view).toEqual({ full: { width: 4096, height: 4096 }, window: { x: 500, y: 1000, width: 369, height: 230 } });
+  });
+
+  it('covers the visible part with whole canvas pixels on a dense screen', () => {
+    // 100 % on a 1.5× screen: a canvas pixel per image pixel (not more), the box's visible 301 CSS pixels are 301 image pixels.
+    const view = canvasView({ width: 2048, height: 1536 }, { width: 2048, height: 1536 }, { x: 100.2, y: 0, width: 301, height: 200 }, 1.5);
+    expect(view.window).toEqual({ x: 100, y: 0, width: 302, height: 200 });
+  });
+
+  it('keeps at least one pixel inside the image', () => {
+    const view = canvasView(image, { width: 512, height: 384 }, { x: 512, y: 384, width: 0, height: 0 }, 1);
+    expect(view.window).toEqual({ x: 511, y: 383, width: 1, height: 1 });
   });
 });
