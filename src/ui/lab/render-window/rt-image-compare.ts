@@ -6,7 +6,6 @@ import { type CanvasView, canvasView, type CompareMode, fitLayout, type Rect, ty
 import { FRAME_PADDING, imageCompareLayout } from './image-compare-layout.css.ts';
 import { controlStyles } from './render-window-styles.ts';
 
-
 /** Where the centre of the view was, as fractions of the content, to keep it there across a zoom. */
 interface ViewCentre {
   x: number;
