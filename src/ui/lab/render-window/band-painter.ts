@@ -2,7 +2,7 @@ import { DITHER_PERIOD, renderImageData } from '../../../render/image-data.ts';
 import type { PreviewImage, RenderChanges, RenderImage } from '../../../render/render-job.ts';
 import type { Tile } from '../../../tracer/tile.ts';
 import { type LevelRange, stretchContrast } from './contrast-stretch.ts';
-import type { CanvasView, Rect, Size } from './image-zoom.ts';
+import { type CanvasView, pixelsCovering, type Rect, sameView, type Size } from './image-zoom.ts';
 import { shrinkPiece } from './shrink-piece.ts';
 
 /**
@@ -198,16 +198,16 @@ export class BandPainter {
     const start = performance.now();
     const inBudget = () => performance.now() - start < FRAME_BUDGET_MS;
     while (this.preview && this.previewFrom < this.previewTo && inBudget()) this.drawPreviewBand(context, this.preview, image, view);
+    const onScreen = imagePart(view, image);
     while (this.tiles.length > 0 && inBudget()) {
       const tile = this.tiles.shift()!;
-      this.drawPiece(context, image, view, tile);
+      this.drawPiece(context, image, view, onScreen, tile);
       this.painted.push(tile);
     }
-    const onScreen = imagePart(view, image);
     this.to = Math.min(this.to, image.height);
     while (this.from < this.to && inBudget()) {
       const toRow = Math.min(this.to, this.from + bandRows(onScreen.width));
-      this.drawPiece(context, image, view, { x: 0, y: this.from, width: image.width, height: toRow - this.from });
+      this.drawPiece(context, image, view, onScreen, { x: 0, y: this.from, width: image.width, height: toRow - this.from });
       this.from = toRow;
     }
     if ((this.preview && this.previewFrom < this.previewTo) || this.tiles.length > 0 || this.from < this.to) this.schedule();
@@ -272,14 +272,15 @@ export class BandPainter {
   }
 
   /**
-   * The part of the image's rectangle `piece` (a tile, or a band of rows) that is on screen.
+   * The part of the image's rectangle `piece` (a tile, or a band of rows) that is on screen
+   * (`onScreen`: the image pixels of the view's window).
    * At the image's own scale exactly its pixels: quantized from the multiples of the dither
    * period at or before its corner, so the pattern matches the whole image's, and put
    * without those extra rows and columns (they may not be rendered yet). Smaller, the canvas
    * pixels it touches (shrinkPiece).
    */
-  private drawPiece(context: CanvasRenderingContext2D, image: RenderImage, view: CanvasView, piece: Tile): void {
-    const part = overlap(piece, imagePart(view, image));
+  private drawPiece(context: CanvasRenderingContext2D, image: RenderImage, view: CanvasView, onScreen: Rect, piece: Tile): void {
+    const part = overlap(piece, onScreen);
     if (!part) return;
     const { x: offsetX, y: offsetY } = view.window;
     if (view.full.width !== image.width || view.full.height !== image.height) {
@@ -304,26 +305,10 @@ export class BandPainter {
   }
 }
 
-function sameView(a: CanvasView, b: CanvasView | null): boolean {
-  return (
-    b !== null &&
-    a.full.width === b.full.width &&
-    a.full.height === b.full.height &&
-    a.window.x === b.window.x &&
-    a.window.y === b.window.y &&
-    a.window.width === b.window.width &&
-    a.window.height === b.window.height
-  );
-}
-
 /** The image pixels the view's window shows (partly or wholly). */
-function imagePart(view: CanvasView, image: Size): Rect {
-  const scaleX = view.full.width / image.width;
-  const scaleY = view.full.height / image.height;
-  const left = Math.floor(view.window.x / scaleX + 1e-9);
-  const top = Math.floor(view.window.y / scaleY + 1e-9);
-  const right = Math.min(image.width, Math.ceil((view.window.x + view.window.width) / scaleX - 1e-9));
-  const bottom = Math.min(image.height, Math.ceil((view.window.y + view.window.height) / scaleY - 1e-9));
+function imagePart({ full, window }: CanvasView, image: Size): Rect {
+  const [left, right] = pixelsCovering(window.x, window.x + window.width, image.width / full.width, image.width);
+  const [top, bottom] = pixelsCovering(window.y, window.y + window.height, image.height / full.height, image.height);
   return { x: left, y: top, width: right - left, height: bottom - top };
 }
 

@@ -1,6 +1,7 @@
 /**
  * Zoom and layout of the render window's image(s): the scale that fits them in their frame,
- * the fixed zoom steps, and which way two images sit side by side.
+ * the fixed zoom steps, which way two images sit side by side, and which canvas pixels show
+ * the ray traced one.
  */
 
 export type CompareMode = 'traced' | 'side-by-side' | 'slider';
@@ -64,6 +65,22 @@ export interface CanvasView {
 }
 
 /**
+ * The whole pixels [first, end) of a grid `scale` times as fine (0..length) that the span
+ * [start, end) overlaps; an edge a rounding error past a pixel's edge does not count.
+ */
+export function pixelsCovering(start: number, end: number, scale: number, length: number): [number, number] {
+  return [Math.max(0, Math.floor(start * scale + 1e-9)), Math.min(length, Math.ceil(end * scale - 1e-9))];
+}
+
+export function sameRect(a: Rect, b: Rect): boolean {
+  return a.x === b.x && a.y === b.y && a.width === b.width && a.height === b.height;
+}
+
+export function sameView(a: CanvasView, b: CanvasView | null): boolean {
+  return b !== null && a.full.width === b.full.width && a.full.height === b.full.height && sameRect(a.window, b.window);
+}
+
+/**
  * The canvas size that shows an `image` in a box of `shown` CSS pixels: one canvas pixel per
  * device pixel of the box, never more than the image's own pixels. A canvas as large as a
  * 4096² image cost the page 40 ms to size and 56–260 ms per changed frame for a compositor
@@ -82,9 +99,9 @@ export function canvasSizeFor(image: Size, shown: Size, devicePixelRatio: number
 export function canvasView(image: Size, shown: Size, visible: Rect, devicePixelRatio: number): CanvasView {
   const full = canvasSizeFor(image, shown, devicePixelRatio);
   const span = (from: number, length: number, shownLength: number, fullLength: number): [number, number] => {
-    const scale = fullLength / Math.max(1, shownLength);
-    const start = Math.min(fullLength - 1, Math.max(0, Math.floor(from * scale + 1e-9)));
-    return [start, Math.max(start + 1, Math.min(fullLength, Math.ceil((from + length) * scale - 1e-9)))];
+    const [first, end] = pixelsCovering(from, from + length, fullLength / Math.max(1, shownLength), fullLength);
+    const start = Math.min(fullLength - 1, first);
+    return [start, Math.max(start + 1, end)];
   };
   const [left, right] = span(visible.x, visible.width, shown.width, full.width);
   const [top, bottom] = span(visible.y, visible.height, shown.height, full.height);

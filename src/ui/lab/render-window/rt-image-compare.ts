@@ -2,7 +2,19 @@ import { msg, str } from '@lit/localize';
 import { html, LitElement, nothing } from 'lit';
 import { createRef, ref } from 'lit/directives/ref.js';
 import { styleMap } from 'lit/directives/style-map.js';
-import { type CanvasView, canvasView, type CompareMode, fitLayout, type Rect, type ImageLayout, type Size, zoomInStep, zoomOutStep } from './image-zoom.ts';
+import {
+  type CanvasView,
+  canvasView,
+  type CompareMode,
+  fitLayout,
+  type ImageLayout,
+  type Rect,
+  sameRect,
+  sameView,
+  type Size,
+  zoomInStep,
+  zoomOutStep,
+} from './image-zoom.ts';
 import { FRAME_PADDING, imageCompareLayout } from './image-compare-layout.css.ts';
 import { controlStyles } from './render-window-styles.ts';
 
@@ -73,7 +85,7 @@ export class RtImageCompare extends LitElement {
   private readonly tracedBoxRef = createRef<HTMLElement>();
   private visible: Rect | null = null;
   /** The view last announced by view-change. */
-  private announced = '';
+  private announced: CanvasView | null = null;
   private keepCentre: ViewCentre | null = null;
 
   constructor() {
@@ -159,8 +171,8 @@ export class RtImageCompare extends LitElement {
       this.keepCentre = null;
     }
     this.measureVisible();
-    const view = JSON.stringify(this.tracedView);
-    if (view !== this.announced) {
+    const view = this.tracedView;
+    if (!sameView(view, this.announced)) {
       this.announced = view;
       this.dispatchEvent(new Event('view-change'));
     }
@@ -183,8 +195,7 @@ export class RtImageCompare extends LitElement {
     const height = Math.min(inner.bottom, top + frame.clientHeight) - y;
     if (width <= 0 || height <= 0) return; // hidden: keep the last
     const visible = { x: x - inner.left, y: y - inner.top, width, height };
-    const last = this.visible;
-    if (last && visible.x === last.x && visible.y === last.y && visible.width === last.width && visible.height === last.height) return;
+    if (this.visible && sameRect(visible, this.visible)) return;
     this.visible = visible;
     this.requestUpdate();
   }

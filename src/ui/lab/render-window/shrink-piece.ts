@@ -2,14 +2,14 @@ import { DITHER_PERIOD } from '../../../render/image-data.ts';
 import type { RenderImage } from '../../../render/render-job.ts';
 import { toRgba8 } from '../../../tracer/quantize.ts';
 import type { Tile } from '../../../tracer/tile.ts';
-import type { Size } from './image-zoom.ts';
+import { pixelsCovering, type Rect, type Size } from './image-zoom.ts';
 
 /** A rectangle of canvas pixels: where `pixels` go, and the part of them to put (putImageData's dirty rectangle). */
 export interface ShrunkPiece {
   x: number;
   y: number;
   pixels: ImageData;
-  part: { x: number; y: number; width: number; height: number };
+  part: Rect;
 }
 
 /** How one image pixel's span on an axis falls into canvas pixels: at most two when the canvas is smaller. */
@@ -35,12 +35,6 @@ function spans(from: number, to: number, scale: number, origin: number): Spans {
   return { first, share, span: scale };
 }
 
-/** Canvas pixels [from, to) that image pixels [start, end) overlap on an axis scaled by `scale` (an end a rounding error past a pixel's edge does not count). */
-const canvasRange = (start: number, end: number, scale: number, length: number): [number, number] => [
-  Math.floor(start * scale),
-  Math.min(length, Math.ceil(end * scale - 1e-9)),
-];
-
 /**
  * The canvas pixels that the image's rectangle `piece` touches, on a canvas of `canvas` size
  * smaller than the image: each the mean of the image pixels under it, weighted by the area
@@ -53,14 +47,14 @@ const canvasRange = (start: number, end: number, scale: number, length: number):
 export function shrinkPiece(image: RenderImage, rendered: Uint8Array | null, canvas: Size, dithering: boolean, piece: Tile): ShrunkPiece {
   const scaleX = canvas.width / image.width;
   const scaleY = canvas.height / image.height;
-  const [touchedLeft, right] = canvasRange(piece.x, piece.x + piece.width, scaleX, canvas.width);
-  const [touchedTop, bottom] = canvasRange(piece.y, piece.y + piece.height, scaleY, canvas.height);
+  const [touchedLeft, right] = pixelsCovering(piece.x, piece.x + piece.width, scaleX, canvas.width);
+  const [touchedTop, bottom] = pixelsCovering(piece.y, piece.y + piece.height, scaleY, canvas.height);
   const left = touchedLeft - (touchedLeft % DITHER_PERIOD);
   const top = touchedTop - (touchedTop % DITHER_PERIOD);
   const [width, height] = [right - left, bottom - top];
   // The image pixels overlapping those canvas pixels.
-  const [fromX, toX] = [Math.floor(left / scaleX), Math.min(image.width, Math.ceil(right / scaleX))];
-  const [fromY, toY] = [Math.floor(top / scaleY), Math.min(image.height, Math.ceil(bottom / scaleY))];
+  const [fromX, toX] = pixelsCovering(left, right, 1 / scaleX, image.width);
+  const [fromY, toY] = pixelsCovering(top, bottom, 1 / scaleY, image.height);
   const columns = spans(fromX, toX, scaleX, left);
   const rows = spans(fromY, toY, scaleY, top);
   // Per canvas pixel: weighted sums of R, G, B, and of the weights.
