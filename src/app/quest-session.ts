@@ -121,8 +121,8 @@ export class QuestSession {
       this.save();
     }
     this.applyPalette();
-    this.cleanup.push(this.store.subscribe((state, action, error) => {
-      this.engineNow.observe(state, action, error);
+    this.cleanup.push(this.store.subscribe((state, action, error, live) => {
+      this.engineNow.observe(state, action, error, live);
       this.keepPalette(state);
       if (this.modeNow.kind === 'free-lab' && action.type !== 'scene.loaded') this.keepSandbox(state.scene);
     }));

@@ -2,8 +2,17 @@ import type { LabAction } from './lab-action.ts';
 import { reduce, type Reduction } from './lab-reducer.ts';
 import type { LabState } from './lab-state.ts';
 
-/** Called after every dispatched action with the state it produced (unchanged when refused). */
-export type StoreListener = (state: LabState, action: LabAction, error?: string) => void;
+/**
+ * Called after every dispatched action with the state it produced (unchanged when refused).
+ * `live` marks a value the learner is still dragging through: a settled action follows it.
+ */
+export type StoreListener = (state: LabState, action: LabAction, error?: string, live?: boolean) => void;
+
+/** How an action was dispatched. */
+export interface DispatchOptions {
+  /** A value passed while dragging (a slider's `input`), not the one the learner settles on. */
+  live?: boolean;
+}
 
 /**
  * Holds the lab state and applies named actions to it (three.js editor's "every change is
@@ -32,11 +41,11 @@ export class Store {
   }
 
   /** Applies the action; returns the reason when it was refused (the state is then unchanged). */
-  dispatch(action: LabAction): string | undefined {
+  dispatch(action: LabAction, options: DispatchOptions = {}): string | undefined {
     const { state, error } = safeReduce(this.current, action);
     if (state.scene !== this.current.scene) this.revision++;
     this.current = state;
-    for (const listener of [...this.listeners]) listener(state, action, error);
+    for (const listener of [...this.listeners]) listener(state, action, error, options.live === true);
     return error;
   }
 

@@ -244,8 +244,12 @@ export class QuestEngine {
 
   // ─── Fed by the store ──────────────────────────────────────────────────────
 
-  /** The store's listener: a refused action (error) changed nothing and counts for nothing. */
-  readonly observe = (state: LabState, action: LabAction, error?: string): void => {
+  /**
+   * The store's listener: a refused action (error) changed nothing and counts for nothing. A
+   * live action (a value passed while dragging) starts tasks but completes none: "set it to 4"
+   * is met by the value the learner lets go at, not by one the slider passed on its way to 6.
+   */
+  readonly observe = (state: LabState, action: LabAction, error?: string, live = false): void => {
     if (error !== undefined) return;
     this.lastActivity = this.log.now();
     const levelId = this.active?.level.id ?? null;
@@ -269,6 +273,7 @@ export class QuestEngine {
         // A task completed by an earlier one in this loop (the next current task) is no longer watched.
         if (!task || !active.tallies.has(taskId) || kindOfGoal(task.goal) !== 'do') continue;
         if (touchesGoal(task.goal, before, state, action)) this.startOptional(active, taskId);
+        if (live) continue;
         const next = tallyAction(task.goal, tally, state, action);
         active.tallies.set(taskId, next);
         if (checkGoal(task.goal, state, next)) this.complete(active, task, active.shownByApp.has(taskId) ? 'shown' : 'done');

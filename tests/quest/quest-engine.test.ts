@@ -81,6 +81,22 @@ describe('playing a level', () => {
     expect(setup.status().supersample).toBe('current');
   });
 
+  it('completes a task with the value the learner settles on, not one a drag passes', () => {
+    const setup = setUp();
+    const store = setup.open('first');
+    store.dispatch({ type: 'view.orbited' });
+    setup.engine.answerQuiz('predict', 1);
+    // Dragging the slider through 2 on its way to 1 starts nothing and completes nothing.
+    store.dispatch({ type: 'settings.changed', changes: { supersampling: 2 } }, { live: true });
+    expect(setup.status().supersample).toBe('current');
+    store.dispatch({ type: 'settings.changed', changes: { supersampling: 1 } });
+    expect(setup.status().supersample).toBe('current');
+    // Let go at 2: done.
+    store.dispatch({ type: 'settings.changed', changes: { supersampling: 2 } }, { live: true });
+    store.dispatch({ type: 'settings.changed', changes: { supersampling: 2 } });
+    expect(setup.status().supersample).toBe('done');
+  });
+
   it('completes an info step with Next, and only the current one', () => {
     const withInfo = levelFile((level) => {
       level.id = 'first';

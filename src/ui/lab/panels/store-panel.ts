@@ -178,8 +178,9 @@ export abstract class StorePanel extends LitElement {
   }
 
   /** Dispatches `action` for the control `name`; keeps (or clears) the reason it was refused. */
-  protected send(name: string, action: LabAction): void {
-    const refused = this.store?.dispatch(action);
+  /** Dispatches a control's change; `live` while the learner is still dragging it. */
+  protected send(name: string, action: LabAction, live = false): void {
+    const refused = this.store?.dispatch(action, { live });
     const error = refused && issueLines(refused);
     if (error !== this.errors[name]) this.errors = { ...this.errors, [name]: error };
   }
@@ -209,7 +210,7 @@ export abstract class StorePanel extends LitElement {
   /** A slider that dispatches `action(value)` while dragging and on commit; `hint` goes under it. */
   protected slider(spec: SliderSpec, value: number, action: (value: number) => LabAction, hint?: TemplateResult | string): ControlPart {
     if (!this.shows(spec.name)) return nothing;
-    const send = (event: CustomEvent<ValueDetail<number>>) => this.send(spec.name, action(event.detail.value));
+    const send = (event: CustomEvent<ValueDetail<number>>) => this.send(spec.name, action(event.detail.value), event.type === 'input');
     return html`<rt-slider
       name=${spec.name}
       data-guide=${ifDefined(this.guideOf(spec.name))}
@@ -261,7 +262,7 @@ export abstract class StorePanel extends LitElement {
 
   protected color(text: ControlText, value: Color, action: (value: Color) => LabAction): ControlPart {
     if (!this.shows(text.name)) return nothing;
-    const send = (event: CustomEvent<ValueDetail<Color>>) => this.send(text.name, action(event.detail.value));
+    const send = (event: CustomEvent<ValueDetail<Color>>) => this.send(text.name, action(event.detail.value), event.type === 'input');
     return html`<rt-color-field
       name=${text.name}
       data-guide=${ifDefined(this.guideOf(text.name))}
