@@ -118,7 +118,7 @@ function eventStatement(event: LoggedEvent, at: string, openedAt: Map<string, nu
     case 'level.passed':
       return add(VERBS.passed, activities.level(event.level), at, { success: true, completion: true, duration: isoDuration(event.t - (openedAt.get(event.level) ?? event.t)) });
     case 'quiz.answered':
-      return add(VERBS.answered, activities.task(event.level, event.task), at, { success: event.correct, response: String(event.choice) }, event.level);
+      return add(VERBS.answered, activities.task(event.level, event.task), at, { success: event.correct, response: String(event.choice ?? event.value) }, event.level);
     case 'hint.shown':
       return add(VERBS.experienced, activities.hint(event.level, event.task, event.step), at, { extensions: { [EXTENSIONS.trigger]: event.trigger } }, event.level);
     case 'explanation.expanded':

@@ -61,7 +61,12 @@ export const loggedEventSchema = z.discriminatedUnion('type', [
   z.strictObject({ t, id, type: z.literal('hint.shown'), level, task, step: z.enum(HINT_STEPS), trigger: z.enum(['asked', 'idle']) }),
   /** "Explain more" opened, for a task or (task null) the level's intro. */
   z.strictObject({ t, id, type: z.literal('explanation.expanded'), level, task: task.nullable() }),
-  z.strictObject({ t, id, type: z.literal('quiz.answered'), level, task, choice: z.number(), correct: z.boolean() }),
+  /** A prediction: a quiz's `choice` (its position in the level file) or an estimate's `value`. */
+  z.strictObject({ t, id, type: z.literal('quiz.answered'), level, task, choice: z.number().optional(), value: z.number().optional(), correct: z.boolean() }),
+  /** After observing, a learner whose prediction was wrong says what they saw (logs from 0.2 on). */
+  z.strictObject({ t, id, type: z.literal('quiz.reflected'), level, task, choice: z.number().optional(), value: z.number().optional(), correct: z.boolean() }),
+  /** The explanation of a prediction was read after observing, and the learner moved on. */
+  z.strictObject({ t, id, type: z.literal('quiz.explained'), level, task }),
   z.strictObject({ t, id, type: z.literal('render.started'), level: level.nullable() }),
   z.strictObject({ t, id, type: z.literal('render.finished'), level: level.nullable(), ms: z.number().min(0) }),
   /** The tab was hidden or shown again: active time is the time in between hidden ones. */

@@ -1,7 +1,7 @@
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
 import { compare, conditionHolds } from './condition.ts';
-import { goalParts, type EventGoal, type Goal, type QuizGoal } from './goal.ts';
+import { goalParts, type EventGoal, type Goal, type PredictionGoal } from './goal.ts';
 import { readPath } from './state-path.ts';
 
 /**
@@ -38,8 +38,8 @@ export function eventMatches(goal: EventGoal, state: LabState, action: LabAction
 
 /**
  * Whether the goal is met in `state`, given the events tallied since its task was shown.
- * Quiz and info goals are never met here: they complete through the quest engine's
- * `answerQuiz` and `next`.
+ * Quiz, estimate and info goals are never met here: they complete through the quest
+ * engine's `predict` and `next`.
  */
 export function checkGoal(goal: Goal, state: LabState, tally: EventTally): boolean {
   if ('event' in goal) return (tally.get(goal) ?? 0) >= (goal.times ?? 1);
@@ -62,7 +62,18 @@ export function touchesGoal(goal: Goal, before: LabState | null, state: LabState
   });
 }
 
-/** Whether `choice` (a position in the quiz's choices) is the right answer. */
-export function isRightAnswer(goal: QuizGoal, choice: number): boolean {
-  return choice === goal.quiz.answer;
+/** A prediction as the learner gives it: a position in a quiz's choices, or a number. */
+export type Prediction = { choice: number } | { value: number };
+
+/** Whether the prediction is right: the quiz's answer, or a number within the estimate's tolerance. */
+export function isRightPrediction(goal: PredictionGoal, prediction: Prediction): boolean {
+  if ('quiz' in goal) return 'choice' in prediction && prediction.choice === goal.quiz.answer;
+  // A little slack for the decimal the learner typed (0.1 + 0.2 is not 0.3 in binary).
+  return 'value' in prediction && Math.abs(prediction.value - goal.estimate.answer) <= goal.estimate.tolerance + 1e-9;
+}
+
+/** Whether a prediction fits the goal's form (a choice for a quiz, a finite number for an estimate). */
+export function fitsGoal(goal: PredictionGoal, prediction: Prediction): boolean {
+  if ('quiz' in goal) return 'choice' in prediction && Number.isInteger(prediction.choice) && prediction.choice >= 0 && prediction.choice < goal.quiz.choices.length;
+  return 'value' in prediction && Number.isFinite(prediction.value);
 }

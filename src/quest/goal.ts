@@ -39,6 +39,14 @@ export interface QuizGoal {
   quiz: { question: LocalizedText; choices: LocalizedText[]; answer: number; explanation?: LocalizedText };
 }
 
+/**
+ * Predict a number: done when answered; right when within `tolerance` of `answer` (a number
+ * prediction of spec/challenges.md §1: a pixel's mix, a visible fraction, an attenuation).
+ */
+export interface EstimateGoal {
+  estimate: { question: LocalizedText; answer: number; tolerance: number; unit?: LocalizedText; explanation?: LocalizedText };
+}
+
 /** Read, then press Next. */
 export interface InfoGoal {
   info: true;
@@ -55,8 +63,11 @@ export interface AnyGoal {
 /** The goals checked against the app's state and actions, which `all` and `any` combine. */
 export type SceneGoal = EventGoal | StateGoal | AllGoal | AnyGoal;
 
-/** Quiz and info goals are answered through the task panel, so they stand alone. */
-export type Goal = SceneGoal | QuizGoal | InfoGoal;
+/** Quiz, estimate and info goals are answered through the task panel, so they stand alone. */
+export type Goal = SceneGoal | QuizGoal | EstimateGoal | InfoGoal;
+
+/** A prediction the learner makes in the task panel: a choice or a number. */
+export type PredictionGoal = QuizGoal | EstimateGoal;
 
 /** How the learner completes a task: read it, answer it, or do something in the lab. */
 export const TASK_KINDS = ['info', 'quiz', 'do'] as const;
@@ -64,8 +75,18 @@ export type TaskKind = (typeof TASK_KINDS)[number];
 
 export function kindOfGoal(goal: Goal): TaskKind {
   if ('info' in goal) return 'info';
-  if ('quiz' in goal) return 'quiz';
+  if ('quiz' in goal || 'estimate' in goal) return 'quiz';
   return 'do';
+}
+
+/** The goal as a prediction (a choice or a number), or undefined for a goal done otherwise. */
+export function predictionOf(goal: Goal): PredictionGoal | undefined {
+  return 'quiz' in goal || 'estimate' in goal ? goal : undefined;
+}
+
+/** What a prediction's explanation is, whichever form it has. */
+export function explanationOf(goal: PredictionGoal): LocalizedText | undefined {
+  return 'quiz' in goal ? goal.quiz.explanation : goal.estimate.explanation;
 }
 
 const pathSyntax = z.string().superRefine((path, context) => {
@@ -109,12 +130,23 @@ const quizGoalSchema = z.strictObject({
       question: localizedTextSchema,
       choices: z.array(localizedTextSchema).min(2).max(6),
       answer: wholeNumberIn([0, 5]).describe('The position of the right choice, counting from 0.'),
-      explanation: localizedTextSchema.optional().describe('Shown after answering: why the answer is what it is.'),
+      explanation: localizedTextSchema.optional().describe('Shown once the learner has observed the result: why the answer is what it is.'),
     })
     .superRefine((quiz, context) => {
       if (quiz.answer >= quiz.choices.length) {
         context.addIssue({ code: 'custom', path: ['answer'], input: quiz.answer, message: `must be the position of a choice, 0 to ${quiz.choices.length - 1}` });
       }
+    }),
+});
+
+const estimateGoalSchema = z.strictObject({
+  estimate: z
+    .strictObject({
+      question: localizedTextSchema,
+      answer: z.number().describe('The right value.'),
+      tolerance: z.number().min(0).describe('How far from the answer a prediction may be and still be right.'),
+      unit: localizedTextSchema.optional().describe('Shown after the number box, e.g. "m" or "%".'),
+      explanation: localizedTextSchema.optional().describe('Shown once the learner has observed the result: why the value is what it is.'),
     }),
 });
 
@@ -129,7 +161,7 @@ const SCENE_GOAL_KINDS: Record<string, z.ZodType<SceneGoal>> = {
   all: z.strictObject({ all: innerGoals() }),
   any: z.strictObject({ any: innerGoals() }),
 };
-const GOAL_KINDS: Record<string, z.ZodType<Goal>> = { ...SCENE_GOAL_KINDS, quiz: quizGoalSchema, info: infoGoalSchema };
+const GOAL_KINDS: Record<string, z.ZodType<Goal>> = { ...SCENE_GOAL_KINDS, quiz: quizGoalSchema, estimate: estimateGoalSchema, info: infoGoalSchema };
 
 function chooseByField<Output>(kinds: Record<string, z.ZodType<Output>>, standAlone: readonly string[]) {
   const names = Object.keys(kinds);
@@ -144,7 +176,7 @@ function chooseByField<Output>(kinds: Record<string, z.ZodType<Output>>, standAl
   };
 }
 
-const sceneGoalSchema: z.ZodType<SceneGoal> = chosenBy(chooseByField(SCENE_GOAL_KINDS, ['quiz', 'info']));
+const sceneGoalSchema: z.ZodType<SceneGoal> = chosenBy(chooseByField(SCENE_GOAL_KINDS, ['quiz', 'estimate', 'info']));
 export const goalSchema: z.ZodType<Goal> = chosenBy(chooseByField(GOAL_KINDS, []));
 
 /** Every goal inside `goal` (itself included) with its path from it, for checks that look at each. */
@@ -162,5 +194,6 @@ export type SchemaMatchesGoalTypes = [
   Assert<SameType<z.output<typeof eventGoalSchema>, EventGoal>>,
   Assert<SameType<z.output<typeof stateGoalSchema>, StateGoal>>,
   Assert<SameType<z.output<typeof quizGoalSchema>, QuizGoal>>,
+  Assert<SameType<z.output<typeof estimateGoalSchema>, EstimateGoal>>,
   Assert<SameType<z.output<typeof infoGoalSchema>, InfoGoal>>,
 ];

@@ -4,8 +4,9 @@ import type { Scene } from '../scene/scene.ts';
 import { sameBadge, type Badge, type EarnedBadge } from './badges.ts';
 import { EventLog, systemClock, type HintStep, type HowCompleted, type LoggedEvent, type QuestClock, type QuestEvent } from './event-log.ts';
 import { APP_ONLY_ACTION } from './lab-action-schema.ts';
-import { checkGoal, isRightAnswer, NO_EVENTS, tallyAction, touchesGoal, type EventTally } from './goal-check.ts';
-import { kindOfGoal, type TaskKind } from './goal.ts';
+import { choiceOrder } from './choice-order.ts';
+import { checkGoal, fitsGoal, isRightPrediction, NO_EVENTS, tallyAction, touchesGoal, type EventTally, type Prediction } from './goal-check.ts';
+import { kindOfGoal, predictionOf, type TaskKind } from './goal.ts';
 import { canShowMe, climb, nextHintStep, NO_HINTS, type HintProgress } from './hint-ladder.ts';
 import type { GuideTarget } from './lab-controls.ts';
 import { currentTask, isCompleted, isPassed, requiredTaskIds, type RequiredTasks } from './level-gate.ts';
@@ -23,8 +24,8 @@ import { reconcileLevels } from './progress-reconcile.ts';
  * task is done, points, badges, the gate and the hint ladder, all logged.
  *
  * It is fed by the store (`store.subscribe(engine.observe)`: the state and the action that
- * produced it) and by the task panel's calls (next, answerQuiz, askHint, showMe, skip,
- * expandExplanation). It never dispatches: "show me" returns the actions for the UI to
+ * produced it) and by the task panel's calls (next, predict, reflect, continueAfterReveal,
+ * askHint, showMe, skip, expandExplanation). It never dispatches: "show me" returns the actions for the UI to
  * perform visibly, through the store, where the engine sees them like any other.
  * Listeners hear about every change, with the events it logged.
  */
@@ -49,6 +50,26 @@ export interface QuestEngineOptions {
  * required and not done; `waiting` a required task after the current one. */
 export type TaskStatus = 'current' | 'open' | 'waiting' | HowCompleted;
 
+/**
+ * Where a prediction is (predict → observe → explain, White & Gunstone 1992): `ask` before
+ * the learner predicts; `wait` while they do the task that shows the result (its observer);
+ * then, once it is done, `reflect` (a wrong prediction: "you expected X, what do you see?")
+ * and `explain` (the answer and why, until the learner moves on); `explained` after.
+ */
+export type PredictionStage = 'ask' | 'wait' | 'reflect' | 'explain' | 'explained';
+
+export interface PredictionView {
+  stage: PredictionStage;
+  /** A quiz's choices in the order this learner sees them (file positions); empty for a number. */
+  order: number[];
+  /** The learner's prediction, once made (from the log). */
+  prediction?: Prediction;
+  /** What a learner whose prediction was wrong said they saw. */
+  reflection?: Prediction;
+  /** The task whose result checks the prediction; none when the result is seen at once. */
+  observer?: Task;
+}
+
 export interface TaskView {
   task: Task;
   kind: TaskKind;
@@ -58,6 +79,10 @@ export interface TaskView {
   points: number;
   /** For an answered quiz: whether the prediction was right. */
   correct?: boolean;
+  /** For a quiz or estimate: its stage, the order of its choices, the learner's prediction. */
+  prediction?: PredictionView;
+  /** For the task that checks a prediction, while it is to do: that prediction and its quiz. */
+  checks?: { quiz: Task; prediction: Prediction };
   /** The text hints shown so far. */
   hints: LocalizedText[];
   /** What asking for help does next (`show-me`: offer the "Show me" button); null when nothing is left. */
@@ -67,8 +92,10 @@ export interface TaskView {
 export interface LevelView {
   level: Level;
   tasks: TaskView[];
-  /** The required task to do now; null once the level is passed. */
+  /** The required task to do now; null once the level is passed, or while a prediction is revealed. */
   current: TaskView | null;
+  /** The prediction being revealed after its observation (the learner continues from it), or null. */
+  revealing: TaskView | null;
   passed: boolean;
   points: number;
   maxPoints: number;
@@ -76,7 +103,7 @@ export interface LevelView {
   ring: GuideTarget | null;
 }
 
-/** What "show me" performs: the solution's actions, one by one through the store; or a quiz's answer. */
+/** What "show me" performs: the solution's actions, one by one through the store; or a quiz's answer (a choice's position, or an estimate's number). */
 export type ShowMe = { kind: 'actions'; actions: LabAction[] } | { kind: 'answer'; answer: number };
 
 export type OpenLevelResult = { ok: true; level: Level; scene: Scene } | { ok: false; reason: 'unknown' | 'broken' | 'locked' };
@@ -97,6 +124,8 @@ interface ActiveLevel {
   /** Optional tasks the learner has started on in this visit (`task.started` logged). */
   started: Set<string>;
   ring: { task: string; target: GuideTarget } | null;
+  /** The prediction whose result was just observed: it holds the level until the learner continues. */
+  reveal: { quiz: string; reflection?: Prediction } | null;
 }
 
 export class QuestEngine {
@@ -175,6 +204,7 @@ export class QuestEngine {
       level,
       tasks,
       current: tasks.find((view) => view.status === 'current') ?? null,
+      revealing: tasks.find((view) => view.task.id === active.reveal?.quiz) ?? null,
       passed: isPassed(level, record, required),
       points: tasks.reduce((sum, view) => sum + view.points, 0),
       maxPoints: level.tasks.reduce((sum, task) => sum + task.points, 0),
@@ -220,6 +250,7 @@ export class QuestEngine {
       shownByApp: new Set(),
       started: new Set(),
       ring: null,
+      reveal: null,
     };
     this.active = active;
     this.append({ type: 'level.opened', level: id });
@@ -294,18 +325,49 @@ export class QuestEngine {
     return true;
   }
 
-  /** Records a prediction, right or wrong, and completes the quiz task. */
-  answerQuiz(taskId: string, choice: number): { correct: boolean } | undefined {
+  /**
+   * Records a prediction (a quiz's choice or an estimate's number), right or wrong, and
+   * completes the task. Whether it was right is shown only after the observation.
+   */
+  predict(taskId: string, prediction: Prediction): { correct: boolean } | undefined {
     const found = this.workableTask(taskId);
-    if (!found || !('quiz' in found.task.goal)) return undefined;
+    const goal = found && predictionOf(found.task.goal);
+    if (!found || !goal || !fitsGoal(goal, prediction)) return undefined;
     const { active, task } = found;
-    const correct = isRightAnswer(found.task.goal, choice);
+    const correct = isRightPrediction(goal, prediction);
     this.lastActivity = this.log.now();
     this.startOptional(active, taskId);
-    this.append({ type: 'quiz.answered', level: active.level.id, task: taskId, choice, correct });
+    this.append({ type: 'quiz.answered', level: active.level.id, task: taskId, ...prediction, correct });
     this.complete(active, task, 'done', correct);
     this.publish();
     return { correct };
+  }
+
+  /** After observing, a learner whose prediction was wrong says what they see now. */
+  reflect(taskId: string, prediction: Prediction): { correct: boolean } | undefined {
+    const active = this.active;
+    const task = active?.level.tasks.find((candidate) => candidate.id === taskId);
+    const goal = task && predictionOf(task.goal);
+    if (!active || !task || !goal || this.stageOf(active, task) !== 'reflect' || !fitsGoal(goal, prediction)) return undefined;
+    const correct = isRightPrediction(goal, prediction);
+    this.lastActivity = this.log.now();
+    active.reveal = { quiz: taskId, reflection: prediction };
+    this.append({ type: 'quiz.reflected', level: active.level.id, task: taskId, ...prediction, correct });
+    this.publish();
+    return { correct };
+  }
+
+  /** The learner has read a revealed prediction's explanation and moves on to the next task. */
+  continueAfterReveal(taskId: string): boolean {
+    const active = this.active;
+    const task = active?.level.tasks.find((candidate) => candidate.id === taskId);
+    if (!active || !task || this.stageOf(active, task) !== 'explain') return false;
+    this.lastActivity = this.log.now();
+    active.reveal = null;
+    this.append({ type: 'quiz.explained', level: active.level.id, task: taskId });
+    if (!active.current) this.showCurrentTask(active);
+    this.publish();
+    return true;
   }
 
   /**
@@ -339,9 +401,10 @@ export class QuestEngine {
     this.startOptional(active, taskId);
     this.hintShown(active, task, 'show-me', 'asked');
     let shown: ShowMe | undefined;
-    if ('quiz' in task.goal) {
+    const goal = predictionOf(task.goal);
+    if (goal) {
       this.complete(active, task, 'shown');
-      shown = { kind: 'answer', answer: task.goal.quiz.answer };
+      shown = { kind: 'answer', answer: 'quiz' in goal ? goal.quiz.answer : goal.estimate.answer };
     } else if (task.solution) {
       active.shownByApp.add(taskId);
       shown = { kind: 'actions', actions: task.solution };
@@ -473,7 +536,76 @@ export class QuestEngine {
       this.awardChapter(level.chapter);
     }
     for (const badge of levelBadgesEarned(level, record, required)) this.award(badge);
-    if (active.current?.id === task.id) this.showCurrentTask(active);
+    const revealed = how === 'skipped' ? undefined : this.predictionRevealedBy(active, task);
+    if (revealed) active.reveal = { quiz: revealed.id };
+    // A revealed prediction holds the level: the next task comes when the learner continues.
+    if (active.current?.id === task.id) {
+      if (revealed) active.current = undefined;
+      else this.showCurrentTask(active);
+    }
+  }
+
+  /**
+   * The task whose result checks the prediction `quiz`: the first task after it that is
+   * done in the lab, required if the quiz is; none when nothing after it shows the result.
+   */
+  private observerOf(active: ActiveLevel, quiz: Task): Task | undefined {
+    const tasks = active.level.tasks;
+    const after = tasks.slice(tasks.indexOf(quiz) + 1);
+    const quizRequired = active.required.has(quiz.id);
+    return after.find((task) => kindOfGoal(task.goal) === 'do' && (!quizRequired || active.required.has(task.id)));
+  }
+
+  /** The prediction whose result the completion of `task` lets the learner see, if any. */
+  private predictionRevealedBy(active: ActiveLevel, task: Task): Task | undefined {
+    const record = this.levelProgress[active.level.id];
+    const predicted = (quiz: Task) => predictionOf(quiz.goal) !== undefined && record?.tasks[quiz.id]?.how === 'done';
+    // A prediction nothing after it checks is explained as soon as it is made.
+    if (predicted(task)) return this.observerOf(active, task) ? undefined : task;
+    return active.level.tasks.find((quiz) => predicted(quiz) && this.observerOf(active, quiz) === task);
+  }
+
+  /** Where a prediction task is in predict → observe → explain. */
+  private stageOf(active: ActiveLevel, task: Task): PredictionStage {
+    const record = this.levelProgress[active.level.id];
+    const done = record?.tasks[task.id];
+    if (!done) return 'ask';
+    if (active.reveal?.quiz === task.id) return done.correct === false && !active.reveal.reflection ? 'reflect' : 'explain';
+    if (done.how !== 'done') return 'explained';
+    const observer = this.observerOf(active, task);
+    return observer && !isCompleted(record, observer.id) ? 'wait' : 'explained';
+  }
+
+  /** The learner's last prediction for a task of the open level, from the log. */
+  private predictionIn(levelId: string, taskId: string): Prediction | undefined {
+    const answered = this.log.events.findLast((event) => event.type === 'quiz.answered' && event.level === levelId && event.task === taskId);
+    if (answered?.type !== 'quiz.answered') return undefined;
+    if (answered.choice !== undefined) return { choice: answered.choice };
+    return answered.value === undefined ? undefined : { value: answered.value };
+  }
+
+  private predictionView(active: ActiveLevel, task: Task): PredictionView | undefined {
+    const goal = predictionOf(task.goal);
+    if (!goal) return undefined;
+    const seed = `${this.log.data.startedAt}/${active.level.id}/${task.id}`;
+    const prediction = this.predictionIn(active.level.id, task.id);
+    const reflection = active.reveal?.quiz === task.id ? active.reveal.reflection : undefined;
+    const observer = this.observerOf(active, task);
+    return {
+      stage: this.stageOf(active, task),
+      order: 'quiz' in goal ? choiceOrder(goal.quiz.choices.length, seed) : [],
+      ...(prediction ? { prediction } : {}),
+      ...(reflection ? { reflection } : {}),
+      ...(observer ? { observer } : {}),
+    };
+  }
+
+  /** For a task to do that checks a prediction still waiting for it: the quiz and the prediction. */
+  private checksOf(active: ActiveLevel, task: Task): TaskView['checks'] {
+    if (kindOfGoal(task.goal) !== 'do' || isCompleted(this.levelProgress[active.level.id], task.id)) return undefined;
+    const quiz = active.level.tasks.find((candidate) => predictionOf(candidate.goal) && this.stageOf(active, candidate) === 'wait' && this.observerOf(active, candidate) === task);
+    const prediction = quiz && this.predictionIn(active.level.id, quiz.id);
+    return quiz && prediction ? { quiz, prediction } : undefined;
   }
 
   /**
@@ -517,6 +649,8 @@ export class QuestEngine {
     const required = active.required.has(task.id);
     const status: TaskStatus = done ? done.how : active.current?.id === task.id ? 'current' : required ? 'waiting' : 'open';
     const hints = active.hints.get(task.id) ?? NO_HINTS;
+    const prediction = this.predictionView(active, task);
+    const checks = this.checksOf(active, task);
     return {
       task,
       kind: kindOfGoal(task.goal),
@@ -524,6 +658,8 @@ export class QuestEngine {
       status,
       points: done?.points ?? 0,
       ...(done?.correct === undefined ? {} : { correct: done.correct }),
+      ...(prediction ? { prediction } : {}),
+      ...(checks ? { checks } : {}),
       hints: task.hints.slice(0, hints.texts),
       nextHint: done ? null : nextHintStep(task, hints),
     };

@@ -79,7 +79,7 @@ describe('several tabs of the game', () => {
     const others = [openTab(storage), openTab(storage), openTab(storage), openTab(storage)];
     // The first tab does two tasks; the four opened with it each do one thing. No events are delivered.
     act(storage, first, () => first.store.dispatch({ type: 'view.orbited' }));
-    act(storage, first, () => first.session.engine.answerQuiz('predict', 1));
+    act(storage, first, () => first.session.engine.predict('predict', { choice: 1 }));
     act(storage, others[0], () => others[0].session.engine.askHint('orbit'));
     act(storage, others[1], () => others[1].store.dispatch({ type: 'view.zoomed' }));
     act(storage, others[2], () => others[2].session.engine.skip('red-ball'));
@@ -112,7 +112,7 @@ describe('several tabs of the game', () => {
     expect(b.session.engine.level?.current?.task.id).toBe('predict');
     expect(b.session.engine.points).toBe(10);
     // And b's own events since then reach storage with a's.
-    act(storage, b, () => b.session.engine.answerQuiz('predict', 1));
+    act(storage, b, () => b.session.engine.predict('predict', { choice: 1 }));
     storage.deliver();
     expect(a.session.engine.points).toBe(20);
     expect([...ids(savedProgress(storage))].sort()).toEqual([...ids(a.session.engine.progress)].sort());

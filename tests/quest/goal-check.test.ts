@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import type { LabAction } from '../../src/lab-state/lab-action.ts';
 import { reduce } from '../../src/lab-state/lab-reducer.ts';
 import { initialState, type LabState } from '../../src/lab-state/lab-state.ts';
-import { checkGoal, eventMatches, isRightAnswer, NO_EVENTS, tallyAction, type EventTally } from '../../src/quest/goal-check.ts';
+import { checkGoal, eventMatches, fitsGoal, isRightPrediction, NO_EVENTS, tallyAction, type EventTally } from '../../src/quest/goal-check.ts';
 import { goalSchema, type Goal } from '../../src/quest/goal.ts';
 import { problemWithPath, readPath } from '../../src/quest/state-path.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
@@ -148,11 +148,32 @@ describe('quiz and info goals', () => {
   it('a quiz knows its right answer', () => {
     const quiz = goal({ quiz: { question: 'How many?', choices: ['3', '12'], answer: 1 } });
     if (!('quiz' in quiz)) throw new Error('expected a quiz goal');
-    expect([isRightAnswer(quiz, 0), isRightAnswer(quiz, 1)]).toEqual([false, true]);
+    expect([isRightPrediction(quiz, { choice: 0 }), isRightPrediction(quiz, { choice: 1 })]).toEqual([false, true]);
+    expect(isRightPrediction(quiz, { value: 1 })).toBe(false);
+  });
+
+  it('an estimate is right within its tolerance, on both sides, and a typed decimal on the edge counts', () => {
+    const estimate = goal({ estimate: { question: 'A at 1 m?', answer: 5, tolerance: 0.5 } });
+    if (!('estimate' in estimate)) throw new Error('expected an estimate goal');
+    const right = (value: number) => isRightPrediction(estimate, { value });
+    expect([right(4.4), right(4.5), right(5), right(5.5), right(5.6)]).toEqual([false, true, true, true, false]);
+    const tenth = goal({ estimate: { question: 'Q', answer: 0.3, tolerance: 0.1 } });
+    if (!('estimate' in tenth)) throw new Error('expected an estimate goal');
+    expect(isRightPrediction(tenth, { value: 0.1 + 0.1 })).toBe(true);
+    expect(isRightPrediction(estimate, { choice: 5 })).toBe(false);
+  });
+
+  it('a prediction must fit its form: a choice that exists, a finite number', () => {
+    const quiz = goal({ quiz: { question: 'Q', choices: ['a', 'b'], answer: 0 } });
+    const estimate = goal({ estimate: { question: 'Q', answer: 1, tolerance: 0 } });
+    if (!('quiz' in quiz) || !('estimate' in estimate)) throw new Error('expected prediction goals');
+    expect([fitsGoal(quiz, { choice: 1 }), fitsGoal(quiz, { choice: 2 }), fitsGoal(quiz, { choice: 0.5 }), fitsGoal(quiz, { value: 0 })]).toEqual([true, false, false, false]);
+    expect([fitsGoal(estimate, { value: -3 }), fitsGoal(estimate, { value: Number.NaN }), fitsGoal(estimate, { choice: 0 })]).toEqual([true, false, false]);
   });
 
   it('quiz and info goals are never met by actions: they complete through the task panel', () => {
     expect(play(goal({ info: true }), [orbit])).toEqual([false]);
     expect(play(goal({ quiz: { question: 'Q', choices: ['a', 'b'], answer: 0 } }), [orbit])).toEqual([false]);
+    expect(play(goal({ estimate: { question: 'Q', answer: 1, tolerance: 0.1 } }), [orbit])).toEqual([false]);
   });
 });

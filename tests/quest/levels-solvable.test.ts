@@ -56,12 +56,19 @@ for (const chapter of catalog.chapters) {
           expect(statusOf(task.id), `task "${task.id}" completed before its solution ran`).toMatch(/^(current|open)$/);
           if (kindOfGoal(task.goal) === 'do') expect(checkGoal(task.goal, store.state, NO_EVENTS), `task "${task.id}" is done by its view`).toBe(false);
           const kind = kindOfGoal(task.goal);
-          if ('quiz' in task.goal) expect(engine.answerQuiz(task.id, task.goal.quiz.answer)).toEqual({ correct: true });
+          if ('quiz' in task.goal) expect(engine.predict(task.id, { choice: task.goal.quiz.answer })).toEqual({ correct: true });
+          else if ('estimate' in task.goal) expect(engine.predict(task.id, { value: task.goal.estimate.answer })).toEqual({ correct: true });
           else if (kind === 'info') expect(engine.next(), `info step "${task.id}" was not the current task`).toBe(true);
           for (const action of task.solution ?? []) {
             expect(store.dispatch(action), `task "${task.id}": ${action.type} was refused`).toBeUndefined();
           }
           expect(statusOf(task.id), `task "${task.id}" was not completed by its solution`).toBe('done');
+          // A prediction is explained once the task that shows its result is done; then the learner continues.
+          const revealing = engine.level?.revealing;
+          if (revealing) {
+            expect(kindOfGoal(task.goal), `prediction "${revealing.task.id}" was explained before anything showed its result`).toBe('do');
+            expect(engine.continueAfterReveal(revealing.task.id)).toBe(true);
+          }
         }
         expect(engine.level?.passed).toBe(true);
         expect(engine.level?.points).toBe(engine.level?.maxPoints);

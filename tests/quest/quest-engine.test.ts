@@ -34,7 +34,7 @@ function setUp(options: { levels?: Record<string, unknown>[]; progress?: Progres
 function passFirstLevel(setup: ReturnType<typeof setUp>) {
   const store = setup.open('first');
   store.dispatch({ type: 'view.orbited' });
-  setup.engine.answerQuiz('predict', 1);
+  setup.engine.predict('predict', { choice: 1 });
   store.dispatch({ type: 'settings.changed', changes: { supersampling: 2 } });
   return store;
 }
@@ -46,7 +46,7 @@ describe('playing a level', () => {
     expect(setup.status()).toEqual({ orbit: 'current', predict: 'waiting', supersample: 'waiting', 'red-ball': 'open', zoom: 'open' });
     store.dispatch({ type: 'view.orbited' });
     expect(setup.status()).toMatchObject({ orbit: 'done', predict: 'current' });
-    expect(setup.engine.answerQuiz('predict', 1)).toEqual({ correct: true });
+    expect(setup.engine.predict('predict', { choice: 1 })).toEqual({ correct: true });
     expect(setup.engine.level?.current?.task.id).toBe('supersample');
     store.dispatch({ type: 'settings.changed', changes: { supersampling: 2 } });
     expect(setup.engine.level).toMatchObject({ passed: true, current: null, points: 30, maxPoints: 40 });
@@ -59,7 +59,7 @@ describe('playing a level', () => {
     store.dispatch({ type: 'settings.changed', changes: { supersampling: 3 } });
     expect(setup.status().supersample).toBe('waiting');
     store.dispatch({ type: 'view.orbited' });
-    setup.engine.answerQuiz('predict', 1);
+    setup.engine.predict('predict', { choice: 1 });
     // Supersampling was already 3 when the task came up: it is done at once.
     expect(setup.status().supersample).toBe('done');
   });
@@ -76,7 +76,7 @@ describe('playing a level', () => {
     const setup = setUp();
     const store = setup.open('first');
     store.dispatch({ type: 'view.orbited' });
-    setup.engine.answerQuiz('predict', 1);
+    setup.engine.predict('predict', { choice: 1 });
     expect(store.dispatch({ type: 'settings.changed', changes: { supersampling: 40 } })).toMatch(/^settings.supersampling/);
     expect(setup.status().supersample).toBe('current');
   });
@@ -85,7 +85,7 @@ describe('playing a level', () => {
     const setup = setUp();
     const store = setup.open('first');
     store.dispatch({ type: 'view.orbited' });
-    setup.engine.answerQuiz('predict', 1);
+    setup.engine.predict('predict', { choice: 1 });
     // Dragging the slider through 2 on its way to 1 starts nothing and completes nothing.
     store.dispatch({ type: 'settings.changed', changes: { supersampling: 2 } }, { live: true });
     expect(setup.status().supersample).toBe('current');
@@ -113,12 +113,12 @@ describe('playing a level', () => {
   it('records a wrong prediction: the quiz is done, without points', () => {
     const setup = setUp();
     const store = setup.open('first');
-    expect(setup.engine.answerQuiz('predict', 1)).toBeUndefined(); // not its turn yet
+    expect(setup.engine.predict('predict', { choice: 1 })).toBeUndefined(); // not its turn yet
     store.dispatch({ type: 'view.orbited' });
-    expect(setup.engine.answerQuiz('predict', 0)).toEqual({ correct: false });
+    expect(setup.engine.predict('predict', { choice: 0 })).toEqual({ correct: false });
     expect(setup.engine.level?.tasks[1]).toMatchObject({ status: 'done', points: 0, correct: false });
     expect(setup.logged('quiz.answered')).toMatchObject([{ level: 'first', task: 'predict', choice: 0, correct: false }]);
-    expect(setup.engine.answerQuiz('predict', 1)).toBeUndefined(); // answered once
+    expect(setup.engine.predict('predict', { choice: 1 })).toBeUndefined(); // answered once
   });
 
   it('logs an optional task as started at the learner\'s first move towards it, not when the level opens', () => {

@@ -1,10 +1,14 @@
+import type { Prediction } from '../../quest/goal-check.ts';
+
 /**
  * What the task panel asks of the game, in one `quest-command` event (bubbling, composed)
  * that the lab hands to the quest session.
  */
 export type QuestCommand =
   | { kind: 'next' }
-  | { kind: 'answer'; task: string; choice: number }
+  | { kind: 'predict'; task: string; prediction: Prediction }
+  | { kind: 'reflect'; task: string; prediction: Prediction }
+  | { kind: 'continue'; task: string }
   | { kind: 'hint'; task: string }
   | { kind: 'show-me'; task: string }
   | { kind: 'skip'; task: string }

@@ -2,7 +2,6 @@ import { msg, str } from '@lit/localize';
 import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
 import { localize, type Locale } from '../../quest/localized-text.ts';
 import type { LevelView } from '../../quest/quest-engine.ts';
-import { AnsweredQuiz } from './answered-quiz.ts';
 import { explainMore, fire, gameStyles } from './game-styles.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 import './rt-task-card.ts';
@@ -11,8 +10,9 @@ import { scrollInBox } from './scroll-in-box.ts';
 /**
  * @summary The task column of a level: its title and intro (with "Explain more"), the
  * celebration once the level is passed (points, badges, "Next level"), and the task list
- * with the current task open. A quiz just answered stays open to show its feedback until the
- * task after it is done. Back in a passed level, a note says its scene started afresh.
+ * with the current task open. A prediction whose result the learner has just observed opens
+ * again, in place of the current task, until they continue from its explanation. Back in a
+ * passed level, a note says its scene started afresh.
  *
  * @fires quest-command - everything the learner asks (QuestCommand).
  */
@@ -22,7 +22,6 @@ export class RtQuestPanel extends LitElement {
     locale: {},
     hasNextLevel: { type: Boolean, attribute: 'has-next-level' },
     badges: { attribute: false },
-    openQuiz: { state: true },
     returned: { state: true },
   };
   static override styles = [
@@ -78,12 +77,9 @@ export class RtQuestPanel extends LitElement {
   declare hasNextLevel: boolean;
   /** Names of the badges earned in this level. */
   declare badges: string[];
-  /** The answered quiz still open, if any. */
-  declare private openQuiz: string | null;
   /** The level was already passed when it was opened: its scene is the level's own again. */
   declare private returned: boolean;
-  private readonly answered = new AnsweredQuiz();
-  /** The current task last brought into view. */
+  /** The current task (or revealed prediction) last brought into view. */
   private shownCurrent: string | null = null;
 
   constructor() {
@@ -92,27 +88,18 @@ export class RtQuestPanel extends LitElement {
     this.locale = 'en';
     this.hasNextLevel = false;
     this.badges = [];
-    this.openQuiz = null;
     this.returned = false;
-    this.addEventListener(QUEST_COMMAND, (event) => {
-      const command = (event as CustomEvent<QuestCommand>).detail;
-      if (command.kind !== 'answer' && command.kind !== 'show-me') return;
-      this.answered.answered(command.task);
-      this.requestUpdate();
-    });
   }
 
   protected override willUpdate(changed: PropertyValues<this>): void {
     if (changed.has('view') && changed.get('view')?.level.id !== this.view?.level.id) {
-      this.answered.clear();
       this.returned = this.view?.passed ?? false;
     }
-    this.openQuiz = this.answered.openFor(this.view?.tasks.find((task) => task.status === 'current')?.task.id ?? null);
   }
 
   protected override updated(): void {
     // A new current task is brought into view in the task column: done tasks above it pushed it below the column's edge.
-    const current = this.view?.tasks.find((task) => task.status === 'current')?.task.id ?? null;
+    const current = (this.view?.revealing ?? this.view?.current)?.task.id ?? null;
     if (current === this.shownCurrent) return;
     this.shownCurrent = current;
     const item = current ? this.renderRoot.querySelector(`li[data-task="${current}"]`) : null;
@@ -138,7 +125,7 @@ export class RtQuestPanel extends LitElement {
             <rt-task-card
               .task=${task}
               locale=${this.locale}
-              ?expanded=${task.status === 'current' || (task.kind === 'quiz' && task.task.id === this.openQuiz)}
+              ?expanded=${task.status === 'current' || task === view.revealing}
             ></rt-task-card>
           </li>`,
         )}

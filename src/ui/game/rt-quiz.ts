@@ -1,19 +1,25 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, LitElement, nothing, type TemplateResult } from 'lit';
+import type { Prediction } from '../../quest/goal-check.ts';
+import { explanationOf, predictionOf, type PredictionGoal, type QuizGoal } from '../../quest/goal.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
 import type { TaskView } from '../../quest/quest-engine.ts';
+import { parseTypedNumber } from '../controls/number-input.ts';
 import { fire, gameStyles } from './game-styles.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
+import { answerText, predictionText } from './prediction-text.ts';
 
 /**
- * @summary A predict-then-check question: the choices as radio buttons, "Check", then
- * whether the prediction was right, the answer and why. After "Show me" (the answer
- * revealed) it shows the answer and the explanation.
+ * @summary A prediction, as predict → observe → explain: the learner picks a choice (in an
+ * order of their own, so the key's place tells nothing) or types a number and locks it in;
+ * nothing says whether it was right until the task that shows the result is done. Then a
+ * learner who expected something else is asked what they see now, and only after that are
+ * the answer and the explanation shown, with Continue. After "Show me" it shows the answer.
  *
- * @fires quest-command - `answer` with the chosen position.
+ * @fires quest-command - `predict`, `reflect` (with the choice or number) and `continue`.
  */
 export class RtQuiz extends LitElement {
-  static override properties = { task: { attribute: false }, locale: {}, picked: { state: true } };
+  static override properties = { task: { attribute: false }, locale: {}, picked: { state: true }, typed: { state: true }, problem: { state: true } };
   static override styles = [
     gameStyles,
     css`
@@ -34,10 +40,20 @@ export class RtQuiz extends LitElement {
         cursor: pointer;
       }
       input[type='radio'] {
+        flex: none;
         width: 18px;
         height: 18px;
         margin: 0;
         accent-color: var(--rt-accent);
+      }
+      .number {
+        display: flex;
+        align-items: center;
+        gap: 6px;
+      }
+      .number input {
+        width: 8em;
+        min-height: var(--rt-target);
       }
       .right {
         color: var(--rt-success);
@@ -47,66 +63,166 @@ export class RtQuiz extends LitElement {
       }
       .feedback {
         padding: 8px;
-        border-left: 4px solid currentColor;
+        border-left: 4px solid var(--rt-accent);
         background: var(--rt-surface-2);
         border-radius: 6px;
       }
       .feedback p:last-child {
-        margin: 0;
-        color: var(--rt-text);
+        margin-bottom: 0;
+      }
+      .problem {
+        color: var(--rt-danger);
       }
     `,
   ];
 
   declare task: TaskView | undefined;
   declare locale: Locale;
+  /** The choice (file position) the learner has picked and not yet sent. */
   declare picked: number | null;
+  /** The number the learner is typing. */
+  declare typed: string;
+  /** Why the typed text is not a number. */
+  declare problem: string;
+  /** The stage `picked`/`typed` belong to: they are cleared when it moves on. */
+  private pickedFor = '';
 
   constructor() {
     super();
     this.locale = 'en';
     this.picked = null;
+    this.typed = '';
+    this.problem = '';
   }
 
   override render() {
     const view = this.task;
-    if (!view || !('quiz' in view.task.goal)) return nothing;
-    const quiz = view.task.goal.quiz;
-    const answered = view.status === 'done' || view.status === 'shown';
-    const name = `quiz-${view.task.id}`;
-    return html`
-      <fieldset ?disabled=${answered}>
-        <legend>${localize(quiz.question, this.locale)}</legend>
-        ${quiz.choices.map(
-          (choice, index) => html`<label>
-            <input type="radio" name=${name} .checked=${this.picked === index} @change=${() => (this.picked = index)} />
-            ${localize(choice, this.locale)} ${answered && index === quiz.answer ? html`<span class="tag right">✓ ${msg('answer')}</span>` : nothing}
-            ${answered && index === this.picked && index !== quiz.answer ? html`<span class="tag wrong">✗ ${msg('your answer')}</span>` : nothing}
-          </label>`,
-        )}
+    const goal = view && predictionOf(view.task.goal);
+    const stage = view?.prediction?.stage;
+    if (!view || !goal || !stage) return nothing;
+    const key = `${view.task.id}/${stage}`;
+    if (key !== this.pickedFor) [this.pickedFor, this.picked, this.typed, this.problem] = [key, null, '', ''];
+    if (view.status === 'shown') return this.shown(goal);
+    switch (stage) {
+      case 'ask':
+        return this.asking(view, goal, 'predict', localize(questionOf(goal), this.locale), msg('Lock in my prediction'));
+      case 'wait':
+        return html`${this.asked(view, goal)}<div class="feedback" role="status">
+            <p><strong>${msg(str`Your prediction: ${this.said(goal, view.prediction?.prediction)}.`)}</strong></p>
+            <p>${msg('Now find out: do the next task and look closely. The answer comes after that.')}</p>
+          </div>`;
+      case 'reflect':
+        return html`<div class="feedback" role="status">
+            <p><strong>${msg(str`You expected: ${this.said(goal, view.prediction?.prediction)}.`)}</strong></p>
+          </div>
+          ${this.asking(view, goal, 'reflect', msg('You have seen the result now. What do you see?'), msg('This is what I see'))}`;
+      case 'explain':
+      case 'explained':
+        return this.explained(view, goal, stage === 'explain');
+    }
+  }
+
+  /** The question with its choices (or number box) to answer, and the button that sends it. */
+  private asking(view: TaskView, goal: PredictionGoal, kind: 'predict' | 'reflect', legend: string, button: string): TemplateResult {
+    const send = () => {
+      const prediction = this.chosen(goal);
+      if (!prediction) return;
+      const command: QuestCommand = { kind, task: view.task.id, prediction };
+      fire(this, QUEST_COMMAND, command);
+    };
+    const ready = 'quiz' in goal ? this.picked !== null : this.typed.trim() !== '';
+    return html`<fieldset>
+        <legend>${legend}</legend>
+        ${'quiz' in goal ? this.choices(view, goal.quiz, true) : this.numberBox(goal, send)}
       </fieldset>
-      ${answered
-        ? this.feedback(view, localize(quiz.choices[quiz.answer] ?? '', this.locale), quiz.explanation ? localize(quiz.explanation, this.locale) : '')
-        : html`<button class="primary" ?disabled=${this.picked === null} @click=${this.check} title=${msg('Check your prediction')}>${msg('Check')}</button>`}
-    `;
+      ${this.problem ? html`<p class="problem" role="alert">${this.problem}</p>` : nothing}
+      <button class="primary" ?disabled=${!ready} @click=${send}>${button}</button>`;
   }
 
-  private feedback(view: TaskView, answer: string, explanation: string) {
-    const verdict =
-      view.status === 'shown'
-        ? html`<p><strong>${msg(str`The answer: ${answer}`)}</strong></p>`
-        : view.correct
-          ? html`<p class="right"><strong>✓ ${msg('Right!')}</strong></p>`
-          : html`<p class="wrong"><strong>✗ ${msg(str`Not quite: the answer is ${answer}.`)}</strong></p>`;
-    return html`<div class="feedback ${view.status === 'done' && !view.correct ? 'wrong' : 'right'}" role="status">${verdict}${explanation ? html`<p>${explanation}</p>` : nothing}</div>`;
+  /** The question as asked, with the learner's prediction marked, once it is locked in. */
+  private asked(view: TaskView, goal: PredictionGoal): TemplateResult {
+    return html`<fieldset disabled>
+      <legend>${localize(questionOf(goal), this.locale)}</legend>
+      ${'quiz' in goal ? this.choices(view, goal.quiz, false) : nothing}
+    </fieldset>`;
   }
 
-  private check(): void {
-    const view = this.task;
-    if (!view || this.picked === null) return;
-    const command: QuestCommand = { kind: 'answer', task: view.task.id, choice: this.picked };
-    fire(this, QUEST_COMMAND, command);
+  /** The choices in this learner's order; `open` while they may pick one. */
+  private choices(view: TaskView, quiz: QuizGoal['quiz'], open: boolean): TemplateResult[] {
+    const order = view.prediction?.order.length === quiz.choices.length ? view.prediction.order : quiz.choices.map((_, index) => index);
+    const mine = view.prediction?.prediction;
+    const reveal = view.prediction?.stage === 'explain' || view.prediction?.stage === 'explained';
+    return order.map(
+      (index) => html`<label>
+        <input type="radio" name=${`quiz-${view.task.id}`} .checked=${open ? this.picked === index : mine !== undefined && 'choice' in mine && mine.choice === index} @change=${() => (this.picked = index)} />
+        ${localize(quiz.choices[index], this.locale)}
+        ${!open && mine && 'choice' in mine && mine.choice === index ? html`<span class="tag">${msg('your prediction')}</span>` : nothing}
+        ${reveal && index === quiz.answer ? html`<span class="tag right">✓ ${msg('answer')}</span>` : nothing}
+      </label>`,
+    );
   }
+
+  private numberBox(goal: PredictionGoal, send: () => void): TemplateResult {
+    const unit = 'estimate' in goal && goal.estimate.unit ? localize(goal.estimate.unit, this.locale) : '';
+    return html`<label class="number"
+      ><input
+        type="text"
+        inputmode="decimal"
+        autocomplete="off"
+        aria-label=${msg('Your number')}
+        .value=${this.typed}
+        @input=${(event: Event) => {
+          this.typed = (event.target as HTMLInputElement).value;
+          this.problem = '';
+        }}
+        @keydown=${(event: KeyboardEvent) => event.key === 'Enter' && send()}
+      />${unit}</label
+    >`;
+  }
+
+  /** The answer and why, after the observation; `current` adds Continue. */
+  private explained(view: TaskView, goal: PredictionGoal, current: boolean): TemplateResult {
+    const mine = view.prediction?.prediction;
+    const seen = view.prediction?.reflection;
+    const answer = answerText(goal, this.locale);
+    const explanation = explanationOf(goal);
+    const verdict = view.correct
+      ? html`<p class="right"><strong>✓ ${msg(str`You expected ${this.said(goal, mine)}, and so it is.`)}</strong></p>`
+      : html`<p><strong>${msg(str`You expected ${this.said(goal, mine)}; the answer is ${answer}.`)}</strong></p>
+          ${seen ? html`<p>${msg(str`You saw: ${this.said(goal, seen)}.`)}</p>` : nothing}`;
+    return html`${this.asked(view, goal)}
+      <div class="feedback" role="status">${verdict}${explanation ? html`<p>${localize(explanation, this.locale)}</p>` : nothing}</div>
+      ${current ? html`<button class="primary" @click=${() => fire(this, QUEST_COMMAND, { kind: 'continue', task: view.task.id } satisfies QuestCommand)}>${msg('Continue')}</button>` : nothing}`;
+  }
+
+  /** After "Show me": the answer and the explanation. */
+  private shown(goal: PredictionGoal): TemplateResult {
+    const explanation = explanationOf(goal);
+    return html`<div class="feedback" role="status">
+      <p><strong>${msg(str`The answer: ${answerText(goal, this.locale)}`)}</strong></p>
+      ${explanation ? html`<p>${localize(explanation, this.locale)}</p>` : nothing}
+    </div>`;
+  }
+
+  private said(goal: PredictionGoal, prediction: Prediction | undefined): string {
+    return prediction ? predictionText(goal, prediction, this.locale) : '…';
+  }
+
+  /** The picked choice or the typed number; a typed text that is no number says why. */
+  private chosen(goal: PredictionGoal): Prediction | undefined {
+    if ('quiz' in goal) return this.picked === null ? undefined : { choice: this.picked };
+    const unit = goal.estimate.unit ? localize(goal.estimate.unit, this.locale) : '';
+    const read = parseTypedNumber(this.typed, { min: -Number.MAX_VALUE, max: Number.MAX_VALUE }, unit);
+    if (read.kind === 'invalid') {
+      this.problem = msg('Type a number, for example 0.5 or 12.');
+      return undefined;
+    }
+    return { value: read.value };
+  }
+}
+
+function questionOf(goal: PredictionGoal) {
+  return 'quiz' in goal ? goal.quiz.question : goal.estimate.question;
 }
 
 customElements.define('rt-quiz', RtQuiz);

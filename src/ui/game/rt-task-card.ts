@@ -1,8 +1,10 @@
 import { msg, str } from '@lit/localize';
 import { css, html, LitElement, nothing, type TemplateResult } from 'lit';
+import { predictionOf } from '../../quest/goal.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
 import type { TaskView } from '../../quest/quest-engine.ts';
 import { explainMore, fire, gameStyles } from './game-styles.ts';
+import { predictionText } from './prediction-text.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 import './rt-hint-box.ts';
 import './rt-quiz.ts';
@@ -85,6 +87,12 @@ export class RtTaskCard extends LitElement {
         gap: 8px;
         margin-top: 8px;
       }
+      .checks {
+        padding: 6px 8px;
+        border-left: 4px solid var(--rt-accent);
+        background: var(--rt-surface-2);
+        border-radius: 6px;
+      }
       .hint-box {
         display: block;
         margin-top: 8px;
@@ -140,6 +148,7 @@ export class RtTaskCard extends LitElement {
     const id = view.task.id;
     const send = (command: QuestCommand) => fire(this, QUEST_COMMAND, command);
     return html`
+      ${checksLine(view, this.locale)}
       <p>${localize(view.task.text, this.locale)}</p>
       ${view.task.more ? explainMore(localize(view.task.more, this.locale), () => send({ kind: 'explain', task: id })) : nothing}
       ${view.kind === 'quiz' ? html`<rt-quiz .task=${view} locale=${this.locale}></rt-quiz>` : nothing}
@@ -152,6 +161,14 @@ export class RtTaskCard extends LitElement {
           `}
     `;
   }
+}
+
+/** Above a task that shows a prediction's result: what the learner predicted, to compare. */
+function checksLine(view: TaskView, locale: Locale): TemplateResult | typeof nothing {
+  const goal = view.checks && predictionOf(view.checks.quiz.goal);
+  if (!view.checks || !goal) return nothing;
+  const predicted = predictionText(goal, view.checks.prediction, locale);
+  return html`<p class="checks">${msg(str`You predicted: ${predicted}. Watch what really happens.`)}</p>`;
 }
 
 const MARKS: Record<TaskView['status'], string> = { current: '▶', open: '○', waiting: '·', done: '✓', shown: '✓', skipped: '–' };

@@ -144,8 +144,14 @@ export class QuestController implements ReactiveController {
       case 'next':
         engine.next();
         return;
-      case 'answer':
-        engine.answerQuiz(command.task, command.choice);
+      case 'predict':
+        engine.predict(command.task, command.prediction);
+        return;
+      case 'reflect':
+        engine.reflect(command.task, command.prediction);
+        return;
+      case 'continue':
+        engine.continueAfterReveal(command.task);
         return;
       case 'hint':
         engine.askHint(command.task);
