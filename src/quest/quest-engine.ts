@@ -181,8 +181,15 @@ export class QuestEngine {
     };
   }
 
+  /**
+   * The learner's points, less those of predictions in the open level still waiting for their
+   * observation: a score that jumped at "lock in" would tell whether the prediction was right.
+   */
   get points(): number {
-    return pointsOf(this.progress);
+    const active = this.active;
+    const record = active && this.levelProgress[active.level.id];
+    const waiting = !active || !record ? 0 : active.level.tasks.reduce((sum, task) => sum + (predictionOf(task.goal) && this.stageOf(active, task) === 'wait' ? (record.tasks[task.id]?.points ?? 0) : 0), 0);
+    return pointsOf(this.progress) - waiting;
   }
 
   get badges(): readonly EarnedBadge[] {
@@ -656,7 +663,8 @@ export class QuestEngine {
       kind: kindOfGoal(task.goal),
       required,
       status,
-      points: done?.points ?? 0,
+      // A prediction's points show once its result has been observed (see `points`).
+      points: prediction?.stage === 'wait' ? 0 : (done?.points ?? 0),
       ...(done?.correct === undefined ? {} : { correct: done.correct }),
       ...(prediction ? { prediction } : {}),
       ...(checks ? { checks } : {}),

@@ -50,6 +50,9 @@ describe('a prediction', () => {
     expect(view('predict')?.prediction).toMatchObject({ stage: 'wait', prediction: { choice: 0 } });
     expect(view('supersample')).toMatchObject({ status: 'current', checks: { quiz: { id: 'predict' }, prediction: { choice: 0 } } });
     expect(engine.continueAfterReveal('predict')).toBe(false);
+    // Neither the task nor the score tells yet whether it was right.
+    expect(view('predict')?.points).toBe(0);
+    expect(engine.points).toBe(10);
 
     store.dispatch({ type: 'settings.changed', changes: { supersampling: 2 } });
     // Observed: the prediction is revealed and holds the level; the next task waits.
@@ -77,8 +80,10 @@ describe('a prediction', () => {
     store.dispatch({ type: 'view.orbited' });
     engine.predict('predict', { choice: 1 });
     expect(view('predict')?.prediction?.stage).toBe('wait');
+    expect([view('predict')?.points, engine.points]).toEqual([0, 10]);
     store.dispatch({ type: 'settings.changed', changes: { supersampling: 2 } });
     expect(view('predict')?.prediction?.stage).toBe('explain');
+    expect([view('predict')?.points, engine.points]).toEqual([10, 30]);
     expect(engine.reflect('predict', { choice: 1 })).toBeUndefined();
     expect(engine.continueAfterReveal('predict')).toBe(true);
     expect(view('zoom')?.status).toBe('current');

@@ -130,7 +130,7 @@ export class RtTaskCard extends LitElement {
         <span class="title">${localize(view.task.title, this.locale)}<span class="visually-hidden"> (${statusText(view)})</span></span>
         <span class="tags">
           ${view.task.mandatory ? nothing : html`<span class="tag muted">${msg('optional')}</span>`}
-          ${view.task.points > 0 ? html`<span class="tag muted" title=${msg('Points')}>${finished ? msg(str`${view.points} pts`) : msg(str`${view.task.points} pts`)}</span>` : nothing}
+          ${view.task.points > 0 ? html`<span class="tag muted" title=${msg('Points')}>${finished && view.prediction?.stage !== 'wait' ? msg(str`${view.points} pts`) : msg(str`${view.task.points} pts`)}</span>` : nothing}
         </span>
       </span>
     `;
