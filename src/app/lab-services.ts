@@ -1,6 +1,9 @@
 import { initialState, type LabState } from '../lab-state/lab-state.ts';
 import { Store } from '../lab-state/store.ts';
+import type { RenderImage } from '../render/render-job.ts';
 import type { RenderPool } from '../render/render-pool.ts';
+import { meshNamesInScene } from '../scene/mesh-names.ts';
+import type { Scene } from '../scene/scene.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
 import type { RayFocus } from '../view/ray-focus.ts';
@@ -56,8 +59,16 @@ export class LabServices {
   private drawnWith: Pick<LabState, 'rays' | 'selectedPixel'>;
   private readonly listeners = new Set<(rays: ScreenRays) => void>();
   private readonly cleanup: (() => void)[] = [];
+  private readonly createPool: LabServicesOptions['createPool'];
+  /** One worker for picture predictions, made when the first is asked for: the render window's pool stays the learner's. */
+  private picturePool: RenderPool | null = null;
+  /** Each picture scene's render, by its JSON: a quiz shown again (or in the other language) does not render again. */
+  private readonly pictures = new Map<string, Promise<RenderImage>>();
+  /** The picture renders waiting for the one before: a pool runs one job at a time and a new one cancels the last. */
+  private pictureQueue: Promise<unknown> = Promise.resolve();
 
   constructor(options: LabServicesOptions) {
+    this.createPool = options.createPool;
     this.renderPool = options.createPool();
     this.tracePool = options.createPool(1);
     this.drawnWith = { rays: this.store.state.rays, selectedPixel: this.store.state.selectedPixel };
@@ -128,6 +139,30 @@ export class LabServices {
     this.redrawRays();
   }
 
+  /**
+   * A small render of `scene` at its image size, for a picture prediction: one at a time on
+   * a worker of its own, each scene rendered once (renders are seeded, so the same scene
+   * always gives the same picture).
+   */
+  renderPicture(scene: Scene): Promise<RenderImage> {
+    const key = JSON.stringify(scene);
+    let picture = this.pictures.get(key);
+    if (!picture) {
+      picture = this.pictureQueue.then(async () => {
+        this.picturePool ??= this.createPool(1);
+        const meshes = await this.loadMeshes(meshNamesInScene(scene));
+        const result = await this.picturePool.render(scene, meshes, { preview: false }).done;
+        if (result.cancelled) throw new Error('the picture was cancelled');
+        return result;
+      });
+      // A failed picture is tried again when asked again; the queue goes on either way.
+      picture.catch(() => this.pictures.delete(key));
+      this.pictureQueue = picture.catch(() => undefined);
+      this.pictures.set(key, picture);
+    }
+    return picture;
+  }
+
   /** Calls `listener` with every new screen of rays; returns the function that stops it. */
   subscribe(listener: (rays: ScreenRays) => void): () => void {
     this.listeners.add(listener);
@@ -140,6 +175,7 @@ export class LabServices {
     this.tracer.dispose();
     this.tracePool.dispose();
     this.renderPool.dispose();
+    this.picturePool?.dispose();
     this.layers?.rays.dispose();
     this.layers?.boxes.dispose();
     this.layers = null;

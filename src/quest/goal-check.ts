@@ -1,7 +1,7 @@
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
 import { compare, conditionHolds } from './condition.ts';
-import { goalParts, type EventGoal, type Goal, type PredictionGoal } from './goal.ts';
+import { goalParts, predictionParts, type EventGoal, type Goal, type PredictionGoal } from './goal.ts';
 import { readPath } from './state-path.ts';
 
 /**
@@ -67,13 +67,13 @@ export type Prediction = { choice: number } | { value: number };
 
 /** Whether the prediction is right: the quiz's answer, or a number within the estimate's tolerance. */
 export function isRightPrediction(goal: PredictionGoal, prediction: Prediction): boolean {
-  if ('quiz' in goal) return 'choice' in prediction && prediction.choice === goal.quiz.answer;
+  if (!('estimate' in goal)) return 'choice' in prediction && prediction.choice === predictionParts(goal).answer;
   // A little slack for the decimal the learner typed (0.1 + 0.2 is not 0.3 in binary).
   return 'value' in prediction && Math.abs(prediction.value - goal.estimate.answer) <= goal.estimate.tolerance + 1e-9;
 }
 
 /** Whether a prediction fits the goal's form (a choice for a quiz, a finite number for an estimate). */
 export function fitsGoal(goal: PredictionGoal, prediction: Prediction): boolean {
-  if ('quiz' in goal) return 'choice' in prediction && Number.isInteger(prediction.choice) && prediction.choice >= 0 && prediction.choice < goal.quiz.choices.length;
+  if (!('estimate' in goal)) return 'choice' in prediction && Number.isInteger(prediction.choice) && prediction.choice >= 0 && prediction.choice < predictionParts(goal).choices;
   return 'value' in prediction && Number.isFinite(prediction.value);
 }

@@ -2,7 +2,7 @@ import { z } from 'zod';
 import type { LabActionType } from '../lab-state/lab-action.ts';
 import { describeValue } from '../scene/scene-issues.ts';
 import { wholeNumberIn } from '../scene/scene-schema-parts.ts';
-import { actionFields, APP_ONLY_ACTION, LAB_ACTION_TYPES } from './lab-action-schema.ts';
+import { actionFields, APP_ONLY_ACTION, LAB_ACTION_TYPES, labActionSchema } from './lab-action-schema.ts';
 import { chosenBy } from './chosen-schema.ts';
 import { COMPARISONS, conditionSchema, problemWithComparison, type Comparison, type JsonValue } from './condition.ts';
 import { isRecord } from '../util/is-record.ts';
@@ -47,6 +47,13 @@ export interface EstimateGoal {
   estimate: { question: LocalizedText; answer: number; tolerance: number; unit?: LocalizedText; explanation?: LocalizedText };
 }
 
+/**
+ * Predict the picture: pick which of 2–4 small renders the tracer will make
+ * (spec/challenges.md §1). Each choice is the level's starting scene changed by its actions
+ * (the vocabulary of solutions), rendered by the tracer at thumbnail size.
+ */
+export type PictureGoal = z.output<typeof pictureGoalSchema>;
+
 /** Read, then press Next. */
 export interface InfoGoal {
   info: true;
@@ -64,10 +71,10 @@ export interface AnyGoal {
 export type SceneGoal = EventGoal | StateGoal | AllGoal | AnyGoal;
 
 /** Quiz, estimate and info goals are answered through the task panel, so they stand alone. */
-export type Goal = SceneGoal | QuizGoal | EstimateGoal | InfoGoal;
+export type Goal = SceneGoal | QuizGoal | EstimateGoal | PictureGoal | InfoGoal;
 
-/** A prediction the learner makes in the task panel: a choice or a number. */
-export type PredictionGoal = QuizGoal | EstimateGoal;
+/** A prediction the learner makes in the task panel: a choice (of words or pictures) or a number. */
+export type PredictionGoal = QuizGoal | EstimateGoal | PictureGoal;
 
 /** How the learner completes a task: read it, answer it, or do something in the lab. */
 export const TASK_KINDS = ['info', 'quiz', 'do'] as const;
@@ -75,18 +82,25 @@ export type TaskKind = (typeof TASK_KINDS)[number];
 
 export function kindOfGoal(goal: Goal): TaskKind {
   if ('info' in goal) return 'info';
-  if ('quiz' in goal || 'estimate' in goal) return 'quiz';
+  if ('quiz' in goal || 'estimate' in goal || 'picture' in goal) return 'quiz';
   return 'do';
 }
 
 /** The goal as a prediction (a choice or a number), or undefined for a goal done otherwise. */
 export function predictionOf(goal: Goal): PredictionGoal | undefined {
-  return 'quiz' in goal || 'estimate' in goal ? goal : undefined;
+  return 'quiz' in goal || 'estimate' in goal || 'picture' in goal ? goal : undefined;
+}
+
+/** The question, explanation and (for choices) the key of a prediction, whichever form it has. */
+export function predictionParts(goal: PredictionGoal): { question: LocalizedText; explanation?: LocalizedText; choices: number; answer: number } {
+  if ('quiz' in goal) return { ...goal.quiz, choices: goal.quiz.choices.length };
+  if ('picture' in goal) return { ...goal.picture, choices: goal.picture.choices.length };
+  return { ...goal.estimate, choices: 0 };
 }
 
 /** What a prediction's explanation is, whichever form it has. */
 export function explanationOf(goal: PredictionGoal): LocalizedText | undefined {
-  return 'quiz' in goal ? goal.quiz.explanation : goal.estimate.explanation;
+  return predictionParts(goal).explanation;
 }
 
 const pathSyntax = z.string().superRefine((path, context) => {
@@ -150,6 +164,24 @@ const estimateGoalSchema = z.strictObject({
     }),
 });
 
+const pictureGoalSchema = z.strictObject({
+  picture: z
+    .strictObject({
+      question: localizedTextSchema,
+      choices: z
+        .array(z.strictObject({ actions: z.array(labActionSchema).min(1).max(10).describe('The changes to the level\'s starting scene that make this picture.') }))
+        .min(2)
+        .max(4),
+      answer: wholeNumberIn([0, 3]).describe('The position of the right picture, counting from 0.'),
+      explanation: localizedTextSchema.optional().describe('Shown once the learner has observed the result: why the picture is what it is.'),
+    })
+    .superRefine((picture, context) => {
+      if (picture.answer >= picture.choices.length) {
+        context.addIssue({ code: 'custom', path: ['answer'], input: picture.answer, message: `must be the position of a choice, 0 to ${picture.choices.length - 1}` });
+      }
+    }),
+});
+
 const infoGoalSchema = z.strictObject({ info: z.literal(true) });
 
 const innerGoals = () => z.array(z.lazy(() => sceneGoalSchema)).min(1);
@@ -161,7 +193,7 @@ const SCENE_GOAL_KINDS: Record<string, z.ZodType<SceneGoal>> = {
   all: z.strictObject({ all: innerGoals() }),
   any: z.strictObject({ any: innerGoals() }),
 };
-const GOAL_KINDS: Record<string, z.ZodType<Goal>> = { ...SCENE_GOAL_KINDS, quiz: quizGoalSchema, estimate: estimateGoalSchema, info: infoGoalSchema };
+const GOAL_KINDS: Record<string, z.ZodType<Goal>> = { ...SCENE_GOAL_KINDS, quiz: quizGoalSchema, estimate: estimateGoalSchema, picture: pictureGoalSchema, info: infoGoalSchema };
 
 function chooseByField<Output>(kinds: Record<string, z.ZodType<Output>>, standAlone: readonly string[]) {
   const names = Object.keys(kinds);
@@ -176,7 +208,7 @@ function chooseByField<Output>(kinds: Record<string, z.ZodType<Output>>, standAl
   };
 }
 
-const sceneGoalSchema: z.ZodType<SceneGoal> = chosenBy(chooseByField(SCENE_GOAL_KINDS, ['quiz', 'estimate', 'info']));
+const sceneGoalSchema: z.ZodType<SceneGoal> = chosenBy(chooseByField(SCENE_GOAL_KINDS, ['quiz', 'estimate', 'picture', 'info']));
 export const goalSchema: z.ZodType<Goal> = chosenBy(chooseByField(GOAL_KINDS, []));
 
 /** Every goal inside `goal` (itself included) with its path from it, for checks that look at each. */

@@ -6,7 +6,8 @@ import { EventLog, systemClock, type HintStep, type HowCompleted, type LoggedEve
 import { APP_ONLY_ACTION } from './lab-action-schema.ts';
 import { choiceOrder } from './choice-order.ts';
 import { checkGoal, fitsGoal, isRightPrediction, NO_EVENTS, tallyAction, touchesGoal, type EventTally, type Prediction } from './goal-check.ts';
-import { kindOfGoal, predictionOf, type TaskKind } from './goal.ts';
+import { kindOfGoal, predictionOf, predictionParts, type PictureGoal, type TaskKind } from './goal.ts';
+import { pictureScenes } from './picture-scenes.ts';
 import { canShowMe, climb, nextHintStep, NO_HINTS, type HintProgress } from './hint-ladder.ts';
 import type { GuideTarget } from './lab-controls.ts';
 import { currentTask, isCompleted, isPassed, requiredTaskIds, type RequiredTasks } from './level-gate.ts';
@@ -68,6 +69,8 @@ export interface PredictionView {
   reflection?: Prediction;
   /** The task whose result checks the prediction; none when the result is seen at once. */
   observer?: Task;
+  /** A picture prediction's scenes to render, one per choice in file order. */
+  pictures?: readonly Scene[];
 }
 
 export interface TaskView {
@@ -82,7 +85,7 @@ export interface TaskView {
   /** For a quiz or estimate: its stage, the order of its choices, the learner's prediction. */
   prediction?: PredictionView;
   /** For the task that checks a prediction, while it is to do: that prediction and its quiz. */
-  checks?: { quiz: Task; prediction: Prediction };
+  checks?: { quiz: Task; prediction: Prediction; order: number[] };
   /** The text hints shown so far. */
   hints: LocalizedText[];
   /** What asking for help does next (`show-me`: offer the "Show me" button); null when nothing is left. */
@@ -147,6 +150,7 @@ export class QuestEngine {
   private readonly listeners = new Set<QuestListener>();
   private unpublished: LoggedEvent[] = [];
   private changed = false;
+  private readonly pictureCache = new WeakMap<PictureGoal, readonly Scene[]>();
 
   constructor(options: QuestEngineOptions) {
     this.catalog = options.catalog;
@@ -411,7 +415,7 @@ export class QuestEngine {
     const goal = predictionOf(task.goal);
     if (goal) {
       this.complete(active, task, 'shown');
-      shown = { kind: 'answer', answer: 'quiz' in goal ? goal.quiz.answer : goal.estimate.answer };
+      shown = { kind: 'answer', answer: predictionParts(goal).answer };
     } else if (task.solution) {
       active.shownByApp.add(taskId);
       shown = { kind: 'actions', actions: task.solution };
@@ -598,13 +602,22 @@ export class QuestEngine {
     const prediction = this.predictionIn(active.level.id, task.id);
     const reflection = active.reveal?.quiz === task.id ? active.reveal.reflection : undefined;
     const observer = this.observerOf(active, task);
+    const pictures = 'picture' in goal ? this.picturesOf(active.level, goal) : undefined;
     return {
+      ...(pictures ? { pictures } : {}),
       stage: this.stageOf(active, task),
-      order: 'quiz' in goal ? choiceOrder(goal.quiz.choices.length, seed) : [],
+      order: choiceOrder(predictionParts(goal).choices, seed),
       ...(prediction ? { prediction } : {}),
       ...(reflection ? { reflection } : {}),
       ...(observer ? { observer } : {}),
     };
+  }
+
+  /** A picture prediction's scenes, made once per level file (the UI caches their renders by scene). */
+  private picturesOf(level: Level, goal: PictureGoal): readonly Scene[] {
+    let scenes = this.pictureCache.get(goal);
+    if (!scenes) this.pictureCache.set(goal, (scenes = pictureScenes(level.scene, goal)));
+    return scenes;
   }
 
   /** For a task to do that checks a prediction still waiting for it: the quiz and the prediction. */
@@ -612,7 +625,8 @@ export class QuestEngine {
     if (kindOfGoal(task.goal) !== 'do' || isCompleted(this.levelProgress[active.level.id], task.id)) return undefined;
     const quiz = active.level.tasks.find((candidate) => predictionOf(candidate.goal) && this.stageOf(active, candidate) === 'wait' && this.observerOf(active, candidate) === task);
     const prediction = quiz && this.predictionIn(active.level.id, quiz.id);
-    return quiz && prediction ? { quiz, prediction } : undefined;
+    const order = quiz && this.predictionView(active, quiz)?.order;
+    return quiz && prediction && order ? { quiz, prediction, order } : undefined;
   }
 
   /**

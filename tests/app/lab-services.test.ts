@@ -25,6 +25,14 @@ function fakePool(workers: number | undefined) {
       const columns = scene.source.camera.pixels[0];
       return Promise.resolve(Array.from({ length: count }, (_, i) => tracePixel(scene, (first + i) % columns, Math.floor((first + i) / columns), seed)));
     },
+    /** Picture renders: each waits for the test to finish it (`finish`), as a worker would take time. */
+    renders: [] as { scene: Scene; finish: () => void }[],
+    render(scene: Scene) {
+      let finish = () => {};
+      const done = new Promise((resolve) => (finish = () => resolve({ cancelled: false, width: 1, height: 1, rgb: new Float32Array([scene.settings.shadows ? 1 : 0, 0, 0]) })));
+      pool.renders.push({ scene, finish });
+      return { done };
+    },
     dispose: () => void (disposed = true),
   };
   return pool;
@@ -120,6 +128,26 @@ describe('LabServices: the lab wired apart from any page', () => {
     services.store.dispatch({ type: 'rays.changed', changes: { showRays: false } });
     expect(before).toBeGreaterThan(0);
     expect(services.drawn.rays).toBe(0);
+  });
+
+  it('renders a picture prediction\'s scenes on a one-worker pool of their own, one at a time, each scene once', async () => {
+    const scene = services.store.state.scene;
+    const dark = { ...scene, settings: { ...scene.settings, shadows: false } };
+    expect(pools).toHaveLength(2); // made when first asked for
+    const first = services.renderPicture(scene);
+    const second = services.renderPicture(dark);
+    expect(services.renderPicture(scene)).toBe(first);
+    await vi.advanceTimersByTimeAsync(1);
+    const pictures = pools[2]!;
+    expect(pictures.workers).toBe(1);
+    // A pool's new job cancels its last: the second waits until the first is done.
+    expect(pictures.renders.map((render) => render.scene)).toEqual([scene]);
+    pictures.renders[0]!.finish();
+    expect((await first).rgb[0]).toBe(1);
+    await vi.advanceTimersByTimeAsync(1);
+    expect(pictures.renders.map((render) => render.scene)).toEqual([scene, dark]);
+    pictures.renders[1]!.finish();
+    expect((await second).rgb[0]).toBe(0);
   });
 
   it('disposes both pools', () => {

@@ -3,7 +3,7 @@ import { initialState } from '../../src/lab-state/lab-state.ts';
 import { QuestSession } from '../../src/app/quest-session.ts';
 import { Store } from '../../src/lab-state/store.ts';
 import { MemoryStorage, PROGRESS_KEY } from '../../src/quest/progress-store.ts';
-import { newProgress, type Progress } from '../../src/quest/progress.ts';
+import { newProgress, pointsOf, type Progress } from '../../src/quest/progress.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 import { catalogOf, FakeClock, levelWithId } from '../support/quest-fixtures.ts';
 
@@ -114,7 +114,9 @@ describe('several tabs of the game', () => {
     // And b's own events since then reach storage with a's.
     act(storage, b, () => b.session.engine.predict('predict', { choice: 1 }));
     storage.deliver();
-    expect(a.session.engine.points).toBe(20);
+    // a has b's prediction, with its points (shown once its result is observed).
+    expect(pointsOf(a.session.engine.progress)).toBe(20);
+    expect(a.session.engine.level?.tasks.find((task) => task.task.id === 'predict')?.status).toBe('done');
     expect([...ids(savedProgress(storage))].sort()).toEqual([...ids(a.session.engine.progress)].sort());
     expect([...ids(b.session.engine.progress)].sort()).toEqual([...ids(a.session.engine.progress)].sort());
   });

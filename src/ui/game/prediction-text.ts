@@ -1,5 +1,6 @@
+import { msg, str } from '@lit/localize';
 import type { Prediction } from '../../quest/goal-check.ts';
-import type { PredictionGoal } from '../../quest/goal.ts';
+import { predictionParts, type PredictionGoal } from '../../quest/goal.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
 import { localNumbers } from '../../i18n/number-format.ts';
 
@@ -11,15 +12,25 @@ function withUnit(goal: PredictionGoal, value: number, locale: Locale): string {
   return `${numbers.format(value)}${unit}`;
 }
 
-/** A prediction in words: the text of the chosen choice, or the number with its unit. */
-export function predictionText(goal: PredictionGoal, prediction: Prediction, locale: Locale): string {
-  if ('quiz' in goal) return 'choice' in prediction ? localize(goal.quiz.choices[prediction.choice] ?? '', locale) : '';
-  return 'value' in prediction ? withUnit(goal, prediction.value, locale) : '';
+/**
+ * A choice's words: a quiz's text, or for a picture "picture B", lettered by where this
+ * learner sees it (`order`: file positions in the order shown).
+ */
+export function choiceLabel(goal: PredictionGoal, index: number, order: readonly number[], locale: Locale): string {
+  if ('quiz' in goal) return localize(goal.quiz.choices[index] ?? '', locale);
+  const letter = String.fromCharCode(65 + Math.max(0, order.indexOf(index)));
+  return msg(str`picture ${letter}`);
+}
+
+/** A prediction in words: the chosen choice, or the number with its unit. */
+export function predictionText(goal: PredictionGoal, prediction: Prediction, locale: Locale, order: readonly number[]): string {
+  if ('value' in prediction) return withUnit(goal, prediction.value, locale);
+  return choiceLabel(goal, prediction.choice, order, locale);
 }
 
 /** The right answer in words; a number with its tolerance ("5 ± 0.5 m"). */
-export function answerText(goal: PredictionGoal, locale: Locale): string {
-  if ('quiz' in goal) return localize(goal.quiz.choices[goal.quiz.answer] ?? '', locale);
+export function answerText(goal: PredictionGoal, locale: Locale, order: readonly number[]): string {
+  if (!('estimate' in goal)) return choiceLabel(goal, predictionParts(goal).answer, order, locale);
   const { answer, tolerance } = goal.estimate;
   return tolerance > 0 ? `${numbers.format(answer)} ± ${withUnit(goal, tolerance, locale)}` : withUnit(goal, answer, locale);
 }

@@ -1,13 +1,15 @@
 import { msg, str } from '@lit/localize';
+import { ContextConsumer } from '@lit/context';
 import { css, html, LitElement, nothing, type TemplateResult } from 'lit';
 import type { Prediction } from '../../quest/goal-check.ts';
-import { explanationOf, predictionOf, type PredictionGoal, type QuizGoal } from '../../quest/goal.ts';
+import { explanationOf, predictionOf, predictionParts, type PictureGoal, type PredictionGoal, type QuizGoal } from '../../quest/goal.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
 import type { TaskView } from '../../quest/quest-engine.ts';
 import { parseTypedNumber } from '../controls/number-input.ts';
 import { fire, gameStyles } from './game-styles.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
-import { answerText, predictionText } from './prediction-text.ts';
+import { answerText, choiceLabel, predictionText } from './prediction-text.ts';
+import { quizPicturesContext } from './quiz-pictures.ts';
 
 /**
  * @summary A prediction, as predict → observe → explain: the learner picks a choice (in an
@@ -15,6 +17,8 @@ import { answerText, predictionText } from './prediction-text.ts';
  * nothing says whether it was right until the task that shows the result is done. Then a
  * learner who expected something else is asked what they see now, and only after that are
  * the answer and the explanation shown, with Continue. After "Show me" it shows the answer.
+ * A picture prediction's choices are small renders (drawn by the lab's quizPicturesContext),
+ * lettered A, B, … in the order shown.
  *
  * @fires quest-command - `predict`, `reflect` (with the choice or number) and `continue`.
  */
@@ -73,6 +77,33 @@ export class RtQuiz extends LitElement {
       .problem {
         color: var(--rt-danger);
       }
+      .pictures {
+        display: grid;
+        grid-template-columns: repeat(2, minmax(0, 1fr));
+        gap: 6px;
+      }
+      .pictures label {
+        flex-direction: column;
+        align-items: stretch;
+        gap: 4px;
+        padding: 4px;
+        border: 1px solid var(--rt-border);
+        border-radius: 6px;
+      }
+      .pictures label:has(input:checked) {
+        border: 2px solid var(--rt-accent);
+      }
+      .pictures .letter {
+        display: flex;
+        align-items: center;
+        gap: 6px;
+      }
+      .pictures canvas {
+        width: 100%;
+        height: auto;
+        background: var(--rt-surface-2);
+        image-rendering: pixelated;
+      }
     `,
   ];
 
@@ -86,6 +117,9 @@ export class RtQuiz extends LitElement {
   declare problem: string;
   /** The stage `picked`/`typed` belong to: they are cleared when it moves on. */
   private pickedFor = '';
+  private readonly pictures = new ContextConsumer(this, { context: quizPicturesContext, subscribe: true });
+  /** The pictures painted into this element's canvases, by scene: a re-render keeps them. */
+  private readonly painted = new Map<object, ImageData | null>();
 
   constructor() {
     super();
@@ -130,10 +164,10 @@ export class RtQuiz extends LitElement {
       const command: QuestCommand = { kind, task: view.task.id, prediction };
       fire(this, QUEST_COMMAND, command);
     };
-    const ready = 'quiz' in goal ? this.picked !== null : this.typed.trim() !== '';
+    const ready = 'estimate' in goal ? this.typed.trim() !== '' : this.picked !== null;
     return html`<fieldset>
         <legend>${legend}</legend>
-        ${'quiz' in goal ? this.choices(view, goal.quiz, true) : this.numberBox(goal, send)}
+        ${'estimate' in goal ? this.numberBox(goal, send) : this.choices(view, goal, true)}
       </fieldset>
       ${this.problem ? html`<p class="problem" role="alert">${this.problem}</p>` : nothing}
       <button class="primary" ?disabled=${!ready} @click=${send}>${button}</button>`;
@@ -143,23 +177,49 @@ export class RtQuiz extends LitElement {
   private asked(view: TaskView, goal: PredictionGoal): TemplateResult {
     return html`<fieldset disabled>
       <legend>${localize(questionOf(goal), this.locale)}</legend>
-      ${'quiz' in goal ? this.choices(view, goal.quiz, false) : nothing}
+      ${'estimate' in goal ? nothing : this.choices(view, goal, false)}
     </fieldset>`;
   }
 
-  /** The choices in this learner's order; `open` while they may pick one. */
-  private choices(view: TaskView, quiz: QuizGoal['quiz'], open: boolean): TemplateResult[] {
-    const order = view.prediction?.order.length === quiz.choices.length ? view.prediction.order : quiz.choices.map((_, index) => index);
+  /** The choices (words or pictures) in this learner's order; `open` while they may pick one. */
+  private choices(view: TaskView, goal: QuizGoal | PictureGoal, open: boolean): TemplateResult {
+    const { choices, answer } = predictionParts(goal);
+    const order = view.prediction?.order.length === choices ? view.prediction.order : Array.from({ length: choices }, (_, index) => index);
     const mine = view.prediction?.prediction;
     const reveal = view.prediction?.stage === 'explain' || view.prediction?.stage === 'explained';
-    return order.map(
-      (index) => html`<label>
-        <input type="radio" name=${`quiz-${view.task.id}`} .checked=${open ? this.picked === index : mine !== undefined && 'choice' in mine && mine.choice === index} @change=${() => (this.picked = index)} />
-        ${localize(quiz.choices[index], this.locale)}
-        ${!open && mine && 'choice' in mine && mine.choice === index ? html`<span class="tag">${msg('your prediction')}</span>` : nothing}
-        ${reveal && index === quiz.answer ? html`<span class="tag right">✓ ${msg('answer')}</span>` : nothing}
-      </label>`,
-    );
+    const pictures = view.prediction?.pictures;
+    const items = order.map((index) => {
+      const text = choiceLabel(goal, index, order, this.locale);
+      const tags = html`${!open && mine && 'choice' in mine && mine.choice === index ? html`<span class="tag">${msg('your prediction')}</span>` : nothing}
+      ${reveal && index === answer ? html`<span class="tag right">✓ ${msg('answer')}</span>` : nothing}`;
+      const radio = html`<input type="radio" name=${`quiz-${view.task.id}`} .checked=${open ? this.picked === index : mine !== undefined && 'choice' in mine && mine.choice === index} @change=${() => (this.picked = index)} />`;
+      if (!pictures) return html`<label>${radio} ${text} ${tags}</label>`;
+      const [width, height] = pictures[index].settings.imageSize;
+      return html`<label>
+        <canvas data-picture=${index} width=${width} height=${height} role="img" aria-label=${msg(str`${text}, a render of the scene`)}></canvas>
+        <span class="letter">${radio} ${text} ${tags}</span>
+      </label>`;
+    });
+    return pictures ? html`<div class="pictures">${items}</div>` : html`${items}`;
+  }
+
+  protected override updated(): void {
+    const pictures = this.task?.prediction?.pictures;
+    const drawer = this.pictures.value;
+    if (!pictures || !drawer) return;
+    for (const canvas of this.renderRoot.querySelectorAll<HTMLCanvasElement>('canvas[data-picture]')) {
+      const scene = pictures[Number(canvas.dataset.picture)];
+      const done = this.painted.get(scene);
+      if (done !== undefined) {
+        if (done) canvas.getContext('2d')?.putImageData(done, 0, 0);
+        continue;
+      }
+      void drawer.draw(scene).then((image) => {
+        this.painted.set(scene, image);
+        this.requestUpdate();
+      });
+      this.painted.set(scene, null);
+    }
   }
 
   private numberBox(goal: PredictionGoal, send: () => void): TemplateResult {
@@ -184,7 +244,7 @@ export class RtQuiz extends LitElement {
   private explained(view: TaskView, goal: PredictionGoal, current: boolean): TemplateResult {
     const mine = view.prediction?.prediction;
     const seen = view.prediction?.reflection;
-    const answer = answerText(goal, this.locale);
+    const answer = answerText(goal, this.locale, this.task?.prediction?.order ?? []);
     const explanation = explanationOf(goal);
     const verdict = view.correct
       ? html`<p class="right"><strong>✓ ${msg(str`You expected ${this.said(goal, mine)}, and so it is.`)}</strong></p>`
@@ -199,18 +259,18 @@ export class RtQuiz extends LitElement {
   private shown(goal: PredictionGoal): TemplateResult {
     const explanation = explanationOf(goal);
     return html`<div class="feedback" role="status">
-      <p><strong>${msg(str`The answer: ${answerText(goal, this.locale)}`)}</strong></p>
+      <p><strong>${msg(str`The answer: ${answerText(goal, this.locale, this.task?.prediction?.order ?? [])}`)}</strong></p>
       ${explanation ? html`<p>${localize(explanation, this.locale)}</p>` : nothing}
     </div>`;
   }
 
   private said(goal: PredictionGoal, prediction: Prediction | undefined): string {
-    return prediction ? predictionText(goal, prediction, this.locale) : '…';
+    return prediction ? predictionText(goal, prediction, this.locale, this.task?.prediction?.order ?? []) : '…';
   }
 
   /** The picked choice or the typed number; a typed text that is no number says why. */
   private chosen(goal: PredictionGoal): Prediction | undefined {
-    if ('quiz' in goal) return this.picked === null ? undefined : { choice: this.picked };
+    if (!('estimate' in goal)) return this.picked === null ? undefined : { choice: this.picked };
     const unit = goal.estimate.unit ? localize(goal.estimate.unit, this.locale) : '';
     const read = parseTypedNumber(this.typed, { min: -Number.MAX_VALUE, max: Number.MAX_VALUE }, unit);
     if (read.kind === 'invalid') {
@@ -222,7 +282,7 @@ export class RtQuiz extends LitElement {
 }
 
 function questionOf(goal: PredictionGoal) {
-  return 'quiz' in goal ? goal.quiz.question : goal.estimate.question;
+  return predictionParts(goal).question;
 }
 
 customElements.define('rt-quiz', RtQuiz);

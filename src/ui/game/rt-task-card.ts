@@ -167,7 +167,7 @@ export class RtTaskCard extends LitElement {
 function checksLine(view: TaskView, locale: Locale): TemplateResult | typeof nothing {
   const goal = view.checks && predictionOf(view.checks.quiz.goal);
   if (!view.checks || !goal) return nothing;
-  const predicted = predictionText(goal, view.checks.prediction, locale);
+  const predicted = predictionText(goal, view.checks.prediction, locale, view.checks.order);
   return html`<p class="checks">${msg(str`You predicted: ${predicted}. Watch what really happens.`)}</p>`;
 }
 

@@ -28,6 +28,8 @@ import { QuestController } from './quest-controller.ts';
 import type { RtRenderWindow } from './render-window/rt-render-window.ts';
 import type { RtSceneView } from './rt-scene-view.ts';
 import { storeContext } from './store-context.ts';
+import { quizPictureDrawer } from './quiz-picture-drawer.ts';
+import { quizPicturesContext } from '../game/quiz-pictures.ts';
 import { ON_DEMAND_PANELS } from './lab-elements.ts';
 import { ViewCoverController } from './view-cover.ts';
 
@@ -85,6 +87,7 @@ export class RtLab extends LitElement {
     this.sharedScene = null;
     this.services = this.createServices();
     this.storeProvider = new ContextProvider(this, { context: storeContext, initialValue: this.services.store });
+    new ContextProvider(this, { context: quizPicturesContext, initialValue: quizPictureDrawer(() => this.services) });
     new GuideHostController(this);
     new ViewCoverController(this, () => ({
       view: this.sceneView(),
