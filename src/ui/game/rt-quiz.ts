@@ -1,8 +1,10 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
-import { localize, type Locale } from '../../quest/localized-text.ts';
+import { css, html, LitElement, nothing, type TemplateResult } from 'lit';
+import type { Locale } from '../../quest/localized-text.ts';
 import type { TaskView } from '../../quest/quest-engine.ts';
+import { plainLevelText } from '../../quest/text-markup.ts';
 import { fire, gameStyles } from './game-styles.ts';
+import { levelText } from './level-text.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 
 /**
@@ -76,22 +78,23 @@ export class RtQuiz extends LitElement {
     const name = `quiz-${view.task.id}`;
     return html`
       <fieldset ?disabled=${answered}>
-        <legend>${localize(quiz.question, this.locale)}</legend>
+        <legend>${levelText(quiz.question, this.locale)}</legend>
         ${quiz.choices.map(
           (choice, index) => html`<label>
             <input type="radio" name=${name} .checked=${this.picked === index} @change=${() => (this.picked = index)} />
-            ${localize(choice, this.locale)} ${answered && index === quiz.answer ? html`<span class="tag right">✓ ${msg('answer')}</span>` : nothing}
+            ${levelText(choice, this.locale)} ${answered && index === quiz.answer ? html`<span class="tag right">✓ ${msg('answer')}</span>` : nothing}
             ${answered && index === this.picked && index !== quiz.answer ? html`<span class="tag wrong">✗ ${msg('your answer')}</span>` : nothing}
           </label>`,
         )}
       </fieldset>
       ${answered
-        ? this.feedback(view, localize(quiz.choices[quiz.answer] ?? '', this.locale), quiz.explanation ? localize(quiz.explanation, this.locale) : '')
+        ? this.feedback(view, plainLevelText(quiz.choices[quiz.answer] ?? '', this.locale), quiz.explanation ? levelText(quiz.explanation, this.locale) : null)
         : html`<button class="primary" ?disabled=${this.picked === null} @click=${this.check} title=${msg('Check your prediction')}>${msg('Check')}</button>`}
     `;
   }
 
-  private feedback(view: TaskView, answer: string, explanation: string) {
+  /** The verdict names the answer inside a sentence of the app's, so as plain text; the explanation keeps its bold names. */
+  private feedback(view: TaskView, answer: string, explanation: TemplateResult | null) {
     const verdict =
       view.status === 'shown'
         ? html`<p><strong>${msg(str`The answer: ${answer}`)}</strong></p>`

@@ -1,8 +1,10 @@
 import { msg, str } from '@lit/localize';
 import { css, html, LitElement, nothing, type TemplateResult } from 'lit';
-import { localize, type Locale } from '../../quest/localized-text.ts';
+import type { Locale } from '../../quest/localized-text.ts';
 import type { TaskView } from '../../quest/quest-engine.ts';
+import { plainLevelText } from '../../quest/text-markup.ts';
 import { explainMore, fire, gameStyles } from './game-styles.ts';
+import { levelText } from './level-text.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 import './rt-hint-box.ts';
 import './rt-quiz.ts';
@@ -119,7 +121,7 @@ export class RtTaskCard extends LitElement {
     const head = html`
       <span class="mark" aria-hidden="true">${MARKS[view.status]}</span>
       <span class="label">
-        <span class="title">${localize(view.task.title, this.locale)}<span class="visually-hidden"> (${statusText(view)})</span></span>
+        <span class="title">${plainLevelText(view.task.title, this.locale)}<span class="visually-hidden"> (${statusText(view)})</span></span>
         <span class="tags">
           ${view.task.mandatory ? nothing : html`<span class="tag muted">${msg('optional')}</span>`}
           ${view.task.points > 0 ? html`<span class="tag muted" title=${msg('Points')}>${finished ? msg(str`${view.points} pts`) : msg(str`${view.task.points} pts`)}</span>` : nothing}
@@ -140,8 +142,8 @@ export class RtTaskCard extends LitElement {
     const id = view.task.id;
     const send = (command: QuestCommand) => fire(this, QUEST_COMMAND, command);
     return html`
-      <p>${localize(view.task.text, this.locale)}</p>
-      ${view.task.more ? explainMore(localize(view.task.more, this.locale), () => send({ kind: 'explain', task: id })) : nothing}
+      <p>${levelText(view.task.text, this.locale)}</p>
+      ${view.task.more ? explainMore(levelText(view.task.more, this.locale), () => send({ kind: 'explain', task: id })) : nothing}
       ${view.kind === 'quiz' ? html`<rt-quiz .task=${view} locale=${this.locale}></rt-quiz>` : nothing}
       ${finished
         ? nothing
