@@ -33,11 +33,24 @@ const guideTargetSchema = z.custom<GuideTarget>((value) => typeof value === 'str
   error: (issue) => `must be a control like "tracer.supersampling" or an item like "view.item:ball" (docs/levels.md lists them), got ${describeValue(issue.input)}`,
 });
 
+/**
+ * A figure's file name in assets/figures: lower-case words joined by "-", an SVG or a PNG
+ * (the kinds the offline cache keeps: vite.config.ts). The task card bundles the folder
+ * (src/ui/game/figure-urls.ts).
+ */
+export const FIGURE_FILE = /^[a-z0-9]+(?:-[a-z0-9]+)*\.(?:svg|png)$/;
+
+const figureSchema = z.strictObject({
+  src: z.string().regex(FIGURE_FILE, { error: (issue) => `must be a file name in assets/figures like "lambert-torch.svg" (lower-case words joined by "-", ending .svg or .png), got ${describeValue(issue.input)}` }),
+  alt: localizedTextSchema.describe('What the figure shows, for a learner who cannot see it.'),
+});
+
 const taskSchema = z
   .strictObject({
     id: kebabId(),
     title: localizedTextSchema,
     text: localizedTextSchema.describe('The instruction: one thing to do or see.'),
+    figure: figureSchema.optional().describe('A picture shown above the text, with its alt text.'),
     more: localizedTextSchema.optional().describe('"Explain more": the deeper explanation, formulas welcome.'),
     mandatory: z.boolean().default(true),
     points: wholeNumberIn(TASK_POINTS).optional(),
