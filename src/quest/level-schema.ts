@@ -4,6 +4,7 @@ import { describeIssue, describeValue, formatIssues } from '../scene/scene-issue
 import { listOf, wholeNumberIn } from '../scene/scene-schema-parts.ts';
 import { labActionSchema } from './lab-action-schema.ts';
 import { declaredViewSchema } from './declared-view-schema.ts';
+import { FIGURE_FILES } from './figure-files.ts';
 import { goalSchema } from './goal.ts';
 import { kebabId } from './kebab-id.ts';
 import { isGuideTarget, LAB_CONTROLS, UI_PANELS, type GuideTarget } from './lab-controls.ts';
@@ -33,15 +34,8 @@ const guideTargetSchema = z.custom<GuideTarget>((value) => typeof value === 'str
   error: (issue) => `must be a control like "tracer.supersampling" or an item like "view.item:ball" (docs/levels.md lists them), got ${describeValue(issue.input)}`,
 });
 
-/**
- * A figure's file name in assets/figures: lower-case words joined by "-", an SVG or a PNG
- * (the kinds the offline cache keeps: vite.config.ts). The task card bundles the folder
- * (src/ui/game/figure-urls.ts).
- */
-export const FIGURE_FILE = /^[a-z0-9]+(?:-[a-z0-9]+)*\.(?:svg|png)$/;
-
 const figureSchema = z.strictObject({
-  src: z.string().regex(FIGURE_FILE, { error: (issue) => `must be a file name in assets/figures like "lambert-torch.svg" (lower-case words joined by "-", ending .svg or .png), got ${describeValue(issue.input)}` }),
+  src: z.enum(FIGURE_FILES).describe('A file in assets/figures.'),
   alt: localizedTextSchema.describe('What the figure shows, for a learner who cannot see it.'),
 });
 

@@ -10,7 +10,7 @@ const FIGURE_URLS: ReadonlyMap<string, string> = new Map(
   ),
 );
 
-/** The figure's URL, or undefined for a file that is not in assets/figures (tests/quest/level-figures.test.ts keeps that from shipping). */
+/** The figure's URL; undefined only for a name the level schema would have refused (src/quest/figure-files.ts lists the folder). */
 export function figureUrl(file: string): string | undefined {
   return FIGURE_URLS.get(file);
 }
