@@ -5,7 +5,7 @@ import { localize, type Locale, type LocalizedText } from './localized-text.ts';
  * a switch, a slider) is written between double asterisks, `Set **Time samples (k)** under
  * **Lens and shutter** to 4.`, so the task card can show it in bold (the learner sees which
  * words to look for on screen) and a test can check that each one is a label the screen
- * really shows (docs/levels.md, "Texts and languages").
+ * really shows (docs/levels.md, "Names on screen").
  *
  * A name is the text between a `**` and the next `**` on the same line, with no `*` in it;
  * a `**` without its partner is left as it is, so a slip shows up on screen as written
