@@ -4,6 +4,7 @@ import { describeIssue, describeValue, formatIssues } from '../scene/scene-issue
 import { listOf, wholeNumberIn } from '../scene/scene-schema-parts.ts';
 import { labActionSchema } from './lab-action-schema.ts';
 import { declaredViewSchema } from './declared-view-schema.ts';
+import { FIGURE_FILES } from './figure-files.ts';
 import { goalSchema } from './goal.ts';
 import { kebabId } from './kebab-id.ts';
 import { isGuideTarget, LAB_CONTROLS, UI_PANELS, type GuideTarget } from './lab-controls.ts';
@@ -33,11 +34,17 @@ const guideTargetSchema = z.custom<GuideTarget>((value) => typeof value === 'str
   error: (issue) => `must be a control like "tracer.supersampling" or an item like "view.item:ball" (docs/levels.md lists them), got ${describeValue(issue.input)}`,
 });
 
+const figureSchema = z.strictObject({
+  src: z.enum(FIGURE_FILES).describe('A file in assets/figures.'),
+  alt: localizedTextSchema.describe('What the figure shows, for a learner who cannot see it.'),
+});
+
 const taskSchema = z
   .strictObject({
     id: kebabId(),
     title: localizedTextSchema,
     text: localizedTextSchema.describe('The instruction: one thing to do or see.'),
+    figure: figureSchema.optional().describe('A picture shown above the text, with its alt text.'),
     more: localizedTextSchema.optional().describe('"Explain more": the deeper explanation, formulas welcome.'),
     mandatory: z.boolean().default(true),
     points: wholeNumberIn(TASK_POINTS).optional(),

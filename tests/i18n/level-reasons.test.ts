@@ -99,6 +99,7 @@ const LEVEL_MISTAKES: Record<string, (level: Level) => void> = {
     level.scene.camera.lensSamples = 8;
   },
   'an id with capitals': (level) => (level.id = 'Shading'),
+  'a figure the app does not ship': (level) => Object.assign(level.tasks[0]!, { figure: { src: 'torch.svg', alt: 'A torch.' } }),
 };
 
 /** The reasons of the level index, through the same loader (levels/index.json with one mistake). */

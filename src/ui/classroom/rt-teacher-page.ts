@@ -10,7 +10,7 @@ import { SURVEY_IDS } from '../../classroom/surveys.ts';
 import type { Level } from '../../quest/level-schema.ts';
 import { playableLevels } from '../../quest/level-index.ts';
 import { currentLocale } from '../../i18n/locale.ts';
-import { localize } from '../../quest/localized-text.ts';
+import { plainLevelText } from '../../quest/text-markup.ts';
 import { teacherPageStyles } from './teacher-page.css.ts';
 import '../controls/rt-theme-toggle.ts';
 
@@ -180,7 +180,7 @@ export class RtTeacherPage extends LitElement {
             <div class="row">
               <label for="add-level">${msg('Add a level')}</label>
               <select id="add-level" name="add-level" ?disabled=${available.length === 0}>
-                ${available.map((level) => html`<option value=${level.id}>${localize(level.title, locale)}</option>`)}
+                ${available.map((level) => html`<option value=${level.id}>${plainLevelText(level.title, locale)}</option>`)}
               </select>
               <button
                 type="button"
@@ -253,7 +253,7 @@ export class RtTeacherPage extends LitElement {
 
   private renderLevel(id: string, index: number, locale: Assignment['locale']) {
     const level = this.level(id);
-    const title = level ? localize(level.title, locale) : id;
+    const title = level ? plainLevelText(level.title, locale) : id;
     const required = new Set(this.assignment.requiredTasks[id] ?? []);
     const last = this.assignment.levels.length - 1;
     return html`<li data-level=${id}>
@@ -269,7 +269,7 @@ export class RtTeacherPage extends LitElement {
             ${level.tasks.map(
               (task) => html`<label class="check">
                 <input type="checkbox" name=${`${id}/${task.id}`} .checked=${required.has(task.id)} @change=${(e: Event) => this.toggleTask(id, task.id, (e.target as HTMLInputElement).checked)} />
-                ${localize(task.title, locale)} ${task.mandatory ? nothing : html`<span class="muted">${msg('(optional in the level)')}</span>`}
+                ${plainLevelText(task.title, locale)} ${task.mandatory ? nothing : html`<span class="muted">${msg('(optional in the level)')}</span>`}
               </label>`,
             )}
           </fieldset>`

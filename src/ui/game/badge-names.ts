@@ -3,13 +3,14 @@ import type { Badge } from '../../quest/badges.ts';
 import type { LevelCatalog } from '../../quest/level-index.ts';
 import { playableLevels } from '../../quest/level-index.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
+import { plainLevelText } from '../../quest/text-markup.ts';
 
 /** A badge's name for the learner: the app's own words, or the level file's title for a level's own badge. */
 export function badgeName(badge: Badge, catalog: LevelCatalog, locale: Locale): string {
   const level = (id: string) => playableLevels(catalog).find((candidate) => candidate.id === id);
   const levelTitle = (id: string) => {
     const found = level(id);
-    return found ? localize(found.title, locale) : id;
+    return found ? plainLevelText(found.title, locale) : id;
   };
   switch (badge.kind) {
     case 'first-render':
@@ -26,7 +27,7 @@ export function badgeName(badge: Badge, catalog: LevelCatalog, locale: Locale): 
       return msg(str`Every task: ${levelTitle(badge.level)}`);
     case 'level-badge': {
       const own = level(badge.level)?.badges.find((candidate) => candidate.id === badge.badge);
-      return own ? localize(own.title, locale) : badge.badge;
+      return own ? plainLevelText(own.title, locale) : badge.badge;
     }
   }
 }

@@ -98,7 +98,7 @@ export function fire<T>(from: HTMLElement, type: string, detail: T): void {
 }
 
 /** An "Explain more" toggle; `opened` hears when the learner opens it (the engine logs it). */
-export function explainMore(text: string, opened: () => void): TemplateResult {
+export function explainMore(text: TemplateResult, opened: () => void): TemplateResult {
   return html`<details class="more" @toggle=${(event: Event) => (event.target as HTMLDetailsElement).open && opened()}>
     <summary>${msg('Explain more')}</summary>
     <p>${text}</p>

@@ -1,14 +1,15 @@
 import { msg, str } from '@lit/localize';
 import type { Prediction } from '../../quest/goal-check.ts';
 import { predictionParts, type PredictionGoal } from '../../quest/goal.ts';
-import { localize, type Locale } from '../../quest/localized-text.ts';
+import type { Locale } from '../../quest/localized-text.ts';
+import { plainLevelText } from '../../quest/text-markup.ts';
 import { localNumbers } from '../../i18n/number-format.ts';
 
 /** Numbers as the learner's language writes them, with as many decimals as they typed (up to 6). */
 const numbers = localNumbers({ maximumFractionDigits: 6 });
 
 function withUnit(goal: PredictionGoal, value: number, locale: Locale): string {
-  const unit = 'estimate' in goal && goal.estimate.unit ? ` ${localize(goal.estimate.unit, locale)}` : '';
+  const unit = 'estimate' in goal && goal.estimate.unit ? ` ${plainLevelText(goal.estimate.unit, locale)}` : '';
   return `${numbers.format(value)}${unit}`;
 }
 
@@ -17,7 +18,7 @@ function withUnit(goal: PredictionGoal, value: number, locale: Locale): string {
  * learner sees it (`order`: file positions in the order shown).
  */
 export function choiceLabel(goal: PredictionGoal, index: number, order: readonly number[], locale: Locale): string {
-  if ('quiz' in goal) return localize(goal.quiz.choices[index] ?? '', locale);
+  if ('quiz' in goal) return plainLevelText(goal.quiz.choices[index] ?? '', locale);
   const letter = String.fromCharCode(65 + Math.max(0, order.indexOf(index)));
   return msg(str`picture ${letter}`);
 }

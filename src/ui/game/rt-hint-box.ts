@@ -1,9 +1,9 @@
 import { msg } from '@lit/localize';
 import { html, LitElement, nothing } from 'lit';
 import type { Locale } from '../../quest/localized-text.ts';
-import { localize } from '../../quest/localized-text.ts';
 import type { TaskView } from '../../quest/quest-engine.ts';
 import { fire, gameStyles } from './game-styles.ts';
+import { levelText } from './level-text.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 
 /**
@@ -32,7 +32,7 @@ export class RtHintBox extends LitElement {
     const command: QuestCommand | null = next === 'show-me' ? { kind: 'show-me', task: id } : next ? { kind: 'hint', task: id } : null;
     return html`
       <div aria-live="polite">
-        ${view.hints.map((hint, index) => html`<p class="hint"><strong>${msg('Hint')} ${index + 1}:</strong> ${localize(hint, this.locale)}</p>`)}
+        ${view.hints.map((hint, index) => html`<p class="hint"><strong>${msg('Hint')} ${index + 1}:</strong> ${levelText(hint, this.locale)}</p>`)}
       </div>
       ${command
         ? html`<button data-hint=${next ?? ''} title=${this.tooltip(next)} @click=${() => fire(this, QUEST_COMMAND, command)}>${this.label(view)}</button>`

@@ -3,6 +3,7 @@ import { issueText } from '../../i18n/issue-text.ts';
 import { css, html, LitElement, nothing, type TemplateResult } from 'lit';
 import type { LevelMapEntry, ChapterMapView } from '../../quest/level-map.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
+import { plainLevelText } from '../../quest/text-markup.ts';
 import { FocusReturn } from '../controls/focus-return.ts';
 import { fire, gameStyles } from './game-styles.ts';
 
@@ -181,7 +182,7 @@ export class RtLevelMap extends LitElement {
   }
 
   private entry(entry: LevelMapEntry, number: number, choose: (choice: MapChoice) => void): TemplateResult {
-    const title = entry.level ? localize(entry.level.title, this.locale) : entry.id;
+    const title = entry.level ? plainLevelText(entry.level.title, this.locale) : entry.id;
     const current = entry.id === this.current;
     const playable = entry.status === 'open' || entry.status === 'passed';
     return html`<button

@@ -1,8 +1,10 @@
 import { msg, str } from '@lit/localize';
 import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
-import { localize, type Locale } from '../../quest/localized-text.ts';
+import type { Locale } from '../../quest/localized-text.ts';
 import type { LevelView } from '../../quest/quest-engine.ts';
+import { plainLevelText } from '../../quest/text-markup.ts';
 import { explainMore, fire, gameStyles } from './game-styles.ts';
+import { levelText } from './level-text.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 import './rt-task-card.ts';
 import { scrollInBox } from './scroll-in-box.ts';
@@ -113,10 +115,10 @@ export class RtQuestPanel extends LitElement {
     const send = (command: QuestCommand) => fire(this, QUEST_COMMAND, command);
     return html`
       <header>
-        <h2>${localize(level.title, this.locale)}</h2>
+        <h2>${plainLevelText(level.title, this.locale)}</h2>
         <p class="muted level-points">${msg(str`${view.points} of ${view.maxPoints} points`)}</p>
-        <p>${localize(level.intro.text, this.locale)}</p>
-        ${level.intro.more ? explainMore(localize(level.intro.more, this.locale), () => send({ kind: 'explain', task: 'intro' })) : nothing}
+        <p>${levelText(level.intro.text, this.locale)}</p>
+        ${level.intro.more ? explainMore(levelText(level.intro.more, this.locale), () => send({ kind: 'explain', task: 'intro' })) : nothing}
       </header>
       ${view.passed ? this.celebration(view, send) : nothing}
       <ol aria-label=${msg('Tasks')}>

@@ -3,10 +3,12 @@ import { ContextConsumer } from '@lit/context';
 import { css, html, LitElement, nothing, type TemplateResult } from 'lit';
 import type { Prediction } from '../../quest/goal-check.ts';
 import { explanationOf, predictionOf, predictionParts, type PictureGoal, type PredictionGoal, type QuizGoal } from '../../quest/goal.ts';
-import { localize, type Locale } from '../../quest/localized-text.ts';
+import type { Locale } from '../../quest/localized-text.ts';
 import type { TaskView } from '../../quest/quest-engine.ts';
+import { plainLevelText } from '../../quest/text-markup.ts';
 import { parseTypedNumber } from '../controls/number-input.ts';
 import { fire, gameStyles } from './game-styles.ts';
+import { levelText } from './level-text.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 import { answerText, choiceLabel, predictionText } from './prediction-text.ts';
 import { quizPicturesContext } from './quiz-pictures.ts';
@@ -139,7 +141,7 @@ export class RtQuiz extends LitElement {
     if (view.status === 'shown') return this.shown(goal);
     switch (stage) {
       case 'ask':
-        return this.asking(view, goal, 'predict', localize(questionOf(goal), this.locale), msg('Lock in my prediction'));
+        return this.asking(view, goal, 'predict', levelText(questionOf(goal), this.locale), msg('Lock in my prediction'));
       case 'wait':
         return html`${this.asked(view, goal)}<div class="feedback" role="status">
             <p><strong>${msg(str`Your prediction: ${this.said(goal, view.prediction?.prediction)}.`)}</strong></p>
@@ -157,7 +159,7 @@ export class RtQuiz extends LitElement {
   }
 
   /** The question with its choices (or number box) to answer, and the button that sends it. */
-  private asking(view: TaskView, goal: PredictionGoal, kind: 'predict' | 'reflect', legend: string, button: string): TemplateResult {
+  private asking(view: TaskView, goal: PredictionGoal, kind: 'predict' | 'reflect', legend: TemplateResult | string, button: string): TemplateResult {
     const send = () => {
       const prediction = this.chosen(goal);
       if (!prediction) return;
@@ -176,7 +178,7 @@ export class RtQuiz extends LitElement {
   /** The question as asked, with the learner's prediction marked, once it is locked in. */
   private asked(view: TaskView, goal: PredictionGoal): TemplateResult {
     return html`<fieldset disabled>
-      <legend>${localize(questionOf(goal), this.locale)}</legend>
+      <legend>${levelText(questionOf(goal), this.locale)}</legend>
       ${'estimate' in goal ? nothing : this.choices(view, goal, false)}
     </fieldset>`;
   }
@@ -190,10 +192,12 @@ export class RtQuiz extends LitElement {
     const pictures = view.prediction?.pictures;
     const items = order.map((index) => {
       const text = choiceLabel(goal, index, order, this.locale);
+      // A quiz's choice keeps its bold names; the picture's label and the aria text are plain.
+      const shown = 'quiz' in goal ? levelText(goal.quiz.choices[index], this.locale) : text;
       const tags = html`${!open && mine && 'choice' in mine && mine.choice === index ? html`<span class="tag">${msg('your prediction')}</span>` : nothing}
       ${reveal && index === answer ? html`<span class="tag right">✓ ${msg('answer')}</span>` : nothing}`;
       const radio = html`<input type="radio" name=${`quiz-${view.task.id}`} .checked=${open ? this.picked === index : mine !== undefined && 'choice' in mine && mine.choice === index} @change=${() => (this.picked = index)} />`;
-      if (!pictures) return html`<label>${radio} ${text} ${tags}</label>`;
+      if (!pictures) return html`<label>${radio} ${shown} ${tags}</label>`;
       const [width, height] = pictures[index].settings.imageSize;
       return html`<label>
         <canvas data-picture=${index} width=${width} height=${height} role="img" aria-label=${msg(str`${text}, a render of the scene`)}></canvas>
@@ -223,7 +227,7 @@ export class RtQuiz extends LitElement {
   }
 
   private numberBox(goal: PredictionGoal, send: () => void): TemplateResult {
-    const unit = 'estimate' in goal && goal.estimate.unit ? localize(goal.estimate.unit, this.locale) : '';
+    const unit = 'estimate' in goal && goal.estimate.unit ? plainLevelText(goal.estimate.unit, this.locale) : '';
     return html`<label class="number"
       ><input
         type="text"
@@ -251,7 +255,7 @@ export class RtQuiz extends LitElement {
       : html`<p><strong>${msg(str`You expected ${this.said(goal, mine)}; the answer is ${answer}.`)}</strong></p>
           ${seen ? html`<p>${msg(str`You saw: ${this.said(goal, seen)}.`)}</p>` : nothing}`;
     return html`${this.asked(view, goal)}
-      <div class="feedback" role="status">${verdict}${explanation ? html`<p>${localize(explanation, this.locale)}</p>` : nothing}</div>
+      <div class="feedback" role="status">${verdict}${explanation ? html`<p>${levelText(explanation, this.locale)}</p>` : nothing}</div>
       ${current ? html`<button class="primary" @click=${() => fire(this, QUEST_COMMAND, { kind: 'continue', task: view.task.id } satisfies QuestCommand)}>${msg('Continue')}</button>` : nothing}`;
   }
 
@@ -260,7 +264,7 @@ export class RtQuiz extends LitElement {
     const explanation = explanationOf(goal);
     return html`<div class="feedback" role="status">
       <p><strong>${msg(str`The answer: ${answerText(goal, this.locale, this.task?.prediction?.order ?? [])}`)}</strong></p>
-      ${explanation ? html`<p>${localize(explanation, this.locale)}</p>` : nothing}
+      ${explanation ? html`<p>${levelText(explanation, this.locale)}</p>` : nothing}
     </div>`;
   }
 
@@ -271,7 +275,7 @@ export class RtQuiz extends LitElement {
   /** The picked choice or the typed number; a typed text that is no number says why. */
   private chosen(goal: PredictionGoal): Prediction | undefined {
     if (!('estimate' in goal)) return this.picked === null ? undefined : { choice: this.picked };
-    const unit = goal.estimate.unit ? localize(goal.estimate.unit, this.locale) : '';
+    const unit = goal.estimate.unit ? plainLevelText(goal.estimate.unit, this.locale) : '';
     const read = parseTypedNumber(this.typed, { min: -Number.MAX_VALUE, max: Number.MAX_VALUE }, unit);
     if (read.kind === 'invalid') {
       this.problem = msg('Type a number, for example 0.5 or 12.');

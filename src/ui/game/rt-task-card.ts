@@ -1,9 +1,13 @@
 import { msg, str } from '@lit/localize';
 import { css, html, LitElement, nothing, type TemplateResult } from 'lit';
 import { predictionOf } from '../../quest/goal.ts';
-import { localize, type Locale } from '../../quest/localized-text.ts';
+import type { Locale } from '../../quest/localized-text.ts';
+import type { Task } from '../../quest/level-schema.ts';
 import type { TaskView } from '../../quest/quest-engine.ts';
+import { plainLevelText } from '../../quest/text-markup.ts';
+import { figureUrl } from './figure-urls.ts';
 import { explainMore, fire, gameStyles } from './game-styles.ts';
+import { levelText } from './level-text.ts';
 import { predictionText } from './prediction-text.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 import './rt-hint-box.ts';
@@ -11,8 +15,8 @@ import './rt-quiz.ts';
 
 /**
  * @summary One task in the task list: a status mark (in words for screen readers, as a
- * symbol for the eye), its title and points; expanded, its instruction, "Explain more", the
- * quiz or the Next button, and the hint ladder. Optional tasks can be skipped.
+ * symbol for the eye), its title and points; expanded, its figure, its instruction, "Explain
+ * more", the quiz or the Next button, and the hint ladder. Optional tasks can be skipped.
  *
  * Reflects `status` (current, open, waiting, done, shown, skipped) and `data-task` (the
  * task's id) as attributes.
@@ -97,6 +101,13 @@ export class RtTaskCard extends LitElement {
         display: block;
         margin-top: 8px;
       }
+      /* As wide as the column: a figure is drawn to be read at 300 px and scales without loss (SVG). */
+      .figure {
+        display: block;
+        width: 100%;
+        height: auto;
+        margin: 0 0 8px;
+      }
     `,
   ];
 
@@ -127,7 +138,7 @@ export class RtTaskCard extends LitElement {
     const head = html`
       <span class="mark" aria-hidden="true">${MARKS[view.status]}</span>
       <span class="label">
-        <span class="title">${localize(view.task.title, this.locale)}<span class="visually-hidden"> (${statusText(view)})</span></span>
+        <span class="title">${plainLevelText(view.task.title, this.locale)}<span class="visually-hidden"> (${statusText(view)})</span></span>
         <span class="tags">
           ${view.task.mandatory ? nothing : html`<span class="tag muted">${msg('optional')}</span>`}
           ${view.task.points > 0 ? html`<span class="tag muted" title=${msg('Points')}>${finished && view.prediction?.stage !== 'wait' ? msg(str`${view.points} pts`) : msg(str`${view.task.points} pts`)}</span>` : nothing}
@@ -149,8 +160,9 @@ export class RtTaskCard extends LitElement {
     const send = (command: QuestCommand) => fire(this, QUEST_COMMAND, command);
     return html`
       ${checksLine(view, this.locale)}
-      <p>${localize(view.task.text, this.locale)}</p>
-      ${view.task.more ? explainMore(localize(view.task.more, this.locale), () => send({ kind: 'explain', task: id })) : nothing}
+      ${view.task.figure ? this.figure(view.task.figure) : nothing}
+      <p>${levelText(view.task.text, this.locale)}</p>
+      ${view.task.more ? explainMore(levelText(view.task.more, this.locale), () => send({ kind: 'explain', task: id })) : nothing}
       ${view.kind === 'quiz' ? html`<rt-quiz .task=${view} locale=${this.locale}></rt-quiz>` : nothing}
       ${finished
         ? nothing
@@ -160,6 +172,11 @@ export class RtTaskCard extends LitElement {
             ${view.required ? nothing : html`<div class="actions"><button class="link" title=${msg('Leave this optional task out (no points)')} @click=${() => send({ kind: 'skip', task: id })}>${msg('Skip')}</button></div>`}
           `}
     `;
+  }
+
+  private figure(figure: NonNullable<Task['figure']>) {
+    const url = figureUrl(figure.src);
+    return url ? html`<img class="figure" src=${url} alt=${plainLevelText(figure.alt, this.locale)} />` : nothing;
   }
 }
 

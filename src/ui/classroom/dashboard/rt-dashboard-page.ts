@@ -13,6 +13,7 @@ import { issueText } from '../../../i18n/issue-text.ts';
 import { currentLocale } from '../../../i18n/locale.ts';
 import { surveyById } from '../../../classroom/surveys.ts';
 import { localize, type Locale } from '../../../quest/localized-text.ts';
+import { plainLevelText } from '../../../quest/text-markup.ts';
 import { playableLevels } from '../../../quest/level-index.ts';
 import { dashboardPageStyles } from './dashboard-page.css.ts';
 import './rt-dashboard-completion.ts';
@@ -29,11 +30,11 @@ function levelNames(locale: Locale) {
   return {
     level: (id: string) => {
       const level = levels.get(id);
-      return level ? localize(level.title, locale) : id;
+      return level ? plainLevelText(level.title, locale) : id;
     },
     task: (levelId: string, id: string) => {
       const task = levels.get(levelId)?.tasks.find((candidate) => candidate.id === id);
-      return task ? localize(task.title, locale) : id;
+      return task ? plainLevelText(task.title, locale) : id;
     },
   };
 }
