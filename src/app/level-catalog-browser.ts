@@ -1,4 +1,4 @@
-import { loadLevels, type LevelCatalog } from '../quest/level-index.ts';
+import { loadLevelGuide, loadLevels, type LevelCatalog, type LevelGuide } from '../quest/level-index.ts';
 
 /**
  * The level catalog in the browser. The files are bundled as text, not as JSON modules, so
@@ -15,4 +15,10 @@ export function loadBrowserCatalog(): LevelCatalog {
   const index = Object.values(indexText)[0];
   if (index === undefined) return { chapters: [], errors: ['(root): levels/index.json is missing from this build'] };
   return loadLevels(index, (name) => byName.get(name));
+}
+
+/** Each level's idea and the presets of levels/index.json, for the teacher page. */
+export function loadBrowserLevelGuide(): LevelGuide {
+  const index = Object.values(indexText)[0];
+  return index === undefined ? { ideas: {}, presets: [] } : loadLevelGuide(index);
 }

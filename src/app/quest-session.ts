@@ -294,8 +294,8 @@ export class QuestSession {
 
   /**
    * Follows the tab's visibility (hidden time is not idle time) and ticks the engine once a
-   * second, only while a level is open and the tab is seen, so the first hint can come by
-   * itself. Listens for other tabs' saves (`storage` events of this session's storage).
+   * second, only while a level is open and the tab is seen, so a hint can be offered after
+   * idle time. Listens for other tabs' saves (`storage` events of this session's storage).
    */
   attach(document: Document): () => void {
     let timer: ReturnType<typeof setInterval> | undefined;

@@ -1,5 +1,5 @@
 import type { SurveyAnswers } from './survey-answers.ts';
-import type { TaskAttempt } from './task-attempts.ts';
+import { hintsOpened, type TaskAttempt } from './task-attempts.ts';
 
 /**
  * A learner's task attempts as rows of the CSV export's columns (docs/classroom.md defines
@@ -29,6 +29,8 @@ export const CSV_COLUMNS = [
   'how',
   'hints_text',
   'hints_guidance',
+  'hints_offered',
+  'hints_opened',
   'shown_by_app',
   'attempts',
   'quiz_answers',
@@ -90,6 +92,8 @@ export function attemptRows(owner: AttemptOwner, attempts: readonly TaskAttempt[
       attempt.how ?? '',
       attempt.hintsText,
       attempt.hintsGuidance,
+      attempt.hintsOffered,
+      hintsOpened(attempt),
       attempt.how === 'shown',
       number,
       attempt.quizAnswers,

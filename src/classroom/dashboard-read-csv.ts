@@ -17,13 +17,19 @@ import type { SurveyAnswers } from './survey-answers.ts';
 
 const REQUIRED = ['participant', 'level', 'task', 'started_at', 'duration_ms', 'active_ms'] as const;
 
-/** The attempt's counts and times and the columns they come from; an empty cell is 0. */
+/**
+ * The attempt's counts and times and the columns they come from; an empty cell is 0.
+ * `hints_opened` is not read: it is hints_text + hints_guidance. A file from before
+ * hints_offered has no offers, and its hints_text and hints_guidance also count the
+ * rungs that came by themselves after idle time (docs/classroom.md).
+ */
 const NUMBER_COLUMNS = {
   durationMs: 'duration_ms',
   activeMs: 'active_ms',
   points: 'points',
   hintsText: 'hints_text',
   hintsGuidance: 'hints_guidance',
+  hintsOffered: 'hints_offered',
   quizAnswers: 'quiz_answers',
 } as const;
 type Counts = { -readonly [Field in keyof typeof NUMBER_COLUMNS]: number };

@@ -3,9 +3,10 @@ import type { TaskSummary } from './dashboard-summary.ts';
 
 /**
  * Sticking points: the tasks of a level where clearly more learners needed help than on
- * the level's other tasks. "Needing help" is a hint, "show me", or not finishing a
- * mandatory task (dashboard-summary.ts). In a typical class most tasks see some hints, many
- * offered after 45 s of idling, so a fixed share alone flags nearly every task; an outlier
+ * the level's other tasks. "Needing help" is a hint opened, "show me", or not finishing a
+ * mandatory task (dashboard-summary.ts); a hint offered after idle time counts only once
+ * opened. In a typical class most tasks see some hints, so a fixed share alone flags too
+ * many tasks; an outlier
  * is a task whose share is both high and well above what is usual in its level:
  *
  *   share ≥ STUCK_MIN_SHARE  and  share ≥ STUCK_TIMES_TYPICAL × (median share of the level's mandatory tasks)

@@ -1,5 +1,6 @@
 import type { ClassRecord } from './dashboard-record.ts';
 import { fiveNumbers, type FiveNumbers } from './dashboard-stats.ts';
+import { hintsOpened } from './task-attempts.ts';
 
 /**
  * A class at a glance (spec/classroom.md "Teacher dashboard"): per level and task how long
@@ -25,11 +26,12 @@ export interface TaskSummary {
   /** Active milliseconds per learner who completed it (done or shown), in learner order. */
   times: number[];
   stats: FiveNumbers | null;
+  /** Text hints and guidance rings opened, in total (hints offered after idle time count once opened). */
   hintsText: number;
   hintsGuidance: number;
-  /** Learners who asked for (or were given) at least one hint. */
+  /** Learners who opened at least one hint. */
   learnersWithHints: number;
-  /** Learners who needed a hint or "show me", or (a mandatory task) did not finish it. */
+  /** Learners who opened a hint or used "show me", or (a mandatory task) did not finish it. */
   learnersNeedingHelp: number;
 }
 
@@ -101,14 +103,13 @@ function summarizeTask(level: string, task: string, records: readonly ClassRecor
     if (attempts.length === 0) continue;
     summary.learners++;
     summary.mandatory ||= attempts[0].mandatory;
-    const hintsText = sum(attempts, (attempt) => attempt.hintsText);
-    const hintsGuidance = sum(attempts, (attempt) => attempt.hintsGuidance);
-    summary.hintsText += hintsText;
-    summary.hintsGuidance += hintsGuidance;
-    if (hintsText + hintsGuidance > 0) summary.learnersWithHints++;
+    summary.hintsText += sum(attempts, (attempt) => attempt.hintsText);
+    summary.hintsGuidance += sum(attempts, (attempt) => attempt.hintsGuidance);
+    const opened = sum(attempts, hintsOpened);
+    if (opened > 0) summary.learnersWithHints++;
     const finished = attempts.findIndex((attempt) => attempt.how !== null);
     const how = attempts[finished]?.how ?? null;
-    if (hintsText + hintsGuidance > 0 || how === 'shown' || (how === null && summary.mandatory)) summary.learnersNeedingHelp++;
+    if (opened > 0 || how === 'shown' || (how === null && summary.mandatory)) summary.learnersNeedingHelp++;
     if (!how) continue;
     summary[how]++;
     if (how !== 'skipped') summary.times.push(sum(attempts.slice(0, finished + 1), (attempt) => attempt.activeMs));

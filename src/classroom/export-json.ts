@@ -4,13 +4,19 @@ import type { Assignment } from './assignment.ts';
 import { assignmentId } from './assignment-id.ts';
 import type { ExportInput } from './export-context.ts';
 import { learnerId } from './learner-identity.ts';
+import { hintsOpened, readLog, type TaskAttempt } from './task-attempts.ts';
 import type { SurveySubmission } from './survey-answers.ts';
 
 /**
  * The JSON export: everything a researcher (or the class dashboard) needs from one
  * learner, in one file. `events` is the complete event log, never shortened: `t` is
  * milliseconds since `events.startedAt` on the monotonic clock (src/quest/event-log.ts).
+ * `attempts` are the CSV's rows read from that log (task-attempts.ts), for a reader who
+ * wants the per-task figures without reading events; the dashboard reads the events.
  */
+
+/** A task attempt as the CSV has it, with the hints it counts as used. */
+export type ExportedAttempt = TaskAttempt & { hintsOpened: number };
 
 export const EXPORT_FORMAT = 'ray-tracer-quest-export';
 export const EXPORT_VERSION = 1;
@@ -27,6 +33,7 @@ export interface QuestExport {
   assignment: (Assignment & { id: string }) | null;
   progress: { points: number; levels: Progress['levels']; badges: Progress['badges'] };
   events: EventLogData;
+  attempts: ExportedAttempt[];
   survey: SurveySubmission | null;
 }
 
@@ -42,6 +49,7 @@ export function buildExport(input: ExportInput): QuestExport {
     assignment: assignment ? { id: assignmentId(assignment), ...assignment } : null,
     progress: { points: pointsOf(progress), levels: progress.levels, badges: progress.badges },
     events: progress.log,
+    attempts: readLog(progress.log).attempts.map((attempt) => ({ ...attempt, hintsOpened: hintsOpened(attempt) })),
     survey: input.survey,
   };
 }

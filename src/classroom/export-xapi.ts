@@ -1,6 +1,6 @@
 import type { LoggedEvent } from '../quest/event-log.ts';
 import { fnv1a } from './assignment-id.ts';
-import { readLog } from './task-attempts.ts';
+import { hintsOpened, readLog } from './task-attempts.ts';
 import { assignmentLabel, exportOwner, type ExportInput } from './export-context.ts';
 import { isoAt, isoDuration } from './iso-duration.ts';
 import { activities, EXTENSIONS, VERBS, XAPI_BASE, type XapiActivity, type XapiVerb } from './xapi-vocabulary.ts';
@@ -11,8 +11,10 @@ import { activities, EXTENSIONS, VERBS, XAPI_BASE, type XapiActivity, type XapiV
  * a verb, an activity, a timestamp and where it fits a result; durations are ISO 8601.
  *
  * Statement ids are derived from their content, so sending the same file twice does not
- * record anything twice (the store refuses a known id). Render and tab events are left
- * out: they are the app's, not learning; the JSON export has them.
+ * record anything twice (the store refuses a known id). Render and tab events and hint
+ * offers are left out: they are the app's, not learning; the JSON export has them. A task's
+ * completion says how many hints were offered and how many the learner opened; each rung
+ * shown is an "experienced" statement of its own, with its trigger (event-log.ts).
  *
  * The actor is an account on the school's home page (the assignment's `xapiHomePage`, else
  * the app's own address), named by the participant code or, without one, by the browser's
@@ -89,7 +91,12 @@ export function exportXapi(input: ExportInput): XapiStatement[] {
       success: attempt.how === 'done' && attempt.quizCorrect !== false,
       score: { raw: attempt.points, min: 0 },
       duration: isoDuration(attempt.durationMs),
-      extensions: { [EXTENSIONS.how]: attempt.how, [EXTENSIONS.activeMs]: attempt.activeMs },
+      extensions: {
+        [EXTENSIONS.how]: attempt.how,
+        [EXTENSIONS.activeMs]: attempt.activeMs,
+        [EXTENSIONS.hintsOffered]: attempt.hintsOffered,
+        [EXTENSIONS.hintsOpened]: hintsOpened(attempt),
+      },
     };
     add(attempt.how === 'skipped' ? VERBS.skipped : VERBS.completed, activities.task(attempt.level, attempt.task), attempt.completedAt, result, attempt.level);
   }

@@ -36,8 +36,16 @@ export interface TaskAttempt {
   /** Null when the attempt ended unfinished; 'shown' is a "show me". */
   how: HowCompleted | null;
   points: number;
+  /** Text hints the learner opened (asked for, or opened from an offer); they count as used. */
   hintsText: number;
+  /** "Show me where" rings the learner opened, the same way. */
   hintsGuidance: number;
+  /**
+   * Hints the app offered after idle time, opened or not. In logs from before offers, a
+   * rung the app showed by itself after idle time (trigger `idle`) counts here, not as opened:
+   * the learner did not ask for it.
+   */
+  hintsOffered: number;
   /** Quiz answers given (a wrong prediction and then the right one is 2). */
   quizAnswers: number;
   /** Whether the last quiz answer was right; null when no answer was given (not a quiz, or "show me"). */
@@ -115,6 +123,7 @@ export function readLog(log: EventLogData): ReadLog {
       points: 0,
       hintsText: 0,
       hintsGuidance: 0,
+      hintsOffered: 0,
       quizAnswers: 0,
       quizCorrect: null,
     };
@@ -171,12 +180,22 @@ export function readLog(log: EventLogData): ReadLog {
         if (attempt) closeAttempt(attempt, event.t, { how: event.how, points: event.points });
         break;
       }
-      case 'hint.shown': {
-        touch(event.level, event.task, event.t);
-        // The show-me rung is counted when it is used: the task is then completed as 'shown'.
+      case 'hint.offered': {
+        // The app's doing, not a move of the learner's: it starts no optional task's time.
         const attempt = openAttempts.get(key(event.level, event.task))?.attempt;
-        if (attempt && event.step === 'text') attempt.hintsText++;
-        if (attempt && event.step === 'guidance') attempt.hintsGuidance++;
+        if (attempt) attempt.hintsOffered++;
+        break;
+      }
+      case 'hint.shown': {
+        // An older log's rung that came by itself after idle time: offered, not opened.
+        const opened = event.trigger !== 'idle';
+        if (opened) touch(event.level, event.task, event.t);
+        const attempt = openAttempts.get(key(event.level, event.task))?.attempt;
+        if (!attempt) break;
+        if (!opened) attempt.hintsOffered++;
+        // The show-me rung is counted when it is used: the task is then completed as 'shown'.
+        else if (event.step === 'text') attempt.hintsText++;
+        else if (event.step === 'guidance') attempt.hintsGuidance++;
         break;
       }
       case 'quiz.answered': {
@@ -195,4 +214,9 @@ export function readLog(log: EventLogData): ReadLog {
   for (const open of [...openAttempts.values()]) closeAttempt(open, lastT);
   for (const open of [...openVisits.values()]) closeVisit(open, lastT);
   return { attempts, visits };
+}
+
+/** The hints an attempt counts as used (text and guidance the learner opened; "show me" is its `how`). */
+export function hintsOpened(attempt: Pick<TaskAttempt, 'hintsText' | 'hintsGuidance'>): number {
+  return attempt.hintsText + attempt.hintsGuidance;
 }

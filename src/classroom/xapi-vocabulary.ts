@@ -54,10 +54,12 @@ export const activities = {
   question: (survey: string, question: string) => activity(`surveys/${survey}/questions/${question}`, 'question', question),
 };
 
-/** Extensions carry what the spec's fields do not: how a task was completed, active time, the app's version. */
+/** Extensions carry what the spec's fields do not: how a task was completed, active time, hints, the app's version. */
 export const EXTENSIONS = {
   how: `${XAPI_BASE}/extensions/how`,
   activeMs: `${XAPI_BASE}/extensions/active-ms`,
+  hintsOffered: `${XAPI_BASE}/extensions/hints-offered`,
+  hintsOpened: `${XAPI_BASE}/extensions/hints-opened`,
   trigger: `${XAPI_BASE}/extensions/trigger`,
   appVersion: `${XAPI_BASE}/extensions/app-version`,
 } as const;

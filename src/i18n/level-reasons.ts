@@ -87,4 +87,5 @@ export const LEVEL_REASONS: readonly Rule[] = [
   [/^there is no file (levels\/\S+)$/, (file) => msg(str`there is no file ${file}`)],
   [/^must be (".*"), the name index\.json lists this file under, got (".*")$/, (id, got) => msg(str`must be ${id}, the name index.json lists this file under, got ${got}`)],
   [/^must be (".*"), the chapter index\.json lists it in, got (".*")$/, (chapter, got) => msg(str`must be ${chapter}, the chapter index.json lists it in, got ${got}`)],
+  [/^(".*") is not a level of any chapter$/, (id) => msg(str`${id} is not a level of any chapter`)],
 ];

@@ -14,7 +14,7 @@ export const badgeSchema = z.discriminatedUnion('kind', [
   z.strictObject({ kind: z.literal('sandbox-saved') }),
   /** Every mandatory task of every playable level of the chapter. */
   z.strictObject({ kind: z.literal('chapter-done'), chapter: id() }),
-  /** A level passed without any hint (text, guidance or show-me). */
+  /** A level passed without opening any hint (text, guidance or show-me); an offer left alone does not count. */
   z.strictObject({ kind: z.literal('no-hints'), level: id() }),
   /** Every task of a level, optional ones too, done by the learner (not shown, not skipped). */
   z.strictObject({ kind: z.literal('every-task'), level: id() }),

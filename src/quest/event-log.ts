@@ -33,6 +33,21 @@ export type HowCompleted = (typeof HOW_COMPLETED)[number];
 export const HINT_STEPS = ['text', 'guidance', 'show-me'] as const;
 export type HintStep = (typeof HINT_STEPS)[number];
 
+/** The rungs the app offers by itself after idle time ("show me" is only ever asked for). */
+export const OFFERED_STEPS = ['text', 'guidance'] as const;
+export type OfferedStep = (typeof OFFERED_STEPS)[number];
+
+/**
+ * Why a hint was shown. `asked`: the learner pressed the ladder's button; `offered`: the
+ * learner opened a hint the app offered after idle time (`hint.offered`). Both are opened
+ * by the learner and count as used. `idle` is only in logs from before offers existed: the
+ * app showed the rung by itself after idle time, without the learner asking. It still loads;
+ * the exports and the dashboard read it as offered, not opened (docs/classroom.md), while the
+ * saved progress keeps the hint count it had (its "No hints needed" badge is not given back).
+ */
+export const HINT_TRIGGERS = ['asked', 'offered', 'idle'] as const;
+export type HintTrigger = (typeof HINT_TRIGGERS)[number];
+
 const t = z.number().min(0);
 /** Level and task ids are kebab ids of at most 64 characters (kebab-id.ts); the log allows any short text. */
 const level = z.string().max(ID_MAX);
@@ -57,8 +72,14 @@ export const loggedEventSchema = z.discriminatedUnion('type', [
   /** The learner's first action towards an optional task (its time starts here, not when the level opened). */
   z.strictObject({ t, id, type: z.literal('task.started'), level, task }),
   z.strictObject({ t, id, type: z.literal('task.completed'), level, task, ...taskFlags, how: z.enum(HOW_COMPLETED), points: z.number().min(0) }),
-  /** A rung of the hint ladder; `trigger` says whether the learner asked or sat idle. */
-  z.strictObject({ t, id, type: z.literal('hint.shown'), level, task, step: z.enum(HINT_STEPS), trigger: z.enum(['asked', 'idle']) }),
+  /**
+   * After idle time on its task, the app offered the next rung: the learner sees that a hint
+   * is ready, not the hint. It costs nothing; opening it is a `hint.shown` with trigger
+   * `offered`. (Older logs have none: they show the rung at once, trigger `idle`.)
+   */
+  z.strictObject({ t, id, type: z.literal('hint.offered'), level, task, step: z.enum(OFFERED_STEPS) }),
+  /** A rung of the hint ladder the learner opened; `trigger` says how (HINT_TRIGGERS). */
+  z.strictObject({ t, id, type: z.literal('hint.shown'), level, task, step: z.enum(HINT_STEPS), trigger: z.enum(HINT_TRIGGERS) }),
   /** "Explain more" opened, for a task or (task null) the level's intro. */
   z.strictObject({ t, id, type: z.literal('explanation.expanded'), level, task: task.nullable() }),
   /** A prediction: a quiz's `choice` (its position in the level file) or an estimate's `value`. */

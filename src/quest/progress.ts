@@ -34,7 +34,11 @@ export type TaskRecord = z.output<typeof taskRecordSchema>;
 const levelProgressSchema = z.strictObject({
   /** The completed tasks by id. */
   tasks: z.record(idKey(), taskRecordSchema),
-  /** Hint rungs shown in this level (for the no-hints badge). */
+  /**
+   * Hint rungs the learner opened in this level (for the no-hints badge); an offer after idle
+   * time counts only once opened. Progress saved before offers existed also counted the
+   * rungs shown by themselves after idle time (event-log.ts HINT_TRIGGERS): it keeps them.
+   */
   hintsUsed: z.number().int().min(0),
 });
 export type LevelProgress = z.output<typeof levelProgressSchema>;

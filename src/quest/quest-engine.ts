@@ -2,7 +2,7 @@ import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
 import type { Scene } from '../scene/scene.ts';
 import { sameBadge, type Badge, type EarnedBadge } from './badges.ts';
-import { EventLog, systemClock, type HintStep, type HowCompleted, type LoggedEvent, type QuestClock, type QuestEvent } from './event-log.ts';
+import { EventLog, systemClock, type HintStep, type HowCompleted, type LoggedEvent, type OfferedStep, type QuestClock, type QuestEvent } from './event-log.ts';
 import { APP_ONLY_ACTION } from './lab-action-schema.ts';
 import { choiceOrder } from './choice-order.ts';
 import { checkGoal, fitsGoal, isRightPrediction, NO_EVENTS, tallyAction, touchesGoal, type EventTally, type Prediction } from './goal-check.ts';
@@ -31,8 +31,9 @@ import { reconcileLevels } from './progress-reconcile.ts';
  * Listeners hear about every change, with the events it logged.
  */
 
-/** Idle time on a task before its first text hint appears by itself: soon enough to come
- * before frustration, late enough not to interrupt someone reading or trying. */
+/** Idle time on a task before its first hint is offered: soon enough to come before
+ * frustration, late enough not to interrupt someone reading or trying. The offer only says
+ * a hint is ready; the learner may be thinking, so it costs nothing unless opened. */
 export const IDLE_HINT_MS = 45_000;
 
 export interface QuestEngineOptions {
@@ -90,6 +91,8 @@ export interface TaskView {
   hints: LocalizedText[];
   /** What asking for help does next (`show-me`: offer the "Show me" button); null when nothing is left. */
   nextHint: HintStep | null;
+  /** The app offered the next rung after idle time and the learner has not opened it yet. */
+  hintOffered: boolean;
 }
 
 export interface LevelView {
@@ -122,6 +125,8 @@ interface ActiveLevel {
   /** Event goals matched since each watched task was shown. */
   tallies: Map<string, EventTally>;
   hints: Map<string, HintProgress>;
+  /** Tasks whose first rung was offered after idle time (once per visit). */
+  offered: Set<string>;
   /** Tasks whose "show me" was used: they complete as shown. */
   shownByApp: Set<string>;
   /** Optional tasks the learner has started on in this visit (`task.started` logged). */
@@ -258,6 +263,7 @@ export class QuestEngine {
       current: undefined,
       tallies: new Map(),
       hints: new Map(),
+      offered: new Set(),
       shownByApp: new Set(),
       started: new Set(),
       ring: null,
@@ -383,9 +389,11 @@ export class QuestEngine {
 
   /**
    * Climbs the task's hint ladder one rung: the next text hint, else the ring on its guide.
-   * Returns the rung shown, or undefined when only "show me" (or nothing) is left.
+   * When that rung was offered after idle time, this opens the offer. Either way the learner
+   * asked: the hint counts as used. Returns the rung shown, or undefined when only "show me"
+   * (or nothing) is left.
    */
-  askHint(taskId: string, trigger: 'asked' | 'idle' = 'asked'): 'text' | 'guidance' | undefined {
+  askHint(taskId: string): OfferedStep | undefined {
     const found = this.workableTask(taskId);
     if (!found) return undefined;
     const { active, task } = found;
@@ -393,6 +401,7 @@ export class QuestEngine {
     const step = nextHintStep(task, hints);
     if (step !== 'text' && step !== 'guidance') return undefined;
     this.startOptional(active, taskId);
+    const trigger = active.offered.delete(taskId) ? 'offered' : 'asked';
     active.hints.set(taskId, climb(hints, step));
     if (step === 'guidance' && task.guide) active.ring = { task: taskId, target: task.guide };
     this.hintShown(active, task, step, trigger);
@@ -446,11 +455,22 @@ export class QuestEngine {
 
   // ─── Time and attention ────────────────────────────────────────────────────
 
-  /** Called by the UI's timer: offers the current task's first text hint after idle time. */
+  /**
+   * Called by the UI's timer: after idle time on the current task, before any of its hints,
+   * offers its first rung, once per visit. Nothing is shown and nothing counts as used until
+   * the learner opens it (askHint). An info step is read, not done: the task card has no
+   * hints for it, so nothing is offered there.
+   */
   tick(): void {
-    const task = this.active?.current;
-    if (!task || !this.visible || (this.active?.hints.get(task.id) ?? NO_HINTS).texts > 0) return;
-    if (this.log.now() - this.lastActivity >= this.idleHintMs) this.askHint(task.id, 'idle');
+    const active = this.active;
+    const task = active?.current;
+    if (!active || !task || !this.visible || kindOfGoal(task.goal) === 'info' || active.offered.has(task.id) || active.hints.has(task.id)) return;
+    if (this.log.now() - this.lastActivity < this.idleHintMs) return;
+    const step = nextHintStep(task, NO_HINTS);
+    if (step !== 'text' && step !== 'guidance') return;
+    active.offered.add(task.id);
+    this.append({ type: 'hint.offered', level: active.level.id, task: task.id, step });
+    this.publish();
   }
 
   /** The tab was hidden or shown (document.visibilitychange, pagehide): active time leaves out hidden time. */
@@ -639,7 +659,8 @@ export class QuestEngine {
     this.append({ type: 'task.started', level: active.level.id, task: taskId });
   }
 
-  private hintShown(active: ActiveLevel, task: Task, step: HintStep, trigger: 'asked' | 'idle'): void {
+  /** A rung the learner opened: it counts against the level's "No hints needed" badge. */
+  private hintShown(active: ActiveLevel, task: Task, step: HintStep, trigger: 'asked' | 'offered'): void {
     const { level } = active;
     const before = this.recordOf(level.id);
     this.levelProgress = { ...this.levelProgress, [level.id]: { ...before, hintsUsed: before.hintsUsed + 1 } };
@@ -684,6 +705,7 @@ export class QuestEngine {
       ...(checks ? { checks } : {}),
       hints: task.hints.slice(0, hints.texts),
       nextHint: done ? null : nextHintStep(task, hints),
+      hintOffered: !done && active.offered.has(task.id),
     };
   }
 

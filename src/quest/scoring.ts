@@ -7,8 +7,9 @@ import type { LevelProgress } from './progress.ts';
 
 /**
  * Points for a completed task. A task completed by "show me" is shown, not earned: no
- * points (it still counts for the gate, so nobody is stuck). Text hints and guidance cost
- * nothing but the level's no-hints badge. A wrong quiz prediction completes the task
+ * points (it still counts for the gate, so nobody is stuck). Text hints and guidance the
+ * learner opens cost nothing but the level's no-hints badge (a hint offered after idle time
+ * costs nothing until opened: quest-engine.ts). A wrong quiz prediction completes the task
  * without points: predicting is the exercise, checking in the scene the lesson.
  */
 export function pointsFor(task: Task, how: HowCompleted, correct?: boolean): number {

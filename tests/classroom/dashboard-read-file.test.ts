@@ -44,6 +44,13 @@ describe('reading one dropped file for the dashboard', () => {
     expect(fromJson.record).toMatchObject({ learnerId: 'P01', attemptId: good.learner.attemptId, installId: good.learner.installId });
   });
 
+  it('reads a CSV export from before hint offers: no offers, its hints as opened', () => {
+    const header = 'participant,level,task,started_at,completed_at,duration_ms,active_ms,how,hints_text,hints_guidance';
+    const read = readExportFile('old.csv', `${header}\r\nP1,01-introduction,orbit,2026-03-09T09:00:00.000Z,2026-03-09T09:00:05.000Z,5000,5000,done,1,0\r\n`);
+    if (!read.ok) throw new Error(read.reason);
+    expect(read.record.attempts).toMatchObject([{ task: 'orbit', hintsText: 1, hintsGuidance: 0, hintsOffered: 0 }]);
+  });
+
   it('names why a file is skipped', () => {
     expect(reason('a.json', '')).toBe('the file is empty');
     expect(reason('a.json', json(good).slice(0, 200))).toMatch(/^the file is damaged: \(root\): not valid JSON at line \d+, column \d+/);

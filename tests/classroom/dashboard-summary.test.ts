@@ -22,6 +22,7 @@ const attempt = (task: string, activeMs: number, how: TaskAttempt['how'], extra:
   points: how === 'done' ? 10 : 0,
   hintsText: 0,
   hintsGuidance: 0,
+  hintsOffered: 0,
   quizAnswers: 0,
   quizCorrect: null,
   ...extra,
@@ -46,7 +47,8 @@ describe('the class summary', () => {
     // Needed two attempts (left the level once) and two hints.
     record('P1', [attempt('x', 20_000, null, { hintsText: 1 }), attempt('x', 10_000, 'done', { hintsGuidance: 1 })], true),
     record('P2', [attempt('x', 40_000, 'shown', { hintsText: 1 })], true),
-    record('P3', [attempt('x', 60_000, 'done'), attempt('y', 5000, 'skipped', { mandatory: false })], false),
+    // Offered a hint after idle time and did not open it: no help needed.
+    record('P3', [attempt('x', 60_000, 'done', { hintsOffered: 1 }), attempt('y', 5000, 'skipped', { mandatory: false })], false),
     record('P4', [attempt('x', 99_000, null)], false),
   ];
 

@@ -20,9 +20,11 @@ const INSTALL = '11111111-2222-4333-8444-555555555555';
 const ATTEMPT = '66666666-7777-4888-9999-aaaaaaaaaaaa';
 
 /**
- * A learner opens level 1, hides the tab for 20 s while on "orbit", finishes it; "select" is
- * shown, they leave the level, come back (a second attempt) and finish it by "show me";
- * an optional task is skipped (touched only the second time); a quiz is answered wrong; an
+ * A learner opens level 1, asks for a hint and hides the tab for 20 s while on "orbit",
+ * finishes it; "select" is shown, its ring comes by itself after idle time (a log from before
+ * hint offers), they leave the level, come back (a second attempt), open the hint offered
+ * after idle time and finish it by "show me"; an optional task is skipped (touched only the
+ * second time); a quiz is offered a hint that is not opened, and answered wrong; an
  * optional info step is never read.
  */
 const events: LoggedEvent[] = [
@@ -42,6 +44,8 @@ const events: LoggedEvent[] = [
   { t: 50_000, type: 'task.shown', level: 'l1', task: 'select', ...flags },
   { t: 50_000, type: 'task.shown', level: 'l1', task: 'extra', mandatory: false, required: false },
   { t: 51_000, type: 'task.started', level: 'l1', task: 'extra' },
+  { t: 51_200, type: 'hint.offered', level: 'l1', task: 'select', step: 'text' },
+  { t: 51_800, type: 'hint.shown', level: 'l1', task: 'select', step: 'text', trigger: 'offered' },
   { t: 52_000, type: 'explanation.expanded', level: 'l1', task: 'select' },
   { t: 53_500, type: 'task.completed', level: 'l1', task: 'select', ...flags, how: 'shown', points: 0 },
   { t: 54_000, type: 'task.completed', level: 'l1', task: 'extra', mandatory: false, required: false, how: 'skipped', points: 0 },
@@ -49,6 +53,7 @@ const events: LoggedEvent[] = [
   { t: 54_000, type: 'badge.earned', badge: { kind: 'first-render' } },
   { t: 60_000, type: 'task.shown', level: 'l1', task: 'guess', ...flags, kind: 'quiz' },
   { t: 60_500, type: 'task.shown', level: 'l1', task: 'read', ...flags, kind: 'info' },
+  { t: 60_700, type: 'hint.offered', level: 'l1', task: 'guess', step: 'text' },
   { t: 61_000, type: 'quiz.answered', level: 'l1', task: 'guess', choice: 2, correct: false },
   { t: 61_000, type: 'task.completed', level: 'l1', task: 'guess', ...flags, how: 'done', points: 5 },
   { t: 62_000, type: 'render.started', level: 'l1' },
@@ -119,11 +124,13 @@ describe('CSV export', () => {
     expect(rows.map((row) => `${row.task}#${row.attempts}:${row.how}`)).toEqual(['orbit#1:done', 'select#1:', 'select#2:shown', 'extra#1:skipped', 'guess#1:done', 'read#1:']);
     const [orbit, select1, select2, extra, guess, read] = rows;
     expect(orbit).toMatchObject({ mandatory: 'true', started_at: '2025-03-04T09:00:01.000Z', completed_at: '2025-03-04T09:00:31.000Z', duration_ms: '30000', hints_text: '1', hints_guidance: '0', shown_by_app: 'false', points: '10' });
-    // Unfinished: the level was closed.
-    expect(select1).toMatchObject({ completed_at: '', duration_ms: '9000', hints_guidance: '1' });
+    // Unfinished: the level was closed. Its ring came by itself (an older log): offered, not opened.
+    expect(select1).toMatchObject({ completed_at: '', duration_ms: '9000', hints_guidance: '0', hints_offered: '1', hints_opened: '0' });
     expect(select2).toMatchObject({ shown_by_app: 'true', duration_ms: '3500', points: '0', quiz_correct: '' });
     expect(extra).toMatchObject({ mandatory: 'false', started_at: '2025-03-04T09:00:51.000Z', duration_ms: '3000' });
     expect(guess).toMatchObject({ kind: 'quiz', quiz_answers: '1', quiz_correct: 'false', points: '5' });
+    // Hints asked for and offered ones opened count as opened; an offer left alone only as offered.
+    expect(rows.map((row) => `${row.task}#${row.attempts}:${row.hints_offered}/${row.hints_opened}`)).toEqual(['orbit#1:0/1', 'select#1:1/0', 'select#2:1/1', 'extra#1:0/0', 'guess#1:1/0', 'read#1:0/0']);
     // An info step is read, not done: never mandatory, even when it is required.
     expect(read).toMatchObject({ kind: 'info', mandatory: 'false' });
   });
@@ -173,6 +180,15 @@ describe('JSON export', () => {
     expect(data.assignment).toEqual({ id: assignmentId(assignment), ...assignment });
     expect(data.events).toEqual({ startedAt: START, events });
     expect(data.progress.points).toBe(10);
+    // The CSV's rows, for a reader who wants per-task figures without reading the events.
+    expect(data.attempts.map(({ task, hintsText, hintsGuidance, hintsOffered, hintsOpened }) => ({ task, hintsText, hintsGuidance, hintsOffered, hintsOpened }))).toEqual([
+      { task: 'orbit', hintsText: 1, hintsGuidance: 0, hintsOffered: 0, hintsOpened: 1 },
+      { task: 'select', hintsText: 0, hintsGuidance: 0, hintsOffered: 1, hintsOpened: 0 },
+      { task: 'select', hintsText: 1, hintsGuidance: 0, hintsOffered: 1, hintsOpened: 1 },
+      { task: 'extra', hintsText: 0, hintsGuidance: 0, hintsOffered: 0, hintsOpened: 0 },
+      { task: 'guess', hintsText: 0, hintsGuidance: 0, hintsOffered: 1, hintsOpened: 0 },
+      { task: 'read', hintsText: 0, hintsGuidance: 0, hintsOffered: 0, hintsOpened: 0 },
+    ]);
     expect(data.survey?.answers).toEqual({ 'computer-skill': 7, feedback: 'Nice, "really"' });
   });
 
@@ -233,9 +249,23 @@ describe('xAPI export', () => {
       // Answered wrong: completed, not a success.
       ['guess', false, 5, 'PT1S'],
     ]);
+    expect(completed.map((s) => [s.result?.extensions?.['https://raytracerquest.example/extensions/hints-offered'], s.result?.extensions?.['https://raytracerquest.example/extensions/hints-opened']])).toEqual([
+      [0, 1],
+      [1, 1],
+      [1, 0],
+    ]);
     expect(completed[0].object.id).toBe('https://raytracerquest.example/levels/l1/tasks/orbit');
     expect(completed[0].context.contextActivities.parent?.[0].id).toBe('https://raytracerquest.example/levels/l1');
     expect(statements.some((s) => s.verb.id === 'http://id.tincanapi.com/verb/skipped')).toBe(true);
+  });
+
+  it('reports each hint shown with its trigger, and no statement for an offer', () => {
+    const hints = statements.filter((s) => s.object.id.includes('/hints/'));
+    expect(hints.map((s) => [s.object.id.split('/tasks/')[1], s.result?.extensions?.['https://raytracerquest.example/extensions/trigger']])).toEqual([
+      ['orbit/hints/text', 'asked'],
+      ['select/hints/guidance', 'idle'],
+      ['select/hints/text', 'offered'],
+    ]);
   });
 
   it('reports quiz answers, the passed level, and the survey answers', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { readLog } from '../../src/classroom/task-attempts.ts';
+import { hintsOpened, readLog } from '../../src/classroom/task-attempts.ts';
 import type { LoggedEvent } from '../../src/quest/event-log.ts';
 
 const startedAt = '2026-03-09T09:00:00.000Z';
@@ -24,7 +24,8 @@ describe('reading a learner’s log as task attempts', () => {
         { t: 0, type: 'session.started', at: startedAt },
         { t: 100, type: 'level.opened', level: 'L1' },
         task(1000, 'a'),
-        { t: 3000, type: 'hint.shown', level: 'L1', task: 'a', step: 'text', trigger: 'idle' },
+        { t: 2500, type: 'hint.offered', level: 'L1', task: 'a', step: 'text' },
+        { t: 3000, type: 'hint.shown', level: 'L1', task: 'a', step: 'text', trigger: 'offered' },
         { t: 4000, type: 'tab.hidden' },
         { t: 9000, type: 'tab.visible' },
         { t: 9500, type: 'hint.shown', level: 'L1', task: 'a', step: 'guidance', trigger: 'asked' },
@@ -45,10 +46,31 @@ describe('reading a learner’s log as task attempts', () => {
         points: 10,
         hintsText: 1,
         hintsGuidance: 1,
+        hintsOffered: 1,
         quizAnswers: 0,
         quizCorrect: null,
       },
     ]);
+  });
+
+  it('counts a hint offered but not opened, or (an older log) shown by itself after idle time, as offered only', () => {
+    const { attempts } = readLog({
+      startedAt,
+      events: [
+        task(0, 'a'),
+        { t: 45_000, type: 'hint.offered', level: 'L1', task: 'a', step: 'text' },
+        completed(50_000, 'a', 'done'),
+        task(50_000, 'b'),
+        { t: 95_000, type: 'hint.shown', level: 'L1', task: 'b', step: 'text', trigger: 'idle' },
+        { t: 99_000, type: 'hint.shown', level: 'L1', task: 'b', step: 'text', trigger: 'asked' },
+        completed(100_000, 'b', 'done'),
+      ],
+    });
+    expect(attempts.map(({ task: name, hintsOffered, hintsText }) => ({ name, hintsOffered, hintsText }))).toEqual([
+      { name: 'a', hintsOffered: 1, hintsText: 0 },
+      { name: 'b', hintsOffered: 1, hintsText: 1 },
+    ]);
+    expect(attempts.map(hintsOpened)).toEqual([0, 1]);
   });
 
   it('does not count the time the page was closed (a reload)', () => {

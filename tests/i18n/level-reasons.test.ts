@@ -104,8 +104,13 @@ const LEVEL_MISTAKES: Record<string, (level: Level) => void> = {
 
 /** The reasons of the level index, through the same loader (levels/index.json with one mistake). */
 function indexReasons(): string[] {
-  const index = JSON.parse(levelText('index.json')) as { chapters: { id: string; levels: string[] }[] };
+  const index = JSON.parse(levelText('index.json')) as { chapters: { id: string; levels: string[] }[]; ideas: Record<string, unknown>; presets: { levels: string[] }[] };
   const [first, second] = index.chapters;
+  // A teacher's idea too long for its line; then an idea for a level no chapter lists.
+  const longIdea = structuredClone(index);
+  longIdea.ideas[first!.levels[0]!] = { en: 'x'.repeat(101) };
+  const tooLong = loadLevels(JSON.stringify(longIdea), levelText);
+  index.ideas['retired-level'] = 'A level that was removed';
   first!.levels.push('no-such-level', first!.levels[0]!);
   const twice = loadLevels(JSON.stringify(index), levelText);
   const wrongPlace = structuredClone(shading);
@@ -114,7 +119,7 @@ function indexReasons(): string[] {
   const moved = loadLevels(levelText('index.json'), (fileName) => (fileName === SHADING ? JSON.stringify(wrongPlace) : levelText(fileName)));
   const missing = loadLevels(levelText('index.json'), (fileName) => (fileName === SHADING ? undefined : levelText(fileName)));
   const brokenEntries = (catalog: ReturnType<typeof loadLevels>) => catalog.chapters.flatMap((chapter) => chapter.entries.flatMap((entry) => (entry.ok ? [] : entry.errors)));
-  return [...twice.errors, ...brokenEntries(moved), ...brokenEntries(missing)];
+  return [...twice.errors, ...tooLong.errors, ...brokenEntries(moved), ...brokenEntries(missing)];
 }
 
 const clock = { monotonicMs: () => 0, wallMs: () => Date.parse('2026-12-01T10:00:00Z') };
@@ -186,6 +191,8 @@ describe('a broken level in Dutch', () => {
     expect(dutch).toContain(`chapters[0].levels[${JSON.parse(levelText('index.json')).chapters[0].levels.length + 1}]: "${JSON.parse(levelText('index.json')).chapters[0].levels[0]}" komt meer dan één keer voor`);
     expect(dutch).toContain(`id: moet "${shading.id}" zijn, de naam waaronder index.json dit bestand noemt, maar is "shading-copy"`);
     expect(dutch).toContain('(het geheel): het bestand levels/03-shading.level.json bestaat niet');
+    expect(dutch).toContain('ideas.retired-level: "retired-level" staat in geen enkel hoofdstuk');
+    expect(dutch).toContainEqual(expect.stringMatching(/^ideas\.\S+\.en: .*100/));
   });
 
   it('says the reasons of saved progress and of an assignment link in Dutch', async () => {

@@ -76,4 +76,19 @@ describe('the event log', () => {
     expect(eventLogSchema.safeParse({ startedAt, events: [{ t: 5, type: 'level.opened', level: 'a'.repeat(65) }] }).success).toBe(false);
     expect(eventLogSchema.safeParse({ startedAt, events: [{ t: 5, type: 'task.completed', level: 'a', task: 'b', mandatory: true, required: true, how: 'done', points: 10 }] }).success).toBe(true);
   });
+
+  it('keeps hints offered and opened apart, and still reads a hint shown by itself in an older log', () => {
+    const startedAt = '2025-03-01T09:00:00.000Z';
+    const valid = (event: Record<string, unknown>) => eventLogSchema.safeParse({ startedAt, events: [{ t: 5, level: 'a', task: 'b', ...event }] }).success;
+    expect(valid({ type: 'hint.offered', step: 'text' })).toBe(true);
+    expect(valid({ type: 'hint.offered', step: 'guidance' })).toBe(true);
+    // "Show me" is only ever asked for, and an offer is not a hint shown.
+    expect(valid({ type: 'hint.offered', step: 'show-me' })).toBe(false);
+    expect(valid({ type: 'hint.offered', step: 'text', trigger: 'idle' })).toBe(false);
+    expect(valid({ type: 'hint.shown', step: 'text', trigger: 'asked' })).toBe(true);
+    expect(valid({ type: 'hint.shown', step: 'text', trigger: 'offered' })).toBe(true);
+    // Saved before offers existed: the rung appeared by itself after idle time.
+    expect(valid({ type: 'hint.shown', step: 'guidance', trigger: 'idle' })).toBe(true);
+    expect(valid({ type: 'hint.shown', step: 'text', trigger: 'bored' })).toBe(false);
+  });
 });

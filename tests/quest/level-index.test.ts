@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { loadLevels, playableLevels } from '../../src/quest/level-index.ts';
+import { readFileSync } from 'node:fs';
+import { IDEA_MAX, loadLevelGuide, loadLevels, playableLevels } from '../../src/quest/level-index.ts';
 import { catalogOf, levelFile, levelWithId } from '../support/quest-fixtures.ts';
 
 describe('loading the levels of an index', () => {
@@ -39,6 +40,56 @@ describe('loading the levels of an index', () => {
     expect(loadLevels('{"version": 2, "chapters": []}', () => undefined).errors).toEqual([
       'version: must be 1, got 2',
       'chapters: must have at least 1 items, got a list of 0 items',
+    ]);
+  });
+});
+
+describe('the ideas and presets of an index, for teachers', () => {
+  const index = (extra: Record<string, unknown>) =>
+    JSON.stringify({ version: 1, chapters: [{ id: 'a', title: 'A', levels: ['one', 'two'] }, { id: 'b', title: 'B', levels: ['three'] }], ...extra });
+  const idea = { en: 'looking around', nl: 'rondkijken' };
+  const preset = { id: 'short', title: 'Short', levels: ['three', 'one'] };
+
+  it('reads each level\'s idea and the presets; an index without them has none', () => {
+    expect(loadLevelGuide(index({ ideas: { one: idea, three: 'mirrors' }, presets: [preset] }))).toEqual({ ideas: { one: idea, three: 'mirrors' }, presets: [preset] });
+    expect(loadLevelGuide(index({}))).toEqual({ ideas: {}, presets: [] });
+    expect(loadLevelGuide('{ "version": 1')).toEqual({ ideas: {}, presets: [] });
+  });
+
+  it('refuses ideas and presets that name a level no chapter lists, a level twice, a preset id twice, an idea longer than a line', () => {
+    const errors = (extra: Record<string, unknown>) => loadLevels(index(extra), () => undefined).errors;
+    expect(errors({ ideas: { one: idea, gone: idea } })).toEqual(['ideas.gone: "gone" is not a level of any chapter']);
+    expect(errors({ presets: [{ ...preset, levels: ['one', 'four', 'one'] }] })).toEqual([
+      'presets[0].levels[1]: "four" is not a level of any chapter',
+      'presets[0].levels[2]: "one" is used more than once',
+    ]);
+    expect(errors({ presets: [preset, { ...preset, levels: ['two'] }] })).toEqual(['presets[1].id: "short" is used more than once']);
+    expect(errors({ presets: [{ ...preset, levels: [] }] })).toEqual(['presets[0].levels: must have at least 1 items, got a list of 0 items']);
+    expect(errors({ ideas: { two: { en: 'x'.repeat(IDEA_MAX + 1) } } })).toEqual([`ideas.two.en: must be at most ${IDEA_MAX} characters long`]);
+  });
+});
+
+describe('levels/index.json for teachers', () => {
+  const text = readFileSync(new URL('../../levels/index.json', import.meta.url), 'utf8');
+  const listed = (JSON.parse(text) as { chapters: { levels: string[] }[] }).chapters.flatMap((chapter) => chapter.levels);
+  const guide = loadLevelGuide(text);
+
+  it('names the one idea of every level, in English and Dutch', () => {
+    expect(Object.keys(guide.ideas)).toEqual(listed);
+    for (const id of listed) expect(guide.ideas[id], id).toEqual({ en: expect.any(String), nl: expect.any(String) });
+  });
+
+  it('has the short path for pupils: levels 1–5, 10, 11 and 14, in that order', () => {
+    expect(guide.presets.map((preset) => preset.id)).toEqual(['core-levels']);
+    expect(guide.presets[0].levels).toEqual([
+      '01-introduction',
+      '02-rays-from-the-camera',
+      '03-shading',
+      '04-shadows',
+      '05-reflections',
+      '10-area-lights',
+      '11-anti-aliasing',
+      '14-finding-your-way',
     ]);
   });
 });

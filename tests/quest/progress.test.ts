@@ -134,6 +134,19 @@ describe('export, import and reset', () => {
     expect(parseProgressJson(exportProgress(progress))).toEqual({ ok: true, progress });
   });
 
+  it('reads progress saved before hint offers: a hint shown by itself after idle time still loads, with its count', () => {
+    const progress = playedProgress(new FakeClock());
+    const old = JSON.parse(exportProgress(progress)) as Progress;
+    const last = old.log.events.at(-1)!.t;
+    old.log.events.push({ t: last + 45_000, id: 'saved.99', type: 'hint.shown', level: 'first', task: 'predict', step: 'text', trigger: 'idle' });
+    old.levels.first.hintsUsed = 1;
+    const read = parseProgressJson(JSON.stringify(old));
+    expect(read).toMatchObject({ ok: true, progress: { levels: { first: { hintsUsed: 1 } } } });
+    if (!read.ok) return;
+    const engine = new QuestEngine({ catalog: catalogOf([{ id: 'test', levels: [levelWithId('first')] }]), progress: read.progress, clock: new FakeClock() });
+    expect(engine.events.filter((event) => event.type === 'hint.shown')).toMatchObject([{ trigger: 'idle' }]);
+  });
+
   it('refuses a file that is not progress, with reasons', () => {
     expect(parseProgressJson('{"version": 1, "objects": []}')).toEqual({
       ok: false,

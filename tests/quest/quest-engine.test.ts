@@ -236,26 +236,67 @@ describe('the hint ladder', () => {
     expect(setup.status().predict).toBe('shown');
   });
 
-  it('offers the first text hint by itself after idle time, once, and not while the tab is hidden', () => {
+  it('offers the first rung after idle time, once, and not while the tab is hidden; an offer is not a hint used', () => {
     const setup = setUp();
     setup.open('first');
     const { clock, engine } = setup;
     clock.advance(29_000);
     engine.tick();
-    expect(setup.logged('hint.shown')).toEqual([]);
+    expect(setup.logged('hint.offered')).toEqual([]);
     engine.visibilityChanged(false);
     clock.advance(60_000);
     engine.tick();
-    expect(setup.logged('hint.shown')).toEqual([]);
+    expect(setup.logged('hint.offered')).toEqual([]);
     engine.visibilityChanged(true);
     clock.advance(30_000);
     engine.tick();
-    expect(setup.logged('hint.shown')).toMatchObject([{ task: 'orbit', step: 'text', trigger: 'idle' }]);
+    expect(setup.logged('hint.offered')).toMatchObject([{ level: 'first', task: 'orbit', step: 'text' }]);
+    // Offered, not shown: no hint text, nothing used, the ladder where it was.
+    expect(engine.level?.current).toMatchObject({ hintOffered: true, hints: [], nextHint: 'text' });
+    expect(setup.logged('hint.shown')).toEqual([]);
+    expect(engine.progress.levels.first?.hintsUsed ?? 0).toBe(0);
     clock.advance(60_000);
     engine.tick();
-    expect(setup.logged('hint.shown')).toHaveLength(1);
+    expect(setup.logged('hint.offered')).toHaveLength(1);
     expect(setup.logged('tab.hidden')).toHaveLength(1);
     expect(setup.logged('tab.visible')).toHaveLength(1);
+  });
+
+  it('opening an offered hint shows it and counts it as used, logged as offered', () => {
+    const setup = setUp();
+    setup.open('first');
+    const { clock, engine } = setup;
+    clock.advance(30_000);
+    engine.tick();
+    expect(engine.askHint('orbit')).toBe('text');
+    expect(engine.level?.current).toMatchObject({ hintOffered: false, hints: ['Drag in the view.'] });
+    expect(engine.progress.levels.first.hintsUsed).toBe(1);
+    // The next rung is the learner's own request.
+    expect(engine.askHint('orbit')).toBe('text');
+    expect(setup.logged('hint.shown').map(({ step, trigger }) => `${step}/${trigger}`)).toEqual(['text/offered', 'text/asked']);
+    // A task that already had a hint gets no offer.
+    clock.advance(60_000);
+    engine.tick();
+    expect(setup.logged('hint.offered')).toHaveLength(1);
+  });
+
+  it('offers nothing on an info step, nor on a task with only "show me" on its ladder', () => {
+    const quiet = levelFile((level) => {
+      level.id = 'first';
+      level.tasks.splice(1, 0, { id: 'read', title: 'Read', text: 'About rays.', goal: { info: true }, guide: 'tracer.supersampling' });
+      level.tasks[2].hints = [];
+    });
+    const setup = setUp({ levels: [quiet] });
+    const store = setup.open('first');
+    store.dispatch({ type: 'view.orbited' });
+    setup.clock.advance(60_000);
+    setup.engine.tick();
+    expect(setup.engine.level?.current?.task.id).toBe('read');
+    setup.engine.next();
+    setup.clock.advance(60_000);
+    setup.engine.tick();
+    expect(setup.engine.level?.current).toMatchObject({ task: { id: 'predict' }, nextHint: 'show-me', hintOffered: false });
+    expect(setup.logged('hint.offered')).toEqual([]);
   });
 
   it('counts any action as activity', () => {
@@ -299,6 +340,20 @@ describe('badges', () => {
     setup.engine.askHint('orbit');
     passFirstLevel(setup);
     expect(setup.engine.badges.some(({ badge }) => badge.kind === 'no-hints')).toBe(false);
+  });
+
+  it('keeps the no-hints badge for a hint offered but not opened, not for one opened', () => {
+    const badgeAfterIdle = (open: boolean) => {
+      const setup = setUp();
+      setup.open('first');
+      setup.clock.advance(30_000);
+      setup.engine.tick();
+      if (open) setup.engine.askHint('orbit');
+      passFirstLevel(setup);
+      return setup.engine.badges.some(({ badge }) => badge.kind === 'no-hints');
+    };
+    expect(badgeAfterIdle(false)).toBe(true);
+    expect(badgeAfterIdle(true)).toBe(false);
   });
 });
 

@@ -65,7 +65,13 @@ export function simulatedExport(index: number, seed = 1): QuestExport {
         break;
       }
       const stuck = rand();
-      if (stuck < 0.35) log({ type: 'hint.shown', level: level.id, task, step: 'text', trigger: rand() < 0.5 ? 'asked' : 'idle' }, between(10_000, 40_000));
+      if (stuck < 0.35) {
+        // Half ask for the hint, half open the one offered after idle time.
+        const offered = rand() >= 0.5;
+        const after = between(10_000, 40_000);
+        if (offered) log({ type: 'hint.offered', level: level.id, task, step: 'text' }, after);
+        log({ type: 'hint.shown', level: level.id, task, step: 'text', trigger: offered ? 'offered' : 'asked' }, offered ? 0 : after);
+      }
       if (stuck < 0.15) log({ type: 'hint.shown', level: level.id, task, step: 'guidance', trigger: 'asked' }, between(5000, 20_000));
       if (rand() < 0.1) {
         log({ type: 'tab.hidden' }, between(1000, 5000));

@@ -1,24 +1,27 @@
 import { msg, str } from '@lit/localize';
 import { html, LitElement, nothing } from 'lit';
 import QRCode from 'qrcode';
-import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
+import { loadBrowserCatalog, loadBrowserLevelGuide } from '../../app/level-catalog-browser.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import { assignmentSchema, CLASS_CODE, TITLE_MAX } from '../../classroom/assignment-schema.ts';
 import { compactAssignment } from '../../classroom/assignment-compact.ts';
+import { mandatoryTasks, withPreset } from '../../classroom/assignment-preset.ts';
 import { assignmentUrl } from '../../classroom/assignment-link.ts';
 import { SURVEY_IDS } from '../../classroom/surveys.ts';
 import type { Level } from '../../quest/level-schema.ts';
-import { playableLevels } from '../../quest/level-index.ts';
+import { playableLevels, type LevelPreset } from '../../quest/level-index.ts';
 import { currentLocale } from '../../i18n/locale.ts';
 import { plainLevelText } from '../../quest/text-markup.ts';
+import { localize } from '../../quest/localized-text.ts';
 import { teacherPageStyles } from './teacher-page.css.ts';
 import '../controls/rt-theme-toggle.ts';
 
 /**
  * @summary The teacher page (`#/teacher`): builds an assignment — title, levels and their
- * order, required tasks, other levels, language, participant code, closing survey — and
- * shows its link with a copy button, a QR code for the projector and a link to try it as a
- * student. Nothing is stored or sent: the link is the assignment.
+ * order (by hand or from a preset of levels/index.json, each level with its one idea),
+ * required tasks, other levels, language, participant code, closing survey — and shows its
+ * link with a copy button, a QR code for the projector and a link to try it as a student.
+ * Nothing is stored or sent: the link is the assignment.
  */
 export class RtTeacherPage extends LitElement {
   static override properties = {
@@ -27,6 +30,7 @@ export class RtTeacherPage extends LitElement {
     qr: { state: true },
     status: { state: true },
     stale: { state: true },
+    adding: { state: true },
   };
 
   static override styles = teacherPageStyles;
@@ -38,8 +42,11 @@ export class RtTeacherPage extends LitElement {
   declare status: string;
   /** A newer link is being made (compressing, drawing the QR code). */
   declare stale: boolean;
+  /** The level chosen under "Add a level" (its idea is shown under the list), or '' for the first. */
+  declare adding: string;
 
   private readonly levels: Level[] = playableLevels(loadBrowserCatalog());
+  private readonly guide = loadBrowserLevelGuide();
   private made = 0;
 
   constructor() {
@@ -60,10 +67,18 @@ export class RtTeacherPage extends LitElement {
     this.qr = null;
     this.status = '';
     this.stale = false;
+    this.adding = '';
   }
 
   override willUpdate(changed: Map<string, unknown>): void {
     if (changed.has('assignment')) void this.makeLink();
+  }
+
+  override updated(): void {
+    // The levels to add change as levels are added: keep the choice on the level whose idea is shown.
+    const select = this.renderRoot.querySelector<HTMLSelectElement>('#add-level');
+    const shown = this.renderRoot.querySelector<HTMLElement>('#add-level-idea')?.dataset.level;
+    if (select && shown) select.value = shown;
   }
 
   /** The problem that keeps the assignment from being a link, or null. */
@@ -117,6 +132,18 @@ export class RtTeacherPage extends LitElement {
     this.change({ levels: [...this.assignment.levels, id], requiredTasks: { ...this.assignment.requiredTasks, [id]: mandatoryTasks(level) } });
   }
 
+  /** One click for a ready-made list: its levels replace the assignment's. */
+  private usePreset(preset: LevelPreset): void {
+    const { levels, requiredTasks } = withPreset(this.assignment, preset, this.levels);
+    this.change({ levels, requiredTasks });
+  }
+
+  /** The level's one idea (levels/index.json), in the assignment's language. */
+  private idea(id: string, locale: Assignment['locale']): string | null {
+    const idea = this.guide.ideas[id];
+    return idea === undefined ? null : localize(idea, locale);
+  }
+
   private removeLevel(id: string): void {
     const { [id]: _removed, ...requiredTasks } = this.assignment.requiredTasks;
     this.change({ levels: this.assignment.levels.filter((other) => other !== id), requiredTasks });
@@ -157,6 +184,8 @@ export class RtTeacherPage extends LitElement {
     const a = this.assignment;
     const locale = a.locale;
     const available = this.levels.filter((level) => !a.levels.includes(level.id));
+    const adding = available.find((level) => level.id === this.adding) ?? available[0];
+    const addingIdea = adding ? this.idea(adding.id, locale) : null;
     return html`
       <header>
         <h1>${msg('Make an assignment')}</h1>
@@ -173,13 +202,30 @@ export class RtTeacherPage extends LitElement {
           </section>
           <section aria-labelledby="levels-heading">
             <h2 id="levels-heading">${msg('Levels, in the order the students play them')}</h2>
+            ${this.guide.presets.length === 0
+              ? nothing
+              : html`<div class="row">
+                  ${msg('Start from a ready-made list:')}
+                  ${this.guide.presets.map(
+                    (preset) =>
+                      html`<button type="button" data-preset=${preset.id} title=${msg('Replaces the levels below with this list, each with its mandatory tasks')} @click=${() => this.usePreset(preset)}>
+                        ${localize(preset.title, locale)}
+                      </button>`,
+                  )}
+                </div>`}
             ${a.levels.length === 0 ? html`<p class="problem">${msg('Add at least one level.')}</p>` : nothing}
             <ol>
               ${a.levels.map((id, index) => this.renderLevel(id, index, locale))}
             </ol>
             <div class="row">
               <label for="add-level">${msg('Add a level')}</label>
-              <select id="add-level" name="add-level" ?disabled=${available.length === 0}>
+              <select
+                id="add-level"
+                name="add-level"
+                aria-describedby="add-level-idea"
+                ?disabled=${available.length === 0}
+                @change=${(e: Event) => (this.adding = (e.target as HTMLSelectElement).value)}
+              >
                 ${available.map((level) => html`<option value=${level.id}>${plainLevelText(level.title, locale)}</option>`)}
               </select>
               <button
@@ -191,6 +237,7 @@ export class RtTeacherPage extends LitElement {
                 ${msg('Add')}
               </button>
             </div>
+            <p class="idea" id="add-level-idea" data-level=${adding?.id ?? ''}>${addingIdea ?? ''}</p>
           </section>
           <section>
             <h2>${msg('Settings')}</h2>
@@ -254,11 +301,12 @@ export class RtTeacherPage extends LitElement {
   private renderLevel(id: string, index: number, locale: Assignment['locale']) {
     const level = this.level(id);
     const title = level ? plainLevelText(level.title, locale) : id;
+    const idea = this.idea(id, locale);
     const required = new Set(this.assignment.requiredTasks[id] ?? []);
     const last = this.assignment.levels.length - 1;
     return html`<li data-level=${id}>
       <div class="level-head">
-        <strong>${title}</strong>
+        <span class="level-name"><strong>${title}</strong>${idea === null ? nothing : html`<span class="idea">${idea}</span>`}</span>
         <button class="icon" type="button" data-move="-1" ?disabled=${index === 0} aria-label=${msg(str`Move ${title} up`)} title=${msg('Move up')} @click=${() => this.moveLevel(index, -1)}>↑</button>
         <button class="icon" type="button" data-move="1" ?disabled=${index === last} aria-label=${msg(str`Move ${title} down`)} title=${msg('Move down')} @click=${() => this.moveLevel(index, 1)}>↓</button>
         <button class="icon" type="button" aria-label=${msg(str`Remove ${title}`)} title=${msg('Remove from the assignment')} @click=${() => this.removeLevel(id)}>✕</button>
@@ -299,10 +347,6 @@ export class RtTeacherPage extends LitElement {
 /** A typed optional field: trimmed, undefined when empty. */
 function optional(text: string): string | undefined {
   return text.trim() === '' ? undefined : text.trim();
-}
-
-function mandatoryTasks(level: Level): string[] {
-  return level.tasks.filter((task) => task.mandatory).map((task) => task.id);
 }
 
 customElements.define('rt-teacher-page', RtTeacherPage);

@@ -46,9 +46,14 @@ export const teacherPageStyles = [
         gap: 6px;
         flex-wrap: wrap;
       }
-      .level-head strong {
+      .level-name {
         flex: 1;
         min-width: 10em;
+      }
+      .idea {
+        display: block;
+        font-size: 0.9em;
+        color: var(--rt-muted);
       }
       .icon {
         min-width: var(--rt-target);

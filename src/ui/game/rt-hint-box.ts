@@ -1,5 +1,5 @@
 import { msg } from '@lit/localize';
-import { html, LitElement, nothing } from 'lit';
+import { css, html, LitElement, nothing } from 'lit';
 import type { Locale } from '../../quest/localized-text.ts';
 import type { TaskView } from '../../quest/quest-engine.ts';
 import { fire, gameStyles } from './game-styles.ts';
@@ -8,13 +8,25 @@ import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 
 /**
  * @summary A task's hint ladder: the text hints shown so far, and one button for the next
- * rung, named for what it does ("Hint", "Show me where", "Show me").
+ * rung, named for what it does ("Hint", "Show me where", "Show me"). After idle time the
+ * engine offers the next rung: the same button then says a hint is ready (so a learner
+ * whose focus is on it keeps it), and screen readers hear so politely. Only opening it
+ * counts as a hint used.
  *
  * @fires quest-command - `hint` or `show-me` for the task.
  */
 export class RtHintBox extends LitElement {
   static override properties = { task: { attribute: false }, locale: {} };
-  static override styles = gameStyles;
+  static override styles = [
+    gameStyles,
+    css`
+      button.offer {
+        border-color: var(--rt-accent);
+        background: var(--rt-accent-soft);
+        font-weight: 600;
+      }
+    `,
+  ];
 
   declare task: TaskView | undefined;
   declare locale: Locale;
@@ -33,9 +45,12 @@ export class RtHintBox extends LitElement {
     return html`
       <div aria-live="polite">
         ${view.hints.map((hint, index) => html`<p class="hint"><strong>${msg('Hint')} ${index + 1}:</strong> ${levelText(hint, this.locale)}</p>`)}
+        ${view.hintOffered ? html`<p class="visually-hidden">${msg('A hint is ready for you.')}</p>` : nothing}
       </div>
       ${command
-        ? html`<button data-hint=${next ?? ''} title=${this.tooltip(next)} @click=${() => fire(this, QUEST_COMMAND, command)}>${this.label(view)}</button>`
+        ? html`<button class=${view.hintOffered ? 'offer' : ''} data-hint=${next ?? ''} title=${view.hintOffered ? msg('Opening it counts as a hint used; leaving it costs nothing') : this.tooltip(next)} @click=${() => fire(this, QUEST_COMMAND, command)}>
+            ${view.hintOffered ? msg('Stuck? A hint is ready — show it') : this.label(view)}
+          </button>`
         : nothing}
     `;
   }

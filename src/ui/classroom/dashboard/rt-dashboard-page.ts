@@ -327,7 +327,7 @@ export class RtDashboardPage extends LitElement {
 function stuckRule(): string {
   const share = `${Math.round(STUCK_MIN_SHARE * 100)} %`;
   return msg(
-    str`⚠ marks a sticking point: a required task where at least ${share} of the learners needed help (a hint, "show me", or they did not finish it) and at least ${STUCK_TIMES_TYPICAL} times as many as on a typical task of this level (the median). Hints offered after idling count too, so some help on every task is normal. Tasks seen by fewer than ${STUCK_MIN_LEARNERS} learners are not marked.`,
+    str`⚠ marks a sticking point: a required task where at least ${share} of the learners needed help (a hint they opened, "show me", or they did not finish it) and at least ${STUCK_TIMES_TYPICAL} times as many as on a typical task of this level (the median). A hint offered after idling counts only when the learner opened it. Tasks seen by fewer than ${STUCK_MIN_LEARNERS} learners are not marked.`,
   );
 }
 

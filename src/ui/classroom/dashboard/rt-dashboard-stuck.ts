@@ -7,7 +7,7 @@ import { formatDuration, formatPercent } from './rt-dashboard-format.ts';
 
 /**
  * @summary Where learners got stuck, per task: how many saw it and finished it, the median
- * and middle half of their times, hints (learners who needed one, and rungs shown) and
+ * and middle half of their times, hints (learners who opened one, and rungs opened) and
  * "show me". A sticking point (`stuck`, from classroom/dashboard-stuck.ts, whose rule the
  * page explains) is marked with a word and an icon, not colour alone.
  */
@@ -57,8 +57,8 @@ export class RtDashboardStuck extends DashboardChart<TaskSummary & { stuck: bool
           <th scope="col" title=${msg('Done by the learner or shown by "show me"')}>${msg('Completed')}</th>
           <th scope="col" title=${msg('Median active time of those who completed it')}>${msg('Median')}</th>
           <th scope="col" title=${msg('From the first to the third quartile: the middle half of the learners')}>${msg('Middle half')}</th>
-          <th scope="col" title=${msg('Learners who were given at least one hint')}>${msg('Needed a hint')}</th>
-          <th scope="col" title=${msg('Text hints and guidance (pointing at the control) shown, in total')}>${msg('Hints / guidance')}</th>
+          <th scope="col" title=${msg('Learners who opened at least one hint')}>${msg('Needed a hint')}</th>
+          <th scope="col" title=${msg('Text hints and guidance (pointing at the control) opened, in total')}>${msg('Hints / guidance')}</th>
           <th scope="col" title=${msg('Learners who let the app do the task')}>${msg('Show me')}</th>
         </tr>
       </thead>
