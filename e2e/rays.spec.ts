@@ -157,11 +157,13 @@ test('the ray panel, legend and pixel preview by keyboard', async ({ page }) => 
   await expect(transparency.getByRole('status')).toContainText(/0–100/);
   expect(await page.locator('rt-ray-panel').evaluate((panel) => (panel as HTMLElement & { store: Store }).store.state.rays.transparency)).toBe(1);
 
-  // The legend names every kind of ray next to its colour, and follows the palette.
+  // The legend names every kind of ray next to its colour (and the normal), and follows the palette.
+  // A shadow ray reaches the light or is blocked; the direction not tested shows only with Shadows off.
   const legend = page.locator('rt-ray-legend');
-  for (const name of ['Primary ray', 'Light ray', 'Shadow ray', 'Reflected ray', 'Refracted ray', 'Hit nothing']) {
+  for (const name of ['Primary ray', 'Shadow ray — reaches the light', 'Shadow ray — blocked', 'Reflected ray', 'Refracted ray', 'Hit nothing', 'Normal']) {
     await expect(legend.getByText(name, { exact: true })).toBeVisible();
   }
+  await expect(legend.locator('li[data-key="untested"]')).toHaveCount(0);
   const swatch = legend.locator('li[data-key="primary"] .swatch');
   await expect(swatch).toHaveCSS('background-color', 'rgb(112, 255, 251)');
   await page.locator('rt-switch[name="colorBlindPalette"] input').check();

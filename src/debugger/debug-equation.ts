@@ -24,7 +24,7 @@ export interface EquationTerm {
   factors: Factor[];
   /** Area light: its n² samples' terms are summed (so the factors are means, not exact). */
   samples: number;
-  /** The ray that produced it (a light ray, the reflected or refracted child), or null (ambient terms). */
+  /** The ray that produced it (a shadow ray toward its light, the reflected or refracted child), or null (ambient terms). */
   ray: RayNode | null;
 }
 
@@ -58,7 +58,8 @@ export function equationOf(hit: RayNode, scene: Scene): Equation | null {
   for (const lightTerms of terms.lights) {
     const light = scene.lights.find((candidate) => candidate.id === lightTerms.lightId);
     const id = lightTerms.lightId;
-    // The ray this light's terms came from: its first light ray, else its first shadow ray.
+    // The ray this light's terms came from: its first shadow ray that reached the light (or, with
+    // Shadows off, its untested direction), else its first blocked one.
     const rays = hit.children.filter((child) => child.lightId === id);
     const ray = rays.find((child) => child.type === 'light' || child.type === 'area-light') ?? rays[0] ?? null;
     const shared: Factor[] = [

@@ -6,7 +6,8 @@ import type { PseudocodeLine } from './pseudocode.ts';
  * What the tracer does at one step, as a debugger steps through code:
  * - cast: a ray leaves (primary, reflected or refracted) and grows to what it hits;
  * - shade: it hit a surface: colour ← ka·C + Σ la·Lc·C (the equation appears);
- * - light: a light (or shadow) ray toward one light (or one sample of an area light);
+ * - light: a shadow ray toward one light (or one sample of an area light), reaching it or
+ *   blocked; with Shadows off, the untested direction to it (no shadow ray is cast);
  * - split: glass: Schlick's kr and kt before its two rays;
  * - return: the ray's colour, clamped, goes back to its parent (or the background, for a miss);
  * - average: the samples' colours averaged into the pixel.
@@ -22,7 +23,7 @@ export interface DebugStep {
   hit: RayNode | null;
   /** The hit `ray` leaves from: its parent (null for a primary ray). */
   from: RayNode | null;
-  /** Recursion depth of `ray` (primary rays 0; a light ray has its hit's depth). */
+  /** Recursion depth of `ray` (primary rays 0; a shadow ray has its hit's depth). */
   depth: number;
   /** Which supersample's tree (0 … s²−1). */
   sample: number;

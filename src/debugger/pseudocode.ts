@@ -18,7 +18,7 @@ export const PSEUDOCODE_LINES = [
   'ambient',
   /** for each light (each sample of an area light): */
   'light-loop',
-  /** cast a shadow ray toward the light */
+  /** if Shadows is on: cast a shadow ray toward the light */
   'shadow-ray',
   /** blocked: S = 0, it adds nothing */
   'blocked',

@@ -33,6 +33,18 @@ export interface RayNode {
   glossy?: true;
   /** A glossy direction pointing into the surface: not traced, it adds black (length 0). */
   absorbed?: true;
+  /**
+   * A primary, reflected or refracted ray that hit a surface: the unit surface normal N at its
+   * hit point (origin + length · direction), turned toward the ray as the shading used it
+   * (spec §2; for a ray inside glass it points inward). The lab draws it at the hit.
+   */
+  normal?: Vec3;
+  /**
+   * A light or area-light ray recorded with `settings.shadows` off: no shadow ray was cast, so
+   * nothing was tested on the way and the light counts as reaching the point (S = 1). The
+   * node is the direction to the light, which the lab draws as "not tested".
+   */
+  untested?: true;
   /** A ray that hit a surface, traced with terms (`rt trace --terms`): the parts of its colour. */
   terms?: ShadingTerms;
 }

@@ -181,7 +181,11 @@ export class WhittedIntegrator {
     const terms = this.shade(ray, hit.shape, depth, out, node);
     if (terms) terms.sum = out.toArray();
     out.clampScalar(0, 1);
-    if (node) recordEnd(node, true, hit.t, hit.shape.id, out);
+    if (node) {
+      recordEnd(node, true, hit.t, hit.shape.id, out);
+      // N as shade() turned it toward the ray; the deeper frames its children used are others.
+      node.normal = frame.normal.toArray();
+    }
     if (node && terms) node.terms = terms;
     return out;
   }
@@ -367,7 +371,12 @@ export class WhittedIntegrator {
       sr += kr * highlight;
       sg += kg * highlight;
       sb += kb * highlight;
-      sampleNodes?.push(newNode('light', hit.point, l, distance, true, null, light.id, [diffuseR + kr * highlight, diffuseG + kg * highlight, diffuseB + kb * highlight]));
+      if (sampleNodes !== null) {
+        const reached = newNode('light', hit.point, l, distance, true, null, light.id, [diffuseR + kr * highlight, diffuseG + kg * highlight, diffuseB + kb * highlight]);
+        // With Shadows off nothing was tested: the node only records the direction to the light.
+        if (!shadows) reached.untested = true;
+        sampleNodes.push(reached);
+      }
       recorder?.sample(attenuation, nDotL, rDotV, 'reached');
     }
     this.stats.shadow += shadowRays;
@@ -581,6 +590,7 @@ export class WhittedIntegrator {
     const color = samples.reduce<[number, number, number]>((sum, s) => [sum[0] + s.color[0], sum[1] + s.color[1], sum[2] + s.color[2]], [0, 0, 0]);
     const merged = newNode(type === 'light' ? 'area-light' : 'area-shadow', frame.hit.point, toCentre.divideScalar(distance || 1), distance, true, null, light.id, color);
     merged.corners = light.corners().map((c) => c.toArray()) as RayNode['corners'];
+    if (samples[0].untested) merged.untested = true;
     node.children.push(merged);
   }
 }

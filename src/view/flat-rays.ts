@@ -9,7 +9,7 @@
 import type { ScreenRays } from '../render/screen-rays.ts';
 import type { RayNode, RayType } from '../tracer/ray-tree.ts';
 import { type GlossyCone, glossyCones } from './glossy-cone.ts';
-import { RAY_COLOR_KEYS, rayColorKey, type RayColorKey } from './ray-palette.ts';
+import { RAY_COLOR_KEY_INDEX as KEY_INDEX, rayColorKey } from './ray-palette.ts';
 
 /** A ray that hits nothing is drawn this long, in metres (spec §3). */
 export const MISS_LENGTH = 10;
@@ -20,8 +20,6 @@ export function resized<T extends Float32Array | Float64Array | Uint8Array | Int
   bigger.set(array);
   return bigger;
 }
-
-const KEY_INDEX = Object.fromEntries(RAY_COLOR_KEYS.map((key, index) => [key, index])) as Record<RayColorKey, number>;
 
 function isShadow(type: RayType): boolean {
   return type === 'shadow' || type === 'area-shadow';
@@ -80,7 +78,7 @@ export class FlatRays {
     this.contribution[i] = contribution;
     this.start[i] = start;
     this.hit[i] = node.hit ? 1 : 0;
-    this.colorKey[i] = KEY_INDEX[rayColorKey(node.type, node.hit)];
+    this.colorKey[i] = KEY_INDEX[rayColorKey(node.type, node.hit, node.untested === true)];
     const time = node.time ?? parentTime;
     this.time[i] = time;
     this.cone[i] = node.corners && (node.type === 'area-light' || node.type === 'area-shadow') ? this.addCone(node.corners) : -1;

@@ -1,5 +1,5 @@
 import { BufferGeometry, ConeGeometry, type Group, InstancedMesh, type Material } from 'three';
-import { ALPHA_ATTRIBUTE, DASH_ATTRIBUTE, GROWTH_ATTRIBUTE } from './ray-shader.ts';
+import { ALPHA_ATTRIBUTE, ARROW_AT_ATTRIBUTE, DASH_ATTRIBUTE, GROWTH_ATTRIBUTE } from './ray-shader.ts';
 
 /** Sides of an arrowhead: at 10 px wide, 8 already look round. */
 const ARROW_SEGMENTS = 8;
@@ -52,7 +52,7 @@ export class RayExtras {
 
   /** Shares the (possibly new, larger) ray mesh's instance buffers. */
   private link(cylinders: InstancedMesh): void {
-    for (const name of [ALPHA_ATTRIBUTE, GROWTH_ATTRIBUTE, DASH_ATTRIBUTE]) {
+    for (const name of [ALPHA_ATTRIBUTE, GROWTH_ATTRIBUTE, DASH_ATTRIBUTE, ARROW_AT_ATTRIBUTE]) {
       const attribute = cylinders.geometry.getAttribute(name);
       if (attribute) this.arrowGeometry.setAttribute(name, attribute);
     }

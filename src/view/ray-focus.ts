@@ -7,7 +7,10 @@
 import type { RayViewOptions } from '../lab-state/lab-state.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
 import type { PixelTrace, RayNode } from '../tracer/ray-tree.ts';
+import { RAY_COLOR_KEY_INDEX } from './ray-palette.ts';
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
+
+const NORMAL_KEY = RAY_COLOR_KEY_INDEX.normal;
 
 /** What the debugger asks the pool to draw. */
 export interface RayFocus {
@@ -44,12 +47,14 @@ function screenOf(trace: PixelTrace): ScreenRays {
 /**
  * The segments for `focus`: the panel's colours and radius, every filter off (the debugger
  * shows every ray it steps through), then only the shown rays kept, dimmed but the highlighted.
- * `travelEnd` is the highlighted ray's length when it grows, else 0 (nothing to animate).
+ * `travelEnd` is where the highlighted ray (and the normal at its hit) has grown when it grows,
+ * else 0 (nothing to animate).
  */
 export function focusedRays(focus: RayFocus, options: RayViewOptions, into = new DrawnRays(), style?: RayStyle): DrawnRays {
   const all: RayViewOptions = { ...options, showRays: true, hideNoHit: false, hideNegligible: false, transparency: 0, animatePixelByPixel: false };
-  // Every glossy ray as itself: the debugger steps through (and highlights) each one.
-  visibleRays(screenOf(focus.trace), all, null, into, style, false);
+  // Every glossy ray as itself: the debugger steps through (and highlights) each one. The
+  // pixel as the chosen one of its 1 × 1 screen, so its hits show their normals.
+  visibleRays(screenOf(focus.trace), all, [0, 0], into, style, false);
   let travelEnd = 0;
   for (const list of [into.rays, into.cones]) {
     let kept = 0;
@@ -57,11 +62,14 @@ export function focusedRays(focus: RayFocus, options: RayViewOptions, into = new
       const node = list.nodes[i];
       if (!focus.shown.has(node)) continue;
       moveSegment(list, i, kept);
+      // A normal comes and goes with its ray, and grows from its hit once the ray has arrived.
+      const normal = list.colorKey[kept] === NORMAL_KEY;
       const highlighted = node === focus.highlighted;
+      const grows = highlighted && focus.grow;
       list.alpha[kept] = highlighted ? 1 : DIMMED_ALPHA;
-      if (highlighted) list.radius[kept] *= HIGHLIGHT_RADIUS_SCALE;
-      list.start[kept] = highlighted && focus.grow ? 0 : GROWN_LONG_AGO;
-      if (highlighted && focus.grow) travelEnd = list.length[kept];
+      if (highlighted && !normal) list.radius[kept] *= HIGHLIGHT_RADIUS_SCALE;
+      list.start[kept] = grows ? (normal ? node.length : 0) : GROWN_LONG_AGO;
+      if (grows) travelEnd = Math.max(travelEnd, list.start[kept] + list.length[kept]);
       kept++;
     }
     list.count = kept;

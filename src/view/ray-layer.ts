@@ -1,9 +1,12 @@
 import type { Object3D, Raycaster } from 'three';
 import type { RayNode, RayType } from '../tracer/ray-tree.ts';
+import type { RayColorKey } from './ray-palette.ts';
 
 /** What the pointer is over when it hovers a drawn ray (shown in a tooltip). */
 export interface RayHover {
   type: RayType;
+  /** The legend entry it is drawn as: "normal" for the normal at the hit of `node`. */
+  drawnAs: RayColorKey;
   contribution: number;
   color: [number, number, number];
   pixel: [number, number];

@@ -24,15 +24,26 @@ import type { ScreenRays } from '../render/screen-rays.ts';
 import { focusedRays, type RayFocus } from './ray-focus.ts';
 import type { RayHover, RayLayer } from './ray-layer.ts';
 import { RayExtras } from './ray-extras.ts';
-import { ALPHA_ATTRIBUTE, createRayMaterial, DASH_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, type TravelUniform, type ViewHeightUniform } from './ray-shader.ts';
+import {
+  ALPHA_ATTRIBUTE,
+  ARROW_AT_ATTRIBUTE,
+  arrowAt,
+  createRayMaterial,
+  DASH_ATTRIBUTE,
+  FULLY_GROWN,
+  GROWTH_ATTRIBUTE,
+  type TravelUniform,
+  type ViewHeightUniform,
+} from './ray-shader.ts';
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
 import { RAY_COLOR_KEYS, RAY_DASHES } from './ray-palette.ts';
 
 /** Instances allocated at first; the buffers double from there as needed. */
 const INITIAL_CAPACITY = 256;
 
-/** Floats per instance: matrix 16, colour 3, alpha 1, growth 2. */
-const FLOATS_PER_INSTANCE = 22;
+/** Floats per instance: matrix 16, colour 3, alpha 1, growth 2; a cylinder adds its dash 2 and arrowhead place 1. */
+const FLOATS_PER_CONE = 22;
+const FLOATS_PER_CYLINDER = FLOATS_PER_CONE + 3;
 
 /**
  * RAY_DASHES as (dash, gap) pairs by colour-key index, the form SegmentList.colorKey holds: a
@@ -40,6 +51,9 @@ const FLOATS_PER_INSTANCE = 22;
  * it with TypedArray.set was a third of a 10k-ray rebuild.
  */
 const DASHES_BY_KEY = Float32Array.from(RAY_COLOR_KEYS.flatMap((key) => RAY_DASHES[key]));
+
+/** Where each key's arrowhead sits (ray-shader.ts arrowAt), by colour-key index like DASHES_BY_KEY. */
+const ARROW_AT_BY_KEY = Float32Array.from(RAY_COLOR_KEYS.map(arrowAt));
 
 /**
  * Opacity of the cones relative to the rays: a cone is a solid volume the size of the
@@ -116,6 +130,11 @@ class InstanceBuffers {
     return this.mesh.geometry.getAttribute(DASH_ATTRIBUTE) as InstancedBufferAttribute | undefined;
   }
 
+  /** Where each instance's arrowhead sits along it (cylinders only; the arrows share it). */
+  get arrowAt(): InstancedBufferAttribute | undefined {
+    return this.mesh.geometry.getAttribute(ARROW_AT_ATTRIBUTE) as InstancedBufferAttribute | undefined;
+  }
+
   /** Makes room for `count` instances, replacing the mesh (and freeing its GPU buffers) when too small. */
   reserve(count: number): void {
     if (count <= this.capacity) return;
@@ -134,7 +153,7 @@ class InstanceBuffers {
     this.mesh.count = count;
     this.mesh.visible = count > 0;
     if (count === 0) return;
-    for (const attribute of [this.mesh.instanceMatrix, this.color, this.alpha, this.growth, ...(this.dash ? [this.dash] : [])]) {
+    for (const attribute of [this.mesh.instanceMatrix, this.color, this.alpha, this.growth, ...(this.dash ? [this.dash] : []), ...(this.arrowAt ? [this.arrowAt] : [])]) {
       attribute.clearUpdateRanges();
       attribute.addUpdateRange(0, count * attribute.itemSize);
       attribute.needsUpdate = true;
@@ -150,7 +169,10 @@ class InstanceBuffers {
     const geometry = this.kind === 'cone' ? pyramidGeometry() : ribbonGeometry();
     geometry.setAttribute(ALPHA_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity), 1));
     geometry.setAttribute(GROWTH_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity * 2), 2));
-    if (this.kind === 'cylinder') geometry.setAttribute(DASH_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity * 2), 2));
+    if (this.kind === 'cylinder') {
+      geometry.setAttribute(DASH_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity * 2), 2));
+      geometry.setAttribute(ARROW_AT_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity), 1));
+    }
     const mesh = new InstancedMesh(geometry, material, capacity);
     mesh.name = this.kind === 'cone' ? RAY_CONES_NAME : RAY_CYLINDERS_NAME;
     mesh.instanceColor = new InstancedBufferAttribute(new Float32Array(capacity * 3), 3);
@@ -230,7 +252,7 @@ export class RayPool implements RayLayer {
       cones: this.cones.mesh.count,
       arrows: this.extras.count,
       drawCalls: meshes.filter((mesh) => mesh.visible && mesh.count > 0).length,
-      instanceBytes: (this.cylinders.capacity + this.cones.capacity) * FLOATS_PER_INSTANCE * 4,
+      instanceBytes: (this.cylinders.capacity * FLOATS_PER_CYLINDER + this.cones.capacity * FLOATS_PER_CONE) * 4,
     };
   }
 
@@ -283,7 +305,8 @@ export class RayPool implements RayLayer {
     const node = best.list.nodes[best.index];
     const pixel = best.list.pixel[best.index];
     const columns = this.drawn.columns;
-    return { type: node.type, contribution: node.contribution, color: node.color, pixel: [pixel % columns, Math.floor(pixel / columns)], node };
+    const drawnAs = RAY_COLOR_KEYS[best.list.colorKey[best.index]];
+    return { type: node.type, drawnAs, contribution: node.contribution, color: node.color, pixel: [pixel % columns, Math.floor(pixel / columns)], node };
   }
 
   dispose(): void {
@@ -316,14 +339,16 @@ export class RayPool implements RayLayer {
     const alpha = buffers.alpha.array as Float32Array;
     const growth = buffers.growth.array as Float32Array;
     const dash = buffers.dash?.array as Float32Array | undefined;
+    const arrowAt = buffers.arrowAt?.array as Float32Array | undefined;
     for (let i = 0; i < count; i++) {
       alpha[i] = list.alpha[i] * opacity;
       growth[i * 2] = list.start[i];
       growth[i * 2 + 1] = list.length[i];
-      if (dash) {
-        const key = list.colorKey[i] * 2;
-        dash[i * 2] = DASHES_BY_KEY[key];
-        dash[i * 2 + 1] = DASHES_BY_KEY[key + 1];
+      if (dash && arrowAt) {
+        const key = list.colorKey[i];
+        dash[i * 2] = DASHES_BY_KEY[key * 2];
+        dash[i * 2 + 1] = DASHES_BY_KEY[key * 2 + 1];
+        arrowAt[i] = ARROW_AT_BY_KEY[key];
       }
     }
     buffers.commit(count);

@@ -18,15 +18,18 @@
  *   the fragment shader discards the gaps, measured from the ray's start.
  *
  * Two variants draw one pixel's rays more plainly (ray-extras.ts), from the cylinders' own
- * instances: `arrow` puts an arrowhead of a fixed size on screen halfway along each ray,
- * pointing the way it travels, drawn over everything; `hidden` draws, faintly, the parts of the rays that objects
+ * instances: `arrow` puts an arrowhead of a fixed size on screen along each ray, pointing the
+ * way it travels, drawn over everything: its tip at `aArrowAt` of the grown length (ARROW_AT,
+ * a little past halfway, for a ray; its end for a normal, an arrow like a textbook's vector); `hidden` draws, faintly, the parts of the rays that objects
  * hide (it passes only where something nearer was drawn: depth test "greater").
  */
 import { DoubleSide, GreaterDepth, MeshBasicMaterial, Vector2, type WebGLProgramParametersWithUniforms } from 'three';
+import type { RayColorKey } from './ray-palette.ts';
 
 export const ALPHA_ATTRIBUTE = 'aAlpha';
 export const GROWTH_ATTRIBUTE = 'aGrowth';
 export const DASH_ATTRIBUTE = 'aDash';
+export const ARROW_AT_ATTRIBUTE = 'aArrowAt';
 
 /** The thinnest a ray is drawn, in CSS px (issue 9: readable at a level's starting view). */
 export const RAY_MIN_WIDTH_PX = 3;
@@ -37,6 +40,11 @@ export const ARROW_WIDTH_PX = 10;
 
 /** Where along its grown part a ray's arrowhead points from (its tip), as a share of it. */
 export const ARROW_AT = 0.55;
+
+/** Where a drawn line of that legend entry has its arrowhead's tip: a normal's at its end. */
+export function arrowAt(key: RayColorKey): number {
+  return key === 'normal' ? 1 : ARROW_AT;
+}
 
 /** How strongly the hidden parts of a chosen pixel's rays show through what hides them. */
 export const HIDDEN_ALPHA = 0.35;
@@ -58,6 +66,9 @@ attribute vec2 ${GROWTH_ATTRIBUTE};
 uniform float uTravel;
 uniform float uViewHeight;
 varying float vRayAlpha;
+#if defined(RAY_ARROW)
+attribute float ${ARROW_AT_ATTRIBUTE};
+#endif
 #if !defined(RAY_CONE) && !defined(RAY_ARROW)
 attribute vec2 ${DASH_ATTRIBUTE};
 varying vec2 vRayDash;
@@ -69,15 +80,15 @@ float rayGrown = clamp((uTravel - ${GROWTH_ATTRIBUTE}.x) / max(${GROWTH_ATTRIBUT
 #if defined(RAY_CONE)
 transformed *= rayGrown;
 #elif defined(RAY_ARROW)
-// The head's tip ARROW_AT of the way along the grown ray; its size is fixed in screen pixels
+// The head's tip aArrowAt of the way along the grown ray; its size is fixed in screen pixels
 // (at the tip's depth), but never longer than half of what has grown.
-vec4 rayTipView = modelViewMatrix * instanceMatrix * vec4(0.0, 0.0, ${ARROW_AT.toFixed(2)} * rayGrown, 1.0);
+vec4 rayTipView = modelViewMatrix * instanceMatrix * vec4(0.0, 0.0, ${ARROW_AT_ATTRIBUTE} * rayGrown, 1.0);
 float rayPixel = 2.0 * max(-rayTipView.z, 1e-4) / (projectionMatrix[1][1] * max(uViewHeight, 1.0));
 float rayLength = max(length((modelViewMatrix * instanceMatrix * vec4(0.0, 0.0, 1.0, 0.0)).xyz), 1e-6);
 float rayRadius = max(length((modelViewMatrix * instanceMatrix * vec4(1.0, 0.0, 0.0, 0.0)).xyz), 1e-9);
 float headLength = min(${ARROW_LENGTH_PX.toFixed(1)} * rayPixel, 0.5 * rayLength * rayGrown);
 float headRadius = 0.5 * ${ARROW_WIDTH_PX.toFixed(1)} * rayPixel * headLength / (${ARROW_LENGTH_PX.toFixed(1)} * rayPixel);
-transformed = vec3(position.xy * headRadius / rayRadius, ${ARROW_AT.toFixed(2)} * rayGrown + position.z * headLength / rayLength);
+transformed = vec3(position.xy * headRadius / rayRadius, ${ARROW_AT_ATTRIBUTE} * rayGrown + position.z * headLength / rayLength);
 #else
 // The ribbon's vertex: position.z along the grown axis, position.x = ±1 across it.
 vec3 rayPointView = (modelViewMatrix * instanceMatrix * vec4(0.0, 0.0, position.z * rayGrown, 1.0)).xyz;

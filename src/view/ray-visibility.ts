@@ -12,7 +12,7 @@ import type { ScreenRays } from '../render/screen-rays.ts';
 import type { Color } from '../scene/scene.ts';
 import type { RayNode } from '../tracer/ray-tree.ts';
 import { flattenRays, type FlatRays, resized } from './flat-rays.ts';
-import { paletteNameFor, RAY_COLOR_KEYS, rayColor } from './ray-palette.ts';
+import { paletteNameFor, RAY_COLOR_KEY_INDEX, RAY_COLOR_KEYS, rayColor } from './ray-palette.ts';
 import { timeColor } from './time-colors.ts';
 
 /**
@@ -31,6 +31,14 @@ export const CONTRIBUTION_DECADES = 3;
 
 /** The faintest tone of a ray in contribution colour: it keeps a hint of its type's hue. */
 export const MIN_CONTRIBUTION_TONE = 0.15;
+
+/**
+ * How long the surface normal is drawn at a hit, in metres: short beside the rays (a level's
+ * ball has a radius of 0.5 m), long enough for its arrowhead to read as a direction.
+ */
+export const NORMAL_LENGTH = 0.35;
+
+const NORMAL_KEY = RAY_COLOR_KEY_INDEX.normal;
 
 /** A growing list of drawn segments, as parallel typed arrays (index i is one segment). */
 export class SegmentList {
@@ -58,7 +66,7 @@ export class SegmentList {
   pixel = new Int32Array(0);
   /** Cones only: the four corners of the base (the light, or across a glossy fan), 12 floats per cone (in RayNode.corners order). */
   corners = new Float32Array(0);
-  /** The traced ray each segment draws (for hover). */
+  /** The traced ray each segment draws (for hover); for a normal, the ray whose hit it stands on. */
   readonly nodes: RayNode[] = [];
 
   constructor(readonly withCorners: boolean) {}
@@ -137,6 +145,10 @@ const DARKEN: RayStyle = { fadeTo: [0, 0, 0] };
  * - area-light / area-shadow nodes become cones from the hit point to the light's corners;
  *   so does a glossy fan of more than 25 rays that all hit one object (glossy-cone.ts),
  *   unless `glossyCones` is false (the ray debugger, which steps through each ray).
+ * - A selected pixel's rays also get the surface normal at each of their hits (RayNode.normal):
+ *   a short arrow (NORMAL_LENGTH) in the palette's normal colour, drawn right after its ray,
+ *   shown and hidden with it, growing once the ray has arrived. A whole screen's hits would
+ *   bristle with them, so only one pixel's rays have them.
  */
 export function visibleRays(
   rays: ScreenRays | null,
@@ -150,7 +162,7 @@ export function visibleRays(
   if (!rays || !options.showRays) return into;
   into.columns = rays.columns;
   const flat = flattenRays(rays, glossyCones);
-  const pass = new VisibilityPass(flat, into, options, style);
+  const pass = new VisibilityPass(flat, into, options, style, selectedPixel !== null);
   if (selectedPixel) {
     const [x, y] = selectedPixel;
     if (x >= 0 && y >= 0 && x < rays.columns && y < rays.rows) pass.pixel(y * rays.columns + x);
@@ -183,6 +195,8 @@ class VisibilityPass {
     private readonly out: DrawnRays,
     private readonly options: RayViewOptions,
     private readonly style: RayStyle,
+    /** Whether each hit's normal is drawn (one pixel's rays). */
+    private readonly normals: boolean,
   ) {
     const palette = paletteNameFor(options.colorBlindPalette);
     RAY_COLOR_KEYS.forEach((key, index) => this.colors.set(rayColor(palette, key), index * 3));
@@ -239,6 +253,30 @@ class VisibilityPass {
     }
     if (c >= 0) list.corners.set(flat.corners.subarray(c * 12, c * 12 + 12), j * 12);
     if (start + length > this.travelEnd) this.travelEnd = start + length;
+    if (this.normals && c < 0 && flat.hit[i] === 1) this.emitNormal(flat.nodes[i], j);
+  }
+
+  /** The normal at the hit of ray segment `ray` (if its node recorded one), as a segment of its own. */
+  private emitNormal(node: RayNode, ray: number): void {
+    const normal = node.normal;
+    if (!normal) return;
+    const list = this.out.rays;
+    const j = list.grow();
+    list.nodes.push(node);
+    const length = list.length[ray];
+    for (let axis = 0; axis < 3; axis++) {
+      list.origin[j * 3 + axis] = list.origin[ray * 3 + axis] + list.direction[ray * 3 + axis] * length;
+      list.direction[j * 3 + axis] = normal[axis];
+      // Not a ray: neither contribution nor time colours it.
+      list.color[j * 3 + axis] = this.colors[NORMAL_KEY * 3 + axis];
+    }
+    list.length[j] = NORMAL_LENGTH;
+    list.start[j] = list.start[ray] + length;
+    list.alpha[j] = list.alpha[ray];
+    list.radius[j] = list.radius[ray];
+    list.pixel[j] = list.pixel[ray];
+    list.colorKey[j] = NORMAL_KEY;
+    if (list.start[j] + NORMAL_LENGTH > this.travelEnd) this.travelEnd = list.start[j] + NORMAL_LENGTH;
   }
 }
 

@@ -136,3 +136,59 @@ describe('area-ray merging (spec §3)', () => {
     expect(new Set(mixed.map((r) => r.type))).toEqual(new Set(['light', 'shadow']));
   });
 });
+
+describe('what a recorded tree adds to the rays (the lab draws it)', () => {
+  const dot = (a: readonly number[], b: readonly number[]) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+
+  it('every hit of a primary, reflected or refracted ray records its unit normal, turned toward the ray', () => {
+    const scene = busyScene(2, 'grid');
+    const glass = scene.source.objects.find((object) => object.id === 'glass')!.position;
+    let checked = 0;
+    let onGlass = 0;
+    for (const [x, y] of [[4, 4], [2, 3], [6, 1]]) {
+      walkRays(tracePixel(scene, x, y, 1).rays, (n) => {
+        const surfaceRay = n.type === 'primary' || n.type === 'reflect' || n.type === 'refract';
+        if (!surfaceRay || !n.hit) {
+          expect(n.normal).toBeUndefined();
+          return;
+        }
+        const normal = n.normal!;
+        expect(Math.hypot(...normal)).toBeCloseTo(1, 6);
+        expect(dot(normal, n.direction)).toBeLessThan(0);
+        if (n.objectId === 'floor') expect(normal.map((c) => Math.abs(c))).toEqual([0, 1, 0]);
+        if (n.objectId === 'glass') {
+          // A sphere's normal is along centre → hit point: outward for a ray from outside, inward for one inside.
+          const hit = n.origin.map((o, axis) => o + n.length * n.direction[axis]);
+          const out = hit.map((h, axis) => h - glass[axis]);
+          expect(Math.abs(dot(normal, out)) / Math.hypot(...out)).toBeCloseTo(1, 5);
+          onGlass++;
+        }
+        checked++;
+      });
+    }
+    expect(onGlass).toBeGreaterThan(1);
+    expect(checked).toBeGreaterThan(10);
+  });
+
+  it('with Shadows off no shadow ray is cast: every ray toward a light is marked untested, merged cones too', () => {
+    const roof = { id: 'roof', shape: 'box', position: [0, 1.5, 0], scale: [4, 0.1, 4], material: matte([1, 1, 1]) };
+    const lit = (shadows: boolean, samples: number) =>
+      tracerSceneFrom({
+        camera: { position: [0, 2, 3], target: [0, 0, 0], pixels: [1, 1] },
+        settings: { shadows },
+        objects: [{ id: 'floor', shape: 'plane', scale: [10, 1, 10], material: matte([1, 1, 1]) }, roof],
+        lights: [areaLight(samples), pointLight([1, 3, 1])],
+      });
+    const off = tracePixel(lit(false, 5), 0, 0, 1).rays[0].children;
+    expect(off.map((r) => [r.type, r.untested])).toEqual([['area-light', true], ['light', true]]);
+    const stats = emptyRayStats();
+    renderTile(lit(false, 2), { x: 0, y: 0, width: 1, height: 1 }, { imageWidth: 1, imageHeight: 1, seed: 1 }, stats);
+    expect(stats.shadow).toBe(0);
+    const separate = tracePixel(lit(false, 2), 0, 0, 1).rays[0].children;
+    expect(separate).toHaveLength(5);
+    expect(separate.every((r) => r.type === 'light' && r.untested === true)).toBe(true);
+    // With Shadows on the roof blocks both lights, and nothing is marked.
+    const on = tracePixel(lit(true, 5), 0, 0, 1).rays[0].children;
+    expect(on.map((r) => [r.type, r.untested])).toEqual([['area-shadow', undefined], ['shadow', undefined]]);
+  });
+});

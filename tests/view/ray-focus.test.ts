@@ -5,6 +5,8 @@ import type { PixelTrace, RayNode } from '../../src/tracer/ray-tree.ts';
 import { DIMMED_ALPHA, focusedRays, HIGHLIGHT_RADIUS_SCALE } from '../../src/view/ray-focus.ts';
 import { RAY_CONES_NAME, RAY_CYLINDERS_NAME, RayPool } from '../../src/view/ray-pool.ts';
 import { ALPHA_ATTRIBUTE, GROWTH_ATTRIBUTE } from '../../src/view/ray-shader.ts';
+import { RAY_COLOR_KEYS } from '../../src/view/ray-palette.ts';
+import { NORMAL_LENGTH } from '../../src/view/ray-visibility.ts';
 import { areaRay, ray } from '../support/ray-fixtures.ts';
 
 /** A primary ray (4 m) with a light ray, an area-light cone and a reflection (2 m) that has its own shadow ray. */
@@ -44,6 +46,24 @@ describe('the ray debugger’s focus (ray-focus.ts)', () => {
     expect(drawn.rays.count + drawn.cones.count).toBe(rays.length);
     expect(drawn.rays.alpha[0]).toBe(1);
     expect(drawn.travelEnd).toBe(0);
+  });
+
+  it('draws the normal at each shown hit with its ray, dimmed or lit like it, growing from the hit after the ray', () => {
+    const { trace, rays } = tree();
+    const [primary, light, , reflect] = rays;
+    primary.normal = [0, 0, 1];
+    reflect.normal = [0, -1, 0];
+    const drawn = focusedRays({ trace, shown: new Set([primary, light, reflect]), highlighted: reflect, grow: true }, DEFAULT_RAY_VIEW);
+    expect(drawn.rays.nodes).toEqual([primary, primary, light, reflect, reflect]);
+    expect(Array.from(drawn.rays.colorKey.subarray(0, 5)).map((key) => RAY_COLOR_KEYS[key])).toEqual(['primary', 'normal', 'light', 'reflect', 'normal']);
+    expect(Array.from(drawn.rays.alpha.subarray(0, 5))).toEqual([DIMMED_ALPHA, DIMMED_ALPHA, DIMMED_ALPHA, 1, 1].map(Math.fround));
+    // The highlighted reflection grows over its 2 m, then its normal (not thickened) from its hit.
+    expect(drawn.rays.start[4]).toBe(2);
+    expect(drawn.rays.radius[4]).toBeCloseTo(DEFAULT_RAY_VIEW.radius, 6);
+    expect(drawn.travelEnd).toBeCloseTo(2 + NORMAL_LENGTH, 6);
+    // A hit not yet reached shows no normal.
+    const early = focusedRays({ trace, shown: new Set([primary]), highlighted: primary, grow: false }, DEFAULT_RAY_VIEW);
+    expect(early.rays.nodes).toEqual([primary, primary]);
   });
 
   it('the pool draws the focus in its one cylinder mesh instead of the screen, and back', () => {

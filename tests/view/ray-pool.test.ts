@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { InstancedMesh, Matrix4, Raycaster, ShaderLib, Vector3, type InstancedBufferAttribute, type MeshBasicMaterial } from 'three';
 import { DEFAULT_RAY_VIEW, type RayViewOptions } from '../../src/lab-state/lab-state.ts';
 import { CONE_OPACITY, LOOP_PAUSE_S, RAY_CONES_NAME, RAY_CYLINDERS_NAME, RayPool } from '../../src/view/ray-pool.ts';
-import { ALPHA_ATTRIBUTE, DASH_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, patchRayShader } from '../../src/view/ray-shader.ts';
+import { ALPHA_ATTRIBUTE, ARROW_AT, ARROW_AT_ATTRIBUTE, DASH_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, patchRayShader } from '../../src/view/ray-shader.ts';
 import { hexToColor, RAY_DASHES, rayPalette } from '../../src/view/ray-palette.ts';
 import { areaRay, ray, screen, syntheticScreen } from '../support/ray-fixtures.ts';
 
@@ -152,6 +152,22 @@ describe('RayPool instances', () => {
     expect((pool.object.getObjectByName(RAY_ARROWS_NAME) as InstancedMesh).instanceMatrix).toBe(cylinders().instanceMatrix);
   });
 
+  it('puts a ray\'s arrowhead a little past its middle and a normal\'s at its tip, in the buffer the arrows share', () => {
+    const rays = screen(1, 1, () => [ray('primary', { origin: [0, 5, 0], direction: [0, -1, 0], length: 4, normal: [0, 1, 0], children: [ray('light', { untested: true, origin: [0, 1, 0], direction: [1, 0, 0] })] })]);
+    const pool = new RayPool();
+    pool.update(rays, options(), [0, 0]);
+    const { cylinders, attribute } = parts(pool);
+    const arrowAt = attribute(cylinders, ARROW_AT_ATTRIBUTE);
+    expect([0, 1, 2].map((i) => arrowAt.getX(i))).toEqual([ARROW_AT, 1, ARROW_AT].map(Math.fround));
+    expect(arrowAt.updateRanges).toEqual([{ start: 0, count: 3 }]);
+    const arrows = pool.object.getObjectByName(RAY_ARROWS_NAME) as InstancedMesh;
+    expect(arrows.geometry.getAttribute(ARROW_AT_ATTRIBUTE)).toBe(arrowAt);
+    expect(pool.stats).toMatchObject({ rays: 3, arrows: 3 });
+    // The direction to a light not tested is drawn in its sparse dots.
+    const dash = attribute(cylinders, DASH_ATTRIBUTE);
+    expect([dash.getX(2), dash.getY(2)]).toEqual(RAY_DASHES.untested.map(Math.fround));
+  });
+
   it('keeps one draw call for a whole screen of 1k, 10k and 50k rays', () => {
     const pool = new RayPool();
     const calls = [1_000, 10_000, 50_000].map((total) => {
@@ -178,7 +194,8 @@ describe('RayPool instances', () => {
     expect(parts(pool).cylinders).toBe(big);
     expect(big.instanceMatrix.count).toBe(4096);
     expect(big.count).toBe(500);
-    expect(pool.stats.instanceBytes).toBe((4096 + 256) * 22 * 4);
+    // Per cylinder: matrix 16, colour 3, alpha 1, growth 2, dash 2, arrowhead place 1; a cone has no dash or arrowhead.
+    expect(pool.stats.instanceBytes).toBe((4096 * 25 + 256 * 22) * 4);
   });
 
   it('rebuilds 10k rays quickly (the goal is checked by the benchmark; logged here)', () => {
@@ -265,6 +282,9 @@ describe('RayPool growth animation', () => {
     expect(shader.fragmentShader).toContain('diffuseColor.a *= vRayAlpha');
     expect(shader.vertexShader).toContain('position.x * max(rayRadius, 0.5 * 3.0 * rayPixel)');
     expect(shader.vertexShader).toContain(`attribute vec2 ${DASH_ATTRIBUTE}`);
+    // An arrowhead's tip sits where its instance says (a ray's past the middle, a normal's at the end).
+    expect(shader.vertexShader).toMatch(/#if defined\(RAY_ARROW\)\nattribute float aArrowAt;/);
+    expect(shader.vertexShader).toContain(`vec4(0.0, 0.0, ${ARROW_AT_ATTRIBUTE} * rayGrown, 1.0)`);
     expect(shader.fragmentShader).toMatch(/mod\(vRayAlong, vRayDash\.x \+ vRayDash\.y\) > vRayDash\.x\) discard/);
     expect(shader.uniforms).toEqual({ uTravel: uniform, uViewHeight: viewHeight });
     expect(() => patchRayShader({ vertexShader: 'void main() {}', fragmentShader: '', uniforms: {} }, uniform, viewHeight)).toThrow(/begin_vertex|common|project_vertex/);
@@ -311,6 +331,15 @@ describe('RayPool.pick', () => {
     pool.tick(3000);
     expect(pool.pick(pointer([2, 5, 0], [0, -1, 0]))).not.toBeNull();
     expect(pool.pick(pointer([5, 5, 0], [0, -1, 0]))).toBeNull();
+  });
+
+  it('says what a picked line is drawn as: a normal stands for the hit of its ray', () => {
+    const primary = ray('primary', { origin: [0, 5, 0], direction: [0, -1, 0], length: 4, normal: [1, 0, 0], objectId: 'floor' });
+    const pool = new RayPool();
+    pool.update(screen(1, 1, () => [primary]), options(), [0, 0]);
+    // The normal runs from (0, 1, 0) along +x.
+    expect(pool.pick(pointer([0.2, 5, 0], [0, -1, 0]))).toMatchObject({ drawnAs: 'normal', type: 'primary', node: primary });
+    expect(pool.pick(pointer([0, 3, 5], [0, 0, -1]))).toMatchObject({ drawnAs: 'primary', node: primary });
   });
 
   it('picks a cone anywhere inside it', () => {

@@ -1,10 +1,11 @@
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_RAY_VIEW, type RayViewOptions } from '../../src/lab-state/lab-state.ts';
-import { hexToColor, RAY_COLOR_KEYS, rayPalette, type RayColorKey } from '../../src/view/ray-palette.ts';
+import { hexToColor, legendKeys, RAY_COLOR_KEYS, RAY_DASHES, rayPalette, type RayColorKey } from '../../src/view/ray-palette.ts';
 import {
   contributionTone,
   MIN_ALPHA,
   MIN_CONTRIBUTION_TONE,
+  NORMAL_LENGTH,
   type SegmentList,
   visibleRays,
 } from '../../src/view/ray-visibility.ts';
@@ -132,8 +133,11 @@ describe('visibleRays: colour, alpha and radius', () => {
     expect(segments(drawn.rays)[5].color).toEqual(hexToColor('#D55E00').map((c) => Math.fround(c)));
   });
 
-  it('the two palettes give six distinct colours each', () => {
-    for (const name of ['vrt', 'okabe-ito'] as const) expect(new Set(Object.values(rayPalette(name))).size).toBe(6);
+  it('the two palettes give eight distinct colours each: six ray kinds, the untested direction and the normal', () => {
+    for (const name of ['vrt', 'okabe-ito'] as const) {
+      const palette = rayPalette(name);
+      expect(new Set(RAY_COLOR_KEYS.map((key) => palette[key])).size).toBe(8);
+    }
   });
 
   it('fades rays toward the fade colour by contribution, a third per decade, never below the faintest tone', () => {
@@ -226,6 +230,76 @@ describe('visibleRays: animation order', () => {
     expect(second).toBe(first);
     expect(second.rays.origin).toBe(buffer);
     expect(second.rays.count).toBe(24);
+  });
+});
+
+describe('visibleRays: with Shadows off, the direction to a light is drawn as not tested', () => {
+  const untested = () =>
+    ray('primary', {
+      length: 4,
+      children: [ray('light', { untested: true, length: 3, contribution: 0.4 }), areaRay('area-light', { untested: true, contribution: 0.3 })],
+    });
+
+  it('as its own legend entry, in its own colour and pattern, never as a traced light ray', () => {
+    for (const colorBlindPalette of [false, true]) {
+      const drawn = visibleRays(screen(1, 1, () => [untested()]), options({ colorBlindPalette }), null);
+      const palette = rayPalette(colorBlindPalette ? 'okabe-ito' : 'vrt');
+      const [, direction] = segments(drawn.rays);
+      expect(direction.key).toBe('untested');
+      expect(direction.color).toEqual(hexToColor(palette.untested).map((c) => Math.fround(c)));
+      expect(palette.untested).not.toBe(palette.light);
+      expect(segments(drawn.cones).map((s) => s.key)).toEqual(['untested']);
+    }
+    // Sparse dots, unlike every ray's pattern.
+    const [dash, gap] = RAY_DASHES.untested;
+    expect(gap).toBeGreaterThan(2 * dash);
+    const others = RAY_COLOR_KEYS.filter((key) => key !== 'untested').map((key) => RAY_DASHES[key].join('/'));
+    expect(others).not.toContain(RAY_DASHES.untested.join('/'));
+  });
+
+  it('the legend lists it only while Shadows is off, and always the normal', () => {
+    expect(legendKeys(true)).toEqual(['primary', 'light', 'shadow', 'reflect', 'refract', 'no-hit', 'normal']);
+    expect(legendKeys(false)).toEqual([...RAY_COLOR_KEYS]);
+    expect(legendKeys(false)).toContain('untested');
+  });
+});
+
+describe('visibleRays: the surface normal at the selected pixel’s hits', () => {
+  /** A primary ray down onto the floor (normal +y) and a reflection that hits a wall (normal −x), with a shadow ray. */
+  const withNormals = () =>
+    ray('primary', {
+      origin: [0, 5, 0],
+      direction: [0, -1, 0],
+      length: 4,
+      normal: [0, 1, 0],
+      contribution: 0.001,
+      children: [
+        ray('shadow', { origin: [0, 1, 0], direction: [1, 0, 0], length: 1, contribution: 0, color: [0, 0, 0] }),
+        ray('reflect', { origin: [0, 1, 0], direction: [1, 0, 0], length: 2, normal: [-1, 0, 0], contribution: 0.0005 }),
+        ray('refract', { origin: [0, 1, 0], direction: [0, -1, 0], hit: false, length: MISS_LENGTH, contribution: 0.0001 }),
+      ],
+    });
+
+  it('draws a short arrow from each hit along its normal, right after its ray, growing once the ray has arrived', () => {
+    const drawn = visibleRays(screen(2, 1, () => [withNormals()]), options({ contributionColor: true, colorByTime: true }), [1, 0]);
+    const list = drawn.rays;
+    expect(segments(list).map((s) => s.key)).toEqual(['primary', 'normal', 'shadow', 'reflect', 'normal', 'no-hit']);
+    const at = (i: number) => ({ origin: [...list.origin.subarray(i * 3, i * 3 + 3)], direction: [...list.direction.subarray(i * 3, i * 3 + 3)] });
+    expect(at(1)).toEqual({ origin: [0, 1, 0], direction: [0, 1, 0] });
+    expect(at(4)).toEqual({ origin: [2, 1, 0], direction: [-1, 0, 0] });
+    const normal = segments(list)[4];
+    expect(normal).toMatchObject({ length: Math.fround(NORMAL_LENGTH), start: 6, pixel: 1, radius: segments(list)[3].radius });
+    expect(list.nodes[4]).toBe(list.nodes[3]);
+    // Not a ray: its colour is the palette's, not faded by a tiny contribution.
+    expect(normal.color).toEqual(hexToColor(rayPalette('vrt').normal).map((c) => Math.fround(c)));
+    expect(drawn.travelEnd).toBe(4 + MISS_LENGTH);
+  });
+
+  it('only for one pixel: a whole screen has none; a hidden ray hides its normal', () => {
+    const rays = screen(2, 1, () => [withNormals()]);
+    expect(segments(visibleRays(rays, options(), null).rays).map((s) => s.key)).not.toContain('normal');
+    const hidden = visibleRays(rays, options({ hideNegligible: true, negligibleThreshold: 0.0008 }), [0, 0]);
+    expect(segments(hidden.rays).map((s) => s.key)).toEqual(['primary', 'normal', 'shadow']);
   });
 });
 

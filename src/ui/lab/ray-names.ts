@@ -1,24 +1,34 @@
-import { msg } from '@lit/localize';
-import type { RayType } from '../../tracer/ray-tree.ts';
+import { msg, str } from '@lit/localize';
+import type { RayNode } from '../../tracer/ray-tree.ts';
 import type { RayColorKey } from '../../view/ray-palette.ts';
 
-/** The words the ray legend, tooltip and panel use for ray kinds (translated). */
+/**
+ * The words the ray legend, tooltip, panel and debugger use for ray kinds (translated). One
+ * meaning of "shadow ray" everywhere, the textbooks' (Shirley and Marschner, "Fundamentals of
+ * Computer Graphics", §4.7 "Shadows"; pbrt's shadow rays): a ray from a hit point toward a light that tests whether
+ * anything is in the way. It reaches the light (yellow) or is blocked (grey); with Shadows off
+ * none is cast, and the lab draws only the direction to the light, "not tested".
+ */
 
-/** The legend's name for what a ray is drawn as. */
+/** The legend's name for what a line is drawn as. */
 export function rayColorKeyName(key: RayColorKey): string {
   switch (key) {
     case 'primary':
       return msg('Primary ray');
     case 'light':
-      return msg('Light ray');
+      return msg('Shadow ray — reaches the light');
     case 'shadow':
-      return msg('Shadow ray');
+      return msg('Shadow ray — blocked');
+    case 'untested':
+      return msg('Direction to the light — not tested, Shadows is off');
     case 'reflect':
       return msg('Reflected ray');
     case 'refract':
       return msg('Refracted ray');
     case 'no-hit':
       return msg('Hit nothing');
+    case 'normal':
+      return msg('Normal');
   }
 }
 
@@ -28,26 +38,48 @@ export function rayColorKeyHint(key: RayColorKey): string {
     case 'primary':
       return msg('From the camera through a pixel.');
     case 'light':
-      return msg('Reaches a light and lights the point. A cone: many rays to an area light.');
+      return msg('A shadow ray tests whether anything is between the point and a light. This one reaches the light, so the light adds to the point’s colour. A cone: many shadow rays to an area light, all reaching it.');
     case 'shadow':
-      return msg('Blocked on its way to a light: the point is in shadow. A cone: many blocked rays to an area light.');
+      return msg('A shadow ray tests whether anything is between the point and a light. This one is blocked, so that light adds nothing: the point is in its shadow. A cone: many shadow rays to an area light, all blocked.');
+    case 'untested':
+      return msg('With Shadows off the tracer casts no shadow rays: every light reaches every point, even through an object. The dotted line only shows the direction to the light.');
     case 'reflect':
       return msg('Bounces off a shiny surface.');
     case 'refract':
       return msg('Bends into or out of a transparent object.');
     case 'no-hit':
       return msg('Meets no object and brings back the background colour (drawn 10 m long).');
+    case 'normal':
+      return msg('The surface normal N at a hit point: straight out of the surface, on the side the ray came from. Drawn at the hits of the selected pixel’s rays.');
   }
 }
 
-/** The tooltip's name for a traced ray's type. */
-export function rayTypeName(type: RayType): string {
-  switch (type) {
+/** The name of a traced ray (tooltip, debugger): its legend name, or its cone's. */
+export function rayName(ray: Pick<RayNode, 'type' | 'hit' | 'untested'>): string {
+  switch (ray.type) {
     case 'area-light':
-      return msg('Light rays to an area light (cone)');
+      return ray.untested ? msg('Directions to an area light — not tested, Shadows is off (cone)') : msg('Shadow rays to an area light — all reach it (cone)');
     case 'area-shadow':
-      return msg('Shadow rays to an area light (cone)');
+      return msg('Shadow rays to an area light — all blocked (cone)');
+    case 'light':
+      return rayColorKeyName(ray.untested ? 'untested' : 'light');
     default:
-      return rayColorKeyName(type);
+      return rayColorKeyName(ray.type);
   }
+}
+
+/**
+ * What a hovered line ran into or stands for, in one sentence, or null when there is nothing
+ * to say; `name` gives an object's or light's name as the scene list shows it.
+ */
+export function rayTargetText(node: RayNode, drawnAs: RayColorKey, name: (id: string | null) => string): string | null {
+  if (drawnAs === 'normal') return msg(str`The normal at the hit on ${name(node.objectId)}: straight out of the surface, on the side the ray came from.`);
+  if (!node.hit) return msg('Hit nothing: brings back the background colour');
+  const light = name(node.lightId);
+  if (node.type === 'shadow' || node.type === 'area-shadow') {
+    return node.objectId ? msg(str`Blocked by ${name(node.objectId)} on its way to ${light}`) : msg(str`Blocked on its way to ${light}`);
+  }
+  if (node.untested) return msg(str`Not tested: Shadows is off, so no shadow ray was cast and ${light} counts as reaching this point, even through an object.`);
+  if (node.type === 'light' || node.type === 'area-light') return msg(str`Reaches ${light}: nothing is in the way`);
+  return node.objectId ? msg(str`Hits ${name(node.objectId)}`) : null;
 }

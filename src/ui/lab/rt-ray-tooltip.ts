@@ -3,8 +3,8 @@ import { css, html, nothing } from 'lit';
 import { styleMap } from 'lit/directives/style-map.js';
 import type { Color } from '../../scene/scene.ts';
 import type { RayHover } from '../../view/ray-layer.ts';
-import { paletteNameFor, rayColorKey, rayPalette } from '../../view/ray-palette.ts';
-import { rayTypeName } from './ray-names.ts';
+import { paletteNameFor, rayPalette } from '../../view/ray-palette.ts';
+import { rayColorKeyName, rayName, rayTargetText } from './ray-names.ts';
 import { itemName } from './scene-names.ts';
 import { localNumbers } from '../../i18n/number-format.ts';
 import { StorePanel } from './panels/store-panel.ts';
@@ -31,7 +31,7 @@ export function formatShare(share: number): string {
 /**
  * @summary What the pointer is over in the 3D view: the ray's kind (by name, with its
  * legend colour), its share of its pixel, the colour it brings back (swatch and RGB as in
- * the rendered image), its pixel, and what it hit.
+ * the rendered image), its pixel, and what it hit; over a normal, only what it is.
  *
  * Shown at (`x`, `y`) (CSS pixels in its offset parent, e.g. the view's box) while `hover`
  * is set, flipped to the pointer's other side near the right and bottom edges; hidden when
@@ -130,40 +130,32 @@ export class RtRayTooltip extends StorePanel {
   override render() {
     const hover = this.hover;
     if (!hover) return nothing;
-    const { node } = hover;
+    const { node, drawnAs } = hover;
     const palette = rayPalette(paletteNameFor(this.state?.rays.colorBlindPalette ?? false));
     const [r, g, b] = colorBytes(hover.color);
     const [px, py] = hover.pixel;
+    const scene = this.state?.scene;
+    const target = rayTargetText(node, drawnAs, (id) => (id === null ? '' : scene ? itemName(scene, id) : id));
+    const normal = drawnAs === 'normal';
     return html`
       <p class="type">
-        <span class="line" style=${styleMap({ background: palette[rayColorKey(node.type, node.hit)] })} aria-hidden="true"></span>
-        ${rayTypeName(hover.type)}
+        <span class="line" style=${styleMap({ background: palette[drawnAs] })} aria-hidden="true"></span>
+        ${normal ? rayColorKeyName('normal') : rayName(node)}
       </p>
-      <p>
-        <span class="muted">${msg('Contribution')}</span>
-        <span class="value" data-testid="ray-contribution">${formatShare(hover.contribution)}</span>
-        <span class="muted">${msg(str`of pixel ${px}, ${py}`)}</span>
-      </p>
-      <p>
-        <span class="muted">${msg('Brings back')}</span>
-        <span class="swatch" style=${styleMap({ background: `rgb(${r}, ${g}, ${b})` })} aria-hidden="true"></span>
-        <span class="value">${msg(str`RGB ${r}, ${g}, ${b}`)}</span>
-      </p>
-      ${this.target(hover)}
+      ${normal
+        ? nothing
+        : html`<p>
+              <span class="muted">${msg('Contribution')}</span>
+              <span class="value" data-testid="ray-contribution">${formatShare(hover.contribution)}</span>
+              <span class="muted">${msg(str`of pixel ${px}, ${py}`)}</span>
+            </p>
+            <p>
+              <span class="muted">${msg('Brings back')}</span>
+              <span class="swatch" style=${styleMap({ background: `rgb(${r}, ${g}, ${b})` })} aria-hidden="true"></span>
+              <span class="value">${msg(str`RGB ${r}, ${g}, ${b}`)}</span>
+            </p>`}
+      ${target === null ? nothing : html`<p class="muted">${target}</p>`}
     `;
-  }
-
-  /** What the ray ran into, by the name the scene list shows (the id when it has none). */
-  private target(hover: RayHover) {
-    const { node } = hover;
-    const scene = this.state?.scene;
-    const name = (id: string | null | undefined) => (id == null ? '' : scene ? itemName(scene, id) : id);
-    if (!node.hit) return html`<p class="muted">${msg('Hit nothing: brings back the background colour')}</p>`;
-    if (node.type === 'shadow' || node.type === 'area-shadow') {
-      return html`<p class="muted">${node.objectId ? msg(str`Blocked by ${name(node.objectId)} on its way to ${name(node.lightId)}`) : msg(str`Blocked on its way to ${name(node.lightId)}`)}</p>`;
-    }
-    if (node.type === 'light' || node.type === 'area-light') return html`<p class="muted">${msg(str`Reaches light ${name(node.lightId)}`)}</p>`;
-    return node.objectId ? html`<p class="muted">${msg(str`Hits ${name(node.objectId)}`)}</p>` : nothing;
   }
 }
 

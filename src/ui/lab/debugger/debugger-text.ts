@@ -5,7 +5,7 @@ import type { PseudocodeLine } from '../../../debugger/pseudocode.ts';
 import type { DarkReason } from '../../../debugger/why-dark.ts';
 import type { Scene } from '../../../scene/scene.ts';
 import { localNumbers } from '../../../i18n/number-format.ts';
-import { rayTypeName } from '../ray-names.ts';
+import { rayName } from '../ray-names.ts';
 import { itemName as sceneItemName } from '../scene-names.ts';
 
 const share = localNumbers({ maximumFractionDigits: 2 });
@@ -30,7 +30,7 @@ export function pseudocodeText(line: PseudocodeLine): string {
     case 'light-loop':
       return msg('for each light (each sample of an area light):');
     case 'shadow-ray':
-      return msg('cast a shadow ray toward the light');
+      return msg('if Shadows is on: cast a shadow ray toward the light');
     case 'blocked':
       return msg('blocked: S = 0, the light adds nothing');
     case 'lit':
@@ -73,7 +73,7 @@ export function termName(kind: TermKind, light: string): string {
 export function stepText(step: DebugStep, scene: Scene): string {
   const ray = step.ray;
   if (!ray) return msg('The pixel’s colour is the average of its samples’ colours.');
-  const kind = rayTypeName(ray.type);
+  const kind = rayName(ray);
   const object = itemName(scene, ray.objectId);
   const light = itemName(scene, ray.lightId);
   switch (step.kind) {
@@ -82,9 +82,9 @@ export function stepText(step: DebugStep, scene: Scene): string {
     case 'shade':
       return msg(str`Shading the hit on ${object}: ambient first.`);
     case 'light':
-      return ray.type === 'shadow' || ray.type === 'area-shadow'
-        ? msg(str`The shadow ray to ${light} is blocked by ${object || msg('an object')}: S = 0.`)
-        : msg(str`The ray to ${light} reaches it: its diffuse and highlight are added.`);
+      if (ray.type === 'shadow' || ray.type === 'area-shadow') return msg(str`The shadow ray to ${light} is blocked by ${object || msg('an object')}: S = 0.`);
+      if (ray.untested) return msg(str`Shadows is off: no shadow ray is cast, so ${light} counts as reaching the point: its diffuse and highlight are added.`);
+      return msg(str`The shadow ray to ${light} reaches it: its diffuse and highlight are added.`);
     case 'split':
       return msg(str`Glass: Schlick splits the colour between the refracted and the reflected ray.`);
     case 'return':

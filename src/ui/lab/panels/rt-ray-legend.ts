@@ -1,7 +1,7 @@
 import { msg } from '@lit/localize';
 import { css, html } from 'lit';
 import { styleMap } from 'lit/directives/style-map.js';
-import { paletteNameFor, RAY_COLOR_KEYS, RAY_DASHES, type RayColorKey, rayPalette } from '../../../view/ray-palette.ts';
+import { legendKeys, paletteNameFor, RAY_DASHES, type RayColorKey, rayPalette } from '../../../view/ray-palette.ts';
 import { rayColorKeyHint, rayColorKeyName } from '../ray-names.ts';
 import { StorePanel } from './store-panel.ts';
 
@@ -9,9 +9,10 @@ import { StorePanel } from './store-panel.ts';
  * @summary The ray colours' legend: a swatch and the name of each kind of ray (never the
  * colour alone), in the palette the ray options choose (VRT's or the colour-blind-safe
  * one) and with the dash pattern the rays are drawn with; each entry's tooltip says what
- * that ray does.
+ * that ray does. The normal is an entry too; "direction to the light — not tested" only
+ * while Shadows is off (legendKeys).
  *
- * Reads `store` (rays.colorBlindPalette); changes nothing.
+ * Reads `store` (rays.colorBlindPalette, scene.settings.shadows); changes nothing.
  */
 export class RtRayLegend extends StorePanel {
   protected readonly controlPanel = 'rays';
@@ -41,20 +42,44 @@ export class RtRayLegend extends StorePanel {
         /* A thin outline keeps pale swatches (yellow, cyan) visible on a light background. */
         box-shadow: 0 0 0 1px color-mix(in srgb, var(--rt-text) 35%, transparent);
       }
+      .detail {
+        display: block;
+        font-size: 0.85em;
+        color: var(--rt-muted);
+      }
+      /* Read out, not shown: the line break stands for it on screen. */
+      .separator {
+        position: absolute;
+        width: 1px;
+        height: 1px;
+        overflow: hidden;
+        clip-path: inset(50%);
+        white-space: nowrap;
+      }
     `,
   ];
 
   override render() {
     const palette = rayPalette(paletteNameFor(this.state?.rays.colorBlindPalette ?? false));
     return html`<ul aria-label=${msg('Ray colours')}>
-      ${RAY_COLOR_KEYS.map(
+      ${legendKeys(this.state?.scene.settings.shadows !== false).map(
         (key) => html`<li title=${rayColorKeyHint(key)} data-key=${key}>
           <span class="swatch" style=${styleMap({ background: swatch(palette[key], key) })} aria-hidden="true"></span>
-          <span>${rayColorKeyName(key)}</span>
+          ${entryName(rayColorKeyName(key))}
         </li>`,
       )}
     </ul>`;
   }
+}
+
+/**
+ * A name as "kind — detail" ("Shadow ray — blocked") in two lines, the detail smaller below:
+ * the legend over the view is a narrow column, and the kind is what the eye looks for.
+ */
+function entryName(name: string) {
+  const at = name.indexOf(' — ');
+  if (at < 0) return html`<span>${name}</span>`;
+  return html`<span>${name.slice(0, at)}<span class="detail"><span class="separator"> — </span>${name.slice(at + 3)}</span></span>`;
 }
 
 /** The swatch's paint: the ray's colour in its dashes (RAY_DASHES at 150 px per metre), or solid. */
