@@ -32,7 +32,7 @@ export const LAB_CONTROLS = {
   tracer: [
     'shadows', 'max-depth', 'background', 'supersampling', 'sample-pattern', 'show-sample-points',
     'pixels', 'fov', 'light-types', 'dithering',
-    'aperture', 'focus-distance', 'focus-on-selected', 'lens-samples', 'time-samples',
+    'aperture', 'focus-distance', 'focus-on-selected', 'lens-samples', 'time-samples', 'time-pattern',
   ],
   rays: [
     'show', 'hide-no-hit', 'hide-negligible', 'negligible-threshold', 'transparency', 'radius',

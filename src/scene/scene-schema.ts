@@ -72,6 +72,10 @@ const settingsSchema = z
       .prefault({})
       .describe('A switch per light type; a switched-off type lights nothing.'),
     timeSamples: wholeNumberIn(LIMITS.timeSamples).default(1).describe('k: times in the open shutter per pixel sample (motion blur).'),
+    timePattern: z
+      .enum(['grid', 'jittered', 'random'])
+      .default('jittered')
+      .describe('Where the k times go: the same moments (i + ½)/k for every pixel, (i + ξ)/k per pixel sample, or k uniform ones.'),
   })
   .describe('How the image is rendered.');
 

@@ -35,6 +35,13 @@ export interface Camera {
 /** Where the s×s sub-pixel samples go: a regular grid (default), jittered cells or uniform random. */
 export type SamplePattern = 'grid' | 'jittered' | 'random';
 
+/**
+ * Where the k shutter times of a pixel sample go (motion blur): the same evenly spaced
+ * moments for every pixel, one random moment in each of k equal intervals (the default),
+ * or k uniform random moments. The pixel's three patterns, in time.
+ */
+export type TimePattern = 'grid' | 'jittered' | 'random';
+
 export interface RenderSettings {
   shadows: boolean;
   /** Deepest reflection/refraction recursion; primary rays are depth 0. */
@@ -51,6 +58,7 @@ export interface RenderSettings {
   lightTypes: { point: boolean; spot: boolean; area: boolean };
   /** k: times in the open shutter per pixel sample (motion blur). */
   timeSamples: number;
+  timePattern: TimePattern;
 }
 
 export interface Material {

@@ -3,6 +3,7 @@ import { discPointBuffer, jitteredDiscPoints } from './disc-samples.ts';
 import type { RayNode } from './ray-tree.ts';
 import { Ray } from './ray.ts';
 import { hashKey, RandomStream } from './sampler.ts';
+import { shutterTimes } from './shutter-times.ts';
 import { samplePosition } from './supersampling.ts';
 import type { TracerScene } from './tracer-scene.ts';
 import { WhittedIntegrator } from './whitted-integrator.ts';
@@ -19,9 +20,8 @@ export function integratorFor(scene: TracerScene): WhittedIntegrator {
   return integrator;
 }
 
-/** Salts so that lens points and shutter times never share random numbers with each other or the lights. */
+/** Salt so that lens points never share random numbers with shutter times or the lights. */
 const LENS_SALT = 0x1e25;
-const TIME_SALT = 0x71fe;
 
 const position: [number, number] = [0, 0];
 const direction = new Vector3();
@@ -56,6 +56,7 @@ export function renderPixel(
   const samples = s * s;
   const n = camera.lensSamplesPerSide;
   const k = scene.settings.timeSamples;
+  const timePattern = scene.settings.timePattern;
   const lensRays = n * n;
   const hasLens = camera.aperture > 0;
   // One ray per sample through the pinhole at time 0 is today's tracer, to the bit.
@@ -83,9 +84,8 @@ export function renderPixel(
     // The pinhole ray meets the plane in focus at F; every lens ray aims at F.
     camera.focalPoint(direction, focalPoint);
     if (hasLens) jitteredDiscPoints(n, random.reset(hashKey(seed, x, y, sample, LENS_SALT)), lensPoints);
-    // k stratified times (i + ξ)/k; every lens point is traced at each of them.
-    random.reset(hashKey(seed, x, y, sample, TIME_SALT));
-    for (let i = 0; i < k; i++) times[i] = k === 1 ? 0 : (i + random.next()) / k;
+    // k times in the open shutter, by the time pattern; every lens point is traced at each of them.
+    shutterTimes(timePattern, k, seed, x, y, sample, times);
     let root: RayNode | null = null;
     if (roots && nested) {
       root = primaryNode(primary.set(camera.eye, direction));

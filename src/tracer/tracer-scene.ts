@@ -12,7 +12,7 @@ import { Shape } from './shapes/shape.ts';
 
 const DEG = Math.PI / 180;
 
-/** The shape kinds and sample patterns the tracer compares in its hot code, kept as this program's own constants (see interned.ts). */
+/** The shape kinds and sample (and time) patterns the tracer compares in its hot code, kept as this program's own constants (see interned.ts). */
 const SHAPE_KINDS: { readonly [K in ShapeKind]: K } = { sphere: 'sphere', box: 'box', cylinder: 'cylinder', plane: 'plane', mesh: 'mesh' };
 const SAMPLE_PATTERNS: { readonly [K in SamplePattern]: K } = { grid: 'grid', jittered: 'jittered', random: 'random' };
 
@@ -46,7 +46,11 @@ export function buildTracerScene(scene: Scene, meshes: MeshLibrary): TracerScene
   const enabled = scene.settings.lightTypes;
   return {
     source: scene,
-    settings: { ...scene.settings, samplePattern: interned(scene.settings.samplePattern, SAMPLE_PATTERNS) },
+    settings: {
+      ...scene.settings,
+      samplePattern: interned(scene.settings.samplePattern, SAMPLE_PATTERNS),
+      timePattern: interned(scene.settings.timePattern, SAMPLE_PATTERNS),
+    },
     camera: new CameraRays(scene.camera),
     shapes,
     ...objectBvhs(shapes),

@@ -16,26 +16,48 @@ import {
   Quaternion,
   Vector3,
 } from 'three';
+import { DEFAULT_SEED } from '../render/render-job.ts';
 import type { Scene, SceneObject } from '../scene/scene.ts';
 import { CameraRays } from '../tracer/camera-rays.ts';
+import { shutterTimes } from '../tracer/shutter-times.ts';
 
 const DEG = Math.PI / 180;
 const LENS_COLOR = 0x7fd4ff;
 const FOCAL_PLANE_COLOR = 0xffd166;
 /** A moving object's copies in time are this faint: they show the path, not a second object. */
 const GHOST_OPACITY = 0.22;
-/** Copies drawn for one time sample: where the object ends, to show where it goes. */
+/** The copy drawn when no k moments are shared or chosen: where the object ends, to show where it goes. */
 const END_ONLY = [1];
 
 /** What the gizmos are drawn from, compared to skip rebuilding when nothing of it changed. */
-function keyOf(scene: Scene): string {
+function keyOf(scene: Scene, pixel: readonly [number, number] | null): string {
   const { camera, settings } = scene;
   const moving = scene.objects.filter(isMoving).map((o) => [o.id, o.shape, o.mesh, o.position, o.rotation, o.scale, o.velocity, o.material.color]);
-  return JSON.stringify([camera, settings.timeSamples, moving]);
+  // The chosen pixel matters only where each pixel has moments of its own.
+  const ownMoments = settings.timePattern !== 'grid' && moving.length > 0 ? pixel : null;
+  return JSON.stringify([camera, settings.timeSamples, settings.timePattern, ownMoments, moving]);
 }
 
 function isMoving(object: SceneObject): boolean {
   return object.velocity.some((component) => component !== 0);
+}
+
+/**
+ * The moments a moving object's copies are drawn at: only moments the rays are really cast
+ * at, from the tracer's own shutterTimes with the screen's seed —
+ * - grid: the k moments every pixel's rays are cast at;
+ * - jittered or random, with a chosen pixel: the moments of its first sample's rays (each
+ *   pixel, and each of its samples, has moments of its own, so choosing another pixel
+ *   moves the copies);
+ * - otherwise (one time sample, or no pixel to show the moments of): one copy where the
+ *   object ends, to show where it goes; the path line stands for the streak.
+ */
+export function copyMoments(scene: Scene, pixel: readonly [number, number] | null): number[] {
+  const { timeSamples: k, timePattern } = scene.settings;
+  if (k === 1 || (timePattern !== 'grid' && !pixel)) return END_ONLY;
+  const times = new Array<number>(k);
+  shutterTimes(timePattern, k, DEFAULT_SEED, pixel?.[0] ?? 0, pixel?.[1] ?? 0, 0, times);
+  return times;
 }
 
 /**
@@ -44,9 +66,9 @@ function isMoving(object: SceneObject): boolean {
  *   (aperture > 0) the plane in focus as a faint rectangle at `focusDistance`, as wide as
  *   the camera's screen sees there: a selected pixel's lens rays start spread over the disc
  *   and meet on that rectangle;
- * - a moving object's copies at the middle of each of its k shutter intervals ((i + ½)/k;
- *   the tracer's times are jittered within them), faint, with a line along its path; with
- *   one time sample, one copy where it ends.
+ * - a moving object's faint copies at the moments of copyMoments (the tracer's fixed
+ *   moments for the grid pattern, the chosen pixel's own for jittered and random ones),
+ *   with a line along its path.
  * Copies share the geometry of the drawn object (`objectOf`), so nothing is built per shape.
  */
 export class DistributionGizmos {
@@ -76,13 +98,17 @@ export class DistributionGizmos {
     this.group.add(this.lens, this.focalPlane, this.motion);
   }
 
-  /** Brings the drawings in line with `scene`; `objectOf` gives an object's drawn mesh (for its geometry). */
-  sync(scene: Scene, objectOf: (id: string) => Object3D | undefined): void {
-    const key = keyOf(scene);
+  /**
+   * Brings the drawings in line with `scene`; `objectOf` gives an object's drawn mesh (for
+   * its geometry); `pixel` is the camera screen's chosen pixel, whose moments the copies show
+   * when each pixel has its own.
+   */
+  sync(scene: Scene, objectOf: (id: string) => Object3D | undefined, pixel: readonly [number, number] | null = null): void {
+    const key = keyOf(scene, pixel);
     if (key === this.key) return;
     this.key = key;
     this.syncCamera(scene);
-    this.syncMotion(scene, objectOf);
+    this.syncMotion(scene, objectOf, pixel);
   }
 
   private syncCamera({ camera }: Scene): void {
@@ -104,12 +130,11 @@ export class DistributionGizmos {
     this.focalPlane.scale.set(halfHeight * (columns / rows), halfHeight, 1);
   }
 
-  private syncMotion(scene: Scene, objectOf: (id: string) => Object3D | undefined): void {
+  private syncMotion(scene: Scene, objectOf: (id: string) => Object3D | undefined, pixel: readonly [number, number] | null): void {
     for (const item of this.owned) item.dispose();
     this.owned = [];
     this.motion.clear();
-    const k = scene.settings.timeSamples;
-    const times = k === 1 ? END_ONLY : Array.from({ length: k }, (_, i) => (i + 0.5) / k);
+    const times = copyMoments(scene, pixel);
     for (const object of scene.objects.filter(isMoving)) {
       const drawn = objectOf(object.id);
       const geometry = drawn instanceof Mesh ? (drawn.geometry as BufferGeometry) : null;

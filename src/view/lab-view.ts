@@ -600,8 +600,11 @@ export class LabView {
       this.objects.sync(state.scene);
       this.rasterLights.sync(state.scene);
       this.lightGizmos.sync(state.scene);
-      this.distribution.sync(state.scene, (id) => this.objects.objectOf(id));
       if (previous && !sameCamera(previous, state)) this.flight.cameraMoved(this.tracerCameraPose());
+    }
+    // A moving object's copies show the chosen pixel's moments where each pixel has its own.
+    if (state.scene !== previous?.scene || state.selectedPixel !== previous.selectedPixel) {
+      this.distribution.sync(state.scene, (id) => this.objects.objectOf(id), state.selectedPixel);
     }
     if (
       state.scene !== previous?.scene ||

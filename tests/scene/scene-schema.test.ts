@@ -42,6 +42,7 @@ describe('defaults', () => {
         settings: {
           shadows: true, maxDepth: 3, background: [0.7, 0.7, 0.7], supersampling: 1, samplePattern: 'grid',
           imageSize: [512, 384], dithering: false, lightTypes: { point: true, spot: true, area: true }, timeSamples: 1,
+          timePattern: 'jittered',
         },
         objects: [],
         lights: [],
@@ -137,6 +138,7 @@ describe('each kind of problem reads as "path: reason"', () => {
     [{ settings: { imageSize: [2.5, 384] } }, 'settings.imageSize[0]: must be a whole number, got 2.5'],
     [{ settings: { shadows: 'yes' } }, 'settings.shadows: must be true or false, got "yes"'],
     [{ settings: { samplePattern: 'poisson' } }, 'settings.samplePattern: must be one of grid, jittered, random, got "poisson"'],
+    [{ settings: { timePattern: 'stratified' } }, 'settings.timePattern: must be one of grid, jittered, random, got "stratified"'],
     [{ settings: { background: [0.5, 2, 0] } }, 'settings.background[1]: must be between 0 and 1, got 2'],
     [{ settings: { lightTypes: { laser: true } } }, 'settings.lightTypes: unknown field "laser"'],
     [{ objects: {} }, 'objects: must be a list, got an object'],

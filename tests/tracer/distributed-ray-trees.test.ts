@@ -36,6 +36,8 @@ const cases: [string, Parameters<typeof effectsScene>[0]][] = [
   ['depth of field with one lens point', { camera: { aperture: 0.2, lensSamples: 1 } }],
   ['glossy reflection and frosted glass (roughness 0.3)', { rough: 0.3 }],
   ['motion blur (velocity 1 m, 4 times)', { velocity: [1, 0, 0.3], settings: { timeSamples: 4 } }],
+  ['motion blur at the grid\'s fixed times', { velocity: [1, 0, 0.3], settings: { timeSamples: 4, timePattern: 'grid' } }],
+  ['motion blur at random times, supersampled', { velocity: [1, 0, 0.3], settings: { timeSamples: 3, timePattern: 'random', supersampling: 2 } }],
   ['all three, supersampled', { camera: { aperture: 0.1, lensSamples: 2 }, rough: 0.2, velocity: [0.5, 0, 0], settings: { timeSamples: 2, supersampling: 2, samplePattern: 'jittered' } }],
 ];
 

@@ -1,5 +1,8 @@
 import { BoxGeometry, Mesh, MeshBasicMaterial, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
+import { DEFAULT_SEED } from '../../src/render/render-job.ts';
+import { tracePixel } from '../../src/tracer/trace-pixel.ts';
+import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
 import { DistributionGizmos } from '../../src/view/distribution-gizmos.ts';
 import { sceneFrom } from '../support/test-scene.ts';
 
@@ -40,18 +43,47 @@ describe('distribution gizmos', () => {
     expect(named(gizmos, 'plane in focus').position.z).toBeCloseTo(1, 12);
   });
 
-  it('draw a moving object at the middle of each of its k shutter intervals, with its path', () => {
+  function copiesOf(gizmos: DistributionGizmos, id: string): Mesh[] {
+    return named(gizmos, 'copies in time').children.filter((child) => child.name.startsWith(`${id} at`)) as Mesh[];
+  }
+
+  const moving = (settings: Record<string, unknown>) =>
+    sceneFrom({ settings: { timeSamples: 4, ...settings }, objects: [{ id: 'ball', position: [1, 0.5, 0], velocity: [2, 0, 0] }, { id: 'still' }] });
+
+  it('draw a moving object at the grid\'s 4 moments, the same for every pixel, with its path', () => {
     const gizmos = new DistributionGizmos();
-    const scene = sceneFrom({ settings: { timeSamples: 4 }, objects: [{ id: 'ball', position: [1, 0.5, 0], velocity: [2, 0, 0] }, { id: 'still' }] });
-    gizmos.sync(scene, objectOf);
-    const copies = named(gizmos, 'copies in time').children.filter((child) => child.name.startsWith('ball at')) as Mesh[];
+    gizmos.sync(moving({ timePattern: 'grid' }), objectOf);
+    const copies = copiesOf(gizmos, 'ball');
     expect(copies.map((copy) => copy.position.x)).toEqual([1.25, 1.75, 2.25, 2.75]);
     expect(copies.every((copy) => copy.geometry === drawnBox.geometry)).toBe(true);
     expect(named(gizmos, 'path of ball')).toBeDefined();
     expect(gizmos.group.getObjectByName('path of still')).toBeUndefined();
-    // One time sample: one copy where it ends.
-    gizmos.sync({ ...scene, settings: { ...scene.settings, timeSamples: 1 } }, objectOf);
-    const end = named(gizmos, 'copies in time').children.filter((child) => child.name.startsWith('ball at'));
-    expect(end.map((copy) => copy.position.x)).toEqual([3]);
+    gizmos.sync(moving({ timePattern: 'grid' }), objectOf, [3, 2]);
+    expect(copiesOf(gizmos, 'ball').map((copy) => copy.position.x)).toEqual([1.25, 1.75, 2.25, 2.75]);
+  });
+
+  for (const timePattern of ['jittered', 'random'] as const) {
+    it(`draw a moving object at the chosen pixel's own moments, its ray tree's (${timePattern})`, () => {
+      const gizmos = new DistributionGizmos();
+      const scene = moving({ timePattern });
+      const tracer = buildTracerScene(scene, new Map());
+      for (const pixel of [[3, 2], [0, 1]] as const) {
+        gizmos.sync(scene, objectOf, pixel);
+        const moments = tracePixel(tracer, pixel[0], pixel[1], DEFAULT_SEED).rays[0]!.children.map((ray) => ray.time!);
+        expect(moments).toHaveLength(4);
+        const xs = copiesOf(gizmos, 'ball').map((copy) => copy.position.x);
+        expect(xs).toHaveLength(4);
+        xs.forEach((x, i) => expect(x).toBeCloseTo(1 + 2 * moments[i]!, 12));
+      }
+    });
+  }
+
+  it('draw one copy where it ends with one time sample, or without a pixel whose moments to show', () => {
+    const gizmos = new DistributionGizmos();
+    gizmos.sync(moving({ timeSamples: 1, timePattern: 'grid' }), objectOf);
+    expect(copiesOf(gizmos, 'ball').map((copy) => copy.position.x)).toEqual([3]);
+    gizmos.sync(moving({ timePattern: 'jittered' }), objectOf);
+    expect(copiesOf(gizmos, 'ball').map((copy) => copy.position.x)).toEqual([3]);
+    expect(named(gizmos, 'path of ball')).toBeDefined();
   });
 });

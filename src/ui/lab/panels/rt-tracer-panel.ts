@@ -2,7 +2,7 @@ import { msg, str } from '@lit/localize';
 import { html, nothing } from 'lit';
 import { ifDefined } from 'lit/directives/if-defined.js';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
-import type { Camera, LightType, RenderSettings, SamplePattern } from '../../../scene/scene.ts';
+import type { Camera, LightType, RenderSettings, SamplePattern, TimePattern } from '../../../scene/scene.ts';
 import { LIMITS } from '../../../scene/scene-limits.ts';
 import { effectiveFocusDistance, focusDistanceTo } from '../../../scene/camera-focus.ts';
 import { shownName } from '../scene-names.ts';
@@ -15,8 +15,8 @@ const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
  * @summary The ray tracer's settings (the original lab's ray tracer panel): shadows,
  * recursion depth, background, a switch per light type, dithering; supersampling with its
  * pattern and "show sample points"; the camera's screen of pixels and field of view; and
- * the lens and shutter (aperture, focus distance, lens and time samples); and the size of
- * the rendered image.
+ * the lens and shutter (aperture, focus distance, lens and time samples, the time pattern);
+ * and the size of the rendered image.
  *
  * Edits are `settings.changed`, `camera.changed` and (sample points) `rays.changed`
  * actions on `store`; a refused edit's reason is shown next to its control.
@@ -154,7 +154,7 @@ export class RtTracerPanel extends StorePanel {
     `;
   }
 
-  /** Depth of field and motion blur: aperture, focus distance (with "focus on the selected object"), lens and time samples. */
+  /** Depth of field and motion blur: aperture, focus distance (with "focus on the selected object"), lens and time samples, and when the time samples fall. */
   private lensControls(): ControlPart[] {
     if (!this.state) return [];
     const { camera, settings, objects } = this.state.scene;
@@ -180,6 +180,17 @@ export class RtTracerPanel extends StorePanel {
         : nothing,
       this.slider(lensSamplesSpec(camera.aperture === 0), n, (lensSamples) => cam({ lensSamples }), msg(str`${n} × ${n} = ${n * n} lens rays per sample`)),
       this.slider(timeSamplesSpec(), k, (timeSamples) => ({ type: 'settings.changed', changes: { timeSamples } }), k === 1 ? msg('The shutter sees one moment') : msg(str`${k} moments per sample`)),
+      // The pixel's pattern choice, in time (shutter-times.ts): fixed moments give copies, moments per pixel give grain.
+      this.choice<TimePattern>(
+        { name: 'timePattern', label: msg('Time pattern'), tooltip: msg('When in the open shutter each pixel’s rays are sent (with more than 1 time sample).') },
+        [
+          { value: 'grid', label: msg('Grid'), tooltip: msg('The same evenly spaced moments for every pixel: a moving object shows as separate copies.') },
+          { value: 'jittered', label: msg('Jittered'), tooltip: msg('One random moment in each equal part of the open shutter, new for every pixel: a grainy streak instead of copies.') },
+          { value: 'random', label: msg('Random'), tooltip: msg('Moments anywhere in the open shutter, new for every pixel: they can clump, so the streak is grainier.') },
+        ],
+        settings.timePattern,
+        (timePattern) => ({ type: 'settings.changed', changes: { timePattern } }),
+      ),
     ];
   }
 }
