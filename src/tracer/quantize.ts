@@ -15,8 +15,9 @@ import { linearToSrgb } from './srgb.ts';
  *   from q = 76 (30 % of white) on, where the encoding is flatter, some neighbouring levels
  *   share a byte: 183 of the 256 levels can be told apart on an 8-bit screen.
  * - 'srgb': the light is sRGB-encoded before it is rounded, b = round(255·linearToSrgb(c)), as
- *   image files are (Poynton, "Digital Video and HD", ch. 27): the screen's decoding gives c
- *   back, with the 256 levels spread evenly in encoded value, so closely spaced in dark light.
+ *   image files are (Poynton, "Digital Video and HD", the chapter on gamma): the screen's
+ *   decoding gives c back, and the 256 levels, evenly spread in encoded value, lie close
+ *   together in dark light.
  *
  * Optional ordered dithering adds a 4×4 Bayer threshold of ±½ step before the rounding that
  * stores the level (Bayer 1973), so a smooth gradient turns into a fine pattern of the two

@@ -1,6 +1,6 @@
 /**
- * The sRGB transfer function (IEC 61966-2-1:1999; Poynton, "Digital Video and HD", 2nd ed.,
- * ch. 27): how an image file's values relate to light. A screen shows an 8-bit value v as the
+ * The sRGB transfer function (IEC 61966-2-1:1999; Poynton, "Digital Video and HD", the chapter
+ * on gamma): how an image file's values relate to light. A screen shows an 8-bit value v as the
  * light srgbToLinear(v / 255) (as a fraction of its white); a file that is to show light L
  * stores linearToSrgb(L) · 255.
  *
