@@ -56,6 +56,21 @@ describe('storing the image in 8 bits', () => {
     expect(shownLight(bytes([0.5], 'none')[0]!)).toBeCloseTo(0.216, 3);
   });
 
+  it('sRGB stores round(255·E(c)), dithered round(255·E(c) + threshold), as the formula gives it', () => {
+    const width = 4;
+    for (const dithering of [false, true]) {
+      const rgb = Float32Array.from(ramp.flatMap((light) => [light, light, light]));
+      const height = Math.floor(ramp.length / width);
+      const rgba = toRgba8(rgb.subarray(0, width * height * 3), width, height, { dithering, encoding: 'srgb' });
+      const bayer = [0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5];
+      const wrong = ramp.slice(0, width * height).filter((light, i) => {
+        const threshold = dithering ? (bayer[(Math.floor(i / width) % 4) * 4 + (i % width)]! + 0.5) / 16 - 0.5 : 0;
+        return rgba[i * 4] !== Math.round(255 * linearToSrgb(light) + threshold);
+      });
+      expect(wrong).toEqual([]);
+    }
+  });
+
   it('linear and sRGB both show the light c, to within the rounding of their levels', () => {
     const largestError = (encoding: ImageEncoding) => bytes(ramp, encoding).reduce((largest, b, i) => Math.max(largest, Math.abs(shownLight(b) - ramp[i]!)), 0);
     // sRGB: half a step of the encoded value, at most 0.5/255 times decoding's steepest slope (2.28 at white).
