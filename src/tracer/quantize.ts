@@ -51,14 +51,16 @@ const SRGB_BYTE_STARTS = Array.from({ length: 17 }, (_, k) =>
  */
 const SRGB_BINS = 4096;
 
-/** Per threshold k, the byte of each bin's start i / SRGB_BINS (and of 1, the last). */
-const SRGB_BIN_BYTES = SRGB_BYTE_STARTS.map((starts) =>
-  Uint8Array.from({ length: SRGB_BINS + 1 }, (_, i) => {
-    let byte = 0;
+/** Per threshold k, the byte of each bin's start i / SRGB_BINS (and of 1, the last): one walk up the bytes. */
+const SRGB_BIN_BYTES = SRGB_BYTE_STARTS.map((starts) => {
+  const bytes = new Uint8Array(SRGB_BINS + 1);
+  let byte = 0;
+  for (let i = 0; i <= SRGB_BINS; i++) {
     while (byte < 255 && starts[byte + 1]! <= i / SRGB_BINS) byte++;
-    return byte;
-  }),
-);
+    bytes[i] = byte;
+  }
+  return bytes;
+});
 
 /** The last byte whose light starts at or below `light` (0..1), for threshold k. */
 function srgbByte(k: number, light: number): number {
