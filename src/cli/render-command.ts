@@ -70,7 +70,7 @@ Options:
       pool.dispose(); // the worker threads would keep the process alive
     }
 
-    await writePng(out, toRgba8(result.rgb, width, height, scene.settings.dithering), width, height);
+    await writePng(out, toRgba8(result.rgb, width, height, scene.settings), width, height);
     process.stdout.write(`wrote ${out} (${width}×${height})\n`);
     if (line.flag('stats')) {
       const { stats } = result;

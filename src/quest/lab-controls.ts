@@ -31,7 +31,7 @@ export const LAB_CONTROLS = {
   ],
   tracer: [
     'shadows', 'max-depth', 'background', 'supersampling', 'sample-pattern', 'show-sample-points',
-    'pixels', 'fov', 'light-types', 'dithering',
+    'pixels', 'fov', 'light-types', 'dithering', 'encoding',
     'aperture', 'focus-distance', 'focus-on-selected', 'lens-samples', 'time-samples', 'time-pattern',
   ],
   rays: [

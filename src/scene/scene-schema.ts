@@ -63,6 +63,10 @@ const settingsSchema = z
       .default([512, 384])
       .describe('Width and height of the full rendered image.'),
     dithering: z.boolean().default(false).describe('Ordered dithering before 8-bit quantization.'),
+    encoding: z
+      .enum(['none', 'linear', 'srgb'])
+      .default('none')
+      .describe('How colours become 8-bit values: none (c·255, no gamma), linear (light in equal steps) or srgb (sRGB-encoded light).'),
     lightTypes: z
       .strictObject({
         point: z.boolean().default(true),

@@ -42,6 +42,14 @@ export type SamplePattern = 'grid' | 'jittered' | 'random';
  */
 export type TimePattern = 'grid' | 'jittered' | 'random';
 
+/**
+ * How the image's colours c become its 8-bit values (src/tracer/quantize.ts, docs/tracer.md):
+ * 'none' writes round(255·c) and lets the screen read it as its own value (no gamma, as the
+ * Virtual Ray Tracer); 'linear' stores the light c in 8 equal-light steps and shows that light;
+ * 'srgb' stores the light sRGB-encoded, as image files do, and shows that light.
+ */
+export type ImageEncoding = 'none' | 'linear' | 'srgb';
+
 export interface RenderSettings {
   shadows: boolean;
   /** Deepest reflection/refraction recursion; primary rays are depth 0. */
@@ -54,6 +62,8 @@ export interface RenderSettings {
   imageSize: [number, number];
   /** Ordered (Bayer) dithering before 8-bit quantization; off by default. */
   dithering: boolean;
+  /** How colours become 8-bit values; 'none' by default. */
+  encoding: ImageEncoding;
   /** A switch per light type (the VRT ray tracer panel's toggles). */
   lightTypes: { point: boolean; spot: boolean; area: boolean };
   /** k: times in the open shutter per pixel sample (motion blur). */

@@ -1,5 +1,9 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { renderImageData } from '../../src/render/image-data.ts';
+import type { Quantization } from '../../src/tracer/quantize.ts';
+
+const PLAIN: Quantization = { dithering: false, encoding: 'none' };
+const DITHERED: Quantization = { dithering: true, encoding: 'none' };
 
 /**
  * Node has no ImageData: a stand-in with the browser's constructor signature records what the
@@ -29,19 +33,19 @@ function flatGrey(): { width: number; height: number; rgb: Float32Array } {
 describe('renderImageData', () => {
   it('quantizes linear RGB to 8-bit RGBA without gamma, clamping out-of-range values', () => {
     const rgb = new Float32Array([0, 0.5, 1, 1.7, -0.2, 0.25]);
-    const pixels = renderImageData({ width: 2, height: 1, rgb }, false);
+    const pixels = renderImageData({ width: 2, height: 1, rgb }, PLAIN);
     expect([pixels.width, pixels.height]).toEqual([2, 1]);
     expect([...pixels.data]).toEqual([0, 128, 255, 255, 255, 0, 64, 255]);
   });
 
   it('without dithering, a flat colour stays one flat value', () => {
-    const { data } = renderImageData(flatGrey(), false);
+    const { data } = renderImageData(flatGrey(), PLAIN);
     const reds = new Set([...data].filter((_, i) => i % 4 === 0));
     expect(reds).toEqual(new Set([101]));
   });
 
   it('with dithering, a colour between two steps becomes a pattern of both, averaging to it', () => {
-    const { data } = renderImageData(flatGrey(), true);
+    const { data } = renderImageData(flatGrey(), DITHERED);
     const reds = [...data].filter((_, i) => i % 4 === 0);
     expect(new Set(reds)).toEqual(new Set([100, 101]));
     // The 4×4 Bayer threshold covers the step evenly: half the pixels round each way.
@@ -55,17 +59,20 @@ describe('renderImageData in bands', () => {
   /** 6 × 10 pixels of a ramp, so that every row and column differs. */
   const ramp = { width: 6, height: 10, rgb: Float32Array.from({ length: 6 * 10 * 3 }, (_, i) => (i % 97) / 96) };
 
-  it('gives, band by band, exactly the rows of the whole image, dithering included', () => {
+  it('gives, band by band, exactly the rows of the whole image, with or without dithering, in every encoding', () => {
     for (const dithering of [false, true]) {
-      const whole = renderImageData(ramp, dithering).data;
-      const bands = [renderImageData(ramp, dithering, 0, 4), renderImageData(ramp, dithering, 4, 8), renderImageData(ramp, dithering, 8, 10)];
-      expect(bands.map((band) => band.height)).toEqual([4, 4, 2]);
-      expect(bands.flatMap((band) => [...band.data])).toEqual([...whole]);
+      for (const encoding of ['none', 'linear', 'srgb'] as const) {
+        const quantization = { dithering, encoding };
+        const whole = renderImageData(ramp, quantization).data;
+        const bands = [renderImageData(ramp, quantization, 0, 4), renderImageData(ramp, quantization, 4, 8), renderImageData(ramp, quantization, 8, 10)];
+        expect(bands.map((band) => band.height)).toEqual([4, 4, 2]);
+        expect(bands.flatMap((band) => [...band.data])).toEqual([...whole]);
+      }
     }
   });
 
   it('refuses a band that would shift the dither pattern or leave the image', () => {
-    expect(() => renderImageData(ramp, true, 2, 6)).toThrow(RangeError);
-    expect(() => renderImageData(ramp, true, 8, 12)).toThrow(RangeError);
+    expect(() => renderImageData(ramp, DITHERED, 2, 6)).toThrow(RangeError);
+    expect(() => renderImageData(ramp, DITHERED, 8, 12)).toThrow(RangeError);
   });
 });

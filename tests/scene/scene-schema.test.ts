@@ -41,7 +41,7 @@ describe('defaults', () => {
         camera: { position: [0, 1, 5], target: [0, 0.5, 0], fov: 45, pixels: [8, 6], screenDistance: 1, aperture: 0, lensSamples: 1 },
         settings: {
           shadows: true, maxDepth: 3, background: [0.7, 0.7, 0.7], supersampling: 1, samplePattern: 'grid',
-          imageSize: [512, 384], dithering: false, lightTypes: { point: true, spot: true, area: true }, timeSamples: 1,
+          imageSize: [512, 384], dithering: false, encoding: 'none', lightTypes: { point: true, spot: true, area: true }, timeSamples: 1,
           timePattern: 'jittered',
         },
         objects: [],
@@ -139,6 +139,7 @@ describe('each kind of problem reads as "path: reason"', () => {
     [{ settings: { shadows: 'yes' } }, 'settings.shadows: must be true or false, got "yes"'],
     [{ settings: { samplePattern: 'poisson' } }, 'settings.samplePattern: must be one of grid, jittered, random, got "poisson"'],
     [{ settings: { timePattern: 'stratified' } }, 'settings.timePattern: must be one of grid, jittered, random, got "stratified"'],
+    [{ settings: { encoding: 'gamma' } }, 'settings.encoding: must be one of none, linear, srgb, got "gamma"'],
     [{ settings: { background: [0.5, 2, 0] } }, 'settings.background[1]: must be between 0 and 1, got 2'],
     [{ settings: { lightTypes: { laser: true } } }, 'settings.lightTypes: unknown field "laser"'],
     [{ objects: {} }, 'objects: must be a list, got an object'],

@@ -97,10 +97,10 @@ describe('concentric disc mapping', () => {
 });
 
 describe('8-bit quantization', () => {
-  it('without dithering is exactly round(clamp(c)·255)', () => {
+  it('by default (no encoding, no dithering) is exactly round(clamp(c)·255)', () => {
     const values = [0, 0.5, 1, -0.2, 1.7, 0.1234, 0.99];
     const rgb = new Float32Array(values.length * 3).map((_, i) => values[Math.floor(i / 3)]);
-    const rgba = toRgba8(rgb, values.length, 1, false);
+    const rgba = toRgba8(rgb, values.length, 1, { dithering: false, encoding: 'none' });
     values.forEach((c, i) => {
       const expected = Math.round(Math.min(1, Math.max(0, Math.fround(c))) * 255);
       expect([rgba[i * 4], rgba[i * 4 + 1], rgba[i * 4 + 2], rgba[i * 4 + 3]]).toEqual([expected, expected, expected, 255]);
@@ -110,8 +110,8 @@ describe('8-bit quantization', () => {
   it('with dithering keeps the mean of a flat area but breaks a band into a pattern', () => {
     const level = 10.3 / 255;
     const rgb = new Float32Array(16 * 16 * 3).fill(level);
-    const plain = toRgba8(rgb, 16, 16, false);
-    const dithered = toRgba8(rgb, 16, 16, true);
+    const plain = toRgba8(rgb, 16, 16, { dithering: false, encoding: 'none' });
+    const dithered = toRgba8(rgb, 16, 16, { dithering: true, encoding: 'none' });
     const red = (image: Uint8ClampedArray) => Array.from({ length: 256 }, (_, i) => image[i * 4]);
     expect(new Set(red(plain))).toEqual(new Set([10]));
     expect(new Set(red(dithered))).toEqual(new Set([10, 11]));

@@ -105,7 +105,7 @@ const cases: [string, () => Scene][] = [
 async function render(scene: Scene): Promise<Uint8ClampedArray> {
   const tracer = buildTracerScene(scene, await loadMeshesFromDisk(meshNamesInScene(scene)));
   const rgb = renderTile(tracer, { x: 0, y: 0, width: WIDTH, height: HEIGHT }, { imageWidth: WIDTH, imageHeight: HEIGHT, seed: 1 });
-  return toRgba8(rgb, WIDTH, HEIGHT, scene.settings.dithering);
+  return toRgba8(rgb, WIDTH, HEIGHT, scene.settings);
 }
 
 describe('golden images', () => {

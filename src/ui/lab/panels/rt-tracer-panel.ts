@@ -2,7 +2,7 @@ import { msg, str } from '@lit/localize';
 import { html, nothing } from 'lit';
 import { ifDefined } from 'lit/directives/if-defined.js';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
-import type { Camera, LightType, RenderSettings, SamplePattern, TimePattern } from '../../../scene/scene.ts';
+import type { Camera, ImageEncoding, LightType, RenderSettings, SamplePattern, TimePattern } from '../../../scene/scene.ts';
 import { LIMITS } from '../../../scene/scene-limits.ts';
 import { effectiveFocusDistance, focusDistanceTo } from '../../../scene/camera-focus.ts';
 import { shownName } from '../scene-names.ts';
@@ -13,7 +13,8 @@ const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
 
 /**
  * @summary The ray tracer's settings (the original lab's ray tracer panel): shadows,
- * recursion depth, background, a switch per light type, dithering; supersampling with its
+ * recursion depth, background, a switch per light type, dithering and the image's 8-bit
+ * encoding (none, linear, sRGB: src/tracer/quantize.ts); supersampling with its
  * pattern and "show sample points"; the camera's screen of pixels and field of view; and
  * the lens and shutter (aperture, focus distance, lens and time samples, the time pattern);
  * and the size of the rendered image.
@@ -70,6 +71,24 @@ export class RtTracerPanel extends StorePanel {
           },
           settings.dithering,
           (dithering) => set({ dithering }),
+        ),
+        this.choice<ImageEncoding>(
+          {
+            name: 'encoding',
+            label: msg('Encoding'),
+            tooltip: msg('How each pixel’s light becomes a whole number from 0 to 255 (8 bits) in the rendered image.'),
+          },
+          [
+            {
+              value: 'none',
+              label: msg('None'),
+              tooltip: msg('The colour c is written as c × 255 and the screen reads that number as its own value, so you see less light than c (no gamma, as in the Virtual Ray Tracer).'),
+            },
+            { value: 'linear', label: msg('Linear'), tooltip: msg('The light is stored in 256 equal steps and shown as that light: few steps for the dark tones.') },
+            { value: 'srgb', label: msg('sRGB'), tooltip: msg('The light is sRGB-encoded before it is rounded, as in photos and PNG files: many steps for the dark tones.') },
+          ],
+          settings.encoding,
+          (encoding) => set({ encoding }),
         ),
       ])}
       ${this.section(msg('Anti-aliasing'), 'tracer-supersampling', [

@@ -1,5 +1,6 @@
 import { DITHER_PERIOD, renderImageData } from '../../../render/image-data.ts';
 import type { PreviewImage, RenderChanges, RenderImage } from '../../../render/render-job.ts';
+import type { Quantization } from '../../../tracer/quantize.ts';
 import type { Tile } from '../../../tracer/tile.ts';
 import { type LevelRange, stretchContrast } from './contrast-stretch.ts';
 import { type CanvasView, pixelsCovering, type Rect, sameView, type Size } from './image-zoom.ts';
@@ -41,7 +42,8 @@ const bandRows = (width: number) => Math.max(DITHER_PERIOD, Math.floor(BAND_PIXE
  */
 export class BandPainter {
   private image: RenderImage | null = null;
-  private dithering = false;
+  /** How the image is quantized: the rendered scene's dithering and encoding. */
+  private quantization: Quantization = { dithering: false, encoding: 'none' };
   /** Whether all of the image is to be shown (a finished render), not only its tiles. */
   private whole = false;
   /** Whole-image rows still to paint, [from, to); none when from ≥ to. */
@@ -79,8 +81,8 @@ export class BandPainter {
   ) {}
 
   /** The whole of `image` is to be shown (a finished render). */
-  paint(image: RenderImage, dithering: boolean): void {
-    this.take(image, dithering);
+  paint(image: RenderImage, quantization: Quantization): void {
+    this.take(image, quantization);
     this.whole = true;
     this.rendered = null;
     [this.from, this.to] = [0, image.height];
@@ -91,8 +93,8 @@ export class BandPainter {
   }
 
   /** A running render's `changes` to `image` (its full-resolution picture): see the class comment. */
-  paintChanges(image: RenderImage, changes: RenderChanges, dithering: boolean): void {
-    this.take(image, dithering);
+  paintChanges(image: RenderImage, changes: RenderChanges, quantization: Quantization): void {
+    this.take(image, quantization);
     if (changes.preview) {
       const { image: preview, rows } = changes.preview;
       // A finer preview starts as the coarser one scaled up (TiledRender): the coarser one's
@@ -153,12 +155,13 @@ export class BandPainter {
     this.clear = false;
   }
 
-  /** A different image (or dithering) than the one painted starts over on a cleared canvas. */
-  private take(image: RenderImage, dithering: boolean): void {
-    if (image.rgb === this.image?.rgb && dithering === this.dithering) return;
+  /** A different image (or quantization) than the one painted starts over on a cleared canvas. */
+  private take(image: RenderImage, quantization: Quantization): void {
+    const { dithering, encoding } = this.quantization;
+    if (image.rgb === this.image?.rgb && quantization.dithering === dithering && quantization.encoding === encoding) return;
     this.clear = true;
     this.image = image;
-    this.dithering = dithering;
+    this.quantization = quantization;
     this.whole = false;
     this.rendered = null;
     this.from = this.to = 0;
@@ -245,7 +248,7 @@ export class BandPainter {
     if (!own || own.width !== preview.width || own.height !== preview.height) own = this.previewCanvas = new OffscreenCanvas(preview.width, preview.height);
     const from = this.previewFrom - (this.previewFrom % DITHER_PERIOD);
     const to = Math.min(this.previewTo, preview.height, from + bandRows(preview.width));
-    own.getContext('2d')!.putImageData(renderImageData(preview, this.dithering, from, to), 0, from);
+    own.getContext('2d')!.putImageData(renderImageData(preview, this.quantization, from, to), 0, from);
     this.drawPreviewRows(context, preview, image, view, from, to);
     this.previewFrom = to;
   }
@@ -284,7 +287,7 @@ export class BandPainter {
     if (!part) return;
     const { x: offsetX, y: offsetY } = view.window;
     if (view.full.width !== image.width || view.full.height !== image.height) {
-      const shrunk = shrinkPiece(image, this.rendered, view.full, this.dithering, part);
+      const shrunk = shrinkPiece(image, this.rendered, view.full, this.quantization, part);
       context.putImageData(this.stretched(shrunk.pixels), shrunk.x - offsetX, shrunk.y - offsetY, shrunk.part.x, shrunk.part.y, shrunk.part.width, shrunk.part.height);
       return;
     }
@@ -296,7 +299,7 @@ export class BandPainter {
       const from = ((top + row) * image.width + left) * 3;
       rect.rgb.set(image.rgb.subarray(from, from + rect.width * 3), row * rect.width * 3);
     }
-    context.putImageData(this.stretched(renderImageData(rect, this.dithering)), left - offsetX, top - offsetY, x - left, y - top, width, height);
+    context.putImageData(this.stretched(renderImageData(rect, this.quantization)), left - offsetX, top - offsetY, x - left, y - top, width, height);
   }
 
   private stretched(pixels: ImageData): ImageData {

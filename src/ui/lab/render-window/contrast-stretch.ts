@@ -1,7 +1,8 @@
 /**
  * "Stretch contrast" for the render window: a dark, smooth gradient climbs only a few of the
- * 256 levels of an 8-bit image (level 13's floor: about 28 to 55), so its bands, one level
- * apart, are hard to see on screen. A linear stretch maps the image's own darkest level to
+ * 256 levels of an 8-bit image, so its bands, one level apart, are hard to see on screen.
+ * It works on the values on screen (for `encoding: 'linear'`, the bytes that show each stored
+ * level: quantize.ts). A linear stretch maps the image's own darkest level to
  * 0 and its brightest to 255 (a full-scale contrast stretch, e.g. Gonzalez & Woods, Digital
  * Image Processing, §3.2): every level stays a level of its own and keeps its order, so the
  * bands and the dither pattern are kept, only further apart in brightness.

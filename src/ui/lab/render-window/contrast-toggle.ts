@@ -2,12 +2,13 @@ import { msg, str } from '@lit/localize';
 import { html, nothing, type ReactiveController, type ReactiveControllerHost } from 'lit';
 import { renderImageData } from '../../../render/image-data.ts';
 import type { RenderImage } from '../../../render/render-job.ts';
+import type { Quantization } from '../../../tracer/quantize.ts';
 import { type LevelRange, levelRange } from './contrast-stretch.ts';
 
-/** The finished image and whether it was dithered: what a stretch is made from. */
+/** The finished image and how it is quantized (dithering, encoding): what a stretch is made from. */
 export interface FinishedImage {
   image: RenderImage;
-  dithering: boolean;
+  quantization: Quantization;
 }
 
 /**
@@ -46,7 +47,7 @@ export class ContrastToggle implements ReactiveController {
       if (!this.range) return;
       [this.range, this.source] = [null, null];
     } else if (finished.image !== this.source) {
-      this.range = levelRange(renderImageData(finished.image, finished.dithering).data);
+      this.range = levelRange(renderImageData(finished.image, finished.quantization).data);
       this.source = finished.image;
     } else {
       return;

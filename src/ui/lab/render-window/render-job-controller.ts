@@ -5,6 +5,7 @@ import type { RenderPool } from '../../../render/render-pool.ts';
 import type { Store } from '../../../lab-state/store.ts';
 import { meshNamesInScene } from '../../../scene/mesh-names.ts';
 import type { Scene } from '../../../scene/scene.ts';
+import type { Quantization } from '../../../tracer/quantize.ts';
 import { countRays } from './render-figures.ts';
 
 /** Where the render on show is in its life. */
@@ -29,9 +30,9 @@ export interface ShownRender {
 /** What the window does with a render's pictures while the job runs. */
 export interface RenderPainter {
   /** The finished image, all of it. */
-  paint(image: RenderImage, dithering: boolean): void;
+  paint(image: RenderImage, quantization: Quantization): void;
   /** A running job's changes (new preview rows, tiles of its full-resolution `image`). */
-  paintChanges(image: RenderImage, changes: RenderChanges, dithering: boolean): void;
+  paintChanges(image: RenderImage, changes: RenderChanges, quantization: Quantization): void;
   /** A render starts (after `shown` is set, before any picture): `isCurrent` says whether it still is. */
   started(shown: ShownRender, isCurrent: () => boolean): Promise<void> | void;
 }
@@ -83,7 +84,7 @@ export class RenderJobController implements ReactiveController {
     this.setStatus({ kind: 'starting' });
     store.dispatch({ type: 'render.started' });
     await this.painter.started(this.shown, isCurrent);
-    const { dithering } = scene.settings;
+    const quantization: Quantization = scene.settings;
     try {
       const meshes = await loadMeshes(meshNamesInScene(scene));
       if (!isCurrent()) return;
@@ -94,7 +95,7 @@ export class RenderJobController implements ReactiveController {
           if (!isCurrent()) return;
           this.setStatus({ kind: 'rendering', ...progress });
           const changes = job.changes();
-          if (changes) this.painter.paintChanges(job.image, changes, dithering);
+          if (changes) this.painter.paintChanges(job.image, changes, quantization);
         },
       });
       this.job = job;
@@ -106,7 +107,7 @@ export class RenderJobController implements ReactiveController {
         return;
       }
       this.finished = result;
-      this.painter.paint(result, dithering);
+      this.painter.paint(result, quantization);
       this.setStatus({ kind: 'finished', ms: result.ms, rays: countRays(result.stats), workers: result.workers });
       store.dispatch({ type: 'render.finished', ms: result.ms });
     } catch (error) {

@@ -92,15 +92,15 @@ export class RtRenderWindow extends LitElement {
     },
   );
   private readonly jobs = new RenderJobController(this, {
-    paint: (image, dithering) => this.painter.paint(image, dithering),
-    paintChanges: (image, changes, dithering) => this.painter.paintChanges(image, changes, dithering),
+    paint: (image, quantization) => this.painter.paint(image, quantization),
+    paintChanges: (image, changes, quantization) => this.painter.paintChanges(image, changes, quantization),
     started: (shown, isCurrent) => this.prepareStage(shown, isCurrent),
   });
   private readonly contrast = new ContrastToggle(
     this,
     () => {
       const { finished, shown } = this.jobs;
-      return finished && shown ? { image: finished, dithering: shown.scene.settings.dithering } : null;
+      return finished && shown ? { image: finished, quantization: shown.scene.settings } : null;
     },
     (range) => this.painter.setStretch(range),
   );
@@ -193,7 +193,7 @@ export class RtRenderWindow extends LitElement {
     if (!finished || !shown) return;
     this.saveError = '';
     try {
-      const pixels = renderImageData(finished, shown.scene.settings.dithering);
+      const pixels = renderImageData(finished, shown.scene.settings);
       await savePng(pixels, pngFileName(shown.scene.name === undefined ? undefined : shownName(shown.scene.name, ''), shown.width, shown.height));
       this.store?.dispatch({ type: 'render.saved' });
     } catch (error) {

@@ -1,6 +1,6 @@
 import { DITHER_PERIOD } from '../../../render/image-data.ts';
 import type { RenderImage } from '../../../render/render-job.ts';
-import { toRgba8 } from '../../../tracer/quantize.ts';
+import { type Quantization, toRgba8 } from '../../../tracer/quantize.ts';
 import type { Tile } from '../../../tracer/tile.ts';
 import { pixelsCovering, type Rect, type Size } from './image-zoom.ts';
 
@@ -41,10 +41,10 @@ function spans(from: number, to: number, scale: number, origin: number): Spans {
  * they cover (a box filter), over the pixels `rendered` says hold a value (null: all do), so a
  * canvas pixel half on a tile not traced yet shows the traced half, not a mix with black.
  * Averaged as shown (each value clamped to 0–1) and quantized like the image itself
- * (toRgba8), dithered by canvas position: the pixels start at a multiple of the dither period
+ * (toRgba8, with its dithering and encoding), dithered by canvas position: the pixels start at a multiple of the dither period
  * and `part` says which of them the piece touched.
  */
-export function shrinkPiece(image: RenderImage, rendered: Uint8Array | null, canvas: Size, dithering: boolean, piece: Tile): ShrunkPiece {
+export function shrinkPiece(image: RenderImage, rendered: Uint8Array | null, canvas: Size, quantization: Quantization, piece: Tile): ShrunkPiece {
   const scaleX = canvas.width / image.width;
   const scaleY = canvas.height / image.height;
   const [touchedLeft, right] = pixelsCovering(piece.x, piece.x + piece.width, scaleX, canvas.width);
@@ -89,7 +89,7 @@ export function shrinkPiece(image: RenderImage, rendered: Uint8Array | null, can
     const weight = sums[i * 4 + 3];
     if (weight > 0) for (let c = 0; c < 3; c++) rgb[i * 3 + c] = sums[i * 4 + c] / weight;
   }
-  const rgba = toRgba8(rgb, width, height, dithering);
+  const rgba = toRgba8(rgb, width, height, quantization);
   return {
     x: left,
     y: top,

@@ -2,6 +2,10 @@ import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import type { PreviewImage, RenderImage } from '../../../../src/render/render-job.ts';
 import { BandPainter } from '../../../../src/ui/lab/render-window/band-painter.ts';
 import type { CanvasView } from '../../../../src/ui/lab/render-window/image-zoom.ts';
+import type { Quantization } from '../../../../src/tracer/quantize.ts';
+
+const PLAIN: Quantization = { dithering: false, encoding: 'none' };
+const DITHERED: Quantization = { dithering: true, encoding: 'none' };
 
 /**
  * Node has no canvas: stand-ins record what the painter does in each animation frame (how
@@ -101,7 +105,7 @@ describe('the render window painter', () => {
   it('quantizes a 4096² render’s 4×4 preview at its own resolution and draws it scaled up, a few bands a frame', () => {
     const { painter } = painterOn(4096, 4096);
     const preview: PreviewImage = { ...image(1024, 1024), block: 4 };
-    painter.paintChanges(image(4096, 4096), { preview: { image: preview, rows: [0, 1024] }, tiles: [] }, true);
+    painter.paintChanges(image(4096, 4096), { preview: { image: preview, rows: [0, 1024] }, tiles: [] }, DITHERED);
     runFrames();
     const draws = perFrame.flat().filter((call) => call.kind === 'draw');
     // Every preview pixel once (its own canvas), every canvas pixel covered once by the scaled draws.
@@ -115,7 +119,7 @@ describe('the render window painter', () => {
   it('puts each tile of the image exactly as its rectangle, quantized from the dither pattern’s corner before it', () => {
     const { painter } = painterOn(64, 48);
     const full = image(64, 48);
-    painter.paintChanges(full, { preview: null, tiles: [{ x: 5, y: 6, width: 7, height: 3 }, { x: 0, y: 0, width: 4, height: 4 }] }, true);
+    painter.paintChanges(full, { preview: null, tiles: [{ x: 5, y: 6, width: 7, height: 3 }, { x: 0, y: 0, width: 4, height: 4 }] }, DITHERED);
     runFrames();
     const puts = perFrame.flat().filter((call) => call.kind === 'put');
     // [quantized width, height, x, y, then the part put: x, y, width, height within it]
@@ -127,11 +131,11 @@ describe('the render window painter', () => {
     const full = image(64, 64);
     const coarse: PreviewImage = { ...image(8, 8), block: 8 };
     const fine: PreviewImage = { ...image(16, 16), block: 4 };
-    painter.paintChanges(full, { preview: { image: coarse, rows: [0, 8] }, tiles: [] }, false);
-    painter.paintChanges(full, { preview: { image: fine, rows: [4, 8] }, tiles: [] }, false);
+    painter.paintChanges(full, { preview: { image: coarse, rows: [0, 8] }, tiles: [] }, PLAIN);
+    painter.paintChanges(full, { preview: { image: fine, rows: [4, 8] }, tiles: [] }, PLAIN);
     runFrames();
     expect(perFrame.flat().map((call) => [call.kind, ...call.args])).toEqual([['clear'], ['draw', 0, 0, 16, 16, 0, 0, 64, 64]]);
-    painter.paintChanges(full, { preview: null, tiles: [{ x: 0, y: 0, width: 4, height: 4 }] }, false);
+    painter.paintChanges(full, { preview: null, tiles: [{ x: 0, y: 0, width: 4, height: 4 }] }, PLAIN);
     runFrames();
     expect(perFrame.at(-1)!.map((call) => call.kind)).toEqual(['put']); // the same render: no clearing
   });
@@ -149,7 +153,7 @@ describe('the render window painter', () => {
     painter.warmUp();
     expect(made).toMatchObject([{ width: 1, height: 1, puts: [[1, 1, 0, 0]] }]);
     expect(frames).toHaveLength(0); // nothing for the visible canvas
-    painter.paintChanges(image(64, 64), { preview: { image: { ...image(8, 8), block: 8 }, rows: [0, 8] }, tiles: [] }, false);
+    painter.paintChanges(image(64, 64), { preview: { image: { ...image(8, 8), block: 8 }, rows: [0, 8] }, tiles: [] }, PLAIN);
     runFrames();
     expect(made.map(({ width, height }) => [width, height])).toEqual([[1, 1], [8, 8]]);
     expect(perFrame.flat().map((call) => [call.kind, ...call.args])).toEqual([['clear'], ['draw', 0, 0, 8, 8, 0, 0, 64, 64]]);
@@ -160,7 +164,7 @@ describe('the render window painter', () => {
     // Traced so far: columns [0, 33), white; the rest holds 0 (black) until its tile comes.
     const full = image(100, 100);
     for (let y = 0; y < 100; y++) full.rgb.fill(1, y * 300, y * 300 + 33 * 3);
-    painter.paintChanges(full, { preview: null, tiles: [{ x: 0, y: 0, width: 33, height: 100 }] }, false);
+    painter.paintChanges(full, { preview: null, tiles: [{ x: 0, y: 0, width: 33, height: 100 }] }, PLAIN);
     runFrames();
     expect([canvas.width, canvas.height]).toEqual([30, 30]);
     const [first] = perFrame.flat().filter((call) => call.kind === 'put');
@@ -168,7 +172,7 @@ describe('the render window painter', () => {
     // [0, 10), the last of them shared with the next tile (33 × 0.3 = 9.9)
     expect(first.args).toEqual([10, 30, 0, 0, 0, 0, 10, 30]);
     expect(first.data![9 * 4]).toBe(255); // the shared pixel: white, not mixed with the black not traced yet
-    painter.paintChanges(full, { preview: null, tiles: [{ x: 33, y: 0, width: 67, height: 100 }] }, false);
+    painter.paintChanges(full, { preview: null, tiles: [{ x: 33, y: 0, width: 67, height: 100 }] }, PLAIN);
     runFrames();
     const second = perFrame.flat().filter((call) => call.kind === 'put')[1];
     // From column 8 (a multiple of the dither period); the part put starts at the shared pixel 9.
@@ -180,7 +184,7 @@ describe('the render window painter', () => {
   it('paints a finished image again at a new scale, over the old picture scaled', () => {
     const shown = whole({ width: 4096, height: 64 });
     const { painter, canvas } = painterOn(4096, 64, shown);
-    painter.paint(image(4096, 64), false);
+    painter.paint(image(4096, 64), PLAIN);
     runFrames();
     expect(new Set(perFrame.flat().map((call) => call.kind))).toEqual(new Set(['clear', 'put'])); // at its own size: put exactly
     Object.assign(shown, whole({ width: 1024, height: 16 }));
@@ -198,10 +202,10 @@ describe('the render window painter', () => {
     const shown = whole({ width: 64, height: 64 });
     const { painter } = painterOn(64, 64, shown);
     const full = image(64, 64);
-    painter.paintChanges(full, { preview: { image: { ...image(8, 8), block: 8 }, rows: [0, 8] }, tiles: [{ x: 0, y: 0, width: 16, height: 16 }] }, false);
+    painter.paintChanges(full, { preview: { image: { ...image(8, 8), block: 8 }, rows: [0, 8] }, tiles: [{ x: 0, y: 0, width: 16, height: 16 }] }, PLAIN);
     runFrames();
     expect(perFrame.flat().map((call) => call.kind)).toEqual(['clear', 'draw', 'put']);
-    painter.paintChanges(full, { preview: null, tiles: [{ x: 0, y: 0, width: 16, height: 16 }] }, false); // the next pass's same tile
+    painter.paintChanges(full, { preview: null, tiles: [{ x: 0, y: 0, width: 16, height: 16 }] }, PLAIN); // the next pass's same tile
     runFrames();
     Object.assign(shown, whole({ width: 32, height: 32 }));
     perFrame = [];
@@ -224,7 +228,7 @@ describe('the render window painter', () => {
     // A 64 × 64 image at its own scale, of which columns 16–47 and rows 8–23 are on screen.
     const view: CanvasView = { full: { width: 64, height: 64 }, window: { x: 16, y: 8, width: 32, height: 16 } };
     const { painter, canvas } = painterOn(64, 64, view);
-    painter.paintChanges(image(64, 64), { preview: null, tiles: [{ x: 0, y: 0, width: 32, height: 32 }, { x: 0, y: 32, width: 32, height: 32 }] }, false);
+    painter.paintChanges(image(64, 64), { preview: null, tiles: [{ x: 0, y: 0, width: 32, height: 32 }, { x: 0, y: 32, width: 32, height: 32 }] }, PLAIN);
     runFrames();
     expect([canvas.width, canvas.height]).toEqual([32, 16]);
     // The first tile's part on screen, columns 16–31 and rows 8–23, at the canvas's (0, 0); the second tile is off screen.
@@ -234,7 +238,7 @@ describe('the render window painter', () => {
   it('a scroll moves the old pixels to their new place and paints the window again', () => {
     const view: CanvasView = { full: { width: 64, height: 64 }, window: { x: 16, y: 8, width: 32, height: 16 } };
     const { painter } = painterOn(64, 64, view);
-    painter.paint(image(64, 64), false);
+    painter.paint(image(64, 64), PLAIN);
     runFrames();
     view.window = { x: 24, y: 8, width: 32, height: 16 };
     perFrame = [];
@@ -250,7 +254,7 @@ describe('the render window painter', () => {
     const { painter } = painterOn(16, 16);
     const grey = image(16, 16);
     grey.rgb.fill(15 / 255);
-    painter.paint(grey, false);
+    painter.paint(grey, PLAIN);
     runFrames();
     expect(perFrame.flat().filter((call) => call.kind === 'put').map((call) => call.data![0])).toEqual([15]);
     perFrame = [];

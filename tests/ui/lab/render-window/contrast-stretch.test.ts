@@ -33,7 +33,7 @@ describe('stretching an image\'s contrast', () => {
     // A slow ramp over 16 × 4 pixels, quantized with the tracer's Bayer dithering.
     const width = 16;
     const rgb = new Float32Array(width * 4 * 3).map((_, i) => 0.12 + (Math.floor(i / 3) % width) * 0.0004);
-    const dithered = toRgba8(rgb, width, 4, true);
+    const dithered = toRgba8(rgb, width, 4, { dithering: true, encoding: 'none' });
     const range = levelRange(dithered);
     expect(range.high - range.low).toBeLessThanOrEqual(2);
     const out = stretchContrast(dithered, range);
