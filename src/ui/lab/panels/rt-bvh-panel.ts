@@ -145,7 +145,7 @@ export class RtBvhPanel extends StorePanel {
           {
             name: 'depth',
             label: msg('Depth'),
-            tooltip: msg('How deep into the BVH to draw: 0 is one box around the whole model, every step splits each box in two.'),
+            tooltip: msg('How deep into the BVH to draw: 0 is one box around the whole model; each step divides every box’s triangles into two groups, each with its own box (boxes may overlap).'),
             min: 0,
             max: BVH_MAX_DEPTH,
             step: 1,

@@ -74,7 +74,7 @@ export class RtLightPanel extends StorePanel {
           {
             name: 'distanceAttenuation',
             label: msg('Distance attenuation'),
-            tooltip: msg('Dim with distance d by 1 / (0.04 + 0.1·d + 0.06·d²).'),
+            tooltip: msg('Multiply the light by A = 1 / (0.04 + 0.1·d + 0.06·d²) at distance d: above 1 closer than about 3.3 m, below 1 further away.'),
           },
           light.distanceAttenuation,
           (distanceAttenuation) => changed({ distanceAttenuation }),
@@ -96,7 +96,7 @@ export class RtLightPanel extends StorePanel {
       {
         name: 'angleAttenuation',
         label: msg('Angle attenuation (p)'),
-        tooltip: msg('p in cos(α)^p: higher makes the light fade faster away from where it points.'),
+        tooltip: msg('p in cos(α)^p, where α is the angle between where the spot points and the direction to the point.'),
         min: LIMITS.angleAttenuation[0],
         max: LIMITS.angleAttenuation[1],
         step: 0.5,

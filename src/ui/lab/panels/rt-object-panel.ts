@@ -75,7 +75,7 @@ export class RtObjectPanel extends StorePanel {
       ...this.phongSliders(
         {
           ambient: [msg('Ambient (ka)'), msg('How much of the lights’ ambient light it reflects everywhere, even in shadow.')],
-          diffuse: [msg('Diffuse (kd)'), msg('Matte reflection: brightest where the surface faces the light (cos θ).')],
+          diffuse: [msg('Diffuse (kd)'), msg('Matte reflection: light scattered equally in every direction.')],
           specular: [msg('Specular (ks)'), msg('Strength of the highlight; on an opaque object also how much it mirrors.')],
         },
         m,
@@ -85,7 +85,7 @@ export class RtObjectPanel extends StorePanel {
         {
           name: 'shininess',
           label: msg('Shininess (n)'),
-          tooltip: msg('The Phong exponent: higher gives a smaller, sharper highlight. Type up to 10000.'),
+          tooltip: msg('The Phong exponent n in (R·V)^n. Type up to 10000.'),
           min: 0,
           max: 1000,
           step: 1,
@@ -104,8 +104,8 @@ export class RtObjectPanel extends StorePanel {
           name: 'refractiveIndex',
           label: msg('Refractive index (η)'),
           tooltip: m.transparent
-            ? msg('How much rays bend going in: air 1, water 1.33, glass 1.5, diamond 2.42. Type up to 4.')
-            : msg('How much rays bend going in. Switch on Transparent to use it.'),
+            ? msg('n in Snell’s law n₁·sin θ₁ = n₂·sin θ₂: air 1, water 1.33, glass 1.5, diamond 2.42. Type up to 4.')
+            : msg('n in Snell’s law. Switch on Transparent to use it.'),
           min: 1,
           max: 3,
           step: 0.01,

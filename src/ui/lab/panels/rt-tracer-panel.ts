@@ -42,7 +42,7 @@ export class RtTracerPanel extends StorePanel {
           {
             name: 'maxDepth',
             label: msg('Recursion depth'),
-            tooltip: msg('How many times a ray may reflect or refract; 0 traces only the rays from the camera.'),
+            tooltip: msg('How many times a ray may reflect or refract; at 0 the rays from the camera and their shadow rays are still traced.'),
             min: LIMITS.maxDepth[0],
             max: LIMITS.maxDepth[1],
             step: 1,
@@ -111,7 +111,7 @@ export class RtTracerPanel extends StorePanel {
           { name: 'samplePattern', label: msg('Pattern'), tooltip: msg('Where the rays go inside each pixel.') },
           [
             { value: 'grid', label: msg('Grid'), tooltip: msg('A regular grid: even, but patterns can show.') },
-            { value: 'jittered', label: msg('Jittered'), tooltip: msg('One random spot in each grid cell: even and without patterns.') },
+            { value: 'jittered', label: msg('Jittered'), tooltip: msg('One random spot in each cell of the grid.') },
             { value: 'random', label: msg('Random'), tooltip: msg('Anywhere in the pixel: can clump and leave gaps.') },
           ],
           settings.samplePattern,
