@@ -102,6 +102,8 @@ export interface LevelView {
   current: TaskView | null;
   /** The prediction being revealed after its observation (the learner continues from it), or null. */
   revealing: TaskView | null;
+  /** The level opened with the scene the learner left it with, not its own (see openLevel). */
+  sceneKept: boolean;
   passed: boolean;
   points: number;
   maxPoints: number;
@@ -134,6 +136,8 @@ interface ActiveLevel {
   ring: { task: string; target: GuideTarget } | null;
   /** The prediction whose result was just observed: it holds the level until the learner continues. */
   reveal: { quiz: string; reflection?: Prediction } | null;
+  /** Opened with the scene the learner left, not the level's own. */
+  sceneKept: boolean;
 }
 
 export class QuestEngine {
@@ -221,6 +225,7 @@ export class QuestEngine {
       tasks,
       current: tasks.find((view) => view.status === 'current') ?? null,
       revealing: tasks.find((view) => view.task.id === active.reveal?.quiz) ?? null,
+      sceneKept: active.sceneKept,
       passed: isPassed(level, record, required),
       points: tasks.reduce((sum, view) => sum + view.points, 0),
       maxPoints: level.tasks.reduce((sum, task) => sum + task.points, 0),
@@ -254,7 +259,8 @@ export class QuestEngine {
     if (!level) return { ok: false, reason: this.catalog.chapters.some((chapter) => chapter.entries.some((entry) => entry.id === id)) ? 'broken' : 'unknown' };
     if (this.levelStatus(id) === 'locked') return { ok: false, reason: 'locked' };
     this.closeLevel();
-    const scene = this.resumable?.level === id ? this.resumable.scene : level.scene;
+    const sceneKept = this.resumable?.level === id;
+    const scene = sceneKept && this.resumable ? this.resumable.scene : level.scene;
     this.resumable = { level: id, scene };
     this.lastState = null;
     const active: ActiveLevel = {
@@ -268,6 +274,7 @@ export class QuestEngine {
       started: new Set(),
       ring: null,
       reveal: null,
+      sceneKept,
     };
     this.active = active;
     this.append({ type: 'level.opened', level: id });

@@ -373,11 +373,22 @@ describe('resuming', () => {
     expect(second.engine.progress.current?.level).toBe('first');
     const resumed = second.open('first');
     expect(resumed.state.scene.objects[0].material.color).toEqual([0, 0, 1]);
+    expect(second.engine.level?.sceneKept).toBe(true);
     expect(second.status()).toMatchObject({ orbit: 'done', predict: 'current' });
     const times = second.engine.events.map((event) => event.t);
     expect(times).toEqual([...times].sort((a, b) => a - b));
     expect(second.logged('session.started')).toHaveLength(2);
     expect(second.logged('session.started')[1].t).toBeGreaterThanOrEqual(saved.log.events.at(-1)!.t + 10_000);
+  });
+
+  it('opens another level with its own scene, and says so', () => {
+    const setup = setUp();
+    passFirstLevel(setup);
+    expect(setup.engine.level?.sceneKept).toBe(false);
+    setup.open('second');
+    expect(setup.engine.level?.sceneKept).toBe(false);
+    setup.open('first');
+    expect(setup.engine.level?.sceneKept).toBe(false);
   });
 
   it('tells listeners what changed, with the events logged', () => {

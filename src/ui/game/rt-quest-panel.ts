@@ -95,7 +95,8 @@ export class RtQuestPanel extends LitElement {
 
   protected override willUpdate(changed: PropertyValues<this>): void {
     if (changed.has('view') && changed.get('view')?.level.id !== this.view?.level.id) {
-      this.returned = this.view?.passed ?? false;
+      // Said only when true: a level reopened where the learner left it keeps its scene.
+      this.returned = (this.view?.passed ?? false) && !this.view?.sceneKept;
     }
   }
 
