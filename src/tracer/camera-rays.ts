@@ -14,7 +14,7 @@ const DEG = Math.PI / 180;
  * rays go from points on a disc of radius `aperture` around the eye, in the camera's
  * right/up plane, toward F (distribution-effects §2). Points on that plane are sharp whatever
  * the aperture; a point at distance z is spread over a circle of confusion of diameter
- * 2a·|z − f|/z on the plane in focus (f the focus distance, a the lens radius).
+ * 2a·|z − z_f|/z on the plane in focus (z_f the focus distance, a the lens radius).
  */
 export class CameraRays {
   readonly eye: Vector3;
