@@ -69,7 +69,9 @@ async function stepThrough(page: Page, name: string, trace: PixelTrace): Promise
     await expect(debuggerPanel).toHaveAttribute('data-step', String(index));
     await expect(debuggerPanel).toHaveAttribute('data-ray', step.ray?.type ?? '');
     await expect(debuggerPanel.locator('rt-debug-code [aria-current="step"]')).toHaveAttribute('data-line', step.line);
-    const cylinders = raysShownAt(program, index).filter((ray) => !ray.corners).length;
+    // Each ray drawn, and the normal at each hit it reaches (drawn for the debugger's pixel).
+    const shown = raysShownAt(program, index);
+    const cylinders = shown.filter((ray) => !ray.corners).length + shown.filter((ray) => ray.normal !== undefined).length;
     await expect(view).toHaveAttribute('data-ray-instances', String(cylinders));
     await checkEquation(page);
     // At the first hit, its reflection's term highlights that ray (drawn even before it is cast).

@@ -58,6 +58,7 @@ for (const chapter of catalog.chapters) {
           const kind = kindOfGoal(task.goal);
           if ('quiz' in task.goal) expect(engine.predict(task.id, { choice: task.goal.quiz.answer })).toEqual({ correct: true });
           else if ('estimate' in task.goal) expect(engine.predict(task.id, { value: task.goal.estimate.answer })).toEqual({ correct: true });
+          else if ('picture' in task.goal) expect(engine.predict(task.id, { choice: task.goal.picture.answer })).toEqual({ correct: true });
           else if (kind === 'info') expect(engine.next(), `info step "${task.id}" was not the current task`).toBe(true);
           for (const action of task.solution ?? []) {
             expect(store.dispatch(action), `task "${task.id}": ${action.type} was refused`).toBeUndefined();
