@@ -87,7 +87,7 @@ describe('names of rays', () => {
     );
     expect(debuggerText.pseudocodeText('shadow-ray')).toBe('if Shadows is on: cast a shadow ray toward the light');
     await speak('nl');
-    expect(debuggerText.stepText(lightStep(reached), scene)).toBe('De schaduwstraal naar Lamp bereikt die lamp: het diffuse licht en de glans worden opgeteld.');
+    expect(debuggerText.stepText(lightStep(reached), scene)).toBe('De schaduwstraal naar Lamp bereikt die lamp: het diffuse licht en de glansvlek worden opgeteld.');
     expect(debuggerText.pseudocodeText('shadow-ray')).toBe('als Schaduwen aan staat: stuur een schaduwstraal naar de lamp');
     await speak('en');
   });
