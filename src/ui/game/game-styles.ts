@@ -1,6 +1,7 @@
 import { msg } from '@lit/localize';
 import { css, html, type TemplateResult } from 'lit';
 import { controlStyles } from '../controls/controls.css.ts';
+import { visuallyHiddenStyles } from '../controls/visually-hidden.css.ts';
 
 /**
  * What the game's elements (task panel, level map, dialogs) share on top of the panel
@@ -9,6 +10,7 @@ import { controlStyles } from '../controls/controls.css.ts';
  */
 export const gameStyles = [
   controlStyles,
+  visuallyHiddenStyles,
   css`
     button.primary {
       border-color: var(--rt-accent);
@@ -44,14 +46,6 @@ export const gameStyles = [
     }
     p {
       margin: 0 0 8px;
-    }
-    .visually-hidden {
-      position: absolute;
-      width: 1px;
-      height: 1px;
-      overflow: hidden;
-      clip-path: inset(50%);
-      white-space: nowrap;
     }
     .hint {
       padding: 6px 8px;

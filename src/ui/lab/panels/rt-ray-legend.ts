@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
 import { css, html } from 'lit';
+import { visuallyHiddenStyles } from '../../controls/visually-hidden.css.ts';
 import { styleMap } from 'lit/directives/style-map.js';
 import { legendKeys, paletteNameFor, RAY_DASHES, type RayColorKey, rayPalette } from '../../../view/ray-palette.ts';
 import { rayColorKeyHint, rayColorKeyName } from '../ray-names.ts';
@@ -18,6 +19,8 @@ export class RtRayLegend extends StorePanel {
   protected readonly controlPanel = 'rays';
   static override styles = [
     StorePanel.styles,
+    // The dash between a name and its detail is read out; on screen the line break stands for it.
+    visuallyHiddenStyles,
     css`
       ul {
         display: grid;
@@ -47,15 +50,6 @@ export class RtRayLegend extends StorePanel {
         font-size: 0.85em;
         color: var(--rt-muted);
       }
-      /* Read out, not shown: the line break stands for it on screen. */
-      .separator {
-        position: absolute;
-        width: 1px;
-        height: 1px;
-        overflow: hidden;
-        clip-path: inset(50%);
-        white-space: nowrap;
-      }
     `,
   ];
 
@@ -79,7 +73,7 @@ export class RtRayLegend extends StorePanel {
 function entryName(name: string) {
   const at = name.indexOf(' — ');
   if (at < 0) return html`<span>${name}</span>`;
-  return html`<span>${name.slice(0, at)}<span class="detail"><span class="separator"> — </span>${name.slice(at + 3)}</span></span>`;
+  return html`<span>${name.slice(0, at)}<span class="detail"><span class="visually-hidden"> — </span>${name.slice(at + 3)}</span></span>`;
 }
 
 /** The swatch's paint: the ray's colour in its dashes (RAY_DASHES at 150 px per metre), or solid. */
