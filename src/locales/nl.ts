@@ -122,7 +122,6 @@
 's1fa8d81bb322615c': `Sleep aan een handvat van de gizmo`,
 's1fb545087828135c': `Kijk door de stralen heen: 0 % is helemaal dicht, 100 % bijna onzichtbaar.`,
 's20a9261b5a26f54d': `Stuur een schaduwstraal naar elke lamp; staat dit uit, dan bereikt elke lamp elk punt.`,
-'s20b55d6fd4bf2226': str`${0}, een render van de scène`,
 's210e5d15d8742542': `Weerkaatst op een glimmend oppervlak.`,
 's211dd915cc7c4be5': str`${0} leerlingen`,
 's217f24a2c5f04d26': `Ray Tracer Quest`,

@@ -199,8 +199,9 @@ export class RtQuiz extends LitElement {
       const radio = html`<input type="radio" name=${`quiz-${view.task.id}`} .checked=${open ? this.picked === index : mine !== undefined && 'choice' in mine && mine.choice === index} @change=${() => (this.picked = index)} />`;
       if (!pictures) return html`<label>${radio} ${shown} ${tags}</label>`;
       const [width, height] = pictures[index].settings.imageSize;
+      // The render is for the eye (no words could stand for it): the radio's name is its letter.
       return html`<label>
-        <canvas data-picture=${index} width=${width} height=${height} role="img" aria-label=${msg(str`${text}, a render of the scene`)}></canvas>
+        <canvas data-picture=${index} width=${width} height=${height} aria-hidden="true"></canvas>
         <span class="letter">${radio} ${text} ${tags}</span>
       </label>`;
     });
