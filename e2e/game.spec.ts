@@ -16,6 +16,9 @@ import {
   importProgress,
   progressFile,
   task,
+  lockIn,
+  lockInNumber,
+  continueFromPrediction,
 } from './support/game-steps.ts';
 
 // The game as a student plays it: through the buttons, fields and keys of the page. The
@@ -47,15 +50,18 @@ async function playLevel2(page: Page): Promise<void> {
   await expect(panel(page).getByRole('heading', { name: 'Rays from the camera' })).toBeVisible();
   await current(page).getByRole('button', { name: 'Next' }).click();
 
-  // Predict, then check.
-  await current(page).getByRole('radio', { name: '12' }).check();
-  await current(page).getByRole('button', { name: 'Check' }).click();
-  await expect(task(page, 'Predict: how many rays?')).toContainText('Right!');
-
-  await page.locator('rt-screen-preview [data-index="5"]').click();
+  // Predict, observe, explain: the verdict waits until the pixel's rays have been seen.
+  await lockIn(page, 'It sends a ray from that point toward the lamp');
+  await expect(current(page)).toContainText('You predicted: It sends a ray from that point toward the lamp.');
+  await page.locator('rt-screen-preview [data-index="10"]').click();
   await expectStatus(page, 'One pixel', 'done');
+  await continueFromPrediction(page, 'Predict: and then?', undefined, async (card) => {
+    await expect(card).toContainText('and so it is');
+  });
   await page.locator('rt-screen-preview').getByRole('button', { name: 'Show all pixels' }).click();
+  await expectStatus(page, 'All pixels again', 'done');
 
+  await lockIn(page, '48');
   for (const [name, value] of [
     ['Pixel columns', '8'],
     ['Pixel rows', '6'],
@@ -64,10 +70,15 @@ async function playLevel2(page: Page): Promise<void> {
     await field.fill(value);
     await field.press('Enter');
   }
+  await continueFromPrediction(page, 'Predict: how many rays?');
+
+  // A number prediction, checked by the render's own count.
+  await lockInNumber(page, '76 800');
   await openRayTracer(page);
   await page.locator('rt-render-window button.primary').click();
   await expect(panel(page).getByText('Level complete!')).toBeVisible({ timeout: 60_000 });
   await closeRenderWindow(page);
+  await continueFromPrediction(page, 'Predict: rays for the render');
 }
 
 test('a new player plays levels 1 and 2 through the UI; level 2 opens only after level 1', async ({ page }) => {
@@ -182,23 +193,23 @@ const pixel = (page: Page, column: number, row: number) => page.locator('rt-scre
 
 async function playLevel3(page: Page): Promise<void> {
   await expect(panel(page).getByRole('heading', { name: 'Shading' })).toBeVisible();
-  await expect(current(page)).toContainText('The ray legend');
+  await expect(current(page)).toContainText('The ray colours');
   await expect(page.locator('rt-ray-panel rt-ray-legend')).toBeVisible();
   await current(page).getByRole('button', { name: 'Next' }).click();
 
   // Pixels of the camera's screen: the hint ladder rings the very pixel to click.
-  await expect(current(page)).toContainText('A light ray');
+  await expect(current(page)).toContainText('Facing the lamp');
   await current(page).getByRole('button', { name: 'Hint' }).click();
   await current(page).getByRole('button', { name: 'Another hint' }).click();
   await current(page).getByRole('button', { name: 'Show me where' }).click();
   await expectRingAround(page, pixel(page, 2, 1));
   await pixel(page, 2, 1).click();
-  await expectStatus(page, 'A light ray', 'done');
+  await expectStatus(page, 'Facing the lamp', 'done');
   await pixel(page, 3, 2).click();
   await expectStatus(page, 'A shadow ray', 'done');
   await pixel(page, 2, 2).click();
-  // Its title is also in the next task's text ("The dark side turns black").
-  await expect(page.locator('rt-task-card').filter({ hasText: /^\W*The dark side/ })).toHaveAttribute('status', 'done');
+  // Its title is also in another task's text.
+  await expect(page.locator('rt-task-card[data-task="dark-side"]')).toHaveAttribute('status', 'done');
   await page.locator('rt-screen-preview').getByRole('button', { name: 'Show all pixels' }).click();
 
   // The material sliders: the ball is selected in the view, values typed or set with keys.
@@ -207,29 +218,43 @@ async function playLevel3(page: Page): Promise<void> {
   await expect.poll(async () => (await state(page)).selection).toEqual({ kind: 'object', id: 'ball' });
   await typeInSlider(page, 'Ambient (ka)', '0');
   await expectStatus(page, 'No ambient light', 'done');
-  const diffuse = page.locator('rt-object-panel').getByRole('slider', { name: 'Diffuse (kd)' });
-  await diffuse.focus();
-  await diffuse.press('Home');
-  await expectStatus(page, 'No diffuse light', 'done');
-  await typeInSlider(page, 'Specular (ks)', '0,7');
-  await expectStatus(page, 'A shiny spot', 'done');
 
-  // Predict (wrongly: level 2's test answers right), then check in the scene.
-  await current(page).getByRole('radio', { name: 'bigger and softer' }).check();
-  await current(page).getByRole('button', { name: 'Check' }).click();
-  const quiz = task(page, 'Predict: more shine');
-  await expect(quiz).toContainText('Not quite: the answer is smaller and sharper.');
-  await expect(quiz.locator('label').filter({ hasText: 'bigger and softer' })).toContainText('your answer');
-  await expect(quiz.locator('label').filter({ hasText: 'smaller and sharper' })).toContainText('answer');
-  await expectStatus(page, 'Predict: more shine', 'done');
+  // A picture prediction: three renders of the ball drawn by the tracer; the learner picks one.
+  const pictures = current(page).locator('rt-quiz canvas');
+  await expect(pictures).toHaveCount(3);
+  await expect.poll(() => distinctColours(pictures.first()), { timeout: 30_000 }).toBeGreaterThan(20);
+  await lockIn(page, 'picture A');
   await typeInSlider(page, 'Shininess (n)', '200');
   await expectStatus(page, 'Polish the ball', 'done');
-  expect((await state(page)).scene.objects.find((o) => o.id === 'ball')?.material).toMatchObject({ ambient: 0, diffuse: 0, specular: 0.7, shininess: 200 });
+  const shine = task(page, 'Predict: more shine');
+  // Whichever picture A was for this learner, the explanation comes after the observation.
+  if (await shine.getByText('What do you see?').isVisible()) {
+    await shine.getByRole('radio').first().check();
+    await shine.getByRole('button', { name: 'This is what I see' }).click();
+  }
+  await continueFromPrediction(page, 'Predict: more shine');
+
+  // A wrong prediction is met with "what do you see?" before the answer and why.
+  await lockIn(page, 'twice as brightly as before');
+  const slant = current(page);
+  await expect(slant).toContainText('You predicted: twice as brightly as before.');
+  for (let rung = 0; rung < 6; rung++) {
+    const ladder = slant.locator('rt-hint-box button[data-hint]');
+    const kind = await ladder.getAttribute('data-hint');
+    await ladder.click();
+    if (kind === 'show-me') break;
+  }
+  await expectStatus(page, 'Light at a slant', 'shown');
+  await continueFromPrediction(page, 'Predict: a tilted card', 'half as brightly as before', async (card) => {
+    await expect(card).toContainText('You expected twice as brightly as before; the answer is half as brightly as before.');
+    await expect(card).toContainText('You saw: half as brightly as before.');
+  });
+  expect((await state(page)).scene.objects.find((o) => o.id === 'ball')?.material).toMatchObject({ ambient: 0, shininess: 200 });
 
   await openRayTracer(page);
   await page.locator('rt-render-window button.primary').click();
   await expect(panel(page).getByText('Level complete!')).toBeVisible({ timeout: 60_000 });
-  await expectStatus(page, 'Render the shiny ball', 'done');
+  await expectStatus(page, 'Render the polished ball', 'done');
   await closeRenderWindow(page);
 }
 

@@ -120,13 +120,17 @@ test('the shadows level by keyboard only: a pixel of the camera’s screen with 
   expect((await state(page)).selectedPixel).toBeNull();
 
   const quiz = current(page);
-  await press(quiz.getByRole('radio').nth(1), 'Space');
-  await press(quiz.getByRole('button', { name: 'Check' }), 'Enter');
+  await press(quiz.getByRole('radio', { name: 'It is not traced: nothing tests the way' }), 'Space');
+  await press(quiz.getByRole('button', { name: 'Lock in my prediction' }), 'Enter');
   await done(page, 'predict-no-shadows');
 
   const shadows = page.locator('rt-tracer-panel').getByRole('switch', { name: 'Shadows' });
   await press(shadows, 'Space');
   await done(page, 'shadows-off');
+  // Observed: the prediction's answer and why, then Continue, by keyboard too.
+  const revealed = page.locator('rt-task-card[data-task="predict-no-shadows"]');
+  await expect(revealed).toContainText('and so it is');
+  await press(revealed.getByRole('button', { name: 'Continue' }), 'Enter');
   await renderByKeyboard(page, 'render-no-shadows');
   await press(shadows, 'Space');
   await done(page, 'shadows-on');

@@ -178,3 +178,39 @@ export async function importProgress(page: Page, file: string): Promise<void> {
   await page.keyboard.press('Escape');
 }
 
+
+/** Picks a prediction's choice by its words (or a picture's "picture B") and locks it in. */
+export async function lockIn(page: Page, choice: string): Promise<void> {
+  const id = await current(page).getAttribute('data-task');
+  const card = page.locator(`rt-task-card[data-task="${id}"]`);
+  await card.getByRole('radio', { name: choice, exact: true }).check();
+  await card.getByRole('button', { name: 'Lock in my prediction' }).click();
+  // Locked in, and not judged yet: the result is for the next task to show.
+  await expect(card).not.toHaveAttribute('status', 'current');
+  await expect(card).not.toContainText('the answer is');
+}
+
+/** Types a number prediction and locks it in. */
+export async function lockInNumber(page: Page, value: string): Promise<void> {
+  const card = current(page);
+  await card.getByRole('textbox', { name: 'Your number' }).fill(value);
+  await card.getByRole('button', { name: 'Lock in my prediction' }).click();
+}
+
+/**
+ * The prediction `title`, revealed once its observation is done: when the learner expected
+ * something else, says `seen` is what they see; then `read` looks at the answer and why
+ * (the card folds once the learner continues).
+ */
+export async function continueFromPrediction(page: Page, title: string, seen?: string, read?: (card: Locator) => Promise<void>): Promise<void> {
+  const card = task(page, title);
+  const quiz = card.locator('rt-quiz');
+  if (seen !== undefined) {
+    await expect(quiz).toContainText('What do you see?');
+    await quiz.getByRole('radio', { name: seen, exact: true }).check();
+    await quiz.getByRole('button', { name: 'This is what I see' }).click();
+  }
+  await read?.(card);
+  await quiz.getByRole('button', { name: 'Continue' }).click();
+  await expect(quiz.getByRole('button', { name: 'Continue' })).toHaveCount(0);
+}
