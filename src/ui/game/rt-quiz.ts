@@ -29,7 +29,10 @@ export class RtQuiz extends LitElement {
   static override styles = [
     gameStyles,
     css`
+      /* A fieldset is at least as wide as its widest word by default: a long Dutch choice
+         with its tags pushed the quiz out of the task column. */
       fieldset {
+        min-width: 0;
         margin: 0 0 8px;
         padding: 0;
         border: 0;
@@ -40,10 +43,15 @@ export class RtQuiz extends LitElement {
       }
       label {
         display: flex;
+        flex-wrap: wrap;
         align-items: center;
-        gap: 8px;
+        gap: 4px 8px;
         min-height: var(--rt-target);
         cursor: pointer;
+      }
+      .choice {
+        flex: 1 1 8em;
+        min-width: 0;
       }
       input[type='radio'] {
         flex: none;
@@ -197,7 +205,7 @@ export class RtQuiz extends LitElement {
       const tags = html`${!open && mine && 'choice' in mine && mine.choice === index ? html`<span class="tag">${msg('your prediction')}</span>` : nothing}
       ${reveal && index === answer ? html`<span class="tag right">✓ ${msg('answer')}</span>` : nothing}`;
       const radio = html`<input type="radio" name=${`quiz-${view.task.id}`} .checked=${open ? this.picked === index : mine !== undefined && 'choice' in mine && mine.choice === index} @change=${() => (this.picked = index)} />`;
-      if (!pictures) return html`<label>${radio} ${shown} ${tags}</label>`;
+      if (!pictures) return html`<label>${radio}<span class="choice">${shown}</span>${tags}</label>`;
       const [width, height] = pictures[index].settings.imageSize;
       // The render is for the eye (no words could stand for it): the radio's name is its letter.
       return html`<label>
