@@ -52,7 +52,7 @@ async function playLevel2(page: Page): Promise<void> {
 
   // Predict, observe, explain: the verdict waits until the pixel's rays have been seen.
   await lockIn(page, 'It sends a ray from that point toward the lamp');
-  await expect(current(page)).toContainText('You predicted: It sends a ray from that point toward the lamp.');
+  await expect(current(page)).toContainText('You predicted: “It sends a ray from that point toward the lamp”.');
   await page.locator('rt-screen-preview [data-index="10"]').click();
   await expectStatus(page, 'One pixel', 'done');
   await continueFromPrediction(page, 'Predict: and then?', undefined, async (card) => {
@@ -237,7 +237,7 @@ async function playLevel3(page: Page): Promise<void> {
   // A wrong prediction is met with "what do you see?" before the answer and why.
   await lockIn(page, 'twice as brightly as before');
   const slant = current(page);
-  await expect(slant).toContainText('You predicted: twice as brightly as before.');
+  await expect(slant).toContainText('You predicted: “twice as brightly as before”.');
   for (let rung = 0; rung < 6; rung++) {
     const ladder = slant.locator('rt-hint-box button[data-hint]');
     const kind = await ladder.getAttribute('data-hint');
@@ -246,8 +246,8 @@ async function playLevel3(page: Page): Promise<void> {
   }
   await expectStatus(page, 'Light at a slant', 'shown');
   await continueFromPrediction(page, 'Predict: a tilted card', 'half as brightly as before', async (card) => {
-    await expect(card).toContainText('You expected twice as brightly as before; the answer is half as brightly as before.');
-    await expect(card).toContainText('You saw: half as brightly as before.');
+    await expect(card).toContainText('You expected “twice as brightly as before”; the answer is “half as brightly as before”.');
+    await expect(card).toContainText('You saw: “half as brightly as before”.');
   });
   expect((await state(page)).scene.objects.find((o) => o.id === 'ball')?.material).toMatchObject({ ambient: 0, shininess: 200 });
 

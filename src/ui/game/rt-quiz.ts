@@ -152,12 +152,12 @@ export class RtQuiz extends LitElement {
         return this.asking(view, goal, 'predict', levelText(questionOf(goal), this.locale), msg('Lock in my prediction'));
       case 'wait':
         return html`${this.asked(view, goal)}<div class="feedback" role="status">
-            <p><strong>${msg(str`Your prediction: ${this.said(goal, view.prediction?.prediction)}.`)}</strong></p>
+            <p><strong>${msg(str`Your prediction: “${this.said(goal, view.prediction?.prediction)}”.`)}</strong></p>
             <p>${msg('Now find out: do the next task and look closely. The answer comes after that.')}</p>
           </div>`;
       case 'reflect':
         return html`<div class="feedback" role="status">
-            <p><strong>${msg(str`You expected: ${this.said(goal, view.prediction?.prediction)}.`)}</strong></p>
+            <p><strong>${msg(str`You expected: “${this.said(goal, view.prediction?.prediction)}”.`)}</strong></p>
           </div>
           ${this.asking(view, goal, 'reflect', msg('You have seen the result now. What do you see?'), msg('This is what I see'))}`;
       case 'explain':
@@ -260,9 +260,9 @@ export class RtQuiz extends LitElement {
     const answer = answerText(goal, this.locale, this.task?.prediction?.order ?? []);
     const explanation = explanationOf(goal);
     const verdict = view.correct
-      ? html`<p class="right"><strong>✓ ${msg(str`You expected ${this.said(goal, mine)}, and so it is.`)}</strong></p>`
-      : html`<p><strong>${msg(str`You expected ${this.said(goal, mine)}; the answer is ${answer}.`)}</strong></p>
-          ${seen ? html`<p>${msg(str`You saw: ${this.said(goal, seen)}.`)}</p>` : nothing}`;
+      ? html`<p class="right"><strong>✓ ${msg(str`You expected “${this.said(goal, mine)}”, and so it is.`)}</strong></p>`
+      : html`<p><strong>${msg(str`You expected “${this.said(goal, mine)}”; the answer is “${answer}”.`)}</strong></p>
+          ${seen ? html`<p>${msg(str`You saw: “${this.said(goal, seen)}”.`)}</p>` : nothing}`;
     return html`${this.asked(view, goal)}
       <div class="feedback" role="status">${verdict}${explanation ? html`<p>${levelText(explanation, this.locale)}</p>` : nothing}</div>
       ${current ? html`<button class="primary" @click=${() => fire(this, QUEST_COMMAND, { kind: 'continue', task: view.task.id } satisfies QuestCommand)}>${msg('Continue')}</button>` : nothing}`;
@@ -272,7 +272,7 @@ export class RtQuiz extends LitElement {
   private shown(goal: PredictionGoal): TemplateResult {
     const explanation = explanationOf(goal);
     return html`<div class="feedback" role="status">
-      <p><strong>${msg(str`The answer: ${answerText(goal, this.locale, this.task?.prediction?.order ?? [])}`)}</strong></p>
+      <p><strong>${msg(str`The answer: “${answerText(goal, this.locale, this.task?.prediction?.order ?? [])}”`)}</strong></p>
       ${explanation ? html`<p>${levelText(explanation, this.locale)}</p>` : nothing}
     </div>`;
   }

@@ -185,7 +185,7 @@ function checksLine(view: TaskView, locale: Locale): TemplateResult | typeof not
   const goal = view.checks && predictionOf(view.checks.quiz.goal);
   if (!view.checks || !goal) return nothing;
   const predicted = predictionText(goal, view.checks.prediction, locale, view.checks.order);
-  return html`<p class="checks">${msg(str`You predicted: ${predicted}. Watch what really happens.`)}</p>`;
+  return html`<p class="checks">${msg(str`You predicted: “${predicted}”. Watch what really happens.`)}</p>`;
 }
 
 const MARKS: Record<TaskView['status'], string> = { current: '▶', open: '○', waiting: '·', done: '✓', shown: '✓', skipped: '–' };
