@@ -115,11 +115,20 @@ test('Cancel stops a big render and says so', async ({ page }) => {
   // can show before its first tile is on the canvas.
   await expect.poll(async () => (await tracedPicture(window)).colours, { timeout: 30_000 }).toBeGreaterThan(50);
   await window.getByRole('button', { name: 'Cancel' }).click();
-  await expect(window.getByTestId('render-status')).toHaveText('Render cancelled.');
+  await expect(window.getByTestId('render-status')).toContainText('Render cancelled.');
+  await expect(window.getByTestId('render-status')).toContainText('The image on show is partial');
   await expect(window.getByRole('button', { name: 'Cancel' })).toBeDisabled();
-  await expect(window.getByRole('button', { name: 'Save as PNG' })).toBeDisabled();
-  // The partial picture stays.
+  // The partial picture stays, and can be saved as it was on show, at the image's size.
   await expect.poll(async () => (await tracedPicture(window)).colours).toBeGreaterThan(50);
+  const downloading = page.waitForEvent('download');
+  await window.getByRole('button', { name: 'Save as PNG' }).click();
+  const download = await downloading;
+  expect(download.suggestedFilename()).toMatch(/^ray-tracer-quest-[a-z0-9-]*2048x1536-partial\.png$/);
+  const png = PNG.sync.read(await readFile((await download.path())!));
+  expect([png.width, png.height]).toEqual([2048, 1536]);
+  const colours = new Set<number>();
+  for (let i = 0; i < png.data.length; i += 4) colours.add((png.data[i] << 16) | (png.data[i + 1] << 8) | png.data[i + 2]);
+  expect(colours.size).toBeGreaterThan(50);
   // Shown whole, it is drawn into a canvas the size of its place on screen; at 100 % into one
   // of the part on screen, a canvas pixel per image pixel, painted again (not stretched from the small one).
   const traced = window.getByRole('img', { name: 'The ray traced image' });

@@ -2,6 +2,7 @@ import { msg, str } from '@lit/localize';
 import { html, LitElement, nothing, type PropertyValues } from 'lit';
 import { createRef, ref } from 'lit/directives/ref.js';
 import { renderImageData } from '../../../render/image-data.ts';
+import type { RenderImage } from '../../../render/render-job.ts';
 import type { RenderPool } from '../../../render/render-pool.ts';
 import type { LabState } from '../../../lab-state/lab-state.ts';
 import type { Store } from '../../../lab-state/store.ts';
@@ -188,13 +189,23 @@ export class RtRenderWindow extends LitElement {
     await readBackOrWait(picture.pixels);
   }
 
+  /** What Save as PNG saves: the finished image, or a cancelled render's picture as it was on show. */
+  private saveable(): { image: RenderImage; partial: boolean } | null {
+    const { finished } = this.jobs;
+    if (finished) return { image: finished, partial: false };
+    const partial = this.jobs.partialPicture();
+    return partial ? { image: partial, partial: true } : null;
+  }
+
   private async save(): Promise<void> {
-    const { finished, shown } = this.jobs;
-    if (!finished || !shown) return;
+    const saveable = this.saveable();
+    const shown = this.jobs.shown;
+    if (!saveable || !shown) return;
     this.saveError = '';
     try {
-      const pixels = renderImageData(finished, shown.scene.settings);
-      await savePng(pixels, pngFileName(shown.scene.name === undefined ? undefined : shownName(shown.scene.name, ''), shown.width, shown.height));
+      const pixels = renderImageData(saveable.image, shown.scene.settings);
+      const name = pngFileName(shown.scene.name === undefined ? undefined : shownName(shown.scene.name, ''), shown.width, shown.height, saveable.partial);
+      await savePng(pixels, name);
       this.store?.dispatch({ type: 'render.saved' });
     } catch (error) {
       this.saveError = msg(str`The image could not be saved: ${errorMessage(error)}`);
@@ -253,7 +264,7 @@ export class RtRenderWindow extends LitElement {
         </button>
         <button data-guide="render.cancel" ${ref(this.cancelButton)} @click=${this.cancelRender} ?disabled=${!this.jobs.running} title=${msg('Stop the render')}>${msg('Cancel')}</button>
         <div class="progress">${this.progress()}</div>
-        <button data-guide="render.save" @click=${() => void this.save()} ?disabled=${this.jobs.status.kind !== 'finished'} title=${msg('Save the rendered image as a PNG file, at its exact pixels')}>
+        <button data-guide="render.save" @click=${() => void this.save()} ?disabled=${!this.jobs.finished && !this.jobs.hasPartial} title=${msg('Save the rendered image as a PNG file, at its exact pixels')}>
           ${msg('Save as PNG')}
         </button>
       </div>
@@ -310,6 +321,7 @@ export class RtRenderWindow extends LitElement {
       case 'cancelled':
         return html`<p role="status" data-testid="render-status">
           ${status.byUser ? msg('Render cancelled.') : msg('The render was stopped before it finished (the scene changed or another render started).')}
+          ${this.jobs.hasPartial ? msg('The image on show is partial: the render stopped before every pixel had all its samples. Save as PNG saves it as shown.') : nothing}
         </p>`;
       case 'failed':
         return html`<p role="alert" class="error" data-testid="render-status">${msg(str`The render failed: ${status.message}`)}</p>
