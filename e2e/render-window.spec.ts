@@ -141,6 +141,28 @@ test('Cancel stops a big render and says so', async ({ page }) => {
   await expect.poll(async () => (await tracedPicture(window)).colours).toBeGreaterThan(50);
 });
 
+test('the render window stays open when the view changes nothing it covers, and says why when a task needs the 3D view', async ({ page }) => {
+  const window = await openRenderWindow(page);
+  await window.evaluate((element: RtRenderWindow) => element.store!.dispatch({ type: 'settings.changed', changes: { imageSize: [64, 48] } }));
+  await renderAndWait(window);
+  // A task's view that only chooses a pixel, or a hint on a panel beside the window: the image stays.
+  await window.evaluate((element: RtRenderWindow) => element.store!.dispatch({ type: 'view.applied', view: { pixel: [1, 1], rays: { hideNoHit: true } } }));
+  await page.waitForTimeout(300);
+  await expect(window).toBeVisible();
+  await expect(window.getByRole('img', { name: 'The ray traced image' })).toBeVisible();
+  // A task's view that frames something in 3D needs the view the window covers: it closes, and the toast says so.
+  await window.evaluate((element: RtRenderWindow) => {
+    const store = element.store!;
+    store.dispatch({ type: 'view.applied', view: { frame: [store.state.scene.objects[0].id] } });
+  });
+  await expect(window).toBeHidden();
+  await expect(page.locator('rt-toast')).toContainText('The render window was closed to show the 3D view this task needs. Open it again with Render image.');
+  // Opened again, the last image is still there.
+  await page.getByRole('button', { name: 'Render image' }).click();
+  await expect(window.getByRole('img', { name: 'The ray traced image' })).toBeVisible();
+  await expect(window.getByTestId('render-status')).toContainText(/Done in/);
+});
+
 test('zoomed in, the canvas holds the part on screen: exactly the saved pixels there, after a scroll too, and stretched', async ({ page }) => {
   const window = await openRenderWindow(page);
   await renderAndWait(window);

@@ -247,6 +247,7 @@ ${1}`,
 's3f72c77be691a042': str`Je verwachtte: ${0}.`,
 's3f7c19021ef7fe81': `Verplaats de selectie met de gizmo (T)`,
 's3f7ff12d90f3f965': `Kopieer de link hieronder (Ctrl+C of lang indrukken) om deze scène te delen.`,
+'s3fb154d15ef867a2': `Het rendervenster is gesloten, zodat je het 3D-beeld ziet dat deze opdracht nodig heeft. Open het weer met Beeld renderen.`,
 's3fc4f80b779ce82b': str`(root): het bestand is ${0} kB; een scènebestand is hooguit ${1} kB`,
 's3ff988a6b121ce30': `een weergave hoort bij "view" van de taak, niet als stap in de oplossing`,
 's400e02495ab5aa08': str`${0} is geen voortgangsbestand dat deze app kan lezen, dus er is niets veranderd:
