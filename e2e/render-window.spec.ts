@@ -163,6 +163,20 @@ test('the render window stays open when the view changes nothing it covers, and 
   await expect(window.getByTestId('render-status')).toContainText(/Done in/);
 });
 
+test('the header names the size of the image on show; a size past the limit is clamped with the reason', async ({ page }) => {
+  const window = await openRenderWindow(page);
+  await window.evaluate((element: RtRenderWindow) => element.store!.dispatch({ type: 'settings.changed', changes: { imageSize: [64, 48] } }));
+  await expect(window.getByTestId('render-size')).toHaveText('64 × 48 pixels');
+  await renderAndWait(window);
+  const width = page.locator('rt-tracer-panel').getByRole('textbox', { name: 'Image size width' });
+  await width.fill('5000');
+  await width.press('Enter');
+  await expect(page.locator('rt-tracer-panel')).toContainText('Clamped to 1–4096: the tracer renders at most 4096 pixels per side');
+  expect(await imageSize(window)).toEqual([4096, 48]);
+  // The old image is not shown under the new size: the header keeps its size and names the next one.
+  await expect(window.getByTestId('render-size')).toHaveText('64 × 48 pixels; the next render: 4096 × 48');
+});
+
 test('zoomed in, the canvas holds the part on screen: exactly the saved pixels there, after a scroll too, and stretched', async ({ page }) => {
   const window = await openRenderWindow(page);
   await renderAndWait(window);

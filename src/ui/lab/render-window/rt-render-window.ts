@@ -253,9 +253,7 @@ export class RtRenderWindow extends LitElement {
     return html`
       <header>
         <h2>${msg('Ray traced image')}</h2>
-        <span class="size" title=${msg('The size of the image the next render makes (set in the ray tracer panel)')}>
-          ${msg(str`${width} × ${height} pixels`)}
-        </span>
+        ${this.sizeLabel(width, height)}
         <button data-guide="render.close" @click=${this.requestClose} aria-label=${msg('Close the render window')} title=${msg('Close the render window (Esc)')}>✕</button>
       </header>
       <div class="actions">
@@ -274,6 +272,19 @@ export class RtRenderWindow extends LitElement {
         ${this.outcome()} ${this.saveError ? html`<p role="alert" class="error">${this.saveError}</p>` : nothing} ${this.staleNote()}
       </footer>
     `;
+  }
+
+  /**
+   * The size of the image on show, never the next render's under an old image: a size typed
+   * in the ray tracer panel after a render is named as the next render's until it is made.
+   */
+  private sizeLabel(width: number, height: number) {
+    const shown = this.jobs.shown;
+    if (!shown) {
+      return html`<span class="size" data-testid="render-size" title=${msg('The size of the image the next render makes (set in the ray tracer panel)')}>${msg(str`${width} × ${height} pixels`)}</span>`;
+    }
+    const next = shown.width !== width || shown.height !== height ? msg(str`; the next render: ${width} × ${height}`) : '';
+    return html`<span class="size" data-testid="render-size" title=${msg('The size of the image on show; a new size from the ray tracer panel applies to the next render')}>${msg(str`${shown.width} × ${shown.height} pixels`)}${next}</span>`;
   }
 
   private progress() {
