@@ -115,11 +115,20 @@ test('Cancel stops a big render and says so', async ({ page }) => {
   // can show before its first tile is on the canvas.
   await expect.poll(async () => (await tracedPicture(window)).colours, { timeout: 30_000 }).toBeGreaterThan(50);
   await window.getByRole('button', { name: 'Cancel' }).click();
-  await expect(window.getByTestId('render-status')).toHaveText('Render cancelled.');
+  await expect(window.getByTestId('render-status')).toContainText('Render cancelled.');
+  await expect(window.getByTestId('render-status')).toContainText('The image on show is partial');
   await expect(window.getByRole('button', { name: 'Cancel' })).toBeDisabled();
-  await expect(window.getByRole('button', { name: 'Save as PNG' })).toBeDisabled();
-  // The partial picture stays.
+  // The partial picture stays, and can be saved as it was on show, at the image's size.
   await expect.poll(async () => (await tracedPicture(window)).colours).toBeGreaterThan(50);
+  const downloading = page.waitForEvent('download');
+  await window.getByRole('button', { name: 'Save as PNG' }).click();
+  const download = await downloading;
+  expect(download.suggestedFilename()).toMatch(/^ray-tracer-quest-[a-z0-9-]*2048x1536-partial\.png$/);
+  const png = PNG.sync.read(await readFile((await download.path())!));
+  expect([png.width, png.height]).toEqual([2048, 1536]);
+  const colours = new Set<number>();
+  for (let i = 0; i < png.data.length; i += 4) colours.add((png.data[i] << 16) | (png.data[i + 1] << 8) | png.data[i + 2]);
+  expect(colours.size).toBeGreaterThan(50);
   // Shown whole, it is drawn into a canvas the size of its place on screen; at 100 % into one
   // of the part on screen, a canvas pixel per image pixel, painted again (not stretched from the small one).
   const traced = window.getByRole('img', { name: 'The ray traced image' });
@@ -130,6 +139,42 @@ test('Cancel stops a big render and says so', async ({ page }) => {
   await expect.poll(async () => (await traced.boundingBox())!.width).toBeLessThan(1366);
   await expect.poll(async () => (await tracedPicture(window)).width).toBe(Math.round((await traced.boundingBox())!.width));
   await expect.poll(async () => (await tracedPicture(window)).colours).toBeGreaterThan(50);
+});
+
+test('the render window stays open when the view changes nothing it covers, and says why when a task needs the 3D view', async ({ page }) => {
+  const window = await openRenderWindow(page);
+  await window.evaluate((element: RtRenderWindow) => element.store!.dispatch({ type: 'settings.changed', changes: { imageSize: [64, 48] } }));
+  await renderAndWait(window);
+  // A task's view that only chooses a pixel, or a hint on a panel beside the window: the image stays.
+  await window.evaluate((element: RtRenderWindow) => element.store!.dispatch({ type: 'view.applied', view: { pixel: [1, 1], rays: { hideNoHit: true } } }));
+  await page.waitForTimeout(300);
+  await expect(window).toBeVisible();
+  await expect(window.getByRole('img', { name: 'The ray traced image' })).toBeVisible();
+  // A task's view that frames something in 3D needs the view the window covers: it closes, and the toast says so.
+  await window.evaluate((element: RtRenderWindow) => {
+    const store = element.store!;
+    store.dispatch({ type: 'view.applied', view: { frame: [store.state.scene.objects[0].id] } });
+  });
+  await expect(window).toBeHidden();
+  await expect(page.locator('rt-toast')).toContainText('The render window was closed to show the 3D view this task needs. Open it again with Render image.');
+  // Opened again, the last image is still there.
+  await page.getByRole('button', { name: 'Render image' }).click();
+  await expect(window.getByRole('img', { name: 'The ray traced image' })).toBeVisible();
+  await expect(window.getByTestId('render-status')).toContainText(/Done in/);
+});
+
+test('the header names the size of the image on show; a size past the limit is clamped with the reason', async ({ page }) => {
+  const window = await openRenderWindow(page);
+  await window.evaluate((element: RtRenderWindow) => element.store!.dispatch({ type: 'settings.changed', changes: { imageSize: [64, 48] } }));
+  await expect(window.getByTestId('render-size')).toHaveText('64 × 48 pixels');
+  await renderAndWait(window);
+  const width = page.locator('rt-tracer-panel').getByRole('textbox', { name: 'Image size width' });
+  await width.fill('5000');
+  await width.press('Enter');
+  await expect(page.locator('rt-tracer-panel')).toContainText('Clamped to 1–4096: the tracer renders at most 4096 pixels per side');
+  expect(await imageSize(window)).toEqual([4096, 48]);
+  // The old image is not shown under the new size: the header keeps its size and names the next one.
+  await expect(window.getByTestId('render-size')).toHaveText('64 × 48 pixels; the next render: 4096 × 48');
 });
 
 test('zoomed in, the canvas holds the part on screen: exactly the saved pixels there, after a scroll too, and stretched', async ({ page }) => {

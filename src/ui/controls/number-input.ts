@@ -19,6 +19,8 @@ export interface NumberRange {
   whole?: boolean;
   /** The field shows value × 100 with a "%" sign. */
   percent?: boolean;
+  /** Why the range ends where it does, said when typed text is clamped (the image size's limit protects the browser). */
+  why?: string;
 }
 
 export type TypedNumber =
@@ -97,7 +99,7 @@ export function typedNumberMessage(result: TypedNumber, range: NumberRange): str
     case 'ok':
       return undefined;
     case 'clamped':
-      return msg(str`Clamped to ${rangeText(range)}`);
+      return range.why ? msg(str`Clamped to ${rangeText(range)}: ${range.why}`) : msg(str`Clamped to ${rangeText(range)}`);
     case 'rounded':
       return msg(str`Rounded to ${result.value} (whole numbers only)`);
     case 'invalid': {

@@ -25,6 +25,7 @@ export class RtVectorField extends ControlElement {
     step: { type: Number },
     unit: {},
     whole: { type: Boolean },
+    limitReason: { attribute: false },
   };
 
   static override styles = [
@@ -66,9 +67,11 @@ export class RtVectorField extends ControlElement {
   /** After the label ("m", "°"). */
   declare unit: string;
   declare whole: boolean;
+  /** Why the range ends where it does, added to the note when typed text is clamped ('' for none). */
+  declare limitReason: string;
 
   private readonly typing = new FieldTyping<number>(this, {
-    read: (text) => readTypedNumber(text, { min: this.min, max: this.max, whole: this.whole }, this.unit),
+    read: (text) => readTypedNumber(text, { min: this.min, max: this.max, whole: this.whole, why: this.limitReason || undefined }, this.unit),
     commit: (component, index) => {
       const value = this.value.map((v, i) => (i === index ? component : v));
       this.emit('change', value);
@@ -84,6 +87,7 @@ export class RtVectorField extends ControlElement {
     this.step = 0.01;
     this.unit = '';
     this.whole = false;
+    this.limitReason = '';
   }
 
   override render() {

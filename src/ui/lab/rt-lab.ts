@@ -32,6 +32,7 @@ import { quizPictureDrawer } from './quiz-picture-drawer.ts';
 import { quizPicturesContext } from '../game/quiz-pictures.ts';
 import { ON_DEMAND_PANELS } from './lab-elements.ts';
 import { ViewCoverController } from './view-cover.ts';
+import { boxesOverlap, type GuideAndLook, renderWindowInTheWay } from './render-window/render-window-in-the-way.ts';
 
 export { FREE_LAB_HASH } from './quest-controller.ts';
 
@@ -149,26 +150,32 @@ export class RtLab extends LitElement {
   }
 
   /**
-   * The render window covers the 3D view and the pixel preview: it closes when the hint
-   * ring points at something outside it, or a task's view frames something in the 3D view
-   * (after a render task, the next task's pixel or ray was under it).
+   * The render window covers the 3D view and the pixel preview. It stays open while the
+   * learner looks at the image, and closes only when a task's view frames something in the
+   * 3D view or a hint rings something under it; the toast says why, and how to bring it back.
    */
   private closeRenderWindowWhenInTheWay(): void {
-    const ring = this.currentRing();
-    const look = this.store.state.look;
-    const newRing = ring !== this.lastRing && ring !== null && !ring.startsWith('render.');
-    const newLook = look !== this.lastLook && (look?.frame !== undefined || look?.throughCamera === true);
-    this.lastRing = ring;
-    this.lastLook = look;
-    if (this.renderOpen && (newRing || newLook)) this.renderOpen = false;
+    const now = { ring: this.currentRing(), look: this.store.state.look };
+    const inTheWay = renderWindowInTheWay(this.lastGuideAndLook, now, (ring) => this.coveredByRenderWindow(ring));
+    this.lastGuideAndLook = now;
+    if (!this.renderOpen || !inTheWay) return;
+    this.renderOpen = false;
+    this.toast(msg('The render window was closed to show the 3D view this task needs. Open it again with Render image.'));
+  }
+  /** Whether the render window hides the guide target `ring` (a 3D object or pixel has no element: it is in the view). */
+  private coveredByRenderWindow(ring: string): boolean {
+    const window = this.renderRoot.querySelector('rt-render-window');
+    const elements = this.guideElements(ring);
+    if (!window || elements.length === 0) return true;
+    const box = window.getBoundingClientRect();
+    return elements.some((element) => boxesOverlap(element.getBoundingClientRect(), box));
   }
   /** What the hint ring points at in the level being played, or null. */
   private currentRing(): string | null {
     const session = this.game.session;
     return session?.mode.kind === 'level' ? (session.engine.level?.ring ?? null) : null;
   }
-  private lastRing: string | null = null;
-  private lastLook: LabState['look'] = null;
+  private lastGuideAndLook: GuideAndLook = { ring: null, look: null };
 
   protected override updated(): void {
     this.ring.follow(this.currentRing());

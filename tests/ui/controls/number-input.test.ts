@@ -86,6 +86,12 @@ describe('typedNumberMessage', () => {
     expect(readTypedNumber('abc', spot)).toEqual({ value: undefined, note: 'Type a number between 1 and 170' });
     expect(readTypedNumber('0,5', coefficient)).toEqual({ value: 0.5, note: undefined });
   });
+
+  test('a clamped number is told the reason for the limit when the range has one', () => {
+    const imageSide = { min: 1, max: 4096, whole: true, why: 'the tracer renders at most 4096 pixels per side' };
+    expect(readTypedNumber('5000', imageSide, 'px')).toEqual({ value: 4096, note: 'Clamped to 1–4096: the tracer renders at most 4096 pixels per side' });
+    expect(readTypedNumber('4000', imageSide, 'px')).toEqual({ value: 4000, note: undefined });
+  });
 });
 
 describe('formatNumber', () => {

@@ -165,6 +165,7 @@ export class RtTracerPanel extends StorePanel {
             step: 1,
             unit: 'px',
             whole: true,
+            limitReason: msg(str`the tracer renders at most ${LIMITS.imageSize[1]} pixels per side, so that the image fits in the browser's memory (${LIMITS.imageSize[1]} × ${LIMITS.imageSize[1]} is already 16 million pixels).`),
           },
           settings.imageSize,
           (imageSize) => set({ imageSize }),

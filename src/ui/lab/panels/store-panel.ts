@@ -56,6 +56,8 @@ export interface VectorSpec extends ControlText {
   step: number;
   unit?: string;
   whole?: boolean;
+  /** Why the range ends where it does, said when typed text is clamped. */
+  limitReason?: string;
 }
 
 /**
@@ -302,6 +304,7 @@ export abstract class StorePanel extends LitElement {
       .step=${spec.step}
       unit=${spec.unit ?? ''}
       ?whole=${spec.whole ?? false}
+      .limitReason=${spec.limitReason ?? ''}
       .value=${value}
       .error=${this.errors[spec.name]}
       @change=${(event: CustomEvent<ValueDetail<number[]>>) => this.send(spec.name, action(event.detail.value as V))}

@@ -6,6 +6,7 @@ import type { Store } from '../../../lab-state/store.ts';
 import { meshNamesInScene } from '../../../scene/mesh-names.ts';
 import type { Scene } from '../../../scene/scene.ts';
 import type { Quantization } from '../../../tracer/quantize.ts';
+import { PartialPicture } from './partial-picture.ts';
 import { countRays } from './render-figures.ts';
 
 /** Where the render on show is in its life. */
@@ -48,6 +49,10 @@ export class RenderJobController implements ReactiveController {
   shown: ShownRender | null = null;
   /** The finished image, for Save as PNG. */
   finished: RenderImage | null = null;
+  /** What the running (or cancelled) render has shown so far. */
+  private readonly shownSoFar = new PartialPicture();
+  /** A cancelled render's image, which no tile changes any more; null otherwise. */
+  private cancelledImage: RenderImage | null = null;
   /** Each render's number; a late answer from an older one is ignored. */
   private renderId = 0;
   private job: RenderJob | null = null;
@@ -61,6 +66,19 @@ export class RenderJobController implements ReactiveController {
 
   get running(): boolean {
     return this.status.kind === 'starting' || this.status.kind === 'rendering';
+  }
+
+  /** Whether a cancelled render traced something that Save as PNG can save. */
+  get hasPartial(): boolean {
+    return this.status.kind === 'cancelled' && this.cancelledImage !== null && this.shownSoFar.traced;
+  }
+
+  /**
+   * A cancelled render's picture as it was on show (traced tiles, the coarse preview elsewhere),
+   * made when it is saved so that a big image is not copied for nothing; null when there is none.
+   */
+  partialPicture(): RenderImage | null {
+    return this.hasPartial && this.cancelledImage ? this.shownSoFar.picture(this.cancelledImage) : null;
   }
 
   /** The scene changed since the render on show (by the store's revision, not by content). */
@@ -81,6 +99,8 @@ export class RenderJobController implements ReactiveController {
     const [width, height] = scene.settings.imageSize;
     this.shown = { scene, revision: store.sceneRevision, width, height };
     this.finished = null;
+    this.cancelledImage = null;
+    this.shownSoFar.reset();
     this.setStatus({ kind: 'starting' });
     store.dispatch({ type: 'render.started' });
     await this.painter.started(this.shown, isCurrent);
@@ -95,7 +115,9 @@ export class RenderJobController implements ReactiveController {
           if (!isCurrent()) return;
           this.setStatus({ kind: 'rendering', ...progress });
           const changes = job.changes();
-          if (changes) this.painter.paintChanges(job.image, changes, quantization);
+          if (!changes) return;
+          this.shownSoFar.note(job.image, changes);
+          this.painter.paintChanges(job.image, changes, quantization);
         },
       });
       this.job = job;
@@ -103,6 +125,7 @@ export class RenderJobController implements ReactiveController {
       if (!isCurrent()) return;
       this.job = null;
       if (result.cancelled) {
+        this.cancelledImage = job.image;
         this.setStatus({ kind: 'cancelled', byUser: false });
         return;
       }
@@ -120,6 +143,7 @@ export class RenderJobController implements ReactiveController {
   /** Stops the running render (its partial image stays on show). */
   cancel(store: Store | undefined): void {
     if (!this.running) return;
+    this.cancelledImage = this.job?.image ?? null;
     this.stop();
     this.setStatus({ kind: 'cancelled', byUser: true });
     store?.dispatch({ type: 'render.cancelled' });

@@ -2,6 +2,7 @@ import { msg, str } from '@lit/localize';
 import { html, LitElement, nothing, type PropertyValues } from 'lit';
 import { createRef, ref } from 'lit/directives/ref.js';
 import { renderImageData } from '../../../render/image-data.ts';
+import type { RenderImage } from '../../../render/render-job.ts';
 import type { RenderPool } from '../../../render/render-pool.ts';
 import type { LabState } from '../../../lab-state/lab-state.ts';
 import type { Store } from '../../../lab-state/store.ts';
@@ -188,13 +189,23 @@ export class RtRenderWindow extends LitElement {
     await readBackOrWait(picture.pixels);
   }
 
+  /** What Save as PNG saves: the finished image, or a cancelled render's picture as it was on show. */
+  private saveable(): { image: RenderImage; partial: boolean } | null {
+    const { finished } = this.jobs;
+    if (finished) return { image: finished, partial: false };
+    const partial = this.jobs.partialPicture();
+    return partial ? { image: partial, partial: true } : null;
+  }
+
   private async save(): Promise<void> {
-    const { finished, shown } = this.jobs;
-    if (!finished || !shown) return;
+    const saveable = this.saveable();
+    const shown = this.jobs.shown;
+    if (!saveable || !shown) return;
     this.saveError = '';
     try {
-      const pixels = renderImageData(finished, shown.scene.settings);
-      await savePng(pixels, pngFileName(shown.scene.name === undefined ? undefined : shownName(shown.scene.name, ''), shown.width, shown.height));
+      const pixels = renderImageData(saveable.image, shown.scene.settings);
+      const name = pngFileName(shown.scene.name === undefined ? undefined : shownName(shown.scene.name, ''), shown.width, shown.height, saveable.partial);
+      await savePng(pixels, name);
       this.store?.dispatch({ type: 'render.saved' });
     } catch (error) {
       this.saveError = msg(str`The image could not be saved: ${errorMessage(error)}`);
@@ -242,9 +253,7 @@ export class RtRenderWindow extends LitElement {
     return html`
       <header>
         <h2>${msg('Ray traced image')}</h2>
-        <span class="size" title=${msg('The size of the image the next render makes (set in the ray tracer panel)')}>
-          ${msg(str`${width} × ${height} pixels`)}
-        </span>
+        ${this.sizeLabel(width, height)}
         <button data-guide="render.close" @click=${this.requestClose} aria-label=${msg('Close the render window')} title=${msg('Close the render window (Esc)')}>✕</button>
       </header>
       <div class="actions">
@@ -253,7 +262,7 @@ export class RtRenderWindow extends LitElement {
         </button>
         <button data-guide="render.cancel" ${ref(this.cancelButton)} @click=${this.cancelRender} ?disabled=${!this.jobs.running} title=${msg('Stop the render')}>${msg('Cancel')}</button>
         <div class="progress">${this.progress()}</div>
-        <button data-guide="render.save" @click=${() => void this.save()} ?disabled=${this.jobs.status.kind !== 'finished'} title=${msg('Save the rendered image as a PNG file, at its exact pixels')}>
+        <button data-guide="render.save" @click=${() => void this.save()} ?disabled=${!this.jobs.finished && !this.jobs.hasPartial} title=${msg('Save the rendered image as a PNG file, at its exact pixels')}>
           ${msg('Save as PNG')}
         </button>
       </div>
@@ -263,6 +272,19 @@ export class RtRenderWindow extends LitElement {
         ${this.outcome()} ${this.saveError ? html`<p role="alert" class="error">${this.saveError}</p>` : nothing} ${this.staleNote()}
       </footer>
     `;
+  }
+
+  /**
+   * The size of the image on show, never the next render's under an old image: a size typed
+   * in the ray tracer panel after a render is named as the next render's until it is made.
+   */
+  private sizeLabel(width: number, height: number) {
+    const shown = this.jobs.shown;
+    if (!shown) {
+      return html`<span class="size" data-testid="render-size" title=${msg('The size of the image the next render makes (set in the ray tracer panel)')}>${msg(str`${width} × ${height} pixels`)}</span>`;
+    }
+    const next = shown.width !== width || shown.height !== height ? msg(str`; the next render: ${width} × ${height}`) : '';
+    return html`<span class="size" data-testid="render-size" title=${msg('The size of the image on show; a new size from the ray tracer panel applies to the next render')}>${msg(str`${shown.width} × ${shown.height} pixels`)}${next}</span>`;
   }
 
   private progress() {
@@ -310,6 +332,7 @@ export class RtRenderWindow extends LitElement {
       case 'cancelled':
         return html`<p role="status" data-testid="render-status">
           ${status.byUser ? msg('Render cancelled.') : msg('The render was stopped before it finished (the scene changed or another render started).')}
+          ${this.jobs.hasPartial ? msg('The image on show is partial: the render stopped before every pixel had all its samples. Save as PNG saves it as shown.') : nothing}
         </p>`;
       case 'failed':
         return html`<p role="alert" class="error" data-testid="render-status">${msg(str`The render failed: ${status.message}`)}</p>

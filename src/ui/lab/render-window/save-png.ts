@@ -12,9 +12,9 @@ const MAX_NAME_LENGTH = 40;
  * `ray-tracer-quest-three-spheres-and-a-box-512x384.png`, so that renders of different scenes
  * and sizes do not overwrite each other in a Downloads folder. The scene name is reduced to
  * lower-case ASCII letters, digits and hyphens (accents dropped); it is left out when nothing
- * of it remains.
+ * of it remains. A cancelled render's picture ends in `-partial`, so it is not taken for the finished one.
  */
-export function pngFileName(sceneName: string | undefined, width: number, height: number): string {
+export function pngFileName(sceneName: string | undefined, width: number, height: number, partial = false): string {
   const slug = (sceneName ?? '')
     .normalize('NFKD')
     .replace(/[\u0300-\u036f]/g, '') // the accents NFKD split off their letters
@@ -22,7 +22,7 @@ export function pngFileName(sceneName: string | undefined, width: number, height
     .replace(/[^a-z0-9]+/g, '-')
     .slice(0, MAX_NAME_LENGTH)
     .replace(/^-+|-+$/g, '');
-  return [FILE_PREFIX, slug, `${width}x${height}`].filter((part) => part !== '').join('-') + '.png';
+  return [FILE_PREFIX, slug, `${width}x${height}`, partial ? 'partial' : ''].filter((part) => part !== '').join('-') + '.png';
 }
 
 /**

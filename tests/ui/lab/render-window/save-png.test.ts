@@ -6,6 +6,11 @@ describe('pngFileName', () => {
     expect(pngFileName('Three spheres and a box', 512, 384)).toBe('ray-tracer-quest-three-spheres-and-a-box-512x384.png');
   });
 
+  it("marks a cancelled render's picture as partial", () => {
+    expect(pngFileName('Three spheres and a box', 512, 384, true)).toBe('ray-tracer-quest-three-spheres-and-a-box-512x384-partial.png');
+    expect(pngFileName(undefined, 64, 48, true)).toBe('ray-tracer-quest-64x48-partial.png');
+  });
+
   it('leaves the scene out when it has no name, or no letters a file name can keep', () => {
     expect(pngFileName(undefined, 512, 384)).toBe('ray-tracer-quest-512x384.png');
     expect(pngFileName('  ***  ', 64, 48)).toBe('ray-tracer-quest-64x48.png');
