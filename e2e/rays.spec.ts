@@ -168,6 +168,17 @@ test('the ray panel, legend and pixel preview by keyboard', async ({ page }) => 
   await expect(swatch).toHaveCSS('background-color', 'rgb(112, 255, 251)');
   await page.locator('rt-switch[name="colorBlindPalette"] input').check();
   await expect(swatch).toHaveCSS('background-color', 'rgb(86, 180, 233)');
+  // Colour by time brings a key of the time colours, from the shutter's opening to its closing, and takes it away.
+  const timeKey = legend.locator('[data-key="time"]');
+  await expect(timeKey).toHaveCount(0);
+  await page.locator('rt-switch[name="colorByTime"] input').check();
+  await expect(timeKey).toBeVisible();
+  await expect(timeKey).toContainText('shutter opens');
+  await expect(timeKey).toContainText('shutter closes');
+  await expect(timeKey.locator('.time-ramp')).toHaveCSS('background-image', /^linear-gradient\(90deg, rgb\(68, 1, 84\).*rgb\(253, 231, 37\) 100%\)$/);
+  await legend.screenshot({ path: 'test-results/screens/ray-legend-time-key.png' });
+  await page.locator('rt-switch[name="colorByTime"] input').uncheck();
+  await expect(timeKey).toHaveCount(0);
 
   // Enter chooses the focused pixel; with one chosen, the arrows step the choice.
   const first = page.getByRole('button', { name: 'Pixel 0, 0', exact: true });
