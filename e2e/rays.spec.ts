@@ -216,6 +216,12 @@ test('every visualization option can be switched on in the ray panel, and the vi
     await panel.locator(`rt-switch[name="${name}"] input`).check();
     await expect.poll(async () => (await rayState())[name]).toBe(true);
   }
+  // One press in the middle of Negligible below's track is exactly 10 %, as level 12 asks.
+  const track = panel.locator('rt-slider[name="negligibleThreshold"] input[type="range"]');
+  await track.scrollIntoViewIfNeeded();
+  const threshold = (await track.boundingBox())!;
+  await page.mouse.click(threshold.x + threshold.width / 2, threshold.y + threshold.height / 2);
+  await expect.poll(async () => (await rayState()).negligibleThreshold).toBe(0.1);
   for (const [name, typed, expected] of [['negligibleThreshold', '5', 0.05], ['minRadius', '3', 0.03], ['maxRadius', '0.5', 0.005]] as const) {
     const field = panel.locator(`rt-slider[name="${name}"] input[type="text"]`);
     await field.fill(typed);
