@@ -71,7 +71,9 @@ describe('in Dutch', () => {
 
   it('writes the share with a decimal comma, rounded down as well', () => {
     expect(rayTestsHeadline(rayTests([model('hero', true, 4, 8624)]))).toBe('Deze straal testte 4 van de 8.624 driehoeken: de BVH sloeg er 99,9\u00a0% over.');
-    const sky = rayTests([{ id: 'floor', boundsHit: false, mesh: null }]);
-    expect(boxesLine([0, 0], sky, name)).toBe('Pixel 0, 0: zijn straal testte 1 omhullende dozen (één per object) en ging door geen ervan.');
+    const sky = rayTests([{ id: 'floor', boundsHit: false, mesh: null }, model('hero', false, 0, 8624)]);
+    expect(boxesLine([0, 0], sky, name)).toBe('Pixel 0, 0: zijn straal testte 2 omhullende dozen (één per object) en ging door geen ervan.');
+    const floor = rayTests([{ id: 'floor', boundsHit: true, mesh: null }, model('hero', false, 0, 8624)]);
+    expect(boxesLine([1, 7], floor, name)).toBe('Pixel 1, 7: zijn straal testte 2 omhullende dozen (één per object) en ging door 1 ervan: Floor.');
   });
 });
