@@ -100,7 +100,7 @@ test('bounding boxes: one per object, and a ray above everything tests no triang
   await page.evaluate(() => (document.querySelector('rt-lab') as unknown as { store: { dispatch(action: unknown): void } }).store.dispatch({ type: 'pixel.selected', pixel: [0, 0] }));
   const counts = panel.locator('.counts');
   await expect(counts).toContainText('This ray tested 0 of 8,624 triangles: it missed the bounding box of every model.');
-  await expect(counts).toContainText('its ray tested 4 bounding boxes (one per object) and went through 0 of them');
+  await expect(counts).toContainText('its ray tested 4 bounding boxes (one per object) and went through none of them');
   await expect(counts).toContainText('Character: its bounding box was missed, so not one of its triangles was tested.');
   await expect(counts).toContainText('The ray hits nothing.');
   expect(errors).toEqual([]);

@@ -110,6 +110,41 @@ test('a new player plays levels 1 and 2 through the UI; level 2 opens only after
   expect(errors).toEqual([]);
 });
 
+test('a drag on the orbit pad selects no text, and a level opens at its title with nothing left selected', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('./');
+  await page.getByRole('button', { name: 'Got it' }).click();
+  await importProgress(page, progressFile(['01-introduction']));
+  await page.locator('rt-level-map [data-level="01-introduction"]').click();
+  const selected = () => page.evaluate(() => document.getSelection()?.type ?? 'None');
+
+  // Pressed on the orbit pad and dragged over the task column's text, as a learner missing the button would.
+  const pad = (await page.locator('rt-view-toolbar [data-guide="view.orbit-buttons"] .centre').boundingBox())!;
+  const title = (await panel(page).locator('h2').boundingBox())!;
+  await page.mouse.move(pad.x + pad.width / 2, pad.y + pad.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(title.x + title.width / 2, title.y + title.height / 2, { steps: 12 });
+  await page.mouse.up();
+  expect(await selected()).not.toBe('Range');
+
+  // Level 1's column scrolled to its end and some text selected; "Next level" (clicked where
+  // it is, without scrolling to it) opens level 2.
+  const column = page.getByRole('complementary', { name: 'Tasks' });
+  const scrolled = await column.evaluate((element) => {
+    element.scrollTop = element.scrollHeight;
+    return element.scrollTop;
+  });
+  expect(scrolled).toBeGreaterThan(0);
+  await page.evaluate(() => document.getSelection()!.selectAllChildren(document.body));
+  expect(await selected()).toBe('Range');
+  await panel(page).getByRole('button', { name: 'Next level' }).evaluate((button: HTMLButtonElement) => button.click());
+  await expect(panel(page).locator('h2')).toHaveText('Rays from the camera');
+  await expect.poll(() => column.evaluate((element) => element.scrollTop)).toBe(0);
+  await expect(panel(page).locator('h2')).toBeInViewport();
+  expect(await selected()).not.toBe('Range');
+  expect(errors).toEqual([]);
+});
+
 test('a free lab link pasted into the tab the game is open in opens the free lab', async ({ page }) => {
   const errors = collectErrors(page);
   await page.goto('./');

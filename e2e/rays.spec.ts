@@ -168,6 +168,17 @@ test('the ray panel, legend and pixel preview by keyboard', async ({ page }) => 
   await expect(swatch).toHaveCSS('background-color', 'rgb(112, 255, 251)');
   await page.locator('rt-switch[name="colorBlindPalette"] input').check();
   await expect(swatch).toHaveCSS('background-color', 'rgb(86, 180, 233)');
+  // Colour by time brings a key of the time colours, from the shutter's opening to its closing, and takes it away.
+  const timeKey = legend.locator('[data-key="time"]');
+  await expect(timeKey).toHaveCount(0);
+  await page.locator('rt-switch[name="colorByTime"] input').check();
+  await expect(timeKey).toBeVisible();
+  await expect(timeKey).toContainText('shutter opens');
+  await expect(timeKey).toContainText('shutter closes');
+  await expect(timeKey.locator('.time-ramp')).toHaveCSS('background-image', /^linear-gradient\(90deg, rgb\(68, 1, 84\).*rgb\(253, 231, 37\) 100%\)$/);
+  await legend.screenshot({ path: 'test-results/screens/ray-legend-time-key.png' });
+  await page.locator('rt-switch[name="colorByTime"] input').uncheck();
+  await expect(timeKey).toHaveCount(0);
 
   // Enter chooses the focused pixel; with one chosen, the arrows step the choice.
   const first = page.getByRole('button', { name: 'Pixel 0, 0', exact: true });
@@ -205,6 +216,12 @@ test('every visualization option can be switched on in the ray panel, and the vi
     await panel.locator(`rt-switch[name="${name}"] input`).check();
     await expect.poll(async () => (await rayState())[name]).toBe(true);
   }
+  // One press in the middle of Negligible below's track is exactly 10 %, as level 12 asks.
+  const track = panel.locator('rt-slider[name="negligibleThreshold"] input[type="range"]');
+  await track.scrollIntoViewIfNeeded();
+  const threshold = (await track.boundingBox())!;
+  await page.mouse.click(threshold.x + threshold.width / 2, threshold.y + threshold.height / 2);
+  await expect.poll(async () => (await rayState()).negligibleThreshold).toBe(0.1);
   for (const [name, typed, expected] of [['negligibleThreshold', '5', 0.05], ['minRadius', '3', 0.03], ['maxRadius', '0.5', 0.005]] as const) {
     const field = panel.locator(`rt-slider[name="${name}"] input[type="text"]`);
     await field.fill(typed);

@@ -19,3 +19,14 @@ export function timeColor(time: number, out: Float32Array | number[], at = 0): v
   const f = position - stop;
   for (let axis = 0; axis < 3; axis++) out[at + axis] = VIRIDIS[stop][axis] + (VIRIDIS[stop + 1][axis] - VIRIDIS[stop][axis]) * f;
 }
+
+/**
+ * The ramp as a CSS gradient from τ = 0 (left) to τ = 1 (right), for the ray legend's key.
+ * The lab draws colours as display values with no gamma (ray-palette.ts, hexToColor) and CSS
+ * interpolates in sRGB, so the key's colour at each τ is the colour a ray of that time is drawn in.
+ */
+export function timeGradient(): string {
+  const last = VIRIDIS.length - 1;
+  const stops = VIRIDIS.map(([r, g, b], i) => `rgb(${Math.round(r * 255)} ${Math.round(g * 255)} ${Math.round(b * 255)}) ${(100 * i) / last}%`);
+  return `linear-gradient(90deg, ${stops.join(', ')})`;
+}

@@ -7,7 +7,8 @@ import { explainMore, fire, gameStyles } from './game-styles.ts';
 import { levelText } from './level-text.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 import './rt-task-card.ts';
-import { scrollInBox } from './scroll-in-box.ts';
+import { scrollBoxToTop, scrollInBox } from './scroll-in-box.ts';
+import { type TaskFocus, taskScroll } from './task-scroll.ts';
 
 /**
  * @summary The task column of a level: its title and intro (with "Explain more"), the
@@ -81,8 +82,8 @@ export class RtQuestPanel extends LitElement {
   declare badges: string[];
   /** The level was already passed when it was opened: its scene is the level's own again. */
   declare private returned: boolean;
-  /** The current task (or revealed prediction) last brought into view. */
-  private shownCurrent: string | null = null;
+  /** The level and the current task (or revealed prediction) last brought into view. */
+  private shown: TaskFocus = { level: null, task: null };
 
   constructor() {
     super();
@@ -101,12 +102,19 @@ export class RtQuestPanel extends LitElement {
   }
 
   protected override updated(): void {
-    // A new current task is brought into view in the task column: done tasks above it pushed it below the column's edge.
-    const current = (this.view?.revealing ?? this.view?.current)?.task.id ?? null;
-    if (current === this.shownCurrent) return;
-    this.shownCurrent = current;
-    const item = current ? this.renderRoot.querySelector(`li[data-task="${current}"]`) : null;
-    if (item) scrollInBox(item);
+    const view = this.view;
+    const now: TaskFocus = { level: view?.level.id ?? null, task: (view?.revealing ?? view?.current)?.task.id ?? null };
+    const scroll = taskScroll(this.shown, now);
+    this.shown = now;
+    if (scroll.kind === 'top') {
+      // A level opens at its title, with nothing of the page left selected from the last one.
+      document.getSelection()?.removeAllRanges();
+      scrollBoxToTop(this);
+    } else if (scroll.kind === 'task') {
+      // Done tasks above the current one pushed it below the column's edge.
+      const item = this.renderRoot.querySelector(`li[data-task="${scroll.task}"]`);
+      if (item) scrollInBox(item);
+    }
   }
 
   override render() {

@@ -15,6 +15,12 @@ export function scrollInBox(element: Element): void {
   else if (inner.bottom > outer.bottom) box.scrollTop += Math.min(inner.bottom - outer.bottom, inner.top - outer.top);
 }
 
+/** Scrolls the nearest box around `element` that scrolls to its top; as scrollInBox, never the page itself. */
+export function scrollBoxToTop(element: Element): void {
+  const box = scrollBoxAround(element);
+  if (box) box.scrollTop = 0;
+}
+
 function scrollBoxAround(element: Element): Element | null {
   for (let at = parentAcrossShadow(element); at; at = parentAcrossShadow(at)) {
     if (at === document.scrollingElement || at === document.body) return null;

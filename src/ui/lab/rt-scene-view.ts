@@ -53,6 +53,9 @@ export class RtSceneView extends LitElement {
       height: 100%;
       touch-action: none;
       outline: none;
+      /* Dragging the view to orbit must not select the page's text on the way. */
+      -webkit-user-select: none;
+      user-select: none;
     }
     .view-status {
       position: absolute;

@@ -42,6 +42,10 @@ export class RtViewToolbar extends LitElement {
       font-family: var(--rt-font);
       font-size: 0.8125rem;
       color: var(--rt-text);
+      /* A drag that starts on a pad (pressed and held, then moved) would otherwise select the
+         page's text, and the selection stayed on across levels (issue 37). */
+      -webkit-user-select: none;
+      user-select: none;
     }
     .bar {
       position: absolute;

@@ -1,4 +1,4 @@
-import { msg } from '@lit/localize';
+import { msg, str } from '@lit/localize';
 import { LIMITS } from '../../../scene/scene-limits.ts';
 import type { SliderSpec, VectorSpec } from './store-panel.ts';
 
@@ -35,6 +35,17 @@ export function lensSamplesSpec(disabled: boolean): SliderSpec {
       : msg('n × n rays from points on the lens per pixel sample: less noise in the blur, n² times the work.'),
     min: LIMITS.lensSamples[0], max: LIMITS.lensSamples[1], step: 1, whole: true, disabled,
   };
+}
+
+/**
+ * What the lens-samples setting sends per pixel sample, as the tracer does it
+ * (render-pixel.ts): a pinhole sends one ray whatever n is, and n = 1 with an open lens one
+ * ray from a random point of the lens (docs/tracer.md), not "1 × 1 = 1 lens rays".
+ */
+export function lensSamplesHint(n: number, aperture: number): string {
+  if (aperture === 0) return msg('A pinhole: one ray per sample');
+  if (n === 1) return msg('One lens ray per sample, from a random point of the lens');
+  return msg(str`${n} × ${n} = ${n * n} lens rays per sample`);
 }
 
 export function timeSamplesSpec(): SliderSpec {

@@ -12,6 +12,7 @@ import { bvhTree, nodesAtDepth } from '../../../tracer/bvh-tree.ts';
 import { meshAccel } from '../../../tracer/shapes/mesh-accel.ts';
 import { buildTracerScene, type TracerScene } from '../../../tracer/tracer-scene.ts';
 import { countPixelTests, type RayTests } from '../../../tracer/triangle-test-count.ts';
+import { boxesLine, rayTestsHeadline } from './bvh-ray-wording.ts';
 import { StorePanel } from './store-panel.ts';
 
 /** What the panel found for the current scene: the tests of the selected pixel's ray, and the boxes at the chosen depth. */
@@ -25,7 +26,6 @@ interface Counts {
 }
 
 const NUMBER = localNumbers();
-const PERCENT = localNumbers({ minimumFractionDigits: 1, maximumFractionDigits: 1 });
 
 /**
  * @summary The acceleration panel: show every object's bounding box, show the BVH of the
@@ -178,28 +178,10 @@ export class RtBvhPanel extends StorePanel {
     const counts = this.counts;
     const tests = counts && counts.scene === state.scene && counts.pixel === pixel ? counts.tests : null;
     if (!tests) return html`<p class="counts muted" role="status">${msg('Counting…')}</p>`;
-    const [column, row] = pixel;
-    const boxesHit = tests.objects.filter((object) => object.boundsHit).length;
     const models = tests.objects.filter((object) => object.mesh !== null);
     return html`<div class="counts" role="status" data-triangles=${tests.triangles} data-brute-force=${tests.bruteForce}>
-      ${tests.bruteForce > 0 && models.every((object) => !object.boundsHit)
-        ? html`<p class="headline">
-            ${msg(str`This ray tested 0 of ${NUMBER.format(tests.bruteForce)} triangles: it missed the bounding box of every model.`)}
-          </p>`
-        : tests.bruteForce > 0
-        ? html`<p class="headline">
-            ${msg(
-              str`This ray tested ${NUMBER.format(tests.triangles)} of ${NUMBER.format(tests.bruteForce)} triangles: the BVH skipped ${PERCENT.format(
-                (100 * (tests.bruteForce - tests.triangles)) / tests.bruteForce,
-              )}\u00a0%.`,
-            )}
-          </p>`
-        : html`<p class="headline">${msg('No model made of triangles in this scene: this ray tested no triangles.')}</p>`}
-      <p>
-        ${msg(
-          str`Pixel ${column}, ${row}: its ray tested ${tests.boundsTests} bounding boxes (one per object) and went through ${boxesHit} of them.`,
-        )}
-      </p>
+      <p class="headline">${rayTestsHeadline(tests)}</p>
+      <p>${boxesLine(pixel, tests, (id) => itemName(state.scene, id))}</p>
       ${models.length > 0
         ? html`<ul>
             ${models.map((object) => {

@@ -5,6 +5,7 @@ import { styleMap } from 'lit/directives/style-map.js';
 import { legendKeys, paletteNameFor, RAY_DASHES, type RayColorKey, rayPalette } from '../../../view/ray-palette.ts';
 import { rayColorKeyHint, rayColorKeyName } from '../ray-names.ts';
 import { StorePanel } from './store-panel.ts';
+import { timeKey, timeKeyStyles } from './time-key.ts';
 
 /**
  * @summary The ray colours' legend: a swatch and the name of each kind of ray (never the
@@ -13,7 +14,9 @@ import { StorePanel } from './store-panel.ts';
  * that ray does. The normal is an entry too; "direction to the light — not tested" only
  * while Shadows is off (legendKeys).
  *
- * Reads `store` (rays.colorBlindPalette, scene.settings.shadows); changes nothing.
+ * While "Colour by time" is on, a key of the time colours follows (time-key.ts).
+ *
+ * Reads `store` (rays.colorBlindPalette, rays.colorByTime, scene.settings.shadows); changes nothing.
  */
 export class RtRayLegend extends StorePanel {
   protected readonly controlPanel = 'rays';
@@ -21,6 +24,7 @@ export class RtRayLegend extends StorePanel {
     StorePanel.styles,
     // The dash between a name and its detail is read out; on screen the line break stands for it.
     visuallyHiddenStyles,
+    timeKeyStyles,
     css`
       ul {
         display: grid;
@@ -62,7 +66,8 @@ export class RtRayLegend extends StorePanel {
           ${entryName(rayColorKeyName(key))}
         </li>`,
       )}
-    </ul>`;
+    </ul>
+    ${timeKey(this.state?.rays.colorByTime ?? false)}`;
   }
 }
 

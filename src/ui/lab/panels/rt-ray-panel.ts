@@ -2,6 +2,7 @@ import { msg } from '@lit/localize';
 import { html, nothing } from 'lit';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { RayViewOptions } from '../../../lab-state/lab-state.ts';
+import { NEGLIGIBLE_THRESHOLD } from './negligible-threshold.ts';
 import './rt-ray-legend.ts';
 import { StorePanel } from './store-panel.ts';
 
@@ -17,13 +18,6 @@ const RADIUS_CM = { min: 0.1, max: 10, step: 0.1 } as const;
  * 100 m/s for "pixel by pixel" on a big screen, which otherwise takes minutes.
  */
 const SPEED = { min: 0.5, max: 20, step: 0.5, inputMax: 100 } as const;
-
-/**
- * Negligible threshold as a share of the pixel: the slider spans 0–20 % in 0.1 % steps,
- * where the interesting thresholds are (a bounce typically carries a few percent); any
- * share up to 100 % can be typed.
- */
-const THRESHOLD = { min: 0, max: 0.2, step: 0.001, inputMax: 1 } as const;
 
 /**
  * @summary The ray visualization options of the original lab's ray panel: show rays, hide
@@ -74,7 +68,7 @@ export class RtRayPanel extends StorePanel {
             name: 'negligibleThreshold',
             label: msg('Negligible below'),
             tooltip: msg('A ray that adds less than this share of its pixel’s colour counts as negligible. Type up to 100 %.'),
-            ...THRESHOLD,
+            ...NEGLIGIBLE_THRESHOLD,
             unit: '%',
             disabled: !rays.hideNegligible,
           },

@@ -6,7 +6,7 @@ import type { Camera, ImageEncoding, LightType, RenderSettings, SamplePattern, T
 import { LIMITS } from '../../../scene/scene-limits.ts';
 import { effectiveFocusDistance, focusDistanceTo } from '../../../scene/camera-focus.ts';
 import { shownName } from '../scene-names.ts';
-import { apertureSpec, focusDistanceSpec, lensSamplesSpec, timeSamplesSpec } from './distribution-specs.ts';
+import { apertureSpec, focusDistanceSpec, lensSamplesHint, lensSamplesSpec, timeSamplesSpec } from './distribution-specs.ts';
 import { StorePanel, type ControlPart, type ControlText } from './store-panel.ts';
 
 const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
@@ -198,7 +198,7 @@ export class RtTracerPanel extends StorePanel {
             </button>
             ${this.errorLine('focusOnSelected')}`
         : nothing,
-      this.slider(lensSamplesSpec(camera.aperture === 0), n, (lensSamples) => cam({ lensSamples }), msg(str`${n} × ${n} = ${n * n} lens rays per sample`)),
+      this.slider(lensSamplesSpec(camera.aperture === 0), n, (lensSamples) => cam({ lensSamples }), lensSamplesHint(n, camera.aperture)),
       this.slider(timeSamplesSpec(), k, (timeSamples) => ({ type: 'settings.changed', changes: { timeSamples } }), k === 1 ? msg('The shutter sees one moment') : msg(str`${k} moments per sample`)),
       // The pixel's pattern choice, in time (shutter-times.ts): fixed moments give copies, moments per pixel give grain.
       this.choice<TimePattern>(
