@@ -1,5 +1,6 @@
 import type { Plugin } from 'vite';
 import { VitePWA } from 'vite-plugin-pwa';
+import { levelTextsPlugin } from './scripts/level-texts-plugin.ts';
 import { defineConfig } from 'vitest/config';
 
 /**
@@ -46,6 +47,7 @@ export default defineConfig({
   build: { target: 'es2022', outDir: 'dist', manifest: true },
   preview: { host: '127.0.0.1', port: 4173 },
   plugins: [
+    levelTextsPlugin(),
     contentSecurityPolicy(),
     VitePWA({
       registerType: 'autoUpdate',

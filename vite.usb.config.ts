@@ -1,5 +1,6 @@
 import { defineConfig, type Plugin } from 'vite';
 import { viteSingleFile } from 'vite-plugin-singlefile';
+import { levelTextsPlugin } from './scripts/level-texts-plugin.ts';
 
 /**
  * The USB-stick build (`npm run build:usb`): one `index.html` that opens by double-click.
@@ -37,5 +38,5 @@ export default defineConfig({
     assetsInlineLimit: () => true,
     chunkSizeWarningLimit: 8000,
   },
-  plugins: [inlineRenderWorker(), viteSingleFile()],
+  plugins: [levelTextsPlugin(), inlineRenderWorker(), viteSingleFile()],
 });

@@ -11,7 +11,8 @@ import { gzipSync } from 'node:zlib';
  * - the entry's dynamic imports with their static imports: `src/main.ts` awaits each of them
  *   before the first render (the language, then the app);
  * - for a learner in another language, that language's catalogue (`src/locales/<code>.ts`)
- *   and what src/i18n/locale.ts loads together with it (CATALOGUE_COMPANIONS).
+ *   and what src/i18n/locale.ts loads together with it (CATALOGUE_COMPANIONS);
+ * - the level files in the learner's language (`virtual:level-texts/<code>`).
  *
  * What loads once that screen is up is listed apart ("after the first screen"): the 3D view
  * (three.js), the BVH panel, the teacher's pages. The render worker is a file of its own,
@@ -20,6 +21,9 @@ import { gzipSync } from 'node:zlib';
 
 /** The budget of spec issue 11: a school laptop on a busy classroom network. */
 export const FIRST_LOAD_BUDGET_BYTES = 250 * 1024;
+
+/** The module of the level files in one language, by its language code. */
+const LEVEL_TEXTS = 'virtual:level-texts/';
 
 /** Loaded together with any catalogue (src/i18n/locale.ts): the patterns that say a refused file's reasons in that language. */
 export const CATALOGUE_COMPANIONS = ['src/i18n/issue-translation.ts'];
@@ -67,7 +71,10 @@ export function firstLoadKeys(manifest: Manifest, locale = 'en'): string[] {
   const catalogue = `src/locales/${locale}.ts`;
   if (locale !== 'en' && !manifest[catalogue]) throw new Error(`the build has no catalogue for "${locale}" (${catalogue})`);
   const withCatalogue = locale === 'en' ? [] : [catalogue, ...CATALOGUE_COMPANIONS];
-  return staticClosure(manifest, [entry, ...(manifest[entry].dynamicImports ?? []), ...withCatalogue]);
+  // The levels' texts in that language (scripts/level-texts-plugin.ts), awaited before the first screen.
+  const levelTexts = `${LEVEL_TEXTS}${locale}`;
+  if (!manifest[levelTexts]) throw new Error(`the build has no level texts in "${locale}" (${levelTexts})`);
+  return staticClosure(manifest, [entry, ...(manifest[entry].dynamicImports ?? []), ...withCatalogue, levelTexts]);
 }
 
 function gzipBytes(dist: string, file: string): number {
@@ -84,7 +91,7 @@ export function afterFirstScreen(dist: string, manifest = readManifest(dist)): {
   const first = new Set(firstLoadKeys(manifest));
   const dynamicEntries = new Set(Object.values(manifest).flatMap((chunk) => chunk.dynamicImports ?? []));
   return [...dynamicEntries]
-    .filter((key) => !first.has(key) && !key.startsWith('src/locales/') && !CATALOGUE_COMPANIONS.includes(key))
+    .filter((key) => !first.has(key) && !key.startsWith('src/locales/') && !key.startsWith(LEVEL_TEXTS) && !CATALOGUE_COMPANIONS.includes(key))
     .map((key) => ({
       source: key,
       gzipBytes: staticClosure(manifest, [key])

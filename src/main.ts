@@ -1,9 +1,11 @@
 // The app's entry point: zod is told not to probe for eval first (the page's CSP forbids it),
-// then the language (so the first render is already in it), then the elements, which do the
+// then the language and the level texts in it (so the first render is already in it), then
+// the elements, which do the
 // rest when they connect. The later modules are imported dynamically so that none of them
 // runs, and parses, before that first line has.
 import './util/zod-jitless.ts';
 
 const { startLocale } = await import('./i18n/locale.ts');
-await startLocale();
+const [{ loadLevelTexts }, locale] = await Promise.all([import('./app/level-catalog-browser.ts'), startLocale()]);
+await loadLevelTexts(locale);
 await import('./ui/shell/rt-app.ts');

@@ -1,24 +1,42 @@
 import { loadLevelGuide, loadLevels, type LevelCatalog, type LevelGuide } from '../quest/level-index.ts';
+import type { Locale } from '../quest/localized-text.ts';
 
 /**
- * The level catalog in the browser. The files are bundled as text, not as JSON modules, so
- * a level file with a JSON mistake is still built and shows up on the map as broken, with
- * its reason, instead of breaking the build for every level.
+ * The level catalog in the browser. The files come as text in the learner's language
+ * (scripts/level-texts-plugin.ts), not as JSON modules, so a level file with a JSON mistake
+ * is still built and shows up on the map as broken, with its reason, instead of breaking the
+ * build for every level. `loadLevelTexts` is awaited before the game starts and whenever the
+ * language changes before a game is made (an assignment's language).
  */
-const indexText = import.meta.glob<string>('../../levels/index.json', { eager: true, query: '?raw', import: 'default' });
-const levelTexts = import.meta.glob<string>('../../levels/*.level.json', { eager: true, query: '?raw', import: 'default' });
 
-const byName = new Map(Object.entries(levelTexts).map(([path, text]) => [path.slice(path.lastIndexOf('/') + 1), text]));
+let texts: { locale: Locale; files: Record<string, string> } | null = null;
+let catalog: { files: Record<string, string>; catalog: LevelCatalog } | null = null;
 
-/** Every level listed in levels/index.json, playable or broken. */
+/** Loads the level files in `locale` (each language is a module of its own). */
+export async function loadLevelTexts(locale: Locale): Promise<void> {
+  if (texts?.locale === locale) return;
+  const files = locale === 'nl' ? (await import('virtual:level-texts/nl')).default : (await import('virtual:level-texts/en')).default;
+  texts = { locale, files };
+}
+
+/** The language of the level texts loaded, or null before any are. */
+export function levelTextsLocale(): Locale | null {
+  return texts?.locale ?? null;
+}
+
+/** Every level listed in levels/index.json, playable or broken, in the loaded language. */
 export function loadBrowserCatalog(): LevelCatalog {
-  const index = Object.values(indexText)[0];
-  if (index === undefined) return { chapters: [], errors: ['(root): levels/index.json is missing from this build'] };
-  return loadLevels(index, (name) => byName.get(name));
+  const files = texts?.files;
+  if (!files) return { chapters: [], errors: ['(root): the level texts were not loaded'] };
+  if (catalog?.files !== files) {
+    const index = files['index.json'];
+    catalog = { files, catalog: index === undefined ? { chapters: [], errors: ['(root): levels/index.json is missing from this build'] } : loadLevels(index, (name) => files[name]) };
+  }
+  return catalog.catalog;
 }
 
 /** Each level's idea and the presets of levels/index.json, for the teacher page. */
 export function loadBrowserLevelGuide(): LevelGuide {
-  const index = Object.values(indexText)[0];
+  const index = texts?.files['index.json'];
   return index === undefined ? { ideas: {}, presets: [] } : loadLevelGuide(index);
 }

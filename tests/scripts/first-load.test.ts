@@ -8,8 +8,9 @@ import { afterFirstScreen, checkFirstLoad, FIRST_LOAD_BUDGET_BYTES, firstLoad, t
 
 /**
  * A built app as vite writes it: an entry that awaits the app (a dynamic import), the app
- * importing a shared chunk, the Dutch catalogue and the patterns loaded with it, and the 3D view and the dashboard loaded on
- * demand from the app, sharing a chunk of their own.
+ * importing a shared chunk, the Dutch catalogue and the patterns loaded with it, the level
+ * texts in each language, and the 3D view and the dashboard loaded on demand from the app,
+ * sharing a chunk of their own.
  */
 function dist(appBytes: number): string {
   const dir = mkdtempSync(join(tmpdir(), 'first-load-'));
@@ -22,6 +23,8 @@ function dist(appBytes: number): string {
     'assets/app.js': noise(appBytes),
     'assets/shared.js': 'export const a = 1;'.repeat(100),
     'assets/nl.js': noise(2000),
+    'assets/levels-en.js': noise(3000),
+    'assets/levels-nl.js': noise(3100),
     'assets/issue-translation.js': noise(500),
     'assets/view.js': noise(150_000),
     'assets/three.js': noise(100_000),
@@ -30,7 +33,9 @@ function dist(appBytes: number): string {
   for (const [file, content] of Object.entries(files)) writeFileSync(join(dir, file), content);
   const manifest: Manifest = {
     'index.html': { file: 'assets/index.js', isEntry: true, dynamicImports: ['src/app.ts'] },
-    'src/app.ts': { file: 'assets/app.js', imports: ['_shared.js'], dynamicImports: ['src/locales/nl.ts', 'src/i18n/issue-translation.ts', 'src/view.ts', 'src/dashboard.ts'] },
+    'src/app.ts': { file: 'assets/app.js', imports: ['_shared.js'], dynamicImports: ['src/locales/nl.ts', 'src/i18n/issue-translation.ts', 'virtual:level-texts/en', 'virtual:level-texts/nl', 'src/view.ts', 'src/dashboard.ts'] },
+    'virtual:level-texts/en': { file: 'assets/levels-en.js' },
+    'virtual:level-texts/nl': { file: 'assets/levels-nl.js' },
     'src/i18n/issue-translation.ts': { file: 'assets/issue-translation.js', imports: ['_shared.js'] },
     '_shared.js': { file: 'assets/shared.js' },
     'src/locales/nl.ts': { file: 'assets/nl.js', imports: ['_shared.js'] },
@@ -47,15 +52,15 @@ const gzipLength = (text: string) => gzipSync(text, { level: 9 }).length;
 describe('the first-load budget', () => {
   it('counts the entry, what it awaits and their static imports, not what loads on demand', () => {
     const load = firstLoad(dist(1000));
-    expect(load.files.map((file) => file.file)).toEqual(['assets/index.js', 'assets/app.js', 'assets/shared.js']);
+    expect(load.files.map((file) => file.file)).toEqual(['assets/index.js', 'assets/app.js', 'assets/shared.js', 'assets/levels-en.js']);
     expect(load.files[2].gzipBytes).toBe(gzipLength('export const a = 1;'.repeat(100)));
     expect(checkFirstLoad(load).ok).toBe(true);
   });
 
-  it('adds the catalogue of a learner in another language, and what loads with it', () => {
+  it('adds the catalogue of a learner in another language, what loads with it, and the levels in that language only', () => {
     const dir = dist(1000);
     const dutch = firstLoad(dir, 'nl');
-    expect(dutch.files.map((file) => file.file)).toEqual(['assets/index.js', 'assets/app.js', 'assets/shared.js', 'assets/nl.js', 'assets/issue-translation.js']);
+    expect(dutch.files.map((file) => file.file)).toEqual(['assets/index.js', 'assets/app.js', 'assets/shared.js', 'assets/nl.js', 'assets/issue-translation.js', 'assets/levels-nl.js']);
     expect(dutch.gzipBytes).toBeGreaterThan(firstLoad(dir).gzipBytes + 2500);
     expect(() => firstLoad(dir, 'fr')).toThrow(/no catalogue for "fr"/);
   });

@@ -1,6 +1,6 @@
 import { msg, str } from '@lit/localize';
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
-import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
+import { levelTextsLocale, loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
 import { QuestSession } from '../../app/quest-session.ts';
 import type { ShowMeStage } from '../../app/show-me-player.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
@@ -10,7 +10,6 @@ import { chooseLocale, currentLocale } from '../../i18n/locale.ts';
 import { issueText } from '../../i18n/issue-text.ts';
 import { progressProblemText } from '../../i18n/progress-problem-text.ts';
 import type { Store } from '../../lab-state/store.ts';
-import type { LevelCatalog } from '../../quest/level-index.ts';
 import { MemoryStorage, type KeyValueStorage } from '../../quest/progress-store.ts';
 import type { Scene } from '../../scene/scene.ts';
 import { downloadText } from '../../util/download-file.ts';
@@ -21,8 +20,6 @@ import type { ProgressCommand } from '../game/rt-progress-menu.ts';
 /** The address fragment that opens the free lab instead of the game. */
 export const FREE_LAB_HASH = '#free-lab';
 
-/** Every level file, read once per page. */
-let catalog: LevelCatalog | null = null;
 
 /** localStorage, or a Map for this visit when the browser blocks it (the session then says progress is not kept). */
 function browserStorage(): KeyValueStorage {
@@ -80,7 +77,7 @@ export class QuestController implements ReactiveController {
   /** The game: progress from storage (a message if it was damaged), then resume, the first level or the map. */
   start(): void {
     this.stop();
-    catalog ??= loadBrowserCatalog();
+    const catalog = loadBrowserCatalog();
     const storage = browserStorage();
     const session = new QuestSession({ store: this.host.store, catalog, storage, assignment: this.host.assignment });
     this.session = session;
@@ -200,7 +197,11 @@ export class QuestController implements ReactiveController {
     switch (command.kind) {
       case 'locale':
         session.setLocale(command.locale);
-        void chooseLocale(command.locale);
+        // The levels' texts come in one language (level-catalog-browser.ts): the page starts
+        // again in the new one, its progress saved.
+        void chooseLocale(command.locale).then((locale) => {
+          if (locale !== levelTextsLocale()) location.reload();
+        });
         return;
       case 'palette':
         // Through the store, like the ray panel's switch: the session saves it with the progress.

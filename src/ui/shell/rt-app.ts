@@ -1,7 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { issueText } from '../../i18n/issue-text.ts';
 import { html, LitElement, nothing } from 'lit';
-import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
+import { loadBrowserCatalog, loadLevelTexts } from '../../app/level-catalog-browser.ts';
 import { isSceneFragment } from '../../app/scene-link.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import { decodeAssignment, isAssignmentFragment, type AssignmentLinkResult } from '../../classroom/assignment-link.ts';
@@ -86,7 +86,7 @@ export class RtApp extends LitElement {
     // The address may have changed while the link was read.
     if (hash !== this.route) return;
     // The assignment's language is the teacher's choice for the class: set before the lab renders.
-    if (result.ok) await startLocale(result.assignment.locale);
+    if (result.ok) await loadLevelTexts(await startLocale(result.assignment.locale));
     this.opened = { hash, assignment: result.ok ? result.assignment : null, problem: result.ok ? '' : problemText(result) };
   }
 
