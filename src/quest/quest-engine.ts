@@ -8,6 +8,7 @@ import { choiceOrder } from './choice-order.ts';
 import { checkGoal, fitsGoal, isRightPrediction, NO_EVENTS, tallyAction, touchesGoal, type EventTally, type Prediction } from './goal-check.ts';
 import { kindOfGoal, predictionOf, predictionParts, type PictureGoal, type TaskKind } from './goal.ts';
 import { pictureScenes } from './picture-scenes.ts';
+import { lastPrediction, observerOf, predictionRevealedBy, stageOf, type PredictionStage, type Reveal } from './prediction-stage.ts';
 import { canShowMe, climb, nextHintStep, NO_HINTS, type HintProgress } from './hint-ladder.ts';
 import type { GuideTarget } from './lab-controls.ts';
 import { currentTask, isCompleted, isPassed, requiredTaskIds, type RequiredTasks } from './level-gate.ts';
@@ -52,13 +53,6 @@ export interface QuestEngineOptions {
  * required and not done; `waiting` a required task after the current one. */
 export type TaskStatus = 'current' | 'open' | 'waiting' | HowCompleted;
 
-/**
- * Where a prediction is (predict → observe → explain, White & Gunstone 1992): `ask` before
- * the learner predicts; `wait` while they do the task that shows the result (its observer);
- * then, once it is done, `reflect` (a wrong prediction: "you expected X, what do you see?")
- * and `explain` (the answer and why, until the learner moves on); `explained` after.
- */
-export type PredictionStage = 'ask' | 'wait' | 'reflect' | 'explain' | 'explained';
 
 export interface PredictionView {
   stage: PredictionStage;
@@ -135,7 +129,7 @@ interface ActiveLevel {
   started: Set<string>;
   ring: { task: string; target: GuideTarget } | null;
   /** The prediction whose result was just observed: it holds the level until the learner continues. */
-  reveal: { quiz: string; reflection?: Prediction } | null;
+  reveal: Reveal | null;
   /** Opened with the scene the learner left, not the level's own. */
   sceneKept: boolean;
 }
@@ -574,7 +568,7 @@ export class QuestEngine {
       this.awardChapter(level.chapter);
     }
     for (const badge of levelBadgesEarned(level, record, required)) this.award(badge);
-    const revealed = how === 'skipped' ? undefined : this.predictionRevealedBy(active, task);
+    const revealed = how === 'skipped' ? undefined : predictionRevealedBy(level, required, record, task);
     if (revealed) active.reveal = { quiz: revealed.id };
     // A revealed prediction holds the level: the next task comes when the learner continues.
     if (active.current?.id === task.id) {
@@ -583,43 +577,16 @@ export class QuestEngine {
     }
   }
 
-  /**
-   * The task whose result checks the prediction `quiz`: the first task after it that is
-   * done in the lab, required if the quiz is; none when nothing after it shows the result.
-   */
   private observerOf(active: ActiveLevel, quiz: Task): Task | undefined {
-    const tasks = active.level.tasks;
-    const after = tasks.slice(tasks.indexOf(quiz) + 1);
-    const quizRequired = active.required.has(quiz.id);
-    return after.find((task) => kindOfGoal(task.goal) === 'do' && (!quizRequired || active.required.has(task.id)));
+    return observerOf(active.level, active.required, quiz);
   }
 
-  /** The prediction whose result the completion of `task` lets the learner see, if any. */
-  private predictionRevealedBy(active: ActiveLevel, task: Task): Task | undefined {
-    const record = this.levelProgress[active.level.id];
-    const predicted = (quiz: Task) => predictionOf(quiz.goal) !== undefined && record?.tasks[quiz.id]?.how === 'done';
-    // A prediction nothing after it checks is explained as soon as it is made.
-    if (predicted(task)) return this.observerOf(active, task) ? undefined : task;
-    return active.level.tasks.find((quiz) => predicted(quiz) && this.observerOf(active, quiz) === task);
-  }
-
-  /** Where a prediction task is in predict → observe → explain. */
   private stageOf(active: ActiveLevel, task: Task): PredictionStage {
-    const record = this.levelProgress[active.level.id];
-    const done = record?.tasks[task.id];
-    if (!done) return 'ask';
-    if (active.reveal?.quiz === task.id) return done.correct === false && !active.reveal.reflection ? 'reflect' : 'explain';
-    if (done.how !== 'done') return 'explained';
-    const observer = this.observerOf(active, task);
-    return observer && !isCompleted(record, observer.id) ? 'wait' : 'explained';
+    return stageOf(active.level, active.required, this.levelProgress[active.level.id], active.reveal, task);
   }
 
-  /** The learner's last prediction for a task of the open level, from the log. */
   private predictionIn(levelId: string, taskId: string): Prediction | undefined {
-    const answered = this.log.events.findLast((event) => event.type === 'quiz.answered' && event.level === levelId && event.task === taskId);
-    if (answered?.type !== 'quiz.answered') return undefined;
-    if (answered.choice !== undefined) return { choice: answered.choice };
-    return answered.value === undefined ? undefined : { value: answered.value };
+    return lastPrediction(this.log.events, levelId, taskId);
   }
 
   private predictionView(active: ActiveLevel, task: Task): PredictionView | undefined {
