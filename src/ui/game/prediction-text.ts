@@ -8,9 +8,13 @@ import { localNumbers } from '../../i18n/number-format.ts';
 /** Numbers as the learner's language writes them, with as many decimals as they typed (up to 6). */
 const numbers = localNumbers({ maximumFractionDigits: 6 });
 
+/** Units written against the number, as the SI brochure (§5.4.3) writes angles: 41.8°, not 41.8 °. */
+const UNITS_WITHOUT_SPACE = new Set(['°', '′', '″']);
+
 function withUnit(goal: PredictionGoal, value: number, locale: Locale): string {
-  const unit = 'estimate' in goal && goal.estimate.unit ? ` ${plainLevelText(goal.estimate.unit, locale)}` : '';
-  return `${numbers.format(value)}${unit}`;
+  const unit = 'estimate' in goal && goal.estimate.unit ? plainLevelText(goal.estimate.unit, locale) : '';
+  const gap = unit === '' || UNITS_WITHOUT_SPACE.has(unit) ? '' : ' ';
+  return `${numbers.format(value)}${gap}${unit}`;
 }
 
 /**
