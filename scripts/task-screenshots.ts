@@ -87,8 +87,9 @@ for (const locale of (process.env.SCREENSHOT_LANGUAGES ?? 'en,nl').split(',')) {
       const current = page.locator('rt-task-card[status="current"]');
       if (await page.locator('rt-quest-panel section.celebration').count()) break;
       if (!(await current.count())) continue;
-      const task = (await current.getAttribute('data-task')) ?? 'task';
-      if (seen.has(task)) continue;
+      // The task can finish between the count and the read (a render ending): look again next round.
+      const task = await current.getAttribute('data-task', { timeout: 1000 }).catch(() => null);
+      if (task === null || seen.has(task)) continue;
       seen.add(task);
       await page.waitForTimeout(1000);
       await page.screenshot({ path: `build/screenshots/${locale}/${id}--${String(seen.size).padStart(2, '0')}-${task}.png` });
