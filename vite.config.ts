@@ -77,7 +77,11 @@ export default defineConfig({
         cleanupOutdatedCaches: true,
         // The first visit is the one that must work offline later: take control at once.
         clientsClaim: true,
-        skipWaiting: true,
+        // A new build waits until no tab of the old one is open: activating it at once
+        // deleted the old build's files under open tabs, whose teacher pages and panels
+        // could then never load (issue 38). Until then both builds' files are kept.
+        // docs/offline.md says what a teacher sees.
+        skipWaiting: false,
       },
     }),
   ],
