@@ -50,8 +50,10 @@ export default defineConfig({
     levelTextsPlugin(),
     contentSecurityPolicy(),
     VitePWA({
-      registerType: 'autoUpdate',
-      injectRegister: 'script-defer',
+      // src/app/offline-copy.ts registers the worker itself, to tell the Menu whether the
+      // files could be stored. 'prompt' leaves the update policy to the options below.
+      registerType: 'prompt',
+      injectRegister: false,
       includeAssets: ['icons/*.png'],
       manifest: {
         name: 'Ray Tracer Quest',
