@@ -50,8 +50,10 @@ export default defineConfig({
     levelTextsPlugin(),
     contentSecurityPolicy(),
     VitePWA({
-      registerType: 'autoUpdate',
-      injectRegister: 'script-defer',
+      // src/app/offline-copy.ts registers the worker itself, to tell the Menu whether the
+      // files could be stored. 'prompt' leaves the update policy to the options below.
+      registerType: 'prompt',
+      injectRegister: false,
       includeAssets: ['icons/*.png'],
       manifest: {
         name: 'Ray Tracer Quest',
@@ -77,7 +79,11 @@ export default defineConfig({
         cleanupOutdatedCaches: true,
         // The first visit is the one that must work offline later: take control at once.
         clientsClaim: true,
-        skipWaiting: true,
+        // A new build waits until no tab of the old one is open: activating it at once
+        // deleted the old build's files under open tabs, whose teacher pages and panels
+        // could then never load (issue 38). Until then both builds' files are kept.
+        // docs/offline.md says what a teacher sees.
+        skipWaiting: false,
       },
     }),
   ],

@@ -16,6 +16,10 @@ test('after one visit the app opens offline, with the teacher pages', async ({ p
   await expect.poll(() => page.evaluate(() => navigator.serviceWorker.controller !== null), { timeout: 30_000 }).toBe(true);
   const manifest = await page.evaluate(() => fetch(document.querySelector<HTMLLinkElement>('link[rel=manifest]')!.href).then((response) => response.json()));
   expect(manifest).toMatchObject({ name: 'Ray Tracer Quest', display: 'standalone', start_url: './' });
+  // The Menu says so.
+  await page.getByRole('button', { name: 'Menu' }).click();
+  await expect(page.getByTestId('offline-status')).toHaveText('This app works offline: this browser keeps a copy of it.');
+  await page.keyboard.press('Escape');
 
   await context.setOffline(true);
   await page.reload();
@@ -24,6 +28,24 @@ test('after one visit the app opens offline, with the teacher pages', async ({ p
   await page.goto('./#/dashboard');
   await expect(page.locator('rt-dashboard-page').getByRole('heading', { name: 'Class dashboard' })).toBeVisible();
   await context.setOffline(false);
+});
+
+test('with too little storage the Menu says the app is not stored for offline use', async ({ page, baseURL }) => {
+  // The browser gives the site 1 MB: the build's files (about 3 MB) do not fit, the service
+  // worker never installs (issue 38), and the learner is told rather than finding out offline.
+  const cdp = await page.context().newCDPSession(page);
+  const origin = new URL(baseURL!).origin;
+  await cdp.send('Storage.overrideQuotaForOrigin', { origin, quotaSize: 1024 * 1024 });
+  try {
+    await page.goto('./');
+    await expect(page.locator('rt-quest-panel').getByRole('heading', { name: 'Introduction' })).toBeVisible();
+    await page.getByRole('button', { name: 'Menu' }).click();
+    await expect(page.getByTestId('offline-status')).toHaveText(/^This app is not stored for offline use: the browser could not store its files, most likely for lack of storage space\./, { timeout: 30_000 });
+    expect(await page.evaluate(async () => (await navigator.serviceWorker.getRegistration())?.active ?? null)).toBeNull();
+  } finally {
+    // The override may outlive the page: the next tests get the usual quota.
+    await cdp.send('Storage.overrideQuotaForOrigin', { origin });
+  }
 });
 
 /** How many distinct colours a screenshot of `png` bytes has (a blank canvas has one or two). */

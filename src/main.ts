@@ -9,3 +9,10 @@ const { startLocale } = await import('./i18n/locale.ts');
 const [{ loadLevelTexts }, locale] = await Promise.all([import('./app/level-catalog-browser.ts'), startLocale()]);
 await loadLevelTexts(locale);
 await import('./ui/shell/rt-app.ts');
+
+// The offline copy (the service worker storing every file of the build) starts once the
+// page has loaded, so that it does not compete with the first screen; the Menu says how it went.
+const { offlineCopy } = await import('./app/offline-copy.ts');
+const storeOfflineCopy = () => void offlineCopy.start({ protocol: location.protocol, serviceWorker: navigator.serviceWorker });
+if (document.readyState === 'complete') storeOfflineCopy();
+else addEventListener('load', storeOfflineCopy, { once: true });

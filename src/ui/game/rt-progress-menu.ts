@@ -2,6 +2,7 @@ import { msg } from '@lit/localize';
 import { css, html, LitElement } from 'lit';
 import type { Locale } from '../../quest/localized-text.ts';
 import { fire, gameStyles } from './game-styles.ts';
+import '../controls/rt-offline-status.ts';
 
 /** The detail of `progress-command`. */
 export type ProgressCommand =
@@ -12,7 +13,8 @@ export type ProgressCommand =
 /**
  * @summary The header's menu: the language, the rays' colours (saved with the progress, for
  * every level), and the learner's progress:
- * export as a file, import a file, reset (after a confirmation dialog).
+ * export as a file, import a file, reset (after a confirmation dialog); last, whether the
+ * app works offline in this browser.
  *
  * @fires progress-command - CustomEvent<ProgressCommand>.
  */
@@ -91,6 +93,7 @@ export class RtProgressMenu extends LitElement {
           <input type="file" accept=".json,application/json" aria-label=${msg('Progress file to import')} @change=${this.imported} />
           <button class="danger" @click=${() => this.renderRoot.querySelector('dialog')?.showModal()} title=${msg('Start the game from the beginning')}>${msg('Reset progress…')}</button>
         </fieldset>
+        <rt-offline-status></rt-offline-status>
       </div>
       <dialog aria-labelledby="reset-title">
         <h3 id="reset-title">${msg('Reset all progress?')}</h3>

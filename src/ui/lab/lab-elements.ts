@@ -1,4 +1,5 @@
 import type { UiPanel } from '../../quest/lab-controls.ts';
+import { LazyModule } from '../../util/lazy-module.ts';
 /**
  * Registers every element the lab's template uses (imported for their side effect: each
  * module defines its custom element), but those of ON_DEMAND_PANELS.
@@ -12,6 +13,7 @@ import '../game/rt-progress-menu.ts';
 import '../game/rt-quest-panel.ts';
 import '../game/rt-score.ts';
 import '../controls/rt-theme-toggle.ts';
+import '../controls/rt-load-problem.ts';
 import '../controls/rt-toast.ts';
 import './panels/rt-file-panel.ts';
 import './panels/rt-light-panel.ts';
@@ -30,8 +32,9 @@ import './rt-screen-preview.ts';
 /**
  * Panels only some levels show, loaded when a level first shows them (the element upgrades
  * then): the BVH panel builds the tracer's scene on the page, with three.js and
- * three-mesh-bvh, which a student's first load can do without.
+ * three-mesh-bvh, which a student's first load can do without. A panel whose code cannot be
+ * loaded is replaced by a message with a Reload button, after a few tries.
  */
-export const ON_DEMAND_PANELS: Partial<Record<UiPanel, () => Promise<unknown>>> = {
-  bvh: () => import('./panels/rt-bvh-panel.ts'),
+export const ON_DEMAND_PANELS: Partial<Record<UiPanel, LazyModule<unknown>>> = {
+  bvh: new LazyModule(() => import('./panels/rt-bvh-panel.ts')),
 };

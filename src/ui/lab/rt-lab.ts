@@ -193,15 +193,11 @@ export class RtLab extends LitElement {
     this.requestUpdate();
   };
 
-  /** The on-demand panels the level shows, loaded the first time (the module cache makes later calls free). */
+  /** The on-demand panels the level shows, loaded the first time; one that fails is drawn as its message. */
   private loadOnDemandPanels(): void {
     const { panels } = levelPanels(this.level());
-    for (const [panel, load] of Object.entries(ON_DEMAND_PANELS)) {
-      if (!panels.has(panel as UiPanel) || !load) continue;
-      load().catch((error: unknown) => {
-        const reason = error instanceof Error ? error.message : String(error);
-        this.toast(msg(str`A panel of this level could not be loaded (${reason}). Check the connection and reload.`), 'error');
-      });
+    for (const [panel, code] of Object.entries(ON_DEMAND_PANELS)) {
+      if (panels.has(panel as UiPanel) && code?.state === 'idle') code.load().catch(() => this.requestUpdate());
     }
   }
 
@@ -286,7 +282,9 @@ export class RtLab extends LitElement {
           : panel('light', html`<rt-light-panel .shownControls=${controls('light')}></rt-light-panel>`),
       panel('tracer', html`<rt-tracer-panel .shownControls=${controls('tracer')}></rt-tracer-panel>`),
       panel('rays', html`<rt-ray-panel .shownControls=${controls('rays')}></rt-ray-panel>`),
-      panel('bvh', html`<rt-bvh-panel .shownControls=${controls('bvh')}></rt-bvh-panel>`),
+      panel('bvh', ON_DEMAND_PANELS.bvh?.state === 'failed'
+        ? html`<rt-load-problem .text=${msg('This panel could not be loaded.')} .reason=${ON_DEMAND_PANELS.bvh.problem}></rt-load-problem>`
+        : html`<rt-bvh-panel .shownControls=${controls('bvh')}></rt-bvh-panel>`),
       panel('file', html`<rt-file-panel></rt-file-panel>`),
     ].filter((part) => part !== nothing);
     return html`

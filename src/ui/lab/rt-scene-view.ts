@@ -5,11 +5,16 @@ import type { Store } from '../../lab-state/store.ts';
 import { GIZMO_MODES, gizmoModesFor, type GizmoMode } from '../../view/gizmo-modes.ts';
 import type { LabView, RayHoverDetail } from '../../view/lab-view.ts';
 import type { ViewCommand } from '../../view/view-commands.ts';
+import { LazyModule } from '../../util/lazy-module.ts';
+import '../controls/rt-load-problem.ts';
 import './rt-help-panel.ts';
 import { GuideHostController } from './guide-host.ts';
 import { consumeStore } from './store-context.ts';
 import { itemName, shownName } from './scene-names.ts';
 import './rt-view-toolbar.ts';
+
+/** The 3D view's code (three.js), loaded after the lab's first render, with a few tries. */
+const labViewCode = new LazyModule(() => import('../../view/lab-view.ts'));
 
 /**
  * @summary The lab's 3D view: a canvas filling the element's box, drawn by a LabView
@@ -98,7 +103,7 @@ export class RtSceneView extends LitElement {
   declare private state: LabState | undefined;
   declare private atCamera: boolean;
   declare private helpOpen: boolean;
-  /** Why the 3D view's code could not be loaded (offline on a first visit), or ''. */
+  /** Why the 3D view's code could not be loaded after its tries (offline on a first visit, a newer build), or ''. */
   declare private viewProblem: string;
   /** What the last key did (a step of the selection, the chosen pixel); cleared after NOTE_MS. */
   declare private note: string;
@@ -154,7 +159,7 @@ export class RtSceneView extends LitElement {
       this.view.dispose();
       this.view = null;
     }
-    if (!this.view && this.store && this.isConnected && this.loadingFor !== this.store) void this.createView(this.store);
+    if (!this.view && !this.viewProblem && this.store && this.isConnected && this.loadingFor !== this.store) void this.createView(this.store);
     if (this.view && (changed.has('gizmoControls') || changed.has('store'))) this.view.setGizmoModes(this.gizmoControls?.filter(isGizmoMode));
   }
 
@@ -162,7 +167,11 @@ export class RtSceneView extends LitElement {
     const state = this.state;
     return html`
       <canvas tabindex="0" data-guide="view.canvas" role="img" aria-label=${state ? describe(state) : msg('3D view')}></canvas>
-      ${this.view ? nothing : html`<p class="view-status" role="status">${this.viewProblem || msg('Loading the 3D view…')}</p>`}
+      ${this.view
+        ? nothing
+        : this.viewProblem
+          ? html`<div class="view-status"><rt-load-problem .text=${msg('The 3D view could not be loaded.')} .reason=${this.viewProblem}></rt-load-problem></div>`
+          : html`<p class="view-status" role="status">${msg('Loading the 3D view…')}</p>`}
       <rt-view-toolbar
         .gizmo=${state?.gizmo}
         .allowedModes=${state ? modesShown(state) : []}
@@ -191,10 +200,9 @@ export class RtSceneView extends LitElement {
     this.loadingFor = store;
     let LabView: typeof import('../../view/lab-view.ts').LabView;
     try {
-      ({ LabView } = await import('../../view/lab-view.ts'));
-    } catch (error) {
-      const reason = error instanceof Error ? error.message : String(error);
-      this.viewProblem = msg(str`The 3D view could not be loaded (${reason}). Check the connection and reload.`);
+      ({ LabView } = await labViewCode.load());
+    } catch {
+      this.viewProblem = labViewCode.problem;
       return;
     } finally {
       this.loadingFor = null;

@@ -6,6 +6,8 @@ import { isSceneFragment } from '../../app/scene-link.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import { decodeAssignment, isAssignmentFragment, type AssignmentLinkResult } from '../../classroom/assignment-link.ts';
 import { startLocale } from '../../i18n/locale.ts';
+import { LazyModule } from '../../util/lazy-module.ts';
+import '../controls/rt-load-problem.ts';
 import '../lab/rt-lab.ts';
 import './rt-link-notice.ts';
 import './rt-scene-link-lab.ts';
@@ -17,10 +19,11 @@ export const SURVEY_PREVIEW = '#/survey/';
 /**
  * The teacher's pages, loaded when first opened: a student never needs them, and the QR
  * code maker and the dashboard's charts would make every student's first load heavier.
+ * A page whose code cannot be loaded says so, with a Reload button, after a few tries.
  */
-const TEACHER_PAGES: Record<string, { tag: string; load: () => Promise<unknown> }> = {
-  '#/teacher': { tag: 'rt-teacher-page', load: () => import('../classroom/rt-teacher-page.ts') },
-  '#/dashboard': { tag: 'rt-dashboard-page', load: () => import('../classroom/dashboard/rt-dashboard-page.ts') },
+const TEACHER_PAGES: Record<string, { tag: string; code: LazyModule<unknown> }> = {
+  '#/teacher': { tag: 'rt-teacher-page', code: new LazyModule(() => import('../classroom/rt-teacher-page.ts')) },
+  '#/dashboard': { tag: 'rt-dashboard-page', code: new LazyModule(() => import('../classroom/dashboard/rt-dashboard-page.ts')) },
 };
 
 /** An assignment link as opened: the assignment, or why the learner plays freely instead. */
@@ -33,20 +36,17 @@ type Opened = { hash: string; assignment: Assignment | null; problem: string };
  * assignment in the lab, or, when the link is damaged, free play with a message.
  */
 export class RtApp extends LitElement {
-  static override properties = { route: { state: true }, opened: { state: true }, pageProblem: { state: true } };
+  static override properties = { route: { state: true }, opened: { state: true } };
 
   declare route: string;
   /** The assignment link last opened; null until it has been read (reading is asynchronous). */
   declare opened: Opened | null;
-  /** Why a teacher's page could not be loaded (offline before it was ever opened), or ''. */
-  declare pageProblem: string;
   private readonly onHashChange = () => (this.route = location.hash);
 
   constructor() {
     super();
     this.route = location.hash;
     this.opened = null;
-    this.pageProblem = '';
   }
 
   override connectedCallback(): void {
@@ -66,19 +66,10 @@ export class RtApp extends LitElement {
 
   override willUpdate(): void {
     if (isAssignmentFragment(this.route) && this.opened?.hash !== this.route) void this.open(this.route);
+    // Started once per page: a failed load stays failed (its message shows), it is not
+    // started again by the render that shows it.
     const page = TEACHER_PAGES[this.route];
-    if (page && !customElements.get(page.tag)) void this.loadPage(page);
-  }
-
-  private async loadPage(page: (typeof TEACHER_PAGES)[string]): Promise<void> {
-    this.pageProblem = '';
-    try {
-      await page.load();
-      this.requestUpdate();
-    } catch (error) {
-      const reason = error instanceof Error ? error.message : String(error);
-      this.pageProblem = msg(str`This page could not be loaded (${reason}). Check the connection and reload.`);
-    }
+    if (page?.code.state === 'idle') page.code.load().then(() => this.requestUpdate(), () => this.requestUpdate());
   }
 
   private async open(hash: string): Promise<void> {
@@ -94,7 +85,8 @@ export class RtApp extends LitElement {
     const page = TEACHER_PAGES[this.route];
     if (page) {
       if (customElements.get(page.tag)) return this.route === '#/teacher' ? html`<rt-teacher-page></rt-teacher-page>` : html`<rt-dashboard-page></rt-dashboard-page>`;
-      return this.pageProblem ? html`<rt-link-notice .text=${this.pageProblem}></rt-link-notice>` : html`<p class="loading" role="status">${msg('Loading…')}</p>`;
+      if (page.code.state === 'failed') return html`<rt-load-problem .text=${msg('This page could not be loaded.')} .reason=${page.code.problem}></rt-load-problem>`;
+      return html`<p class="loading" role="status">${msg('Loading…')}</p>`;
     }
     if (isSceneFragment(this.route)) return html`<rt-scene-link-lab .hash=${this.route}></rt-scene-link-lab>`;
     // A teacher's preview of a survey (linked from the teacher page): nothing is saved.
