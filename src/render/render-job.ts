@@ -39,9 +39,15 @@ export interface RenderProgress {
   /** The pass's number, 1 to `passes`. */
   pass: number;
   passes: number;
-  /** Samples of this pass traced and to trace: its work, as every sample costs about the same and tiles differ in size. */
+  /**
+   * Rays of this pass traced, and those plus the rays its other tiles are predicted to take
+   * (render-work.ts): a sample through glass under an area light costs a hundred times one
+   * through the sky, so counting samples or tiles would crawl and then jump.
+   */
   done: number;
   total: number;
+  /** Seconds the whole render has left at the rate it has traced so far; null in its first seconds. */
+  secondsLeft: number | null;
 }
 
 export interface RenderOptions {
@@ -72,6 +78,8 @@ export interface FinishedRender extends RenderImage {
   slowestTileMs: number;
   /** Longest scene build (BVHs etc.) of a worker during this job; 0 when already loaded. */
   sceneMs: number;
+  /** The workers' time on the tiles of every pass, summed over workers (ms): what a sample costs on this machine. */
+  workMs: number;
 }
 
 /**

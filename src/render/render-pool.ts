@@ -159,7 +159,8 @@ export class RenderPool {
     this.failuresInARow = 0; // each render gets its own tries
     const sceneId = this.useScene(scene, meshes);
     const passes = planPasses(scene, { width, height, workers: this.size, preview: options.preview ?? true });
-    const tiles = new TiledRender(width, height, passes, options);
+    const estimatedRaysPerSample = raysPerSample(scene) * primaryRaysPerSample(scene);
+    const tiles = new TiledRender(width, height, passes, options, estimatedRaysPerSample);
     const id = ++this.lastId;
     const done = new Promise<RenderResult>((resolve, reject) => {
       this.job = {
@@ -169,7 +170,7 @@ export class RenderPool {
         tiles,
         startedAt: performance.now(),
         sceneMs: 0,
-        raysPerSample: raysPerSample(scene) * primaryRaysPerSample(scene),
+        raysPerSample: estimatedRaysPerSample,
         msPerRay: ASSUMED_MS_PER_RAY,
         resolve,
         reject,
@@ -500,6 +501,7 @@ export class RenderPool {
       workers: this.size,
       slowestTileMs: job.tiles.slowestTileMs,
       sceneMs: job.sceneMs,
+      workMs: job.tiles.work.workMs,
     });
   }
 

@@ -54,7 +54,7 @@ export function formatWait(seconds: number): string {
  * picture (1 sample per pixel)", then "full quality"; "Rendering 42 %" for a render of one
  * pass. Each pass counts from 0 to 100 %, so even a render of days shows movement at once.
  */
-export function progressText({ phase, pass, passes, done, total }: RenderProgress): string {
+export function progressText({ phase, pass, passes, done, total }: Pick<RenderProgress, 'phase' | 'pass' | 'passes' | 'done' | 'total'>): string {
   const percent = formatPercent(done, total);
   if (passes === 1) return msg(str`Rendering ${percent}`);
   switch (phase) {
