@@ -58,6 +58,8 @@ export interface RenderOptions {
   seed?: number;
   /** Coarse passes and a sharp one-sample pass before full quality (default true); `rt render` turns them off. */
   preview?: boolean;
+  /** One pass of one sample per pixel and nothing else (default false): the time estimate's probe (render-probe.ts). */
+  oneSample?: boolean;
   /**
    * After each pass before the final one: a preview pass's picture at its own resolution,
    * or (after the sharp pass) the job's live `image`, filled in whole.

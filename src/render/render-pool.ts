@@ -158,7 +158,7 @@ export class RenderPool {
     this.cancelJob();
     this.failuresInARow = 0; // each render gets its own tries
     const sceneId = this.useScene(scene, meshes);
-    const passes = planPasses(scene, { width, height, workers: this.size, preview: options.preview ?? true });
+    const passes = planPasses(scene, { width, height, workers: this.size, preview: options.preview ?? true, oneSample: options.oneSample });
     const estimatedRaysPerSample = raysPerSample(scene) * primaryRaysPerSample(scene);
     const tiles = new TiledRender(width, height, passes, options, estimatedRaysPerSample);
     const id = ++this.lastId;

@@ -1,0 +1,65 @@
+/**
+ * Measures what a sample of a scene costs on this machine, for the time estimate
+ * (measured-estimate.ts): the workers trace a small image of the scene at one sample per
+ * pixel, about PROBE_SECONDS of work by the model's guess, and report their rays and time.
+ */
+import type { MeshLibrary } from '../scene/mesh-data.ts';
+import type { Scene } from '../scene/scene.ts';
+import { measuredEstimate, type SampleCost } from './measured-estimate.ts';
+import { estimateRender, HEAVY_RENDER_SECONDS, modelEstimate, primaryRaysPerSample, RAYS_PER_SECOND_PER_WORKER, raysPerSample, type EstimateRender } from './render-estimate.ts';
+import type { RenderPool } from './render-pool.ts';
+import type { RenderSpeed } from './render-speed.ts';
+import { raysOf } from './render-work.ts';
+
+/**
+ * The probe's wall time by the model (with all workers): a few thousand samples of a scene
+ * of 10 to 1000 rays per sample, a wait the learner hardly notices before a render of minutes.
+ */
+export const PROBE_SECONDS = 0.3;
+
+/**
+ * Renders the model puts under this are not probed: they start at once. The model's rays
+ * are 0.7 to 3 times the real ones and its rate is on the slow side, so one it puts at
+ * 6 s would have to be ten times slower to reach HEAVY_RENDER_SECONDS.
+ */
+export const PROBE_ABOVE_SECONDS = HEAVY_RENDER_SECONDS / 10;
+
+/** The probe's image for a `width × height` render on `workers` workers: the same aspect ratio, PROBE_SECONDS of samples or the whole image, at least one pixel. */
+export function probeSize(scene: Scene, width: number, height: number, workers: number): [number, number] {
+  const samples = (PROBE_SECONDS * RAYS_PER_SECOND_PER_WORKER * Math.max(1, workers)) / (raysPerSample(scene) * primaryRaysPerSample(scene));
+  const scale = Math.min(1, Math.sqrt(samples / (width * height)));
+  return [Math.max(1, Math.round(width * scale)), Math.max(1, Math.round(height * scale))];
+}
+
+/** Traces the probe; null when it was cancelled (another render started on the pool). */
+export async function probeSampleCost(pool: RenderPool, scene: Scene, meshes: MeshLibrary, width: number, height: number): Promise<SampleCost | null> {
+  const [probeWidth, probeHeight] = probeSize(scene, width, height, pool.size);
+  const result = await pool.render(scene, meshes, { width: probeWidth, height: probeHeight, preview: false, oneSample: true }).done;
+  if (result.cancelled) return null;
+  return { samples: probeWidth * probeHeight, rays: raysOf(result.stats), workMs: result.workMs };
+}
+
+export interface EstimateHereOptions {
+  /** Previews before the final pass (the render window) or not (`rt render`). */
+  preview: boolean;
+  /** The session's wall time per worker time, from the renders it finished. */
+  speed: RenderSpeed;
+}
+
+/**
+ * Estimates of a `width × height` render of `scene` and its lighter variants on this
+ * machine: the model's when it puts the render under PROBE_ABOVE_SECONDS (no wait), else
+ * measured by a probe. Null when the probe was cancelled.
+ */
+export async function estimateHere(
+  pool: RenderPool,
+  scene: Scene,
+  meshes: MeshLibrary,
+  width: number,
+  height: number,
+  { preview, speed }: EstimateHereOptions,
+): Promise<EstimateRender | null> {
+  if (estimateRender(scene, width, height, pool.size).seconds < PROBE_ABOVE_SECONDS) return modelEstimate(pool.size);
+  const cost = await probeSampleCost(pool, scene, meshes, width, height);
+  return cost && measuredEstimate(cost, scene, { workers: pool.size, preview, overhead: speed.overhead });
+}

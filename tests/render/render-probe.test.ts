@@ -1,0 +1,60 @@
+import { afterAll, afterEach, describe, expect, it, vi } from 'vitest';
+import { createNodeRenderPool } from '../../src/cli/node-worker-port.ts';
+import { estimateRender, primaryRaysPerSample, RAYS_PER_SECOND_PER_WORKER, raysPerSample } from '../../src/render/render-estimate.ts';
+import { estimateHere, PROBE_ABOVE_SECONDS, PROBE_SECONDS, probeSize } from '../../src/render/render-probe.ts';
+import { RenderSpeed } from '../../src/render/render-speed.ts';
+import { defaultScene } from '../../src/scene/scene-defaults.ts';
+import type { Scene } from '../../src/scene/scene.ts';
+import { sceneFrom } from '../support/test-scene.ts';
+
+const NO_MESHES = new Map();
+const pool = createNodeRenderPool(2);
+afterAll(() => pool.dispose());
+afterEach(() => vi.restoreAllMocks());
+
+const withSettings = (settings: Partial<Scene['settings']>): Scene => sceneFrom({ ...defaultScene(), settings: { ...defaultScene().settings, ...settings } });
+
+describe('the probe before a render that may be long', () => {
+  it('is a small image of the same aspect, about PROBE_SECONDS of samples by the model, never larger than the image', () => {
+    const scene = withSettings({ supersampling: 8 });
+    const [width, height] = probeSize(scene, 4096, 3072, 2);
+    expect(width / height).toBeCloseTo(4 / 3, 1);
+    const seconds = (width * height * raysPerSample(scene) * primaryRaysPerSample(scene)) / (2 * RAYS_PER_SECOND_PER_WORKER);
+    expect(seconds).toBeGreaterThan(0.9 * PROBE_SECONDS);
+    expect(seconds).toBeLessThan(1.1 * PROBE_SECONDS);
+    expect(probeSize(defaultScene(), 40, 30, 2)).toEqual([40, 30]);
+    expect(probeSize(withSettings({ maxDepth: 10 }), 1, 1, 1)).toEqual([1, 1]);
+  });
+
+  it('is left out for a render the model puts well under a minute: it starts at once', async () => {
+    const render = vi.spyOn(pool, 'render');
+    const scene = defaultScene();
+    const [width, height] = scene.settings.imageSize;
+    expect(estimateRender(scene, width, height, pool.size).seconds).toBeLessThan(PROBE_ABOVE_SECONDS);
+    const estimate = await estimateHere(pool, scene, NO_MESHES, width, height, { preview: true, speed: new RenderSpeed() });
+    expect(estimate?.(scene, width, height).heavy).toBe(false);
+    expect(render).not.toHaveBeenCalled();
+  });
+
+  it('traces one sample per pixel of the small image for a long render, and calls it heavy', async () => {
+    const render = vi.spyOn(pool, 'render');
+    const scene = withSettings({ supersampling: 8, imageSize: [4096, 4096] });
+    const estimate = await estimateHere(pool, scene, NO_MESHES, 4096, 4096, { preview: true, speed: new RenderSpeed() });
+    const [width, height] = probeSize(scene, 4096, 4096, pool.size);
+    expect(render).toHaveBeenCalledOnce();
+    expect(render).toHaveBeenCalledWith(scene, NO_MESHES, { width, height, preview: false, oneSample: true });
+    const full = estimate!(scene, 4096, 4096);
+    expect(full.heavy).toBe(true);
+    // Each of the 4096² × 64 samples of the final pass costs a primary ray at least.
+    expect(full.rays).toBeGreaterThan(4096 * 4096 * 64);
+  });
+
+  it('says nothing when another render overtakes it', async () => {
+    const scene = withSettings({ supersampling: 8, imageSize: [4096, 4096] });
+    const estimating = estimateHere(pool, scene, NO_MESHES, 4096, 4096, { preview: true, speed: new RenderSpeed() });
+    await Promise.resolve();
+    const next = pool.render(defaultScene(), NO_MESHES, { width: 8, height: 8 });
+    expect(await estimating).toBeNull();
+    expect((await next.done).cancelled).toBe(false);
+  });
+});
