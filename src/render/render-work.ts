@@ -9,14 +9,16 @@
  * prediction p ≤ r). It reaches 1 with the pass's last tile and not before.
  *
  * The time left is the rays left in this pass and the passes after it, at the rate the
- * render has traced rays so far on this machine (wall clock, all workers together).
+ * render has traced rays on this machine since its first tile came back (wall clock, all
+ * workers together): before that the workers may still be building the scene, which says
+ * nothing of their pace (counting it, a render once said "about 4 h left" for 45 s).
  */
 import type { RayStats } from '../tracer/ray-tree.ts';
 import type { Tile } from '../tracer/tile.ts';
 import { RayCostMap, type RayCostSnapshot } from './ray-cost-map.ts';
 import type { RenderPass } from './render-passes.ts';
 
-/** Before this much of the render has passed, its rate says too little (the workers' start, the first tiles' JIT) to give a time. */
+/** Until this long after the first tile, the rate says too little (a few tiles, their JIT) to give a time. */
 const SECONDS_BEFORE_TIME_LEFT = 2;
 
 /** The smallest rest of a pass before its last tile, as a share of its done rays. */
@@ -46,7 +48,8 @@ export class RenderWork {
   rays = 0;
   workMs = 0;
   private readonly map: RayCostMap;
-  private readonly startedAt = performance.now();
+  /** When the first tile came back, and the rays traced by then: the rate counts from there. */
+  private clock: { at: number; rays: number } | null = null;
   private snapshot: RayCostSnapshot;
   private pass: RenderPass | undefined;
   private passDone = 0;
@@ -91,8 +94,11 @@ export class RenderWork {
   }
 
   private secondsLeft(): number | null {
-    const seconds = (performance.now() - this.startedAt) / 1000;
-    if (seconds < SECONDS_BEFORE_TIME_LEFT || this.rays === 0) return null;
-    return ((this.passRemaining + this.laterRays) * seconds) / this.rays;
+    const now = performance.now();
+    this.clock ??= { at: now, rays: this.rays };
+    const seconds = (now - this.clock.at) / 1000;
+    const rays = this.rays - this.clock.rays;
+    if (seconds < SECONDS_BEFORE_TIME_LEFT || rays <= 0) return null;
+    return ((this.passRemaining + this.laterRays) * seconds) / rays;
   }
 }

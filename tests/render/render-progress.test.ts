@@ -101,19 +101,22 @@ describe('the progress of a render, in rays', () => {
     }
   });
 
-  it('gives the time left from the rays left at the rate so far, after the first seconds', () => {
+  it('gives the time left from the rays left at the rate since the first tile, after two seconds of it', () => {
     let now = 0;
     vi.spyOn(performance, 'now').mockImplementation(() => now);
     const [pass] = planPasses(defaultScene(), { width: 100, height: 100, workers: 1, preview: false });
     const work = new RenderWork(100, 100, [pass], 4);
-    now = 1000;
-    const early = work.tileBack({ x: 0, y: 0, width: 10, height: 10 }, 100, { ...emptyRayStats(), primary: 400 }, 1000, false);
-    expect(early.secondsLeft).toBeNull();
-    // A fresh render: half its pixels (4 rays a sample, as assumed) in 10 s, so about 10 s left.
-    const second = new RenderWork(100, 100, [pass], 4);
-    now = 11_000;
-    const half = second.tileBack({ x: 0, y: 0, width: 100, height: 50 }, 5000, { ...emptyRayStats(), primary: 20_000 }, 10_000, false);
-    expect(half.done / half.total).toBeCloseTo(0.5);
-    expect(half.secondsLeft).toBeCloseTo(10);
+    const tenth = (row: number) => ({ x: 0, y: row * 10, width: 100, height: 10 });
+    const rays = { ...emptyRayStats(), primary: 4000 }; // 4 rays a sample, as assumed
+    // The workers built the scene for 30 s: that says nothing of how fast they trace.
+    now = 30_000;
+    expect(work.tileBack(tenth(0), 1000, rays, 500, false).secondsLeft).toBeNull();
+    now = 31_000;
+    expect(work.tileBack(tenth(1), 1000, rays, 1000, false).secondsLeft).toBeNull();
+    // A tenth of the image a second since the first tile: 7 tenths left, 7 s.
+    now = 32_000;
+    const third = work.tileBack(tenth(2), 1000, rays, 1000, false);
+    expect(third.done / third.total).toBeCloseTo(0.3);
+    expect(third.secondsLeft).toBeCloseTo(7);
   });
 });
