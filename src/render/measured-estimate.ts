@@ -11,7 +11,8 @@
  *
  * So before a render that may be long, the workers trace a small image of the same scene at
  * one sample per pixel (render-probe.ts), spread over the whole picture like the render's
- * coarse preview: a few thousand samples in about 0.3 s. Every sample of the render costs,
+ * coarse preview: a few thousand samples, traced again until the workers' pace is steady,
+ * in a fraction of a second on a quiet machine. Every sample of the render costs,
  * on average, what a probe sample cost: each is a primary ray (n² lens rays, k shutter
  * times) with all its shadow, reflected and refracted rays, through the same scene on the
  * same workers; supersampling only adds samples. The estimate is then

@@ -2,6 +2,13 @@
  * Measures what a sample of a scene costs on this machine, for the time estimate
  * (measured-estimate.ts): the workers trace a small image of the scene at one sample per
  * pixel, about PROBE_SECONDS of work by the model's guess, and report their rays and time.
+ *
+ * They trace it again until two rounds take about as long (STEADY), at most
+ * MAX_PROBE_ROUNDS times, and the last round counts. The first round can be many times
+ * slower than the render will be: workers that have not traced this kind of scene yet run
+ * its code unoptimized until V8 has compiled it, on a busy machine for seconds (in Chromium
+ * on the project's loaded 2-core machine, 0.19 to 0.26 ms a sample in the first round of a
+ * lens scene, 0.008 to 0.018 from the fourth).
  */
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import type { Scene } from '../scene/scene.ts';
@@ -12,10 +19,14 @@ import type { RenderSpeed } from './render-speed.ts';
 import { raysOf } from './render-work.ts';
 
 /**
- * The probe's wall time by the model (with all workers): a few thousand samples of a scene
- * of 10 to 1000 rays per sample, a wait the learner hardly notices before a render of minutes.
+ * A probe round's wall time by the model (with all workers): a few thousand samples of a
+ * scene of 10 to 1000 rays per sample, a wait the learner hardly notices before a render of minutes.
  */
-export const PROBE_SECONDS = 0.3;
+export const PROBE_SECONDS = 0.15;
+
+/** Rounds whose times differ by less than this factor show the workers at their pace. */
+const STEADY = 1.25;
+const MAX_PROBE_ROUNDS = 5;
 
 /**
  * Renders the model puts under this are not probed: they start at once. The model's rays
@@ -31,12 +42,23 @@ export function probeSize(scene: Scene, width: number, height: number, workers: 
   return [Math.max(1, Math.round(width * scale)), Math.max(1, Math.round(height * scale))];
 }
 
-/** Traces the probe; null when it was cancelled (another render started on the pool). */
-export async function probeSampleCost(pool: RenderPool, scene: Scene, meshes: MeshLibrary, width: number, height: number): Promise<SampleCost | null> {
+/**
+ * Traces the probe until its rounds are steady; null when it was cancelled (another render
+ * started on the pool) or `signal` aborted it, which stops it before its next round.
+ */
+export async function probeSampleCost(pool: RenderPool, scene: Scene, meshes: MeshLibrary, width: number, height: number, signal?: AbortSignal): Promise<SampleCost | null> {
   const [probeWidth, probeHeight] = probeSize(scene, width, height, pool.size);
-  const result = await pool.render(scene, meshes, { width: probeWidth, height: probeHeight, preview: false, oneSample: true }).done;
-  if (result.cancelled) return null;
-  return { samples: probeWidth * probeHeight, rays: raysOf(result.stats), workMs: result.workMs };
+  let last: SampleCost | null = null;
+  for (let round = 0; round < MAX_PROBE_ROUNDS; round++) {
+    if (signal?.aborted) return null;
+    const result = await pool.render(scene, meshes, { width: probeWidth, height: probeHeight, preview: false, oneSample: true }).done;
+    if (result.cancelled) return null;
+    const cost = { samples: probeWidth * probeHeight, rays: raysOf(result.stats), workMs: result.workMs };
+    const steady = last !== null && Math.max(cost.workMs / last.workMs, last.workMs / cost.workMs) < STEADY;
+    last = cost;
+    if (steady) break;
+  }
+  return last;
 }
 
 export interface EstimateHereOptions {
@@ -44,6 +66,8 @@ export interface EstimateHereOptions {
   preview: boolean;
   /** The session's wall time per worker time, from the renders it finished. */
   speed: RenderSpeed;
+  /** Aborted when the estimate is no longer wanted (the learner rendered anyway): the probe stops. */
+  signal?: AbortSignal;
 }
 
 /**
@@ -57,9 +81,9 @@ export async function estimateHere(
   meshes: MeshLibrary,
   width: number,
   height: number,
-  { preview, speed }: EstimateHereOptions,
+  { preview, speed, signal }: EstimateHereOptions,
 ): Promise<EstimateRender | null> {
   if (estimateRender(scene, width, height, pool.size).seconds < PROBE_ABOVE_SECONDS) return modelEstimate(pool.size);
-  const cost = await probeSampleCost(pool, scene, meshes, width, height);
+  const cost = await probeSampleCost(pool, scene, meshes, width, height, signal);
   return cost && measuredEstimate(cost, scene, { workers: pool.size, preview, overhead: speed.overhead });
 }

@@ -1,7 +1,10 @@
 import { afterAll, afterEach, describe, expect, it, vi } from 'vitest';
 import { createNodeRenderPool } from '../../src/cli/node-worker-port.ts';
 import { estimateRender, primaryRaysPerSample, RAYS_PER_SECOND_PER_WORKER, raysPerSample } from '../../src/render/render-estimate.ts';
-import { estimateHere, PROBE_ABOVE_SECONDS, PROBE_SECONDS, probeSize } from '../../src/render/render-probe.ts';
+import { estimateHere, PROBE_ABOVE_SECONDS, PROBE_SECONDS, probeSampleCost, probeSize } from '../../src/render/render-probe.ts';
+import type { RenderOptions } from '../../src/render/render-job.ts';
+import type { RenderPool } from '../../src/render/render-pool.ts';
+import { emptyRayStats } from '../../src/tracer/ray-tree.ts';
 import { RenderSpeed } from '../../src/render/render-speed.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 import type { Scene } from '../../src/scene/scene.ts';
@@ -41,12 +44,50 @@ describe('the probe before a render that may be long', () => {
     const scene = withSettings({ supersampling: 8, imageSize: [4096, 4096] });
     const estimate = await estimateHere(pool, scene, NO_MESHES, 4096, 4096, { preview: true, speed: new RenderSpeed() });
     const [width, height] = probeSize(scene, 4096, 4096, pool.size);
-    expect(render).toHaveBeenCalledOnce();
-    expect(render).toHaveBeenCalledWith(scene, NO_MESHES, { width, height, preview: false, oneSample: true });
+    // At least two rounds, to see the workers' pace steady.
+    expect(render.mock.calls.length).toBeGreaterThanOrEqual(2);
+    expect(render.mock.calls.length).toBeLessThanOrEqual(5);
+    for (const call of render.mock.calls) expect(call).toEqual([scene, NO_MESHES, { width, height, preview: false, oneSample: true }]);
     const full = estimate!(scene, 4096, 4096);
     expect(full.heavy).toBe(true);
     // Each of the 4096² × 64 samples of the final pass costs a primary ray at least.
     expect(full.rays).toBeGreaterThan(4096 * 4096 * 64);
+  });
+
+  /** A pool whose renders take `workMs` in turn, 10 rays a sample. */
+  function poolTaking(...workMs: number[]): { pool: RenderPool; rounds: () => number } {
+    let round = 0;
+    const stub = {
+      size: 2,
+      render: (_scene: Scene, _meshes: unknown, { width = 1, height = 1 }: RenderOptions) => ({
+        done: Promise.resolve({ cancelled: false, stats: { ...emptyRayStats(), primary: 10 * width * height }, workMs: workMs[round++] }),
+      }),
+    };
+    return { pool: stub as unknown as RenderPool, rounds: () => round };
+  }
+
+  it('traces again until two rounds take about as long, and counts the last: the first runs code V8 has not optimized yet', async () => {
+    const scene = withSettings({ supersampling: 8 });
+    const cold = poolTaking(900, 300, 110, 100, 100);
+    const cost = await probeSampleCost(cold.pool, scene, NO_MESHES, 4096, 4096);
+    expect(cold.rounds()).toBe(4);
+    expect(cost?.workMs).toBe(100);
+    expect(cost!.rays / cost!.samples).toBe(10);
+    const warm = poolTaking(100, 104, 50);
+    expect((await probeSampleCost(warm.pool, scene, NO_MESHES, 4096, 4096))?.workMs).toBe(104);
+    expect(warm.rounds()).toBe(2);
+    const restless = poolTaking(100, 200, 100, 200, 100, 200);
+    expect((await probeSampleCost(restless.pool, scene, NO_MESHES, 4096, 4096))?.workMs).toBe(100);
+    expect(restless.rounds()).toBe(5);
+  });
+
+  it('stops before its next round when it is no longer wanted', async () => {
+    const controller = new AbortController();
+    const stub = poolTaking(900, 300, 100, 100);
+    const probing = probeSampleCost(stub.pool, withSettings({ supersampling: 8 }), NO_MESHES, 4096, 4096, controller.signal);
+    controller.abort();
+    expect(await probing).toBeNull();
+    expect(stub.rounds()).toBe(1);
   });
 
   it('says nothing when another render overtakes it', async () => {
