@@ -12,37 +12,42 @@
  * So before a render that may be long, the workers trace a small image of the same scene at
  * one sample per pixel (render-probe.ts), spread over the whole picture like the render's
  * coarse preview: a few thousand samples, traced again until the workers' pace is steady,
- * in a fraction of a second on a quiet machine. Every sample of the render costs,
- * on average, what a probe sample cost: each is a primary ray (n² lens rays, k shutter
- * times) with all its shadow, reflected and refracted rays, through the same scene on the
- * same workers; supersampling only adds samples. The estimate is then
+ * in a fraction of a second on a quiet machine. Every sample of the render costs, on
+ * average, what a probe sample cost: each is a primary ray (n² lens rays, k shutter times)
+ * with all its shadow, reflected and refracted rays, through the same scene on the same
+ * workers; supersampling only adds samples. The probe's wall time, not its workers' time,
+ * prices a sample: it is what the render's samples will take with all the workers, on a
+ * machine that has the cores to run them side by side or not (on the project's busy 2-core
+ * machine the probe's workers' time added up to its wall time: one worker's worth of cores).
+ * The estimate is then
  *
- *     seconds = (samples of all the render's passes) × (workers' ms per probe sample) / workers × overhead
+ *     seconds = (samples of all the render's passes) × (probe's wall ms per sample) × correction
  *
- * where the passes are the previews, the sharp one-sample pass and the final pass at s² samples
- * per pixel (render-passes.ts), and the overhead is the wall time a render took per worker
- * millisecond of its tiles in this session (render-speed.ts; messages, the last tiles shared
- * unevenly, a busy page). A lighter render of the same scene is priced from the same probe:
- * fewer samples or pixels cost proportionally less; a shallower ray tree scales the cost per
- * sample by the model's ratio of rays per sample, the one part that is not measured.
+ * where the passes are the previews, the sharp one-sample pass and the final pass at s²
+ * samples per pixel (render-passes.ts), and the correction is the real time per estimated
+ * time of this session's long renders (estimate-calibration.ts). A lighter render of the
+ * same scene is priced from the same probe: fewer samples or pixels cost proportionally
+ * less; a shallower ray tree scales the cost per sample by the model's ratio of rays per
+ * sample, the one part that is not measured.
  */
 import type { Scene } from '../scene/scene.ts';
 import { HEAVY_RENDER_SECONDS, primaryRaysPerSample, raysPerSample, type EstimateRender } from './render-estimate.ts';
 import { planPasses, tracedSamples } from './render-passes.ts';
 
-/** What the probe traced: its samples, their rays, and the workers' time on them (ms, summed over workers). */
+/** What the probe traced: its samples, their rays, and its wall time (ms, with all the workers). */
 export interface SampleCost {
   samples: number;
   rays: number;
-  workMs: number;
+  ms: number;
 }
 
 export interface MeasuredEstimateOptions {
+  /** The pool's workers, who traced the probe and will trace the render (the first preview's block depends on them). */
   workers: number;
   /** Whether the render makes previews first (the render window) or only its final pass (`rt render`). */
   preview: boolean;
-  /** Wall ms per worker ms of tile work (render-speed.ts); 1 when nothing is known. */
-  overhead: number;
+  /** Real time per estimated time of this session's renders (estimate-calibration.ts); 1 when nothing is known. */
+  correction: number;
 }
 
 /** The model's rays of one sample: what a variant of the probed scene costs relative to it. */
@@ -51,8 +56,8 @@ function modelRaysPerSample(scene: Scene): number {
 }
 
 /** Estimates of renders of `probed` and its lighter variants, priced by `cost`, measured on `probed`. */
-export function measuredEstimate(cost: SampleCost, probed: Scene, { workers, preview, overhead }: MeasuredEstimateOptions): EstimateRender {
-  const msPerSample = cost.workMs / Math.max(1, cost.samples);
+export function measuredEstimate(cost: SampleCost, probed: Scene, { workers, preview, correction }: MeasuredEstimateOptions): EstimateRender {
+  const msPerSample = cost.ms / Math.max(1, cost.samples);
   const raysPerProbeSample = cost.rays / Math.max(1, cost.samples);
   return (scene, width, height) => {
     // 1 for other sizes and supersampling; the model's ratio for another depth.
@@ -62,7 +67,7 @@ export function measuredEstimate(cost: SampleCost, probed: Scene, { workers, pre
     const samples = passes.reduce((sum, pass) => sum + tracedSamples(image, pass), 0);
     const finalSamples = tracedSamples(image, passes[passes.length - 1]);
     const rays = finalSamples * raysPerProbeSample * relative;
-    const seconds = (samples * msPerSample * relative * overhead) / Math.max(1, workers) / 1000;
+    const seconds = (samples * msPerSample * relative * correction) / 1000;
     return { rays, raysPerPixel: rays / (width * height), seconds, heavy: seconds > HEAVY_RENDER_SECONDS };
   };
 }

@@ -80,8 +80,6 @@ export interface FinishedRender extends RenderImage {
   slowestTileMs: number;
   /** Longest scene build (BVHs etc.) of a worker during this job; 0 when already loaded. */
   sceneMs: number;
-  /** The workers' time on the tiles of every pass, summed over workers (ms): what a sample costs on this machine. */
-  workMs: number;
 }
 
 /**

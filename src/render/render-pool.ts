@@ -501,7 +501,6 @@ export class RenderPool {
       workers: this.size,
       slowestTileMs: job.tiles.slowestTileMs,
       sceneMs: job.sceneMs,
-      workMs: job.tiles.work.workMs,
     });
   }
 

@@ -15,7 +15,7 @@ import type { Scene } from '../scene/scene.ts';
 import { measuredEstimate, type SampleCost } from './measured-estimate.ts';
 import { estimateRender, HEAVY_RENDER_SECONDS, modelEstimate, primaryRaysPerSample, RAYS_PER_SECOND_PER_WORKER, raysPerSample, type EstimateRender } from './render-estimate.ts';
 import type { RenderPool } from './render-pool.ts';
-import type { RenderSpeed } from './render-speed.ts';
+import type { EstimateCalibration } from './estimate-calibration.ts';
 import { raysOf } from './render-work.ts';
 
 /**
@@ -53,8 +53,9 @@ export async function probeSampleCost(pool: RenderPool, scene: Scene, meshes: Me
     if (signal?.aborted) return null;
     const result = await pool.render(scene, meshes, { width: probeWidth, height: probeHeight, preview: false, oneSample: true }).done;
     if (result.cancelled) return null;
-    const cost = { samples: probeWidth * probeHeight, rays: raysOf(result.stats), workMs: result.workMs };
-    const steady = last !== null && Math.max(cost.workMs / last.workMs, last.workMs / cost.workMs) < STEADY;
+    // The wall time from the first tile's request, without a scene build the workers did first.
+    const cost = { samples: probeWidth * probeHeight, rays: raysOf(result.stats), ms: Math.max(1, result.ms - result.sceneMs) };
+    const steady = last !== null && Math.max(cost.ms / last.ms, last.ms / cost.ms) < STEADY;
     last = cost;
     if (steady) break;
   }
@@ -64,10 +65,17 @@ export async function probeSampleCost(pool: RenderPool, scene: Scene, meshes: Me
 export interface EstimateHereOptions {
   /** Previews before the final pass (the render window) or not (`rt render`). */
   preview: boolean;
-  /** The session's wall time per worker time, from the renders it finished. */
-  speed: RenderSpeed;
+  /** How this session's estimates compared with its renders' real times. */
+  calibration: EstimateCalibration;
   /** Aborted when the estimate is no longer wanted (the learner rendered anyway): the probe stops. */
   signal?: AbortSignal;
+}
+
+/** Estimates of a render and its lighter variants, and whether a probe measured them. */
+export interface EstimatesHere {
+  estimate: EstimateRender;
+  /** True when priced by a probe on this machine; false for the model's (a render it puts under PROBE_ABOVE_SECONDS). */
+  measured: boolean;
 }
 
 /**
@@ -81,9 +89,9 @@ export async function estimateHere(
   meshes: MeshLibrary,
   width: number,
   height: number,
-  { preview, speed, signal }: EstimateHereOptions,
-): Promise<EstimateRender | null> {
-  if (estimateRender(scene, width, height, pool.size).seconds < PROBE_ABOVE_SECONDS) return modelEstimate(pool.size);
+  { preview, calibration, signal }: EstimateHereOptions,
+): Promise<EstimatesHere | null> {
+  if (estimateRender(scene, width, height, pool.size).seconds < PROBE_ABOVE_SECONDS) return { estimate: modelEstimate(pool.size), measured: false };
   const cost = await probeSampleCost(pool, scene, meshes, width, height, signal);
-  return cost && measuredEstimate(cost, scene, { workers: pool.size, preview, overhead: speed.overhead });
+  return cost && { estimate: measuredEstimate(cost, scene, { workers: pool.size, preview, correction: calibration.correction }), measured: true };
 }

@@ -44,9 +44,8 @@ export interface WorkDone {
 }
 
 export class RenderWork {
-  /** Rays traced in every pass, and the workers' milliseconds on them (summed over workers). */
+  /** Rays traced in every pass. */
   rays = 0;
-  workMs = 0;
   private readonly map: RayCostMap;
   /** When the first tile came back, and the rays traced by then: the rate counts from there. */
   private clock: { at: number; rays: number } | null = null;
@@ -78,10 +77,9 @@ export class RenderWork {
   }
 
   /** A tile of the current pass came back with `samples` traced; `last`: the pass's last tile. */
-  tileBack(tile: Tile, samples: number, stats: RayStats, ms: number, last: boolean): WorkDone {
+  tileBack(tile: Tile, samples: number, stats: RayStats, last: boolean): WorkDone {
     const rays = raysOf(stats);
     this.rays += rays;
-    this.workMs += ms;
     this.map.record(tile, samples, rays);
     this.passDone += rays;
     const predicted = this.pass ? this.snapshot.predict(tile, samplesPerPixel(this.pass)) : 0;

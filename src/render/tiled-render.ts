@@ -43,8 +43,8 @@ export class TiledRender {
   /** Rays of the full-quality pass only. */
   readonly stats = emptyRayStats();
   slowestTileMs = 0;
-  /** Rays traced and the workers' time, in all passes; the progress in rays (render-work.ts). */
-  readonly work: RenderWork;
+  /** The progress in rays (render-work.ts). */
+  private readonly work: RenderWork;
 
   private readonly passes: PlannedPass[] = [];
   private pass = 0;
@@ -142,7 +142,7 @@ export class TiledRender {
     if (pass.kind === 'final') addRayStats(this.stats, stats);
     const first = ++this.finishedInPass === 1;
     const passComplete = this.finishedInPass === pass.count;
-    const work = this.work.tileBack(tile, tracedSamples(tile, pass), stats, ms, passComplete);
+    const work = this.work.tileBack(tile, tracedSamples(tile, pass), stats, passComplete);
     const progress: RenderProgress = { phase: pass.kind, pass: this.pass + 1, passes: this.passes.length, ...work };
     if (passComplete) {
       this.pass++;

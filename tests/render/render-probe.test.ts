@@ -5,7 +5,7 @@ import { estimateHere, PROBE_ABOVE_SECONDS, PROBE_SECONDS, probeSampleCost, prob
 import type { RenderOptions } from '../../src/render/render-job.ts';
 import type { RenderPool } from '../../src/render/render-pool.ts';
 import { emptyRayStats } from '../../src/tracer/ray-tree.ts';
-import { RenderSpeed } from '../../src/render/render-speed.ts';
+import { EstimateCalibration } from '../../src/render/estimate-calibration.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 import type { Scene } from '../../src/scene/scene.ts';
 import { sceneFrom } from '../support/test-scene.ts';
@@ -34,33 +34,35 @@ describe('the probe before a render that may be long', () => {
     const scene = defaultScene();
     const [width, height] = scene.settings.imageSize;
     expect(estimateRender(scene, width, height, pool.size).seconds).toBeLessThan(PROBE_ABOVE_SECONDS);
-    const estimate = await estimateHere(pool, scene, NO_MESHES, width, height, { preview: true, speed: new RenderSpeed() });
-    expect(estimate?.(scene, width, height).heavy).toBe(false);
+    const estimate = await estimateHere(pool, scene, NO_MESHES, width, height, { preview: true, calibration: new EstimateCalibration() });
+    expect(estimate?.measured).toBe(false);
+    expect(estimate?.estimate(scene, width, height).heavy).toBe(false);
     expect(render).not.toHaveBeenCalled();
   });
 
   it('traces one sample per pixel of the small image for a long render, and calls it heavy', async () => {
     const render = vi.spyOn(pool, 'render');
     const scene = withSettings({ supersampling: 8, imageSize: [4096, 4096] });
-    const estimate = await estimateHere(pool, scene, NO_MESHES, 4096, 4096, { preview: true, speed: new RenderSpeed() });
+    const estimate = await estimateHere(pool, scene, NO_MESHES, 4096, 4096, { preview: true, calibration: new EstimateCalibration() });
     const [width, height] = probeSize(scene, 4096, 4096, pool.size);
     // At least two rounds, to see the workers' pace steady.
     expect(render.mock.calls.length).toBeGreaterThanOrEqual(2);
     expect(render.mock.calls.length).toBeLessThanOrEqual(5);
     for (const call of render.mock.calls) expect(call).toEqual([scene, NO_MESHES, { width, height, preview: false, oneSample: true }]);
-    const full = estimate!(scene, 4096, 4096);
+    expect(estimate?.measured).toBe(true);
+    const full = estimate!.estimate(scene, 4096, 4096);
     expect(full.heavy).toBe(true);
     // Each of the 4096² × 64 samples of the final pass costs a primary ray at least.
     expect(full.rays).toBeGreaterThan(4096 * 4096 * 64);
   });
 
-  /** A pool whose renders take `workMs` in turn, 10 rays a sample. */
-  function poolTaking(...workMs: number[]): { pool: RenderPool; rounds: () => number } {
+  /** A pool whose renders take `ms` in turn, 10 rays a sample. */
+  function poolTaking(...ms: number[]): { pool: RenderPool; rounds: () => number } {
     let round = 0;
     const stub = {
       size: 2,
       render: (_scene: Scene, _meshes: unknown, { width = 1, height = 1 }: RenderOptions) => ({
-        done: Promise.resolve({ cancelled: false, stats: { ...emptyRayStats(), primary: 10 * width * height }, workMs: workMs[round++] }),
+        done: Promise.resolve({ cancelled: false, stats: { ...emptyRayStats(), primary: 10 * width * height }, ms: ms[round++], sceneMs: 0 }),
       }),
     };
     return { pool: stub as unknown as RenderPool, rounds: () => round };
@@ -71,13 +73,13 @@ describe('the probe before a render that may be long', () => {
     const cold = poolTaking(900, 300, 110, 100, 100);
     const cost = await probeSampleCost(cold.pool, scene, NO_MESHES, 4096, 4096);
     expect(cold.rounds()).toBe(4);
-    expect(cost?.workMs).toBe(100);
+    expect(cost?.ms).toBe(100);
     expect(cost!.rays / cost!.samples).toBe(10);
     const warm = poolTaking(100, 104, 50);
-    expect((await probeSampleCost(warm.pool, scene, NO_MESHES, 4096, 4096))?.workMs).toBe(104);
+    expect((await probeSampleCost(warm.pool, scene, NO_MESHES, 4096, 4096))?.ms).toBe(104);
     expect(warm.rounds()).toBe(2);
     const restless = poolTaking(100, 200, 100, 200, 100, 200);
-    expect((await probeSampleCost(restless.pool, scene, NO_MESHES, 4096, 4096))?.workMs).toBe(100);
+    expect((await probeSampleCost(restless.pool, scene, NO_MESHES, 4096, 4096))?.ms).toBe(100);
     expect(restless.rounds()).toBe(5);
   });
 
@@ -92,7 +94,7 @@ describe('the probe before a render that may be long', () => {
 
   it('says nothing when another render overtakes it', async () => {
     const scene = withSettings({ supersampling: 8, imageSize: [4096, 4096] });
-    const estimating = estimateHere(pool, scene, NO_MESHES, 4096, 4096, { preview: true, speed: new RenderSpeed() });
+    const estimating = estimateHere(pool, scene, NO_MESHES, 4096, 4096, { preview: true, calibration: new EstimateCalibration() });
     await Promise.resolve();
     const next = pool.render(defaultScene(), NO_MESHES, { width: 8, height: 8 });
     expect(await estimating).toBeNull();

@@ -110,12 +110,12 @@ describe('the progress of a render, in rays', () => {
     const rays = { ...emptyRayStats(), primary: 4000 }; // 4 rays a sample, as assumed
     // The workers built the scene for 30 s: that says nothing of how fast they trace.
     now = 30_000;
-    expect(work.tileBack(tenth(0), 1000, rays, 500, false).secondsLeft).toBeNull();
+    expect(work.tileBack(tenth(0), 1000, rays, false).secondsLeft).toBeNull();
     now = 31_000;
-    expect(work.tileBack(tenth(1), 1000, rays, 1000, false).secondsLeft).toBeNull();
+    expect(work.tileBack(tenth(1), 1000, rays, false).secondsLeft).toBeNull();
     // A tenth of the image a second since the first tile: 7 tenths left, 7 s.
     now = 32_000;
-    const third = work.tileBack(tenth(2), 1000, rays, 1000, false);
+    const third = work.tileBack(tenth(2), 1000, rays, false);
     expect(third.done / third.total).toBeCloseTo(0.3);
     expect(third.secondsLeft).toBeCloseTo(7);
   });
