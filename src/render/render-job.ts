@@ -46,7 +46,7 @@ export interface RenderProgress {
    */
   done: number;
   total: number;
-  /** Seconds the whole render has left at the rate it has traced so far; null in its first seconds. */
+  /** Seconds the render has left at the final pass's rate so far (render-work.ts); null before the final pass's first seconds. */
   secondsLeft: number | null;
 }
 

@@ -101,7 +101,13 @@ describe('the progress of a render, in rays', () => {
     }
   });
 
-  it('gives the time left from the rays left at the rate since the first tile, after two seconds of it', () => {
+  it('gives a time left only in the final pass, which is most of the render', () => {
+    const { reports } = playRender(passes);
+    expect(reports.filter((report) => report.phase !== 'final').every((report) => report.secondsLeft === null)).toBe(true);
+    expect(reports.filter((report) => report.phase === 'final').some((report) => report.secondsLeft !== null)).toBe(true);
+  });
+
+  it('gives the time left from the rays left at the rate since the final pass\'s first tile, after two seconds of it', () => {
     let now = 0;
     vi.spyOn(performance, 'now').mockImplementation(() => now);
     const [pass] = planPasses(defaultScene(), { width: 100, height: 100, workers: 1, preview: false });
