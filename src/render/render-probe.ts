@@ -25,7 +25,7 @@ import { raysOf } from './render-work.ts';
 export const PROBE_SECONDS = 0.15;
 
 /** Rounds whose times differ by less than this factor show the workers at their pace. */
-const STEADY = 1.25;
+const STEADY = 1.15;
 const MAX_PROBE_ROUNDS = 5;
 
 /**
