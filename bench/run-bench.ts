@@ -5,7 +5,10 @@
  * ≥ 1.8× from 1 to 2 workers, first preview ≤ 250 ms. Issue: tracer speed: 2 workers ≤ 1.5 s
  * quiet and ≤ 2.0× the native Embree anchor (bench/anchor.json), 256 objects ≤ 1.3× the time
  * of 9 at the same ray count, `rt render` of 16×16 ≤ 0.5 s wall, slider to rays on a 16×16
- * screen ≤ 100 ms at the 95th percentile (bench/slider-latency-bench.ts).
+ * screen ≤ 100 ms at the 95th percentile (bench/slider-latency-bench.ts). Issue 37: heavy
+ * renders take 1/1.5 to 1.5 times their estimate (bench/estimate-bench.ts); the benchmark
+ * fails otherwise. `npm run bench -- estimates` runs that part alone and updates its
+ * figures in bench/results.json.
  */
 import { readFileSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -34,6 +37,7 @@ import { measureView, roundedView, viewRows } from './view-bench.ts';
 import { measureSliderLatency, sliderRows } from './slider-latency-bench.ts';
 import { browserRenderFigures, browserRenderRows } from './browser-render-figures.ts';
 import { browserSliderFigures, browserSliderRows } from './browser-slider-figures.ts';
+import { type EstimateCase, estimateRows, estimatesHold, ESTIMATE_RATIO_LIMIT, measureEstimates } from './estimate-bench.ts';
 
 const SCENE_FILE = new URL('scenes/reference.json', import.meta.url);
 const RESULTS_FILE = new URL('results.json', import.meta.url);
@@ -204,6 +208,23 @@ async function timeObjectCounts() {
   }
 }
 
+/** Fails the benchmark when a heavy render's real time is not within ESTIMATE_RATIO_LIMIT of its estimate. */
+function checkEstimates(estimates: EstimateCase[]): void {
+  if (estimatesHold(estimates)) return;
+  console.error(`\nFAILED: a heavy render's real time is not within ${ESTIMATE_RATIO_LIMIT}× of its estimate`);
+  process.exitCode = 1;
+}
+
+/** `npm run bench -- estimates`: the estimates alone, written into the last results. */
+async function estimatesOnly(): Promise<void> {
+  const estimates = await measureEstimates();
+  const results = JSON.parse(readFileSync(RESULTS_FILE, 'utf8')) as Record<string, unknown>;
+  writeFileSync(RESULTS_FILE, `${JSON.stringify({ ...results, estimates: { date: new Date().toISOString(), cases: estimates } }, null, 2)}\n`);
+  printTable(estimateRows(estimates));
+  console.log(`\nwrote the estimates into ${RESULTS_FILE.pathname}`);
+  checkEstimates(estimates);
+}
+
 async function main(): Promise<void> {
   const scene = loadReferenceScene();
   const [width, height] = scene.settings.imageSize;
@@ -227,6 +248,7 @@ async function main(): Promise<void> {
   const rtRender16 = { introductionMs: rtRender16Ms('introduction'), referenceMs: rtRender16Ms(fileURLToPath(SCENE_FILE)) };
   const anchor = JSON.parse(readFileSync(ANCHOR_FILE, 'utf8')) as SideBySide;
   const firstLoadFigures = measureFirstLoad();
+  const estimates = await measureEstimates();
 
   const rays = { ...two.stats, total: two.stats.primary + two.stats.shadow + two.stats.reflect + two.stats.refract };
   const results = {
@@ -252,6 +274,7 @@ async function main(): Promise<void> {
     sliderToRays,
     sliderToRaysInBrowser: browserSliderFigures(),
     heavyRenderInBrowser: browserRenderFigures(),
+    estimates: { date: new Date().toISOString(), cases: estimates },
   };
   writeFileSync(RESULTS_FILE, `${JSON.stringify(results, null, 2)}\n`);
 
@@ -280,8 +303,10 @@ async function main(): Promise<void> {
     ...sliderRows(sliderToRays),
     ...browserSliderRows(results.sliderToRaysInBrowser),
     ...browserRenderRows(results.heavyRenderInBrowser),
+    ...estimateRows(estimates),
   ]);
   console.log(`\nwrote ${RESULTS_FILE.pathname}`);
+  checkEstimates(estimates);
 }
 
-await main();
+await (process.argv.includes('estimates') ? estimatesOnly() : main());

@@ -1,7 +1,7 @@
 /** `rt render`: renders a scene with the worker pool and writes a PNG (spec §4). */
 import { availableParallelism } from 'node:os';
 import type { FinishedRender } from '../render/render-job.ts';
-import { estimateRender, lighterRenders } from '../render/render-estimate.ts';
+import { estimateRender, lighterRenders, modelEstimate } from '../render/render-estimate.ts';
 import { finalTileSide } from '../render/render-passes.ts';
 import { LIMITS } from '../scene/scene-limits.ts';
 import type { Scene } from '../scene/scene.ts';
@@ -107,7 +107,7 @@ function tileCount(scene: Scene, width: number, height: number): number {
 function refuseHeavy(scene: Scene, width: number, height: number, workers: number): void {
   const estimate = estimateRender(scene, width, height, workers);
   if (!estimate.heavy) return;
-  const options = lighterRenders(scene, width, height, workers).map((lighter) => {
+  const options = lighterRenders(scene, width, height, modelEstimate(workers)).map((lighter) => {
     const takes = `about ${describeSeconds(lighter.estimate.seconds)}`;
     if (lighter.change === 'supersampling') return `settings.supersampling ${lighter.supersampling} (${takes})`;
     if (lighter.change === 'max-depth') return `settings.maxDepth ${lighter.maxDepth} (${takes})`;

@@ -13,7 +13,9 @@
  * (256 glass objects, depth 10, 32 area lights of 10×10, 8×8 samples, 4096²) at 27 days on
  * 8 workers, near the 38 days measured, not centuries (p = 1 would say 55 years); the
  * default scene and the levels' scenes come out at 0.7 to 3 times the rays they really
- * trace. It is an estimate for deciding, not a promise.
+ * trace. It is an estimate for deciding, not a promise: it sizes tiles and previews and says
+ * whether a render may be long. How long one really takes on this machine is measured
+ * (measured-estimate.ts, render-probe.ts).
  */
 import type { Scene } from '../scene/scene.ts';
 
@@ -77,6 +79,17 @@ export function primaryRaysPerPixel(scene: Scene): number {
   return scene.settings.supersampling ** 2 * primaryRaysPerSample(scene);
 }
 
+/**
+ * Rays and seconds of a `width × height` render of a scene: the model's (`modelEstimate`) or
+ * one priced by a probe of the scene on this machine (measured-estimate.ts).
+ */
+export type EstimateRender = (scene: Scene, width: number, height: number) => RenderEstimate;
+
+/** The model's estimates on `workers` workers, as an EstimateRender. */
+export function modelEstimate(workers: number): EstimateRender {
+  return (scene, width, height) => estimateRender(scene, width, height, workers);
+}
+
 /** Rays and seconds of a `width × height` render of `scene` on `workers` workers. */
 export function estimateRender(scene: Scene, width: number, height: number, workers = 1): RenderEstimate {
   const raysPerPixel = raysPerSample(scene) * primaryRaysPerPixel(scene);
@@ -93,31 +106,32 @@ export type LighterRender =
 
 /**
  * For a heavy render, the mildest change of each kind that brings it under
- * HEAVY_RENDER_SECONDS: fewer samples, a smaller image (same aspect ratio), a shallower
- * ray tree. A kind that cannot get there alone is left out; none for a render that is not heavy.
+ * HEAVY_RENDER_SECONDS by `estimateRender`: fewer samples, a smaller image (same aspect
+ * ratio), a shallower ray tree. A kind that cannot get there alone is left out; none for a
+ * render that is not heavy.
  */
-export function lighterRenders(scene: Scene, width: number, height: number, workers = 1): LighterRender[] {
-  if (!estimateRender(scene, width, height, workers).heavy) return [];
+export function lighterRenders(scene: Scene, width: number, height: number, estimate: EstimateRender): LighterRender[] {
+  const full = estimate(scene, width, height);
+  if (!full.heavy) return [];
   const lighter: LighterRender[] = [];
   const withSettings = (changes: Partial<Scene['settings']>): Scene => ({ ...scene, settings: { ...scene.settings, ...changes } });
   for (let supersampling = scene.settings.supersampling - 1; supersampling >= 1; supersampling--) {
-    const estimate = estimateRender(withSettings({ supersampling }), width, height, workers);
-    if (!estimate.heavy) {
-      lighter.push({ change: 'supersampling', supersampling, estimate });
+    const smaller = estimate(withSettings({ supersampling }), width, height);
+    if (!smaller.heavy) {
+      lighter.push({ change: 'supersampling', supersampling, estimate: smaller });
       break;
     }
   }
   // Time grows with the pixel count: scale both sides by the square root of the overshoot.
-  const full = estimateRender(scene, width, height, workers);
   const factor = Math.sqrt(HEAVY_RENDER_SECONDS / full.seconds);
   const [smallWidth, smallHeight] = [Math.floor(width * factor), Math.floor(height * factor)];
   if (smallWidth >= 1 && smallHeight >= 1) {
-    lighter.push({ change: 'image-size', width: smallWidth, height: smallHeight, estimate: estimateRender(scene, smallWidth, smallHeight, workers) });
+    lighter.push({ change: 'image-size', width: smallWidth, height: smallHeight, estimate: estimate(scene, smallWidth, smallHeight) });
   }
   for (let maxDepth = scene.settings.maxDepth - 1; maxDepth >= 0; maxDepth--) {
-    const estimate = estimateRender(withSettings({ maxDepth }), width, height, workers);
-    if (!estimate.heavy) {
-      lighter.push({ change: 'max-depth', maxDepth, estimate });
+    const shallower = estimate(withSettings({ maxDepth }), width, height);
+    if (!shallower.heavy) {
+      lighter.push({ change: 'max-depth', maxDepth, estimate: shallower });
       break;
     }
   }

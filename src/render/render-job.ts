@@ -39,9 +39,15 @@ export interface RenderProgress {
   /** The pass's number, 1 to `passes`. */
   pass: number;
   passes: number;
-  /** Samples of this pass traced and to trace: its work, as every sample costs about the same and tiles differ in size. */
+  /**
+   * Rays of this pass traced, and those plus the rays its other tiles are predicted to take
+   * (render-work.ts): a sample through glass under an area light costs a hundred times one
+   * through the sky, so counting samples or tiles would crawl and then jump.
+   */
   done: number;
   total: number;
+  /** Seconds the render has left at the final pass's rate so far (render-work.ts); null before the final pass's first seconds. */
+  secondsLeft: number | null;
 }
 
 export interface RenderOptions {
@@ -52,6 +58,8 @@ export interface RenderOptions {
   seed?: number;
   /** Coarse passes and a sharp one-sample pass before full quality (default true); `rt render` turns them off. */
   preview?: boolean;
+  /** One pass of one sample per pixel and nothing else (default false): the time estimate's probe (render-probe.ts). */
+  oneSample?: boolean;
   /**
    * After each pass before the final one: a preview pass's picture at its own resolution,
    * or (after the sharp pass) the job's live `image`, filled in whole.

@@ -52,6 +52,8 @@ export interface PassPlanOptions {
   workers: number;
   /** Previews and the sharp pass before the final one (the render window); `rt render` turns them off. */
   preview: boolean;
+  /** One pass of one sample per pixel, whatever the supersampling: the estimate's probe of what a sample costs (render-probe.ts). */
+  oneSample?: boolean;
 }
 
 /** The render estimate's time for the first preview pass: the "first second" with a wide margin. */
@@ -84,13 +86,14 @@ const MAX_TILE_SIDE = 32;
  */
 const RAYS_PER_UNWATCHED_TILE = 24 * RAYS_PER_TILE;
 
-export function planPasses(scene: Scene, { width, height, workers, preview }: PassPlanOptions): RenderPass[] {
+export function planPasses(scene: Scene, { width, height, workers, preview, oneSample }: PassPlanOptions): RenderPass[] {
+  // Each lens and time ray of a sample is a primary ray with its own shadow rays (distribution-effects §2).
+  const oneSampleSide = tileSide((1 + shadowRaysPerHit(scene)) * primaryRaysPerSample(scene));
+  if (oneSample) return [{ kind: 'final', block: 1, samplesPerSide: 1, tileWidth: oneSampleSide, tileHeight: oneSampleSide }];
   const supersampling = scene.settings.supersampling;
   const finalSide = finalTileSide(scene, preview);
   const final: RenderPass = { kind: 'final', block: 1, samplesPerSide: supersampling, tileWidth: finalSide, tileHeight: finalSide };
   if (!preview) return [final];
-  // Each lens and time ray of a sample is a primary ray with its own shadow rays (distribution-effects §2).
-  const oneSampleSide = tileSide((1 + shadowRaysPerHit(scene)) * primaryRaysPerSample(scene));
   const secondsPerSample = (raysPerSample(scene) * primaryRaysPerSample(scene)) / (RAYS_PER_SECOND_PER_WORKER * Math.max(1, workers));
   const passes: RenderPass[] = [];
   for (let block = firstBlock(width, height, secondsPerSample); block >= FINEST_PREVIEW_BLOCK; block /= 2) {

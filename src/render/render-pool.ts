@@ -158,8 +158,9 @@ export class RenderPool {
     this.cancelJob();
     this.failuresInARow = 0; // each render gets its own tries
     const sceneId = this.useScene(scene, meshes);
-    const passes = planPasses(scene, { width, height, workers: this.size, preview: options.preview ?? true });
-    const tiles = new TiledRender(width, height, passes, options);
+    const passes = planPasses(scene, { width, height, workers: this.size, preview: options.preview ?? true, oneSample: options.oneSample });
+    const estimatedRaysPerSample = raysPerSample(scene) * primaryRaysPerSample(scene);
+    const tiles = new TiledRender(width, height, passes, options, estimatedRaysPerSample);
     const id = ++this.lastId;
     const done = new Promise<RenderResult>((resolve, reject) => {
       this.job = {
@@ -169,7 +170,7 @@ export class RenderPool {
         tiles,
         startedAt: performance.now(),
         sceneMs: 0,
-        raysPerSample: raysPerSample(scene) * primaryRaysPerSample(scene),
+        raysPerSample: estimatedRaysPerSample,
         msPerRay: ASSUMED_MS_PER_RAY,
         resolve,
         reject,

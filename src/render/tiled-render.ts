@@ -13,6 +13,7 @@
 import { addRayStats, emptyRayStats, type RayStats } from '../tracer/ray-tree.ts';
 import type { Tile } from '../tracer/tile.ts';
 import { tracedSamples, type RenderPass } from './render-passes.ts';
+import { RenderWork } from './render-work.ts';
 import type { PreviewImage, RenderChanges, RenderImage, RenderOptions, RenderProgress } from './render-job.ts';
 
 /** Tiles listed for the painter at most; past this many, the rows they span are given as one full-width tile. */
@@ -27,8 +28,6 @@ interface PlannedPass extends RenderPass {
   count: number;
   /** The tile id of its first tile: ids run on across passes. */
   firstId: number;
-  /** Samples the whole pass traces: its work, for progress. */
-  samples: number;
 }
 
 /** A tile handed to a worker: `tileId` comes back with its pixels. */
@@ -44,6 +43,8 @@ export class TiledRender {
   /** Rays of the full-quality pass only. */
   readonly stats = emptyRayStats();
   slowestTileMs = 0;
+  /** The progress in rays (render-work.ts). */
+  private readonly work: RenderWork;
 
   private readonly passes: PlannedPass[] = [];
   private pass = 0;
@@ -54,8 +55,6 @@ export class TiledRender {
   /** Tiles of the current pass handed out, and finished. */
   private taken = 0;
   private finishedInPass = 0;
-  /** Samples of the current pass traced so far. */
-  private samplesDone = 0;
   private lastProgressAt = -Infinity;
   /** The running preview pass's picture (null in the other passes). */
   private preview: PreviewImage | null = null;
@@ -71,21 +70,23 @@ export class TiledRender {
   /** Whether changedTiles is the one full-width tile of many tiles' rows. */
   private changedAsRows = false;
 
+  /** `assumedRaysPerSample`: the render estimate's rays per sample, to predict the first pass's progress by. */
   constructor(
     width: number,
     height: number,
     passes: RenderPass[],
     private readonly callbacks: Pick<RenderOptions, 'onPreview' | 'onProgress'>,
+    assumedRaysPerSample = 1,
   ) {
     this.image = { width, height, rgb: new Float32Array(width * height * 3) };
     let firstId = 0;
     for (const pass of passes) {
       const columns = Math.ceil(width / pass.tileWidth);
       const count = columns * Math.ceil(height / pass.tileHeight);
-      // Tiles start at multiples of the block, so their samples add up to the whole image's.
-      this.passes.push({ ...pass, columns, count, firstId, samples: tracedSamples({ x: 0, y: 0, width, height }, pass) });
+      this.passes.push({ ...pass, columns, count, firstId });
       firstId += count;
     }
+    this.work = new RenderWork(width, height, passes, assumedRaysPerSample);
     this.startPass();
   }
 
@@ -139,15 +140,15 @@ export class TiledRender {
     else this.paste(tile, rgb);
     this.slowestTileMs = Math.max(this.slowestTileMs, ms);
     if (pass.kind === 'final') addRayStats(this.stats, stats);
-    this.samplesDone += tracedSamples(tile, pass);
-    const progress: RenderProgress = { phase: pass.kind, pass: this.pass + 1, passes: this.passes.length, done: this.samplesDone, total: pass.samples };
     const first = ++this.finishedInPass === 1;
     const passComplete = this.finishedInPass === pass.count;
+    const work = this.work.tileBack(tile, tracedSamples(tile, pass), stats, passComplete);
+    const progress: RenderProgress = { phase: pass.kind, pass: this.pass + 1, passes: this.passes.length, ...work };
     if (passComplete) {
       this.pass++;
       this.taken = 0;
       this.finishedInPass = 0;
-      this.samplesDone = 0;
+      this.work.startPass(this.pass);
       this.startPass();
     }
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { estimateRender, HEAVY_RENDER_SECONDS, lighterRenders } from '../../src/render/render-estimate.ts';
+import { estimateRender, HEAVY_RENDER_SECONDS, lighterRenders, modelEstimate } from '../../src/render/render-estimate.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 import { emptyRayStats } from '../../src/tracer/ray-tree.ts';
 import { renderTile } from '../../src/tracer/render-tile.ts';
@@ -61,7 +61,7 @@ describe('the render estimate', () => {
     const scene = sceneFrom({ ...defaultScene(), settings: { ...defaultScene().settings, supersampling: 8, maxDepth: 6 } });
     const [width, height] = [4096, 4096];
     expect(estimateRender(scene, width, height, 2).heavy).toBe(true);
-    const lighter = lighterRenders(scene, width, height, 2);
+    const lighter = lighterRenders(scene, width, height, modelEstimate(2));
     expect(lighter.map((option) => option.change)).toEqual(['supersampling', 'image-size', 'max-depth'].slice(0, lighter.length));
     expect(lighter.length).toBeGreaterThanOrEqual(2);
     for (const option of lighter) expect(option.estimate.seconds).toBeLessThanOrEqual(HEAVY_RENDER_SECONDS);
@@ -72,6 +72,6 @@ describe('the render estimate', () => {
     const size = lighter.find((option) => option.change === 'image-size');
     if (size?.change !== 'image-size') throw new Error('no smaller-image suggestion');
     expect(size.width / size.height).toBeCloseTo(1);
-    expect(lighterRenders(defaultScene(), 512, 384, 2)).toEqual([]);
+    expect(lighterRenders(defaultScene(), 512, 384, modelEstimate(2))).toEqual([]);
   });
 });

@@ -76,6 +76,9 @@ describe('RenderPool with worker threads', () => {
     // The sharp pass shows the whole image.
     expect([previews.at(-1)!.width, previews.at(-1)!.height]).toEqual([WIDTH, HEIGHT]);
     expect(progress.at(-1)).toMatchObject({ phase: 'final', pass: passes.length, passes: passes.length, done: progress.at(-1)?.total });
+    // Progress counts the rays the workers traced: the final pass ends at all of its rays.
+    const { primary, shadow, reflect, refract } = result.stats;
+    expect(progress.at(-1)?.done).toBe(primary + shadow + reflect + refract);
     expect(job.image.rgb).toBe(result.rgb);
   });
 

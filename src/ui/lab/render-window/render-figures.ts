@@ -10,6 +10,7 @@ import { localNumbers } from '../../../i18n/number-format.ts';
 /** Counts in units ("12,3 thousand" in Dutch) have 3 significant digits, so at most 2 decimals. */
 const inUnitsFormat = localNumbers({ maximumFractionDigits: 2 });
 const seconds2 = localNumbers({ minimumFractionDigits: 2, maximumFractionDigits: 2 });
+const tenths = localNumbers({ minimumFractionDigits: 1, maximumFractionDigits: 1 });
 
 /** Every ray the render traced: primary, shadow, reflected and refracted. */
 export function countRays(stats: RayStats): number {
@@ -49,12 +50,18 @@ export function formatWait(seconds: number): string {
   return msg(str`${Math.round(seconds / 86_400)} days`);
 }
 
+/** The render's time left, "about 2 min left"; past 20 s in steps of 5 s, so that it does not flicker. */
+export function formatTimeLeft(secondsLeft: number): string {
+  const seconds = secondsLeft < 20 ? secondsLeft : Math.round(secondsLeft / 5) * 5;
+  return msg(str`about ${formatWait(seconds)} left`);
+}
+
 /**
  * The pass under way and how far into it: "Step 1 of 4: quick preview 40 %", then "sharp
  * picture (1 sample per pixel)", then "full quality"; "Rendering 42 %" for a render of one
  * pass. Each pass counts from 0 to 100 %, so even a render of days shows movement at once.
  */
-export function progressText({ phase, pass, passes, done, total }: RenderProgress): string {
+export function progressText({ phase, pass, passes, done, total }: Pick<RenderProgress, 'phase' | 'pass' | 'passes' | 'done' | 'total'>): string {
   const percent = formatPercent(done, total);
   if (passes === 1) return msg(str`Rendering ${percent}`);
   switch (phase) {
@@ -74,6 +81,6 @@ export function progressText({ phase, pass, passes, done, total }: RenderProgres
 export function formatPercent(done: number, total: number): string {
   // Per mille from the whole numbers, so that 57 of 1000 reads 5.7, not 5.6 (0.057 × 1000 = 56.99…).
   const perMille = Math.min(1000, Math.max(0, Math.floor((1000 * done) / Math.max(total, 1))));
-  if (perMille < 100) return `${(perMille / 10).toFixed(1)} %`;
+  if (perMille < 100) return `${tenths.format(perMille / 10)} %`;
   return `${Math.floor(perMille / 10)} %`;
 }

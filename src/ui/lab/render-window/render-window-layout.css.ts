@@ -55,6 +55,11 @@ export const renderWindowLayout = css`
         min-width: 8.5em;
         font-variant-numeric: tabular-nums;
       }
+      .left {
+        color: var(--rt-muted);
+        white-space: nowrap;
+        font-variant-numeric: tabular-nums;
+      }
       rt-image-compare,
       .placeholder {
         flex: 1;

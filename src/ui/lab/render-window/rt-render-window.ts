@@ -11,12 +11,12 @@ import { shownName } from '../scene-names.ts';
 import { FocusReturn } from '../../controls/focus-return.ts';
 import { GuideHostController } from '../guide-host.ts';
 import { consumeStore } from '../store-context.ts';
-import { estimateRender, lighterRenders, type LighterRender, type RenderEstimate } from '../../../render/render-estimate.ts';
 import { BandPainter } from './band-painter.ts';
 import { canvasView } from './image-zoom.ts';
 import { ContrastToggle } from './contrast-toggle.ts';
 import { errorMessage, RenderJobController, type ShownRender } from './render-job-controller.ts';
-import { formatCount, formatDuration, formatWait, progressText, raysPerSecond } from './render-figures.ts';
+import { formatCount, formatDuration, formatTimeLeft, progressText, raysPerSecond } from './render-figures.ts';
+import { HeavyRenderCheck } from './heavy-render-check.ts';
 import { renderWindowLayout } from './render-window-layout.css.ts';
 import { controlStyles } from './render-window-styles.ts';
 import { pngFileName, savePng } from './save-png.ts';
@@ -58,7 +58,6 @@ export class RtRenderWindow extends LitElement {
     open: { type: Boolean, reflect: true },
     sceneChanged: { state: true },
     rasterNote: { state: true },
-    heavy: { state: true },
     saveError: { state: true },
   };
 
@@ -72,8 +71,6 @@ export class RtRenderWindow extends LitElement {
   /** Why the render on show has no raster picture to compare with ('' when it has one). */
   declare rasterNote: string;
   declare saveError: string;
-  /** A render the estimate put over HEAVY_RENDER_SECONDS, waiting for the learner's choice. */
-  declare heavy: { estimate: RenderEstimate; lighter: LighterRender[] } | null;
 
   private readonly focusReturn = new FocusReturn();
   private readonly renderButton = createRef<HTMLButtonElement>();
@@ -92,6 +89,8 @@ export class RtRenderWindow extends LitElement {
       return canvasView(image, shown, { x: 0, y: 0, ...shown }, devicePixelRatio);
     },
   );
+  /** How long a render will take here, and the question before a heavy one. */
+  private readonly check = new HeavyRenderCheck(this);
   private readonly jobs = new RenderJobController(this, {
     paint: (image, quantization) => this.painter.paint(image, quantization),
     paintChanges: (image, changes, quantization) => this.painter.paintChanges(image, changes, quantization),
@@ -116,7 +115,6 @@ export class RtRenderWindow extends LitElement {
     this.sceneChanged = false;
     this.rasterNote = '';
     this.saveError = '';
-    this.heavy = null;
     this.addEventListener('keydown', (event) => this.onKeyDown(event));
     consumeStore(this, (store) => (this.store = store));
     new GuideHostController(this);
@@ -152,19 +150,24 @@ export class RtRenderWindow extends LitElement {
   }
 
   /**
-   * Renders the store's scene at its image size, replacing the image on show. A render the
-   * estimate puts over a minute waits for the learner: lighter options, or `force`.
+   * Renders the store's scene at its image size, replacing the image on show. A render
+   * estimated on this machine at over a minute waits for the learner: lighter options, or
+   * `force` (which skips the estimate; `expectedSeconds` is what the learner was promised).
    */
-  async startRender(force = false): Promise<void> {
+  async startRender(force = false, expectedSeconds: number | null = null): Promise<void> {
     if (!this.store || !this.pool) return;
-    const scene = this.store.state.scene;
-    const [width, height] = scene.settings.imageSize;
-    const estimate = estimateRender(scene, width, height, this.pool.size);
-    this.heavy = estimate.heavy && !force ? { estimate, lighter: lighterRenders(scene, width, height, this.pool.size) } : null;
-    if (this.heavy) return;
+    let expected = expectedSeconds;
+    if (force) this.check.settle();
+    else {
+      const decision = await this.check.mayStart(this.store.state.scene, this.pool);
+      if (!decision.start) return;
+      expected = decision.expectedSeconds;
+    }
     this.sceneChanged = false;
     this.saveError = '';
     await this.jobs.start(this.store, this.pool);
+    // How the promise came true corrects the next estimates.
+    if (expected !== null && this.jobs.status.kind === 'finished') this.check.finished(expected, this.jobs.status.ms);
   }
 
   /** Stops the running render (its partial image stays on show). */
@@ -253,7 +256,7 @@ export class RtRenderWindow extends LitElement {
     return html`
       <header>
         <h2>${msg('Ray traced image')}</h2>
-        ${this.sizeLabel(width, height)}
+        ${this.sizeLabel(width, height)} ${this.timeLeft()}
         <button data-guide="render.close" @click=${this.requestClose} aria-label=${msg('Close the render window')} title=${msg('Close the render window (Esc)')}>✕</button>
       </header>
       <div class="actions">
@@ -266,7 +269,7 @@ export class RtRenderWindow extends LitElement {
           ${msg('Save as PNG')}
         </button>
       </div>
-      ${this.heavy ? this.heavyNote(this.heavy) : nothing}
+      ${this.check.heavy ? this.check.note(this.check.heavy, (changes, seconds) => this.useLighter(changes, seconds), (seconds) => void this.startRender(true, seconds)) : nothing}
       ${this.jobs.shown ? this.stage(this.jobs.shown) : html`<div class="placeholder" data-guide="render.zoom render.compare">${msg(str`Press Render to ray trace the scene at ${width} × ${height} pixels.`)}</div>`}
       <footer>
         ${this.outcome()} ${this.saveError ? html`<p role="alert" class="error">${this.saveError}</p>` : nothing} ${this.staleNote()}
@@ -287,9 +290,17 @@ export class RtRenderWindow extends LitElement {
     return html`<span class="size" data-testid="render-size" title=${msg('The size of the image on show; a new size from the ray tracer panel applies to the next render')}>${msg(str`${shown.width} × ${shown.height} pixels`)}${next}</span>`;
   }
 
+  /** The running render's time left at its pace so far, in the header (the progress row has no room at 1366 px). */
+  private timeLeft() {
+    const status = this.jobs.status;
+    if (status.kind !== 'rendering' || status.secondsLeft === null) return nothing;
+    return html`<span class="left" data-testid="render-time-left">${formatTimeLeft(status.secondsLeft)}</span>`;
+  }
+
   private progress() {
     const status = this.jobs.status;
     const label = msg('Render progress');
+    if (this.check.estimating) return html`<progress aria-label=${label}></progress><span class="phase">${msg('Estimating how long it takes…')}</span>`;
     switch (status.kind) {
       case 'starting':
         return html`<progress aria-label=${label}></progress><span class="phase">${msg('Starting…')}</span>`;
@@ -342,28 +353,10 @@ export class RtRenderWindow extends LitElement {
     }
   }
 
-  /** The estimate of a heavy render, with lighter renders to pick or "Render anyway". */
-  private heavyNote({ estimate, lighter }: { estimate: RenderEstimate; lighter: LighterRender[] }) {
-    const use = (changes: Partial<Scene['settings']>) => {
-      this.store?.dispatch({ type: 'settings.changed', changes });
-      void this.startRender();
-    };
-    const option = (choice: LighterRender) => {
-      const wait = formatWait(choice.estimate.seconds);
-      switch (choice.change) {
-        case 'supersampling':
-          return html`<button @click=${() => use({ supersampling: choice.supersampling })}>${msg(str`Supersampling ${choice.supersampling} (about ${wait})`)}</button>`;
-        case 'image-size':
-          return html`<button @click=${() => use({ imageSize: [choice.width, choice.height] })}>${msg(str`${choice.width} × ${choice.height} pixels (about ${wait})`)}</button>`;
-        case 'max-depth':
-          return html`<button @click=${() => use({ maxDepth: choice.maxDepth })}>${msg(str`Recursion depth ${choice.maxDepth} (about ${wait})`)}</button>`;
-      }
-    };
-    return html`<div class="heavy" role="alert" data-testid="heavy-render">
-      <p>${msg(str`This render would take about ${formatWait(estimate.seconds)} (${formatCount(estimate.rays)} rays). A lighter one shows the same idea:`)}</p>
-      <div class="choices">${lighter.map(option)}</div>
-      <p><button @click=${() => void this.startRender(true)}>${msg('Render anyway')}</button> <button @click=${() => (this.heavy = null)}>${msg('Not now')}</button></p>
-    </div>`;
+  /** A lighter render the learner picked from the question: its time was shown, so it starts at once. */
+  private useLighter(changes: Partial<Scene['settings']>, seconds: number): void {
+    this.store?.dispatch({ type: 'settings.changed', changes });
+    void this.startRender(true, seconds);
   }
 
   private staleNote() {

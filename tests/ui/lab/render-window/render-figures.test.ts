@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { countRays, formatCount, formatDuration, formatPercent, formatWait, progressText, raysPerSecond } from '../../../../src/ui/lab/render-window/render-figures.ts';
+import { countRays, formatCount, formatDuration, formatPercent, formatTimeLeft, formatWait, progressText, raysPerSecond } from '../../../../src/ui/lab/render-window/render-figures.ts';
 import { formatShare } from '../../../../src/ui/lab/rt-ray-tooltip.ts';
 import { inDutch } from '../../../support/page-locale.ts';
 
@@ -40,6 +40,13 @@ describe('render figures', () => {
     expect(formatDuration(125_400)).toBe('2 min 5 s');
   });
 
+  it('says the time left in steps that do not flicker: seconds under 20 s, then fives, then minutes', () => {
+    expect(formatTimeLeft(7.4)).toBe('about 7 s left');
+    expect(formatTimeLeft(47)).toBe('about 45 s left');
+    expect(formatTimeLeft(48)).toBe('about 50 s left');
+    expect(formatTimeLeft(151)).toBe('about 3 min left');
+  });
+
   it('says which pass is under way and how far into it', () => {
     expect(progressText({ phase: 'preview', pass: 1, passes: 4, done: 3, total: 40 })).toBe('Step 1 of 4: quick preview 7.5 %');
     expect(progressText({ phase: 'sharp', pass: 3, passes: 4, done: 42, total: 100 })).toBe('Step 3 of 4: sharp picture (1 sample per pixel) 42 %');
@@ -70,5 +77,8 @@ describe('render figures in Dutch', () => {
     expect(formatShare(0.125)).toBe('12,5 %');
     // Not "&lt; 0,1 %": an escaped "<" in the catalogue came through as text.
     expect(formatShare(0.0004)).toBe('minder dan 0,1 %');
+    // The render's progress under 10 % too (it read "2.5 %" in the Dutch window).
+    expect(formatPercent(25, 1000)).toBe('2,5 %');
+    expect(formatTimeLeft(150)).toBe('nog ongeveer 3 min');
   });
 });

@@ -1,0 +1,97 @@
+/**
+ * Measures what a sample of a scene costs on this machine, for the time estimate
+ * (measured-estimate.ts): the workers trace a small image of the scene at one sample per
+ * pixel, about PROBE_SECONDS of work by the model's guess, and report their rays and time.
+ *
+ * They trace it again until two rounds take about as long (STEADY), at most
+ * MAX_PROBE_ROUNDS times, and the last round counts. The first round can be many times
+ * slower than the render will be: workers that have not traced this kind of scene yet run
+ * its code unoptimized until V8 has compiled it, on a busy machine for seconds (in Chromium
+ * on the project's loaded 2-core machine, 0.19 to 0.26 ms a sample in the first round of a
+ * lens scene, 0.008 to 0.018 from the fourth).
+ */
+import type { MeshLibrary } from '../scene/mesh-data.ts';
+import type { Scene } from '../scene/scene.ts';
+import { measuredEstimate, type SampleCost } from './measured-estimate.ts';
+import { estimateRender, HEAVY_RENDER_SECONDS, modelEstimate, primaryRaysPerSample, RAYS_PER_SECOND_PER_WORKER, raysPerSample, type EstimateRender } from './render-estimate.ts';
+import type { RenderPool } from './render-pool.ts';
+import type { EstimateCalibration } from './estimate-calibration.ts';
+import { raysOf } from './render-work.ts';
+
+/**
+ * A probe round's wall time by the model (with all workers): a few thousand samples of a
+ * scene of 10 to 1000 rays per sample, a wait the learner hardly notices before a render of minutes.
+ */
+export const PROBE_SECONDS = 0.15;
+
+/** Rounds whose times differ by less than this factor show the workers at their pace. */
+const STEADY = 1.15;
+const MAX_PROBE_ROUNDS = 5;
+
+/**
+ * Renders the model puts under this are not probed: they start at once. The model's rays
+ * are 0.7 to 3 times the real ones and its rate is on the slow side, so one it puts at
+ * 6 s would have to be ten times slower to reach HEAVY_RENDER_SECONDS.
+ */
+export const PROBE_ABOVE_SECONDS = HEAVY_RENDER_SECONDS / 10;
+
+/** The probe's image for a `width × height` render on `workers` workers: the same aspect ratio, PROBE_SECONDS of samples or the whole image, at least one pixel. */
+export function probeSize(scene: Scene, width: number, height: number, workers: number): [number, number] {
+  const samples = (PROBE_SECONDS * RAYS_PER_SECOND_PER_WORKER * Math.max(1, workers)) / (raysPerSample(scene) * primaryRaysPerSample(scene));
+  const scale = Math.min(1, Math.sqrt(samples / (width * height)));
+  return [Math.max(1, Math.round(width * scale)), Math.max(1, Math.round(height * scale))];
+}
+
+/**
+ * Traces the probe until its rounds are steady; null when it was cancelled (another render
+ * started on the pool) or `signal` aborted it, which stops it before its next round.
+ */
+export async function probeSampleCost(pool: RenderPool, scene: Scene, meshes: MeshLibrary, width: number, height: number, signal?: AbortSignal): Promise<SampleCost | null> {
+  const [probeWidth, probeHeight] = probeSize(scene, width, height, pool.size);
+  let last: SampleCost | null = null;
+  for (let round = 0; round < MAX_PROBE_ROUNDS; round++) {
+    if (signal?.aborted) return null;
+    const result = await pool.render(scene, meshes, { width: probeWidth, height: probeHeight, preview: false, oneSample: true }).done;
+    if (result.cancelled) return null;
+    // The wall time from the first tile's request, without a scene build the workers did first.
+    const cost = { samples: probeWidth * probeHeight, rays: raysOf(result.stats), ms: Math.max(1, result.ms - result.sceneMs) };
+    const steady = last !== null && Math.max(cost.ms / last.ms, last.ms / cost.ms) < STEADY;
+    last = cost;
+    if (steady) break;
+  }
+  return last;
+}
+
+export interface EstimateHereOptions {
+  /** Previews before the final pass (the render window) or not (`rt render`). */
+  preview: boolean;
+  /** How this session's estimates compared with its renders' real times. */
+  calibration: EstimateCalibration;
+  /** Aborted when the estimate is no longer wanted (the learner rendered anyway): the probe stops. */
+  signal?: AbortSignal;
+}
+
+/** Estimates of a render and its lighter variants, and whether a probe measured them. */
+export interface EstimatesHere {
+  estimate: EstimateRender;
+  /** True when priced by a probe on this machine; false for the model's (a render it puts under PROBE_ABOVE_SECONDS). */
+  measured: boolean;
+}
+
+/**
+ * Estimates of a `width × height` render of `scene` and its lighter variants on this
+ * machine: the model's when it puts the render under PROBE_ABOVE_SECONDS (no wait), else
+ * measured by a probe. Null when the probe was cancelled.
+ */
+export async function estimateHere(
+  pool: RenderPool,
+  scene: Scene,
+  meshes: MeshLibrary,
+  width: number,
+  height: number,
+  { preview, calibration, signal }: EstimateHereOptions,
+): Promise<EstimatesHere | null> {
+  if (estimateRender(scene, width, height, pool.size).seconds < PROBE_ABOVE_SECONDS) return { estimate: modelEstimate(pool.size), measured: false };
+  const cost = await probeSampleCost(pool, scene, meshes, width, height, signal);
+  return cost && { estimate: measuredEstimate(cost, scene, { workers: pool.size, preview, correction: calibration.correction }), measured: true };
+}
