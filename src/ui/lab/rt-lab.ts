@@ -10,6 +10,7 @@ import type { UiPanel } from '../../quest/lab-controls.ts';
 import { loadMeshes } from '../../render/load-meshes-browser.ts';
 import { createBrowserRenderPool } from '../../render/web-worker-port.ts';
 import type { Scene } from '../../scene/scene.ts';
+import { sameValue } from '../../util/same-value.ts';
 import type { LabView, RayHoverDetail } from '../../view/lab-view.ts';
 import type { RayFocus } from '../../view/ray-focus.ts';
 import { badgeName } from '../game/badge-names.ts';
@@ -144,7 +145,10 @@ export class RtLab extends LitElement {
 
   protected override willUpdate(changed: PropertyValues<this>): void {
     this.loadOnDemandPanels();
-    if (changed.has('assignment') && changed.get('assignment') !== undefined && this.isConnected) this.game.start();
+    // Another assignment starts the game again. The one it connected with has started it, and the
+    // same assignment decoded again (a new object) must not: a second start would lose what the
+    // first one read (that the saved record was damaged, say).
+    if (changed.has('assignment') && this.isConnected && !sameValue(this.game.session?.assignment ?? null, this.assignment)) this.game.start();
     if (changed.has('sharedScene') && this.sharedScene) this.game.openSharedScene(this.sharedScene);
     this.closeRenderWindowWhenInTheWay();
   }
