@@ -304,7 +304,13 @@ export class RtLab extends LitElement {
                 ${msg('Render image')}
               </button>`
             : nothing}
-          <rt-progress-menu locale=${locale} ?color-blind=${state.rays.colorBlindPalette} @progress-command=${(event: CustomEvent<ProgressCommand>) => this.game.progress(event.detail)}></rt-progress-menu>
+          <rt-progress-menu
+            locale=${locale}
+            ?color-blind=${state.rays.colorBlindPalette}
+            .saveProblem=${this.game.saveNote}
+            .damagedSaves=${session?.damagedSaves.all ?? []}
+            @progress-command=${(event: CustomEvent<ProgressCommand>) => this.game.progress(event.detail)}
+          ></rt-progress-menu>
           <rt-theme-toggle></rt-theme-toggle>
         </div>
       </header>
@@ -353,7 +359,7 @@ export class RtLab extends LitElement {
         : nothing}
       <rt-guide-ring .locate=${this.ring.locate}></rt-guide-ring>
       ${session?.needsParticipantCode
-        ? html`<rt-participant-dialog heading=${this.assignment?.title ?? ''} @participant-code=${(event: CustomEvent<string>) => session.setParticipantCode(event.detail)}></rt-participant-dialog>`
+        ? html`<rt-participant-dialog heading=${this.assignment?.title ?? ''} note=${this.game.contextNote} @participant-code=${(event: CustomEvent<string>) => session.setParticipantCode(event.detail)}></rt-participant-dialog>`
         : nothing}
     `;
   }
