@@ -337,7 +337,7 @@ test('a damaged save: a message, the old data kept, the game goes on', async ({ 
     localStorage.setItem('rtq.progress', '{"kind": "ray-tracer-quest-progress", broken');
   });
   await page.goto('./');
-  await expect(page.locator('rt-toast')).toContainText('kept as a backup');
+  await expect(page.locator('rt-toast')).toContainText('The saved data as it was is kept: download or restore it from the Menu (Damaged saves).');
   await expect(panel(page).getByRole('heading', { name: 'Introduction' })).toBeVisible();
   const keys = await page.evaluate(() => Object.keys(localStorage));
   expect(keys.some((key) => key.startsWith('rtq.progress.backup.'))).toBe(true);

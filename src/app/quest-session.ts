@@ -2,19 +2,24 @@ import type { Assignment } from '../classroom/assignment.ts';
 import { systemClock, type QuestClock } from '../quest/event-log.ts';
 import { playableLevels, type LevelCatalog } from '../quest/level-index.ts';
 import type { Locale } from '../quest/localized-text.ts';
-import { saveProblemText } from '../i18n/progress-problem-text.ts';
-import { exportProgress, parseProgressJson, PROGRESS_KEY, ProgressStore, replacing, type KeyValueStorage, type ProgressProblem } from '../quest/progress-store.ts';
+import { exportProgress, PROGRESS_KEY, ProgressStore, readProgressJson, replacing, type KeyValueStorage, type ProgressProblem, type SaveProblemKind } from '../quest/progress-store.ts';
 import { holdsAll } from '../quest/progress-merge.ts';
 import type { Progress } from '../quest/progress.ts';
 import { QuestEngine, type OpenLevelResult } from '../quest/quest-engine.ts';
 import { defaultScene } from '../scene/scene-defaults.ts';
-import type { Scene } from '../scene/scene.ts';
 import { assignmentProgressKey } from '../classroom/assignment-id.ts';
-import { isUuid, randomUuid } from '../classroom/learner-identity.ts';
+import { randomUuid } from '../classroom/learner-identity.ts';
+import type { SurveySubmission } from '../classroom/survey-answers.ts';
+import { SurveyStore, surveyKey } from '../classroom/survey-store.ts';
 import { assignmentCatalog } from './assignment-catalog.ts';
+import { DamagedSaves, withRestored } from './damaged-saves.ts';
+import { PendingWrites } from './pending-writes.ts';
+import { loadSessionContext, readContextText, sessionContextKey, type ContextDamage, type SessionContext } from './session-context.ts';
 import { playShowMe, showMeSteps, type ShowMeStage } from './show-me-player.ts';
 import type { Store } from '../lab-state/store.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
+import { SandboxSaver } from './sandbox-saver.ts';
+import { attachToPage } from './session-page.ts';
 import { TaskViews } from './task-views.ts';
 
 /**
@@ -26,26 +31,23 @@ import { TaskViews } from './task-views.ts';
  *   applies its declared view, and each task's view when it becomes current (task-views.ts).
  * - The free lab plays the sandbox scene, saved as the learner edits it.
  * - An assignment gets its own catalog, required tasks, locale and progress key.
- * - A participant code and the playthrough's attempt id live next to the progress, in
- *   `<progress key>.context` (see `readSessionContext`), where the classroom's exports read them.
+ * - A participant code and the playthrough's attempt id live next to the progress
+ *   (session-context.ts), where the classroom's exports read them.
  * - With an assignment that asks for a participant code, nothing starts (no level, no
  *   timing) until the code is given: the time spent typing it is no task's time.
  * - Other tabs of the game share the saved progress: every save merges with theirs, and
  *   when another tab saves (the window's `storage` event, see `attach`) this one takes in
  *   what it did and shows it, and writes back what the other tab's save lacked.
- * - Storage that cannot be written is found at once: the session saves when it starts, so
- *   `saveError` says so on every page load while the trouble lasts.
+ * - Storage that cannot be written is found at once (the session saves when it starts) and
+ *   said by `saveProblem` while it lasts. Nothing is lost meanwhile: the progress is in the
+ *   engine, the session record and survey wait in `PendingWrites`, and every save (each
+ *   change, leaving the page: `attach`) tries again. An import, a reset or a restore
+ *   replaces the progress only once it is written. Damaged saves are listed for the Menu
+ *   (`damagedSaves`) to download, restore or delete.
  */
 
 /** `finished`: an assignment all passed, reopened: its closing screen (the survey, then the end) instead of a level. */
 export type SessionMode = { kind: 'map' } | { kind: 'level'; id: string } | { kind: 'free-lab' } | { kind: 'finished' };
-
-/** What the session keeps besides progress, for the classroom's exports. */
-export interface SessionContext {
-  participantCode: string | null;
-  /** This playthrough's random id (learner-identity.ts); null only in a context saved before attempts had ids. */
-  attemptId: string | null;
-}
 
 export interface QuestSessionOptions {
   store: Store;
@@ -56,31 +58,18 @@ export interface QuestSessionOptions {
   idleHintMs?: number;
 }
 
-/** The free lab keeps the learner's scene once it has rested this long (a drag is many changes). */
-const SANDBOX_SAVE_MS = 1000;
-
-export function sessionContextKey(progressKey: string): string {
-  return `${progressKey}.context`;
-}
-
-/** The participant code and such saved with the progress under `progressKey`. */
-export function readSessionContext(storage: KeyValueStorage, progressKey: string): SessionContext {
-  try {
-    const value: unknown = JSON.parse(storage.getItem(sessionContextKey(progressKey)) ?? 'null');
-    const code = typeof value === 'object' && value !== null && 'participantCode' in value ? value.participantCode : null;
-    const attempt = typeof value === 'object' && value !== null && 'attemptId' in value ? value.attemptId : null;
-    return { participantCode: typeof code === 'string' ? code : null, attemptId: isUuid(attempt) ? attempt : null };
-  } catch {
-    return { participantCode: null, attemptId: null };
-  }
-}
+export type ImportResult = { ok: true; repaired: string[] } | { ok: false; reason: 'unreadable'; errors: string[] } | { ok: false; reason: 'not-saved'; kind: SaveProblemKind };
 
 export class QuestSession {
   readonly catalog: LevelCatalog;
   readonly assignment: Assignment | null;
   readonly progressKey: string;
-  /** Why saved progress could not be used when the session started (for a message), if it could not. */
+  /** Why saved progress could not be used as it was when the session started (for a message), if it could not. */
   readonly problem: ProgressProblem | undefined;
+  /** What of the saved session record (participant code, attempt) could not be read, if any. */
+  readonly contextDamage: ContextDamage | null;
+  /** The Menu's damaged saves of this progress key. */
+  readonly damagedSaves: DamagedSaves;
   private engineNow: QuestEngine;
   private modeNow: SessionMode = { kind: 'map' };
   private readonly store: Store;
@@ -93,10 +82,11 @@ export class QuestSession {
   private stopEngine: () => void = () => {};
   private stopShowMe: () => void = () => {};
   private readonly views = new TaskViews();
-  private sandboxTimer: ReturnType<typeof setTimeout> | undefined;
-  private pendingSandbox: Scene | null = null;
-  private lastSaveError: string | null = null;
+  private readonly sandbox: SandboxSaver;
+  private saveProblemNow: SaveProblemKind | null = null;
+  private readonly writes: PendingWrites;
   private contextNow: SessionContext;
+  private surveyNow: SurveySubmission | null;
   /** `start` was called while the participant code was still needed: it runs again when the code is given. */
   private waitingForCode = false;
 
@@ -109,10 +99,17 @@ export class QuestSession {
     this.catalog = this.assignment ? assignmentCatalog(options.catalog, this.assignment) : options.catalog;
     this.progressKey = this.assignment ? assignmentProgressKey(this.assignment) : PROGRESS_KEY;
     this.progress = new ProgressStore(this.storage, this.clock, this.progressKey);
-    this.contextNow = readSessionContext(this.storage, this.progressKey);
+    this.sandbox = new SandboxSaver(this.clock, (scene) => this.engineNow.saveSandbox(scene));
+    this.writes = new PendingWrites(this.storage, () => this.clock.wallMs());
+    const context = loadSessionContext(this.storage, this.progressKey, this.clock.wallMs());
+    this.contextNow = context.context;
+    this.contextDamage = context.damage;
+    if (context.damage && context.damage.backupKey === null) this.writes.hold(sessionContextKey(this.progressKey), context.damage.raw);
     if (this.contextNow.attemptId === null) this.saveContext({ ...this.contextNow, attemptId: randomUuid() });
+    this.surveyNow = new SurveyStore(this.storage, this.progressKey).load();
     const loaded = this.progress.load();
     this.problem = loaded.problem;
+    this.damagedSaves = new DamagedSaves(this.storage, this.progress, this.writes, this.progressKey, sessionContextKey(this.progressKey));
     this.engineNow = this.makeEngine(loaded.progress);
     this.listenTo(this.engineNow);
     if (this.assignment && this.engineNow.progress.settings.locale !== this.assignment.locale) {
@@ -124,7 +121,9 @@ export class QuestSession {
     this.cleanup.push(this.store.subscribe((state, action, error, live) => {
       this.engineNow.observe(state, action, error, live);
       this.keepPalette(state);
-      if (this.modeNow.kind === 'free-lab' && action.type !== 'scene.loaded') this.keepSandbox(state.scene);
+      if (this.modeNow.kind !== 'free-lab') return;
+      if (action.type === 'scene.loaded') this.sandbox.loaded(state.scene);
+      else this.sandbox.keep(state.scene, live === true);
     }));
   }
 
@@ -144,9 +143,14 @@ export class QuestSession {
     return this.contextNow;
   }
 
-  /** The last reason progress could not be saved, until a save works again. */
-  get saveError(): string | null {
-    return this.lastSaveError;
+  /** Why the last save failed (progress, session record or survey), until a save works again. */
+  get saveProblem(): SaveProblemKind | null {
+    return this.saveProblemNow;
+  }
+
+  /** The closing survey's answers, once handed in (kept in memory when they could not be written yet). */
+  get survey(): SurveySubmission | null {
+    return this.surveyNow;
   }
 
   /** Whether the start should ask for a participant code (an assignment that wants one, none given yet). */
@@ -250,12 +254,7 @@ export class QuestSession {
 
   /** The learner's code; a start that waited for it (see `start`) goes on now. */
   setParticipantCode(code: string): void {
-    this.saveContext({ ...this.contextNow, participantCode: code });
-    if (this.waitingForCode) {
-      this.waitingForCode = false;
-      this.start();
-    }
-    this.notify();
+    this.changeContext({ ...this.contextNow, participantCode: code });
   }
 
   /** The text of a progress file to download. */
@@ -263,20 +262,56 @@ export class QuestSession {
     return exportProgress(this.engineNow.progress);
   }
 
-  /** Replaces the progress with an imported file's, when it is valid; the reasons when not (nothing changes then). */
-  importText(text: string): { ok: true } | { ok: false; errors: string[] } {
-    const parsed = parseProgressJson(text);
-    if (!parsed.ok) return { ok: false, errors: parsed.errors };
-    this.replaceEngine(this.makeEngine(replacing(parsed.progress, this.engineNow.progress, this.clock)));
-    this.save();
-    return { ok: true };
+  /**
+   * Replaces the progress with an imported file's, its damaged parts left out (`repaired`).
+   * Nothing changes when the file cannot be read or cannot be written to storage.
+   */
+  importText(text: string): ImportResult {
+    const read = readProgressJson(text, new Date(this.clock.wallMs()).toISOString());
+    if (!read.ok) return { ok: false, reason: 'unreadable', errors: read.errors };
+    const problem = this.replaceProgress(replacing(read.progress, this.engineNow.progress, this.clock));
+    return problem ? { ok: false, reason: 'not-saved', kind: problem } : { ok: true, repaired: read.repaired };
   }
 
-  /** Forgets all progress (the UI has asked) and starts afresh on the map: a new attempt. */
-  reset(): void {
-    this.saveContext({ ...this.contextNow, attemptId: randomUuid() });
-    this.replaceEngine(this.makeEngine(this.progress.reset(this.engineNow.progress)));
-    this.save();
+  /** Forgets all progress (the UI has asked) and starts afresh on the map: a new attempt. Null when done, else why not. */
+  reset(): SaveProblemKind | null {
+    const problem = this.replaceProgress(this.progress.reset(this.engineNow.progress));
+    if (!problem) this.changeContext({ ...this.contextNow, attemptId: randomUuid() });
+    return problem;
+  }
+
+  /** The closing survey's answers: kept, and written now or at a later save. Null when written, else why not (yet). */
+  submitSurvey(answers: SurveySubmission): SaveProblemKind | null {
+    this.surveyNow = answers;
+    this.writes.put(surveyKey(this.progressKey), JSON.stringify(answers));
+    const problem = this.save();
+    this.notify();
+    return this.writes.waiting(surveyKey(this.progressKey)) ? (problem ?? 'storage-blocked') : null;
+  }
+
+  /**
+   * Takes a damaged save's contents back: a progress backup's tasks, badges and events join
+   * the progress (damaged-saves.ts withRestored); a session record's code and attempt come
+   * back. Its parts this version cannot read are reported, and nothing changes when none can.
+   */
+  restoreBackup(key: string): ImportResult {
+    const text = this.damagedSaves.text(key);
+    if (text === null) return { ok: false, reason: 'unreadable', errors: [] };
+    if (this.damagedSaves.what(key) === 'session') return this.restoreContext(text);
+    const read = readProgressJson(text, new Date(this.clock.wallMs()).toISOString());
+    if (!read.ok) return { ok: false, reason: 'unreadable', errors: read.errors };
+    const current = this.engineNow.progress;
+    const problem = this.replaceProgress(replacing(withRestored(current, read.progress), current, this.clock));
+    return problem ? { ok: false, reason: 'not-saved', kind: problem } : { ok: true, repaired: read.repaired };
+  }
+
+  /**
+   * Saves what is not saved yet: the sandbox scene still resting, and writes that failed.
+   * For leaving the page, and after the learner downloaded a held damaged save (damaged-saves.ts).
+   */
+  flush(): void {
+    this.sandbox.flush();
+    if (this.saveProblemNow !== null || this.writes.anyWaiting) this.save();
   }
 
   /**
@@ -292,37 +327,9 @@ export class QuestSession {
     if (!saved || !holdsAll(saved, this.engineNow.progress)) this.save();
   }
 
-  /**
-   * Follows the tab's visibility (hidden time is not idle time) and ticks the engine once a
-   * second, only while a level is open and the tab is seen, so a hint can be offered after
-   * idle time. Listens for other tabs' saves (`storage` events of this session's storage).
-   */
+  /** Follows the page: visibility, idle ticks, other tabs' saves, leaving (session-page.ts). */
   attach(document: Document): () => void {
-    let timer: ReturnType<typeof setInterval> | undefined;
-    const update = () => {
-      const visible = document.visibilityState === 'visible';
-      this.engineNow.visibilityChanged(visible);
-      const ticking = visible && this.modeNow.kind === 'level';
-      if (ticking && timer === undefined) timer = setInterval(() => this.engineNow.tick(), 1000);
-      if (!ticking && timer !== undefined) {
-        clearInterval(timer);
-        timer = undefined;
-      }
-    };
-    const unsubscribe = this.subscribe(update);
-    document.addEventListener('visibilitychange', update);
-    const onStorage = (event: StorageEvent) => {
-      if (event.storageArea === this.storage) this.storageChanged(event.key);
-    };
-    const window = document.defaultView;
-    window?.addEventListener('storage', onStorage);
-    update();
-    return () => {
-      unsubscribe();
-      document.removeEventListener('visibilitychange', update);
-      window?.removeEventListener('storage', onStorage);
-      clearInterval(timer);
-    };
+    return attachToPage(this, document, this.storage);
   }
 
   dispose(): void {
@@ -375,7 +382,7 @@ export class QuestSession {
   private leaveMode(): void {
     this.stopShowMe();
     this.views.closed();
-    this.flushSandbox();
+    this.sandbox.flush();
   }
 
   /**
@@ -393,38 +400,63 @@ export class QuestSession {
     if (this.store.state.rays.colorBlindPalette !== colorBlindPalette) this.store.dispatch({ type: 'rays.changed', changes: { colorBlindPalette } });
   }
 
+  /** The session record, written at the next save. */
   private saveContext(context: SessionContext): void {
     this.contextNow = context;
-    try {
-      this.storage.setItem(sessionContextKey(this.progressKey), JSON.stringify(context));
-    } catch {
-      // Kept for this visit; the progress save reports the storage problem.
-    }
+    this.writes.put(sessionContextKey(this.progressKey), JSON.stringify(context));
   }
 
-  /** Saves, merged with other tabs' progress, and takes in what they had added. */
-  private save(): void {
+  /** A new code or attempt, saved; a start that waited for the code goes on. */
+  private changeContext(context: SessionContext): void {
+    this.saveContext(context);
+    this.save();
+    if (this.waitingForCode && !this.needsParticipantCode) {
+      this.waitingForCode = false;
+      this.start();
+    }
+    this.notify();
+  }
+
+  /** A session record's backup: what can be read of its code and attempt replaces what is missing or new. */
+  private restoreContext(text: string): ImportResult {
+    const { context } = readContextText(text);
+    if (context.participantCode === null && context.attemptId === null) return { ok: false, reason: 'unreadable', errors: [] };
+    this.changeContext({ participantCode: context.participantCode ?? this.contextNow.participantCode, attemptId: context.attemptId ?? this.contextNow.attemptId });
+    return { ok: true, repaired: [] };
+  }
+
+  /**
+   * Saves, merged with other tabs' progress, and takes in what they had added; then writes
+   * the session record and survey if they wait. Returns why a write failed, or null.
+   */
+  private save(): SaveProblemKind | null {
     const result = this.progress.save(this.engineNow.progress);
-    this.lastSaveError = result.ok ? null : saveProblemText(result.kind);
+    const others = this.writes.flush();
+    const held = this.damagedSaves.all.some((save) => save.held);
+    this.saveProblemNow = result.ok ? others : result.kind;
+    // A held damaged save may have been backed up by this save: the Menu's list follows.
+    if (held) this.damagedSaves.refresh();
     if (result.ok) this.takeIn(result.saved);
+    return this.saveProblemNow;
+  }
+
+  /**
+   * An import, a reset or a restore: `candidate` (of a new epoch) is written first and
+   * replaces the progress only when it is (a file too large for the storage changes nothing).
+   */
+  private replaceProgress(candidate: Progress): SaveProblemKind | null {
+    this.sandbox.flush();
+    const result = this.progress.save(candidate);
+    if (!result.ok) return result.kind;
+    this.replaceEngine(this.makeEngine(result.saved));
+    this.save();
+    return null;
   }
 
   /** Progress saved by another tab joins ours (absorb tells the listeners, which saves again: the merge is then a no-op). */
   private takeIn(saved: Progress): void {
     if ((saved.epoch ?? '') > (this.engineNow.progress.epoch ?? '')) this.replaceEngine(this.makeEngine(saved));
     else this.engineNow.absorb(saved);
-  }
-
-  private keepSandbox(scene: Scene): void {
-    clearTimeout(this.sandboxTimer);
-    this.sandboxTimer = setTimeout(() => this.flushSandbox(), SANDBOX_SAVE_MS);
-    this.pendingSandbox = scene;
-  }
-
-  private flushSandbox(): void {
-    clearTimeout(this.sandboxTimer);
-    if (this.pendingSandbox) this.engineNow.saveSandbox(this.pendingSandbox);
-    this.pendingSandbox = null;
   }
 
   private notify(): void {

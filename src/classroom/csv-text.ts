@@ -2,7 +2,10 @@
  * CSV text (RFC 4180) in both directions: the dashboard reads learners' CSV exports and
  * writes the class's combined CSV. Fields with a comma, quote or line break are quoted;
  * a field that a spreadsheet would run as a formula (=, +, -, @ first) is prefixed with
- * an apostrophe, because participant codes and free text are typed by learners.
+ * an apostrophe, because participant codes and free text are typed by learners. The check
+ * reads the field as NFKC (Unicode compatibility form), so that the full-width and small
+ * forms (＝ ＋ － ＠, ﹦ ﹢ ﹣ ﹫), which some spreadsheets read as the ASCII signs, are
+ * caught too.
  */
 
 const NEEDS_QUOTES = /[",\r\n]/;
@@ -15,7 +18,7 @@ const FORMULA_START = /^[=+\-@\t\r]/;
 export function csvField(value: string | number | boolean | null, quoted = false): string {
   if (value === null) return '';
   if (typeof value !== 'string') return String(value);
-  const safe = FORMULA_START.test(value) ? `'${value}` : value;
+  const safe = FORMULA_START.test(value.normalize('NFKC')) ? `'${value}` : value;
   return quoted || NEEDS_QUOTES.test(safe) ? `"${safe.replaceAll('"', '""')}"` : safe;
 }
 

@@ -22,6 +22,9 @@ export interface LearnerIdentity {
 
 export const INSTALL_ID_KEY = 'rtq.install-id';
 
+/** Codes are short labels a teacher hands out ("A17", "group-3"): nothing personal is asked. */
+export const PARTICIPANT_CODE = /^[\p{L}\p{N}_-]{1,32}$/u;
+
 const UUID = /^[0-9a-f]{8}-[0-9a-f]{4}-4[0-9a-f]{3}-[89ab][0-9a-f]{3}-[0-9a-f]{12}$/;
 
 export function isUuid(text: unknown): text is string {

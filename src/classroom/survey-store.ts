@@ -3,13 +3,16 @@ import { readJson } from '../util/read-json.ts';
 import { isRecord } from '../util/is-record.ts';
 import type { SurveySubmission } from './survey-answers.ts';
 
+/** Where a learner's survey answers are kept: next to their progress, under its key plus `.survey`. */
+export function surveyKey(progressKey: string): string {
+  return `${progressKey}.survey`;
+}
+
 /**
- * Keeps a learner's survey answers next to their progress, under its key plus `.survey`,
- * so an assignment's answers are kept apart from free play's just like its progress, and
- * the exports find them after a reload.
- *
- * Saving never throws: storage that refuses (full, blocked) returns false, and the caller
- * keeps the answers in memory, where the exports still find them.
+ * Reads a learner's survey answers, kept next to their progress (surveyKey), so an
+ * assignment's answers are kept apart from free play's just like its progress, and the
+ * exports find them after a reload. The quest session writes them (and keeps them in memory
+ * while storage refuses: src/app/pending-writes.ts).
  */
 export class SurveyStore {
   private readonly key: string;
@@ -19,7 +22,7 @@ export class SurveyStore {
     private readonly storage: KeyValueStorage,
     progressKey: string,
   ) {
-    this.key = `${progressKey}.survey`;
+    this.key = surveyKey(progressKey);
   }
 
   /** The saved submission, or null when there is none or it cannot be read. */
@@ -35,14 +38,5 @@ export class SurveyStore {
     const answers: SurveySubmission['answers'] = {};
     for (const [id, answer] of Object.entries(value.answers)) if (typeof answer === 'string' || typeof answer === 'number') answers[id] = answer;
     return { survey: value.survey, submittedAt: value.submittedAt, answers };
-  }
-
-  save(submission: SurveySubmission): boolean {
-    try {
-      this.storage.setItem(this.key, JSON.stringify(submission));
-      return true;
-    } catch {
-      return false;
-    }
   }
 }

@@ -4,67 +4,62 @@ import { isRecord } from '../util/is-record.ts';
 import { newEpoch, newProgress, PROGRESS_KIND, PROGRESS_VERSION, progressSchema, type Progress } from './progress.ts';
 import { mergeProgress } from './progress-merge.ts';
 import { readJson } from '../util/read-json.ts';
+import { salvageProgress } from './progress-salvage.ts';
+import { isQuotaError, writeBackup, type KeyValueStorage } from './saved-backups.ts';
 
 /**
  * Saves progress between visits (localStorage in the browser) and reads it back. Saved data
- * that cannot be used (damaged, from another app, from another version) never ends in a
- * blank screen: the learner starts afresh with a message, and the old text is kept under a
- * backup key (and handed to the UI, to offer it as a download).
+ * that cannot be used as it was never ends in a blank screen and is never lost:
+ *
+ * - a damaged part is left out and the rest kept (progress-salvage.ts); data that cannot be
+ *   read at all (not JSON, from another app or version) gives a fresh start;
+ * - either way the old text is kept under a backup key (saved-backups.ts) and handed to the
+ *   UI, to offer it as a download;
+ * - when there is no room for the backup, the old text stays where it is: nothing is saved
+ *   over it (`save` says `damaged-held`) until it is backed up or the learner has downloaded
+ *   it (`release`).
  *
  * Several tabs share one saved progress: a save merges with what is saved (progress-merge.ts)
  * instead of writing over it, and `read()` lets a tab that heard of another's write merge it.
  */
 
-/** What the store needs of localStorage, so that tests and blocked browsers can use a Map. */
-export interface KeyValueStorage {
-  getItem(key: string): string | null;
-  setItem(key: string, value: string): void;
-  removeItem(key: string): void;
-}
-
-/** A storage that lives as long as the page: for tests, and for browsers that block localStorage. */
-export class MemoryStorage implements KeyValueStorage {
-  private readonly items = new Map<string, string>();
-
-  getItem(key: string): string | null {
-    return this.items.get(key) ?? null;
-  }
-
-  setItem(key: string, value: string): void {
-    this.items.set(key, value);
-  }
-
-  removeItem(key: string): void {
-    this.items.delete(key);
-  }
-}
+export { MemoryStorage, type KeyValueStorage } from './saved-backups.ts';
 
 /** Free play's key; a teacher's assignment keeps its progress apart under a key of its own. */
 export const PROGRESS_KEY = 'rtq.progress';
 
-export type ProgressProblemKind = 'damaged' | 'foreign' | 'other-version' | 'unreadable-storage';
+/** `repaired`: damaged parts were left out, the rest is kept; the others start afresh. */
+export type ProgressProblemKind = 'repaired' | 'damaged' | 'foreign' | 'other-version' | 'unreadable-storage';
 
-/** Why saved progress could not be used, and where the old data went. */
+/** Why saved progress could not be used as it was, and where the old data went. */
 export interface ProgressProblem {
   /** What went wrong; the UI words it for the learner, in their language (src/i18n/progress-problem-text.ts). */
   kind: ProgressProblemKind;
-  /** The `path: reason` lines, for the curious and for bug reports. */
+  /** The `path: reason` lines (for `repaired`: what was left out), for the curious and for bug reports. */
   reasons: string[];
-  /** Where the old text was kept, or null when it could not be kept. */
+  /** Where the old text was kept, or null when it could not be (then it is held: see the class comment). */
   backupKey: string | null;
   /** The old text itself, for the UI to offer as a download. */
   raw: string | null;
 }
 
 export type LoadedProgress = { progress: Progress; problem?: ProgressProblem };
-/** Why a save failed: the storage is full, or the browser does not let the app write at all. */
-export type SaveProblemKind = 'storage-full' | 'storage-blocked';
+/**
+ * Why a save failed: the storage is full, the browser does not let the app write at all, or
+ * damaged saved data that could not be backed up would be written over.
+ */
+export type SaveProblemKind = 'storage-full' | 'storage-blocked' | 'damaged-held';
 /** `saved`: what is in storage now, ours merged with what other tabs had saved. */
 export type SaveResult = { ok: true; saved: Progress } | { ok: false; kind: SaveProblemKind };
-type ParseProblemKind = Exclude<ProgressProblemKind, 'unreadable-storage'>;
+type ParseProblemKind = 'damaged' | 'foreign' | 'other-version';
 export type ProgressParseResult = { ok: true; progress: Progress } | { ok: false; kind: ParseProblemKind; errors: string[] };
+/** Progress read with its damaged parts left out: `repaired` lists them (empty when nothing was). */
+export type ProgressRead = { ok: true; progress: Progress; repaired: string[] } | { ok: false; kind: ParseProblemKind; errors: string[] };
 
 export class ProgressStore {
+  /** Damaged text still under the progress key because no backup of it could be written. */
+  private heldText: string | null = null;
+
   constructor(
     private readonly storage: KeyValueStorage,
     private readonly clock: QuestClock,
@@ -77,22 +72,26 @@ export class ProgressStore {
       raw = this.storage.getItem(this.key);
     } catch (error) {
       const reason = error instanceof Error ? error.message : String(error);
-      return this.fresh({ kind: 'unreadable-storage', reasons: [reason], backupKey: null, raw: null });
+      return { progress: newProgress(this.clock), problem: { kind: 'unreadable-storage', reasons: [reason], backupKey: null, raw: null } };
     }
     if (raw === null) return { progress: newProgress(this.clock) };
-    const parsed = parseProgressJson(raw);
-    if (parsed.ok) return { progress: parsed.progress };
-    const backupKey = this.backUp(raw);
-    return this.fresh({ kind: parsed.kind, reasons: parsed.errors, backupKey, raw });
+    const read = readProgressJson(raw, this.nowIso());
+    if (read.ok && read.repaired.length === 0) return { progress: read.progress };
+    const backupKey = writeBackup(this.storage, this.key, raw, this.clock.wallMs());
+    if (backupKey === null) this.heldText = raw;
+    const problem: ProgressProblem = read.ok
+      ? { kind: 'repaired', reasons: read.repaired, backupKey, raw }
+      : { kind: read.kind, reasons: read.errors, backupKey, raw };
+    return { progress: read.ok ? read.progress : newProgress(this.clock), problem };
   }
 
-  /** The saved progress when it can be used, else null (for merging; load() reports problems). */
+  /** The saved progress when it can be used (its damaged parts left out), else null (for merging; load() reports problems). */
   read(): Progress | null {
     try {
       const raw = this.storage.getItem(this.key);
       if (raw === null) return null;
-      const parsed = parseProgressJson(raw);
-      return parsed.ok ? parsed.progress : null;
+      const read = readProgressJson(raw, this.nowIso());
+      return read.ok ? read.progress : null;
     } catch {
       return null;
     }
@@ -100,19 +99,32 @@ export class ProgressStore {
 
   /**
    * Saves `progress` merged with what is saved (another tab's work), or says why not: the
-   * caller keeps the progress in memory either way. Saved data that cannot be read was
-   * backed up by load() and is written over.
+   * caller keeps the progress in memory either way and saves again later. Damaged saved
+   * data is written over only once it is backed up (load() or the retry here) or released.
    */
   save(progress: Progress): SaveResult {
+    if (this.heldText !== null) {
+      if (writeBackup(this.storage, this.key, this.heldText, this.clock.wallMs()) === null) return { ok: false, kind: 'damaged-held' };
+      this.heldText = null;
+    }
     const stored = this.read();
     const saved = stored ? mergeProgress(progress, stored) : progress;
     try {
       this.storage.setItem(this.key, JSON.stringify(saved));
       return { ok: true, saved };
     } catch (error) {
-      const full = error instanceof Error && (error.name === 'QuotaExceededError' || error.name === 'NS_ERROR_DOM_QUOTA_REACHED');
-      return { ok: false, kind: full ? 'storage-full' : 'storage-blocked' };
+      return { ok: false, kind: isQuotaError(error) ? 'storage-full' : 'storage-blocked' };
     }
+  }
+
+  /** The damaged text that is held (not yet backed up, not to be written over), or null. */
+  get held(): string | null {
+    return this.heldText;
+  }
+
+  /** The learner has the held text (downloaded): saves may write over it now. */
+  release(): void {
+    this.heldText = null;
   }
 
   /**
@@ -124,20 +136,8 @@ export class ProgressStore {
     return replacing(newProgress(this.clock), before, this.clock);
   }
 
-  private fresh(problem: ProgressProblem): LoadedProgress {
-    return { progress: newProgress(this.clock), problem };
-  }
-
-  /** Keeps `raw` under a key of its own (never over an older backup); null when storage refuses. */
-  private backUp(raw: string): string | null {
-    const backupKey = `${this.key}.backup.${new Date(this.clock.wallMs()).toISOString()}`;
-    try {
-      if (this.storage.getItem(backupKey) !== null) return null;
-      this.storage.setItem(backupKey, raw);
-      return backupKey;
-    } catch {
-      return null;
-    }
+  private nowIso(): string {
+    return new Date(this.clock.wallMs()).toISOString();
   }
 }
 
@@ -158,6 +158,20 @@ export function parseProgress(input: unknown): ProgressParseResult {
 export function parseProgressJson(text: string): ProgressParseResult {
   const json = readJson(text);
   return json.ok ? parseProgress(json.value) : { ok: false, kind: 'damaged', errors: [json.error] };
+}
+
+/**
+ * Progress from the text of storage, an imported file or a backup, keeping what can be kept:
+ * strictly checked first, then, when only some of its parts are damaged, with those left out
+ * (`repaired` lists them). Text that is not progress of this version is refused as by parseProgress.
+ */
+export function readProgressJson(text: string, nowIso: string): ProgressRead {
+  const json = readJson(text);
+  if (!json.ok) return { ok: false, kind: 'damaged', errors: [json.error] };
+  const strict = parseProgress(json.value);
+  if (strict.ok) return { ...strict, repaired: [] };
+  const salvaged = strict.kind === 'damaged' && isRecord(json.value) ? salvageProgress(json.value, nowIso) : null;
+  return salvaged ? { ok: true, progress: salvaged.progress, repaired: salvaged.notes } : strict;
 }
 
 /** `progress` as the one that replaces `before` and all saved earlier (an import, a reset): a new epoch. */

@@ -1,6 +1,7 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { initialState } from '../../src/lab-state/lab-state.ts';
-import { QuestSession, readSessionContext } from '../../src/app/quest-session.ts';
+import { QuestSession } from '../../src/app/quest-session.ts';
+import { readSessionContext } from '../../src/app/session-context.ts';
 import type { ShowMeStage } from '../../src/app/show-me-player.ts';
 import { Store } from '../../src/lab-state/store.ts';
 import type { Assignment } from '../../src/classroom/assignment.ts';
@@ -45,7 +46,7 @@ describe('the quest session', () => {
     // A progress file without it (the default palette) brings the default back.
     const file = JSON.parse(next.session.exportText());
     file.settings.colorBlindPalette = false;
-    expect(next.session.importText(JSON.stringify(file))).toEqual({ ok: true });
+    expect(next.session.importText(JSON.stringify(file))).toEqual({ ok: true, repaired: [] });
     expect(next.store.state.rays.colorBlindPalette).toBe(false);
   });
 
@@ -98,10 +99,10 @@ describe('the quest session', () => {
     storage.setItem = () => {
       throw new DOMException('quota', 'QuotaExceededError');
     };
-    expect(session(storage).session.saveError).toMatch(/^The browser's storage is full, so progress is not saved/);
-    expect(session(storage).session.saveError).toMatch(/storage is full/);
+    expect(session(storage).session.saveProblem).toBe('storage-full');
+    expect(session(storage).session.saveProblem).toBe('storage-full');
     storage.setItem = setItem;
-    expect(session(storage).session.saveError).toBeNull();
+    expect(session(storage).session.saveProblem).toBeNull();
   });
 
   it('imports a valid progress file, refuses another, and resets', () => {
@@ -113,17 +114,34 @@ describe('the quest session', () => {
     expect(game.engine.points).toBe(0);
     expect(game.importText('{"kind": "something else"}')).toMatchObject({ ok: false });
     expect(game.engine.points).toBe(0);
-    expect(game.importText(file)).toEqual({ ok: true });
+    expect(game.importText(file)).toEqual({ ok: true, repaired: [] });
     expect(game.engine.points).toBe(10);
   });
 
-  it('keeps the free lab scene as the sandbox once edits rest', () => {
-    const { store, session: game } = session();
+  it('keeps the free lab scene as the sandbox: a settled edit at once, a dragged value once it rests', () => {
+    const { store, storage, session: game } = session();
+    game.openFreeLab();
+    store.dispatch({ type: 'view.orbited' });
+    expect(game.engine.progress.sandbox).toBeNull(); // orbiting is no edit
+    store.dispatch({ type: 'object.added', shape: 'sphere' });
+    expect(game.engine.progress.sandbox).toBe(store.state.scene);
+    expect(saved(storage).sandbox.objects).toHaveLength(store.state.scene.objects.length);
+    const id = store.state.scene.objects.at(-1)!.id;
+    vi.advanceTimersByTime(1000);
+    store.dispatch({ type: 'object.changed', id, changes: { position: [1, 2, 3] } }, { live: true });
+    expect(saved(storage).sandbox.objects.at(-1).position).not.toEqual([1, 2, 3]);
+    vi.advanceTimersByTime(1000);
+    expect(saved(storage).sandbox.objects.at(-1).position).toEqual([1, 2, 3]);
+  });
+
+  it('saves a waiting sandbox edit when the page is left, before it rests', () => {
+    const { store, storage, session: game } = session();
     game.openFreeLab();
     store.dispatch({ type: 'object.added', shape: 'sphere' });
-    expect(game.engine.progress.sandbox).toBeNull();
-    vi.advanceTimersByTime(1000);
-    expect(game.engine.progress.sandbox).toBe(store.state.scene);
+    const id = store.state.scene.objects.at(-1)!.id;
+    store.dispatch({ type: 'object.changed', id, changes: { position: [4, 5, 6] } }, { live: true });
+    game.flush();
+    expect(saved(storage).sandbox.objects.at(-1).position).toEqual([4, 5, 6]);
   });
 
   it('changes the level texts language', () => {

@@ -92,11 +92,14 @@ describe('the app language at run time', () => {
 
   it("words the progress store's problems in the learner's language", async () => {
     const problem: ProgressProblem = { kind: 'damaged', reasons: [], backupKey: 'rtq.progress.backup.1', raw: '{' };
+    const repaired: ProgressProblem = { kind: 'repaired', reasons: ['settings.locale: must be one of en, nl, got "fr" (default)'], backupKey: null, raw: '{}' };
     await locale.useLocale('nl');
-    expect(progressProblemText(problem)).toBe(
-      'Je opgeslagen voortgang is beschadigd en kon niet worden gelezen. Je begint weer vanaf het begin. De oude gegevens zijn bewaard als reservekopie (rtq.progress.backup.1).',
+    expect(progressProblemText(problem, 0)).toBe(
+      'Je opgeslagen voortgang is beschadigd en kon niet worden gelezen. Je begint weer vanaf het begin. De opgeslagen gegevens zijn bewaard zoals ze waren: download of herstel ze via het Menu (Beschadigde gegevens).',
     );
+    expect(progressProblemText(repaired, 40)).toMatch(/^Een deel van je opgeslagen voortgang was beschadigd; wat beschadigd was, is weggelaten \(1: settings\.locale\); de rest is bewaard: 40 punten\. Er is geen ruimte om een kopie te bewaren/);
     await locale.useLocale('en');
-    expect(progressProblemText(problem)).toMatch(/^Your saved progress is damaged/);
+    expect(progressProblemText(problem, 0)).toMatch(/^Your saved progress is damaged/);
+    expect(progressProblemText(repaired, 40)).toMatch(/^Part of your saved progress was damaged, and what was damaged is left out \(1: settings\.locale\); the rest is kept: 40 points\. There is no room/);
   });
 });

@@ -61,7 +61,6 @@ describe('recovering from saved data that cannot be used', () => {
     { name: 'truncated JSON', saved: JSON.stringify(newProgress(new FakeClock())).slice(0, 60), kind: 'damaged', reason: /^\(root\): not valid JSON/ },
     { name: 'another app\'s data', saved: JSON.stringify({ theme: 'dark' }), kind: 'foreign', reason: /^kind: must be "ray-tracer-quest-progress" in a progress file, got "kind" nothing$/ },
     { name: 'a newer version', saved: JSON.stringify({ ...newProgress(new FakeClock()), version: 2 }), kind: 'other-version', reason: /^version: this app reads progress version 1, got 2$/ },
-    { name: 'a damaged field', saved: JSON.stringify({ ...newProgress(new FakeClock()), levels: { first: { tasks: { orbit: { how: 'guessed', points: -1 } }, hintsUsed: 0 } } }), kind: 'damaged', reason: /^levels\.first\.tasks\.orbit\.how: must be one of done, shown, skipped, got "guessed"$/ },
   ];
 
   const opening: Record<string, RegExp> = {
@@ -75,8 +74,9 @@ describe('recovering from saved data that cannot be used', () => {
       const { problem } = loaded;
       expect(problem?.kind).toBe(kind);
       expect(problem?.reasons[0]).toMatch(reason);
-      expect(problem && progressProblemText(problem)).toMatch(opening[kind]);
-      expect(problem && progressProblemText(problem)).toMatch(/You start from the beginning\. The old data is kept as a backup \(rtq\.progress\.backup\.2025-03-01T09:00:00\.000Z\)\.$/);
+      expect(problem && progressProblemText(problem, 0)).toMatch(opening[kind]);
+      expect(problem && progressProblemText(problem, 0)).toMatch(/You start from the beginning\. The saved data as it was is kept: download or restore it from the Menu \(Damaged saves\)\.$/);
+      expect(problem?.backupKey).toBe('rtq.progress.backup.2025-03-01T09:00:00.000Z');
       expect(problem?.raw).toBe(saved);
       expect(storage.getItem(problem?.backupKey ?? '')).toBe(saved);
       expect(loaded.progress.levels).toEqual({});
@@ -93,7 +93,7 @@ describe('recovering from saved data that cannot be used', () => {
     const { problem } = store.load(); // same clock reading: the backup key is taken
     expect(problem?.backupKey).toBeNull();
     expect(problem?.raw).toBe('second damage');
-    expect(problem && progressProblemText(problem)).toMatch(/could not be kept in the browser: download it now/);
+    expect(problem && progressProblemText(problem, 0)).toMatch(/no room to keep a copy of the saved data as it was, so nothing is saved over it until you download it from the Menu/);
     expect(storage.getItem(`${PROGRESS_KEY}.backup.2025-03-01T09:00:00.000Z`)).toBe('first damage');
   });
 
@@ -104,15 +104,17 @@ describe('recovering from saved data that cannot be used', () => {
       },
       setItem: () => {},
       removeItem: () => {},
+      length: 0,
+      key: () => null,
     };
     const { problem, progress } = new ProgressStore(blocked, new FakeClock()).load();
     expect(problem).toMatchObject({ kind: 'unreadable-storage', reasons: ['The operation is insecure.'], backupKey: null, raw: null });
-    expect(problem && progressProblemText(problem)).toMatch(/^This browser does not let the app read its storage, so progress lasts only while this page is open\./);
+    expect(problem && progressProblemText(problem, 0)).toMatch(/^This browser does not let the app read its storage, so progress lasts only while this page is open\./);
     expect(progress.levels).toEqual({});
   });
 
   const refusals = [
-    { name: 'full storage', error: 'QuotaExceededError', kind: 'storage-full', text: /^The browser's storage is full, so progress is not saved\. It is kept while this page is open: export it to keep it\.$/ },
+    { name: 'full storage', error: 'QuotaExceededError', kind: 'storage-full', text: /^The browser's storage is full, so progress is not saved\. It is kept while this page is open and saved as soon as there is room: export it \(Menu\) to be safe\.$/ },
     { name: 'storage that refuses every write', error: 'SecurityError', kind: 'storage-blocked', text: /^The browser does not let the app save, so progress is not saved\./ },
   ] as const;
   for (const { name, error, kind, text } of refusals) {

@@ -168,7 +168,7 @@ export class RtSurvey extends LitElement {
   override render() {
     const survey = this.survey;
     if (!survey) return html`<p class="problem" role="alert">${msg(str`The survey "${this.surveyId}" is not part of this version of the game.`)}</p>`;
-    if (this.submitted) return html`<h2>${this.text(survey.title)}</h2><p role="status">${msg('Thank you! Your answers are saved with your results.')}</p>`;
+    if (this.submitted) return html`<h2>${this.text(survey.title)}</h2><p role="status">${msg('Thank you for your answers.')}</p>`;
     const count = Object.keys(this.problems).length;
     return html`
       <form @submit=${this.submit} novalidate>

@@ -7,29 +7,47 @@ interface Toast {
   tone: 'info' | 'error';
 }
 
-/** How long a message stays: long enough to read two lines at school-reading speed. */
+/** How long a message stays at least: long enough to read two lines at school-reading speed. */
 const SHOW_MS = 6000;
+/** …and longer for a longer one: about 1,000 characters a minute, a slow reader's pace. */
+const MS_PER_CHARACTER = 60;
 
 /**
- * @summary Short messages at the bottom of the view: a refused change ("settings.supersampling:
+ * @summary Short messages at the bottom of the page: a refused change ("settings.supersampling:
  * must be between 1 and 8, got 40"), a broken file, a hint that something happened.
- * Announced to screen readers (role=status / alert).
+ * Announced to screen readers: two live regions that are always there (role=status for
+ * news, role=alert for problems), so that a message added to them is read out.
+ *
+ * Above everything: the element is a manual popover, in the browser's top layer, where it
+ * is put again on top each time a message comes, above the level map, the Menu and a dialog
+ * opened before it.
  */
 export class RtToast extends LitElement {
   static override properties = { toasts: { state: true } };
 
   static override styles = css`
     :host {
-      position: absolute;
-      left: 50%;
-      bottom: calc(var(--rt-space) * 2);
+      position: fixed;
+      inset: auto auto calc(var(--rt-space) * 2) 50%;
       transform: translateX(-50%);
+      margin: 0;
+      padding: 0;
+      border: 0;
+      background: transparent;
+      overflow: visible;
+      pointer-events: none;
+      width: max-content;
+      max-width: min(560px, 90vw);
+    }
+    /* The UA hides a closed popover with display: none; only an open one is laid out. */
+    :host(:popover-open),
+    .region {
       display: flex;
       flex-direction: column;
       gap: var(--rt-space);
-      z-index: 20;
-      pointer-events: none;
-      max-width: min(560px, 90%);
+    }
+    .region:empty {
+      display: none;
     }
     .toast {
       pointer-events: auto;
@@ -66,11 +84,28 @@ export class RtToast extends LitElement {
     this.toasts = [];
   }
 
-  /** Shows a message for a few seconds. */
+  override connectedCallback(): void {
+    super.connectedCallback();
+    this.popover = 'manual';
+    this.raise();
+  }
+
+  /** Shows a message for a few seconds (longer for a long one), above everything on the page. */
   show(text: string, tone: Toast['tone'] = 'info'): void {
     const toast = { id: ++this.lastId, text, tone };
+    this.raise();
     this.toasts = [...this.toasts.slice(-2), toast];
-    setTimeout(() => this.dismiss(toast.id), SHOW_MS);
+    setTimeout(() => this.dismiss(toast.id), Math.max(SHOW_MS, text.length * MS_PER_CHARACTER));
+  }
+
+  /**
+   * On top of the top layer: elements there stack in the order they were shown, so the
+   * popover is hidden and shown again (in one task: the live regions stay, nothing flickers).
+   */
+  private raise(): void {
+    if (!this.isConnected || typeof this.showPopover !== 'function') return;
+    if (this.matches(':popover-open')) this.hidePopover();
+    this.showPopover();
   }
 
   private dismiss(id: number): void {
@@ -78,12 +113,17 @@ export class RtToast extends LitElement {
   }
 
   override render() {
-    return this.toasts.map(
-      (t) => html`<div class="toast ${t.tone}" role=${t.tone === 'error' ? 'alert' : 'status'}>
-        <span>${t.text}</span>
-        <button @click=${() => this.dismiss(t.id)} aria-label=${msg('Dismiss message')} title=${msg('Dismiss message')}>✕</button>
-      </div>`,
-    );
+    const region = (tone: Toast['tone']) =>
+      this.toasts
+        .filter((t) => t.tone === tone)
+        .map(
+          (t) => html`<div class="toast ${t.tone}">
+            <span>${t.text}</span>
+            <button @click=${() => this.dismiss(t.id)} aria-label=${msg('Dismiss message')} title=${msg('Dismiss message')}>✕</button>
+          </div>`,
+        );
+    return html`<div class="region" role="status" aria-live="polite">${region('info')}</div>
+      <div class="region" role="alert" aria-live="assertive">${region('error')}</div>`;
   }
 }
 

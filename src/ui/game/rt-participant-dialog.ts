@@ -1,9 +1,7 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html, LitElement, nothing } from 'lit';
+import { PARTICIPANT_CODE } from '../../classroom/learner-identity.ts';
 import { fire, gameStyles } from './game-styles.ts';
-
-/** Codes are short labels a teacher hands out ("A17", "group-3"): nothing personal is asked. */
-const CODE = /^[\p{L}\p{N}_-]{1,32}$/u;
 
 /**
  * @summary Asks for the participant code a research study hands out, before the first
@@ -12,7 +10,7 @@ const CODE = /^[\p{L}\p{N}_-]{1,32}$/u;
  * @fires participant-code - CustomEvent<string>: the code, trimmed.
  */
 export class RtParticipantDialog extends LitElement {
-  static override properties = { heading: {}, problem: { state: true } };
+  static override properties = { heading: {}, note: {}, problem: { state: true } };
   static override styles = [
     gameStyles,
     css`
@@ -29,7 +27,8 @@ export class RtParticipantDialog extends LitElement {
         gap: 4px;
         margin-bottom: 8px;
       }
-      .problem {
+      .problem,
+      .note {
         color: var(--rt-danger);
       }
       .actions {
@@ -41,11 +40,14 @@ export class RtParticipantDialog extends LitElement {
 
   /** The assignment's title. */
   declare heading: string;
+  /** Why the code is asked again (a damaged saved record), or ''. */
+  declare note: string;
   declare private problem: string;
 
   constructor() {
     super();
     this.heading = '';
+    this.note = '';
     this.problem = '';
   }
 
@@ -54,9 +56,10 @@ export class RtParticipantDialog extends LitElement {
   }
 
   override render() {
-    return html`<dialog aria-labelledby="code-title" @cancel=${(event: Event) => event.preventDefault()}>
+    return html`<dialog aria-labelledby="code-title" aria-describedby=${this.note ? 'code-note' : nothing} @cancel=${(event: Event) => event.preventDefault()}>
       <form @submit=${this.submit}>
         <h2 id="code-title">${this.heading || msg('Welcome!')}</h2>
+        ${this.note ? html`<p id="code-note" class="note">⚠ ${this.note}</p>` : nothing}
         <p>${msg('Your teacher gave you a participant code. Type it here, so your work can be matched to you without your name.')}</p>
         <label>
           ${msg('Participant code')}
@@ -71,7 +74,7 @@ export class RtParticipantDialog extends LitElement {
   private submit(event: Event): void {
     event.preventDefault();
     const code = this.renderRoot.querySelector<HTMLInputElement>('input[name=code]')?.value.trim() ?? '';
-    if (!CODE.test(code)) {
+    if (!PARTICIPANT_CODE.test(code)) {
       this.problem = msg('Use letters, digits, - or _ (up to 32), as on the code you were given.');
       return;
     }

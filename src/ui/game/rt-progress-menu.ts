@@ -1,6 +1,8 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html, LitElement, nothing } from 'lit';
+import type { DamagedSave } from '../../app/damaged-saves.ts';
 import type { Locale } from '../../quest/localized-text.ts';
+import { damagedSavesList, damagedSavesStyles } from './damaged-saves-list.ts';
 import { fire, gameStyles } from './game-styles.ts';
 import '../controls/rt-offline-status.ts';
 
@@ -8,23 +10,28 @@ import '../controls/rt-offline-status.ts';
 export type ProgressCommand =
   | { kind: 'locale'; locale: Locale }
   | { kind: 'palette'; colorBlind: boolean }
-  | { kind: 'export' } | { kind: 'import'; text: string; fileName: string } | { kind: 'reset' };
+  | { kind: 'export' } | { kind: 'import'; text: string; fileName: string } | { kind: 'reset' }
+  | { kind: 'damaged-download' | 'damaged-restore' | 'damaged-delete'; key: string };
 
 /**
  * @summary The header's menu: the language, the rays' colours (saved with the progress, for
  * every level), and the learner's progress:
- * export as a file, import a file, reset (after a confirmation dialog); last, whether the
- * app works offline in this browser.
+ * export as a file, import a file, reset (after a confirmation dialog); why progress is not
+ * being saved, while it is not (`saveProblem`); the damaged saves, to download, restore
+ * or delete (`damagedSaves`); last, whether the app works offline in this browser.
  *
  * @fires progress-command - CustomEvent<ProgressCommand>.
  */
 export class RtProgressMenu extends LitElement {
-  static override properties = { locale: {}, colorBlind: { type: Boolean, attribute: 'color-blind' } };
+  static override properties = { locale: {}, colorBlind: { type: Boolean, attribute: 'color-blind' }, saveProblem: { attribute: false }, damagedSaves: { attribute: false } };
   static override styles = [
     gameStyles,
+    damagedSavesStyles,
     css`
       [popover] {
         width: 280px;
+        max-height: 85vh;
+        overflow-y: auto;
       }
       fieldset {
         margin: 0 0 12px;
@@ -70,11 +77,16 @@ export class RtProgressMenu extends LitElement {
   declare locale: Locale;
   /** Whether the rays are drawn in the colour-blind-safe palette. */
   declare colorBlind: boolean;
+  /** Why progress is not being saved now (with what to do), or ''. */
+  declare saveProblem: string;
+  declare damagedSaves: readonly DamagedSave[];
 
   constructor() {
     super();
     this.locale = 'en';
     this.colorBlind = false;
+    this.saveProblem = '';
+    this.damagedSaves = [];
   }
 
   override render() {
@@ -86,25 +98,38 @@ export class RtProgressMenu extends LitElement {
         ${choices(msg('Ray colours'), 'palette', [[false, msg('Standard')], [true, msg('Colour-blind safe')]] as const, this.colorBlind, (colorBlind) => send({ kind: 'palette', colorBlind }))}
         <fieldset class="stack">
           <legend>${msg('Your progress')}</legend>
+          ${this.saveProblem ? html`<p class="save-problem" role="status">⚠ ${this.saveProblem}</p>` : nothing}
           <button @click=${() => send({ kind: 'export' })} title=${msg('Download your progress as a file, to keep it or take it to another computer')}>${msg('Export progress…')}</button>
           <button @click=${() => this.renderRoot.querySelector<HTMLInputElement>('input[type=file]')?.click()} title=${msg('Continue from a progress file you exported')}>
             ${msg('Import progress…')}
           </button>
           <input type="file" accept=".json,application/json" aria-label=${msg('Progress file to import')} @change=${this.imported} />
-          <button class="danger" @click=${() => this.renderRoot.querySelector('dialog')?.showModal()} title=${msg('Start the game from the beginning')}>${msg('Reset progress…')}</button>
+          <button class="danger" @click=${this.askReset} title=${msg('Start the game from the beginning')}>${msg('Reset progress…')}</button>
         </fieldset>
+        ${damagedSavesList(this.damagedSaves, send)}
         <rt-offline-status></rt-offline-status>
       </div>
-      <dialog aria-labelledby="reset-title">
+      <dialog aria-labelledby="reset-title" @close=${(event: Event) => (event.target as HTMLDialogElement).returnValue === 'reset' && send({ kind: 'reset' })}>
         <h3 id="reset-title">${msg('Reset all progress?')}</h3>
         <p>${msg('Your points, badges and finished levels will be gone. Export your progress first if you may want it back.')}</p>
         <form method="dialog" class="actions">
           <button value="cancel" autofocus>${msg('Cancel')}</button>
-          <button value="reset" class="danger" @click=${() => send({ kind: 'reset' })}>${msg('Reset')}</button>
+          <button value="reset" class="danger">${msg('Reset')}</button>
         </form>
       </dialog>
     `;
   }
+
+  /**
+   * The confirmation; the reset is sent once it has closed with "Reset" (its message then is
+   * not under the dialog). Its answer is cleared first: Escape leaves the last one.
+   */
+  private readonly askReset = () => {
+    const dialog = this.renderRoot.querySelector('dialog');
+    if (!dialog) return;
+    dialog.returnValue = '';
+    dialog.showModal();
+  };
 
   private async imported(event: Event): Promise<void> {
     const input = event.target as HTMLInputElement;

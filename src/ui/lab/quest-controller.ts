@@ -1,32 +1,52 @@
 import { msg, str } from '@lit/localize';
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import { levelTextsLocale, loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
+import { damagedSaveFileName } from '../../app/damaged-saves.ts';
 import { QuestSession } from '../../app/quest-session.ts';
+import type { SaveProblemKind } from '../../quest/progress-store.ts';
 import type { ShowMeStage } from '../../app/show-me-player.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import type { SurveySubmission } from '../../classroom/survey-answers.ts';
-import { SurveyStore } from '../../classroom/survey-store.ts';
 import { chooseLocale, currentLocale } from '../../i18n/locale.ts';
 import { issueText } from '../../i18n/issue-text.ts';
-import { progressProblemText } from '../../i18n/progress-problem-text.ts';
+import { contextDamageText, placesOf, progressProblemText, saveProblemReason, saveProblemText } from '../../i18n/progress-problem-text.ts';
+import { localNumbers } from '../../i18n/number-format.ts';
+import { shortList } from '../../i18n/short-list.ts';
 import type { Store } from '../../lab-state/store.ts';
-import { MemoryStorage, type KeyValueStorage } from '../../quest/progress-store.ts';
+import { refusingStorage, type KeyValueStorage } from '../../quest/saved-backups.ts';
 import type { Scene } from '../../scene/scene.ts';
 import { downloadText } from '../../util/download-file.ts';
 import type { QuestCommand } from '../game/quest-command.ts';
 import type { MapChoice } from '../game/rt-level-map.ts';
 import type { ProgressCommand } from '../game/rt-progress-menu.ts';
 
+/** A file's size in a message, from its characters (what localStorage counts): "3 kB", "9.2 MB". */
+const SIZE = localNumbers({ maximumFractionDigits: 1 });
+function fileSize(characters: number): string {
+  return characters < 1e6 ? `${SIZE.format(Math.max(1, Math.round(characters / 1e3)))} kB` : `${SIZE.format(characters / 1e6)} MB`;
+}
+
+/** What was left out of progress read with damaged parts (progress-salvage.ts), as a sentence to add; '' when nothing was. */
+function leftOut(repaired: readonly string[]): string {
+  if (repaired.length === 0) return '';
+  const left = repaired.length;
+  return ` ${msg(str`What was damaged in it is left out (${left}: ${shortList(placesOf(repaired), 3, ', ')}).`)}`;
+}
+
 /** The address fragment that opens the free lab instead of the game. */
 export const FREE_LAB_HASH = '#free-lab';
 
 
-/** localStorage, or a Map for this visit when the browser blocks it (the session then says progress is not kept). */
+/**
+ * localStorage; when the browser blocks it, a storage that refuses every write, so that the
+ * session says progress is not saved (and keeps it for this visit) instead of "saving" it
+ * into memory.
+ */
 function browserStorage(): KeyValueStorage {
   try {
     return localStorage;
   } catch {
-    return new MemoryStorage();
+    return refusingStorage();
   }
 }
 
@@ -58,8 +78,10 @@ export class QuestController implements ReactiveController {
    * (after the participant code dialog, in an assignment that asks for one).
    */
   private welcomeDue = false;
-  /** The learner's survey answers in this session's progress (read once per session), or null before they hand it in. */
-  survey: SurveySubmission | null = null;
+  /** Why the session record was damaged, for the participant code dialog (it is asked again then), or ''. */
+  contextNote = '';
+  /** The save problem last told, so that each is told once when it starts, and its end too. */
+  private toldSaveProblem: SaveProblemKind | null = null;
   private readonly cleanup: (() => void)[] = [];
 
   constructor(private readonly host: QuestHost & HTMLElement) {
@@ -88,7 +110,18 @@ export class QuestController implements ReactiveController {
       session.attach(document),
       () => session.dispose(),
     );
-    const problems = [session.problem && progressProblemText(session.problem), catalog.errors.length > 0 ? msg(str`The level list could not be read: ${catalog.errors.map(issueText).join('; ')}`) : undefined];
+    const damage = session.contextDamage;
+    this.contextNote = damage
+      ? contextDamageText({ codeLost: damage.lost.includes('participant-code') && session.needsParticipantCode, attemptLost: damage.lost.includes('attempt'), backedUp: damage.backupKey !== null })
+      : '';
+    // A held damaged save is told by the messages below already.
+    const toldHeld = session.problem?.backupKey === null || damage?.backupKey === null;
+    this.toldSaveProblem = toldHeld && session.saveProblem === 'damaged-held' ? 'damaged-held' : null;
+    const problems = [
+      session.problem && progressProblemText(session.problem, session.engine.points),
+      this.contextNote || undefined,
+      catalog.errors.length > 0 ? msg(str`The level list could not be read: ${catalog.errors.map(issueText).join('; ')}`) : undefined,
+    ];
     // The toast is on the page after the first render.
     void this.host.updateComplete.then(() => problems.forEach((problem) => problem && this.host.toast(problem, 'error')));
     const newcomer = Object.keys(session.engine.progress.levels).length === 0 && session.engine.progress.current === null;
@@ -103,7 +136,6 @@ export class QuestController implements ReactiveController {
     this.cleanup.push(() => removeEventListener('hashchange', onHashChange));
     this.welcome = false;
     this.welcomeDue = newcomer;
-    this.survey = new SurveyStore(storage, session.progressKey).load();
     this.changed();
   }
 
@@ -127,8 +159,7 @@ export class QuestController implements ReactiveController {
       this.welcomeDue = false;
       this.welcome = true;
     }
-    const error = this.session?.saveError;
-    if (error) this.host.toast(error, 'error');
+    this.tellSaveProblem();
     this.host.modeChanged(this.session?.mode.kind === 'free-lab');
     this.host.requestUpdate();
   }
@@ -209,27 +240,90 @@ export class QuestController implements ReactiveController {
         return;
       case 'export':
         return downloadText(session.exportText(), 'ray-tracer-quest-progress.json', 'application/json');
-      case 'import': {
-        const imported = session.importText(command.text);
-        if (imported.ok) this.host.toast(msg(str`Progress imported from ${command.fileName}.`));
-        else this.host.toast(msg(str`${command.fileName} is not a progress file this app can read, so nothing changed:\n${imported.errors.slice(0, 3).map(issueText).join('\n')}`), 'error');
+      case 'import':
+        return this.imported(session, command.text, command.fileName);
+      case 'reset': {
+        const problem = session.reset();
+        this.host.toast(problem ? msg(str`Your progress was not reset: ${saveProblemReason(problem)}.`) : msg('Your progress was reset. Start again from the level map.'), problem ? 'error' : 'info');
         return;
       }
-      case 'reset':
-        session.reset();
-        this.host.toast(msg('Your progress was reset. Start again from the level map.'));
-        return;
+      case 'damaged-download': {
+        const text = session.damagedSaves.text(command.key);
+        const save = session.damagedSaves.all.find((entry) => entry.key === command.key);
+        if (text === null || !save) return this.host.toast(msg('That damaged save is gone (deleted in another tab?).'), 'error');
+        downloadText(text, damagedSaveFileName(save), 'application/json');
+        // A held save may be written over now that the learner has it: saving goes on.
+        session.damagedSaves.downloaded(command.key);
+        session.flush();
+        return this.changed();
+      }
+      case 'damaged-restore':
+        return this.restored(session, command.key);
+      case 'damaged-delete':
+        session.damagedSaves.delete(command.key);
+        this.host.toast(msg('The damaged save was deleted.'));
+        return this.changed();
     }
   }
 
-  /** The closing survey was handed in: kept with this session's progress. */
+  /** Why progress is not being saved now, with what to do (for the Menu), or ''. */
+  get saveNote(): string {
+    const problem = this.session?.saveProblem;
+    return problem ? saveProblemText(problem) : '';
+  }
+
+  /** The survey's answers for the task column: as handed in this visit or read from storage. */
+  get survey(): SurveySubmission | null {
+    return this.session?.survey ?? null;
+  }
+
+  /** The closing survey was handed in: kept with this session's progress, and said "saved" only when it was. */
   surveySubmitted(answers: SurveySubmission): void {
-    const session = this.session;
-    if (!session) return;
-    new SurveyStore(browserStorage(), session.progressKey).save(answers);
-    this.survey = answers;
-    this.host.toast(msg('Thank you! Your answers are saved. Download your data below for your teacher.'));
+    const problem = this.session?.submitSurvey(answers);
+    if (problem === undefined) return;
+    this.host.toast(
+      problem
+        ? msg(str`Thank you! Your answers could not be saved in the browser: ${saveProblemReason(problem)}. They are kept while this page is open: download your data below now for your teacher.`)
+        : msg('Thank you! Your answers are saved. Download your data below for your teacher.'),
+      problem ? 'error' : 'info',
+    );
     this.host.requestUpdate();
+  }
+
+  private imported(session: QuestSession, text: string, fileName: string): void {
+    const result = session.importText(text);
+    if (result.ok) {
+      this.host.toast(msg(str`Progress imported from ${fileName}.`) + leftOut(result.repaired));
+    } else if (result.reason === 'unreadable') {
+      this.host.toast(msg(str`${fileName} is not a progress file this app can read, so nothing changed:\n${result.errors.slice(0, 3).map(issueText).join('\n')}`), 'error');
+    } else {
+      this.host.toast(msg(str`${fileName} (${fileSize(text.length)}) was not imported: ${saveProblemReason(result.kind)}. Nothing changed: your progress is as it was.`), 'error');
+    }
+  }
+
+  private restored(session: QuestSession, key: string): void {
+    const result = session.restoreBackup(key);
+    if (result.ok) {
+      this.host.toast(msg('The damaged save is restored: what could be read of it is back in your progress.') + leftOut(result.repaired));
+    } else if (result.reason === 'unreadable') {
+      const reasons = result.errors.length > 0 ? ` (${shortList(result.errors.map(issueText), 2)})` : '';
+      this.host.toast(msg(str`This version of the game cannot read that save${reasons}, so nothing changed. Download it to keep it.`), 'error');
+    } else {
+      this.host.toast(msg(str`The save was not restored: ${saveProblemReason(result.kind)}. Nothing changed.`), 'error');
+    }
+    this.changed();
+  }
+
+  /** A save problem is told when it starts (not at every change while it lasts), and so is its end. */
+  private tellSaveProblem(): void {
+    const problem = this.session?.saveProblem ?? null;
+    if (problem === this.toldSaveProblem) return;
+    const before = this.toldSaveProblem;
+    this.toldSaveProblem = problem;
+    const free = problem && this.session?.damagedSaves.all.some((save) => !save.held) ? ` ${msg('Deleting the damaged saves you have downloaded (Menu) frees space.')}` : '';
+    const text = problem ? saveProblemText(problem) + free : before ? msg("Saved again: your progress is in the browser's storage.") : '';
+    // At the start the toast is on the page only after the first render.
+    if (text) void this.host.updateComplete.then(() => this.host.toast(text, problem ? 'error' : 'info'));
   }
 
   dismissWelcome(): void {

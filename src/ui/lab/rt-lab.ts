@@ -10,6 +10,7 @@ import type { UiPanel } from '../../quest/lab-controls.ts';
 import { loadMeshes } from '../../render/load-meshes-browser.ts';
 import { createBrowserRenderPool } from '../../render/web-worker-port.ts';
 import type { Scene } from '../../scene/scene.ts';
+import { sameValue } from '../../util/same-value.ts';
 import type { LabView, RayHoverDetail } from '../../view/lab-view.ts';
 import type { RayFocus } from '../../view/ray-focus.ts';
 import { badgeName } from '../game/badge-names.ts';
@@ -144,7 +145,10 @@ export class RtLab extends LitElement {
 
   protected override willUpdate(changed: PropertyValues<this>): void {
     this.loadOnDemandPanels();
-    if (changed.has('assignment') && changed.get('assignment') !== undefined && this.isConnected) this.game.start();
+    // Another assignment starts the game again. The one it connected with has started it, and the
+    // same assignment decoded again (a new object) must not: a second start would lose what the
+    // first one read (that the saved record was damaged, say).
+    if (changed.has('assignment') && this.isConnected && !sameValue(this.game.session?.assignment ?? null, this.assignment)) this.game.start();
     if (changed.has('sharedScene') && this.sharedScene) this.game.openSharedScene(this.sharedScene);
     this.closeRenderWindowWhenInTheWay();
   }
@@ -298,7 +302,13 @@ export class RtLab extends LitElement {
                 ${msg('Render image')}
               </button>`
             : nothing}
-          <rt-progress-menu locale=${locale} ?color-blind=${state.rays.colorBlindPalette} @progress-command=${(event: CustomEvent<ProgressCommand>) => this.game.progress(event.detail)}></rt-progress-menu>
+          <rt-progress-menu
+            locale=${locale}
+            ?color-blind=${state.rays.colorBlindPalette}
+            .saveProblem=${this.game.saveNote}
+            .damagedSaves=${session?.damagedSaves.all ?? []}
+            @progress-command=${(event: CustomEvent<ProgressCommand>) => this.game.progress(event.detail)}
+          ></rt-progress-menu>
           <rt-theme-toggle></rt-theme-toggle>
         </div>
       </header>
@@ -347,7 +357,7 @@ export class RtLab extends LitElement {
         : nothing}
       <rt-guide-ring .locate=${this.ring.locate}></rt-guide-ring>
       ${session?.needsParticipantCode
-        ? html`<rt-participant-dialog heading=${this.assignment?.title ?? ''} @participant-code=${(event: CustomEvent<string>) => session.setParticipantCode(event.detail)}></rt-participant-dialog>`
+        ? html`<rt-participant-dialog heading=${this.assignment?.title ?? ''} note=${this.game.contextNote} @participant-code=${(event: CustomEvent<string>) => session.setParticipantCode(event.detail)}></rt-participant-dialog>`
         : nothing}
     `;
   }

@@ -1,14 +1,14 @@
-import { msg, str } from '@lit/localize';
-import { issueText } from '../../i18n/issue-text.ts';
+import { msg } from '@lit/localize';
 import { html, LitElement, nothing } from 'lit';
 import { loadBrowserCatalog, loadLevelTexts } from '../../app/level-catalog-browser.ts';
 import { isSceneFragment } from '../../app/scene-link.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
-import { decodeAssignment, isAssignmentFragment, type AssignmentLinkResult } from '../../classroom/assignment-link.ts';
+import { decodeAssignment, isAssignmentFragment } from '../../classroom/assignment-link.ts';
 import { startLocale } from '../../i18n/locale.ts';
 import { LazyModule } from '../../util/lazy-module.ts';
 import '../controls/rt-load-problem.ts';
 import '../lab/rt-lab.ts';
+import { linkProblemText } from './link-problem-text.ts';
 import './rt-link-notice.ts';
 import './rt-scene-link-lab.ts';
 import '../classroom/rt-survey.ts';
@@ -78,7 +78,7 @@ export class RtApp extends LitElement {
     if (hash !== this.route) return;
     // The assignment's language is the teacher's choice for the class: set before the lab renders.
     if (result.ok) await loadLevelTexts(await startLocale(result.assignment.locale));
-    this.opened = { hash, assignment: result.ok ? result.assignment : null, problem: result.ok ? '' : problemText(result) };
+    this.opened = { hash, assignment: result.ok ? result.assignment : null, problem: result.ok ? '' : linkProblemText(result) };
   }
 
   override render() {
@@ -97,18 +97,6 @@ export class RtApp extends LitElement {
       return assignment ? html`<rt-lab .assignment=${assignment}></rt-lab>` : html`<rt-link-notice .text=${problem}></rt-link-notice><rt-lab></rt-lab>`;
     }
     return html`<rt-lab></rt-lab>`;
-  }
-}
-
-function problemText(result: Extract<AssignmentLinkResult, { ok: false }>): string {
-  const reasons = result.reasons.map(issueText).join('; ');
-  switch (result.kind) {
-    case 'damaged':
-      return msg(str`This assignment link is damaged (${reasons}). You are playing freely.`);
-    case 'other-version':
-      return msg(str`This assignment link was made for another version of the game (${reasons}). You are playing freely.`);
-    case 'unknown-levels':
-      return msg(str`This assignment link names levels or tasks this version of the game does not have: ${reasons}. You are playing freely.`);
   }
 }
 

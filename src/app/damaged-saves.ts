@@ -1,0 +1,108 @@
+import { mergeProgress } from '../quest/progress-merge.ts';
+import type { Progress } from '../quest/progress.ts';
+import type { ProgressStore } from '../quest/progress-store.ts';
+import { listBackups, type KeyValueStorage } from '../quest/saved-backups.ts';
+import type { PendingWrites } from './pending-writes.ts';
+
+/**
+ * The Menu's "Damaged saves": every copy of saved data that could not be used as it was,
+ * for this session's progress key and its session record — the backups in storage, and the
+ * damaged text still held under its own key because there was no room for a backup. Each
+ * can be downloaded exactly as it was; a backup can be deleted (to free space) and a held
+ * one is released once downloaded, so that saving goes on.
+ */
+
+/** One damaged save. `held`: still under its own key (no backup), `key` is then that key. */
+export interface DamagedSave {
+  key: string;
+  what: 'progress' | 'session';
+  /** When the backup was made (ISO 8601), or null for a held one. */
+  madeAt: string | null;
+  /** Its length in characters. */
+  size: number;
+  held: boolean;
+}
+
+export class DamagedSaves {
+  private listed: DamagedSave[] = [];
+
+  constructor(
+    private readonly storage: KeyValueStorage,
+    private readonly progress: ProgressStore,
+    private readonly writes: PendingWrites,
+    private readonly progressKey: string,
+    private readonly contextKey: string,
+  ) {
+    this.refresh();
+  }
+
+  /** As found at the last refresh (reading every backup's size on each render would be slow). */
+  get all(): readonly DamagedSave[] {
+    return this.listed;
+  }
+
+  /** Looks again: after a save that may have backed up a held text, a release or a deletion. */
+  refresh(): void {
+    const what = (key: string): DamagedSave['what'] => (key === this.progressKey ? 'progress' : 'session');
+    const held: DamagedSave[] = [
+      [this.progressKey, this.progress.held],
+      [this.contextKey, this.writes.held(this.contextKey)],
+    ].flatMap(([key, text]) => (key !== null && text !== null ? [{ key, what: what(key), madeAt: null, size: text.length, held: true }] : []));
+    const stored = listBackups(this.storage, [this.progressKey, this.contextKey]).map(({ key, of, madeAt, size }) => ({ key, what: what(of), madeAt, size, held: false }));
+    this.listed = [...held, ...stored];
+  }
+
+  /** The exact text of a damaged save, or null when it is gone (deleted in another tab). */
+  text(key: string): string | null {
+    const entry = this.listed.find((save) => save.key === key);
+    if (!entry) return null;
+    if (entry.held) return entry.what === 'progress' ? this.progress.held : this.writes.held(key);
+    try {
+      return this.storage.getItem(key);
+    } catch {
+      return null;
+    }
+  }
+
+  /** The learner has downloaded it: a held text may now be written over. */
+  downloaded(key: string): void {
+    const entry = this.listed.find((save) => save.key === key);
+    if (!entry?.held) return;
+    if (entry.what === 'progress') this.progress.release();
+    else this.writes.release(key);
+    this.refresh();
+  }
+
+  /** Deletes a backup (not a held text: that is the save itself). */
+  delete(key: string): void {
+    const entry = this.listed.find((save) => save.key === key);
+    if (!entry || entry.held) return;
+    try {
+      this.storage.removeItem(key);
+    } catch {
+      // Storage that cannot be written: the backup stays, and the list says so after the refresh.
+    }
+    this.refresh();
+  }
+
+  what(key: string): DamagedSave['what'] | null {
+    return this.listed.find((save) => save.key === key)?.what ?? null;
+  }
+}
+
+/**
+ * `current` with a restored backup's progress taken in: every task, badge and event of both
+ * (progress-merge.ts, as two tabs' saves), the settings as they are now, the sandbox scene
+ * kept, or the backup's when there is none.
+ */
+export function withRestored(current: Progress, restored: Progress): Progress {
+  const merged = mergeProgress(current, { ...restored, epoch: current.epoch });
+  return { ...merged, sandbox: current.sandbox ?? restored.sandbox };
+}
+
+/** The download's name: what it is and when it was kept ("ray-tracer-quest-damaged-progress-2025-03-01T09-00-00.json"). */
+export function damagedSaveFileName(save: DamagedSave): string {
+  const what = save.what === 'progress' ? 'progress' : 'session-record';
+  const when = save.madeAt ? `-${save.madeAt.slice(0, 19).replaceAll(':', '-')}` : '';
+  return `ray-tracer-quest-damaged-${what}${when}.json`;
+}
