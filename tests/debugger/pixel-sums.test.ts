@@ -15,6 +15,7 @@ import type { PixelTrace, RayNode } from '../../src/tracer/ray-tree.ts';
 import { renderTile } from '../../src/tracer/render-tile.ts';
 import { tracePixel } from '../../src/tracer/trace-pixel.ts';
 import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
+import { matte, sceneFrom } from '../support/test-scene.ts';
 
 /**
  * The ray debugger adds every pixel up to the image's colour (issue 37): on every level's
@@ -27,7 +28,9 @@ import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
  * added; a ray's steps add exactly its share of the pixel times its colour (so every
  * intermediate sum is a sum of whole shares); the last sum is the image's pixel (rendered
  * apart, as the render window does) to rounding, and the same 8-bit value; an area light's
- * diffuse term only grows, sample by sample, to exactly the tracer's term.
+ * diffuse term only grows, sample by sample, to exactly the tracer's term. A scene with every
+ * effect at once (no level has a lens and a shutter together) checks the deepest nesting:
+ * sample → lens point → moment → hit.
  */
 
 const levelsFolder = new URL('../../levels/', import.meta.url);
@@ -161,6 +164,34 @@ function checkTree(program: DebugProgram): void {
     }
   }
 }
+
+describe('a pixel with everything at once: supersampled, a lens, a shutter, rough surfaces, an area light', () => {
+  const scene = sceneFrom({
+    camera: { position: [0, 1.2, 4], target: [0, 0.4, 0], fov: 50, pixels: [6, 4], aperture: 0.1, lensSamples: 2 },
+    settings: { maxDepth: 2, background: [0.6, 0.7, 0.9], supersampling: 2, samplePattern: 'jittered', timeSamples: 2 },
+    objects: [
+      { id: 'floor', shape: 'plane', scale: [10, 1, 10], material: matte([0.8, 0.8, 0.8], { ambient: 0.1, specular: 0.3, roughness: 0.2, glossySamples: 2 }) },
+      { id: 'ball', shape: 'sphere', position: [-0.3, 0.5, -0.3], velocity: [0.5, 0, 0], material: matte([0.9, 0.2, 0.1], { ambient: 0.2, specular: 0.5, roughness: 0.2 }) },
+    ],
+    lights: [{ id: 'panel', type: 'area', position: [0, 3, 0], size: [1, 1], samples: 2, ambient: 0.1 }],
+  });
+  const tracer = buildTracerScene(scene, new Map());
+  const image = renderTile(tracer, { x: 0, y: 0, width: 6, height: 4 }, { imageWidth: 6, imageHeight: 4, seed: DEFAULT_SEED });
+
+  it('nests sample → lens point → moment → hit → its rays, and adds up to the image on every pixel', () => {
+    for (let p = 0; p < 24; p++) {
+      const program = debugProgram(tracePixel(tracer, p % 6, Math.floor(p / 6), DEFAULT_SEED, { terms: true }), scene);
+      checkPixel(program, scene, Array.from(image.subarray(p * 3, p * 3 + 3)) as Color);
+      checkTree(program);
+      const kinds = (kind: string) => program.steps.filter((step) => step.kind === kind);
+      expect(kinds('sample').map((step) => [step.level, step.place])).toEqual([0, 1, 2, 3].map((i) => [0, { of: 'sample', index: i + 1, count: 4 }]));
+      expect(kinds('lens').map((step) => [step.level, step.place?.count, step.share])).toEqual(Array(4 * 4).fill([1, 2 * 2, 1 / 16]));
+      const moments = kinds('cast').filter((step) => step.ray?.lensPoint);
+      expect(moments).toHaveLength(4 * 4 * 2);
+      for (const step of moments) expect([step.level, step.place?.of, step.place?.count, step.share]).toEqual([2, 'moment', 2, 1 / 32]);
+    }
+  });
+});
 
 describe('stepping the debugger to the end gives the image’s pixel, on every level', async () => {
   const met = new Set<PixelKind>();
