@@ -1,8 +1,12 @@
 import { expect, test, type Page } from '@playwright/test';
 import { mkdirSync, readFileSync } from 'node:fs';
+import { encodeSceneLink } from '../src/app/scene-link.ts';
 import { debugProgram, raysShownAt, type DebugProgram } from '../src/debugger/debug-steps.ts';
+import { parseLevel } from '../src/quest/level-schema.ts';
 import { DEFAULT_SEED } from '../src/render/render-job.ts';
 import { defaultScene } from '../src/scene/scene-defaults.ts';
+import type { Scene } from '../src/scene/scene.ts';
+import { pixelBytes } from '../src/tracer/quantize.ts';
 import type { PixelTrace, RayNode } from '../src/tracer/ray-tree.ts';
 import { tracePixel } from '../src/tracer/trace-pixel.ts';
 import { buildTracerScene } from '../src/tracer/tracer-scene.ts';
@@ -16,9 +20,15 @@ import { collectErrors, importProgress, levelsFolder, panel, progressFile } from
  * pseudocode, the number of rays drawn in 3D, the equation's terms adding up to its sum,
  * and at the end the pixel's colour equal to the image's pixel.
  *
+ * Then a lens, a glossy and an area-light pixel (issue 37), opened from a scene link of their
+ * level's scene: the rows of the pixel's tree nest on screen, the running sum under them is
+ * the tracer's at every step and ends at the pixel the screen preview shows (8-bit), and at
+ * 1366×768 every term of the equation can be scrolled to while its sum stays put.
+ *
  * It relies on: <rt-screen-preview>'s pixel buttons ("Pixel x, y"), <rt-ray-debugger>'s
  * buttons and its data-step / data-line / data-ray, the pseudocode's aria-current line,
- * and the 3D view's element carrying `data-ray-instances`.
+ * <rt-debug-tree>'s rows (data-level, aria-current) and `.running` sum, the equation's
+ * `ul.terms` and `ul.sums`, and the 3D view's element carrying `data-ray-instances`.
  */
 
 const SHOTS = process.env.E2E_SHOTS ?? 'test-results/debugger';
@@ -151,3 +161,125 @@ test('a level\'s debugger task: the ring shows the way in, and "Show me" steps t
   await page.screenshot({ path: `${SHOTS}/level-04-show-me.png` });
   expect(errors).toEqual([]);
 });
+
+/** A level's starting scene with `change` made, as a learner makes it in that level. */
+function levelScene(id: string, change: (scene: Scene) => void): Scene {
+  const parsed = parseLevel(JSON.parse(readFileSync(new URL(`${id}.level.json`, levelsFolder), 'utf8')));
+  if (!parsed.ok) throw new Error(parsed.errors.join('\n'));
+  const scene = structuredClone(parsed.level.scene);
+  change(scene);
+  return scene;
+}
+
+/** Every pixel of the scene's screen, traced with terms, as the debugger traces it. */
+function screenOf(scene: Scene): PixelTrace[] {
+  const traced = buildTracerScene(scene, new Map());
+  const [width, height] = scene.camera.pixels;
+  return Array.from({ length: width * height }, (_, p) => tracePixel(traced, p % width, Math.floor(p / width), DEFAULT_SEED, { terms: true }));
+}
+
+/** Numbers of a text in either language's format ("(0,125; 0,500)" or "(0.125, 0.500)"). */
+const valuesOf = (text: string | null) => [...(text ?? '').matchAll(/-?\d+[.,]\d+/g)].map((match) => Number(match[0].replace(',', '.')));
+
+/** Each case: its scene, how its pixel is picked, and how deep its tree nests at least (pixel sample → ray → hit → its rays). */
+const distributed: { name: string; scene: Scene; pick: (trace: PixelTrace) => boolean; nests: number }[] = [
+  {
+    // Depth of field: aperture 0.165 with 2 × 2 lens points, the case the debugger once called "its one sample".
+    name: 'lens',
+    scene: levelScene('18-depth-of-field', (scene) => Object.assign(scene.camera, { aperture: 0.165, lensSamples: 2 })),
+    pick: (trace) => trace.rays[0].children.filter((child) => child.lensPoint).length === 4 && rays(trace.rays).some((ray) => ray.objectId === 'near-ball'),
+    nests: 2,
+  },
+  {
+    // A rough metal floor: a fan of 3 × 3 glossy rays, some reaching the ball or the board.
+    name: 'glossy',
+    scene: levelScene('19-glossy-reflections', (scene) => Object.assign(scene.objects.find((object) => object.id === 'floor')!.material, { roughness: 0.3 })),
+    pick: (trace) => rays(trace.rays).filter((ray) => ray.glossy && ray.hit && ray.objectId !== null && ray.objectId !== 'floor').length >= 3,
+    nests: 2,
+  },
+  {
+    // An area light with 3 × 3 samples over a point at the edge of the pole's shadow: some samples blocked, some not.
+    name: 'area-light',
+    scene: levelScene('10-area-lights', (scene) => Object.assign(scene.lights.find((light) => light.id === 'panel')!, { samples: 3 })),
+    pick: (trace) => {
+      const samples = trace.rays[0].children.filter((child) => child.lightId === 'panel');
+      return samples.length === 9 && samples.some((ray) => ray.type === 'shadow') && samples.some((ray) => ray.type === 'light');
+    },
+    nests: 1,
+  },
+];
+
+for (const { name, scene, pick, nests } of distributed) {
+  test(`${name === 'area-light' ? 'an' : 'a'} ${name} pixel: its rays as a tree, a sum that grows to the image's pixel, terms that scroll at 1366×768`, async ({ page }) => {
+    mkdirSync(SHOTS, { recursive: true });
+    const errors = collectErrors(page);
+    const trace = screenOf(scene).find(pick);
+    if (!trace) throw new Error(`no ${name} pixel on the screen`);
+    const program = debugProgram(trace, scene);
+    const [x, y] = trace.pixel;
+    await page.goto(`./${await encodeSceneLink(scene)}`);
+    // The linked scene's screen, not the lab's first one.
+    const [width, height] = scene.camera.pixels;
+    await expect(page.locator('rt-screen-preview').getByRole('group', { name: `Camera image, ${width} × ${height} pixels` })).toBeVisible();
+    const cell = page.locator('rt-screen-preview').getByRole('button', { name: `Pixel ${x}, ${y}`, exact: true });
+    await cell.click();
+    await expect(cell).toHaveAttribute('aria-pressed', 'true');
+    const shown = await cell.evaluate((element) => getComputedStyle(element).backgroundColor);
+    await page.getByRole('button', { name: 'Debug a pixel' }).click();
+    const debuggerPanel = page.locator('rt-ray-debugger');
+    await expect(debuggerPanel.locator('.where')).toContainText(`Pixel ${x}, ${y}`);
+    const tree = debuggerPanel.locator('rt-debug-tree');
+    const sum = tree.locator('.running');
+    const steps = program.steps;
+    let grew = 0;
+    for (let index = 0; index < steps.length; index++) {
+      await expect(debuggerPanel).toHaveAttribute('data-step', String(index));
+      // The running sum is the steps' so far (shown to 3 decimals), and stays in view.
+      expect(valuesOf(await sum.locator('.value').textContent())).toEqual(steps[index].sum.map((value) => Number(value.toFixed(3))));
+      if (index > 0 && steps[index].sum.some((value, c) => value > steps[index - 1].sum[c])) grew++;
+      await expect(tree.locator('li[aria-current="step"]')).toHaveAttribute('data-level', String(steps[index].level));
+      const equation = debuggerPanel.locator('rt-debug-equation');
+      if (steps[index].kind === 'shade' || index === steps.length - 1) await checkScrolls(page, equation);
+      if (steps[index].kind === 'shade' && steps[index].level === nests && !steps.slice(0, index).some((step) => step.kind === 'shade' && step.level === nests)) {
+        await page.screenshot({ path: `${SHOTS}/${name}-nested.png` });
+      }
+      if (index < steps.length - 1) await page.keyboard.press('ArrowRight');
+    }
+    expect(grew).toBeGreaterThan(2);
+    // Nested on screen: a deeper row starts further right than a shallower one.
+    const levels = await tree.locator('li[data-level]').evaluateAll((rows) => rows.map((row) => ({ level: Number(row.getAttribute('data-level')), left: row.querySelector('.label')!.getBoundingClientRect().left })));
+    const deepest = Math.max(...levels.map((row) => row.level));
+    expect(deepest).toBeGreaterThanOrEqual(nests);
+    const leftOf = (level: number) => levels.find((row) => row.level === level)!.left;
+    for (let level = 1; level <= deepest; level++) expect(leftOf(level)).toBeGreaterThan(leftOf(level - 1) + 8);
+    // The end: the sum is the image's pixel, as the screen preview shows it, in 8 bits.
+    const bytes = pixelBytes(steps.at(-1)!.sum, x, y, scene.settings);
+    await expect(sum.locator('.note')).toContainText(`8-bit: ${bytes.join(', ')}`);
+    expect(shown).toBe(`rgb(${bytes.join(', ')})`);
+    const totals = await debuggerPanel.locator('rt-debug-equation .total').allTextContents();
+    expect(totals.map((text) => text.replace(/\s+/g, ' '))).toEqual([expect.stringContaining(`8-bit: ${bytes.join(', ')}`), expect.stringContaining(`8-bit: ${bytes.join(', ')}`)]);
+    await page.screenshot({ path: `${SHOTS}/${name}-end.png` });
+    expect(errors).toEqual([]);
+  });
+}
+
+/** The equation's rows all reachable at 1366×768: its list scrolls inside the debugger, its sum stays on screen. */
+async function checkScrolls(page: Page, equation: ReturnType<Page['locator']>): Promise<void> {
+  const list = equation.locator('ul.terms');
+  const sums = equation.locator('ul.sums');
+  const card = (await page.locator('rt-ray-debugger .card').boundingBox())!;
+  const listBox = (await list.boundingBox())!;
+  const sumsBox = (await sums.boundingBox())!;
+  expect(listBox.y + listBox.height).toBeLessThanOrEqual(card.y + card.height);
+  expect(sumsBox.y + sumsBox.height).toBeLessThanOrEqual(Math.min(card.y + card.height, 768));
+  const rows = list.locator(':scope > li');
+  for (let i = 0; i < (await rows.count()); i++) {
+    await rows.nth(i).evaluate((row) => row.scrollIntoView({ block: 'nearest' }));
+    const box = (await rows.nth(i).boundingBox())!;
+    const now = (await list.boundingBox())!;
+    expect(box.y).toBeGreaterThanOrEqual(now.y - 1);
+    expect(box.y + box.height).toBeLessThanOrEqual(now.y + now.height + 1);
+  }
+  // Scrolling the terms does not move the sum.
+  expect((await sums.boundingBox())!.y).toBeCloseTo(sumsBox.y, 0);
+}

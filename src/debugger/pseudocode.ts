@@ -1,14 +1,16 @@
 /**
- * The ray tracer's work for one pixel as 14 lines of pseudocode (ray-debugger spec §2), by
+ * The ray tracer's work for one pixel as 16 lines of pseudocode (ray-debugger spec §2), by
  * stable ids. The words are the UI's (they are translated); the order is the lines' order.
  * Each debugger step lights one line (debug-steps.ts says which).
  */
 export const PSEUDOCODE_LINES = [
   /** for each sample of the pixel: */
   'sample-loop',
-  /** colour ← trace(primary ray through it, depth 0) */
+  /** for each lens point and each moment (a lens or an open shutter casts several): */
+  'lens-loop',
+  /** colour ← trace(primary ray, depth 0) */
   'trace-primary',
-  /** pixel ← average of the samples' colours */
+  /** pixel ← Σ share × colour */
   'average',
   /** trace(ray, depth): */
   'trace',
@@ -24,12 +26,14 @@ export const PSEUDOCODE_LINES = [
   'blocked',
   /** reaches it: colour += I·A·(max(N·L,0)·kd·ld·Lc·C + max(R·V,0)ⁿ·ks·ls·Lc) */
   'lit',
-  /** mirror and depth < maxDepth: colour += ks·trace(reflected ray, depth + 1) */
+  /** mirror, below the maximum depth: colour += ks·trace(reflected ray, depth + 1) */
   'mirror',
-  /** glass and depth < maxDepth: kr ← Schlick, kt ← 1 − kr */
+  /** glass, below the maximum depth: kr ← Schlick, kt ← 1 − kr */
   'schlick',
   /** colour += kt·trace(refracted ray) + kr·trace(reflected ray) */
   'glass',
+  /** rough: m×m rays around each ideal one, each with 1/m² of its weight */
+  'glossy',
   /** return clamp(colour, 0, 1) */
   'return',
 ] as const;
@@ -39,7 +43,8 @@ export type PseudocodeLine = (typeof PSEUDOCODE_LINES)[number];
 /** How far each line is indented (for drawing it as code). */
 export const LINE_INDENT: Record<PseudocodeLine, number> = {
   'sample-loop': 0,
-  'trace-primary': 1,
+  'lens-loop': 1,
+  'trace-primary': 2,
   average: 0,
   trace: 0,
   'nearest-hit': 1,
@@ -51,5 +56,6 @@ export const LINE_INDENT: Record<PseudocodeLine, number> = {
   mirror: 1,
   schlick: 1,
   glass: 2,
+  glossy: 2,
   return: 1,
 };

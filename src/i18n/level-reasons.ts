@@ -45,6 +45,7 @@ export const LEVEL_REASONS: readonly Rule[] = [
     (got) => msg(str`must be a control like "tracer.supersampling" or an item like "view.item:ball" (docs/levels.md lists them), got ${value(got)}`),
   ],
   [/^the (\S+) panel is not in ui\.panels$/, (panel) => msg(str`the ${panel} panel is not in ui.panels`)],
+  [/^the (\S+) panel is in ui\.panels: it cannot be hidden too$/, (panel) => msg(str`the ${panel} panel is in ui.panels: it cannot be hidden too`)],
 
   // Goals and their conditions (goal.ts, condition.ts).
   [

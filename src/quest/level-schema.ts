@@ -63,8 +63,17 @@ const uiSchema = z
       .partialRecord(z.enum(UI_PANELS), z.array(z.string()).min(1))
       .optional()
       .describe('Per panel, the only controls it shows; a panel not named here shows all of them.'),
+    hidden: z
+      .strictObject({ debugger: localizedTextSchema.optional() })
+      .optional()
+      .describe('Panels every level with rays shows (the ray debugger), left out here, each with the reason why.'),
   })
   .superRefine((ui, context) => {
+    for (const panel of Object.keys(ui.hidden ?? {})) {
+      if (ui.panels.some((shown) => shown === panel)) {
+        context.addIssue({ code: 'custom', path: ['hidden', panel], input: panel, message: `the ${panel} panel is in ui.panels: it cannot be hidden too` });
+      }
+    }
     for (const [panel, controls] of Object.entries(ui.controls ?? {})) {
       const known: readonly string[] = LAB_CONTROLS[panel as keyof typeof LAB_CONTROLS];
       if (!ui.panels.some((shown) => shown === panel)) {

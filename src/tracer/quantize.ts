@@ -91,3 +91,18 @@ export function toRgba8(rgb: Float32Array, width: number, height: number, { dith
   }
   return rgba;
 }
+
+/**
+ * The RGB bytes toRgba8 stores for pixel (x, y) of an image when its colour is `color` (the
+ * ray debugger shows them): that pixel's place in the 4×4 Bayer pattern, in an image just
+ * large enough to hold it, so it is exactly the image's quantization.
+ */
+export function pixelBytes(color: readonly number[], x: number, y: number, quantization: Quantization): [number, number, number] {
+  const width = (x & 3) + 1;
+  const height = (y & 3) + 1;
+  const rgb = new Float32Array(width * height * 3);
+  const at = ((y & 3) * width + (x & 3)) * 3;
+  rgb.set(color.slice(0, 3), at);
+  const rgba = toRgba8(rgb, width, height, quantization);
+  return [rgba[at / 3 * 4], rgba[at / 3 * 4 + 1], rgba[at / 3 * 4 + 2]];
+}

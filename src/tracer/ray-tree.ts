@@ -47,6 +47,18 @@ export interface RayNode {
   untested?: true;
   /** A ray that hit a surface, traced with terms (`rt trace --terms`): the parts of its colour. */
   terms?: ShadingTerms;
+  /**
+   * Traced with terms: what this ray's colour is multiplied by where it is added: 1/s² for a
+   * root (into the pixel), 1/(n²·k) for a lens or time ray (into its root), ks, kr or kt for
+   * a reflected or refracted ray (over m² for a glossy one). Light rays have none: their
+   * colour is what they add.
+   */
+  weight?: number;
+  /**
+   * A light or shadow ray traced with terms: its sample's diffuse and highlight (its colour is
+   * their sum; 0 when blocked), so a debugger can grow a light's terms sample by sample.
+   */
+  parts?: { diffuse: Color; specular: Color };
 }
 
 /** The answer to "which rays made this pixel?" (`rt trace`). */

@@ -29,6 +29,10 @@ export function tracePixel(scene: TracerScene, px: number, py: number, seed: num
     integrator.recordTerms = false;
   }
   assignContributions(roots, integrator.childWeights);
+  if (options.terms) {
+    for (const root of roots) root.weight = 1 / roots.length;
+    for (const [node, weight] of integrator.childWeights) node.weight = weight;
+  }
   integrator.childWeights.clear();
   return { pixel: [px, py], color: [Math.fround(color.x), Math.fround(color.y), Math.fround(color.z)], rays: roots };
 }

@@ -350,7 +350,11 @@ export class WhittedIntegrator {
       }
       if (blocker !== null) {
         // S = 0: a shadow ray carries black.
-        sampleNodes?.push(newNode('shadow', hit.point, l, shadowHit.t, true, blocker.id, light.id, [0, 0, 0]));
+        if (sampleNodes !== null) {
+          const blocked = newNode('shadow', hit.point, l, shadowHit.t, true, blocker.id, light.id, [0, 0, 0]);
+          if (recorder !== null) blocked.parts = { diffuse: [0, 0, 0], specular: [0, 0, 0] };
+          sampleNodes.push(blocked);
+        }
         recorder?.sample(attenuation, nDotL, rDotV, 'blocked');
         continue;
       }
@@ -375,6 +379,7 @@ export class WhittedIntegrator {
         const reached = newNode('light', hit.point, l, distance, true, null, light.id, [diffuseR + kr * highlight, diffuseG + kg * highlight, diffuseB + kb * highlight]);
         // With Shadows off nothing was tested: the node only records the direction to the light.
         if (!shadows) reached.untested = true;
+        if (recorder !== null) reached.parts = { diffuse: [diffuseR, diffuseG, diffuseB], specular: [kr * highlight, kg * highlight, kb * highlight] };
         sampleNodes.push(reached);
       }
       recorder?.sample(attenuation, nDotL, rDotV, 'reached');
@@ -587,9 +592,10 @@ export class WhittedIntegrator {
     }
     const toCentre = frame.toLight.subVectors(light.position, frame.hit.point);
     const distance = toCentre.length();
-    const color = samples.reduce<[number, number, number]>((sum, s) => [sum[0] + s.color[0], sum[1] + s.color[1], sum[2] + s.color[2]], [0, 0, 0]);
+    const color = sumOf(samples.map((s) => s.color));
     const merged = newNode(type === 'light' ? 'area-light' : 'area-shadow', frame.hit.point, toCentre.divideScalar(distance || 1), distance, true, null, light.id, color);
     merged.corners = light.corners().map((c) => c.toArray()) as RayNode['corners'];
+    if (this.recordTerms) merged.parts = { diffuse: sumOf(samples.map((s) => s.parts!.diffuse)), specular: sumOf(samples.map((s) => s.parts!.specular)) };
     if (samples[0].untested) merged.untested = true;
     node.children.push(merged);
   }
@@ -639,6 +645,11 @@ function newNode(
   objectId: string | null, lightId: string | null, color: [number, number, number],
 ): RayNode {
   return { type, origin: origin.toArray(), direction: direction.toArray(), length, hit, objectId, lightId, color, contribution: 0, children: [] };
+}
+
+/** Colours added channel by channel, in order, from 0 (as the sample loop adds them). */
+function sumOf(colors: readonly (readonly number[])[]): [number, number, number] {
+  return colors.reduce<[number, number, number]>((sum, c) => [sum[0] + c[0], sum[1] + c[1], sum[2] + c[2]], [0, 0, 0]);
 }
 
 function recordEnd(node: RayNode, hit: boolean, length: number, objectId: string | null, color: Vector3): void {

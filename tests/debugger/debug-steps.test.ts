@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { equationOf, pixelAverage, toByte } from '../../src/debugger/debug-equation.ts';
 import { debugProgram, moveCursor, raysShownAt, stepCasting } from '../../src/debugger/debug-steps.ts';
 import { PSEUDOCODE_LINES } from '../../src/debugger/pseudocode.ts';
-import { whyDark } from '../../src/debugger/why-dark.ts';
+import { isDark, whyDark } from '../../src/debugger/why-dark.ts';
 import { parseLevel } from '../../src/quest/level-schema.ts';
 import { loadMeshesFromDisk } from '../../src/scene/load-meshes-node.ts';
 import { meshNamesInScene } from '../../src/scene/mesh-names.ts';
@@ -79,9 +79,10 @@ describe('the debugger’s steps over a pixel’s trace', async () => {
           if ((term.kind === 'reflect' || term.kind === 'refract') && term.ray?.hit) expect(term.factors[1].value).toEqual(term.ray.color);
         }
       }
-      const average = pixelAverage(trace.rays, trace.color);
-      const mean = [0, 1, 2].map((c) => Math.fround(average.samples.reduce((sum, color) => sum + color[c], 0) / average.samples.length));
+      const average = pixelAverage(program);
+      const mean = [0, 1, 2].map((c) => Math.fround(average.parts.reduce((sum, part) => sum + part.share * part.ray.color[c], 0)));
       expect(mean).toEqual(trace.color);
+      expect(average.rays).toBe(trace.rays.length);
     });
   }
 
@@ -150,11 +151,36 @@ describe('why is it dark here?', () => {
   });
 
   it('says a mirror at the recursion depth sends no ray, and a ray that hit nothing shows the background', async () => {
-    expect(await at({ camera, settings: { maxDepth: 0 }, objects: [floor({ specular: 0.5 })], lights: [pointLight([0, 3, 0])] })).toEqual([{ kind: 'depth-limit', maxDepth: 0 }]);
+    expect(await at({ camera, settings: { maxDepth: 0 }, objects: [floor({ specular: 0.5 })], lights: [pointLight([0, 3, 0])] })).toEqual([
+      { kind: 'depth-limit', maxDepth: 0, objectId: 'floor', glass: false, specular: 0.5 },
+    ]);
+    expect(await at({ camera, settings: { maxDepth: 0 }, objects: [floor({ transparent: true })], lights: [pointLight([0, 3, 0])] })).toEqual([
+      { kind: 'depth-limit', maxDepth: 0, objectId: 'floor', glass: true, specular: 0 },
+    ]);
     expect(await at({ camera: { ...camera, target: [0, 4, 0] }, objects: [floor()], lights: [pointLight([0, 3, 0])] })).toEqual([{ kind: 'background' }]);
   });
 
   it('says nothing for a lit point', async () => {
     expect(await at({ camera, objects: [floor()], lights: [pointLight([0, 3, 0])] })).toEqual([]);
+  });
+});
+
+describe('why is it dark here: only asked on a dark pixel, and a weakened light', () => {
+  it('a pixel is dark when every channel is below 30 % of white', () => {
+    expect(isDark([0.29, 0.1, 0])).toBe(true);
+    expect(isDark([0.3, 0.1, 0])).toBe(false);
+    expect(isDark([0.9, 0.6, 0.4])).toBe(false);
+  });
+
+  it('says how much of a light arrives when distance lets less than half of it through', async () => {
+    const scene = sceneFrom({
+      camera: { position: [0, 2, 0.001], target: [0, 0, 0], fov: 10, pixels: [1, 1] },
+      objects: [{ id: 'floor', shape: 'plane', scale: [20, 1, 20], material: matte([0.5, 0.5, 0.5]) }],
+      lights: [pointLight([0, 6, 0], { distanceAttenuation: true })],
+    });
+    const [reason] = whyDark(tracePixel(buildTracerScene(scene, new Map()), 0, 0, 1, { terms: true }).rays[0], scene);
+    // 1 / (0.04 + 0.1·6 + 0.06·36): about 0.36 of the light arrives 6 m away.
+    expect(reason).toMatchObject({ kind: 'weakened', lightId: 'lamp' });
+    expect(reason.kind === 'weakened' && reason.attenuation).toBeCloseTo(1 / (0.04 + 0.6 + 0.06 * 36), 6);
   });
 });

@@ -25,7 +25,7 @@ const shading = JSON.parse(levelText(SHADING)) as Level;
 interface Level {
   id: string;
   chapter: string;
-  ui: { panels: string[]; controls?: Record<string, unknown> };
+  ui: { panels: string[]; controls?: Record<string, unknown>; hidden?: Record<string, unknown> };
   badges?: unknown[];
   scene: { camera: Record<string, unknown>; settings: Record<string, unknown>; objects: Record<string, unknown>[] };
   tasks: { id: string; mandatory?: boolean; goal: unknown; guide?: string; hints?: unknown[]; solution?: unknown[]; view?: Record<string, unknown> }[];
@@ -63,6 +63,7 @@ const LEVEL_MISTAKES: Record<string, (level: Level) => void> = {
   'a badge for a missing task': (level) => (level.badges = [{ id: 'all-rays', title: 'All rays', text: 'Well done', tasks: ['no-such-task'] }]),
   'a guide that is no control': (level) => (level.tasks[4]!.guide = 'the ambient slider'),
   'controls of a panel not shown': (level) => (level.ui.controls = { ...level.ui.controls, light: ['intensity'] }),
+  'a reason to hide a panel it shows': (level) => (level.ui.hidden = { debugger: { en: 'Not yet.', nl: 'Nog niet.' } }),
   'a path that starts wrong': (level) => (goalOf(level, 4).state = '.scene'),
   'a path that cannot be read': (level) => (goalOf(level, 4).state = 'scene..settings'),
   'a quiz answer past its choices': (level) => ((goalOf(level, 7).quiz as Goal).answer = 5),

@@ -24,6 +24,17 @@ const catalog = loadLevels(readFileSync(new URL('index.json', levelsFolder), 'ut
 const levels = catalog.chapters.flatMap((chapter) => chapter.entries.flatMap((entry) => (entry.ok ? [entry.level] : [])));
 const withDebugger = levels.filter((level) => level.tasks.some((task) => task.solution?.some((action) => action.type.startsWith('debugger.'))));
 
+describe('the ray debugger in every level with rays (issue 37)', () => {
+  it('every level shows it, or says in its file why it is left out', () => {
+    for (const level of levels) {
+      const hidden = level.ui.hidden?.debugger;
+      expect(level.ui.panels.includes('debugger') || hidden !== undefined, `${level.id} neither shows the debugger nor says why not`).toBe(true);
+      if (hidden !== undefined) expect(typeof hidden === 'string' ? hidden : hidden.en, `${level.id}: the reason`).toMatch(/\w{3,}.*\w{3,}/);
+    }
+    expect(levels.filter((level) => level.ui.hidden?.debugger).map((level) => level.id)).toEqual(['01-introduction']);
+  });
+});
+
 describe('the levels’ debugger solutions are reachable in the debugger', () => {
   it('the shading, shadows, reflections, refraction and attenuation levels have debugger tasks', () => {
     expect(withDebugger.map((level) => level.id)).toEqual(['03-shading', '04-shadows', '05-reflections', '06-refraction', '09-attenuation']);

@@ -130,6 +130,15 @@ describe('field messages read `path: reason`, like scene files', () => {
     ]);
   });
 
+  it('takes a reason for leaving the debugger out, but not for a panel it shows', () => {
+    const reason = { en: 'Rays come in the next level.', nl: 'Stralen komen in het volgende level.' };
+    const ok = parseLevel(levelFile((level) => ((level.ui as Json).hidden = { debugger: reason })));
+    expect(ok.ok && ok.level.ui.hidden).toEqual({ debugger: reason });
+    expect(errorsOf((level) => (level.ui = { panels: ['object', 'tracer', 'render', 'debugger'], hidden: { debugger: reason } }))).toEqual([
+      'ui.hidden.debugger: the debugger panel is in ui.panels: it cannot be hidden too',
+    ]);
+  });
+
   it('gives one line for text that is not JSON', () => {
     expect(parseLevelJson('{ "version": 1, }')).toEqual({ ok: false, errors: ['(root): not valid JSON at line 1, column 17: expected a field name in double quotes, found "}"'] });
   });

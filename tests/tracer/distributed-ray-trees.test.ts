@@ -81,6 +81,10 @@ describe('distributed ray trees equal the image', () => {
     const shares = root.children.reduce((total, c) => total + c.contribution, 0);
     expect(shares).toBeCloseTo(root.contribution, 12);
     for (const child of root.children) expect(child.contribution).toBeCloseTo(sum(child.color) / 12 / sum(root.color), 12);
+    // Traced with terms, each child carries its weight in the root: 1/(n²·k).
+    const weighed = tracePixel(scene, 2, 2, 1, { terms: true }).rays[0];
+    expect(weighed.weight).toBe(1);
+    expect(weighed.children.map((child) => child.weight)).toEqual(Array(12).fill(1 / 12));
   });
 
   it('a pinhole with one time keeps today\'s tree: no lens or time fields, no extra level', () => {

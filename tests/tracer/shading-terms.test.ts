@@ -46,8 +46,9 @@ function walk(nodes: RayNode[], visit: (node: RayNode, depth: number) => void, d
   }
 }
 
+/** The tree without what tracing with terms adds: the hits' terms, the rays' weights and the light rays' parts. */
 function withoutTerms(nodes: RayNode[]): RayNode[] {
-  return nodes.map(({ terms: _terms, ...node }) => ({ ...node, children: withoutTerms(node.children) }));
+  return nodes.map(({ terms: _terms, weight: _weight, parts: _parts, ...node }) => ({ ...node, children: withoutTerms(node.children) }));
 }
 
 async function tracerFor(scene: Scene): Promise<TracerScene> {
@@ -70,6 +71,7 @@ function checkScreen(tracer: TracerScene): number {
       // The pixel is the mean of its samples' colours, as the renderer adds them.
       const mean = [0, 1, 2].map((c) => Math.fround(traced.rays.reduce((sum, root) => sum + root.color[c], 0) / traced.rays.length));
       expect(mean).toEqual(traced.color);
+      for (const root of traced.rays) expect(root.weight).toBe(1 / traced.rays.length);
       walk(traced.rays, (node) => {
         const isSurfaceRay = node.type === 'primary' || node.type === 'reflect' || node.type === 'refract';
         if (!isSurfaceRay || !node.hit) {
@@ -86,6 +88,8 @@ function checkScreen(tracer: TracerScene): number {
           const children = node.children.filter((child) => child.type === type);
           expect(children.length).toBe(terms[type] ? 1 : 0);
           if (terms[type]) expect(terms[type].color).toEqual(children[0].color);
+          // The child's weight is the term's: what the parent multiplies its colour by.
+          if (terms[type]) expect(children[0].weight).toBe(terms[type].weight);
         }
         if (terms.reflect && terms.refract) expect(terms.reflect.weight + terms.refract.weight).toBeCloseTo(1, 12);
         for (const light of terms.lights) {
@@ -94,6 +98,10 @@ function checkScreen(tracer: TracerScene): number {
           for (let c = 0; c < 3; c++) {
             expect(rays.reduce((sum, ray) => sum + ray.color[c], 0)).toBeCloseTo(light.diffuse[c] + light.specular[c], 12);
           }
+          // Each ray's parts are its sample's diffuse and highlight: added in order, exactly the light's terms.
+          expect(rays.reduce((sum, ray) => sum.map((value, c) => value + ray.parts!.diffuse[c]), [0, 0, 0])).toEqual(light.diffuse);
+          expect(rays.reduce((sum, ray) => sum.map((value, c) => value + ray.parts!.specular[c]), [0, 0, 0])).toEqual(light.specular);
+          for (const ray of rays) for (let c = 0; c < 3; c++) expect(ray.parts!.diffuse[c] + ray.parts!.specular[c]).toBeCloseTo(ray.color[c], 12);
           for (const factor of [light.attenuation, light.visibility, light.NdotL, light.RdotV]) expect(factor).toBeGreaterThanOrEqual(0);
           expect(light.visibility).toBeLessThanOrEqual(1);
           expect(light.NdotL).toBeLessThanOrEqual(1);
@@ -158,6 +166,7 @@ describe('shading terms of a rough (glossy) surface (distribution-effects)', () 
           const { specular, glossySamples } = scene.objects.find((object) => object.id === node.objectId)!.material;
           const share = specular / (glossySamples * glossySamples);
           expect(fan).toHaveLength(glossySamples * glossySamples);
+          for (const child of fan) expect(child.weight).toBe(share);
           const left = fan.filter((child) => !child.absorbed);
           const reflect = node.terms.reflect;
           if (left.length === 0) return expect(reflect).toBeNull();

@@ -25,7 +25,7 @@ describe('names of rays', () => {
   const reached = ray('light', { lightId: 'lamp' });
   const blocked = ray('shadow', { lightId: 'lamp', objectId: 'ball', color: [0, 0, 0] });
   const untested = ray('light', { lightId: 'lamp', untested: true });
-  const lightStep = (node: RayNode): DebugStep => ({ kind: 'light', line: 'lit', ray: node, hit: null, from: null, depth: 0, sample: 0 });
+  const lightStep = (node: RayNode): DebugStep => ({ kind: 'light', line: 'lit', ray: node, hit: null, from: null, depth: 0, sample: 0, level: 1, place: null, share: 1, adds: node.color, sum: node.color });
 
   beforeAll(async () => {
     speak = await standInPage();

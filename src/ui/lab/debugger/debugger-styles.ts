@@ -13,6 +13,7 @@ export const debuggerStyles = css`
     font-weight: 600;
   }
   .card {
+    container-type: inline-size;
     display: flex;
     flex-direction: column;
     gap: 6px;
@@ -61,37 +62,51 @@ export const debuggerStyles = css`
   }
   .keys {
     color: var(--rt-muted);
-    font-size: 0.75rem;
-    margin-left: auto;
+    font-size: 0.72rem;
     white-space: nowrap;
   }
-  .now-line {
-    display: flex;
-    align-items: baseline;
-    gap: 10px;
+  /* Too narrow for the hint beside the buttons: their titles and aria-keyshortcuts still name the keys. */
+  @container (max-width: 880px) {
+    .keys {
+      display: none;
+    }
   }
   .now {
     margin: 0;
     font-size: 0.85rem;
     min-height: 1.3em;
   }
+  /* The pseudocode, the tree of rays with the running sum, the hit's equation: each scrolls on its own, its sum stays in view. */
   .columns {
     display: grid;
-    grid-template-columns: minmax(0, 1.1fr) minmax(0, 1fr);
-    gap: 10px;
+    grid-template-columns: minmax(0, 0.8fr) minmax(0, 1fr) minmax(0, 1.2fr);
+    gap: 8px;
     min-height: 0;
     flex: 1;
   }
   .columns > * {
     min-height: 0;
+  }
+  .columns > rt-debug-code {
     overflow-y: auto;
+  }
+  .right {
+    display: flex;
+    flex-direction: column;
+    gap: 4px;
+  }
+  .right > rt-debug-equation {
+    flex: 1;
   }
   .columns > :focus-visible {
     outline: 3px solid var(--rt-focus);
     outline-offset: -3px;
   }
   .why {
-    font-size: 0.8rem;
+    flex: none;
+    max-height: 40%;
+    overflow-y: auto;
+    font-size: 0.76rem;
   }
   .why p,
   .why ul {
@@ -104,9 +119,15 @@ export const debuggerStyles = css`
   .problem {
     margin: 0 0 6px;
   }
+  /* Narrow: the pseudocode above the tree, the equation beside both. */
   @media (max-width: 1100px) {
     .columns {
-      grid-template-columns: minmax(0, 1fr);
+      grid-template-columns: minmax(0, 1fr) minmax(0, 1fr);
+      grid-template-rows: minmax(0, 1fr) minmax(0, 1fr);
+    }
+    .right {
+      grid-column: 2;
+      grid-row: 1 / span 2;
     }
   }
 `;

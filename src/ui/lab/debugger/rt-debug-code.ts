@@ -54,6 +54,7 @@ export class RtDebugCode extends LitElement {
     }
     .code {
       white-space: pre-wrap;
+      overflow-wrap: anywhere;
     }
   `;
 

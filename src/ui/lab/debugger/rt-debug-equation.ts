@@ -1,20 +1,15 @@
 import { msg, str } from '@lit/localize';
 import { css, html, LitElement, nothing } from 'lit';
 import { styleMap } from 'lit/directives/style-map.js';
-import { toByte, type Equation, type EquationTerm, type Factor, type PixelAverage } from '../../../debugger/debug-equation.ts';
-import { currentLocale } from '../../../i18n/locale.ts';
+import type { Equation, EquationTerm, Factor, PixelAverage } from '../../../debugger/debug-equation.ts';
 import { localNumbers } from '../../../i18n/number-format.ts';
 import type { Color, Scene } from '../../../scene/scene.ts';
+import { pixelBytes, type Quantization } from '../../../tracer/quantize.ts';
 import { colorToHex } from '../../controls/color-hex.ts';
-import { itemName, termName } from './debugger-text.ts';
+import { colorText } from './debug-numbers.ts';
+import { itemName, placeText, shareText, termName } from './debugger-text.ts';
 
-const number = localNumbers({ minimumFractionDigits: 3, maximumFractionDigits: 3 });
 const factorNumber = localNumbers({ maximumFractionDigits: 3 });
-
-/** "(0.125, 0.500, 1.000)" in the reader's number format (Dutch writes "(0,125; 0,500; 1,000)"). */
-export function colorText(color: Color): string {
-  return `(${color.map((value) => number.format(value)).join(currentLocale() === 'nl' ? '; ' : ', ')})`;
-}
 
 function factorText(factor: Factor): string {
   const value = typeof factor.value === 'number' ? factorNumber.format(factor.value) : colorText(factor.value);
@@ -25,6 +20,9 @@ function factorText(factor: Factor): string {
 export interface PixelSum extends PixelAverage {
   /** The pixel as the camera's traced image has it, or null while it is being traced. */
   image: Color | null;
+  /** Which pixel, and how the image turns its colour into bytes. */
+  pixel: readonly [number, number];
+  quantization: Quantization;
 }
 
 /** The term-click event's detail. */
@@ -32,9 +30,11 @@ export type TermClickDetail = EquationTerm;
 
 /**
  * @summary A hit's colour written out as the sum of its terms, each with its factors and a
- * swatch, the sum and what clamping makes of it; or, at the last step, the samples' colours
- * averaged into the pixel, next to the image's pixel. Terms that come from a ray are buttons:
- * clicking one (or Enter) highlights that ray in 3D.
+ * swatch, growing as the debugger steps (a light's terms sample by sample, a reflection ray
+ * by ray), the sum and what clamping makes of it; or, at the last step, the rays' colours
+ * times their shares added into the pixel, next to the image's pixel. The terms scroll; the
+ * sum under them stays in view. Terms that come from a ray are buttons: clicking one (or
+ * Enter) highlights that ray in 3D.
  *
  * @event term-click - a term was chosen (detail: the EquationTerm)
  */
@@ -48,28 +48,36 @@ export class RtDebugEquation extends LitElement {
 
   static override styles = css`
     :host {
-      display: block;
-      font-size: 0.8rem;
+      display: flex;
+      flex-direction: column;
+      min-height: 0;
+      font-size: 0.76rem;
     }
     h3 {
-      margin: 0 0 4px;
-      font-size: 0.85rem;
+      margin: 0 0 2px;
+      font-size: 0.8rem;
     }
     ul {
       list-style: none;
       margin: 0;
       padding: 0;
       display: grid;
-      gap: 2px;
+      align-content: start;
+      gap: 1px;
+    }
+    .terms {
+      flex: 1;
+      min-height: 0;
+      overflow-y: auto;
     }
     .term {
       box-sizing: border-box;
       display: grid;
-      grid-template-columns: 1.4em minmax(0, 1fr) auto;
+      grid-template-columns: 1.2em minmax(0, 1fr) auto;
       align-items: center;
-      gap: 2px 8px;
+      gap: 0 6px;
       width: 100%;
-      padding: 3px 6px;
+      padding: 2px 4px;
       text-align: left;
       font: inherit;
       color: var(--rt-text);
@@ -83,6 +91,10 @@ export class RtDebugEquation extends LitElement {
     button.term:hover {
       border-color: var(--rt-accent);
     }
+    .terms:focus-visible {
+      outline: 3px solid var(--rt-focus);
+      outline-offset: -3px;
+    }
     button.term:focus-visible {
       outline: 3px solid var(--rt-focus);
       outline-offset: 1px;
@@ -91,7 +103,8 @@ export class RtDebugEquation extends LitElement {
       border-color: var(--rt-accent);
       background: var(--rt-accent-soft);
     }
-    .term.zero {
+    .term.zero,
+    .term.pending {
       color: var(--rt-muted);
     }
     .swatch {
@@ -108,13 +121,15 @@ export class RtDebugEquation extends LitElement {
     .factors {
       grid-column: 2 / -1;
       color: var(--rt-muted);
-      font-size: 0.75rem;
+      font-size: 0.7rem;
     }
     .total {
-      border-top: 1px solid var(--rt-border);
-      margin-top: 4px;
-      padding-top: 4px;
       font-weight: 600;
+    }
+    .sums {
+      border-top: 1px solid var(--rt-border);
+      margin-top: 2px;
+      padding-top: 2px;
     }
   `;
 
@@ -137,26 +152,35 @@ export class RtDebugEquation extends LitElement {
     const equation = this.equation;
     if (!equation || !this.scene) return html`<p>${msg('The equation appears when a ray hits a surface.')}</p>`;
     const scene = this.scene;
+    const done = equation.complete;
     return html`
       <h3>${msg(str`Colour of the hit on ${itemName(scene, equation.hit.objectId)}`)}</h3>
-      <ul>
+      <!-- Focusable: the terms scroll in a short dock, and a keyboard must be able to scroll them too (WCAG 2.1.1). -->
+      <ul class="terms" tabindex="0" aria-label=${msg('Its terms')}>
         ${equation.terms.map((term) => html`<li>${this.renderTerm(term, scene)}</li>`)}
-        <li>${this.row(msg('Sum of the terms'), equation.sum, equation.clamped ? msg('before clamping') : '', 'total')}</li>
-        ${equation.clamped ? html`<li>${this.row(msg('Clamped to 0..1'), equation.color, '', 'total')}</li>` : nothing}
+      </ul>
+      <ul class="sums">
+        <li>${this.row(done ? msg('Sum of the terms') : msg('Sum so far'), equation.sum, done && equation.clamped ? msg('before clamping') : '', 'total')}</li>
+        ${done && equation.clamped ? html`<li>${this.row(msg('Clamped to 0..1'), equation.color, '', 'total')}</li>` : nothing}
       </ul>
     `;
   }
 
   private renderTerm(term: EquationTerm, scene: Scene) {
     const name = termName(term.kind, itemName(scene, term.lightId));
+    const { added, total } = term.rays;
+    const pending = added < total;
     const zero = term.color.every((value) => value === 0);
-    const factors = [
-      ...(term.samples > 1 ? [msg(str`Σ over ${term.samples} samples; A, S, N·L, R·V are means`)] : []),
-      term.factors.map(factorText).join(' · '),
-    ].join(' — ');
-    if (!term.ray) return this.row(name, term.color, factors, zero ? 'zero' : '');
+    // While its rays are still being added, the term says how far it is; its factors (means over all of them) come once it is whole.
+    const factors = pending
+      ? total > 1
+        ? msg(str`${added} of ${total} rays added`)
+        : msg('its ray is not added yet')
+      : [...(term.samples > 1 ? [msg(str`Σ over ${term.samples} samples; A, S, N·L, R·V are means`)] : []), term.factors.map(factorText).join(' · ')].join(' — ');
+    const kind = pending ? 'pending' : zero ? 'zero' : '';
+    if (!term.ray) return this.row(name, term.color, factors, kind);
     return html`<button
-      class=${zero ? 'term zero' : 'term'}
+      class=${`term ${kind}`}
       data-term=${term.id}
       aria-pressed=${this.chosen === term.id ? 'true' : 'false'}
       title=${msg('Highlight the ray this term comes from')}
@@ -178,16 +202,20 @@ export class RtDebugEquation extends LitElement {
   }
 
   private renderAverage(average: PixelSum) {
-    const count = average.samples.length;
-    const bytes = (color: Color) => color.map(toByte).join(', ');
+    const [x, y] = average.pixel;
+    const bytes = (color: Color) => pixelBytes(color, x, y, average.quantization).join(', ');
+    const heading =
+      average.rays > 1 ? msg(str`The pixel: the sum of its ${average.rays} rays’ colours, each times its share`) : msg('The pixel: its one ray’s colour');
     return html`
-      <h3>${count > 1 ? msg(str`The pixel: the average of its ${count} samples`) : msg('The pixel: its one sample')}</h3>
-      <ul>
-        ${average.samples.map((color, index) => html`<li>${this.row(msg(str`Sample ${index + 1}`), color, count > 1 ? msg(str`weight 1/${count}`) : '', '')}</li>`)}
+      <h3>${heading}</h3>
+      <ul class="terms" tabindex="0" aria-label=${msg('The pixel’s parts')}>
+        ${average.parts.map(
+          (part) => html`<li>${this.row(part.place ? placeText(part.place) : msg('Primary ray'), part.ray.color, average.rays > 1 ? msg(str`share ${shareText(part.share)}`) : '', '')}</li>`,
+        )}
+      </ul>
+      <ul class="sums">
         <li>${this.row(msg('Pixel colour'), average.color, msg(str`8-bit: ${bytes(average.color)}`), 'total')}</li>
-        ${average.image
-          ? html`<li>${this.row(msg('The image’s pixel'), average.image, msg(str`8-bit: ${bytes(average.image)}`), 'total')}</li>`
-          : nothing}
+        ${average.image ? html`<li>${this.row(msg('The image’s pixel'), average.image, msg(str`8-bit: ${bytes(average.image)}`), 'total')}</li>` : nothing}
       </ul>
     `;
   }

@@ -1,9 +1,9 @@
 import { msg, str } from '@lit/localize';
 import { html, nothing, type PropertyValues } from 'lit';
-import { equationOf, pixelAverage } from '../../../debugger/debug-equation.ts';
+import { equationAt, pixelAverage } from '../../../debugger/debug-equation.ts';
 import { debugProgram, moveCursor, raysShownAt, type DebugProgram, type DebugStep } from '../../../debugger/debug-steps.ts';
 import { debuggerRayOf, findStep, findTerm } from '../../../debugger/debug-goals.ts';
-import { whyDark } from '../../../debugger/why-dark.ts';
+import { isDark, whyDark } from '../../../debugger/why-dark.ts';
 import type { DebuggerAction, LabAction } from '../../../lab-state/lab-action.ts';
 import { LAB_CONTROLS } from '../../../quest/lab-controls.ts';
 import type { ScreenRays } from '../../../render/screen-rays.ts';
@@ -15,6 +15,7 @@ import { debuggerStyles } from './debugger-styles.ts';
 import type { PixelSum, TermClickDetail } from './rt-debug-equation.ts';
 import './rt-debug-code.ts';
 import './rt-debug-equation.ts';
+import './rt-debug-tree.ts';
 
 /** Milliseconds between steps while playing: time to see a ray grow (about 1 s at the default speed) and read the line. */
 export const PLAY_INTERVAL_MS = 1100;
@@ -30,9 +31,10 @@ const KEY_MOVES: Readonly<Record<string, 'step' | 'back' | 'reset' | 'end'>> = {
 /**
  * @summary The ray debugger (ray-debugger spec §2): steps through the selected pixel's rays
  * in the order the tracer made them, one ray highlighted in the 3D view (the others dimmed),
- * the pseudocode's current line lit, the current hit's colour written out as its terms (a
- * clicked term highlights its ray), the pixel as the average of its samples next to the
- * image's pixel, and "why is it dark here?" in words.
+ * the pseudocode's current line lit, the pixel's samples and rays as a tree with each one's
+ * share and the pixel's running sum, the current hit's colour written out as its terms,
+ * growing step by step (a clicked term highlights its ray), the pixel as the sum of its rays
+ * next to the image's pixel, and, on a dark pixel, "why is it dark here?" in words.
  *
  * Keyboard: with focus in the debugger, → steps, ← steps back, Space plays or pauses, Home
  * goes to the start and End to the end; every step is announced (a live region).
@@ -306,18 +308,16 @@ export class RtRayDebugger extends StorePanel {
     if (this.problem) return html`<p class="problem" role="alert">${msg(str`The pixel could not be traced: ${this.problem}`)}</p>`;
     if (!program || !step || !scene) return html`<p role="status">${msg('Tracing the pixel…')}</p>`;
     return html`
-      <div class="now-line">
-        <p class="now" role="status" aria-live="polite">${stepText(step, scene)}</p>
-        <span class="keys">${msg('Keys: → ← Space Home End')}</span>
-      </div>
+      <p class="now" role="status" aria-live="polite">${stepText(step, scene)}</p>
       <div class="columns">
         <!-- Focusable: its lines scroll in a short dock, and a keyboard must be able to scroll them too (WCAG 2.1.1). -->
         <rt-debug-code tabindex="0" data-guide=${this.guideOf('code') ?? nothing} .line=${step.line}></rt-debug-code>
+        <rt-debug-tree .program=${program} .index=${this.index} .scene=${scene} .quantization=${scene.settings}></rt-debug-tree>
         <div class="right">
           <rt-debug-equation
             data-guide=${[this.guideOf('equation'), step.kind === 'average' ? this.guideOf('pixel') : undefined].filter(Boolean).join(' ')}
             .scene=${scene}
-            .equation=${step.hit ? equationOf(step.hit, scene) : null}
+            .equation=${equationAt(program, this.index, scene)}
             .average=${step.kind === 'average' ? this.pixelSum(program) : null}
             .chosen=${this.pinned?.id ?? null}
             @term-click=${this.onTermClick}
@@ -337,6 +337,7 @@ export class RtRayDebugger extends StorePanel {
           ${this.playing ? msg('Pause') : msg('Play')}
         </button>
         <button data-guide=${this.guideOf('step') ?? nothing} aria-keyshortcuts="ArrowRight" title=${msg('One step on (→)')} ?disabled=${this.index === last} @click=${() => this.move('step')}>${msg('Step')} ▶</button>
+        <span class="keys">${msg('Keys: → ← Space Home End')}</span>
       </div>`;
   }
 
@@ -344,19 +345,22 @@ export class RtRayDebugger extends StorePanel {
     const [x, y] = program.trace.pixel;
     const screen = this.screenRays;
     const image = screen && x < screen.columns && y < screen.rows ? (screen.traces[y * screen.columns + x]?.color ?? null) : null;
-    return { ...pixelAverage(program.trace.rays, program.trace.color), image };
+    return { ...pixelAverage(program), image, pixel: [x, y], quantization: this.state?.scene.settings ?? { encoding: 'none', dithering: false } };
   }
 
+  /** "Why is it dark here?", only on a dark pixel: the reasons of the hit the step is at (or of its sample's first hit). */
   private renderWhyDark(step: DebugStep, program: DebugProgram) {
     const scene = this.state?.scene;
-    if (!scene) return nothing;
+    if (!scene || !isDark(program.trace.color)) return nothing;
     const missed = step.ray && !step.ray.hit && (step.kind === 'cast' || step.kind === 'return') ? step.ray : null;
-    const subject = missed ?? step.hit ?? program.trace.rays[step.sample];
+    const root = program.trace.rays[step.sample];
+    const firstRay = root?.children.length && root.children.every((child) => child.type === 'primary') ? root.children[0] : root;
+    const subject = missed ?? step.hit ?? firstRay;
     const reasons = subject ? whyDark(subject, scene) : [];
     return html`<div class="why" data-guide=${this.guideOf('why-dark') ?? nothing}>
       <h3>${msg('Why is it dark here?')}</h3>
       ${reasons.length === 0
-        ? html`<p>${msg('No light is cut off here: every light that can reach this point does.')}</p>`
+        ? html`<p>${msg('No light is cut off at this point: it is as dark as its terms add up to (its colour C, kd, and the lights’ I and A).')}</p>`
         : html`<ul>${reasons.map((reason) => html`<li>${darkReasonText(reason, scene)}</li>`)}</ul>`}
     </div>`;
   }
