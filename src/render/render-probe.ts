@@ -35,6 +35,11 @@ const MAX_PROBE_ROUNDS = 5;
  */
 export const PROBE_ABOVE_SECONDS = HEAVY_RENDER_SECONDS / 10;
 
+/** Whether the model puts a render over PROBE_ABOVE_SECONDS, so that it is probed before it starts. */
+export function mayBeLong(scene: Scene, width: number, height: number, workers: number): boolean {
+  return estimateRender(scene, width, height, workers).seconds >= PROBE_ABOVE_SECONDS;
+}
+
 /** The probe's image for a `width × height` render on `workers` workers: the same aspect ratio, PROBE_SECONDS of samples or the whole image, at least one pixel. */
 export function probeSize(scene: Scene, width: number, height: number, workers: number): [number, number] {
   const samples = (PROBE_SECONDS * RAYS_PER_SECOND_PER_WORKER * Math.max(1, workers)) / (raysPerSample(scene) * primaryRaysPerSample(scene));
@@ -91,7 +96,7 @@ export async function estimateHere(
   height: number,
   { preview, calibration, signal }: EstimateHereOptions,
 ): Promise<EstimatesHere | null> {
-  if (estimateRender(scene, width, height, pool.size).seconds < PROBE_ABOVE_SECONDS) return { estimate: modelEstimate(pool.size), measured: false };
+  if (!mayBeLong(scene, width, height, pool.size)) return { estimate: modelEstimate(pool.size), measured: false };
   const cost = await probeSampleCost(pool, scene, meshes, width, height, signal);
   return cost && { estimate: measuredEstimate(cost, scene, { workers: pool.size, preview, correction: calibration.correction }), measured: true };
 }
