@@ -10,6 +10,14 @@
 /** Renders estimated at less than this are not counted: their fixed costs (the first messages, the raster picture) say nothing of a long render. */
 const MIN_ESTIMATED_SECONDS = 5;
 
+/**
+ * The correction starts as if one render of a minute had come out as estimated: one render
+ * on a busy machine is as much the load of that minute as the machine's bias (the benchmark's
+ * first case once took 0.59 times its estimate, and the next case, corrected by that, 1.77
+ * times), so it moves the correction part of the way, and many renders all of it.
+ */
+const PRIOR_SECONDS = 60;
+
 /** The correction stays within this factor either way: a render stalled by something else (a laptop's sleep) must not make every later estimate absurd. */
 const MAX_CORRECTION = 3;
 
@@ -24,9 +32,9 @@ export class EstimateCalibration {
     this.realSeconds += realMs / 1000;
   }
 
-  /** Real time per estimated time over the renders recorded, the longest weighing most; 1 before any. */
+  /** Real time per estimated time over the renders recorded and the prior minute, the longest weighing most; 1 before any. */
   get correction(): number {
-    if (this.estimatedSeconds === 0) return 1;
-    return Math.min(MAX_CORRECTION, Math.max(1 / MAX_CORRECTION, this.realSeconds / this.estimatedSeconds));
+    const ratio = (PRIOR_SECONDS + this.realSeconds) / (PRIOR_SECONDS + this.estimatedSeconds);
+    return Math.min(MAX_CORRECTION, Math.max(1 / MAX_CORRECTION, ratio));
   }
 }

@@ -3,12 +3,14 @@
  * (measured-estimate.ts): the workers trace a small image of the scene at one sample per
  * pixel, about PROBE_SECONDS of work by the model's guess, and report their rays and time.
  *
- * They trace it again until two rounds take about as long (STEADY), at most
- * MAX_PROBE_ROUNDS times, and the last round counts. The first round can be many times
- * slower than the render will be: workers that have not traced this kind of scene yet run
- * its code unoptimized until V8 has compiled it, on a busy machine for seconds (in Chromium
- * on the project's loaded 2-core machine, 0.19 to 0.26 ms a sample in the first round of a
- * lens scene, 0.008 to 0.018 from the fourth).
+ * They trace it again until two rounds take about as long (STEADY): the first round can be
+ * many times slower than the render will be, as workers that have not traced this kind of
+ * scene yet run its code unoptimized until V8 has compiled it, on a busy machine for seconds
+ * (in Chromium on the project's loaded 2-core machine, 0.19 to 0.26 ms a sample in the first
+ * round of a lens scene, 0.008 to 0.018 from the fourth). From that steady pair on, rounds
+ * add up until they have taken MEASURED_MS, and together they price a sample: one round of
+ * 0.15 s caught the machine's other work in a burst or a lull, and priced one render at
+ * 7.6 µs a sample where renders of the scene took 11 (at most MAX_PROBE_ROUNDS rounds in all).
  */
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import type { Scene } from '../scene/scene.ts';
@@ -26,7 +28,9 @@ export const PROBE_SECONDS = 0.15;
 
 /** Rounds whose times differ by less than this factor show the workers at their pace. */
 const STEADY = 1.15;
-const MAX_PROBE_ROUNDS = 5;
+/** The steady rounds' wall time that prices a sample. */
+const MEASURED_MS = 600;
+const MAX_PROBE_ROUNDS = 10;
 
 /**
  * Renders the model puts under this are not probed: they start at once. The model's rays
@@ -34,6 +38,11 @@ const MAX_PROBE_ROUNDS = 5;
  * 6 s would have to be ten times slower to reach HEAVY_RENDER_SECONDS.
  */
 export const PROBE_ABOVE_SECONDS = HEAVY_RENDER_SECONDS / 10;
+
+/** Whether the model puts a render over PROBE_ABOVE_SECONDS, so that it is probed before it starts. */
+export function mayBeLong(scene: Scene, width: number, height: number, workers: number): boolean {
+  return estimateRender(scene, width, height, workers).seconds >= PROBE_ABOVE_SECONDS;
+}
 
 /** The probe's image for a `width × height` render on `workers` workers: the same aspect ratio, PROBE_SECONDS of samples or the whole image, at least one pixel. */
 export function probeSize(scene: Scene, width: number, height: number, workers: number): [number, number] {
@@ -43,23 +52,30 @@ export function probeSize(scene: Scene, width: number, height: number, workers: 
 }
 
 /**
- * Traces the probe until its rounds are steady; null when it was cancelled (another render
+ * Traces the probe's rounds (see the file comment) and sums those from the first steady pair
+ * on, or the last round when none was steady; null when it was cancelled (another render
  * started on the pool) or `signal` aborted it, which stops it before its next round.
  */
 export async function probeSampleCost(pool: RenderPool, scene: Scene, meshes: MeshLibrary, width: number, height: number, signal?: AbortSignal): Promise<SampleCost | null> {
   const [probeWidth, probeHeight] = probeSize(scene, width, height, pool.size);
-  let last: SampleCost | null = null;
-  for (let round = 0; round < MAX_PROBE_ROUNDS; round++) {
+  const rounds: SampleCost[] = [];
+  /** Where the steady rounds begin, once two in a row took about as long. */
+  let steadyFrom = -1;
+  while (rounds.length < MAX_PROBE_ROUNDS) {
     if (signal?.aborted) return null;
     const result = await pool.render(scene, meshes, { width: probeWidth, height: probeHeight, preview: false, oneSample: true }).done;
     if (result.cancelled) return null;
     // The wall time from the first tile's request, without a scene build the workers did first.
-    const cost = { samples: probeWidth * probeHeight, rays: raysOf(result.stats), ms: Math.max(1, result.ms - result.sceneMs) };
-    const steady = last !== null && Math.max(cost.ms / last.ms, last.ms / cost.ms) < STEADY;
-    last = cost;
-    if (steady) break;
+    rounds.push({ samples: probeWidth * probeHeight, rays: raysOf(result.stats), ms: Math.max(1, result.ms - result.sceneMs) });
+    const [before, last] = rounds.slice(-2);
+    if (steadyFrom < 0 && last && Math.max(last.ms / before.ms, before.ms / last.ms) < STEADY) steadyFrom = rounds.length - 2;
+    if (steadyFrom >= 0 && sum(rounds.slice(steadyFrom)).ms >= MEASURED_MS) break;
   }
-  return last;
+  return sum(rounds.slice(steadyFrom >= 0 ? steadyFrom : -1));
+}
+
+function sum(rounds: SampleCost[]): SampleCost {
+  return rounds.reduce((total, round) => ({ samples: total.samples + round.samples, rays: total.rays + round.rays, ms: total.ms + round.ms }), { samples: 0, rays: 0, ms: 0 });
 }
 
 export interface EstimateHereOptions {
@@ -91,7 +107,7 @@ export async function estimateHere(
   height: number,
   { preview, calibration, signal }: EstimateHereOptions,
 ): Promise<EstimatesHere | null> {
-  if (estimateRender(scene, width, height, pool.size).seconds < PROBE_ABOVE_SECONDS) return { estimate: modelEstimate(pool.size), measured: false };
+  if (!mayBeLong(scene, width, height, pool.size)) return { estimate: modelEstimate(pool.size), measured: false };
   const cost = await probeSampleCost(pool, scene, meshes, width, height, signal);
   return cost && { estimate: measuredEstimate(cost, scene, { workers: pool.size, preview, correction: calibration.correction }), measured: true };
 }

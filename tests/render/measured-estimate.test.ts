@@ -86,19 +86,24 @@ describe('the correction from this session\'s renders', () => {
     expect(calibration.correction).toBe(1);
   });
 
-  it('is the real time per estimated time of the renders recorded, the longest weighing most', () => {
+  it('is the real time per estimated time of the renders recorded and a prior minute that came out as estimated, the longest weighing most', () => {
     const calibration = new EstimateCalibration();
+    calibration.record(60, 30_000);
+    // One render of a minute that took half: halfway there.
+    expect(calibration.correction).toBeCloseTo(90 / 120);
     calibration.record(10, 20_000);
     calibration.record(90, 100_000);
-    expect(calibration.correction).toBeCloseTo(120 / 100);
+    expect(calibration.correction).toBeCloseTo((60 + 150) / (60 + 160));
+    for (let i = 0; i < 50; i++) calibration.record(60, 90_000);
+    expect(calibration.correction).toBeGreaterThan(1.45);
   });
 
   it('stays within a factor 3 either way', () => {
     const slow = new EstimateCalibration();
-    slow.record(10, 600_000);
+    slow.record(10, 6_000_000);
     expect(slow.correction).toBe(3);
     const fast = new EstimateCalibration();
-    fast.record(60, 1000);
+    for (let i = 0; i < 20; i++) fast.record(60, 1000);
     expect(fast.correction).toBeCloseTo(1 / 3);
   });
 });

@@ -45,9 +45,9 @@ describe('the probe before a render that may be long', () => {
     const scene = withSettings({ supersampling: 8, imageSize: [4096, 4096] });
     const estimate = await estimateHere(pool, scene, NO_MESHES, 4096, 4096, { preview: true, calibration: new EstimateCalibration() });
     const [width, height] = probeSize(scene, 4096, 4096, pool.size);
-    // At least two rounds, to see the workers' pace steady.
+    // At least two rounds, to see the workers' pace steady; at most ten.
     expect(render.mock.calls.length).toBeGreaterThanOrEqual(2);
-    expect(render.mock.calls.length).toBeLessThanOrEqual(5);
+    expect(render.mock.calls.length).toBeLessThanOrEqual(10);
     for (const call of render.mock.calls) expect(call).toEqual([scene, NO_MESHES, { width, height, preview: false, oneSample: true }]);
     expect(estimate?.measured).toBe(true);
     const full = estimate!.estimate(scene, 4096, 4096);
@@ -68,19 +68,22 @@ describe('the probe before a render that may be long', () => {
     return { pool: stub as unknown as RenderPool, rounds: () => round };
   }
 
-  it('traces again until two rounds take about as long, and counts the last: the first runs code V8 has not optimized yet', async () => {
+  it('traces again until two rounds take about as long, then sums the rounds from there until they took 600 ms', async () => {
     const scene = withSettings({ supersampling: 8 });
-    const cold = poolTaking(900, 300, 110, 100, 100);
+    const [width, height] = probeSize(scene, 4096, 4096, 2);
+    // The first rounds run code V8 has not optimized yet.
+    const cold = poolTaking(900, 300, 110, 100, 100, 100, 100, 100, 100);
     const cost = await probeSampleCost(cold.pool, scene, NO_MESHES, 4096, 4096);
-    expect(cold.rounds()).toBe(4);
-    expect(cost?.ms).toBe(100);
-    expect(cost!.rays / cost!.samples).toBe(10);
-    const warm = poolTaking(100, 104, 50);
-    expect((await probeSampleCost(warm.pool, scene, NO_MESHES, 4096, 4096))?.ms).toBe(104);
+    expect(cold.rounds()).toBe(8);
+    expect(cost).toEqual({ samples: 6 * width * height, rays: 60 * width * height, ms: 610 });
+    // Slow rounds: the steady pair is enough.
+    const warm = poolTaking(400, 410, 50);
+    expect((await probeSampleCost(warm.pool, scene, NO_MESHES, 4096, 4096))?.ms).toBe(810);
     expect(warm.rounds()).toBe(2);
-    const restless = poolTaking(100, 200, 100, 200, 100, 200);
-    expect((await probeSampleCost(restless.pool, scene, NO_MESHES, 4096, 4096))?.ms).toBe(100);
-    expect(restless.rounds()).toBe(5);
+    // Never steady: the last of ten rounds.
+    const restless = poolTaking(100, 200, 100, 200, 100, 200, 100, 200, 100, 200, 100);
+    expect((await probeSampleCost(restless.pool, scene, NO_MESHES, 4096, 4096))?.ms).toBe(200);
+    expect(restless.rounds()).toBe(10);
   });
 
   it('stops before its next round when it is no longer wanted', async () => {

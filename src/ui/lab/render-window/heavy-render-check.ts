@@ -3,7 +3,7 @@ import { html, type ReactiveController, type ReactiveControllerHost } from 'lit'
 import { loadMeshes } from '../../../render/load-meshes-browser.ts';
 import { lighterRenders, type LighterRender, type RenderEstimate } from '../../../render/render-estimate.ts';
 import type { RenderPool } from '../../../render/render-pool.ts';
-import { estimateHere } from '../../../render/render-probe.ts';
+import { estimateHere, mayBeLong } from '../../../render/render-probe.ts';
 import { EstimateCalibration } from '../../../render/estimate-calibration.ts';
 import { meshNamesInScene } from '../../../scene/mesh-names.ts';
 import type { Scene } from '../../../scene/scene.ts';
@@ -42,6 +42,12 @@ export class HeavyRenderCheck implements ReactiveController {
   }
 
   hostConnected(): void {}
+
+  /** Whether a render of `scene` at its image size needs `mayStart` (a probe): a light one starts at once, without a flash of "Estimating…". */
+  needsCheck(scene: Scene, pool: RenderPool): boolean {
+    const [width, height] = scene.settings.imageSize;
+    return mayBeLong(scene, width, height, pool.size);
+  }
 
   /**
    * Whether a render of `scene` at its image size may start now: not when it is heavy (the

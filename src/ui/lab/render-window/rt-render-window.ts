@@ -157,9 +157,10 @@ export class RtRenderWindow extends LitElement {
   async startRender(force = false, expectedSeconds: number | null = null): Promise<void> {
     if (!this.store || !this.pool) return;
     let expected = expectedSeconds;
-    if (force) this.check.settle();
+    const scene = this.store.state.scene;
+    if (force || !this.check.needsCheck(scene, this.pool)) this.check.settle();
     else {
-      const decision = await this.check.mayStart(this.store.state.scene, this.pool);
+      const decision = await this.check.mayStart(scene, this.pool);
       if (!decision.start) return;
       expected = decision.expectedSeconds;
     }
