@@ -62,7 +62,8 @@ const compact = css`
     }
     /* The map spans the rows below the header; sized by them, not by its content, so that it
        does not stretch the switch's row (and the view with it) while it is open. */
-    rt-level-map {
+    rt-level-map,
+    rt-survey-page {
       contain: size;
     }
     /* The camera's image in the view's lower left at its smallest (26 px cells, the caption
@@ -134,7 +135,8 @@ const compact = css`
     :host([free-lab]) .sidebar {
       grid-area: 2 / 2 / 4 / 3;
     }
-    rt-level-map {
+    rt-level-map,
+    rt-survey-page {
       grid-column: 1 / -1;
       grid-row: 2 / -1;
     }
@@ -160,7 +162,8 @@ const compact = css`
       grid-area: 3 / 1 / 5 / 2;
       border-top: 1px solid var(--rt-border);
     }
-    rt-level-map {
+    rt-level-map,
+    rt-survey-page {
       grid-column: 1;
       grid-row: 2 / -1;
     }

@@ -84,8 +84,9 @@ const labGrid = css`
       outline: 3px solid var(--rt-focus);
       outline-offset: 2px;
     }
-    /* The map covers the whole lab below the header: the level behind it waits. */
-    rt-level-map {
+    /* The map (and the closing survey's page) covers the whole lab below the header: the level behind it waits. */
+    rt-level-map,
+    rt-survey-page {
       grid-column: 1 / -1;
       grid-row: 2;
       z-index: 30;

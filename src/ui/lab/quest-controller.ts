@@ -60,6 +60,8 @@ export class QuestController implements ReactiveController {
   private welcomeDue = false;
   /** The learner's survey answers in this session's progress (read once per session), or null before they hand it in. */
   survey: SurveySubmission | null = null;
+  /** The learner put the closing survey off ("Later"): it waits in the task column instead of covering the lab. */
+  surveyLater = false;
   private readonly cleanup: (() => void)[] = [];
 
   constructor(private readonly host: QuestHost & HTMLElement) {
@@ -229,6 +231,12 @@ export class QuestController implements ReactiveController {
     new SurveyStore(browserStorage(), session.progressKey).save(answers);
     this.survey = answers;
     this.host.toast(msg('Thank you! Your answers are saved. Download your data below for your teacher.'));
+    this.host.requestUpdate();
+  }
+
+  /** Puts the closing survey off (back to the lab), or opens it again. */
+  putSurveyOff(later: boolean): void {
+    this.surveyLater = later;
     this.host.requestUpdate();
   }
 

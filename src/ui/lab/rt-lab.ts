@@ -25,6 +25,7 @@ import { taskColumn } from './task-column.ts';
 import { levelPanels } from './level-panels.ts';
 import { viewLegendBox } from './view-legend.ts';
 import { sideSwitch } from './side-switch.ts';
+import { surveyPage } from './survey-page.ts';
 import { QuestController } from './quest-controller.ts';
 import type { RtRenderWindow } from './render-window/rt-render-window.ts';
 import type { RtSceneView } from './rt-scene-view.ts';
@@ -360,6 +361,7 @@ export class RtLab extends LitElement {
             @map-choice=${(event: CustomEvent<MapChoice>) => this.game.map(event.detail)}
           ></rt-level-map>`
         : nothing}
+      ${this.renderOpen ? nothing : surveyPage(this.game, this.assignment)}
       <rt-guide-ring .locate=${this.ring.locate}></rt-guide-ring>
       ${session?.needsParticipantCode
         ? html`<rt-participant-dialog heading=${this.assignment?.title ?? ''} @participant-code=${(event: CustomEvent<string>) => session.setParticipantCode(event.detail)}></rt-participant-dialog>`
