@@ -12,6 +12,7 @@ import {
   sameRect,
   sameView,
   type Size,
+  enlargesFit,
   zoomInStep,
   zoomOutStep,
 } from './image-zoom.ts';
@@ -205,9 +206,14 @@ export class RtImageCompare extends LitElement {
   }
 
   private currentLayout(): ImageLayout {
-    const image = { width: this.imageWidth, height: this.imageHeight };
-    const fit = this.frame ? fitLayout(this.frame, image, this.shownMode()) : { scale: 1, direction: 'row' as const };
+    const fit = this.fitted();
     return this.zoom === 'fit' ? fit : { scale: this.zoom, direction: fit.direction };
+  }
+
+  /** The layout that fits the image(s) in the frame ("Fit"). */
+  private fitted(): ImageLayout {
+    const image = { width: this.imageWidth, height: this.imageHeight };
+    return this.frame ? fitLayout(this.frame, image, this.shownMode()) : { scale: 1, direction: 'row' };
   }
 
   private onFrameResized({ width, height }: Size): void {
@@ -251,7 +257,14 @@ export class RtImageCompare extends LitElement {
       <button @click=${() => this.zoomOut()} ?disabled=${zoomOutStep(scale) === null} aria-label=${msg('Zoom out')} title=${msg('Zoom out (−)')}>−</button>
       <button @click=${() => this.zoomToFit()} aria-pressed=${this.zoom === 'fit'} title=${msg('Fit the whole image in the window (0)')}>${msg('Fit')}</button>
       <button @click=${() => (this.zoom = 1)} aria-pressed=${this.zoom === 1} title=${msg('One image pixel per screen pixel')}>100 %</button>
-      <button @click=${() => (this.zoom = 2)} aria-pressed=${this.zoom === 2} title=${msg('Each image pixel as 2 × 2 screen pixels')}>200 %</button>
+      <button
+        @click=${() => (this.zoom = 2)}
+        aria-pressed=${this.zoom === 2}
+        ?disabled=${!enlargesFit(2, this.fitted().scale)}
+        title=${enlargesFit(2, this.fitted().scale) ? msg('Each image pixel as 2 × 2 screen pixels') : msg('Fit already shows this small image larger than 200 %')}
+      >
+        200 %
+      </button>
       <button @click=${() => this.zoomIn()} ?disabled=${zoomInStep(scale) === null} aria-label=${msg('Zoom in')} title=${msg('Zoom in (+)')}>+</button>
       <span class="readout" aria-live="polite" title=${msg('The current zoom')}>${Math.round(scale * 100)} %</span>
     </div>`;
