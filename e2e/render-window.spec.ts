@@ -284,7 +284,7 @@ test('the slider compares the ray traced image with the raster one, by mouse or 
   await renderAndWait(window);
   await window.getByRole('radio', { name: 'Slider' }).check();
   await expect(window.getByText('Ray traced', { exact: true }).last()).toBeVisible();
-  await expect(window.getByText('Raster (like a game engine)')).toBeVisible();
+  await expect(window.getByText('Rasterized, like the 3D view')).toBeVisible();
   // The raster picture is really there, not an empty canvas.
   const rasterPixels = await window.getByRole('img', { name: 'The raster image from the same camera' }).evaluate((canvas: HTMLCanvasElement) => {
     const { data } = canvas.getContext('2d')!.getImageData(0, 0, canvas.width, canvas.height);

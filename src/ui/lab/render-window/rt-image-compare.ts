@@ -19,6 +19,13 @@ import {
 import { FRAME_PADDING, imageCompareLayout } from './image-compare-layout.css.ts';
 import { controlStyles } from './render-window-styles.ts';
 
+/**
+ * The raster picture's label: drawn as the 3D view is, by rasterization, with the view's own
+ * multisampling (4 samples a pixel on a GPU, 1 on a computer without one, whose picture is
+ * jagged). "Like a game engine" under a jagged picture said that games do not anti-alias.
+ */
+const RASTER_LABEL = () => msg('Rasterized, like the 3D view');
+
 /** Where the centre of the view was, as fractions of the content, to keep it there across a zoom. */
 interface ViewCentre {
   x: number;
@@ -301,7 +308,7 @@ export class RtImageCompare extends LitElement {
   private image(slot: 'traced' | 'raster', box: ReturnType<typeof styleMap>) {
     return html`<div class="image" style=${box} ${slot === 'traced' ? ref(this.tracedBoxRef) : nothing}>
       ${slot === 'traced' ? this.tracedWindow() : html`<slot name="raster"></slot>`}
-      <span class="chip">${slot === 'traced' ? msg('Ray traced') : msg('Raster (like a game engine)')}</span>
+      <span class="chip">${slot === 'traced' ? msg('Ray traced') : RASTER_LABEL()}</span>
     </div>`;
   }
 
@@ -326,7 +333,7 @@ export class RtImageCompare extends LitElement {
       <div class="layer"><slot name="raster"></slot></div>
       <div class="layer" style=${styleMap({ clipPath: `inset(0 ${100 - percent}% 0 0)` })}>${this.tracedWindow()}</div>
       <span class="chip">${msg('Ray traced')}</span>
-      <span class="chip right">${msg('Raster (like a game engine)')}</span>
+      <span class="chip right">${RASTER_LABEL()}</span>
       <div
         class="divider"
         style=${styleMap({ left: `${percent}%` })}
