@@ -2,6 +2,7 @@ import { expect, test, type Locator } from '@playwright/test';
 import type { Assignment } from '../src/classroom/assignment.ts';
 import { encodeAssignment } from '../src/classroom/assignment-link.ts';
 import { parseCsv } from '../src/classroom/csv-text.ts';
+import { expectAccessible } from './support/axe.ts';
 import { answerDefaultSurvey, download } from './support/classroom-steps.ts';
 import { closeRenderWindow, collectErrors, playLevel1UpToTheRayTracer, renderFirstImage } from './support/game-steps.ts';
 
@@ -96,51 +97,70 @@ test('one student hands in four files: the dashboard shows one learner who passe
   expect(errors).toEqual([]);
 });
 
-test('the survey fits the lab\'s task column at 1366×900', async ({ page }) => {
-  await page.setViewportSize({ width: 1366, height: 900 });
-  // No required task: the assignment is passed at once and its survey takes the task column.
+test('the survey has a readable page of its own over the lab at 1366×768, and on a phone', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.setViewportSize({ width: 1366, height: 768 });
+  // No required task: the assignment is passed at once and its survey's page covers the lab.
   const hash = await encodeAssignment({ ...assignment, requiredTasks: { '01-introduction': [] }, askParticipantCode: false });
   await page.goto(`./${hash}`);
-  const survey = page.locator('rt-lab rt-survey');
+  const surveyPage = page.getByRole('region', { name: 'Closing survey' });
+  const survey = surveyPage.locator('rt-survey');
   await expect(survey.getByRole('radio', { name: 'Primary school' })).toBeVisible();
-  const overflowing = await survey.evaluate((element) => {
-    const column = element.parentElement!.getBoundingClientRect();
-    const inside = [element, ...element.shadowRoot!.querySelectorAll('*')];
-    return inside.filter((node) => node.getBoundingClientRect().right > column.right + 1).map((node) => node.tagName);
-  });
-  expect(overflowing).toEqual([]);
-  const box = await survey.boundingBox();
-  expect(box!.width).toBeGreaterThan(200);
-  await expectNoWordPerLine(survey);
-  await page.screenshot({ path: 'test-results/screens/survey-lab-column.png' });
+  await expect(surveyPage).toBeFocused();
+  // A question reads as lines of words: wider than 500 px (about 6 words a line at least), its scale's steps in one row.
+  expect((await survey.locator('fieldset').first().boundingBox())!.width).toBeGreaterThan(500);
+  await expectWordsPerLine(survey, 6);
+  await expectScalesInOneRow(survey);
+  await page.screenshot({ path: 'test-results/screens/survey-page.png' });
+  await expectAccessible(page, 'the survey\'s page over the lab');
 
-  // On a phone the survey is in the one column, under the view: still whole lines, not a word a line.
+  // Later (or Esc) goes back to the lab; the task column offers the survey again.
+  await surveyPage.getByRole('button', { name: 'Later' }).click();
+  await expect(surveyPage).toHaveCount(0);
+  const reopen = page.getByRole('complementary', { name: 'Tasks' }).getByRole('button', { name: 'Answer the questions' });
+  await reopen.click();
+  await expect(surveyPage).toBeVisible();
+  await page.keyboard.press('Escape');
+  await expect(surveyPage).toHaveCount(0);
+  await expect(reopen).toBeFocused();
+  await page.keyboard.press('Enter');
+  await expect(surveyPage).toBeVisible();
+
+  // On a phone the page is as wide as the screen: whole lines, and each scale still in one row.
   await page.setViewportSize({ width: 390, height: 844 });
-  await survey.scrollIntoViewIfNeeded();
   await expect(survey.getByRole('radio', { name: 'Primary school' })).toBeVisible();
-  expect((await survey.boundingBox())!.width).toBeGreaterThan(330);
-  await expectNoWordPerLine(survey);
+  expect((await survey.boundingBox())!.width).toBeGreaterThan(370);
+  await expectWordsPerLine(survey, 2);
+  await expectScalesInOneRow(survey);
   await page.screenshot({ path: 'test-results/screens/survey-phone.png' });
+  expect(errors).toEqual([]);
 });
 
+/** Each scale's steps (1 to 10, 1 to 5) side by side in one row. */
+async function expectScalesInOneRow(survey: Locator): Promise<void> {
+  const rows = await survey.locator('.scale .options').evaluateAll((scales) => scales.map((scale) => new Set([...scale.querySelectorAll('label')].map((label) => Math.round(label.getBoundingClientRect().top))).size));
+  expect(rows.length).toBeGreaterThan(5);
+  expect(rows.every((count) => count === 1), JSON.stringify(rows)).toBe(true);
+}
+
 /**
- * Every question and every option of four words or more is laid out at least two words to a
- * line on average: a column squeezed to a word's width (the bug of a survey sized by its
- * content) breaks after every word.
+ * Every question and every option of four words or more (of `least` words or more when
+ * that is more) is laid out at least `least` words to a line on average: a column squeezed to
+ * a word's width (the bug of a survey sized by its content) breaks after every word.
  */
-async function expectNoWordPerLine(survey: Locator): Promise<void> {
-  const squeezed = await survey.evaluate((element) => {
+async function expectWordsPerLine(survey: Locator, least: number): Promise<void> {
+  const squeezed = await survey.evaluate((element, least) => {
     const texts = [...element.shadowRoot!.querySelectorAll('legend, label, p')];
     return texts.flatMap((node) => {
       const words = (node.textContent ?? '').trim().split(/\s+/).length;
-      if (words < 4) return [];
+      if (words < Math.max(4, least)) return [];
       const range = document.createRange();
       range.selectNodeContents(node);
       // Inline boxes of one line (a span in a smaller font) start a few pixels apart; a new line starts a line's height lower.
       const tops = [...range.getClientRects()].filter((rect) => rect.width > 0).map((rect) => rect.top).sort((a, b) => a - b);
       const lines = tops.filter((top, i) => i === 0 || top > tops[i - 1]! + 8).length;
-      return words / lines < 2 ? [`${node.tagName} "${node.textContent?.trim()}": ${words} words on ${lines} lines, ${Math.round(node.getBoundingClientRect().width)} px wide`] : [];
+      return words / lines < least ? [`${node.tagName} "${node.textContent?.trim()}": ${words} words on ${lines} lines, ${Math.round(node.getBoundingClientRect().width)} px wide`] : [];
     });
-  });
+  }, least);
   expect(squeezed).toEqual([]);
 }

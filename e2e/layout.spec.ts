@@ -1,33 +1,72 @@
 import { expect, test, type Page } from '@playwright/test';
-import { collectErrors, expectStatus, objectOnScreen, panel, state } from './support/game-steps.ts';
+import { clickToolbar, collectErrors, current, expectRingAround, expectStatus, importProgress, objectOnScreen, panel, progressFile, state } from './support/game-steps.ts';
 
-// The lab on a phone (390×844, touch), on a tablet (1024×768, touch) and on a laptop at 200 %
-// zoom (1366×768 shows 683×384 CSS px): the view has room, the page reflows into one column
-// instead of laying panels over each other, nothing is cut off sideways, and on touch screens
-// every button of the view is at least 44 px. Level 1 is played by touch on the phone.
+// The lab on a phone (390×844 upright and 844×390 on its side, touch), on a tablet (1024×768,
+// touch) and on a laptop at 200 % zoom (1366×768 shows 683×384 CSS px): the 3D view and the
+// current task are on screen together without scrolling the page; on a small screen the
+// column beside (or below) the view shows the tasks or the panels, chosen by two buttons;
+// nothing covers anything else or is cut off sideways, and on touch screens every button of
+// the view is at least 44 px. Level 1 is played by touch on the phone.
 
 type Box = { x: number; y: number; width: number; height: number };
 const overlap = (a: Box, b: Box) => a.x < b.x + b.width - 1 && b.x < a.x + a.width - 1 && a.y < b.y + b.height - 1 && b.y < a.y + a.height - 1;
+const inside = (box: Box, width: number, height: number) => box.x >= 0 && box.y >= 0 && box.x + box.width <= width + 0.5 && box.y + box.height <= height + 0.5;
 
-/** The lab's three areas (the view, the tasks, the panels) have room and do not cover each other; no sideways scrolling. */
-async function expectLaidOut(page: Page): Promise<void> {
-  const areas = [page.getByRole('main'), page.getByRole('complementary', { name: 'Tasks' }), page.getByRole('complementary', { name: 'Scene and settings' })];
+const tasksArea = (page: Page) => page.getByRole('complementary', { name: 'Tasks' });
+const panelsArea = (page: Page) => page.getByRole('complementary', { name: 'Scene and settings' });
+
+/**
+ * The lab's areas that are shown have room and do not cover each other; no sideways
+ * scrolling. On a wide screen the three (view, tasks, panels); on a small one the view and
+ * whichever of the tasks and the panels its column shows, the page not scrolling at all.
+ */
+async function expectLaidOut(page: Page, shown: 'all' | 'tasks' | 'panels'): Promise<void> {
+  const areas = [page.getByRole('main'), ...(shown === 'panels' ? [] : [tasksArea(page)]), ...(shown === 'tasks' ? [] : [panelsArea(page)])];
+  if (shown === 'tasks') await expect(panelsArea(page)).toBeHidden();
+  if (shown === 'panels') await expect(tasksArea(page)).toBeHidden();
   const boxes = await Promise.all(areas.map(async (area) => (await area.boundingBox())!));
   for (const box of boxes) expect(box.width).toBeGreaterThan(200);
-  expect(boxes[0]!.height).toBeGreaterThan(250);
-  expect([overlap(boxes[0]!, boxes[1]!), overlap(boxes[0]!, boxes[2]!), overlap(boxes[1]!, boxes[2]!)]).toEqual([false, false, false]);
-  const width = page.viewportSize()!.width;
+  expect(boxes[0]!.height).toBeGreaterThan(shown === 'all' ? 250 : 200);
+  for (const [i, a] of boxes.entries()) for (const b of boxes.slice(i + 1)) expect(overlap(a, b), `${JSON.stringify(a)} ${JSON.stringify(b)}`).toBe(false);
+  const { width, height } = page.viewportSize()!;
   expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(width);
-  // The view's buttons stay inside the view and do not cover one another.
+  if (shown !== 'all') {
+    for (const box of boxes) expect(inside(box, width, height), JSON.stringify(box)).toBe(true);
+    expect(await page.evaluate(() => document.documentElement.scrollHeight)).toBeLessThanOrEqual(height);
+  }
+  // The view's buttons that are shown stay inside the view and do not cover one another, nor the camera's image.
   const view = (await page.locator('rt-scene-view').boundingBox())!;
-  const buttons = await page.locator('rt-view-toolbar button').evaluateAll((elements) => elements.map((e) => e.getBoundingClientRect()).map(({ x, y, width, height }) => ({ x, y, width, height })));
+  const visibleBoxes = (selector: string) =>
+    page.locator(selector).evaluateAll((elements) =>
+      elements
+        .map((e) => e.getBoundingClientRect())
+        .filter((box) => box.width > 0)
+        .map(({ x, y, width, height }) => ({ x, y, width, height })),
+    );
+  const buttons = await visibleBoxes('rt-view-toolbar button');
   for (const button of buttons) expect(button.x >= view.x - 1 && button.x + button.width <= view.x + view.width + 1, JSON.stringify(button)).toBe(true);
-  const groups = await page.locator('rt-view-toolbar [role=group], rt-view-toolbar .group').evaluateAll((elements) => elements.map((e) => e.getBoundingClientRect()).map(({ x, y, width, height }) => ({ x, y, width, height })));
+  const groups = [...(await visibleBoxes('rt-view-toolbar [role=group], rt-view-toolbar .group, rt-view-toolbar .pads-toggle')), ...(await visibleBoxes('rt-screen-preview'))];
   for (const [i, a] of groups.entries()) for (const b of groups.slice(i + 1)) expect(overlap(a, b), `${JSON.stringify(a)} ${JSON.stringify(b)}`).toBe(false);
 }
 
+/** The current task's title and text, and the 3D view (at least 320×200), all on screen at once and apart. */
+async function expectViewAndCurrentTask(page: Page): Promise<void> {
+  const { width, height } = page.viewportSize()!;
+  const view = (await page.locator('rt-scene-view').boundingBox())!;
+  const card = page.locator('rt-task-card[status="current"]');
+  const title = (await card.locator('.head .title').boundingBox())!;
+  const text = (await card.locator('.body > p').first().boundingBox())!;
+  expect(view.width).toBeGreaterThanOrEqual(320);
+  expect(view.height).toBeGreaterThanOrEqual(200);
+  for (const box of [view, title, text]) expect(inside(box, width, height), JSON.stringify({ box, width, height })).toBe(true);
+  expect([overlap(view, title), overlap(view, text)]).toEqual([false, false]);
+}
+
 async function expectTouchTargets(page: Page): Promise<void> {
-  const sizes = await page.locator('rt-view-toolbar button, [data-command="levels"], [data-command="render-open"]').evaluateAll((elements) => elements.map((e) => Math.min(e.getBoundingClientRect().width, e.getBoundingClientRect().height)));
+  const sizes = await page
+    .locator('rt-view-toolbar button, [data-command="levels"], [data-command="render-open"], [data-command="show-tasks"], [data-command="show-panels"]')
+    .evaluateAll((elements) => elements.map((e) => e.getBoundingClientRect()).filter((box) => box.width > 0).map((box) => Math.min(box.width, box.height)));
+  expect(sizes.length).toBeGreaterThan(5);
   expect(Math.min(...sizes)).toBeGreaterThanOrEqual(44);
 }
 
@@ -60,25 +99,31 @@ async function emptySpot(page: Page): Promise<{ x: number; y: number }> {
 test.describe('a phone, by touch', () => {
   test.use({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true, deviceScaleFactor: 2 });
 
-  test('level 1 at 390×844 by touch: taps, a finger drag on the gizmo, the render window on the whole screen; level 2\'s folded ray legend', async ({ page }) => {
+  test('level 1 at 390×844 by touch: the view over the tasks or the panels, taps, a finger drag on the gizmo, the render window on the whole screen; level 2\'s folded ray legend', async ({ page }) => {
     const errors = collectErrors(page);
     await page.goto('./');
     await page.getByRole('button', { name: 'Got it' }).tap();
-    await expectLaidOut(page);
+    await expectLaidOut(page, 'tasks');
+    await expectViewAndCurrentTask(page);
     await expectTouchTargets(page);
     await page.screenshot({ path: 'test-results/screens/layout-phone.png' });
 
-    // A task done in the view makes the next one current without scrolling the page: the view stays where the learner looks.
-    const pageScroll = () => page.evaluate(() => new Promise<number>((resolve) => requestAnimationFrame(() => resolve(scrollY))));
-    const scrollBefore = await pageScroll();
+    // The orbit, pan and zoom pads fold behind one button in the small view; a task done with
+    // them makes the next one current, in view, and nothing moves the view.
+    const viewAt = (await page.getByRole('main').boundingBox())!;
+    const pads = page.locator('rt-view-toolbar [data-command="view-pads"]');
+    await expect(page.locator('rt-view-toolbar [data-command="orbit-left"]')).toBeHidden();
+    await pads.tap();
+    await expect(pads).toHaveAttribute('aria-expanded', 'true');
     await page.locator('rt-view-toolbar [data-command="orbit-left"]').tap();
     await expectStatus(page, 'Look around', 'done');
     await expectStatus(page, 'Zoom in', 'current');
-    expect(await pageScroll()).toBe(scrollBefore);
+    await expectViewAndCurrentTask(page);
     await page.locator('rt-view-toolbar [data-command="zoom-in"]').tap();
     await expectStatus(page, 'Zoom in', 'done');
-    expect(await pageScroll()).toBe(scrollBefore);
-    expect((await page.getByRole('main').boundingBox())!.y).toBeGreaterThanOrEqual(0);
+    await pads.tap();
+    await expect(page.locator('rt-view-toolbar [data-command="orbit-left"]')).toBeHidden();
+    expect(await page.getByRole('main').boundingBox()).toEqual(viewAt);
 
     // The touch gestures are in the help.
     await page.locator('rt-view-toolbar [data-command="help"]').tap();
@@ -90,16 +135,20 @@ test.describe('a phone, by touch', () => {
     const ball = await objectOnScreen(page, 'ball');
     await page.touchscreen.tap(ball.x, ball.y);
     await expectStatus(page, 'Select the ball', 'done');
-    expect(await pageScroll()).toBe(scrollBefore);
+    await expectViewAndCurrentTask(page);
 
+    // The colour is in the panels: the column shows them instead of the tasks, under the same view.
+    await page.locator('[data-command="show-panels"]').tap();
+    await expectLaidOut(page, 'panels');
     const hex = page.locator('rt-object-panel').getByRole('textbox', { name: 'Colour, hex code' });
     await hex.tap();
     await hex.fill('#22cc44');
     await hex.press('Enter');
+    await page.locator('[data-command="show-tasks"]').tap();
     await expectStatus(page, 'Paint the ball', 'done');
+    await expectViewAndCurrentTask(page);
 
-    // Back up to the view; a finger drags the ball by its gizmo.
-    await page.getByRole('main').scrollIntoViewIfNeeded();
+    // A finger drags the ball by its gizmo.
     const at = await objectOnScreen(page, 'ball');
     await touchDrag(page, at, 50, 15);
     await expectStatus(page, 'Move the ball', 'done');
@@ -118,14 +167,12 @@ test.describe('a phone, by touch', () => {
     expect(window).toEqual({ x: 0, y: 0, width: 390, height: 844 });
     await page.screenshot({ path: 'test-results/screens/layout-phone-render-window.png' });
     await page.locator('rt-render-window').getByRole('button', { name: 'Close the render window' }).tap();
-    await page.getByRole('complementary', { name: 'Tasks' }).scrollIntoViewIfNeeded();
     await page.screenshot({ path: 'test-results/screens/layout-phone-level-done.png' });
 
     // Level 2 draws the camera's rays (level 1 starts without them): the ray legend folds away
     // behind a small button that does not cover the ball; a tap (or Enter) opens it.
     await panel(page).getByRole('button', { name: 'Next level' }).tap();
     await expect(page.getByRole('heading', { name: 'Rays from the camera' })).toBeVisible();
-    await page.getByRole('main').scrollIntoViewIfNeeded();
     const legendButton = page.getByRole('button', { name: 'Ray colours' });
     const legend = page.getByRole('list', { name: 'Ray colours' });
     await expect(legendButton).toHaveAttribute('aria-expanded', 'false');
@@ -149,13 +196,36 @@ test.describe('a phone, by touch', () => {
   });
 });
 
+test.describe('a phone on its side', () => {
+  test.use({ viewport: { width: 844, height: 390 }, hasTouch: true, isMobile: true, deviceScaleFactor: 2 });
+
+  test('844×390 by touch: the tasks beside the view, 44 px targets; a level with the camera\'s image', async ({ page }) => {
+    await page.goto('./');
+    await page.getByRole('button', { name: 'Got it' }).tap();
+    await expectLaidOut(page, 'tasks');
+    await expectViewAndCurrentTask(page);
+    await expectTouchTargets(page);
+    await page.screenshot({ path: 'test-results/screens/layout-phone-landscape.png' });
+    // Level 3 (the camera's image over the view, its rays drawn): passed levels 1 and 2, the first task done.
+    await importProgress(page, progressFile(['01-introduction', '02-rays-from-the-camera']));
+    if (!(await page.locator('rt-level-map').isVisible())) await page.locator('[data-command="levels"]').tap();
+    await page.locator('rt-level-map [data-level="03-shading"]').tap();
+    await expect(page.getByRole('heading', { name: 'Shading' })).toBeVisible();
+    await expect(page.locator('rt-screen-preview').getByRole('button', { name: 'Pixel 0, 0', exact: true })).toBeVisible();
+    await expectLaidOut(page, 'tasks');
+    await current(page).getByRole('button', { name: 'Next' }).tap();
+    await expectViewAndCurrentTask(page);
+    await page.screenshot({ path: 'test-results/screens/layout-phone-landscape-level-3.png' });
+  });
+});
+
 test.describe('a tablet', () => {
   test.use({ viewport: { width: 1024, height: 768 }, hasTouch: true });
 
   test('1024×768 touch: three columns with room, 44 px targets', async ({ page }) => {
     await page.goto('./');
     await page.getByRole('button', { name: 'Got it' }).tap();
-    await expectLaidOut(page);
+    await expectLaidOut(page, 'all');
     await expectTouchTargets(page);
     await page.screenshot({ path: 'test-results/screens/layout-tablet.png' });
   });
@@ -165,20 +235,49 @@ test.describe('200 % zoom', () => {
   // What Chromium lays out at 200 % on a 1366×768 screen: half the CSS pixels, each two device pixels.
   test.use({ viewport: { width: 683, height: 384 }, deviceScaleFactor: 2 });
 
-  test('1366×768 at 200 %: one column that scrolls, nothing covered or cut off', async ({ page }) => {
+  test('1366×768 at 200 %: the view beside the current task, the panels a button away, the hint ring on that button', async ({ page }) => {
+    const errors = collectErrors(page);
     await page.goto('./');
     await page.getByRole('button', { name: 'Got it' }).click();
-    await expectLaidOut(page);
+    await expectLaidOut(page, 'tasks');
+    await expectViewAndCurrentTask(page);
     await page.screenshot({ path: 'test-results/screens/layout-zoom-200.png' });
 
-    // A task done with a button of the view that is on screen: the next task becomes current, the page does not move.
-    await page.evaluate(() => scrollTo(0, 0));
-    const orbit = (await page.locator('rt-view-toolbar [data-command="orbit-left"]').boundingBox())!;
-    expect(orbit.y + orbit.height).toBeLessThanOrEqual(384);
-    await page.mouse.click(orbit.x + orbit.width / 2, orbit.y + orbit.height / 2);
+    // Tasks done with the view's buttons: each next task is current and on screen beside the view, the page never scrolls.
+    await clickToolbar(page, 'view-pads');
+    await clickToolbar(page, 'orbit-left');
     await expectStatus(page, 'Look around', 'done');
     await expectStatus(page, 'Zoom in', 'current');
-    expect(await page.evaluate(() => new Promise<number>((resolve) => requestAnimationFrame(() => resolve(scrollY))))).toBe(0);
+    await expectViewAndCurrentTask(page);
+    await clickToolbar(page, 'zoom-in');
+    await expectStatus(page, 'Zoom in', 'done');
+    await clickToolbar(page, 'view-pads');
+    const ball = await objectOnScreen(page, 'ball');
+    await page.mouse.click(ball.x, ball.y);
+    await expectStatus(page, 'Select the ball', 'done');
+    await expectStatus(page, 'Paint the ball', 'current');
+    await expectViewAndCurrentTask(page);
+    expect(await page.evaluate(() => scrollY)).toBe(0);
     await page.screenshot({ path: 'test-results/screens/layout-zoom-200-task-done.png' });
+
+    // The hint ring for a control of the hidden panels goes around the button that shows them, then around the control.
+    await current(page).getByRole('button', { name: 'Hint' }).click();
+    await current(page).getByRole('button', { name: 'Another hint' }).click();
+    await current(page).getByRole('button', { name: 'Show me where' }).click();
+    const showPanels = page.getByRole('button', { name: 'Scene and settings' });
+    await expectRingAround(page, showPanels);
+    await showPanels.click();
+    await expect(showPanels).toHaveAttribute('aria-pressed', 'true');
+    await expectLaidOut(page, 'panels');
+    const colour = page.locator('rt-object-panel rt-color-field[name="color"]');
+    await expectRingAround(page, colour);
+    await page.screenshot({ path: 'test-results/screens/layout-zoom-200-panels.png' });
+    const hex = page.locator('rt-object-panel').getByRole('textbox', { name: 'Colour, hex code' });
+    await hex.fill('#22cc44');
+    await hex.press('Enter');
+    await page.getByRole('button', { name: 'Tasks', exact: true }).click();
+    await expectStatus(page, 'Paint the ball', 'done');
+    await expectViewAndCurrentTask(page);
+    expect(errors).toEqual([]);
   });
 });

@@ -270,6 +270,13 @@ test('zoom: 200 % shows every pixel as 2 × 2, Fit brings it back', async ({ pag
   await window.getByRole('button', { name: 'Fit' }).click();
   await expect.poll(async () => (await canvas.boundingBox())!.width).toBeCloseTo(fitted, 0);
   expect(fitted).toBeLessThan(2 * width);
+
+  // A small image is shown larger than 200 % at Fit: "200 %" would shrink it, so it is not offered.
+  await window.evaluate((element: RtRenderWindow) => element.store!.dispatch({ type: 'settings.changed', changes: { imageSize: [32, 24] } }));
+  await renderAndWait(window);
+  await expect.poll(zoomOnScreen).toBeGreaterThan(2);
+  await expect(window.getByRole('button', { name: '200 %' })).toBeDisabled();
+  await expect(window.getByRole('button', { name: '200 %' })).toHaveAttribute('title', 'Fit already shows this small image larger than 200 %');
 });
 
 test('the slider compares the ray traced image with the raster one, by mouse or keys', async ({ page }) => {
@@ -277,7 +284,7 @@ test('the slider compares the ray traced image with the raster one, by mouse or 
   await renderAndWait(window);
   await window.getByRole('radio', { name: 'Slider' }).check();
   await expect(window.getByText('Ray traced', { exact: true }).last()).toBeVisible();
-  await expect(window.getByText('Raster (like a game engine)')).toBeVisible();
+  await expect(window.getByText('Rasterized, like the 3D view')).toBeVisible();
   // The raster picture is really there, not an empty canvas.
   const rasterPixels = await window.getByRole('img', { name: 'The raster image from the same camera' }).evaluate((canvas: HTMLCanvasElement) => {
     const { data } = canvas.getContext('2d')!.getImageData(0, 0, canvas.width, canvas.height);

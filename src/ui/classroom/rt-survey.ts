@@ -34,7 +34,7 @@ export class RtSurvey extends LitElement {
         box-sizing: border-box;
         max-width: 760px;
         margin: 0 auto;
-        /* It may sit in the lab's narrow task column: the scales fold by its width, not the window's. */
+        /* The scales fold by the survey's own width (its page's column), not the window's. */
         container-type: inline-size;
         padding: calc(var(--rt-space) * 2);
       }
@@ -105,9 +105,20 @@ export class RtSurvey extends LitElement {
         gap: var(--rt-space);
         align-items: center;
       }
+      /* A narrow survey (a phone) puts the ends' labels above and below the scale, and its
+         steps share one row: 1 to 10 in a 300 px row leaves each step's target 29 px wide,
+         above WCAG 2.2's 24 px minimum, instead of breaking the scale over two rows. */
       @container (max-width: 520px) {
         .scale {
           grid-template-columns: 1fr;
+        }
+        .scale .options {
+          flex-wrap: nowrap;
+          gap: 0;
+        }
+        .scale .options label {
+          flex: 1;
+          min-width: 0;
         }
       }
     `,

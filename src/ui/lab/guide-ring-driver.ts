@@ -31,6 +31,11 @@ export class GuideRingDriver {
     return guideRect(target, { ...this.view(), elements: (id) => this.registry.elements(id) });
   }
 
+  /** Opens and scrolls to the ringed control again (it was hidden when the ring came: a small screen's column showed the tasks). */
+  reveal(): void {
+    if (this.target) this.registry.reveal(this.target);
+  }
+
   /** Rings `target` from now on (null: no ring). */
   follow(target: string | null): void {
     if (target === this.target) return;

@@ -26,6 +26,8 @@ export interface GuideStage {
   project(point: Vec3): { x: number; y: number } | null;
   canvas: HTMLElement | null;
   scene: { objects: readonly { id: string; position: Vec3 }[]; lights: readonly { id: string; position: Vec3 }[]; camera: { position: Vec3 } };
+  /** On a small screen showing the tasks, the button that shows the panels instead (lab-compact.css.ts); else null. */
+  panelsButton?: Element | null;
 }
 
 /** The centre of a scene item (object or light) by id, for `view.item:<id>`. */
@@ -62,13 +64,23 @@ const POINT_RING_PX = 64;
 
 /** The box to ring, in viewport px; null while the target is not on the page (or behind the eye). */
 export function guideRect(target: string, stage: GuideStage): ScreenBox | null {
-  const shown = elementBox(target, stage) ?? (REACHED_THROUGH[target] ? elementBox(REACHED_THROUGH[target], stage) : null);
+  const shown = elementBox(target, stage) ?? (REACHED_THROUGH[target] ? elementBox(REACHED_THROUGH[target], stage) : null) ?? panelsButtonBox(target, stage);
   if (shown) return shown;
   const point = viewPointOf(target, stage.scene);
   const projected = point && stage.project(point);
   const canvas = stage.canvas?.getBoundingClientRect();
   if (!projected || !canvas) return null;
   return { left: canvas.left + projected.x - POINT_RING_PX / 2, top: canvas.top + projected.y - POINT_RING_PX / 2, width: POINT_RING_PX, height: POINT_RING_PX };
+}
+
+/**
+ * A control of the panels while a small screen's column shows the tasks: it is on the page but
+ * takes no room, and is reached through the button that shows the panels.
+ */
+function panelsButtonBox(target: string, stage: GuideStage): ScreenBox | null {
+  const button = stage.panelsButton?.getBoundingClientRect();
+  if (!button || button.width === 0 || stage.elements(target).length === 0) return null;
+  return { left: button.left, top: button.top, width: button.width, height: button.height };
 }
 
 /** The box around every element on the page that carries `id` and takes room; null when none does. */

@@ -7,7 +7,7 @@ import { LazyModule } from '../../util/lazy-module.ts';
 import '../game/rt-assignment-done.ts';
 import '../classroom/rt-export-menu.ts';
 import '../game/rt-participant-dialog.ts';
-import '../classroom/rt-survey.ts';
+import '../classroom/rt-survey-page.ts';
 import '../game/rt-level-map.ts';
 import '../game/rt-progress-menu.ts';
 import '../game/rt-quest-panel.ts';

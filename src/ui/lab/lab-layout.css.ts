@@ -1,4 +1,5 @@
 import { css } from 'lit';
+import { labCompact } from './lab-compact.css.ts';
 
 /**
  * The lab's grid: the header over three columns (panels, the 3D view, the tasks), the level
@@ -83,8 +84,9 @@ const labGrid = css`
       outline: 3px solid var(--rt-focus);
       outline-offset: 2px;
     }
-    /* The map covers the whole lab below the header: the level behind it waits. */
-    rt-level-map {
+    /* The map (and the closing survey's page) covers the whole lab below the header: the level behind it waits. */
+    rt-level-map,
+    rt-survey-page {
       grid-column: 1 / -1;
       grid-row: 2;
       z-index: 30;
@@ -202,104 +204,5 @@ const labGrid = css`
     }
 `;
 
-/**
- * Narrow screens: a phone (390 px), or a laptop at 200 % zoom (683 px of CSS width): one
- * column that scrolls (WCAG 1.4.10, reflow), the 3D view first, then the level's tasks,
- * then the panels; nothing laid over anything else except the view's own buttons. The
- * render window takes the whole screen.
- */
-const labNarrow = css`
-  @media (max-width: 760px) {
-    :host {
-      grid-template-columns: minmax(0, 1fr);
-      grid-template-rows: repeat(4, max-content);
-      /* The page scrolls, not the lab: the task list then has no scroll box of its own, and a
-         new current task does not scroll the view away (scroll-in-box.ts). */
-      height: auto;
-      min-height: 100vh;
-      overflow: visible;
-    }
-    :host([free-lab]) {
-      grid-template-columns: minmax(0, 1fr);
-    }
-    :host([free-lab]) .tasks {
-      display: flex;
-    }
-    header {
-      flex-wrap: wrap;
-      padding: 6px var(--rt-space);
-    }
-    main {
-      grid-area: 2 / 1;
-    }
-    /* Over a phone's small view the legend folds away behind a small button; open, it is
-       smaller, and taps go through it to the scene. */
-    .view-legend {
-      width: auto;
-      max-width: 45%;
-      padding: 0;
-      background: none;
-      box-shadow: none;
-      font-size: 0.75rem;
-    }
-    .legend-toggle {
-      display: block;
-      box-shadow: var(--rt-shadow);
-    }
-    .legend-toggle::after {
-      content: ' ▾' / '';
-    }
-    .view-legend[data-open] .legend-toggle::after {
-      content: ' ▴' / '';
-    }
-    .view-legend:not([data-open]) rt-ray-legend {
-      display: none;
-    }
-    .view-legend rt-ray-legend {
-      margin-top: 4px;
-      padding: 2px 6px;
-      border-radius: var(--rt-radius);
-      background: var(--rt-surface);
-      box-shadow: var(--rt-shadow);
-      opacity: 0.92;
-      pointer-events: none;
-    }
-    .tasks {
-      grid-area: 3 / 1;
-      border-left: 0;
-      border-top: 1px solid var(--rt-border);
-    }
-    .sidebar {
-      grid-area: 4 / 1;
-      border-right: 0;
-      border-top: 1px solid var(--rt-border);
-    }
-    .sidebar,
-    .tasks {
-      overflow-y: visible;
-    }
-    rt-level-map {
-      grid-column: 1;
-      grid-row: 2 / -1;
-    }
-    rt-scene-view {
-      position: relative;
-      inset: auto;
-      height: max(280px, 55vh);
-    }
-    rt-screen-preview {
-      position: static;
-      width: auto;
-      max-width: 360px;
-      margin: var(--rt-space);
-    }
-    rt-render-window {
-      position: fixed;
-      inset: 0;
-      z-index: 40;
-    }
-  }
-`;
-
-/** The lab's styles: the wide grid, and the one column for narrow screens. */
-export const labLayout = [labGrid, labNarrow];
+/** The lab's styles: the wide grid, then the small screens' layout (lab-compact.css.ts). */
+export const labLayout = [labGrid, ...labCompact];

@@ -82,6 +82,8 @@ export class QuestController implements ReactiveController {
   contextNote = '';
   /** The save problem last told, so that each is told once when it starts, and its end too. */
   private toldSaveProblem: SaveProblemKind | null = null;
+  /** The learner put the closing survey off ("Later"): it waits in the task column instead of covering the lab. */
+  surveyLater = false;
   private readonly cleanup: (() => void)[] = [];
 
   constructor(private readonly host: QuestHost & HTMLElement) {
@@ -324,6 +326,12 @@ export class QuestController implements ReactiveController {
     const text = problem ? saveProblemText(problem) + free : before ? msg("Saved again: your progress is in the browser's storage.") : '';
     // At the start the toast is on the page only after the first render.
     if (text) void this.host.updateComplete.then(() => this.host.toast(text, problem ? 'error' : 'info'));
+  }
+
+  /** Puts the closing survey off (back to the lab), or opens it again. */
+  putSurveyOff(later: boolean): void {
+    this.surveyLater = later;
+    this.host.requestUpdate();
   }
 
   dismissWelcome(): void {

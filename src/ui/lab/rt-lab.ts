@@ -25,6 +25,8 @@ import { labLayout } from './lab-layout.css.ts';
 import { taskColumn } from './task-column.ts';
 import { levelPanels } from './level-panels.ts';
 import { viewLegendBox } from './view-legend.ts';
+import { sideSwitch } from './side-switch.ts';
+import { surveyPage } from './survey-page.ts';
 import { QuestController } from './quest-controller.ts';
 import type { RtRenderWindow } from './render-window/rt-render-window.ts';
 import type { RtSceneView } from './rt-scene-view.ts';
@@ -56,6 +58,7 @@ export class RtLab extends LitElement {
     hover: { state: true },
     renderOpen: { state: true },
     legendOpen: { state: true },
+    panelsShown: { type: Boolean, reflect: true, attribute: 'panels-shown' },
     assignment: { attribute: false },
     sharedScene: { attribute: false },
   };
@@ -66,6 +69,8 @@ export class RtLab extends LitElement {
   declare private renderOpen: boolean;
   /** Whether the ray legend over the view is open where it folds away (phones). */
   declare private legendOpen: boolean;
+  /** On a small screen, whether the column beside the view shows the panels instead of the tasks (side-switch.ts). */
+  declare panelsShown: boolean;
   declare assignment: Assignment | null;
   declare sharedScene: Scene | null;
 
@@ -77,6 +82,7 @@ export class RtLab extends LitElement {
     project: (point) => this.labView()?.projectToView(point) ?? null,
     canvas: this.sceneView()?.labView?.canvas ?? null,
     scene: this.store.state.scene,
+    panelsButton: this.panelsShown ? null : this.renderRoot.querySelector('[data-command="show-panels"]'),
   }));
   private readonly cleanup: (() => void)[] = [];
 
@@ -85,6 +91,7 @@ export class RtLab extends LitElement {
     this.hover = null;
     this.renderOpen = false;
     this.legendOpen = false;
+    this.panelsShown = false;
     this.assignment = null;
     this.sharedScene = null;
     this.services = this.createServices();
@@ -249,6 +256,12 @@ export class RtLab extends LitElement {
     debug: (action) => this.renderRoot.querySelector('rt-ray-debugger')?.perform(action),
   };
 
+  /** Shows the panels (or the tasks) in a small screen's column; a control the hint rings there is brought into view. */
+  private readonly showPanels = (panels: boolean) => {
+    this.panelsShown = panels;
+    void this.updateComplete.then(() => this.ring.reveal());
+  };
+
   /** The ray debugger's pixel, traced with its terms, and drawn in 3D (stable functions: lit compares them). */
   private readonly traceWithTerms = (x: number, y: number) => this.services.traceWithTerms(x, y);
   private readonly showRayFocus = (focus: RayFocus | null) => {
@@ -312,6 +325,7 @@ export class RtLab extends LitElement {
           <rt-theme-toggle></rt-theme-toggle>
         </div>
       </header>
+      ${sideSwitch(this.panelsShown, this.showPanels)}
       <aside class="sidebar" aria-label=${msg('Scene and settings')}>
         ${sidebar.length > 0 ? sidebar : html`<p class="empty-sidebar">${msg('This level needs only the 3D view. More panels appear in later levels.')}</p>`}
       </aside>
@@ -355,6 +369,7 @@ export class RtLab extends LitElement {
             @map-choice=${(event: CustomEvent<MapChoice>) => this.game.map(event.detail)}
           ></rt-level-map>`
         : nothing}
+      ${this.renderOpen ? nothing : surveyPage(this.game, this.assignment)}
       <rt-guide-ring .locate=${this.ring.locate}></rt-guide-ring>
       ${session?.needsParticipantCode
         ? html`<rt-participant-dialog heading=${this.assignment?.title ?? ''} note=${this.game.contextNote} @participant-code=${(event: CustomEvent<string>) => session.setParticipantCode(event.detail)}></rt-participant-dialog>`

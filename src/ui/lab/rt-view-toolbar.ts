@@ -4,6 +4,7 @@ import { DEFAULT_GIZMO, type GizmoOptions } from '../../lab-state/lab-state.ts';
 import { GIZMO_MODES, type GizmoMode } from '../../view/gizmo-modes.ts';
 import type { ViewCommand } from '../../view/view-commands.ts';
 import { GuideHostController } from './guide-host.ts';
+import { foldedPadsStyles } from './folded-pads.css.ts';
 
 /** How far one button press moves the view (the keys move less, and repeat). */
 const ORBIT_STEP_DEG = 15;
@@ -31,9 +32,11 @@ export class RtViewToolbar extends LitElement {
     atCamera: { type: Boolean, attribute: 'at-camera' },
     pixelSelected: { type: Boolean, attribute: 'pixel-selected' },
     gizmoControls: { attribute: false },
+    padsOpen: { state: true },
   };
 
-  static override styles = css`
+  static override styles = [
+    css`
     :host {
       position: absolute;
       inset: 0;
@@ -172,7 +175,9 @@ export class RtViewToolbar extends LitElement {
       border-radius: 50%;
       background: var(--rt-muted);
     }
-  `;
+  `,
+    foldedPadsStyles,
+  ];
 
   /** The store's gizmo options: the pressed mode and toggles. */
   declare gizmo: GizmoOptions;
@@ -184,6 +189,8 @@ export class RtViewToolbar extends LitElement {
   declare pixelSelected: boolean;
   /** The gizmo buttons on show (undefined: all). */
   declare gizmoControls: readonly string[] | undefined;
+  /** In a small view, whether the orbit, pan and zoom pads are unfolded (folded-pads.css.ts). */
+  declare private padsOpen: boolean;
 
   constructor() {
     super();
@@ -192,6 +199,7 @@ export class RtViewToolbar extends LitElement {
     this.atCamera = false;
     this.pixelSelected = false;
     this.gizmoControls = undefined;
+    this.padsOpen = false;
     new GuideHostController(this);
   }
 
@@ -247,7 +255,8 @@ export class RtViewToolbar extends LitElement {
           </button>
         </div>
       </div>
-      <div class="bar bottom-right">
+      <div class="bar bottom-right" ?data-open=${this.padsOpen}>
+        <div class="pads" id="pads">
         ${this.pad(msg('Orbit'), 'orbit', (dx, dy) => ({ kind: 'orbit', dxDeg: dx * ORBIT_STEP_DEG, dyDeg: dy * ORBIT_STEP_DEG }), {
           left: msg('Orbit left (←)'),
           right: msg('Orbit right (→)'),
@@ -272,6 +281,19 @@ export class RtViewToolbar extends LitElement {
           </div>
           <span class="caption" aria-hidden="true">${msg('Zoom')}</span>
         </div>
+        </div>
+        <button
+          class="pads-toggle"
+          data-command="view-pads"
+          data-guide="view.orbit-buttons view.pan-buttons view.zoom-buttons"
+          aria-expanded=${String(this.padsOpen)}
+          aria-controls="pads"
+          aria-label=${msg('Orbit, pan, zoom')}
+          title=${msg('Show or hide the buttons that orbit, pan and zoom the view')}
+          @click=${() => (this.padsOpen = !this.padsOpen)}
+        >
+          ${icon(svg`<path d="M10 2.5v15M2.5 10h15M7.5 5 10 2.5 12.5 5M7.5 15l2.5 2.5 2.5-2.5M5 7.5 2.5 10 5 12.5M15 7.5l2.5 2.5-2.5 2.5" />`)}
+        </button>
       </div>
     `;
   }

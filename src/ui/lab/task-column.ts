@@ -1,31 +1,27 @@
 import { msg } from '@lit/localize';
 import { html, nothing, type TemplateResult } from 'lit';
 import type { Assignment } from '../../classroom/assignment.ts';
-import type { SurveySubmission } from '../../classroom/survey-answers.ts';
 import { badgeName, badgeOfLevel } from '../game/badge-names.ts';
 import type { QuestController } from './quest-controller.ts';
+import { surveyWaiting } from './survey-page.ts';
 
 /**
- * The lab's right-hand column: the level's tasks (with a newcomer's welcome), the closing
- * survey once an assignment is passed, or what the free lab and the map are for; under it
- * the learner's data for their teacher.
+ * The lab's right-hand column: the level's tasks (with a newcomer's welcome), or what the
+ * free lab and the map are for, under the closing survey's button once an assignment is
+ * passed (its page: survey-page.ts); at the bottom the learner's data for their teacher.
  */
 export function taskColumn(game: QuestController, assignment: Assignment | null, toast: (text: string, tone: 'error') => void): TemplateResult {
   return html`${tasks(game, assignment)}${yourData(game, assignment, toast)}`;
 }
 
-/** The level's tasks, the closing survey, or what the free lab and the map are for. */
+/** The level's tasks, or what the free lab and the map are for; over them, the closing survey while it waits. */
 function tasks(game: QuestController, assignment: Assignment | null) {
+  return html`${surveyWaiting(game, assignment)}${modeTasks(game, assignment)}`;
+}
+
+function modeTasks(game: QuestController, assignment: Assignment | null) {
   const session = game.session;
   const view = session?.mode.kind === 'level' ? session.engine.level : null;
-  const surveyId = assignment?.survey;
-  if (surveyId && session?.allPassed && !game.survey && customElements.get('rt-survey')) {
-    return html`<rt-survey
-      .surveyId=${surveyId}
-      locale=${session.locale}
-      @survey-submitted=${(event: CustomEvent<SurveySubmission>) => game.surveySubmitted(event.detail)}
-    ></rt-survey>`;
-  }
   if (session?.mode.kind === 'free-lab') {
     return html`<h2>${msg('Free lab')}</h2>
       <p>${msg('Build and explore your own scene: every panel is here, and your scene is kept for next time.')}</p>

@@ -48,6 +48,16 @@ describe('guide target names → places on the page', () => {
     expect(guideRect('render.start', stage({ 'render.open': [header], 'render.start': [boxed(300, 100, 80, 32)] }))).toEqual({ left: 300, top: 100, width: 80, height: 32 });
   });
 
+  it('rings the button that shows the panels for a control of the hidden panels (a small screen showing the tasks)', () => {
+    const button = boxed(400, 44, 170, 32);
+    const hidden = { 'object.color': [boxed(0, 0, 0, 0)] };
+    expect(guideRect('object.color', { ...stage(hidden), panelsButton: button })).toEqual({ left: 400, top: 44, width: 170, height: 32 });
+    // Shown panels, a wide screen (the button takes no room), or a control not on the page at all: no stand-in.
+    expect(guideRect('object.color', { ...stage({ 'object.color': [boxed(5, 6, 7, 8)] }), panelsButton: button })).toEqual({ left: 5, top: 6, width: 7, height: 8 });
+    expect(guideRect('object.color', { ...stage(hidden), panelsButton: boxed(0, 0, 0, 0) })).toBeNull();
+    expect(guideRect('tracer.supersampling', { ...stage({}), panelsButton: button })).toBeNull();
+  });
+
   it('has no ring for a control that is not on the page, or a point behind the eye', () => {
     expect(guideRect('tracer.supersampling', stage({}))).toBeNull();
     expect(guideRect('view.item:ball', stage({}, () => null))).toBeNull();

@@ -45,6 +45,15 @@ export function zoomInStep(scale: number): number | null {
   return ZOOM_STEPS.find((step) => step > scale * 1.001) ?? null;
 }
 
+/**
+ * Whether the fixed zoom `scale` (200 %) shows the image larger than Fit does: for a small
+ * image Fit is already larger (a 32 × 24 image fits a 640 × 480 frame at 2000 %), and a
+ * button labelled 200 % that shrinks the image would contradict its label.
+ */
+export function enlargesFit(scale: number, fitScale: number): boolean {
+  return scale > fitScale * 1.001;
+}
+
 /** The next zoom step below `scale`, or null at the smallest. */
 export function zoomOutStep(scale: number): number | null {
   return [...ZOOM_STEPS].reverse().find((step) => step < scale / 1.001) ?? null;

@@ -12,11 +12,19 @@ import {
   sameRect,
   sameView,
   type Size,
+  enlargesFit,
   zoomInStep,
   zoomOutStep,
 } from './image-zoom.ts';
 import { FRAME_PADDING, imageCompareLayout } from './image-compare-layout.css.ts';
 import { controlStyles } from './render-window-styles.ts';
+
+/**
+ * The raster picture's label: drawn as the 3D view is, by rasterization, with the view's own
+ * multisampling (4 samples a pixel on a GPU, 1 on a computer without one, whose picture is
+ * jagged). "Like a game engine" under a jagged picture said that games do not anti-alias.
+ */
+const RASTER_LABEL = () => msg('Rasterized, like the 3D view');
 
 /** Where the centre of the view was, as fractions of the content, to keep it there across a zoom. */
 interface ViewCentre {
@@ -205,9 +213,14 @@ export class RtImageCompare extends LitElement {
   }
 
   private currentLayout(): ImageLayout {
-    const image = { width: this.imageWidth, height: this.imageHeight };
-    const fit = this.frame ? fitLayout(this.frame, image, this.shownMode()) : { scale: 1, direction: 'row' as const };
+    const fit = this.fitted();
     return this.zoom === 'fit' ? fit : { scale: this.zoom, direction: fit.direction };
+  }
+
+  /** The layout that fits the image(s) in the frame ("Fit"). */
+  private fitted(): ImageLayout {
+    const image = { width: this.imageWidth, height: this.imageHeight };
+    return this.frame ? fitLayout(this.frame, image, this.shownMode()) : { scale: 1, direction: 'row' };
   }
 
   private onFrameResized({ width, height }: Size): void {
@@ -251,7 +264,14 @@ export class RtImageCompare extends LitElement {
       <button @click=${() => this.zoomOut()} ?disabled=${zoomOutStep(scale) === null} aria-label=${msg('Zoom out')} title=${msg('Zoom out (−)')}>−</button>
       <button @click=${() => this.zoomToFit()} aria-pressed=${this.zoom === 'fit'} title=${msg('Fit the whole image in the window (0)')}>${msg('Fit')}</button>
       <button @click=${() => (this.zoom = 1)} aria-pressed=${this.zoom === 1} title=${msg('One image pixel per screen pixel')}>100 %</button>
-      <button @click=${() => (this.zoom = 2)} aria-pressed=${this.zoom === 2} title=${msg('Each image pixel as 2 × 2 screen pixels')}>200 %</button>
+      <button
+        @click=${() => (this.zoom = 2)}
+        aria-pressed=${this.zoom === 2}
+        ?disabled=${!enlargesFit(2, this.fitted().scale)}
+        title=${enlargesFit(2, this.fitted().scale) ? msg('Each image pixel as 2 × 2 screen pixels') : msg('Fit already shows this small image larger than 200 %')}
+      >
+        200 %
+      </button>
       <button @click=${() => this.zoomIn()} ?disabled=${zoomInStep(scale) === null} aria-label=${msg('Zoom in')} title=${msg('Zoom in (+)')}>+</button>
       <span class="readout" aria-live="polite" title=${msg('The current zoom')}>${Math.round(scale * 100)} %</span>
     </div>`;
@@ -288,7 +308,7 @@ export class RtImageCompare extends LitElement {
   private image(slot: 'traced' | 'raster', box: ReturnType<typeof styleMap>) {
     return html`<div class="image" style=${box} ${slot === 'traced' ? ref(this.tracedBoxRef) : nothing}>
       ${slot === 'traced' ? this.tracedWindow() : html`<slot name="raster"></slot>`}
-      <span class="chip">${slot === 'traced' ? msg('Ray traced') : msg('Raster (like a game engine)')}</span>
+      <span class="chip">${slot === 'traced' ? msg('Ray traced') : RASTER_LABEL()}</span>
     </div>`;
   }
 
@@ -313,7 +333,7 @@ export class RtImageCompare extends LitElement {
       <div class="layer"><slot name="raster"></slot></div>
       <div class="layer" style=${styleMap({ clipPath: `inset(0 ${100 - percent}% 0 0)` })}>${this.tracedWindow()}</div>
       <span class="chip">${msg('Ray traced')}</span>
-      <span class="chip right">${msg('Raster (like a game engine)')}</span>
+      <span class="chip right">${RASTER_LABEL()}</span>
       <div
         class="divider"
         style=${styleMap({ left: `${percent}%` })}

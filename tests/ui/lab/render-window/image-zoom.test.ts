@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { canvasSizeFor, canvasView, fitLayout, SIDE_BY_SIDE_GAP, zoomInStep, zoomOutStep } from '../../../../src/ui/lab/render-window/image-zoom.ts';
+import { canvasSizeFor, canvasView, enlargesFit, fitLayout, SIDE_BY_SIDE_GAP, zoomInStep, zoomOutStep } from '../../../../src/ui/lab/render-window/image-zoom.ts';
 
 const image = { width: 512, height: 384 };
 
@@ -30,6 +30,13 @@ describe('zoom steps', () => {
   it('steps past a scale that is already a step', () => {
     expect(zoomInStep(1)).toBe(2);
     expect(zoomOutStep(2)).toBe(1);
+  });
+
+  it('offers 200 % only where it shows the image larger than Fit', () => {
+    const small = fitLayout({ width: 640, height: 480 }, { width: 32, height: 24 }, 'traced').scale;
+    expect(enlargesFit(2, small)).toBe(false);
+    expect(enlargesFit(2, fitLayout({ width: 736, height: 460 }, { width: 320, height: 240 }, 'traced').scale)).toBe(true);
+    expect(enlargesFit(2, 2)).toBe(false);
   });
 
   it('stops at the ends', () => {
