@@ -1,5 +1,6 @@
 import { initialState, type LabState } from '../lab-state/lab-state.ts';
 import type { DeclaredView } from '../lab-state/lab-action.ts';
+import { framedRaysPixel } from '../lab-state/framed-rays.ts';
 import type { Scene } from '../scene/scene.ts';
 import { formatIssues } from '../scene/scene-issues.ts';
 import { FRAMED_PARTS } from './declared-view-schema.ts';
@@ -141,14 +142,20 @@ function pixelPickingProblems(level: Level): Problem[] {
 }
 
 /**
- * A view frames things the scene has, chooses a pixel its screen has, and frames a pixel's
- * rays only together with the pixel it chooses (an earlier task's pick may have been undone).
+ * A view frames things the scene has (or a pixel's rays, "rays:3,1", of a pixel the screen
+ * has), chooses a pixel its screen has, and frames the chosen pixel's rays ("pixel-rays")
+ * only together with the pixel it chooses (an earlier task's pick may have been undone).
  */
 function viewProblems(scene: Scene, view: DeclaredView, at: (string | number)[]): Problem[] {
   const problems: Problem[] = [];
   const names = [...FRAMED_PARTS, ...scene.objects.map((thing) => thing.id), ...scene.lights.map((thing) => thing.id)];
   (view.frame ?? []).forEach((name, index) => {
-    if (!names.includes(name)) problems.push({ path: [...at, 'frame', index], message: `must be one of ${names.join(', ')}, got "${name}"` });
+    const raysOf = framedRaysPixel(name);
+    if (raysOf) {
+      for (const message of pixelProblems(scene, raysOf.join(','))) problems.push({ path: [...at, 'frame', index], message });
+    } else if (!names.includes(name)) {
+      problems.push({ path: [...at, 'frame', index], message: `must be one of ${[...names, 'rays:<column>,<row>'].join(', ')}, got "${name}"` });
+    }
   });
   if (view.pixel) {
     for (const message of pixelProblems(scene, view.pixel.join(','))) problems.push({ path: [...at, 'pixel'], message });

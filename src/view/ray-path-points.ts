@@ -29,3 +29,13 @@ export function rayPathPoints(trace: PixelTrace): Vec3[] {
   trace.rays.forEach(visit);
   return [...raySegments(trace).flat(), ...corners];
 }
+
+/**
+ * The points of rayPathPoints but where the pixel's rays leave the camera: what a view
+ * framing `rays:<column>,<row>` fits (the bounces, not the way from the camera to them).
+ */
+export function rayPathPointsFromHit(trace: PixelTrace): Vec3[] {
+  const starts = new Set(trace.rays.map((root) => root.origin));
+  const segments = raySegments(trace);
+  return rayPathPoints(trace).filter((point, index) => index >= segments.length * 2 || !starts.has(point));
+}
