@@ -9,6 +9,7 @@ import { APP_ONLY_ACTION } from './lab-action-schema.ts';
 import { ALWAYS_SHOWN, partsOfTarget, type GuideTarget } from './lab-controls.ts';
 import type { Level } from './level-schema.ts';
 import { problemWithPath } from './state-path.ts';
+import type { TaskEvidence } from './task-evidence-schema.ts';
 
 /**
  * The checks of a level that look at more than one field: ids, how many tasks are
@@ -36,6 +37,7 @@ export function levelRules(level: Level): string[] {
     ...pixelPickingProblems(level),
     ...(level.view ? viewProblems(level.scene, level.view, ['view']) : []),
     ...level.tasks.flatMap((task, index) => (task.view ? viewProblems(level.scene, task.view, ['tasks', index, 'view']) : [])),
+    ...level.tasks.flatMap((task, index) => (task.evidence ? evidenceProblems(level.scene, task.evidence, ['tasks', index, 'evidence']) : [])),
     ...badgeProblems(level),
   ];
   return formatIssues(problems.map(({ path, message }) => ({ code: 'custom', path, message })));
@@ -162,6 +164,18 @@ function viewProblems(scene: Scene, view: DeclaredView, at: (string | number)[])
   }
   if (view.frame?.includes('pixel-rays') && !view.pixel) {
     problems.push({ path: [...at, 'frame'], message: '"pixel-rays" needs the view to choose its pixel ("pixel": [column, row])' });
+  }
+  return problems;
+}
+
+/** Evidence names things the scene has, and a pixel its screen has. */
+function evidenceProblems(scene: Scene, evidence: TaskEvidence, at: (string | number)[]): Problem[] {
+  const ids = [...scene.objects, ...scene.lights].map((thing) => thing.id);
+  const problems: Problem[] = (evidence.objects ?? []).flatMap((id, index) =>
+    ids.includes(id) ? [] : [{ path: [...at, 'objects', index], message: `no object or light "${id}" in this level's scene (it has ${ids.join(', ')})` }],
+  );
+  if (evidence.rays) {
+    for (const message of pixelProblems(scene, evidence.rays.pixel.join(','))) problems.push({ path: [...at, 'rays', 'pixel'], message });
   }
   return problems;
 }

@@ -40,7 +40,10 @@ import { sameSelection, stateCommand, type StateCommand } from './state-commands
 import { type ArrowTarget, keyCommand, type ViewCommand } from './view-commands.ts';
 import { ViewControls } from './view-controls.ts';
 import { rayPathPoints, rayPathPointsFromHit, raySegments } from './ray-path-points.ts';
+import { followRayPath } from '../tracer/ray-path.ts';
 import { framedRaysPixel } from '../lab-state/framed-rays.ts';
+import { hiddenFrom, rayEvidence, type EvidencePoint } from './ray-evidence.ts';
+import { rayColorKey, type RayColorKey } from './ray-palette.ts';
 import { cameraViewFov, framingPose, framingPoseAbove, type ViewPose } from './view-pose.ts';
 import { drawsInSoftware } from './software-renderer.ts';
 import { BurstResolution } from './burst-resolution.ts';
@@ -527,6 +530,19 @@ export class LabView {
       const to = this.projectToView(end);
       return from && to ? [{ from, to }] : [];
     });
+  }
+
+  /**
+   * For tests and tools: the ray `path` names (tracer/ray-path.ts) in pixel `pixel`'s latest
+   * trace, chosen or not, as the legend entry it is drawn as and points along it on the canvas,
+   * each hidden or not behind an opaque object (ray-evidence.ts); null without such a ray.
+   */
+  evidenceRay(pixel: readonly [number, number], path: string): { drawnAs: RayColorKey; points: EvidencePoint[] } | null {
+    const trace = this.traceOf(pixel);
+    const node = trace ? followRayPath(trace, path) : null;
+    if (!node) return null;
+    const points = rayEvidence(node, (point) => this.projectToView(point), (point) => hiddenFrom(this.camera.position, point, [this.objects.group]));
+    return { drawnAs: rayColorKey(node.type, node.hit, node.untested), points };
   }
 
   /**
