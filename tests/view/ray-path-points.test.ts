@@ -28,8 +28,14 @@ describe("framing a pixel's rays", () => {
     ]);
   });
 
-  it('leaves out the camera for a view that frames what the rays do after their first hit', () => {
-    expect(rayPathPointsFromHit(trace)).toEqual(rayPathPoints(trace).slice(1));
+  it('frames what the rays do after their first hit: not the camera, and only the first metre toward a lamp', () => {
+    expect(rayPathPointsFromHit(trace)).toEqual([
+      [0, 1, 0],
+      [0, 1, 0],
+      [0, 1 + MISS_REACH, 0],
+      [0, 1, 0],
+      [MISS_REACH, 1, 0],
+    ]);
   });
 
   it('frames them from the side the view looks from now, every point in view', () => {
