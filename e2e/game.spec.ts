@@ -145,6 +145,48 @@ test('a drag on the orbit pad selects no text, and a level opens at its title wi
   expect(errors).toEqual([]);
 });
 
+test('an explained prediction folds to one line that opens again, and the next task is brought into view', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.goto('./');
+  await page.getByRole('button', { name: 'Got it' }).click();
+  await importProgress(page, progressFile(levelIds.slice(0, levelIds.indexOf('04-shadows'))));
+  await page.locator('rt-level-map [data-level="04-shadows"]').click();
+  await page.locator('rt-screen-preview').getByRole('button', { name: 'Pixel 2, 2', exact: true }).click();
+  await lockIn(page, 'It is not traced: nothing tests the way');
+  await page.locator('rt-tracer-panel').getByRole('switch', { name: 'Shadows' }).click();
+  await expect(page.locator('rt-task-card[data-task="shadows-off"]')).toHaveAttribute('status', 'done');
+
+  // The learner scrolled the column back to the level's intro while reading the explanation,
+  // where the task that comes next is out of sight; Continue.
+  const column = page.getByRole('complementary', { name: 'Tasks' });
+  await column.evaluate((element) => (element.scrollTop = 0));
+  await expect(page.locator('rt-task-card[data-task="render-no-shadows"]')).not.toBeInViewport();
+  const predict = page.locator('rt-task-card[data-task="predict-no-shadows"]');
+  await continueFromPrediction(page, 'Predict: Shadows off', undefined, async (card) => {
+    await expect(card).toContainText('the ray tracer casts no shadow ray at all');
+  });
+
+  // Folded: one line of what was expected, no explanation, no choices; the next task in view.
+  await expect(current(page)).toContainText('Render the image with');
+  await expect(current(page)).toBeInViewport({ ratio: 0.9 });
+  const summary = predict.locator('.summary');
+  await expect(summary).toHaveText('✓ You expected “It is not traced: nothing tests the way”, and so it is.');
+  expect((await summary.boundingBox())!.height).toBeLessThan(24);
+  await expect(predict).not.toContainText('the ray tracer casts no shadow ray at all');
+  await expect(predict.getByRole('radio')).toHaveCount(0);
+
+  // A click on its title opens it again (without Continue), another folds it.
+  const head = predict.getByRole('button', { name: /Predict: Shadows off/ });
+  await expect(head).toHaveAttribute('aria-expanded', 'false');
+  await head.click();
+  await expect(predict).toContainText('the ray tracer casts no shadow ray at all');
+  await expect(predict.getByRole('button', { name: 'Continue' })).toHaveCount(0);
+  await expect(summary).toHaveCount(0);
+  await head.click();
+  await expect(summary).toBeVisible();
+  expect(errors).toEqual([]);
+});
+
 test('a free lab link pasted into the tab the game is open in opens the free lab', async ({ page }) => {
   const errors = collectErrors(page);
   await page.goto('./');

@@ -1,7 +1,9 @@
 import { expect, test, type Page } from '@playwright/test';
-import { mkdirSync, readFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { LAB_CONTROLS, type LabPanel } from '../src/quest/lab-controls.ts';
 import type { DeclaredView } from '../src/lab-state/lab-action.ts';
+import type { TaskEvidence } from '../src/quest/task-evidence-schema.ts';
+import { expectEvidenceShows, type EvidenceFigures } from './support/evidence-checks.ts';
 import { collectErrors, current, importProgress, levelsFolder, panel, progressFile } from './support/game-steps.ts';
 import { expectViewShows, viewAtStart, viewSettled } from './support/view-checks.ts';
 
@@ -9,8 +11,10 @@ import { expectViewShows, viewAtStart, viewSettled } from './support/view-checks
 // each task the ring goes to a control (or a point of the 3D view) that is on screen, and
 // every control the level leaves out of a panel is not on the page at all. A task that
 // declares a view starts in it, with what the view frames on screen and its pixel's rays
-// readable. One browser run per level; each task's start view is saved under
-// test-results/task-views/.
+// readable. A task that declares its evidence (the rays and things its text names) shows
+// them at its start view, large enough and under no panel (support/evidence-checks.ts).
+// One browser run per level; each task's start view is saved under test-results/task-views/,
+// with the evidence's figures in <level>--evidence.json.
 
 interface LevelTask {
   id: string;
@@ -18,6 +22,7 @@ interface LevelTask {
   mandatory?: boolean;
   goal: Record<string, unknown>;
   view?: DeclaredView;
+  evidence?: TaskEvidence;
 }
 interface LevelFile {
   id: string;
@@ -129,6 +134,7 @@ for (const [position, levelId] of levelIds.entries()) {
     await expect(panel(page).locator('h2')).toBeVisible();
 
     const visited: string[] = [];
+    const figures: ({ task: string } & EvidenceFigures)[] = [];
     while (!(await panel(page).getByText('Level complete!').isVisible())) {
       const id = await current(page).getAttribute('data-task', { timeout: 30_000 });
       const task = level.tasks.find((candidate) => candidate.id === id);
@@ -140,10 +146,12 @@ for (const [position, levelId] of levelIds.entries()) {
       else await page.waitForTimeout(300);
       await page.screenshot({ path: `test-results/task-views/${levelId}--${id}.png` });
       if (view) await expectViewShows(page, `${levelId}/${id}`, view);
+      if (task!.evidence) figures.push({ task: id!, ...(await expectEvidenceShows(page, `${levelId}/${id}`, task!.evidence)) });
       await expectHiddenControlsAbsent(page, level);
       await solveCurrentTask(page, level, task!);
       await expect(page.locator(`rt-task-card[data-task="${id}"]`)).not.toHaveAttribute('status', 'current', { timeout: 30_000 });
     }
+    if (figures.length > 0) writeFileSync(`test-results/task-views/${levelId}--evidence.json`, `${JSON.stringify(figures, null, 1)}\n`);
     const mandatory = level.tasks.filter((task) => task.mandatory !== false).map((task) => task.id);
     expect(visited).toEqual(mandatory);
     expect(errors).toEqual([]);

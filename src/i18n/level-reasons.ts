@@ -73,10 +73,14 @@ export const LEVEL_REASONS: readonly Rule[] = [
   }],
   [/^(\S*) is not a list, so (\[.*\]) cannot select from it$/, (place, step) => msg(str`${place} is not a list, so ${step} cannot select from it`)],
 
-  // Views (declared-view-schema.ts) and option changes (option-changes.ts, lab-action-schema.ts).
+  // Views (declared-view-schema.ts), evidence (task-evidence-schema.ts) and option changes (option-changes.ts, lab-action-schema.ts).
   [/^must be a direction, not \[0, 0, 0\]$/, () => msg('must be a direction, not [0, 0, 0]')],
   [/^a view either frames things or looks through the camera, not both$/, () => msg('a view either frames things or looks through the camera, not both')],
   [/^"from" needs a "frame" to look at$/, () => msg('"from" needs a "frame" to look at')],
+  [
+    /^must be kinds of ray joined by "\/", from the camera's: "primary", then (.+)$/,
+    (kinds) => msg(str`must be kinds of ray joined by "/", from the camera's: "primary", then ${kinds}`),
+  ],
   [/^must be an object of fields to change, got (.+)$/, (got) => msg(str`must be an object of fields to change, got ${value(got)}`)],
   [/^unknown field (".*") \(known: (.*)\)$/, (field, known) => msg(str`unknown field ${field} (known: ${known})`)],
   [/^(\S+) must be (a \w+), got (.+)$/, (field, kind, got) => {

@@ -27,7 +27,8 @@ export interface DebuggerRay {
 export interface DeclaredView {
   /**
    * What the 3D view glides to fit: object or light ids, `camera` (the ray tracer's camera
-   * with its screen) and `pixel-rays` (the chosen pixel's whole ray path).
+   * with its screen), `pixel-rays` (the chosen pixel's whole ray path) and `rays:<column>,<row>`
+   * (that pixel's rays from their first hit on, chosen or not: framed-rays.ts).
    */
   frame?: string[];
   /** The side the view looks from, towards what it frames (a world direction); by default the side it looks from now. */

@@ -10,7 +10,7 @@ import { optionChanges } from './option-changes.ts';
  * is valid.
  */
 
-/** The names `frame` takes besides the ids of the scene's objects and lights. */
+/** The names `frame` takes besides the ids of the scene's objects and lights and a pixel's rays ("rays:3,1": lab-state/framed-rays.ts). */
 export const FRAMED_PARTS = ['camera', 'pixel-rays'] as const;
 
 const direction = z
@@ -19,7 +19,7 @@ const direction = z
 
 export const declaredViewSchema = z
   .strictObject({
-    frame: z.array(z.string().min(1)).min(1).max(12).optional().describe('What the 3D view fits: object or light ids, "camera", "pixel-rays".'),
+    frame: z.array(z.string().min(1)).min(1).max(12).optional().describe('What the 3D view fits: object or light ids, "camera", "pixel-rays", "rays:<column>,<row>".'),
     from: direction.optional().describe('The side the 3D view looks from, as a world direction towards what it frames.'),
     throughCamera: z.boolean().optional().describe('Look through the ray tracer\'s camera, as "Camera view" does.'),
     pixel: z.tuple([z.int().min(0), z.int().min(0)]).nullable().optional().describe('The pixel to choose [column, row], or null for none.'),

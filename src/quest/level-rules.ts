@@ -1,5 +1,6 @@
 import { initialState, type LabState } from '../lab-state/lab-state.ts';
 import type { DeclaredView } from '../lab-state/lab-action.ts';
+import { framedRaysPixel } from '../lab-state/framed-rays.ts';
 import type { Scene } from '../scene/scene.ts';
 import { formatIssues } from '../scene/scene-issues.ts';
 import { FRAMED_PARTS } from './declared-view-schema.ts';
@@ -8,6 +9,7 @@ import { APP_ONLY_ACTION } from './lab-action-schema.ts';
 import { ALWAYS_SHOWN, partsOfTarget, type GuideTarget } from './lab-controls.ts';
 import type { Level } from './level-schema.ts';
 import { problemWithPath } from './state-path.ts';
+import type { TaskEvidence } from './task-evidence-schema.ts';
 
 /**
  * The checks of a level that look at more than one field: ids, how many tasks are
@@ -35,6 +37,7 @@ export function levelRules(level: Level): string[] {
     ...pixelPickingProblems(level),
     ...(level.view ? viewProblems(level.scene, level.view, ['view']) : []),
     ...level.tasks.flatMap((task, index) => (task.view ? viewProblems(level.scene, task.view, ['tasks', index, 'view']) : [])),
+    ...level.tasks.flatMap((task, index) => (task.evidence ? evidenceProblems(level.scene, task.evidence, ['tasks', index, 'evidence']) : [])),
     ...badgeProblems(level),
   ];
   return formatIssues(problems.map(({ path, message }) => ({ code: 'custom', path, message })));
@@ -141,20 +144,38 @@ function pixelPickingProblems(level: Level): Problem[] {
 }
 
 /**
- * A view frames things the scene has, chooses a pixel its screen has, and frames a pixel's
- * rays only together with the pixel it chooses (an earlier task's pick may have been undone).
+ * A view frames things the scene has (or a pixel's rays, "rays:3,1", of a pixel the screen
+ * has), chooses a pixel its screen has, and frames the chosen pixel's rays ("pixel-rays")
+ * only together with the pixel it chooses (an earlier task's pick may have been undone).
  */
 function viewProblems(scene: Scene, view: DeclaredView, at: (string | number)[]): Problem[] {
   const problems: Problem[] = [];
   const names = [...FRAMED_PARTS, ...scene.objects.map((thing) => thing.id), ...scene.lights.map((thing) => thing.id)];
   (view.frame ?? []).forEach((name, index) => {
-    if (!names.includes(name)) problems.push({ path: [...at, 'frame', index], message: `must be one of ${names.join(', ')}, got "${name}"` });
+    const raysOf = framedRaysPixel(name);
+    if (raysOf) {
+      for (const message of pixelProblems(scene, raysOf.join(','))) problems.push({ path: [...at, 'frame', index], message });
+    } else if (!names.includes(name)) {
+      problems.push({ path: [...at, 'frame', index], message: `must be one of ${[...names, 'rays:<column>,<row>'].join(', ')}, got "${name}"` });
+    }
   });
   if (view.pixel) {
     for (const message of pixelProblems(scene, view.pixel.join(','))) problems.push({ path: [...at, 'pixel'], message });
   }
   if (view.frame?.includes('pixel-rays') && !view.pixel) {
     problems.push({ path: [...at, 'frame'], message: '"pixel-rays" needs the view to choose its pixel ("pixel": [column, row])' });
+  }
+  return problems;
+}
+
+/** Evidence names things the scene has, and a pixel its screen has. */
+function evidenceProblems(scene: Scene, evidence: TaskEvidence, at: (string | number)[]): Problem[] {
+  const ids = [...scene.objects, ...scene.lights].map((thing) => thing.id);
+  const problems: Problem[] = (evidence.objects ?? []).flatMap((id, index) =>
+    ids.includes(id) ? [] : [{ path: [...at, 'objects', index], message: `no object or light "${id}" in this level's scene (it has ${ids.join(', ')})` }],
+  );
+  if (evidence.rays) {
+    for (const message of pixelProblems(scene, evidence.rays.pixel.join(','))) problems.push({ path: [...at, 'rays', 'pixel'], message });
   }
   return problems;
 }

@@ -4,6 +4,7 @@ import { describeIssue, describeValue, formatIssues } from '../scene/scene-issue
 import { listOf, wholeNumberIn } from '../scene/scene-schema-parts.ts';
 import { labActionSchema } from './lab-action-schema.ts';
 import { declaredViewSchema } from './declared-view-schema.ts';
+import { taskEvidenceSchema } from './task-evidence-schema.ts';
 import { FIGURE_FILES } from './figure-files.ts';
 import { goalSchema } from './goal.ts';
 import { kebabId } from './kebab-id.ts';
@@ -53,6 +54,7 @@ const taskSchema = z
     guide: guideTargetSchema.optional().describe('The control the second rung rings.'),
     solution: listOf(labActionSchema, [1, SOLUTION_STEPS_MAX]).optional().describe('The actions that complete the task: "show me" performs them.'),
     view: declaredViewSchema.optional().describe('What the lab shows when this task becomes the current one.'),
+    evidence: taskEvidenceSchema.optional().describe('What the text tells the learner to look at in the 3D view (checked in the browser tests).'),
   })
   .transform((task) => ({ ...task, points: task.points ?? (task.mandatory ? DEFAULT_POINTS.mandatory : DEFAULT_POINTS.optional) }));
 

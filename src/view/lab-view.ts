@@ -39,7 +39,11 @@ import { TransformGizmo } from './transform-gizmo.ts';
 import { sameSelection, stateCommand, type StateCommand } from './state-commands.ts';
 import { type ArrowTarget, keyCommand, type ViewCommand } from './view-commands.ts';
 import { ViewControls } from './view-controls.ts';
-import { rayPathPoints, raySegments } from './ray-path-points.ts';
+import { rayPathPoints, rayPathPointsFromHit, raySegments } from './ray-path-points.ts';
+import { followRayPath } from '../tracer/ray-path.ts';
+import { framedRaysPixel } from '../lab-state/framed-rays.ts';
+import { hiddenFrom, rayEvidence, type EvidencePoint } from './ray-evidence.ts';
+import { rayColorKey, type RayColorKey } from './ray-palette.ts';
 import { cameraViewFov, framingPose, framingPoseAbove, type ViewPose } from './view-pose.ts';
 import { drawsInSoftware } from './software-renderer.ts';
 import { BurstResolution } from './burst-resolution.ts';
@@ -462,7 +466,12 @@ export class LabView {
   /** The chosen pixel's latest trace, or null without a pixel or its trace. */
   private selectedTrace(): PixelTrace | null {
     const pixel = this.store.state.selectedPixel;
-    return (pixel && this.screenRays?.traces.find((candidate) => candidate.pixel[0] === pixel[0] && candidate.pixel[1] === pixel[1])) ?? null;
+    return pixel ? this.traceOf(pixel) : null;
+  }
+
+  /** Pixel `pixel`'s latest trace, chosen or not (null before it is traced). */
+  private traceOf(pixel: readonly [number, number]): PixelTrace | null {
+    return this.screenRays?.traces.find((candidate) => candidate.pixel[0] === pixel[0] && candidate.pixel[1] === pixel[1]) ?? null;
   }
 
   /** The chosen pixel's whole ray path and the camera it starts at, or null without a pixel or its trace. */
@@ -501,8 +510,13 @@ export class LabView {
     return this.framedPointsOf(name).map((point) => this.projectToView(point));
   }
 
-  /** The world points a declared view fits for `name` (view-look.ts), from what is drawn now. */
+  /** The world points a declared view fits for `name` (view-look.ts), from what is drawn now and the latest trace. */
   private framedPointsOf(name: string): Vec3[] {
+    const pixel = framedRaysPixel(name);
+    if (pixel) {
+      const trace = this.traceOf(pixel);
+      return trace ? rayPathPointsFromHit(trace) : [];
+    }
     const drawn = (id: string) => this.objects.objectOf(id) ?? this.lightGizmos.objectOf(id);
     return framedPoints(name, this.store.state.scene, drawn, this.cameraScreen.rig);
   }
@@ -516,6 +530,19 @@ export class LabView {
       const to = this.projectToView(end);
       return from && to ? [{ from, to }] : [];
     });
+  }
+
+  /**
+   * For tests and tools: the ray `path` names (tracer/ray-path.ts) in pixel `pixel`'s latest
+   * trace, chosen or not, as the legend entry it is drawn as and points along it on the canvas,
+   * each hidden or not behind an opaque object (ray-evidence.ts); null without such a ray.
+   */
+  evidenceRay(pixel: readonly [number, number], path: string): { drawnAs: RayColorKey; points: EvidencePoint[] } | null {
+    const trace = this.traceOf(pixel);
+    const node = trace ? followRayPath(trace, path) : null;
+    if (!node) return null;
+    const points = rayEvidence(node, (point) => this.projectToView(point), (point) => hiddenFrom(this.camera.position, point, [this.objects.group]));
+    return { drawnAs: rayColorKey(node.type, node.hit, node.untested), points };
   }
 
   /**

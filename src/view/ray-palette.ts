@@ -86,6 +86,21 @@ export const RAY_DASHES: Readonly<Record<RayColorKey, readonly [dash: number, ga
   normal: [0, 0],
 };
 
+/**
+ * Keys whose dash gaps are painted GAP_FILL instead of left open. A blocked shadow ray is grey
+ * (#656565, VRT's and spec §3's), and on the grey floor of the shadow levels it all but
+ * vanished (issue 37): light gaps between its grey dashes, like a barrier's stripes, stand out
+ * on a light floor and on the dark theme's background alike. The legend draws them too.
+ */
+export const FILLED_GAP_KEYS: ReadonlySet<RayColorKey> = new Set(['shadow']);
+export const GAP_FILL = '#F2F2F2';
+
+/**
+ * Keys drawn with a plate across their end (ray-extras.ts, for a chosen pixel): a blocked
+ * shadow ray ends where something stops it, and the plate says "stopped here", not "arrived".
+ */
+export const STOPPED_KEYS: ReadonlySet<RayColorKey> = new Set(['shadow']);
+
 export function rayPalette(name: RayPaletteName): RayPalette {
   return name === 'okabe-ito' ? OKABE_ITO : VRT;
 }

@@ -29,3 +29,22 @@ export function rayPathPoints(trace: PixelTrace): Vec3[] {
   trace.rays.forEach(visit);
   return [...raySegments(trace).flat(), ...corners];
 }
+
+/**
+ * What a view framing `rays:<column>,<row>` fits: where the pixel's rays hit and turn, not the
+ * way to them from the camera, nor the way to a lamp (a ray toward a light counts its first
+ * MISS_REACH metres, like a ray that hit nothing): the bounces inside a glass block, not the
+ * whole room they light.
+ */
+export function rayPathPointsFromHit(trace: PixelTrace): Vec3[] {
+  const points: Vec3[] = [];
+  const visit = (node: RayNode, root: boolean) => {
+    const towardLight = node.type === 'light' || node.type === 'area-light';
+    const reach = node.hit && !towardLight ? node.length : Math.min(node.length, MISS_REACH);
+    const end = [0, 1, 2].map((axis) => node.origin[axis] + node.direction[axis] * reach) as Vec3;
+    points.push(...(root ? [end] : [node.origin, end]));
+    node.children.forEach((child) => visit(child, false));
+  };
+  trace.rays.forEach((root) => visit(root, true));
+  return points;
+}

@@ -33,27 +33,31 @@ import {
   FULLY_GROWN,
   GROWTH_ATTRIBUTE,
   type TravelUniform,
+  STOP_ATTRIBUTE,
   type ViewHeightUniform,
 } from './ray-shader.ts';
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
-import { RAY_COLOR_KEYS, RAY_DASHES } from './ray-palette.ts';
+import { FILLED_GAP_KEYS, RAY_COLOR_KEYS, RAY_DASHES, STOPPED_KEYS } from './ray-palette.ts';
 
 /** Instances allocated at first; the buffers double from there as needed. */
 const INITIAL_CAPACITY = 256;
 
-/** Floats per instance: matrix 16, colour 3, alpha 1, growth 2; a cylinder adds its dash 2 and arrowhead place 1. */
+/** Floats per instance: matrix 16, colour 3, alpha 1, growth 2; a cylinder adds its dash 2, arrowhead place 1 and stop 1. */
 const FLOATS_PER_CONE = 22;
-const FLOATS_PER_CYLINDER = FLOATS_PER_CONE + 3;
+const FLOATS_PER_CYLINDER = FLOATS_PER_CONE + 4;
 
 /**
  * RAY_DASHES as (dash, gap) pairs by colour-key index, the form SegmentList.colorKey holds: a
  * rebuild copies two numbers per ray from it. Looking each pattern up by its name and copying
  * it with TypedArray.set was a third of a 10k-ray rebuild.
  */
-const DASHES_BY_KEY = Float32Array.from(RAY_COLOR_KEYS.flatMap((key) => RAY_DASHES[key]));
+const DASHES_BY_KEY = Float32Array.from(RAY_COLOR_KEYS.flatMap((key) => (FILLED_GAP_KEYS.has(key) ? [RAY_DASHES[key][0], -RAY_DASHES[key][1]] : RAY_DASHES[key])));
 
 /** Where each key's arrowhead sits (ray-shader.ts arrowAt), by colour-key index like DASHES_BY_KEY. */
 const ARROW_AT_BY_KEY = Float32Array.from(RAY_COLOR_KEYS.map(arrowAt));
+
+/** 1 for the keys with a stop plate at their end (STOPPED_KEYS), by colour-key index. */
+const STOP_BY_KEY = Float32Array.from(RAY_COLOR_KEYS.map((key) => (STOPPED_KEYS.has(key) ? 1 : 0)));
 
 /**
  * Opacity of the cones relative to the rays: a cone is a solid volume the size of the
@@ -85,7 +89,7 @@ export interface RayPoolStats {
   cones: number;
   /** Arrowheads drawn (one per ray of a chosen pixel; none for a whole screen). */
   arrows: number;
-  /** Meshes that issue a draw call: at most 4 (rays, cones, and a chosen pixel's arrowheads and hidden parts), whatever the number of rays. */
+  /** Meshes that issue a draw call: at most 5 (rays, cones, and a chosen pixel's arrowheads, hidden parts and stop plates), whatever the number of rays. */
   drawCalls: number;
   /** Bytes of per-instance buffers allocated (both meshes, at their pooled capacity). */
   instanceBytes: number;
@@ -135,6 +139,11 @@ class InstanceBuffers {
     return this.mesh.geometry.getAttribute(ARROW_AT_ATTRIBUTE) as InstancedBufferAttribute | undefined;
   }
 
+  /** 1 where an instance is a stopped ray with a plate at its end (cylinders only; the plates share it). */
+  get stop(): InstancedBufferAttribute | undefined {
+    return this.mesh.geometry.getAttribute(STOP_ATTRIBUTE) as InstancedBufferAttribute | undefined;
+  }
+
   /** Makes room for `count` instances, replacing the mesh (and freeing its GPU buffers) when too small. */
   reserve(count: number): void {
     if (count <= this.capacity) return;
@@ -153,7 +162,7 @@ class InstanceBuffers {
     this.mesh.count = count;
     this.mesh.visible = count > 0;
     if (count === 0) return;
-    for (const attribute of [this.mesh.instanceMatrix, this.color, this.alpha, this.growth, ...(this.dash ? [this.dash] : []), ...(this.arrowAt ? [this.arrowAt] : [])]) {
+    for (const attribute of [this.mesh.instanceMatrix, this.color, this.alpha, this.growth, ...(this.dash ? [this.dash] : []), ...(this.arrowAt ? [this.arrowAt] : []), ...(this.stop ? [this.stop] : [])]) {
       attribute.clearUpdateRanges();
       attribute.addUpdateRange(0, count * attribute.itemSize);
       attribute.needsUpdate = true;
@@ -172,6 +181,7 @@ class InstanceBuffers {
     if (this.kind === 'cylinder') {
       geometry.setAttribute(DASH_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity * 2), 2));
       geometry.setAttribute(ARROW_AT_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity), 1));
+      geometry.setAttribute(STOP_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity), 1));
     }
     const mesh = new InstancedMesh(geometry, material, capacity);
     mesh.name = this.kind === 'cone' ? RAY_CONES_NAME : RAY_CYLINDERS_NAME;
@@ -229,7 +239,8 @@ export class RayPool implements RayLayer {
   private readonly cones = new InstanceBuffers('cone', this.coneMaterial, this.object);
   private readonly arrowMaterial = createRayMaterial('arrow', this.travel, this.viewHeight);
   private readonly hiddenMaterial = createRayMaterial('hidden', this.travel, this.viewHeight);
-  private readonly extras = new RayExtras(this.object, this.arrowMaterial, this.hiddenMaterial);
+  private readonly stopMaterial = createRayMaterial('stop', this.travel, this.viewHeight);
+  private readonly extras = new RayExtras(this.object, { arrow: this.arrowMaterial, hidden: this.hiddenMaterial, stop: this.stopMaterial });
   private readonly drawn = new DrawnRays();
   private animation: AnimationInputs = { rays: null, selectedPixel: null, animate: false, pixelByPixel: false };
   private speed = 1;
@@ -270,7 +281,8 @@ export class RayPool implements RayLayer {
     const drawn = focus ? focusedRays(focus, options, this.drawn, this.style) : visibleRays(rays, options, selectedPixel, this.drawn, this.style);
     this.writeCylinders(drawn.rays);
     this.writeCones(drawn.cones);
-    this.extras.update(this.cylinders.mesh, drawn.rays.count, focus !== null || selectedPixel !== null);
+    const oneTree = focus !== null || selectedPixel !== null;
+    this.extras.update(this.cylinders.mesh, drawn.rays.count, oneTree, oneTree && anyStopped(drawn.rays));
     // Opaque rays write depth, so rays hide each other correctly; see-through ones do not,
     // so the rays behind them still show. (The material stays `transparent` either way:
     // three compiles opaque materials with alpha forced to 1, and switching compiles a new
@@ -313,7 +325,7 @@ export class RayPool implements RayLayer {
     this.extras.dispose();
     this.cylinders.dispose();
     this.cones.dispose();
-    for (const material of [this.rayMaterial, this.coneMaterial, this.arrowMaterial, this.hiddenMaterial]) material.dispose();
+    for (const material of [this.rayMaterial, this.coneMaterial, this.arrowMaterial, this.hiddenMaterial, this.stopMaterial]) material.dispose();
     this.object.clear();
   }
 
@@ -340,15 +352,17 @@ export class RayPool implements RayLayer {
     const growth = buffers.growth.array as Float32Array;
     const dash = buffers.dash?.array as Float32Array | undefined;
     const arrowAt = buffers.arrowAt?.array as Float32Array | undefined;
+    const stop = buffers.stop?.array as Float32Array | undefined;
     for (let i = 0; i < count; i++) {
       alpha[i] = list.alpha[i] * opacity;
       growth[i * 2] = list.start[i];
       growth[i * 2 + 1] = list.length[i];
-      if (dash && arrowAt) {
+      if (dash && arrowAt && stop) {
         const key = list.colorKey[i];
         dash[i * 2] = DASHES_BY_KEY[key * 2];
         dash[i * 2 + 1] = DASHES_BY_KEY[key * 2 + 1];
         arrowAt[i] = ARROW_AT_BY_KEY[key];
+        stop[i] = STOP_BY_KEY[key];
       }
     }
     buffers.commit(count);
@@ -421,6 +435,12 @@ export class RayPool implements RayLayer {
     const reach = (list.withCorners ? coneRadiusAt(list, i, s) : list.radius[i]) + PICK_ANGLE * t;
     return ex * ex + ey * ey + ez * ez <= reach * reach ? t : Infinity;
   }
+}
+
+/** Whether any of the drawn rays ends stopped (a blocked shadow ray): only then are stop plates drawn. */
+function anyStopped(list: SegmentList): boolean {
+  for (let i = 0; i < list.count; i++) if (STOP_BY_KEY[list.colorKey[i]] === 1) return true;
+  return false;
 }
 
 /** A cone's half-width at `s` metres from its apex: the larger half-side of the light, scaled. */

@@ -15,21 +15,25 @@
  *   widened to it, so a 1 cm ray stays visible in a scene seen from 10 m (uViewHeight is the
  *   canvas height in CSS px, set before each draw);
  * - `aDash` = (dash, gap) in metres along a ray (0: solid; ray-palette.ts RAY_DASHES):
- *   the fragment shader discards the gaps, measured from the ray's start.
+ *   the fragment shader discards the gaps, measured from the ray's start; a negative gap is
+ *   painted GAP_FILL instead (FILLED_GAP_KEYS: the blocked shadow ray's light stripes).
  *
  * Two variants draw one pixel's rays more plainly (ray-extras.ts), from the cylinders' own
  * instances: `arrow` puts an arrowhead of a fixed size on screen along each ray, pointing the
  * way it travels, drawn over everything: its tip at `aArrowAt` of the grown length (ARROW_AT,
  * a little past halfway, for a ray; its end for a normal, an arrow like a textbook's vector); `hidden` draws, faintly, the parts of the rays that objects
- * hide (it passes only where something nearer was drawn: depth test "greater").
+ * hide (it passes only where something nearer was drawn: depth test "greater"); `stop` puts a
+ * plate of a fixed size on screen across the end of each ray whose `aStop` is 1 (a blocked
+ * shadow ray, ray-palette.ts STOPPED_KEYS) once it has grown to that end, over everything.
  */
 import { DoubleSide, GreaterDepth, MeshBasicMaterial, Vector2, type WebGLProgramParametersWithUniforms } from 'three';
-import type { RayColorKey } from './ray-palette.ts';
+import { GAP_FILL, hexToColor, type RayColorKey } from './ray-palette.ts';
 
 export const ALPHA_ATTRIBUTE = 'aAlpha';
 export const GROWTH_ATTRIBUTE = 'aGrowth';
 export const DASH_ATTRIBUTE = 'aDash';
 export const ARROW_AT_ATTRIBUTE = 'aArrowAt';
+export const STOP_ATTRIBUTE = 'aStop';
 
 /** The thinnest a ray is drawn, in CSS px (issue 9: readable at a level's starting view). */
 export const RAY_MIN_WIDTH_PX = 3;
@@ -37,6 +41,13 @@ export const RAY_MIN_WIDTH_PX = 3;
 /** An arrowhead's size on screen, in CSS px: plainly a head on a 3 px ray, small beside an object. */
 export const ARROW_LENGTH_PX = 14;
 export const ARROW_WIDTH_PX = 10;
+
+/**
+ * The plate across a stopped ray's end, in CSS px: as wide as an arrowhead is long, so it
+ * reads as a bar across the ray (⊣) seen from the side, a disc seen along it.
+ */
+export const STOP_WIDTH_PX = 14;
+export const STOP_THICKNESS_PX = 3;
 
 /** Where along its grown part a ray's arrowhead points from (its tip), as a share of it. */
 export const ARROW_AT = 0.55;
@@ -69,7 +80,10 @@ varying float vRayAlpha;
 #if defined(RAY_ARROW)
 attribute float ${ARROW_AT_ATTRIBUTE};
 #endif
-#if !defined(RAY_CONE) && !defined(RAY_ARROW)
+#if defined(RAY_STOP)
+attribute float ${STOP_ATTRIBUTE};
+#endif
+#if !defined(RAY_CONE) && !defined(RAY_ARROW) && !defined(RAY_STOP)
 attribute vec2 ${DASH_ATTRIBUTE};
 varying vec2 vRayDash;
 varying float vRayAlong;
@@ -89,6 +103,15 @@ float rayRadius = max(length((modelViewMatrix * instanceMatrix * vec4(1.0, 0.0, 
 float headLength = min(${ARROW_LENGTH_PX.toFixed(1)} * rayPixel, 0.5 * rayLength * rayGrown);
 float headRadius = 0.5 * ${ARROW_WIDTH_PX.toFixed(1)} * rayPixel * headLength / (${ARROW_LENGTH_PX.toFixed(1)} * rayPixel);
 transformed = vec3(position.xy * headRadius / rayRadius, ${ARROW_AT_ATTRIBUTE} * rayGrown + position.z * headLength / rayLength);
+#elif defined(RAY_STOP)
+// The plate at the ray's end, its size fixed in screen pixels at that depth; a ray that is not
+// stopped (aStop 0), or has not yet grown to its end, shrinks it to a point: nothing is drawn.
+vec4 rayEndView = modelViewMatrix * instanceMatrix * vec4(0.0, 0.0, 1.0, 1.0);
+float rayPixel = 2.0 * max(-rayEndView.z, 1e-4) / (projectionMatrix[1][1] * max(uViewHeight, 1.0));
+float rayLength = max(length((modelViewMatrix * instanceMatrix * vec4(0.0, 0.0, 1.0, 0.0)).xyz), 1e-6);
+float rayRadius = max(length((modelViewMatrix * instanceMatrix * vec4(1.0, 0.0, 0.0, 0.0)).xyz), 1e-9);
+float stopShown = ${STOP_ATTRIBUTE} * step(1.0, rayGrown);
+transformed = vec3(position.xy * stopShown * 0.5 * ${STOP_WIDTH_PX.toFixed(1)} * rayPixel / rayRadius, 1.0 + position.z * stopShown * ${STOP_THICKNESS_PX.toFixed(1)} * rayPixel / rayLength);
 #else
 // The ribbon's vertex: position.z along the grown axis, position.x = ±1 across it.
 vec3 rayPointView = (modelViewMatrix * instanceMatrix * vec4(0.0, 0.0, position.z * rayGrown, 1.0)).xyz;
@@ -111,7 +134,7 @@ vRayAlong = position.z * length(instanceMatrix[2].xyz);
 vRayAlpha = ${ALPHA_ATTRIBUTE};`;
 
 /** A ribbon's vertex is placed in view space already (VERTEX_GROW); cones and arrowheads go through three's own projection. */
-const VERTEX_PROJECT = /* glsl */ `#if defined(RAY_CONE) || defined(RAY_ARROW)
+const VERTEX_PROJECT = /* glsl */ `#if defined(RAY_CONE) || defined(RAY_ARROW) || defined(RAY_STOP)
 #include <project_vertex>
 #else
 vec4 mvPosition = vec4(rayViewPosition, 1.0);
@@ -120,7 +143,7 @@ gl_Position = projectionMatrix * mvPosition;
 
 const FRAGMENT_HEAD = /* glsl */ `#include <common>
 varying float vRayAlpha;
-#if !defined(RAY_CONE) && !defined(RAY_ARROW)
+#if !defined(RAY_CONE) && !defined(RAY_ARROW) && !defined(RAY_STOP)
 varying vec2 vRayDash;
 varying float vRayAlong;
 #endif`;
@@ -130,8 +153,11 @@ diffuseColor.a *= vRayAlpha;
 #ifdef RAY_HIDDEN
 diffuseColor.a *= ${HIDDEN_ALPHA.toFixed(2)};
 #endif
-#if !defined(RAY_CONE) && !defined(RAY_ARROW)
-if (vRayDash.x > 0.0 && mod(vRayAlong, vRayDash.x + vRayDash.y) > vRayDash.x) discard;
+#if !defined(RAY_CONE) && !defined(RAY_ARROW) && !defined(RAY_STOP)
+if (vRayDash.x > 0.0 && mod(vRayAlong, vRayDash.x + abs(vRayDash.y)) > vRayDash.x) {
+  if (vRayDash.y >= 0.0) discard;
+  diffuseColor.rgb = vec3(${hexToColor(GAP_FILL).map((c) => c.toFixed(4)).join(', ')});
+}
 #endif`;
 
 const drawingSize = new Vector2();
@@ -159,7 +185,7 @@ export function patchRayShader(
  * A ray material. Cones are seen from inside and out (double-sided) in one pass: the
  * instances are not sorted anyway, and one pass keeps them at one draw call.
  */
-export function createRayMaterial(kind: 'cylinder' | 'cone' | 'arrow' | 'hidden', travel: TravelUniform, viewHeight: ViewHeightUniform): MeshBasicMaterial {
+export function createRayMaterial(kind: 'cylinder' | 'cone' | 'arrow' | 'hidden' | 'stop', travel: TravelUniform, viewHeight: ViewHeightUniform): MeshBasicMaterial {
   const material = new MeshBasicMaterial({ color: 0xffffff });
   // Always blended, as alpha comes per instance; ray-pool.ts turns depthWrite off for see-through rays.
   material.transparent = true;
@@ -168,9 +194,10 @@ export function createRayMaterial(kind: 'cylinder' | 'cone' | 'arrow' | 'hidden'
     material.side = DoubleSide;
     material.forceSinglePass = true;
     material.depthWrite = false;
-  } else if (kind === 'arrow') {
-    material.defines = { RAY_ARROW: '' };
-    // Over everything: a head behind the camera's screen or an object still says which way its ray goes.
+  } else if (kind === 'arrow' || kind === 'stop') {
+    material.defines = kind === 'arrow' ? { RAY_ARROW: '' } : { RAY_STOP: '' };
+    // Over everything: a head behind the camera's screen or an object still says which way its
+    // ray goes, and a plate on the far side of the ball that blocks a shadow ray still shows.
     material.depthTest = false;
     material.depthWrite = false;
   } else if (kind === 'hidden') {

@@ -1,11 +1,16 @@
 import { Box3, type Object3D, Vector3 } from 'three';
 import type { ViewLook } from '../lab-state/lab-state.ts';
 import type { Scene, Vec3 } from '../scene/scene.ts';
+import { framedRaysPixel } from '../lab-state/framed-rays.ts';
 import { framingPoseAbove, type ViewPose } from './view-pose.ts';
 
 /** What following a declared view's look needs of the 3D view. */
 export interface LookStage {
-  /** The world points a framed name stands for (an object's box, a light, the camera with its screen); none for an unknown name. */
+  /**
+   * The world points a framed name stands for (an object's box, a light, the camera with its
+   * screen, a named pixel's rays after their first hit: framed-rays.ts); none for an unknown
+   * name, or a pixel not traced yet.
+   */
   pointsOf(name: string): Vec3[];
   /** The chosen pixel's whole ray path with the camera it starts at, or null while its trace is not in. */
   pixelRayPoints(): Vec3[] | null;
@@ -22,6 +27,11 @@ export interface LookStage {
   throughCamera(): void;
 }
 
+/** Whether `name` frames a pixel's rays: the chosen pixel's ("pixel-rays") or a named one's ("rays:3,1"). */
+function namesRays(name: string): boolean {
+  return name === 'pixel-rays' || framedRaysPixel(name) !== null;
+}
+
 /**
  * How long a framing of a pixel's rays waits for that pixel's trace and follows newer
  * traces: a level's first screen is traced a fraction of a second after it opens, and a
@@ -33,8 +43,8 @@ export const PIXEL_RAYS_WAIT_MS = 3000;
  * The 3D view following a level's or task's declared look (docs/levels.md, "Views"): it
  * glides to fit what the look names, from the side it names or the side it looks from now,
  * into the part of the view that no panel covers.
- * A look that frames a pixel's rays frames them again as their trace comes in, until the
- * learner moves the view or PIXEL_RAYS_WAIT_MS have passed.
+ * A look that frames a pixel's rays (the chosen one's, or a named one's) frames them again
+ * as their trace comes in, until the learner moves the view or PIXEL_RAYS_WAIT_MS have passed.
  */
 export class LookFollower {
   private waiting: { look: ViewLook; until: number } | null = null;
@@ -55,7 +65,7 @@ export class LookFollower {
     if (!look) return;
     if (look.throughCamera) return this.stage.throughCamera();
     if (!look.frame) return;
-    if (look.frame.includes('pixel-rays')) this.waiting = { look, until: this.now() + PIXEL_RAYS_WAIT_MS };
+    if (look.frame.some(namesRays)) this.waiting = { look, until: this.now() + PIXEL_RAYS_WAIT_MS };
     this.frame(look, glide);
   }
 

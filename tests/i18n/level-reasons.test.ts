@@ -85,6 +85,8 @@ const LEVEL_MISTAKES: Record<string, (level: Level) => void> = {
   'a view choosing a pixel off the screen': (level) => (level.tasks[2]!.view!.pixel = [9, 9]),
   'a view framing rays without a pixel': (level) => (level.tasks[2]!.view!.frame = ['pixel-rays']),
   'a view from nowhere': (level) => (level.tasks[2]!.view!.from = [0, 0, 0]),
+  'evidence naming a ray by no path': (level) => Object.assign(level.tasks[2]!, { evidence: { rays: { pixel: [3, 2], paths: ['shadow'] } } }),
+  'evidence of a missing object and pixel': (level) => Object.assign(level.tasks[2]!, { evidence: { objects: ['teapot'], rays: { pixel: [9, 9], paths: ['primary'] } } }),
   'a view framing and through the camera': (level) => (level.tasks[2]!.view!.throughCamera = true),
   'a view from a side without a frame': (level) => delete level.tasks[2]!.view!.frame,
   'ray options that are a number': (level) => (level.tasks[2]!.view!.rays = 3),

@@ -28,7 +28,10 @@ describe('a declared view in a level file', () => {
 
   it('names only what the scene has, and pixels inside its screen', () => {
     expect(errorsOf((level) => (level.view = { frame: ['ball', 'teapot'] }))).toEqual([
-      'view.frame[1]: must be one of camera, pixel-rays, ball, lamp, got "teapot"',
+      'view.frame[1]: must be one of camera, pixel-rays, ball, lamp, rays:<column>,<row>, got "teapot"',
+    ]);
+    expect(errorsOf((level) => (level.view = { frame: ['ball', 'rays:3,2', 'rays:4,0'] }))).toEqual([
+      'view.frame[2]: "4,0" must be "column,row" inside the 4×3 screen, counting from 0',
     ]);
     expect(errorsOf((level) => (level.tasks[0].view = { pixel: [4, 0] }))).toEqual([
       'tasks[0].view.pixel: "4,0" must be "column,row" inside the 4×3 screen, counting from 0',

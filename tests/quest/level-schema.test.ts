@@ -229,6 +229,19 @@ describe('rules across fields (once every field is valid)', () => {
     expect(result.ok ? [] : result.errors).toEqual([]);
   });
 
+  it('wants a task\'s evidence to name rays by their way from the camera, and things and a pixel the scene has', () => {
+    const valid = parseLevel(levelFile((level) => (level.tasks[0].evidence = { objects: ['ball', 'lamp'], rays: { pixel: [3, 2], paths: ['primary', 'primary/shadow', 'primary/reflect/light'] } })));
+    expect(valid.ok ? valid.level.tasks[0]!.evidence : valid.errors).toEqual({ objects: ['ball', 'lamp'], rays: { pixel: [3, 2], paths: ['primary', 'primary/shadow', 'primary/reflect/light'] } });
+    expect(errorsOf((level) => (level.tasks[0].evidence = { objects: ['box'], rays: { pixel: [4, 0], paths: ['shadow', 'primary/bounce'] } }))).toEqual([
+      'tasks[0].evidence.rays.paths[0]: must be kinds of ray joined by "/", from the camera\'s: "primary", then reflect, refract, shadow, light, area-light, area-shadow',
+      'tasks[0].evidence.rays.paths[1]: must be kinds of ray joined by "/", from the camera\'s: "primary", then reflect, refract, shadow, light, area-light, area-shadow',
+    ]);
+    expect(errorsOf((level) => (level.tasks[0].evidence = { objects: ['box'], rays: { pixel: [4, 0], paths: ['primary'] } }))).toEqual([
+      'tasks[0].evidence.objects[0]: no object or light "box" in this level\'s scene (it has ball, lamp)',
+      'tasks[0].evidence.rays.pixel: "4,0" must be "column,row" inside the 4×3 screen, counting from 0',
+    ]);
+  });
+
   it('wants level badges to name tasks of the level', () => {
     expect(errorsOf((level) => (level.badges = [{ id: 'painter', title: 'Painter', text: 'You painted.', tasks: ['red-ball', 'paint'] }]))).toEqual([
       'badges[0].tasks[1]: no task "paint" in this level',

@@ -2,7 +2,7 @@ import { Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import type { Vec3 } from '../../src/scene/scene.ts';
 import type { PixelTrace, RayNode } from '../../src/tracer/ray-tree.ts';
-import { MISS_REACH, rayPathPoints } from '../../src/view/ray-path-points.ts';
+import { MISS_REACH, rayPathPoints, rayPathPointsFromHit } from '../../src/view/ray-path-points.ts';
 import { framingPose } from '../../src/view/view-pose.ts';
 
 function node(type: RayNode['type'], origin: Vec3, direction: Vec3, length: number, hit: boolean, children: RayNode[] = []): RayNode {
@@ -25,6 +25,16 @@ describe("framing a pixel's rays", () => {
       [0, 1 + MISS_REACH, 0],
       [0, 1, 0],
       [3, 1, 0],
+    ]);
+  });
+
+  it('frames what the rays do after their first hit: not the camera, and only the first metre toward a lamp', () => {
+    expect(rayPathPointsFromHit(trace)).toEqual([
+      [0, 1, 0],
+      [0, 1, 0],
+      [0, 1 + MISS_REACH, 0],
+      [0, 1, 0],
+      [MISS_REACH, 1, 0],
     ]);
   });
 

@@ -1,9 +1,9 @@
-import { RAY_ARROWS_NAME, RAY_HIDDEN_NAME } from '../../src/view/ray-extras.ts';
+import { RAY_ARROWS_NAME, RAY_HIDDEN_NAME, RAY_STOPS_NAME } from '../../src/view/ray-extras.ts';
 import { describe, expect, it } from 'vitest';
 import { InstancedMesh, Matrix4, Raycaster, ShaderLib, Vector3, type InstancedBufferAttribute, type MeshBasicMaterial } from 'three';
 import { DEFAULT_RAY_VIEW, type RayViewOptions } from '../../src/lab-state/lab-state.ts';
 import { CONE_OPACITY, LOOP_PAUSE_S, RAY_CONES_NAME, RAY_CYLINDERS_NAME, RayPool } from '../../src/view/ray-pool.ts';
-import { ALPHA_ATTRIBUTE, ARROW_AT, ARROW_AT_ATTRIBUTE, DASH_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, patchRayShader } from '../../src/view/ray-shader.ts';
+import { ALPHA_ATTRIBUTE, ARROW_AT, ARROW_AT_ATTRIBUTE, DASH_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, patchRayShader, STOP_ATTRIBUTE } from '../../src/view/ray-shader.ts';
 import { hexToColor, RAY_DASHES, rayPalette } from '../../src/view/ray-palette.ts';
 import { areaRay, ray, screen, syntheticScreen } from '../support/ray-fixtures.ts';
 
@@ -139,9 +139,10 @@ describe('RayPool instances', () => {
     pool.update(rays, options(), [0, 0]);
     const chosen = pool.stats.rays;
     expect(chosen).toBeGreaterThan(0);
-    expect(pool.stats).toMatchObject({ arrows: chosen, drawCalls: 3 });
+    // Rays, arrowheads, hidden parts, and the plate of its blocked shadow ray.
+    expect(pool.stats).toMatchObject({ arrows: chosen, drawCalls: 4 });
     const cylinders = () => pool.object.getObjectByName(RAY_CYLINDERS_NAME) as InstancedMesh;
-    for (const name of [RAY_ARROWS_NAME, RAY_HIDDEN_NAME]) {
+    for (const name of [RAY_ARROWS_NAME, RAY_HIDDEN_NAME, RAY_STOPS_NAME]) {
       const extra = pool.object.getObjectByName(name) as InstancedMesh;
       expect(extra.instanceMatrix, name).toBe(cylinders().instanceMatrix);
       expect(extra.count, name).toBe(chosen);
@@ -166,6 +167,28 @@ describe('RayPool instances', () => {
     // The direction to a light not tested is drawn in its sparse dots.
     const dash = attribute(cylinders, DASH_ATTRIBUTE);
     expect([dash.getX(2), dash.getY(2)]).toEqual(RAY_DASHES.untested.map(Math.fround));
+    // No ray here is stopped: no stop plates, no draw call for them.
+    expect((pool.object.getObjectByName(RAY_STOPS_NAME) as InstancedMesh).visible).toBe(false);
+  });
+
+  it('marks a blocked shadow ray: light paint in its gaps, and a stop plate at its end for a chosen pixel only', () => {
+    const rays = screen(1, 1, () => [ray('primary', { origin: [0, 1, 5], direction: [0, 0, -1], length: 4, children: [ray('shadow', { origin: [0, 1, 1], direction: [0, 1, 0], length: 0.3 })] })]);
+    const pool = new RayPool();
+    pool.update(rays, options(), [0, 0]);
+    const { cylinders, attribute } = parts(pool);
+    const dash = attribute(cylinders, DASH_ATTRIBUTE);
+    // A negative gap is painted, not left open (ray-shader.ts); the primary ray stays solid.
+    expect([dash.getX(1), dash.getY(1)]).toEqual([RAY_DASHES.shadow[0], -RAY_DASHES.shadow[1]].map(Math.fround));
+    expect([dash.getX(0), dash.getY(0)]).toEqual([0, 0]);
+    const stop = attribute(cylinders, STOP_ATTRIBUTE);
+    expect([stop.getX(0), stop.getX(1)]).toEqual([0, 1]);
+    const stops = pool.object.getObjectByName(RAY_STOPS_NAME) as InstancedMesh;
+    expect(stops.geometry.getAttribute(STOP_ATTRIBUTE)).toBe(stop);
+    expect([stops.visible, stops.count, stops.instanceMatrix === cylinders.instanceMatrix]).toEqual([true, 2, true]);
+    expect(pool.stats).toMatchObject({ drawCalls: 4 });
+    // Every pixel's rays at once: no plates (nor arrowheads).
+    pool.update(rays, options(), null);
+    expect(stops.visible).toBe(false);
   });
 
   it('keeps one draw call for a whole screen of 1k, 10k and 50k rays', () => {
@@ -176,7 +199,7 @@ describe('RayPool instances', () => {
       return { rays: pool.stats.rays, meshes: meshes(pool).length, drawCalls: meshes(pool).filter((m) => m.visible && m.count > 0).length };
     });
     expect(calls.map((c) => c.rays)).toEqual([1_000, 10_000, 50_000]);
-    expect(calls.every((c) => c.meshes === 4 && c.drawCalls === 1)).toBe(true);
+    expect(calls.every((c) => c.meshes === 5 && c.drawCalls === 1)).toBe(true);
   });
 
   it('pools its buffers: grows by doubling, never shrinks, and frees the outgrown mesh', () => {
@@ -194,8 +217,8 @@ describe('RayPool instances', () => {
     expect(parts(pool).cylinders).toBe(big);
     expect(big.instanceMatrix.count).toBe(4096);
     expect(big.count).toBe(500);
-    // Per cylinder: matrix 16, colour 3, alpha 1, growth 2, dash 2, arrowhead place 1; a cone has no dash or arrowhead.
-    expect(pool.stats.instanceBytes).toBe((4096 * 25 + 256 * 22) * 4);
+    // Per cylinder: matrix 16, colour 3, alpha 1, growth 2, dash 2, arrowhead place 1, stop 1; a cone has none of the last three.
+    expect(pool.stats.instanceBytes).toBe((4096 * 26 + 256 * 22) * 4);
   });
 
   it('rebuilds 10k rays quickly (the goal is checked by the benchmark; logged here)', () => {
@@ -278,14 +301,17 @@ describe('RayPool growth animation', () => {
     expect(shader.vertexShader).toContain('vec4(0.0, 0.0, position.z * rayGrown, 1.0)');
     // A ray is placed in view space by its own code; three's projection stays for cones and arrowheads.
     expect(shader.vertexShader).toContain('gl_Position = projectionMatrix * mvPosition');
-    expect(shader.vertexShader).toMatch(/#if defined\(RAY_CONE\) \|\| defined\(RAY_ARROW\)\n#include <project_vertex>/);
+    expect(shader.vertexShader).toMatch(/#if defined\(RAY_CONE\) \|\| defined\(RAY_ARROW\) \|\| defined\(RAY_STOP\)\n#include <project_vertex>/);
     expect(shader.fragmentShader).toContain('diffuseColor.a *= vRayAlpha');
     expect(shader.vertexShader).toContain('position.x * max(rayRadius, 0.5 * 3.0 * rayPixel)');
     expect(shader.vertexShader).toContain(`attribute vec2 ${DASH_ATTRIBUTE}`);
     // An arrowhead's tip sits where its instance says (a ray's past the middle, a normal's at the end).
     expect(shader.vertexShader).toMatch(/#if defined\(RAY_ARROW\)\nattribute float aArrowAt;/);
     expect(shader.vertexShader).toContain(`vec4(0.0, 0.0, ${ARROW_AT_ATTRIBUTE} * rayGrown, 1.0)`);
-    expect(shader.fragmentShader).toMatch(/mod\(vRayAlong, vRayDash\.x \+ vRayDash\.y\) > vRayDash\.x\) discard/);
+    expect(shader.fragmentShader).toMatch(/mod\(vRayAlong, vRayDash\.x \+ abs\(vRayDash\.y\)\) > vRayDash\.x\) \{\n  if \(vRayDash\.y >= 0\.0\) discard;/);
+    // A stop plate sits at its ray's end, shown only where the instance says and once the ray has grown there.
+    expect(shader.vertexShader).toMatch(/#if defined\(RAY_STOP\)\nattribute float aStop;/);
+    expect(shader.vertexShader).toContain(`float stopShown = ${STOP_ATTRIBUTE} * step(1.0, rayGrown);`);
     expect(shader.uniforms).toEqual({ uTravel: uniform, uViewHeight: viewHeight });
     expect(() => patchRayShader({ vertexShader: 'void main() {}', fragmentShader: '', uniforms: {} }, uniform, viewHeight)).toThrow(/begin_vertex|common|project_vertex/);
   });
@@ -359,7 +385,7 @@ describe('RayPool.pick', () => {
     const disposed = new Set<unknown>();
     for (const resource of resources) resource.addEventListener('dispose', () => disposed.add(resource));
     pool.dispose();
-    expect(resources.size).toBe(7);
+    expect(resources.size).toBe(9);
     expect(disposed).toEqual(resources);
     expect(pool.object.children).toEqual([]);
   });

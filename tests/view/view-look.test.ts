@@ -12,7 +12,8 @@ function stage(rays: Vec3[] | null = null) {
   let pixelRays = rays;
   const here: ViewPose = { position: new Vector3(0, 0, 10), target: new Vector3(), fov: 45 };
   const fake: LookStage = {
-    pointsOf: (name) => ({ ball: [[2, 0, 0]] as Vec3[], lamp: [[0, 4, 0]] as Vec3[] })[name] ?? [],
+    // Pixel 3,1's rays from their first hit: the traced rays but their first point (the camera).
+    pointsOf: (name) => ({ ball: [[2, 0, 0]] as Vec3[], lamp: [[0, 4, 0]] as Vec3[], 'rays:3,1': pixelRays?.slice(1) ?? [] })[name] ?? [],
     pixelRayPoints: () => pixelRays,
     pose: () => here,
     fov: 45,
@@ -74,6 +75,20 @@ describe('following a declared look', () => {
     follower.raysArrived();
     expect(moves).toHaveLength(2);
     expect(follower.waitingForRays).toBe(false);
+  });
+
+  it('frames a named pixel\'s rays after their first hit, chosen or not, waiting for their trace too', () => {
+    const { fake, moves, setRays } = stage();
+    const follower = new LookFollower(fake, () => 0);
+    follower.follow({ frame: ['rays:3,1'] }, true);
+    expect(follower.waitingForRays).toBe(true);
+    // The camera's end ([0, 0, 10]) is left out: only the bounces are framed.
+    setRays([[0, 0, 10], [0, 0, -6], [0, 0, -8]]);
+    follower.raysArrived();
+    expect(moves.map((move) => move.pose.target.z)).toEqual([-7]);
+    follower.follow({ frame: ['rays:0,0'] }, true);
+    follower.raysArrived();
+    expect(moves).toHaveLength(1);
   });
 
   it('stops waiting for a pixel\'s rays after a while', () => {

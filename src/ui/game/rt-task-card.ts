@@ -9,6 +9,7 @@ import { figureUrl } from './figure-urls.ts';
 import { explainMore, fire, gameStyles } from './game-styles.ts';
 import { levelText } from './level-text.ts';
 import { predictionText } from './prediction-text.ts';
+import { foldedPrediction } from './prediction-summary.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 import './rt-hint-box.ts';
 import './rt-quiz.ts';
@@ -17,6 +18,8 @@ import './rt-quiz.ts';
  * @summary One task in the task list: a status mark (in words for screen readers, as a
  * symbol for the eye), its title and points; expanded, its figure, its instruction, "Explain
  * more", the quiz or the Next button, and the hint ladder. Optional tasks can be skipped.
+ * An optional task opens on a click; a prediction the learner has seen explained folds to a
+ * line with what they expected and the answer (prediction-summary.ts), and opens on a click.
  *
  * Reflects `status` (current, open, waiting, done, shown, skipped) and `data-task` (the
  * task's id) as attributes.
@@ -85,6 +88,15 @@ export class RtTaskCard extends LitElement {
       .body {
         padding: 0 10px 10px;
       }
+      /* A folded prediction's one line under its title (in full in its tooltip and when opened). */
+      .summary {
+        margin: -4px 10px 6px calc(10px + 1.4em + 8px);
+        overflow: hidden;
+        color: var(--rt-muted);
+        font-size: 0.875em;
+        white-space: nowrap;
+        text-overflow: ellipsis;
+      }
       .actions {
         display: flex;
         flex-wrap: wrap;
@@ -124,6 +136,15 @@ export class RtTaskCard extends LitElement {
     this.opened = false;
   }
 
+  /** The prediction stage last shown: a prediction that moves on (explained now) starts folded. */
+  private stage: string | undefined;
+
+  override willUpdate(): void {
+    const stage = this.task?.prediction?.stage;
+    if (stage !== this.stage) this.opened = false;
+    this.stage = stage;
+  }
+
   override updated(): void {
     // The status and the task's id are attributes so the styles (and browser tests) can see which task is current.
     if (!this.task) return;
@@ -145,12 +166,15 @@ export class RtTaskCard extends LitElement {
         </span>
       </span>
     `;
-    // Optional tasks open on request, so the current task keeps the learner's eye.
-    const openable = view.status === 'open' && !this.expanded;
+    // Optional tasks and explained predictions open on request, so the current task keeps the learner's eye.
+    const folded = this.expanded ? null : foldedPrediction(view, this.locale);
+    const openable = (view.status === 'open' && !this.expanded) || folded !== null;
+    const title = folded === null ? msg('Show or hide this optional task') : msg('Show or hide the answer and why');
     return html`
       ${openable
-        ? html`<button class="head" aria-expanded=${String(this.opened)} title=${msg('Show or hide this optional task')} @click=${() => (this.opened = !this.opened)}>${head}</button>`
+        ? html`<button class="head ${finished ? 'done' : ''}" aria-expanded=${String(this.opened)} title=${title} @click=${() => (this.opened = !this.opened)}>${head}</button>`
         : html`<div class="head ${finished ? 'done' : ''}">${head}</div>`}
+      ${folded !== null && !this.opened ? html`<p class="summary" title=${folded}>${folded}</p>` : nothing}
       ${this.expanded || (openable && this.opened) ? html`<div class="body">${this.body(view, finished)}</div>` : nothing}
     `;
   }

@@ -81,7 +81,11 @@ export class RtScreenPreview extends StorePanel {
         outline: 3px solid var(--rt-text);
         outline-offset: 1px;
       }
+      /* The caption wraps inside the grid's width and never widens the card: a wider card
+         would enlarge every cell, and choosing a pixel (a longer caption with its button)
+         would grow the preview over the very rays it shows (issue 37). */
       .caption {
+        contain: inline-size;
         display: flex;
         flex-wrap: wrap;
         align-items: center;

@@ -2,7 +2,7 @@ import { msg } from '@lit/localize';
 import { css, html } from 'lit';
 import { visuallyHiddenStyles } from '../../controls/visually-hidden.css.ts';
 import { styleMap } from 'lit/directives/style-map.js';
-import { legendKeys, paletteNameFor, RAY_DASHES, type RayColorKey, rayPalette } from '../../../view/ray-palette.ts';
+import { FILLED_GAP_KEYS, GAP_FILL, legendKeys, paletteNameFor, RAY_DASHES, type RayColorKey, rayPalette, STOPPED_KEYS } from '../../../view/ray-palette.ts';
 import { rayColorKeyHint, rayColorKeyName } from '../ray-names.ts';
 import { StorePanel } from './store-panel.ts';
 import { timeKey, timeKeyStyles } from './time-key.ts';
@@ -49,6 +49,20 @@ export class RtRayLegend extends StorePanel {
         /* A thin outline keeps pale swatches (yellow, cyan) visible on a light background. */
         box-shadow: 0 0 0 1px color-mix(in srgb, var(--rt-text) 35%, transparent);
       }
+      /* A stopped ray ends in a bar across it, as its plate looks in the view from the side. */
+      .swatch.stopped {
+        position: relative;
+      }
+      .swatch.stopped::after {
+        content: '';
+        position: absolute;
+        right: -2px;
+        top: -4px;
+        width: 3px;
+        height: 16px;
+        border-radius: 1px;
+        background: currentColor;
+      }
       .detail {
         display: block;
         font-size: 0.85em;
@@ -62,7 +76,7 @@ export class RtRayLegend extends StorePanel {
     return html`<ul aria-label=${msg('Ray colours')}>
       ${legendKeys(this.state?.scene.settings.shadows !== false).map(
         (key) => html`<li title=${rayColorKeyHint(key)} data-key=${key}>
-          <span class="swatch" style=${styleMap({ background: swatch(palette[key], key) })} aria-hidden="true"></span>
+          <span class=${STOPPED_KEYS.has(key) ? 'swatch stopped' : 'swatch'} style=${styleMap({ background: swatch(palette[key], key), color: palette[key] })} aria-hidden="true"></span>
           ${entryName(rayColorKeyName(key))}
         </li>`,
       )}
@@ -81,10 +95,15 @@ function entryName(name: string) {
   return html`<span>${name.slice(0, at)}<span class="detail"><span class="visually-hidden"> — </span>${name.slice(at + 3)}</span></span>`;
 }
 
-/** The swatch's paint: the ray's colour in its dashes (RAY_DASHES at 150 px per metre), or solid. */
+/**
+ * The swatch's paint: the ray's colour in its dashes (RAY_DASHES at 150 px per metre), their
+ * gaps open or filled as the view draws them, or solid.
+ */
 function swatch(color: string, key: RayColorKey): string {
   const [dash, gap] = RAY_DASHES[key].map((metres) => metres * 150);
-  return dash > 0 ? `repeating-linear-gradient(90deg, ${color} 0 ${dash}px, transparent ${dash}px ${dash + gap}px)` : color;
+  const between = FILLED_GAP_KEYS.has(key) ? GAP_FILL : 'transparent';
+  const line = dash > 0 ? `repeating-linear-gradient(90deg, ${color} 0 ${dash}px, ${between} ${dash}px ${dash + gap}px)` : color;
+  return line;
 }
 
 customElements.define('rt-ray-legend', RtRayLegend);
