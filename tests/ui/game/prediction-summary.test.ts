@@ -32,7 +32,7 @@ describe('an explained prediction folds to one line', () => {
 
   it('gives the answer beside a wrong prediction, a number with its tolerance and unit', () => {
     expect(foldedPrediction(view(quizTask, 'done', { prediction: { choice: 0 } }, false), 'en')).toBe('You expected “It stays grey”; the answer is “It is not traced”.');
-    expect(foldedPrediction(view(estimateTask, 'done', { order: [], prediction: { value: 30 } }, false), 'en')).toBe('You expected “30 °”; the answer is “41.8 ± 1 °”.');
+    expect(foldedPrediction(view(estimateTask, 'done', { order: [], prediction: { value: 30 } }, false), 'en')).toBe('You expected “30°”; the answer is “41.8 ± 1°”.');
   });
 
   it('gives the answer after "Show me"', () => {
