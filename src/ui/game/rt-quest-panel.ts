@@ -111,9 +111,11 @@ export class RtQuestPanel extends LitElement {
       document.getSelection()?.removeAllRanges();
       scrollBoxToTop(this);
     } else if (scroll.kind === 'task') {
-      // Done tasks above the current one pushed it below the column's edge.
+      // Done tasks above the current one pushed it below the column's edge. Measured once the
+      // cards have drawn their new state (the task opened, the one before folded), before the
+      // frame is painted: measured at once, the opened card's top ended above the column's edge.
       const item = this.renderRoot.querySelector(`li[data-task="${scroll.task}"]`);
-      if (item) scrollInBox(item);
+      if (item) requestAnimationFrame(() => scrollInBox(item));
     }
   }
 
