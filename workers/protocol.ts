@@ -61,6 +61,14 @@ export interface TracePixelsRequest {
   first: number;
   count: number;
   seed: number;
+  /** Send at most about this many rays, by the rule of tracer/tree-budget.ts (the lab while the learner edits); the colours are the full trace's. */
+  budget?: RayBudget;
+}
+
+/** A budget for a block's ray trees: about `rays` rays, all of them for screen pixel `keepPixel` (y · columns + x, or null). */
+export interface RayBudget {
+  rays: number;
+  keepPixel: number | null;
 }
 
 /** Drop the job's tiles that are still queued; the tile being rendered still finishes. */

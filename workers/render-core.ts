@@ -7,6 +7,7 @@ import type { MeshData } from '../src/scene/mesh-data.ts';
 import { emptyRayStats } from '../src/tracer/ray-tree.ts';
 import { renderTile } from '../src/tracer/render-tile.ts';
 import { tracePixel, tracePixels } from '../src/tracer/trace-pixel.ts';
+import { thinTraces } from '../src/tracer/tree-budget.ts';
 import { buildTracerScene, type TracerScene } from '../src/tracer/tracer-scene.ts';
 import { nextTask } from './next-task.ts';
 import type {
@@ -70,14 +71,17 @@ export function createRenderHandler(post: PostResponse): (request: RenderRequest
     }
   }
 
-  function traceManyNow({ requestId, first, count, seed }: TracePixelsRequest): void {
+  function traceManyNow({ requestId, first, count, seed, budget }: TracePixelsRequest): void {
     try {
       const tracer = tracerOf(scene);
       const [columns, rows] = tracer.source.camera.pixels;
       if (!Number.isInteger(first) || !Number.isInteger(count) || first < 0 || count < 1 || first + count > columns * rows) {
         throw new RangeError(`pixels ${first} to ${first + count - 1} are not on the ${columns}×${rows} screen`);
       }
-      post({ type: 'pixels-traced', requestId, traces: tracePixels(tracer, first, count, seed) }, []);
+      const traces = tracePixels(tracer, first, count, seed);
+      // A block's trees are copied into the page's memory as objects, a cost per ray on its main thread.
+      const sent = budget ? thinTraces(traces, budget.rays, budget.keepPixel === null ? null : budget.keepPixel - first) : traces;
+      post({ type: 'pixels-traced', requestId, traces: sent }, []);
     } catch (error) {
       fail({ type: 'trace-pixels', requestId }, error);
     }

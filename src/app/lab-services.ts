@@ -12,10 +12,11 @@ import { defaultScene } from '../scene/scene-defaults.ts';
 import type { BvhBoxes } from '../view/bvh-boxes.ts';
 import type { LabView } from '../view/lab-view.ts';
 import type { RayPool, RayPoolStats } from '../view/ray-pool.ts';
+import type { RayBudgetWhileEditing } from '../view/ray-budget-while-editing.ts';
 import type { MeshLoader } from '../view/scene-sync.ts';
 
 /** What the services draw into: the lab's three.js view. */
-export type LabViewPort = Pick<LabView, 'setScreenRays' | 'setRayLayer' | 'setBvhLayer' | 'requestRender'>;
+export type LabViewPort = Pick<LabView, 'setScreenRays' | 'setRayLayer' | 'setBvhLayer' | 'requestRender' | 'software' | 'holdCoarse'>;
 
 export interface LabServicesOptions {
   /** A render worker pool with `workers` workers (default: one per core). */
@@ -36,6 +37,9 @@ export interface LabServicesOptions {
  *   has loaded; else in the worker, at once or after the running trace, latest wins) and its
  *   boxes redrawn.
  * - New rays, ray options or a picked pixel redraw the rays; the view draws on demand.
+ * - On a CPU rasterizer, while the learner edits the scene or the ray options, a screen
+ *   traced in the worker sends, and the view draws, a budget of its rays; all of them once
+ *   the edits stop (view/ray-budget.ts).
  * - Listeners hear when the screen's rays change (the flat preview shows them).
  *
  * The ray pool and the boxes are three.js objects: they are made when the 3D view attaches,
@@ -50,6 +54,10 @@ export class LabServices {
   private layers: { rays: RayPool; boxes: BvhBoxes } | null = null;
   /** The ray debugger's focus, kept for a ray pool made after it was set. */
   private focus: RayFocus | null = null;
+  /** When the rays are held to a budget: on a CPU rasterizer, once its view is attached. */
+  private budget: RayBudgetWhileEditing | null = null;
+  /** The scene and ray options last seen, to tell an edit. */
+  private seen: Pick<LabState, 'scene' | 'rays' | 'selectedPixel'>;
   private readonly loadMeshes: MeshLoader;
   private disposed = false;
   private readonly tracePool: RenderPool;
@@ -72,6 +80,7 @@ export class LabServices {
     this.renderPool = options.createPool();
     this.tracePool = options.createPool(1);
     this.drawnWith = { rays: this.store.state.rays, selectedPixel: this.store.state.selectedPixel };
+    this.seen = this.store.state;
     this.loadMeshes = options.loadMeshes;
     this.tracer = new ScreenTracer(this.tracePool, options.loadMeshes);
     this.tracer.onError = (error) => options.report(options.traceFailed(error), 'error');
@@ -81,8 +90,9 @@ export class LabServices {
         this.redrawRays();
         for (const listener of [...this.listeners]) listener(rays);
       }),
-      this.store.subscribe((state, _action, error) => {
+      this.store.subscribe((state, _action, error, live) => {
         if (error) options.report(error, 'error');
+        this.followBudget(state, live === true);
         this.tracer.update(state.scene);
         this.layers?.boxes.update(state);
         // Rebuilding the pool costs ~1 ms per 10k rays: only when what it shows changed.
@@ -108,10 +118,11 @@ export class LabServices {
    * inline: its code comes with them), and draws what is there already.
    */
   async attachView(view: LabViewPort): Promise<void> {
-    const [{ RayPool }, { BvhBoxes }, { InlineScreenTracer }] = await Promise.all([
+    const [{ RayPool }, { BvhBoxes }, { InlineScreenTracer }, { RayBudgetWhileEditing }] = await Promise.all([
       import('../view/ray-pool.ts'),
       import('../view/bvh-boxes.ts'),
       import('../render/inline-screen-tracer.ts'),
+      import('../view/ray-budget-while-editing.ts'),
     ]);
     if (this.disposed) return;
     if (!this.layers) {
@@ -119,6 +130,7 @@ export class LabServices {
       this.layers.rays.setFocus(this.focus);
       this.tracer.traceInline(new InlineScreenTracer());
     }
+    if (view.software && !this.budget) this.budget = new RayBudgetWhileEditing(() => this.applyBudget());
     this.view = view;
     view.setRayLayer(this.layers.rays);
     view.setBvhLayer(this.layers.boxes.object);
@@ -176,9 +188,42 @@ export class LabServices {
     this.tracePool.dispose();
     this.renderPool.dispose();
     this.picturePool?.dispose();
+    this.budget?.dispose();
     this.layers?.rays.dispose();
     this.layers?.boxes.dispose();
     this.layers = null;
+  }
+
+  /**
+   * An edit of the scene or the ray options holds the rays to the budget until the edits
+   * stop (`live`: a value still being dragged); before the edit's screen is traced, so that
+   * it is traced within the budget. A pixel chosen meanwhile keeps all its rays.
+   */
+  private followBudget(state: LabState, live: boolean): void {
+    const seen = this.seen;
+    this.seen = state;
+    if (state.scene !== seen.scene || state.rays !== seen.rays) this.budget?.edited(live);
+    else if (!live) this.budget?.letGo();
+    if (state.selectedPixel !== seen.selectedPixel && this.budget?.budget != null) this.applyBudget();
+  }
+
+  /** The screen tracer and the ray pool follow the budget in force; the view draws again. */
+  private applyBudget(): void {
+    const rays = this.budget?.budget ?? null;
+    const pixel = this.store.state.selectedPixel;
+    const columns = this.store.state.scene.camera.pixels[0];
+    this.tracer.setBudget(rays === null ? null : { rays, keepPixel: pixel ? pixel[1] * columns + pixel[0] : null });
+    this.layers?.rays.setBudget(rays);
+    this.afterRaysChanged();
+  }
+
+  /**
+   * The view draws again, coarse while some rays are left out; the sharp frame after has them
+   * all (asked for first: going sharp draws at once, in place of the frame asked for).
+   */
+  private afterRaysChanged(): void {
+    this.view?.requestRender();
+    this.view?.holdCoarse(this.layers?.rays.thinning != null);
   }
 
   /** The ray pool follows the rays, the ray options and the picked pixel (it skips work when none changed). */
@@ -186,6 +231,6 @@ export class LabServices {
     const { rays, selectedPixel } = this.store.state;
     this.drawnWith = { rays, selectedPixel };
     this.layers?.rays.update(this.screenRays, rays, selectedPixel);
-    this.view?.requestRender();
+    this.afterRaysChanged();
   }
 }

@@ -16,7 +16,7 @@
  * workers fail several times in a row, with no good answer in between, does the job fail.
  * Messages that are not well-formed responses are dropped and logged.
  */
-import type { FailedRequest, PixelsTracedResponse, PixelTracedResponse, RenderRequest, RenderResponse } from '../../workers/protocol.ts';
+import type { FailedRequest, PixelsTracedResponse, PixelTracedResponse, RayBudget, RenderRequest, RenderResponse } from '../../workers/protocol.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import type { Scene } from '../scene/scene.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
@@ -214,10 +214,11 @@ export class RenderPool {
 
   /**
    * The ray trees of `count` pixels of the camera's small screen from pixel index `first`
-   * (row-major over camera.pixels), in one message each way (the lab's screen).
+   * (row-major over camera.pixels), in one message each way (the lab's screen); with a
+   * `budget`, about that many of their rays (tree-budget.ts).
    */
-  tracePixels(first: number, count: number, seed = DEFAULT_SEED): Promise<PixelTrace[]> {
-    return this.askForTraces({ type: 'trace-pixels', requestId: 0, first, count, seed }, (answer) =>
+  tracePixels(first: number, count: number, seed = DEFAULT_SEED, budget?: RayBudget): Promise<PixelTrace[]> {
+    return this.askForTraces({ type: 'trace-pixels', requestId: 0, first, count, seed, ...(budget ? { budget } : {}) }, (answer) =>
       answer.type === 'pixels-traced' && answer.traces.length === count ? answer.traces : null,
     );
   }

@@ -67,6 +67,8 @@ export interface PixelTrace {
   color: Color;
   /** One root per supersample (s² roots). */
   rays: RayNode[];
+  /** Rays traced for the pixel, when a budget sent fewer of them in `rays` (tree-budget.ts). */
+  traced?: number;
 }
 
 /** Ray counts by kind, for `rt render --stats` and the benchmark. */

@@ -5,7 +5,7 @@ export interface BurstTimer {
   clear(handle: unknown): void;
 }
 
-const browserTimer: BurstTimer = {
+export const browserTimer: BurstTimer = {
   now: () => performance.now(),
   set: (callback, ms) => setTimeout(callback, ms),
   clear: (handle) => clearTimeout(handle as ReturnType<typeof setTimeout>),
@@ -26,11 +26,18 @@ export const BURST_SCALE = 0.5;
  * drawing, and BURST_GAP_MS after the last edit the view is drawn at full resolution again.
  * This is the adaptive degradation interactive viewers use (draw coarse while the user moves
  * things, sharp once they stop).
+ *
+ * While the rays are held to a budget (`hold`, view/ray-budget.ts) the view draws coarse from
+ * the first edit and stays so between edits: there a sharp frame of 1,000 rays cost 120–250
+ * ms on SwiftShader, and each switch between sharp and coarse waits for the frame before it, so steps a
+ * few tenths of a second apart waited 0.2–1.2 s each. Let go, it is drawn sharp at once,
+ * with every ray (one frame).
  */
 export class BurstResolution {
   private lastEdit = -Infinity;
   private reduced = false;
   private restore: unknown = null;
+  private held = false;
 
   /** `apply(scale)` redraws the view at `scale` × its pixel ratio (1: full resolution). */
   constructor(
@@ -52,9 +59,28 @@ export class BurstResolution {
       this.reduced = true;
       this.apply(BURST_SCALE);
     }
-    if (!this.reduced) return;
+    if (!this.reduced || this.held) return;
     if (this.restore !== null) this.timer.clear(this.restore);
     this.restore = this.timer.set(() => this.settle(), BURST_GAP_MS);
+  }
+
+  /** Whether the view is held coarse (`hold`). */
+  get holding(): boolean {
+    return this.held;
+  }
+
+  /** Draws coarse until let go (`held` false: then sharp at once). */
+  hold(held: boolean): void {
+    if (held === this.held) return;
+    this.held = held;
+    if (this.restore !== null) this.timer.clear(this.restore);
+    this.restore = null;
+    if (held && !this.reduced) {
+      this.reduced = true;
+      this.apply(BURST_SCALE);
+    } else if (!held && this.reduced) {
+      this.settle();
+    }
   }
 
   dispose(): void {

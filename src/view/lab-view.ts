@@ -47,6 +47,7 @@ import { rayColorKey, type RayColorKey } from './ray-palette.ts';
 import { cameraViewFov, framingPose, framingPoseAbove, type ViewPose } from './view-pose.ts';
 import { drawsInSoftware } from './software-renderer.ts';
 import { BurstResolution } from './burst-resolution.ts';
+import type { Thinning } from './ray-budget.ts';
 import { framedPoints, LookFollower } from './view-look.ts';
 
 /** The hovered ray and where the pointer is, for a tooltip next to it. */
@@ -69,6 +70,8 @@ interface LabViewEvents {
   help: undefined;
   /** What a key did (a step of the selection, the chosen pixel), to show and announce. */
   note: string;
+  /** How many rays are drawn of how many while the learner edits (null: all of them). */
+  thinning: Thinning | null;
 }
 
 type Listener<T> = (value: T) => void;
@@ -137,6 +140,7 @@ export class LabView {
     flight: new Set(),
     help: new Set(),
     note: new Set(),
+    thinning: new Set(),
   };
   private readonly unsubscribe: () => void;
   private readonly cleanups: (() => void)[] = [];
@@ -156,11 +160,15 @@ export class LabView {
    * before any), so a browser test can time a slider step to its rays on screen.
    */
   drawnRaysScene: Scene | null = null;
+  /** For tests and tools: the scene the last drawn frame showed (its objects, lights and camera), null before any. */
+  drawnScene: Scene | null = null;
   private sized = false;
-  /** WebGL draws on a CPU rasterizer (SwiftShader, llvmpipe): no antialiasing, bursts drawn coarse. */
-  private readonly software: boolean;
+  /** WebGL draws on a CPU rasterizer (SwiftShader, llvmpipe): no antialiasing, bursts drawn coarse, rays held to a budget while the learner edits (LabServices). */
+  readonly software: boolean;
   /** On a CPU rasterizer: a burst of edits is drawn at reduced resolution (null on a GPU). */
   private readonly burst: BurstResolution | null;
+  /** The thinning the last drawn frame showed, as last told. */
+  private drawnThinning: Thinning | null = null;
   /** The share of the device pixel ratio drawn now (below 1 during a burst). */
   private resolutionScale = 1;
   private coveredBottom = 0;
@@ -329,6 +337,11 @@ export class LabView {
       this.removeRayAnimator = this.scheduler.addAnimator((time) => layer.tick(time));
     }
     this.requestRender();
+  }
+
+  /** On a CPU rasterizer: draws coarse while `thinned` (the rays held to a budget), sharp at once after. */
+  holdCoarse(thinned: boolean): void {
+    this.burst?.hold(thinned);
   }
 
   /** Shows the acceleration boxes (BvhBoxes.object), replacing any before; null removes them. */
@@ -648,7 +661,8 @@ export class LabView {
     if (!this.gizmo.dragging) this.updateGizmo(state);
     if (previous && state.scene !== previous.scene) {
       this.burst?.edited();
-      this.scheduler.holdFor(RAYS_WAIT_MS);
+      // Rays held to a budget are a heavy screen's, traced in the worker for longer than the wait.
+      if (!this.burst?.holding) this.scheduler.holdFor(RAYS_WAIT_MS);
     }
     this.requestRender();
   }
@@ -713,6 +727,12 @@ export class LabView {
     if (this.selectionBox.visible && this.gizmo.dragging) this.outlineSelection(this.store.state, this.selectedObject(this.store.state));
     this.renderer.render(this.scene, this.camera);
     this.drawnRaysScene = this.screenRays?.scene ?? null;
+    this.drawnScene = this.store.state.scene;
+    const thinning = this.rayLayer?.thinning ?? null;
+    if (thinning?.shown !== this.drawnThinning?.shown || thinning?.of !== this.drawnThinning?.of) {
+      this.drawnThinning = thinning;
+      this.emit('thinning', thinning);
+    }
     this.frames++;
     this.sceneJustLoaded = false;
   }

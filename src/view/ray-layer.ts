@@ -1,5 +1,6 @@
 import type { Object3D, Raycaster } from 'three';
 import type { RayNode, RayType } from '../tracer/ray-tree.ts';
+import type { Thinning } from './ray-budget.ts';
 import type { RayColorKey } from './ray-palette.ts';
 
 /** What the pointer is over when it hovers a drawn ray (shown in a tooltip). */
@@ -24,4 +25,6 @@ export interface RayLayer {
   tick(timeMs: number): boolean;
   /** The nearest ray under the pointer, or null. */
   pick(raycaster: Raycaster): RayHover | null;
+  /** How many rays are drawn of how many while a budget leaves some out (ray-budget.ts); null when all are. */
+  readonly thinning: Thinning | null;
 }

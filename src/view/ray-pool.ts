@@ -37,6 +37,8 @@ import {
   type ViewHeightUniform,
 } from './ray-shader.ts';
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
+import { keptRays, type Thinning, thinningOf } from './ray-budget.ts';
+import { flattenRays } from './flat-rays.ts';
 import { FILLED_GAP_KEYS, RAY_COLOR_KEYS, RAY_DASHES, STOPPED_KEYS } from './ray-palette.ts';
 
 /** Instances allocated at first; the buffers double from there as needed. */
@@ -251,6 +253,12 @@ export class RayPool implements RayLayer {
   private resumeTravel = 0;
   /** The ray debugger's pixel, drawn instead of the screen's rays while set (ray-focus.ts). */
   private focus: RayFocus | null = null;
+  /** The most rays drawn (ray-budget.ts), or null: all of them. */
+  private budget: number | null = null;
+  /** How many rays the budget let through of how many, or null when all are drawn. */
+  private thinned: Thinning | null = null;
+  /** The last update's inputs, to draw them again under another budget. */
+  private lastUpdate: Parameters<RayPool['update']> | null = null;
 
   constructor() {
     this.object.name = 'rays';
@@ -275,10 +283,26 @@ export class RayPool implements RayLayer {
     this.focus = focus;
   }
 
+  /** How many rays are drawn of how many while a budget leaves some out; null when all are drawn. */
+  get thinning(): Thinning | null {
+    return this.thinned;
+  }
+
+  /** Draws about `budget` rays from now on, every kind among them (ray-budget.ts); null: all. */
+  setBudget(budget: number | null): void {
+    if (budget === this.budget) return;
+    this.budget = budget;
+    if (this.lastUpdate) this.update(...this.lastUpdate);
+  }
+
   /** Rebuilds the instances from the traced rays and the panel's options; then render a frame. */
   update(rays: ScreenRays | null, options: RayViewOptions, selectedPixel: readonly [number, number] | null): void {
+    this.lastUpdate = [rays, options, selectedPixel];
     const focus = this.focus;
-    const drawn = focus ? focusedRays(focus, options, this.drawn, this.style) : visibleRays(rays, options, selectedPixel, this.drawn, this.style);
+    // A chosen pixel is drawn alone and whole, as is the debugger's, which steps through each ray.
+    const kept = !focus && !selectedPixel && rays && this.budget !== null ? keptRays(flattenRays(rays), this.budget, null) : null;
+    const drawn = focus ? focusedRays(focus, options, this.drawn, this.style) : visibleRays(rays, options, selectedPixel, this.drawn, this.style, true, kept);
+    this.thinned = focus ? null : thinningOf(rays, drawn, kept !== null, selectedPixel !== null);
     this.writeCylinders(drawn.rays);
     this.writeCones(drawn.cones);
     const oneTree = focus !== null || selectedPixel !== null;

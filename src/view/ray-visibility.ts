@@ -142,6 +142,8 @@ const DARKEN: RayStyle = { fadeTo: [0, 0, 0] };
  *   lerp(minRadius, maxRadius, contribution), which also works with min > max.
  * - colorByTime: a ray under a lens/time ray (distribution-effects §3) takes its time's
  *   colour (time-colors.ts) instead of its type's; rays without a time keep theirs.
+ * - `kept`, a budget's choice while the learner edits (ray-budget.ts): a ray it leaves out
+ *   (0, by its index in the flattened screen) is not drawn, nor its subtree.
  * - area-light / area-shadow nodes become cones from the hit point to the light's corners;
  *   so does a glossy fan of more than 25 rays that all hit one object (glossy-cone.ts),
  *   unless `glossyCones` is false (the ray debugger, which steps through each ray).
@@ -157,12 +159,13 @@ export function visibleRays(
   into = new DrawnRays(),
   style: RayStyle = DARKEN,
   glossyCones = true,
+  kept: Uint8Array | null = null,
 ): DrawnRays {
   into.clear();
   if (!rays || !options.showRays) return into;
   into.columns = rays.columns;
   const flat = flattenRays(rays, glossyCones);
-  const pass = new VisibilityPass(flat, into, options, style, selectedPixel !== null);
+  const pass = new VisibilityPass(flat, into, options, style, selectedPixel !== null, kept);
   if (selectedPixel) {
     const [x, y] = selectedPixel;
     if (x >= 0 && y >= 0 && x < rays.columns && y < rays.rows) pass.pixel(y * rays.columns + x);
@@ -197,6 +200,8 @@ class VisibilityPass {
     private readonly style: RayStyle,
     /** Whether each hit's normal is drawn (one pixel's rays). */
     private readonly normals: boolean,
+    /** Per flattened ray, 0 when a budget leaves it out (with its subtree); null: none does. */
+    private readonly kept: Uint8Array | null,
   ) {
     const palette = paletteNameFor(options.colorBlindPalette);
     RAY_COLOR_KEYS.forEach((key, index) => this.colors.set(rayColor(palette, key), index * 3));
@@ -205,11 +210,13 @@ class VisibilityPass {
 
   /** Draws pixel p's rays; in pixel-by-pixel mode the next pixel starts when this one has grown. */
   pixel(p: number): void {
-    const { flat, options } = this;
+    const { flat, options, kept } = this;
     const end = flat.pixelStart[p + 1];
     for (let i = flat.pixelStart[p]; i < end; ) {
       const hidden =
-        (options.hideNoHit && flat.hit[i] === 0) || (options.hideNegligible && flat.contribution[i] < options.negligibleThreshold);
+        (options.hideNoHit && flat.hit[i] === 0) ||
+        (options.hideNegligible && flat.contribution[i] < options.negligibleThreshold) ||
+        (kept !== null && kept[i] === 0);
       if (hidden) {
         i = flat.subtreeEnd[i]; // with its whole subtree
       } else {

@@ -6,6 +6,10 @@ import type { Scene } from '../../src/scene/scene.ts';
 import type { PixelTrace } from '../../src/tracer/ray-tree.ts';
 import { tracePixel } from '../../src/tracer/trace-pixel.ts';
 import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
+import { thinTraces } from '../../src/tracer/tree-budget.ts';
+import { EDIT_RAY_BUDGET } from '../../src/view/ray-budget.ts';
+import { SETTLE_MS } from '../../src/view/ray-budget-while-editing.ts';
+import type { RayBudget } from '../../workers/protocol.ts';
 
 /** A pool that answers every pixel trace at once with a one-ray tree, and remembers what it was asked. */
 function fakePool(workers: number | undefined) {
@@ -20,10 +24,14 @@ function fakePool(workers: number | undefined) {
     setScene: (scene: Scene) => void scenes.push(scene),
     // The real tracer on the main thread: the rays are what a worker would send.
     tracePixel: (x: number, y: number, seed = 0): Promise<PixelTrace> => Promise.resolve(tracePixel(buildTracerScene(scenes.at(-1)!, new Map()), x, y, seed)),
-    tracePixels: (first: number, count: number, seed = 0): Promise<PixelTrace[]> => {
+    budgets: [] as (RayBudget | undefined)[],
+    tracePixels: (first: number, count: number, seed = 0, budget?: RayBudget): Promise<PixelTrace[]> => {
+      pool.budgets.push(budget);
       const scene = buildTracerScene(scenes.at(-1)!, new Map());
       const columns = scene.source.camera.pixels[0];
-      return Promise.resolve(Array.from({ length: count }, (_, i) => tracePixel(scene, (first + i) % columns, Math.floor((first + i) / columns), seed)));
+      const traces = Array.from({ length: count }, (_, i) => tracePixel(scene, (first + i) % columns, Math.floor((first + i) / columns), seed));
+      // As the worker sends them (workers/render-core.ts).
+      return Promise.resolve(budget ? thinTraces(traces, budget.rays, budget.keepPixel === null ? null : budget.keepPixel - first) : traces);
     },
     /** Picture renders: each waits for the test to finish it (`finish`), as a worker would take time. */
     renders: [] as { scene: Scene; finish: () => void }[],
@@ -38,7 +46,7 @@ function fakePool(workers: number | undefined) {
   return pool;
 }
 
-function fakeView() {
+function fakeView(software = false) {
   const calls: string[] = [];
   let rays: ScreenRays | null = null;
   const view: LabViewPort = {
@@ -46,6 +54,8 @@ function fakeView() {
     setRayLayer: () => void calls.push('ray-layer'),
     setBvhLayer: () => void calls.push('bvh-layer'),
     requestRender: () => void calls.push('render'),
+    software,
+    holdCoarse: (thinned) => void calls.push(`coarse ${thinned}`),
   };
   return { view, calls, rays: () => rays };
 }
@@ -148,6 +158,33 @@ describe('LabServices: the lab wired apart from any page', () => {
     expect(pictures.renders.map((render) => render.scene)).toEqual([scene, dark]);
     pictures.renders[1]!.finish();
     expect((await second).rgb[0]).toBe(0);
+  });
+
+  it('on a CPU rasterizer, holds a heavy screen\'s rays to the budget while the learner edits, coarse, and draws them all once the edits stop', async () => {
+    // 4 × 3 pixels of 4 × 4 samples of 4 × 4 lens points: traced in the worker, thousands of rays.
+    const { store } = services;
+    store.dispatch({ type: 'camera.changed', changes: { pixels: [4, 3], aperture: 0.2, lensSamples: 4 } });
+    store.dispatch({ type: 'settings.changed', changes: { supersampling: 4 } });
+    const { view, calls } = fakeView(true);
+    await services.attachView(view);
+    await vi.advanceTimersByTimeAsync(1);
+    const all = services.drawn.rays;
+    expect(all).toBeGreaterThan(4 * EDIT_RAY_BUDGET);
+    const screenPool = pools[1]!;
+    const asked = screenPool.budgets.length;
+
+    store.dispatch({ type: 'material.changed', id: 'red-ball', changes: { shininess: 80 } }, { live: true });
+    await vi.advanceTimersByTimeAsync(1);
+    expect(screenPool.budgets.slice(asked)).toEqual([{ rays: EDIT_RAY_BUDGET, keepPixel: null }]);
+    expect(services.drawn.rays).toBeLessThanOrEqual(EDIT_RAY_BUDGET + 50);
+    expect(calls).toContain('coarse true');
+    // The learner lets go (on the value the drag reached: nothing changes); a moment later every ray, traced again, sharp.
+    store.dispatch({ type: 'material.changed', id: 'red-ball', changes: { shininess: 80 } });
+    await vi.advanceTimersByTimeAsync(SETTLE_MS);
+    await vi.advanceTimersByTimeAsync(1);
+    expect(screenPool.budgets.at(-1)).toBeUndefined();
+    expect(services.drawn.rays).toBe(all);
+    expect(calls.at(-1)).toBe('coarse false');
   });
 
   it('disposes both pools', () => {

@@ -11,6 +11,7 @@ import type { MeshLibrary } from '../../src/scene/mesh-data.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 import type { Scene } from '../../src/scene/scene.ts';
 import type { PixelTrace } from '../../src/tracer/ray-tree.ts';
+import type { RayBudget } from '../../workers/protocol.ts';
 import { tracePixel } from '../../src/tracer/trace-pixel.ts';
 import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
 
@@ -28,6 +29,7 @@ interface Request {
   first: number;
   count: number;
   seed: number | undefined;
+  budget: RayBudget | undefined;
   resolve(traces: PixelTrace[]): void;
   reject(error: Error): void;
 }
@@ -46,10 +48,10 @@ class FakePool implements ScreenTracePool {
     return Promise.reject(new Error('the screen tracer traces pixels in blocks'));
   }
 
-  tracePixels(first: number, count: number, seed?: number): Promise<PixelTrace[]> {
+  tracePixels(first: number, count: number, seed?: number, budget?: RayBudget): Promise<PixelTrace[]> {
     const scene = this.scenes[this.scenes.length - 1];
     return new Promise((resolve, reject) => {
-      const request: Request = { scene, first, count, seed, resolve, reject };
+      const request: Request = { scene, first, count, seed, budget, resolve, reject };
       request.resolve = (traces) => (this.pending.delete(request), resolve(traces));
       request.reject = (error) => (this.pending.delete(request), reject(error));
       this.requests.push(request);
@@ -123,6 +125,31 @@ describe('ScreenTracer (fake pool)', () => {
     expect(pool.scenes).toEqual([scenes[0], scenes[3]]);
     expect(published.map((rays) => rays.traces.length)).toEqual([1, 3]);
     expect(tracer.rays?.columns).toBe(3);
+  });
+
+  it('asks each block for its share of a budget, and traces the screen again in full once the budget ends', async () => {
+    const scene = sceneWithPixels(16, 8); // two blocks
+    tracer.setBudget({ rays: 1000, keepPixel: 70 });
+    tracer.update(scene);
+    await vi.advanceTimersByTimeAsync(0);
+    await pool.answerAll();
+    expect(pool.requests.map(({ first, budget }) => [first, budget])).toEqual([
+      [0, { rays: 500, keepPixel: 70 }],
+      [64, { rays: 500, keepPixel: 70 }],
+    ]);
+    // The budget ends: the same scene again, every ray.
+    tracer.setBudget(null);
+    await vi.advanceTimersByTimeAsync(0);
+    await pool.answerAll();
+    expect(pool.requests.slice(2).map(({ scene: traced, budget }) => [traced, budget])).toEqual([
+      [scene, undefined],
+      [scene, undefined],
+    ]);
+    expect(published).toHaveLength(2);
+    // A budget that starts traces nothing again: the screen shown has every ray.
+    tracer.setBudget({ rays: 1000, keepPixel: null });
+    await vi.advanceTimersByTimeAsync(0);
+    expect(pool.requests).toHaveLength(4);
   });
 
   it('ignores the same scene object again (only scene changes trace)', async () => {

@@ -1,28 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { BURST_GAP_MS, BURST_SCALE, BurstResolution, type BurstTimer } from '../../src/view/burst-resolution.ts';
-
-/** A clock the test moves by hand, with the timers it owes. */
-function manualTimer(): BurstTimer & { advance(ms: number): void } {
-  let now = 0;
-  let next = 1;
-  const due = new Map<number, { at: number; callback: () => void }>();
-  return {
-    now: () => now,
-    set: (callback, ms) => {
-      due.set(next, { at: now + ms, callback });
-      return next++;
-    },
-    clear: (handle) => due.delete(handle as number),
-    advance(ms) {
-      now += ms;
-      for (const [handle, timer] of [...due]) {
-        if (timer.at > now) continue;
-        due.delete(handle);
-        timer.callback();
-      }
-    },
-  };
-}
+import { BURST_GAP_MS, BURST_SCALE, BurstResolution } from '../../src/view/burst-resolution.ts';
+import { manualTimer } from '../support/manual-timer.ts';
 
 /** A BurstResolution on a manual clock, with the scales it applied. */
 function watched() {
@@ -59,6 +37,36 @@ describe('BurstResolution', () => {
     timer.advance(BURST_GAP_MS);
     expect(scales).toEqual([BURST_SCALE, 1]);
     expect(resolution.reducing).toBe(false);
+  });
+
+  it('draws coarse from the first edit while held, between edits too, and sharp at once when let go', () => {
+    const { timer, scales, resolution } = watched();
+    resolution.edited();
+    resolution.hold(true);
+    expect(scales).toEqual([BURST_SCALE]);
+    expect(resolution.holding).toBe(true);
+    for (let step = 0; step < 5; step++) {
+      timer.advance(BURST_GAP_MS * 3);
+      resolution.edited();
+    }
+    expect(scales).toEqual([BURST_SCALE]);
+    resolution.hold(false);
+    expect(scales).toEqual([BURST_SCALE, 1]);
+    timer.advance(BURST_GAP_MS * 3);
+    expect(scales).toEqual([BURST_SCALE, 1]);
+    expect(resolution.reducing).toBe(false);
+  });
+
+  it('holds a burst already coarse without drawing it again', () => {
+    const { timer, scales, resolution } = watched();
+    resolution.edited();
+    timer.advance(16);
+    resolution.edited();
+    resolution.hold(true);
+    timer.advance(BURST_GAP_MS * 2);
+    expect(scales).toEqual([BURST_SCALE]);
+    resolution.hold(false);
+    expect(scales).toEqual([BURST_SCALE, 1]);
   });
 
   it('leaves nothing pending once disposed', () => {

@@ -237,6 +237,27 @@ describe('RayPool instances', () => {
   });
 });
 
+describe('RayPool budget', () => {
+  it('draws at most about the budget while one is set, says how many of how many, and all again without', () => {
+    const pool = new RayPool();
+    const rays = syntheticScreen(6000);
+    pool.update(rays, options(), null);
+    const all = pool.stats.rays;
+    expect(pool.thinning).toBeNull();
+    pool.setBudget(1000);
+    expect(pool.stats.rays).toBeGreaterThan(900);
+    expect(pool.stats.rays).toBeLessThanOrEqual(1005);
+    expect(pool.thinning).toEqual({ shown: pool.stats.rays, of: all });
+    // A screen that fits is drawn whole under the budget too.
+    pool.update(syntheticScreen(500), options(), null);
+    expect(pool.thinning).toBeNull();
+    pool.update(rays, options(), null);
+    pool.setBudget(null);
+    expect(pool.stats.rays).toBe(all);
+    expect(pool.thinning).toBeNull();
+  });
+});
+
 describe('RayPool growth animation', () => {
   const travel = (pool: RayPool) => {
     const uniforms: Record<string, { value: number }> = {};

@@ -2,6 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { createRenderHandler } from '../../workers/render-core.ts';
 import type { RenderRequest, RenderResponse } from '../../workers/protocol.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
+import type { RayNode } from '../../src/tracer/ray-tree.ts';
 import { sceneFrom } from '../support/test-scene.ts';
 
 const scene = defaultScene();
@@ -83,6 +84,23 @@ describe('the render worker core', () => {
       failed: { type: 'trace-pixels', requestId: 8 },
       message: `pixels ${columns * rows - 1} to ${columns * rows} are not on the ${columns}×${rows} screen`,
     });
+  });
+
+  it('sends a block within its budget: the same colours, fewer rays, and how many each pixel had', async () => {
+    const { handle, responses, settle } = worker();
+    // 4 × 4 samples of 4 × 4 lens points: 256 camera rays a pixel.
+    const heavy = sceneFrom({ ...scene, camera: { ...scene.camera, aperture: 0.2, lensSamples: 4 }, settings: { ...scene.settings, supersampling: 4 } });
+    handle(load(1, heavy));
+    handle({ type: 'trace-pixels', requestId: 7, first: 0, count: 4, seed: 0 });
+    handle({ type: 'trace-pixels', requestId: 8, first: 0, count: 4, seed: 0, budget: { rays: 200, keepPixel: 2 } });
+    await settle(3);
+    const [full, thinned] = responses.slice(1).map((r) => (r.type === 'pixels-traced' ? r.traces : []));
+    expect(thinned.map((trace) => trace.color)).toEqual(full.map((trace) => trace.color));
+    expect(thinned[2]).toEqual(full[2]);
+    const count = (nodes: RayNode[]): number => nodes.reduce((sum, node) => sum + 1 + count(node.children), 0);
+    const sent = thinned.reduce((sum, trace) => sum + count(trace.rays), 0);
+    expect(sent).toBeLessThan(full.reduce((sum, trace) => sum + count(trace.rays), 0) / 2);
+    for (const i of [0, 1, 3]) expect(thinned[i].traced).toBe(count(full[i].rays));
   });
 
   it('renders a queued tile with the scene that was current when it arrived', async () => {

@@ -200,6 +200,8 @@ export class RtLab extends LitElement {
 
   /** The 3D view has loaded: the services draw into it, and the counts below follow. */
   private readonly onViewReady = async (event: CustomEvent<LabView>) => {
+    // The count below follows the ray budget too (ray-budget.ts), which changes without a new screen.
+    event.detail.on('thinning', () => this.requestUpdate());
     await this.services.attachView(event.detail);
     this.requestUpdate();
   };

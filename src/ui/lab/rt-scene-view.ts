@@ -4,6 +4,8 @@ import type { LabState } from '../../lab-state/lab-state.ts';
 import type { Store } from '../../lab-state/store.ts';
 import { GIZMO_MODES, gizmoModesFor, type GizmoMode } from '../../view/gizmo-modes.ts';
 import type { LabView, RayHoverDetail } from '../../view/lab-view.ts';
+import type { Thinning } from '../../view/ray-budget.ts';
+import { localNumbers } from '../../i18n/number-format.ts';
 import type { ViewCommand } from '../../view/view-commands.ts';
 import { LazyModule } from '../../util/lazy-module.ts';
 import '../controls/rt-load-problem.ts';
@@ -39,6 +41,7 @@ export class RtSceneView extends LitElement {
     helpOpen: { state: true },
     viewProblem: { state: true },
     note: { state: true },
+    thinning: { state: true },
   };
 
   static override styles = css`
@@ -94,6 +97,10 @@ export class RtSceneView extends LitElement {
     .note:empty {
       display: none;
     }
+    .thinning {
+      top: 64px;
+      bottom: auto;
+    }
   `;
 
   /** The app's store: the view draws its scene and dispatches selections, gizmo drags and view gestures. */
@@ -107,6 +114,8 @@ export class RtSceneView extends LitElement {
   declare private viewProblem: string;
   /** What the last key did (a step of the selection, the chosen pixel); cleared after NOTE_MS. */
   declare private note: string;
+  /** How many rays the view draws of how many while the learner edits (ray-budget.ts), or null: all of them. */
+  declare private thinning: Thinning | null;
   private noteTimer: ReturnType<typeof setTimeout> | undefined;
   private view: LabView | null = null;
   /** The store a view is being made for while its code loads. */
@@ -121,6 +130,7 @@ export class RtSceneView extends LitElement {
     this.helpOpen = false;
     this.viewProblem = '';
     this.note = '';
+    this.thinning = null;
     consumeStore(this, (store) => (this.store = store));
     new GuideHostController(this);
   }
@@ -182,6 +192,7 @@ export class RtSceneView extends LitElement {
         @keydown=${this.onToolbarKey}
       ></rt-view-toolbar>
       <p class="note" role="status">${this.note}</p>
+      <p class="note thinning" data-testid="ray-thinning">${this.thinning ? thinningText(this.thinning) : ''}</p>
       <rt-help-panel ?open=${this.helpOpen} @help-closed=${() => (this.helpOpen = false)}></rt-help-panel>
     `;
   }
@@ -218,6 +229,7 @@ export class RtSceneView extends LitElement {
       view.on('flight', (atCamera) => (this.atCamera = atCamera)),
       view.on('help', () => (this.helpOpen = true)),
       view.on('note', (text) => this.showNote(text)),
+      view.on('thinning', (thinning) => (this.thinning = thinning)),
       () => clearTimeout(this.noteTimer),
     );
     this.resizeObserver.observe(this);
@@ -256,6 +268,13 @@ export class RtSceneView extends LitElement {
 
 /** How long a key's note stays up: long enough to read twice, gone before it clutters the view. */
 const NOTE_MS = 4000;
+
+const counts = localNumbers();
+
+/** What the view says while it draws only some of the rays (it changes with every step: not announced). */
+function thinningText({ shown, of }: Thinning): string {
+  return msg(str`Showing ${counts.format(shown)} of ${counts.format(of)} rays while you edit.`);
+}
 
 /** Modes shown as available: all when nothing is selected (choosing a mode first is fine). */
 function modesShown(state: LabState) {

@@ -1,0 +1,106 @@
+/**
+ * A budget for the rays the lab's 3D view draws while the learner edits. On a CPU rasterizer
+ * (SwiftShader, llvmpipe) every drawn ray costs fill time, and the free lab's largest
+ * settings draw tens of thousands of rays: a frame of 27,784 rays took 1.5–2.7 s there and
+ * one of 108,836 rays 4–11 s (docs/benchmarks.md, issue 38), so the view froze while a
+ * slider moved. While the learner edits, the view draws about EDIT_RAY_BUDGET of them,
+ * chosen by the rule of tracer/tree-budget.ts (whole trees, spread over the screen, the
+ * chosen pixel's and every kind kept); once the edits stop, all of them
+ * (RayBudgetWhileEditing).
+ */
+import type { ScreenRays } from '../render/screen-rays.ts';
+import { type BudgetTrees, keptTrees, tracedRays } from '../tracer/tree-budget.ts';
+import type { FlatRays } from './flat-rays.ts';
+import { RAY_COLOR_KEYS } from './ray-palette.ts';
+import type { DrawnRays } from './ray-visibility.ts';
+
+/**
+ * The most rays (and cones) drawn per frame while the learner edits, on a CPU rasterizer.
+ * On SwiftShader a frame of the lab's view at the coarse resolution of an edit
+ * (BurstResolution) cost about 20 ms plus 0.035 ms per drawn ray, the see-through ribbons'
+ * fill (docs/benchmarks.md, issue 38): 1,200 rays keep it near 60 ms. Every level's own
+ * screens draw fewer (at most 957, level 18's; tests/view/ray-budget.test.ts), so a teaching
+ * view is never thinned.
+ */
+export const EDIT_RAY_BUDGET = 1200;
+
+/** How many rays are drawn (`shown`) of how many were traced (`of`) while a budget leaves some out. */
+export interface Thinning {
+  shown: number;
+  of: number;
+}
+
+/**
+ * Which rays of the flattened screen `budget` keeps (ray-visibility.ts's `kept`: 1 for a
+ * drawn ray), by the rule of tracer/tree-budget.ts, every ray of pixel `keepPixel` (y ·
+ * columns + x, or null) among them; null when the screen has no more rays than that.
+ */
+export function keptRays(flat: FlatRays, budget: number, keepPixel: number | null): Uint8Array | null {
+  if (flat.count <= budget) return null;
+  const trees = flatTrees(flat);
+  const keep = keptTrees(trees, budget, keepPixel);
+  const kept = new Uint8Array(flat.count);
+  for (let t = 0; t < trees.count; t++) if (keep[t]) kept.fill(1, trees.start[t], trees.end[t]);
+  return kept;
+}
+
+/**
+ * The trees of a flattened screen as the rule counts them: each sample's root with its
+ * subtree, except that a root whose children are a lens's or a shutter's rays (they carry a
+ * time, it does not) is a tree alone, the parent of each child's.
+ */
+function flatTrees(flat: FlatRays): BudgetTrees & { start: Int32Array; end: Int32Array } {
+  const start: number[] = [];
+  const end: number[] = [];
+  const parent: number[] = [];
+  const pixel: number[] = [];
+  const pixels = flat.pixelStart.length - 1;
+  for (let p = 0; p < pixels; p++) {
+    for (let root = flat.pixelStart[p]; root < flat.pixelStart[p + 1]; root = flat.subtreeEnd[root]) {
+      const rootEnd = flat.subtreeEnd[root];
+      const several = flat.time[root] < 0 && root + 1 < rootEnd && flat.time[root + 1] >= 0;
+      const rootTree = start.length;
+      start.push(root);
+      end.push(several ? root + 1 : rootEnd);
+      parent.push(-1);
+      pixel.push(p);
+      if (!several) continue;
+      for (let child = root + 1; child < rootEnd; child = flat.subtreeEnd[child]) {
+        start.push(child);
+        end.push(flat.subtreeEnd[child]);
+        parent.push(rootTree);
+        pixel.push(p);
+      }
+    }
+  }
+  return {
+    start: Int32Array.from(start),
+    end: Int32Array.from(end),
+    count: start.length,
+    // A legend entry, drawn as a ray or as a cone.
+    kindCount: 2 * RAY_COLOR_KEYS.length,
+    size: (t) => end[t] - start[t],
+    pixel: (t) => pixel[t],
+    parent: (t) => parent[t],
+    kinds: (t, visit) => {
+      for (let i = start[t]; i < end[t]; i++) visit(flat.colorKey[i] + (flat.cone[i] >= 0 ? RAY_COLOR_KEYS.length : 0));
+    },
+  };
+}
+
+/**
+ * What the view says while a budget leaves rays out: the rays drawn (rays plus cones) of the
+ * rays the screen traced, whether the view left them out (`thinnedHere`) or the worker
+ * already did (its traces say how many they had). Not while a chosen pixel is drawn alone: all
+ * of its rays are kept. null: every ray traced is drawn (as the ray panel's rules say).
+ */
+export function thinningOf(rays: ScreenRays | null, drawn: DrawnRays, thinnedHere: boolean, pixelChosen: boolean): Thinning | null {
+  const sentFewer = !pixelChosen && rays !== null && rays.traces.some((trace) => trace.traced !== undefined);
+  if (!rays || (!thinnedHere && !sentFewer)) return null;
+  let traced = tracedCounts.get(rays);
+  if (traced === undefined) tracedCounts.set(rays, (traced = tracedRays(rays.traces)));
+  return { shown: drawn.rays.count + drawn.cones.count, of: traced };
+}
+
+/** Rays traced per screen (screens are never changed: a new trace is a new object). */
+const tracedCounts = new WeakMap<ScreenRays, number>();
