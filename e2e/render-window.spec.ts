@@ -213,6 +213,25 @@ test('zoomed in, the canvas holds the part on screen: exactly the saved pixels t
   await expect.poll(async () => { const { shown, saved } = await shownAndSaved(); return shown === saved; }).toBe(true);
 });
 
+test('Stretch contrast stays on across renders of a scene and is off again when another scene is loaded (a new level)', async ({ page }) => {
+  const window = await openRenderWindow(page);
+  await window.evaluate((element: RtRenderWindow) => element.store!.dispatch({ type: 'settings.changed', changes: { imageSize: [64, 48] } }));
+  await renderAndWait(window);
+  const stretch = window.getByRole('checkbox', { name: 'Stretch contrast' });
+  const levels = window.getByRole('status').filter({ hasText: /shown as 0–255/ });
+  await stretch.check();
+  await expect(levels).toBeVisible();
+  await renderAndWait(window);
+  await expect(stretch).toBeChecked();
+  await expect(levels).toBeVisible();
+  // A level opens with its own scene (the game loads it as the free lab's files do): its first render is not stretched.
+  await window.evaluate((element: RtRenderWindow) => element.store!.dispatch({ type: 'scene.loaded', scene: element.store!.state.scene }));
+  await expect(stretch).not.toBeChecked();
+  await renderAndWait(window);
+  await expect(stretch).not.toBeChecked();
+  await expect(levels).toHaveCount(0);
+});
+
 test('an image larger than its window is drawn at the size it is shown: the saved file scaled, no seams', async ({ page }) => {
   const window = await openRenderWindow(page);
   await window.evaluate((element: RtRenderWindow) => element.store!.dispatch({ type: 'settings.changed', changes: { imageSize: [1600, 1200] } }));

@@ -34,8 +34,7 @@ export function reduce(state: LabState, action: LabAction): Reduction {
     case 'selection.changed':
       return { state: { ...state, selection: action.selection } };
     case 'object.added': {
-      const object = createObject(action.shape, state.scene);
-      if (action.mesh !== undefined) object.mesh = action.mesh;
+      const object = createObject(action.shape, state.scene, action.mesh);
       const next = withScene(state, { ...state.scene, objects: [...state.scene.objects, object] });
       return next.error ? next : { state: { ...next.state, selection: { kind: 'object', id: object.id } } };
     }

@@ -1,13 +1,20 @@
 import type { z } from 'zod';
 import type { Light, LightType, Scene, SceneObject, ShapeKind } from './scene.ts';
 import type { LocalizedText } from '../util/localized-text.ts';
-import { MESH_ASSET_NAMES } from './mesh-assets.ts';
+import { footprintRadius, freePlace } from './free-place.ts';
+import { MESH_ASSET_NAMES, type MeshAssetName } from './mesh-assets.ts';
 import { lightSchema, sceneObjectSchema, sceneSchema } from './scene-schema.ts';
 
 /**
  * Ready-made scenes and scene parts. Everything left out here is filled in by the schema's
  * defaults, so each default value is written down in one place only (scene-schema.ts).
  */
+
+/** Clear glass (n = 1.5, as window glass): the default scene's glass ball, and models of glass. */
+const CLEAR_GLASS = { ambient: 0, diffuse: 0.05, specular: 0.6, shininess: 200, transparent: true, refractiveIndex: 1.5 };
+
+/** The models that are made of glass, and come into a scene as glass. */
+const GLASS_MODELS: ReadonlySet<MeshAssetName> = new Set(['wine-glass']);
 
 /**
  * The scene the lab opens with: one of each kind of material (diffuse, mirror, glass) on a
@@ -33,7 +40,7 @@ export function defaultScene(): Scene {
         name: { en: 'Glass ball', nl: 'Glazen bal' },
         shape: 'sphere',
         position: [1, 0.5, 1.2],
-        material: { ambient: 0, diffuse: 0.05, specular: 0.6, shininess: 200, transparent: true, refractiveIndex: 1.5 },
+        material: { ...CLEAR_GLASS },
       },
       {
         id: 'box',
@@ -69,11 +76,23 @@ const NEW_ITEM_NAMES: Record<ShapeKind | LightType, { en: string; nl: string }> 
   area: { en: 'Area light', nl: 'Vlaklamp' },
 };
 
-/** A new object of this shape with every default, at the origin, with an id unused in `scene`. */
-export function createObject(shape: ShapeKind, scene: Scene): SceneObject {
+/**
+ * A new object of this shape (a mesh: of model `mesh`, by default the first) with every
+ * default, with an id unused in `scene`. It stands on the floor (y = 0) at the free place
+ * nearest to where the camera looks, not inside what is there already; a model of glass (the
+ * wine glass) comes as clear glass.
+ */
+export function createObject(shape: ShapeKind, scene: Scene, mesh?: string): SceneObject {
   // Only a mesh has the `mesh` field at all (even `mesh: undefined` would show up as a key).
+  // An unknown model name is kept as asked: the scene's schema refuses it with its reason.
   const model = shape === 'mesh' ? { mesh: MESH_ASSET_NAMES[0] } : {};
-  return sceneObjectSchema.parse({ ...newItem(shape, scene), shape, ...model });
+  const glass = shape === 'mesh' && GLASS_MODELS.has((mesh ?? MESH_ASSET_NAMES[0]) as MeshAssetName) ? { material: { ...CLEAR_GLASS } } : {};
+  const object: SceneObject = sceneObjectSchema.parse({ ...newItem(shape, scene), shape, ...model, ...glass });
+  if (shape === 'mesh' && mesh !== undefined) object.mesh = mesh;
+  const [x, z] = freePlace(scene.objects, footprintRadius(object), scene.camera.target);
+  // A plane lies just above a floor at y = 0 rather than in it; a unit shape's base is 0.5 below its centre.
+  object.position = [x, shape === 'plane' ? 0.01 : 0.5 * object.scale[1], z];
+  return object;
 }
 
 /** A new light of this type with every default, 3 m above the origin, with an id unused in `scene`. */

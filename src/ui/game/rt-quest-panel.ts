@@ -150,7 +150,7 @@ export class RtQuestPanel extends LitElement {
     return html`<section class="card celebration" role="status" aria-label=${msg('Level complete')}>
       <h3>★ ${msg('Level complete!')}</h3>
       <p>${msg(str`You have ${view.points} of ${view.maxPoints} points in this level.`)}</p>
-      ${this.returned ? html`<p class="muted" data-note="returned">${msg('You passed this level before, so its scene has started afresh: your points and finished tasks are kept.')}</p>` : nothing}
+      ${this.returned ? html`<p class="muted" data-note="returned">${msg('You passed this level before, so it opened with its own scene again: your points and finished tasks are kept.')}</p>` : nothing}
       ${this.badges.length > 0
         ? html`<p>${msg('Badges earned:')}</p>
             <ul>

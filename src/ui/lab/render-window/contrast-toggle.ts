@@ -16,7 +16,10 @@ export interface FinishedImage {
  * finished image with its own darkest level shown black and its brightest white
  * (contrast-stretch.ts), so bands one level apart become visible on screen. The window's
  * painter draws the stretch (BandPainter.setStretch), so zoom and comparison work on it as on
- * the image; the image and a saved PNG are untouched.
+ * the image; the image and a saved PNG are untouched. It stays on across renders of one scene,
+ * and goes off when another scene is loaded (a new level, the free lab, a scene file): it
+ * belongs to the banding level's question, and stretched it misled the next level's first
+ * render (issue 37).
  */
 export class ContrastToggle implements ReactiveController {
   on = false;
@@ -38,6 +41,13 @@ export class ContrastToggle implements ReactiveController {
 
   toggle(): void {
     this.on = !this.on;
+    this.host.requestUpdate();
+  }
+
+  /** Off again: a new scene (a level opens) starts with its image as it is. */
+  reset(): void {
+    if (!this.on) return;
+    this.on = false;
     this.host.requestUpdate();
   }
 

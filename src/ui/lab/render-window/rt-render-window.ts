@@ -218,7 +218,11 @@ export class RtRenderWindow extends LitElement {
 
   private listenToStore(): void {
     this.unsubscribe?.();
-    this.unsubscribe = this.store?.subscribe((state) => this.onState(state)) ?? null;
+    this.unsubscribe =
+      this.store?.subscribe((state, action) => {
+        if (action.type === 'scene.loaded') this.contrast.reset();
+        this.onState(state);
+      }) ?? null;
     if (this.store) this.onState(this.store.state);
   }
 
