@@ -2,7 +2,10 @@
  * Honest estimates (issue 37: "313 × 313 (about 60 s)" took 2 min 31 s): heavy renders of
  * the levels' distribution-effects scenes, estimated as the render window estimates them
  * (render-probe.ts: a probe of the scene on this machine) and then rendered as the window
- * renders them (previews first, two workers), at the image size (of the case's aspect) that
+ * renders them (previews first, two workers), after a small render of the scene (a learner's
+ * workers have traced the level before its settings are made heavy; a fresh pool's first
+ * probe rounds ran unoptimized code and priced the first case at twice its real time, 0.48
+ * and 0.59 in two runs), at the image size (of the case's aspect) that
  * the estimate puts at ASKED_SECONDS, whatever this machine's speed. For each, the window's
  * question names a smaller image "(about 60 s)"; that render is made and timed, and its real time over its
  * estimate must lie in [1/1.5, 1.5]. The cases run in one session, as a learner's renders
@@ -73,6 +76,7 @@ export async function measureEstimates(): Promise<EstimateCase[]> {
   try {
     for (const { name, scene, width, height } of await cases()) {
       const meshes = await loadMeshesFromDisk(meshNamesInScene(scene));
+      await pool.render(scene, meshes, { width: 64, height: 64 }).done;
       const correction = calibration.correction;
       const here = await estimateHere(pool, scene, meshes, width, height, { preview: true, calibration });
       if (!here?.measured) throw new Error(`${name}: the window would not have probed this render`);

@@ -41,7 +41,10 @@ export class HeavyRenderCheck implements ReactiveController {
     host.addController(this);
   }
 
-  hostConnected(): void {}
+  /** The window left the page: its probe stops before its next round, and its question goes. */
+  hostDisconnected(): void {
+    this.settle();
+  }
 
   /** Whether a render of `scene` at its image size needs `mayStart` (a probe): a light one starts at once, without a flash of "Estimating…". */
   needsCheck(scene: Scene, pool: RenderPool): boolean {
@@ -64,7 +67,12 @@ export class HeavyRenderCheck implements ReactiveController {
       if (signal.aborted) return { start: false };
       this.correction = sessionCalibration.correction;
       const here = await estimateHere(pool, scene, meshes, width, height, { preview: true, calibration: sessionCalibration, signal });
-      if (signal.aborted || !here) return { start: false };
+      if (signal.aborted) return { start: false };
+      if (!here) {
+        // Another job took the workers (the scene changed under the probe): nothing is started unasked.
+        this.update({ estimating: false, heavy: null });
+        return { start: false };
+      }
       const full = here.estimate(scene, width, height);
       this.update({ estimating: false, heavy: full.heavy ? { estimate: full, lighter: lighterRenders(scene, width, height, here.estimate) } : null });
       return full.heavy ? { start: false } : { start: true, expectedSeconds: here.measured ? full.seconds : null };
