@@ -22,7 +22,6 @@ import './panels/rt-ray-legend.ts';
 import './panels/rt-ray-panel.ts';
 import './panels/rt-scene-list.ts';
 import './panels/rt-tracer-panel.ts';
-import './debugger/rt-ray-debugger.ts';
 import './render-window/rt-render-window.ts';
 import './rt-guide-ring.ts';
 import './rt-ray-tooltip.ts';
@@ -32,9 +31,11 @@ import './rt-screen-preview.ts';
 /**
  * Panels only some levels show, loaded when a level first shows them (the element upgrades
  * then): the BVH panel builds the tracer's scene on the page, with three.js and
- * three-mesh-bvh, which a student's first load can do without. A panel whose code cannot be
+ * three-mesh-bvh, which a student's first load can do without; the ray debugger is opened
+ * only after a pixel is chosen, so it comes after the first screen. A panel whose code cannot be
  * loaded is replaced by a message with a Reload button, after a few tries.
  */
 export const ON_DEMAND_PANELS: Partial<Record<UiPanel, LazyModule<unknown>>> = {
   bvh: new LazyModule(() => import('./panels/rt-bvh-panel.ts')),
+  debugger: new LazyModule(() => import('./debugger/rt-ray-debugger.ts')),
 };
