@@ -37,6 +37,7 @@ import {
 } from './ray-shader.ts';
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
 import { RAY_COLOR_KEYS, RAY_DASHES } from './ray-palette.ts';
+import { timeStripe } from './time-colors.ts';
 
 /** Instances allocated at first; the buffers double from there as needed. */
 const INITIAL_CAPACITY = 256;
@@ -346,8 +347,11 @@ export class RayPool implements RayLayer {
       growth[i * 2 + 1] = list.length[i];
       if (dash && arrowAt) {
         const key = list.colorKey[i];
-        dash[i * 2] = DASHES_BY_KEY[key * 2];
-        dash[i * 2 + 1] = DASHES_BY_KEY[key * 2 + 1];
+        if (list.moment[i] >= 0) timeStripe(list.moment[i], dash, i * 2);
+        else {
+          dash[i * 2] = DASHES_BY_KEY[key * 2];
+          dash[i * 2 + 1] = DASHES_BY_KEY[key * 2 + 1];
+        }
         arrowAt[i] = ARROW_AT_BY_KEY[key];
       }
     }

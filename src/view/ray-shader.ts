@@ -15,7 +15,9 @@
  *   widened to it, so a 1 cm ray stays visible in a scene seen from 10 m (uViewHeight is the
  *   canvas height in CSS px, set before each draw);
  * - `aDash` = (dash, gap) in metres along a ray (0: solid; ray-palette.ts RAY_DASHES):
- *   the fragment shader discards the gaps, measured from the ray's start.
+ *   the fragment shader discards the gaps, measured from the ray's start. A ray coloured by
+ *   time has (−(1 + τ), period) instead (time-colors.ts timeStripe): it keeps only the
+ *   stripes a quarter period long that start τ of the way into each period.
  *
  * Two variants draw one pixel's rays more plainly (ray-extras.ts), from the cylinders' own
  * instances: `arrow` puts an arrowhead of a fixed size on screen along each ray, pointing the
@@ -25,6 +27,7 @@
  */
 import { DoubleSide, GreaterDepth, MeshBasicMaterial, Vector2, type WebGLProgramParametersWithUniforms } from 'three';
 import type { RayColorKey } from './ray-palette.ts';
+import { TIME_STRIPE_SHARE } from './time-colors.ts';
 
 export const ALPHA_ATTRIBUTE = 'aAlpha';
 export const GROWTH_ATTRIBUTE = 'aGrowth';
@@ -131,7 +134,9 @@ diffuseColor.a *= vRayAlpha;
 diffuseColor.a *= ${HIDDEN_ALPHA.toFixed(2)};
 #endif
 #if !defined(RAY_CONE) && !defined(RAY_ARROW)
-if (vRayDash.x > 0.0 && mod(vRayAlong, vRayDash.x + vRayDash.y) > vRayDash.x) discard;
+if (vRayDash.x < 0.0) {
+  if (fract(vRayAlong / vRayDash.y + vRayDash.x + 1.0) > ${TIME_STRIPE_SHARE.toFixed(2)}) discard;
+} else if (vRayDash.x > 0.0 && mod(vRayAlong, vRayDash.x + vRayDash.y) > vRayDash.x) discard;
 #endif`;
 
 const drawingSize = new Vector2();
