@@ -216,6 +216,13 @@ test.describe('a phone on its side', () => {
     await current(page).getByRole('button', { name: 'Next' }).tap();
     await expectViewAndCurrentTask(page);
     await page.screenshot({ path: 'test-results/screens/layout-phone-landscape-level-3.png' });
+    // Unfolded, the pads take the view's lower part: the camera's image steps aside until they fold again.
+    const image = page.locator('rt-screen-preview');
+    await page.locator('rt-view-toolbar [data-command="view-pads"]').tap();
+    await expect(page.locator('rt-view-toolbar [data-command="orbit-left"]')).toBeVisible();
+    await expect(image).toBeHidden();
+    await page.locator('rt-view-toolbar [data-command="view-pads"]').tap();
+    await expect(image).toBeVisible();
   });
 });
 

@@ -73,6 +73,10 @@ const compact = css`
       min-width: 0;
       max-width: calc(100% - 90px);
     }
+    /* Unfolded, the pads need the view's lower part: the image steps aside (its place kept, so the view's framing stays). */
+    :host([pads-open]) rt-screen-preview {
+      visibility: hidden;
+    }
     rt-render-window {
       position: fixed;
       inset: 0;
@@ -178,8 +182,9 @@ const sideSwitch = css`
     padding: 4px var(--rt-space);
     background: var(--rt-surface);
   }
+  /* Each button as wide as its name, the rest shared: a long name ("Scène en instellingen") keeps to one line. */
   .side-switch button {
-    flex: 1;
+    flex: 1 1 auto;
     font: inherit;
     font-size: 0.875rem;
     min-height: var(--rt-target);

@@ -327,6 +327,7 @@ export class RtLab extends LitElement {
           @ray-hover=${(event: CustomEvent<RayHoverDetail | null>) => (this.hover = event.detail)}
           @view-message=${(event: CustomEvent<string>) => this.toast(event.detail, 'error')}
           @view-ready=${this.onViewReady}
+          @view-pads=${(event: CustomEvent<boolean>) => this.toggleAttribute('pads-open', event.detail)}
         ></rt-scene-view>
         ${shows('screen-preview') ? html`<rt-screen-preview .rays=${this.services.screenRays}></rt-screen-preview>` : nothing}
         ${viewLegend && state.rays.showRays ? viewLegendBox(this.legendOpen, () => (this.legendOpen = !this.legendOpen)) : nothing}

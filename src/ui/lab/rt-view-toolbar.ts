@@ -24,6 +24,7 @@ const ZOOM_STEP = 1.25;
  * view.fly-to-camera, view.help; the pads view.orbit-buttons, view.pan-buttons, view.zoom-buttons).
  *
  * @fires view-command - CustomEvent<ViewCommand>: a button asks the view to do something.
+ * @fires view-pads - CustomEvent<boolean>: a small view's pads were unfolded (true) or folded.
  */
 export class RtViewToolbar extends LitElement {
   static override properties = {
@@ -290,7 +291,7 @@ export class RtViewToolbar extends LitElement {
           aria-controls="pads"
           aria-label=${msg('Orbit, pan, zoom')}
           title=${msg('Show or hide the buttons that orbit, pan and zoom the view')}
-          @click=${() => (this.padsOpen = !this.padsOpen)}
+          @click=${this.togglePads}
         >
           ${icon(svg`<path d="M10 2.5v15M2.5 10h15M7.5 5 10 2.5 12.5 5M7.5 15l2.5 2.5 2.5-2.5M5 7.5 2.5 10 5 12.5M15 7.5l2.5 2.5-2.5 2.5" />`)}
         </button>
@@ -347,6 +348,12 @@ export class RtViewToolbar extends LitElement {
       <span class="caption" aria-hidden="true">${caption}</span>
     </div>`;
   }
+
+  /** Folds the pads in or out; the lab hears it (`view-pads`), to keep the camera's image from covering them. */
+  private readonly togglePads = () => {
+    this.padsOpen = !this.padsOpen;
+    this.dispatchEvent(new CustomEvent<boolean>('view-pads', { detail: this.padsOpen, bubbles: true, composed: true }));
+  };
 
   private send(command: ViewCommand): void {
     this.dispatchEvent(new CustomEvent<ViewCommand>('view-command', { detail: command, bubbles: true, composed: true }));
