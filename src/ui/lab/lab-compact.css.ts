@@ -67,11 +67,18 @@ const compact = css`
       contain: size;
     }
     /* The camera's image in the view's lower left at its smallest (26 px cells, the caption
-       wrapped to the grid's width), beside the pads' small button on the right. */
+       wrapped to the grid's width), beside the pads' small button on the right; a large
+       screen (12 × 9) scrolls in it rather than cover the whole view. */
     rt-screen-preview {
       width: min-content;
       min-width: 0;
       max-width: calc(100% - 90px);
+      max-height: 55%;
+    }
+    /* Below the view's top bar, which the gizmo's option buttons make two rows high. */
+    :host([gizmo-options]) .view-legend,
+    :host([gizmo-options]) rt-ray-debugger:not([open]) {
+      top: 100px;
     }
     /* Unfolded, the pads need the view's lower part: the image steps aside (its place kept, so the view's framing stays). */
     :host([pads-open]) rt-screen-preview {

@@ -151,6 +151,9 @@ export class RtLab extends LitElement {
 
   protected override willUpdate(changed: PropertyValues<this>): void {
     this.loadOnDemandPanels();
+    // The gizmo's option buttons make the view's top bar two rows high in a small view (lab-compact.css.ts).
+    const { gizmo } = levelPanels(this.level());
+    this.toggleAttribute('gizmo-options', gizmo === undefined || gizmo.includes('space') || gizmo.includes('snap'));
     if (changed.has('assignment') && changed.get('assignment') !== undefined && this.isConnected) this.game.start();
     if (changed.has('sharedScene') && this.sharedScene) this.game.openSharedScene(this.sharedScene);
     this.closeRenderWindowWhenInTheWay();
