@@ -34,7 +34,7 @@ async function expectLaidOut(page: Page, shown: 'all' | 'tasks' | 'panels'): Pro
     for (const box of boxes) expect(inside(box, width, height), JSON.stringify(box)).toBe(true);
     expect(await page.evaluate(() => document.documentElement.scrollHeight)).toBeLessThanOrEqual(height);
   }
-  // The view's buttons that are shown stay inside the view and do not cover one another, nor the camera's image.
+  // The view's buttons that are shown stay inside the view and do not cover one another, nor the camera's image, the ray legend or the debugger's button.
   const view = (await page.locator('rt-scene-view').boundingBox())!;
   const visibleBoxes = (selector: string) =>
     page.locator(selector).evaluateAll((elements) =>
@@ -45,7 +45,10 @@ async function expectLaidOut(page: Page, shown: 'all' | 'tasks' | 'panels'): Pro
     );
   const buttons = await visibleBoxes('rt-view-toolbar button');
   for (const button of buttons) expect(button.x >= view.x - 1 && button.x + button.width <= view.x + view.width + 1, JSON.stringify(button)).toBe(true);
-  const groups = [...(await visibleBoxes('rt-view-toolbar [role=group], rt-view-toolbar .group, rt-view-toolbar .pads-toggle')), ...(await visibleBoxes('rt-screen-preview'))];
+  const groups = [
+    ...(await visibleBoxes('rt-view-toolbar [role=group], rt-view-toolbar .group, rt-view-toolbar .pads-toggle')),
+    ...(await visibleBoxes('rt-screen-preview, .view-legend, rt-ray-debugger:not([open])')),
+  ];
   for (const [i, a] of groups.entries()) for (const b of groups.slice(i + 1)) expect(overlap(a, b), `${JSON.stringify(a)} ${JSON.stringify(b)}`).toBe(false);
 }
 
@@ -216,6 +219,13 @@ test.describe('a phone on its side', () => {
     await current(page).getByRole('button', { name: 'Next' }).tap();
     await expectViewAndCurrentTask(page);
     await page.screenshot({ path: 'test-results/screens/layout-phone-landscape-level-3.png' });
+    // Unfolded, the pads take the view's lower part: the camera's image steps aside until they fold again.
+    const image = page.locator('rt-screen-preview');
+    await page.locator('rt-view-toolbar [data-command="view-pads"]').tap();
+    await expect(page.locator('rt-view-toolbar [data-command="orbit-left"]')).toBeVisible();
+    await expect(image).toBeHidden();
+    await page.locator('rt-view-toolbar [data-command="view-pads"]').tap();
+    await expect(image).toBeVisible();
   });
 });
 
@@ -279,5 +289,13 @@ test.describe('200 % zoom', () => {
     await expectStatus(page, 'Paint the ball', 'done');
     await expectViewAndCurrentTask(page);
     expect(errors).toEqual([]);
+  });
+
+  test('the free lab at 200 %: every panel beside the view, its buttons, image and debugger apart', async ({ page }) => {
+    await page.goto('./#free-lab');
+    await expect(page.locator('rt-screen-preview').getByRole('button', { name: 'Pixel 0, 0', exact: true })).toBeVisible();
+    await expectLaidOut(page, 'panels');
+    await expect(page.locator('[data-command="show-panels"]')).toBeHidden();
+    await page.screenshot({ path: 'test-results/screens/layout-zoom-200-free-lab.png' });
   });
 });

@@ -40,6 +40,7 @@ import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-v
 import { keptRays, type Thinning, thinningOf } from './ray-budget.ts';
 import { flattenRays } from './flat-rays.ts';
 import { FILLED_GAP_KEYS, RAY_COLOR_KEYS, RAY_DASHES, STOPPED_KEYS } from './ray-palette.ts';
+import { timeStripe } from './time-colors.ts';
 
 /** Instances allocated at first; the buffers double from there as needed. */
 const INITIAL_CAPACITY = 256;
@@ -383,8 +384,11 @@ export class RayPool implements RayLayer {
       growth[i * 2 + 1] = list.length[i];
       if (dash && arrowAt && stop) {
         const key = list.colorKey[i];
-        dash[i * 2] = DASHES_BY_KEY[key * 2];
-        dash[i * 2 + 1] = DASHES_BY_KEY[key * 2 + 1];
+        if (list.moment[i] >= 0) timeStripe(list.moment[i], dash, i * 2);
+        else {
+          dash[i * 2] = DASHES_BY_KEY[key * 2];
+          dash[i * 2 + 1] = DASHES_BY_KEY[key * 2 + 1];
+        }
         arrowAt[i] = ARROW_AT_BY_KEY[key];
         stop[i] = STOP_BY_KEY[key];
       }

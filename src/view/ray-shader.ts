@@ -16,7 +16,9 @@
  *   canvas height in CSS px, set before each draw);
  * - `aDash` = (dash, gap) in metres along a ray (0: solid; ray-palette.ts RAY_DASHES):
  *   the fragment shader discards the gaps, measured from the ray's start; a negative gap is
- *   painted GAP_FILL instead (FILLED_GAP_KEYS: the blocked shadow ray's light stripes).
+ *   painted GAP_FILL instead (FILLED_GAP_KEYS: the blocked shadow ray's light stripes). A ray
+ *   coloured by time has (−(1 + τ), period) instead (time-colors.ts timeStripe): it keeps only
+ *   the stripes a quarter period long that start τ of the way into each period.
  *
  * Two variants draw one pixel's rays more plainly (ray-extras.ts), from the cylinders' own
  * instances: `arrow` puts an arrowhead of a fixed size on screen along each ray, pointing the
@@ -28,6 +30,7 @@
  */
 import { DoubleSide, GreaterDepth, MeshBasicMaterial, Vector2, type WebGLProgramParametersWithUniforms } from 'three';
 import { GAP_FILL, hexToColor, type RayColorKey } from './ray-palette.ts';
+import { TIME_STRIPE_SHARE } from './time-colors.ts';
 
 export const ALPHA_ATTRIBUTE = 'aAlpha';
 export const GROWTH_ATTRIBUTE = 'aGrowth';
@@ -154,7 +157,9 @@ diffuseColor.a *= vRayAlpha;
 diffuseColor.a *= ${HIDDEN_ALPHA.toFixed(2)};
 #endif
 #if !defined(RAY_CONE) && !defined(RAY_ARROW) && !defined(RAY_STOP)
-if (vRayDash.x > 0.0 && mod(vRayAlong, vRayDash.x + abs(vRayDash.y)) > vRayDash.x) {
+if (vRayDash.x < 0.0) {
+  if (fract(vRayAlong / vRayDash.y + vRayDash.x + 1.0) > ${TIME_STRIPE_SHARE.toFixed(2)}) discard;
+} else if (vRayDash.x > 0.0 && mod(vRayAlong, vRayDash.x + abs(vRayDash.y)) > vRayDash.x) {
   if (vRayDash.y >= 0.0) discard;
   diffuseColor.rgb = vec3(${hexToColor(GAP_FILL).map((c) => c.toFixed(4)).join(', ')});
 }

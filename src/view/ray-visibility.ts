@@ -62,6 +62,8 @@ export class SegmentList {
   start = new Float32Array(0);
   /** Index into RAY_COLOR_KEYS: the legend entry it is drawn as. */
   colorKey = new Uint8Array(0);
+  /** Coloured by time: the ray's moment τ in [0, 1), where its stripes sit (time-colors.ts, timeStripe); −1 when not. */
+  moment = new Float32Array(0);
   /** The pixel it belongs to, as y · columns + x. */
   pixel = new Int32Array(0);
   /** Cones only: the four corners of the base (the light, or across a glossy fan), 12 floats per cone (in RayNode.corners order). */
@@ -93,6 +95,7 @@ export class SegmentList {
     this.alpha = resized(this.alpha, capacity);
     this.start = resized(this.start, capacity);
     this.colorKey = resized(this.colorKey, capacity);
+    this.moment = resized(this.moment, capacity);
     this.pixel = resized(this.pixel, capacity);
     if (this.withCorners) this.corners = resized(this.corners, capacity * 12);
     return i;
@@ -141,7 +144,9 @@ const DARKEN: RayStyle = { fadeTo: [0, 0, 0] };
  * - alpha = 1 − transparency · (1 − MIN_ALPHA); radius fixed, or
  *   lerp(minRadius, maxRadius, contribution), which also works with min > max.
  * - colorByTime: a ray under a lens/time ray (distribution-effects §3) takes its time's
- *   colour (time-colors.ts) instead of its type's; rays without a time keep theirs.
+ *   colour (time-colors.ts) instead of its type's, and is drawn in stripes at its moment's
+ *   place (`moment`), so the rays of several moments that run along one line show every
+ *   moment's colour; rays without a time keep theirs.
  * - `kept`, a budget's choice while the learner edits (ray-budget.ts): a ray it leaves out
  *   (0, by its index in the flattened screen) is not drawn, nor its subtree.
  * - area-light / area-shadow nodes become cones from the hit point to the light's corners;
@@ -254,6 +259,7 @@ class VisibilityPass {
     const time = flat.time[i];
     const byTime = options.colorByTime && time >= 0;
     if (byTime) timeColor(time, this.timeRgb);
+    list.moment[j] = byTime ? time : -1;
     for (let axis = 0; axis < 3; axis++) {
       const base = byTime ? this.timeRgb[axis] : colors[key * 3 + axis];
       list.color[j * 3 + axis] = fadeTo[axis] + (base - fadeTo[axis]) * tone;

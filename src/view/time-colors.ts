@@ -30,3 +30,24 @@ export function timeGradient(): string {
   const stops = VIRIDIS.map(([r, g, b], i) => `rgb(${Math.round(r * 255)} ${Math.round(g * 255)} ${Math.round(b * 255)}) ${(100 * i) / last}%`);
   return `linear-gradient(90deg, ${stops.join(', ')})`;
 }
+
+/**
+ * Metres along a ray in which every moment's stripe comes once. The rays of k moments often
+ * run along one line (level 20: a pixel the moving ball never covers at its 4 moments), and
+ * drawn on top of one another only the last one's colour showed. Each is drawn in stripes a
+ * quarter of this long, placed by its moment τ: at the grid pattern's 4 moments the four
+ * colours take turns along the line; a ray on its own is dashed in its colour.
+ */
+export const TIME_STRIPE_PERIOD = 0.4;
+
+/** The share of each period a moment's stripe covers. */
+export const TIME_STRIPE_SHARE = 0.25;
+
+/**
+ * A time ray's stripes in the rays' dash attribute (ray-shader.ts aDash): a negative first
+ * number marks stripes, −(1 + τ), the second is the period. A type's dash is (dash, gap) ≥ 0.
+ */
+export function timeStripe(moment: number, out: Float32Array, at: number): void {
+  out[at] = -(1 + Math.min(Math.max(moment, 0), 0.999999));
+  out[at + 1] = TIME_STRIPE_PERIOD;
+}

@@ -67,11 +67,22 @@ const compact = css`
       contain: size;
     }
     /* The camera's image in the view's lower left at its smallest (26 px cells, the caption
-       wrapped to the grid's width), beside the pads' small button on the right. */
+       wrapped to the grid's width), beside the pads' small button on the right; a large
+       screen (12 × 9) scrolls in it rather than cover the whole view. */
     rt-screen-preview {
       width: min-content;
       min-width: 0;
       max-width: calc(100% - 90px);
+      max-height: 55%;
+    }
+    /* Below the view's top bar, which the gizmo's option buttons make two rows high. */
+    :host([gizmo-options]) .view-legend,
+    :host([gizmo-options]) rt-ray-debugger:not([open]) {
+      top: 100px;
+    }
+    /* Unfolded, the pads need the view's lower part: the image steps aside (its place kept, so the view's framing stays). */
+    :host([pads-open]) rt-screen-preview {
+      visibility: hidden;
     }
     rt-render-window {
       position: fixed;
@@ -178,8 +189,9 @@ const sideSwitch = css`
     padding: 4px var(--rt-space);
     background: var(--rt-surface);
   }
+  /* Each button as wide as its name, the rest shared: a long name ("Scène en instellingen") keeps to one line. */
   .side-switch button {
-    flex: 1;
+    flex: 1 1 auto;
     font: inherit;
     font-size: 0.875rem;
     min-height: var(--rt-target);

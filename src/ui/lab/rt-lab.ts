@@ -152,6 +152,9 @@ export class RtLab extends LitElement {
 
   protected override willUpdate(changed: PropertyValues<this>): void {
     this.loadOnDemandPanels();
+    // The gizmo's option buttons make the view's top bar two rows high in a small view (lab-compact.css.ts).
+    const { gizmo } = levelPanels(this.level());
+    this.toggleAttribute('gizmo-options', gizmo === undefined || gizmo.includes('space') || gizmo.includes('snap'));
     // Another assignment starts the game again. The one it connected with has started it, and the
     // same assignment decoded again (a new object) must not: a second start would lose what the
     // first one read (that the saved record was damaged, say).
@@ -337,6 +340,7 @@ export class RtLab extends LitElement {
           @ray-hover=${(event: CustomEvent<RayHoverDetail | null>) => (this.hover = event.detail)}
           @view-message=${(event: CustomEvent<string>) => this.toast(event.detail, 'error')}
           @view-ready=${this.onViewReady}
+          @view-pads=${(event: CustomEvent<boolean>) => this.toggleAttribute('pads-open', event.detail)}
         ></rt-scene-view>
         ${shows('screen-preview') ? html`<rt-screen-preview .rays=${this.services.screenRays}></rt-screen-preview>` : nothing}
         ${viewLegend && state.rays.showRays ? viewLegendBox(this.legendOpen, () => (this.legendOpen = !this.legendOpen)) : nothing}

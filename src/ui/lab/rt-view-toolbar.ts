@@ -4,7 +4,7 @@ import { DEFAULT_GIZMO, type GizmoOptions } from '../../lab-state/lab-state.ts';
 import { GIZMO_MODES, type GizmoMode } from '../../view/gizmo-modes.ts';
 import type { ViewCommand } from '../../view/view-commands.ts';
 import { GuideHostController } from './guide-host.ts';
-import { foldedPadsStyles } from './folded-pads.css.ts';
+import { smallViewToolbarStyles } from './toolbar-small-view.css.ts';
 
 /** How far one button press moves the view (the keys move less, and repeat). */
 const ORBIT_STEP_DEG = 15;
@@ -16,7 +16,8 @@ const ZOOM_STEP = 1.25;
  * scale), local/world axes, snapping, the flight to the ray tracer's camera and help (top);
  * orbit, pan and zoom pads for trackpads and touch screens without a wheel (bottom right).
  *
- * Every button has a visible label or a labelled group, a tooltip naming its key, and is a
+ * Every button has a visible label or a labelled group (in a small view the camera and help
+ * buttons show their icons, their names read out), a tooltip naming its key, and is a
  * real <button>; toggles say their state with aria-pressed and a check mark, not colour alone.
  *
  * `gizmoControls` names the gizmo buttons a level shows (lab-controls.ts: translate, rotate,
@@ -24,6 +25,7 @@ const ZOOM_STEP = 1.25;
  * view.fly-to-camera, view.help; the pads view.orbit-buttons, view.pan-buttons, view.zoom-buttons).
  *
  * @fires view-command - CustomEvent<ViewCommand>: a button asks the view to do something.
+ * @fires view-pads - CustomEvent<boolean>: a small view's pads were unfolded (true) or folded.
  */
 export class RtViewToolbar extends LitElement {
   static override properties = {
@@ -176,7 +178,7 @@ export class RtViewToolbar extends LitElement {
       background: var(--rt-muted);
     }
   `,
-    foldedPadsStyles,
+    smallViewToolbarStyles,
   ];
 
   /** The store's gizmo options: the pressed mode and toggles. */
@@ -189,7 +191,7 @@ export class RtViewToolbar extends LitElement {
   declare pixelSelected: boolean;
   /** The gizmo buttons on show (undefined: all). */
   declare gizmoControls: readonly string[] | undefined;
-  /** In a small view, whether the orbit, pan and zoom pads are unfolded (folded-pads.css.ts). */
+  /** In a small view, whether the orbit, pan and zoom pads are unfolded (toolbar-small-view.css.ts). */
   declare private padsOpen: boolean;
 
   constructor() {
@@ -226,8 +228,10 @@ export class RtViewToolbar extends LitElement {
     ].filter((button) => button !== nothing);
     return html`
       <div class="bar top">
-        ${modes.length > 0 ? html`<div class="group" role="group" aria-label=${msg('Gizmo mode')}>${modes}</div>` : nothing}
-        ${options.length > 0 ? html`<div class="group" role="group" aria-label=${msg('Gizmo options')}>${options}</div>` : nothing}
+        <div class="start">
+          ${modes.length > 0 ? html`<div class="group" role="group" aria-label=${msg('Gizmo mode')}>${modes}</div>` : nothing}
+          ${options.length > 0 ? html`<div class="group" role="group" aria-label=${msg('Gizmo options')}>${options}</div>` : nothing}
+        </div>
         <div class="group end">
           ${this.pixelSelected
             ? html`<button
@@ -237,7 +241,7 @@ export class RtViewToolbar extends LitElement {
                 @click=${() => this.send({ kind: 'show-pixel-rays' })}
               >
                 ${icon(svg`<path d="M3 6V3h3M14 3h3v3M17 14v3h-3M6 17H3v-3" /><circle cx="10" cy="10" r="2.5" />`)}
-                <span>${msg('Show its rays')}</span>
+                <span class="label">${msg('Show its rays')}</span>
               </button>`
             : nothing}
           <button
@@ -247,11 +251,11 @@ export class RtViewToolbar extends LitElement {
             @click=${() => this.send({ kind: 'fly' })}
           >
             ${icon(this.atCamera ? svg`<path d="M8 4 3 10l5 6M3 10h14" />` : CAMERA)}
-            <span>${this.atCamera ? msg('Back to my view') : msg('Camera view')}</span>
+            <span class="label">${this.atCamera ? msg('Back to my view') : msg('Camera view')}</span>
           </button>
           <button data-command="help" data-guide="view.help" title=${msg('All keys and gestures (?)')} @click=${() => this.send({ kind: 'help' })}>
             ${icon(svg`<circle cx="10" cy="10" r="7.5" /><path d="M7.6 7.8a2.5 2.5 0 1 1 3.4 2.3c-.7.3-1 .8-1 1.5v.6" /><circle cx="10" cy="14.6" r=".4" />`)}
-            <span>${msg('Help')}</span>
+            <span class="label">${msg('Help')}</span>
           </button>
         </div>
       </div>
@@ -290,7 +294,7 @@ export class RtViewToolbar extends LitElement {
           aria-controls="pads"
           aria-label=${msg('Orbit, pan, zoom')}
           title=${msg('Show or hide the buttons that orbit, pan and zoom the view')}
-          @click=${() => (this.padsOpen = !this.padsOpen)}
+          @click=${this.togglePads}
         >
           ${icon(svg`<path d="M10 2.5v15M2.5 10h15M7.5 5 10 2.5 12.5 5M7.5 15l2.5 2.5 2.5-2.5M5 7.5 2.5 10 5 12.5M15 7.5l2.5 2.5-2.5 2.5" />`)}
         </button>
@@ -347,6 +351,12 @@ export class RtViewToolbar extends LitElement {
       <span class="caption" aria-hidden="true">${caption}</span>
     </div>`;
   }
+
+  /** Folds the pads in or out; the lab hears it (`view-pads`), to keep the camera's image from covering them. */
+  private readonly togglePads = () => {
+    this.padsOpen = !this.padsOpen;
+    this.dispatchEvent(new CustomEvent<boolean>('view-pads', { detail: this.padsOpen, bubbles: true, composed: true }));
+  };
 
   private send(command: ViewCommand): void {
     this.dispatchEvent(new CustomEvent<ViewCommand>('view-command', { detail: command, bubbles: true, composed: true }));
