@@ -34,6 +34,6 @@ export async function readModelText(name: string, dir: string): Promise<string> 
     return await readFile(path, 'utf8');
   } catch (error) {
     const reason = error instanceof Error ? error.message : String(error);
-    throw new Error(`mesh "${name}": cannot read ${path} (${reason})`);
+    throw new Error(`mesh "${name}": cannot read ${path} (${reason})`, { cause: error });
   }
 }

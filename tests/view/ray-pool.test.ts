@@ -329,7 +329,7 @@ describe('RayPool growth animation', () => {
     // An arrowhead's tip sits where its instance says (a ray's past the middle, a normal's at the end).
     expect(shader.vertexShader).toMatch(/#if defined\(RAY_ARROW\)\nattribute float aArrowAt;/);
     expect(shader.vertexShader).toContain(`vec4(0.0, 0.0, ${ARROW_AT_ATTRIBUTE} * rayGrown, 1.0)`);
-    expect(shader.fragmentShader).toMatch(/mod\(vRayAlong, vRayDash\.x \+ abs\(vRayDash\.y\)\) > vRayDash\.x\) \{\n  if \(vRayDash\.y >= 0\.0\) discard;/);
+    expect(shader.fragmentShader).toMatch(/mod\(vRayAlong, vRayDash\.x \+ abs\(vRayDash\.y\)\) > vRayDash\.x\) \{\n {2}if \(vRayDash\.y >= 0\.0\) discard;/);
     // A stop plate sits at its ray's end, shown only where the instance says and once the ray has grown there.
     expect(shader.vertexShader).toMatch(/#if defined\(RAY_STOP\)\nattribute float aStop;/);
     expect(shader.vertexShader).toContain(`float stopShown = ${STOP_ATTRIBUTE} * step(1.0, rayGrown);`);

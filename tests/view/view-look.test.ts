@@ -60,7 +60,7 @@ describe('following a declared look', () => {
   });
 
   it('frames a pixel\'s rays when their trace comes in, and again for a newer one, until the learner moves', () => {
-    let time = 0;
+    const time = 0;
     const { fake, moves, setRays } = stage();
     const follower = new LookFollower(fake, () => time);
     follower.follow({ frame: ['pixel-rays'] }, true);
