@@ -1,4 +1,5 @@
 import { css } from 'lit';
+import { visuallyHidden } from '../controls/visually-hidden.css.ts';
 
 /**
  * Small screens: a phone, or a laptop at 200 % zoom (1366×768 lays out 683×384 CSS px). The
@@ -33,12 +34,7 @@ const compact = css`
       padding: 0 8px;
     }
     header h1 {
-      position: absolute;
-      width: 1px;
-      height: 1px;
-      overflow: hidden;
-      clip-path: inset(50%);
-      white-space: nowrap;
+      ${visuallyHidden}
     }
     .side-switch {
       display: flex;

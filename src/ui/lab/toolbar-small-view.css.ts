@@ -1,4 +1,5 @@
 import { css } from 'lit';
+import { visuallyHidden } from '../controls/visually-hidden.css.ts';
 
 /**
  * rt-view-toolbar in a small view (a phone, a laptop at 200 % zoom, a tablet's middle
@@ -40,12 +41,7 @@ export const smallViewToolbarStyles = css`
       padding: 0 6px;
     }
     .top .end .label {
-      position: absolute;
-      width: 1px;
-      height: 1px;
-      overflow: hidden;
-      clip-path: inset(50%);
-      white-space: nowrap;
+      ${visuallyHidden}
     }
     .bottom-right {
       left: auto;
