@@ -55,14 +55,17 @@ async function expectLaidOut(page: Page, shown: 'all' | 'tasks' | 'panels'): Pro
 /** The current task's title and text, and the 3D view (at least 320×200), all on screen at once and apart. */
 async function expectViewAndCurrentTask(page: Page): Promise<void> {
   const { width, height } = page.viewportSize()!;
-  const view = (await page.locator('rt-scene-view').boundingBox())!;
-  const card = page.locator('rt-task-card[status="current"]');
-  const title = (await card.locator('.head .title').boundingBox())!;
-  const text = (await card.locator('.body > p').first().boundingBox())!;
-  expect(view.width).toBeGreaterThanOrEqual(320);
-  expect(view.height).toBeGreaterThanOrEqual(200);
-  for (const box of [view, title, text]) expect(inside(box, width, height), JSON.stringify({ box, width, height })).toBe(true);
-  expect([overlap(view, title), overlap(view, text)]).toEqual([false, false]);
+  // The task list scrolls its new current task into view in the frame after it renders (rt-quest-panel.ts).
+  await expect(async () => {
+    const view = (await page.locator('rt-scene-view').boundingBox())!;
+    const card = page.locator('rt-task-card[status="current"]');
+    const title = (await card.locator('.head .title').boundingBox())!;
+    const text = (await card.locator('.body > p').first().boundingBox())!;
+    expect(view.width).toBeGreaterThanOrEqual(320);
+    expect(view.height).toBeGreaterThanOrEqual(200);
+    for (const box of [view, title, text]) expect(inside(box, width, height), JSON.stringify({ box, width, height })).toBe(true);
+    expect([overlap(view, title), overlap(view, text)]).toEqual([false, false]);
+  }).toPass({ timeout: 5_000 });
 }
 
 async function expectTouchTargets(page: Page): Promise<void> {

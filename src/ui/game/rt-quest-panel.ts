@@ -8,7 +8,7 @@ import { levelText } from './level-text.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 import './rt-task-card.ts';
 import { scrollBoxToTop, scrollInBox } from './scroll-in-box.ts';
-import { type TaskFocus, taskScroll } from './task-scroll.ts';
+import { type TaskFocus, type TaskScroll, taskScroll } from './task-scroll.ts';
 
 /**
  * @summary The task column of a level: its title and intro (with "Explain more"), the
@@ -84,6 +84,14 @@ export class RtQuestPanel extends LitElement {
   declare private returned: boolean;
   /** The level and the current task (or revealed prediction) last brought into view. */
   private shown: TaskFocus = { level: null, task: null };
+  /** The scroll asked for while the panel was hidden, done once it is shown. */
+  private pendingScroll: TaskScroll | null = null;
+  private readonly shownWatch = new ResizeObserver(() => {
+    if (this.pendingScroll === null || this.getClientRects().length === 0) return;
+    this.bringIntoView(this.pendingScroll);
+    this.pendingScroll = null;
+  });
+
 
   constructor() {
     super();
@@ -101,11 +109,29 @@ export class RtQuestPanel extends LitElement {
     }
   }
 
+  override connectedCallback(): void {
+    super.connectedCallback();
+    this.shownWatch.observe(this);
+  }
+
+  override disconnectedCallback(): void {
+    super.disconnectedCallback();
+    this.shownWatch.disconnect();
+  }
+
   protected override updated(): void {
     const view = this.view;
     const now: TaskFocus = { level: view?.level.id ?? null, task: (view?.revealing ?? view?.current)?.task.id ?? null };
     const scroll = taskScroll(this.shown, now);
     this.shown = now;
+    if (scroll.kind === 'stay') return;
+    // Hidden (a small screen's column shows the panels instead), nothing can be measured or
+    // scrolled: it is done when the tasks are shown again.
+    if (this.getClientRects().length === 0) this.pendingScroll = scroll;
+    else this.bringIntoView(scroll);
+  }
+
+  private bringIntoView(scroll: TaskScroll): void {
     if (scroll.kind === 'top') {
       // A level opens at its title, with nothing of the page left selected from the last one.
       document.getSelection()?.removeAllRanges();
