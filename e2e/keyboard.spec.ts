@@ -24,7 +24,7 @@ async function press(target: Locator, ...keys: string[]): Promise<void> {
 }
 
 const canvas = (page: Page) => page.locator('rt-scene-view canvas');
-const keyNote = (page: Page) => page.locator('rt-scene-view p.note');
+const keyNote = (page: Page) => page.locator('rt-scene-view p.note[role="status"]');
 
 test('level 1 by keyboard only: every mandatory task done, Tab leaves the view, focus comes back from the render window, the help and the map', async ({ page }) => {
   const errors = collectErrors(page);
