@@ -10,7 +10,8 @@
  * round of a lens scene, 0.008 to 0.018 from the fourth). From that steady pair on, rounds
  * add up until they have taken MEASURED_MS, and together they price a sample: one round of
  * 0.15 s caught the machine's other work in a burst or a lull, and priced one render at
- * 7.6 µs a sample where renders of the scene took 11 (at most MAX_PROBE_ROUNDS rounds in all).
+ * 7.6 µs a sample where renders of the scene took 11 (at most MAX_PROBE_ROUNDS rounds in all,
+ * and after the second none begun after MAX_PROBE_MS).
  */
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import type { Scene } from '../scene/scene.ts';
@@ -31,6 +32,13 @@ const STEADY = 1.15;
 /** The steady rounds' wall time that prices a sample. */
 const MEASURED_MS = 600;
 const MAX_PROBE_ROUNDS = 10;
+/**
+ * The longest the learner waits for "Estimating how long it takes…": on a machine busy with
+ * other work each round takes many times the model's guess (in the project's browser tests
+ * with nine other programs running, ten rounds took over 20 s); then the rounds so far price
+ * the sample (two at least).
+ */
+const MAX_PROBE_MS = 3000;
 
 /**
  * Renders the model puts under this are not probed: they start at once. The model's rays
@@ -61,7 +69,9 @@ export async function probeSampleCost(pool: RenderPool, scene: Scene, meshes: Me
   const rounds: SampleCost[] = [];
   /** Where the steady rounds begin, once two in a row took about as long. */
   let steadyFrom = -1;
-  while (rounds.length < MAX_PROBE_ROUNDS) {
+  const started = performance.now();
+  // Two rounds at least, to see whether the pace is steady.
+  while (rounds.length < 2 || (rounds.length < MAX_PROBE_ROUNDS && performance.now() - started < MAX_PROBE_MS)) {
     if (signal?.aborted) return null;
     const result = await pool.render(scene, meshes, { width: probeWidth, height: probeHeight, preview: false, oneSample: true }).done;
     if (result.cancelled) return null;
