@@ -1,5 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { goalSchema, kindOfGoal } from '../src/quest/goal.ts';
 import { LAB_CONTROLS, type LabPanel } from '../src/quest/lab-controls.ts';
 import type { DeclaredView } from '../src/lab-state/lab-action.ts';
 import type { TaskEvidence } from '../src/quest/task-evidence-schema.ts';
@@ -105,7 +106,7 @@ async function expectHitWhereRingPoints(page: Page, where: string, target: strin
 /** Climbs the current task's hint ladder to "Show me", checking the ring on the way, then lets the app do the task. */
 async function solveCurrentTask(page: Page, level: LevelFile, task: LevelTask): Promise<void> {
   const card = current(page);
-  if ('info' in task.goal) {
+  if (kindOfGoal(goalSchema.parse(task.goal)) === 'info') {
     await card.getByRole('button', { name: 'Next' }).click();
     return;
   }

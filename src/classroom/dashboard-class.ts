@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { attemptRows, csvHeader, ID_COLUMNS } from './attempt-rows.ts';
+import { ID_COLUMNS } from './attempt-columns.ts';
+import { attemptRows, csvHeader } from './attempt-rows.ts';
 import { csvTable } from './csv-text.ts';
 import { readExportFile } from './dashboard-read-file.ts';
 import type { ClassLearner } from './dashboard-learners.ts';

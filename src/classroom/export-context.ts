@@ -2,7 +2,7 @@ import { version } from '../../package.json';
 import type { Progress } from '../quest/progress.ts';
 import type { Assignment } from './assignment.ts';
 import { assignmentId } from './assignment-id.ts';
-import type { AttemptOwner } from './attempt-rows.ts';
+import type { AttemptOwner } from './attempt-columns.ts';
 import { learnerId } from './learner-identity.ts';
 import type { SurveySubmission } from './survey-answers.ts';
 

@@ -1,5 +1,6 @@
 import { readLog } from './task-attempts.ts';
-import { attemptRows, csvHeader, ID_COLUMNS } from './attempt-rows.ts';
+import { ID_COLUMNS } from './attempt-columns.ts';
+import { attemptRows, csvHeader } from './attempt-rows.ts';
 import { csvTable } from './csv-text.ts';
 import { exportOwner, type ExportInput } from './export-context.ts';
 import { surveyQuestionIds } from './survey-columns.ts';

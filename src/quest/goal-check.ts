@@ -21,7 +21,7 @@ export const NO_EVENTS: EventTally = new Map();
 export function tallyAction(goal: Goal, tally: EventTally, state: LabState, action: LabAction): EventTally {
   let next: Map<EventGoal, number> | undefined;
   for (const { goal: part } of goalParts(goal)) {
-    if (!('event' in part) || !eventMatches(part, state, action)) continue;
+    if (part.kind !== 'event' || !eventMatches(part, state, action)) continue;
     next ??= new Map(tally);
     next.set(part, (next.get(part) ?? 0) + 1);
   }
@@ -42,11 +42,25 @@ export function eventMatches(goal: EventGoal, state: LabState, action: LabAction
  * engine's `predict` and `next`.
  */
 export function checkGoal(goal: Goal, state: LabState, tally: EventTally): boolean {
-  if ('event' in goal) return (tally.get(goal) ?? 0) >= (goal.times ?? 1);
-  if ('state' in goal) return compare(readPath(state, goal.state), goal.op, goal.value);
-  if ('all' in goal) return goal.all.every((part) => checkGoal(part, state, tally));
-  if ('any' in goal) return goal.any.some((part) => checkGoal(part, state, tally));
-  return false;
+  switch (goal.kind) {
+    case 'event':
+      return (tally.get(goal) ?? 0) >= (goal.times ?? 1);
+    case 'state':
+      return compare(readPath(state, goal.state), goal.op, goal.value);
+    case 'all':
+      return goal.all.every((part) => checkGoal(part, state, tally));
+    case 'any':
+      return goal.any.some((part) => checkGoal(part, state, tally));
+    case 'quiz':
+    case 'estimate':
+    case 'picture':
+    case 'info':
+      return false;
+    default: {
+      const never: never = goal;
+      return never;
+    }
+  }
 }
 
 /**
@@ -56,9 +70,24 @@ export function checkGoal(goal: Goal, state: LabState, tally: EventTally): boole
  */
 export function touchesGoal(goal: Goal, before: LabState | null, state: LabState, action: LabAction): boolean {
   return goalParts(goal).some(({ goal: part }) => {
-    if ('event' in part) return action.type === part.event;
-    if ('state' in part) return before !== null && readPath(before, part.state) !== readPath(state, part.state);
-    return false;
+    switch (part.kind) {
+      case 'event':
+        return action.type === part.event;
+      case 'state':
+        return before !== null && readPath(before, part.state) !== readPath(state, part.state);
+      // A combination is a step towards it through its parts, which goalParts lists too.
+      case 'all':
+      case 'any':
+      case 'quiz':
+      case 'estimate':
+      case 'picture':
+      case 'info':
+        return false;
+      default: {
+        const never: never = part;
+        return never;
+      }
+    }
   });
 }
 
@@ -67,13 +96,31 @@ export type Prediction = { choice: number } | { value: number };
 
 /** Whether the prediction is right: the quiz's answer, or a number within the estimate's tolerance. */
 export function isRightPrediction(goal: PredictionGoal, prediction: Prediction): boolean {
-  if (!('estimate' in goal)) return 'choice' in prediction && prediction.choice === predictionParts(goal).answer;
-  // A little slack for the decimal the learner typed (0.1 + 0.2 is not 0.3 in binary).
-  return 'value' in prediction && Math.abs(prediction.value - goal.estimate.answer) <= goal.estimate.tolerance + 1e-9;
+  switch (goal.kind) {
+    case 'quiz':
+    case 'picture':
+      return 'choice' in prediction && prediction.choice === predictionParts(goal).answer;
+    case 'estimate':
+      // A little slack for the decimal the learner typed (0.1 + 0.2 is not 0.3 in binary).
+      return 'value' in prediction && Math.abs(prediction.value - goal.estimate.answer) <= goal.estimate.tolerance + 1e-9;
+    default: {
+      const never: never = goal;
+      return never;
+    }
+  }
 }
 
 /** Whether a prediction fits the goal's form (a choice for a quiz, a finite number for an estimate). */
 export function fitsGoal(goal: PredictionGoal, prediction: Prediction): boolean {
-  if (!('estimate' in goal)) return 'choice' in prediction && Number.isInteger(prediction.choice) && prediction.choice >= 0 && prediction.choice < predictionParts(goal).choices;
-  return 'value' in prediction && Number.isFinite(prediction.value);
+  switch (goal.kind) {
+    case 'quiz':
+    case 'picture':
+      return 'choice' in prediction && Number.isInteger(prediction.choice) && prediction.choice >= 0 && prediction.choice < predictionParts(goal).choices;
+    case 'estimate':
+      return 'value' in prediction && Number.isFinite(prediction.value);
+    default: {
+      const never: never = goal;
+      return never;
+    }
+  }
 }

@@ -11,8 +11,12 @@ import { parsePath } from './state-path.ts';
 
 /**
  * What a task asks of the learner, as data (DESIGN.md: a discriminated union, not a pile of
- * booleans). Which field an object has says what kind of goal it is; docs/levels.md has an
- * example of each.
+ * booleans). A level file marks a goal's kind by the one field it has (`{ "event": … }`,
+ * `{ "all": [ … ] }`; docs/levels.md has an example of each); the schema below parses it into
+ * the tagged form the code uses, `{ kind: 'event', event: … }`, so that every place that
+ * tells kinds apart is one `switch (goal.kind)` whose default the compiler checks is
+ * unreachable (`const never: never = goal`), and every walk through nested goals goes
+ * through `children`.
  */
 
 /** Conditions per path, on the state (`where`) or on the action (`with`). */
@@ -21,6 +25,7 @@ export type Conditions = Record<string, JsonValue>;
 /** Done when this action happens (`times` times since the task was shown, default once),
  * with these fields, leaving the state like this. */
 export interface EventGoal {
+  kind: 'event';
   event: LabActionType;
   with?: Conditions;
   where?: Conditions;
@@ -29,6 +34,7 @@ export interface EventGoal {
 
 /** Done while the state holds this value. */
 export interface StateGoal {
+  kind: 'state';
   state: string;
   op: Comparison;
   value: JsonValue;
@@ -36,6 +42,7 @@ export interface StateGoal {
 
 /** Predict, then check: done when answered, right or wrong (the answer is recorded). */
 export interface QuizGoal {
+  kind: 'quiz';
   quiz: { question: LocalizedText; choices: LocalizedText[]; answer: number; explanation?: LocalizedText };
 }
 
@@ -44,6 +51,7 @@ export interface QuizGoal {
  * prediction of spec/challenges.md §1: a pixel's mix, a visible fraction, an attenuation).
  */
 export interface EstimateGoal {
+  kind: 'estimate';
   estimate: { question: LocalizedText; answer: number; tolerance: number; unit?: LocalizedText; explanation?: LocalizedText };
 }
 
@@ -54,16 +62,20 @@ export interface EstimateGoal {
  */
 export type PictureGoal = z.output<typeof pictureGoalSchema>;
 
-/** Read, then press Next. */
+/** Read, then press Next (`{ "info": true }` in a level file). */
 export interface InfoGoal {
-  info: true;
+  kind: 'info';
 }
 
+/** Done while every goal inside is. */
 export interface AllGoal {
+  kind: 'all';
   all: SceneGoal[];
 }
 
+/** Done while at least one goal inside is. */
 export interface AnyGoal {
+  kind: 'any';
   any: SceneGoal[];
 }
 
@@ -73,6 +85,9 @@ export type SceneGoal = EventGoal | StateGoal | AllGoal | AnyGoal;
 /** Quiz, estimate and info goals are answered through the task panel, so they stand alone. */
 export type Goal = SceneGoal | QuizGoal | EstimateGoal | PictureGoal | InfoGoal;
 
+/** Every kind of goal; a level file names it by the field that holds the goal's content. */
+export type GoalKind = Goal['kind'];
+
 /** A prediction the learner makes in the task panel: a choice (of words or pictures) or a number. */
 export type PredictionGoal = QuizGoal | EstimateGoal | PictureGoal;
 
@@ -81,21 +96,62 @@ export const TASK_KINDS = ['info', 'quiz', 'do'] as const;
 export type TaskKind = (typeof TASK_KINDS)[number];
 
 export function kindOfGoal(goal: Goal): TaskKind {
-  if ('info' in goal) return 'info';
-  if ('quiz' in goal || 'estimate' in goal || 'picture' in goal) return 'quiz';
-  return 'do';
+  switch (goal.kind) {
+    case 'info':
+      return 'info';
+    case 'quiz':
+    case 'estimate':
+    case 'picture':
+      return 'quiz';
+    case 'event':
+    case 'state':
+    case 'all':
+    case 'any':
+      return 'do';
+    default: {
+      const never: never = goal;
+      return never;
+    }
+  }
 }
 
 /** The goal as a prediction (a choice or a number), or undefined for a goal done otherwise. */
 export function predictionOf(goal: Goal): PredictionGoal | undefined {
-  return 'quiz' in goal || 'estimate' in goal || 'picture' in goal ? goal : undefined;
+  switch (goal.kind) {
+    case 'quiz':
+    case 'estimate':
+    case 'picture':
+      return goal;
+    case 'info':
+    case 'event':
+    case 'state':
+    case 'all':
+    case 'any':
+      return undefined;
+    default: {
+      const never: never = goal;
+      return never;
+    }
+  }
 }
 
-/** The question, explanation and (for choices) the key of a prediction, whichever form it has. */
+/**
+ * The question, explanation, key and form of a prediction, whichever kind it is: a choice
+ * among `choices` (words or pictures) or, with `choices` 0, a number.
+ */
 export function predictionParts(goal: PredictionGoal): { question: LocalizedText; explanation?: LocalizedText; choices: number; answer: number } {
-  if ('quiz' in goal) return { ...goal.quiz, choices: goal.quiz.choices.length };
-  if ('picture' in goal) return { ...goal.picture, choices: goal.picture.choices.length };
-  return { ...goal.estimate, choices: 0 };
+  switch (goal.kind) {
+    case 'quiz':
+      return { ...goal.quiz, choices: goal.quiz.choices.length };
+    case 'picture':
+      return { ...goal.picture, choices: goal.picture.choices.length };
+    case 'estimate':
+      return { ...goal.estimate, choices: 0 };
+    default: {
+      const never: never = goal;
+      return never;
+    }
+  }
 }
 
 /** What a prediction's explanation is, whichever form it has. */
@@ -129,14 +185,16 @@ const eventGoalSchema = z
         context.addIssue({ code: 'custom', path: ['with', path], input: path, message: `a "${goal.event}" action ${has}` });
       }
     }
-  });
+  })
+  .transform((goal) => ({ kind: 'event' as const, ...goal }));
 
 const stateGoalSchema = z
   .strictObject({ state: pathSyntax, op: z.enum(COMPARISONS), value: z.json() })
   .superRefine((goal, context) => {
     const problem = problemWithComparison(goal.op, goal.value);
     if (problem) context.addIssue({ code: 'custom', path: ['value'], input: goal.value, message: problem });
-  });
+  })
+  .transform((goal) => ({ kind: 'state' as const, ...goal }));
 
 const quizGoalSchema = z.strictObject({
   quiz: z
@@ -151,7 +209,7 @@ const quizGoalSchema = z.strictObject({
         context.addIssue({ code: 'custom', path: ['answer'], input: quiz.answer, message: `must be the position of a choice, 0 to ${quiz.choices.length - 1}` });
       }
     }),
-});
+}).transform((goal) => ({ kind: 'quiz' as const, ...goal }));
 
 const estimateGoalSchema = z.strictObject({
   estimate: z
@@ -162,7 +220,7 @@ const estimateGoalSchema = z.strictObject({
       unit: localizedTextSchema.optional().describe('Shown after the number box, e.g. "m" or "%".'),
       explanation: localizedTextSchema.optional().describe('Shown once the learner has observed the result: why the value is what it is.'),
     }),
-});
+}).transform((goal) => ({ kind: 'estimate' as const, ...goal }));
 
 const pictureGoalSchema = z.strictObject({
   picture: z
@@ -180,20 +238,36 @@ const pictureGoalSchema = z.strictObject({
         context.addIssue({ code: 'custom', path: ['answer'], input: picture.answer, message: `must be the position of a choice, 0 to ${picture.choices.length - 1}` });
       }
     }),
-});
+}).transform((goal) => ({ kind: 'picture' as const, ...goal }));
 
-const infoGoalSchema = z.strictObject({ info: z.literal(true) });
+const infoGoalSchema = z.strictObject({ info: z.literal(true) }).transform((): InfoGoal => ({ kind: 'info' }));
 
 const innerGoals = () => z.array(z.lazy(() => sceneGoalSchema)).min(1);
 
-/** The goal kinds by the field that marks them. */
-const SCENE_GOAL_KINDS: Record<string, z.ZodType<SceneGoal>> = {
+/**
+ * Each kind's schema, under the name of the field that marks it in a level file (which is
+ * also its `kind`). Keyed by the kinds themselves, so a new kind in the union above does
+ * not compile until it has a schema here.
+ */
+const SCENE_GOAL_SCHEMAS: { [Kind in SceneGoal['kind']]: z.ZodType<Extract<SceneGoal, { kind: Kind }>> } = {
   event: eventGoalSchema,
   state: stateGoalSchema,
-  all: z.strictObject({ all: innerGoals() }),
-  any: z.strictObject({ any: innerGoals() }),
+  all: z.strictObject({ all: innerGoals() }).transform((goal) => ({ kind: 'all' as const, ...goal })),
+  any: z.strictObject({ any: innerGoals() }).transform((goal) => ({ kind: 'any' as const, ...goal })),
 };
-const GOAL_KINDS: Record<string, z.ZodType<Goal>> = { ...SCENE_GOAL_KINDS, quiz: quizGoalSchema, estimate: estimateGoalSchema, picture: pictureGoalSchema, info: infoGoalSchema };
+const GOAL_SCHEMAS: { [Kind in GoalKind]: z.ZodType<Extract<Goal, { kind: Kind }>> } = {
+  ...SCENE_GOAL_SCHEMAS,
+  quiz: quizGoalSchema,
+  estimate: estimateGoalSchema,
+  picture: pictureGoalSchema,
+  info: infoGoalSchema,
+};
+
+/** Every goal kind, in the order docs/levels.md lists them. */
+export const GOAL_KINDS = Object.keys(GOAL_SCHEMAS) as GoalKind[];
+
+/** The kinds that are a task's whole goal, never inside `all` or `any`. */
+const STAND_ALONE_KINDS = GOAL_KINDS.filter((kind) => !(kind in SCENE_GOAL_SCHEMAS));
 
 function chooseByField<Output>(kinds: Record<string, z.ZodType<Output>>, standAlone: readonly string[]) {
   const names = Object.keys(kinds);
@@ -208,14 +282,43 @@ function chooseByField<Output>(kinds: Record<string, z.ZodType<Output>>, standAl
   };
 }
 
-const sceneGoalSchema: z.ZodType<SceneGoal> = chosenBy(chooseByField(SCENE_GOAL_KINDS, ['quiz', 'estimate', 'picture', 'info']));
-export const goalSchema: z.ZodType<Goal> = chosenBy(chooseByField(GOAL_KINDS, []));
+const sceneGoalSchema: z.ZodType<SceneGoal> = chosenBy(chooseByField<SceneGoal>(SCENE_GOAL_SCHEMAS, STAND_ALONE_KINDS));
+export const goalSchema: z.ZodType<Goal> = chosenBy(chooseByField<Goal>(GOAL_SCHEMAS, []));
 
-/** Every goal inside `goal` (itself included) with its path from it, for checks that look at each. */
+/** A goal directly inside another, with the steps from that goal to it as a level file writes them (`["all", 0]`). */
+export interface GoalChild {
+  goal: SceneGoal;
+  steps: [kind: 'all' | 'any', index: number];
+}
+
+/**
+ * The goals directly inside `goal`, in file order: the one place that knows which kinds
+ * hold other goals. Every walk through nested goals (`goalParts` and all its users) goes
+ * through here, so a new kind that holds goals is entered everywhere once it is listed here.
+ */
+export function children(goal: Goal): GoalChild[] {
+  switch (goal.kind) {
+    case 'all':
+      return goal.all.map((part, index) => ({ goal: part, steps: ['all', index] }));
+    case 'any':
+      return goal.any.map((part, index) => ({ goal: part, steps: ['any', index] }));
+    case 'event':
+    case 'state':
+    case 'quiz':
+    case 'estimate':
+    case 'picture':
+    case 'info':
+      return [];
+    default: {
+      const never: never = goal;
+      return never;
+    }
+  }
+}
+
+/** Every goal inside `goal` at any depth (itself first), each with its path from it, for checks that look at each. */
 export function goalParts(goal: Goal, path: (string | number)[] = []): { goal: Goal; path: (string | number)[] }[] {
-  const inner = 'all' in goal ? { key: 'all', goals: goal.all } : 'any' in goal ? { key: 'any', goals: goal.any } : undefined;
-  if (!inner) return [{ goal, path }];
-  return [{ goal, path }, ...inner.goals.flatMap((part, index) => goalParts(part, [...path, inner.key, index]))];
+  return [{ goal, path }, ...children(goal).flatMap((child) => goalParts(child.goal, [...path, ...child.steps]))];
 }
 
 type Assert<T extends true> = T;
@@ -228,4 +331,5 @@ export type SchemaMatchesGoalTypes = [
   Assert<SameType<z.output<typeof quizGoalSchema>, QuizGoal>>,
   Assert<SameType<z.output<typeof estimateGoalSchema>, EstimateGoal>>,
   Assert<SameType<z.output<typeof infoGoalSchema>, InfoGoal>>,
+  Assert<SameType<z.output<typeof pictureGoalSchema>, PictureGoal>>,
 ];

@@ -4,7 +4,7 @@ import { framedRaysPixel } from '../lab-state/framed-rays.ts';
 import type { Scene } from '../scene/scene.ts';
 import { formatIssues } from '../scene/scene-issues.ts';
 import { FRAMED_PARTS } from './declared-view-schema.ts';
-import { goalParts, kindOfGoal } from './goal.ts';
+import { goalParts, kindOfGoal, type Goal } from './goal.ts';
 import { APP_ONLY_ACTION } from './lab-action-schema.ts';
 import { ALWAYS_SHOWN, partsOfTarget, type GuideTarget } from './lab-controls.ts';
 import type { Level } from './level-schema.ts';
@@ -78,14 +78,32 @@ function taskProblems(level: Level, index: number, sample: LabState): Problem[] 
   }
   if (kind === 'info' && !task.mandatory) problems.push({ path: at('mandatory'), message: 'an info step is read on the way: it must be mandatory' });
 
-  for (const { goal, path } of goalParts(task.goal, at('goal'))) {
-    if ('state' in goal) problems.push(...pathProblem(goal.state, sample, [...path, 'state']));
-    if ('event' in goal) {
-      for (const statePath of Object.keys(goal.where ?? {})) problems.push(...pathProblem(statePath, sample, [...path, 'where', statePath]));
-    }
-  }
+  for (const { goal, path } of goalParts(task.goal, at('goal'))) problems.push(...statePathProblems(goal, path, sample));
   if (task.guide) problems.push(...guideProblems(level, task.guide).map((message) => ({ path: at('guide'), message })));
   return problems;
+}
+
+/** A goal's paths into the state must lead somewhere in the level's state. */
+function statePathProblems(goal: Goal, path: (string | number)[], sample: LabState): Problem[] {
+  switch (goal.kind) {
+    case 'state':
+      return pathProblem(goal.state, sample, [...path, 'state']);
+    case 'event':
+      // `with` looks into the action, which goal.ts checks against the action's fields.
+      return Object.keys(goal.where ?? {}).flatMap((statePath) => pathProblem(statePath, sample, [...path, 'where', statePath]));
+    // A combination's parts are checked on their own (goalParts lists them).
+    case 'all':
+    case 'any':
+    case 'quiz':
+    case 'estimate':
+    case 'picture':
+    case 'info':
+      return [];
+    default: {
+      const never: never = goal;
+      return never;
+    }
+  }
 }
 
 /**
@@ -131,7 +149,7 @@ function pixelPickingProblems(level: Level): Problem[] {
   const problems: Problem[] = [];
   level.tasks.forEach((task, index) => {
     const goal = task.goal;
-    const pixel = 'event' in goal && goal.event === 'pixel.selected' ? goal.with?.pixel : undefined;
+    const pixel = goal.kind === 'event' && goal.event === 'pixel.selected' ? goal.with?.pixel : undefined;
     if (!Array.isArray(pixel)) return;
     const target = `screen.pixel:${pixel[0]},${pixel[1]}`;
     if (task.guide !== target) problems.push({ path: ['tasks', index, 'guide'], message: `must be "${target}", the pixel its goal asks for` });

@@ -596,7 +596,7 @@ export class QuestEngine {
     const prediction = this.predictionIn(active.level.id, task.id);
     const reflection = active.reveal?.quiz === task.id ? active.reveal.reflection : undefined;
     const observer = this.observerOf(active, task);
-    const pictures = 'picture' in goal ? this.picturesOf(active.level, goal) : undefined;
+    const pictures = goal.kind === 'picture' ? this.picturesOf(active.level, goal) : undefined;
     return {
       ...(pictures ? { pictures } : {}),
       stage: this.stageOf(active, task),

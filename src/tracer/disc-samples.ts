@@ -1,5 +1,6 @@
 import { concentricDisc } from './lights.ts';
 import type { RandomStream } from './sampler.ts';
+import { LIMITS } from '../scene/scene-limits.ts';
 
 /**
  * "Jittered disc points" (distribution-effects §2): one uniform point in each of the q×q
@@ -18,7 +19,10 @@ export function jitteredDiscPoints(q: number, random: RandomStream, out: Float64
   return out;
 }
 
-/** Room for the points of the largest q the schema allows (8: lens and glossy samples). */
+/** The largest q the scene's limits allow, for lens points and for glossy rays. */
+const MOST_PER_SIDE = Math.max(LIMITS.lensSamples[1], LIMITS.glossySamples[1]);
+
+/** Room for the q² (x, y) points of the largest q. */
 export function discPointBuffer(): Float64Array {
-  return new Float64Array(8 * 8 * 2);
+  return new Float64Array(MOST_PER_SIDE * MOST_PER_SIDE * 2);
 }

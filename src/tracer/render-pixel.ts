@@ -1,7 +1,9 @@
 import { Vector3 } from 'three';
+import { LIMITS } from '../scene/scene-limits.ts';
 import { discPointBuffer, jitteredDiscPoints } from './disc-samples.ts';
 import type { RayNode } from './ray-tree.ts';
 import { Ray } from './ray.ts';
+import { LENS_STREAM } from './random-streams.ts';
 import { hashKey, RandomStream } from './sampler.ts';
 import { shutterTimes } from './shutter-times.ts';
 import { samplePosition } from './supersampling.ts';
@@ -20,9 +22,6 @@ export function integratorFor(scene: TracerScene): WhittedIntegrator {
   return integrator;
 }
 
-/** Salt so that lens points never share random numbers with shutter times or the lights. */
-const LENS_SALT = 0x1e25;
-
 const position: [number, number] = [0, 0];
 const direction = new Vector3();
 const focalPoint = new Vector3();
@@ -33,7 +32,7 @@ const sampleColor = new Vector3();
 const subSampleColor = new Vector3();
 const random = new RandomStream();
 const lensPoints = discPointBuffer();
-const times = new Float64Array(16);
+const times = new Float64Array(LIMITS.timeSamples[1]);
 
 /**
  * The colour of pixel (x, y) of a width×height image: the mean of its s×s supersamples,
@@ -83,7 +82,7 @@ export function renderPixel(
     }
     // The pinhole ray meets the plane in focus at F; every lens ray aims at F.
     camera.focalPoint(direction, focalPoint);
-    if (hasLens) jitteredDiscPoints(n, random.reset(hashKey(seed, x, y, sample, LENS_SALT)), lensPoints);
+    if (hasLens) jitteredDiscPoints(n, random.reset(hashKey(seed, x, y, sample, LENS_STREAM)), lensPoints);
     // k times in the open shutter, by the time pattern; every lens point is traced at each of them.
     shutterTimes(timePattern, k, seed, x, y, sample, times);
     let root: RayNode | null = null;

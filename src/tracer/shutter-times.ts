@@ -1,8 +1,6 @@
 import type { TimePattern } from '../scene/scene.ts';
+import { SHUTTER_TIME_STREAM } from './random-streams.ts';
 import { hashKey, RandomStream } from './sampler.ts';
-
-/** Salt so that shutter times never share random numbers with lens points, sub-pixel positions or the lights. */
-const TIME_SALT = 0x71fe;
 
 const stream = new RandomStream();
 
@@ -30,7 +28,7 @@ export function shutterTimes(
     for (let i = 0; i < k; i++) out[i] = (i + 0.5) / k;
     return;
   }
-  stream.reset(hashKey(seed, x, y, sample, TIME_SALT));
+  stream.reset(hashKey(seed, x, y, sample, SHUTTER_TIME_STREAM));
   if (pattern === 'jittered') for (let i = 0; i < k; i++) out[i] = (i + stream.next()) / k;
   else for (let i = 0; i < k; i++) out[i] = stream.next();
 }

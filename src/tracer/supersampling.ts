@@ -1,10 +1,8 @@
 import type { SamplePattern } from '../scene/scene.ts';
+import { PIXEL_POSITION_STREAM } from './random-streams.ts';
 import { hashKey, RandomStream } from './sampler.ts';
 
 const stream = new RandomStream();
-
-/** Salt so that sub-pixel positions never share random numbers with light sampling. */
-const PIXEL_POSITION_SALT = 0x5a17;
 
 /**
  * Where sample `index` of an s×s set lies inside pixel (x, y), as offsets in [0, 1).
@@ -22,7 +20,7 @@ export function samplePosition(
     out[1] = (j + 0.5) / s;
     return out;
   }
-  stream.reset(hashKey(seed, x, y, index, PIXEL_POSITION_SALT));
+  stream.reset(hashKey(seed, x, y, index, PIXEL_POSITION_STREAM));
   const u = stream.next();
   const v = stream.next();
   if (pattern === 'jittered') {

@@ -93,7 +93,7 @@ const PATCH_HALF_IN_PIXELS = 1;
 const shadowHit = new Hit();
 
 /** Salt so that glossy directions never share random numbers with light sampling. */
-const GLOSS_SALT = 0x6c055;
+import { GLOSS_STREAM as GLOSS_SALT } from './random-streams.ts';
 
 /**
  * Whitted-style recursive ray tracing (Whitted 1980) with the Phong model of spec §2:

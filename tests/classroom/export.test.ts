@@ -4,7 +4,7 @@ import { assignmentId } from '../../src/classroom/assignment-id.ts';
 import { parseCsv } from '../../src/classroom/csv-text.ts';
 import type { ExportInput } from '../../src/classroom/export-context.ts';
 import { APP_VERSION } from '../../src/classroom/export-context.ts';
-import { CSV_COLUMNS } from '../../src/classroom/attempt-rows.ts';
+import { ATTEMPT_COLUMNS } from '../../src/classroom/attempt-columns.ts';
 import { exportCsv } from '../../src/classroom/export-csv.ts';
 import { surveyById } from '../../src/classroom/surveys.ts';
 import { buildExport, EXPORT_FORMAT } from '../../src/classroom/export-json.ts';
@@ -13,6 +13,7 @@ import { isoAt, isoDuration } from '../../src/classroom/iso-duration.ts';
 import type { LoggedEvent } from '../../src/quest/event-log.ts';
 import { newProgress, type Progress } from '../../src/quest/progress.ts';
 
+const CSV_COLUMNS = ATTEMPT_COLUMNS.map((column) => column.name);
 const START = '2025-03-04T09:00:00.000Z';
 const clock = { monotonicMs: () => 0, wallMs: () => Date.parse(START) };
 const flags = { mandatory: true, required: true };

@@ -21,7 +21,7 @@ import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
 
 const pictureGoal = (choices: unknown[][], answer = 0): PictureGoal => {
   const goal = goalSchema.parse({ picture: { question: 'Which picture?', choices: choices.map((actions) => ({ actions })), answer } });
-  if (!('picture' in goal)) throw new Error('expected a picture goal');
+  if (goal.kind !== 'picture') throw new Error('expected a picture goal');
   return goal;
 };
 
@@ -56,7 +56,7 @@ const pictureTasks = readdirSync(levelsFolder)
   .filter((name) => name.endsWith('.level.json'))
   .flatMap((name) => {
     const level = levelSchema.parse(JSON.parse(readFileSync(new URL(name, levelsFolder), 'utf8')));
-    return level.tasks.flatMap((task) => ('picture' in task.goal ? [{ name: `${level.id}/${task.id}`, scene: level.scene, goal: task.goal }] : []));
+    return level.tasks.flatMap((task) => (task.goal.kind === 'picture' ? [{ name: `${level.id}/${task.id}`, scene: level.scene, goal: task.goal }] : []));
   });
 
 describe('the levels\' picture predictions', () => {

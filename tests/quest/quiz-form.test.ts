@@ -45,7 +45,7 @@ describe('the rule for a key that stands out', () => {
 });
 
 const quizzes = levels.flatMap((level) =>
-  level.tasks.flatMap((task, index) => ('quiz' in task.goal ? [{ name: `${level.id}/${task.id}`, level, index, quiz: task.goal.quiz }] : [])),
+  level.tasks.flatMap((task, index) => (task.goal.kind === 'quiz' ? [{ name: `${level.id}/${task.id}`, level, index, quiz: task.goal.quiz }] : [])),
 );
 
 describe.each(LOCALES)('every quiz, in %s', (locale) => {

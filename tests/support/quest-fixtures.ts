@@ -1,5 +1,7 @@
 import { loadLevels, levelFileName, type LevelCatalog } from '../../src/quest/level-index.ts';
 import type { QuestClock } from '../../src/quest/event-log.ts';
+import type { Prediction } from '../../src/quest/goal-check.ts';
+import type { PredictionGoal } from '../../src/quest/goal.ts';
 
 /** Test doubles and small levels shared by the quest tests. */
 
@@ -119,4 +121,20 @@ export function levelWithId(id: string, chapter = 'test'): Json {
     level.id = id;
     level.chapter = chapter;
   });
+}
+
+/** The prediction a learner who knows the answer gives. */
+export function rightPrediction(goal: PredictionGoal): Prediction {
+  switch (goal.kind) {
+    case 'quiz':
+      return { choice: goal.quiz.answer };
+    case 'picture':
+      return { choice: goal.picture.answer };
+    case 'estimate':
+      return { value: goal.estimate.answer };
+    default: {
+      const never: never = goal;
+      return never;
+    }
+  }
 }

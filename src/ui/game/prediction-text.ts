@@ -12,7 +12,7 @@ const numbers = localNumbers({ maximumFractionDigits: 6 });
 const UNITS_WITHOUT_SPACE = new Set(['°', '′', '″']);
 
 function withUnit(goal: PredictionGoal, value: number, locale: Locale): string {
-  const unit = 'estimate' in goal && goal.estimate.unit ? plainLevelText(goal.estimate.unit, locale) : '';
+  const unit = goal.kind === 'estimate' && goal.estimate.unit ? plainLevelText(goal.estimate.unit, locale) : '';
   const gap = unit === '' || UNITS_WITHOUT_SPACE.has(unit) ? '' : ' ';
   return `${numbers.format(value)}${gap}${unit}`;
 }
@@ -22,7 +22,7 @@ function withUnit(goal: PredictionGoal, value: number, locale: Locale): string {
  * learner sees it (`order`: file positions in the order shown).
  */
 export function choiceLabel(goal: PredictionGoal, index: number, order: readonly number[], locale: Locale): string {
-  if ('quiz' in goal) return plainLevelText(goal.quiz.choices[index] ?? '', locale);
+  if (goal.kind === 'quiz') return plainLevelText(goal.quiz.choices[index] ?? '', locale);
   const letter = String.fromCharCode(65 + Math.max(0, order.indexOf(index)));
   return msg(str`picture ${letter}`);
 }
@@ -35,7 +35,7 @@ export function predictionText(goal: PredictionGoal, prediction: Prediction, loc
 
 /** The right answer in words; a number with its tolerance ("5 ± 0.5 m"). */
 export function answerText(goal: PredictionGoal, locale: Locale, order: readonly number[]): string {
-  if (!('estimate' in goal)) return choiceLabel(goal, predictionParts(goal).answer, order, locale);
+  if (goal.kind !== 'estimate') return choiceLabel(goal, predictionParts(goal).answer, order, locale);
   const { answer, tolerance } = goal.estimate;
   return tolerance > 0 ? `${numbers.format(answer)} ± ${withUnit(goal, tolerance, locale)}` : withUnit(goal, answer, locale);
 }

@@ -174,10 +174,10 @@ export class RtQuiz extends LitElement {
       const command: QuestCommand = { kind, task: view.task.id, prediction };
       fire(this, QUEST_COMMAND, command);
     };
-    const ready = 'estimate' in goal ? this.typed.trim() !== '' : this.picked !== null;
+    const ready = goal.kind === 'estimate' ? this.typed.trim() !== '' : this.picked !== null;
     return html`<fieldset>
         <legend>${legend}</legend>
-        ${'estimate' in goal ? this.numberBox(goal, send) : this.choices(view, goal, true)}
+        ${goal.kind === 'estimate' ? this.numberBox(goal, send) : this.choices(view, goal, true)}
       </fieldset>
       ${this.problem ? html`<p class="problem" role="alert">${this.problem}</p>` : nothing}
       <button class="primary" ?disabled=${!ready} @click=${send}>${button}</button>`;
@@ -187,7 +187,7 @@ export class RtQuiz extends LitElement {
   private asked(view: TaskView, goal: PredictionGoal): TemplateResult {
     return html`<fieldset disabled>
       <legend>${levelText(questionOf(goal), this.locale)}</legend>
-      ${'estimate' in goal ? nothing : this.choices(view, goal, false)}
+      ${goal.kind === 'estimate' ? nothing : this.choices(view, goal, false)}
     </fieldset>`;
   }
 
@@ -201,7 +201,7 @@ export class RtQuiz extends LitElement {
     const items = order.map((index) => {
       const text = choiceLabel(goal, index, order, this.locale);
       // A quiz's choice keeps its bold names; the picture's label and the aria text are plain.
-      const shown = 'quiz' in goal ? levelText(goal.quiz.choices[index], this.locale) : text;
+      const shown = goal.kind === 'quiz' ? levelText(goal.quiz.choices[index], this.locale) : text;
       const tags = html`${!open && mine && 'choice' in mine && mine.choice === index ? html`<span class="tag">${msg('your prediction')}</span>` : nothing}
       ${reveal && index === answer ? html`<span class="tag right">✓ ${msg('answer')}</span>` : nothing}`;
       const radio = html`<input type="radio" name=${`quiz-${view.task.id}`} .checked=${open ? this.picked === index : mine !== undefined && 'choice' in mine && mine.choice === index} @change=${() => (this.picked = index)} />`;
@@ -236,7 +236,7 @@ export class RtQuiz extends LitElement {
   }
 
   private numberBox(goal: PredictionGoal, send: () => void): TemplateResult {
-    const unit = 'estimate' in goal && goal.estimate.unit ? plainLevelText(goal.estimate.unit, this.locale) : '';
+    const unit = goal.kind === 'estimate' && goal.estimate.unit ? plainLevelText(goal.estimate.unit, this.locale) : '';
     return html`<label class="number"
       ><input
         type="text"
@@ -283,7 +283,7 @@ export class RtQuiz extends LitElement {
 
   /** The picked choice or the typed number; a typed text that is no number says why. */
   private chosen(goal: PredictionGoal): Prediction | undefined {
-    if (!('estimate' in goal)) return this.picked === null ? undefined : { choice: this.picked };
+    if (goal.kind !== 'estimate') return this.picked === null ? undefined : { choice: this.picked };
     const unit = goal.estimate.unit ? plainLevelText(goal.estimate.unit, this.locale) : '';
     const read = parseTypedNumber(this.typed, { min: -Number.MAX_VALUE, max: Number.MAX_VALUE }, unit);
     if (read.kind === 'invalid') {

@@ -2,6 +2,7 @@
 // pushes the next task below the fold"): what the learner expected and the answer.
 import { describe, expect, it } from 'vitest';
 import type { PredictionView, TaskView } from '../../../src/quest/quest-engine.ts';
+import { goalSchema } from '../../../src/quest/goal.ts';
 import type { Task } from '../../../src/quest/level-schema.ts';
 import { foldedPrediction } from '../../../src/ui/game/prediction-summary.ts';
 
@@ -12,13 +13,13 @@ const quizTask = {
   mandatory: true,
   points: 10,
   hints: [],
-  goal: { quiz: { question: 'What becomes of the grey shadow ray?', choices: ['It stays grey', 'It is not traced', 'It turns yellow'], answer: 1, explanation: 'Nothing tests the way.' } },
+  goal: goalSchema.parse({ quiz: { question: 'What becomes of the grey shadow ray?', choices: ['It stays grey', 'It is not traced', 'It turns yellow'], answer: 1, explanation: 'Nothing tests the way.' } }),
 } as unknown as Task;
 
 const estimateTask = {
   ...quizTask,
   id: 'predict-critical-angle',
-  goal: { estimate: { question: 'How big is θc?', answer: 41.8, tolerance: 1, unit: '°', explanation: 'sin θc = 1/η.' } },
+  goal: goalSchema.parse({ estimate: { question: 'How big is θc?', answer: 41.8, tolerance: 1, unit: '°', explanation: 'sin θc = 1/η.' } }),
 } as unknown as Task;
 
 function view(task: Task, status: TaskView['status'], prediction: Partial<PredictionView>, correct?: boolean): TaskView {
@@ -46,7 +47,7 @@ describe('an explained prediction folds to one line', () => {
   });
 
   it('does not fold a task that is no prediction', () => {
-    const selectPixel = { ...quizTask, id: 'select-pixel', goal: { event: 'pixel.selected' } } as unknown as Task;
+    const selectPixel = { ...quizTask, id: 'select-pixel', goal: goalSchema.parse({ event: 'pixel.selected' }) } as unknown as Task;
     expect(foldedPrediction({ ...view(selectPixel, 'done', {}), kind: 'do', prediction: undefined }, 'en')).toBeNull();
   });
 });

@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import type { PredictionGoal } from '../../../src/quest/goal.ts';
+import { goalSchema, type PredictionGoal } from '../../../src/quest/goal.ts';
 import { answerText, predictionText } from '../../../src/ui/game/prediction-text.ts';
 
 function estimate(unit: string | undefined, answer = 41.8, tolerance = 1.5): PredictionGoal {
-  return { estimate: { question: 'How large?', answer, tolerance, ...(unit === undefined ? {} : { unit }) } } as PredictionGoal;
+  return goalSchema.parse({ estimate: { question: 'How large?', answer, tolerance, ...(unit === undefined ? {} : { unit }) } }) as PredictionGoal;
 }
 
 describe('a number prediction in words', () => {

@@ -3,11 +3,12 @@ import { describe, expect, it } from 'vitest';
 import { TaskViews } from '../../../../src/app/task-views.ts';
 import { initialState } from '../../../../src/lab-state/lab-state.ts';
 import { Store } from '../../../../src/lab-state/store.ts';
+import { kindOfGoal, predictionOf } from '../../../../src/quest/goal.ts';
 import { loadLevels } from '../../../../src/quest/level-index.ts';
 import { newProgress } from '../../../../src/quest/progress.ts';
 import { QuestEngine } from '../../../../src/quest/quest-engine.ts';
 import { renderWindowInTheWay, type GuideAndLook } from '../../../../src/ui/lab/render-window/render-window-in-the-way.ts';
-import { FakeClock } from '../../../support/quest-fixtures.ts';
+import { FakeClock, rightPrediction } from '../../../support/quest-fixtures.ts';
 
 /**
  * Issue 37 (2): "Render the image and zoom in" — in levels 9, 10 and 11 the render window
@@ -55,10 +56,9 @@ function closesAt(id: string): { task: string; needs3d: boolean }[] {
   for (const task of level.tasks) {
     apply(views.changed(level, engine.level?.current?.task ?? null));
     labUpdates();
-    if ('quiz' in task.goal) engine.predict(task.id, { choice: task.goal.quiz.answer });
-    else if ('estimate' in task.goal) engine.predict(task.id, { value: task.goal.estimate.answer });
-    else if ('picture' in task.goal) engine.predict(task.id, { choice: task.goal.picture.answer });
-    else if ('info' in task.goal) engine.next();
+    const prediction = predictionOf(task.goal);
+    if (prediction) engine.predict(task.id, rightPrediction(prediction));
+    else if (kindOfGoal(task.goal) === 'info') engine.next();
     for (const action of task.solution ?? []) {
       store.dispatch(action);
       if (action.type === 'render.finished') open = true;

@@ -1,0 +1,118 @@
+import { readFileSync } from 'node:fs';
+import { describe, expect, it } from 'vitest';
+import { ATTEMPT_COLUMNS, ID_COLUMNS, type AttemptOwner } from '../../src/classroom/attempt-columns.ts';
+import { attemptRows, csvHeader } from '../../src/classroom/attempt-rows.ts';
+import { csvTable, parseCsv } from '../../src/classroom/csv-text.ts';
+import { readCsvExport } from '../../src/classroom/dashboard-read-csv.ts';
+import type { TaskAttempt } from '../../src/classroom/task-attempts.ts';
+
+/**
+ * The CSV export's one column table (attempt-columns.ts) is where the header, the rows and
+ * the dashboard's reader come from. A value written under the wrong name must fail here: a
+ * record whose every column holds a value no other column holds is written and read back.
+ */
+
+const owner: AttemptOwner = {
+  learnerId: 'learner-1',
+  attemptId: 'attempt-2',
+  installId: 'install-3',
+  participant: 'P-4',
+  assignment: 'Lesson 5',
+  assignmentId: 'a6a6a6a6',
+  classCode: 'class-7',
+  survey: { id: 'default', answers: { ease: 3, 'computer-skill': 'often' } },
+};
+
+const attempts: TaskAttempt[] = [
+  {
+    level: '01-introduction',
+    task: 'orbit',
+    mandatory: true,
+    kind: 'do',
+    startedAt: '2025-03-04T09:00:00.000Z',
+    completedAt: '2025-03-04T09:01:00.000Z',
+    durationMs: 1001,
+    activeMs: 1002,
+    how: 'shown',
+    points: 1003,
+    hintsText: 4,
+    hintsGuidance: 5,
+    hintsOffered: 6,
+    quizAnswers: 7,
+    quizCorrect: false,
+  },
+  {
+    level: '02-shadows',
+    task: 'predict',
+    mandatory: true,
+    kind: 'quiz',
+    startedAt: '2025-03-04T09:02:00.000Z',
+    completedAt: '2025-03-04T09:03:00.000Z',
+    durationMs: 2001,
+    activeMs: 2002,
+    how: 'done',
+    points: 2003,
+    hintsText: 14,
+    hintsGuidance: 15,
+    hintsOffered: 16,
+    quizAnswers: 17,
+    quizCorrect: true,
+  },
+];
+
+const questions = ['ease', 'computer-skill'];
+const text = csvTable(csvHeader(questions), attemptRows(owner, attempts, questions), ID_COLUMNS);
+
+describe('the CSV column table', () => {
+  it('gives every column values no other column has, so the round trip below can tell them apart', () => {
+    const parsed = parseCsv(text);
+    if (!parsed.ok) throw new Error(parsed.error);
+    const [header, ...rows] = parsed.rows;
+    const columns = header.map((name, index) => `${name}=${rows.map((row) => row[index]).join('|')}`);
+    const values = header.map((_, index) => rows.map((row) => row[index]).join('|'));
+    expect(new Set(values).size, columns.join('\n')).toBe(header.length);
+  });
+
+  it('reads back every column of a record as it was written', () => {
+    const read = readCsvExport('learner.csv', text);
+    if (!read.ok) throw new Error(read.reason);
+    const { survey, attempts: readAttempts, ...who } = read.record;
+    expect(who).toEqual({
+      file: 'learner.csv',
+      learnerId: owner.learnerId,
+      attemptId: owner.attemptId,
+      installId: owner.installId,
+      participant: owner.participant,
+      assignment: owner.assignment,
+      assignmentId: owner.assignmentId,
+      classCode: owner.classCode,
+      visits: [],
+    });
+    expect(survey).toEqual(owner.survey);
+    expect(readAttempts).toEqual(attempts);
+  });
+
+  it('writes the columns worked out from others where their names say', () => {
+    const parsed = parseCsv(text);
+    if (!parsed.ok) throw new Error(parsed.error);
+    const [header, ...rows] = parsed.rows;
+    const cell = (row: number, name: string) => rows[row][header.indexOf(name)];
+    expect([cell(0, 'hints_opened'), cell(1, 'hints_opened')]).toEqual(['9', '29']);
+    expect([cell(0, 'shown_by_app'), cell(1, 'shown_by_app')]).toEqual(['true', 'false']);
+    expect([cell(0, 'attempts'), cell(1, 'attempts')]).toEqual(['1', '1']);
+  });
+
+  it('is what docs/classroom.md lists, in the same order, each with what it holds', () => {
+    const docs = readFileSync(new URL('../../docs/classroom.md', import.meta.url), 'utf8');
+    const section = docs.slice(docs.indexOf('### CSV: one row per task attempt'));
+    const table = section.slice(section.indexOf('| column | what it holds |')).split('\n\n')[0];
+    const rows = table
+      .split('\n')
+      .slice(2)
+      .map((line) => /^\| `([^`]+)` \| (.*) \|$/.exec(line));
+    expect(rows.every((row) => row !== null), table).toBe(true);
+    const listed = rows.map((row) => row![1]);
+    expect(listed).toEqual([...ATTEMPT_COLUMNS.map((column) => column.name), 'survey_<question>']);
+    for (const row of rows) expect(row![2].trim().length, row![1]).toBeGreaterThan(10);
+  });
+});
