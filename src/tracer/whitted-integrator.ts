@@ -232,6 +232,8 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
         recorder?.noRay(0, nDotL, rDotV);
         continue;
       }
+      // L as a vector, for the shadow tester and the recorder (field by field, and the side
+      // N_g·L > 0 computed here: docs/performance.md, "Inlining budget").
       l.x = lx;
       l.y = ly;
       l.z = lz;
