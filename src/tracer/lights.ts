@@ -101,11 +101,10 @@ export class TracerLight {
     const cell = this.cellSide;
     let u = (i + random.next()) * cell - 1;
     let v = (j + random.next()) * cell - 1;
-    // Compared with true, as the flags of the shading loop this is inlined into are (see
-    // WhittedIntegrator.addDirectLight): a bare field test costs V8 a dozen instructions.
+    // Compared with true, as the flags of the shading loop this is inlined into are
+    // (docs/performance.md, "Boolean tests").
     if (this.isDisc === true) {
-      // Read by index: destructuring runs the array's iterator, whose bytecode made this
-      // method too big for V8 to inline into the shading loop together with the highlight's power.
+      // Read by index, not destructured: docs/performance.md, "Array reads".
       const disc = concentricDisc(u, v);
       u = disc[0];
       v = disc[1];

@@ -228,8 +228,8 @@ export class ObjectBvh {
 
 /**
  * The box of the current query (set by setWithin): min x, y, z, max x, y, z. A typed array,
- * not module-level variables: V8 boxes every number stored into one of those, and this is
- * set for every hit and light.
+ * not module-level variables, as it is set for every hit and light: docs/performance.md,
+ * "Numbers passed to calls".
  */
 const within = new Float64Array(6);
 

@@ -1,11 +1,11 @@
 /**
  * x^n for the Phong highlight (R·V)^n, x in [0, 1].
  *
- * V8's Math.pow costs about 90 ns a call here (a general-purpose pow, fdlibm's algorithm),
- * and the highlight is raised once per shadow sample that reaches the light: tens of millions
- * of times in a render. Shininess is almost always a whole number, and for a whole n,
+ * The highlight is raised once per shadow sample that reaches the light: tens of millions
+ * of times in a render, where Math.pow is a general-purpose pow (docs/performance.md,
+ * "Math.pow"). Shininess is almost always a whole number, and for a whole n,
  * exponentiation by squaring (Knuth, TAOCP vol. 2, §4.6.3) needs at most 2·log2(n)
- * multiplications: about 20 ns. Its result can differ from Math.pow's in the last bits
+ * multiplications. Its result can differ from Math.pow's in the last bits
  * (relative error below 1e-12 up to the largest shininess the scene format allows), far
  * below what an 8-bit or even a float32 pixel can hold. A fractional n keeps Math.pow.
  *

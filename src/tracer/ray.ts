@@ -10,8 +10,7 @@ export class Ray {
   time = 0;
   /**
    * How far an any-hit test looks (Intersectable.occludes): only hits at t < far count. A
-   * field, not an argument: V8 allocates a box for a fractional number passed to a call it
-   * does not inline, once per shadow ray and object tested.
+   * field, not an argument: docs/performance.md, "Numbers passed to calls".
    */
   far = Infinity;
   /**

@@ -1,6 +1,7 @@
 import { Vector3 } from 'three';
 import { LIMITS } from '../scene/scene-limits.ts';
 import { discPointBuffer, jitteredDiscPoints } from './disc-samples.ts';
+import { RayRecorder, type RayTreeRecording } from './ray-recorder.ts';
 import type { RayNode } from './ray-tree.ts';
 import { Ray } from './ray.ts';
 import { LENS_STREAM } from './random-streams.ts';
@@ -36,7 +37,7 @@ const times = new Float64Array(LIMITS.timeSamples[1]);
 
 /**
  * The colour of pixel (x, y) of a width×height image: the mean of its s×s supersamples,
- * each weighted 1/s² (spec §2). With `roots`, each sample's ray tree is recorded there.
+ * each weighted 1/s² (spec §2). With `tree`, each sample's ray tree is recorded there.
  * The image and the ray tree both come from here, so they always agree.
  *
  * A sample with a lens (aperture > 0, n×n lens points) or a shutter (k > 1 times) casts
@@ -47,7 +48,7 @@ const times = new Float64Array(LIMITS.timeSamples[1]);
  */
 export function renderPixel(
   scene: TracerScene, x: number, y: number, width: number, height: number, seed: number,
-  out: Vector3, roots: RayNode[] | null, s = scene.settings.supersampling,
+  out: Vector3, tree: RayTreeRecording | null, s = scene.settings.supersampling,
 ): Vector3 {
   const integrator = integratorFor(scene);
   const { camera } = scene;
@@ -72,12 +73,12 @@ export function renderPixel(
       primary.set(camera.eye, direction);
       primary.time = 0;
       integrator.stats.primary++;
-      let root: RayNode | null = null;
-      if (roots) {
-        root = primaryNode(primary);
-        roots.push(root);
+      let root: RayRecorder | null = null;
+      if (tree) {
+        root = new RayRecorder(primaryNode(primary), tree);
+        tree.roots.push(root.node);
       }
-      out.add(integrator.trace(primary, 0, sampleColor, root));
+      out.add(integrator.li(primary, sampleColor, root));
       continue;
     }
     // The pinhole ray meets the plane in focus at F; every lens ray aims at F.
@@ -86,11 +87,11 @@ export function renderPixel(
     // k times in the open shutter, by the time pattern; every lens point is traced at each of them.
     shutterTimes(timePattern, k, seed, x, y, sample, times);
     let root: RayNode | null = null;
-    if (roots && nested) {
+    if (tree && nested) {
       root = primaryNode(primary.set(camera.eye, direction));
       root.hit = true;
       root.length = focalPoint.distanceTo(camera.eye);
-      roots.push(root);
+      tree.roots.push(root);
     }
     sampleColor.set(0, 0, 0);
     for (let lens = 0; lens < lensRays; lens++) {
@@ -106,17 +107,17 @@ export function renderPixel(
         primary.set(lensPoint, lensDirection);
         primary.time = times[i];
         integrator.stats.primary++;
-        let ray: RayNode | null = null;
-        if (roots) {
-          ray = primaryNode(primary);
-          ray.lensPoint = lensPoint.toArray();
-          ray.time = times[i];
+        let ray: RayRecorder | null = null;
+        if (tree) {
+          ray = new RayRecorder(primaryNode(primary), tree);
+          ray.node.lensPoint = lensPoint.toArray();
+          ray.node.time = times[i];
           if (root) {
-            root.children.push(ray);
-            integrator.childWeights.set(ray, weight);
-          } else roots.push(ray);
+            root.children.push(ray.node);
+            tree.weights.set(ray.node, weight);
+          } else tree.roots.push(ray.node);
         }
-        sampleColor.addScaledVector(integrator.trace(primary, 0, subSampleColor, ray), weight);
+        sampleColor.addScaledVector(integrator.li(primary, subSampleColor, ray), weight);
       }
     }
     if (root) root.color = sampleColor.toArray();

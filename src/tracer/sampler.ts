@@ -44,9 +44,8 @@ const TWO_TO_MINUS_32 = 1 / 4294967296;
 
 /** A small stream of uniform numbers in [0, 1) from one key (a counter-based generator). */
 export class RandomStream {
-  // Kept as a signed 32-bit integer: the hash reads its input modulo 2^32 whatever its sign,
-  // and V8 then adds and hashes in integer registers, where a key above 2^31 (a double)
-  // cost a conversion per draw.
+  // Kept as a signed 32-bit integer: the hash reads its input modulo 2^32 whatever its sign
+  // (docs/performance.md, "Integer hashing").
   private key = 0;
   private counter = 0;
 

@@ -1,7 +1,8 @@
 import { Vector3 } from 'three';
 import { assignContributions } from './ray-contributions.ts';
-import type { PixelTrace, RayNode } from './ray-tree.ts';
-import { integratorFor, renderPixel } from './render-pixel.ts';
+import { RayTreeRecording } from './ray-recorder.ts';
+import type { PixelTrace } from './ray-tree.ts';
+import { renderPixel } from './render-pixel.ts';
 import type { TracerScene } from './tracer-scene.ts';
 
 /** What a pixel's tree records besides its rays. */
@@ -18,22 +19,14 @@ export interface TraceOptions {
  */
 export function tracePixel(scene: TracerScene, px: number, py: number, seed: number, options: TraceOptions = {}): PixelTrace {
   const [width, height] = scene.source.camera.pixels;
-  const integrator = integratorFor(scene);
-  const roots: RayNode[] = [];
-  integrator.childWeights.clear();
-  integrator.recordTerms = options.terms === true;
-  let color: Vector3;
-  try {
-    color = renderPixel(scene, px, py, width, height, seed, new Vector3(), roots);
-  } finally {
-    integrator.recordTerms = false;
-  }
-  assignContributions(roots, integrator.childWeights);
+  const tree = new RayTreeRecording(options.terms === true);
+  const color = renderPixel(scene, px, py, width, height, seed, new Vector3(), tree);
+  const roots = tree.roots;
+  assignContributions(roots, tree.weights);
   if (options.terms) {
     for (const root of roots) root.weight = 1 / roots.length;
-    for (const [node, weight] of integrator.childWeights) node.weight = weight;
+    for (const [node, weight] of tree.weights) node.weight = weight;
   }
-  integrator.childWeights.clear();
   return { pixel: [px, py], color: [Math.fround(color.x), Math.fround(color.y), Math.fround(color.z)], rays: roots };
 }
 

@@ -36,7 +36,6 @@ const ALLOWED_LONG_FILES: Record<string, string> = {
   'view/lab-view.ts': 'the three.js view: renderer, input, picking, framing; issue 39 item 3 splits it',
   'render/render-pool.ts': 'the worker pool: scheduling, watchdog and recovery share one job state; issue 39',
   'view/ray-pool.ts': 'the instanced rays, cones and arrows share one buffer layout; issue 39',
-  'tracer/whitted-integrator.ts': 'shading, the shadow accelerator and ray-tree recording on one hot path; issue 39 item 2 splits it',
 };
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));

@@ -2,6 +2,7 @@ import { Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import { distanceAttenuation } from '../../src/tracer/attenuation.ts';
 import { Ray } from '../../src/tracer/ray.ts';
+import { RayRecorder } from '../../src/tracer/ray-recorder.ts';
 import type { RayNode } from '../../src/tracer/ray-tree.ts';
 import { integratorFor } from '../../src/tracer/render-pixel.ts';
 import type { TracerScene } from '../../src/tracer/tracer-scene.ts';
@@ -14,7 +15,7 @@ const floor = (material: Record<string, unknown>) => ({ id: 'floor', shape: 'pla
 function colorAlong(scene: TracerScene, from: number[], to: number[], node: RayNode | null = null): number[] {
   const origin = new Vector3(...from);
   const direction = new Vector3(...to).sub(origin).normalize();
-  return integratorFor(scene).trace(new Ray().set(origin, direction), 0, new Vector3(), node).toArray();
+  return integratorFor(scene).li(new Ray().set(origin, direction), new Vector3(), node ? new RayRecorder(node) : null).toArray();
 }
 
 function rootNode(): RayNode {

@@ -45,7 +45,7 @@ function shadeFloor(scene: TracerScene, x: number, z: number): number[] {
   const integrator = integratorFor(scene);
   integrator.startPixelSample(7, Math.round(x * 100), Math.round(z * 100), 0);
   const ray = new Ray().set(new Vector3(x, 0.05, z), new Vector3(0, -1, 0));
-  return integrator.trace(ray, 0, new Vector3(), null).toArray();
+  return integrator.li(ray, new Vector3(), null).toArray();
 }
 
 afterEach(() => vi.restoreAllMocks());
@@ -114,7 +114,7 @@ describe('shadow rays toward an area light', () => {
       const integrator = integratorFor(scene);
       integrator.startPixelSample(7, 0, 0, 0);
       const before = integrator.stats.shadow;
-      const color = integrator.trace(new Ray().set(new Vector3(0, 1, 0), new Vector3(0, -1, 0)), 0, new Vector3(), null).toArray();
+      const color = integrator.li(new Ray().set(new Vector3(0, 1, 0), new Vector3(0, -1, 0)), new Vector3(), null).toArray();
       return { color, shadowRays: integrator.stats.shadow - before };
     };
     // The light above the ball: every ray meets the ball's top on its way.
@@ -140,7 +140,7 @@ describe('shadow rays toward an area light', () => {
     });
     const integrator = integratorFor(scene);
     integrator.startPixelSample(7, 0, 0, 0);
-    const color = integrator.trace(new Ray().set(new Vector3(0, 0, 0), new Vector3(0, 1, 0)), 0, new Vector3(), null).toArray();
+    const color = integrator.li(new Ray().set(new Vector3(0, 0, 0), new Vector3(0, 1, 0)), new Vector3(), null).toArray();
     expect(integrator.stats.shadow).toBe(SAMPLES);
     expect(color[0]).toBeGreaterThan(0);
   });

@@ -14,8 +14,8 @@ import type { MeshAccel } from './mesh-accel.ts';
  * hit point), so the walks find exactly what it finds.
  *
  * The ray, its reach and the last hit's numbers live in one shared object (`ray`), not in
- * arguments and return values: V8 allocates a box for every fractional number passed to or
- * returned from a call it does not inline, and these calls run per node and per triangle.
+ * arguments and return values, as these calls run per node and per triangle: docs/performance.md,
+ * "Numbers passed to calls".
  */
 
 /** The node buffers of one BVH root, read through three views as three-mesh-bvh does. */

@@ -29,7 +29,7 @@ const PLANE_BOUNDS = new Box3(new Vector3(-0.5, 0, -0.5), new Vector3(0.5, 0, 0.
  * A shape with a velocity (motion blur) is met at the ray's time: see `localVelocity`.
  *
  * One class for every kind, dispatching on `kind`: the tracer's inner loop then sees one
- * object shape, which V8 keeps monomorphic (a class per kind made that loop megamorphic).
+ * object shape (docs/performance.md, "One class for every shape kind").
  */
 export class Shape {
   /**
