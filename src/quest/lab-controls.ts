@@ -50,7 +50,8 @@ export const LAB_CONTROLS = {
 
 const PANELS = Object.keys(LAB_CONTROLS) as LabPanel[];
 
-type ControlOf<Panel extends LabPanel> = (typeof LAB_CONTROLS)[Panel][number];
+/** A panel's control ids, e.g. ControlOf<'light'> is 'type' | 'color' | … | 'spot-angle' | …. */
+export type ControlOf<Panel extends LabPanel> = (typeof LAB_CONTROLS)[Panel][number];
 
 /** "panel.control", e.g. "tracer.supersampling". */
 export type ControlTarget = { [Panel in LabPanel]: `${Panel}.${ControlOf<Panel>}` }[LabPanel];

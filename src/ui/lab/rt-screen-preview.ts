@@ -32,7 +32,7 @@ const MIN_CELL_PX = 26;
  * Dispatches `pixel.selected` / `pixel.deselected` on `store`; shows `rays` (the screen
  * tracer's latest), and says "Updating…" while they are of an older screen size.
  */
-export class RtScreenPreview extends StorePanel {
+export class RtScreenPreview extends StorePanel<'screen-preview'> {
   protected readonly controlPanel = 'screen-preview';
 
   static override properties = {

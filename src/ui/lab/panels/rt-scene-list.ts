@@ -29,7 +29,7 @@ const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
  * `shownControls` (scene-list.objects, scene-list.lights) can leave out the objects or the
  * lights; the camera is always listed.
  */
-export class RtSceneList extends StorePanel {
+export class RtSceneList extends StorePanel<'scene-list'> {
   protected readonly controlPanel = 'scene-list';
   static override properties = {
     ...StorePanel.properties,
