@@ -56,6 +56,14 @@ export type ControlOf<Panel extends LabPanel> = (typeof LAB_CONTROLS)[Panel][num
 /** "panel.control", e.g. "tracer.supersampling". */
 export type ControlTarget = { [Panel in LabPanel]: `${Panel}.${ControlOf<Panel>}` }[LabPanel];
 
+/**
+ * The `data-guide` value of an element that is the control `targets` name
+ * ("render.zoom render.compare"): a target that is no declared control fails to compile.
+ */
+export function guideIds(...targets: ControlTarget[]): string {
+  return targets.join(' ');
+}
+
 export const CONTROL_TARGETS = PANELS.flatMap((panel) =>
   LAB_CONTROLS[panel].map((control) => `${panel}.${control}` as ControlTarget),
 );

@@ -1,6 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, expectTypeOf, it } from 'vitest';
-import { ITEM_TARGETS, LAB_CONTROLS, type ControlOf, type LabPanel } from '../../../src/quest/lab-controls.ts';
+import { guideIds, ITEM_TARGETS, LAB_CONTROLS, type ControlOf, type LabPanel } from '../../../src/quest/lab-controls.ts';
 import {
   CONTROL_NAMES,
   controlIdOf,
@@ -83,6 +83,14 @@ describe('each panel declares its controls\' names', () => {
     expect(isControlName('light', 'spot-angle')).toBe(false);
     expect(isControlName('debugger', 'why-dark')).toBe(true);
     expect(isControlName('debugger', 'whyDark')).toBe(false);
+  });
+});
+
+describe('guide ids written by hand (the render window, the view\'s buttons)', () => {
+  it('joins declared targets, and refuses one that is not declared at compile time', () => {
+    expect(guideIds('render.zoom', 'render.compare')).toBe('render.zoom render.compare');
+    // @ts-expect-error the render window has no "begin": its button is "render.start"
+    expect(guideIds('render.begin')).toBe('render.begin');
   });
 });
 
