@@ -67,9 +67,10 @@ export interface VectorSpec<Name extends string = string> extends ControlText<Na
  * action's reason is kept under the name of the control that asked, to be shown next to it.
  *
  * Each panel draws the controls of one panel of the levels' vocabulary (`controlPanel`, see
- * quest/lab-controls.ts): every such control carries `data-guide="panel.control"` (the guide
- * ring finds it through the panel's GuideHostController), and `shownControls` narrows the
- * panel to the level's choice; a section left with no control is left out.
+ * quest/lab-controls.ts): a control takes only a name that panel declares (control-ids.ts),
+ * carries `data-guide="panel.control"` for it (the guide ring finds it through the panel's
+ * GuideHostController), and `shownControls` narrows the panel to the level's choice; a
+ * section left with no control is left out.
  */
 export abstract class StorePanel<Panel extends LabPanel = LabPanel> extends LitElement {
   static override properties = {
