@@ -1,7 +1,7 @@
 import type { Plugin } from 'vite';
 import { VitePWA } from 'vite-plugin-pwa';
 import { levelTextsPlugin } from './scripts/level-texts-plugin.ts';
-import { defineConfig } from 'vitest/config';
+import { configDefaults, defineConfig } from 'vitest/config';
 
 /**
  * base './' so the built app works from any folder of a static host. The service worker
@@ -89,6 +89,8 @@ export default defineConfig({
   ],
   test: {
     include: ['tests/**/*.test.ts'],
+    // Component tests run in Chromium: vitest.browser.config.ts.
+    exclude: [...configDefaults.exclude, 'tests/components/**'],
     environment: 'node',
     testTimeout: 30_000,
   },

@@ -50,10 +50,19 @@ export const LAB_CONTROLS = {
 
 const PANELS = Object.keys(LAB_CONTROLS) as LabPanel[];
 
-type ControlOf<Panel extends LabPanel> = (typeof LAB_CONTROLS)[Panel][number];
+/** A panel's control ids, e.g. ControlOf<'light'> is 'type' | 'color' | … | 'spot-angle' | …. */
+export type ControlOf<Panel extends LabPanel> = (typeof LAB_CONTROLS)[Panel][number];
 
 /** "panel.control", e.g. "tracer.supersampling". */
 export type ControlTarget = { [Panel in LabPanel]: `${Panel}.${ControlOf<Panel>}` }[LabPanel];
+
+/**
+ * The `data-guide` value of an element that is the control `targets` name
+ * ("render.zoom render.compare"): a target that is no declared control fails to compile.
+ */
+export function guideIds(...targets: ControlTarget[]): string {
+  return targets.join(' ');
+}
 
 export const CONTROL_TARGETS = PANELS.flatMap((panel) =>
   LAB_CONTROLS[panel].map((control) => `${panel}.${control}` as ControlTarget),

@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import type { LabAction } from '../../src/lab-state/lab-action.ts';
 import type { LabPanel } from '../../src/quest/lab-controls.ts';
 import { loadLevels } from '../../src/quest/level-index.ts';
-import { controlIdOf } from '../../src/ui/lab/panels/control-ids.ts';
+import { controlIdOf, isControlName } from '../../src/ui/lab/panels/control-ids.ts';
 
 /**
  * The hint ring points at what the task's solution uses (issue 9): a task's `guide` is the
@@ -16,12 +16,13 @@ import { controlIdOf } from '../../src/ui/lab/panels/control-ids.ts';
 const levelsFolder = new URL('../../levels/', import.meta.url);
 const catalog = loadLevels(readFileSync(new URL('index.json', levelsFolder), 'utf8'), (name) => readFileSync(new URL(name, levelsFolder), 'utf8'));
 
-/** Fields whose control is not `<panel>.<field in kebab case>`: the panels' own names for them. */
+/** Fields that are not the name of the control that edits them (control-ids.ts), or that several controls edit. */
 const CONTROL_OF_FIELD: Partial<Record<LabAction['type'], Record<string, string[]>>> = {
   'object.changed': { position: ['gizmo.translate'], rotation: ['gizmo.rotate'], scale: ['gizmo.scale'] },
   'light.changed': { position: ['gizmo.translate'], rotation: ['gizmo.rotate'] },
-  'camera.changed': { focusDistance: ['tracer.focus-distance', 'tracer.focus-on-selected'] },
-  'rays.changed': { showRays: ['rays.show'], colorBlindPalette: ['rays.color-blind'], showSamplePoints: ['tracer.show-sample-points'] },
+  'camera.changed': { focusDistance: ['tracer.focus-distance', 'tracer.focus-on-selected'], pixels: ['tracer.pixels'] },
+  'settings.changed': { lightTypes: ['tracer.light-types'] },
+  'rays.changed': { showSamplePoints: ['tracer.show-sample-points'] },
   'bvh.changed': { showBounds: ['bvh.bounds'] },
 };
 
@@ -87,7 +88,7 @@ function targetsOfChanges(type: LabAction['type'], changes: object): string[] {
   const targets = Object.keys(changes).flatMap((field) => {
     const named = CONTROL_OF_FIELD[type]?.[field];
     if (named) return named;
-    const id = controlIdOf(panel, field);
+    const id = isControlName(panel, field) ? controlIdOf(panel, field) : undefined;
     if (!id) throw new Error(`no ${panel} control is known to change "${field}" (${type}): add it to CONTROL_OF_FIELD`);
     return [`${panel}.${id}`];
   });

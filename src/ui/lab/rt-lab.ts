@@ -6,7 +6,7 @@ import type { ShowMeStage } from '../../app/show-me-player.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import type { LabState } from '../../lab-state/lab-state.ts';
 import type { Store } from '../../lab-state/store.ts';
-import type { UiPanel } from '../../quest/lab-controls.ts';
+import { type UiPanel, guideIds } from '../../quest/lab-controls.ts';
 import { loadMeshes } from '../../render/load-meshes-browser.ts';
 import { createBrowserRenderPool } from '../../render/web-worker-port.ts';
 import type { Scene } from '../../scene/scene.ts';
@@ -316,7 +316,7 @@ export class RtLab extends LitElement {
           <rt-score .points=${engine?.points ?? 0} .badges=${(engine?.badges ?? []).map((earned) => badgeName(earned.badge, catalog, locale))}></rt-score>
           <button data-command="levels" @click=${() => session?.openMap()} title=${msg('The level map: chapters, levels and your progress')}>${msg('Levels')}</button>
           ${shows('render')
-            ? html`<button class="primary" data-command="render-open" data-guide="render.open" @click=${this.openRenderWindow} title=${msg('Open the render window and ray trace the whole image')}>
+            ? html`<button class="primary" data-command="render-open" data-guide=${guideIds('render.open')} @click=${this.openRenderWindow} title=${msg('Open the render window and ray trace the whole image')}>
                 ${msg('Render image')}
               </button>`
             : nothing}

@@ -37,7 +37,7 @@ export function formatShare(share: number): string {
  * is set, flipped to the pointer's other side near the right and bottom edges; hidden when
  * it is null. It never takes the pointer (pointer-events: none). Reads `store` for the palette.
  */
-export class RtRayTooltip extends StorePanel {
+export class RtRayTooltip extends StorePanel<'view'> {
   protected readonly controlPanel = 'view';
   static override properties = {
     ...StorePanel.properties,

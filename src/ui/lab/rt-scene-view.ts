@@ -14,6 +14,7 @@ import { GuideHostController } from './guide-host.ts';
 import { consumeStore } from './store-context.ts';
 import { itemName, shownName } from './scene-names.ts';
 import './rt-view-toolbar.ts';
+import { guideIds } from '../../quest/lab-controls.ts';
 
 /** The 3D view's code (three.js), loaded after the lab's first render, with a few tries. */
 const labViewCode = new LazyModule(() => import('../../view/lab-view.ts'));
@@ -176,7 +177,7 @@ export class RtSceneView extends LitElement {
   override render() {
     const state = this.state;
     return html`
-      <canvas tabindex="0" data-guide="view.canvas" role="img" aria-label=${state ? describe(state) : msg('3D view')}></canvas>
+      <canvas tabindex="0" data-guide=${guideIds('view.canvas')} role="img" aria-label=${state ? describe(state) : msg('3D view')}></canvas>
       ${this.view
         ? nothing
         : this.viewProblem

@@ -4,6 +4,7 @@ import { styleMap } from 'lit/directives/style-map.js';
 import type { ScreenRays } from '../../render/screen-rays.ts';
 import { colorToHex } from '../controls/color-hex.ts';
 import { StorePanel } from './panels/store-panel.ts';
+import { guideIds } from '../../quest/lab-controls.ts';
 
 /** Arrow keys → the step they move the focused cell by, as [dx, dy]. */
 const ARROWS: Readonly<Record<string, [number, number]>> = {
@@ -32,7 +33,7 @@ const MIN_CELL_PX = 26;
  * Dispatches `pixel.selected` / `pixel.deselected` on `store`; shows `rays` (the screen
  * tracer's latest), and says "Updating…" while they are of an older screen size.
  */
-export class RtScreenPreview extends StorePanel {
+export class RtScreenPreview extends StorePanel<'screen-preview'> {
   protected readonly controlPanel = 'screen-preview';
 
   static override properties = {
@@ -132,7 +133,7 @@ export class RtScreenPreview extends StorePanel {
     return html`
       <div
         class=${stale ? 'grid stale' : 'grid'}
-        data-guide="screen-preview.grid screen.grid"
+        data-guide=${guideIds('screen-preview.grid', 'screen.grid')}
         role="group"
         aria-label=${msg(str`Camera image, ${rays.columns} × ${rays.rows} pixels`)}
         style=${styleMap({ gridTemplateColumns: `repeat(${rays.columns}, minmax(${MIN_CELL_PX}px, 1fr))` })}

@@ -5,6 +5,7 @@ import { GIZMO_MODES, type GizmoMode } from '../../view/gizmo-modes.ts';
 import type { ViewCommand } from '../../view/view-commands.ts';
 import { GuideHostController } from './guide-host.ts';
 import { smallViewToolbarStyles } from './toolbar-small-view.css.ts';
+import { guideIds } from '../../quest/lab-controls.ts';
 
 /** How far one button press moves the view (the keys move less, and repeat). */
 const ORBIT_STEP_DEG = 15;
@@ -236,7 +237,7 @@ export class RtViewToolbar extends LitElement {
           ${this.pixelSelected
             ? html`<button
                 data-command="show-pixel-rays"
-                data-guide="view.show-pixel-rays"
+                data-guide=${guideIds('view.show-pixel-rays')}
                 title=${msg("Move the view so that the chosen pixel's whole ray path fits (Z)")}
                 @click=${() => this.send({ kind: 'show-pixel-rays' })}
               >
@@ -246,14 +247,14 @@ export class RtViewToolbar extends LitElement {
             : nothing}
           <button
             data-command="fly"
-            data-guide="view.fly-to-camera"
+            data-guide=${guideIds('view.fly-to-camera')}
             title=${this.atCamera ? msg('Fly back to where you were (F or Esc)') : msg("Fly to the ray tracer's camera and see what it sees (F)")}
             @click=${() => this.send({ kind: 'fly' })}
           >
             ${icon(this.atCamera ? svg`<path d="M8 4 3 10l5 6M3 10h14" />` : CAMERA)}
             <span class="label">${this.atCamera ? msg('Back to my view') : msg('Camera view')}</span>
           </button>
-          <button data-command="help" data-guide="view.help" title=${msg('All keys and gestures (?)')} @click=${() => this.send({ kind: 'help' })}>
+          <button data-command="help" data-guide=${guideIds('view.help')} title=${msg('All keys and gestures (?)')} @click=${() => this.send({ kind: 'help' })}>
             ${icon(svg`<circle cx="10" cy="10" r="7.5" /><path d="M7.6 7.8a2.5 2.5 0 1 1 3.4 2.3c-.7.3-1 .8-1 1.5v.6" /><circle cx="10" cy="14.6" r=".4" />`)}
             <span class="label">${msg('Help')}</span>
           </button>
@@ -273,7 +274,7 @@ export class RtViewToolbar extends LitElement {
           up: msg('Pan up (Shift + ↑)'),
           down: msg('Pan down (Shift + ↓)'),
         })}
-        <div class="group pad" role="group" aria-label=${msg('Zoom')} data-guide="view.zoom-buttons">
+        <div class="group pad" role="group" aria-label=${msg('Zoom')} data-guide=${guideIds('view.zoom-buttons')}>
           <div class="zoom-grid">
             <button data-command="zoom-in" title=${msg('Zoom in (+)')} aria-label=${msg('Zoom in')} @click=${() => this.send({ kind: 'zoom', factor: ZOOM_STEP })}>
               ${icon(svg`<path d="M10 4v12M4 10h12" />`)}
@@ -289,7 +290,7 @@ export class RtViewToolbar extends LitElement {
         <button
           class="pads-toggle"
           data-command="view-pads"
-          data-guide="view.orbit-buttons view.pan-buttons view.zoom-buttons"
+          data-guide=${guideIds('view.orbit-buttons', 'view.pan-buttons', 'view.zoom-buttons')}
           aria-expanded=${String(this.padsOpen)}
           aria-controls="pads"
           aria-label=${msg('Orbit, pan, zoom')}
@@ -308,7 +309,7 @@ export class RtViewToolbar extends LitElement {
     const why = allowed ? '' : ` — ${msg('not for this selection')}`;
     return html`<button
       data-command=${mode}
-      data-guide=${`gizmo.${mode}`}
+      data-guide=${guideIds(`gizmo.${mode}`)}
       aria-pressed=${String(this.gizmo.mode === mode)}
       aria-disabled=${String(!allowed)}
       title=${tooltip + why}
@@ -320,7 +321,7 @@ export class RtViewToolbar extends LitElement {
 
   private toggle(control: 'space' | 'snap', on: boolean, label: string, key: string, tooltip: string, command: ViewCommand): TemplateResult | typeof nothing {
     if (!this.showsGizmo(control)) return nothing;
-    return html`<button data-command=${command.kind} data-guide=${`gizmo.${control}`} aria-pressed=${String(on)} title=${tooltip} @click=${() => this.send(command)}>
+    return html`<button data-command=${command.kind} data-guide=${guideIds(`gizmo.${control}`)} aria-pressed=${String(on)} title=${tooltip} @click=${() => this.send(command)}>
       ${icon(svg`<rect x="3" y="3" width="14" height="14" rx="3" /><path class="check" d="M6 10.5 9 13.5 14.5 7" />`)} ${label}
       <kbd aria-hidden="true">${key}</kbd>
     </button>`;
@@ -329,7 +330,7 @@ export class RtViewToolbar extends LitElement {
   /** A 3×3 pad of arrow buttons around a dot, captioned with its name (the visible label). */
   private pad(
     caption: string,
-    name: string,
+    name: 'orbit' | 'pan',
     command: (dx: number, dy: number) => ViewCommand,
     tooltips: { left: string; right: string; up: string; down: string },
   ): TemplateResult {
@@ -342,7 +343,7 @@ export class RtViewToolbar extends LitElement {
       >
         ${icon(path)}
       </button>`;
-    return html`<div class="group pad" role="group" aria-label=${caption} data-guide=${`view.${name}-buttons`}>
+    return html`<div class="group pad" role="group" aria-label=${caption} data-guide=${guideIds(`view.${name}-buttons`)}>
       <div class="pad-grid">
         <span></span>${arrow('up', 0, 1, svg`<path d="M5 12l5-5 5 5" />`)}<span></span>
         ${arrow('left', -1, 0, svg`<path d="M12 5l-5 5 5 5" />`)}<span class="centre"></span>${arrow('right', 1, 0, svg`<path d="M8 5l5 5-5 5" />`)}

@@ -1,7 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { LAB_CONTROLS } from '../../../src/quest/lab-controls.ts';
 import { guideRect, itemPosition, viewPointOf, type GuideStage } from '../../../src/ui/lab/guide-targets.ts';
-import { controlIdOf } from '../../../src/ui/lab/panels/control-ids.ts';
 
 const scene: GuideStage['scene'] = {
   objects: [{ id: 'ball', position: [1, 2, 3] }],
@@ -76,26 +74,5 @@ describe('guide target names → places on the page', () => {
     expect(itemPosition(scene, 'ball')).toEqual([1, 2, 3]);
     expect(itemPosition(scene, 'lamp')).toEqual([4, 5, 6]);
     expect(itemPosition(scene, 'nothing')).toBeUndefined();
-  });
-});
-
-describe('panels name their controls by the levels\' ids', () => {
-  it('kebab-cases element names, groups dotted ones, and takes a panel\'s own spellings', () => {
-    expect(controlIdOf('object', 'refractiveIndex')).toBe('refractive-index');
-    expect(controlIdOf('tracer', 'pixels.columns')).toBe('pixels');
-    expect(controlIdOf('tracer', 'lightTypes.area')).toBe('light-types');
-    expect(controlIdOf('rays', 'showRays', { showRays: 'show' })).toBe('show');
-  });
-
-  it('has no id for controls levels cannot name', () => {
-    expect(controlIdOf('object', 'position')).toBeUndefined();
-    expect(controlIdOf('tracer', 'imageSize')).toBeUndefined();
-    expect(controlIdOf('rays', 'showRays')).toBeUndefined();
-  });
-
-  it('every id a level can name in the narrowed panels is a real control id', () => {
-    for (const panel of ['object', 'light', 'tracer', 'rays', 'bvh'] as const) {
-      for (const id of LAB_CONTROLS[panel]) expect(controlIdOf(panel, id)).toBe(id);
-    }
   });
 });

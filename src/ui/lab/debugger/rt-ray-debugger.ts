@@ -44,7 +44,7 @@ const KEY_MOVES: Readonly<Record<string, 'step' | 'back' | 'reset' | 'end'>> = {
  * Reports `debugger.stepped` and `debugger.term-clicked` to the store, and `panel.opened`.
  * Carries `data-step`, `data-line` and `data-ray` (the highlighted ray's kind) for tests.
  */
-export class RtRayDebugger extends StorePanel {
+export class RtRayDebugger extends StorePanel<'debugger'> {
   protected readonly controlPanel = 'debugger';
 
   static override properties = {

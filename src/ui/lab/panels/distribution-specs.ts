@@ -8,7 +8,7 @@ import type { SliderSpec, VectorSpec } from './store-panel.ts';
  * where a lesson needs them; typing reaches the schema's limits.
  */
 
-export function apertureSpec(): SliderSpec {
+export function apertureSpec(): SliderSpec<'aperture'> {
   return {
     name: 'aperture',
     label: msg('Aperture (lens radius)'),
@@ -17,7 +17,7 @@ export function apertureSpec(): SliderSpec {
   };
 }
 
-export function focusDistanceSpec(): SliderSpec {
+export function focusDistanceSpec(): SliderSpec<'focusDistance'> {
   return {
     name: 'focusDistance',
     label: msg('Focus distance'),
@@ -26,7 +26,7 @@ export function focusDistanceSpec(): SliderSpec {
   };
 }
 
-export function lensSamplesSpec(disabled: boolean): SliderSpec {
+export function lensSamplesSpec(disabled: boolean): SliderSpec<'lensSamples'> {
   return {
     name: 'lensSamples',
     label: msg('Lens samples (n)'),
@@ -48,7 +48,7 @@ export function lensSamplesHint(n: number, aperture: number): string {
   return msg(str`${n} × ${n} = ${n * n} lens rays per sample`);
 }
 
-export function timeSamplesSpec(): SliderSpec {
+export function timeSamplesSpec(): SliderSpec<'timeSamples'> {
   return {
     name: 'timeSamples',
     label: msg('Time samples (k)'),
@@ -57,7 +57,7 @@ export function timeSamplesSpec(): SliderSpec {
   };
 }
 
-export function roughnessSpec(): SliderSpec {
+export function roughnessSpec(): SliderSpec<'roughness'> {
   return {
     name: 'roughness',
     label: msg('Roughness (ρ)'),
@@ -66,7 +66,7 @@ export function roughnessSpec(): SliderSpec {
   };
 }
 
-export function glossySamplesSpec(disabled: boolean): SliderSpec {
+export function glossySamplesSpec(disabled: boolean): SliderSpec<'glossySamples'> {
   return {
     name: 'glossySamples',
     label: msg('Glossy samples (m)'),
@@ -77,7 +77,7 @@ export function glossySamplesSpec(disabled: boolean): SliderSpec {
   };
 }
 
-export function velocitySpec(): VectorSpec {
+export function velocitySpec(): VectorSpec<'velocity'> {
   const [min, max] = LIMITS.velocity;
   return {
     name: 'velocity',

@@ -37,7 +37,7 @@ const NUMBER = localNumbers();
  * under a millisecond. The models' BVHs are built once per page (about 50–130 ms for the
  * 8,624-triangle character) the first time a scene with them needs counting.
  */
-export class RtBvhPanel extends StorePanel {
+export class RtBvhPanel extends StorePanel<'bvh'> {
   protected readonly controlPanel = 'bvh';
 
   static override properties = {

@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
 import { css, html, type CSSResultGroup } from 'lit';
+import { ifDefined } from 'lit/directives/if-defined.js';
 import { readSceneFile, sceneFileName, sceneFileText } from '../../../app/scene-file.ts';
 import { LONG_LINK_CHARACTERS, sceneLinkUrl } from '../../../app/scene-link.ts';
 import { downloadText } from '../../../util/download-file.ts';
@@ -24,7 +25,7 @@ interface Note {
  *
  * Dispatches `scene.saved` ({ to: 'file' | 'link' }) and, for a loaded file, `scene.loaded`.
  */
-export class RtFilePanel extends StorePanel {
+export class RtFilePanel extends StorePanel<'file'> {
   protected readonly controlPanel = 'file';
   static override properties = { ...StorePanel.properties, link: { state: true }, note: { state: true } };
 
@@ -107,17 +108,17 @@ export class RtFilePanel extends StorePanel {
   override render() {
     return html`<rt-panel-section heading=${msg('Save and share')} name="file">
       <div class="buttons">
-        <button name="save" data-guide="file.save" @click=${this.saveFile} title=${msg('Download this scene as a .scene.json file')}>${msg('Save as file')}</button>
+        <button name="save" data-guide=${ifDefined(this.guideOf('save'))} @click=${this.saveFile} title=${msg('Download this scene as a .scene.json file')}>${msg('Save as file')}</button>
         <button
           name="load"
-          data-guide="file.load"
+          data-guide=${ifDefined(this.guideOf('load'))}
           @click=${() => this.renderRoot.querySelector<HTMLInputElement>('input[type=file]')?.click()}
           title=${msg('Open a .scene.json file; if it cannot be read, your scene stays as it is')}
         >
           ${msg('Load file…')}
         </button>
         <input type="file" accept=".json,application/json" @change=${this.loadFile} aria-label=${msg('Scene file to load')} />
-        <button name="share" data-guide="file.share" @click=${this.shareLink} title=${msg('Make a link that opens this scene, and copy it')}>${msg('Share link')}</button>
+        <button name="share" data-guide=${ifDefined(this.guideOf('share'))} @click=${this.shareLink} title=${msg('Make a link that opens this scene, and copy it')}>${msg('Share link')}</button>
       </div>
       ${this.link
         ? html`<label class="link">

@@ -17,7 +17,7 @@ import { StorePanel, type ControlPart } from './store-panel.ts';
  * Every edit is a `light.changed` action on `store`; a refused edit's reason is shown next
  * to its control and the control keeps the store's value.
  */
-export class RtLightPanel extends StorePanel {
+export class RtLightPanel extends StorePanel<'light'> {
   protected readonly controlPanel = 'light';
 
   override render() {

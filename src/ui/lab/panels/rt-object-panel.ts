@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
 import { css, html, nothing } from 'lit';
+import { ifDefined } from 'lit/directives/if-defined.js';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { Material, SceneObject } from '../../../scene/scene.ts';
 import { LIMITS } from '../../../scene/scene-limits.ts';
@@ -18,7 +19,7 @@ import { StorePanel, type ControlPart } from './store-panel.ts';
  * Every edit is a `material.changed` or `object.changed` action on `store`; a refused
  * edit's reason is shown next to its control and the control keeps the store's value.
  */
-export class RtObjectPanel extends StorePanel {
+export class RtObjectPanel extends StorePanel<'object'> {
   protected readonly controlPanel = 'object';
 
   static override styles = [
@@ -129,7 +130,7 @@ export class RtObjectPanel extends StorePanel {
       mirror: [msg('Mirror'), msg('Little diffuse, strong specular: reflects its surroundings; keeps the colour.')],
       glass: [msg('Glass'), msg('Transparent with η 1.5 and a sharp highlight; keeps the colour.')],
     };
-    return html`<div class="presets" role="group" aria-labelledby="presets-label" data-guide="object.presets">
+    return html`<div class="presets" role="group" aria-labelledby="presets-label" data-guide=${ifDefined(this.guideOf('presets'))}>
       <span class="presets-label" id="presets-label">${msg('Presets')}</span>
       ${(Object.keys(MATERIAL_PRESETS) as MaterialPresetName[]).map(
         (name) => html`<button

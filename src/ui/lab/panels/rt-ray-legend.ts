@@ -18,7 +18,7 @@ import { timeKey, timeKeyStyles } from './time-key.ts';
  *
  * Reads `store` (rays.colorBlindPalette, rays.colorByTime, scene.settings.shadows); changes nothing.
  */
-export class RtRayLegend extends StorePanel {
+export class RtRayLegend extends StorePanel<'rays'> {
   protected readonly controlPanel = 'rays';
   static override styles = [
     StorePanel.styles,

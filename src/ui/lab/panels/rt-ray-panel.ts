@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
 import { html, nothing } from 'lit';
+import { ifDefined } from 'lit/directives/if-defined.js';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { RayViewOptions } from '../../../lab-state/lab-state.ts';
 import { NEGLIGIBLE_THRESHOLD } from './negligible-threshold.ts';
@@ -30,9 +31,8 @@ const SPEED = { min: 0.5, max: 20, step: 0.5, inputMax: 100 } as const;
  * shows its value, takes a typed number and clamps one out of range with a visible note.
  * Each change is a `rays.changed` action on `store`.
  */
-export class RtRayPanel extends StorePanel {
+export class RtRayPanel extends StorePanel<'rays'> {
   protected readonly controlPanel = 'rays';
-  protected override readonly controlIds = { showRays: 'show', colorBlindPalette: 'color-blind' };
 
   override render() {
     const rays = this.state?.rays;
@@ -145,7 +145,7 @@ export class RtRayPanel extends StorePanel {
           rays.colorByTime,
           (colorByTime) => set({ colorByTime }),
         ),
-        this.shows('legend') ? html`<rt-ray-legend data-guide="rays.legend"></rt-ray-legend>` : nothing,
+        this.shows('legend') ? html`<rt-ray-legend data-guide=${ifDefined(this.guideOf('legend'))}></rt-ray-legend>` : nothing,
       ])}
       ${this.section(msg('Animation'), 'rays-animation', [
         this.switch(
@@ -184,7 +184,7 @@ export class RtRayPanel extends StorePanel {
   }
 
   /** A radius slider in centimetres over a value in metres. */
-  private radiusSlider(name: string, label: string, tooltip: string, metres: number, disabled: boolean, action: (metres: number) => LabAction) {
+  private radiusSlider(name: 'radius' | 'minRadius' | 'maxRadius', label: string, tooltip: string, metres: number, disabled: boolean, action: (metres: number) => LabAction) {
     return this.slider({ name, label, tooltip, ...RADIUS_CM, unit: 'cm', disabled }, metres * CM_PER_M, (cm) => action(cm / CM_PER_M));
   }
 }

@@ -8,6 +8,7 @@ import type { LightType } from '../../../scene/scene.ts';
 import { cameraIcon, lightIcon, shapeIcon } from '../scene-icons.ts';
 import { itemName, lightTypeName, lightTypeShortName, modelName, shapeKindName, shapeName, shownName } from '../scene-names.ts';
 import { StorePanel } from './store-panel.ts';
+import { guideIds } from '../../../quest/lab-controls.ts';
 
 /** One row of the list, in the order the arrow keys walk. */
 interface Item {
@@ -29,7 +30,7 @@ const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
  * `shownControls` (scene-list.objects, scene-list.lights) can leave out the objects or the
  * lights; the camera is always listed.
  */
-export class RtSceneList extends StorePanel {
+export class RtSceneList extends StorePanel<'scene-list'> {
   protected readonly controlPanel = 'scene-list';
   static override properties = {
     ...StorePanel.properties,
@@ -266,10 +267,10 @@ export class RtSceneList extends StorePanel {
     const label = deletable ? msg(str`Delete ${this.state ? itemName(this.state.scene, selection.id) : selection.id}`) : msg('Select an object or a light to delete it');
     return html`
       <div class="actions">
-        <button type="button" data-guide="add-remove.add-object add-remove.add-light" aria-expanded=${this.adding ? 'true' : 'false'} aria-controls="add" @click=${() => (this.adding = !this.adding)}>
+        <button type="button" data-guide=${guideIds('add-remove.add-object', 'add-remove.add-light')} aria-expanded=${this.adding ? 'true' : 'false'} aria-controls="add" @click=${() => (this.adding = !this.adding)}>
           ${this.adding ? '−' : '+'} ${msg('Add')}
         </button>
-        <button type="button" data-guide="add-remove.delete" title=${label} ?disabled=${!deletable} @click=${() => this.delete(selection)}>${msg('Delete')}</button>
+        <button type="button" data-guide=${guideIds('add-remove.delete')} title=${label} ?disabled=${!deletable} @click=${() => this.delete(selection)}>${msg('Delete')}</button>
       </div>
       ${this.adding ? this.addButtons() : nothing}
       ${this.errorLine('edit')}
@@ -280,15 +281,15 @@ export class RtSceneList extends StorePanel {
     const button = (label: string, title: string, action: LabAction) =>
       html`<button type="button" title=${title} @click=${() => this.add(action)}>${label}</button>`;
     return html`<div class="add" id="add">
-      <fieldset data-guide="add-remove.add-object">
+      <fieldset data-guide=${guideIds('add-remove.add-object')}>
         <legend>${msg('Shapes')}</legend>
         ${SHAPES.map((shape) => button(shapeKindName(shape), msg(str`Add ${shapeKindName(shape)} to the scene`), { type: 'object.added', shape }))}
       </fieldset>
-      <fieldset data-guide="add-remove.add-object">
+      <fieldset data-guide=${guideIds('add-remove.add-object')}>
         <legend>${msg('Models')}</legend>
         ${MESH_ASSET_NAMES.map((mesh) => button(modelName(mesh), msg(str`Add the ${modelName(mesh)} model to the scene`), { type: 'object.added', shape: 'mesh', mesh }))}
       </fieldset>
-      <fieldset class="lights" data-guide="add-remove.add-light">
+      <fieldset class="lights" data-guide=${guideIds('add-remove.add-light')}>
         <legend>${msg('Lights')}</legend>
         ${LIGHT_TYPES.map((lightType) => button(lightTypeShortName(lightType), msg(str`Add ${lightTypeName(lightType)} to the scene`), { type: 'light.added', lightType }))}
       </fieldset>

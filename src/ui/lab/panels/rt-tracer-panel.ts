@@ -22,7 +22,7 @@ const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
  * Edits are `settings.changed`, `camera.changed` and (sample points) `rays.changed`
  * actions on `store`; a refused edit's reason is shown next to its control.
  */
-export class RtTracerPanel extends StorePanel {
+export class RtTracerPanel extends StorePanel<'tracer'> {
   protected readonly controlPanel = 'tracer';
 
   override render() {
@@ -216,15 +216,15 @@ export class RtTracerPanel extends StorePanel {
 }
 
 /** The camera screen's columns (axis 0) and rows (axis 1). The lab's slider stops at 16 per side, as VRT's did; typing goes to the schema's 64. */
-function pixelsText(axis: 0 | 1): ControlText {
+function pixelsText(axis: 0 | 1): ControlText<'pixels.columns' | 'pixels.rows'> {
   return axis === 0
     ? { name: 'pixels.columns', label: msg('Pixel columns'), tooltip: msg('Columns of the camera’s small screen whose rays are drawn. Type up to 64.') }
     : { name: 'pixels.rows', label: msg('Pixel rows'), tooltip: msg('Rows of the camera’s small screen whose rays are drawn. Type up to 64.') };
 }
 
 /** Whole phrases per type, so that translations need not build plurals. */
-function lightTypeSwitch(type: LightType): ControlText {
-  const name = `lightTypes.${type}`;
+function lightTypeSwitch(type: LightType): ControlText<`lightTypes.${LightType}`> {
+  const name = `lightTypes.${type}` as const;
   switch (type) {
     case 'point':
       return { name, label: msg('Point lights'), tooltip: msg('Switch all point lights on or off at once (off: they light nothing).') };

@@ -7,7 +7,7 @@ import type { Store } from '../../../lab-state/store.ts';
 import type { Color } from '../../../scene/scene.ts';
 import { LIMITS } from '../../../scene/scene-limits.ts';
 import { LAB_CONTROLS, type LabPanel } from '../../../quest/lab-controls.ts';
-import { controlIdOf } from './control-ids.ts';
+import { controlIdOf, type ControlName } from './control-ids.ts';
 import { GuideHostController } from '../guide-host.ts';
 import { consumeStore } from '../store-context.ts';
 import type { ValueDetail } from '../../controls/control-element.ts';
@@ -29,15 +29,15 @@ const PHONG_TERMS: PhongTerm[] = ['ambient', 'diffuse', 'specular'];
 /** A control, or nothing when the level leaves it out. */
 export type ControlPart = TemplateResult | typeof nothing;
 
-/** What every control of a panel has: its name (for errors and tests), label and tooltip. */
-export interface ControlText {
-  name: string;
+/** What every control of a panel has: its name (control-ids.ts: its hint ring's id), label and tooltip. */
+export interface ControlText<Name extends string = string> {
+  name: Name;
   label: string;
   tooltip: string;
 }
 
 /** An rt-slider's setup; the typed range defaults to the slider's. */
-export interface SliderSpec extends ControlText {
+export interface SliderSpec<Name extends string = string> extends ControlText<Name> {
   min: number;
   max: number;
   step: number;
@@ -49,7 +49,7 @@ export interface SliderSpec extends ControlText {
 }
 
 /** An rt-vector-field's setup. */
-export interface VectorSpec extends ControlText {
+export interface VectorSpec<Name extends string = string> extends ControlText<Name> {
   axes?: string[];
   min: number;
   max: number;
@@ -67,11 +67,12 @@ export interface VectorSpec extends ControlText {
  * action's reason is kept under the name of the control that asked, to be shown next to it.
  *
  * Each panel draws the controls of one panel of the levels' vocabulary (`controlPanel`, see
- * quest/lab-controls.ts): every such control carries `data-guide="panel.control"` (the guide
- * ring finds it through the panel's GuideHostController), and `shownControls` narrows the
- * panel to the level's choice; a section left with no control is left out.
+ * quest/lab-controls.ts): a control takes only a name that panel declares (control-ids.ts),
+ * carries `data-guide="panel.control"` for it (the guide ring finds it through the panel's
+ * GuideHostController), and `shownControls` narrows the panel to the level's choice; a
+ * section left with no control is left out.
  */
-export abstract class StorePanel extends LitElement {
+export abstract class StorePanel<Panel extends LabPanel = LabPanel> extends LitElement {
   static override properties = {
     store: { attribute: false },
     shownControls: { attribute: false },
@@ -107,9 +108,7 @@ export abstract class StorePanel extends LitElement {
   /** The level's choice of this panel's controls (ids of lab-controls.ts), or undefined for all of them. */
   declare shownControls: readonly string[] | undefined;
   /** The panel of lab-controls.ts whose controls this element draws. */
-  protected abstract readonly controlPanel: LabPanel;
-  /** Control names whose level id is not their name in kebab case (showRays → show). */
-  protected readonly controlIds: Readonly<Record<string, string>> = {};
+  protected abstract readonly controlPanel: Panel;
   /** The store's state as last seen. */
   declare protected state: LabState | undefined;
   /** The store's reasons for refusing, by control name. */
@@ -125,20 +124,20 @@ export abstract class StorePanel extends LitElement {
     new GuideHostController(this);
   }
 
-  /** The level id of the control `name` ("pixels.columns" → "pixels"), when it is one of this panel's. */
-  protected controlId(name: string): string | undefined {
-    return controlIdOf(this.controlPanel, name, this.controlIds);
+  /** The level id of the control `name` ("pixels.columns" → "pixels"), unless levels cannot name it. */
+  protected controlId(name: ControlName<Panel>): string | undefined {
+    return controlIdOf(this.controlPanel, name);
   }
 
   /** Whether the level shows the control `name` (a narrowed panel hides controls levels cannot name). */
-  protected shows(name: string): boolean {
+  protected shows(name: ControlName<Panel>): boolean {
     if (!this.shownControls) return true;
     const id = this.controlId(name);
     return id !== undefined && this.shownControls.includes(id);
   }
 
   /** The `data-guide` id of the control `name` ("tracer.supersampling"), if levels can name it. */
-  protected guideOf(name: string): string | undefined {
+  protected guideOf(name: ControlName<Panel>): string | undefined {
     const id = this.controlId(name);
     return id === undefined ? undefined : `${this.controlPanel}.${id}`;
   }
@@ -210,7 +209,7 @@ export abstract class StorePanel extends LitElement {
   }
 
   /** A slider that dispatches `action(value)` while dragging and on commit; `hint` goes under it. */
-  protected slider(spec: SliderSpec, value: number, action: (value: number) => LabAction, hint?: TemplateResult | string): ControlPart {
+  protected slider(spec: SliderSpec<ControlName<Panel>>, value: number, action: (value: number) => LabAction, hint?: TemplateResult | string): ControlPart {
     if (!this.shows(spec.name)) return nothing;
     const send = (event: CustomEvent<ValueDetail<number>>) => this.send(spec.name, action(event.detail.value), event.type === 'input');
     return html`<rt-slider
@@ -236,20 +235,22 @@ export abstract class StorePanel extends LitElement {
 
   /**
    * The three Phong shares, ambient, diffuse and specular, as sliders over 0..1 (an object's
-   * ka, kd, ks and a light's shares alike); `text` gives each one's label and tooltip.
+   * ka, kd, ks and a light's shares alike); `text` gives each one's label and tooltip, and
+   * compiles only in a panel whose controls have the terms' names.
    */
   protected phongSliders(
-    text: Record<PhongTerm, [label: string, tooltip: string]>,
+    text: Record<PhongTerm & ControlName<Panel>, [label: string, tooltip: string]>,
     values: Record<PhongTerm, number>,
     action: (changes: Partial<Record<PhongTerm, number>>) => LabAction,
   ): ControlPart[] {
     const [min, max] = LIMITS.coefficient;
-    return PHONG_TERMS.map((term) =>
+    const terms = PHONG_TERMS.filter((term): term is PhongTerm & ControlName<Panel> => Object.hasOwn(text, term));
+    return terms.map((term) =>
       this.slider({ name: term, label: text[term][0], tooltip: text[term][1], min, max, step: 0.01 }, values[term], (value) => action({ [term]: value })),
     );
   }
 
-  protected switch(text: ControlText, checked: boolean, action: (checked: boolean) => LabAction): ControlPart {
+  protected switch(text: ControlText<ControlName<Panel>>, checked: boolean, action: (checked: boolean) => LabAction): ControlPart {
     if (!this.shows(text.name)) return nothing;
     return html`<rt-switch
       name=${text.name}
@@ -262,7 +263,7 @@ export abstract class StorePanel extends LitElement {
     ></rt-switch>`;
   }
 
-  protected color(text: ControlText, value: Color, action: (value: Color) => LabAction): ControlPart {
+  protected color(text: ControlText<ControlName<Panel>>, value: Color, action: (value: Color) => LabAction): ControlPart {
     if (!this.shows(text.name)) return nothing;
     const send = (event: CustomEvent<ValueDetail<Color>>) => this.send(text.name, action(event.detail.value), event.type === 'input');
     return html`<rt-color-field
@@ -277,7 +278,7 @@ export abstract class StorePanel extends LitElement {
     ></rt-color-field>`;
   }
 
-  protected choice<T extends string>(text: ControlText, options: ChoiceOption[], value: T, action: (value: T) => LabAction): ControlPart {
+  protected choice<T extends string>(text: ControlText<ControlName<Panel>>, options: ChoiceOption[], value: T, action: (value: T) => LabAction): ControlPart {
     if (!this.shows(text.name)) return nothing;
     return html`<rt-choice
       name=${text.name}
@@ -291,7 +292,7 @@ export abstract class StorePanel extends LitElement {
     ></rt-choice>`;
   }
 
-  protected vector<V extends number[]>(spec: VectorSpec, value: V, action: (value: V) => LabAction): ControlPart {
+  protected vector<V extends number[]>(spec: VectorSpec<ControlName<Panel>>, value: V, action: (value: V) => LabAction): ControlPart {
     if (!this.shows(spec.name)) return nothing;
     return html`<rt-vector-field
       name=${spec.name}

@@ -4,6 +4,7 @@ import { renderImageData } from '../../../render/image-data.ts';
 import type { RenderImage } from '../../../render/render-job.ts';
 import type { Quantization } from '../../../tracer/quantize.ts';
 import { type LevelRange, levelRange } from './contrast-stretch.ts';
+import { guideIds } from '../../../quest/lab-controls.ts';
 
 /** The finished image and how it is quantized (dithering, encoding): what a stretch is made from. */
 export interface FinishedImage {
@@ -70,7 +71,7 @@ export class ContrastToggle implements ReactiveController {
   control() {
     const range = this.on ? this.range : null;
     return html`<span slot="tools" class="group">
-      <label class="toggle" data-guide="render.contrast" title=${msg('Show the image’s darkest level as black and its brightest as white, so steps of one level stand out (C). The saved image is not changed.')}>
+      <label class="toggle" data-guide=${guideIds('render.contrast')} title=${msg('Show the image’s darkest level as black and its brightest as white, so steps of one level stand out (C). The saved image is not changed.')}>
         <input type="checkbox" .checked=${this.on} @change=${() => this.toggle()} /><span>${msg('Stretch contrast')}</span>
       </label>
       ${range ? html`<span class="group-label" role="status">${msg(str`Levels ${range.low}–${range.high} shown as 0–255`)}</span>` : nothing}

@@ -23,6 +23,7 @@ import { pngFileName, savePng } from './save-png.ts';
 import type { RtImageCompare } from './rt-image-compare.ts';
 import './rt-image-compare.ts';
 import { paintRasterPicture, type RasterSnapshot, readBackOrWait, takeRasterPicture } from './raster-picture.ts';
+import { guideIds } from '../../../quest/lab-controls.ts';
 
 /**
  * @summary The render window: the full image ray traced by the worker pool, with a progressive
@@ -262,20 +263,20 @@ export class RtRenderWindow extends LitElement {
       <header>
         <h2>${msg('Ray traced image')}</h2>
         ${this.sizeLabel(width, height)} ${this.timeLeft()}
-        <button data-guide="render.close" @click=${this.requestClose} aria-label=${msg('Close the render window')} title=${msg('Close the render window (Esc)')}>✕</button>
+        <button data-guide=${guideIds('render.close')} @click=${this.requestClose} aria-label=${msg('Close the render window')} title=${msg('Close the render window (Esc)')}>✕</button>
       </header>
       <div class="actions">
-        <button class="primary" data-guide="render.start" ${ref(this.renderButton)} @click=${() => void this.startRender()} title=${msg('Ray trace the whole image with all workers (Enter)')}>
+        <button class="primary" data-guide=${guideIds('render.start')} ${ref(this.renderButton)} @click=${() => void this.startRender()} title=${msg('Ray trace the whole image with all workers (Enter)')}>
           ${msg('Render')}
         </button>
-        <button data-guide="render.cancel" ${ref(this.cancelButton)} @click=${this.cancelRender} ?disabled=${!this.jobs.running} title=${msg('Stop the render')}>${msg('Cancel')}</button>
+        <button data-guide=${guideIds('render.cancel')} ${ref(this.cancelButton)} @click=${this.cancelRender} ?disabled=${!this.jobs.running} title=${msg('Stop the render')}>${msg('Cancel')}</button>
         <div class="progress">${this.progress()}</div>
-        <button data-guide="render.save" @click=${() => void this.save()} ?disabled=${!this.jobs.finished && !this.jobs.hasPartial} title=${msg('Save the rendered image as a PNG file, at its exact pixels')}>
+        <button data-guide=${guideIds('render.save')} @click=${() => void this.save()} ?disabled=${!this.jobs.finished && !this.jobs.hasPartial} title=${msg('Save the rendered image as a PNG file, at its exact pixels')}>
           ${msg('Save as PNG')}
         </button>
       </div>
       ${this.check.heavy ? this.check.note(this.check.heavy, (changes, seconds) => this.useLighter(changes, seconds), (seconds) => void this.startRender(true, seconds)) : nothing}
-      ${this.jobs.shown ? this.stage(this.jobs.shown) : html`<div class="placeholder" data-guide="render.zoom render.compare">${msg(str`Press Render to ray trace the scene at ${width} × ${height} pixels.`)}</div>`}
+      ${this.jobs.shown ? this.stage(this.jobs.shown) : html`<div class="placeholder" data-guide=${guideIds('render.zoom', 'render.compare')}>${msg(str`Press Render to ray trace the scene at ${width} × ${height} pixels.`)}</div>`}
       <footer>
         ${this.outcome()} ${this.saveError ? html`<p role="alert" class="error">${this.saveError}</p>` : nothing} ${this.staleNote()}
       </footer>
@@ -321,7 +322,7 @@ export class RtRenderWindow extends LitElement {
 
   private stage({ width, height }: ShownRender) {
     return html`<rt-image-compare
-      data-guide="render.zoom render.compare"
+      data-guide=${guideIds('render.zoom', 'render.compare')}
       ${ref(this.compare)}
       .imageWidth=${width}
       .imageHeight=${height}
