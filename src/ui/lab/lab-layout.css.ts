@@ -3,7 +3,8 @@ import { labCompact } from './lab-compact.css.ts';
 
 /**
  * The lab's grid: the header over three columns (panels, the 3D view, the tasks), the level
- * map over all of them below the header, the render window and the toast over the view.
+ * map over all of them below the header, the render window over the view, the toast over the
+ * task column (rt-toast.ts).
  */
 const labGrid = css`
     :host {
@@ -200,6 +201,10 @@ const labGrid = css`
       }
       :host([free-lab]) .tasks {
         display: none;
+      }
+      /* Without the task column, messages go over the panels (rt-toast.ts: never over the view). */
+      :host([free-lab]) rt-toast {
+        inset: auto auto calc(var(--rt-space) * 2) var(--rt-space);
       }
     }
 `;
