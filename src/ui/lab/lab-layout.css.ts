@@ -136,6 +136,13 @@ const labGrid = css`
       background: var(--rt-surface);
       box-shadow: var(--rt-shadow);
     }
+    /* Out of the way of the chosen pixel's rays: below the view's top right buttons (preview-place.ts, TOP_RIGHT_TOP). */
+    rt-screen-preview[data-place='top-right'] {
+      left: auto;
+      bottom: auto;
+      right: var(--rt-space);
+      top: 148px;
+    }
     /* The ray colours over the view, below its top toolbar, in levels whose ray panel does not show them. */
     .view-legend {
       position: absolute;
