@@ -157,6 +157,13 @@ test('the render window stays open when the view changes nothing it covers, and 
   });
   await expect(window).toBeHidden();
   await expect(page.locator('rt-toast')).toContainText('The render window was closed to show the 3D view this task needs. Open it again with Render image.');
+  // The message is over the task column, clear of the 3D view (its rays, its pads a hint may ring) and of the panels.
+  const message = (await page.locator('rt-toast .toast').first().boundingBox())!;
+  const view = (await page.locator('rt-scene-view').boundingBox())!;
+  const tasks = (await page.locator('rt-lab .tasks').boundingBox())!;
+  expect(message.x).toBeGreaterThanOrEqual(view.x + view.width);
+  expect(message.x).toBeGreaterThanOrEqual(tasks.x);
+  expect(message.x + message.width).toBeLessThanOrEqual(tasks.x + tasks.width);
   // Opened again, the last image is still there.
   await page.getByRole('button', { name: 'Render image' }).click();
   await expect(window.getByRole('img', { name: 'The ray traced image' })).toBeVisible();

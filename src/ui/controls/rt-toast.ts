@@ -13,8 +13,9 @@ const SHOW_MS = 6000;
 const MS_PER_CHARACTER = 60;
 
 /**
- * @summary Short messages at the bottom of the page: a refused change ("settings.supersampling:
- * must be between 1 and 8, got 40"), a broken file, a hint that something happened.
+ * @summary Short messages in the page's bottom right corner: a refused change
+ * ("settings.supersampling: must be between 1 and 8, got 40"), a broken file, a hint that
+ * something happened.
  * Announced to screen readers: two live regions that are always there (role=status for
  * news, role=alert for problems), so that a message added to them is read out.
  *
@@ -26,10 +27,13 @@ export class RtToast extends LitElement {
   static override properties = { toasts: { state: true } };
 
   static override styles = css`
+    /* In the bottom right corner, over the lab's task column (at most 280 px wide, as
+       lab-layout.css.ts makes it): there it covers neither the 3D view, with the rays and
+       pads a task names or rings, nor the panels a hint rings. On a small screen that is
+       the column beside (or below) the view too. */
     :host {
       position: fixed;
-      inset: auto auto calc(var(--rt-space) * 2) 50%;
-      transform: translateX(-50%);
+      inset: auto var(--rt-space) calc(var(--rt-space) * 2) auto;
       margin: 0;
       padding: 0;
       border: 0;
@@ -37,7 +41,13 @@ export class RtToast extends LitElement {
       overflow: visible;
       pointer-events: none;
       width: max-content;
-      max-width: min(560px, 90vw);
+      max-width: min(264px, calc(100vw - var(--rt-space) * 2));
+    }
+    /* Where the task column narrows to 240–260 px (lab-layout.css.ts), so does the message. */
+    @media (max-width: 1180px) {
+      :host {
+        max-width: min(244px, calc(100vw - var(--rt-space) * 2));
+      }
     }
     /* The UA hides a closed popover with display: none; only an open one is laid out. */
     :host(:popover-open),

@@ -3,7 +3,8 @@ import { labCompact } from './lab-compact.css.ts';
 
 /**
  * The lab's grid: the header over three columns (panels, the 3D view, the tasks), the level
- * map over all of them below the header, the render window and the toast over the view.
+ * map over all of them below the header, the render window over the view, the toast over the
+ * task column (rt-toast.ts).
  */
 const labGrid = css`
     :host {
@@ -135,6 +136,13 @@ const labGrid = css`
       background: var(--rt-surface);
       box-shadow: var(--rt-shadow);
     }
+    /* Out of the way of the chosen pixel's rays: below the view's top right buttons (preview-place.ts, TOP_RIGHT_TOP). */
+    rt-screen-preview[data-place='top-right'] {
+      left: auto;
+      bottom: auto;
+      right: var(--rt-space);
+      top: 148px;
+    }
     /* The ray colours over the view, below its top toolbar, in levels whose ray panel does not show them. */
     .view-legend {
       position: absolute;
@@ -200,6 +208,10 @@ const labGrid = css`
       }
       :host([free-lab]) .tasks {
         display: none;
+      }
+      /* Without the task column, messages go over the panels (rt-toast.ts: never over the view). */
+      :host([free-lab]) rt-toast {
+        inset: auto auto calc(var(--rt-space) * 2) var(--rt-space);
       }
     }
 `;

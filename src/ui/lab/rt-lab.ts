@@ -35,6 +35,7 @@ import { quizPictureDrawer } from './quiz-picture-drawer.ts';
 import { quizPicturesContext } from '../game/quiz-pictures.ts';
 import { ON_DEMAND_PANELS } from './lab-elements.ts';
 import { ViewCoverController } from './view-cover.ts';
+import { PreviewPlaceController } from './preview-place.ts';
 import { boxesOverlap, type GuideAndLook, renderWindowInTheWay } from './render-window/render-window-in-the-way.ts';
 
 export { FREE_LAB_HASH } from './quest-controller.ts';
@@ -103,6 +104,7 @@ export class RtLab extends LitElement {
       overlays: [...this.renderRoot.querySelectorAll('rt-screen-preview, rt-ray-debugger')],
       tell: (px) => this.labView()?.setCoveredBottom(px),
     }));
+    new PreviewPlaceController(this, () => ({ view: this.labView(), preview: this.renderRoot.querySelector('rt-screen-preview') }));
   }
 
   /** The app's one source of truth. */

@@ -1,4 +1,5 @@
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
+import { previewBox } from './preview-place.ts';
 
 /**
  * How much of the 3D view's bottom the panels laid over it cover (the pixel preview, the
@@ -36,8 +37,23 @@ export class ViewCoverController implements ReactiveController {
   private measure(): void {
     const { view, overlays, tell } = this.parts();
     if (!view) return;
-    tell(coveredBottom(view.getBoundingClientRect(), overlays.map((overlay) => overlay.getBoundingClientRect())));
+    const box = view.getBoundingClientRect();
+    tell(coveredBottom(box, overlays.map((overlay) => homeBox(overlay, box))));
   }
+}
+
+/**
+ * An overlay moved out of the way of the chosen pixel's rays (the pixel preview in the upper
+ * right: preview-place.ts) counts at its home in the lower left: the framing keeps that
+ * place free, so the preview can come back to it without covering what a task shows.
+ */
+function homeBox(overlay: Element, view: Box): Box {
+  const box = overlay.getBoundingClientRect();
+  if (!(overlay instanceof HTMLElement) || overlay.dataset.place !== 'top-right') return box;
+  const home = previewBox('home', view, box);
+  const left = view.left + home.left;
+  const top = view.top + home.top;
+  return { left, top, right: left + home.width, bottom: top + home.height, width: home.width, height: home.height };
 }
 
 type Box = Pick<DOMRectReadOnly, 'left' | 'top' | 'right' | 'bottom' | 'width' | 'height'>;
