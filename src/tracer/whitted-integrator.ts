@@ -19,9 +19,7 @@ import { hashKey, RandomStream } from './sampler.ts';
 import { leavingShape, offsetOrigin, ShadingFrame } from './shading-frame.ts';
 import { ShadowTester } from './shadow-tester.ts';
 import type { TracerScene } from './tracer-scene.ts';
-
-/** Salt so that glossy directions never share random numbers with light sampling. */
-import { GLOSS_STREAM as GLOSS_SALT } from './random-streams.ts';
+import { GLOSS_STREAM } from './random-streams.ts';
 
 /**
  * Whitted-style recursive ray tracing (Whitted 1980) with the Phong model of spec §2:
@@ -318,7 +316,7 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
     ideal.copy(frame.childDirection);
     perpendicularBasis(ideal, tangent, bitangent);
     // Drawn before any child is traced: a child's own light samples restart the stream.
-    jitteredDiscPoints(m, this.random.reset(hashKey(this.sampleKey, GLOSS_SALT, this.glossEvaluation++)), discPoints);
+    jitteredDiscPoints(m, this.random.reset(hashKey(this.sampleKey, GLOSS_STREAM, this.glossEvaluation++)), discPoints);
     const share = weight / (m * m);
     for (let i = 0; i < m * m; i++) {
       const direction = glossyDirection(ideal, tangent, bitangent, material.roughness, discPoints[i * 2], discPoints[i * 2 + 1], frame.childDirection);
