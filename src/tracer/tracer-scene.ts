@@ -9,8 +9,7 @@ import { tracerMaterial } from './tracer-material.ts';
 import { ObjectBvh } from './object-bvh.ts';
 import { meshAccel } from './shapes/mesh-accel.ts';
 import { Shape } from './shapes/shape.ts';
-
-const DEG = Math.PI / 180;
+import { RADIANS_PER_DEGREE } from '../util/angles.ts';
 
 /** The shape kinds and sample (and time) patterns the tracer compares in its hot code, kept as this program's own constants (see interned.ts). */
 const SHAPE_KINDS: { readonly [K in ShapeKind]: K } = { sphere: 'sphere', box: 'box', cylinder: 'cylinder', plane: 'plane', mesh: 'mesh' };
@@ -81,6 +80,6 @@ function createShape(object: SceneObject, index: number, meshes: MeshLibrary): S
 /** position · rotation (Euler XYZ, degrees) · scale, as three.js composes an Object3D. */
 export function objectToWorld(object: Pick<SceneObject, 'position' | 'rotation' | 'scale'>): Matrix4 {
   const [rx, ry, rz] = object.rotation;
-  const rotation = new Quaternion().setFromEuler(new Euler(rx * DEG, ry * DEG, rz * DEG, 'XYZ'));
+  const rotation = new Quaternion().setFromEuler(new Euler(rx * RADIANS_PER_DEGREE, ry * RADIANS_PER_DEGREE, rz * RADIANS_PER_DEGREE, 'XYZ'));
   return new Matrix4().compose(new Vector3(...object.position), rotation, new Vector3(...object.scale));
 }

@@ -9,13 +9,12 @@ import {
   objectChanges,
   roundToStep,
 } from '../../src/view/gizmo-changes.ts';
-
-const DEG = Math.PI / 180;
+import { RADIANS_PER_DEGREE } from '../../src/util/angles.ts';
 
 function pose(position: [number, number, number], degrees: [number, number, number], scale: [number, number, number] = [1, 1, 1]) {
   return {
     position: new Vector3(...position),
-    quaternion: new Quaternion().setFromEuler(new Euler(degrees[0] * DEG, degrees[1] * DEG, degrees[2] * DEG, 'XYZ')),
+    quaternion: new Quaternion().setFromEuler(new Euler(degrees[0] * RADIANS_PER_DEGREE, degrees[1] * RADIANS_PER_DEGREE, degrees[2] * RADIANS_PER_DEGREE, 'XYZ')),
     scale: new Vector3(...scale),
   };
 }
