@@ -1,6 +1,7 @@
 import { Euler, type Quaternion, Vector3 } from 'three';
 import { LIMITS } from '../scene/scene-limits.ts';
 import type { Camera, Light, SceneObject, Vec3 } from '../scene/scene.ts';
+import { SCENE_EULER_ORDER } from '../tracer/scene-rotation.ts';
 import { DEGREES_PER_RADIAN } from '../util/angles.ts';
 
 /** What Shift (or the Snap toggle) rounds a gizmo drag to: 0.25 m, 15°, 0.25× (as the lab's snapping did). */
@@ -26,9 +27,9 @@ export function roundToStep(value: number, step: number): number {
   return rounded === 0 ? 0 : rounded;
 }
 
-/** Euler XYZ in degrees in (−180, 180], rounded, as the scene file stores rotations. */
+/** The scene's rotation (scene-rotation.ts) in degrees in (−180, 180], rounded, as the scene file stores it. */
 export function eulerDegrees(quaternion: Quaternion, snap: boolean): Vec3 {
-  euler.setFromQuaternion(quaternion, 'XYZ');
+  euler.setFromQuaternion(quaternion, SCENE_EULER_ORDER);
   const step = snap ? SNAP.rotateDegrees : FINE.rotateDegrees;
   return [euler.x, euler.y, euler.z].map((radians) => {
     const degrees = roundToStep(radians * DEGREES_PER_RADIAN, step);

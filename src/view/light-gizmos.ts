@@ -22,6 +22,7 @@ import {
 import type { Light, Scene } from '../scene/scene.ts';
 import { setPickTag } from './picking.ts';
 import { RADIANS_PER_DEGREE } from '../util/angles.ts';
+import { sceneEuler } from '../tracer/scene-rotation.ts';
 
 /** The drawn length of a spot light's cone along its sides (metres): a fixed slant keeps a 170° cone from growing huge. */
 export const SPOT_CONE_SLANT = 0.9;
@@ -149,7 +150,7 @@ export class LightGizmos {
     const rig = gizmo.rig;
     rig.position.set(...light.position);
     rig.scale.set(1, 1, 1);
-    if (light.type !== 'point') rig.rotation.set(light.rotation[0] * RADIANS_PER_DEGREE, light.rotation[1] * RADIANS_PER_DEGREE, light.rotation[2] * RADIANS_PER_DEGREE, 'XYZ');
+    if (light.type !== 'point') sceneEuler(light.rotation, rig.rotation);
     if (light.type === 'spot' && gizmo.sized) {
       const half = (light.spotAngle / 2) * RADIANS_PER_DEGREE;
       const radius = SPOT_CONE_SLANT * Math.sin(half);

@@ -2,6 +2,7 @@ import { Group, Object3D, PointLight, SpotLight } from 'three';
 import type { Light, Scene } from '../scene/scene.ts';
 import { FOLLOWS_DISTANCE } from './raster-falloff.ts';
 import { RADIANS_PER_DEGREE } from '../util/angles.ts';
+import { sceneEuler } from '../tracer/scene-rotation.ts';
 
 interface RasterLight {
   /** Placed and turned like the scene light; the three.js light sits at its origin. */
@@ -64,7 +65,7 @@ export class RasterLights {
 
   private update(entry: RasterLight, light: Light, enabled: boolean): void {
     entry.holder.position.set(...light.position);
-    if (light.type !== 'point') entry.holder.rotation.set(light.rotation[0] * RADIANS_PER_DEGREE, light.rotation[1] * RADIANS_PER_DEGREE, light.rotation[2] * RADIANS_PER_DEGREE, 'XYZ');
+    if (light.type !== 'point') sceneEuler(light.rotation, entry.holder.rotation);
     entry.light.visible = enabled;
     entry.light.color.setRGB(...light.color);
     entry.light.intensity = Math.PI * light.intensity * light.diffuse;
