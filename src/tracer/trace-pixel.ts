@@ -21,6 +21,7 @@ export function tracePixel(scene: TracerScene, px: number, py: number, seed: num
   const integrator = integratorFor(scene);
   const roots: RayNode[] = [];
   integrator.childWeights.clear();
+  integrator.unclampedSums.clear();
   integrator.recordTerms = options.terms === true;
   let color: Vector3;
   try {
@@ -28,12 +29,13 @@ export function tracePixel(scene: TracerScene, px: number, py: number, seed: num
   } finally {
     integrator.recordTerms = false;
   }
-  assignContributions(roots, integrator.childWeights);
+  assignContributions(roots, integrator.childWeights, integrator.unclampedSums);
   if (options.terms) {
     for (const root of roots) root.weight = 1 / roots.length;
     for (const [node, weight] of integrator.childWeights) node.weight = weight;
   }
   integrator.childWeights.clear();
+  integrator.unclampedSums.clear();
   return { pixel: [px, py], color: [Math.fround(color.x), Math.fround(color.y), Math.fround(color.z)], rays: roots };
 }
 

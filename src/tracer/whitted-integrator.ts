@@ -108,6 +108,8 @@ export class WhittedIntegrator {
   readonly stats: RayStats = emptyRayStats();
   /** What each recorded child adds to its parent per unit of its colour (ks, kr, kt or 1). */
   readonly childWeights = new Map<RayNode, number>();
+  /** A recorded hit's colour summed over its channels before clamping: what its children's shares divide (ray-contributions.ts). */
+  readonly unclampedSums = new Map<RayNode, number>();
   /** Whether recorded hits also get their shading terms (ray-debugger spec §1); the colours are the same either way. */
   recordTerms = false;
   private readonly frames: Frame[] = [];
@@ -180,6 +182,7 @@ export class WhittedIntegrator {
     frame.pathLength = (depth > 0 ? this.frames[depth - 1].pathLength : 0) + hit.t;
     const terms = this.shade(ray, hit.shape, depth, out, node);
     if (terms) terms.sum = out.toArray();
+    if (node) this.unclampedSums.set(node, out.x + out.y + out.z);
     out.clampScalar(0, 1);
     if (node) {
       recordEnd(node, true, hit.t, hit.shape.id, out);
