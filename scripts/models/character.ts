@@ -1,6 +1,7 @@
 import { BufferGeometry, CapsuleGeometry, CylinderGeometry, Euler, Matrix4, Quaternion, SphereGeometry, Vector3 } from 'three';
 import { mergeGeometries } from 'three/examples/jsm/utils/BufferGeometryUtils.js';
 import type { ModelRecipe } from './model-recipe.ts';
+import { RADIANS_PER_DEGREE } from '../../src/util/angles.ts';
 
 type Triple = [number, number, number];
 
@@ -12,11 +13,9 @@ interface Placement {
   scale?: Triple;
 }
 
-const DEG = Math.PI / 180;
-
 /** Moves a part into place; its normals follow (BufferGeometry uses the normal matrix). */
 function place(geometry: BufferGeometry, { at, rotation = [0, 0, 0], scale = [1, 1, 1] }: Placement): BufferGeometry {
-  const turn = new Quaternion().setFromEuler(new Euler(rotation[0] * DEG, rotation[1] * DEG, rotation[2] * DEG));
+  const turn = new Quaternion().setFromEuler(new Euler(rotation[0] * RADIANS_PER_DEGREE, rotation[1] * RADIANS_PER_DEGREE, rotation[2] * RADIANS_PER_DEGREE));
   return geometry.applyMatrix4(new Matrix4().compose(new Vector3(...at), turn, new Vector3(...scale)));
 }
 
@@ -37,7 +36,7 @@ function pair(build: (side: 1 | -1) => BufferGeometry): BufferGeometry[] {
 function robot(): BufferGeometry {
   const arm = (side: 1 | -1) => place(new CapsuleGeometry(0.04, 0.2, 6, 20), { at: [side * 0.24, 0.47, 0], rotation: [0, 0, side * 25] });
   // The hand sits at the arm's lower end: 0.14 m from its centre along the tilted arm.
-  const hand = (side: 1 | -1) => ball(0.055, 10, { at: [side * (0.24 + 0.14 * Math.sin(25 * DEG)), 0.47 - 0.14 * Math.cos(25 * DEG), 0] });
+  const hand = (side: 1 | -1) => ball(0.055, 10, { at: [side * (0.24 + 0.14 * Math.sin(25 * RADIANS_PER_DEGREE)), 0.47 - 0.14 * Math.cos(25 * RADIANS_PER_DEGREE), 0] });
   const parts = [
     ...pair((side) => ball(1, 10, { at: [side * 0.1, 0.045, 0.02], scale: [0.09, 0.045, 0.13] })), // feet, standing on y = 0
     ...pair((side) => place(new CapsuleGeometry(0.05, 0.16, 6, 20), { at: [side * 0.1, 0.19, 0] })), // legs

@@ -1,7 +1,5 @@
 import { msg, str } from '@lit/localize';
-import { fromBase64Url, toBase64Url } from '../util/base64url.ts';
-import { deflate, inflate, InflatedTooLarge } from '../util/zlib-bytes.ts';
-import { readJson } from '../util/read-json.ts';
+import { packJson, unpackJson } from '../util/packed-json.ts';
 import { parseScene, type SceneParseResult } from '../scene/scene-schema.ts';
 import type { Scene } from '../scene/scene.ts';
 import { MAX_SCENE_FILE_BYTES } from './scene-file.ts';
@@ -28,8 +26,7 @@ export function isSceneFragment(hash: string): boolean {
 
 /** The fragment (with its `#`) that opens `scene`. */
 export async function encodeSceneLink(scene: Scene): Promise<string> {
-  const packed = await deflate(new TextEncoder().encode(JSON.stringify(scene)));
-  return `${SCENE_LINK_PREFIX}${toBase64Url(packed)}`;
+  return `${SCENE_LINK_PREFIX}${await packJson(scene)}`;
 }
 
 /** The whole address to share: the app's address without its fragment, plus the scene's. */
@@ -43,17 +40,19 @@ export async function sceneLinkUrl(scene: Scene, appAddress: string): Promise<st
  */
 export async function decodeSceneLink(hash: string): Promise<SceneParseResult> {
   if (!isSceneFragment(hash)) return damaged(msg('it does not start with #/s/'));
-  const bytes = fromBase64Url(hash.slice(SCENE_LINK_PREFIX.length));
-  if (bytes === null || bytes.length === 0) return damaged(msg('it contains characters that cannot be part of a link, or it was cut short'));
-  let text: string;
-  try {
-    text = new TextDecoder('utf-8', { fatal: true }).decode(await inflate(bytes, MAX_SCENE_FILE_BYTES));
-  } catch (error) {
-    // The whole reason in the learner's language: the error's own message is English.
-    return damaged(error instanceof InflatedTooLarge ? msg(str`it unpacks to more than ${error.limit / 1024} kB, more than any scene`) : msg('it was cut short or changed'));
+  const unpacked = await unpackJson(hash.slice(SCENE_LINK_PREFIX.length), MAX_SCENE_FILE_BYTES);
+  if (unpacked.ok) return parseScene(unpacked.value);
+  // The whole reason in the learner's language.
+  switch (unpacked.problem) {
+    case 'not-base64url':
+      return damaged(msg('it contains characters that cannot be part of a link, or it was cut short'));
+    case 'damaged':
+      return damaged(msg('it was cut short or changed'));
+    case 'too-large':
+      return damaged(msg(str`it unpacks to more than ${unpacked.limit / 1024} kB, more than any scene`));
+    case 'not-json':
+      return damaged(unpacked.reason);
   }
-  const json = readJson(text);
-  return json.ok ? parseScene(json.value) : damaged(json.error);
 }
 
 /** A problem with the link itself (not with a field of the scene): a reason without a path. */

@@ -1,11 +1,9 @@
 import { msg, str } from '@lit/localize';
 import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
 import type { LevelCatalog } from '../quest/level-index.ts';
-import { readJson } from '../util/read-json.ts';
 import type { Assignment } from './assignment.ts';
 import { assignmentSchema } from './assignment-schema.ts';
-import { fromBase64Url, toBase64Url } from '../util/base64url.ts';
-import { deflate, inflate, InflatedTooLarge } from '../util/zlib-bytes.ts';
+import { packJson, type PackedJsonProblem, unpackJson } from '../util/packed-json.ts';
 
 /**
  * An assignment as a link: `#/a/<version>.<payload>`, the payload being the assignment's
@@ -41,9 +39,7 @@ export function isAssignmentFragment(hash: string): boolean {
 
 /** The fragment (with its `#`) that opens `assignment`. */
 export async function encodeAssignment(assignment: Assignment): Promise<string> {
-  const json = new TextEncoder().encode(JSON.stringify(assignment));
-  const packed = await deflate(json);
-  return `${LINK_PREFIX}${LINK_VERSION}.${toBase64Url(packed)}`;
+  return `${LINK_PREFIX}${LINK_VERSION}.${await packJson(assignment)}`;
 }
 
 /** The whole address for students: the app's address without its fragment, plus the assignment's. */
@@ -64,18 +60,9 @@ export async function decodeAssignment(hash: string, catalog?: LevelCatalog): Pr
   if (version !== String(LINK_VERSION)) {
     return { ok: false, kind: 'other-version', reasons: [msg(str`the link has version ${JSON.stringify(version)}; this app opens version ${LINK_VERSION}`)] };
   }
-  const bytes = fromBase64Url(body.slice(dot + 1));
-  if (bytes === null || bytes.length === 0) return damaged(msg('it contains characters that cannot be part of a link, or it was cut short'));
-  let text: string;
-  try {
-    text = new TextDecoder('utf-8', { fatal: true }).decode(await inflate(bytes, MAX_ASSIGNMENT_BYTES));
-  } catch (error) {
-    // The whole reason in the learner's language: the error's own message is English.
-    return damaged(error instanceof InflatedTooLarge ? msg(str`it unpacks to more than ${error.limit / 1024} kB, more than any assignment`) : msg('it was cut short or changed'));
-  }
-  const json = readJson(text);
-  if (!json.ok) return damaged(json.error);
-  const parsed = assignmentSchema.safeParse(json.value, { error: describeIssue });
+  const unpacked = await unpackJson(body.slice(dot + 1), MAX_ASSIGNMENT_BYTES);
+  if (!unpacked.ok) return damaged(packedProblemText(unpacked));
+  const parsed = assignmentSchema.safeParse(unpacked.value, { error: describeIssue });
   if (!parsed.success) return { ok: false, kind: 'damaged', reasons: formatIssues(parsed.error.issues) };
   const unknown = catalog ? unknownParts(parsed.data, catalog) : [];
   return unknown.length === 0 ? { ok: true, assignment: parsed.data } : { ok: false, kind: 'unknown-levels', reasons: unknown };
@@ -92,6 +79,20 @@ export function unknownParts(assignment: Assignment, catalog: LevelCatalog): str
     for (const task of tasks) if (!entry.level.tasks.some((known) => known.id === task)) unknown.push(`${levelId}/${task}`);
   }
   return unknown;
+}
+
+/** Why the link's payload did not unpack, in the learner's language. */
+function packedProblemText(unpacked: PackedJsonProblem): string {
+  switch (unpacked.problem) {
+    case 'not-base64url':
+      return msg('it contains characters that cannot be part of a link, or it was cut short');
+    case 'damaged':
+      return msg('it was cut short or changed');
+    case 'too-large':
+      return msg(str`it unpacks to more than ${unpacked.limit / 1024} kB, more than any assignment`);
+    case 'not-json':
+      return unpacked.reason;
+  }
 }
 
 function damaged(reason: string): AssignmentLinkResult {

@@ -1,8 +1,7 @@
 import { Vector3 } from 'three';
 import { effectiveFocusDistance } from '../scene/camera-focus.ts';
 import type { Camera } from '../scene/scene.ts';
-
-const DEG = Math.PI / 180;
+import { RADIANS_PER_DEGREE } from '../util/angles.ts';
 
 /**
  * The camera: turns a point on the image (in pixels, y down) into a primary ray.
@@ -38,7 +37,7 @@ export class CameraRays {
     const upHint = Math.abs(this.forward.y) > 0.999 ? new Vector3(0, 0, -Math.sign(this.forward.y)) : new Vector3(0, 1, 0);
     this.right.crossVectors(this.forward, upHint).normalize();
     this.up.crossVectors(this.right, this.forward);
-    this.tanHalfFov = Math.tan((camera.fov * DEG) / 2);
+    this.tanHalfFov = Math.tan((camera.fov * RADIANS_PER_DEGREE) / 2);
     this.aperture = camera.aperture;
     this.focusDistance = effectiveFocusDistance(camera);
     this.lensSamplesPerSide = camera.aperture > 0 ? camera.lensSamples : 1;

@@ -1,9 +1,9 @@
-import { Box3, Euler, Quaternion, Vector3 } from 'three';
+import { Box3, Vector3 } from 'three';
 import type { Light, LightType } from '../scene/scene.ts';
 import { interned } from './interned.ts';
 import type { RandomStream } from './sampler.ts';
-
-const DEG = Math.PI / 180;
+import { RADIANS_PER_DEGREE } from '../util/angles.ts';
+import { sceneQuaternion } from './scene-rotation.ts';
 
 /** The types the sample loop compares, kept as this program's own constants (see interned.ts). */
 const LIGHT_TYPES: { readonly [K in LightType]: K } = { point: 'point', spot: 'spot', area: 'area' };
@@ -61,11 +61,11 @@ export class TracerLight {
     this.isDisc = false;
     this.extent.setFromPoints([this.position]);
     if (light.type === 'point') return;
-    const rotation = new Quaternion().setFromEuler(new Euler(light.rotation[0] * DEG, light.rotation[1] * DEG, light.rotation[2] * DEG, 'XYZ'));
+    const rotation = sceneQuaternion(light.rotation);
     this.direction.applyQuaternion(rotation);
     this.angleExponent = light.angleAttenuation;
     if (light.type === 'spot') {
-      this.cosHalfAngle = Math.cos((light.spotAngle / 2) * DEG);
+      this.cosHalfAngle = Math.cos((light.spotAngle / 2) * RADIANS_PER_DEGREE);
       return;
     }
     this.cosHalfAngle = 0;

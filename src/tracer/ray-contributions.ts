@@ -7,17 +7,23 @@ import type { RayNode } from './ray-tree.ts';
  * multiplies the child's colour by (ks, kr or kt; light rays are added as they are).
  * Example: a ray with 25% whose children give 40% and 20% of its colour has children of
  * 10% and 5%.
+ *
+ * The parent's colour is taken before clamping (`unclampedSums`, per recorded hit): a hit
+ * brighter than white is clamped to 1 per channel, yet its children add up to its unclamped
+ * colour, so dividing by the clamped one gave the children together more than their
+ * parent's share (shares over 100 % in the ray panel). Over the unclamped sum, the
+ * children's shares add up to at most the parent's; the rest is the hit's own ambient term.
  */
-export function assignContributions(roots: RayNode[], weights: ReadonlyMap<RayNode, number>): void {
-  for (const root of roots) assign(root, 1 / roots.length, weights);
+export function assignContributions(roots: RayNode[], weights: ReadonlyMap<RayNode, number>, unclampedSums: ReadonlyMap<RayNode, number> = new Map()): void {
+  for (const root of roots) assign(root, 1 / roots.length, weights, unclampedSums);
 }
 
-function assign(node: RayNode, contribution: number, weights: ReadonlyMap<RayNode, number>): void {
+function assign(node: RayNode, contribution: number, weights: ReadonlyMap<RayNode, number>, unclampedSums: ReadonlyMap<RayNode, number>): void {
   node.contribution = contribution;
-  const parentSum = sum(node.color);
+  const parentSum = unclampedSums.get(node) ?? sum(node.color);
   for (const child of node.children) {
     const added = (weights.get(child) ?? 1) * sum(child.color);
-    assign(child, parentSum > 0 ? (contribution * added) / parentSum : 0, weights);
+    assign(child, parentSum > 0 ? (contribution * added) / parentSum : 0, weights, unclampedSums);
   }
 }
 

@@ -18,6 +18,8 @@ export class RayTreeRecording {
   readonly roots: RayNode[] = [];
   /** What each child adds to its parent per unit of its colour (ks, kr, kt, a lens ray's 1/(n²·k), or 1). */
   readonly weights = new Map<RayNode, number>();
+  /** A hit's colour summed over its channels before clamping: what its children's shares divide (ray-contributions.ts). */
+  readonly unclampedSums = new Map<RayNode, number>();
 
   /** @param withTerms whether hits also get their shading terms (ray-debugger spec §1); the colours are the same either way */
   constructor(readonly withTerms = false) {}
@@ -145,6 +147,7 @@ export class RayRecorder {
    */
   hit(length: number, objectId: string, normal: Vector3, sum: Color, color: Vector3): void {
     end(this.node, true, length, objectId, color);
+    this.tree.unclampedSums.set(this.node, sum[0] + sum[1] + sum[2]);
     this.node.normal = normal.toArray();
     if (this.terms) {
       this.terms.sum = sum;

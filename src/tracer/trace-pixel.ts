@@ -22,7 +22,7 @@ export function tracePixel(scene: TracerScene, px: number, py: number, seed: num
   const tree = new RayTreeRecording(options.terms === true);
   const color = renderPixel(scene, px, py, width, height, seed, new Vector3(), tree);
   const roots = tree.roots;
-  assignContributions(roots, tree.weights);
+  assignContributions(roots, tree.weights, tree.unclampedSums);
   if (options.terms) {
     for (const root of roots) root.weight = 1 / roots.length;
     for (const [node, weight] of tree.weights) node.weight = weight;

@@ -1,4 +1,4 @@
-import { Box3, Euler, Matrix4, Quaternion, Vector3 } from 'three';
+import { Box3, Matrix4, Vector3 } from 'three';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import type { RenderSettings, SamplePattern, Scene, SceneObject, ShapeKind } from '../scene/scene.ts';
 import { CameraRays } from './camera-rays.ts';
@@ -9,8 +9,7 @@ import { tracerMaterial } from './tracer-material.ts';
 import { ObjectBvh } from './object-bvh.ts';
 import { meshAccel } from './shapes/mesh-accel.ts';
 import { Shape } from './shapes/shape.ts';
-
-const DEG = Math.PI / 180;
+import { sceneQuaternion } from './scene-rotation.ts';
 
 /** The shape kinds and sample (and time) patterns the tracer compares in its hot code, kept as this program's own constants (see interned.ts). */
 const SHAPE_KINDS: { readonly [K in ShapeKind]: K } = { sphere: 'sphere', box: 'box', cylinder: 'cylinder', plane: 'plane', mesh: 'mesh' };
@@ -78,9 +77,7 @@ function createShape(object: SceneObject, index: number, meshes: MeshLibrary): S
   return new Shape(index, object.id, tracerMaterial(object.material), 'mesh', toWorld, meshAccel(mesh), velocity);
 }
 
-/** position · rotation (Euler XYZ, degrees) · scale, as three.js composes an Object3D. */
+/** position · rotation (scene-rotation.ts) · scale, as three.js composes an Object3D. */
 export function objectToWorld(object: Pick<SceneObject, 'position' | 'rotation' | 'scale'>): Matrix4 {
-  const [rx, ry, rz] = object.rotation;
-  const rotation = new Quaternion().setFromEuler(new Euler(rx * DEG, ry * DEG, rz * DEG, 'XYZ'));
-  return new Matrix4().compose(new Vector3(...object.position), rotation, new Vector3(...object.scale));
+  return new Matrix4().compose(new Vector3(...object.position), sceneQuaternion(object.rotation), new Vector3(...object.scale));
 }

@@ -20,8 +20,8 @@ import { DEFAULT_SEED } from '../render/render-job.ts';
 import type { Scene, SceneObject } from '../scene/scene.ts';
 import { CameraRays } from '../tracer/camera-rays.ts';
 import { shutterTimes } from '../tracer/shutter-times.ts';
+import { RADIANS_PER_DEGREE } from '../util/angles.ts';
 
-const DEG = Math.PI / 180;
 const LENS_COLOR = 0x7fd4ff;
 const FOCAL_PLANE_COLOR = 0xffd166;
 /** A moving object's copies in time are this faint: they show the path, not a second object. */
@@ -123,7 +123,7 @@ export class DistributionGizmos {
     this.lens.quaternion.copy(turn);
     this.lens.scale.setScalar(camera.aperture);
     const f = rays.focusDistance;
-    const halfHeight = f * Math.tan((camera.fov * DEG) / 2);
+    const halfHeight = f * Math.tan((camera.fov * RADIANS_PER_DEGREE) / 2);
     const [columns, rows] = camera.pixels;
     this.focalPlane.position.copy(rays.eye).addScaledVector(rays.forward, f);
     this.focalPlane.quaternion.copy(turn);

@@ -1,6 +1,8 @@
 import { Euler, type Quaternion, Vector3 } from 'three';
 import { LIMITS } from '../scene/scene-limits.ts';
 import type { Camera, Light, SceneObject, Vec3 } from '../scene/scene.ts';
+import { SCENE_EULER_ORDER } from '../tracer/scene-rotation.ts';
+import { DEGREES_PER_RADIAN } from '../util/angles.ts';
 
 /** What Shift (or the Snap toggle) rounds a gizmo drag to: 0.25 m, 15°, 0.25× (as the lab's snapping did). */
 export const SNAP = { translate: 0.25, rotateDegrees: 15, scale: 0.25 } as const;
@@ -10,8 +12,6 @@ export const SNAP = { translate: 0.25, rotateDegrees: 15, scale: 0.25 } as const
  * (0.1 mm, 0.01°), so the panels show 1.25 rather than 1.2500000000000002.
  */
 const FINE = { translate: 1e-4, rotateDegrees: 1e-2, scale: 1e-4 } as const;
-
-const DEG = 180 / Math.PI;
 
 /** The pose a gizmo drag left an object in (three.js's rotation is in radians). */
 export interface DraggedPose {
@@ -27,12 +27,12 @@ export function roundToStep(value: number, step: number): number {
   return rounded === 0 ? 0 : rounded;
 }
 
-/** Euler XYZ in degrees in (−180, 180], rounded, as the scene file stores rotations. */
+/** The scene's rotation (scene-rotation.ts) in degrees in (−180, 180], rounded, as the scene file stores it. */
 export function eulerDegrees(quaternion: Quaternion, snap: boolean): Vec3 {
-  euler.setFromQuaternion(quaternion, 'XYZ');
+  euler.setFromQuaternion(quaternion, SCENE_EULER_ORDER);
   const step = snap ? SNAP.rotateDegrees : FINE.rotateDegrees;
   return [euler.x, euler.y, euler.z].map((radians) => {
-    const degrees = roundToStep(radians * DEG, step);
+    const degrees = roundToStep(radians * DEGREES_PER_RADIAN, step);
     return degrees <= -180 ? degrees + 360 : degrees;
   }) as Vec3;
 }

@@ -1,9 +1,10 @@
 import { msg, str } from '@lit/localize';
-import { type Camera, Euler, Quaternion, Vector3 } from 'three';
+import { type Camera, Quaternion, Vector3 } from 'three';
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
 import type { Vec3 } from '../scene/scene.ts';
 import { CameraRays } from '../tracer/camera-rays.ts';
+import { sceneQuaternion } from '../tracer/scene-rotation.ts';
 import { cameraChanges, type DraggedPose, lightChanges, objectChanges } from './gizmo-changes.ts';
 import type { GizmoMode } from './gizmo-modes.ts';
 import { NUDGE_STEPS, type NudgeDirection, nudgeStepText } from './nudge-steps.ts';
@@ -88,18 +89,16 @@ function turn(direction: NudgeDirection, axes: ViewAxes, degrees: number): Quate
 /** The pose of the selection now, as a drag would start from it; null when there is none. */
 function currentPose(state: Pick<LabState, 'scene' | 'selection'>): DraggedPose | null {
   const { scene, selection } = state;
-  const radians = Math.PI / 180;
-  const degrees = ([x, y, z]: Vec3) => new Quaternion().setFromEuler(new Euler(x * radians, y * radians, z * radians, 'XYZ'));
   if (selection?.kind === 'object') {
     const object = scene.objects.find((o) => o.id === selection.id);
     if (!object) return null;
-    return { position: new Vector3(...object.position), quaternion: degrees(object.rotation), scale: new Vector3(...object.scale) };
+    return { position: new Vector3(...object.position), quaternion: sceneQuaternion(object.rotation), scale: new Vector3(...object.scale) };
   }
   if (selection?.kind === 'light') {
     const light = scene.lights.find((l) => l.id === selection.id);
     if (!light) return null;
     // An area light's size is its gizmo rig's scale 1 (lightChanges multiplies it).
-    const rotation = light.type === 'point' ? new Quaternion() : degrees(light.rotation);
+    const rotation = light.type === 'point' ? new Quaternion() : sceneQuaternion(light.rotation);
     return { position: new Vector3(...light.position), quaternion: rotation, scale: new Vector3(1, 1, 1) };
   }
   if (selection?.kind === 'camera') {

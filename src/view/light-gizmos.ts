@@ -21,8 +21,8 @@ import {
 } from 'three';
 import type { Light, Scene } from '../scene/scene.ts';
 import { setPickTag } from './picking.ts';
-
-const DEG = Math.PI / 180;
+import { RADIANS_PER_DEGREE } from '../util/angles.ts';
+import { sceneEuler } from '../tracer/scene-rotation.ts';
 
 /** The drawn length of a spot light's cone along its sides (metres): a fixed slant keeps a 170° cone from growing huge. */
 export const SPOT_CONE_SLANT = 0.9;
@@ -150,9 +150,9 @@ export class LightGizmos {
     const rig = gizmo.rig;
     rig.position.set(...light.position);
     rig.scale.set(1, 1, 1);
-    if (light.type !== 'point') rig.rotation.set(light.rotation[0] * DEG, light.rotation[1] * DEG, light.rotation[2] * DEG, 'XYZ');
+    if (light.type !== 'point') sceneEuler(light.rotation, rig.rotation);
     if (light.type === 'spot' && gizmo.sized) {
-      const half = (light.spotAngle / 2) * DEG;
+      const half = (light.spotAngle / 2) * RADIANS_PER_DEGREE;
       const radius = SPOT_CONE_SLANT * Math.sin(half);
       gizmo.sized.scale.set(radius, SPOT_CONE_SLANT * Math.cos(half), radius);
     }

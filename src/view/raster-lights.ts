@@ -1,8 +1,8 @@
 import { Group, Object3D, PointLight, SpotLight } from 'three';
 import type { Light, Scene } from '../scene/scene.ts';
 import { FOLLOWS_DISTANCE } from './raster-falloff.ts';
-
-const DEG = Math.PI / 180;
+import { RADIANS_PER_DEGREE } from '../util/angles.ts';
+import { sceneEuler } from '../tracer/scene-rotation.ts';
 
 interface RasterLight {
   /** Placed and turned like the scene light; the three.js light sits at its origin. */
@@ -65,13 +65,13 @@ export class RasterLights {
 
   private update(entry: RasterLight, light: Light, enabled: boolean): void {
     entry.holder.position.set(...light.position);
-    if (light.type !== 'point') entry.holder.rotation.set(light.rotation[0] * DEG, light.rotation[1] * DEG, light.rotation[2] * DEG, 'XYZ');
+    if (light.type !== 'point') sceneEuler(light.rotation, entry.holder.rotation);
     entry.light.visible = enabled;
     entry.light.color.setRGB(...light.color);
     entry.light.intensity = Math.PI * light.intensity * light.diffuse;
     entry.light.decay = light.distanceAttenuation ? FOLLOWS_DISTANCE : 0;
     if (entry.light instanceof SpotLight && light.type !== 'point') {
-      entry.light.angle = light.type === 'spot' ? (light.spotAngle / 2) * DEG : Math.PI / 2;
+      entry.light.angle = light.type === 'spot' ? (light.spotAngle / 2) * RADIANS_PER_DEGREE : Math.PI / 2;
       entry.light.distance = light.angleAttenuation;
     }
   }

@@ -16,8 +16,7 @@ import type { Scene, SceneObject } from '../scene/scene.ts';
 import { setPickTag } from './picking.ts';
 import { useTracerFalloff } from './raster-falloff.ts';
 import { ambientLight, applyRasterMaterial } from './raster-material.ts';
-
-const DEG = Math.PI / 180;
+import { sceneEuler } from '../tracer/scene-rotation.ts';
 
 /** Fetches the named models (the browser's loadMeshes; a stub in tests). */
 export type MeshLoader = (names: Iterable<string>) => Promise<MeshLibrary>;
@@ -114,7 +113,7 @@ export class SceneSync {
     }
     const mesh = entry.mesh;
     mesh.position.set(...object.position);
-    mesh.rotation.set(object.rotation[0] * DEG, object.rotation[1] * DEG, object.rotation[2] * DEG, 'XYZ');
+    sceneEuler(object.rotation, mesh.rotation);
     mesh.scale.set(...object.scale);
     // A plane is seen from both sides (spec §1); models may be open surfaces (a wine glass).
     applyRasterMaterial(mesh.material, object.material, this.ambient, object.shape === 'plane' || object.shape === 'mesh');

@@ -3,8 +3,7 @@ import { DEFAULT_SEED } from '../render/render-job.ts';
 import type { Camera, SamplePattern } from '../scene/scene.ts';
 import type { CameraRays } from '../tracer/camera-rays.ts';
 import { samplePosition } from '../tracer/supersampling.ts';
-
-const DEG = Math.PI / 180;
+import { RADIANS_PER_DEGREE } from '../util/angles.ts';
 
 /**
  * The drawn screen of the ray tracer's camera, in the camera rig's local frame: x right,
@@ -25,7 +24,7 @@ export interface ScreenGrid {
 export function screenGrid(camera: Camera): ScreenGrid {
   const [columns, rows] = camera.pixels;
   const distance = camera.screenDistance;
-  const halfHeight = distance * Math.tan((camera.fov * DEG) / 2);
+  const halfHeight = distance * Math.tan((camera.fov * RADIANS_PER_DEGREE) / 2);
   return { columns, rows, distance, halfHeight, halfWidth: (halfHeight * columns) / rows };
 }
 

@@ -3,8 +3,7 @@ import { TransformControls } from 'three/addons/controls/TransformControls.js';
 import type { GizmoOptions } from '../lab-state/lab-state.ts';
 import type { GizmoMode } from './gizmo-modes.ts';
 import { SNAP } from './gizmo-changes.ts';
-
-const DEG = Math.PI / 180;
+import { RADIANS_PER_DEGREE } from '../util/angles.ts';
 
 export interface TransformGizmoEvents {
   /** The user let go of a handle after moving it: time to write the new pose to the store. */
@@ -100,7 +99,7 @@ export class TransformGizmo {
   private applySnap(): void {
     const on = this.snapping;
     this.controls.setTranslationSnap(on ? SNAP.translate : null);
-    this.controls.setRotationSnap(on ? SNAP.rotateDegrees * DEG : null);
+    this.controls.setRotationSnap(on ? SNAP.rotateDegrees * RADIANS_PER_DEGREE : null);
     this.controls.setScaleSnap(on ? SNAP.scale : null);
   }
 }

@@ -3,8 +3,7 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { FrameScheduler } from './frame-scheduler.ts';
 import { copyPose, easeInOutCubic, gestureActions, type ViewPose } from './view-pose.ts';
-
-const DEG = Math.PI / 180;
+import { RADIANS_PER_DEGREE } from '../util/angles.ts';
 
 /**
  * A gesture is over when the view has been still this long: one wheel spin or one run of
@@ -65,8 +64,8 @@ export class ViewControls {
   /** Moves the viewpoint around the target: +dx to the right, +dy up, in degrees. */
   orbitBy(dxDeg: number, dyDeg: number, glide: boolean): void {
     this.step(glide, (share) => {
-      this.orbit.rotateLeft(-dxDeg * DEG * share);
-      this.orbit.rotateUp(dyDeg * DEG * share);
+      this.orbit.rotateLeft(-dxDeg * RADIANS_PER_DEGREE * share);
+      this.orbit.rotateUp(dyDeg * RADIANS_PER_DEGREE * share);
     });
   }
 

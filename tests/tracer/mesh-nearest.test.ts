@@ -1,3 +1,4 @@
+import { readFileSync } from 'node:fs';
 import { DoubleSide, Ray as ThreeRay, Vector3 } from 'three';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { loadMeshesFromDisk } from '../../src/scene/load-meshes-node.ts';
@@ -10,6 +11,11 @@ import { meshNearest, nearest } from '../../src/tracer/shapes/mesh-nearest.ts';
  * The tracer's own nearest-hit walk of a model's BVH must find exactly what three-mesh-bvh's
  * raycastFirst finds, to the bit and to the triangle, ties included: the image depends on
  * the triangle (its normal) as well as on the distance.
+ *
+ * This file is the guard of three-mesh-bvh's internal node layout, which mesh-walk.ts reads
+ * directly: package.json pins three-mesh-bvh to one exact version (no `^`), so a new
+ * version arrives only by editing that pin, and then these tests say whether the layout
+ * still holds.
  */
 let character: MeshData;
 
@@ -30,6 +36,15 @@ function ours(o: Vector3, d: Vector3, tMax: number): { distance: number; face: n
   expect(found).toBe(nearest.distance !== Infinity);
   return { distance: nearest.distance, face: found ? nearest.face : -1 };
 }
+
+describe('three-mesh-bvh, whose node layout the tracer reads', () => {
+  it('is pinned to one exact version in package.json, and that version is installed', () => {
+    const read = (path: string) => JSON.parse(readFileSync(new URL(path, import.meta.url), 'utf8'));
+    const pinned: string = read('../../package.json').dependencies['three-mesh-bvh'];
+    expect(pinned).toMatch(/^\d+\.\d+\.\d+$/);
+    expect(read('../../node_modules/three-mesh-bvh/package.json').version).toBe(pinned);
+  });
+});
 
 describe('the nearest hit on a model', () => {
   it('is raycastFirst’s, to the bit, on rays at random points and at the model’s vertices', () => {

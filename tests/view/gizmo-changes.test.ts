@@ -1,4 +1,4 @@
-import { Euler, Quaternion, Vector3 } from 'three';
+import { Quaternion, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import { createLight, defaultScene } from '../../src/scene/scene-defaults.ts';
 import type { AreaLight, Camera } from '../../src/scene/scene.ts';
@@ -9,13 +9,12 @@ import {
   objectChanges,
   roundToStep,
 } from '../../src/view/gizmo-changes.ts';
-
-const DEG = Math.PI / 180;
+import { sceneQuaternion } from '../../src/tracer/scene-rotation.ts';
 
 function pose(position: [number, number, number], degrees: [number, number, number], scale: [number, number, number] = [1, 1, 1]) {
   return {
     position: new Vector3(...position),
-    quaternion: new Quaternion().setFromEuler(new Euler(degrees[0] * DEG, degrees[1] * DEG, degrees[2] * DEG, 'XYZ')),
+    quaternion: sceneQuaternion(degrees),
     scale: new Vector3(...scale),
   };
 }
