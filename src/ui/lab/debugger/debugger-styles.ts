@@ -79,8 +79,7 @@ export const debuggerStyles = css`
   /* The pseudocode, the tree of rays with the running sum, the hit's equation: each scrolls on its own, its sum stays in view. */
   .columns {
     display: grid;
-    /* At 1366×768 the dock is about 770 px wide: the tree's rows and the terms' names need the room more than the code's lines. */
-    grid-template-columns: minmax(0, 0.75fr) minmax(0, 1.05fr) minmax(0, 1.2fr);
+    grid-template-columns: minmax(0, 0.8fr) minmax(0, 1fr) minmax(0, 1.2fr);
     gap: 8px;
     min-height: 0;
     flex: 1;

@@ -58,9 +58,10 @@ export class RtDebugCode extends LitElement {
       color: var(--rt-text);
       font-weight: 600;
     }
+    /* Lines wrap between words; a word is split only when it is wider than the whole column. */
     .code {
       white-space: pre-wrap;
-      overflow-wrap: anywhere;
+      overflow-wrap: break-word;
     }
   `;
 
