@@ -60,6 +60,7 @@ export class RtDebugCode extends LitElement {
     }
     /* Lines wrap between words; a word is split only when it is wider than the whole column. */
     .code {
+      min-width: 0;
       white-space: pre-wrap;
       overflow-wrap: break-word;
     }
