@@ -126,6 +126,20 @@ test('the survey has a readable page of its own over the lab at 1366×768, and o
   await page.keyboard.press('Enter');
   await expect(surveyPage).toBeVisible();
 
+  // At 200 % zoom (683×384 CSS px) the page covers the lab below the slim header: whole lines,
+  // scales in one row, and its buttons a scroll away inside it, the page itself not scrolling.
+  await page.setViewportSize({ width: 683, height: 384 });
+  await expect(survey.getByRole('radio', { name: 'Primary school' })).toBeVisible();
+  expect((await survey.boundingBox())!.width).toBeGreaterThan(600);
+  await expectWordsPerLine(survey, 6);
+  await expectScalesInOneRow(survey);
+  const handIn = surveyPage.getByRole('button', { name: 'Hand in' });
+  await handIn.scrollIntoViewIfNeeded();
+  const button = (await handIn.boundingBox())!;
+  expect(button.y >= 0 && button.y + button.height <= 384, JSON.stringify(button)).toBe(true);
+  expect(await page.evaluate(() => [document.documentElement.scrollWidth, document.documentElement.scrollHeight])).toEqual([683, 384]);
+  await page.screenshot({ path: 'test-results/screens/survey-zoom-200.png' });
+
   // On a phone the page is as wide as the screen: whole lines, and each scale still in one row.
   await page.setViewportSize({ width: 390, height: 844 });
   await expect(survey.getByRole('radio', { name: 'Primary school' })).toBeVisible();

@@ -198,6 +198,13 @@ const distributed: { name: string; scene: Scene; pick: (trace: PixelTrace) => bo
     nests: 2,
   },
   {
+    // Supersampling 3 (level 11's solution): nine sample rows, each ray under its sample, an edge pixel whose samples differ.
+    name: 'supersampled',
+    scene: levelScene('11-anti-aliasing', (scene) => Object.assign(scene.settings, { supersampling: 3 })),
+    pick: (trace) => trace.rays.length === 9 && new Set(trace.rays.map((ray) => ray.objectId)).size > 1,
+    nests: 1,
+  },
+  {
     // An area light with 3 × 3 samples over a point at the edge of the pole's shadow: some samples blocked, some not.
     name: 'area-light',
     scene: levelScene('10-area-lights', (scene) => Object.assign(scene.lights.find((light) => light.id === 'panel')!, { samples: 3 })),
@@ -240,6 +247,7 @@ for (const { name, scene, pick, nests } of distributed) {
       await expect(tree.locator('li[aria-current="step"]')).toHaveAttribute('data-level', String(steps[index].level));
       const equation = debuggerPanel.locator('rt-debug-equation');
       if (steps[index].kind === 'shade' || index === steps.length - 1) await checkScrolls(page, equation);
+      if (index === steps.length - 1) await checkTreeScrolls(page, tree);
       if (steps[index].kind === 'shade' && steps[index].level === nests && !steps.slice(0, index).some((step) => step.kind === 'shade' && step.level === nests)) {
         await page.screenshot({ path: `${SHOTS}/${name}-nested.png` });
       }
@@ -282,4 +290,27 @@ async function checkScrolls(page: Page, equation: ReturnType<Page['locator']>): 
   }
   // Scrolling the terms does not move the sum.
   expect((await sums.boundingBox())!.y).toBeCloseTo(sumsBox.y, 0);
+}
+
+/** Every row of the pixel's tree reachable at 1366×768: its list scrolls inside the dock, the running sum under it stays on screen and in place. */
+async function checkTreeScrolls(page: Page, tree: ReturnType<Page['locator']>): Promise<void> {
+  const list = tree.locator('ol');
+  const sum = tree.locator('.running');
+  const card = (await page.locator('rt-ray-debugger .card').boundingBox())!;
+  const sumAt = (await sum.boundingBox())!;
+  const listAt = (await list.boundingBox())!;
+  expect(listAt.y + listAt.height).toBeLessThanOrEqual(sumAt.y + 1);
+  expect(sumAt.y + sumAt.height).toBeLessThanOrEqual(Math.min(card.y + card.height, 768));
+  // More rows than fit: the list scrolls (a pixel of several samples has dozens of steps).
+  expect(await list.evaluate((element) => element.scrollHeight > element.clientHeight)).toBe(true);
+  const rows = list.locator(':scope > li');
+  const count = await rows.count();
+  for (const i of [0, Math.floor(count / 2), count - 1]) {
+    await rows.nth(i).evaluate((row) => row.scrollIntoView({ block: 'nearest' }));
+    const box = (await rows.nth(i).boundingBox())!;
+    const now = (await list.boundingBox())!;
+    expect(box.y).toBeGreaterThanOrEqual(now.y - 1);
+    expect(box.y + box.height).toBeLessThanOrEqual(now.y + now.height + 1);
+    expect((await sum.boundingBox())!.y).toBeCloseTo(sumAt.y, 0);
+  }
 }

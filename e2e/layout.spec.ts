@@ -301,4 +301,53 @@ test.describe('200 % zoom', () => {
     await expect(page.locator('[data-command="show-panels"]')).toBeHidden();
     await page.screenshot({ path: 'test-results/screens/layout-zoom-200-free-lab.png' });
   });
+
+  test('the ray debugger at 200 %: it takes the column beside the view, which keeps 320×200; its parts scroll under its step buttons', async ({ page }) => {
+    const errors = collectErrors(page);
+    await page.goto('./#free-lab');
+    await expect(page.locator('rt-screen-preview').getByRole('button', { name: 'Pixel 0, 0', exact: true })).toBeVisible();
+    await page.getByRole('button', { name: 'Debug a pixel' }).click();
+    const debuggerPanel = page.locator('rt-ray-debugger');
+    const middle = debuggerPanel.getByRole('button', { name: 'Use the middle pixel' });
+    if (await middle.isVisible()) await middle.click();
+    await expect(debuggerPanel).toHaveAttribute('data-step', '0');
+    const { width, height } = page.viewportSize()!;
+    const view = (await page.locator('rt-scene-view').boundingBox())!;
+    const card = (await debuggerPanel.locator('.card').boundingBox())!;
+    expect(view.width).toBeGreaterThanOrEqual(320);
+    expect(view.height).toBeGreaterThanOrEqual(200);
+    expect(card.width).toBeGreaterThanOrEqual(240);
+    expect(inside(card, width, height), JSON.stringify(card)).toBe(true);
+    expect(overlap(view, card), JSON.stringify({ view, card })).toBe(false);
+    // The view's own buttons stay clear of it.
+    for (const button of await page.locator('rt-view-toolbar button').all()) {
+      const box = await button.boundingBox();
+      if (box && box.width > 0) expect(overlap(box, card), JSON.stringify(box)).toBe(false);
+    }
+    // The step buttons and Close stay on screen while the parts under them scroll.
+    const step = debuggerPanel.getByRole('button', { name: /^Step/ });
+    for (let i = 1; i <= 3; i++) {
+      await step.click();
+      await expect(debuggerPanel).toHaveAttribute('data-step', String(i));
+    }
+    const columns = debuggerPanel.locator('.columns');
+    const scrolls = await columns.evaluate((element) => element.scrollHeight > element.clientHeight);
+    expect(scrolls).toBe(true);
+    for (const part of [debuggerPanel.locator('rt-debug-tree .running'), debuggerPanel.locator('rt-debug-equation ul.sums')]) {
+      await part.evaluate((element) => element.scrollIntoView({ block: 'nearest' }));
+      const box = (await part.boundingBox())!;
+      const columnsBox = (await columns.boundingBox())!;
+      expect(box.y).toBeGreaterThanOrEqual(columnsBox.y - 1);
+      expect(box.y + box.height).toBeLessThanOrEqual(columnsBox.y + columnsBox.height + 1);
+      for (const control of [step, debuggerPanel.getByRole('button', { name: 'Close', exact: true })]) {
+        const at = (await control.boundingBox())!;
+        expect(inside(at, width, height) && at.y + at.height <= columnsBox.y + 1, JSON.stringify(at)).toBe(true);
+      }
+    }
+    expect(await page.evaluate(() => document.documentElement.scrollHeight)).toBeLessThanOrEqual(height);
+    await page.screenshot({ path: 'test-results/screens/layout-zoom-200-debugger.png' });
+    await debuggerPanel.getByRole('button', { name: 'Close', exact: true }).click();
+    await expectLaidOut(page, 'panels');
+    expect(errors).toEqual([]);
+  });
 });

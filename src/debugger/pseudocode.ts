@@ -18,15 +18,15 @@ export const PSEUDOCODE_LINES = [
   'nearest-hit',
   /** colour ← ka·C + Σ la·Lc·C */
   'ambient',
-  /** for each light (each sample of an area light): */
+  /** for each light (an area light: each of its samples, with I ÷ their number): */
   'light-loop',
-  /** if Shadows is on: cast a shadow ray toward the light */
+  /** if N·L > 0, A > 0 and Shadows is on: cast a shadow ray toward the light */
   'shadow-ray',
   /** blocked: S = 0, it adds nothing */
   'blocked',
   /** reaches it: colour += I·A·(max(N·L,0)·kd·ld·Lc·C + max(R·V,0)ⁿ·ks·ls·Lc) */
   'lit',
-  /** mirror, below the maximum depth: colour += ks·trace(reflected ray, depth + 1) */
+  /** opaque with ks > 0, below the maximum depth: colour += ks·trace(reflected ray, depth + 1) */
   'mirror',
   /** glass, below the maximum depth: kr ← Schlick, kt ← 1 − kr */
   'schlick',

@@ -147,6 +147,16 @@ const compact = css`
       grid-column: 1 / -1;
       grid-row: 2 / -1;
     }
+    /* Open, the ray debugger takes the column beside the view (as wide as the grid makes it),
+       not the view's lower half: the view keeps its 320 px and shows the rays being stepped. */
+    rt-ray-debugger[open] {
+      top: 0;
+      bottom: 0;
+      left: 100%;
+      right: auto;
+      width: clamp(240px, calc(100vw - 320px), 360px);
+      height: auto;
+    }
   }
 
   /* Below the view: a phone held upright. */
@@ -173,6 +183,11 @@ const compact = css`
     rt-survey-page {
       grid-column: 1;
       grid-row: 2 / -1;
+    }
+    /* Open, the ray debugger covers the view: half of a view 200 px high would show no part of it. */
+    rt-ray-debugger[open] {
+      top: 0;
+      height: auto;
     }
   }
 `;

@@ -85,10 +85,10 @@ describe('names of rays', () => {
     expect(debuggerText.stepText(lightStep(untested), scene)).toBe(
       'Shadows is off: no shadow ray is cast, so Lamp counts as reaching the point: its diffuse and highlight are added.',
     );
-    expect(debuggerText.pseudocodeText('shadow-ray')).toBe('if Shadows is on: cast a shadow ray toward the light');
+    expect(debuggerText.pseudocodeText('shadow-ray')).toBe('if N·L > 0, A > 0 and Shadows is on: cast a shadow ray toward the light');
     await speak('nl');
     expect(debuggerText.stepText(lightStep(reached), scene)).toBe('De schaduwstraal naar Lamp bereikt die lamp: het diffuse licht en de glansvlek worden opgeteld.');
-    expect(debuggerText.pseudocodeText('shadow-ray')).toBe('als Schaduwen aan staat: stuur een schaduwstraal naar de lamp');
+    expect(debuggerText.pseudocodeText('shadow-ray')).toBe('als N·L en A groter dan 0 zijn en Schaduwen aan staat: stuur een schaduwstraal naar de lamp');
     await speak('en');
   });
 });

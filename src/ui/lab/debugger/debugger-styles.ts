@@ -119,6 +119,47 @@ export const debuggerStyles = css`
   .problem {
     margin: 0 0 6px;
   }
+  /* A small screen's dock (200 % zoom, a phone: about 360 px wide) has no room for columns:
+     the three parts stand one under the other and scroll together under the pinned step
+     buttons; the pseudocode and the tree keep a short box of their own (each keeps its
+     current line in view), and the tree's running sum stays under its rows. */
+  @container (max-width: 560px) {
+    .columns {
+      display: flex;
+      flex-direction: column;
+      overflow-y: auto;
+    }
+    .columns > rt-debug-code {
+      flex: none;
+      max-height: 6rem;
+    }
+    /* As high as the column's box: scrolled to, its rows and the sum under them fill it. */
+    .columns > rt-debug-tree {
+      flex: none;
+      height: 100%;
+      min-height: 9rem;
+    }
+    .right,
+    .right > rt-debug-equation {
+      flex: none;
+    }
+    .why {
+      max-height: none;
+    }
+    /* The pixel, the step and Close on the first row, the step buttons under them. */
+    .controls {
+      order: 1;
+    }
+    /* The region is still named "Ray debugger"; the pixel and the step keep the first row. */
+    h2 {
+      position: absolute;
+      width: 1px;
+      height: 1px;
+      overflow: hidden;
+      clip-path: inset(50%);
+      white-space: nowrap;
+    }
+  }
   /* Narrow: the pseudocode above the tree, the equation beside both. */
   @media (max-width: 1100px) {
     .columns {

@@ -32,15 +32,15 @@ export function pseudocodeText(line: PseudocodeLine): string {
     case 'ambient':
       return msg('colour ← ka·C + Σ la·Lc·C');
     case 'light-loop':
-      return msg('for each light (each sample of an area light):');
+      return msg('for each light (an area light: each of its samples, with I ÷ their number):');
     case 'shadow-ray':
-      return msg('if Shadows is on: cast a shadow ray toward the light');
+      return msg('if N·L > 0, A > 0 and Shadows is on: cast a shadow ray toward the light');
     case 'blocked':
       return msg('blocked: S = 0, the light adds nothing');
     case 'lit':
       return msg('reaches it: colour += I·A·(N·L·kd·ld·Lc·C + (R·V)ⁿ·ks·ls·Lc)');
     case 'mirror':
-      return msg('mirror, below the maximum depth: colour += ks·trace(reflected ray, depth + 1)');
+      return msg('opaque with ks > 0, below the maximum depth: colour += ks·trace(reflected ray, depth + 1)');
     case 'schlick':
       return msg('glass, below the maximum depth: kr ← Schlick, kt ← 1 − kr');
     case 'glass':
@@ -142,6 +142,7 @@ export function treeLabel(step: DebugStep, scene: Scene): string {
       return msg(str`Shadow ray → ${who}: reaches it`);
     }
     case 'split': {
+      if (totallyReflected(ray)) return msg('Total internal reflection: kr 1, kt 0');
       const terms = ray.terms;
       return msg(str`Schlick: kr ${share.format(terms?.reflect?.weight ?? 0)}, kt ${share.format(terms?.refract?.weight ?? 0)}`);
     }
@@ -151,6 +152,11 @@ export function treeLabel(step: DebugStep, scene: Scene): string {
     case 'lens':
       return '';
   }
+}
+
+/** A glass hit whose ray is refracted nowhere: beyond the critical angle all of it is reflected (Snell's law has no solution). */
+function totallyReflected(hit: RayNode): boolean {
+  return !hit.children.some((child) => child.type === 'refract');
 }
 
 /** The first sentence for a sample that casts several rays: where they leave from and aim. */
@@ -187,6 +193,7 @@ export function stepText(step: DebugStep, scene: Scene): string {
       return msg(str`The shadow ray to ${light} reaches it: its diffuse and highlight are added.`);
     }
     case 'split':
+      if (totallyReflected(ray)) return msg('Glass, but the ray is inside and meets the surface beyond the critical angle: no ray is refracted, all of it is reflected (total internal reflection).');
       return msg(str`Glass: Schlick splits the colour between the refracted and the reflected ray.`);
     case 'return':
       if (!ray.hit) return msg('Nothing hit: the ray returns the background colour.');
@@ -195,6 +202,10 @@ export function stepText(step: DebugStep, scene: Scene): string {
     case 'lens':
       return '';
   }
+}
+
+function lightType(scene: Scene, id: string): Scene['lights'][number]['type'] | undefined {
+  return scene.lights.find((light) => light.id === id)?.type;
 }
 
 /** "Why is it dark here?", one reason in words. */
@@ -211,9 +222,23 @@ export function darkReasonText(reason: DarkReason, scene: Scene): string {
     case 'facing-away':
       return msg(str`The surface faces away from ${itemName(scene, reason.lightId)} (N·L = 0).`);
     case 'outside-cone':
-      return msg(str`The point is outside the cone of ${itemName(scene, reason.lightId)} (A = 0).`);
-    case 'weakened':
-      return msg(str`Only part of ${itemName(scene, reason.lightId)} arrives: A = ${share.format(reason.attenuation)} (distance or the edge of its cone).`);
+      // A spot light's cone; an area light shines to one side of its panel only (half-angle 90°).
+      return lightType(scene, reason.lightId) === 'area'
+        ? msg(str`The point is behind ${itemName(scene, reason.lightId)}, which shines to one side only (A = 0).`)
+        : msg(str`The point is outside the cone of ${itemName(scene, reason.lightId)} (A = 0).`);
+    case 'weakened': {
+      const light = itemName(scene, reason.lightId);
+      const attenuation = share.format(reason.attenuation);
+      // A = distance factor × angle factor: a point light has only the first (attenuation.ts).
+      switch (lightType(scene, reason.lightId)) {
+        case 'point':
+          return msg(str`Only part of ${light} arrives: A = ${attenuation} (its distance).`);
+        case 'area':
+          return msg(str`Only part of ${light} arrives: A = ${attenuation} (distance, or the point lies off to the side of the panel, which shines most straight ahead).`);
+        default:
+          return msg(str`Only part of ${light} arrives: A = ${attenuation} (distance or the edge of its cone).`);
+      }
+    }
     case 'depth-limit': {
       const object = itemName(scene, reason.objectId);
       return reason.glass

@@ -3,6 +3,8 @@ import { css, html, LitElement, type PropertyValues } from 'lit';
 import { styleMap } from 'lit/directives/style-map.js';
 import { LINE_INDENT, PSEUDOCODE_LINES, type PseudocodeLine } from '../../../debugger/pseudocode.ts';
 import { pseudocodeText } from './debugger-text.ts';
+import { revealRow } from './reveal-row.ts';
+import { scrollCue } from './scroll-cue.ts';
 
 /**
  * @summary The ray tracer as 14 lines of pseudocode, with the line the debugger is on lit:
@@ -16,8 +18,14 @@ export class RtDebugCode extends LitElement {
   static override properties = { line: {} };
 
   static override styles = css`
+    /* The host is what scrolls (the debugger makes it so): the border and the scroll cue are on it. */
     :host {
       display: block;
+      box-sizing: border-box;
+      border-radius: 6px;
+      border: 1px solid var(--rt-border);
+      --cue-bg: var(--rt-bg);
+      ${scrollCue}
     }
     ol {
       margin: 0;
@@ -26,35 +34,35 @@ export class RtDebugCode extends LitElement {
       font-family: ui-monospace, 'SFMono-Regular', Menlo, Consolas, monospace;
       font-size: 0.74rem;
       line-height: 1.35;
-      border-radius: 6px;
-      background: var(--rt-bg);
-      border: 1px solid var(--rt-border);
       counter-reset: line;
     }
+    /* Narrow gutters (number, marker, indent): the dock's column is about 190 px at 1366×768. */
     li {
       display: flex;
-      gap: 6px;
-      padding: 0 8px 0 0;
+      gap: 3px;
+      padding: 0 6px 0 0;
       counter-increment: line;
       color: var(--rt-muted);
     }
     li::before {
       content: counter(line);
-      flex: 0 0 2.2em;
+      flex: 0 0 1.7em;
       text-align: right;
       opacity: 0.7;
     }
     .marker {
-      flex: 0 0 1em;
+      flex: 0 0 0.9em;
     }
     li[aria-current='step'] {
       background: var(--rt-accent-soft);
       color: var(--rt-text);
       font-weight: 600;
     }
+    /* Lines wrap between words; a word is split only when it is wider than the whole column. */
     .code {
+      min-width: 0;
       white-space: pre-wrap;
-      overflow-wrap: anywhere;
+      overflow-wrap: break-word;
     }
   `;
 
@@ -67,7 +75,7 @@ export class RtDebugCode extends LitElement {
 
   protected override updated(changed: PropertyValues<this>): void {
     // The lit line stays in view when the list scrolls (a short dock).
-    if (changed.has('line')) this.renderRoot.querySelector('[aria-current="step"]')?.scrollIntoView({ block: 'nearest' });
+    if (changed.has('line')) revealRow(this, this.renderRoot.querySelector('[aria-current="step"]'));
   }
 
   override render() {
@@ -76,7 +84,7 @@ export class RtDebugCode extends LitElement {
         const current = line === this.line;
         return html`<li part="line" data-line=${line} aria-current=${current ? 'step' : 'false'}>
           <span class="marker" aria-hidden="true">${current ? '▶' : ''}</span>
-          <span class="code" style=${styleMap({ paddingLeft: `${LINE_INDENT[line] * 1.2}em` })}>${pseudocodeText(line)}</span>
+          <span class="code" style=${styleMap({ paddingLeft: `${LINE_INDENT[line]}em` })}>${pseudocodeText(line)}</span>
         </li>`;
       })}
     </ol>`;

@@ -1,5 +1,5 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
 import { styleMap } from 'lit/directives/style-map.js';
 import type { Equation, EquationTerm, Factor, PixelAverage } from '../../../debugger/debug-equation.ts';
 import { localNumbers } from '../../../i18n/number-format.ts';
@@ -8,6 +8,8 @@ import { pixelBytes, type Quantization } from '../../../tracer/quantize.ts';
 import { colorToHex } from '../../controls/color-hex.ts';
 import { colorText } from './debug-numbers.ts';
 import { itemName, placeText, shareText, termName } from './debugger-text.ts';
+import { revealRow } from './reveal-row.ts';
+import { scrollCue } from './scroll-cue.ts';
 
 const factorNumber = localNumbers({ maximumFractionDigits: 3 });
 
@@ -69,6 +71,8 @@ export class RtDebugEquation extends LitElement {
       flex: 1;
       min-height: 0;
       overflow-y: auto;
+      --cue-bg: var(--rt-surface);
+      ${scrollCue}
     }
     .term {
       box-sizing: border-box;
@@ -147,6 +151,21 @@ export class RtDebugEquation extends LitElement {
     this.chosen = null;
   }
 
+  protected override updated(changed: PropertyValues<this>): void {
+    // The term this step grows (a light sample, a returned ray) may sit below the short list's
+    // fold: it scrolls into view, as the tree keeps its current row in view.
+    const before = changed.get('equation') as Equation | null | undefined;
+    const now = this.equation;
+    if (!before || !now || before.hit !== now.hit || this.average) return;
+    // The last of them: a light sample grows its diffuse term and, just under it, its highlight.
+    const grown = now.terms.filter((term) => {
+      const old = before.terms.find((candidate) => candidate.id === term.id);
+      return !old || old.rays.added !== term.rays.added;
+    }).at(-1);
+    const list = this.renderRoot.querySelector('ul.terms');
+    if (grown && list) revealRow(list, list.querySelector(`[data-term-row="${CSS.escape(grown.id)}"]`));
+  }
+
   override render() {
     if (this.average) return this.renderAverage(this.average);
     const equation = this.equation;
@@ -157,7 +176,7 @@ export class RtDebugEquation extends LitElement {
       <h3>${msg(str`Colour of the hit on ${itemName(scene, equation.hit.objectId)}`)}</h3>
       <!-- Focusable: the terms scroll in a short dock, and a keyboard must be able to scroll them too (WCAG 2.1.1). -->
       <ul class="terms" tabindex="0" aria-label=${msg('Its terms')}>
-        ${equation.terms.map((term) => html`<li>${this.renderTerm(term, scene)}</li>`)}
+        ${equation.terms.map((term) => html`<li data-term-row=${term.id}>${this.renderTerm(term, scene)}</li>`)}
       </ul>
       <ul class="sums">
         <li>${this.row(done ? msg('Sum of the terms') : msg('Sum so far'), equation.sum, done && equation.clamped ? msg('before clamping') : '', 'total')}</li>

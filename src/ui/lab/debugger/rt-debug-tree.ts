@@ -8,6 +8,8 @@ import type { Color, Scene } from '../../../scene/scene.ts';
 import { colorToHex } from '../../controls/color-hex.ts';
 import { colorText } from './debug-numbers.ts';
 import { shareText, treeLabel } from './debugger-text.ts';
+import { revealRow } from './reveal-row.ts';
+import { scrollCue } from './scroll-cue.ts';
 
 /** Rows drawn at most: the steps before them are summed up in one line (a glossy pixel has thousands). */
 const ROWS_SHOWN = 200;
@@ -60,7 +62,8 @@ export class RtDebugTree extends LitElement {
       padding: 0;
       border: 1px solid var(--rt-border);
       border-radius: 6px;
-      background: var(--rt-bg);
+      --cue-bg: var(--rt-bg);
+      ${scrollCue}
     }
     ol:focus-visible {
       outline: 3px solid var(--rt-focus);
@@ -139,7 +142,8 @@ export class RtDebugTree extends LitElement {
 
   protected override updated(changed: PropertyValues<this>): void {
     // The current row stays in view as the tree grows (the list scrolls, the sum below it does not).
-    if (changed.has('index') || changed.has('program')) this.renderRoot.querySelector('[aria-current="step"]')?.scrollIntoView({ block: 'nearest' });
+    const list = this.renderRoot.querySelector('ol');
+    if ((changed.has('index') || changed.has('program')) && list) revealRow(list, list.querySelector('[aria-current="step"]'));
   }
 
   override render() {
