@@ -160,12 +160,35 @@ class InstanceBuffers {
     old.dispose();
   }
 
+  /** The instance attributes (the matrix first), to copy a range of them into a piece. */
+  get attributes(): InstancedBufferAttribute[] {
+    return [this.mesh.instanceMatrix, this.color, this.alpha, this.growth, ...(this.dash ? [this.dash] : []), ...(this.arrowAt ? [this.arrowAt] : []), ...(this.stop ? [this.stop] : [])];
+  }
+
+  /** Instances `from` … `to` − 1 of `source` as this mesh's first ones, drawn alone (a piece: RayPool.piece). */
+  copyRange(source: InstanceBuffers, from: number, to: number): void {
+    const count = Math.max(0, to - from);
+    this.reserve(count);
+    const targets = this.attributes;
+    source.attributes.forEach((attribute, a) => {
+      const size = attribute.itemSize;
+      (targets[a].array as Float32Array).set((attribute.array as Float32Array).subarray(from * size, to * size));
+    });
+    this.commit(count);
+  }
+
+  /** Draws the first `count` instances only (those uploaded stay), or all `uploaded` of them. */
+  limit(count: number, uploaded: number): void {
+    this.mesh.count = Math.min(count, uploaded);
+    this.mesh.visible = this.mesh.count > 0;
+  }
+
   /** Uploads the first `count` instances and draws that many. */
   commit(count: number): void {
     this.mesh.count = count;
     this.mesh.visible = count > 0;
     if (count === 0) return;
-    for (const attribute of [this.mesh.instanceMatrix, this.color, this.alpha, this.growth, ...(this.dash ? [this.dash] : []), ...(this.arrowAt ? [this.arrowAt] : []), ...(this.stop ? [this.stop] : [])]) {
+    for (const attribute of this.attributes) {
       attribute.clearUpdateRanges();
       attribute.addUpdateRange(0, count * attribute.itemSize);
       attribute.needsUpdate = true;
@@ -244,6 +267,10 @@ export class RayPool implements RayLayer {
   private readonly hiddenMaterial = createRayMaterial('hidden', this.travel, this.viewHeight);
   private readonly stopMaterial = createRayMaterial('stop', this.travel, this.viewHeight);
   private readonly extras = new RayExtras(this.object, { arrow: this.arrowMaterial, hidden: this.hiddenMaterial, stop: this.stopMaterial });
+  /** A range of the instances drawn alone (`piece`), with the same materials. */
+  private readonly pieceObject = new Group();
+  private readonly pieceCylinders = new InstanceBuffers('cylinder', this.rayMaterial, this.pieceObject);
+  private readonly pieceCones = new InstanceBuffers('cone', this.coneMaterial, this.pieceObject);
   private readonly drawn = new DrawnRays();
   private animation: AnimationInputs = { rays: null, selectedPixel: null, animate: false, pixelByPixel: false };
   private speed = 1;
@@ -287,6 +314,25 @@ export class RayPool implements RayLayer {
   /** How many rays are drawn of how many while a budget leaves some out; null when all are drawn. */
   get thinning(): Thinning | null {
     return this.thinned;
+  }
+
+  get instances(): number {
+    return this.drawn.rays.count + this.drawn.cones.count;
+  }
+
+  drawFirst(count: number | null): void {
+    const rays = this.drawn.rays.count;
+    const cones = this.drawn.cones.count;
+    this.cylinders.limit(count ?? rays, rays);
+    this.cones.limit(count === null ? cones : Math.max(0, count - rays), cones);
+  }
+
+  piece(from: number, count: number): Group {
+    const rays = this.drawn.rays.count;
+    const to = Math.min(from + count, this.instances);
+    this.pieceCylinders.copyRange(this.cylinders, Math.min(from, rays), Math.min(to, rays));
+    this.pieceCones.copyRange(this.cones, Math.max(0, from - rays), Math.max(0, to - rays));
+    return this.pieceObject;
   }
 
   /** Draws about `budget` rays from now on, every kind among them (ray-budget.ts); null: all. */
@@ -350,6 +396,8 @@ export class RayPool implements RayLayer {
     this.extras.dispose();
     this.cylinders.dispose();
     this.cones.dispose();
+    this.pieceCylinders.dispose();
+    this.pieceCones.dispose();
     for (const material of [this.rayMaterial, this.coneMaterial, this.arrowMaterial, this.hiddenMaterial, this.stopMaterial]) material.dispose();
     this.object.clear();
   }

@@ -258,6 +258,34 @@ describe('RayPool budget', () => {
   });
 });
 
+describe('RayPool pieces', () => {
+  it('draws its first instances alone, or any range of them, rays then cones, from its own buffers', () => {
+    const pool = new RayPool();
+    const rays = syntheticScreen(1000);
+    pool.update(rays, options(), null);
+    const { cylinders, attribute } = parts(pool);
+    expect(pool.instances).toBe(1000);
+    pool.drawFirst(300);
+    expect([cylinders.count, pool.stats.rays]).toEqual([300, 300]);
+    pool.drawFirst(null);
+    expect(cylinders.count).toBe(1000);
+    const piece = pool.piece(600, 500);
+    const [pieceRays] = piece.children.filter((child): child is InstancedMesh => child instanceof InstancedMesh && child.name === RAY_CYLINDERS_NAME);
+    expect(pieceRays.count).toBe(400);
+    expect(pieceRays.material).toBe(cylinders.material);
+    for (const index of [0, 399]) {
+      expect(transform(pieceRays, index, [0, 0, 1])).toEqual(transform(cylinders, 600 + index, [0, 0, 1]));
+      expect(pieceRays.geometry.getAttribute(DASH_ATTRIBUTE).getX(index)).toBe(attribute(cylinders, DASH_ATTRIBUTE).getX(600 + index));
+    }
+    // Cones come after the rays: instance 2 of oneTree is its cone.
+    pool.update(oneTree(), options(), null);
+    const cones = pool.piece(2, 5).children.filter((child): child is InstancedMesh => child instanceof InstancedMesh);
+    expect(Object.fromEntries(cones.map((mesh) => [mesh.name, mesh.count]))).toEqual({ [RAY_CYLINDERS_NAME]: 0, [RAY_CONES_NAME]: 1 });
+    pool.drawFirst(1);
+    expect([parts(pool).cylinders.count, parts(pool).cones.count, parts(pool).cones.visible]).toEqual([1, 0, false]);
+  });
+});
+
 describe('RayPool growth animation', () => {
   const travel = (pool: RayPool) => {
     const uniforms: Record<string, { value: number }> = {};
