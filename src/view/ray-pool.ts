@@ -335,6 +335,15 @@ export class RayPool implements RayLayer {
     return this.pieceObject;
   }
 
+  /**
+   * Chooses now, ahead of the edit that will ask for it, which rays of the screen drawn now
+   * `budget` keeps (ray-budget.ts remembers it): the first edit then only draws them.
+   */
+  prepareBudget(budget: number): void {
+    const [rays, , selectedPixel] = this.lastUpdate ?? [null, null, null];
+    if (rays && !selectedPixel && !this.focus) keptRays(flattenRays(rays), budget, null);
+  }
+
   /** Draws about `budget` rays from now on, every kind among them (ray-budget.ts); null: all. */
   setBudget(budget: number | null): void {
     if (budget === this.budget) return;

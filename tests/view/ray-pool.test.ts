@@ -5,6 +5,8 @@ import { DEFAULT_RAY_VIEW, type RayViewOptions } from '../../src/lab-state/lab-s
 import { CONE_OPACITY, LOOP_PAUSE_S, RAY_CONES_NAME, RAY_CYLINDERS_NAME, RayPool } from '../../src/view/ray-pool.ts';
 import { ALPHA_ATTRIBUTE, ARROW_AT, ARROW_AT_ATTRIBUTE, DASH_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, patchRayShader, STOP_ATTRIBUTE } from '../../src/view/ray-shader.ts';
 import { hexToColor, RAY_DASHES, rayPalette } from '../../src/view/ray-palette.ts';
+import { keptRays } from '../../src/view/ray-budget.ts';
+import { flattenRays } from '../../src/view/flat-rays.ts';
 import { areaRay, ray, screen, syntheticScreen } from '../support/ray-fixtures.ts';
 
 const options = (changes: Partial<RayViewOptions> = {}): RayViewOptions => ({ ...DEFAULT_RAY_VIEW, ...changes });
@@ -255,6 +257,21 @@ describe('RayPool budget', () => {
     pool.setBudget(null);
     expect(pool.stats.rays).toBe(all);
     expect(pool.thinning).toBeNull();
+  });
+});
+
+describe('RayPool budget chosen ahead', () => {
+  it('chooses the budget’s rays of the screen drawn now once, ahead of the edit, and the edit draws that choice', () => {
+    const pool = new RayPool();
+    const rays = syntheticScreen(6000);
+    pool.update(rays, options(), null);
+    pool.prepareBudget(1000);
+    const ahead = keptRays(flattenRays(rays), 1000, null);
+    expect(keptRays(flattenRays(rays), 1000, null)).toBe(ahead);
+    pool.setBudget(1000);
+    expect(pool.stats.rays).toBe(ahead!.reduce((sum, kept) => sum + kept, 0));
+    // Another budget is chosen again, not taken from the last choice.
+    expect(keptRays(flattenRays(rays), 500, null)).not.toBe(ahead);
   });
 });
 
