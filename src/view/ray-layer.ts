@@ -27,7 +27,7 @@ export interface RayLayer {
   pick(raycaster: Raycaster): RayHover | null;
   /** How many rays are drawn of how many while a budget leaves some out (ray-budget.ts); null when all are. */
   readonly thinning: Thinning | null;
-  /** The instances `object` draws: its rays, then its cones (the pieces below count them so). */
+  /** The instances `object` draws (rays and cones), counted in the order it draws them, as the pieces below are. */
   readonly instances: number;
   /**
    * From now on `object` draws only its first `count` instances (null: all again): the first

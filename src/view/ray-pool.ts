@@ -321,18 +321,31 @@ export class RayPool implements RayLayer {
   }
 
   drawFirst(count: number | null): void {
-    const rays = this.drawn.rays.count;
-    const cones = this.drawn.cones.count;
-    this.cylinders.limit(count ?? rays, rays);
-    this.cones.limit(count === null ? cones : Math.max(0, count - rays), cones);
+    for (const { buffers, from, to } of this.inDrawOrder()) buffers.limit(count === null ? to - from : Math.max(0, count - from), to - from);
   }
 
   piece(from: number, count: number): Group {
-    const rays = this.drawn.rays.count;
-    const to = Math.min(from + count, this.instances);
-    this.pieceCylinders.copyRange(this.cylinders, Math.min(from, rays), Math.min(to, rays));
-    this.pieceCones.copyRange(this.cones, Math.max(0, from - rays), Math.max(0, to - rays));
+    const end = Math.min(from + count, this.instances);
+    const pieces = { cylinder: this.pieceCylinders, cone: this.pieceCones };
+    this.inDrawOrder().forEach(({ kind, buffers, from: first, to }, order) => {
+      const piece = pieces[kind];
+      piece.copyRange(buffers, Math.min(Math.max(from, first), to) - first, Math.min(Math.max(end, first), to) - first);
+      // In the same order as in `object`, where a boundary piece has both.
+      piece.mesh.renderOrder = order;
+    });
     return this.pieceObject;
+  }
+
+  /**
+   * The two meshes in the order three.js draws them (both see-through, at the same place: by
+   * creation, and a mesh outgrown is made again), with the instance numbers they cover.
+   */
+  private inDrawOrder(): { kind: 'cylinder' | 'cone'; buffers: InstanceBuffers; from: number; to: number }[] {
+    const rays = this.drawn.rays.count;
+    const cones = this.drawn.cones.count;
+    return this.cones.mesh.id < this.cylinders.mesh.id
+      ? [{ kind: 'cone', buffers: this.cones, from: 0, to: cones }, { kind: 'cylinder', buffers: this.cylinders, from: cones, to: cones + rays }]
+      : [{ kind: 'cylinder', buffers: this.cylinders, from: 0, to: rays }, { kind: 'cone', buffers: this.cones, from: rays, to: rays + cones }];
   }
 
   /**
