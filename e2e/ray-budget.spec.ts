@@ -163,13 +163,17 @@ test('with the free lab’s largest settings the view draws a budget of the rays
 });
 
 /**
- * Waits until all `rays` are drawn with no note (the edits have stopped), and that frame has
- * reached the screen (on SwiftShader it takes seconds, and a step would wait for it); returns
- * the time from `since` (page time) to then.
+ * Waits until all `rays` are drawn with no note (the edits have stopped), every piece of
+ * them is on the canvas, and that frame has reached the screen; returns the time from
+ * `since` (page time) to then.
  */
 async function drawnAll(page: Page, rays?: number, since?: number): Promise<number> {
   if (rays !== undefined) await expect.poll(() => drawnRays(page), { message: 'all rays are drawn once the slider stops', timeout: 60_000 }).toBe(rays);
   await expect(page.getByTestId('ray-thinning')).toBeEmpty();
+  // On SwiftShader a screen this heavy is drawn a piece a frame (view/piecewise-rays.ts): the last piece too.
+  await expect
+    .poll(() => page.locator('rt-scene-view').evaluate((element) => (element as unknown as { labView: { raysComplete: boolean } }).labView.raysComplete), { timeout: 120_000 })
+    .toBe(true);
   return page.locator('rt-scene-view').evaluate((element, from) => {
     // Reading a pixel back waits for the software GPU to finish the frames it was given.
     const gl = (element as unknown as { labView: { renderer: { getContext(): WebGLRenderingContext } } }).labView.renderer.getContext();

@@ -88,6 +88,7 @@ export class LabServices {
       this.tracer.subscribe((rays) => {
         this.view?.setScreenRays(rays);
         this.redrawRays();
+        this.prepareBudget();
         for (const listener of [...this.listeners]) listener(rays);
       }),
       this.store.subscribe((state, _action, error, live) => {
@@ -226,6 +227,18 @@ export class LabServices {
     this.view?.holdCoarse(this.layers?.rays.thinning != null);
   }
 
+  /**
+   * While every ray is drawn, the rays the next edit's budget keeps are chosen when the page
+   * is idle, not in that edit's step (a heavy screen's choice took 0.45 s there).
+   */
+  private prepareBudget(): void {
+    const budget = this.budget;
+    if (!budget || budget.budget !== null) return;
+    whenIdle(() => {
+      if (!this.disposed && budget.budget === null) this.layers?.rays.prepareBudget(budget.editBudget);
+    });
+  }
+
   /** The ray pool follows the rays, the ray options and the picked pixel (it skips work when none changed). */
   private redrawRays(): void {
     const { rays, selectedPixel } = this.store.state;
@@ -233,4 +246,10 @@ export class LabServices {
     this.layers?.rays.update(this.screenRays, rays, selectedPixel);
     this.afterRaysChanged();
   }
+}
+
+/** Runs `task` when the page is idle (soon, where there is no idle callback). */
+function whenIdle(task: () => void): void {
+  if (typeof requestIdleCallback === 'function') requestIdleCallback(task, { timeout: 2000 });
+  else setTimeout(task, 0);
 }

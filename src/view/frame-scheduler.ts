@@ -27,21 +27,42 @@ export class FrameScheduler {
   private heldFrame = false;
   /** Set by release(): the next frame shows what a hold waited for, so no new hold delays it. */
   private releasedFrame = false;
+  /** Whether the next frame was asked for by a change (requestRender), not only to go on drawing (requestMore). */
+  private changed = false;
 
-  /** `draw` renders one frame; it runs after the animators of that frame. */
+  /**
+   * `draw` renders one frame; it runs after the animators of that frame. `changed` is false
+   * for a frame asked for only by `requestMore` (with no animator moving): the picture has
+   * not changed since the last frame, which may go on drawing it (view/piecewise-rays.ts).
+   */
   constructor(
-    private readonly draw: () => void,
+    private readonly draw: (changed: boolean) => void,
     private readonly host: FrameHost = browserFrames,
   ) {}
 
   /** Schedules one frame, unless one is already scheduled (or frames are held: then at the hold's end). */
   requestRender(): void {
     if (this.disposed) return;
+    this.changed = true;
     if (this.hold !== null) {
       this.heldFrame = true;
       return;
     }
     if (this.pending !== null) return;
+    this.pending = this.host.requestFrame((timeMs) => this.frame(timeMs));
+  }
+
+  /**
+   * Schedules one more frame of the same picture, to go on drawing it (a held frame waits
+   * for the hold's end like any other): `draw` is told that nothing changed unless a change
+   * asks for that frame too.
+   */
+  requestMore(): void {
+    if (this.disposed || this.pending !== null) return;
+    if (this.hold !== null) {
+      this.heldFrame = true;
+      return;
+    }
     this.pending = this.host.requestFrame((timeMs) => this.frame(timeMs));
   }
 
@@ -97,6 +118,7 @@ export class FrameScheduler {
   /** Renders now (after a resize, whose new canvas size is blank until drawn). */
   renderNow(timeMs = performance.now()): void {
     if (this.pending !== null) this.host.cancelFrame(this.pending);
+    this.changed = true;
     this.frame(timeMs);
   }
 
@@ -117,7 +139,9 @@ export class FrameScheduler {
     for (const animator of [...this.animators]) {
       if (animator(timeMs)) moving = true;
     }
-    this.draw();
+    const changed = this.changed || moving;
+    this.changed = false;
+    this.draw(changed);
     if (moving) this.requestRender();
   }
 }

@@ -47,6 +47,7 @@ import { rayColorKey, type RayColorKey } from './ray-palette.ts';
 import { cameraViewFov, framingPose, framingPoseAbove, type ViewPose } from './view-pose.ts';
 import { drawsInSoftware } from './software-renderer.ts';
 import { BurstResolution } from './burst-resolution.ts';
+import { PiecewiseRays } from './piecewise-rays.ts';
 import type { Thinning } from './ray-budget.ts';
 import { framedPoints, LookFollower } from './view-look.ts';
 
@@ -167,6 +168,8 @@ export class LabView {
   readonly software: boolean;
   /** On a CPU rasterizer: a burst of edits is drawn at reduced resolution (null on a GPU). */
   private readonly burst: BurstResolution | null;
+  /** On a CPU rasterizer: a heavy ray layer is drawn a piece a frame (null on a GPU). */
+  private readonly pieces: PiecewiseRays | null;
   /** The thinning the last drawn frame showed, as last told. */
   private drawnThinning: Thinning | null = null;
   /** The share of the device pixel ratio drawn now (below 1 during a burst). */
@@ -193,7 +196,8 @@ export class LabView {
     this.burst = this.software ? new BurstResolution((scale) => this.setResolutionScale(scale)) : null;
     this.renderer.outputColorSpace = LinearSRGBColorSpace;
     this.renderer.setClearColor(0x000000, 0);
-    this.scheduler = new FrameScheduler(() => this.draw());
+    this.pieces = this.software ? new PiecewiseRays(this.renderer) : null;
+    this.scheduler = new FrameScheduler((changed) => this.draw(changed));
 
     // The gizmo first: its pointerdown must claim a drag before the orbit controls see it.
     this.gizmo = new TransformGizmo(this.camera, canvas, {
@@ -611,6 +615,7 @@ export class LabView {
     this.removeRayAnimator?.();
     if (this.rayLayer) this.scene.remove(this.rayLayer.object);
     this.burst?.dispose();
+    this.pieces?.dispose();
     this.flight.dispose();
     this.gizmo.dispose();
     this.controls.dispose();
@@ -721,11 +726,28 @@ export class LabView {
     this.update(this.store.state);
   }
 
-  private draw(): void {
+  /**
+   * For tests and tools: whether the last frame showed every instance of the ray layer (on a
+   * CPU rasterizer a heavy layer takes a piece a frame: piecewise-rays.ts).
+   */
+  get raysComplete(): boolean {
+    return !this.pieces?.unfinished;
+  }
+
+  private draw(changed: boolean): void {
+    if (!changed && this.pieces?.unfinished && this.rayLayer) {
+      this.pieces.drawNext(this.camera, this.rayLayer);
+      if (this.pieces.unfinished) this.scheduler.requestMore();
+      this.frames++;
+      return;
+    }
     this.cameraScreen.setViewedFromEye(this.camera.position.distanceTo(this.cameraScreen.rig.position) < INSIDE_CAMERA);
     // The outline follows a drag in progress.
     if (this.selectionBox.visible && this.gizmo.dragging) this.outlineSelection(this.store.state, this.selectedObject(this.store.state));
-    this.renderer.render(this.scene, this.camera);
+    if (this.pieces) {
+      this.pieces.drawChanged(this.scene, this.camera, this.rayLayer);
+      if (this.pieces.unfinished) this.scheduler.requestMore();
+    } else this.renderer.render(this.scene, this.camera);
     this.drawnRaysScene = this.screenRays?.scene ?? null;
     this.drawnScene = this.store.state.scene;
     const thinning = this.rayLayer?.thinning ?? null;

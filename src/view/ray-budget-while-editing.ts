@@ -34,6 +34,9 @@ export class RayBudgetWhileEditing {
     private readonly timer: BurstTimer = browserTimer,
   ) {}
 
+  /** The budget the next edit brings. */
+  readonly editBudget = EDIT_RAY_BUDGET;
+
   /** The budget in force now, or null: all rays are drawn. */
   get budget(): number | null {
     return this.editing ? EDIT_RAY_BUDGET : null;

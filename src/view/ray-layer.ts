@@ -27,4 +27,13 @@ export interface RayLayer {
   pick(raycaster: Raycaster): RayHover | null;
   /** How many rays are drawn of how many while a budget leaves some out (ray-budget.ts); null when all are. */
   readonly thinning: Thinning | null;
+  /** The instances `object` draws (rays and cones), counted in the order it draws them, as the pieces below are. */
+  readonly instances: number;
+  /**
+   * From now on `object` draws only its first `count` instances (null: all again): the first
+   * piece of a heavy layer drawn over several frames (view/piecewise-rays.ts).
+   */
+  drawFirst(count: number | null): void;
+  /** An object, not in the scene, that draws instances `from` … `from + count − 1` alone, as `object` would. */
+  piece(from: number, count: number): Object3D;
 }

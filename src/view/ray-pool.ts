@@ -160,12 +160,35 @@ class InstanceBuffers {
     old.dispose();
   }
 
+  /** The instance attributes (the matrix first), to copy a range of them into a piece. */
+  get attributes(): InstancedBufferAttribute[] {
+    return [this.mesh.instanceMatrix, this.color, this.alpha, this.growth, ...(this.dash ? [this.dash] : []), ...(this.arrowAt ? [this.arrowAt] : []), ...(this.stop ? [this.stop] : [])];
+  }
+
+  /** Instances `from` … `to` − 1 of `source` as this mesh's first ones, drawn alone (a piece: RayPool.piece). */
+  copyRange(source: InstanceBuffers, from: number, to: number): void {
+    const count = Math.max(0, to - from);
+    this.reserve(count);
+    const targets = this.attributes;
+    source.attributes.forEach((attribute, a) => {
+      const size = attribute.itemSize;
+      (targets[a].array as Float32Array).set((attribute.array as Float32Array).subarray(from * size, to * size));
+    });
+    this.commit(count);
+  }
+
+  /** Draws the first `count` instances only (those uploaded stay), or all `uploaded` of them. */
+  limit(count: number, uploaded: number): void {
+    this.mesh.count = Math.min(count, uploaded);
+    this.mesh.visible = this.mesh.count > 0;
+  }
+
   /** Uploads the first `count` instances and draws that many. */
   commit(count: number): void {
     this.mesh.count = count;
     this.mesh.visible = count > 0;
     if (count === 0) return;
-    for (const attribute of [this.mesh.instanceMatrix, this.color, this.alpha, this.growth, ...(this.dash ? [this.dash] : []), ...(this.arrowAt ? [this.arrowAt] : []), ...(this.stop ? [this.stop] : [])]) {
+    for (const attribute of this.attributes) {
       attribute.clearUpdateRanges();
       attribute.addUpdateRange(0, count * attribute.itemSize);
       attribute.needsUpdate = true;
@@ -244,6 +267,10 @@ export class RayPool implements RayLayer {
   private readonly hiddenMaterial = createRayMaterial('hidden', this.travel, this.viewHeight);
   private readonly stopMaterial = createRayMaterial('stop', this.travel, this.viewHeight);
   private readonly extras = new RayExtras(this.object, { arrow: this.arrowMaterial, hidden: this.hiddenMaterial, stop: this.stopMaterial });
+  /** A range of the instances drawn alone (`piece`), with the same materials. */
+  private readonly pieceObject = new Group();
+  private readonly pieceCylinders = new InstanceBuffers('cylinder', this.rayMaterial, this.pieceObject);
+  private readonly pieceCones = new InstanceBuffers('cone', this.coneMaterial, this.pieceObject);
   private readonly drawn = new DrawnRays();
   private animation: AnimationInputs = { rays: null, selectedPixel: null, animate: false, pixelByPixel: false };
   private speed = 1;
@@ -287,6 +314,47 @@ export class RayPool implements RayLayer {
   /** How many rays are drawn of how many while a budget leaves some out; null when all are drawn. */
   get thinning(): Thinning | null {
     return this.thinned;
+  }
+
+  get instances(): number {
+    return this.drawn.rays.count + this.drawn.cones.count;
+  }
+
+  drawFirst(count: number | null): void {
+    for (const { buffers, from, to } of this.inDrawOrder()) buffers.limit(count === null ? to - from : Math.max(0, count - from), to - from);
+  }
+
+  piece(from: number, count: number): Group {
+    const end = Math.min(from + count, this.instances);
+    const pieces = { cylinder: this.pieceCylinders, cone: this.pieceCones };
+    this.inDrawOrder().forEach(({ kind, buffers, from: first, to }, order) => {
+      const piece = pieces[kind];
+      piece.copyRange(buffers, Math.min(Math.max(from, first), to) - first, Math.min(Math.max(end, first), to) - first);
+      // In the same order as in `object`, where a boundary piece has both.
+      piece.mesh.renderOrder = order;
+    });
+    return this.pieceObject;
+  }
+
+  /**
+   * The two meshes in the order three.js draws them (both see-through, at the same place: by
+   * creation, and a mesh outgrown is made again), with the instance numbers they cover.
+   */
+  private inDrawOrder(): { kind: 'cylinder' | 'cone'; buffers: InstanceBuffers; from: number; to: number }[] {
+    const rays = this.drawn.rays.count;
+    const cones = this.drawn.cones.count;
+    return this.cones.mesh.id < this.cylinders.mesh.id
+      ? [{ kind: 'cone', buffers: this.cones, from: 0, to: cones }, { kind: 'cylinder', buffers: this.cylinders, from: cones, to: cones + rays }]
+      : [{ kind: 'cylinder', buffers: this.cylinders, from: 0, to: rays }, { kind: 'cone', buffers: this.cones, from: rays, to: rays + cones }];
+  }
+
+  /**
+   * Chooses now, ahead of the edit that will ask for it, which rays of the screen drawn now
+   * `budget` keeps (ray-budget.ts remembers it): the first edit then only draws them.
+   */
+  prepareBudget(budget: number): void {
+    const [rays, , selectedPixel] = this.lastUpdate ?? [null, null, null];
+    if (rays && !selectedPixel && !this.focus) keptRays(flattenRays(rays), budget, null);
   }
 
   /** Draws about `budget` rays from now on, every kind among them (ray-budget.ts); null: all. */
@@ -350,6 +418,8 @@ export class RayPool implements RayLayer {
     this.extras.dispose();
     this.cylinders.dispose();
     this.cones.dispose();
+    this.pieceCylinders.dispose();
+    this.pieceCones.dispose();
     for (const material of [this.rayMaterial, this.coneMaterial, this.arrowMaterial, this.hiddenMaterial, this.stopMaterial]) material.dispose();
     this.object.clear();
   }

@@ -18,6 +18,32 @@ describe('rendering on demand', () => {
     expect(frames.pending()).toBe(0);
   });
 
+  it('tells a frame asked for only to go on drawing (requestMore) from one a change asked for', () => {
+    const frames = manualFrames();
+    const seen: boolean[] = [];
+    const scheduler = new FrameScheduler((changed) => seen.push(changed), frames.host);
+    scheduler.requestRender();
+    frames.tick();
+    scheduler.requestMore();
+    scheduler.requestMore();
+    frames.tick();
+    // A change during the pieces makes the next frame a changed one, asked for once.
+    scheduler.requestMore();
+    scheduler.requestRender();
+    expect(frames.pending()).toBe(1);
+    frames.tick();
+    frames.tick();
+    expect(seen).toEqual([true, false, true]);
+    // A moving animator changes its frame (and asks for the next as a change); a still one does not.
+    let moves = 1;
+    scheduler.addAnimator(() => moves-- > 0);
+    frames.tick();
+    frames.tick();
+    scheduler.requestMore();
+    frames.tick();
+    expect(seen).toEqual([true, false, true, true, true, false]);
+  });
+
   it('keeps frames coming while an animator is moving, then stops', () => {
     const frames = manualFrames();
     let draws = 0;

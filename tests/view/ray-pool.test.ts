@@ -5,6 +5,8 @@ import { DEFAULT_RAY_VIEW, type RayViewOptions } from '../../src/lab-state/lab-s
 import { CONE_OPACITY, LOOP_PAUSE_S, RAY_CONES_NAME, RAY_CYLINDERS_NAME, RayPool } from '../../src/view/ray-pool.ts';
 import { ALPHA_ATTRIBUTE, ARROW_AT, ARROW_AT_ATTRIBUTE, DASH_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, patchRayShader, STOP_ATTRIBUTE } from '../../src/view/ray-shader.ts';
 import { hexToColor, RAY_DASHES, rayPalette } from '../../src/view/ray-palette.ts';
+import { keptRays } from '../../src/view/ray-budget.ts';
+import { flattenRays } from '../../src/view/flat-rays.ts';
 import { areaRay, ray, screen, syntheticScreen } from '../support/ray-fixtures.ts';
 
 const options = (changes: Partial<RayViewOptions> = {}): RayViewOptions => ({ ...DEFAULT_RAY_VIEW, ...changes });
@@ -255,6 +257,57 @@ describe('RayPool budget', () => {
     pool.setBudget(null);
     expect(pool.stats.rays).toBe(all);
     expect(pool.thinning).toBeNull();
+  });
+});
+
+describe('RayPool budget chosen ahead', () => {
+  it('chooses the budget’s rays of the screen drawn now once, ahead of the edit, and the edit draws that choice', () => {
+    const pool = new RayPool();
+    const rays = syntheticScreen(6000);
+    pool.update(rays, options(), null);
+    pool.prepareBudget(1000);
+    const ahead = keptRays(flattenRays(rays), 1000, null);
+    expect(keptRays(flattenRays(rays), 1000, null)).toBe(ahead);
+    pool.setBudget(1000);
+    expect(pool.stats.rays).toBe(ahead!.reduce((sum, kept) => sum + kept, 0));
+    // Another budget is chosen again, not taken from the last choice.
+    expect(keptRays(flattenRays(rays), 500, null)).not.toBe(ahead);
+  });
+});
+
+describe('RayPool pieces', () => {
+  it('draws its first instances alone, or any range of them, rays then cones, from its own buffers', () => {
+    const pool = new RayPool();
+    const rays = syntheticScreen(1000);
+    pool.update(rays, options(), null);
+    const { cylinders, attribute } = parts(pool);
+    expect(pool.instances).toBe(1000);
+    pool.drawFirst(300);
+    expect([cylinders.count, pool.stats.rays]).toEqual([300, 300]);
+    pool.drawFirst(null);
+    expect(cylinders.count).toBe(1000);
+    const piece = pool.piece(600, 500);
+    const [pieceRays] = piece.children.filter((child): child is InstancedMesh => child instanceof InstancedMesh && child.name === RAY_CYLINDERS_NAME);
+    expect(pieceRays.count).toBe(400);
+    expect(pieceRays.material).toBe(cylinders.material);
+    for (const index of [0, 399]) {
+      expect(transform(pieceRays, index, [0, 0, 1])).toEqual(transform(cylinders, 600 + index, [0, 0, 1]));
+      expect(pieceRays.geometry.getAttribute(DASH_ATTRIBUTE).getX(index)).toBe(attribute(cylinders, DASH_ATTRIBUTE).getX(600 + index));
+    }
+    // Pieces follow the order three.js draws the two meshes in (by creation; the cylinders' was made again when it grew).
+    pool.update(oneTree(), options(), null);
+    const { cylinders: rayMesh, cones: coneMesh } = parts(pool);
+    const conesFirst = coneMesh.id < rayMesh.id;
+    const kinds = [0, 1, 2].map((index) => {
+      const drawn = pool.piece(index, 1).children.filter((child): child is InstancedMesh => child instanceof InstancedMesh && child.count > 0);
+      expect(drawn).toHaveLength(1);
+      return drawn[0].name;
+    });
+    expect(kinds).toEqual(conesFirst ? [RAY_CONES_NAME, RAY_CYLINDERS_NAME, RAY_CYLINDERS_NAME] : [RAY_CYLINDERS_NAME, RAY_CYLINDERS_NAME, RAY_CONES_NAME]);
+    pool.drawFirst(1);
+    expect([parts(pool).cylinders.count, parts(pool).cones.count]).toEqual(conesFirst ? [0, 1] : [1, 0]);
+    pool.drawFirst(null);
+    expect([parts(pool).cylinders.count, parts(pool).cones.count]).toEqual([2, 1]);
   });
 });
 
