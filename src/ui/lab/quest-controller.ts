@@ -1,3 +1,4 @@
+import { showLocaleProblem } from '../controls/locale-problem.ts';
 import { msg, str } from '@lit/localize';
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import { levelTextsLocale, loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
@@ -244,6 +245,7 @@ export class QuestController implements ReactiveController {
         // again in the new one, its progress saved.
         void chooseLocale(command.locale).then((locale) => {
           if (locale !== levelTextsLocale()) location.reload();
+          else showLocaleProblem(document);
         });
         return;
       case 'palette':
