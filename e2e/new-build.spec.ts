@@ -103,19 +103,83 @@ test.describe('without an offline copy', () => {
     await expect(pageProblem).toContainText('This page could not be loaded.');
     await expect(pageProblem.getByRole('button', { name: 'Reload' })).toBeVisible();
     await go(page, '#free-lab');
-    const panelProblem = page.locator('rt-lab rt-load-problem');
-    await expect(panelProblem).toContainText('This panel could not be loaded.');
+    const panelProblem = page.locator('rt-lab').getByRole('alert').filter({ hasText: 'This panel could not be loaded.' });
+    await expect(panelProblem).toBeVisible();
     // A few seconds more: no one asks again.
     await page.waitForTimeout(5000);
     expect(requestsFor('rt-teacher-page', switched)).toHaveLength(MOST_TRIES);
     expect(requestsFor('rt-bvh-panel', switched)).toHaveLength(MOST_TRIES);
     // The rest: the favicon, and the render workers of the lab opened again, which the
-    // render pool also tries a bounded number of times (render-pool.ts).
+    // render pool also tries a bounded number of times (render-pool.ts; the next test).
     expect(server.requests.length - switched).toBeLessThan(40);
 
     await panelProblem.getByRole('button', { name: 'Reload' }).click();
     await expect(page.locator('rt-bvh-panel').getByRole('switch', { name: 'Show the BVH' })).toBeVisible();
     expect(await buildScript(page)).toMatch(/B\.js$/);
+  });
+
+  test('an old tab opening the lab again says its ray tracer, debugger and renders cannot be loaded, with Reload, after a few requests', async ({ page }) => {
+    await openGame(page, server.url);
+    const cores = await page.evaluate(() => navigator.hardwareConcurrency);
+    server.serve(newer);
+    const switched = server.requests.length;
+    // The lab leaves the page (its workers stop) and comes back: new workers, whose code is gone.
+    await go(page, '#/teacher');
+    await expect(page.locator('rt-load-problem')).toContainText('This page could not be loaded.');
+    await go(page, '#free-lab');
+    const problems = page.locator('rt-lab .lab-load-problems').getByRole('alert');
+    await expect(problems.filter({ hasText: 'The ray tracer could not be loaded: no rays are traced and no image can be rendered.' })).toBeVisible();
+    await expect(problems.filter({ hasText: 'The ray debugger could not be loaded.' }).getByRole('button', { name: 'Reload' })).toBeVisible();
+    await page.getByRole('button', { name: 'Render image' }).click();
+    await page.locator('rt-render-window').getByRole('button', { name: 'Render', exact: true }).click();
+    const renderProblem = page.locator('rt-render-window rt-load-problem');
+    await expect(renderProblem).toContainText('The render workers could not be loaded.');
+    await expect(renderProblem.getByRole('button', { name: 'Reload' })).toBeVisible();
+    await page.screenshot({ path: 'test-results/screens/new-build-old-tab-lab.png' });
+    // Each pool tries its workers a bounded number of times (its size and two more: render-pool.ts), then no more.
+    await page.waitForTimeout(4000);
+    const workers = requestsFor('render.worker', switched);
+    expect(workers.every((request) => request.status === 404)).toBe(true);
+    expect(workers.length).toBeGreaterThanOrEqual(3);
+    expect(workers.length).toBeLessThanOrEqual(cores + 2 + 3);
+    // An edit traces again: at once refused by the pool, no request.
+    await page.locator('rt-scene-view canvas').press('ArrowUp').catch(() => {});
+    await page.waitForTimeout(3000);
+    expect(requestsFor('render.worker', switched)).toHaveLength(workers.length);
+
+    await renderProblem.getByRole('button', { name: 'Reload' }).click();
+    await expect(page.locator('rt-quest-panel, rt-lab').first()).toBeVisible();
+    expect(await buildScript(page)).toMatch(/B\.js$/);
+    await expect(page.locator('rt-lab .lab-load-problems')).toHaveCount(0);
+  });
+
+  test('Dutch texts that cannot be loaded are said in English with Reload, and the page works in English', async ({ page }) => {
+    // At the start: the Dutch texts' file does not arrive (three tries).
+    const tries: string[] = [];
+    await page.route(/\/assets\/nl-[\w-]+\.js$/, (route) => (tries.push(route.request().url()), route.abort()));
+    await page.goto(`${server.url}?lang=nl`);
+    const problem = page.locator('body > rt-load-problem.locale-problem');
+    await expect(problem).toContainText('The Dutch texts could not be loaded, so the app is in English.');
+    await expect(problem.getByRole('button', { name: 'Reload' })).toBeVisible();
+    await expect(page.locator('rt-quest-panel').getByRole('heading', { name: 'Introduction' })).toBeVisible();
+    expect(await page.evaluate(() => document.documentElement.lang)).toBe('en');
+    expect(tries).toHaveLength(MOST_TRIES);
+    await page.screenshot({ path: 'test-results/screens/new-build-dutch-failed.png' });
+    await problem.getByRole('button', { name: 'Close' }).click();
+    await expect(problem).toHaveCount(0);
+    await page.unroute(/\/assets\/nl-[\w-]+\.js$/);
+
+    // An old tab after a new build: Dutch chosen in the Menu asks for the old file, which is gone.
+    await page.goto(server.url);
+    await expect(page.locator('rt-quest-panel').getByRole('heading', { name: 'Introduction' })).toBeVisible();
+    server.serve(newer);
+    const switched = server.requests.length;
+    await page.getByRole('button', { name: 'Menu' }).click();
+    await page.getByRole('radio', { name: 'Nederlands' }).check();
+    await expect(problem).toContainText('The Dutch texts could not be loaded, so the app is in English.');
+    expect(requestsFor('/assets/nl-', switched)).toHaveLength(MOST_TRIES);
+    await expect(page.getByRole('button', { name: 'Menu' })).toBeVisible();
+    expect(await page.evaluate(() => document.documentElement.lang)).toBe('en');
   });
 
   test('offline, a page never loaded says so with Reload after a few tries', async ({ context, page }) => {
@@ -132,7 +196,7 @@ test.describe('without an offline copy', () => {
     await expect(problem).toContainText('This page could not be loaded.');
     await expect(problem.getByRole('button', { name: 'Reload' })).toBeVisible();
     await go(page, '#free-lab');
-    await expect(page.locator('rt-lab rt-load-problem')).toContainText('This panel could not be loaded.');
+    await expect(page.locator('rt-lab').getByRole('alert').filter({ hasText: 'This panel could not be loaded.' })).toBeVisible();
     await page.waitForTimeout(5000);
     expect(tries.filter((path) => path.includes('rt-dashboard-page'))).toHaveLength(MOST_TRIES);
     expect(tries.filter((path) => path.includes('rt-bvh-panel'))).toHaveLength(MOST_TRIES);

@@ -9,7 +9,8 @@ import { collectErrors, progressFile, state } from './support/game-steps.ts';
 // Saves that fail are said, and nothing is lost: the browser's real localStorage is filled
 // until it refuses, then the learner imports progress, hands in the survey, resets. Every
 // message shows above the level map, in the page's live regions. A sandbox edit is there
-// after a reload that follows it at once. A damaged session record is said, and kept.
+// after a reload that follows it at once. A damaged session record and damaged survey
+// answers are said, and kept to download (and restore) from the Menu.
 
 /** Fills the page's localStorage until it refuses even a few characters (other data of this site). */
 async function fillStorage(page: Page): Promise<void> {
@@ -173,4 +174,84 @@ test('a damaged session record is said in the code dialog, and kept in the Menu 
   const file = await started;
   expect(file.suggestedFilename()).toMatch(/^ray-tracer-quest-damaged-session-record-\d{4}-\d\d-\d\dT\d\d-\d\d-\d\d\.json$/);
   expect(await readFile(await file.path(), 'utf8')).toBe(damaged);
+});
+
+const surveyAssignment: Assignment = {
+  version: 1,
+  title: 'Lesson 6',
+  levels: ['01-introduction'],
+  requiredTasks: { '01-introduction': [] },
+  otherLevels: 'hidden',
+  locale: 'en',
+  askParticipantCode: false,
+  survey: 'default',
+};
+
+/** Hands in the survey of `surveyAssignment`, then damages its record (`damage` of the saved text) with no page of it open; returns that page and the damaged text. */
+async function damagedSurvey(page: Page, damage: (saved: string) => string): Promise<{ later: Page; hash: string; damaged: string }> {
+  const hash = await encodeAssignment(surveyAssignment);
+  await page.goto(`./${hash}`);
+  const survey = page.locator('rt-lab rt-survey');
+  await answerDefaultSurvey(survey, '12');
+  await survey.getByRole('button', { name: 'Hand in' }).click();
+  await expect(page.locator('rt-assignment-done')).toBeVisible();
+  const later = await page.context().newPage();
+  await page.close();
+  await later.goto('./');
+  const key = await later.evaluate(() => Object.keys(localStorage).find((name) => name.endsWith('.survey'))!);
+  const damaged = damage(await later.evaluate((name) => localStorage.getItem(name)!, key));
+  await later.evaluate(([name, text]) => localStorage.setItem(name!, text!), [key, damaged]);
+  return { later, hash, damaged };
+}
+
+test('damaged survey answers are said, kept in the Menu, downloaded and restored', async ({ page }) => {
+  // Cut short inside the last answer (the free text): the answers before the cut are kept.
+  const { later, hash, damaged } = await damagedSurvey(page, (saved) => saved.slice(0, saved.indexOf('really')));
+  await later.goto(`./${hash}`);
+  await expectToastOnTop(later, /Your saved survey answers were damaged; what could be read of them is kept \(\d+ answers\)\. The damaged answers are kept: download or restore them from the Menu \(Damaged saves\)\./, 'alert');
+  await expect(later.locator('rt-assignment-done')).toBeVisible();
+  const stored = () => later.evaluate(() => JSON.parse(localStorage.getItem(Object.keys(localStorage).find((key) => key.endsWith('.survey'))!)!));
+  expect((await stored()).answers).not.toHaveProperty('feedback');
+
+  await later.getByRole('button', { name: 'Menu' }).click();
+  const entry = later.locator('rt-progress-menu [data-damaged-save]');
+  await expect(entry).toContainText('Survey answers, kept on');
+  const started = later.waitForEvent('download');
+  await entry.getByRole('button', { name: 'Download' }).click();
+  const file = await started;
+  expect(file.suggestedFilename()).toMatch(/^ray-tracer-quest-damaged-survey-answers-\d{4}-\d\d-\d\dT\d\d-\d\d-\d\d\.json$/);
+  expect(await readFile(await file.path(), 'utf8')).toBe(damaged);
+  await entry.getByRole('button', { name: 'Restore' }).click();
+  await expectToastOnTop(later, 'The damaged save is restored', 'status');
+  expect((await stored()).answers).toMatchObject({ minutes: 12, education: 'secondary' });
+  await later.screenshot({ path: 'test-results/screens/saves-damaged-survey.png' });
+});
+
+test('damaged survey answers with the storage full are not written over by the survey handed in again until downloaded', async ({ page }) => {
+  // The survey's id is gone: nothing can be used, and the survey asks again.
+  const { later, hash, damaged } = await damagedSurvey(page, (saved) => saved.replace('"survey":"default"', '"survey":17'));
+  await fillStorage(later);
+  await later.goto(`./${hash}`);
+  await expectToastOnTop(later, /Your saved survey answers could not be read, so the survey will ask for them again\. There is no room to keep a copy of the damaged answers, so they are not written over until you download them from the Menu \(Damaged saves\)\./, 'alert');
+  const survey = later.locator('rt-lab rt-survey');
+  await answerDefaultSurvey(survey, '15');
+  await survey.getByRole('button', { name: 'Hand in' }).click();
+  // The progress cannot be saved either: the first reason is said (the damaged answers' was said at the start).
+  await expectToastOnTop(later, /Your answers could not be saved in the browser: the browser's storage has no room for it\./, 'alert');
+  const stored = () => later.evaluate(() => localStorage.getItem(Object.keys(localStorage).find((key) => key.endsWith('.survey'))!));
+  expect(await stored()).toBe(damaged);
+
+  await later.getByRole('button', { name: 'Menu' }).click();
+  const entry = later.locator('rt-progress-menu [data-damaged-save]');
+  await expect(entry).toContainText('Survey answers, not copied (no room)');
+  await later.screenshot({ path: 'test-results/screens/saves-damaged-survey-held.png' });
+  const started = later.waitForEvent('download');
+  await entry.getByRole('button', { name: 'Download' }).click();
+  expect(await readFile(await (await started).path(), 'utf8')).toBe(damaged);
+  await expect(entry).toHaveCount(0);
+  // Saving goes on once there is room: leaving the page writes the answers handed in again.
+  await freeStorage(later);
+  await later.reload();
+  await expect(later.locator('rt-assignment-done')).toBeVisible();
+  expect(JSON.parse((await stored())!)).toMatchObject({ survey: 'default', answers: { minutes: 15 } });
 });

@@ -9,6 +9,8 @@ const { startLocale } = await import('./i18n/locale.ts');
 const [{ loadLevelTexts }, locale] = await Promise.all([import('./app/level-catalog-browser.ts'), startLocale()]);
 await loadLevelTexts(locale);
 await import('./ui/shell/rt-app.ts');
+// Dutch asked for and not loadable: the page is in English and says so (the module came with rt-app).
+(await import('./ui/controls/locale-problem.ts')).showLocaleProblem(document);
 
 // The offline copy (the service worker storing every file of the build) starts once the
 // page has loaded, so that it does not compete with the first screen; the Menu says how it went.

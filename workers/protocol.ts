@@ -77,6 +77,12 @@ export interface CancelRequest {
   jobId: number;
 }
 
+/**
+ * What a browser render worker posts once its code has loaded and run, before any answer: a
+ * worker that fails before it is a worker whose code could not be loaded (web-worker-port.ts).
+ */
+export const WORKER_STARTED = 'render-worker-started';
+
 export type RenderRequest = LoadSceneRequest | RenderTileRequest | TracePixelRequest | TracePixelsRequest | CancelRequest;
 
 // ── Responses: worker → pool ─────────────────────────────────────────────────────────────

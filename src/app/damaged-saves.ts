@@ -6,7 +6,7 @@ import type { PendingWrites } from './pending-writes.ts';
 
 /**
  * The Menu's "Damaged saves": every copy of saved data that could not be used as it was,
- * for this session's progress key and its session record — the backups in storage, and the
+ * for this session's progress key, its session record and its survey answers — the backups in storage, and the
  * damaged text still held under its own key because there was no room for a backup. Each
  * can be downloaded exactly as it was; a backup can be deleted (to free space) and a held
  * one is released once downloaded, so that saving goes on.
@@ -15,7 +15,7 @@ import type { PendingWrites } from './pending-writes.ts';
 /** One damaged save. `held`: still under its own key (no backup), `key` is then that key. */
 export interface DamagedSave {
   key: string;
-  what: 'progress' | 'session';
+  what: 'progress' | 'session' | 'survey';
   /** When the backup was made (ISO 8601), or null for a held one. */
   madeAt: string | null;
   /** Its length in characters. */
@@ -32,6 +32,7 @@ export class DamagedSaves {
     private readonly writes: PendingWrites,
     private readonly progressKey: string,
     private readonly contextKey: string,
+    private readonly surveyKey: string,
   ) {
     this.refresh();
   }
@@ -43,12 +44,13 @@ export class DamagedSaves {
 
   /** Looks again: after a save that may have backed up a held text, a release or a deletion. */
   refresh(): void {
-    const what = (key: string): DamagedSave['what'] => (key === this.progressKey ? 'progress' : 'session');
+    const what = (key: string): DamagedSave['what'] => (key === this.progressKey ? 'progress' : key === this.contextKey ? 'session' : 'survey');
     const held: DamagedSave[] = [
       [this.progressKey, this.progress.held],
       [this.contextKey, this.writes.held(this.contextKey)],
+      [this.surveyKey, this.writes.held(this.surveyKey)],
     ].flatMap(([key, text]) => (key !== null && text !== null ? [{ key, what: what(key), madeAt: null, size: text.length, held: true }] : []));
-    const stored = listBackups(this.storage, [this.progressKey, this.contextKey]).map(({ key, of, madeAt, size }) => ({ key, what: what(of), madeAt, size, held: false }));
+    const stored = listBackups(this.storage, [this.progressKey, this.contextKey, this.surveyKey]).map(({ key, of, madeAt, size }) => ({ key, what: what(of), madeAt, size, held: false }));
     this.listed = [...held, ...stored];
   }
 
@@ -102,7 +104,7 @@ export function withRestored(current: Progress, restored: Progress): Progress {
 
 /** The download's name: what it is and when it was kept ("ray-tracer-quest-damaged-progress-2025-03-01T09-00-00.json"). */
 export function damagedSaveFileName(save: DamagedSave): string {
-  const what = save.what === 'progress' ? 'progress' : 'session-record';
+  const what = { progress: 'progress', session: 'session-record', survey: 'survey-answers' }[save.what];
   const when = save.madeAt ? `-${save.madeAt.slice(0, 19).replaceAll(':', '-')}` : '';
   return `ray-tracer-quest-damaged-${what}${when}.json`;
 }

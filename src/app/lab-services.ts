@@ -1,7 +1,8 @@
 import { initialState, type LabState } from '../lab-state/lab-state.ts';
 import { Store } from '../lab-state/store.ts';
 import type { RenderImage } from '../render/render-job.ts';
-import type { RenderPool } from '../render/render-pool.ts';
+import { RenderWorkersUnavailable, type RenderPool } from '../render/render-pool.ts';
+import { LazyModule } from '../util/lazy-module.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';
 import type { Scene } from '../scene/scene.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
@@ -26,7 +27,23 @@ export interface LabServicesOptions {
   report(text: string, tone: 'info' | 'error'): void;
   /** The words of a tracing failure (the UI translates them). */
   traceFailed(error: Error): string;
+  /** Code that could not be loaded: the render workers', or the 3D view's ray layers' (the UI says so, with Reload). */
+  cannotLoad(problem: LoadProblem): void;
 }
+
+/** What could not be loaded, and the browser's reason. */
+export interface LoadProblem {
+  what: 'tracer' | 'view-layers';
+  reason: string;
+}
+
+/**
+ * The three.js layers' code, loaded when the first 3D view attaches; tried a few times, then
+ * failed for good (a tab of a build that a newer one replaced, offline): lazy-module.ts.
+ */
+const viewLayersCode = new LazyModule(() =>
+  Promise.all([import('../view/ray-pool.ts'), import('../view/bvh-boxes.ts'), import('../render/inline-screen-tracer.ts'), import('../view/ray-budget-while-editing.ts')]),
+);
 
 /**
  * The lab's services and how they are wired, apart from any page: the one store, the render
@@ -68,6 +85,7 @@ export class LabServices {
   private readonly listeners = new Set<(rays: ScreenRays) => void>();
   private readonly cleanup: (() => void)[] = [];
   private readonly createPool: LabServicesOptions['createPool'];
+  private readonly cannotLoad: LabServicesOptions['cannotLoad'];
   /** One worker for picture predictions, made when the first is asked for: the render window's pool stays the learner's. */
   private picturePool: RenderPool | null = null;
   /** Each picture scene's render, by its JSON: a quiz shown again (or in the other language) does not render again. */
@@ -83,7 +101,10 @@ export class LabServices {
     this.seen = this.store.state;
     this.loadMeshes = options.loadMeshes;
     this.tracer = new ScreenTracer(this.tracePool, options.loadMeshes);
-    this.tracer.onError = (error) => options.report(options.traceFailed(error), 'error');
+    // Workers whose code cannot be loaded are said once, with Reload, not at every edit.
+    this.tracer.onError = (error) =>
+      error instanceof RenderWorkersUnavailable ? options.cannotLoad({ what: 'tracer', reason: error.message }) : options.report(options.traceFailed(error), 'error');
+    this.cannotLoad = options.cannotLoad;
     this.cleanup.push(
       this.tracer.subscribe((rays) => {
         this.view?.setScreenRays(rays);
@@ -119,12 +140,14 @@ export class LabServices {
    * inline: its code comes with them), and draws what is there already.
    */
   async attachView(view: LabViewPort): Promise<void> {
-    const [{ RayPool }, { BvhBoxes }, { InlineScreenTracer }, { RayBudgetWhileEditing }] = await Promise.all([
-      import('../view/ray-pool.ts'),
-      import('../view/bvh-boxes.ts'),
-      import('../render/inline-screen-tracer.ts'),
-      import('../view/ray-budget-while-editing.ts'),
-    ]);
+    let modules;
+    try {
+      modules = await viewLayersCode.load();
+    } catch {
+      if (!this.disposed) this.cannotLoad({ what: 'view-layers', reason: viewLayersCode.problem });
+      return;
+    }
+    const [{ RayPool }, { BvhBoxes }, { InlineScreenTracer }, { RayBudgetWhileEditing }] = modules;
     if (this.disposed) return;
     if (!this.layers) {
       this.layers = { rays: new RayPool(), boxes: new BvhBoxes(() => this.view?.requestRender(), this.loadMeshes) };

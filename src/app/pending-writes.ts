@@ -3,7 +3,7 @@ import { isQuotaError, writeBackup, type KeyValueStorage } from '../quest/saved-
 
 /**
  * The small records a session writes next to the progress (the participant code and attempt,
- * the survey answers). A write the storage refuses is not forgotten: the text stays here
+ * the survey answers), or removes (a damaged record of which nothing could be read). A write the storage refuses is not forgotten: the text stays here
  * and is written at the next save (the session saves on every change and when the page is
  * left), so the records are never lost while the page is open and never said to be saved
  * when they are not.
@@ -12,7 +12,8 @@ import { isQuotaError, writeBackup, type KeyValueStorage } from '../quest/saved-
  * over until a backup of it succeeds (tried at every flush) or the learner has downloaded it.
  */
 export class PendingWrites {
-  private readonly texts = new Map<string, string>();
+  /** null: the key is to be removed (a damaged record with nothing readable, once backed up). */
+  private readonly texts = new Map<string, string | null>();
   private readonly heldTexts = new Map<string, string>();
 
   constructor(
@@ -20,8 +21,8 @@ export class PendingWrites {
     private readonly wallMs: () => number,
   ) {}
 
-  /** Writes `text` under `key` at the next flush (replacing a text still waiting there). */
-  put(key: string, text: string): void {
+  /** Writes `text` under `key` at the next flush (replacing a text still waiting there); null removes the key. */
+  put(key: string, text: string | null): void {
     this.texts.set(key, text);
   }
 
@@ -61,7 +62,8 @@ export class PendingWrites {
         this.heldTexts.delete(key);
       }
       try {
-        this.storage.setItem(key, text);
+        if (text === null) this.storage.removeItem(key);
+        else this.storage.setItem(key, text);
         this.texts.delete(key);
       } catch (error) {
         problem ??= isQuotaError(error) ? 'storage-full' : 'storage-blocked';

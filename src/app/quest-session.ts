@@ -10,7 +10,7 @@ import { defaultScene } from '../scene/scene-defaults.ts';
 import { assignmentProgressKey } from '../classroom/assignment-id.ts';
 import { randomUuid } from '../classroom/learner-identity.ts';
 import type { SurveySubmission } from '../classroom/survey-answers.ts';
-import { SurveyStore, surveyKey } from '../classroom/survey-store.ts';
+import { loadSurvey, readSurveyText, surveyKey, type SurveyDamage } from '../classroom/survey-store.ts';
 import { assignmentCatalog } from './assignment-catalog.ts';
 import { DamagedSaves, withRestored } from './damaged-saves.ts';
 import { PendingWrites } from './pending-writes.ts';
@@ -68,6 +68,8 @@ export class QuestSession {
   readonly problem: ProgressProblem | undefined;
   /** What of the saved session record (participant code, attempt) could not be read, if any. */
   readonly contextDamage: ContextDamage | null;
+  /** What of the saved survey answers could not be read, if any. */
+  readonly surveyDamage: SurveyDamage | null;
   /** The Menu's damaged saves of this progress key. */
   readonly damagedSaves: DamagedSaves;
   private engineNow: QuestEngine;
@@ -106,10 +108,13 @@ export class QuestSession {
     this.contextDamage = context.damage;
     if (context.damage && context.damage.backupKey === null) this.writes.hold(sessionContextKey(this.progressKey), context.damage.raw);
     if (this.contextNow.attemptId === null) this.saveContext({ ...this.contextNow, attemptId: randomUuid() });
-    this.surveyNow = new SurveyStore(this.storage, this.progressKey).load();
+    const survey = loadSurvey(this.storage, this.progressKey, this.clock.wallMs());
+    this.surveyNow = survey.submission;
+    this.surveyDamage = survey.damage;
+    if (survey.damage) this.keepDamagedSurvey(survey.damage);
     const loaded = this.progress.load();
     this.problem = loaded.problem;
-    this.damagedSaves = new DamagedSaves(this.storage, this.progress, this.writes, this.progressKey, sessionContextKey(this.progressKey));
+    this.damagedSaves = new DamagedSaves(this.storage, this.progress, this.writes, this.progressKey, sessionContextKey(this.progressKey), surveyKey(this.progressKey));
     this.engineNow = this.makeEngine(loaded.progress);
     this.listenTo(this.engineNow);
     if (this.assignment && this.engineNow.progress.settings.locale !== this.assignment.locale) {
@@ -298,6 +303,7 @@ export class QuestSession {
     const text = this.damagedSaves.text(key);
     if (text === null) return { ok: false, reason: 'unreadable', errors: [] };
     if (this.damagedSaves.what(key) === 'session') return this.restoreContext(text);
+    if (this.damagedSaves.what(key) === 'survey') return this.restoreSurvey(text);
     const read = readProgressJson(text, new Date(this.clock.wallMs()).toISOString());
     if (!read.ok) return { ok: false, reason: 'unreadable', errors: read.errors };
     const current = this.engineNow.progress;
@@ -423,6 +429,30 @@ export class QuestSession {
     if (context.participantCode === null && context.attemptId === null) return { ok: false, reason: 'unreadable', errors: [] };
     this.changeContext({ participantCode: context.participantCode ?? this.contextNow.participantCode, attemptId: context.attemptId ?? this.contextNow.attemptId });
     return { ok: true, repaired: [] };
+  }
+
+  /**
+   * A damaged survey record: held when it could not be backed up (nothing is written over it
+   * until it is, or the learner has downloaded it); what could be read of it is written in its
+   * place at the next save (after the backup), so that the next visit does not find the damage
+   * again and back it up once more.
+   */
+  private keepDamagedSurvey(damage: SurveyDamage): void {
+    const key = surveyKey(this.progressKey);
+    if (damage.backupKey === null) this.writes.hold(key, damage.raw);
+    this.writes.put(key, this.surveyNow && JSON.stringify(this.surveyNow));
+  }
+
+  /**
+   * A survey backup: the answers that can be read of it come back (they replace this visit's
+   * answers to the same questions, the other answers stay), with the time they were handed in.
+   */
+  private restoreSurvey(text: string): ImportResult {
+    const { submission, lost } = readSurveyText(text);
+    if (submission === null) return { ok: false, reason: 'unreadable', errors: [] };
+    const current = this.surveyNow?.survey === submission.survey ? this.surveyNow.answers : {};
+    this.submitSurvey({ ...submission, answers: { ...current, ...submission.answers } });
+    return { ok: true, repaired: lost };
   }
 
   /**

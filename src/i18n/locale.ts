@@ -4,6 +4,7 @@ import type { Locale } from '../quest/localized-text.ts';
 import { loadIssueTranslation } from './issue-text.ts';
 import { pickLocale, readRememberedLocale, rememberLocale } from './locale-choice.ts';
 import { rerenderAll } from './rerender-all.ts';
+import { LazyModule } from '../util/lazy-module.ts';
 
 /**
  * The app's language at run time (@lit/localize in runtime mode): the Dutch messages are a
@@ -12,12 +13,23 @@ import { rerenderAll } from './rerender-all.ts';
  * controls use the right language.
  */
 
+/**
+ * The Dutch messages, and the Dutch patterns for the reasons a file is refused (issue-text.ts):
+ * tried a few times, then failed for good (a tab of a build that a newer one replaced,
+ * offline): the app goes on in English and says so (src/ui/controls/locale-problem.ts).
+ */
+const dutchTexts = new LazyModule(() => Promise.all([import('../locales/nl.ts'), loadIssueTranslation()]));
+
 const localization = configureLocalization({
   sourceLocale,
   targetLocales,
-  // The reasons a file is refused for are said in Dutch by patterns of their own (issue-text.ts).
-  loadLocale: async () => (await Promise.all([import('../locales/nl.ts'), loadIssueTranslation()]))[0],
+  loadLocale: async () => (await dutchTexts.load())[0],
 });
+
+/** Why the Dutch texts could not be loaded (the browser's words), or null while they could be or were not asked for. */
+export function dutchTextsProblem(): string | null {
+  return dutchTexts.state === 'failed' ? dutchTexts.problem || 'unknown' : null;
+}
 
 const storage = () => localStorage;
 

@@ -68,6 +68,23 @@ export function contextDamageText(damage: { codeLost: boolean; attemptLost: bool
 }
 
 /**
+ * Damaged survey answers: whether the survey asks again, or how many answers were kept (and
+ * left out, when that can be told), and where the record is.
+ */
+export function surveyDamageText(damage: { askedAgain: boolean; kept: number; leftOut: number | null; backedUp: boolean }): string {
+  const { kept, leftOut } = damage;
+  const what = damage.askedAgain
+    ? msg('Your saved survey answers could not be read, so the survey will ask for them again.')
+    : leftOut === null
+      ? msg(str`Your saved survey answers were damaged; what could be read of them is kept (${kept} answers).`)
+      : msg(str`Your saved survey answers were damaged: ${kept} kept, ${leftOut} left out because they could not be read.`);
+  const where = damage.backedUp
+    ? msg('The damaged answers are kept: download or restore them from the Menu (Damaged saves).')
+    : msg('There is no room to keep a copy of the damaged answers, so they are not written over until you download them from the Menu (Damaged saves).');
+  return `${what} ${where}`;
+}
+
+/**
  * The places of `path: reason (what was done)` lines ("settings.locale", "log.events[12]"):
  * short enough for a message; the reasons are in the download for whoever wants them.
  */

@@ -15,6 +15,12 @@
  * and the measured speed, times a wide margin, plus time to build the scene. Only when
  * workers fail several times in a row, with no good answer in between, does the job fail.
  * Messages that are not well-formed responses are dropped and logged.
+ *
+ * A worker whose code cannot be loaded (a browser tab of a build that a newer one replaced
+ * on the server, offline with no stored copy) is not a crash a new worker mends: after a
+ * few in a row the pool gives up for good (until the page is reloaded) and fails every job
+ * and trace with `RenderWorkersUnavailable`, starting no more workers, so that the page can
+ * say so with a Reload button instead of asking the server again at every edit.
  */
 import type { FailedRequest, PixelsTracedResponse, PixelTracedResponse, RayBudget, RenderRequest, RenderResponse } from '../../workers/protocol.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
@@ -50,6 +56,14 @@ export const DEFAULT_WATCHDOG: WatchdogOptions = { floorMs: 5000, slack: 10, sce
 
 /** Workers failing this many times in a row, with no good answer in between, fail the job (a scene that crashes every worker). */
 const FAILURES_IN_A_ROW = 3;
+
+/** Workers whose code could not be loaded, in a row with no good answer between: then the pool gives up (one load and two more tries, as lazy-module.ts). */
+const START_TRIES = 3;
+
+/** The render workers' code cannot be loaded: only a reload of the page helps (see the file comment). */
+export class RenderWorkersUnavailable extends Error {
+  override readonly name = 'RenderWorkersUnavailable';
+}
 
 /** The assumed cost of one ray, before a tile has measured it. */
 const ASSUMED_MS_PER_RAY = 1000 / RAYS_PER_SECOND_PER_WORKER;
@@ -92,6 +106,8 @@ interface Waiter {
 
 interface PendingTrace {
   worker: PoolWorker;
+  /** As posted: asked again of another worker when this one could not start. */
+  request: Extract<RenderRequest, { type: 'trace-pixel' | 'trace-pixels' }>;
   /** The worker's answer: `pixel-traced` for tracePixel, `pixels-traced` for tracePixels. */
   resolve(answer: PixelTracedResponse | PixelsTracedResponse): void;
   reject(error: Error): void;
@@ -122,6 +138,9 @@ export class RenderPool {
   private readonly watchdog: WatchdogOptions;
   private watchTimer: ReturnType<typeof setInterval> | undefined;
   private failuresInARow = 0;
+  private startFailuresInARow = 0;
+  /** Set once workers' code could not be loaded START_TRIES times: no worker is started again. */
+  private unavailable: RenderWorkersUnavailable | null = null;
 
   constructor({ createWorker, size, log, watchdog }: RenderPoolOptions) {
     if (!Number.isInteger(size) || size < 1) {
@@ -161,6 +180,7 @@ export class RenderPool {
     const passes = planPasses(scene, { width, height, workers: this.size, preview: options.preview ?? true, oneSample: options.oneSample });
     const estimatedRaysPerSample = raysPerSample(scene) * primaryRaysPerSample(scene);
     const tiles = new TiledRender(width, height, passes, options, estimatedRaysPerSample);
+    if (this.unavailable) return { image: tiles.image, done: Promise.reject(this.unavailable), cancel: () => {}, changes: () => tiles.takeChanges() };
     const id = ++this.lastId;
     const done = new Promise<RenderResult>((resolve, reject) => {
       this.job = {
@@ -194,6 +214,7 @@ export class RenderPool {
    */
   ready(): Promise<void> {
     this.assertOpen();
+    if (this.unavailable) return Promise.reject(this.unavailable);
     if (!this.scene) return Promise.reject(new Error('there is no scene: render or set one first'));
     for (const worker of this.liveWorkers()) this.sendScene(worker);
     return new Promise((resolve, reject) => {
@@ -229,6 +250,7 @@ export class RenderPool {
     read: (answer: PixelTracedResponse | PixelsTracedResponse) => T | null,
   ): Promise<T> {
     this.assertOpen();
+    if (this.unavailable) return Promise.reject(this.unavailable);
     if (!this.scene) return Promise.reject(new Error('there is no scene to trace: render or set one first'));
     // The least busy worker answers soonest: traces skip the tiles queued before them.
     const worker = this.liveWorkers().reduce((best, w) => (w.tiles.size < best.tiles.size ? w : best));
@@ -240,7 +262,8 @@ export class RenderPool {
         if (value === null) reject(new Error(`a render worker answered a ${request.type} request with a ${answer.type} of the wrong size`));
         else resolve(value);
       };
-      this.post(worker, { ...request, requestId }, () => this.traces.set(requestId, { worker, resolve: resolveAnswer, reject }));
+      const posted = { ...request, requestId };
+      this.post(worker, posted, () => this.traces.set(requestId, { worker, request: posted, resolve: resolveAnswer, reject }));
     });
   }
 
@@ -269,7 +292,7 @@ export class RenderPool {
       heardAt: performance.now(),
       port: this.createWorker({
         onResponse: (data) => this.onMessage(worker, data),
-        onFailure: (message) => this.replaceWorker(worker, `a render worker stopped: ${message}`),
+        onFailure: (message, kind) => (kind === 'not-started' ? this.notStarted(worker, message) : this.replaceWorker(worker, `a render worker stopped: ${message}`)),
       }),
     };
     return worker;
@@ -328,6 +351,7 @@ export class RenderPool {
   }
 
   private liveWorkers(): PoolWorker[] {
+    if (this.unavailable) return [];
     for (let slot = 0; slot < this.workers.length; slot++) this.workers[slot] ??= this.spawn();
     return this.workers.filter((worker) => worker !== null);
   }
@@ -383,6 +407,7 @@ export class RenderPool {
       return;
     }
     worker.heardAt = performance.now();
+    this.startFailuresInARow = 0;
     this.onResponse(worker, checked.response);
   }
 
@@ -470,6 +495,35 @@ export class RenderPool {
     if (job) this.pump();
   }
 
+  /**
+   * A worker whose code could not be loaded: replaced like a dead one, until START_TRIES have
+   * failed in a row; then the pool stops every worker and fails all that waits, for good.
+   */
+  private notStarted(worker: PoolWorker, message: string): void {
+    if (!this.workers.includes(worker)) return; // replaced already: its late words do not count
+    if (++this.startFailuresInARow < START_TRIES) {
+      // Its pixel traces wait for the worker after it (the lab asks only once per screen).
+      const waiting = [...this.traces].filter(([, trace]) => trace.worker === worker);
+      for (const [requestId] of waiting) this.traces.delete(requestId);
+      this.replaceWorker(worker, `a render worker could not start: ${message}`);
+      for (const [requestId, trace] of waiting) {
+        const next = this.liveWorkers().reduce((best, w) => (w.tiles.size < best.tiles.size ? w : best));
+        this.sendScene(next);
+        this.post(next, trace.request, () => this.traces.set(requestId, { ...trace, worker: next }));
+      }
+      return;
+    }
+    const reason = `the render workers' code could not be loaded (${message})`;
+    this.log(reason);
+    this.unavailable = new RenderWorkersUnavailable(reason);
+    this.failJob(reason);
+    for (const requestId of [...this.traces.keys()]) this.takeTrace(requestId)?.reject(this.unavailable);
+    for (const waiter of this.readyWaiters.splice(0)) waiter.reject(this.unavailable);
+    for (const each of this.workers) each?.port.terminate();
+    this.workers.fill(null);
+    this.stopWatching();
+  }
+
   /** Answers `ready()` callers: with `error`, or when every worker has built the current scene. */
   private settleReady(error?: Error): void {
     const sceneId = this.scene?.id;
@@ -510,7 +564,7 @@ export class RenderPool {
   }
 
   private failJob(message: string): void {
-    this.endJob()?.reject(new Error(message));
+    this.endJob()?.reject(this.unavailable ?? new Error(message));
   }
 
   /** Detaches the current job: workers drop its queued tiles and late ones are ignored. */

@@ -13,8 +13,12 @@ export interface RenderWorkerPort {
 export interface RenderWorkerHandlers {
   /** Whatever the worker posted: the pool checks that it is a RenderResponse (render-response-check.ts). */
   onResponse(data: unknown): void;
-  /** The worker died or could not start; `message` says why, for the user. Called at most once. */
-  onFailure(message: string): void;
+  /**
+   * The worker died or could not start; `message` says why, for the user. Called at most once.
+   * `not-started`: its code could not be loaded or run (a new build removed the file, no
+   * connection), which a new worker cannot mend; the browser's port tells it, Node's does not.
+   */
+  onFailure(message: string, kind?: 'not-started'): void;
 }
 
 /** Starts one worker that reports to `handlers`. */

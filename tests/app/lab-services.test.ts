@@ -1,6 +1,6 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { LabServices, type LabViewPort } from '../../src/app/lab-services.ts';
-import type { RenderPool } from '../../src/render/render-pool.ts';
+import { LabServices, type LabViewPort, type LoadProblem } from '../../src/app/lab-services.ts';
+import { RenderWorkersUnavailable, type RenderPool } from '../../src/render/render-pool.ts';
 import type { ScreenRays } from '../../src/render/screen-rays.ts';
 import type { Scene } from '../../src/scene/scene.ts';
 import type { PixelTrace } from '../../src/tracer/ray-tree.ts';
@@ -63,12 +63,14 @@ function fakeView(software = false) {
 describe('LabServices: the lab wired apart from any page', () => {
   let pools: ReturnType<typeof fakePool>[];
   let reports: [string, string][];
+  let problems: LoadProblem[];
   let services: LabServices;
 
   beforeEach(() => {
     vi.useFakeTimers();
     pools = [];
     reports = [];
+    problems = [];
     services = new LabServices({
       createPool: (workers) => {
         const pool = fakePool(workers);
@@ -78,12 +80,26 @@ describe('LabServices: the lab wired apart from any page', () => {
       loadMeshes: () => Promise.resolve(new Map()),
       report: (text, tone) => void reports.push([text, tone]),
       traceFailed: (error) => `could not trace: ${error.message}`,
+      cannotLoad: (problem) => void problems.push(problem),
     });
   });
 
   afterEach(() => {
     services.dispose();
     vi.useRealTimers();
+  });
+
+  it('says that the render workers cannot be loaded (with Reload, in the lab), not a message at every edit', async () => {
+    await vi.advanceTimersByTimeAsync(1);
+    const unavailable = new RenderWorkersUnavailable("the render workers' code could not be loaded (404)");
+    pools[1]!.tracePixels = () => Promise.reject(unavailable);
+    for (const fov of [50, 55, 60]) {
+      services.store.dispatch({ type: 'camera.changed', changes: { fov } });
+      await vi.advanceTimersByTimeAsync(1);
+    }
+    expect(reports).toEqual([]);
+    expect(problems).toEqual([...problems].fill({ what: 'tracer', reason: unavailable.message }));
+    expect(problems.length).toBeGreaterThan(0);
   });
 
   it('makes a render pool with a worker per core and a one-worker pool for the screen', () => {

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { checkAnswers, cleanAnswers } from '../../src/classroom/survey-answers.ts';
 import { parseSurvey, type Survey } from '../../src/classroom/survey-schema.ts';
-import { SurveyStore, surveyKey } from '../../src/classroom/survey-store.ts';
+import { loadSurvey, readSurveyText, surveyKey } from '../../src/classroom/survey-store.ts';
 import { surveyById, SURVEY_IDS } from '../../src/classroom/surveys.ts';
 import defaultFile from '../../src/classroom/surveys/default.survey.json';
 import { MemoryStorage } from '../../src/quest/progress-store.ts';
@@ -91,19 +91,61 @@ describe('survey answers', () => {
 
 describe('survey store', () => {
   const submission = { survey: 'default', submittedAt: '2025-03-04T10:00:00.000Z', answers: { rate: 3, say: 'hi' } };
+  const wallMs = Date.parse('2025-03-05T08:00:00.000Z');
+  const backupKey = (key: string) => `${surveyKey(key)}.backup.2025-03-05T08:00:00.000Z`;
 
   it('reads the answers kept next to the progress, apart per progress key', () => {
     const storage = new MemoryStorage();
-    expect(new SurveyStore(storage, 'rtq.progress.assignment.abc').load()).toBeNull();
+    expect(loadSurvey(storage, 'rtq.progress.assignment.abc', wallMs)).toEqual({ submission: null, damage: null });
     storage.setItem(surveyKey('rtq.progress.assignment.abc'), JSON.stringify(submission));
     expect(surveyKey('rtq.progress.assignment.abc')).toBe('rtq.progress.assignment.abc.survey');
-    expect(new SurveyStore(storage, 'rtq.progress.assignment.abc').load()).toEqual(submission);
-    expect(new SurveyStore(storage, 'rtq.progress').load()).toBeNull();
+    expect(loadSurvey(storage, 'rtq.progress.assignment.abc', wallMs)).toEqual({ submission, damage: null });
+    expect(loadSurvey(storage, 'rtq.progress', wallMs).submission).toBeNull();
+    expect(storage.length).toBe(1); // nothing backed up
   });
 
-  it('reads damaged values as absent', () => {
+  it('keeps a damaged record exactly as it was, and names what could not be read', () => {
     const storage = new MemoryStorage();
-    storage.setItem(surveyKey('k'), '{"survey": 3');
-    expect(new SurveyStore(storage, 'k').load()).toBeNull();
+    const raw = '{"survey": 3';
+    storage.setItem(surveyKey('k'), raw);
+    expect(loadSurvey(storage, 'k', wallMs)).toEqual({ submission: null, damage: { lost: ['survey', 'submittedAt'], cut: true, raw, backupKey: backupKey('k') } });
+    expect(storage.getItem(backupKey('k'))).toBe(raw);
+  });
+
+  it('leaves out one bad answer and keeps the others', () => {
+    const storage = new MemoryStorage();
+    const raw = JSON.stringify({ ...submission, answers: { rate: 3, say: 'hi', pick: { id: 'a' }, age: null } });
+    storage.setItem(surveyKey('k'), raw);
+    const loaded = loadSurvey(storage, 'k', wallMs);
+    expect(loaded.submission).toEqual(submission);
+    expect(loaded.damage).toMatchObject({ lost: ['answers.pick', 'answers.age'], cut: false, backupKey: backupKey('k') });
+  });
+
+  it('reads the answers before the cut of a record cut short', () => {
+    const whole = JSON.stringify({ ...submission, answers: { rate: 3, say: 'hi "there", you', age: 16, pick: 'b' } });
+    const cut = whole.slice(0, whole.indexOf('16') + 1); // "age": 1 — a number that may go on is not taken
+    expect(readSurveyText(cut)).toEqual({
+      submission: { ...submission, answers: { rate: 3, say: 'hi "there", you' } },
+      damaged: true,
+      lost: [],
+      cut: true,
+    });
+    expect(readSurveyText(whole.slice(0, -1)).submission?.answers).toEqual({ rate: 3, say: 'hi "there", you', age: 16, pick: 'b' });
+  });
+
+  it('asks again when the survey or its time cannot be read', () => {
+    expect(readSurveyText(JSON.stringify({ ...submission, submittedAt: 'yesterday' }))).toMatchObject({ submission: null, damaged: true, lost: ['submittedAt'] });
+    expect(readSurveyText(JSON.stringify({ ...submission, survey: '' }))).toMatchObject({ submission: null, lost: ['survey'] });
+    expect(readSurveyText(JSON.stringify({ ...submission, answers: [1] }))).toMatchObject({ submission: { answers: {} }, lost: ['answers'] });
+    expect(readSurveyText('null')).toMatchObject({ submission: null, damaged: true });
+  });
+
+  it('never writes a backup over an older one, and holds the text when there is no room', () => {
+    const storage = new MemoryStorage();
+    storage.setItem(surveyKey('k'), 'garbage');
+    storage.setItem(backupKey('k'), 'older');
+    expect(loadSurvey(storage, 'k', wallMs).damage).toMatchObject({ raw: 'garbage', backupKey: null });
+    expect(storage.getItem(backupKey('k'))).toBe('older');
+    expect(storage.getItem(surveyKey('k'))).toBe('garbage');
   });
 });

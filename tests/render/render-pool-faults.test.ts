@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { pathToFileURL } from 'node:url';
-import { RenderPool, type RenderPoolOptions } from '../../src/render/render-pool.ts';
+import { RenderPool, RenderWorkersUnavailable, type RenderPoolOptions } from '../../src/render/render-pool.ts';
 import type { FinishedRender, RenderResult } from '../../src/render/render-job.ts';
 import { createNodeWorkerPort } from '../../src/cli/node-worker-port.ts';
 import type { CreateRenderWorker } from '../../src/render/render-worker-port.ts';
@@ -45,6 +45,68 @@ function inProcessWorker(tamper: (response: RenderResponse, send: (data: unknown
     return { post: (request) => handle(request), terminate: () => {} };
   };
 }
+
+describe('render workers whose code cannot be loaded', () => {
+  /** A browser worker whose script is gone (a newer build) or out of reach: it fails at once, before it has started. */
+  function unloadable(starts: { count: number }): CreateRenderWorker {
+    return ({ onFailure }) => {
+      starts.count++;
+      queueMicrotask(() => onFailure('404', 'not-started'));
+      return { post: () => {}, terminate: () => {} };
+    };
+  }
+
+  it('are tried a bounded number of times, then every render and trace fails at once, with no more workers started', async () => {
+    const starts = { count: 0 };
+    const { pool, log } = poolWith(unloadable(starts), { size: 4 });
+    try {
+      const failed = pool.render(scene, NO_MESHES, { width: 20, height: 20 }).done;
+      await expect(failed).rejects.toBeInstanceOf(RenderWorkersUnavailable);
+      await expect(failed).rejects.toThrow("the render workers' code could not be loaded (404)");
+      // The four first workers and the replacements of the first two failures.
+      expect(starts.count).toBe(6);
+      expect(log.at(-1)).toBe("the render workers' code could not be loaded (404)");
+      // A pixel trace asked while they are tried waits for the last try, and fails with the same reason.
+      for (let edit = 0; edit < 20; edit++) {
+        await expect(pool.render(scene, NO_MESHES, { width: 20, height: 20 }).done).rejects.toBeInstanceOf(RenderWorkersUnavailable);
+        await expect(pool.tracePixels(0, 4)).rejects.toBeInstanceOf(RenderWorkersUnavailable);
+        await expect(pool.ready()).rejects.toBeInstanceOf(RenderWorkersUnavailable);
+      }
+      expect(starts.count).toBe(6);
+    } finally {
+      pool.dispose();
+    }
+  });
+
+  it('a pixel trace asked of workers that cannot be loaded fails with RenderWorkersUnavailable after the tries', async () => {
+    const starts = { count: 0 };
+    const { pool } = poolWith(unloadable(starts), { size: 1 });
+    try {
+      pool.setScene(scene, NO_MESHES);
+      await expect(pool.tracePixels(0, 4)).rejects.toBeInstanceOf(RenderWorkersUnavailable);
+      expect(starts.count).toBe(3);
+    } finally {
+      pool.dispose();
+    }
+  });
+
+  it('one that could not start while others work is replaced, and the render completes', async () => {
+    let started = 0;
+    const working = inProcessWorker((response, send) => send(response));
+    const { pool, log } = poolWith((handlers) => {
+      if (started++ !== 0) return working(handlers);
+      queueMicrotask(() => handlers.onFailure('a dropped connection', 'not-started'));
+      return { post: () => {}, terminate: () => {} };
+    });
+    try {
+      const result = finished(await pool.render(scene, NO_MESHES, { width: WIDTH, height: HEIGHT }).done);
+      expect(new Uint8Array(result.rgb.buffer)).toEqual(new Uint8Array(expectedImage().buffer));
+      expect(log).toEqual(['a render worker could not start: a dropped connection']);
+    } finally {
+      pool.dispose();
+    }
+  });
+});
 
 describe('render workers that fail', () => {
   it('a worker that crashes: its tiles go to a replacement and the image is complete and right', async () => {

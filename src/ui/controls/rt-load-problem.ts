@@ -9,10 +9,11 @@ import { controlStyles } from './controls.css.ts';
  * helps. It stays: nothing on the page tries again by itself.
  *
  * `text`: what could not be loaded ("This page could not be loaded."); `reason`: the
- * browser's words, shown small for whoever helps.
+ * browser's words, shown small for whoever helps; `closable`: a Close button too, for a
+ * message over a page that goes on without what failed (the Dutch texts).
  */
 export class RtLoadProblem extends LitElement {
-  static override properties = { text: {}, reason: {} };
+  static override properties = { text: {}, reason: {}, closable: { type: Boolean } };
 
   static override styles = [
     controlStyles,
@@ -39,6 +40,15 @@ export class RtLoadProblem extends LitElement {
         font-size: 0.8125rem;
         overflow-wrap: anywhere;
       }
+      .buttons {
+        display: flex;
+        gap: 8px;
+      }
+      button.close {
+        background: none;
+        color: inherit;
+        border-color: var(--rt-border);
+      }
       button {
         min-height: var(--rt-target);
         padding: 0 12px;
@@ -55,11 +65,13 @@ export class RtLoadProblem extends LitElement {
 
   declare text: string;
   declare reason: string;
+  declare closable: boolean;
 
   constructor() {
     super();
     this.text = '';
     this.reason = '';
+    this.closable = false;
   }
 
   override render() {
@@ -67,7 +79,10 @@ export class RtLoadProblem extends LitElement {
       <p class="text">${this.text}</p>
       <p>${msg('Either a newer version of the app has replaced the one in this tab, or there is no connection. Reload the page (once you are online) to load it again.')}</p>
       ${this.reason ? html`<p class="reason">${this.reason}</p>` : ''}
-      <button type="button" @click=${() => location.reload()}>${msg('Reload')}</button>
+      <p class="buttons">
+        <button type="button" @click=${() => location.reload()}>${msg('Reload')}</button>
+        ${this.closable ? html`<button type="button" class="close" @click=${() => this.remove()}>${msg('Close')}</button>` : ''}
+      </p>
     </div>`;
   }
 }

@@ -35,7 +35,7 @@ export function damagedSavesList(saves: readonly DamagedSave[], send: (command: 
 }
 
 function describe(save: DamagedSave): string {
-  const what = save.what === 'progress' ? msg('Progress') : msg('Participant code and attempt');
+  const what = { progress: () => msg('Progress'), session: () => msg('Participant code and attempt'), survey: () => msg('Survey answers') }[save.what]();
   const size = KILOBYTES.format(Math.max(1, save.size / 1000));
   if (!save.madeAt) return msg(str`${what}, not copied (no room), ${size} kB: download it so that saving can go on`);
   const when = new Date(save.madeAt).toLocaleString(currentLocale(), { dateStyle: 'medium', timeStyle: 'short' });

@@ -118,6 +118,16 @@ const labGrid = css`
       position: absolute;
       inset: 0;
     }
+    .lab-load-problems {
+      position: absolute;
+      top: 64px;
+      left: 50%;
+      z-index: 5;
+      display: grid;
+      gap: 8px;
+      width: min(60ch, calc(100% - 24px));
+      transform: translateX(-50%);
+    }
     rt-screen-preview {
       position: absolute;
       left: var(--rt-space);

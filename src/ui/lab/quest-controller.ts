@@ -1,3 +1,4 @@
+import { showLocaleProblem } from '../controls/locale-problem.ts';
 import { msg, str } from '@lit/localize';
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import { levelTextsLocale, loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
@@ -9,7 +10,7 @@ import type { Assignment } from '../../classroom/assignment.ts';
 import type { SurveySubmission } from '../../classroom/survey-answers.ts';
 import { chooseLocale, currentLocale } from '../../i18n/locale.ts';
 import { issueText } from '../../i18n/issue-text.ts';
-import { contextDamageText, placesOf, progressProblemText, saveProblemReason, saveProblemText } from '../../i18n/progress-problem-text.ts';
+import { contextDamageText, placesOf, progressProblemText, saveProblemReason, saveProblemText, surveyDamageText } from '../../i18n/progress-problem-text.ts';
 import { localNumbers } from '../../i18n/number-format.ts';
 import { shortList } from '../../i18n/short-list.ts';
 import type { Store } from '../../lab-state/store.ts';
@@ -116,12 +117,22 @@ export class QuestController implements ReactiveController {
     this.contextNote = damage
       ? contextDamageText({ codeLost: damage.lost.includes('participant-code') && session.needsParticipantCode, attemptLost: damage.lost.includes('attempt'), backedUp: damage.backupKey !== null })
       : '';
+    const surveyDamage = session.surveyDamage;
+    const surveyNote = surveyDamage
+      ? surveyDamageText({
+          askedAgain: session.survey === null,
+          kept: Object.keys(session.survey?.answers ?? {}).length,
+          leftOut: surveyDamage.cut || surveyDamage.lost.includes('answers') ? null : surveyDamage.lost.length,
+          backedUp: surveyDamage.backupKey !== null,
+        })
+      : undefined;
     // A held damaged save is told by the messages below already.
-    const toldHeld = session.problem?.backupKey === null || damage?.backupKey === null;
+    const toldHeld = session.problem?.backupKey === null || damage?.backupKey === null || surveyDamage?.backupKey === null;
     this.toldSaveProblem = toldHeld && session.saveProblem === 'damaged-held' ? 'damaged-held' : null;
     const problems = [
       session.problem && progressProblemText(session.problem, session.engine.points),
       this.contextNote || undefined,
+      surveyNote,
       catalog.errors.length > 0 ? msg(str`The level list could not be read: ${catalog.errors.map(issueText).join('; ')}`) : undefined,
     ];
     // The toast is on the page after the first render.
@@ -234,6 +245,7 @@ export class QuestController implements ReactiveController {
         // again in the new one, its progress saved.
         void chooseLocale(command.locale).then((locale) => {
           if (locale !== levelTextsLocale()) location.reload();
+          else showLocaleProblem(document);
         });
         return;
       case 'palette':

@@ -1,7 +1,8 @@
 import { msg, str } from '@lit/localize';
 import { ContextProvider } from '@lit/context';
 import { html, LitElement, nothing, type PropertyValues } from 'lit';
-import { LabServices } from '../../app/lab-services.ts';
+import { LabServices, type LoadProblem } from '../../app/lab-services.ts';
+import { labLoadProblems, withProblem } from './lab-load-problem.ts';
 import type { ShowMeStage } from '../../app/show-me-player.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import type { LabState } from '../../lab-state/lab-state.ts';
@@ -122,12 +123,16 @@ export class RtLab extends LitElement {
     return this.ring.elements(target);
   }
 
+  /** Code the lab could not load (only a reload helps: it stays said). */
+  private loadProblems: readonly LoadProblem[] = [];
+
   private createServices(): LabServices {
     return new LabServices({
       createPool: createBrowserRenderPool,
       loadMeshes,
       report: (text, tone) => this.toast(text, tone),
       traceFailed: (error) => msg(str`The rays could not be traced: ${error.message}`),
+      cannotLoad: (problem) => ((this.loadProblems = withProblem(this.loadProblems, problem)), this.requestUpdate()),
     });
   }
 
@@ -344,6 +349,7 @@ export class RtLab extends LitElement {
           @view-ready=${this.onViewReady}
           @view-pads=${(event: CustomEvent<boolean>) => this.toggleAttribute('pads-open', event.detail)}
         ></rt-scene-view>
+        ${labLoadProblems(this.loadProblems, shows('debugger'))}
         ${shows('screen-preview') ? html`<rt-screen-preview .rays=${this.services.screenRays}></rt-screen-preview>` : nothing}
         ${viewLegend && state.rays.showRays ? viewLegendBox(this.legendOpen, () => (this.legendOpen = !this.legendOpen)) : nothing}
         ${shows('debugger')

@@ -1,7 +1,7 @@
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import { loadMeshes } from '../../../render/load-meshes-browser.ts';
 import type { RenderChanges, RenderImage, RenderJob, RenderProgress } from '../../../render/render-job.ts';
-import type { RenderPool } from '../../../render/render-pool.ts';
+import { RenderWorkersUnavailable, type RenderPool } from '../../../render/render-pool.ts';
 import type { Store } from '../../../lab-state/store.ts';
 import { meshNamesInScene } from '../../../scene/mesh-names.ts';
 import type { Scene } from '../../../scene/scene.ts';
@@ -18,7 +18,8 @@ export type RenderStatus =
   | { kind: 'finished'; ms: number; rays: number; workers: number }
   /** byUser: the Cancel button; otherwise the pool dropped the job (a new scene or render). */
   | { kind: 'cancelled'; byUser: boolean }
-  | { kind: 'failed'; message: string };
+  /** `unloadable`: the workers' code could not be loaded (render-pool.ts): only a reload helps. */
+  | { kind: 'failed'; message: string; unloadable: boolean };
 
 /** The render on show: what was rendered, and from which of the store's scene revisions. */
 export interface ShownRender {
@@ -136,7 +137,7 @@ export class RenderJobController implements ReactiveController {
     } catch (error) {
       if (!isCurrent()) return;
       this.job = null;
-      this.setStatus({ kind: 'failed', message: errorMessage(error) });
+      this.setStatus({ kind: 'failed', message: errorMessage(error), unloadable: error instanceof RenderWorkersUnavailable });
     }
   }
 

@@ -22,6 +22,7 @@ import { controlStyles } from './render-window-styles.ts';
 import { pngFileName, savePng } from './save-png.ts';
 import type { RtImageCompare } from './rt-image-compare.ts';
 import './rt-image-compare.ts';
+import '../../controls/rt-load-problem.ts';
 import { paintRasterPicture, type RasterSnapshot, readBackOrWait, takeRasterPicture } from './raster-picture.ts';
 import { guideIds } from '../../../quest/lab-controls.ts';
 
@@ -352,6 +353,7 @@ export class RtRenderWindow extends LitElement {
           ${this.jobs.hasPartial ? msg('The image on show is partial: the render stopped before every pixel had all its samples. Save as PNG saves it as shown.') : nothing}
         </p>`;
       case 'failed':
+        if (status.unloadable) return html`<rt-load-problem data-testid="render-status" .text=${msg('The render workers could not be loaded.')} .reason=${status.message}></rt-load-problem>`;
         return html`<p role="alert" class="error" data-testid="render-status">${msg(str`The render failed: ${status.message}`)}</p>
           <button @click=${() => void this.startRender()} title=${msg('Start the render again')}>${msg('Try again')}</button>`;
       default:
