@@ -14,7 +14,13 @@ await import('./ui/shell/rt-app.ts');
 
 // The offline copy (the service worker storing every file of the build) starts once the
 // page has loaded, so that it does not compete with the first screen; the Menu says how it went.
-const { offlineCopy } = await import('./app/offline-copy.ts');
-const storeOfflineCopy = () => void offlineCopy.start({ protocol: location.protocol, serviceWorker: navigator.serviceWorker });
-if (document.readyState === 'complete') storeOfflineCopy();
-else addEventListener('load', storeOfflineCopy, { once: true });
+// In a tab of a build the server no longer has, its module may be gone: that tab then keeps
+// no copy of its own (the new build's pages store theirs), and nothing else breaks.
+try {
+  const { offlineCopy } = await import('./app/offline-copy.ts');
+  const storeOfflineCopy = () => void offlineCopy.start({ protocol: location.protocol, serviceWorker: navigator.serviceWorker });
+  if (document.readyState === 'complete') storeOfflineCopy();
+  else addEventListener('load', storeOfflineCopy, { once: true });
+} catch (error) {
+  console.warn('The offline copy could not start: this page is of an older build', error);
+}
