@@ -25,6 +25,7 @@ import type { ScreenBox } from './guide-targets.ts';
 import { labLayout } from './lab-layout.css.ts';
 import { taskColumn } from './task-column.ts';
 import { levelPanels } from './level-panels.ts';
+import { labSidebar } from './lab-sidebar.ts';
 import { viewLegendBox } from './view-legend.ts';
 import { sideSwitch } from './side-switch.ts';
 import { surveyPage } from './survey-page.ts';
@@ -301,21 +302,7 @@ export class RtLab extends LitElement {
     const { panels, controls, gizmo, viewLegend } = levelPanels(this.level());
     const shows = (panel: UiPanel) => panels.has(panel);
     const catalog = session?.catalog ?? { chapters: [], errors: [] };
-    const panel = (name: UiPanel, part: unknown) => (shows(name) ? part : nothing);
-    const sidebar = [
-      panel('scene-list', html`<rt-scene-list ?allow-editing=${shows('add-remove')} .shownControls=${controls('scene-list')}></rt-scene-list>`),
-      state.selection?.kind === 'light' && shows('light')
-        ? html`<rt-light-panel .shownControls=${controls('light')}></rt-light-panel>`
-        : shows('object')
-          ? html`<rt-object-panel .shownControls=${controls('object')}></rt-object-panel>`
-          : panel('light', html`<rt-light-panel .shownControls=${controls('light')}></rt-light-panel>`),
-      panel('tracer', html`<rt-tracer-panel .shownControls=${controls('tracer')}></rt-tracer-panel>`),
-      panel('rays', html`<rt-ray-panel .shownControls=${controls('rays')}></rt-ray-panel>`),
-      panel('bvh', ON_DEMAND_PANELS.bvh?.state === 'failed'
-        ? html`<rt-load-problem .text=${msg('This panel could not be loaded.')} .reason=${ON_DEMAND_PANELS.bvh.problem}></rt-load-problem>`
-        : html`<rt-bvh-panel .shownControls=${controls('bvh')}></rt-bvh-panel>`),
-      panel('file', html`<rt-file-panel></rt-file-panel>`),
-    ].filter((part) => part !== nothing);
+    const sidebar = labSidebar(state, { panels, controls });
     return html`
       <header>
         <h1>${msg('Ray Tracer Quest')}</h1>
