@@ -1,3 +1,4 @@
+import { issueLine } from '../util/issue.ts';
 import { msg, str } from '@lit/localize';
 import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
 import type { LevelCatalog } from '../quest/level-index.ts';
@@ -91,7 +92,7 @@ function packedProblemText(unpacked: PackedJsonProblem): string {
     case 'too-large':
       return msg(str`it unpacks to more than ${unpacked.limit / 1024} kB, more than any assignment`);
     case 'not-json':
-      return unpacked.reason;
+      return issueLine(unpacked.issue);
   }
 }
 

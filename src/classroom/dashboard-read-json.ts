@@ -1,3 +1,4 @@
+import { issueLine } from '../util/issue.ts';
 import { msg, str } from '@lit/localize';
 import { z } from 'zod';
 import { eventLogSchema } from '../quest/event-log.ts';
@@ -29,7 +30,7 @@ const exportSchema = z.looseObject({
 
 export function readJsonExport(file: string, text: string): FileRead {
   const json = readJson(text);
-  if (!json.ok) return { ok: false, file, reason: msg('the file is damaged'), detail: json.error };
+  if (!json.ok) return { ok: false, file, reason: msg('the file is damaged'), detail: issueLine(json.issue) };
   const value = json.value;
   if (isXapi(value)) return { ok: false, file, reason: msg("xAPI statements, which are for a school's learning record store: drop the learner's JSON or CSV export here instead") };
   if (!isRecord(value)) return { ok: false, file, reason: msg('not a Ray Tracer Quest export (the file holds no JSON object)') };

@@ -7,6 +7,7 @@ import { readFileSync } from 'node:fs';
 import { readdir, readFile, stat } from 'node:fs/promises';
 import { dirname, join, relative } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { issueLine } from '../util/issue.ts';
 import { describeJsonError } from '../util/json-error.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';
@@ -46,7 +47,7 @@ export async function checkSceneFile(file: string): Promise<SceneFileCheck> {
     return level.ok ? { ok: true, scene: level.level.scene } : { ok: false, problems: level.errors };
   }
   const scene = parseScene(json);
-  return scene.ok ? scene : { ok: false, problems: scene.errors };
+  return scene.ok ? scene : { ok: false, problems: scene.errors.map(issueLine) };
 }
 
 function checkLevelIndex(file: string, text: string): SceneFileCheck {

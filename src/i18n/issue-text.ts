@@ -1,23 +1,39 @@
+import type { Issue } from '../util/issue.ts';
+import { localIssue } from './local-reason.ts';
+
 /**
- * The `path: reason` lines that say why a scene file, a level, a link or saved progress
- * cannot be used, in the app's language. The schemas, the level rules and the JSON reader
- * are pure (no lit; `rt validate` prints them as they are) and word their reasons in
- * English; the learner-facing app reads each reason by its English pattern and says it
- * again through msg() (issue-translation.ts and the pattern lists it gathers). Those
- * patterns are loaded together with a translation of the app (locale.ts), so the English
- * first load does without them: in English a line is shown as the schema wrote it.
+ * Why a scene file, a level, a link or saved progress cannot be used, in the app's language.
+ * An issue with a coded reason (src/util/issue.ts) is said by its code's msg()
+ * (local-reason.ts). Reasons not coded yet come as English text (the level rules, goals,
+ * progress and assignment checks, which `rt validate` prints as they are): the app reads
+ * each by its English pattern and says it again through msg() (issue-translation.ts and the
+ * pattern lists it gathers). Those patterns are loaded together with a translation of the
+ * app (locale.ts), so the English first load does without them.
  */
 
-let translate: ((line: string) => string) | null = null;
+interface Translation {
+  line: (line: string) => string;
+  reason: (reason: string) => string;
+}
+
+let translate: Translation | null = null;
 
 /** Loads the patterns; awaited with the catalogue of a language other than English. */
 export async function loadIssueTranslation(): Promise<void> {
-  translate ??= (await import('./issue-translation.ts')).translateIssue;
+  if (translate) return;
+  const { translateIssue, reasonText } = await import('./issue-translation.ts');
+  translate = { line: translateIssue, reason: reasonText };
 }
 
-/** One `path: reason` line (or a bare reason) in the app's language. */
-export function issueText(line: string): string {
-  return translate ? translate(line) : line;
+/** A reason not coded yet, in the app's language when a pattern knows it. */
+function wordedText(text: string): string {
+  return translate ? translate.reason(text) : text;
+}
+
+/** One issue, or one `path: reason` line (or a bare reason) not coded yet, in the app's language. */
+export function issueText(issue: Issue | string): string {
+  if (typeof issue !== 'string') return localIssue(issue, wordedText);
+  return translate ? translate.line(issue) : issue;
 }
 
 /** Every line of a multi-line reason (a store's refusal may hold several) in the app's language. */

@@ -5,7 +5,8 @@ import { RECORD_REASONS } from './record-reasons.ts';
 import { SCENE_REASONS } from './scene-reasons.ts';
 
 /**
- * Says a `path: reason` line again in the app's language: loaded with a translation of the
+ * Says a `path: reason` line, or a reason not coded yet (src/util/issue.ts's `worded`),
+ * again in the app's language: loaded with a translation of the
  * app (issue-text.ts), not with its first screen. The most specific patterns come first:
  * the scene's generic "must be …, got …" last.
  */
@@ -16,7 +17,7 @@ const REASONS: readonly Rule[] = [...LEVEL_REASONS, ...RECORD_REASONS, ...SCENE_
  * detail beats none). Option changes join several reasons with "; " (option-changes.ts):
  * when each is known, each is said on its own (a pattern for one would read past the "; ").
  */
-function reasonText(reason: string): string {
+export function reasonText(reason: string): string {
   const parts = reason.split('; ');
   const each = parts.map((part) => translatedOrNull(REASONS, part));
   if (parts.length > 1 && each.every((said) => said !== null)) return each.join('; ');

@@ -1,6 +1,7 @@
 import { createLight, createObject } from '../scene/scene-defaults.ts';
 import { lightSchema, parseScene } from '../scene/scene-schema.ts';
 import type { Light, Scene } from '../scene/scene.ts';
+import { issueLine } from '../util/issue.ts';
 import { sameValue } from '../util/same-value.ts';
 import type { DeclaredView, LabAction } from './lab-action.ts';
 import { type LabState, BVH_MAX_DEPTH, DEFAULT_BVH_VIEW, DEFAULT_GIZMO, DEFAULT_RAY_VIEW } from './lab-state.ts';
@@ -120,7 +121,7 @@ function withChange(state: LabState, scene: Scene, precondition?: string): Reduc
 function withScene(state: LabState, scene: Scene, precondition?: string): Reduction {
   if (precondition) return { state, error: precondition };
   const parsed = parseScene(scene);
-  if (!parsed.ok) return { state, error: parsed.errors.join('\n') };
+  if (!parsed.ok) return { state, error: parsed.errors.map(issueLine).join('\n') };
   const next = { ...state, scene: parsed.scene };
   // A smaller screen may leave the selected pixel outside it.
   const [columns, rows] = parsed.scene.camera.pixels;

@@ -1,3 +1,4 @@
+import { issueLine } from '../util/issue.ts';
 import { z } from 'zod';
 import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
 import { listOf } from '../scene/scene-schema-parts.ts';
@@ -119,7 +120,7 @@ export function loadLevelGuide(indexText: string): LevelGuide {
 
 function readIndex(indexText: string): { ok: true; data: z.output<typeof levelIndexSchema> } | { ok: false; errors: string[] } {
   const json = readJson(indexText);
-  if (!json.ok) return { ok: false, errors: [json.error] };
+  if (!json.ok) return { ok: false, errors: [issueLine(json.issue)] };
   const index = levelIndexSchema.safeParse(json.value, { error: describeIssue });
   return index.success ? { ok: true, data: index.data } : { ok: false, errors: formatIssues(index.error.issues) };
 }

@@ -1,3 +1,4 @@
+import { issueLine } from '../util/issue.ts';
 import { z } from 'zod';
 import { sceneSchema } from '../scene/scene-schema.ts';
 import { describeIssue, describeValue, formatIssues } from '../scene/scene-issues.ts';
@@ -127,5 +128,5 @@ export function parseLevel(input: unknown): LevelParseResult {
 /** `parseLevel` for the text of a level file; bad JSON gives one line with its place. */
 export function parseLevelJson(text: string): LevelParseResult {
   const json = readJson(text);
-  return json.ok ? parseLevel(json.value) : { ok: false, errors: [json.error] };
+  return json.ok ? parseLevel(json.value) : { ok: false, errors: [issueLine(json.issue)] };
 }

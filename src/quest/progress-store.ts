@@ -1,3 +1,4 @@
+import { issueLine } from '../util/issue.ts';
 import { describeIssue, describeValue, formatIssues } from '../scene/scene-issues.ts';
 import type { QuestClock } from './event-log.ts';
 import { isRecord } from '../util/is-record.ts';
@@ -157,7 +158,7 @@ export function parseProgress(input: unknown): ProgressParseResult {
 /** Progress from the text of storage or of an imported file (the learner's "import progress"). */
 export function parseProgressJson(text: string): ProgressParseResult {
   const json = readJson(text);
-  return json.ok ? parseProgress(json.value) : { ok: false, kind: 'damaged', errors: [json.error] };
+  return json.ok ? parseProgress(json.value) : { ok: false, kind: 'damaged', errors: [issueLine(json.issue)] };
 }
 
 /**
@@ -167,7 +168,7 @@ export function parseProgressJson(text: string): ProgressParseResult {
  */
 export function readProgressJson(text: string, nowIso: string): ProgressRead {
   const json = readJson(text);
-  if (!json.ok) return { ok: false, kind: 'damaged', errors: [json.error] };
+  if (!json.ok) return { ok: false, kind: 'damaged', errors: [issueLine(json.issue)] };
   const strict = parseProgress(json.value);
   if (strict.ok) return { ...strict, repaired: [] };
   const salvaged = strict.kind === 'damaged' && isRecord(json.value) ? salvageProgress(json.value, nowIso) : null;

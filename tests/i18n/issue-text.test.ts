@@ -1,5 +1,5 @@
 // The reasons a scene file is refused, as the learner reads them: in Dutch mode every line is
-// Dutch (the schema's and the JSON reader's English patterns said again through msg()); in
+// Dutch (each coded reason of the schema and the JSON reader said by its msg()); in
 // English they are the schema's own lines; the schema itself (what `rt validate` prints)
 // stays English whatever the app speaks.
 import { describe, expect, it } from 'vitest';
@@ -7,6 +7,7 @@ import { issueLines, issueText } from '../../src/i18n/issue-text.ts';
 import { readFileSync } from 'node:fs';
 import { parseLevel } from '../../src/quest/level-schema.ts';
 import { parseSceneJson } from '../../src/scene/scene-schema.ts';
+import { issueLine, type Issue } from '../../src/util/issue.ts';
 import { inDutch } from '../support/page-locale.ts';
 
 /** A scene file with one of most kinds of mistake a learner's hand edit makes. */
@@ -21,7 +22,7 @@ const brokenScene = JSON.stringify({
   lights: [{ id: 'lamp', type: 'torch' }],
 });
 
-function errorsOf(text: string): string[] {
+function errorsOf(text: string): Issue[] {
   const result = parseSceneJson(text);
   if (result.ok) throw new Error('the broken scene was accepted');
   return result.errors;
@@ -30,7 +31,7 @@ function errorsOf(text: string): string[] {
 describe('a broken scene file in English', () => {
   it('keeps the schema\'s own lines', () => {
     const errors = errorsOf(brokenScene);
-    expect(errors.map(issueText)).toEqual(errors);
+    expect(errors.map(issueText)).toEqual(errors.map(issueLine));
   });
 });
 
@@ -52,10 +53,10 @@ describe('a broken scene file in Dutch', () => {
     expect(dutch).toContain('objects[1].id: "ball" komt twee keer voor');
     expect(dutch.some((line) => line.startsWith('objects[1].mesh: is verplicht als shape "mesh" is (een van '))).toBe(true);
     expect(dutch.some((line) => line.startsWith('lights[0].type: moet een van '))).toBe(true);
-    // No English reason is left over: every line was read by a pattern.
+    // No English reason is left over: every code has its Dutch.
     for (const line of dutch) expect(line, line).not.toMatch(/\b(must|got|unknown|is required|is used|list of)\b/);
     // The schema, which `rt validate` prints, still speaks English.
-    expect(errors).toContain('camera.fov: must be between 1 and 179, got 400');
+    expect(errors.map(issueLine)).toContain('camera.fov: must be between 1 and 179, got 400');
   });
 
   it('says where a file stops being JSON in Dutch', () => {

@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { reduce } from '../../src/lab-state/lab-reducer.ts';
 import { type LabState, initialState } from '../../src/lab-state/lab-state.ts';
@@ -24,7 +25,7 @@ function labState(camera: object = {}): LabState {
       { id: 'pill', shape: 'mesh', mesh: 'capsule', position: [2, 0.5, 0] },
     ],
   });
-  if (!parsed.ok) throw new Error(parsed.errors.join('\n'));
+  if (!parsed.ok) throw new Error(parsed.errors.map(issueLine).join('\n'));
   return initialState(parsed.scene);
 }
 

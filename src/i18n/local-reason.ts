@@ -1,0 +1,150 @@
+import { msg, str } from '@lit/localize';
+import type { Got, Issue, JsonExpected, ListItems, Reason, ValueType } from '../util/issue.ts';
+import { quotedNames } from '../util/issue.ts';
+
+/**
+ * A coded reason (src/util/issue.ts) in the app's language: one msg() per code, whose
+ * English is word for word what `englishReason` says (tests/i18n/local-reason.test.ts
+ * checks every code). Ids, field names and the values quoted stay as the file writes them.
+ */
+export function localReason(reason: Reason, sayWorded: (text: string) => string): string {
+  switch (reason.code) {
+    case 'required':
+      return msg('is required');
+    case 'wrongType':
+      return msg(str`must be ${localValueType(reason.expected)}, got ${localGot(reason.got)}`);
+    case 'wrongTypeNamed':
+      return msg(str`must be ${reason.expected}, got ${localGot(reason.got)}`);
+    case 'notAllowed': {
+      const allowed = reason.allowed.length === 1 ? reason.allowed[0]! : msg(str`one of ${reason.allowed.join(', ')}`);
+      return msg(str`must be ${allowed}, got ${localGot(reason.got)}`);
+    }
+    case 'empty':
+      return msg('must not be empty');
+    case 'tooLong':
+      return msg(str`must be at most ${reason.most} characters long`);
+    case 'tooFewItems':
+      return msg(str`must have at least ${reason.least} items, got ${localGot(reason.got)}`);
+    case 'tooManyItems':
+      return msg(str`must have at most ${reason.most} items, got ${localGot(reason.got)}`);
+    case 'tooSmall':
+      return msg(str`must be at least ${reason.least}, got ${localGot(reason.got)}`);
+    case 'tooBig':
+      return msg(str`must be at most ${reason.most}, got ${localGot(reason.got)}`);
+    case 'notWhole':
+      return msg(str`must be ${msg('a whole number')}, got ${localGot(reason.got)}`);
+    case 'outOfRange':
+      return msg(str`must be between ${reason.lowest} and ${reason.highest}, got ${localGot(reason.got)}`);
+    case 'notListOf':
+      return msg(str`must be ${localList(reason.length, reason.items)}, got ${localGot(reason.got)}`);
+    case 'unknownFields': {
+      const names = quotedNames(reason.names);
+      return reason.names.length > 1 ? msg(str`unknown fields ${names}`) : msg(str`unknown field ${names}`);
+    }
+    case 'targetIsPosition':
+      return msg('must differ from camera.position');
+    case 'meshRequired':
+      return msg(str`is required when shape is "mesh" (one of ${reason.meshes.join(', ')})`);
+    case 'meshNotAllowed':
+      return msg('is only allowed when shape is "mesh"');
+    case 'idReused': {
+      const id = JSON.stringify(reason.id);
+      return reason.uses === 2 ? msg(str`${id} is used twice`) : msg(str`${id} is used ${reason.uses} times`);
+    }
+    case 'tooManyRays': {
+      // The formula's names are the file's fields: they stay as written.
+      const { supersampling: s, lensSamples: n, timeSamples: k, rays, most } = reason;
+      const sum = `supersampling² · lensSamples² · timeSamples = ${s}² · ${n}² · ${k}`;
+      return msg(str`makes ${sum} = ${rays} primary rays per pixel, more than ${most}`);
+    }
+    case 'fileTooLarge':
+      return msg(str`the file is ${reason.kilobytes} kB; a scene file is at most ${reason.most} kB`);
+    case 'notJson': {
+      const { line, column } = reason;
+      const found = reason.found === null ? msg('the end of the text') : JSON.stringify(reason.found);
+      return msg(str`not valid JSON at line ${line}, column ${column}: expected ${localJsonExpected(reason.expected)}, found ${found}`);
+    }
+    case 'worded':
+      return sayWorded(reason.text);
+    default:
+      return unknownReason(reason);
+  }
+}
+
+/** A new code compiles only once it has its msg(). */
+function unknownReason(reason: never): never {
+  throw new Error(`no wording for the reason ${JSON.stringify(reason)}`);
+}
+
+/** `path: reason` in the app's language; paths are field names of the file and stay as written. */
+export function localIssue(issue: Issue, sayWorded: (text: string) => string): string {
+  const reason = localReason(issue.reason, sayWorded);
+  if (issue.path === null) return reason;
+  return `${issue.path === '(root)' ? msg('(root)') : issue.path}: ${reason}`;
+}
+
+function localGot(got: Got): string {
+  switch (got.kind) {
+    case 'nothing':
+      return msg('nothing');
+    case 'list':
+      return got.length === 1 ? msg('a list of 1 item') : msg(str`a list of ${got.length} items`);
+    case 'object':
+      return msg('an object');
+    case 'literal':
+      return got.text;
+  }
+}
+
+function localValueType(type: ValueType): string {
+  switch (type) {
+    case 'number':
+      return msg('a number');
+    case 'string':
+      return msg('a string');
+    case 'boolean':
+      return msg('true or false');
+    case 'object':
+      return msg('an object');
+    case 'array':
+      return msg('a list');
+  }
+}
+
+function localList(count: number, items: ListItems): string {
+  switch (items) {
+    case 'numbers':
+      return msg(str`a list of ${count} numbers`);
+    case 'whole numbers':
+      return msg(str`a list of ${count} whole numbers`);
+    case 'positive numbers':
+      return msg(str`a list of ${count} positive numbers`);
+    case 'numbers between 0 and 1':
+      return msg(str`a list of ${count} numbers between 0 and 1`);
+  }
+}
+
+function localJsonExpected(expected: JsonExpected): string {
+  switch (expected.kind) {
+    case 'value':
+      return msg('a value');
+    case 'field name':
+      return msg('a field name in double quotes');
+    case 'colon':
+      return '":"';
+    case 'comma or close': {
+      const [one, other] = [',', expected.close];
+      return msg(str`"${one}" or "${other}"`);
+    }
+    case 'closing quote, no line break':
+      return msg('a closing \'"\' (write a line break inside a string as \\n)');
+    case 'escape':
+      return msg('an escape such as \\n, \\" or \\u00e9');
+    case 'closing quote':
+      return msg('a closing \'"\'');
+    case 'end of text':
+      return msg('the end of the text');
+    case 'less nesting':
+      return msg('less deeply nested lists and objects');
+  }
+}

@@ -1,0 +1,213 @@
+/**
+ * Why a file, a link or a value cannot be used, as data: a path into the file and a reason
+ * that is a code with its values. `englishReason` words a reason in English (what
+ * `rt validate`, the tests and the docs quote); the app words the same reason in the
+ * learner's language with one msg() per code (src/i18n/local-reason.ts), so nothing parses
+ * English back out.
+ *
+ * The scene schema, its rules and the JSON reader give coded reasons. Reasons not coded yet
+ * (the level rules, goals, progress and assignment checks) come as `worded`: their English
+ * text, said again in the app's language by the patterns in src/i18n/issue-translation.ts.
+ */
+
+/**
+ * One problem: where (`objects[2].material.color[0]`, or `(root)` for the whole value) and
+ * why; no path (null) for a problem with the file or link itself rather than with its value.
+ */
+export interface Issue {
+  path: string | null;
+  reason: Reason;
+}
+
+/** A short picture of the value a field got: never the whole of a big object. */
+export type Got =
+  | { kind: 'nothing' }
+  | { kind: 'list'; length: number }
+  | { kind: 'object' }
+  /** A quoted text, a number, true, false or null: the same in every language. */
+  | { kind: 'literal'; text: string };
+
+/** What a value of the wrong type must be (zod's type names, as someone editing a file says them). */
+export type ValueType = 'number' | 'string' | 'boolean' | 'object' | 'array';
+
+/** The items of a fixed-length list: [x, y, z], [r, g, b], [width, height]. */
+export type ListItems = 'numbers' | 'whole numbers' | 'positive numbers' | 'numbers between 0 and 1';
+
+/** What the JSON reader expected where the text stops being JSON (RFC 8259's grammar). */
+export type JsonExpected =
+  | { kind: 'value' }
+  | { kind: 'field name' }
+  | { kind: 'colon' }
+  | { kind: 'comma or close'; close: '}' | ']' }
+  | { kind: 'closing quote, no line break' }
+  | { kind: 'escape' }
+  | { kind: 'closing quote' }
+  | { kind: 'end of text' }
+  | { kind: 'less nesting' };
+
+export type Reason =
+  | { code: 'required' }
+  | { code: 'wrongType'; expected: ValueType; got: Got }
+  /** A type zod names that no file field of ours has (kept so a new one still says something). */
+  | { code: 'wrongTypeNamed'; expected: string; got: Got }
+  /** `allowed` as quoted: one value pictured as `Got` does, or several written as they are. */
+  | { code: 'notAllowed'; allowed: readonly string[]; got: Got }
+  | { code: 'empty' }
+  | { code: 'tooLong'; most: number }
+  | { code: 'tooFewItems'; least: number; got: Got }
+  | { code: 'tooManyItems'; most: number; got: Got }
+  | { code: 'tooSmall'; least: number; got: Got }
+  | { code: 'tooBig'; most: number; got: Got }
+  | { code: 'notWhole'; got: Got }
+  | { code: 'outOfRange'; lowest: number; highest: number; got: Got }
+  | { code: 'notListOf'; length: number; items: ListItems; got: Got }
+  | { code: 'unknownFields'; names: readonly string[] }
+  | { code: 'targetIsPosition' }
+  | { code: 'meshRequired'; meshes: readonly string[] }
+  | { code: 'meshNotAllowed' }
+  | { code: 'idReused'; id: string; uses: number }
+  | { code: 'tooManyRays'; supersampling: number; lensSamples: number; timeSamples: number; rays: number; most: number }
+  /** `found` is the character where the text stops being JSON, or null at its end. */
+  | { code: 'fileTooLarge'; kilobytes: number; most: number }
+  | { code: 'notJson'; line: number; column: number; expected: JsonExpected; found: string | null }
+  /** A reason not coded yet, or already worded in the app's language: shown as it is written. */
+  | { code: 'worded'; text: string };
+
+export type ReasonCode = Reason['code'];
+
+/** Text quoted in a reason: at most 40 characters, so that a 2 MB key or value is not echoed back. */
+export function shortened(text: string): string {
+  return text.length > 40 ? `${text.slice(0, 40)}…` : text;
+}
+
+/** The short picture of a value that a reason quotes after "got". */
+export function gotOf(value: unknown): Got {
+  if (value === undefined) return { kind: 'nothing' };
+  if (typeof value === 'string') return { kind: 'literal', text: JSON.stringify(shortened(value)) };
+  if (Array.isArray(value)) return { kind: 'list', length: value.length };
+  if (value !== null && typeof value === 'object') return { kind: 'object' };
+  return { kind: 'literal', text: String(value) };
+}
+
+export function englishGot(got: Got): string {
+  switch (got.kind) {
+    case 'nothing':
+      return 'nothing';
+    case 'list':
+      return got.length === 1 ? 'a list of 1 item' : `a list of ${got.length} items`;
+    case 'object':
+      return 'an object';
+    case 'literal':
+      return got.text;
+  }
+}
+
+/** What a value must be, for a wrong type. */
+const VALUE_TYPES: Record<ValueType, string> = {
+  number: 'a number',
+  string: 'a string',
+  boolean: 'true or false',
+  object: 'an object',
+  array: 'a list',
+};
+
+export function englishAllowed(allowed: readonly string[]): string {
+  return allowed.length === 1 ? allowed[0]! : `one of ${allowed.join(', ')}`;
+}
+
+export function englishJsonExpected(expected: JsonExpected): string {
+  switch (expected.kind) {
+    case 'value':
+      return 'a value';
+    case 'field name':
+      return 'a field name in double quotes';
+    case 'colon':
+      return '":"';
+    case 'comma or close':
+      return `"," or "${expected.close}"`;
+    case 'closing quote, no line break':
+      return 'a closing \'"\' (write a line break inside a string as \\n)';
+    case 'escape':
+      return 'an escape such as \\n, \\" or \\u00e9';
+    case 'closing quote':
+      return 'a closing \'"\'';
+    case 'end of text':
+      return 'the end of the text';
+    case 'less nesting':
+      return 'less deeply nested lists and objects';
+  }
+}
+
+/** A reason in English, exactly as `rt validate` prints it and docs/scene-format.md quotes it. */
+export function englishReason(reason: Reason): string {
+  switch (reason.code) {
+    case 'required':
+      return 'is required';
+    case 'wrongType':
+      return `must be ${VALUE_TYPES[reason.expected]}, got ${englishGot(reason.got)}`;
+    case 'wrongTypeNamed':
+      return `must be ${reason.expected}, got ${englishGot(reason.got)}`;
+    case 'notAllowed':
+      return `must be ${englishAllowed(reason.allowed)}, got ${englishGot(reason.got)}`;
+    case 'empty':
+      return 'must not be empty';
+    case 'tooLong':
+      return `must be at most ${reason.most} characters long`;
+    case 'tooFewItems':
+      return `must have at least ${reason.least} items, got ${englishGot(reason.got)}`;
+    case 'tooManyItems':
+      return `must have at most ${reason.most} items, got ${englishGot(reason.got)}`;
+    case 'tooSmall':
+      return `must be at least ${reason.least}, got ${englishGot(reason.got)}`;
+    case 'tooBig':
+      return `must be at most ${reason.most}, got ${englishGot(reason.got)}`;
+    case 'notWhole':
+      return `must be a whole number, got ${englishGot(reason.got)}`;
+    case 'outOfRange':
+      return `must be between ${reason.lowest} and ${reason.highest}, got ${englishGot(reason.got)}`;
+    case 'notListOf':
+      return `must be a list of ${reason.length} ${reason.items}, got ${englishGot(reason.got)}`;
+    case 'unknownFields':
+      return `unknown field${reason.names.length > 1 ? 's' : ''} ${quotedNames(reason.names)}`;
+    case 'targetIsPosition':
+      return 'must differ from camera.position';
+    case 'meshRequired':
+      return `is required when shape is "mesh" (one of ${reason.meshes.join(', ')})`;
+    case 'meshNotAllowed':
+      return 'is only allowed when shape is "mesh"';
+    case 'idReused':
+      return `${JSON.stringify(reason.id)} is used ${reason.uses === 2 ? 'twice' : `${reason.uses} times`}`;
+    case 'tooManyRays': {
+      const { supersampling: s, lensSamples: n, timeSamples: k, rays, most } = reason;
+      return `makes supersampling² · lensSamples² · timeSamples = ${s}² · ${n}² · ${k} = ${rays} primary rays per pixel, more than ${most}`;
+    }
+    case 'fileTooLarge':
+      return `the file is ${reason.kilobytes} kB; a scene file is at most ${reason.most} kB`;
+    case 'notJson':
+      return `not valid JSON at line ${reason.line}, column ${reason.column}: expected ${englishJsonExpected(reason.expected)}, found ${reason.found === null ? 'the end of the text' : JSON.stringify(reason.found)}`;
+    case 'worded':
+      return reason.text;
+    default:
+      return unknownReason(reason);
+  }
+}
+
+/** Field names as quoted in a reason: JSON strings, so a name with a quote in it stays one name. */
+export function quotedNames(names: readonly string[]): string {
+  return names.map((name) => JSON.stringify(name)).join(', ');
+}
+
+/** A new code compiles only once every formatter says it. */
+function unknownReason(reason: never): never {
+  throw new Error(`no wording for the reason ${JSON.stringify(reason)}`);
+}
+
+/** `path: reason` in English, the line `rt validate` prints; the bare reason when there is no path. */
+export function issueLine(issue: Issue): string {
+  return issue.path === null ? englishReason(issue.reason) : `${issue.path}: ${englishReason(issue.reason)}`;
+}
+
+/** An issue whose reason is already worded (a reason not coded yet, or one said in the app's language). */
+export function wordedIssue(path: string | null, text: string): Issue {
+  return { path, reason: { code: 'worded', text } };
+}
