@@ -3,7 +3,6 @@ import { sourceLocale, targetLocales } from '../locales/locale-codes.ts';
 import type { Locale } from '../quest/localized-text.ts';
 import { loadIssueTranslation } from './issue-text.ts';
 import { pickLocale, readRememberedLocale, rememberLocale } from './locale-choice.ts';
-import { rerenderAll } from './rerender-all.ts';
 import { LazyModule } from '../util/lazy-module.ts';
 
 /**
@@ -39,7 +38,8 @@ export function currentLocale(): Locale {
 }
 
 /**
- * Switches to `locale`: the messages are loaded, then `<html lang>` and every element follow.
+ * Switches to `locale`: the messages are loaded, then `<html lang>` follows, and every element
+ * renders again by itself (src/ui/controls/localized-element.ts).
  * Resolves to the language in use afterwards: when the Dutch module cannot be loaded (the
  * network dropped), the app goes on in the language it had instead of not starting.
  */
@@ -50,7 +50,6 @@ export async function useLocale(locale: Locale): Promise<Locale> {
     console.error(`The ${locale} texts could not be loaded`, error);
   }
   document.documentElement.lang = currentLocale();
-  rerenderAll(document);
   return currentLocale();
 }
 

@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import { downloadText } from '../../util/download-file.ts';
 import { exportFileName } from '../../classroom/export-file-name.ts';
@@ -28,7 +29,7 @@ const FILES: Record<Format, { extension: string; type: string; text: (input: Exp
  * install id is read from localStorage.
  * @fires export-failed - detail: the message, when a file could not be made (the lab shows it as a toast).
  */
-export class RtExportMenu extends LitElement {
+export class RtExportMenu extends LocalizedElement {
   static override properties = {
     progress: { attribute: false },
     participant: { attribute: false },

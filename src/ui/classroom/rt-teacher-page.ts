@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { html, LitElement, nothing } from 'lit';
+import { html, nothing } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import QRCode from 'qrcode';
 import { loadBrowserCatalog, loadBrowserLevelGuide } from '../../app/level-catalog-browser.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
@@ -23,7 +24,7 @@ import '../controls/rt-theme-toggle.ts';
  * link with a copy button, a QR code for the projector and a link to try it as a student.
  * Nothing is stored or sent: the link is the assignment.
  */
-export class RtTeacherPage extends LitElement {
+export class RtTeacherPage extends LocalizedElement {
   static override properties = {
     assignment: { state: true },
     url: { state: true },

@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import { PARTICIPANT_CODE } from '../../classroom/learner-identity.ts';
 import { fire, gameStyles } from './game-styles.ts';
 
@@ -9,7 +10,7 @@ import { fire, gameStyles } from './game-styles.ts';
  *
  * @fires participant-code - CustomEvent<string>: the code, trimmed.
  */
-export class RtParticipantDialog extends LitElement {
+export class RtParticipantDialog extends LocalizedElement {
   static override properties = { heading: {}, note: {}, problem: { state: true } };
   static override styles = [
     gameStyles,

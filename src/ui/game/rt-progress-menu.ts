@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import type { DamagedSave } from '../../app/damaged-saves.ts';
 import type { Locale } from '../../quest/localized-text.ts';
 import { damagedSavesList, damagedSavesStyles } from './damaged-saves-list.ts';
@@ -22,7 +23,7 @@ export type ProgressCommand =
  *
  * @fires progress-command - CustomEvent<ProgressCommand>.
  */
-export class RtProgressMenu extends LitElement {
+export class RtProgressMenu extends LocalizedElement {
   static override properties = { locale: {}, colorBlind: { type: Boolean, attribute: 'color-blind' }, saveProblem: { attribute: false }, damagedSaves: { attribute: false } };
   static override styles = [
     gameStyles,

@@ -1,6 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { ContextProvider } from '@lit/context';
-import { html, LitElement, nothing, type PropertyValues } from 'lit';
+import { html, nothing, type PropertyValues } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import { LabServices, type LoadProblem } from '../../app/lab-services.ts';
 import { labLoadProblems, withProblem } from './lab-load-problem.ts';
 import type { ShowMeStage } from '../../app/show-me-player.ts';
@@ -56,7 +57,7 @@ export { FREE_LAB_HASH } from './quest-controller.ts';
  * For tests and tools: `store`, `guideRect(target)` and `guideElements(target)` (where the
  * hint ring would go for a guide target, and the elements that carry it).
  */
-export class RtLab extends LitElement {
+export class RtLab extends LocalizedElement {
   static override properties = {
     hover: { state: true },
     renderOpen: { state: true },
