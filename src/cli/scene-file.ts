@@ -44,7 +44,7 @@ export async function checkSceneFile(file: string): Promise<SceneFileCheck> {
   if (hasField(json, 'chapters')) return checkLevelIndex(file, text);
   if (hasField(json, 'tasks')) {
     const level = parseLevel(json);
-    return level.ok ? { ok: true, scene: level.level.scene } : { ok: false, problems: level.errors };
+    return level.ok ? { ok: true, scene: level.level.scene } : { ok: false, problems: level.errors.map(issueLine) };
   }
   const scene = parseScene(json);
   return scene.ok ? scene : { ok: false, problems: scene.errors.map(issueLine) };
@@ -59,8 +59,8 @@ function checkLevelIndex(file: string, text: string): SceneFileCheck {
     }
   };
   const catalog = loadLevels(text, readLevelFile);
-  const broken = catalog.chapters.flatMap((chapter) => chapter.entries.flatMap((entry) => (entry.ok ? [] : entry.errors.map((error) => `level "${entry.id}": ${error}`))));
-  const problems = [...catalog.errors, ...broken];
+  const broken = catalog.chapters.flatMap((chapter) => chapter.entries.flatMap((entry) => (entry.ok ? [] : entry.errors.map((error) => `level "${entry.id}": ${issueLine(error)}`))));
+  const problems = [...catalog.errors.map(issueLine), ...broken];
   return problems.length === 0 ? { ok: true, scene: null } : { ok: false, problems };
 }
 

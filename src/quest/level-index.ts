@@ -1,6 +1,6 @@
-import { issueLine } from '../util/issue.ts';
+import { wordedIssue, type Issue } from '../util/issue.ts';
 import { z } from 'zod';
-import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
+import { describeIssue, issuesOf } from '../scene/scene-issues.ts';
 import { listOf } from '../scene/scene-schema-parts.ts';
 import { chosenBy } from './chosen-schema.ts';
 import { kebabId } from './kebab-id.ts';
@@ -78,7 +78,7 @@ export interface LevelGuide {
   presets: LevelPreset[];
 }
 
-export type CatalogEntry = { id: string; ok: true; level: Level } | { id: string; ok: false; errors: string[] };
+export type CatalogEntry = { id: string; ok: true; level: Level } | { id: string; ok: false; errors: Issue[] };
 
 export interface CatalogChapter {
   id: string;
@@ -89,7 +89,7 @@ export interface CatalogChapter {
 /** Every level the index lists, playable or broken, in order; `errors` are the index's own. */
 export interface LevelCatalog {
   chapters: CatalogChapter[];
-  errors: string[];
+  errors: Issue[];
 }
 
 export function levelFileName(id: string): string {
@@ -118,23 +118,23 @@ export function loadLevelGuide(indexText: string): LevelGuide {
   return index.ok ? { ideas: index.data.ideas, presets: index.data.presets } : { ideas: {}, presets: [] };
 }
 
-function readIndex(indexText: string): { ok: true; data: z.output<typeof levelIndexSchema> } | { ok: false; errors: string[] } {
+function readIndex(indexText: string): { ok: true; data: z.output<typeof levelIndexSchema> } | { ok: false; errors: Issue[] } {
   const json = readJson(indexText);
-  if (!json.ok) return { ok: false, errors: [issueLine(json.issue)] };
+  if (!json.ok) return { ok: false, errors: [json.issue] };
   const index = levelIndexSchema.safeParse(json.value, { error: describeIssue });
-  return index.success ? { ok: true, data: index.data } : { ok: false, errors: formatIssues(index.error.issues) };
+  return index.success ? { ok: true, data: index.data } : { ok: false, errors: issuesOf(index.error.issues) };
 }
 
 function loadEntry(id: string, chapter: string, readLevelFile: (fileName: string) => string | undefined): CatalogEntry {
   const fileName = levelFileName(id);
   const text = readLevelFile(fileName);
-  if (text === undefined) return { id, ok: false, errors: [`(root): there is no file levels/${fileName}`] };
+  if (text === undefined) return { id, ok: false, errors: [wordedIssue('(root)', `there is no file levels/${fileName}`)] };
   const parsed = parseLevelJson(text);
   if (!parsed.ok) return { id, ok: false, errors: parsed.errors };
   const { level } = parsed;
   const errors = [
-    ...(level.id === id ? [] : [`id: must be "${id}", the name index.json lists this file under, got "${level.id}"`]),
-    ...(level.chapter === chapter ? [] : [`chapter: must be "${chapter}", the chapter index.json lists it in, got "${level.chapter}"`]),
+    ...(level.id === id ? [] : [wordedIssue('id', `must be "${id}", the name index.json lists this file under, got "${level.id}"`)]),
+    ...(level.chapter === chapter ? [] : [wordedIssue('chapter', `must be "${chapter}", the chapter index.json lists it in, got "${level.chapter}"`)]),
   ];
   return errors.length === 0 ? { id, ok: true, level } : { id, ok: false, errors };
 }

@@ -2,7 +2,8 @@ import { initialState, type LabState } from '../lab-state/lab-state.ts';
 import type { DeclaredView } from '../lab-state/lab-action.ts';
 import { framedRaysPixel } from '../lab-state/framed-rays.ts';
 import type { Scene } from '../scene/scene.ts';
-import { formatIssues } from '../scene/scene-issues.ts';
+import { issuesOf } from '../scene/scene-issues.ts';
+import type { Issue } from '../util/issue.ts';
 import { FRAMED_PARTS } from './declared-view-schema.ts';
 import { goalParts, kindOfGoal, type Goal } from './goal.ts';
 import { APP_ONLY_ACTION } from './lab-action-schema.ts';
@@ -25,8 +26,8 @@ interface Problem {
   message: string;
 }
 
-/** Every problem as a `path: reason` line, like the schema's. */
-export function levelRules(level: Level): string[] {
+/** Every problem, with its path, like the schema's; the reasons are still English words (issue.ts's `worded`). */
+export function levelRules(level: Level): Issue[] {
   const sample = sampleState(level.scene);
   const problems = [
     ...listedOnce(level.tasks.map((task) => task.id), ['tasks'], 'id'),
@@ -40,7 +41,7 @@ export function levelRules(level: Level): string[] {
     ...level.tasks.flatMap((task, index) => (task.evidence ? evidenceProblems(level.scene, task.evidence, ['tasks', index, 'evidence']) : [])),
     ...badgeProblems(level),
   ];
-  return formatIssues(problems.map(({ path, message }) => ({ code: 'custom', path, message })));
+  return issuesOf(problems.map(({ path, message }) => ({ code: 'custom', path, message })));
 }
 
 /** `values` name each thing once; the second, third… use is reported where it stands. */

@@ -1,7 +1,7 @@
-import { issueLine } from '../util/issue.ts';
+import type { Issue } from '../util/issue.ts';
 import { z } from 'zod';
 import { sceneSchema } from '../scene/scene-schema.ts';
-import { describeIssue, describeValue, formatIssues } from '../scene/scene-issues.ts';
+import { describeIssue, describeValue, issuesOf } from '../scene/scene-issues.ts';
 import { listOf, wholeNumberIn } from '../scene/scene-schema-parts.ts';
 import { labActionSchema } from './lab-action-schema.ts';
 import { declaredViewSchema } from './declared-view-schema.ts';
@@ -115,12 +115,12 @@ export type Task = Level['tasks'][number];
 export type LevelBadge = Level['badges'][number];
 export type LevelUi = Level['ui'];
 
-export type LevelParseResult = { ok: true; level: Level } | { ok: false; errors: string[] };
+export type LevelParseResult = { ok: true; level: Level } | { ok: false; errors: Issue[] };
 
 /** Checks a level file's parsed JSON, fills in its defaults and lists every problem. */
 export function parseLevel(input: unknown): LevelParseResult {
   const result = levelSchema.safeParse(input, { error: describeIssue });
-  if (!result.success) return { ok: false, errors: formatIssues(result.error.issues) };
+  if (!result.success) return { ok: false, errors: issuesOf(result.error.issues) };
   const problems = levelRules(result.data);
   return problems.length === 0 ? { ok: true, level: result.data } : { ok: false, errors: problems };
 }
@@ -128,5 +128,5 @@ export function parseLevel(input: unknown): LevelParseResult {
 /** `parseLevel` for the text of a level file; bad JSON gives one line with its place. */
 export function parseLevelJson(text: string): LevelParseResult {
   const json = readJson(text);
-  return json.ok ? parseLevel(json.value) : { ok: false, errors: [issueLine(json.issue)] };
+  return json.ok ? parseLevel(json.value) : { ok: false, errors: [json.issue] };
 }

@@ -12,6 +12,7 @@ import { issueText } from '../../src/i18n/issue-text.ts';
 import { loadLevels } from '../../src/quest/level-index.ts';
 import { parseProgress } from '../../src/quest/progress-store.ts';
 import { newProgress } from '../../src/quest/progress.ts';
+import { issueLine, type Issue } from '../../src/util/issue.ts';
 import { simulatedExport } from '../support/class-exports.ts';
 import { inDutch } from '../support/page-locale.ts';
 
@@ -32,7 +33,7 @@ interface Level {
 }
 
 /** The reasons the real level loader gives level 3 with `change` made to a copy, through levels/index.json. */
-function reasonsWith(change: (level: Level) => void): string[] {
+function reasonsWith(change: (level: Level) => void): Issue[] {
   const level = structuredClone(shading);
   change(level);
   const catalog = loadLevels(levelText('index.json'), (fileName) => (fileName === SHADING ? JSON.stringify(level) : levelText(fileName)));
@@ -106,7 +107,7 @@ const LEVEL_MISTAKES: Record<string, (level: Level) => void> = {
 };
 
 /** The reasons of the level index, through the same loader (levels/index.json with one mistake). */
-function indexReasons(): string[] {
+function indexReasons(): Issue[] {
   const index = JSON.parse(levelText('index.json')) as { chapters: { id: string; levels: string[] }[]; ideas: Record<string, unknown>; presets: { levels: string[] }[] };
   const [first, second] = index.chapters;
   // A teacher's idea too long for its line; then an idea for a level no chapter lists.
@@ -280,16 +281,22 @@ function wordedTexts(path: string): string[][] {
   return found;
 }
 
-/** Every reason the mistakes above produce, once each. */
-async function everyReason(): Promise<string[]> {
-  return [...new Set([...Object.values(LEVEL_MISTAKES).flatMap((mistake) => reasonsWith(mistake)), ...indexReasons(), ...progressReasons(), ...(await assignmentReasons())])];
+/** A reason as an issue (levels and the index) or as its English line (progress and assignments, not coded yet). */
+type Problem = Issue | string;
+const lineOf = (problem: Problem) => (typeof problem === 'string' ? problem : issueLine(problem));
+
+/** Every reason the mistakes above produce, once each (by its English line). */
+async function everyReason(): Promise<Problem[]> {
+  const all = [...Object.values(LEVEL_MISTAKES).flatMap((mistake) => reasonsWith(mistake)), ...indexReasons(), ...progressReasons(), ...(await assignmentReasons())];
+  return [...new Map(all.map((problem) => [lineOf(problem), problem])).values()];
 }
 
 describe('every reason of the level, progress and assignment loaders in Dutch', () => {
   inDutch();
 
   it('is produced above, and no reason comes out still in English', async () => {
-    const english = await everyReason();
+    const problems = await everyReason();
+    const english = problems.map(lineOf);
     // Every worded text of the sources is in some reason produced: a new message without a mistake that shows it fails here.
     for (const path of REASON_SOURCES) {
       for (const pieces of wordedTexts(path)) {
@@ -298,8 +305,9 @@ describe('every reason of the level, progress and assignment loaders in Dutch', 
     }
     // Reasons that are field names or literals, the same in both languages: none so far.
     const sameInBothLanguages: string[] = [];
-    for (const line of english) {
-      const dutch = issueText(line);
+    for (const problem of problems) {
+      const line = lineOf(problem);
+      const dutch = issueText(problem);
       if (sameInBothLanguages.includes(line)) continue;
       expect(dutch, line).not.toBe(line);
       expect(dutch.slice(dutch.indexOf(': ') + 2), line).not.toMatch(/\b(must|got|unknown|is required|is used|needs|cannot|not both|has no|there is no|is listed|this app|the event)\b/);
@@ -309,7 +317,7 @@ describe('every reason of the level, progress and assignment loaders in Dutch', 
 
 describe('every reason back in English', () => {
   it('is the loader\'s own line again, though the Dutch patterns are loaded', async () => {
-    const english = await everyReason();
-    expect(english.map(issueText)).toEqual(english);
+    const problems = await everyReason();
+    expect(problems.map(issueText)).toEqual(problems.map(lineOf));
   });
 });
