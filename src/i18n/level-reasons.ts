@@ -2,8 +2,8 @@ import { msg, str } from '@lit/localize';
 import { KINDS, translatedOrNull, value, type Rule } from './issue-rules.ts';
 
 /**
- * The reasons a level file and the level index are refused for, beyond the scene schema's:
- * the level rules that look at several fields (src/quest/level-rules.ts), goals and their
+ * The reasons a level file and the level index are refused for, beyond the scene schema's
+ * and the level rules' (coded: src/util/issue.ts, src/i18n/local-reason.ts): goals and their
  * conditions and state paths (goal.ts, condition.ts, state-path.ts), views, option changes,
  * guides, and the index (level-schema.ts, declared-view-schema.ts, option-changes.ts,
  * lab-action-schema.ts, level-index.ts), said again in the app's language. Ids, field
@@ -17,28 +17,6 @@ const typeName = (kind: string) => translatedOrNull(KINDS, kind);
 const joinedByAnd = (names: string) => names.split(' and ').join(` ${msg('and')} `);
 
 export const LEVEL_REASONS: readonly Rule[] = [
-  // Level rules (level-rules.ts).
-  [/^is required: the actions that complete this task \("show me" performs them\)$/, () => msg('is required: the actions that complete this task ("show me" performs them)')],
-  [/^must have at least 1 hint for a task done in the lab$/, () => msg('must have at least 1 hint for a task done in the lab')],
-  [/^a view is the task's "view", not a step of its solution$/, () => msg('a view is the task\'s "view", not a step of its solution')],
-  [/^a quiz task has no solution: its answer is in its goal$/, () => msg('a quiz task has no solution: its answer is in its goal')],
-  [/^a info task has no solution: it is done with Next$/, () => msg('a info task has no solution: it is done with Next')],
-  [/^an info step is read on the way: it must be mandatory$/, () => msg('an info step is read on the way: it must be mandatory')],
-  [/^(".*") is in the (\S+) panel, which this level does not show \(ui\.panels\)$/, (target, panel) => msg(str`${target} is in the ${panel} panel, which this level does not show (ui.panels)`)],
-  [/^(".*") is hidden by ui\.controls\.(\S+)$/, (target, panel) => msg(str`${target} is hidden by ui.controls.${panel}`)],
-  [/^no object or light (".*") in this level's scene \(it has (.*)\)$/, (item, ids) => msg(str`no object or light ${item} in this level's scene (it has ${ids})`)],
-  [
-    /^(".*") must be "column,row" inside the (\d+)×(\d+) screen, counting from 0$/,
-    (item, columns, rows) => msg(str`${item} must be "column,row" inside the ${columns}×${rows} screen, counting from 0`),
-  ],
-  [/^must be (".*"), the pixel its goal asks for$/, (target) => msg(str`must be ${target}, the pixel its goal asks for`)],
-  [
-    /^must include "screen-preview": a task picks a pixel, and the flat preview is where one is picked exactly$/,
-    () => msg('must include "screen-preview": a task picks a pixel, and the flat preview is where one is picked exactly'),
-  ],
-  [/^"pixel-rays" needs the view to choose its pixel \("pixel": \[column, row\]\)$/, () => msg('"pixel-rays" needs the view to choose its pixel ("pixel": [column, row])')],
-  [/^no task (".*") in this level$/, (id) => msg(str`no task ${id} in this level`)],
-
   // Guides and panels (level-schema.ts).
   [
     /^must be a control like "tracer\.supersampling" or an item like "view\.item:ball" \(docs\/levels\.md lists them\), got (.+)$/,

@@ -59,6 +59,50 @@ export function localReason(reason: Reason, sayWorded: (text: string) => string)
     }
     case 'fileTooLarge':
       return msg(str`the file is ${reason.kilobytes} kB; a scene file is at most ${reason.most} kB`);
+    case 'usedMoreThanOnce': {
+      const value = `"${reason.value}"`;
+      return msg(str`${value} is used more than once`);
+    }
+    case 'mandatoryTasks':
+      return msg(str`must have ${reason.fewest} to ${reason.most} mandatory tasks, got ${reason.count}`);
+    case 'solutionRequired':
+      return msg('is required: the actions that complete this task ("show me" performs them)');
+    case 'hintRequired':
+      return msg('must have at least 1 hint for a task done in the lab');
+    case 'viewInSolution':
+      return msg('a view is the task\'s "view", not a step of its solution');
+    case 'solutionNotAllowed':
+      return reason.kind === 'quiz' ? msg('a quiz task has no solution: its answer is in its goal') : msg('a info task has no solution: it is done with Next');
+    case 'infoNotMandatory':
+      return msg('an info step is read on the way: it must be mandatory');
+    case 'panelNotShown': {
+      const target = `"${reason.target}"`;
+      return msg(str`${target} is in the ${reason.panel} panel, which this level does not show (ui.panels)`);
+    }
+    case 'controlHidden': {
+      const target = `"${reason.target}"`;
+      return msg(str`${target} is hidden by ui.controls.${reason.panel}`);
+    }
+    case 'noSuchItem': {
+      const item = `"${reason.item}"`;
+      return msg(str`no object or light ${item} in this level's scene (it has ${reason.ids.join(', ')})`);
+    }
+    case 'pixelOffScreen': {
+      const item = `"${reason.item}"`;
+      return msg(str`${item} must be "column,row" inside the ${reason.columns}×${reason.rows} screen, counting from 0`);
+    }
+    case 'guideNotGoalPixel': {
+      const target = `"${reason.target}"`;
+      return msg(str`must be ${target}, the pixel its goal asks for`);
+    }
+    case 'previewRequired':
+      return msg('must include "screen-preview": a task picks a pixel, and the flat preview is where one is picked exactly');
+    case 'pixelRaysWithoutPixel':
+      return msg('"pixel-rays" needs the view to choose its pixel ("pixel": [column, row])');
+    case 'noSuchTask': {
+      const id = `"${reason.id}"`;
+      return msg(str`no task ${id} in this level`);
+    }
     case 'notJson': {
       const { line, column } = reason;
       const found = reason.found === null ? msg('the end of the text') : JSON.stringify(reason.found);

@@ -40,7 +40,6 @@ export const SCENE_REASONS: readonly Rule[] = [
     (most) => msg(str`must be a text, or { "en": …, "nl": … } with a text per language (en is required; each at most ${most} characters)`),
   ],
   [/^must be lower-case letters and digits joined by "-", like "([^"]*)", got (.+)$/, (example, got) => msg(str`must be lower-case letters and digits joined by "-", like "${example}", got ${value(got)}`)],
-  [/^must have (\d+) to (\d+) mandatory tasks, got (\d+)$/, (fewest, most, count) => msg(str`must have ${fewest} to ${most} mandatory tasks, got ${count}`)],
   [/^must be the position of a choice, 0 to (\d+)$/, (last) => msg(str`must be the position of a choice, 0 to ${last}`)],
   // Any other "must be …, got …" only when what it must be is known: half a sentence in each language reads worse than English.
   [/^must be (.+), got (.+)$/, (kind, got) => {

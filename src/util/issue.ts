@@ -69,6 +69,22 @@ export type Reason =
   | { code: 'tooManyRays'; supersampling: number; lensSamples: number; timeSamples: number; rays: number; most: number }
   /** `found` is the character where the text stops being JSON, or null at its end. */
   | { code: 'fileTooLarge'; kilobytes: number; most: number }
+  // The level rules (src/quest/level-rules.ts); `value`, `target`, `item`, `id` as the file writes them.
+  | { code: 'usedMoreThanOnce'; value: string }
+  | { code: 'mandatoryTasks'; fewest: number; most: number; count: number }
+  | { code: 'solutionRequired' }
+  | { code: 'hintRequired' }
+  | { code: 'viewInSolution' }
+  | { code: 'solutionNotAllowed'; kind: 'quiz' | 'info' }
+  | { code: 'infoNotMandatory' }
+  | { code: 'panelNotShown'; target: string; panel: string }
+  | { code: 'controlHidden'; target: string; panel: string }
+  | { code: 'noSuchItem'; item: string; ids: readonly string[] }
+  | { code: 'pixelOffScreen'; item: string; columns: number; rows: number }
+  | { code: 'guideNotGoalPixel'; target: string }
+  | { code: 'previewRequired' }
+  | { code: 'pixelRaysWithoutPixel' }
+  | { code: 'noSuchTask'; id: string }
   | { code: 'notJson'; line: number; column: number; expected: JsonExpected; found: string | null }
   /** A reason not coded yet, or already worded in the app's language: shown as it is written. */
   | { code: 'worded'; text: string };
@@ -183,6 +199,36 @@ export function englishReason(reason: Reason): string {
     }
     case 'fileTooLarge':
       return `the file is ${reason.kilobytes} kB; a scene file is at most ${reason.most} kB`;
+    case 'usedMoreThanOnce':
+      return `"${reason.value}" is used more than once`;
+    case 'mandatoryTasks':
+      return `must have ${reason.fewest} to ${reason.most} mandatory tasks, got ${reason.count}`;
+    case 'solutionRequired':
+      return 'is required: the actions that complete this task ("show me" performs them)';
+    case 'hintRequired':
+      return 'must have at least 1 hint for a task done in the lab';
+    case 'viewInSolution':
+      return 'a view is the task\'s "view", not a step of its solution';
+    case 'solutionNotAllowed':
+      return `a ${reason.kind} task has no solution: ${reason.kind === 'quiz' ? 'its answer is in its goal' : 'it is done with Next'}`;
+    case 'infoNotMandatory':
+      return 'an info step is read on the way: it must be mandatory';
+    case 'panelNotShown':
+      return `"${reason.target}" is in the ${reason.panel} panel, which this level does not show (ui.panels)`;
+    case 'controlHidden':
+      return `"${reason.target}" is hidden by ui.controls.${reason.panel}`;
+    case 'noSuchItem':
+      return `no object or light "${reason.item}" in this level's scene (it has ${reason.ids.join(', ')})`;
+    case 'pixelOffScreen':
+      return `"${reason.item}" must be "column,row" inside the ${reason.columns}×${reason.rows} screen, counting from 0`;
+    case 'guideNotGoalPixel':
+      return `must be "${reason.target}", the pixel its goal asks for`;
+    case 'previewRequired':
+      return 'must include "screen-preview": a task picks a pixel, and the flat preview is where one is picked exactly';
+    case 'pixelRaysWithoutPixel':
+      return '"pixel-rays" needs the view to choose its pixel ("pixel": [column, row])';
+    case 'noSuchTask':
+      return `no task "${reason.id}" in this level`;
     case 'notJson':
       return `not valid JSON at line ${reason.line}, column ${reason.column}: expected ${englishJsonExpected(reason.expected)}, found ${reason.found === null ? 'the end of the text' : JSON.stringify(reason.found)}`;
     case 'worded':

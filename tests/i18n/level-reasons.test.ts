@@ -172,6 +172,10 @@ describe('a broken level in Dutch', () => {
     expect(reasonsOf('a guide to a missing object').map(issueText)).toEqual(['tasks[4].guide: de scène van dit level heeft geen object of lamp "teapot" (wel: floor, ball, lamp)']);
     expect(reasonsOf('a guide to a pixel off the screen').map(issueText)).toEqual(['tasks[4].guide: "9,9" moet "kolom,rij" zijn, binnen het scherm van 6×4, geteld vanaf 0']);
     expect(reasonsOf('a badge for a missing task').map(issueText)).toEqual(['badges[0].tasks[0]: dit level heeft geen taak "no-such-task"']);
+    // Said by their codes (local-reason.ts), not read back out of English.
+    expect(['no solution', 'an optional info step', 'a guide to a hidden panel', 'a guide to a pixel off the screen', 'a badge for a missing task'].flatMap((name) => reasonsOf(name).map((issue) => issue.reason.code))).toEqual([
+      'solutionRequired', 'infoNotMandatory', 'panelNotShown', 'pixelOffScreen', 'noSuchTask',
+    ]);
   });
 
   it('says the goal, condition and path checks in Dutch', () => {
