@@ -2,11 +2,11 @@ import { msg, str } from '@lit/localize';
 import { KINDS, translatedOrNull, value, type Rule } from './issue-rules.ts';
 
 /**
- * The reasons a level file and the level index are refused for, beyond the scene schema's
- * and the level rules' (coded: src/util/issue.ts, src/i18n/local-reason.ts): goals and their
+ * The reasons a level file is refused for, beyond the scene schema's, the level rules' and
+ * the level index's (coded: src/util/issue.ts, src/i18n/local-reason.ts): goals and their
  * conditions and state paths (goal.ts, condition.ts, state-path.ts), views, option changes,
- * guides, and the index (level-schema.ts, declared-view-schema.ts, option-changes.ts,
- * lab-action-schema.ts, level-index.ts), said again in the app's language. Ids, field
+ * and guides (level-schema.ts, declared-view-schema.ts, option-changes.ts,
+ * lab-action-schema.ts), said again in the app's language. Ids, field
  * names and the values quoted stay as the file writes them.
  */
 
@@ -65,10 +65,4 @@ export const LEVEL_REASONS: readonly Rule[] = [
     const type = typeName(kind);
     return type === null ? null : msg(str`${field} must be ${type}, got ${value(got)}`);
   }],
-
-  // The level index (level-index.ts).
-  [/^there is no file (levels\/\S+)$/, (file) => msg(str`there is no file ${file}`)],
-  [/^must be (".*"), the name index\.json lists this file under, got (".*")$/, (id, got) => msg(str`must be ${id}, the name index.json lists this file under, got ${got}`)],
-  [/^must be (".*"), the chapter index\.json lists it in, got (".*")$/, (chapter, got) => msg(str`must be ${chapter}, the chapter index.json lists it in, got ${got}`)],
-  [/^(".*") is not a level of any chapter$/, (id) => msg(str`${id} is not a level of any chapter`)],
 ];

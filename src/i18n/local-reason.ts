@@ -103,6 +103,20 @@ export function localReason(reason: Reason, sayWorded: (text: string) => string)
       const id = `"${reason.id}"`;
       return msg(str`no task ${id} in this level`);
     }
+    case 'notInAnyChapter': {
+      const id = `"${reason.id}"`;
+      return msg(str`${id} is not a level of any chapter`);
+    }
+    case 'noLevelFile':
+      return msg(str`there is no file ${reason.file}`);
+    case 'levelIdMismatch': {
+      const [id, got] = [`"${reason.id}"`, `"${reason.got}"`];
+      return msg(str`must be ${id}, the name index.json lists this file under, got ${got}`);
+    }
+    case 'chapterMismatch': {
+      const [chapter, got] = [`"${reason.chapter}"`, `"${reason.got}"`];
+      return msg(str`must be ${chapter}, the chapter index.json lists it in, got ${got}`);
+    }
     case 'notJson': {
       const { line, column } = reason;
       const found = reason.found === null ? msg('the end of the text') : JSON.stringify(reason.found);

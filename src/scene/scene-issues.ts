@@ -21,6 +21,11 @@ export function withReason(issue: object, reason: Reason): string {
   return englishReason(reason);
 }
 
+/** A rule's own issue for a zod `addIssue`, its reason riding along as the error map leaves it. */
+export function reasonIssue(path: (string | number)[], input: unknown, reason: Reason) {
+  return { code: 'custom' as const, path, input, message: englishReason(reason), reason };
+}
+
 /** zod's error map: the reason of an issue, from the raw issue (which still has the input). */
 export const describeIssue: z.core.$ZodErrorMap = (issue) => {
   const reason = reasonOf(issue);

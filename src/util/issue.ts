@@ -85,6 +85,11 @@ export type Reason =
   | { code: 'previewRequired' }
   | { code: 'pixelRaysWithoutPixel' }
   | { code: 'noSuchTask'; id: string }
+  // The level index (src/quest/level-index.ts).
+  | { code: 'notInAnyChapter'; id: string }
+  | { code: 'noLevelFile'; file: string }
+  | { code: 'levelIdMismatch'; id: string; got: string }
+  | { code: 'chapterMismatch'; chapter: string; got: string }
   | { code: 'notJson'; line: number; column: number; expected: JsonExpected; found: string | null }
   /** A reason not coded yet, or already worded in the app's language: shown as it is written. */
   | { code: 'worded'; text: string };
@@ -229,6 +234,14 @@ export function englishReason(reason: Reason): string {
       return '"pixel-rays" needs the view to choose its pixel ("pixel": [column, row])';
     case 'noSuchTask':
       return `no task "${reason.id}" in this level`;
+    case 'notInAnyChapter':
+      return `"${reason.id}" is not a level of any chapter`;
+    case 'noLevelFile':
+      return `there is no file ${reason.file}`;
+    case 'levelIdMismatch':
+      return `must be "${reason.id}", the name index.json lists this file under, got "${reason.got}"`;
+    case 'chapterMismatch':
+      return `must be "${reason.chapter}", the chapter index.json lists it in, got "${reason.got}"`;
     case 'notJson':
       return `not valid JSON at line ${reason.line}, column ${reason.column}: expected ${englishJsonExpected(reason.expected)}, found ${reason.found === null ? 'the end of the text' : JSON.stringify(reason.found)}`;
     case 'worded':

@@ -45,6 +45,10 @@ const SAMPLES: { [Code in ReasonCode]: Extract<Reason, { code: Code }>[] } = {
   previewRequired: [{ code: 'previewRequired' }],
   pixelRaysWithoutPixel: [{ code: 'pixelRaysWithoutPixel' }],
   noSuchTask: [{ code: 'noSuchTask', id: 'no-such-task' }],
+  notInAnyChapter: [{ code: 'notInAnyChapter', id: 'retired-level' }],
+  noLevelFile: [{ code: 'noLevelFile', file: 'levels/03-shading.level.json' }],
+  levelIdMismatch: [{ code: 'levelIdMismatch', id: 'shading', got: 'shading-copy' }],
+  chapterMismatch: [{ code: 'chapterMismatch', chapter: 'light', got: 'rays' }],
   notJson: [
     { kind: 'value' }, { kind: 'field name' }, { kind: 'colon' }, { kind: 'comma or close', close: '}' }, { kind: 'comma or close', close: ']' },
     { kind: 'closing quote, no line break' }, { kind: 'escape' }, { kind: 'closing quote' }, { kind: 'end of text' }, { kind: 'less nesting' },
