@@ -31,8 +31,13 @@ const prose = (text: string) => text.replace(/"[^"]*"/g, ' ');
 /** A text without web addresses: a field's example (https://school.example) is in no language. */
 const withoutAddresses = (text: string) => text.replace(/\bhttps?:\/\/\S+/g, ' ');
 
-/** Words Dutch uses too (in the Dutch catalogue or a Dutch level text): "lens", "pixel", "ray tracer". */
-const dutchWords = new Set([...catalogue.flatMap((message) => message.nl.map(prose)), ...dutchLevelTexts].flatMap(words));
+/**
+ * Words Dutch uses too (in the Dutch catalogue or a Dutch level text): "lens", "pixel", "ray
+ * tracer"; and each language's own name, which a language choice shows as it is in any
+ * language ("English" beside "Nederlands" on the teacher page).
+ */
+const LANGUAGE_NAMES = 'English Nederlands';
+const dutchWords = new Set([...catalogue.flatMap((message) => message.nl.map(prose)), ...dutchLevelTexts, LANGUAGE_NAMES].flatMap(words));
 /** The English-only words of the UI: what may not show in Dutch. */
 const englishOnly = new Set(catalogue.flatMap((message) => message.en).flatMap(words).filter((word) => !dutchWords.has(word)));
 
