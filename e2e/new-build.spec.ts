@@ -73,7 +73,7 @@ test.describe('with the offline copy', () => {
     expect(await buildScript(page)).toBe(oldScript);
     // Nothing the old tab asked for was missing; the server was asked for the new build once.
     expect(server.requests.slice(switched).filter((request) => request.status !== 200)).toEqual([]);
-    expect(server.requests.slice(switched).filter((request) => /rt-teacher-page-\w+B\.js$/.test(request.path))).toHaveLength(1);
+    expect(server.requests.slice(switched).filter((request) => /rt-teacher-page-[\w-]+B\.js$/.test(request.path))).toHaveLength(1);
 
     // With every tab of the old build closed, a new tab runs the new build, its teacher page too.
     await page.close();
