@@ -138,7 +138,10 @@ test('a sandbox edit is there after the page is reloaded or closed a moment afte
   expect(after.objects.find((object) => object.id === id)?.position).toEqual([1.25, 0.5, -0.75]);
 
   await dispatch({ type: 'object.changed', id, changes: { position: [2, 0.5, 2] } }, true);
+  // With runBeforeUnload, close() returns before the page has gone: wait for its pagehide to run.
+  const closed = page.waitForEvent('close');
   await page.close({ runBeforeUnload: true });
+  await closed;
   const again = await context.newPage();
   await again.goto('./#free-lab');
   await expect(again.locator('rt-file-panel')).toBeVisible();
