@@ -33,7 +33,18 @@ function dist(appBytes: number): string {
   for (const [file, content] of Object.entries(files)) writeFileSync(join(dir, file), content);
   const manifest: Manifest = {
     'index.html': { file: 'assets/index.js', isEntry: true, dynamicImports: ['src/app.ts'] },
-    'src/app.ts': { file: 'assets/app.js', imports: ['_shared.js'], dynamicImports: ['src/locales/nl.ts', 'src/i18n/issue-translation.ts', 'virtual:level-texts/en', 'virtual:level-texts/nl', 'src/view.ts', 'src/dashboard.ts'] },
+    'src/app.ts': {
+      file: 'assets/app.js',
+      imports: ['_shared.js'],
+      dynamicImports: [
+        'src/locales/nl.ts',
+        'src/i18n/issue-translation.ts',
+        'virtual:level-texts/en',
+        'virtual:level-texts/nl',
+        'src/view.ts',
+        'src/dashboard.ts',
+      ],
+    },
     'virtual:level-texts/en': { file: 'assets/levels-en.js' },
     'virtual:level-texts/nl': { file: 'assets/levels-nl.js' },
     'src/i18n/issue-translation.ts': { file: 'assets/issue-translation.js', imports: ['_shared.js'] },
