@@ -7,8 +7,9 @@ import { localIssue } from './local-reason.ts';
  * (local-reason.ts). Reasons not coded yet come as English text (the level rules, goals,
  * progress and assignment checks, which `rt validate` prints as they are): the app reads
  * each by its English pattern and says it again through msg() (issue-translation.ts and the
- * pattern lists it gathers). Those patterns are loaded together with a translation of the
- * app (locale.ts), so the English first load does without them.
+ * pattern lists it gathers). Those patterns load after a translation of the app (locale.ts),
+ * not with the first screen: until they have, and always in English, such a reason is shown
+ * as it was written.
  */
 
 interface Translation {
@@ -18,7 +19,10 @@ interface Translation {
 
 let translate: Translation | null = null;
 
-/** Loads the patterns; awaited with the catalogue of a language other than English. */
+/** The window event sent once the patterns have loaded, so a reason on screen is said again. */
+export const ISSUE_TEXTS_LOADED = 'rt-issue-texts-loaded';
+
+/** Loads the patterns; asked for once a language other than English is in use. */
 export async function loadIssueTranslation(): Promise<void> {
   if (translate) return;
   const { translateIssue, reasonText } = await import('./issue-translation.ts');

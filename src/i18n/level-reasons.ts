@@ -28,27 +28,45 @@ export const LEVEL_REASONS: readonly Rule[] = [
   // Goals and their conditions (goal.ts, condition.ts).
   [
     /^a level's own view is applied by the app, not done by the learner: no goal can wait for it$/,
-    () => msg('a level\'s own view is applied by the app, not done by the learner: no goal can wait for it'),
+    () => msg("a level's own view is applied by the app, not done by the learner: no goal can wait for it"),
   ],
   [/^a (".*") action has no fields$/, (event) => msg(str`a ${event} action has no fields`)],
   [/^a (".*") action has (.+)$/, (event, fields) => msg(str`a ${event} action has ${fields}`)],
   [/^(".*") compares numbers, got (.+)$/, (op, got) => msg(str`${op} compares numbers, got ${got}`)],
-  [/^must be a goal: an object with one of the fields (.+), got (.+)$/, (names, got) => msg(str`must be a goal: an object with one of the fields ${names}, got ${value(got)}`)],
-  [/^a (".*") goal is a task's whole goal; it cannot be inside "all" or "any"$/, (kind) => msg(str`a ${kind} goal is a task's whole goal; it cannot be inside "all" or "any"`)],
+  [
+    /^must be a goal: an object with one of the fields (.+), got (.+)$/,
+    (names, got) => msg(str`must be a goal: an object with one of the fields ${names}, got ${value(got)}`),
+  ],
+  [
+    /^a (".*") goal is a task's whole goal; it cannot be inside "all" or "any"$/,
+    (kind) => msg(str`a ${kind} goal is a task's whole goal; it cannot be inside "all" or "any"`),
+  ],
   [/^must have only one of the fields (.+), got (.+)$/, (names, present) => msg(str`must have only one of the fields ${names}, got ${joinedByAnd(present)}`)],
   [/^must have one of the fields (.+)$/, (names) => msg(str`must have one of the fields ${names}`)],
   [/^mixes comparisons \((.*)\) with fields \((.*)\)$/, (ops, fields) => msg(str`mixes comparisons (${ops}) with fields (${fields})`)],
 
   // State paths (state-path.ts): the path and its pieces are quoted as written.
-  [/^must start with a field name, like "scene\.settings\.shadows", got (.+)$/, (got) => msg(str`must start with a field name, like "scene.settings.shadows", got ${got}`)],
-  [/^cannot read (".*") from (".*") on: write \.field, \[0\] or \[id=name\]$/, (path, rest) => msg(str`cannot read ${path} from ${rest} on: write .field, [0] or [id=name]`)],
-  [/^(\S*) is a list: use \[0\], \[id=…\] or \.length, not \.(\S+)$/, (place, field) => msg(str`${place} is a list: use [0], [id=…] or .length, not .${field}`)],
+  [
+    /^must start with a field name, like "scene\.settings\.shadows", got (.+)$/,
+    (got) => msg(str`must start with a field name, like "scene.settings.shadows", got ${got}`),
+  ],
+  [
+    /^cannot read (".*") from (".*") on: write \.field, \[0\] or \[id=name\]$/,
+    (path, rest) => msg(str`cannot read ${path} from ${rest} on: write .field, [0] or [id=name]`),
+  ],
+  [
+    /^(\S*) is a list: use \[0\], \[id=…\] or \.length, not \.(\S+)$/,
+    (place, field) => msg(str`${place} is a list: use [0], [id=…] or .length, not .${field}`),
+  ],
   [/^no field (".*") in (\S+) \(it has (.*)\)$/, (field, place, fields) => msg(str`no field ${field} in ${place} (it has ${fields})`)],
   [/^no field (".*") \(it has (.*)\)$/, (field, fields) => msg(str`no field ${field} (it has ${fields})`)],
-  [/^(\S*) is (a \w+): it has no field (".*")$/, (place, kind, field) => {
-    const type = typeName(kind);
-    return type === null ? null : msg(str`${place} is ${type}: it has no field ${field}`);
-  }],
+  [
+    /^(\S*) is (a \w+): it has no field (".*")$/,
+    (place, kind, field) => {
+      const type = typeName(kind);
+      return type === null ? null : msg(str`${place} is ${type}: it has no field ${field}`);
+    },
+  ],
   [/^(\S*) is not a list, so (\[.*\]) cannot select from it$/, (place, step) => msg(str`${place} is not a list, so ${step} cannot select from it`)],
 
   // Views (declared-view-schema.ts), evidence (task-evidence-schema.ts) and option changes (option-changes.ts, lab-action-schema.ts).
@@ -61,8 +79,11 @@ export const LEVEL_REASONS: readonly Rule[] = [
   ],
   [/^must be an object of fields to change, got (.+)$/, (got) => msg(str`must be an object of fields to change, got ${value(got)}`)],
   [/^unknown field (".*") \(known: (.*)\)$/, (field, known) => msg(str`unknown field ${field} (known: ${known})`)],
-  [/^(\S+) must be (a \w+), got (.+)$/, (field, kind, got) => {
-    const type = typeName(kind);
-    return type === null ? null : msg(str`${field} must be ${type}, got ${value(got)}`);
-  }],
+  [
+    /^(\S+) must be (a \w+), got (.+)$/,
+    (field, kind, got) => {
+      const type = typeName(kind);
+      return type === null ? null : msg(str`${field} must be ${type}, got ${value(got)}`);
+    },
+  ],
 ];

@@ -195,11 +195,11 @@ function localJsonExpected(expected: JsonExpected): string {
       return msg(str`"${one}" or "${other}"`);
     }
     case 'closing quote, no line break':
-      return msg('a closing \'"\' (write a line break inside a string as \\n)');
+      return msg("a closing '\"' (write a line break inside a string as \\n)");
     case 'escape':
       return msg('an escape such as \\n, \\" or \\u00e9');
     case 'closing quote':
-      return msg('a closing \'"\'');
+      return msg("a closing '\"'");
     case 'end of text':
       return msg('the end of the text');
     case 'less nesting':

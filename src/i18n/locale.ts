@@ -1,7 +1,7 @@
 import { configureLocalization } from '@lit/localize';
 import { sourceLocale, targetLocales } from '../locales/locale-codes.ts';
 import type { Locale } from '../quest/localized-text.ts';
-import { loadIssueTranslation } from './issue-text.ts';
+import { ISSUE_TEXTS_LOADED, loadIssueTranslation } from './issue-text.ts';
 import { pickLocale, readRememberedLocale, rememberLocale } from './locale-choice.ts';
 import { LazyModule } from '../util/lazy-module.ts';
 
@@ -13,16 +13,16 @@ import { LazyModule } from '../util/lazy-module.ts';
  */
 
 /**
- * The Dutch messages, and the Dutch patterns for the reasons a file is refused (issue-text.ts):
- * tried a few times, then failed for good (a tab of a build that a newer one replaced,
- * offline): the app goes on in English and says so (src/ui/controls/locale-problem.ts).
+ * The Dutch messages: tried a few times, then failed for good (a tab of a build that a newer
+ * one replaced, offline): the app goes on in English and says so
+ * (src/ui/controls/locale-problem.ts).
  */
-const dutchTexts = new LazyModule(() => Promise.all([import('../locales/nl.ts'), loadIssueTranslation()]));
+const dutchTexts = new LazyModule(() => import('../locales/nl.ts'));
 
 const localization = configureLocalization({
   sourceLocale,
   targetLocales,
-  loadLocale: async () => (await dutchTexts.load())[0],
+  loadLocale: () => dutchTexts.load(),
 });
 
 /** Why the Dutch texts could not be loaded (the browser's words), or null while they could be or were not asked for. */
@@ -50,6 +50,15 @@ export async function useLocale(locale: Locale): Promise<Locale> {
     console.error(`The ${locale} texts could not be loaded`, error);
   }
   document.documentElement.lang = currentLocale();
+  // The reasons a refused file is said for (issue-text.ts) are rare: their patterns load after
+  // the first screen, and a reason on screen before they arrive is said again once they have
+  // (each element renders again on this event, src/ui/controls/localized-element.ts).
+  if (currentLocale() !== 'en') {
+    loadIssueTranslation().then(
+      () => window.dispatchEvent(new Event(ISSUE_TEXTS_LOADED)),
+      (error: unknown) => console.warn('The translated reasons could not be loaded; they are shown in English', error),
+    );
+  }
   return currentLocale();
 }
 

@@ -31,8 +31,16 @@ interface Problem {
 export function levelRules(level: Level): Issue[] {
   const sample = sampleState(level.scene);
   const problems = [
-    ...listedOnce(level.tasks.map((task) => task.id), ['tasks'], 'id'),
-    ...listedOnce(level.badges.map((badge) => badge.id), ['badges'], 'id'),
+    ...listedOnce(
+      level.tasks.map((task) => task.id),
+      ['tasks'],
+      'id',
+    ),
+    ...listedOnce(
+      level.badges.map((badge) => badge.id),
+      ['badges'],
+      'id',
+    ),
     ...listedOnce(level.ui.panels, ['ui', 'panels']),
     ...mandatoryCount(level),
     ...level.tasks.flatMap((_, index) => taskProblems(level, index, sample)),

@@ -33,9 +33,7 @@ export const alsoWhenFieldsFail = { when: (payload: z.core.ParsePayload) => isRe
 
 /** The view direction is target − position; the same point gives no direction at all. */
 export const cameraHasDirection: Rule = (camera) =>
-  isSamePoint(camera.position, camera.target)
-    ? [{ path: ['target'], input: camera.target, reason: { code: 'targetIsPosition' } }]
-    : [];
+  isSamePoint(camera.position, camera.target) ? [{ path: ['target'], input: camera.target, reason: { code: 'targetIsPosition' } }] : [];
 
 /** `mesh` names the model of a `shape: "mesh"` object and means nothing on any other. */
 export const meshOnlyOnMeshes: Rule = (object) => {
@@ -88,10 +86,13 @@ export const primaryRaysWithinLimit: Rule = (scene) => {
   if (rays <= most) return [];
   const path = k > 1 ? ['settings', 'timeSamples'] : n > 1 ? ['camera', 'lensSamples'] : ['settings', 'supersampling'];
   const input = k > 1 ? k : n > 1 ? n : s;
-  return [{
-    path, input,
-    reason: { code: 'tooManyRays', supersampling: s, lensSamples: n, timeSamples: k, rays, most },
-  }];
+  return [
+    {
+      path,
+      input,
+      reason: { code: 'tooManyRays', supersampling: s, lensSamples: n, timeSamples: k, rays, most },
+    },
+  ];
 };
 
 /**

@@ -147,11 +147,11 @@ export function englishJsonExpected(expected: JsonExpected): string {
     case 'comma or close':
       return `"," or "${expected.close}"`;
     case 'closing quote, no line break':
-      return 'a closing \'"\' (write a line break inside a string as \\n)';
+      return "a closing '\"' (write a line break inside a string as \\n)";
     case 'escape':
       return 'an escape such as \\n, \\" or \\u00e9';
     case 'closing quote':
-      return 'a closing \'"\'';
+      return "a closing '\"'";
     case 'end of text':
       return 'the end of the text';
     case 'less nesting':

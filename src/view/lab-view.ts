@@ -558,7 +558,11 @@ export class LabView {
     const trace = this.traceOf(pixel);
     const node = trace ? followRayPath(trace, path) : null;
     if (!node) return null;
-    const points = rayEvidence(node, (point) => this.projectToView(point), (point) => hiddenFrom(this.camera.position, point, [this.objects.group]));
+    const points = rayEvidence(
+      node,
+      (point) => this.projectToView(point),
+      (point) => hiddenFrom(this.camera.position, point, [this.objects.group]),
+    );
     return { drawnAs: rayColorKey(node.type, node.hit, node.untested), points };
   }
 
@@ -588,7 +592,8 @@ export class LabView {
       for (let x = 0; x < cssWidth; x++) {
         // readPixels rows run bottom-up.
         const i = ((height - 1 - Math.floor(y * ratio)) * width + Math.floor(x * ratio)) * 4;
-        const change = Math.abs(frames[0]![i]! - frames[1]![i]!) + Math.abs(frames[0]![i + 1]! - frames[1]![i + 1]!) + Math.abs(frames[0]![i + 2]! - frames[1]![i + 2]!);
+        const change =
+          Math.abs(frames[0]![i]! - frames[1]![i]!) + Math.abs(frames[0]![i + 1]! - frames[1]![i + 1]!) + Math.abs(frames[0]![i + 2]! - frames[1]![i + 2]!);
         mask[y * cssWidth + x] = change > COVERAGE_CHANGE ? 1 : 0;
       }
     }
@@ -651,11 +656,7 @@ export class LabView {
     if (state.scene !== previous?.scene || state.selectedPixel !== previous.selectedPixel) {
       this.distribution.sync(state.scene, (id) => this.objects.objectOf(id), state.selectedPixel);
     }
-    if (
-      state.scene !== previous?.scene ||
-      state.selectedPixel !== previous.selectedPixel ||
-      state.rays.showSamplePoints !== previous.rays.showSamplePoints
-    ) {
+    if (state.scene !== previous?.scene || state.selectedPixel !== previous.selectedPixel || state.rays.showSamplePoints !== previous.rays.showSamplePoints) {
       this.cameraScreen.sync({
         camera: state.scene.camera,
         settings: state.scene.settings,

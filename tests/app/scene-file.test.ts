@@ -45,7 +45,9 @@ describe('scene files', () => {
     const level = JSON.parse(readFileSync('levels/01-introduction.level.json', 'utf8'));
     const read = readSceneFile(JSON.stringify(level));
     expect(read.ok && read.scene.objects.length).toBeGreaterThan(0);
-    expect(linesOf(readSceneFile(JSON.stringify({ ...level, scene: { version: 1, camera: { fov: 500 } } })))).toEqual([expect.stringMatching(/^scene\.camera\.fov: /)]);
+    expect(linesOf(readSceneFile(JSON.stringify({ ...level, scene: { version: 1, camera: { fov: 500 } } })))).toEqual([
+      expect.stringMatching(/^scene\.camera\.fov: /),
+    ]);
     expect(linesOf(readSceneFile(JSON.stringify({ ...level, scene: 3 })))).toEqual(['scene: must be an object, got 3']);
   });
 });

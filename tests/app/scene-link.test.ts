@@ -44,7 +44,10 @@ describe('scene links', () => {
   });
 
   it('checks what the link holds: JSON, then the scene', async () => {
-    expect(await decodeSceneLink(`#/s/${await deflate('{"version": 1,')}`)).toMatchObject({ ok: false, errors: [{ path: '(root)', reason: { code: 'notJson' } }] });
+    expect(await decodeSceneLink(`#/s/${await deflate('{"version": 1,')}`)).toMatchObject({
+      ok: false,
+      errors: [{ path: '(root)', reason: { code: 'notJson' } }],
+    });
     expect(await decodeSceneLink(`#/s/${await deflate('{"version": 1, "settings": {"supersampling": 40}}')}`)).toMatchObject({
       ok: false,
       errors: [{ path: 'settings.supersampling' }],

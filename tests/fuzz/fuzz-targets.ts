@@ -52,7 +52,10 @@ const firstLevel = JSON.parse(levelFiles.get('01-introduction.level.json') ?? '{
 const defaultSurvey = JSON.parse(readFileSync(new URL('../../src/classroom/surveys/default.survey.json', import.meta.url), 'utf8')) as unknown;
 
 /** A reason line, or an issue (src/util/issue.ts) whose English line says something. */
-const isReason = (reason: unknown) => (typeof reason === 'string' ? reason.length > 0 : isRecord(reason) && typeof reason.path !== 'undefined' && isRecord(reason.reason) && issueLine(reason as unknown as Issue).length > 0);
+const isReason = (reason: unknown) =>
+  typeof reason === 'string'
+    ? reason.length > 0
+    : isRecord(reason) && typeof reason.path !== 'undefined' && isRecord(reason.reason) && issueLine(reason as unknown as Issue).length > 0;
 const isReasons = (value: unknown) => Array.isArray(value) && value.length > 0 && value.every(isReason);
 
 /** A parse result of the `{ ok, errors }` shape, judged. */
@@ -170,7 +173,10 @@ export function inputsFor(target: FuzzTarget): fc.Arbitrary<FuzzInput> {
   const text = (value: string): FuzzInput => ({ text: value, raw: false });
   return fc.oneof(
     { weight: 1, arbitrary: fc.constant(text(sampleText)) },
-    { weight: 10, arbitrary: fc.tuple(fc.nat(), changeArbitrary).map(([pick, change]) => text(JSON.stringify(changed(target.sample, pick, change)) ?? 'null')) },
+    {
+      weight: 10,
+      arbitrary: fc.tuple(fc.nat(), changeArbitrary).map(([pick, change]) => text(JSON.stringify(changed(target.sample, pick, change)) ?? 'null')),
+    },
     { weight: 2, arbitrary: fc.nat({ max: sampleText.length }).map((cut) => text(sampleText.slice(0, cut))) },
     { weight: 2, arbitrary: fc.json({ maxDepth: 4 }).map(text) },
     { weight: 1, arbitrary: fc.string({ maxLength: 200 }).map((value): FuzzInput => ({ text: value, raw: true })) },

@@ -11,9 +11,14 @@ const GOTS: Got[] = [{ kind: 'nothing' }, { kind: 'list', length: 1 }, { kind: '
 /** Some reasons of every code: a code missing here fails to compile. */
 const SAMPLES: { [Code in ReasonCode]: Extract<Reason, { code: Code }>[] } = {
   required: [{ code: 'required' }],
-  wrongType: (['number', 'string', 'boolean', 'object', 'array'] as const).flatMap((expected) => GOTS.map((got) => ({ code: 'wrongType' as const, expected, got }))),
+  wrongType: (['number', 'string', 'boolean', 'object', 'array'] as const).flatMap((expected) =>
+    GOTS.map((got) => ({ code: 'wrongType' as const, expected, got })),
+  ),
   wrongTypeNamed: [{ code: 'wrongTypeNamed', expected: 'bigint', got: GOTS[4]! }],
-  notAllowed: [{ code: 'notAllowed', allowed: ['1'], got: { kind: 'literal', text: '2' } }, { code: 'notAllowed', allowed: ['point', 'spot'], got: GOTS[0]! }],
+  notAllowed: [
+    { code: 'notAllowed', allowed: ['1'], got: { kind: 'literal', text: '2' } },
+    { code: 'notAllowed', allowed: ['point', 'spot'], got: GOTS[0]! },
+  ],
   empty: [{ code: 'empty' }],
   tooLong: [{ code: 'tooLong', most: 80 }],
   tooFewItems: [{ code: 'tooFewItems', least: 1, got: GOTS[2]! }],
@@ -22,12 +27,23 @@ const SAMPLES: { [Code in ReasonCode]: Extract<Reason, { code: Code }>[] } = {
   tooBig: [{ code: 'tooBig', most: 64, got: GOTS[1]! }],
   notWhole: [{ code: 'notWhole', got: { kind: 'literal', text: '2.5' } }],
   outOfRange: [{ code: 'outOfRange', lowest: 1, highest: 179, got: { kind: 'literal', text: '400' } }],
-  notListOf: (['numbers', 'whole numbers', 'positive numbers', 'numbers between 0 and 1'] as const).map((items) => ({ code: 'notListOf' as const, length: 3, items, got: GOTS[2]! })),
-  unknownFields: [{ code: 'unknownFields', names: ['samples'] }, { code: 'unknownFields', names: ['colour', 'visible'] }],
+  notListOf: (['numbers', 'whole numbers', 'positive numbers', 'numbers between 0 and 1'] as const).map((items) => ({
+    code: 'notListOf' as const,
+    length: 3,
+    items,
+    got: GOTS[2]!,
+  })),
+  unknownFields: [
+    { code: 'unknownFields', names: ['samples'] },
+    { code: 'unknownFields', names: ['colour', 'visible'] },
+  ],
   targetIsPosition: [{ code: 'targetIsPosition' }],
   meshRequired: [{ code: 'meshRequired', meshes: ['teapot', 'bunny'] }],
   meshNotAllowed: [{ code: 'meshNotAllowed' }],
-  idReused: [{ code: 'idReused', id: 'ball', uses: 2 }, { code: 'idReused', id: 'ball', uses: 3 }],
+  idReused: [
+    { code: 'idReused', id: 'ball', uses: 2 },
+    { code: 'idReused', id: 'ball', uses: 3 },
+  ],
   tooManyRays: [{ code: 'tooManyRays', supersampling: 8, lensSamples: 8, timeSamples: 1, rays: 4096, most: 1024 }],
   fileTooLarge: [{ code: 'fileTooLarge', kilobytes: 3000, most: 2048 }],
   usedMoreThanOnce: [{ code: 'usedMoreThanOnce', value: 'orbit' }],
@@ -35,7 +51,10 @@ const SAMPLES: { [Code in ReasonCode]: Extract<Reason, { code: Code }>[] } = {
   solutionRequired: [{ code: 'solutionRequired' }],
   hintRequired: [{ code: 'hintRequired' }],
   viewInSolution: [{ code: 'viewInSolution' }],
-  solutionNotAllowed: [{ code: 'solutionNotAllowed', kind: 'quiz' }, { code: 'solutionNotAllowed', kind: 'info' }],
+  solutionNotAllowed: [
+    { code: 'solutionNotAllowed', kind: 'quiz' },
+    { code: 'solutionNotAllowed', kind: 'info' },
+  ],
   infoNotMandatory: [{ code: 'infoNotMandatory' }],
   panelNotShown: [{ code: 'panelNotShown', target: 'light.intensity', panel: 'light' }],
   controlHidden: [{ code: 'controlHidden', target: 'tracer.pixels', panel: 'tracer' }],
@@ -50,9 +69,25 @@ const SAMPLES: { [Code in ReasonCode]: Extract<Reason, { code: Code }>[] } = {
   levelIdMismatch: [{ code: 'levelIdMismatch', id: 'shading', got: 'shading-copy' }],
   chapterMismatch: [{ code: 'chapterMismatch', chapter: 'light', got: 'rays' }],
   notJson: [
-    { kind: 'value' }, { kind: 'field name' }, { kind: 'colon' }, { kind: 'comma or close', close: '}' }, { kind: 'comma or close', close: ']' },
-    { kind: 'closing quote, no line break' }, { kind: 'escape' }, { kind: 'closing quote' }, { kind: 'end of text' }, { kind: 'less nesting' },
-  ].flatMap((expected) => [null, '}'].map((found) => ({ code: 'notJson' as const, line: 2, column: 13, expected: expected as Extract<Reason, { code: 'notJson' }>['expected'], found }))),
+    { kind: 'value' },
+    { kind: 'field name' },
+    { kind: 'colon' },
+    { kind: 'comma or close', close: '}' },
+    { kind: 'comma or close', close: ']' },
+    { kind: 'closing quote, no line break' },
+    { kind: 'escape' },
+    { kind: 'closing quote' },
+    { kind: 'end of text' },
+    { kind: 'less nesting' },
+  ].flatMap((expected) =>
+    [null, '}'].map((found) => ({
+      code: 'notJson' as const,
+      line: 2,
+      column: 13,
+      expected: expected as Extract<Reason, { code: 'notJson' }>['expected'],
+      found,
+    })),
+  ),
   worded: [{ code: 'worded', text: 'a reason not coded yet' }],
 };
 
@@ -60,7 +95,11 @@ const ALL: Reason[] = Object.values(SAMPLES).flat();
 
 describe('coded reasons in English', () => {
   it('are the same words in the app as in rt validate, for every code', () => {
-    for (const reason of ALL) expect(localReason(reason, (text) => text), reason.code).toBe(englishReason(reason));
+    for (const reason of ALL)
+      expect(
+        localReason(reason, (text) => text),
+        reason.code,
+      ).toBe(englishReason(reason));
   });
 
   it('say the lines the docs quote', () => {

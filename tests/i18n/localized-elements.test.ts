@@ -32,7 +32,9 @@ function chain(name: string): string[] {
 }
 
 describe('elements and the language', () => {
-  const registered = sources.flatMap(({ path, text }) => [...text.matchAll(/customElements\.define\('([\w-]+)', (\w+)\)/g)].map((match) => ({ path, tag: match[1]!, name: match[2]! })));
+  const registered = sources.flatMap(({ path, text }) =>
+    [...text.matchAll(/customElements\.define\('([\w-]+)', (\w+)\)/g)].map((match) => ({ path, tag: match[1]!, name: match[2]! })),
+  );
 
   it('finds the elements the app registers', () => {
     expect(registered.length).toBeGreaterThan(40);
@@ -40,7 +42,9 @@ describe('elements and the language', () => {
   });
 
   it('has every registered element derive from LocalizedElement', () => {
-    const missing = registered.filter(({ name }) => !chain(name).includes('LocalizedElement')).map(({ path, tag, name }) => `${path}: ${tag} (${chain(name).join(' < ')})`);
+    const missing = registered
+      .filter(({ name }) => !chain(name).includes('LocalizedElement'))
+      .map(({ path, tag, name }) => `${path}: ${tag} (${chain(name).join(' < ')})`);
     expect(missing).toEqual([]);
   });
 

@@ -17,18 +17,23 @@ describe('scene problems as data', () => {
       version: 1,
       camera: { fov: 400, position: [0, 1, 5], target: [0, 1, 5], lensSamples: 8 },
       settings: { maxDepth: 'deep', supersampling: 8, samples: 4 },
-      objects: [{ id: 'ball', position: [0, 1] }, { id: 'ball', shape: 'sphere', mesh: 'teapot' }],
+      objects: [
+        { id: 'ball', position: [0, 1] },
+        { id: 'ball', shape: 'sphere', mesh: 'teapot' },
+      ],
     });
-    expect(errors).toEqual(expect.arrayContaining([
-      { path: 'camera.fov', reason: { code: 'outOfRange', lowest: 1, highest: 179, got: { kind: 'literal', text: '400' } } },
-      { path: 'camera.target', reason: { code: 'targetIsPosition' } },
-      { path: 'settings.maxDepth', reason: { code: 'wrongType', expected: 'number', got: { kind: 'literal', text: '"deep"' } } },
-      { path: 'settings', reason: { code: 'unknownFields', names: ['samples'] } },
-      { path: 'objects[0].position', reason: { code: 'notListOf', length: 3, items: 'numbers', got: { kind: 'list', length: 2 } } },
-      { path: 'objects[1].id', reason: { code: 'idReused', id: 'ball', uses: 2 } },
-      { path: 'objects[1].mesh', reason: { code: 'meshNotAllowed' } },
-      { path: 'camera.lensSamples', reason: { code: 'tooManyRays', supersampling: 8, lensSamples: 8, timeSamples: 1, rays: 4096, most: 1024 } },
-    ]));
+    expect(errors).toEqual(
+      expect.arrayContaining([
+        { path: 'camera.fov', reason: { code: 'outOfRange', lowest: 1, highest: 179, got: { kind: 'literal', text: '400' } } },
+        { path: 'camera.target', reason: { code: 'targetIsPosition' } },
+        { path: 'settings.maxDepth', reason: { code: 'wrongType', expected: 'number', got: { kind: 'literal', text: '"deep"' } } },
+        { path: 'settings', reason: { code: 'unknownFields', names: ['samples'] } },
+        { path: 'objects[0].position', reason: { code: 'notListOf', length: 3, items: 'numbers', got: { kind: 'list', length: 2 } } },
+        { path: 'objects[1].id', reason: { code: 'idReused', id: 'ball', uses: 2 } },
+        { path: 'objects[1].mesh', reason: { code: 'meshNotAllowed' } },
+        { path: 'camera.lensSamples', reason: { code: 'tooManyRays', supersampling: 8, lensSamples: 8, timeSamples: 1, rays: 4096, most: 1024 } },
+      ]),
+    );
     expect(errors.filter((error) => error.reason.code === 'worded')).toEqual([]);
   });
 

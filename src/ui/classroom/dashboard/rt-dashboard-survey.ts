@@ -106,8 +106,9 @@ export class RtDashboardSurvey extends LocalizedElement {
             </tbody>
           </table>`,
         )}
-        ${survey.numbers.length
-          ? html`<table>
+        ${
+          survey.numbers.length
+            ? html`<table>
               <caption>
                 <h3>${msg('Numbers')}</h3>
               </caption>
@@ -130,7 +131,8 @@ export class RtDashboardSurvey extends LocalizedElement {
                 )}
               </tbody>
             </table>`
-          : null}
+            : null
+        }
       </div>
       ${survey.texts.map(
         (question) => html`<details>
