@@ -1,5 +1,5 @@
 import { msg, str } from '@lit/localize';
-import type { Got, Issue, JsonExpected, ListItems, Reason, ValueType } from '../util/issue.ts';
+import type { Got, Issue, JsonExpected, ListItems, PlainType, Reason, ValueType } from '../util/issue.ts';
 import { quotedNames } from '../util/issue.ts';
 
 /**
@@ -122,6 +122,117 @@ export function localReason(reason: Reason, sayWorded: (text: string) => string)
       const found = reason.found === null ? msg('the end of the text') : JSON.stringify(reason.found);
       return msg(str`not valid JSON at line ${line}, column ${column}: expected ${localJsonExpected(reason.expected)}, found ${found}`);
     }
+    case 'appOnlyAction':
+      return msg("a level's own view is applied by the app, not done by the learner: no goal can wait for it");
+    case 'actionFields': {
+      const event = `"${reason.event}"`;
+      return reason.fields.length === 0 ? msg(str`a ${event} action has no fields`) : msg(str`a ${event} action has ${reason.fields.join(', ')}`);
+    }
+    case 'comparesNumbers': {
+      const op = `"${reason.op}"`;
+      return msg(str`${op} compares numbers, got ${reason.got}`);
+    }
+    case 'notAGoal':
+      return msg(str`must be a goal: an object with one of the fields ${reason.fields.join(', ')}, got ${localGot(reason.got)}`);
+    case 'goalStandsAlone': {
+      const kind = `"${reason.kind}"`;
+      return msg(str`a ${kind} goal is a task's whole goal; it cannot be inside "all" or "any"`);
+    }
+    case 'noGoalField':
+      return msg(str`must have one of the fields ${reason.fields.join(', ')}`);
+    case 'manyGoalFields': {
+      const present = reason.present.join(` ${msg('and')} `);
+      return msg(str`must have only one of the fields ${reason.fields.join(', ')}, got ${present}`);
+    }
+    case 'mixedCondition':
+      return msg(str`mixes comparisons (${reason.ops.join(', ')}) with fields (${reason.fields.join(', ')})`);
+    case 'choiceOutOfRange':
+      return msg(str`must be the position of a choice, 0 to ${reason.last}`);
+    case 'pathStart':
+      return msg(str`must start with a field name, like "scene.settings.shadows", got ${JSON.stringify(reason.path)}`);
+    case 'pathUnreadable': {
+      const [path, rest] = [JSON.stringify(reason.path), JSON.stringify(reason.rest)];
+      return msg(str`cannot read ${path} from ${rest} on: write .field, [0] or [id=name]`);
+    }
+    case 'pathIsList':
+      return msg(str`${reason.place} is a list: use [0], [id=…] or .length, not .${reason.field}`);
+    case 'pathNoField': {
+      const [field, fields] = [`"${reason.field}"`, reason.fields.join(', ')];
+      return reason.place === '' ? msg(str`no field ${field} (it has ${fields})`) : msg(str`no field ${field} in ${reason.place} (it has ${fields})`);
+    }
+    case 'pathNotObject': {
+      const field = `"${reason.field}"`;
+      return msg(str`${reason.place} is ${localPlainType(reason.type)}: it has no field ${field}`);
+    }
+    case 'pathNotList':
+      return msg(str`${reason.place} is not a list, so ${reason.step} cannot select from it`);
+    case 'notGuideTarget':
+      return msg(str`must be a control like "tracer.supersampling" or an item like "view.item:ball" (docs/levels.md lists them), got ${localGot(reason.got)}`);
+    case 'panelShownAndHidden':
+      return msg(str`the ${reason.panel} panel is in ui.panels: it cannot be hidden too`);
+    case 'panelNotListed':
+      return msg(str`the ${reason.panel} panel is not in ui.panels`);
+    case 'zeroDirection':
+      return msg('must be a direction, not [0, 0, 0]');
+    case 'frameAndCamera':
+      return msg('a view either frames things or looks through the camera, not both');
+    case 'fromWithoutFrame':
+      return msg('"from" needs a "frame" to look at');
+    case 'rayPathKinds':
+      return msg(str`must be kinds of ray joined by "/", from the camera's: "primary", then ${reason.kinds.join(', ')}`);
+    case 'notFieldChanges':
+      return msg(str`must be an object of fields to change, got ${localGot(reason.got)}`);
+    case 'unknownOption': {
+      const field = `"${reason.field}"`;
+      return msg(str`unknown field ${field} (known: ${reason.known.join(', ')})`);
+    }
+    case 'optionType':
+      return msg(str`${reason.field} must be ${localPlainType(reason.expected)}, got ${localGot(reason.got)}`);
+    case 'notKebabId': {
+      // The example is an id, the same in every language.
+      const example = 'rays-from-the-camera';
+      return msg(str`must be lower-case letters and digits joined by "-", like "${example}", got ${localGot(reason.got)}`);
+    }
+    case 'notNameText':
+      return msg(str`must be a text, or { "en": …, "nl": … } with a text per language (en is required; each at most ${reason.most} characters)`);
+    case 'notMatching':
+      return msg(str`Invalid string: must match pattern ${reason.pattern}`);
+    case 'progressKind': {
+      const [kind, got] = [`"${reason.kind}"`, `${reason.inField ? '"kind" ' : ''}${localGot(reason.got)}`];
+      return msg(str`must be ${kind} in a progress file, got ${got}`);
+    }
+    case 'progressVersion':
+      return msg(str`this app reads progress version ${reason.version}, got ${localGot(reason.got)}`);
+    case 'earlierThanBefore':
+      return msg('must not be earlier than the event before it');
+    case 'listedTwice': {
+      const id = `"${reason.id}"`;
+      return msg(str`${id} is listed more than once`);
+    }
+    case 'notAssignmentLevel': {
+      const id = `"${reason.id}"`;
+      return msg(str`${id} is not one of the assignment's levels`);
+    }
+    case 'notWebAddress':
+      return msg('must be a web address that starts with http:// or https://');
+    case 'notClassCode':
+      return msg('a class code has 1 to 32 letters, digits, - or _');
+    case 'noObject': {
+      const id = `"${reason.id}"`;
+      return msg(str`there is no object ${id}`);
+    }
+    case 'noLight': {
+      const id = `"${reason.id}"`;
+      return msg(str`there is no light ${id}`);
+    }
+    case 'pixelOffScreenAt': {
+      const got = `${reason.column},${reason.row}`;
+      return msg(str`must be inside the ${reason.columns}×${reason.rows} screen, got ${got}`);
+    }
+    case 'bvhDepth':
+      return msg(str`must be a whole number from 0 to ${reason.most}, got ${reason.got}`);
+    case 'scaleSteps':
+      return msg('max must be above min, with at most 11 steps');
     case 'worded':
       return sayWorded(reason.text);
     default:
@@ -166,6 +277,17 @@ function localValueType(type: ValueType): string {
       return msg('an object');
     case 'array':
       return msg('a list');
+  }
+}
+
+function localPlainType(type: PlainType): string {
+  switch (type) {
+    case 'number':
+      return msg('a number');
+    case 'string':
+      return msg('a string');
+    case 'boolean':
+      return msg('a boolean');
   }
 }
 

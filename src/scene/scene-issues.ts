@@ -60,6 +60,9 @@ function reasonOf(issue: z.core.$ZodRawIssue): Reason | undefined {
         return { code: 'notAllowed', allowed: allowedValues(allowed), got: gotOf(value) };
       }
       return undefined;
+    case 'invalid_format':
+      // An id that breaks its pattern (an event's in the log): zod's own words, with the pattern.
+      return issue.format === 'regex' && issue.pattern !== undefined ? { code: 'notMatching', pattern: String(issue.pattern) } : undefined;
     case 'unrecognized_keys':
       return { code: 'unknownFields', names: issue.keys.map(shortened) };
     default:

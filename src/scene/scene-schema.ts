@@ -4,7 +4,7 @@ import { MESH_ASSET_NAMES } from './mesh-assets.ts';
 import { alsoWhenFieldsFail, asRefinement, cameraHasDirection, idsAreUnique, meshOnlyOnMeshes, primaryRaysWithinLimit } from './scene-rules.ts';
 import { LIMITS } from './scene-limits.ts';
 import { numberIn, pair, triple, wholeNumberIn } from './scene-schema-parts.ts';
-import { describeIssue, issuesOf } from './scene-issues.ts';
+import { describeIssue, issuesOf, withReason } from './scene-issues.ts';
 import type { Issue } from '../util/issue.ts';
 import { jsonIssue } from '../util/json-error.ts';
 
@@ -24,7 +24,7 @@ const nameText = () => z.string().max(LIMITS.nameLength[1]);
 const name = () =>
   z
     .union([nameText(), z.strictObject({ en: nameText(), nl: nameText().optional() })], {
-      error: () => `must be a text, or { "en": …, "nl": … } with a text per language (en is required; each at most ${LIMITS.nameLength[1]} characters)`,
+      error: (issue) => withReason(issue, { code: 'notNameText', most: LIMITS.nameLength[1] }),
     })
     .optional()
     .describe('A friendly name for the UI: a text, or { "en": …, "nl": … } with one per language.');

@@ -91,8 +91,62 @@ export type Reason =
   | { code: 'levelIdMismatch'; id: string; got: string }
   | { code: 'chapterMismatch'; chapter: string; got: string }
   | { code: 'notJson'; line: number; column: number; expected: JsonExpected; found: string | null }
+  // Goals, their conditions and the state paths they read (src/quest/goal.ts, condition.ts, state-path.ts).
+  | { code: 'appOnlyAction' }
+  | { code: 'actionFields'; event: string; fields: readonly string[] }
+  /** `got` is the value as JSON writes it. */
+  | { code: 'comparesNumbers'; op: string; got: string }
+  | { code: 'notAGoal'; fields: readonly string[]; got: Got }
+  | { code: 'goalStandsAlone'; kind: string }
+  | { code: 'noGoalField'; fields: readonly string[] }
+  | { code: 'manyGoalFields'; fields: readonly string[]; present: readonly string[] }
+  | { code: 'mixedCondition'; ops: readonly string[]; fields: readonly string[] }
+  | { code: 'choiceOutOfRange'; last: number }
+  | { code: 'pathStart'; path: string }
+  | { code: 'pathUnreadable'; path: string; rest: string }
+  /** `place` is the part of the path read so far ('' at its start). */
+  | { code: 'pathIsList'; place: string; field: string }
+  | { code: 'pathNoField'; field: string; place: string; fields: readonly string[] }
+  | { code: 'pathNotObject'; place: string; type: PlainType; field: string }
+  | { code: 'pathNotList'; place: string; step: string }
+  // Guides, panels, views, evidence, option changes and ids of a level file (src/quest/level-schema.ts,
+  // declared-view-schema.ts, task-evidence-schema.ts, option-changes.ts, lab-action-schema.ts, kebab-id.ts).
+  | { code: 'notGuideTarget'; got: Got }
+  | { code: 'panelShownAndHidden'; panel: string }
+  | { code: 'panelNotListed'; panel: string }
+  | { code: 'zeroDirection' }
+  | { code: 'frameAndCamera' }
+  | { code: 'fromWithoutFrame' }
+  | { code: 'rayPathKinds'; kinds: readonly string[] }
+  | { code: 'notFieldChanges'; got: Got }
+  | { code: 'unknownOption'; field: string; known: readonly string[] }
+  | { code: 'optionType'; field: string; expected: PlainType; got: Got }
+  | { code: 'notKebabId'; got: Got }
+  | { code: 'notNameText'; most: number }
+  /** An id that must match a pattern (zod's own words, kept for files written against them). */
+  | { code: 'notMatching'; pattern: string }
+  // Saved progress, its event log and assignment links (src/quest/progress-store.ts, event-log.ts,
+  // src/classroom/assignment-schema.ts).
+  /** `inField`: the file is an object whose `kind` is `got`; else the file itself is `got`. */
+  | { code: 'progressKind'; kind: string; inField: boolean; got: Got }
+  | { code: 'progressVersion'; version: number; got: Got }
+  | { code: 'earlierThanBefore' }
+  | { code: 'listedTwice'; id: string }
+  | { code: 'notAssignmentLevel'; id: string }
+  | { code: 'notWebAddress' }
+  | { code: 'notClassCode' }
+  // A change the lab refuses (src/lab-state/lab-reducer.ts).
+  | { code: 'noObject'; id: string }
+  | { code: 'noLight'; id: string }
+  | { code: 'pixelOffScreenAt'; columns: number; rows: number; column: number; row: number }
+  | { code: 'bvhDepth'; most: number; got: number }
+  // A survey's scale (src/classroom/survey-schema.ts).
+  | { code: 'scaleSteps' }
   /** A reason not coded yet, or already worded in the app's language: shown as it is written. */
   | { code: 'worded'; text: string };
+
+/** The JavaScript types a value of the lab's state or options can have besides objects and lists. */
+export type PlainType = 'number' | 'string' | 'boolean';
 
 export type ReasonCode = Reason['code'];
 
@@ -244,6 +298,86 @@ export function englishReason(reason: Reason): string {
       return `must be "${reason.chapter}", the chapter index.json lists it in, got "${reason.got}"`;
     case 'notJson':
       return `not valid JSON at line ${reason.line}, column ${reason.column}: expected ${englishJsonExpected(reason.expected)}, found ${reason.found === null ? 'the end of the text' : JSON.stringify(reason.found)}`;
+    case 'appOnlyAction':
+      return "a level's own view is applied by the app, not done by the learner: no goal can wait for it";
+    case 'actionFields':
+      return `a "${reason.event}" action ${reason.fields.length === 0 ? 'has no fields' : `has ${reason.fields.join(', ')}`}`;
+    case 'comparesNumbers':
+      return `"${reason.op}" compares numbers, got ${reason.got}`;
+    case 'notAGoal':
+      return `must be a goal: an object with one of the fields ${reason.fields.join(', ')}, got ${englishGot(reason.got)}`;
+    case 'goalStandsAlone':
+      return `a "${reason.kind}" goal is a task's whole goal; it cannot be inside "all" or "any"`;
+    case 'noGoalField':
+      return `must have one of the fields ${reason.fields.join(', ')}`;
+    case 'manyGoalFields':
+      return `must have only one of the fields ${reason.fields.join(', ')}, got ${reason.present.join(' and ')}`;
+    case 'mixedCondition':
+      return `mixes comparisons (${reason.ops.join(', ')}) with fields (${reason.fields.join(', ')})`;
+    case 'choiceOutOfRange':
+      return `must be the position of a choice, 0 to ${reason.last}`;
+    case 'pathStart':
+      return `must start with a field name, like "scene.settings.shadows", got ${JSON.stringify(reason.path)}`;
+    case 'pathUnreadable':
+      return `cannot read ${JSON.stringify(reason.path)} from ${JSON.stringify(reason.rest)} on: write .field, [0] or [id=name]`;
+    case 'pathIsList':
+      return `${reason.place} is a list: use [0], [id=…] or .length, not .${reason.field}`;
+    case 'pathNoField':
+      return `no field "${reason.field}"${reason.place === '' ? '' : ` in ${reason.place}`} (it has ${reason.fields.join(', ')})`;
+    case 'pathNotObject':
+      return `${reason.place} is a ${reason.type}: it has no field "${reason.field}"`;
+    case 'pathNotList':
+      return `${reason.place} is not a list, so ${reason.step} cannot select from it`;
+    case 'notGuideTarget':
+      return `must be a control like "tracer.supersampling" or an item like "view.item:ball" (docs/levels.md lists them), got ${englishGot(reason.got)}`;
+    case 'panelShownAndHidden':
+      return `the ${reason.panel} panel is in ui.panels: it cannot be hidden too`;
+    case 'panelNotListed':
+      return `the ${reason.panel} panel is not in ui.panels`;
+    case 'zeroDirection':
+      return 'must be a direction, not [0, 0, 0]';
+    case 'frameAndCamera':
+      return 'a view either frames things or looks through the camera, not both';
+    case 'fromWithoutFrame':
+      return '"from" needs a "frame" to look at';
+    case 'rayPathKinds':
+      return `must be kinds of ray joined by "/", from the camera's: "primary", then ${reason.kinds.join(', ')}`;
+    case 'notFieldChanges':
+      return `must be an object of fields to change, got ${englishGot(reason.got)}`;
+    case 'unknownOption':
+      return `unknown field "${reason.field}" (known: ${reason.known.join(', ')})`;
+    case 'optionType':
+      return `${reason.field} must be a ${reason.expected}, got ${englishGot(reason.got)}`;
+    case 'notKebabId':
+      return `must be lower-case letters and digits joined by "-", like "rays-from-the-camera", got ${englishGot(reason.got)}`;
+    case 'notNameText':
+      return `must be a text, or { "en": …, "nl": … } with a text per language (en is required; each at most ${reason.most} characters)`;
+    case 'notMatching':
+      return `Invalid string: must match pattern ${reason.pattern}`;
+    case 'progressKind':
+      return `must be "${reason.kind}" in a progress file, got ${reason.inField ? '"kind" ' : ''}${englishGot(reason.got)}`;
+    case 'progressVersion':
+      return `this app reads progress version ${reason.version}, got ${englishGot(reason.got)}`;
+    case 'earlierThanBefore':
+      return 'must not be earlier than the event before it';
+    case 'listedTwice':
+      return `"${reason.id}" is listed more than once`;
+    case 'notAssignmentLevel':
+      return `"${reason.id}" is not one of the assignment's levels`;
+    case 'notWebAddress':
+      return 'must be a web address that starts with http:// or https://';
+    case 'notClassCode':
+      return 'a class code has 1 to 32 letters, digits, - or _';
+    case 'noObject':
+      return `there is no object "${reason.id}"`;
+    case 'noLight':
+      return `there is no light "${reason.id}"`;
+    case 'pixelOffScreenAt':
+      return `must be inside the ${reason.columns}×${reason.rows} screen, got ${reason.column},${reason.row}`;
+    case 'bvhDepth':
+      return `must be a whole number from 0 to ${reason.most}, got ${reason.got}`;
+    case 'scaleSteps':
+      return 'max must be above min, with at most 11 steps';
     case 'worded':
       return reason.text;
     default:

@@ -135,7 +135,7 @@ function indexReasons(): Issue[] {
 const clock = { monotonicMs: () => 0, wallMs: () => Date.parse('2026-12-01T10:00:00Z') };
 
 /** Saved progress that is not ours, of another version, and with its events out of order. */
-function progressReasons(): string[] {
+function progressReasons(): Issue[] {
   const progress = newProgress(clock) as unknown as Record<string, unknown> & { log: { events: unknown[] } };
   const event = (t: number, id: string) => ({ t, id, type: 'tab.hidden' });
   const outOfOrder = { ...progress, log: { ...progress.log, events: [event(20, 'tab.1'), event(10, 'tab.2')] } };
@@ -148,7 +148,7 @@ function progressReasons(): string[] {
 }
 
 /** An assignment link that lists a level twice, requires tasks of a level it does not list, and has a wrong class code and home page. */
-async function assignmentReasons(): Promise<string[]> {
+async function assignmentReasons(): Promise<Issue[]> {
   const assignment = {
     version: 1,
     title: 'Lesson 2',
@@ -210,13 +210,14 @@ describe('a broken level in Dutch', () => {
     ]);
   });
 
-  it('says the view and option checks in Dutch, each of several on its own', () => {
+  it('says the view and option checks in Dutch, each of several on a line of its own', () => {
     expect(reasonsOf('a view framing rays without a pixel').map(issueText)).toEqual([
       'tasks[2].view.frame: "pixel-rays" kan alleen als de weergave ook een pixel kiest ("pixel": [kolom, rij])',
     ]);
     expect(reasonsOf('a view from nowhere').map(issueText)).toEqual(['tasks[2].view.from: moet een richting zijn, niet [0, 0, 0]']);
     expect(reasonsOf('ray options with two mistakes').map(issueText)).toEqual([
-      expect.stringMatching(/^tasks\[2\]\.view\.rays: onbekend veld "glow" \(bekend zijn: showRays, .*\); hideNoHit moet true of false zijn, maar is "yes"$/),
+      expect.stringMatching(/^tasks\[2\]\.view\.rays: onbekend veld "glow" \(bekend zijn: showRays, .*\)$/),
+      'tasks[2].view.rays: hideNoHit moet true of false zijn, maar is "yes"',
     ]);
   });
 

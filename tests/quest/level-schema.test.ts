@@ -114,7 +114,8 @@ describe('field messages read `path: reason`, like scene files', () => {
     const [unknownType] = errorsOf((level) => (level.tasks[0].solution = [{ type: 'view.spun' }]));
     expect(unknownType).toMatch(/^tasks\[0\]\.solution\[0\]\.type: must be one of scene\.loaded, .*, got "view\.spun"$/);
     expect(errorsOf((level) => (level.tasks[0].solution = [{ type: 'rays.changed', changes: { hideNoHit: 'yes', glow: 1 } }]))).toEqual([
-      'tasks[0].solution[0].changes: hideNoHit must be a boolean, got "yes"; unknown field "glow" (known: showRays, hideNoHit, hideNegligible, negligibleThreshold, transparency, radius, dynamicRadius, minRadius, maxRadius, contributionColor, colorBlindPalette, animate, animationSpeed, animatePixelByPixel, loop, showSamplePoints, colorByTime)',
+      'tasks[0].solution[0].changes: hideNoHit must be a boolean, got "yes"',
+      'tasks[0].solution[0].changes: unknown field "glow" (known: showRays, hideNoHit, hideNegligible, negligibleThreshold, transparency, radius, dynamicRadius, minRadius, maxRadius, contributionColor, colorBlindPalette, animate, animationSpeed, animatePixelByPixel, loop, showSamplePoints, colorByTime)',
     ]);
   });
 

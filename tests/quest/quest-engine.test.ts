@@ -84,7 +84,7 @@ describe('playing a level', () => {
     const store = setup.open('first');
     store.dispatch({ type: 'view.orbited' });
     setup.engine.predict('predict', { choice: 1 });
-    expect(store.dispatch({ type: 'settings.changed', changes: { supersampling: 40 } })).toMatch(/^settings.supersampling/);
+    expect(store.dispatch({ type: 'settings.changed', changes: { supersampling: 40 } })).toMatchObject([{ path: 'settings.supersampling' }]);
     expect(setup.status().supersample).toBe('current');
   });
 

@@ -1,3 +1,4 @@
+import { issueText } from '../../i18n/issue-text.ts';
 import { msg, str } from '@lit/localize';
 import { ContextProvider } from '@lit/context';
 import { html, nothing, type PropertyValues } from 'lit';
@@ -255,7 +256,7 @@ export class RtLab extends LocalizedElement {
   readonly stage: ShowMeStage = {
     dispatch: (action) => {
       const error = this.store.dispatch(action);
-      if (error) this.toast(error, 'error');
+      if (error) this.toast(error.map(issueText).join('\n'), 'error');
     },
     orbit: () => this.labView()?.orbit(),
     pan: () => this.labView()?.pan(),
