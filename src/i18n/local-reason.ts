@@ -7,7 +7,7 @@ import { quotedNames } from '../util/issue.ts';
  * English is word for word what `englishReason` says (tests/i18n/local-reason.test.ts
  * checks every code). Ids, field names and the values quoted stay as the file writes them.
  */
-export function localReason(reason: Reason, sayWorded: (text: string) => string): string {
+export function localReason(reason: Reason): string {
   switch (reason.code) {
     case 'required':
       return msg('is required');
@@ -234,7 +234,7 @@ export function localReason(reason: Reason, sayWorded: (text: string) => string)
     case 'scaleSteps':
       return msg('max must be above min, with at most 11 steps');
     case 'worded':
-      return sayWorded(reason.text);
+      return reason.text;
     default:
       return unknownReason(reason);
   }
@@ -246,8 +246,8 @@ function unknownReason(reason: never): never {
 }
 
 /** `path: reason` in the app's language; paths are field names of the file and stay as written. */
-export function localIssue(issue: Issue, sayWorded: (text: string) => string): string {
-  const reason = localReason(issue.reason, sayWorded);
+export function localIssue(issue: Issue): string {
+  const reason = localReason(issue.reason);
   if (issue.path === null) return reason;
   return `${issue.path === '(root)' ? msg('(root)') : issue.path}: ${reason}`;
 }

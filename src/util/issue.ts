@@ -5,9 +5,8 @@
  * learner's language with one msg() per code (src/i18n/local-reason.ts), so nothing parses
  * English back out.
  *
- * The scene schema, its rules and the JSON reader give coded reasons. Reasons not coded yet
- * (the level rules, goals, progress and assignment checks) come as `worded`: their English
- * text, said again in the app's language by the patterns in src/i18n/issue-translation.ts.
+ * Every check of a file, a link, saved progress or a lab change gives coded reasons; `worded`
+ * is only for words that are already in the app's language (or are a name, or a browser's).
  */
 
 /**
@@ -142,7 +141,7 @@ export type Reason =
   | { code: 'bvhDepth'; most: number; got: number }
   // A survey's scale (src/classroom/survey-schema.ts).
   | { code: 'scaleSteps' }
-  /** A reason not coded yet, or already worded in the app's language: shown as it is written. */
+  /** A reason already worded in the app's language (or a browser's own words, an id): shown as it is written. */
   | { code: 'worded'; text: string };
 
 /** The JavaScript types a value of the lab's state or options can have besides objects and lists. */
@@ -400,7 +399,7 @@ export function issueLine(issue: Issue): string {
   return issue.path === null ? englishReason(issue.reason) : `${issue.path}: ${englishReason(issue.reason)}`;
 }
 
-/** An issue whose reason is already worded (a reason not coded yet, or one said in the app's language). */
+/** An issue whose reason is already worded (in the app's language, or a name that is the same in every language). */
 export function wordedIssue(path: string | null, text: string): Issue {
   return { path, reason: { code: 'worded', text } };
 }

@@ -294,6 +294,7 @@ const REASON_SOURCES = [
   'src/quest/event-log.ts',
   'src/scene/scene-rules.ts',
   'src/classroom/assignment-schema.ts',
+  'src/util/issue.ts',
 ];
 
 /**
@@ -322,9 +323,8 @@ function wordedTexts(path: string): string[][] {
   return found;
 }
 
-/** A reason as an issue (levels and the index) or as its English line (progress and assignments, not coded yet). */
-type Problem = Issue | string;
-const lineOf = (problem: Problem) => (typeof problem === 'string' ? problem : issueLine(problem));
+type Problem = Issue;
+const lineOf = (problem: Problem) => issueLine(problem);
 
 /** Every reason the mistakes above produce, once each (by its English line). */
 async function everyReason(): Promise<Problem[]> {
@@ -367,7 +367,7 @@ describe('every reason of the level, progress and assignment loaders in Dutch', 
 });
 
 describe('every reason back in English', () => {
-  it("is the loader's own line again, though the Dutch patterns are loaded", async () => {
+  it("is the loader's own line again, though the Dutch sayings are loaded", async () => {
     const problems = await everyReason();
     expect(problems.map(issueText)).toEqual(problems.map(lineOf));
   });
