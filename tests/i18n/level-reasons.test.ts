@@ -294,7 +294,6 @@ const REASON_SOURCES = [
   'src/quest/event-log.ts',
   'src/scene/scene-rules.ts',
   'src/classroom/assignment-schema.ts',
-  'src/util/issue.ts',
 ];
 
 /**
