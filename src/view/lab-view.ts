@@ -102,7 +102,7 @@ const SNAPSHOT_SAMPLES = 4;
  * from the screen tracer 10–20 ms later, wait for a second frame. Held until they come, one
  * frame shows both: in five e2e runs with the page composited on the CPU, an arrow key's
  * step went from p95 95–106 to 71–84 ms, a drag's from 64–98 to 64–68 ms and the first
- * drag's from 103–134 to 62–72 ms (docs/benchmarks.md). A 16 × 16 screen takes about 15 ms
+ * drag's from 103–134 to 62–72 ms (docs/benchmark-log.md). A 16 × 16 screen takes about 15 ms
  * to trace; a bigger one is drawn after this wait, and its rays when they come.
  */
 const RAYS_WAIT_MS = 60;
