@@ -21,7 +21,7 @@ import { loadMeshes } from '../render/load-meshes-browser.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
 import type { Store } from '../lab-state/store.ts';
-import type { Scene, Vec3 } from '../scene/scene.ts';
+import type { Vec3 } from '../scene/scene.ts';
 import { CameraScreen } from './camera-screen.ts';
 import { DistributionGizmos } from './distribution-gizmos.ts';
 import { CameraFlight } from './fly-to-camera.ts';
@@ -40,10 +40,8 @@ import { sameSelection, stateCommand, type StateCommand } from './state-commands
 import { type ArrowTarget, keyCommand, type ViewCommand } from './view-commands.ts';
 import { ViewControls } from './view-controls.ts';
 import { rayPathPoints, rayPathPointsFromHit, raySegments } from './ray-path-points.ts';
-import { followRayPath } from '../tracer/ray-path.ts';
 import { framedRaysPixel } from '../lab-state/framed-rays.ts';
-import { hiddenFrom, rayEvidence, type EvidencePoint } from './ray-evidence.ts';
-import { rayColorKey, type RayColorKey } from './ray-palette.ts';
+import { ViewProbes } from './view-probes.ts';
 import { cameraViewFov, framingPose, framingPoseAbove, type ViewPose } from './view-pose.ts';
 import { drawsInSoftware } from './software-renderer.ts';
 import { BurstResolution } from './burst-resolution.ts';
@@ -86,9 +84,6 @@ const BUTTON_ZOOM = 1.25;
 /** Nearer than this to the tracer camera's eye, its body would fill the view: hide it. */
 const INSIDE_CAMERA = 0.35;
 const SELECTION_COLOR = 0x3b82f6;
-
-/** How much (sum over RGB, 0–765) drawing the rays must change a pixel for rayCoverage to count it. */
-const COVERAGE_CHANGE = 24;
 
 /** The 3D view's own vertical field of view (degrees), which declared views frame with. */
 const VIEW_FOV = 45;
@@ -156,13 +151,8 @@ export class LabView {
   private frames = 0;
   /** The camera's pixels' latest rays (for "show its rays"). */
   private screenRays: ScreenRays | null = null;
-  /**
-   * For tests and tools: the scene whose traced rays the last drawn frame showed (null
-   * before any), so a browser test can time a slider step to its rays on screen.
-   */
-  drawnRaysScene: Scene | null = null;
-  /** For tests and tools: the scene the last drawn frame showed (its objects, lights and camera), null before any. */
-  drawnScene: Scene | null = null;
+  /** For browser tests and tools: what the view shows, read off it (view-probes.ts). */
+  readonly probes: ViewProbes;
   private sized = false;
   /** WebGL draws on a CPU rasterizer (SwiftShader, llvmpipe): no antialiasing, bursts drawn coarse, rays held to a budget while the learner edits (LabServices). */
   readonly software: boolean;
@@ -248,6 +238,19 @@ export class LabView {
       this.selectionBox,
       this.gizmo.helper,
     );
+
+    this.probes = new ViewProbes({
+      renderer: this.renderer,
+      scene: this.scene,
+      camera: this.camera,
+      rayLayer: () => this.rayLayer,
+      allRaysDrawn: () => !this.pieces?.unfinished,
+      traceOf: (pixel) => this.traceOf(pixel),
+      framedPointsOf: (name) => this.framedPointsOf(name),
+      projectToView: (point) => this.projectToView(point),
+      opaque: this.objects.group,
+      requestRender: () => this.requestRender(),
+    });
 
     this.listen(canvas, 'pointerdown', (event) => this.pointerDown(event));
     this.listen(canvas, 'pointerup', (event) => this.pointerUp(event));
@@ -519,14 +522,6 @@ export class LabView {
     this.controls.setPose(pose);
   }
 
-  /**
-   * For tests and tools: where the things a declared view frames appear on the canvas (CSS
-   * px): the points `frame` fits for `name` (view-look.ts), each projected (null behind the eye).
-   */
-  projectedPointsOf(name: string): ({ x: number; y: number } | null)[] {
-    return this.framedPointsOf(name).map((point) => this.projectToView(point));
-  }
-
   /** The world points a declared view fits for `name` (view-look.ts), from what is drawn now and the latest trace. */
   private framedPointsOf(name: string): Vec3[] {
     const pixel = framedRaysPixel(name);
@@ -538,7 +533,7 @@ export class LabView {
     return framedPoints(name, this.store.state.scene, drawn, this.cameraScreen.rig);
   }
 
-  /** For tests and tools: the chosen pixel's rays as segments on the canvas (CSS px), none without a pixel or its trace. */
+  /** The chosen pixel's rays as segments on the canvas (CSS px), none without a pixel or its trace: where the pixel preview must not cover them (preview-place.ts). */
   pixelRaySegments(): { from: { x: number; y: number }; to: { x: number; y: number } }[] {
     const trace = this.selectedTrace();
     if (!trace) return [];
@@ -547,52 +542,6 @@ export class LabView {
       const to = this.projectToView(end);
       return from && to ? [{ from, to }] : [];
     });
-  }
-
-  /**
-   * For tests and tools: the ray `path` names (tracer/ray-path.ts) in pixel `pixel`'s latest
-   * trace, chosen or not, as the legend entry it is drawn as and points along it on the canvas,
-   * each hidden or not behind an opaque object (ray-evidence.ts); null without such a ray.
-   */
-  evidenceRay(pixel: readonly [number, number], path: string): { drawnAs: RayColorKey; points: EvidencePoint[] } | null {
-    const trace = this.traceOf(pixel);
-    const node = trace ? followRayPath(trace, path) : null;
-    if (!node) return null;
-    const points = rayEvidence(node, (point) => this.projectToView(point), (point) => hiddenFrom(this.camera.position, point, [this.objects.group]));
-    return { drawnAs: rayColorKey(node.type, node.hit, node.untested), points };
-  }
-
-  /**
-   * For tests and tools: where the drawn rays show, as one byte per CSS pixel of the canvas
-   * (1 where drawing the rays changed the picture), from a frame drawn now with them and one
-   * without: what is covered or off screen counts as not shown.
-   */
-  rayCoverage(): { width: number; height: number; mask: Uint8Array } {
-    const gl = this.renderer.getContext();
-    const width = gl.drawingBufferWidth;
-    const height = gl.drawingBufferHeight;
-    const frames = [true, false].map((shown) => {
-      if (this.rayLayer) this.rayLayer.object.visible = shown;
-      this.renderer.render(this.scene, this.camera);
-      const pixels = new Uint8Array(width * height * 4);
-      gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-      return pixels;
-    });
-    if (this.rayLayer) this.rayLayer.object.visible = true;
-    this.requestRender();
-    const ratio = this.renderer.getPixelRatio();
-    const cssWidth = Math.round(width / ratio);
-    const cssHeight = Math.round(height / ratio);
-    const mask = new Uint8Array(cssWidth * cssHeight);
-    for (let y = 0; y < cssHeight; y++) {
-      for (let x = 0; x < cssWidth; x++) {
-        // readPixels rows run bottom-up.
-        const i = ((height - 1 - Math.floor(y * ratio)) * width + Math.floor(x * ratio)) * 4;
-        const change = Math.abs(frames[0]![i]! - frames[1]![i]!) + Math.abs(frames[0]![i + 1]! - frames[1]![i + 1]!) + Math.abs(frames[0]![i + 2]! - frames[1]![i + 2]!);
-        mask[y * cssWidth + x] = change > COVERAGE_CHANGE ? 1 : 0;
-      }
-    }
-    return { width: cssWidth, height: cssHeight, mask };
   }
 
   /** Where a world point appears on the canvas (CSS px from its top-left), or null behind the eye. */
@@ -726,14 +675,6 @@ export class LabView {
     this.update(this.store.state);
   }
 
-  /**
-   * For tests and tools: whether the last frame showed every instance of the ray layer (on a
-   * CPU rasterizer a heavy layer takes a piece a frame: piecewise-rays.ts).
-   */
-  get raysComplete(): boolean {
-    return !this.pieces?.unfinished;
-  }
-
   private draw(changed: boolean): void {
     if (!changed && this.pieces?.unfinished && this.rayLayer) {
       this.pieces.drawNext(this.camera, this.rayLayer);
@@ -748,8 +689,7 @@ export class LabView {
       this.pieces.drawChanged(this.scene, this.camera, this.rayLayer);
       if (this.pieces.unfinished) this.scheduler.requestMore();
     } else this.renderer.render(this.scene, this.camera);
-    this.drawnRaysScene = this.screenRays?.scene ?? null;
-    this.drawnScene = this.store.state.scene;
+    this.probes.frameDrawn(this.store.state.scene, this.screenRays?.scene ?? null);
     const thinning = this.rayLayer?.thinning ?? null;
     if (thinning?.shown !== this.drawnThinning?.shown || thinning?.of !== this.drawnThinning?.of) {
       this.drawnThinning = thinning;
