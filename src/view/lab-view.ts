@@ -6,14 +6,12 @@ import {
   GridHelper,
   Group,
   HemisphereLight,
-  LinearSRGBColorSpace,
   type Object3D,
-  PerspectiveCamera,
+  type PerspectiveCamera,
   Raycaster,
-  Scene as ThreeScene,
-  Vector2,
+  type Scene as ThreeScene,
   Vector3,
-  WebGLRenderer,
+  type WebGLRenderer,
 } from 'three';
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
@@ -25,7 +23,7 @@ import type { Vec3 } from '../scene/scene.ts';
 import { CameraScreen } from './camera-screen.ts';
 import { DistributionGizmos } from './distribution-gizmos.ts';
 import { CameraFlight } from './fly-to-camera.ts';
-import { type Animator, FrameScheduler } from './frame-scheduler.ts';
+import type { Animator } from './frame-scheduler.ts';
 import { cameraChanges, lightChanges, objectChanges } from './gizmo-changes.ts';
 import { effectiveGizmoMode, gizmoModesFor, type GizmoMode } from './gizmo-modes.ts';
 import { nudgeAction, nudgeNote, viewAxesOf } from './gizmo-nudge.ts';
@@ -43,9 +41,7 @@ import { rayPathPoints, rayPathPointsFromHit, raySegments } from './ray-path-poi
 import { framedRaysPixel } from '../lab-state/framed-rays.ts';
 import { ViewProbes } from './view-probes.ts';
 import { cameraViewFov, framingPose, framingPoseAbove, type ViewPose } from './view-pose.ts';
-import { drawsInSoftware } from './software-renderer.ts';
-import { BurstResolution } from './burst-resolution.ts';
-import { PiecewiseRays } from './piecewise-rays.ts';
+import { VIEW_FOV, ViewDrawing } from './view-drawing.ts';
 import type { Thinning } from './ray-budget.ts';
 import { framedPoints, LookFollower } from './view-look.ts';
 
@@ -85,22 +81,8 @@ const BUTTON_ZOOM = 1.25;
 const INSIDE_CAMERA = 0.35;
 const SELECTION_COLOR = 0x3b82f6;
 
-/** The 3D view's own vertical field of view (degrees), which declared views frame with. */
-const VIEW_FOV = 45;
 /** Multisampling of the render window's raster picture on a GPU (none on a CPU rasterizer, as the view itself). */
 const SNAPSHOT_SAMPLES = 4;
-
-/**
- * How long the view waits after an edit of the scene for the edit's rays, before it draws
- * the edit without them. On a CPU rasterizer a frame costs about 50 ms, and the main thread
- * waits most of it for the 3D view's read-back: drawing the edit at once made its rays, back
- * from the screen tracer 10–20 ms later, wait for a second frame. Held until they come, one
- * frame shows both: in five e2e runs with the page composited on the CPU, an arrow key's
- * step went from p95 95–106 to 71–84 ms, a drag's from 64–98 to 64–68 ms and the first
- * drag's from 103–134 to 62–72 ms (docs/benchmarks.md). A 16 × 16 screen takes about 15 ms
- * to trace; a bigger one is drawn after this wait, and its rays when they come.
- */
-const RAYS_WAIT_MS = 60;
 
 /**
  * The lab's 3D view: the scene from the store drawn with three.js (objects with a Phong look,
@@ -113,10 +95,13 @@ const RAYS_WAIT_MS = 60;
  */
 export class LabView {
   readonly renderer: WebGLRenderer;
-  readonly scene = new ThreeScene();
+  readonly scene: ThreeScene;
   /** The user's viewpoint (not the ray tracer's camera). */
-  readonly camera = new PerspectiveCamera(VIEW_FOV, 1, 0.05, 500);
-  private readonly scheduler: FrameScheduler;
+  readonly camera: PerspectiveCamera;
+  /** WebGL draws on a CPU rasterizer (ViewDrawing.software). */
+  readonly software: boolean;
+  /** The renderer, frames on demand, sizes and the CPU rasterizer's economies (view-drawing.ts). */
+  private readonly drawing: ViewDrawing;
   private readonly controls: ViewControls;
   private readonly gizmo: TransformGizmo;
   private offeredModes: readonly GizmoMode[] | undefined = undefined;
@@ -141,29 +126,16 @@ export class LabView {
   private readonly unsubscribe: () => void;
   private readonly cleanups: (() => void)[] = [];
   private previous: LabState | null = null;
-  private rayLayer: RayLayer | null = null;
-  private bvhLayer: Object3D | null = null;
-  private removeRayAnimator: (() => void) | null = null;
   private lastHover: RayHover | null = null;
   private press: { id: number; x: number; y: number; onGizmo: boolean } | null = null;
   private hoverQueued = false;
   private pointer: { x: number; y: number } | null = null;
-  private frames = 0;
   /** The camera's pixels' latest rays (for "show its rays"). */
   private screenRays: ScreenRays | null = null;
   /** For browser tests and tools: what the view shows, read off it (view-probes.ts). */
   readonly probes: ViewProbes;
-  private sized = false;
-  /** WebGL draws on a CPU rasterizer (SwiftShader, llvmpipe): no antialiasing, bursts drawn coarse, rays held to a budget while the learner edits (LabServices). */
-  readonly software: boolean;
-  /** On a CPU rasterizer: a burst of edits is drawn at reduced resolution (null on a GPU). */
-  private readonly burst: BurstResolution | null;
-  /** On a CPU rasterizer: a heavy ray layer is drawn a piece a frame (null on a GPU). */
-  private readonly pieces: PiecewiseRays | null;
   /** The thinning the last drawn frame showed, as last told. */
   private drawnThinning: Thinning | null = null;
-  /** The share of the device pixel ratio drawn now (below 1 during a burst). */
-  private resolutionScale = 1;
   private coveredBottom = 0;
   /** A scene was loaded and nothing drawn since: a declared look then jumps instead of gliding. */
   private sceneJustLoaded = false;
@@ -181,13 +153,19 @@ export class LabView {
     this.cameraScreen = new CameraScreen();
     this.selectionBox = new BoxHelper(new Group(), SELECTION_COLOR);
     this.grid = new GridHelper(20, 20, 0x6b7686, 0x8a94a3);
-    this.software = drawsInSoftware();
-    this.renderer = new WebGLRenderer({ canvas, antialias: !this.software, alpha: true });
-    this.burst = this.software ? new BurstResolution((scale) => this.setResolutionScale(scale)) : null;
-    this.renderer.outputColorSpace = LinearSRGBColorSpace;
-    this.renderer.setClearColor(0x000000, 0);
-    this.pieces = this.software ? new PiecewiseRays(this.renderer) : null;
-    this.scheduler = new FrameScheduler((changed) => this.draw(changed));
+    this.drawing = new ViewDrawing(canvas, {
+      beforeDraw: () => this.beforeDraw(),
+      drawn: () => this.drawn(),
+      // The first framing guessed a square view; frame again for the real shape.
+      firstSized: () => {
+        this.frameScene();
+        this.look.follow(this.store.state.look, false);
+      },
+    });
+    this.renderer = this.drawing.renderer;
+    this.scene = this.drawing.scene;
+    this.camera = this.drawing.camera;
+    this.software = this.drawing.software;
 
     // The gizmo first: its pointerdown must claim a drag before the orbit controls see it.
     this.gizmo = new TransformGizmo(this.camera, canvas, {
@@ -197,12 +175,12 @@ export class LabView {
       },
       dragEnded: (object, snapped) => this.commitDrag(object, snapped),
     });
-    this.controls = new ViewControls(this.camera, canvas, this.scheduler, (action) => this.dispatch(action));
+    this.controls = new ViewControls(this.camera, canvas, this.drawing.scheduler, (action) => this.dispatch(action));
     this.controls.orbit.addEventListener('start', () => {
       this.flight.userMoved();
       this.look.userMoved();
     });
-    this.flight = new CameraFlight(this.controls, this.scheduler, (atCamera) => this.emit('flight', atCamera));
+    this.flight = new CameraFlight(this.controls, this.drawing.scheduler, (atCamera) => this.emit('flight', atCamera));
     this.look = new LookFollower({
       pointsOf: (name) => this.framedPointsOf(name),
       pixelRayPoints: () => this.pixelRayPoints(),
@@ -243,8 +221,8 @@ export class LabView {
       renderer: this.renderer,
       scene: this.scene,
       camera: this.camera,
-      rayLayer: () => this.rayLayer,
-      allRaysDrawn: () => !this.pieces?.unfinished,
+      rayLayer: () => this.drawing.rayLayer,
+      allRaysDrawn: () => this.drawing.allRaysDrawn,
       traceOf: (pixel) => this.traceOf(pixel),
       framedPointsOf: (name) => this.framedPointsOf(name),
       projectToView: (point) => this.projectToView(point),
@@ -277,7 +255,7 @@ export class LabView {
 
   /** How many frames were drawn so far (idle means it stops growing). */
   get frameCount(): number {
-    return this.frames;
+    return this.drawing.frameCount;
   }
 
   /** Whether the view is at the ray tracer's camera, or has a way back to where it was. */
@@ -287,39 +265,17 @@ export class LabView {
 
   /** Draws one frame soon (call after changing anything drawn, like the ray layer's content). */
   requestRender(): void {
-    this.scheduler.requestRender();
+    this.drawing.requestRender();
   }
 
   /** Calls `animator` every frame; frames keep coming while it returns true. Returns its remover. */
   addAnimator(animator: Animator): () => void {
-    return this.scheduler.addAnimator(animator);
+    return this.drawing.addAnimator(animator);
   }
 
   /** The canvas's size in CSS pixels; drawn at up to 2 device pixels per CSS pixel (school laptops). */
   setSize(width: number, height: number): void {
-    if (width <= 0 || height <= 0) return;
-    this.renderer.setPixelRatio(Math.min(2, window.devicePixelRatio || 1) * this.resolutionScale);
-    this.renderer.setSize(width, height, false);
-    const first = !this.sized;
-    this.sized = true;
-    this.camera.aspect = width / height;
-    this.camera.updateProjectionMatrix();
-    // The first framing guessed a square view; frame again for the real shape.
-    if (first) {
-      this.frameScene();
-      this.look.follow(this.store.state.look, false);
-    }
-    // A resized canvas is blank until drawn: draw now, not next frame, so it never flickers.
-    this.scheduler.renderNow();
-  }
-
-  /** Draws at `scale` × the device pixel ratio from now on (redrawn at once). */
-  private setResolutionScale(scale: number): void {
-    this.resolutionScale = scale;
-    if (!this.sized) return;
-    // The renderer keeps the size last set in CSS pixels.
-    const { x: width, y: height } = this.renderer.getSize(cssSize);
-    this.setSize(width, height);
+    this.drawing.setSize(width, height);
   }
 
   /** Colours the camera's screen with the traced pixels. */
@@ -327,36 +283,22 @@ export class LabView {
     this.screenRays = rays;
     this.cameraScreen.setScreenRays(rays);
     this.look.raysArrived();
-    this.requestRender();
-    // After asking for the frame: the rays an edit's hold waited for are drawn in it, and the
-    // next edit's hold does not delay it.
-    this.scheduler.release();
+    this.drawing.raysArrived();
   }
 
   /** Shows the drawn rays (replacing any before), animates them and picks them for hover. */
   setRayLayer(layer: RayLayer | null): void {
-    if (this.rayLayer) this.scene.remove(this.rayLayer.object);
-    this.removeRayAnimator?.();
-    this.removeRayAnimator = null;
-    this.rayLayer = layer;
-    if (layer) {
-      this.scene.add(layer.object);
-      this.removeRayAnimator = this.scheduler.addAnimator((time) => layer.tick(time));
-    }
-    this.requestRender();
+    this.drawing.setRayLayer(layer);
   }
 
   /** On a CPU rasterizer: draws coarse while `thinned` (the rays held to a budget), sharp at once after. */
   holdCoarse(thinned: boolean): void {
-    this.burst?.hold(thinned);
+    this.drawing.holdCoarse(thinned);
   }
 
   /** Shows the acceleration boxes (BvhBoxes.object), replacing any before; null removes them. */
   setBvhLayer(object: Object3D | null): void {
-    if (this.bvhLayer) this.scene.remove(this.bvhLayer);
-    this.bvhLayer = object;
-    if (object) this.scene.add(object);
-    this.requestRender();
+    this.drawing.setBvhLayer(object);
   }
 
   /** Calls `listener` with the ray under the pointer (or null when it leaves it). Returns its remover. */
@@ -508,8 +450,9 @@ export class LabView {
   /** The raster view from the ray tracer's camera, `width`×`height`, for the render window's comparison. */
   rasterSnapshot(width: number, height: number): Promise<ImageData> {
     const hidden: Object3D[] = [this.grid, this.lightGizmos.group, this.cameraScreen.rig, this.distribution.group, this.selectionBox, this.gizmo.helper];
-    if (this.rayLayer) hidden.push(this.rayLayer.object);
-    if (this.bvhLayer) hidden.push(this.bvhLayer);
+    const { rayLayer, bvhLayer } = this.drawing;
+    if (rayLayer) hidden.push(rayLayer.object);
+    if (bvhLayer) hidden.push(bvhLayer);
     const { camera, settings } = this.store.state.scene;
     return rasterSnapshot(this.renderer, this.scene, hidden, camera, settings.background, width, height, this.software ? 0 : SNAPSHOT_SAMPLES);
   }
@@ -561,14 +504,9 @@ export class LabView {
   dispose(): void {
     this.unsubscribe();
     for (const cleanup of this.cleanups) cleanup();
-    this.removeRayAnimator?.();
-    if (this.rayLayer) this.scene.remove(this.rayLayer.object);
-    this.burst?.dispose();
-    this.pieces?.dispose();
     this.flight.dispose();
     this.gizmo.dispose();
     this.controls.dispose();
-    this.scheduler.dispose();
     this.objects.dispose();
     this.rasterLights.dispose();
     this.lightGizmos.dispose();
@@ -576,7 +514,7 @@ export class LabView {
     this.distribution.dispose();
     this.selectionBox.dispose();
     this.grid.dispose();
-    this.renderer.dispose();
+    this.drawing.dispose();
   }
 
   // --- store → drawing ---
@@ -613,11 +551,7 @@ export class LabView {
       });
     }
     if (!this.gizmo.dragging) this.updateGizmo(state);
-    if (previous && state.scene !== previous.scene) {
-      this.burst?.edited();
-      // Rays held to a budget are a heavy screen's, traced in the worker for longer than the wait.
-      if (!this.burst?.holding) this.scheduler.holdFor(RAYS_WAIT_MS);
-    }
+    if (previous && state.scene !== previous.scene) this.drawing.sceneEdited();
     this.requestRender();
   }
 
@@ -675,27 +609,20 @@ export class LabView {
     this.update(this.store.state);
   }
 
-  private draw(changed: boolean): void {
-    if (!changed && this.pieces?.unfinished && this.rayLayer) {
-      this.pieces.drawNext(this.camera, this.rayLayer);
-      if (this.pieces.unfinished) this.scheduler.requestMore();
-      this.frames++;
-      return;
-    }
+  /** Before a frame: the camera's body hides when the view is inside it, and the outline follows a drag in progress. */
+  private beforeDraw(): void {
     this.cameraScreen.setViewedFromEye(this.camera.position.distanceTo(this.cameraScreen.rig.position) < INSIDE_CAMERA);
-    // The outline follows a drag in progress.
     if (this.selectionBox.visible && this.gizmo.dragging) this.outlineSelection(this.store.state, this.selectedObject(this.store.state));
-    if (this.pieces) {
-      this.pieces.drawChanged(this.scene, this.camera, this.rayLayer);
-      if (this.pieces.unfinished) this.scheduler.requestMore();
-    } else this.renderer.render(this.scene, this.camera);
+  }
+
+  /** After a frame: tells the probes what it showed, and the page how many rays it drew. */
+  private drawn(): void {
     this.probes.frameDrawn(this.store.state.scene, this.screenRays?.scene ?? null);
-    const thinning = this.rayLayer?.thinning ?? null;
+    const thinning = this.drawing.rayLayer?.thinning ?? null;
     if (thinning?.shown !== this.drawnThinning?.shown || thinning?.of !== this.drawnThinning?.of) {
       this.drawnThinning = thinning;
       this.emit('thinning', thinning);
     }
-    this.frames++;
     this.sceneJustLoaded = false;
   }
 
@@ -752,10 +679,11 @@ export class LabView {
     const hit = this.pickAt(pointer.x, pointer.y);
     this.canvas.style.cursor = hit ? 'pointer' : '';
     let hover: RayHover | null = null;
-    if (this.rayLayer) {
+    const rayLayer = this.drawing.rayLayer;
+    if (rayLayer) {
       this.rayRaycaster.ray.copy(this.picker.raycaster.ray);
       this.rayRaycaster.camera = this.camera;
-      hover = this.rayLayer.pick(this.rayRaycaster);
+      hover = rayLayer.pick(this.rayRaycaster);
     }
     // Over a ray the tooltip follows the pointer; off rays, one null says so.
     if (hover === null && this.lastHover === null) return;
@@ -805,8 +733,6 @@ export class LabView {
 }
 
 const projected = new Vector3();
-/** Scratch for the canvas size read back from the renderer. */
-const cssSize = new Vector2();
 
 function sameCamera(a: LabState, b: LabState): boolean {
   const x = a.scene.camera;
