@@ -22,7 +22,6 @@ import type { Store } from '../lab-state/store.ts';
 import type { Vec3 } from '../scene/scene.ts';
 import { CameraScreen } from './camera-screen.ts';
 import { DistributionGizmos } from './distribution-gizmos.ts';
-import { CameraFlight } from './fly-to-camera.ts';
 import type { Animator } from './frame-scheduler.ts';
 import { cameraChanges, lightChanges, objectChanges } from './gizmo-changes.ts';
 import { effectiveGizmoMode, gizmoModesFor, type GizmoMode } from './gizmo-modes.ts';
@@ -36,14 +35,13 @@ import { type MeshLoader, SceneSync } from './scene-sync.ts';
 import { TransformGizmo } from './transform-gizmo.ts';
 import { sameSelection, stateCommand, type StateCommand } from './state-commands.ts';
 import { type ArrowTarget, keyCommand, type ViewCommand } from './view-commands.ts';
-import { ViewControls } from './view-controls.ts';
 import { rayPathPoints, rayPathPointsFromHit, raySegments } from './ray-path-points.ts';
 import { framedRaysPixel } from '../lab-state/framed-rays.ts';
 import { ViewProbes } from './view-probes.ts';
-import { cameraViewFov, framingPose, framingPoseAbove, type ViewPose } from './view-pose.ts';
-import { VIEW_FOV, ViewDrawing } from './view-drawing.ts';
+import { ViewDrawing } from './view-drawing.ts';
+import { ViewNavigation } from './view-navigation.ts';
 import type { Thinning } from './ray-budget.ts';
-import { framedPoints, LookFollower } from './view-look.ts';
+import { framedPoints } from './view-look.ts';
 
 /** The hovered ray and where the pointer is, for a tooltip next to it. */
 export interface RayHoverDetail {
@@ -73,10 +71,6 @@ type Listener<T> = (value: T) => void;
 
 /** A pointer press that moves less than this (CSS px) before release is a click, not a drag. */
 const CLICK_SLOP = 6;
-/** Toolbar steps: one press orbits 15°, pans a tenth of the view, zooms 1.25×. */
-const BUTTON_ORBIT_DEG = 15;
-const BUTTON_PAN = 0.1;
-const BUTTON_ZOOM = 1.25;
 /** Nearer than this to the tracer camera's eye, its body would fill the view: hide it. */
 const INSIDE_CAMERA = 0.35;
 const SELECTION_COLOR = 0x3b82f6;
@@ -102,10 +96,10 @@ export class LabView {
   readonly software: boolean;
   /** The renderer, frames on demand, sizes and the CPU rasterizer's economies (view-drawing.ts). */
   private readonly drawing: ViewDrawing;
-  private readonly controls: ViewControls;
+  /** Orbit, pan, zoom, flights and framing (view-navigation.ts). */
+  private readonly navigation: ViewNavigation;
   private readonly gizmo: TransformGizmo;
   private offeredModes: readonly GizmoMode[] | undefined = undefined;
-  private readonly flight: CameraFlight;
   private readonly objects: SceneSync;
   private readonly rasterLights: RasterLights;
   private readonly lightGizmos: LightGizmos;
@@ -136,10 +130,8 @@ export class LabView {
   readonly probes: ViewProbes;
   /** The thinning the last drawn frame showed, as last told. */
   private drawnThinning: Thinning | null = null;
-  private coveredBottom = 0;
   /** A scene was loaded and nothing drawn since: a declared look then jumps instead of gliding. */
   private sceneJustLoaded = false;
-  private readonly look: LookFollower;
 
   constructor(
     readonly canvas: HTMLCanvasElement,
@@ -158,8 +150,8 @@ export class LabView {
       drawn: () => this.drawn(),
       // The first framing guessed a square view; frame again for the real shape.
       firstSized: () => {
-        this.frameScene();
-        this.look.follow(this.store.state.look, false);
+        this.navigation.frameScene();
+        this.navigation.follow(this.store.state.look, false);
       },
     });
     this.renderer = this.drawing.renderer;
@@ -171,29 +163,16 @@ export class LabView {
     this.gizmo = new TransformGizmo(this.camera, canvas, {
       changed: () => this.requestRender(),
       draggingChanged: (dragging) => {
-        this.controls.enabled = !dragging;
+        this.navigation.pauseGestures(dragging);
       },
       dragEnded: (object, snapped) => this.commitDrag(object, snapped),
     });
-    this.controls = new ViewControls(this.camera, canvas, this.drawing.scheduler, (action) => this.dispatch(action));
-    this.controls.orbit.addEventListener('start', () => {
-      this.flight.userMoved();
-      this.look.userMoved();
-    });
-    this.flight = new CameraFlight(this.controls, this.drawing.scheduler, (atCamera) => this.emit('flight', atCamera));
-    this.look = new LookFollower({
+    this.navigation = new ViewNavigation(this.camera, canvas, this.drawing.scheduler, store, {
       pointsOf: (name) => this.framedPointsOf(name),
       pixelRayPoints: () => this.pixelRayPoints(),
-      pose: () => this.controls.pose,
-      fov: VIEW_FOV,
-      aspect: () => this.camera.aspect,
-      visibleShare: () => this.visibleShare(),
-      moveTo: (pose, glide) => {
-        if (glide) return this.flight.glide(pose);
-        this.flight.forget();
-        this.controls.setPose(pose);
-      },
-      throughCamera: () => this.flight.flyTo(this.tracerCameraPose(), () => {}),
+      dispatch: (action) => this.dispatch(action),
+      flightChanged: (atCamera) => this.emit('flight', atCamera),
+      message: (text) => this.emit('message', text),
     });
     this.objects = new SceneSync(meshLoader, (error) => {
       if (error) this.emit('message', msg(str`A model could not be loaded: ${error}`));
@@ -238,19 +217,18 @@ export class LabView {
     this.unsubscribe = store.subscribe((state, action) => {
       this.update(state);
       if (action.type === 'scene.loaded') {
-        this.flight.forget();
-        this.frameScene();
+        this.navigation.sceneLoaded();
         this.sceneJustLoaded = true;
       }
     });
     this.update(store.state);
-    this.frameScene();
-    this.look.follow(store.state.look, false);
+    this.navigation.frameScene();
+    this.navigation.follow(store.state.look, false);
   }
 
   /** Whether the view is still on its way: a flight or glide under way, or a framing waiting for its pixel's rays. */
   get moving(): boolean {
-    return this.flight.flying || this.look.waitingForRays;
+    return this.navigation.moving;
   }
 
   /** How many frames were drawn so far (idle means it stops growing). */
@@ -260,7 +238,7 @@ export class LabView {
 
   /** Whether the view is at the ray tracer's camera, or has a way back to where it was. */
   get atCamera(): boolean {
-    return this.flight.atCamera;
+    return this.navigation.atCamera;
   }
 
   /** Draws one frame soon (call after changing anything drawn, like the ray layer's content). */
@@ -282,7 +260,7 @@ export class LabView {
   setScreenRays(rays: ScreenRays): void {
     this.screenRays = rays;
     this.cameraScreen.setScreenRays(rays);
-    this.look.raysArrived();
+    this.navigation.raysArrived();
     this.drawing.raysArrived();
   }
 
@@ -317,18 +295,18 @@ export class LabView {
     const state = this.store.state;
     switch (command.kind) {
       case 'orbit':
-        return this.controls.orbitBy(command.dxDeg, command.dyDeg, glide);
+        return this.navigation.orbit(command.dxDeg, command.dyDeg, glide);
       case 'pan':
-        return this.controls.panBy(command.dx, command.dy, glide);
+        return this.navigation.pan(command.dx, command.dy, glide);
       case 'zoom':
-        return this.controls.zoomBy(command.factor, glide);
+        return this.navigation.zoom(command.factor, glide);
       case 'escape':
-        if (this.flight.atCamera) this.flyBack();
+        if (this.navigation.atCamera) this.navigation.flyBack();
         return this.apply(stateCommand(command, state));
       case 'fly':
-        return this.flight.atCamera ? this.flyBack() : this.flyToCamera();
+        return this.navigation.atCamera ? this.navigation.flyBack() : this.navigation.flyToCamera();
       case 'show-pixel-rays':
-        return this.showPixelRays();
+        return this.navigation.showPixelRays();
       case 'help':
         return this.emit('help', undefined);
       case 'nudge':
@@ -377,38 +355,33 @@ export class LabView {
   }
 
   /** Orbits the view as a toolbar button does: +dx moves the eye right around the target, +dy up. */
-  orbit(dxDeg = BUTTON_ORBIT_DEG, dyDeg = 0): void {
-    this.controls.orbitBy(dxDeg, dyDeg, true);
+  orbit(dxDeg?: number, dyDeg?: number): void {
+    this.navigation.orbit(dxDeg, dyDeg);
   }
 
   /** Pans as a toolbar button does: shares of the visible height, +dx right, +dy up. */
-  pan(dx = BUTTON_PAN, dy = 0): void {
-    this.controls.panBy(dx, dy, true);
+  pan(dx?: number, dy?: number): void {
+    this.navigation.pan(dx, dy);
   }
 
   /** Zooms as a toolbar button does: factor > 1 moves closer. */
-  zoom(factor = BUTTON_ZOOM): void {
-    this.controls.zoomBy(factor, true);
+  zoom(factor?: number): void {
+    this.navigation.zoom(factor);
   }
 
   /** Glides to the ray tracer's camera (eye, target, fov); reports view.flew-to-camera on arrival. */
   flyToCamera(): void {
-    this.flight.flyTo(this.tracerCameraPose(), () => this.dispatch({ type: 'view.flew-to-camera' }));
+    this.navigation.flyToCamera();
   }
 
-  /**
-   * "Show its rays": glides, from the side the view looks from now, to where the chosen
-   * pixel's whole ray path (and the camera it starts at) fits the view.
-   */
+  /** Glides back to where the view was before flying to the camera. */
+  flyBack(): void {
+    this.navigation.flyBack();
+  }
+
+  /** "Show its rays": glides to where the chosen pixel's whole ray path (and the camera it starts at) fits the view. */
   showPixelRays(): void {
-    const points = this.pixelRayPoints();
-    if (!points) {
-      this.emit('message', msg('Choose a pixel first: its rays are what this shows.'));
-      return;
-    }
-    const pose = this.controls.pose;
-    const direction = pose.position.clone().sub(pose.target).normalize();
-    this.flight.glide(framingPoseAbove(points, VIEW_FOV, this.camera.aspect, direction, this.visibleShare()));
+    this.navigation.showPixelRays();
   }
 
   /**
@@ -416,13 +389,12 @@ export class LabView {
    * the ray debugger): framing then fits what it shows into the part above.
    */
   setCoveredBottom(px: number): void {
-    this.coveredBottom = Math.max(0, px);
+    this.navigation.setCoveredBottom(px);
   }
 
-  private visibleShare(): number {
-    const height = this.canvas.clientHeight;
-    // Never frame into a sliver: below 40 % the panels cover the view and it is better whole.
-    return height > 0 ? Math.max(0.4, 1 - this.coveredBottom / height) : 1;
+  /** Looks at the whole scene (objects, lights and the tracer's camera) from the front left, above. */
+  frameScene(): void {
+    this.navigation.frameScene();
   }
 
   /** The chosen pixel's latest trace, or null without a pixel or its trace. */
@@ -442,11 +414,6 @@ export class LabView {
     return trace ? [...rayPathPoints(trace), this.store.state.scene.camera.position] : null;
   }
 
-  /** Glides back to where the view was before flying to the camera. */
-  flyBack(): void {
-    this.flight.back();
-  }
-
   /** The raster view from the ray tracer's camera, `width`×`height`, for the render window's comparison. */
   rasterSnapshot(width: number, height: number): Promise<ImageData> {
     const hidden: Object3D[] = [this.grid, this.lightGizmos.group, this.cameraScreen.rig, this.distribution.group, this.selectionBox, this.gizmo.helper];
@@ -455,14 +422,6 @@ export class LabView {
     if (bvhLayer) hidden.push(bvhLayer);
     const { camera, settings } = this.store.state.scene;
     return rasterSnapshot(this.renderer, this.scene, hidden, camera, settings.background, width, height, this.software ? 0 : SNAPSHOT_SAMPLES);
-  }
-
-  /** Looks at the whole scene (objects, lights and the tracer's camera) from the front left, above. */
-  frameScene(): void {
-    const { objects, lights, camera } = this.store.state.scene;
-    const centre = [...objects.map((o) => o.position), camera.position];
-    const pose = framingPose(centre, [...centre, ...lights.map((l) => l.position)], this.camera.fov, this.camera.aspect);
-    this.controls.setPose(pose);
   }
 
   /** The world points a declared view fits for `name` (view-look.ts), from what is drawn now and the latest trace. */
@@ -504,9 +463,8 @@ export class LabView {
   dispose(): void {
     this.unsubscribe();
     for (const cleanup of this.cleanups) cleanup();
-    this.flight.dispose();
+    this.navigation.dispose();
     this.gizmo.dispose();
-    this.controls.dispose();
     this.objects.dispose();
     this.rasterLights.dispose();
     this.lightGizmos.dispose();
@@ -527,12 +485,12 @@ export class LabView {
     const previous = this.previous;
     this.previous = state;
     // A level's first view is where it starts, not a flight away from the scene's framing.
-    if (previous && state.look !== previous.look) this.look.follow(state.look, !this.sceneJustLoaded);
+    if (previous && state.look !== previous.look) this.navigation.follow(state.look, !this.sceneJustLoaded);
     if (state.scene !== previous?.scene) {
       this.objects.sync(state.scene);
       this.rasterLights.sync(state.scene);
       this.lightGizmos.sync(state.scene);
-      if (previous && !sameCamera(previous, state)) this.flight.cameraMoved(this.tracerCameraPose());
+      if (previous && !sameCamera(previous, state)) this.navigation.cameraEdited();
     }
     // A moving object's copies show the chosen pixel's moments where each pixel has its own.
     if (state.scene !== previous?.scene || state.selectedPixel !== previous.selectedPixel) {
@@ -707,12 +665,6 @@ export class LabView {
     if (!command) return;
     event.preventDefault();
     this.execute(command);
-  }
-
-  /** At the tracer's camera, wide enough to show all of its screen of pixels in this view's shape. */
-  private tracerCameraPose(): ViewPose {
-    const { position, target, fov, pixels } = this.store.state.scene.camera;
-    return { position: new Vector3(...position), target: new Vector3(...target), fov: cameraViewFov(fov, pixels[0] / pixels[1], this.camera.aspect) };
   }
 
   /** Dispatches, showing the reason when the store refuses. Returns that reason. */
