@@ -1,10 +1,8 @@
 import { itemName } from '../i18n/scene-item-names.ts';
 import { msg, str } from '@lit/localize';
 import {
-  BoxHelper,
   ColorManagement,
   GridHelper,
-  Group,
   HemisphereLight,
   type Object3D,
   type PerspectiveCamera,
@@ -23,8 +21,7 @@ import type { Vec3 } from '../scene/scene.ts';
 import { CameraScreen } from './camera-screen.ts';
 import { DistributionGizmos } from './distribution-gizmos.ts';
 import type { Animator } from './frame-scheduler.ts';
-import { cameraChanges, lightChanges, objectChanges } from './gizmo-changes.ts';
-import { effectiveGizmoMode, gizmoModesFor, type GizmoMode } from './gizmo-modes.ts';
+import type { GizmoMode } from './gizmo-modes.ts';
 import { nudgeAction, nudgeNote, viewAxesOf } from './gizmo-nudge.ts';
 import { LightGizmos } from './light-gizmos.ts';
 import { Picker, type PickResult } from './picking.ts';
@@ -32,7 +29,7 @@ import { RasterLights } from './raster-lights.ts';
 import { rasterSnapshot } from './raster-snapshot.ts';
 import type { RayHover, RayLayer } from './ray-layer.ts';
 import { type MeshLoader, SceneSync } from './scene-sync.ts';
-import { TransformGizmo } from './transform-gizmo.ts';
+import { SelectionGizmo } from './selection-gizmo.ts';
 import { sameSelection, stateCommand, type StateCommand } from './state-commands.ts';
 import { type ArrowTarget, keyCommand, type ViewCommand } from './view-commands.ts';
 import { rayPathPoints, rayPathPointsFromHit, raySegments } from './ray-path-points.ts';
@@ -73,7 +70,6 @@ type Listener<T> = (value: T) => void;
 const CLICK_SLOP = 6;
 /** Nearer than this to the tracer camera's eye, its body would fill the view: hide it. */
 const INSIDE_CAMERA = 0.35;
-const SELECTION_COLOR = 0x3b82f6;
 
 /** Multisampling of the render window's raster picture on a GPU (none on a CPU rasterizer, as the view itself). */
 const SNAPSHOT_SAMPLES = 4;
@@ -98,8 +94,8 @@ export class LabView {
   private readonly drawing: ViewDrawing;
   /** Orbit, pan, zoom, flights and framing (view-navigation.ts). */
   private readonly navigation: ViewNavigation;
-  private readonly gizmo: TransformGizmo;
-  private offeredModes: readonly GizmoMode[] | undefined = undefined;
+  /** The selection's outline and handles (selection-gizmo.ts). */
+  private readonly selection: SelectionGizmo;
   private readonly objects: SceneSync;
   private readonly rasterLights: RasterLights;
   private readonly lightGizmos: LightGizmos;
@@ -107,7 +103,6 @@ export class LabView {
   private readonly distribution = new DistributionGizmos();
   private readonly picker = new Picker();
   private readonly rayRaycaster = new Raycaster();
-  private readonly selectionBox: BoxHelper;
   private readonly grid: GridHelper;
   private readonly listeners: { [K in keyof LabViewEvents]: Set<Listener<LabViewEvents[K]>> } = {
     rayHover: new Set(),
@@ -143,7 +138,6 @@ export class LabView {
     this.rasterLights = new RasterLights();
     this.lightGizmos = new LightGizmos();
     this.cameraScreen = new CameraScreen();
-    this.selectionBox = new BoxHelper(new Group(), SELECTION_COLOR);
     this.grid = new GridHelper(20, 20, 0x6b7686, 0x8a94a3);
     this.drawing = new ViewDrawing(canvas, {
       beforeDraw: () => this.beforeDraw(),
@@ -160,12 +154,18 @@ export class LabView {
     this.software = this.drawing.software;
 
     // The gizmo first: its pointerdown must claim a drag before the orbit controls see it.
-    this.gizmo = new TransformGizmo(this.camera, canvas, {
+    this.selection = new SelectionGizmo(this.camera, canvas, {
+      state: () => this.store.state,
+      objectOf: (id) => this.objects.objectOf(id),
+      lightOf: (id) => this.lightGizmos.objectOf(id),
+      cameraRig: this.cameraScreen.rig,
+      cameraBody: this.cameraScreen.body,
       changed: () => this.requestRender(),
-      draggingChanged: (dragging) => {
-        this.navigation.pauseGestures(dragging);
+      draggingChanged: (dragging) => this.navigation.pauseGestures(dragging),
+      // A refused drag is shown, and the drawing, left where the drag put it, is put back.
+      dragged: (action) => {
+        if (this.dispatch(action)) this.resync();
       },
-      dragEnded: (object, snapped) => this.commitDrag(object, snapped),
     });
     this.navigation = new ViewNavigation(this.camera, canvas, this.drawing.scheduler, store, {
       pointsOf: (name) => this.framedPointsOf(name),
@@ -192,8 +192,8 @@ export class LabView {
       this.lightGizmos.group,
       this.cameraScreen.rig,
       this.distribution.group,
-      this.selectionBox,
-      this.gizmo.helper,
+      this.selection.outline,
+      this.selection.helper,
     );
 
     this.probes = new ViewProbes({
@@ -323,27 +323,15 @@ export class LabView {
     if (command?.note && !refused) this.emit('note', command.note);
   }
 
-  /**
-   * The gizmo mode the arrow keys work in for the selection, or null when its handles are
-   * not shown (nothing selected, or a level without move tools): as the handles, the chosen
-   * mode when the selection and the page allow it.
-   */
-  private nudgeMode(state: LabState): GizmoMode | null {
-    const allowed = gizmoModesFor(state.selection, state.scene).filter((mode) => this.offeredModes?.includes(mode) ?? true);
-    if (allowed.length === 0) return null;
-    const mode = effectiveGizmoMode(state.gizmo.mode, gizmoModesFor(state.selection, state.scene));
-    return allowed.includes(mode) ? mode : allowed[0]!;
-  }
-
   private arrowTarget(state: LabState): ArrowTarget {
-    if (this.nudgeMode(state)) return 'selection';
+    if (this.selection.nudgeMode(state)) return 'selection';
     return state.selectedPixel ? 'pixel' : 'view';
   }
 
   /** One key step of the selection in its gizmo mode, along the world axes nearest the viewer's. */
   private nudge(command: Extract<ViewCommand, { kind: 'nudge' }>): void {
     const state = this.store.state;
-    const mode = this.nudgeMode(state);
+    const mode = this.selection.nudgeMode(state);
     const action = mode && nudgeAction(state, { mode, direction: command.direction, big: command.big }, viewAxesOf(this.camera));
     if (!mode || !action || this.dispatch(action)) return;
     this.emit('note', nudgeNote(this.selectionName(state), mode, command.big));
@@ -416,7 +404,7 @@ export class LabView {
 
   /** The raster view from the ray tracer's camera, `width`×`height`, for the render window's comparison. */
   rasterSnapshot(width: number, height: number): Promise<ImageData> {
-    const hidden: Object3D[] = [this.grid, this.lightGizmos.group, this.cameraScreen.rig, this.distribution.group, this.selectionBox, this.gizmo.helper];
+    const hidden: Object3D[] = [this.grid, this.lightGizmos.group, this.cameraScreen.rig, this.distribution.group, this.selection.outline, this.selection.helper];
     const { rayLayer, bvhLayer } = this.drawing;
     if (rayLayer) hidden.push(rayLayer.object);
     if (bvhLayer) hidden.push(bvhLayer);
@@ -464,13 +452,12 @@ export class LabView {
     this.unsubscribe();
     for (const cleanup of this.cleanups) cleanup();
     this.navigation.dispose();
-    this.gizmo.dispose();
+    this.selection.dispose();
     this.objects.dispose();
     this.rasterLights.dispose();
     this.lightGizmos.dispose();
     this.cameraScreen.dispose();
     this.distribution.dispose();
-    this.selectionBox.dispose();
     this.grid.dispose();
     this.drawing.dispose();
   }
@@ -508,7 +495,7 @@ export class LabView {
         showSamplePoints: state.rays.showSamplePoints,
       });
     }
-    if (!this.gizmo.dragging) this.updateGizmo(state);
+    if (!this.selection.dragging) this.selection.update(state);
     if (previous && state.scene !== previous.scene) this.drawing.sceneEdited();
     this.requestRender();
   }
@@ -518,47 +505,8 @@ export class LabView {
    * selection shows its outline but no handles: a level without move tools shows no arrows.
    */
   setGizmoModes(modes: readonly GizmoMode[] | undefined): void {
-    this.offeredModes = modes;
-    this.updateGizmo(this.store.state);
+    this.selection.setModes(modes, this.store.state);
     this.requestRender();
-  }
-
-  /** Puts the gizmo and the selection outline on the selection, in a mode it allows. */
-  private updateGizmo(state: LabState): void {
-    const target = this.selectedObject(state);
-    const allowed = gizmoModesFor(state.selection, state.scene);
-    const handles = this.offeredModes === undefined || this.offeredModes.some((mode) => allowed.includes(mode));
-    this.gizmo.setSnapOption(state.gizmo.snap);
-    this.gizmo.attach(handles ? target : null, effectiveGizmoMode(state.gizmo.mode, allowed), state.gizmo.space);
-    this.outlineSelection(state, target);
-  }
-
-  /** The selection outline: a box around the object or light (around the camera's body only, not its screen). */
-  private outlineSelection(state: LabState, target: Object3D | null): void {
-    this.selectionBox.visible = target !== null;
-    if (target) this.selectionBox.setFromObject(state.selection?.kind === 'camera' ? this.cameraScreen.body : target);
-  }
-
-  private selectedObject(state: LabState): Object3D | null {
-    const selection = state.selection;
-    if (!selection) return null;
-    if (selection.kind === 'camera') return this.cameraScreen.rig;
-    const object = selection.kind === 'object' ? this.objects.objectOf(selection.id) : this.lightGizmos.objectOf(selection.id);
-    return object ?? null;
-  }
-
-  /** Writes a finished gizmo drag to the store; a refused one is shown and undone. */
-  private commitDrag(object: Object3D, snapped: boolean): void {
-    const { selection, scene } = this.store.state;
-    const pose = { position: object.position, quaternion: object.quaternion, scale: object.scale };
-    let action: LabAction | null = null;
-    if (selection?.kind === 'object') action = { type: 'object.changed', id: selection.id, changes: objectChanges(pose, snapped) };
-    if (selection?.kind === 'camera') action = { type: 'camera.changed', changes: cameraChanges(scene.camera, pose, snapped) };
-    if (selection?.kind === 'light') {
-      const light = scene.lights.find((l) => l.id === selection.id);
-      if (light) action = { type: 'light.changed', id: light.id, changes: lightChanges(light, pose, snapped) };
-    }
-    if (action && this.dispatch(action)) this.resync();
   }
 
   /** Redraws everything from the store (after a refused drag left the drawing off the state). */
@@ -570,7 +518,7 @@ export class LabView {
   /** Before a frame: the camera's body hides when the view is inside it, and the outline follows a drag in progress. */
   private beforeDraw(): void {
     this.cameraScreen.setViewedFromEye(this.camera.position.distanceTo(this.cameraScreen.rig.position) < INSIDE_CAMERA);
-    if (this.selectionBox.visible && this.gizmo.dragging) this.outlineSelection(this.store.state, this.selectedObject(this.store.state));
+    this.selection.followDrag(this.store.state);
   }
 
   /** After a frame: tells the probes what it showed, and the page how many rays it drew. */
@@ -591,7 +539,7 @@ export class LabView {
       this.press = null;
       return;
     }
-    this.press = { id: event.pointerId, x: event.clientX, y: event.clientY, onGizmo: this.gizmo.hovering || this.gizmo.dragging };
+    this.press = { id: event.pointerId, x: event.clientX, y: event.clientY, onGizmo: this.selection.hovering || this.selection.dragging };
   }
 
   private pointerUp(event: PointerEvent): void {
@@ -633,7 +581,7 @@ export class LabView {
 
   private hover(): void {
     const pointer = this.pointer;
-    if (!pointer || this.gizmo.dragging || this.press) return;
+    if (!pointer || this.selection.dragging || this.press) return;
     const hit = this.pickAt(pointer.x, pointer.y);
     this.canvas.style.cursor = hit ? 'pointer' : '';
     let hover: RayHover | null = null;
