@@ -1,4 +1,3 @@
-import { itemName } from '../i18n/scene-item-names.ts';
 import { msg, str } from '@lit/localize';
 import {
   ColorManagement,
@@ -6,7 +5,6 @@ import {
   HemisphereLight,
   type Object3D,
   type PerspectiveCamera,
-  Raycaster,
   type Scene as ThreeScene,
   Vector3,
   type WebGLRenderer,
@@ -22,16 +20,15 @@ import { CameraScreen } from './camera-screen.ts';
 import { DistributionGizmos } from './distribution-gizmos.ts';
 import type { Animator } from './frame-scheduler.ts';
 import type { GizmoMode } from './gizmo-modes.ts';
-import { nudgeAction, nudgeNote, viewAxesOf } from './gizmo-nudge.ts';
 import { LightGizmos } from './light-gizmos.ts';
-import { Picker, type PickResult } from './picking.ts';
+import type { PickResult } from './picking.ts';
 import { RasterLights } from './raster-lights.ts';
 import { rasterSnapshot } from './raster-snapshot.ts';
-import type { RayHover, RayLayer } from './ray-layer.ts';
+import type { RayLayer } from './ray-layer.ts';
 import { type MeshLoader, SceneSync } from './scene-sync.ts';
 import { SelectionGizmo } from './selection-gizmo.ts';
-import { sameSelection, stateCommand, type StateCommand } from './state-commands.ts';
-import { type ArrowTarget, keyCommand, type ViewCommand } from './view-commands.ts';
+import type { ViewCommand } from './view-commands.ts';
+import { type RayHoverDetail, ViewInput } from './view-input.ts';
 import { rayPathPoints, rayPathPointsFromHit, raySegments } from './ray-path-points.ts';
 import { framedRaysPixel } from '../lab-state/framed-rays.ts';
 import { ViewProbes } from './view-probes.ts';
@@ -40,15 +37,7 @@ import { ViewNavigation } from './view-navigation.ts';
 import type { Thinning } from './ray-budget.ts';
 import { framedPoints } from './view-look.ts';
 
-/** The hovered ray and where the pointer is, for a tooltip next to it. */
-export interface RayHoverDetail {
-  hover: RayHover;
-  /** CSS px from the canvas's top-left corner. */
-  x: number;
-  y: number;
-  clientX: number;
-  clientY: number;
-}
+export type { RayHoverDetail } from './view-input.ts';
 
 interface LabViewEvents {
   rayHover: RayHoverDetail | null;
@@ -66,8 +55,6 @@ interface LabViewEvents {
 
 type Listener<T> = (value: T) => void;
 
-/** A pointer press that moves less than this (CSS px) before release is a click, not a drag. */
-const CLICK_SLOP = 6;
 /** Nearer than this to the tracer camera's eye, its body would fill the view: hide it. */
 const INSIDE_CAMERA = 0.35;
 
@@ -76,8 +63,11 @@ const SNAPSHOT_SAMPLES = 4;
 
 /**
  * The lab's 3D view: the scene from the store drawn with three.js (objects with a Phong look,
- * lights as gizmos, the ray tracer's camera and its screen), navigation, selection, the
- * transform gizmo and the flight to the tracer's camera. Draws only when something changed.
+ * lights as gizmos, the ray tracer's camera and its screen), kept in step with the store, and
+ * the one object the page talks to. Its parts each hold one concept: drawing and when it
+ * happens (view-drawing.ts), where the user looks from (view-navigation.ts), the selection's
+ * outline and handles (selection-gizmo.ts), pointer and keys (view-input.ts), and what browser
+ * tests read off the view (view-probes.ts). Draws only when something changed.
  *
  * Colours are display values throughout, as in the ray tracer (no gamma): three.js's colour
  * management is switched off and the canvas shows the linear values as they are, so an
@@ -94,6 +84,8 @@ export class LabView {
   private readonly drawing: ViewDrawing;
   /** Orbit, pan, zoom, flights and framing (view-navigation.ts). */
   private readonly navigation: ViewNavigation;
+  /** Pointer, keys, picking and view commands (view-input.ts). */
+  private readonly input: ViewInput;
   /** The selection's outline and handles (selection-gizmo.ts). */
   private readonly selection: SelectionGizmo;
   private readonly objects: SceneSync;
@@ -101,8 +93,6 @@ export class LabView {
   private readonly lightGizmos: LightGizmos;
   private readonly cameraScreen: CameraScreen;
   private readonly distribution = new DistributionGizmos();
-  private readonly picker = new Picker();
-  private readonly rayRaycaster = new Raycaster();
   private readonly grid: GridHelper;
   private readonly listeners: { [K in keyof LabViewEvents]: Set<Listener<LabViewEvents[K]>> } = {
     rayHover: new Set(),
@@ -113,12 +103,7 @@ export class LabView {
     thinning: new Set(),
   };
   private readonly unsubscribe: () => void;
-  private readonly cleanups: (() => void)[] = [];
   private previous: LabState | null = null;
-  private lastHover: RayHover | null = null;
-  private press: { id: number; x: number; y: number; onGizmo: boolean } | null = null;
-  private hoverQueued = false;
-  private pointer: { x: number; y: number } | null = null;
   /** The camera's pixels' latest rays (for "show its rays"). */
   private screenRays: ScreenRays | null = null;
   /** For browser tests and tools: what the view shows, read off it (view-probes.ts). */
@@ -209,11 +194,17 @@ export class LabView {
       requestRender: () => this.requestRender(),
     });
 
-    this.listen(canvas, 'pointerdown', (event) => this.pointerDown(event));
-    this.listen(canvas, 'pointerup', (event) => this.pointerUp(event));
-    this.listen(canvas, 'pointermove', (event) => this.pointerMoved(event));
-    this.listen(canvas, 'pointerleave', () => this.pointerLeft());
-    this.listen(canvas, 'keydown', (event) => this.keyDown(event));
+    this.input = new ViewInput(canvas, this.camera, store, {
+      pickable: [this.objects.group, this.lightGizmos.group, this.cameraScreen.rig],
+      selection: this.selection,
+      navigation: this.navigation,
+      rayLayer: () => this.drawing.rayLayer,
+      dispatch: (action) => this.dispatch(action),
+      rayHover: (detail) => this.emit('rayHover', detail),
+      message: (text) => this.emit('message', text),
+      note: (text) => this.emit('note', text),
+      help: () => this.emit('help', undefined),
+    });
     this.unsubscribe = store.subscribe((state, action) => {
       this.update(state);
       if (action.type === 'scene.loaded') {
@@ -292,54 +283,7 @@ export class LabView {
 
   /** Does what a key or a toolbar button asks; `glide` spreads a step over a few frames (buttons). */
   execute(command: ViewCommand, glide = false): void {
-    const state = this.store.state;
-    switch (command.kind) {
-      case 'orbit':
-        return this.navigation.orbit(command.dxDeg, command.dyDeg, glide);
-      case 'pan':
-        return this.navigation.pan(command.dx, command.dy, glide);
-      case 'zoom':
-        return this.navigation.zoom(command.factor, glide);
-      case 'escape':
-        if (this.navigation.atCamera) this.navigation.flyBack();
-        return this.apply(stateCommand(command, state));
-      case 'fly':
-        return this.navigation.atCamera ? this.navigation.flyBack() : this.navigation.flyToCamera();
-      case 'show-pixel-rays':
-        return this.navigation.showPixelRays();
-      case 'help':
-        return this.emit('help', undefined);
-      case 'nudge':
-        return this.nudge(command);
-      default:
-        return this.apply(stateCommand(command, state));
-    }
-  }
-
-  /** Dispatches a command's action and shows its message (or, when it went through, its note). */
-  private apply(command: StateCommand | null): void {
-    const refused = command?.action ? this.dispatch(command.action) : undefined;
-    if (command?.message) this.emit('message', command.message);
-    if (command?.note && !refused) this.emit('note', command.note);
-  }
-
-  private arrowTarget(state: LabState): ArrowTarget {
-    if (this.selection.nudgeMode(state)) return 'selection';
-    return state.selectedPixel ? 'pixel' : 'view';
-  }
-
-  /** One key step of the selection in its gizmo mode, along the world axes nearest the viewer's. */
-  private nudge(command: Extract<ViewCommand, { kind: 'nudge' }>): void {
-    const state = this.store.state;
-    const mode = this.selection.nudgeMode(state);
-    const action = mode && nudgeAction(state, { mode, direction: command.direction, big: command.big }, viewAxesOf(this.camera));
-    if (!mode || !action || this.dispatch(action)) return;
-    this.emit('note', nudgeNote(this.selectionName(state), mode, command.big));
-  }
-
-  private selectionName({ scene, selection }: LabState): string {
-    if (selection?.kind === 'object' || selection?.kind === 'light') return itemName(scene, selection.id);
-    return msg("The ray tracer's camera");
+    this.input.execute(command, glide);
   }
 
   /** Orbits the view as a toolbar button does: +dx moves the eye right around the target, +dy up. */
@@ -444,13 +388,12 @@ export class LabView {
 
   /** What a click at (clientX, clientY) would select: an object, a light, the camera, a screen pixel, or null for empty space. */
   pickAt(clientX: number, clientY: number): PickResult | null {
-    this.picker.aim(this.camera, this.canvas, clientX, clientY);
-    return this.picker.pick([this.objects.group, this.lightGizmos.group, this.cameraScreen.rig]);
+    return this.input.pickAt(clientX, clientY);
   }
 
   dispose(): void {
     this.unsubscribe();
-    for (const cleanup of this.cleanups) cleanup();
+    this.input.dispose();
     this.navigation.dispose();
     this.selection.dispose();
     this.objects.dispose();
@@ -532,89 +475,6 @@ export class LabView {
     this.sceneJustLoaded = false;
   }
 
-  // --- pointer and keys ---
-
-  private pointerDown(event: PointerEvent): void {
-    if (!event.isPrimary) {
-      this.press = null;
-      return;
-    }
-    this.press = { id: event.pointerId, x: event.clientX, y: event.clientY, onGizmo: this.selection.hovering || this.selection.dragging };
-  }
-
-  private pointerUp(event: PointerEvent): void {
-    const press = this.press;
-    this.press = null;
-    if (!press || press.id !== event.pointerId || press.onGizmo || event.button !== 0) return;
-    if (Math.hypot(event.clientX - press.x, event.clientY - press.y) > CLICK_SLOP) return;
-    this.click(this.pickAt(event.clientX, event.clientY));
-  }
-
-  /** A click selects what it hit, toggles a screen pixel, or deselects on empty space. */
-  private click(hit: PickResult | null): void {
-    const state = this.store.state;
-    if (hit === null) {
-      if (state.selection) this.dispatch({ type: 'selection.changed', selection: null });
-      return;
-    }
-    if (hit.kind === 'pixel') {
-      const [x, y] = hit.pixel;
-      const again = state.selectedPixel?.[0] === x && state.selectedPixel[1] === y;
-      this.dispatch(again ? { type: 'pixel.deselected' } : { type: 'pixel.selected', pixel: hit.pixel });
-      return;
-    }
-    const selection = hit.kind === 'camera' ? { kind: 'camera' as const } : hit;
-    if (!sameSelection(state.selection, selection)) this.dispatch({ type: 'selection.changed', selection });
-  }
-
-  /** Hover work waits for the next frame: one pick per frame however fast the pointer moves. */
-  private pointerMoved(event: PointerEvent): void {
-    if (event.pointerType === 'touch') return;
-    this.pointer = { x: event.clientX, y: event.clientY };
-    if (this.hoverQueued) return;
-    this.hoverQueued = true;
-    requestAnimationFrame(() => {
-      this.hoverQueued = false;
-      this.hover();
-    });
-  }
-
-  private hover(): void {
-    const pointer = this.pointer;
-    if (!pointer || this.selection.dragging || this.press) return;
-    const hit = this.pickAt(pointer.x, pointer.y);
-    this.canvas.style.cursor = hit ? 'pointer' : '';
-    let hover: RayHover | null = null;
-    const rayLayer = this.drawing.rayLayer;
-    if (rayLayer) {
-      this.rayRaycaster.ray.copy(this.picker.raycaster.ray);
-      this.rayRaycaster.camera = this.camera;
-      hover = rayLayer.pick(this.rayRaycaster);
-    }
-    // Over a ray the tooltip follows the pointer; off rays, one null says so.
-    if (hover === null && this.lastHover === null) return;
-    this.lastHover = hover;
-    const rect = this.canvas.getBoundingClientRect();
-    const at = { x: pointer.x - rect.left, y: pointer.y - rect.top, clientX: pointer.x, clientY: pointer.y };
-    this.emit('rayHover', hover ? { hover, ...at } : null);
-  }
-
-  private pointerLeft(): void {
-    this.pointer = null;
-    this.canvas.style.cursor = '';
-    if (this.lastHover) {
-      this.lastHover = null;
-      this.emit('rayHover', null);
-    }
-  }
-
-  private keyDown(event: KeyboardEvent): void {
-    const command = keyCommand(event, this.arrowTarget(this.store.state));
-    if (!command) return;
-    event.preventDefault();
-    this.execute(command);
-  }
-
   /** Dispatches, showing the reason when the store refuses. Returns that reason. */
   private dispatch(action: LabAction): string | undefined {
     const error = this.store.dispatch(action);
@@ -624,11 +484,6 @@ export class LabView {
 
   private emit<K extends keyof LabViewEvents>(type: K, value: LabViewEvents[K]): void {
     for (const listener of this.listeners[type]) (listener as Listener<LabViewEvents[K]>)(value);
-  }
-
-  private listen<K extends keyof HTMLElementEventMap>(target: HTMLElement, type: K, handler: (event: HTMLElementEventMap[K]) => void): void {
-    target.addEventListener(type, handler);
-    this.cleanups.push(() => target.removeEventListener(type, handler));
   }
 }
 

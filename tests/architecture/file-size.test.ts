@@ -33,7 +33,6 @@ const MAX_FILE_LINES = 500;
  */
 const ALLOWED_LONG_FILES: Record<string, string> = {
   'quest/quest-engine.ts': 'the game rules in one class (tasks, hints, predictions, badges, tabs); its pure rules are moving out (prediction-stage.ts), issue 39 splits the rest',
-  'view/lab-view.ts': 'the three.js view: renderer, input, picking, framing; issue 39 item 3 splits it',
   'render/render-pool.ts': 'the worker pool: scheduling, watchdog and recovery share one job state; issue 39',
   'view/ray-pool.ts': 'the instanced rays, cones and arrows share one buffer layout; issue 39',
 };
