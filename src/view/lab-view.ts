@@ -227,11 +227,6 @@ export class LabView {
     return this.drawing.frameCount;
   }
 
-  /** Whether the view is at the ray tracer's camera, or has a way back to where it was. */
-  get atCamera(): boolean {
-    return this.navigation.atCamera;
-  }
-
   /** Draws one frame soon (call after changing anything drawn, like the ray layer's content). */
   requestRender(): void {
     this.drawing.requestRender();
@@ -306,11 +301,6 @@ export class LabView {
     this.navigation.flyToCamera();
   }
 
-  /** Glides back to where the view was before flying to the camera. */
-  flyBack(): void {
-    this.navigation.flyBack();
-  }
-
   /** "Show its rays": glides to where the chosen pixel's whole ray path (and the camera it starts at) fits the view. */
   showPixelRays(): void {
     this.navigation.showPixelRays();
@@ -322,11 +312,6 @@ export class LabView {
    */
   setCoveredBottom(px: number): void {
     this.navigation.setCoveredBottom(px);
-  }
-
-  /** Looks at the whole scene (objects, lights and the tracer's camera) from the front left, above. */
-  frameScene(): void {
-    this.navigation.frameScene();
   }
 
   /** The chosen pixel's latest trace, or null without a pixel or its trace. */
@@ -394,6 +379,7 @@ export class LabView {
   dispose(): void {
     this.unsubscribe();
     this.input.dispose();
+    this.drawing.stop();
     this.navigation.dispose();
     this.selection.dispose();
     this.objects.dispose();

@@ -180,12 +180,17 @@ export class ViewDrawing {
     this.frames++;
   }
 
-  dispose(): void {
+  /** Draws no more frames: first when the view goes, before the scene's parts are disposed. */
+  stop(): void {
     this.removeRayAnimator?.();
     if (this.layer) this.scene.remove(this.layer.object);
     this.burst?.dispose();
     this.pieces?.dispose();
     this.scheduler.dispose();
+  }
+
+  /** Frees the WebGL context: last, after everything drawn with it. */
+  dispose(): void {
     this.renderer.dispose();
   }
 }
