@@ -15,7 +15,17 @@ export default defineConfig({
   // Found by vite only once a test imports them: bundled up front, so that a run does not
   // reload the page half-way (and load lit twice).
   optimizeDeps: {
-    include: ['lit', 'lit/directives/if-defined.js', 'lit/directives/live.js', 'lit/directives/ref.js', 'lit/directives/repeat.js', 'lit/directives/style-map.js', '@lit/context', '@lit/localize', 'zod'],
+    include: [
+      'lit',
+      'lit/directives/if-defined.js',
+      'lit/directives/live.js',
+      'lit/directives/ref.js',
+      'lit/directives/repeat.js',
+      'lit/directives/style-map.js',
+      '@lit/context',
+      '@lit/localize',
+      'zod',
+    ],
   },
   test: {
     include: ['tests/components/**/*.test.ts'],
@@ -33,7 +43,14 @@ export default defineConfig({
       provider: playwright({
         launchOptions: {
           executablePath,
-          args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update', '--no-first-run', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+          args: [
+            '--no-sandbox',
+            '--disable-background-networking',
+            '--disable-component-update',
+            '--no-first-run',
+            '--use-angle=swiftshader',
+            '--enable-unsafe-swiftshader',
+          ],
         },
       }),
       instances: [{ browser: 'chromium' }],

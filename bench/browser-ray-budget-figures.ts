@@ -52,7 +52,10 @@ export function browserRayBudgetRows(all: Record<Compositing, BrowserRayBudgetFi
 
 function rowsOf(compositing: Compositing, figures: BrowserRayBudgetFigures | null): [string, string, string][] {
   const how = COMPOSITING[compositing];
-  if (!figures) return compositing === 'chromium' ? [[`live view, largest free-lab settings (e2e, ${how})`, 'not measured: run npx playwright test e2e/ray-budget.spec.ts', '≤ 100 ms p95']] : [];
+  if (!figures)
+    return compositing === 'chromium'
+      ? [[`live view, largest free-lab settings (e2e, ${how})`, 'not measured: run npx playwright test e2e/ray-budget.spec.ts', '≤ 100 ms p95']]
+      : [];
   const when = `e2e ${figures.measured.slice(0, 10)}, ${how}`;
   const latency = ({ p50Ms, p95Ms, maxMs }: Latency) => `p50 ${p50Ms} / p95 ${p95Ms} / max ${maxMs} ms`;
   const rays = figures.allRays.toLocaleString('en');
@@ -60,9 +63,17 @@ function rowsOf(compositing: Compositing, figures: BrowserRayBudgetFigures | nul
   return [
     [`largest free-lab settings, ${rays} rays: drag, step to its frame (${drag.view.steps} steps, ${when})`, latency(drag.view), '≤ 100 ms p95'],
     [`  the same, step to its rays (traced in the worker)`, latency(drag.rays), ''],
-    [`  arrow keys a step per 150 ms, step to its frame (${keys.view.steps} steps)`, `${latency(keys.view)}; ${(keys.wallMs / 1000).toFixed(1)} s in all`, '≤ 100 ms p95'],
+    [
+      `  arrow keys a step per 150 ms, step to its frame (${keys.view.steps} steps)`,
+      `${latency(keys.view)}; ${(keys.wallMs / 1000).toFixed(1)} s in all`,
+      '≤ 100 ms p95',
+    ],
     [`  the same, step to its rays`, latency(keys.rays), ''],
-    [`  rays a frame drew while the slider moved; all again after the last step`, `${Math.max(drag.mostRays, keys.mostRays).toLocaleString('en')}; ${(drag.allRaysAfterMs / 1000).toFixed(1)} / ${(keys.allRaysAfterMs / 1000).toFixed(1)} s`, ''],
+    [
+      `  rays a frame drew while the slider moved; all again after the last step`,
+      `${Math.max(drag.mostRays, keys.mostRays).toLocaleString('en')}; ${(drag.allRaysAfterMs / 1000).toFixed(1)} / ${(keys.allRaysAfterMs / 1000).toFixed(1)} s`,
+      '',
+    ],
   ];
 }
 

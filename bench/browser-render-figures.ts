@@ -28,7 +28,8 @@ export function browserRenderFigures(): Record<Compositing, BrowserRenderFigures
 }
 
 /** The longest of `tasks`, or that there is none over 50 ms. */
-const longest = (tasks: [number, number][]) => (tasks.length === 0 ? 'none over 50 ms' : `${Math.max(...tasks.map(([, duration]) => duration))} ms (${tasks.length} over 50 ms)`);
+const longest = (tasks: [number, number][]) =>
+  tasks.length === 0 ? 'none over 50 ms' : `${Math.max(...tasks.map(([, duration]) => duration))} ms (${tasks.length} over 50 ms)`;
 
 export function browserRenderRows(all: Record<Compositing, BrowserRenderFigures | null>): [string, string, string][] {
   return COMPOSITINGS.flatMap((compositing): [string, string, string][] => {

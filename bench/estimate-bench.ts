@@ -85,7 +85,8 @@ export async function measureEstimates(): Promise<EstimateCase[]> {
       const [askedWidth, askedHeight] = [Math.min(4096, Math.round(width * scale)), Math.min(4096, Math.round(height * scale))];
       const asked = here.estimate(scene, askedWidth, askedHeight);
       const smaller = lighterRenders(scene, askedWidth, askedHeight, here.estimate).find((option) => option.change === 'image-size');
-      if (!asked.heavy || smaller?.change !== 'image-size') throw new Error(`${name}: estimated at ${asked.seconds.toFixed(0)} s, not heavy enough to suggest a smaller image`);
+      if (!asked.heavy || smaller?.change !== 'image-size')
+        throw new Error(`${name}: estimated at ${asked.seconds.toFixed(0)} s, not heavy enough to suggest a smaller image`);
       const result = await pool.render(scene, meshes, { width: smaller.width, height: smaller.height }).done;
       if (result.cancelled) throw new Error(`${name}: the render was cancelled`);
       calibration.record(smaller.estimate.seconds / correction, result.ms);

@@ -108,7 +108,10 @@ async function timeFirstPreview(scene: Scene, meshes: MeshLibrary): Promise<numb
   const pool = createNodeRenderPool(2);
   try {
     await pool.render(scene, meshes, { width: 128, height: 128, preview: false }).done;
-    const edited: Scene = { ...scene, objects: scene.objects.map((o, i) => (i === 2 ? { ...o, position: [o.position[0] + 0.1, o.position[1], o.position[2]] } : o)) };
+    const edited: Scene = {
+      ...scene,
+      objects: scene.objects.map((o, i) => (i === 2 ? { ...o, position: [o.position[0] + 0.1, o.position[1], o.position[2]] } : o)),
+    };
     const started = performance.now();
     let firstPreviewMs = NaN;
     const job = pool.render(edited, meshes, {
@@ -231,7 +234,9 @@ async function estimatesOnly(): Promise<void> {
 async function main(): Promise<void> {
   const scene = loadReferenceScene();
   const [width, height] = scene.settings.imageSize;
-  console.log(`Reference scene: ${width}×${height}, supersampling ${scene.settings.supersampling}, maxDepth ${scene.settings.maxDepth}, ${scene.objects.length} objects, ${scene.lights.length} lights\n`);
+  console.log(
+    `Reference scene: ${width}×${height}, supersampling ${scene.settings.supersampling}, maxDepth ${scene.settings.maxDepth}, ${scene.objects.length} objects, ${scene.lights.length} lights\n`,
+  );
 
   const meshes = await loadMeshesFromDisk(meshNamesInScene(scene));
   // The first build of these models in this process: their BVHs are built, not cached.
@@ -269,7 +274,12 @@ async function main(): Promise<void> {
     firstPreviewMs: round(firstPreviewMs),
     bvhBuildMs: round(bvhBuildMs),
     slowestTileMs: round(slowestTileMs),
-    anchor: { measured: anchor.measured, anchorRenderMs2Threads: anchor.anchorRenderMs2Threads, oursRenderMs2Workers: anchor.oursRenderMs2Workers, ratio: anchor.ratio },
+    anchor: {
+      measured: anchor.measured,
+      anchorRenderMs2Threads: anchor.anchorRenderMs2Threads,
+      oursRenderMs2Workers: anchor.oursRenderMs2Workers,
+      ratio: anchor.ratio,
+    },
     objectCount,
     rtRender16Ms: { introduction: round(rtRender16.introductionMs), reference: round(rtRender16.referenceMs) },
     view: roundedView(view),

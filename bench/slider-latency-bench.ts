@@ -59,12 +59,15 @@ async function moveSlider(services: Lab, sceneOfRays: () => Scene | null, steps:
   // What each published screen showed, and when: a cheap screen is published inside the dispatch, before it returns.
   const shown: { scene: Scene | null; at: number }[] = [];
   const stop = services.subscribe(() => shown.push({ scene: sceneOfRays(), at: performance.now() }));
-  const drawnAt = (step: number): number | undefined =>
-    shown.find(({ scene }) => dispatched.findIndex((sent) => sent.scene === scene) >= step)?.at;
+  const drawnAt = (step: number): number | undefined => shown.find(({ scene }) => dispatched.findIndex((sent) => sent.scene === scene) >= step)?.at;
   const object = services.store.state.scene.objects[0];
   for (let i = 0; i < steps; i++) {
     const at = performance.now();
-    services.store.dispatch({ type: 'object.changed', id: object.id, changes: { position: [object.position[0] + 0.01 * (i + 1), object.position[1], object.position[2]] } });
+    services.store.dispatch({
+      type: 'object.changed',
+      id: object.id,
+      changes: { position: [object.position[0] + 0.01 * (i + 1), object.position[1], object.position[2]] },
+    });
     dispatched.push({ scene: services.store.state.scene, at });
     await sleep(everyMs);
   }
@@ -122,7 +125,11 @@ export function sliderRows({ firstDrag, drag, keys }: SliderBenchResults): [stri
     `p50 ${latency.p50Ms} / p95 ${latency.p95Ms} / max ${latency.maxMs} ms${latency.lastDrawn ? '' : ', last value NOT drawn'}`,
     '≤ 100 ms p95',
   ];
-  return [row('first drag (JIT still compiling), a step per 16 ms', firstDrag), row('drag, a step per 16 ms', drag), row('arrow keys, a step per 150 ms', keys)];
+  return [
+    row('first drag (JIT still compiling), a step per 16 ms', firstDrag),
+    row('drag, a step per 16 ms', drag),
+    row('arrow keys, a step per 150 ms', keys),
+  ];
 }
 
 if (process.argv[1]?.endsWith('slider-latency-bench.ts')) {

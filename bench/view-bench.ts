@@ -40,11 +40,13 @@ export interface ViewBenchResults {
 
 function timeMedian(run: (i: number) => void): number {
   run(0); // warm-up: the JIT and the pooled buffers' first growth
-  return median(Array.from({ length: REPEATS }, (_, i) => {
-    const started = performance.now();
-    run(i + 1);
-    return performance.now() - started;
-  }));
+  return median(
+    Array.from({ length: REPEATS }, (_, i) => {
+      const started = performance.now();
+      run(i + 1);
+      return performance.now() - started;
+    }),
+  );
 }
 
 /** A pointer ray from the usual lab viewpoint through the middle of the synthetic rays. */

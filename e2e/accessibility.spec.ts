@@ -55,7 +55,9 @@ for (const lang of ['en', 'nl'] as const) {
 
     await at('#/dashboard');
     const dashboard = page.locator('rt-dashboard-page');
-    await dashboard.locator('input[type=file]').setInputFiles(classFiles.map((file) => ({ name: file.name, mimeType: 'application/json', buffer: Buffer.from(file.text) })));
+    await dashboard
+      .locator('input[type=file]')
+      .setInputFiles(classFiles.map((file) => ({ name: file.name, mimeType: 'application/json', buffer: Buffer.from(file.text) })));
     await expect(dashboard.locator('section.level').first()).toBeVisible();
     await expectAccessible(page, 'the dashboard');
 

@@ -73,7 +73,9 @@ test('show the BVH, change its depth, and read what one ray tested', async ({ pa
 
   // One pixel on the character: its ray's tests, far fewer than all 8,624 triangles.
   await expect(panel.getByText('Select a pixel of the camera’s screen to count what its ray tests.')).toBeVisible();
-  await page.evaluate(() => (document.querySelector('rt-lab') as unknown as { store: { dispatch(action: unknown): void } }).store.dispatch({ type: 'pixel.selected', pixel: [6, 4] }));
+  await page.evaluate(() =>
+    (document.querySelector('rt-lab') as unknown as { store: { dispatch(action: unknown): void } }).store.dispatch({ type: 'pixel.selected', pixel: [6, 4] }),
+  );
   const counts = panel.locator('.counts');
   await expect(counts).toContainText(/This ray tested \d+ of 8,624 triangles: the BVH skipped 99\.\d\u00a0%\./);
   const tested = Number(await counts.getAttribute('data-triangles'));
@@ -97,7 +99,9 @@ test('bounding boxes: one per object, and a ray above everything tests no triang
   expect((await state(page)).bvh.showBounds).toBe(true);
   await expect.poll(() => boxesDrawn(page, 'bounds')).toBe(4);
 
-  await page.evaluate(() => (document.querySelector('rt-lab') as unknown as { store: { dispatch(action: unknown): void } }).store.dispatch({ type: 'pixel.selected', pixel: [0, 0] }));
+  await page.evaluate(() =>
+    (document.querySelector('rt-lab') as unknown as { store: { dispatch(action: unknown): void } }).store.dispatch({ type: 'pixel.selected', pixel: [0, 0] }),
+  );
   const counts = panel.locator('.counts');
   await expect(counts).toContainText('This ray tested 0 of 8,624 triangles: it missed the bounding box of every model.');
   await expect(counts).toContainText('its ray tested 4 bounding boxes (one per object) and went through none of them');

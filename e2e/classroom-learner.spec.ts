@@ -71,7 +71,15 @@ test('one student hands in four files: the dashboard shows one learner who passe
   expect(Date.parse(look.started_at)).toBeGreaterThanOrEqual(codeGiven - 1000);
   expect(Number(look.duration_ms)).toBeLessThan(CODE_WAIT_MS);
   for (const row of rows) {
-    expect(row).toMatchObject({ participant: '007', learner_id: '007', class_code: '3B', survey: 'default', survey_education: 'secondary', survey_minutes: '12', 'survey_computer-skill': '7' });
+    expect(row).toMatchObject({
+      participant: '007',
+      learner_id: '007',
+      class_code: '3B',
+      survey: 'default',
+      survey_education: 'secondary',
+      survey_minutes: '12',
+      'survey_computer-skill': '7',
+    });
     expect(row.attempt_id).toMatch(/^[0-9a-f-]{36}$/);
   }
   expect(new Set(rows.map((row) => row.attempt_id)).size).toBe(1);
@@ -112,7 +120,7 @@ test('the survey has a readable page of its own over the lab at 1366×768, and o
   await expectWordsPerLine(survey, 6);
   await expectScalesInOneRow(survey);
   await page.screenshot({ path: 'test-results/screens/survey-page.png' });
-  await expectAccessible(page, 'the survey\'s page over the lab');
+  await expectAccessible(page, "the survey's page over the lab");
 
   // Later (or Esc) goes back to the lab; the task column offers the survey again.
   await surveyPage.getByRole('button', { name: 'Later' }).click();
@@ -152,9 +160,16 @@ test('the survey has a readable page of its own over the lab at 1366×768, and o
 
 /** Each scale's steps (1 to 10, 1 to 5) side by side in one row. */
 async function expectScalesInOneRow(survey: Locator): Promise<void> {
-  const rows = await survey.locator('.scale .options').evaluateAll((scales) => scales.map((scale) => new Set([...scale.querySelectorAll('label')].map((label) => Math.round(label.getBoundingClientRect().top))).size));
+  const rows = await survey
+    .locator('.scale .options')
+    .evaluateAll((scales) =>
+      scales.map((scale) => new Set([...scale.querySelectorAll('label')].map((label) => Math.round(label.getBoundingClientRect().top))).size),
+    );
   expect(rows.length).toBeGreaterThan(5);
-  expect(rows.every((count) => count === 1), JSON.stringify(rows)).toBe(true);
+  expect(
+    rows.every((count) => count === 1),
+    JSON.stringify(rows),
+  ).toBe(true);
 }
 
 /**
@@ -171,9 +186,14 @@ async function expectWordsPerLine(survey: Locator, least: number): Promise<void>
       const range = document.createRange();
       range.selectNodeContents(node);
       // Inline boxes of one line (a span in a smaller font) start a few pixels apart; a new line starts a line's height lower.
-      const tops = [...range.getClientRects()].filter((rect) => rect.width > 0).map((rect) => rect.top).sort((a, b) => a - b);
+      const tops = [...range.getClientRects()]
+        .filter((rect) => rect.width > 0)
+        .map((rect) => rect.top)
+        .sort((a, b) => a - b);
       const lines = tops.filter((top, i) => i === 0 || top > tops[i - 1]! + 8).length;
-      return words / lines < least ? [`${node.tagName} "${node.textContent?.trim()}": ${words} words on ${lines} lines, ${Math.round(node.getBoundingClientRect().width)} px wide`] : [];
+      return words / lines < least
+        ? [`${node.tagName} "${node.textContent?.trim()}": ${words} words on ${lines} lines, ${Math.round(node.getBoundingClientRect().width)} px wide`]
+        : [];
     });
   }, least);
   expect(squeezed).toEqual([]);

@@ -121,7 +121,15 @@ test('the survey says what is missing and hands in the answers', async ({ page }
   await survey.getByRole('button', { name: 'Hand in' }).click();
   expect(await submitted).toMatchObject({
     survey: 'default',
-    answers: { education: 'secondary', 'computer-skill': 7, 'prior-knowledge': 1, minutes: 35, 'learned-supersampling': 5, ease: 'about-right', feedback: 'Nice, "really"\nthanks' },
+    answers: {
+      education: 'secondary',
+      'computer-skill': 7,
+      'prior-knowledge': 1,
+      minutes: 35,
+      'learned-supersampling': 5,
+      ease: 'about-right',
+      feedback: 'Nice, "really"\nthanks',
+    },
   });
   await expect(survey.getByRole('status')).toHaveText(/Thank you/);
   expect(errors).toEqual([]);
@@ -206,8 +214,16 @@ test('a student plays a one-level assignment, answers the survey and downloads C
     events: unknown;
     survey: { survey: string; answers: Record<string, unknown> };
   };
-  expect(exported).toMatchObject({ format: 'ray-tracer-quest-export', appVersion: version, participant: 'P-07', assignment: { title, levels: ['01-introduction'] } });
-  expect(exported.survey).toMatchObject({ survey: 'default', answers: { education: 'secondary', 'computer-skill': 7, minutes: 12, ease: 'about-right', feedback: 'Nice, "really"\nthanks' } });
+  expect(exported).toMatchObject({
+    format: 'ray-tracer-quest-export',
+    appVersion: version,
+    participant: 'P-07',
+    assignment: { title, levels: ['01-introduction'] },
+  });
+  expect(exported.survey).toMatchObject({
+    survey: 'default',
+    answers: { education: 'secondary', 'computer-skill': 7, minutes: 12, ease: 'about-right', feedback: 'Nice, "really"\nthanks' },
+  });
   const log = eventLogSchema.parse(exported.events);
   const types = log.events.map((event) => event.type);
   for (const type of ['session.started', 'level.opened', 'task.shown', 'hint.shown', 'task.completed', 'level.passed']) expect(types).toContain(type);

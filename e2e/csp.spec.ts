@@ -7,7 +7,9 @@ test('the built page has a strict CSP and a render breaks none of it', async ({ 
   await page.addInitScript(() => {
     const seen: string[] = [];
     (window as unknown as { cspViolations: string[] }).cspViolations = seen;
-    document.addEventListener('securitypolicyviolation', (event) => seen.push(`${event.violatedDirective} ${event.blockedURI} ${event.sourceFile}:${event.lineNumber}:${event.columnNumber} ${event.sample}`));
+    document.addEventListener('securitypolicyviolation', (event) =>
+      seen.push(`${event.violatedDirective} ${event.blockedURI} ${event.sourceFile}:${event.lineNumber}:${event.columnNumber} ${event.sample}`),
+    );
   });
   await page.goto('./#free-lab');
   const policy = await page.locator('meta[http-equiv="Content-Security-Policy"]').getAttribute('content');

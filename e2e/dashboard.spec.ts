@@ -29,9 +29,9 @@ test('the dashboard reads a class of exports, shows the charts and skips a damag
   await expect(dashboard.getByRole('button', { name: 'Download combined CSV' })).toBeDisabled();
 
   // The file button (keyboard and touch path).
-  await dashboard.locator('input[type=file]').setInputFiles(
-    [...files.slice(0, 20), damaged].map((file) => ({ name: file.name, mimeType: 'application/json', buffer: Buffer.from(file.text) })),
-  );
+  await dashboard
+    .locator('input[type=file]')
+    .setInputFiles([...files.slice(0, 20), damaged].map((file) => ({ name: file.name, mimeType: 'application/json', buffer: Buffer.from(file.text) })));
   await expect(dashboard.getByRole('status').filter({ hasText: '20 learners counted, 1 file skipped.' })).toBeVisible();
 
   // Drag and drop, added to what was read.
@@ -95,7 +95,9 @@ test('the dashboard works at 1024×768 and clears', async ({ page }) => {
   await page.setViewportSize({ width: 1024, height: 768 });
   await page.goto('./#/dashboard');
   const dashboard = page.locator('rt-dashboard-page');
-  await dashboard.locator('input[type=file]').setInputFiles(files.slice(0, 3).map((file) => ({ name: file.name, mimeType: 'application/json', buffer: Buffer.from(file.text) })));
+  await dashboard
+    .locator('input[type=file]')
+    .setInputFiles(files.slice(0, 3).map((file) => ({ name: file.name, mimeType: 'application/json', buffer: Buffer.from(file.text) })));
   await expect(dashboard.getByRole('status')).toHaveText('3 learners counted, 0 files skipped.');
   const width = await page.evaluate(() => document.documentElement.scrollWidth);
   expect(width).toBeLessThanOrEqual(1024);

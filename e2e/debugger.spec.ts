@@ -36,7 +36,9 @@ const SHOTS = process.env.E2E_SHOTS ?? 'test-results/debugger';
 const scene = defaultScene();
 const tracer = buildTracerScene(scene, new Map());
 const [columns, rows] = scene.camera.pixels;
-const traces: PixelTrace[] = Array.from({ length: columns * rows }, (_, p) => tracePixel(tracer, p % columns, Math.floor(p / columns), DEFAULT_SEED, { terms: true }));
+const traces: PixelTrace[] = Array.from({ length: columns * rows }, (_, p) =>
+  tracePixel(tracer, p % columns, Math.floor(p / columns), DEFAULT_SEED, { terms: true }),
+);
 
 function rays(nodes: RayNode[]): RayNode[] {
   return nodes.flatMap((node) => [node, ...rays(node.children)]);
@@ -70,7 +72,10 @@ async function checkEquation(page: Page): Promise<void> {
 async function stepThrough(page: Page, name: string, trace: PixelTrace): Promise<void> {
   const [x, y] = trace.pixel;
   const program: DebugProgram = debugProgram(trace, scene);
-  await page.locator('rt-screen-preview').getByRole('button', { name: `Pixel ${x}, ${y}`, exact: true }).click();
+  await page
+    .locator('rt-screen-preview')
+    .getByRole('button', { name: `Pixel ${x}, ${y}`, exact: true })
+    .click();
   await page.getByRole('button', { name: 'Debug a pixel' }).click();
   const debuggerPanel = page.locator('rt-ray-debugger');
   const view = page.locator('[data-ray-instances]').first();
@@ -207,7 +212,12 @@ const distributed: { name: string; scene: Scene; pick: (trace: PixelTrace) => bo
   {
     // An area light with 3 × 3 samples over a point at the edge of the pole's shadow: some samples blocked, some not.
     name: 'area-light',
-    scene: levelScene('10-area-lights', (scene) => Object.assign(scene.lights.find((light) => light.id === 'panel')!, { samples: 3 })),
+    scene: levelScene('10-area-lights', (scene) =>
+      Object.assign(
+        scene.lights.find((light) => light.id === 'panel')!,
+        { samples: 3 },
+      ),
+    ),
     pick: (trace) => {
       const samples = trace.rays[0].children.filter((child) => child.lightId === 'panel');
       return samples.length === 9 && samples.some((ray) => ray.type === 'shadow') && samples.some((ray) => ray.type === 'light');
@@ -217,7 +227,9 @@ const distributed: { name: string; scene: Scene; pick: (trace: PixelTrace) => bo
 ];
 
 for (const { name, scene, pick, nests } of distributed) {
-  test(`${name === 'area-light' ? 'an' : 'a'} ${name} pixel: its rays as a tree, a sum that grows to the image's pixel, terms that scroll at 1366×768`, async ({ page }) => {
+  test(`${name === 'area-light' ? 'an' : 'a'} ${name} pixel: its rays as a tree, a sum that grows to the image's pixel, terms that scroll at 1366×768`, async ({
+    page,
+  }) => {
     mkdirSync(SHOTS, { recursive: true });
     const errors = collectErrors(page);
     const trace = screenOf(scene).find(pick);
@@ -248,14 +260,22 @@ for (const { name, scene, pick, nests } of distributed) {
       const equation = debuggerPanel.locator('rt-debug-equation');
       if (steps[index].kind === 'shade' || index === steps.length - 1) await checkScrolls(page, equation);
       if (index === steps.length - 1) await checkTreeScrolls(page, tree);
-      if (steps[index].kind === 'shade' && steps[index].level === nests && !steps.slice(0, index).some((step) => step.kind === 'shade' && step.level === nests)) {
+      if (
+        steps[index].kind === 'shade' &&
+        steps[index].level === nests &&
+        !steps.slice(0, index).some((step) => step.kind === 'shade' && step.level === nests)
+      ) {
         await page.screenshot({ path: `${SHOTS}/${name}-nested.png` });
       }
       if (index < steps.length - 1) await page.keyboard.press('ArrowRight');
     }
     expect(grew).toBeGreaterThan(2);
     // Nested on screen: a deeper row starts further right than a shallower one.
-    const levels = await tree.locator('li[data-level]').evaluateAll((rows) => rows.map((row) => ({ level: Number(row.getAttribute('data-level')), left: row.querySelector('.label')!.getBoundingClientRect().left })));
+    const levels = await tree
+      .locator('li[data-level]')
+      .evaluateAll((rows) =>
+        rows.map((row) => ({ level: Number(row.getAttribute('data-level')), left: row.querySelector('.label')!.getBoundingClientRect().left })),
+      );
     const deepest = Math.max(...levels.map((row) => row.level));
     expect(deepest).toBeGreaterThanOrEqual(nests);
     const leftOf = (level: number) => levels.find((row) => row.level === level)!.left;
@@ -265,7 +285,10 @@ for (const { name, scene, pick, nests } of distributed) {
     await expect(sum.locator('.note')).toContainText(`8-bit: ${bytes.join(', ')}`);
     expect(shown).toBe(`rgb(${bytes.join(', ')})`);
     const totals = await debuggerPanel.locator('rt-debug-equation .total').allTextContents();
-    expect(totals.map((text) => text.replace(/\s+/g, ' '))).toEqual([expect.stringContaining(`8-bit: ${bytes.join(', ')}`), expect.stringContaining(`8-bit: ${bytes.join(', ')}`)]);
+    expect(totals.map((text) => text.replace(/\s+/g, ' '))).toEqual([
+      expect.stringContaining(`8-bit: ${bytes.join(', ')}`),
+      expect.stringContaining(`8-bit: ${bytes.join(', ')}`),
+    ]);
     await page.screenshot({ path: `${SHOTS}/${name}-end.png` });
     expect(errors).toEqual([]);
   });

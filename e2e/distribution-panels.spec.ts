@@ -34,7 +34,9 @@ async function typeInto(page: Page, panel: string, label: string, value: string)
  * first field's alone.
  */
 async function expectMoreRays(page: Page, before: number, what: string, atLeast = before + 1): Promise<number> {
-  await expect.poll(() => drawnRays(page), { message: `${what}: the view draws more rays`, timeout: 60_000 }).toBeGreaterThanOrEqual(Math.max(before + 1, atLeast));
+  await expect
+    .poll(() => drawnRays(page), { message: `${what}: the view draws more rays`, timeout: 60_000 })
+    .toBeGreaterThanOrEqual(Math.max(before + 1, atLeast));
   return drawnRays(page);
 }
 
@@ -56,7 +58,10 @@ test('aperture, roughness and movement set in the panels change what the 3D view
   // Focus on the selected object: the plane in focus goes through the red ball's centre.
   const list = page.locator('rt-scene-list');
   await list.getByRole('option', { name: /Red ball/ }).click();
-  await page.locator('rt-tracer-panel').getByRole('button', { name: /^Focus on / }).click();
+  await page
+    .locator('rt-tracer-panel')
+    .getByRole('button', { name: /^Focus on / })
+    .click();
   const { camera } = (await state(page)).scene;
   const forward = camera.target.map((t, axis) => t - camera.position[axis]);
   const along = [-1.5, 0.5, 0.3].reduce((sum, p, axis) => sum + (p - camera.position[axis]) * forward[axis], 0) / Math.hypot(...forward);

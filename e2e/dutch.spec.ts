@@ -24,17 +24,29 @@ function dutchOfLevel(value: unknown): string[] {
 }
 
 const levelFiles = JSON.parse(readFileSync(new URL('index.json', levelsFolder), 'utf8')) as { chapters: { levels: string[] }[] };
-const dutchLevelTexts = levelFiles.chapters.flatMap((chapter) => chapter.levels).flatMap((id) => dutchOfLevel(JSON.parse(readFileSync(new URL(`${id}.level.json`, levelsFolder), 'utf8'))));
+const dutchLevelTexts = levelFiles.chapters
+  .flatMap((chapter) => chapter.levels)
+  .flatMap((id) => dutchOfLevel(JSON.parse(readFileSync(new URL(`${id}.level.json`, levelsFolder), 'utf8'))));
 
 /** A text without what it quotes: a Dutch reason may quote a field path ("scene.settings.shadows"), which is no Dutch word. */
 const prose = (text: string) => text.replace(/"[^"]*"/g, ' ');
 /** A text without web addresses: a field's example (https://school.example) is in no language. */
 const withoutAddresses = (text: string) => text.replace(/\bhttps?:\/\/\S+/g, ' ');
 
-/** Words Dutch uses too (in the Dutch catalogue or a Dutch level text): "lens", "pixel", "ray tracer". */
-const dutchWords = new Set([...catalogue.flatMap((message) => message.nl.map(prose)), ...dutchLevelTexts].flatMap(words));
+/**
+ * Words Dutch uses too (in the Dutch catalogue or a Dutch level text): "lens", "pixel", "ray
+ * tracer"; and each language's own name, which a language choice shows as it is in any
+ * language ("English" beside "Nederlands" on the teacher page).
+ */
+const LANGUAGE_NAMES = 'English Nederlands';
+const dutchWords = new Set([...catalogue.flatMap((message) => message.nl.map(prose)), ...dutchLevelTexts, LANGUAGE_NAMES].flatMap(words));
 /** The English-only words of the UI: what may not show in Dutch. */
-const englishOnly = new Set(catalogue.flatMap((message) => message.en).flatMap(words).filter((word) => !dutchWords.has(word)));
+const englishOnly = new Set(
+  catalogue
+    .flatMap((message) => message.en)
+    .flatMap(words)
+    .filter((word) => !dutchWords.has(word)),
+);
 
 /** What the learner can read or hear: visible text nodes and the labels of elements, in and under every shadow root. */
 async function shownTexts(page: Page): Promise<string[]> {
@@ -47,7 +59,8 @@ async function shownTexts(page: Page): Promise<string[]> {
           const parent = node.parentElement;
           if (parent && !['STYLE', 'SCRIPT'].includes(parent.tagName) && parent.checkVisibility() && node.data.trim()) found.push(node.data.trim());
         } else if (node instanceof Element) {
-          if (node.checkVisibility()) for (const name of ['aria-label', 'title', 'placeholder', 'alt']) if (node.getAttribute(name)) found.push(node.getAttribute(name) ?? '');
+          if (node.checkVisibility())
+            for (const name of ['aria-label', 'title', 'placeholder', 'alt']) if (node.getAttribute(name)) found.push(node.getAttribute(name) ?? '');
           if (node.shadowRoot) visit(node.shadowRoot);
         }
       }
@@ -174,9 +187,9 @@ test("the teacher's survey preview in Dutch asks its questions in Dutch", async 
 test('the class dashboard in Dutch names the levels and tasks in Dutch and shows no English', async ({ page }) => {
   await checkDutchPage(page, '#/dashboard', 'dashboard', async () => {
     const dashboard = page.locator('rt-dashboard-page');
-    await dashboard.locator('input[type=file]').setInputFiles(
-      simulatedClassFiles(6).map((file) => ({ name: file.name, mimeType: 'application/json', buffer: Buffer.from(file.text) })),
-    );
+    await dashboard
+      .locator('input[type=file]')
+      .setInputFiles(simulatedClassFiles(6).map((file) => ({ name: file.name, mimeType: 'application/json', buffer: Buffer.from(file.text) })));
     await expect(dashboard.getByRole('status').filter({ hasText: '6 leerlingen geteld' })).toBeVisible();
     await expect(dashboard.getByRole('heading', { name: 'Introductie' })).toBeVisible();
   });

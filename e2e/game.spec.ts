@@ -137,7 +137,9 @@ test('a drag on the orbit pad selects no text, and a level opens at its title wi
   expect(scrolled).toBeGreaterThan(0);
   await page.evaluate(() => document.getSelection()!.selectAllChildren(document.body));
   expect(await selected()).toBe('Range');
-  await panel(page).getByRole('button', { name: 'Next level' }).evaluate((button: HTMLButtonElement) => button.click());
+  await panel(page)
+    .getByRole('button', { name: 'Next level' })
+    .evaluate((button: HTMLButtonElement) => button.click());
   await expect(panel(page).locator('h2')).toHaveText('Rays from the camera');
   await expect.poll(() => column.evaluate((element) => element.scrollTop)).toBe(0);
   await expect(panel(page).locator('h2')).toBeInViewport();
@@ -266,7 +268,8 @@ async function typeInSlider(page: Page, name: string, value: string): Promise<vo
   await field.press('Enter');
 }
 
-const pixel = (page: Page, column: number, row: number) => page.locator('rt-screen-preview').getByRole('button', { name: `Pixel ${column}, ${row}`, exact: true });
+const pixel = (page: Page, column: number, row: number) =>
+  page.locator('rt-screen-preview').getByRole('button', { name: `Pixel ${column}, ${row}`, exact: true });
 
 async function playLevel3(page: Page): Promise<void> {
   await expect(panel(page).getByRole('heading', { name: 'Shading' })).toBeVisible();

@@ -43,7 +43,10 @@ function lab(page: Page) {
 }
 
 async function guideBox(page: Page, target: string) {
-  return lab(page).evaluate((element, id) => (element as unknown as { guideRect(id: string): { left: number; top: number; width: number; height: number } | null }).guideRect(id), target);
+  return lab(page).evaluate(
+    (element, id) => (element as unknown as { guideRect(id: string): { left: number; top: number; width: number; height: number } | null }).guideRect(id),
+    target,
+  );
 }
 
 async function guideCount(page: Page, target: string): Promise<number> {
@@ -87,7 +90,15 @@ async function expectHitWhereRingPoints(page: Page, where: string, target: strin
   }, target);
   for (const [index, point] of carriers.entries()) {
     await page.mouse.move(point.x, point.y);
-    const over = await lab(page).evaluate((element, [id, at]) => (element as unknown as { guideElements(id: string): Element[] }).guideElements(id).filter((carrier) => carrier.getBoundingClientRect().width > 0)[at]?.matches(':hover') ?? false, [target, index] as const);
+    const over = await lab(page).evaluate(
+      (element, [id, at]) =>
+        (element as unknown as { guideElements(id: string): Element[] })
+          .guideElements(id)
+          .filter((carrier) => carrier.getBoundingClientRect().width > 0)
+          .at(at)
+          ?.matches(':hover') ?? false,
+      [target, index] as const,
+    );
     expect(over, `${where}: the pointer on ${target} (part ${index + 1} of ${carriers.length}) is over it, not over something on top`).toBe(true);
   }
   if (carriers.length > 0) return;
@@ -96,11 +107,13 @@ async function expectHitWhereRingPoints(page: Page, where: string, target: strin
   // something hides (level 14's ball behind the wall), so a click there rightly picks the wall.
   const pixel = /^screen\.pixel:(\d+),(\d+)$/.exec(target);
   if (!pixel) return; // or a control reached through another (its panel's note) until it is shown
-  const picked = await page.locator('rt-scene-view').evaluate(
-    (element, point) => (element as unknown as { labView: { pickAt(x: number, y: number): unknown } }).labView.pickAt(point.x, point.y),
-    centre,
-  );
-  expect(picked, `${where}: a click where the ring points picks pixel ${pixel![1]},${pixel![2]}`).toEqual({ kind: 'pixel', pixel: [Number(pixel![1]), Number(pixel![2])] });
+  const picked = await page
+    .locator('rt-scene-view')
+    .evaluate((element, point) => (element as unknown as { labView: { pickAt(x: number, y: number): unknown } }).labView.pickAt(point.x, point.y), centre);
+  expect(picked, `${where}: a click where the ring points picks pixel ${pixel![1]},${pixel![2]}`).toEqual({
+    kind: 'pixel',
+    pixel: [Number(pixel![1]), Number(pixel![2])],
+  });
 }
 
 /** Climbs the current task's hint ladder to "Show me", checking the ring on the way, then lets the app do the task. */

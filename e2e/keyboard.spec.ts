@@ -26,7 +26,9 @@ async function press(target: Locator, ...keys: string[]): Promise<void> {
 const canvas = (page: Page) => page.locator('rt-scene-view canvas');
 const keyNote = (page: Page) => page.locator('rt-scene-view p.note[role="status"]');
 
-test('level 1 by keyboard only: every mandatory task done, Tab leaves the view, focus comes back from the render window, the help and the map', async ({ page }) => {
+test('level 1 by keyboard only: every mandatory task done, Tab leaves the view, focus comes back from the render window, the help and the map', async ({
+  page,
+}) => {
   const errors = collectErrors(page);
   await page.goto('./');
   await press(page.getByRole('button', { name: 'Got it' }), 'Enter');
@@ -101,7 +103,9 @@ test('level 1 by keyboard only: every mandatory task done, Tab leaves the view, 
   expect(errors).toEqual([]);
 });
 
-test('the shadows level by keyboard only: a pixel of the camera’s screen with P and the arrows, the quiz, the switches, two renders, the lamp moved', async ({ page }) => {
+test('the shadows level by keyboard only: a pixel of the camera’s screen with P and the arrows, the quiz, the switches, two renders, the lamp moved', async ({
+  page,
+}) => {
   await page.goto('./');
   await page.getByRole('button', { name: 'Got it' }).click();
   await importProgress(page, progressFile(['01-introduction', '02-rays-from-the-camera', '03-shading']));

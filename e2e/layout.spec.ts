@@ -1,5 +1,16 @@
 import { expect, test, type Page } from '@playwright/test';
-import { clickToolbar, collectErrors, current, expectRingAround, expectStatus, importProgress, objectOnScreen, panel, progressFile, state } from './support/game-steps.ts';
+import {
+  clickToolbar,
+  collectErrors,
+  current,
+  expectRingAround,
+  expectStatus,
+  importProgress,
+  objectOnScreen,
+  panel,
+  progressFile,
+  state,
+} from './support/game-steps.ts';
 
 // The lab on a phone (390×844 upright and 844×390 on its side, touch), on a tablet (1024×768,
 // touch) and on a laptop at 200 % zoom (1366×768 shows 683×384 CSS px): the 3D view and the
@@ -71,7 +82,12 @@ async function expectViewAndCurrentTask(page: Page): Promise<void> {
 async function expectTouchTargets(page: Page): Promise<void> {
   const sizes = await page
     .locator('rt-view-toolbar button, [data-command="levels"], [data-command="render-open"], [data-command="show-tasks"], [data-command="show-panels"]')
-    .evaluateAll((elements) => elements.map((e) => e.getBoundingClientRect()).filter((box) => box.width > 0).map((box) => Math.min(box.width, box.height)));
+    .evaluateAll((elements) =>
+      elements
+        .map((e) => e.getBoundingClientRect())
+        .filter((box) => box.width > 0)
+        .map((box) => Math.min(box.width, box.height)),
+    );
   expect(sizes.length).toBeGreaterThan(5);
   expect(Math.min(...sizes)).toBeGreaterThanOrEqual(44);
 }
@@ -105,7 +121,9 @@ async function emptySpot(page: Page): Promise<{ x: number; y: number }> {
 test.describe('a phone, by touch', () => {
   test.use({ viewport: { width: 390, height: 844 }, hasTouch: true, isMobile: true, deviceScaleFactor: 2 });
 
-  test('level 1 at 390×844 by touch: the view over the tasks or the panels, taps, a finger drag on the gizmo, the render window on the whole screen; level 2\'s folded ray legend', async ({ page }) => {
+  test("level 1 at 390×844 by touch: the view over the tasks or the panels, taps, a finger drag on the gizmo, the render window on the whole screen; level 2's folded ray legend", async ({
+    page,
+  }) => {
     const errors = collectErrors(page);
     await page.goto('./');
     await page.getByRole('button', { name: 'Got it' }).tap();
@@ -205,7 +223,7 @@ test.describe('a phone, by touch', () => {
 test.describe('a phone on its side', () => {
   test.use({ viewport: { width: 844, height: 390 }, hasTouch: true, isMobile: true, deviceScaleFactor: 2 });
 
-  test('844×390 by touch: the tasks beside the view, 44 px targets; a level with the camera\'s image', async ({ page }) => {
+  test("844×390 by touch: the tasks beside the view, 44 px targets; a level with the camera's image", async ({ page }) => {
     await page.goto('./');
     await page.getByRole('button', { name: 'Got it' }).tap();
     await expectLaidOut(page, 'tasks');

@@ -40,7 +40,10 @@ test('with too little storage the Menu says the app is not stored for offline us
     await page.goto('./');
     await expect(page.locator('rt-quest-panel').getByRole('heading', { name: 'Introduction' })).toBeVisible();
     await page.getByRole('button', { name: 'Menu' }).click();
-    await expect(page.getByTestId('offline-status')).toHaveText(/^This app is not stored for offline use: the browser could not store its files, most likely for lack of storage space\./, { timeout: 30_000 });
+    await expect(page.getByTestId('offline-status')).toHaveText(
+      /^This app is not stored for offline use: the browser could not store its files, most likely for lack of storage space\./,
+      { timeout: 30_000 },
+    );
     expect(await page.evaluate(async () => (await navigator.serviceWorker.getRegistration())?.active ?? null)).toBeNull();
   } finally {
     // The override may outlive the page: the next tests get the usual quota.

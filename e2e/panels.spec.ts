@@ -83,7 +83,10 @@ test('typed numbers: clamped with a message, unreadable text keeps the value', a
 test('the Glass preset makes the object transparent and enables its refractive index', async ({ page }) => {
   const errors: string[] = [];
   await openLab(page, errors);
-  await page.locator('rt-scene-list').getByRole('option', { name: /Red ball/ }).click();
+  await page
+    .locator('rt-scene-list')
+    .getByRole('option', { name: /Red ball/ })
+    .click();
   const panel = page.locator('rt-object-panel');
   const index = panel.getByRole('slider', { name: 'Refractive index (η)' });
   await expect(index).toBeDisabled();
@@ -122,7 +125,10 @@ test('the scene list by keyboard: arrows select, Add and Delete', async ({ page 
 test('every control of the object panel can be reached by Tab and shows its focus', async ({ page }) => {
   const errors: string[] = [];
   await openLab(page, errors);
-  await page.locator('rt-scene-list').getByRole('option', { name: /Red ball/ }).click();
+  await page
+    .locator('rt-scene-list')
+    .getByRole('option', { name: /Red ball/ })
+    .click();
   await page.locator('rt-object-panel rt-color-field input[type="color"]').focus();
 
   const stops: { label: string; ring: boolean; panel: boolean }[] = [];
@@ -160,7 +166,10 @@ test('every control of the object panel can be reached by Tab and shows its focu
 test('dragging a slider changes the store before the release; a change elsewhere shows in the fields', async ({ page }) => {
   const errors: string[] = [];
   await openLab(page, errors);
-  await page.locator('rt-scene-list').getByRole('option', { name: /Red ball/ }).click();
+  await page
+    .locator('rt-scene-list')
+    .getByRole('option', { name: /Red ball/ })
+    .click();
   const panel = page.locator('rt-object-panel');
   const shininess = async () => (await state(page)).scene.objects.find((o) => o.id === 'red-ball')!.material.shininess;
   const slider = panel.getByRole('slider', { name: 'Shininess (n)' });
@@ -207,13 +216,19 @@ test('a change the store refuses is explained next to the control and nothing br
 test('a closed section stays closed after a reload', async ({ page }) => {
   const errors: string[] = [];
   await openLab(page, errors);
-  await page.locator('rt-scene-list').getByRole('option', { name: /Red ball/ }).click();
+  await page
+    .locator('rt-scene-list')
+    .getByRole('option', { name: /Red ball/ })
+    .click();
   const position = page.locator('rt-object-panel').getByRole('textbox', { name: 'Position x' });
   await expect(position).toBeVisible();
   await page.locator('rt-object-panel rt-panel-section[name="object-placement"] summary').click();
   await expect(position).toBeHidden();
   await page.reload();
-  await page.locator('rt-scene-list').getByRole('option', { name: /Red ball/ }).click();
+  await page
+    .locator('rt-scene-list')
+    .getByRole('option', { name: /Red ball/ })
+    .click();
   await expect(page.locator('rt-object-panel').getByRole('textbox', { name: 'Colour, hex code' })).toBeVisible();
   await expect(position).toBeHidden();
   expect(errors).toEqual([]);

@@ -53,7 +53,8 @@ async function startRecording(page: Page): Promise<void> {
         'input',
         (event) => {
           const input = event.composedPath()[0];
-          if (input instanceof HTMLInputElement && input.type === 'range' && input.getAttribute('aria-label') === label) record.inputs.push({ at: event.timeStamp, value: Number(input.value) });
+          if (input instanceof HTMLInputElement && input.type === 'range' && input.getAttribute('aria-label') === label)
+            record.inputs.push({ at: event.timeStamp, value: Number(input.value) });
         },
         true,
       );
@@ -97,7 +98,12 @@ test('with the free lab’s largest settings the view draws a budget of the rays
   const view = page.locator('rt-scene-view');
   await expect(view).toHaveAttribute('data-ray-instances', /^[1-9]\d*$/, { timeout: 60_000 });
   await typeInto(page, 'Aperture (lens radius)', '0.2');
-  for (const [label, value] of [['Supersampling (s)', '4'], ['Lens samples (n)', '4'], ['Time samples (k)', '4']]) await typeInto(page, label, value);
+  for (const [label, value] of [
+    ['Supersampling (s)', '4'],
+    ['Lens samples (n)', '4'],
+    ['Time samples (k)', '4'],
+  ])
+    await typeInto(page, label, value);
   const note = page.getByTestId('ray-thinning');
   // Every ray of the heavy screen, once the edits have stopped.
   await expect.poll(() => drawnRays(page), { message: 'the whole screen is drawn once the settings are in', timeout: 60_000 }).toBeGreaterThan(20_000);
@@ -105,7 +111,10 @@ test('with the free lab’s largest settings the view draws a budget of the rays
   const all = await drawnRays(page);
   await drawnAll(page);
 
-  await page.locator('rt-scene-list').getByRole('option', { name: /Red ball/ }).click();
+  await page
+    .locator('rt-scene-list')
+    .getByRole('option', { name: /Red ball/ })
+    .click();
   const slider = page.locator('rt-object-panel').getByRole('slider', { name: LABEL });
   await slider.scrollIntoViewIfNeeded();
   await startRecording(page);
@@ -150,7 +159,10 @@ test('with the free lab’s largest settings the view draws a budget of the rays
 
   mkdirSync('test-results', { recursive: true });
   const file = `test-results/ray-budget-${test.info().project.name}.json`;
-  writeFileSync(file, `${JSON.stringify({ measured: new Date().toISOString(), settings: { supersampling: 4, lensSamples: 4, timeSamples: 4, screen: [8, 6] }, allRays: all, ...figures }, null, 2)}\n`);
+  writeFileSync(
+    file,
+    `${JSON.stringify({ measured: new Date().toISOString(), settings: { supersampling: 4, lensSamples: 4, timeSamples: 4, screen: [8, 6] }, allRays: all, ...figures }, null, 2)}\n`,
+  );
   for (const [name, figure] of Object.entries(figures) as [string, ReturnType<typeof figuresOf>][]) {
     expect(figure.view.undrawn, `${name}: every step reached a frame`).toBe(0);
     expect(figure.rays.undrawn, `${name}: every step's rays (or a later step's) came`).toBe(0);
@@ -173,7 +185,9 @@ async function drawnAll(page: Page, rays?: number, since?: number): Promise<numb
   await expect(page.getByTestId('ray-thinning')).toBeEmpty();
   // On SwiftShader a screen this heavy is drawn a piece a frame (view/piecewise-rays.ts): the last piece too.
   await expect
-    .poll(() => page.locator('rt-scene-view').evaluate((element) => (element as unknown as { labView: { probes: ViewProbes } }).labView.probes.raysComplete), { timeout: 120_000 })
+    .poll(() => page.locator('rt-scene-view').evaluate((element) => (element as unknown as { labView: { probes: ViewProbes } }).labView.probes.raysComplete), {
+      timeout: 120_000,
+    })
     .toBe(true);
   return page.locator('rt-scene-view').evaluate((element, from) => {
     // Reading a pixel back waits for the software GPU to finish the frames it was given.
@@ -193,7 +207,14 @@ async function takeLast(page: Page): Promise<{ view?: number; rays?: number }> {
 
 /** A step's time to a frame of its value, and to a frame of rays traced with it; the most rays a frame drew until the last step. */
 function figuresOf({ inputs, frames, rayFrames, rayCounts }: Recording) {
-  const strip = ({ steps, p50Ms, p95Ms, maxMs, undrawn, shownDuring }: ReturnType<typeof sliderLatencyOf>) => ({ steps, p50Ms, p95Ms, maxMs, undrawn, shownDuring });
+  const strip = ({ steps, p50Ms, p95Ms, maxMs, undrawn, shownDuring }: ReturnType<typeof sliderLatencyOf>) => ({
+    steps,
+    p50Ms,
+    p95Ms,
+    maxMs,
+    undrawn,
+    shownDuring,
+  });
   const [firstStep, lastStep] = [inputs[0]?.at ?? 0, inputs.at(-1)?.at ?? 0];
   const mostRays = Math.max(0, ...rayCounts.filter(({ at }) => at > firstStep && at <= lastStep).map(({ value }) => value));
   return { view: strip(sliderLatencyOf({ inputs, frames })), rays: strip(sliderLatencyOf({ inputs, frames: rayFrames })), mostRays };

@@ -58,7 +58,7 @@ async function findRayUnderPointer(page: Page, view: Locator): Promise<{ x: numb
   return null;
 }
 
-test('the camera pixels\' rays: drawn, hovered, filtered by hit and by pixel, and the page stays responsive', async ({ page }) => {
+test("the camera pixels' rays: drawn, hovered, filtered by hit and by pixel, and the page stays responsive", async ({ page }) => {
   test.setTimeout(180_000);
   const errors: string[] = [];
   page.on('console', (message) => {
@@ -222,7 +222,11 @@ test('every visualization option can be switched on in the ray panel, and the vi
   const threshold = (await track.boundingBox())!;
   await page.mouse.click(threshold.x + threshold.width / 2, threshold.y + threshold.height / 2);
   await expect.poll(async () => (await rayState()).negligibleThreshold).toBe(0.1);
-  for (const [name, typed, expected] of [['negligibleThreshold', '5', 0.05], ['minRadius', '3', 0.03], ['maxRadius', '0.5', 0.005]] as const) {
+  for (const [name, typed, expected] of [
+    ['negligibleThreshold', '5', 0.05],
+    ['minRadius', '3', 0.03],
+    ['maxRadius', '0.5', 0.005],
+  ] as const) {
     const field = panel.locator(`rt-slider[name="${name}"] input[type="text"]`);
     await field.fill(typed);
     await field.press('Enter');

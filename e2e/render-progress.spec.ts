@@ -94,7 +94,12 @@ test('a heavy render, rendered anyway, shows a moving percentage within 2 s and 
       const context = canvas.getContext('2d')!;
       let lit = 0;
       for (let i = 0; i < 64; i++) {
-        const [r, g, b, a] = context.getImageData(Math.floor((((i % 8) + 0.5) / 8) * canvas.width), Math.floor(((Math.floor(i / 8) + 0.5) / 8) * canvas.height), 1, 1).data;
+        const [r, g, b, a] = context.getImageData(
+          Math.floor((((i % 8) + 0.5) / 8) * canvas.width),
+          Math.floor(((Math.floor(i / 8) + 0.5) / 8) * canvas.height),
+          1,
+          1,
+        ).data;
         if (a > 0 && r + g + b > 0) lit++;
       }
       return lit / 64;
@@ -118,7 +123,9 @@ test('a heavy render, rendered anyway, shows a moving percentage within 2 s and 
   }
   await page.waitForTimeout(1000);
   const zoomedLongTasks = await page.evaluate(() =>
-    window.rtLongTaskSpans.filter(([start, duration]) => start + duration > window.rtClickedAt).map(([start, duration]) => [Math.round(start - window.rtClickedAt), duration]),
+    window.rtLongTaskSpans
+      .filter(([start, duration]) => start + duration > window.rtClickedAt)
+      .map(([start, duration]) => [Math.round(start - window.rtClickedAt), duration]),
   );
   await page.screenshot({ path: 'test-results/screens/render-heavy-zoomed.png' });
   expect(await traced.evaluate((canvas: HTMLCanvasElement) => canvas.width * canvas.height)).toBeLessThan(1366 * 768);
@@ -126,7 +133,14 @@ test('a heavy render, rendered anyway, shows a moving percentage within 2 s and 
   mkdirSync('test-results', { recursive: true });
   const metrics = {
     date: new Date().toISOString(),
-    heavyRender: { timeline, litShareAt5s: litAt5s, coveredWithinMs, longTasks, maxLongTaskMs: Math.max(0, ...longTasks.map(([, duration]) => duration)), zoomedLongTasks },
+    heavyRender: {
+      timeline,
+      litShareAt5s: litAt5s,
+      coveredWithinMs,
+      longTasks,
+      maxLongTaskMs: Math.max(0, ...longTasks.map(([, duration]) => duration)),
+      zoomedLongTasks,
+    },
   };
   writeFileSync(`test-results/render-metrics-${test.info().project.name}.json`, `${JSON.stringify(metrics, null, 2)}\n`);
   console.log(`render metrics: ${JSON.stringify(metrics)}`);

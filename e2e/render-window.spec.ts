@@ -197,13 +197,19 @@ test('zoomed in, the canvas holds the part on screen: exactly the saved pixels t
     const { full, window: part } = await compare.evaluate((element: RtImageCompare) => element.tracedView);
     expect(full).toEqual({ width: png.width, height: png.height }); // a canvas pixel per image pixel
     const saved: number[] = [];
-    for (let y = part.y; y < part.y + part.height; y++) saved.push(...png.data.subarray((y * png.width + part.x) * 4, (y * png.width + part.x + part.width) * 4));
+    for (let y = part.y; y < part.y + part.height; y++)
+      saved.push(...png.data.subarray((y * png.width + part.x) * 4, (y * png.width + part.x + part.width) * 4));
     const shown = await traced.evaluate((canvas: HTMLCanvasElement) => [...canvas.getContext('2d')!.getImageData(0, 0, canvas.width, canvas.height).data]);
     return { shown: pixelHash(shown), saved: pixelHash(change(saved)), part };
   };
   await window.getByRole('button', { name: '200 %' }).click();
   await expect.poll(async () => (await traced.boundingBox())!.width).toBeLessThan(2 * png.width);
-  await expect.poll(async () => { const { shown, saved } = await shownAndSaved(); return shown === saved; }).toBe(true);
+  await expect
+    .poll(async () => {
+      const { shown, saved } = await shownAndSaved();
+      return shown === saved;
+    })
+    .toBe(true);
   const before = (await shownAndSaved()).part;
   // A scroll down and to the right with the mouse wheel: another part, painted exactly too.
   const frame = window.getByRole('group', { name: 'Image view: scroll with the arrow keys when zoomed in' });
@@ -211,13 +217,28 @@ test('zoomed in, the canvas holds the part on screen: exactly the saved pixels t
   await page.mouse.move(area.x + area.width / 2, area.y + area.height / 2);
   await page.mouse.wheel(150, 120);
   await expect.poll(async () => (await shownAndSaved()).part.y).toBeGreaterThan(before.y);
-  await expect.poll(async () => { const { shown, saved } = await shownAndSaved(); return shown === saved; }).toBe(true);
+  await expect
+    .poll(async () => {
+      const { shown, saved } = await shownAndSaved();
+      return shown === saved;
+    })
+    .toBe(true);
   // Stretch contrast: the same part with the whole image's levels spread over 0–255.
   await window.getByRole('checkbox', { name: 'Stretch contrast' }).check();
   const range = levelRange(png.data);
-  await expect.poll(async () => { const { shown, saved } = await shownAndSaved((rgba) => [...stretchContrast(rgba, range)]); return shown === saved; }).toBe(true);
+  await expect
+    .poll(async () => {
+      const { shown, saved } = await shownAndSaved((rgba) => [...stretchContrast(rgba, range)]);
+      return shown === saved;
+    })
+    .toBe(true);
   await window.getByRole('checkbox', { name: 'Stretch contrast' }).uncheck();
-  await expect.poll(async () => { const { shown, saved } = await shownAndSaved(); return shown === saved; }).toBe(true);
+  await expect
+    .poll(async () => {
+      const { shown, saved } = await shownAndSaved();
+      return shown === saved;
+    })
+    .toBe(true);
 });
 
 test('Stretch contrast stays on across renders of a scene and is off again when another scene is loaded (a new level)', async ({ page }) => {
@@ -284,7 +305,8 @@ test('zoom: 200 % shows every pixel as 2 × 2, Fit brings it back', async ({ pag
   const canvas = window.getByRole('img', { name: 'The ray traced image' });
   // The canvas holds image pixels (the part on screen): screen pixels per canvas pixel is the zoom.
   const zoomOnScreen = () => canvas.evaluate((element: HTMLCanvasElement) => element.getBoundingClientRect().width / element.width);
-  const canvasPixelsPerImagePixel = () => window.locator('rt-image-compare').evaluate((element: RtImageCompare) => element.tracedView.full.width / element.imageWidth);
+  const canvasPixelsPerImagePixel = () =>
+    window.locator('rt-image-compare').evaluate((element: RtImageCompare) => element.tracedView.full.width / element.imageWidth);
   const fitted = (await canvas.boundingBox())!.width;
   await window.getByRole('button', { name: '200 %' }).click();
   await expect.poll(zoomOnScreen).toBeCloseTo(2, 2);
@@ -372,7 +394,8 @@ test('the workers start once the raster picture is read back, or a second later 
       let release = () => {};
       // A raster picture read back when the test says so (or never).
       element.rasterSnapshot = (width, height) => new Promise((resolve) => (release = () => resolve(new ImageData(width, height))));
-      const phase = () => element.shadowRoot!.querySelector('[data-testid="render-progress"], [data-testid="render-status"]')?.textContent?.trim() ?? 'starting';
+      const phase = () =>
+        element.shadowRoot!.querySelector('[data-testid="render-progress"], [data-testid="render-status"]')?.textContent?.trim() ?? 'starting';
       const start = performance.now();
       void element.startRender();
       await element.updateComplete; // the last render's outcome gives way to 'Starting…'

@@ -28,7 +28,11 @@ async function fillStorage(page: Page): Promise<void> {
 }
 
 async function freeStorage(page: Page): Promise<void> {
-  await page.evaluate(() => Object.keys(localStorage).filter((key) => key.startsWith('filler.')).forEach((key) => localStorage.removeItem(key)));
+  await page.evaluate(() =>
+    Object.keys(localStorage)
+      .filter((key) => key.startsWith('filler.'))
+      .forEach((key) => localStorage.removeItem(key)),
+  );
 }
 
 /** The toast that says `text` is seen, announced (in `role` region), and is what is on top where it is drawn. */
@@ -37,10 +41,10 @@ async function expectToastOnTop(page: Page, text: string | RegExp, role: 'status
   await expect(toast).toBeVisible();
   await expect(page.locator(`rt-toast [role="${role}"]`)).toContainText(text);
   const box = (await toast.boundingBox())!;
-  const hit = await page.evaluate(
-    ({ x, y }) => (document.querySelector('rt-lab')!.shadowRoot!.elementFromPoint(x, y) as Element | null)?.tagName ?? null,
-    { x: box.x + box.width / 2, y: box.y + box.height / 2 },
-  );
+  const hit = await page.evaluate(({ x, y }) => (document.querySelector('rt-lab')!.shadowRoot!.elementFromPoint(x, y) as Element | null)?.tagName ?? null, {
+    x: box.x + box.width / 2,
+    y: box.y + box.height / 2,
+  });
   expect(hit).toBe('RT-TOAST');
 }
 
@@ -64,7 +68,11 @@ test('with storage full an import is refused and said, over the level map; with 
   progress.log.events = Array.from({ length: 400 }, (_, index) => ({ t: index * 1000, id: `old.${index}`, type: index % 2 ? 'tab.visible' : 'tab.hidden' }));
   const file = JSON.stringify(progress);
   await importFile(page, file);
-  await expectToastOnTop(page, /progress\.json \(2\d kB\) was not imported: the browser's storage has no room for it\. Nothing changed: your progress is as it was\./, 'alert');
+  await expectToastOnTop(
+    page,
+    /progress\.json \(2\d kB\) was not imported: the browser's storage has no room for it\. Nothing changed: your progress is as it was\./,
+    'alert',
+  );
   await page.keyboard.press('Escape');
   // The map is over the toast's place: the test shows the toast above it.
   const mapBox = (await map.boundingBox())!;
@@ -108,7 +116,11 @@ test('a survey handed in with storage full is said not saved, kept, and saved wh
   await answerDefaultSurvey(survey, '12');
   await fillStorage(page);
   await survey.getByRole('button', { name: 'Hand in' }).click();
-  await expectToastOnTop(page, /Thank you! Your answers could not be saved in the browser: the browser's storage has no room for it\. They are kept while this page is open: download your data below now for your teacher\./, 'alert');
+  await expectToastOnTop(
+    page,
+    /Thank you! Your answers could not be saved in the browser: the browser's storage has no room for it\. They are kept while this page is open: download your data below now for your teacher\./,
+    'alert',
+  );
   await expect(page.getByText('Your answers are saved')).toHaveCount(0);
   await expect(survey).toHaveCount(0);
 
@@ -117,13 +129,21 @@ test('a survey handed in with storage full is said not saved, kept, and saved wh
   await page.reload();
   await expect(page.locator('rt-assignment-done')).toBeVisible();
   await expect(page.locator('rt-lab rt-survey')).toHaveCount(0);
-  const kept = await page.evaluate(() => Object.keys(localStorage).filter((key) => key.endsWith('.survey')).map((key) => JSON.parse(localStorage.getItem(key)!)));
+  const kept = await page.evaluate(() =>
+    Object.keys(localStorage)
+      .filter((key) => key.endsWith('.survey'))
+      .map((key) => JSON.parse(localStorage.getItem(key)!)),
+  );
   expect(kept).toMatchObject([{ survey: 'default', answers: { minutes: 12 } }]);
 });
 
 test('a sandbox edit is there after the page is reloaded or closed a moment after it', async ({ page, context }) => {
   const dispatch = (action: LabAction, live = false) =>
-    page.evaluate(([sent, dragging]) => (document.querySelector('rt-lab') as unknown as { store: { dispatch(a: LabAction, o: object): void } }).store.dispatch(sent, { live: dragging }), [action, live] as const);
+    page.evaluate(
+      ([sent, dragging]) =>
+        (document.querySelector('rt-lab') as unknown as { store: { dispatch(a: LabAction, o: object): void } }).store.dispatch(sent, { live: dragging }),
+      [action, live] as const,
+    );
   await page.goto('./#free-lab');
   await expect(page.locator('rt-file-panel')).toBeVisible();
   const before = (await state(page)).scene.objects.length;
@@ -138,16 +158,30 @@ test('a sandbox edit is there after the page is reloaded or closed a moment afte
   expect(after.objects.find((object) => object.id === id)?.position).toEqual([1.25, 0.5, -0.75]);
 
   await dispatch({ type: 'object.changed', id, changes: { position: [2, 0.5, 2] } }, true);
+  // With runBeforeUnload, close() returns before the page has gone: wait for its pagehide to run.
+  const closed = page.waitForEvent('close');
   await page.close({ runBeforeUnload: true });
+  await closed;
   const again = await context.newPage();
   await again.goto('./#free-lab');
   await expect(again.locator('rt-file-panel')).toBeVisible();
-  const scene = await again.evaluate(() => (document.querySelector('rt-lab') as unknown as { store: { state: { scene: { objects: { id: string; position: number[] }[] } } } }).store.state.scene);
+  const scene = await again.evaluate(
+    () => (document.querySelector('rt-lab') as unknown as { store: { state: { scene: { objects: { id: string; position: number[] }[] } } } }).store.state.scene,
+  );
   expect(scene.objects.find((object) => object.id === id)?.position).toEqual([2, 0.5, 2]);
 });
 
 test('a damaged session record is said in the code dialog, and kept in the Menu to download', async ({ page, context }) => {
-  const hash = await encodeAssignment({ version: 1, title: 'Lesson 5', levels: ['01-introduction'], requiredTasks: {}, otherLevels: 'hidden', locale: 'en', askParticipantCode: true, survey: null });
+  const hash = await encodeAssignment({
+    version: 1,
+    title: 'Lesson 5',
+    levels: ['01-introduction'],
+    requiredTasks: {},
+    otherLevels: 'hidden',
+    locale: 'en',
+    askParticipantCode: true,
+    survey: null,
+  });
   await page.goto(`./${hash}`);
   await page.locator('rt-participant-dialog').getByRole('textbox', { name: 'Participant code' }).fill('A17');
   await page.locator('rt-participant-dialog').getByRole('button', { name: 'Start' }).click();
@@ -158,7 +192,13 @@ test('a damaged session record is said in the code dialog, and kept in the Menu 
   const later = await context.newPage();
   await page.close();
   await later.goto('./');
-  await later.evaluate((text) => Object.keys(localStorage).filter((key) => key.endsWith('.context')).forEach((key) => localStorage.setItem(key, text)), damaged);
+  await later.evaluate(
+    (text) =>
+      Object.keys(localStorage)
+        .filter((key) => key.endsWith('.context'))
+        .forEach((key) => localStorage.setItem(key, text)),
+    damaged,
+  );
   await later.goto(`./${hash}`);
 
   const dialog = later.locator('rt-participant-dialog');
@@ -208,7 +248,11 @@ test('damaged survey answers are said, kept in the Menu, downloaded and restored
   // Cut short inside the last answer (the free text): the answers before the cut are kept.
   const { later, hash, damaged } = await damagedSurvey(page, (saved) => saved.slice(0, saved.indexOf('really')));
   await later.goto(`./${hash}`);
-  await expectToastOnTop(later, /Your saved survey answers were damaged; what could be read of them is kept \(\d+ answers\)\. The damaged answers are kept: download or restore them from the Menu \(Damaged saves\)\./, 'alert');
+  await expectToastOnTop(
+    later,
+    /Your saved survey answers were damaged; what could be read of them is kept \(\d+ answers\)\. The damaged answers are kept: download or restore them from the Menu \(Damaged saves\)\./,
+    'alert',
+  );
   await expect(later.locator('rt-assignment-done')).toBeVisible();
   const stored = () => later.evaluate(() => JSON.parse(localStorage.getItem(Object.keys(localStorage).find((key) => key.endsWith('.survey'))!)!));
   expect((await stored()).answers).not.toHaveProperty('feedback');
@@ -232,7 +276,11 @@ test('damaged survey answers with the storage full are not written over by the s
   const { later, hash, damaged } = await damagedSurvey(page, (saved) => saved.replace('"survey":"default"', '"survey":17'));
   await fillStorage(later);
   await later.goto(`./${hash}`);
-  await expectToastOnTop(later, /Your saved survey answers could not be read, so the survey will ask for them again\. There is no room to keep a copy of the damaged answers, so they are not written over until you download them from the Menu \(Damaged saves\)\./, 'alert');
+  await expectToastOnTop(
+    later,
+    /Your saved survey answers could not be read, so the survey will ask for them again\. There is no room to keep a copy of the damaged answers, so they are not written over until you download them from the Menu \(Damaged saves\)\./,
+    'alert',
+  );
   const survey = later.locator('rt-lab rt-survey');
   await answerDefaultSurvey(survey, '15');
   await survey.getByRole('button', { name: 'Hand in' }).click();

@@ -25,8 +25,8 @@ async function openFreeLab(page: Page): Promise<void> {
   await expect(page.locator('rt-file-panel')).toBeVisible();
   await page.evaluate(() => {
     (window as unknown as Recorded).actions = [];
-    (document.querySelector('rt-lab') as unknown as { store: { subscribe(listener: (state: unknown, action: LabAction) => void): void } }).store.subscribe((_state, action) =>
-      (window as unknown as Recorded).actions.push(action.type === 'scene.saved' ? `scene.saved:${action.to}` : action.type),
+    (document.querySelector('rt-lab') as unknown as { store: { subscribe(listener: (state: unknown, action: LabAction) => void): void } }).store.subscribe(
+      (_state, action) => (window as unknown as Recorded).actions.push(action.type === 'scene.saved' ? `scene.saved:${action.to}` : action.type),
     );
   });
 }
@@ -70,13 +70,17 @@ test('save a scene as a file and load it back; a broken file changes nothing', a
   await expect(panel.getByRole('status')).toContainText('wide.scene.json is geen scènebestand');
   await expect(panel.getByRole('status')).toContainText('camera.fov: moet tussen 1 en 179 liggen, maar is 500');
   await panel.locator('input[type=file]').setInputFiles({ name: 'notes.json', mimeType: 'application/json', buffer: Buffer.from('{"version": 1,') });
-  await expect(panel.getByRole('status')).toContainText('(het geheel): geen geldige JSON op regel 1, kolom 15: verwacht werd een veldnaam tussen dubbele aanhalingstekens');
+  await expect(panel.getByRole('status')).toContainText(
+    '(het geheel): geen geldige JSON op regel 1, kolom 15: verwacht werd een veldnaam tussen dubbele aanhalingstekens',
+  );
   await page.screenshot({ path: 'test-results/screens/scene-file-broken-nl.png' });
 
   // So are a progress file's reasons (the patterns for them load with the Dutch texts).
   await page.getByRole('button', { name: 'Menu' }).click();
   const progress = JSON.stringify({ kind: 'ray-tracer-quest-progress', version: 7 });
-  await page.locator('rt-progress-menu input[type=file]').setInputFiles({ name: 'voortgang.json', mimeType: 'application/json', buffer: Buffer.from(progress) });
+  await page
+    .locator('rt-progress-menu input[type=file]')
+    .setInputFiles({ name: 'voortgang.json', mimeType: 'application/json', buffer: Buffer.from(progress) });
   await expect(page.locator('rt-toast')).toContainText('version: deze app leest voortgang van versie 1, maar de versie is 7');
   await page.screenshot({ path: 'test-results/screens/progress-file-broken-nl.png' });
 });

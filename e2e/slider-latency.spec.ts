@@ -36,7 +36,8 @@ async function startRecording(page: Page): Promise<void> {
         'input',
         (event) => {
           const input = event.composedPath()[0];
-          if (input instanceof HTMLInputElement && input.type === 'range' && input.getAttribute('aria-label') === label) record.inputs.push({ at: event.timeStamp, value: Number(input.value) });
+          if (input instanceof HTMLInputElement && input.type === 'range' && input.getAttribute('aria-label') === label)
+            record.inputs.push({ at: event.timeStamp, value: Number(input.value) });
         },
         true,
       );
@@ -83,7 +84,10 @@ test('a slider step reaches the rays on screen, and the last value always does (
     await field.fill('16');
     await field.press('Enter');
   }
-  await page.locator('rt-scene-list').getByRole('option', { name: new RegExp(BALL_NAME) }).click();
+  await page
+    .locator('rt-scene-list')
+    .getByRole('option', { name: new RegExp(BALL_NAME) })
+    .click();
   const slider = page.locator('rt-object-panel').getByRole('slider', { name: LABEL });
   await slider.scrollIntoViewIfNeeded();
   await startRecording(page);
@@ -93,7 +97,10 @@ test('a slider step reaches the rays on screen, and the last value always does (
   const figures: Record<string, ReturnType<typeof sliderLatencyOf>> = {};
   // Two drags from the left end to the right end, 60 steps a frame apart; the first one
   // after the lab opened runs while the JIT still compiles the tracer, as in the benchmark.
-  for (const [name, [from, to]] of [['firstDrag', [0.05, 0.6]], ['drag', [0.1, 0.9]]] as const) {
+  for (const [name, [from, to]] of [
+    ['firstDrag', [0.05, 0.6]],
+    ['drag', [0.1, 0.9]],
+  ] as const) {
     await page.mouse.move(box.x + box.width * from, y);
     await page.mouse.down();
     for (let step = 1; step <= 60; step++) {
@@ -112,7 +119,7 @@ test('a slider step reaches the rays on screen, and the last value always does (
     await page.waitForTimeout(150);
   }
   const last = Number(await slider.inputValue());
-  await expect.poll(() => lastShownValue(page), { message: 'arrow keys: the last value\'s rays are drawn', timeout: 30_000 }).toBe(last);
+  await expect.poll(() => lastShownValue(page), { message: "arrow keys: the last value's rays are drawn", timeout: 30_000 }).toBe(last);
   figures.keys = sliderLatencyOf(await takeRecording(page));
 
   for (const [name, latency] of Object.entries(figures)) {
@@ -125,10 +132,15 @@ test('a slider step reaches the rays on screen, and the last value always does (
     expect(latency.shownDuring, `${name}: rays kept coming while the slider moved`).toBeGreaterThanOrEqual(Math.ceil(latency.steps / 4));
   }
   // On a CPU rasterizer the drags are drawn at reduced resolution, and sharp again after.
-  const widths = () => page.locator('rt-scene-view').evaluate((element) => {
-    const { canvas } = (element as unknown as { labView: { canvas: HTMLCanvasElement } }).labView;
-    return { narrowest: (window as unknown as { sliderRecord: { narrowest: number } }).sliderRecord.narrowest, now: canvas.width, full: Math.round(canvas.clientWidth * Math.min(2, devicePixelRatio)) };
-  });
+  const widths = () =>
+    page.locator('rt-scene-view').evaluate((element) => {
+      const { canvas } = (element as unknown as { labView: { canvas: HTMLCanvasElement } }).labView;
+      return {
+        narrowest: (window as unknown as { sliderRecord: { narrowest: number } }).sliderRecord.narrowest,
+        now: canvas.width,
+        full: Math.round(canvas.clientWidth * Math.min(2, devicePixelRatio)),
+      };
+    });
   const { narrowest, full } = await widths();
   expect(narrowest, 'a drag is drawn at reduced resolution').toBeLessThan(full);
   await expect.poll(async () => (await widths()).now, { message: 'the view is sharp again once the slider stops' }).toBe(full);

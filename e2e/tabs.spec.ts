@@ -27,7 +27,7 @@ async function exportedEvents(page: Page): Promise<ExportedEvent[]> {
   return exported.events.events;
 }
 
-test('five tabs play at once: each shows the others\' work and the export holds every tab\'s events', async ({ context }) => {
+test("five tabs play at once: each shows the others' work and the export holds every tab's events", async ({ context }) => {
   const tabs: Page[] = [];
   const errors: string[][] = [];
   for (let i = 0; i < 5; i++) {
@@ -61,10 +61,12 @@ test('five tabs play at once: each shows the others\' work and the export holds 
   for (const page of tabs) perTab.push((await exportedEvents(page)).map((event) => event.id));
   const everyId = new Set(perTab.flat());
   expect(perTab.flat().every((id) => id !== undefined)).toBe(true);
-  await expect.poll(async () => {
-    const exported = new Set((await exportedEvents(first)).map((event) => event.id));
-    return [...everyId].filter((id) => !exported.has(id));
-  }).toEqual([]);
+  await expect
+    .poll(async () => {
+      const exported = new Set((await exportedEvents(first)).map((event) => event.id));
+      return [...everyId].filter((id) => !exported.has(id));
+    })
+    .toEqual([]);
   const final = await exportedEvents(first);
   expect(final.filter((event) => event.type === 'session.started')).toHaveLength(5);
   expect(final.filter((event) => event.type === 'hint.shown')).toHaveLength(4);

@@ -10,8 +10,7 @@ import { gzipSync } from 'node:zlib';
  * - the entry script and every chunk it imports statically;
  * - the entry's dynamic imports with their static imports: `src/main.ts` awaits each of them
  *   before the first render (the language, then the app);
- * - for a learner in another language, that language's catalogue (`src/locales/<code>.ts`)
- *   and what src/i18n/locale.ts loads together with it (CATALOGUE_COMPANIONS);
+ * - for a learner in another language, that language's catalogue (`src/locales/<code>.ts`);
  * - the level files in the learner's language (`virtual:level-texts/<code>`).
  *
  * What loads once that screen is up is listed apart ("after the first screen"): the 3D view
@@ -24,9 +23,6 @@ export const FIRST_LOAD_BUDGET_BYTES = 250 * 1024;
 
 /** The module of the level files in one language, by its language code. */
 const LEVEL_TEXTS = 'virtual:level-texts/';
-
-/** Loaded together with any catalogue (src/i18n/locale.ts): the patterns that say a refused file's reasons in that language. */
-export const CATALOGUE_COMPANIONS = ['src/i18n/issue-translation.ts'];
 
 /** One chunk of vite's build manifest (the fields used here). */
 export interface ManifestChunk {
@@ -70,7 +66,7 @@ export function firstLoadKeys(manifest: Manifest, locale = 'en'): string[] {
   const [entry] = entries;
   const catalogue = `src/locales/${locale}.ts`;
   if (locale !== 'en' && !manifest[catalogue]) throw new Error(`the build has no catalogue for "${locale}" (${catalogue})`);
-  const withCatalogue = locale === 'en' ? [] : [catalogue, ...CATALOGUE_COMPANIONS];
+  const withCatalogue = locale === 'en' ? [] : [catalogue];
   // The levels' texts in that language (scripts/level-texts-plugin.ts), awaited before the first screen.
   const levelTexts = `${LEVEL_TEXTS}${locale}`;
   if (!manifest[levelTexts]) throw new Error(`the build has no level texts in "${locale}" (${levelTexts})`);
@@ -91,7 +87,7 @@ export function afterFirstScreen(dist: string, manifest = readManifest(dist)): {
   const first = new Set(firstLoadKeys(manifest));
   const dynamicEntries = new Set(Object.values(manifest).flatMap((chunk) => chunk.dynamicImports ?? []));
   return [...dynamicEntries]
-    .filter((key) => !first.has(key) && !key.startsWith('src/locales/') && !key.startsWith(LEVEL_TEXTS) && !CATALOGUE_COMPANIONS.includes(key))
+    .filter((key) => !first.has(key) && !key.startsWith('src/locales/') && !key.startsWith(LEVEL_TEXTS))
     .map((key) => ({
       source: key,
       gzipBytes: staticClosure(manifest, [key])

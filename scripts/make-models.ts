@@ -37,7 +37,11 @@ export function buildModels(): Map<string, string> {
 function describe(name: string, text: string): string {
   const mesh = parseObj(text, `${name}.obj`);
   const bounds = new Box3().setFromArray(mesh.positions);
-  const round = (v: Vector3) => v.toArray().map((x) => x.toFixed(3)).join(', ');
+  const round = (v: Vector3) =>
+    v
+      .toArray()
+      .map((x) => x.toFixed(3))
+      .join(', ');
   const kilobytes = (text.length / 1024).toFixed(0);
   return `${name}: ${mesh.indices.length / 3} triangles, ${kilobytes} KB, bounds [${round(bounds.min)}] .. [${round(bounds.max)}]`;
 }

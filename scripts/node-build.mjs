@@ -90,7 +90,14 @@ export async function staleReason(dir = BUILD_DIR) {
   } catch {
     return 'there is no build yet';
   }
-  const times = await Promise.all(recorded.inputs.map((input) => stat(input).then((s) => s.mtimeMs, () => Infinity)));
+  const times = await Promise.all(
+    recorded.inputs.map((input) =>
+      stat(input).then(
+        (s) => s.mtimeMs,
+        () => Infinity,
+      ),
+    ),
+  );
   const changed = recorded.inputs.find((_, i) => times[i] >= recorded.builtAt);
   return changed === undefined ? null : `${changed} changed`;
 }

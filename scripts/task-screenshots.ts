@@ -20,9 +20,28 @@ const readLevel = (id: string) => JSON.parse(readFileSync(`levels/${id}.level.js
 /** Progress in which every level before `id` is passed, in `locale`. */
 function progressBefore(id: string, locale: string): string {
   const levels = Object.fromEntries(
-    order.slice(0, order.indexOf(id)).map((level) => [level, { tasks: Object.fromEntries(readLevel(level).tasks.filter((task) => task.mandatory !== false).map((task) => [task.id, { how: 'done', points: 0 }])), hintsUsed: 0 }]),
+    order.slice(0, order.indexOf(id)).map((level) => [
+      level,
+      {
+        tasks: Object.fromEntries(
+          readLevel(level)
+            .tasks.filter((task) => task.mandatory !== false)
+            .map((task) => [task.id, { how: 'done', points: 0 }]),
+        ),
+        hintsUsed: 0,
+      },
+    ]),
   );
-  return JSON.stringify({ kind: 'ray-tracer-quest-progress', version: 1, levels, badges: [], settings: { locale }, sandbox: null, current: null, log: { startedAt: new Date().toISOString(), events: [] } });
+  return JSON.stringify({
+    kind: 'ray-tracer-quest-progress',
+    version: 1,
+    levels,
+    badges: [],
+    settings: { locale },
+    sandbox: null,
+    current: null,
+    log: { startedAt: new Date().toISOString(), events: [] },
+  });
 }
 
 async function solveCurrent(page: Page, level: LevelFile): Promise<void> {
@@ -63,19 +82,28 @@ async function continueAfterReveal(page: Page, shot: (stage: string) => Promise<
   }
 }
 
-const browser = await chromium.launch({ executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium', args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'] });
+const browser = await chromium.launch({
+  executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
+  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+});
 for (const locale of (process.env.SCREENSHOT_LANGUAGES ?? 'en,nl').split(',')) {
   mkdirSync(`build/screenshots/${locale}`, { recursive: true });
   for (const id of wanted) {
     const level = readLevel(id);
     const page = await browser.newPage({ viewport: { width: 1366, height: 768 } });
-    await page.addInitScript((saved) => {
-      if (sessionStorage.getItem('seeded')) return;
-      sessionStorage.setItem('seeded', 'yes');
-      localStorage.setItem('rtq.progress', saved);
-    }, progressBefore(id, locale));
+    await page.addInitScript(
+      (saved) => {
+        if (sessionStorage.getItem('seeded')) return;
+        sessionStorage.setItem('seeded', 'yes');
+        localStorage.setItem('rtq.progress', saved);
+      },
+      progressBefore(id, locale),
+    );
     await page.goto(`${url}?lang=${locale}`);
-    const welcome = page.locator('rt-lab').getByRole('button').filter({ hasText: /Got it|Begrepen/ });
+    const welcome = page
+      .locator('rt-lab')
+      .getByRole('button')
+      .filter({ hasText: /Got it|Begrepen/ });
     if (await welcome.count()) await welcome.first().click();
     if (!(await page.locator('rt-level-map').isVisible())) await page.locator('[data-command="levels"]').click();
     await page.locator(`rt-level-map [data-level="${id}"]`).click();
@@ -83,7 +111,9 @@ for (const locale of (process.env.SCREENSHOT_LANGUAGES ?? 'en,nl').split(',')) {
     // "Show me" plays a task's solution visibly, a render takes seconds: wait for the next task.
     for (let step = 0; step < 60; step++) {
       await page.waitForTimeout(1000);
-      await continueAfterReveal(page, (stage) => page.screenshot({ path: `build/screenshots/${locale}/${id}--${String(seen.size).padStart(2, '0')}-${stage}.png` }).then(() => undefined));
+      await continueAfterReveal(page, (stage) =>
+        page.screenshot({ path: `build/screenshots/${locale}/${id}--${String(seen.size).padStart(2, '0')}-${stage}.png` }).then(() => undefined),
+      );
       const current = page.locator('rt-task-card[status="current"]');
       if (await page.locator('rt-quest-panel section.celebration').count()) break;
       if (!(await current.count())) continue;

@@ -9,8 +9,7 @@
  *   five deep (HTML timers spec), which would idle a worker 4 ms per tile; a MessageChannel
  *   posting to itself has no clamp (the trick React's scheduler uses).
  */
-export const nextTask: (callback: () => void) => void =
-  typeof setImmediate === 'function' ? (callback) => void setImmediate(callback) : messageChannelTasks();
+export const nextTask: (callback: () => void) => void = typeof setImmediate === 'function' ? (callback) => void setImmediate(callback) : messageChannelTasks();
 
 function messageChannelTasks(): (callback: () => void) => void {
   const channel = new MessageChannel();

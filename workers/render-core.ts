@@ -10,15 +10,7 @@ import { tracePixel, tracePixels } from '../src/tracer/trace-pixel.ts';
 import { thinTraces } from '../src/tracer/tree-budget.ts';
 import { buildTracerScene, type TracerScene } from '../src/tracer/tracer-scene.ts';
 import { nextTask } from './next-task.ts';
-import type {
-  FailedRequest,
-  LoadSceneRequest,
-  PostResponse,
-  RenderRequest,
-  RenderTileRequest,
-  TracePixelRequest,
-  TracePixelsRequest,
-} from './protocol.ts';
+import type { FailedRequest, LoadSceneRequest, PostResponse, RenderRequest, RenderTileRequest, TracePixelRequest, TracePixelsRequest } from './protocol.ts';
 
 /** The scene that tiles and traces use: built, or why it could not be built. */
 type LoadedScene = { built: true; tracer: TracerScene } | { built: false; reason: string };

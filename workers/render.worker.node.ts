@@ -4,4 +4,7 @@ import { createRenderHandler } from './render-core.ts';
 
 const port = parentPort;
 if (!port) throw new Error('render.worker.node.ts must run in a worker thread');
-port.on('message', createRenderHandler((response, transfer) => port.postMessage(response, transfer)));
+port.on(
+  'message',
+  createRenderHandler((response, transfer) => port.postMessage(response, transfer)),
+);

@@ -14,7 +14,9 @@ export async function seriousViolations(page: Page, scope?: SerialFrameSelector)
   return results.violations
     .filter((violation) => violation.impact === 'serious' || violation.impact === 'critical')
     .flatMap((violation) =>
-      violation.nodes.map((node) => `${violation.id} (${violation.impact}): ${JSON.stringify(node.target)} — ${node.failureSummary?.replace(/\s+/g, ' ') ?? violation.help}`),
+      violation.nodes.map(
+        (node) => `${violation.id} (${violation.impact}): ${JSON.stringify(node.target)} — ${node.failureSummary?.replace(/\s+/g, ' ') ?? violation.help}`,
+      ),
     );
 }
 

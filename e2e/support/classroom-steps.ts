@@ -6,8 +6,14 @@ import { readFile } from 'node:fs/promises';
 /** Answers the default survey's required questions (and the feedback), typing `minutes` as the minutes spent. */
 export async function answerDefaultSurvey(survey: Locator, minutes: string): Promise<void> {
   await survey.getByRole('radio', { name: 'Secondary school' }).check();
-  await survey.getByRole('group', { name: /good are you with computers/ }).getByRole('radio', { name: '7' }).check();
-  await survey.getByRole('group', { name: /before you started/ }).getByRole('radio', { name: '1, Not at all' }).check();
+  await survey
+    .getByRole('group', { name: /good are you with computers/ })
+    .getByRole('radio', { name: '7' })
+    .check();
+  await survey
+    .getByRole('group', { name: /before you started/ })
+    .getByRole('radio', { name: '1, Not at all' })
+    .check();
   await survey.getByRole('textbox', { name: /how many minutes/ }).fill(minutes);
   await survey.getByRole('textbox', { name: /how many minutes/ }).press('Tab');
   for (const name of [/ray tracing in general/, /kinds of light source/, /distance and angle/, /soft shadows/, /supersampling/, /ways of showing rays/]) {

@@ -59,55 +59,64 @@ export async function expectEvidenceShows(page: Page, where: string, evidence: T
   if (evidence.rays) {
     const { pixel, paths } = evidence.rays;
     await expect
-      .poll(() => sceneView.evaluate((element, [at, path]) => (element as unknown as { labView: InspectedView }).labView.probes.evidenceRay(at, path) !== null, [pixel, paths[0]!] as const), {
-        message: `${where}: pixel ${pixel}'s rays are traced`,
-      })
+      .poll(
+        () =>
+          sceneView.evaluate((element, [at, path]) => (element as unknown as { labView: InspectedView }).labView.probes.evidenceRay(at, path) !== null, [
+            pixel,
+            paths[0]!,
+          ] as const),
+        {
+          message: `${where}: pixel ${pixel}'s rays are traced`,
+        },
+      )
       .toBe(true);
   }
-  const seen: EvidenceFigures = await sceneView.evaluate(
-    (element, named) => {
-      const view = (element as unknown as { labView: InspectedView }).labView;
-      const box = view.canvas.getBoundingClientRect();
-      // What the pointer would be over at a point of the canvas, through every shadow root: the canvas itself, or a panel over it.
-      const onCanvas = ({ x, y }: Point) => {
-        if (x < 0 || y < 0 || x > box.width || y > box.height) return false;
-        let over = document.elementFromPoint(box.left + x, box.top + y);
-        while (over?.shadowRoot) {
-          const inner = over.shadowRoot.elementFromPoint(box.left + x, box.top + y);
-          if (!inner || inner === over) break;
-          over = inner;
-        }
-        return over === view.canvas;
-      };
-      const rays = (named.rays?.paths ?? []).map((path) => {
-        const ray = view.probes.evidenceRay(named.rays!.pixel, path);
-        if (!ray) return { path, drawnAs: null, shown: 0 };
-        let shown = 0;
-        ray.points.forEach((point, index) => {
-          const before = ray.points[index - 1];
-          const visible = (p: Point & { hidden: boolean }) => !p.hidden && onCanvas(p);
-          if (before && visible(before) && visible(point)) shown += Math.hypot(point.x - before.x, point.y - before.y);
-        });
-        return { path, drawnAs: ray.drawnAs, shown: Math.round(shown) };
+  const seen: EvidenceFigures = await sceneView.evaluate((element, named) => {
+    const view = (element as unknown as { labView: InspectedView }).labView;
+    const box = view.canvas.getBoundingClientRect();
+    // What the pointer would be over at a point of the canvas, through every shadow root: the canvas itself, or a panel over it.
+    const onCanvas = ({ x, y }: Point) => {
+      if (x < 0 || y < 0 || x > box.width || y > box.height) return false;
+      let over = document.elementFromPoint(box.left + x, box.top + y);
+      while (over?.shadowRoot) {
+        const inner = over.shadowRoot.elementFromPoint(box.left + x, box.top + y);
+        if (!inner || inner === over) break;
+        over = inner;
+      }
+      return over === view.canvas;
+    };
+    const rays = (named.rays?.paths ?? []).map((path) => {
+      const ray = view.probes.evidenceRay(named.rays!.pixel, path);
+      if (!ray) return { path, drawnAs: null, shown: 0 };
+      let shown = 0;
+      ray.points.forEach((point, index) => {
+        const before = ray.points[index - 1];
+        const visible = (p: Point & { hidden: boolean }) => !p.hidden && onCanvas(p);
+        if (before && visible(before) && visible(point)) shown += Math.hypot(point.x - before.x, point.y - before.y);
       });
-      const objects = (named.objects ?? []).map((id) => {
-        const points = view.probes.projectedPointsOf(id);
-        const placed = points.filter((point): point is Point => point !== null);
-        const xs = placed.map((point) => point.x);
-        const ys = placed.map((point) => point.y);
-        const centre = { x: xs.reduce((sum, x) => sum + x, 0) / xs.length, y: ys.reduce((sum, y) => sum + y, 0) / ys.length };
-        const within = (low: number, high: number, size: number) => Math.max(0, Math.min(high, size) - Math.max(low, 0));
-        const size = Math.min(within(Math.min(...xs), Math.max(...xs), box.width), within(Math.min(...ys), Math.max(...ys), box.height));
-        return { id, size: Math.round(size), uncovered: placed.length > 0 && onCanvas(centre) };
-      });
-      return { rays, objects };
-    },
-    evidence,
-  );
+      return { path, drawnAs: ray.drawnAs, shown: Math.round(shown) };
+    });
+    const objects = (named.objects ?? []).map((id) => {
+      const points = view.probes.projectedPointsOf(id);
+      const placed = points.filter((point): point is Point => point !== null);
+      const xs = placed.map((point) => point.x);
+      const ys = placed.map((point) => point.y);
+      const centre = { x: xs.reduce((sum, x) => sum + x, 0) / xs.length, y: ys.reduce((sum, y) => sum + y, 0) / ys.length };
+      const within = (low: number, high: number, size: number) => Math.max(0, Math.min(high, size) - Math.max(low, 0));
+      const size = Math.min(within(Math.min(...xs), Math.max(...xs), box.width), within(Math.min(...ys), Math.max(...ys), box.height));
+      return { id, size: Math.round(size), uncovered: placed.length > 0 && onCanvas(centre) };
+    });
+    return { rays, objects };
+  }, evidence);
   for (const ray of seen.rays) {
     expect.soft(ray.drawnAs, `${where}: pixel ${evidence.rays!.pixel} has a ray "${ray.path}"`).not.toBeNull();
     const least = RAY_MIN_LENGTH[ray.drawnAs!];
-    expect.soft(ray.shown, `${where}: the ${ray.drawnAs} ray "${ray.path}" of pixel ${evidence.rays!.pixel} shows over at least ${least} px, on screen and under no panel`).toBeGreaterThanOrEqual(least);
+    expect
+      .soft(
+        ray.shown,
+        `${where}: the ${ray.drawnAs} ray "${ray.path}" of pixel ${evidence.rays!.pixel} shows over at least ${least} px, on screen and under no panel`,
+      )
+      .toBeGreaterThanOrEqual(least);
   }
   for (const object of seen.objects) {
     expect.soft(object.uncovered, `${where}: the middle of "${object.id}" is on the 3D view, under no panel`).toBe(true);

@@ -48,10 +48,12 @@ function overlaps(a: { x: number; y: number; width: number; height: number }, b:
 export async function expectRingAround(page: Page, target: Locator): Promise<void> {
   const ring = page.getByTestId('guide-ring');
   await expect(ring).toBeVisible();
-  await expect.poll(async () => {
-    const [r, t] = [await ring.boundingBox(), await target.boundingBox()];
-    return r !== null && t !== null && overlaps(r, t) && r.width < t.width + 60 && Math.abs(r.x + r.width / 2 - (t.x + t.width / 2)) < 12;
-  }).toBe(true);
+  await expect
+    .poll(async () => {
+      const [r, t] = [await ring.boundingBox(), await target.boundingBox()];
+      return r !== null && t !== null && overlaps(r, t) && r.width < t.width + 60 && Math.abs(r.x + r.width / 2 - (t.x + t.width / 2)) < 12;
+    })
+    .toBe(true);
 }
 
 export async function clickToolbar(page: Page, command: string): Promise<void> {
@@ -177,7 +179,6 @@ export async function importProgress(page: Page, file: string): Promise<void> {
   await expect(page.locator('rt-toast')).toContainText('Progress imported');
   await page.keyboard.press('Escape');
 }
-
 
 /** Picks a prediction's choice by its words (or a picture's "picture B") and locks it in. */
 export async function lockIn(page: Page, choice: string): Promise<void> {

@@ -44,7 +44,9 @@ export function makeNewerBuild(from: string, to: string): void {
   // Workbox's revision of a file without a hash in its name is the MD5 of its content.
   const worker = join(to, 'sw.js');
   const revised = readFileSync(worker, 'utf8').replace(/\{url:"([^"]+)",revision:"[0-9a-f]{32}"\}/g, (_, url: string) => {
-    const revision = createHash('md5').update(readFileSync(join(to, url))).digest('hex');
+    const revision = createHash('md5')
+      .update(readFileSync(join(to, url)))
+      .digest('hex');
     return `{url:"${url}",revision:"${revision}"}`;
   });
   writeFileSync(worker, revised);

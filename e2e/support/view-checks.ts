@@ -41,7 +41,9 @@ export async function viewSettled(page: Page, where: string): Promise<void> {
 export async function expectViewShows(page: Page, where: string, view: DeclaredView): Promise<void> {
   const sceneView = page.locator('rt-scene-view');
   if (view.pixel !== undefined) {
-    const chosen = await page.locator('rt-lab').evaluate((lab) => (lab as unknown as { store: { state: { selectedPixel: unknown } } }).store.state.selectedPixel);
+    const chosen = await page
+      .locator('rt-lab')
+      .evaluate((lab) => (lab as unknown as { store: { state: { selectedPixel: unknown } } }).store.state.selectedPixel);
     expect(chosen, `${where}: the view chose its pixel`).toEqual(view.pixel);
   }
   const canvas = await sceneView.evaluate((element) => {
@@ -60,7 +62,9 @@ export async function expectViewShows(page: Page, where: string, view: DeclaredV
     );
     expect(points.length, `${where}: "${name}" has a place in the scene`).toBeGreaterThan(0);
     for (const point of points) {
-      expect(point !== null && inside(point), `${where}: "${name}" is inside the 3D view (${JSON.stringify(point)} in ${canvas.width}×${canvas.height})`).toBe(true);
+      expect(point !== null && inside(point), `${where}: "${name}" is inside the 3D view (${JSON.stringify(point)} in ${canvas.width}×${canvas.height})`).toBe(
+        true,
+      );
     }
     const centre = { x: points.reduce((sum, p) => sum + p!.x, 0) / points.length, y: points.reduce((sum, p) => sum + p!.y, 0) / points.length };
     await expectViewAt(page, `${where}: "${name}"`, { x: canvas.left + centre.x, y: canvas.top + centre.y });
@@ -106,6 +110,9 @@ async function expectPixelRaysReadable(page: Page, where: string): Promise<void>
   for (const ray of widths) {
     if (!ray) continue;
     const widest = Math.max(...ray.seen);
-    expect(widest, `${where}: the ray ${JSON.stringify(ray.from)}→${JSON.stringify(ray.to)} is drawn at least ${RAY_MIN_WIDTH} px wide (seen ${ray.seen})`).toBeGreaterThanOrEqual(RAY_MIN_WIDTH);
+    expect(
+      widest,
+      `${where}: the ray ${JSON.stringify(ray.from)}→${JSON.stringify(ray.to)} is drawn at least ${RAY_MIN_WIDTH} px wide (seen ${ray.seen})`,
+    ).toBeGreaterThanOrEqual(RAY_MIN_WIDTH);
   }
 }

@@ -19,8 +19,7 @@ function place(geometry: BufferGeometry, { at, rotation = [0, 0, 0], scale = [1,
   return geometry.applyMatrix4(new Matrix4().compose(new Vector3(...at), turn, new Vector3(...scale)));
 }
 
-const ball = (radius: number, detail: number, placement: Placement) =>
-  place(new SphereGeometry(radius, 2 * detail, detail), placement);
+const ball = (radius: number, detail: number, placement: Placement) => place(new SphereGeometry(radius, 2 * detail, detail), placement);
 
 /** A part on both sides: built for the right (+X) and mirrored for the left. */
 function pair(build: (side: 1 | -1) => BufferGeometry): BufferGeometry[] {
@@ -36,7 +35,8 @@ function pair(build: (side: 1 | -1) => BufferGeometry): BufferGeometry[] {
 function robot(): BufferGeometry {
   const arm = (side: 1 | -1) => place(new CapsuleGeometry(0.04, 0.2, 6, 20), { at: [side * 0.24, 0.47, 0], rotation: [0, 0, side * 25] });
   // The hand sits at the arm's lower end: 0.14 m from its centre along the tilted arm.
-  const hand = (side: 1 | -1) => ball(0.055, 10, { at: [side * (0.24 + 0.14 * Math.sin(25 * RADIANS_PER_DEGREE)), 0.47 - 0.14 * Math.cos(25 * RADIANS_PER_DEGREE), 0] });
+  const hand = (side: 1 | -1) =>
+    ball(0.055, 10, { at: [side * (0.24 + 0.14 * Math.sin(25 * RADIANS_PER_DEGREE)), 0.47 - 0.14 * Math.cos(25 * RADIANS_PER_DEGREE), 0] });
   const parts = [
     ...pair((side) => ball(1, 10, { at: [side * 0.1, 0.045, 0.02], scale: [0.09, 0.045, 0.13] })), // feet, standing on y = 0
     ...pair((side) => place(new CapsuleGeometry(0.05, 0.16, 6, 20), { at: [side * 0.1, 0.19, 0] })), // legs

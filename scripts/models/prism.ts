@@ -15,17 +15,31 @@ export const prism: ModelRecipe = {
   description: 'a triangular glass prism (equilateral cross-section in XY, apex up, 1 m deep along Z), flat faces',
   build() {
     const corners = [
-      [-SIDE / 2, 0, DEPTH / 2], [SIDE / 2, 0, DEPTH / 2], [0, HEIGHT, DEPTH / 2], // front: 0 left, 1 right, 2 apex
-      [-SIDE / 2, 0, -DEPTH / 2], [SIDE / 2, 0, -DEPTH / 2], [0, HEIGHT, -DEPTH / 2], // back: 3, 4, 5
+      [-SIDE / 2, 0, DEPTH / 2],
+      [SIDE / 2, 0, DEPTH / 2],
+      [0, HEIGHT, DEPTH / 2], // front: 0 left, 1 right, 2 apex
+      [-SIDE / 2, 0, -DEPTH / 2],
+      [SIDE / 2, 0, -DEPTH / 2],
+      [0, HEIGHT, -DEPTH / 2], // back: 3, 4, 5
     ];
     const triangles = [
-      [0, 1, 2], [3, 5, 4], // front and back caps
-      [0, 3, 4], [0, 4, 1], // floor
-      [1, 4, 5], [1, 5, 2], // right slope
-      [2, 5, 3], [2, 3, 0], // left slope
+      [0, 1, 2],
+      [3, 5, 4], // front and back caps
+      [0, 3, 4],
+      [0, 4, 1], // floor
+      [1, 4, 5],
+      [1, 5, 2], // right slope
+      [2, 5, 3],
+      [2, 3, 0], // left slope
     ];
     const geometry = new BufferGeometry();
-    geometry.setAttribute('position', new Float32BufferAttribute(triangles.flat().flatMap((corner) => corners[corner]), 3));
+    geometry.setAttribute(
+      'position',
+      new Float32BufferAttribute(
+        triangles.flat().flatMap((corner) => corners[corner]),
+        3,
+      ),
+    );
     // Non-indexed, so each face's normal is its own.
     geometry.computeVertexNormals();
     return geometry;

@@ -14,7 +14,8 @@ export function assignmentCatalog(catalog: LevelCatalog, assignment: Assignment)
   const entries = new Map(catalog.chapters.flatMap((chapter) => chapter.entries.map((entry) => [entry.id, entry] as const)));
   const listed = new Set(assignment.levels);
   const chosen = assignment.levels.map(
-    (id): CatalogEntry => entries.get(id) ?? { id, ok: false, errors: [`(root): the assignment lists the level "${id}", which this version of the game does not have`] },
+    (id): CatalogEntry =>
+      entries.get(id) ?? { id, ok: false, errors: [`(root): the assignment lists the level "${id}", which this version of the game does not have`] },
   );
   const first: CatalogChapter = { id: ASSIGNMENT_CHAPTER, title: assignment.title, entries: chosen };
   const others =

@@ -2,7 +2,9 @@ import { mergeProgress } from '../quest/progress-merge.ts';
 import type { Progress } from '../quest/progress.ts';
 import type { ProgressStore } from '../quest/progress-store.ts';
 import { listBackups, type KeyValueStorage } from '../quest/saved-backups.ts';
+import { surveyKey } from '../classroom/survey-store.ts';
 import type { PendingWrites } from './pending-writes.ts';
+import { sessionContextKey } from './session-context.ts';
 
 /**
  * The Menu's "Damaged saves": every copy of saved data that could not be used as it was,
@@ -25,15 +27,17 @@ export interface DamagedSave {
 
 export class DamagedSaves {
   private listed: DamagedSave[] = [];
+  private readonly contextKey: string;
+  private readonly surveyKey: string;
 
   constructor(
     private readonly storage: KeyValueStorage,
     private readonly progress: ProgressStore,
     private readonly writes: PendingWrites,
     private readonly progressKey: string,
-    private readonly contextKey: string,
-    private readonly surveyKey: string,
   ) {
+    this.contextKey = sessionContextKey(progressKey);
+    this.surveyKey = surveyKey(progressKey);
     this.refresh();
   }
 
@@ -50,7 +54,13 @@ export class DamagedSaves {
       [this.contextKey, this.writes.held(this.contextKey)],
       [this.surveyKey, this.writes.held(this.surveyKey)],
     ].flatMap(([key, text]) => (key !== null && text !== null ? [{ key, what: what(key), madeAt: null, size: text.length, held: true }] : []));
-    const stored = listBackups(this.storage, [this.progressKey, this.contextKey, this.surveyKey]).map(({ key, of, madeAt, size }) => ({ key, what: what(of), madeAt, size, held: false }));
+    const stored = listBackups(this.storage, [this.progressKey, this.contextKey, this.surveyKey]).map(({ key, of, madeAt, size }) => ({
+      key,
+      what: what(of),
+      madeAt,
+      size,
+      held: false,
+    }));
     this.listed = [...held, ...stored];
   }
 

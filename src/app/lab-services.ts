@@ -42,7 +42,12 @@ export interface LoadProblem {
  * failed for good (a tab of a build that a newer one replaced, offline): lazy-module.ts.
  */
 const viewLayersCode = new LazyModule(() =>
-  Promise.all([import('../view/ray-pool.ts'), import('../view/bvh-boxes.ts'), import('../render/inline-screen-tracer.ts'), import('../view/ray-budget-while-editing.ts')]),
+  Promise.all([
+    import('../view/ray-pool.ts'),
+    import('../view/bvh-boxes.ts'),
+    import('../render/inline-screen-tracer.ts'),
+    import('../view/ray-budget-while-editing.ts'),
+  ]),
 );
 
 /**
@@ -103,7 +108,9 @@ export class LabServices {
     this.tracer = new ScreenTracer(this.tracePool, options.loadMeshes);
     // Workers whose code cannot be loaded are said once, with Reload, not at every edit.
     this.tracer.onError = (error) =>
-      error instanceof RenderWorkersUnavailable ? options.cannotLoad({ what: 'tracer', reason: error.message }) : options.report(options.traceFailed(error), 'error');
+      error instanceof RenderWorkersUnavailable
+        ? options.cannotLoad({ what: 'tracer', reason: error.message })
+        : options.report(options.traceFailed(error), 'error');
     this.cannotLoad = options.cannotLoad;
     this.cleanup.push(
       this.tracer.subscribe((rays) => {

@@ -30,7 +30,11 @@ export function loadBrowserCatalog(): LevelCatalog {
   if (!files) return { chapters: [], errors: ['(root): the level texts were not loaded'] };
   if (catalog?.files !== files) {
     const index = files['index.json'];
-    catalog = { files, catalog: index === undefined ? { chapters: [], errors: ['(root): levels/index.json is missing from this build'] } : loadLevels(index, (name) => files[name]) };
+    catalog = {
+      files,
+      catalog:
+        index === undefined ? { chapters: [], errors: ['(root): levels/index.json is missing from this build'] } : loadLevels(index, (name) => files[name]),
+    };
   }
   return catalog.catalog;
 }

@@ -2,7 +2,16 @@ import type { Assignment } from '../classroom/assignment.ts';
 import { systemClock, type QuestClock } from '../quest/event-log.ts';
 import { playableLevels, type LevelCatalog } from '../quest/level-index.ts';
 import type { Locale } from '../quest/localized-text.ts';
-import { exportProgress, PROGRESS_KEY, ProgressStore, readProgressJson, replacing, type KeyValueStorage, type ProgressProblem, type SaveProblemKind } from '../quest/progress-store.ts';
+import {
+  exportProgress,
+  PROGRESS_KEY,
+  ProgressStore,
+  readProgressJson,
+  replacing,
+  type KeyValueStorage,
+  type ProgressProblem,
+  type SaveProblemKind,
+} from '../quest/progress-store.ts';
 import { holdsAll } from '../quest/progress-merge.ts';
 import type { Progress } from '../quest/progress.ts';
 import { QuestEngine, type OpenLevelResult } from '../quest/quest-engine.ts';
@@ -13,11 +22,11 @@ import type { SurveySubmission } from '../classroom/survey-answers.ts';
 import { loadSurvey, readSurveyText, surveyKey, type SurveyDamage } from '../classroom/survey-store.ts';
 import { assignmentCatalog } from './assignment-catalog.ts';
 import { DamagedSaves, withRestored } from './damaged-saves.ts';
+import { applyPalette, keepPalette } from './palette-setting.ts';
 import { PendingWrites } from './pending-writes.ts';
 import { loadSessionContext, readContextText, sessionContextKey, type ContextDamage, type SessionContext } from './session-context.ts';
 import { playShowMe, showMeSteps, type ShowMeStage } from './show-me-player.ts';
 import type { Store } from '../lab-state/store.ts';
-import type { LabState } from '../lab-state/lab-state.ts';
 import { SandboxSaver } from './sandbox-saver.ts';
 import { attachToPage } from './session-page.ts';
 import { TaskViews } from './task-views.ts';
@@ -58,7 +67,8 @@ export interface QuestSessionOptions {
   idleHintMs?: number;
 }
 
-export type ImportResult = { ok: true; repaired: string[] } | { ok: false; reason: 'unreadable'; errors: string[] } | { ok: false; reason: 'not-saved'; kind: SaveProblemKind };
+export type ImportResult =
+  { ok: true; repaired: string[] } | { ok: false; reason: 'unreadable'; errors: string[] } | { ok: false; reason: 'not-saved'; kind: SaveProblemKind };
 
 export class QuestSession {
   readonly catalog: LevelCatalog;
@@ -114,7 +124,7 @@ export class QuestSession {
     if (survey.damage) this.keepDamagedSurvey(survey.damage);
     const loaded = this.progress.load();
     this.problem = loaded.problem;
-    this.damagedSaves = new DamagedSaves(this.storage, this.progress, this.writes, this.progressKey, sessionContextKey(this.progressKey), surveyKey(this.progressKey));
+    this.damagedSaves = new DamagedSaves(this.storage, this.progress, this.writes, this.progressKey);
     this.engineNow = this.makeEngine(loaded.progress);
     this.listenTo(this.engineNow);
     if (this.assignment && this.engineNow.progress.settings.locale !== this.assignment.locale) {
@@ -122,14 +132,16 @@ export class QuestSession {
     } else {
       this.save();
     }
-    this.applyPalette();
-    this.cleanup.push(this.store.subscribe((state, action, error, live) => {
-      this.engineNow.observe(state, action, error, live);
-      this.keepPalette(state);
-      if (this.modeNow.kind !== 'free-lab') return;
-      if (action.type === 'scene.loaded') this.sandbox.loaded(state.scene);
-      else this.sandbox.keep(state.scene, live === true);
-    }));
+    applyPalette(this.engineNow, this.store);
+    this.cleanup.push(
+      this.store.subscribe((state, action, error, live) => {
+        this.engineNow.observe(state, action, error, live);
+        keepPalette(this.engineNow, state);
+        if (this.modeNow.kind !== 'free-lab') return;
+        if (action.type === 'scene.loaded') this.sandbox.loaded(state.scene);
+        else this.sandbox.keep(state.scene, live === true);
+      }),
+    );
   }
 
   get engine(): QuestEngine {
@@ -368,7 +380,7 @@ export class QuestSession {
     this.leaveMode();
     this.engineNow = engine;
     this.listenTo(engine);
-    this.applyPalette();
+    applyPalette(this.engineNow, this.store);
     this.modeNow = { kind: 'map' };
     this.notify();
   }
@@ -389,21 +401,6 @@ export class QuestSession {
     this.stopShowMe();
     this.views.closed();
     this.sandbox.flush();
-  }
-
-  /**
-   * The ray palette is the learner's setting, saved with the progress (the ray panel's switch
-   * and the menu both change it through the store): a colour-blind learner chooses it once.
-   */
-  private keepPalette(state: LabState): void {
-    const colorBlindPalette = state.rays.colorBlindPalette;
-    if (colorBlindPalette !== this.engineNow.progress.settings.colorBlindPalette) this.engineNow.changeSettings({ colorBlindPalette });
-  }
-
-  /** The saved palette, into the lab (at the start, after an import or a reset). */
-  private applyPalette(): void {
-    const colorBlindPalette = this.engineNow.progress.settings.colorBlindPalette;
-    if (this.store.state.rays.colorBlindPalette !== colorBlindPalette) this.store.dispatch({ type: 'rays.changed', changes: { colorBlindPalette } });
   }
 
   /** The session record, written at the next save. */
@@ -427,7 +424,10 @@ export class QuestSession {
   private restoreContext(text: string): ImportResult {
     const { context } = readContextText(text);
     if (context.participantCode === null && context.attemptId === null) return { ok: false, reason: 'unreadable', errors: [] };
-    this.changeContext({ participantCode: context.participantCode ?? this.contextNow.participantCode, attemptId: context.attemptId ?? this.contextNow.attemptId });
+    this.changeContext({
+      participantCode: context.participantCode ?? this.contextNow.participantCode,
+      attemptId: context.attemptId ?? this.contextNow.attemptId,
+    });
     return { ok: true, repaired: [] };
   }
 

@@ -51,5 +51,7 @@ export function readSceneFile(text: string, bytes = text.length): SceneParseResu
   if (!json.ok) return { ok: false, errors: [json.error] };
   if (!isRecord(json.value) || !('tasks' in json.value && 'scene' in json.value)) return parseScene(json.value);
   const level = parseScene(json.value.scene);
-  return level.ok ? level : { ok: false, errors: level.errors.map((error) => (error.startsWith('(root)') ? `scene${error.slice('(root)'.length)}` : `scene.${error}`)) };
+  return level.ok
+    ? level
+    : { ok: false, errors: level.errors.map((error) => (error.startsWith('(root)') ? `scene${error.slice('(root)'.length)}` : `scene.${error}`)) };
 }

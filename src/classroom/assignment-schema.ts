@@ -29,14 +29,19 @@ export const assignmentSchema = z
     askParticipantCode: z.boolean(),
     survey: kebabId().nullable(),
     classCode: z.string().regex(CLASS_CODE, 'a class code has 1 to 32 letters, digits, - or _').optional(),
-    xapiHomePage: z.url({ protocol: /^https?$/, error: 'must be a web address that starts with http:// or https://' }).max(200).optional(),
+    xapiHomePage: z
+      .url({ protocol: /^https?$/, error: 'must be a web address that starts with http:// or https://' })
+      .max(200)
+      .optional(),
   })
   .superRefine((assignment, context) => {
     assignment.levels.forEach((id, index) => {
-      if (assignment.levels.indexOf(id) !== index) context.addIssue({ code: 'custom', path: ['levels', index], input: id, message: `"${id}" is listed more than once` });
+      if (assignment.levels.indexOf(id) !== index)
+        context.addIssue({ code: 'custom', path: ['levels', index], input: id, message: `"${id}" is listed more than once` });
     });
     for (const id of Object.keys(assignment.requiredTasks)) {
-      if (!assignment.levels.includes(id)) context.addIssue({ code: 'custom', path: ['requiredTasks', id], input: id, message: `"${id}" is not one of the assignment's levels` });
+      if (!assignment.levels.includes(id))
+        context.addIssue({ code: 'custom', path: ['requiredTasks', id], input: id, message: `"${id}" is not one of the assignment's levels` });
     }
   });
 

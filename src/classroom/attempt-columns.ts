@@ -106,10 +106,20 @@ export const ATTEMPT_COLUMNS: readonly AttemptColumn[] = [
       into.attempt.startedAt = cell;
     },
   },
-  { name: 'completed_at', ...plain, value: ({ attempt }) => attempt.completedAt ?? '', read: (cell, into) => void (into.attempt.completedAt = cell === '' ? null : cell) },
+  {
+    name: 'completed_at',
+    ...plain,
+    value: ({ attempt }) => attempt.completedAt ?? '',
+    read: (cell, into) => void (into.attempt.completedAt = cell === '' ? null : cell),
+  },
   countColumn('duration_ms', 'durationMs', true),
   countColumn('active_ms', 'activeMs', true),
-  { name: 'how', ...plain, value: ({ attempt }) => attempt.how ?? '', read: (cell, into) => void (into.attempt.how = HOW_COMPLETED.find((how) => how === cell) ?? null) },
+  {
+    name: 'how',
+    ...plain,
+    value: ({ attempt }) => attempt.how ?? '',
+    read: (cell, into) => void (into.attempt.how = HOW_COMPLETED.find((how) => how === cell) ?? null),
+  },
   countColumn('hints_text', 'hintsText'),
   countColumn('hints_guidance', 'hintsGuidance'),
   countColumn('hints_offered', 'hintsOffered'),

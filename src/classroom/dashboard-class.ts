@@ -23,7 +23,11 @@ export interface DroppedFile {
 }
 
 /** Reads every file; adds to `earlier` (files dropped before) so that drops can be repeated. */
-export function readClassFiles(files: readonly DroppedFile[], earlier: ClassFiles = { records: [], skipped: [] }, seen = new Map<string, string>()): ClassFiles {
+export function readClassFiles(
+  files: readonly DroppedFile[],
+  earlier: ClassFiles = { records: [], skipped: [] },
+  seen = new Map<string, string>(),
+): ClassFiles {
   const records = [...earlier.records];
   const skipped = [...earlier.skipped];
   for (const { name, text } of files) {

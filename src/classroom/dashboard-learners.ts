@@ -24,7 +24,13 @@ const firstMoment = (record: ClassRecord) => Math.min(Number.POSITIVE_INFINITY, 
 
 /** How complete a copy of a log is, compared from the first number on. */
 function completeness(record: ClassRecord): number[] {
-  return [record.attempts.filter((attempt) => attempt.how !== null).length, record.attempts.length, lastMoment(record), record.visits.length, record.survey ? 1 : 0];
+  return [
+    record.attempts.filter((attempt) => attempt.how !== null).length,
+    record.attempts.length,
+    lastMoment(record),
+    record.visits.length,
+    record.survey ? 1 : 0,
+  ];
 }
 
 function moreComplete(a: ClassRecord, b: ClassRecord): ClassRecord {
@@ -44,7 +50,10 @@ export function classLearners(records: readonly ClassRecord[]): ClassLearner[] {
   const playthroughs = groupBy(records, (record) => `${record.assignmentId}\u0000${record.attemptId}`).map((copies) => {
     const kept = copies.reduce(moreComplete);
     // A copy taken before the survey was answered does not lose the answers of another.
-    const survey = kept.survey ?? copies.filter((copy) => copy.survey).reduce<ClassRecord | null>((best, copy) => (best ? moreComplete(best, copy) : copy), null)?.survey ?? null;
+    const survey =
+      kept.survey ??
+      copies.filter((copy) => copy.survey).reduce<ClassRecord | null>((best, copy) => (best ? moreComplete(best, copy) : copy), null)?.survey ??
+      null;
     return { kept: { ...kept, survey }, files: copies.map((copy) => copy.file) };
   });
   return groupBy(playthroughs, ({ kept }) => `${kept.assignmentId}\u0000${kept.learnerId}`).map((group) => {
@@ -69,13 +78,18 @@ export interface LearnerFilter {
 
 export function filterLearners(learners: readonly ClassLearner[], filter: LearnerFilter): ClassLearner[] {
   return learners.filter(
-    (learner) => (filter.assignmentId === null || learner.assignmentId === filter.assignmentId) && (filter.classCode === null || learner.classCode === filter.classCode),
+    (learner) =>
+      (filter.assignmentId === null || learner.assignmentId === filter.assignmentId) && (filter.classCode === null || learner.classCode === filter.classCode),
   );
 }
 
 /** The assignments among the learners (id and title, '' for free play), with how many learners each. */
 export function assignmentsOf(learners: readonly ClassLearner[]): { id: string; title: string; learners: number }[] {
-  return groupBy(learners, (learner) => learner.assignmentId).map((group) => ({ id: group[0].assignmentId, title: group[0].assignment, learners: group.length }));
+  return groupBy(learners, (learner) => learner.assignmentId).map((group) => ({
+    id: group[0].assignmentId,
+    title: group[0].assignment,
+    learners: group.length,
+  }));
 }
 
 /** The class codes among the learners ('' for none), sorted. */

@@ -24,7 +24,8 @@ export function readCsvExport(file: string, text: string): FileRead {
   const names = header.map((name) => name.trim().toLowerCase());
   const column = new Map(names.map((name, index) => [name, index]));
   const missing = ATTEMPT_COLUMNS.filter(({ name, required }) => required && !column.has(name)).map(({ name }) => name);
-  if (missing.length > 0) return { ok: false, file, reason: msg(str`not a Ray Tracer Quest CSV export (no column ${missing.map((name) => `"${name}"`).join(', ')})`) };
+  if (missing.length > 0)
+    return { ok: false, file, reason: msg(str`not a Ray Tracer Quest CSV export (no column ${missing.map((name) => `"${name}"`).join(', ')})`) };
 
   const readRow = (row: readonly string[]) => {
     const into = emptyReadRow();

@@ -31,7 +31,12 @@ export function readJsonExport(file: string, text: string): FileRead {
   const json = readJson(text);
   if (!json.ok) return { ok: false, file, reason: msg('the file is damaged'), detail: json.error };
   const value = json.value;
-  if (isXapi(value)) return { ok: false, file, reason: msg("xAPI statements, which are for a school's learning record store: drop the learner's JSON or CSV export here instead") };
+  if (isXapi(value))
+    return {
+      ok: false,
+      file,
+      reason: msg("xAPI statements, which are for a school's learning record store: drop the learner's JSON or CSV export here instead"),
+    };
   if (!isRecord(value)) return { ok: false, file, reason: msg('not a Ray Tracer Quest export (the file holds no JSON object)') };
   if (value.kind === PROGRESS_KIND) return { ok: false, file, reason: msg('a saved progress file, not an export: export the results from the game instead') };
   if (value.format !== EXPORT_FORMAT) return { ok: false, file, reason: msg('not a Ray Tracer Quest export (no "format": "ray-tracer-quest-export")') };

@@ -102,7 +102,8 @@ export function exportXapi(input: ExportInput): XapiStatement[] {
   }
   if (input.survey) {
     const { survey, submittedAt, answers } = input.survey;
-    for (const [question, answer] of Object.entries(answers)) add(VERBS.answered, activities.question(survey, question), submittedAt, { response: String(answer) });
+    for (const [question, answer] of Object.entries(answers))
+      add(VERBS.answered, activities.question(survey, question), submittedAt, { response: String(answer) });
     add(VERBS.completed, activities.survey(survey), submittedAt, { completion: true });
   }
   // Stable: statements of the same moment keep the log's order.
@@ -123,11 +124,27 @@ function eventStatement(event: LoggedEvent, at: string, openedAt: Map<string, nu
     case 'level.closed':
       return add(VERBS.exited, activities.level(event.level), at, { duration: isoDuration(event.t - (openedAt.get(event.level) ?? event.t)) });
     case 'level.passed':
-      return add(VERBS.passed, activities.level(event.level), at, { success: true, completion: true, duration: isoDuration(event.t - (openedAt.get(event.level) ?? event.t)) });
+      return add(VERBS.passed, activities.level(event.level), at, {
+        success: true,
+        completion: true,
+        duration: isoDuration(event.t - (openedAt.get(event.level) ?? event.t)),
+      });
     case 'quiz.answered':
-      return add(VERBS.answered, activities.task(event.level, event.task), at, { success: event.correct, response: String(event.choice ?? event.value) }, event.level);
+      return add(
+        VERBS.answered,
+        activities.task(event.level, event.task),
+        at,
+        { success: event.correct, response: String(event.choice ?? event.value) },
+        event.level,
+      );
     case 'hint.shown':
-      return add(VERBS.experienced, activities.hint(event.level, event.task, event.step), at, { extensions: { [EXTENSIONS.trigger]: event.trigger } }, event.level);
+      return add(
+        VERBS.experienced,
+        activities.hint(event.level, event.task, event.step),
+        at,
+        { extensions: { [EXTENSIONS.trigger]: event.trigger } },
+        event.level,
+      );
     case 'explanation.expanded':
       return add(VERBS.experienced, activities.explanation(event.level, event.task), at, undefined, event.level);
     case 'badge.earned':

@@ -69,7 +69,8 @@ export const surveySchema = z
   .superRefine((survey, context) => {
     const seen = new Set<string>();
     survey.questions.forEach((question, index) => {
-      if (seen.has(question.id)) context.addIssue({ code: 'custom', path: ['questions', index, 'id'], input: question.id, message: `"${question.id}" is used more than once` });
+      if (seen.has(question.id))
+        context.addIssue({ code: 'custom', path: ['questions', index, 'id'], input: question.id, message: `"${question.id}" is used more than once` });
       seen.add(question.id);
     });
   });

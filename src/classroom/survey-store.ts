@@ -62,7 +62,8 @@ export function readSurveyText(raw: string): SurveyRead {
   const fields = json.ok && isRecord(json.value) ? json.value : null;
   const parts = fields ? fieldsOf(fields) : fieldsIn(raw);
   const lost = [...(parts.survey === null ? ['survey'] : []), ...(parts.submittedAt === null ? ['submittedAt'] : []), ...parts.lostAnswers];
-  const submission = parts.survey !== null && parts.submittedAt !== null ? { survey: parts.survey, submittedAt: parts.submittedAt, answers: parts.answers } : null;
+  const submission =
+    parts.survey !== null && parts.submittedAt !== null ? { survey: parts.survey, submittedAt: parts.submittedAt, answers: parts.answers } : null;
   return { submission, damaged: fields === null || lost.length > 0, lost, cut: fields === null };
 }
 

@@ -45,7 +45,10 @@ export function loadMeshesCached(names: Iterable<string>, modelsDir = MODELS_DIR
 
 async function loadMeshCached(name: string, modelsDir: string, cacheDir: string): Promise<MeshData> {
   const text = await readModelText(name, modelsDir);
-  const key = createHash('sha1').update(text).update(`\n${JSON.stringify(MESH_BVH_BUILD)}`).digest('hex');
+  const key = createHash('sha1')
+    .update(text)
+    .update(`\n${JSON.stringify(MESH_BVH_BUILD)}`)
+    .digest('hex');
   const file = join(cacheDir, `${name}.mesh`);
   const cached = await readFile(file).then(
     (bytes) => decodeMesh(bytes, key),
@@ -80,7 +83,13 @@ async function writeAtomically(file: string, bytes: Uint8Array): Promise<void> {
 /** The cache file of `mesh` (which has its BVH): MAGIC, the header's length, the header as JSON, then the arrays. */
 export function encodeMesh(mesh: MeshData, key: string): Uint8Array {
   const bvh = mesh.bvh!;
-  const sections: ArrayBufferView[] = [mesh.positions, mesh.normals ?? new Float32Array(0), mesh.indices, bvh.index, ...bvh.roots.map((root) => new Uint8Array(root))];
+  const sections: ArrayBufferView[] = [
+    mesh.positions,
+    mesh.normals ?? new Float32Array(0),
+    mesh.indices,
+    bvh.index,
+    ...bvh.roots.map((root) => new Uint8Array(root)),
+  ];
   const payload = new Uint8Array(sections.reduce((size, section) => size + padded(section.byteLength), 0));
   let at = 0;
   for (const section of sections) {
@@ -136,7 +145,13 @@ export function decodeMesh(bytes: Uint8Array, key: string): MeshData | null {
 
 /** The counts agree with each other: whole triangles, a normal per vertex, the BVH's index a reordering of as many. */
 function holdsTogether({ positions, normals, indices, bvh }: MeshData): boolean {
-  return positions.length % 3 === 0 && (normals === null || normals.length === positions.length) && indices.length % 3 === 0 && bvh!.index.length === indices.length && bvh!.roots.length > 0;
+  return (
+    positions.length % 3 === 0 &&
+    (normals === null || normals.length === positions.length) &&
+    indices.length % 3 === 0 &&
+    bvh!.index.length === indices.length &&
+    bvh!.roots.length > 0
+  );
 }
 
 function padded(length: number): number {

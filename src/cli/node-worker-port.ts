@@ -38,4 +38,3 @@ export function createNodeWorkerPort(handlers: RenderWorkerHandlers, entry = REN
 export function createNodeRenderPool(size = availableParallelism()): RenderPool {
   return new RenderPool({ size, createWorker: createNodeWorkerPort });
 }
-

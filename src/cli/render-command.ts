@@ -121,7 +121,13 @@ function refuseHeavy(scene: Scene, width: number, height: number, workers: numbe
 
 /** 90 → "2 minutes", 7200 → "2 hours", 3e6 → "35 days", 3e9 → "95 years". */
 export function describeSeconds(seconds: number): string {
-  const units: [number, string][] = [[365 * 86_400, 'year'], [86_400, 'day'], [3600, 'hour'], [60, 'minute'], [1, 'second']];
+  const units: [number, string][] = [
+    [365 * 86_400, 'year'],
+    [86_400, 'day'],
+    [3600, 'hour'],
+    [60, 'minute'],
+    [1, 'second'],
+  ];
   const [size, name] = units.find(([unit]) => seconds >= unit) ?? [1, 'second'];
   const count = Math.max(1, Math.round(seconds / size));
   return `${count} ${name}${count === 1 ? '' : 's'}`;

@@ -58,7 +58,9 @@ function checkLevelIndex(file: string, text: string): SceneFileCheck {
     }
   };
   const catalog = loadLevels(text, readLevelFile);
-  const broken = catalog.chapters.flatMap((chapter) => chapter.entries.flatMap((entry) => (entry.ok ? [] : entry.errors.map((error) => `level "${entry.id}": ${error}`))));
+  const broken = catalog.chapters.flatMap((chapter) =>
+    chapter.entries.flatMap((entry) => (entry.ok ? [] : entry.errors.map((error) => `level "${entry.id}": ${error}`))),
+  );
   const problems = [...catalog.errors, ...broken];
   return problems.length === 0 ? { ok: true, scene: null } : { ok: false, problems };
 }

@@ -67,7 +67,19 @@ export function equationOf(hit: RayNode, scene: Scene, added?: (ray: RayNode) =>
   const add = (term: Omit<EquationTerm, 'samples' | 'rays'> & { samples?: number; rays?: EquationTerm['rays'] }) =>
     list.push({ samples: 1, rays: { added: 0, total: 0 }, ...term });
 
-  add({ id: 'ambient', kind: 'ambient', lightId: null, color: terms.ambient, ray: null, factors: material ? [{ symbol: 'ka', value: material.ambient }, { symbol: 'C', value: material.color }] : [] });
+  add({
+    id: 'ambient',
+    kind: 'ambient',
+    lightId: null,
+    color: terms.ambient,
+    ray: null,
+    factors: material
+      ? [
+          { symbol: 'ka', value: material.ambient },
+          { symbol: 'C', value: material.color },
+        ]
+      : [],
+  });
   for (const lightTerms of terms.lights) {
     const light = scene.lights.find((candidate) => candidate.id === lightTerms.lightId);
     const id = lightTerms.lightId;
@@ -85,12 +97,63 @@ export function equationOf(hit: RayNode, scene: Scene, added?: (ray: RayNode) =>
       { symbol: 'S', value: lightTerms.visibility },
     ];
     const samples = lightTerms.samples;
-    add({ id: `${id}:ambient`, kind: 'light-ambient', lightId: id, color: lightTerms.ambient, ray: null,
-      factors: light && material ? [{ symbol: 'la', value: light.ambient }, { symbol: 'Lc', value: light.color }, { symbol: 'C', value: material.color }] : [] });
-    add({ id: `${id}:diffuse`, kind: 'diffuse', lightId: id, color: partSum('diffuse'), ray, samples, rays: progress,
-      factors: [...shared, { symbol: 'N·L', value: lightTerms.NdotL }, ...(material && light ? [{ symbol: 'kd', value: material.diffuse }, { symbol: 'ld', value: light.diffuse }, { symbol: 'Lc', value: light.color }, { symbol: 'C', value: material.color }] : [])] });
-    add({ id: `${id}:specular`, kind: 'specular', lightId: id, color: partSum('specular'), ray, samples, rays: progress,
-      factors: [...shared, { symbol: 'R·V', value: lightTerms.RdotV }, ...(material && light ? [{ symbol: 'n', value: material.shininess }, { symbol: 'ks', value: material.specular }, { symbol: 'ls', value: light.specular }, { symbol: 'Lc', value: light.color }] : [])] });
+    add({
+      id: `${id}:ambient`,
+      kind: 'light-ambient',
+      lightId: id,
+      color: lightTerms.ambient,
+      ray: null,
+      factors:
+        light && material
+          ? [
+              { symbol: 'la', value: light.ambient },
+              { symbol: 'Lc', value: light.color },
+              { symbol: 'C', value: material.color },
+            ]
+          : [],
+    });
+    add({
+      id: `${id}:diffuse`,
+      kind: 'diffuse',
+      lightId: id,
+      color: partSum('diffuse'),
+      ray,
+      samples,
+      rays: progress,
+      factors: [
+        ...shared,
+        { symbol: 'N·L', value: lightTerms.NdotL },
+        ...(material && light
+          ? [
+              { symbol: 'kd', value: material.diffuse },
+              { symbol: 'ld', value: light.diffuse },
+              { symbol: 'Lc', value: light.color },
+              { symbol: 'C', value: material.color },
+            ]
+          : []),
+      ],
+    });
+    add({
+      id: `${id}:specular`,
+      kind: 'specular',
+      lightId: id,
+      color: partSum('specular'),
+      ray,
+      samples,
+      rays: progress,
+      factors: [
+        ...shared,
+        { symbol: 'R·V', value: lightTerms.RdotV },
+        ...(material && light
+          ? [
+              { symbol: 'n', value: material.shininess },
+              { symbol: 'ks', value: material.specular },
+              { symbol: 'ls', value: light.specular },
+              { symbol: 'Lc', value: light.color },
+            ]
+          : []),
+      ],
+    });
   }
   // In the tracer's order: glass traces its refracted ray first.
   for (const kind of ['refract', 'reflect'] as const) {
@@ -101,7 +164,18 @@ export function equationOf(hit: RayNode, scene: Scene, added?: (ray: RayNode) =>
     const ray = rays.find((candidate) => !candidate.absorbed) ?? null;
     // A rough surface's spread rays add weight/m² × their colour each (an absorbed one adds black).
     const color = added ? done.reduce<Color>((sum, one) => plus(sum, scaled(one.color, one.weight ?? 0)), [0, 0, 0]) : scaled(child.color, child.weight);
-    add({ id: kind, kind, lightId: null, color, ray, rays: { added: done.length, total: rays.length }, factors: [{ symbol: 'w', value: child.weight }, { symbol: 'trace', value: child.color }] });
+    add({
+      id: kind,
+      kind,
+      lightId: null,
+      color,
+      ray,
+      rays: { added: done.length, total: rays.length },
+      factors: [
+        { symbol: 'w', value: child.weight },
+        { symbol: 'trace', value: child.color },
+      ],
+    });
   }
   const complete = list.every((term) => term.rays.added === term.rays.total);
   const sum = added ? list.reduce<Color>((total, term) => plus(total, term.color), [0, 0, 0]) : terms.sum;

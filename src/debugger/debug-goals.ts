@@ -30,7 +30,9 @@ export function findTerm(program: DebugProgram, scene: Scene, kind: DebuggerTerm
   for (let index = 0; index < program.steps.length; index++) {
     const step = program.steps[index];
     if (step.kind !== 'shade' || !step.hit) continue;
-    const term = equationOf(step.hit, scene)?.terms.find((candidate) => candidate.kind === kind && candidate.ray && (lightId === null || candidate.lightId === lightId));
+    const term = equationOf(step.hit, scene)?.terms.find(
+      (candidate) => candidate.kind === kind && candidate.ray && (lightId === null || candidate.lightId === lightId),
+    );
     if (term) return { step: index, term };
   }
   return null;

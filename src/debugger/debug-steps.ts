@@ -122,7 +122,16 @@ export function debugProgram(trace: PixelTrace, scene: Scene): DebugProgram {
   };
 
   /** A ray from `parent` (a hit, or null), with `share` of the pixel per unit of its colour. */
-  const visit = (node: RayNode, parent: RayNode | null, share: number, depth: number, level: number, sample: number, line: PseudocodeLine, place: StepPlace | null) => {
+  const visit = (
+    node: RayNode,
+    parent: RayNode | null,
+    share: number,
+    depth: number,
+    level: number,
+    sample: number,
+    line: PseudocodeLine,
+    place: StepPlace | null,
+  ) => {
     const from = parent;
     if (node.absorbed) {
       // A glossy direction into the surface: not traced, it adds black.
@@ -132,11 +141,19 @@ export function debugProgram(trace: PixelTrace, scene: Scene): DebugProgram {
     const before = sum;
     push({ kind: 'cast', line, ray: node, hit: parent, from, depth, level, sample, share, place }, true);
     if (!node.hit) {
-      doneAt.set(node, push({ kind: 'return', line: 'nearest-hit', ray: node, hit: parent, from, depth, level: level + 1, sample, share, adds: times(node.color, share) }, false));
+      doneAt.set(
+        node,
+        push(
+          { kind: 'return', line: 'nearest-hit', ray: node, hit: parent, from, depth, level: level + 1, sample, share, adds: times(node.color, share) },
+          false,
+        ),
+      );
       return;
     }
     const terms = node.terms;
-    const ambient = terms ? terms.lights.reduce<Color>((total, light) => [total[0] + light.ambient[0], total[1] + light.ambient[1], total[2] + light.ambient[2]], terms.ambient) : BLACK;
+    const ambient = terms
+      ? terms.lights.reduce<Color>((total, light) => [total[0] + light.ambient[0], total[1] + light.ambient[1], total[2] + light.ambient[2]], terms.ambient)
+      : BLACK;
     const inner = level + 1;
     push({ kind: 'shade', line: 'ambient', ray: node, hit: node, from, depth, level: inner, sample, share, adds: times(ambient, share) }, false);
     const glass = isGlass(node, scene);
@@ -154,7 +171,19 @@ export function debugProgram(trace: PixelTrace, scene: Scene): DebugProgram {
       } else {
         const blocked = child.type === 'shadow' || child.type === 'area-shadow';
         const step = push(
-          { kind: 'light', line: blocked ? 'blocked' : 'lit', ray: child, hit: node, from: node, depth, level: inner, sample, share, adds: times(child.color, share), place: lightPlaces.get(child) },
+          {
+            kind: 'light',
+            line: blocked ? 'blocked' : 'lit',
+            ray: child,
+            hit: node,
+            from: node,
+            depth,
+            level: inner,
+            sample,
+            share,
+            adds: times(child.color, share),
+            place: lightPlaces.get(child),
+          },
           true,
         );
         doneAt.set(child, step);
@@ -183,10 +212,27 @@ export function debugProgram(trace: PixelTrace, scene: Scene): DebugProgram {
     const raysPerSample = root.children.length;
     lensPoints.forEach((group, lens) => {
       const level = grouped ? 2 : 1;
-      if (grouped) push({ kind: 'lens', line: 'lens-loop', ray: null, hit: null, from: null, depth: 0, level: 1, sample, share: share / lensPoints.length, place: { of: 'lens', index: lens + 1, count: lensPoints.length } }, false);
+      if (grouped)
+        push(
+          {
+            kind: 'lens',
+            line: 'lens-loop',
+            ray: null,
+            hit: null,
+            from: null,
+            depth: 0,
+            level: 1,
+            sample,
+            share: share / lensPoints.length,
+            place: { of: 'lens', index: lens + 1, count: lensPoints.length },
+          },
+          false,
+        );
       group.forEach((child, index) => {
         const place: StepPlace =
-          lensPoints.length === 1 || grouped ? { of: 'moment', index: index + 1, count: group.length } : { of: 'lens', index: lens + 1, count: lensPoints.length };
+          lensPoints.length === 1 || grouped
+            ? { of: 'moment', index: index + 1, count: group.length }
+            : { of: 'lens', index: lens + 1, count: lensPoints.length };
         visit(child, null, share * (child.weight ?? 1 / raysPerSample), 0, level, sample, 'trace-primary', place);
       });
     });

@@ -54,7 +54,13 @@ export function whyDark(ray: RayNode, scene: Scene): DarkReason[] {
   }
   if (terms.depthLimited) {
     const material = scene.objects.find((object) => object.id === ray.objectId)?.material;
-    reasons.push({ kind: 'depth-limit', maxDepth: scene.settings.maxDepth, objectId: ray.objectId, glass: material?.transparent ?? false, specular: material?.specular ?? 0 });
+    reasons.push({
+      kind: 'depth-limit',
+      maxDepth: scene.settings.maxDepth,
+      objectId: ray.objectId,
+      glass: material?.transparent ?? false,
+      specular: material?.specular ?? 0,
+    });
   }
   return reasons;
 }

@@ -4,13 +4,13 @@
  * are pure (no lit; `rt validate` prints them as they are) and word their reasons in
  * English; the learner-facing app reads each reason by its English pattern and says it
  * again through msg() (issue-translation.ts and the pattern lists it gathers). Those
- * patterns are loaded together with a translation of the app (locale.ts), so the English
- * first load does without them: in English a line is shown as the schema wrote it.
+ * patterns load after a translation of the app (locale.ts), not with the first screen: until
+ * they have, and always in English, a line is shown as the schema wrote it.
  */
 
 let translate: ((line: string) => string) | null = null;
 
-/** Loads the patterns; awaited with the catalogue of a language other than English. */
+/** Loads the patterns; asked for once a language other than English is in use. */
 export async function loadIssueTranslation(): Promise<void> {
   translate ??= (await import('./issue-translation.ts')).translateIssue;
 }

@@ -14,16 +14,16 @@ import { LazyModule } from '../util/lazy-module.ts';
  */
 
 /**
- * The Dutch messages, and the Dutch patterns for the reasons a file is refused (issue-text.ts):
- * tried a few times, then failed for good (a tab of a build that a newer one replaced,
- * offline): the app goes on in English and says so (src/ui/controls/locale-problem.ts).
+ * The Dutch messages: tried a few times, then failed for good (a tab of a build that a newer
+ * one replaced, offline): the app goes on in English and says so
+ * (src/ui/controls/locale-problem.ts).
  */
-const dutchTexts = new LazyModule(() => Promise.all([import('../locales/nl.ts'), loadIssueTranslation()]));
+const dutchTexts = new LazyModule(() => import('../locales/nl.ts'));
 
 const localization = configureLocalization({
   sourceLocale,
   targetLocales,
-  loadLocale: async () => (await dutchTexts.load())[0],
+  loadLocale: () => dutchTexts.load(),
 });
 
 /** Why the Dutch texts could not be loaded (the browser's words), or null while they could be or were not asked for. */
@@ -51,6 +51,14 @@ export async function useLocale(locale: Locale): Promise<Locale> {
   }
   document.documentElement.lang = currentLocale();
   rerenderAll(document);
+  // The reasons a refused file is said for (issue-text.ts) are rare: their patterns load after
+  // the first screen, and a reason on screen before they arrive is said again once they have.
+  if (currentLocale() !== 'en') {
+    loadIssueTranslation().then(
+      () => rerenderAll(document),
+      (error: unknown) => console.warn('The translated reasons could not be loaded; they are shown in English', error),
+    );
+  }
   return currentLocale();
 }
 

@@ -34,11 +34,15 @@ export function progressProblemText(problem: ProgressProblem, points: number): s
 export function saveProblemText(kind: SaveProblemKind): string {
   switch (kind) {
     case 'storage-full':
-      return msg("The browser's storage is full, so progress is not saved. It is kept while this page is open and saved as soon as there is room: export it (Menu) to be safe.");
+      return msg(
+        "The browser's storage is full, so progress is not saved. It is kept while this page is open and saved as soon as there is room: export it (Menu) to be safe.",
+      );
     case 'storage-blocked':
       return msg('The browser does not let the app save, so progress is not saved. It is kept while this page is open: export it to keep it.');
     case 'damaged-held':
-      return msg("A damaged save could not be copied (the browser's storage is full), so nothing is saved over it. Download it from the Menu (Damaged saves) and saving goes on; until then what is not saved is kept while this page is open.");
+      return msg(
+        "A damaged save could not be copied (the browser's storage is full), so nothing is saved over it. Download it from the Menu (Damaged saves) and saving goes on; until then what is not saved is kept while this page is open.",
+      );
   }
 }
 

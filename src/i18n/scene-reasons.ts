@@ -13,9 +13,9 @@ const JSON_PARTS: readonly Rule[] = [
   [/^a value$/, () => msg('a value')],
   [/^a field name in double quotes$/, () => msg('a field name in double quotes')],
   [/^"(.)" or "(.)"$/, (one, other) => msg(str`"${one}" or "${other}"`)],
-  [/^a closing '"' \(write a line break inside a string as \\n\)$/, () => msg('a closing \'"\' (write a line break inside a string as \\n)')],
+  [/^a closing '"' \(write a line break inside a string as \\n\)$/, () => msg("a closing '\"' (write a line break inside a string as \\n)")],
   [/^an escape such as .+$/, () => msg('an escape such as \\n, \\" or \\u00e9')],
-  [/^a closing '"'$/, () => msg('a closing \'"\'')],
+  [/^a closing '"'$/, () => msg("a closing '\"'")],
   [/^the end of the text$/, () => msg('the end of the text')],
   [/^less deeply nested lists and objects$/, () => msg('less deeply nested lists and objects')],
 ];
@@ -39,23 +39,33 @@ export const SCENE_REASONS: readonly Rule[] = [
     /^must be a text, or \{ "en": …, "nl": … \} with a text per language \(en is required; each at most (\d+) characters\)$/,
     (most) => msg(str`must be a text, or { "en": …, "nl": … } with a text per language (en is required; each at most ${most} characters)`),
   ],
-  [/^must be lower-case letters and digits joined by "-", like "([^"]*)", got (.+)$/, (example, got) => msg(str`must be lower-case letters and digits joined by "-", like "${example}", got ${value(got)}`)],
+  [
+    /^must be lower-case letters and digits joined by "-", like "([^"]*)", got (.+)$/,
+    (example, got) => msg(str`must be lower-case letters and digits joined by "-", like "${example}", got ${value(got)}`),
+  ],
   [/^must have (\d+) to (\d+) mandatory tasks, got (\d+)$/, (fewest, most, count) => msg(str`must have ${fewest} to ${most} mandatory tasks, got ${count}`)],
   [/^must be the position of a choice, 0 to (\d+)$/, (last) => msg(str`must be the position of a choice, 0 to ${last}`)],
   // Any other "must be …, got …" only when what it must be is known: half a sentence in each language reads worse than English.
-  [/^must be (.+), got (.+)$/, (kind, got) => {
-    const must = translatedOrNull(KINDS, kind);
-    return must === null ? null : msg(str`must be ${must}, got ${value(got)}`);
-  }],
+  [
+    /^must be (.+), got (.+)$/,
+    (kind, got) => {
+      const must = translatedOrNull(KINDS, kind);
+      return must === null ? null : msg(str`must be ${must}, got ${value(got)}`);
+    },
+  ],
   // Field names are JSON strings (scene-issues.ts): a looser pattern would take in English words after them.
   [/^unknown field ("(?:[^"\\]|\\.)*")$/, (name) => msg(str`unknown field ${name}`)],
   [/^unknown fields ("(?:[^"\\]|\\.)*"(?:, "(?:[^"\\]|\\.)*")*)$/, (names) => msg(str`unknown fields ${names}`)],
   [/^(".*") is used twice$/, (id) => msg(str`${id} is used twice`)],
   [/^(".*") is used more than once$/, (id) => msg(str`${id} is used more than once`)],
   [/^(".*") is used (\d+) times$/, (id, count) => msg(str`${id} is used ${count} times`)],
-  [/^makes (.+) = (\d+) primary rays per pixel, more than (\d+)$/, (sum, rays, most) => msg(str`makes ${sum} = ${rays} primary rays per pixel, more than ${most}`)],
+  [
+    /^makes (.+) = (\d+) primary rays per pixel, more than (\d+)$/,
+    (sum, rays, most) => msg(str`makes ${sum} = ${rays} primary rays per pixel, more than ${most}`),
+  ],
   [
     /^not valid JSON at line (\d+), column (\d+): expected (.+), found (.+)$/,
-    (line, column, expected, found) => msg(str`not valid JSON at line ${line}, column ${column}: expected ${translated(JSON_PARTS, expected)}, found ${translated(JSON_PARTS, found)}`),
+    (line, column, expected, found) =>
+      msg(str`not valid JSON at line ${line}, column ${column}: expected ${translated(JSON_PARTS, expected)}, found ${translated(JSON_PARTS, found)}`),
   ],
 ];

@@ -39,20 +39,40 @@ export function reduce(state: LabState, action: LabAction): Reduction {
       return next.error ? next : { state: { ...next.state, selection: { kind: 'object', id: object.id } } };
     }
     case 'object.deleted':
-      return withScene(deselect(state, action.id), { ...state.scene, objects: state.scene.objects.filter((o) => o.id !== action.id) }, objectExists(state, action.id));
+      return withScene(
+        deselect(state, action.id),
+        { ...state.scene, objects: state.scene.objects.filter((o) => o.id !== action.id) },
+        objectExists(state, action.id),
+      );
     case 'object.changed':
-      return withChange(state, mapObject(state.scene, action.id, (o) => ({ ...o, ...action.changes })), objectExists(state, action.id));
+      return withChange(
+        state,
+        mapObject(state.scene, action.id, (o) => ({ ...o, ...action.changes })),
+        objectExists(state, action.id),
+      );
     case 'material.changed':
-      return withChange(state, mapObject(state.scene, action.id, (o) => ({ ...o, material: { ...o.material, ...action.changes } })), objectExists(state, action.id));
+      return withChange(
+        state,
+        mapObject(state.scene, action.id, (o) => ({ ...o, material: { ...o.material, ...action.changes } })),
+        objectExists(state, action.id),
+      );
     case 'light.added': {
       const light = createLight(action.lightType, state.scene);
       const next = withScene(state, { ...state.scene, lights: [...state.scene.lights, light] });
       return next.error ? next : { state: { ...next.state, selection: { kind: 'light', id: light.id } } };
     }
     case 'light.deleted':
-      return withScene(deselect(state, action.id), { ...state.scene, lights: state.scene.lights.filter((l) => l.id !== action.id) }, lightExists(state, action.id));
+      return withScene(
+        deselect(state, action.id),
+        { ...state.scene, lights: state.scene.lights.filter((l) => l.id !== action.id) },
+        lightExists(state, action.id),
+      );
     case 'light.changed':
-      return withChange(state, { ...state.scene, lights: state.scene.lights.map((l) => (l.id === action.id ? changeLight(l, action.changes) : l)) }, lightExists(state, action.id));
+      return withChange(
+        state,
+        { ...state.scene, lights: state.scene.lights.map((l) => (l.id === action.id ? changeLight(l, action.changes) : l)) },
+        lightExists(state, action.id),
+      );
     case 'camera.changed':
       return withChange(state, { ...state.scene, camera: { ...state.scene.camera, ...action.changes } });
     case 'settings.changed':

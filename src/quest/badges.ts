@@ -24,7 +24,7 @@ export const badgeSchema = z.discriminatedUnion('kind', [
 
 export type Badge = z.output<typeof badgeSchema>;
 
-export const earnedBadgeSchema = z.strictObject({ badge: badgeSchema, t: z.number().min(0).describe('When, on the event log\'s clock.') });
+export const earnedBadgeSchema = z.strictObject({ badge: badgeSchema, t: z.number().min(0).describe("When, on the event log's clock.") });
 export type EarnedBadge = z.output<typeof earnedBadgeSchema>;
 
 /** Badges are earned once: two are the same when they are of the same kind for the same thing. */

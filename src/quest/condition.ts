@@ -83,7 +83,11 @@ export const conditionSchema = z.json().superRefine((condition, context) => {
   const keys = Object.keys(condition);
   const ops = keys.filter(isComparison);
   if (ops.length > 0 && ops.length < keys.length) {
-    context.addIssue({ code: 'custom', input: condition, message: `mixes comparisons (${ops.join(', ')}) with fields (${keys.filter((key) => !isComparison(key)).join(', ')})` });
+    context.addIssue({
+      code: 'custom',
+      input: condition,
+      message: `mixes comparisons (${ops.join(', ')}) with fields (${keys.filter((key) => !isComparison(key)).join(', ')})`,
+    });
   }
   for (const op of ops) {
     const problem = problemWithComparison(op, condition[op]);

@@ -19,15 +19,29 @@ const direction = z
 
 export const declaredViewSchema = z
   .strictObject({
-    frame: z.array(z.string().min(1)).min(1).max(12).optional().describe('What the 3D view fits: object or light ids, "camera", "pixel-rays", "rays:<column>,<row>".'),
+    frame: z
+      .array(z.string().min(1))
+      .min(1)
+      .max(12)
+      .optional()
+      .describe('What the 3D view fits: object or light ids, "camera", "pixel-rays", "rays:<column>,<row>".'),
     from: direction.optional().describe('The side the 3D view looks from, as a world direction towards what it frames.'),
     throughCamera: z.boolean().optional().describe('Look through the ray tracer\'s camera, as "Camera view" does.'),
-    pixel: z.tuple([z.int().min(0), z.int().min(0)]).nullable().optional().describe('The pixel to choose [column, row], or null for none.'),
-    rays: optionChanges(DEFAULT_RAY_VIEW).optional().describe('Ray options to set (the ray panel\'s), the rest unchanged.'),
+    pixel: z
+      .tuple([z.int().min(0), z.int().min(0)])
+      .nullable()
+      .optional()
+      .describe('The pixel to choose [column, row], or null for none.'),
+    rays: optionChanges(DEFAULT_RAY_VIEW).optional().describe("Ray options to set (the ray panel's), the rest unchanged."),
   })
   .superRefine((view, context) => {
     if (view.throughCamera && view.frame) {
-      context.addIssue({ code: 'custom', path: ['throughCamera'], input: view.throughCamera, message: 'a view either frames things or looks through the camera, not both' });
+      context.addIssue({
+        code: 'custom',
+        path: ['throughCamera'],
+        input: view.throughCamera,
+        message: 'a view either frames things or looks through the camera, not both',
+      });
     }
     if (view.from && !view.frame) context.addIssue({ code: 'custom', path: ['from'], input: view.from, message: '"from" needs a "frame" to look at' });
   });

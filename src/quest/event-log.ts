@@ -102,15 +102,13 @@ export type LoggedEvent = z.output<typeof loggedEventSchema>;
 /** An event before it is stamped with its time and id. */
 export type QuestEvent = LoggedEvent extends infer Event ? (Event extends LoggedEvent ? Omit<Event, 't' | 'id'> : never) : never;
 
-export const eventLogSchema = z
-  .strictObject({ startedAt: z.iso.datetime(), events: z.array(loggedEventSchema) })
-  .superRefine((log, context) => {
-    log.events.forEach((event, index) => {
-      if (index > 0 && event.t < log.events[index - 1].t) {
-        context.addIssue({ code: 'custom', path: ['events', index, 't'], input: event.t, message: 'must not be earlier than the event before it' });
-      }
-    });
+export const eventLogSchema = z.strictObject({ startedAt: z.iso.datetime(), events: z.array(loggedEventSchema) }).superRefine((log, context) => {
+  log.events.forEach((event, index) => {
+    if (index > 0 && event.t < log.events[index - 1].t) {
+      context.addIssue({ code: 'custom', path: ['events', index, 't'], input: event.t, message: 'must not be earlier than the event before it' });
+    }
   });
+});
 
 export type EventLogData = z.output<typeof eventLogSchema>;
 

@@ -173,7 +173,12 @@ const eventGoalSchema = z
   })
   .superRefine((goal, context) => {
     if (goal.event === APP_ONLY_ACTION) {
-      context.addIssue({ code: 'custom', path: ['event'], input: goal.event, message: 'a level\'s own view is applied by the app, not done by the learner: no goal can wait for it' });
+      context.addIssue({
+        code: 'custom',
+        path: ['event'],
+        input: goal.event,
+        message: "a level's own view is applied by the app, not done by the learner: no goal can wait for it",
+      });
     }
     // `with` looks into the action, so its paths must start at one of that action's fields.
     const fields = actionFields(goal.event);
@@ -196,49 +201,66 @@ const stateGoalSchema = z
   })
   .transform((goal) => ({ kind: 'state' as const, ...goal }));
 
-const quizGoalSchema = z.strictObject({
-  quiz: z
-    .strictObject({
-      question: localizedTextSchema,
-      choices: z.array(localizedTextSchema).min(2).max(6),
-      answer: wholeNumberIn([0, 5]).describe('The position of the right choice, counting from 0.'),
-      explanation: localizedTextSchema.optional().describe('Shown once the learner has observed the result: why the answer is what it is.'),
-    })
-    .superRefine((quiz, context) => {
-      if (quiz.answer >= quiz.choices.length) {
-        context.addIssue({ code: 'custom', path: ['answer'], input: quiz.answer, message: `must be the position of a choice, 0 to ${quiz.choices.length - 1}` });
-      }
-    }),
-}).transform((goal) => ({ kind: 'quiz' as const, ...goal }));
+const quizGoalSchema = z
+  .strictObject({
+    quiz: z
+      .strictObject({
+        question: localizedTextSchema,
+        choices: z.array(localizedTextSchema).min(2).max(6),
+        answer: wholeNumberIn([0, 5]).describe('The position of the right choice, counting from 0.'),
+        explanation: localizedTextSchema.optional().describe('Shown once the learner has observed the result: why the answer is what it is.'),
+      })
+      .superRefine((quiz, context) => {
+        if (quiz.answer >= quiz.choices.length) {
+          context.addIssue({
+            code: 'custom',
+            path: ['answer'],
+            input: quiz.answer,
+            message: `must be the position of a choice, 0 to ${quiz.choices.length - 1}`,
+          });
+        }
+      }),
+  })
+  .transform((goal) => ({ kind: 'quiz' as const, ...goal }));
 
-const estimateGoalSchema = z.strictObject({
-  estimate: z
-    .strictObject({
+const estimateGoalSchema = z
+  .strictObject({
+    estimate: z.strictObject({
       question: localizedTextSchema,
       answer: z.number().describe('The right value.'),
       tolerance: z.number().min(0).describe('How far from the answer a prediction may be and still be right.'),
       unit: localizedTextSchema.optional().describe('Shown after the number box, e.g. "m" or "%".'),
       explanation: localizedTextSchema.optional().describe('Shown once the learner has observed the result: why the value is what it is.'),
     }),
-}).transform((goal) => ({ kind: 'estimate' as const, ...goal }));
+  })
+  .transform((goal) => ({ kind: 'estimate' as const, ...goal }));
 
-const pictureGoalSchema = z.strictObject({
-  picture: z
-    .strictObject({
-      question: localizedTextSchema,
-      choices: z
-        .array(z.strictObject({ actions: z.array(labActionSchema).min(1).max(10).describe('The changes to the level\'s starting scene that make this picture.') }))
-        .min(2)
-        .max(4),
-      answer: wholeNumberIn([0, 3]).describe('The position of the right picture, counting from 0.'),
-      explanation: localizedTextSchema.optional().describe('Shown once the learner has observed the result: why the picture is what it is.'),
-    })
-    .superRefine((picture, context) => {
-      if (picture.answer >= picture.choices.length) {
-        context.addIssue({ code: 'custom', path: ['answer'], input: picture.answer, message: `must be the position of a choice, 0 to ${picture.choices.length - 1}` });
-      }
-    }),
-}).transform((goal) => ({ kind: 'picture' as const, ...goal }));
+const pictureGoalSchema = z
+  .strictObject({
+    picture: z
+      .strictObject({
+        question: localizedTextSchema,
+        choices: z
+          .array(
+            z.strictObject({ actions: z.array(labActionSchema).min(1).max(10).describe("The changes to the level's starting scene that make this picture.") }),
+          )
+          .min(2)
+          .max(4),
+        answer: wholeNumberIn([0, 3]).describe('The position of the right picture, counting from 0.'),
+        explanation: localizedTextSchema.optional().describe('Shown once the learner has observed the result: why the picture is what it is.'),
+      })
+      .superRefine((picture, context) => {
+        if (picture.answer >= picture.choices.length) {
+          context.addIssue({
+            code: 'custom',
+            path: ['answer'],
+            input: picture.answer,
+            message: `must be the position of a choice, 0 to ${picture.choices.length - 1}`,
+          });
+        }
+      }),
+  })
+  .transform((goal) => ({ kind: 'picture' as const, ...goal }));
 
 const infoGoalSchema = z.strictObject({ info: z.literal(true) }).transform((): InfoGoal => ({ kind: 'info' }));
 

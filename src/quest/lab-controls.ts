@@ -8,7 +8,18 @@
 
 /** The panels a level chooses from in `ui.panels`. */
 export const UI_PANELS = [
-  'scene-list', 'object', 'light', 'tracer', 'rays', 'gizmo', 'screen-preview', 'render', 'add-remove', 'file', 'bvh', 'debugger',
+  'scene-list',
+  'object',
+  'light',
+  'tracer',
+  'rays',
+  'gizmo',
+  'screen-preview',
+  'render',
+  'add-remove',
+  'file',
+  'bvh',
+  'debugger',
 ] as const;
 export type UiPanel = (typeof UI_PANELS)[number];
 
@@ -21,22 +32,54 @@ export const LAB_CONTROLS = {
   view: ['canvas', 'orbit-buttons', 'pan-buttons', 'zoom-buttons', 'fly-to-camera', 'show-pixel-rays', 'help'],
   screen: ['grid'],
   'scene-list': ['objects', 'lights'],
-  object: [
-    'color', 'ambient', 'diffuse', 'specular', 'shininess', 'transparent', 'refractive-index', 'presets',
-    'roughness', 'glossy-samples', 'velocity',
-  ],
+  object: ['color', 'ambient', 'diffuse', 'specular', 'shininess', 'transparent', 'refractive-index', 'presets', 'roughness', 'glossy-samples', 'velocity'],
   light: [
-    'type', 'color', 'intensity', 'ambient', 'diffuse', 'specular', 'distance-attenuation',
-    'spot-angle', 'angle-attenuation', 'samples', 'size', 'shape',
+    'type',
+    'color',
+    'intensity',
+    'ambient',
+    'diffuse',
+    'specular',
+    'distance-attenuation',
+    'spot-angle',
+    'angle-attenuation',
+    'samples',
+    'size',
+    'shape',
   ],
   tracer: [
-    'shadows', 'max-depth', 'background', 'supersampling', 'sample-pattern', 'show-sample-points',
-    'pixels', 'fov', 'light-types', 'dithering', 'encoding',
-    'aperture', 'focus-distance', 'focus-on-selected', 'lens-samples', 'time-samples', 'time-pattern',
+    'shadows',
+    'max-depth',
+    'background',
+    'supersampling',
+    'sample-pattern',
+    'show-sample-points',
+    'pixels',
+    'fov',
+    'light-types',
+    'dithering',
+    'encoding',
+    'aperture',
+    'focus-distance',
+    'focus-on-selected',
+    'lens-samples',
+    'time-samples',
+    'time-pattern',
   ],
   rays: [
-    'show', 'hide-no-hit', 'hide-negligible', 'negligible-threshold', 'transparency', 'radius',
-    'dynamic-radius', 'min-radius', 'max-radius', 'contribution-color', 'color-blind', 'animate', 'legend',
+    'show',
+    'hide-no-hit',
+    'hide-negligible',
+    'negligible-threshold',
+    'transparency',
+    'radius',
+    'dynamic-radius',
+    'min-radius',
+    'max-radius',
+    'contribution-color',
+    'color-blind',
+    'animate',
+    'legend',
     'color-by-time',
   ],
   gizmo: ['translate', 'rotate', 'scale', 'space', 'snap'],
@@ -64,9 +107,7 @@ export function guideIds(...targets: ControlTarget[]): string {
   return targets.join(' ');
 }
 
-export const CONTROL_TARGETS = PANELS.flatMap((panel) =>
-  LAB_CONTROLS[panel].map((control) => `${panel}.${control}` as ControlTarget),
-);
+export const CONTROL_TARGETS = PANELS.flatMap((panel) => LAB_CONTROLS[panel].map((control) => `${panel}.${control}` as ControlTarget));
 
 /**
  * Targets that point at one thing in the scene rather than at a control:

@@ -57,16 +57,19 @@ export const levelIndexSchema = z
     });
     // Ideas and presets name levels the chapters list: a renamed or removed level must not leave them behind.
     const listed = (id: string, path: (string | number)[]) => {
-      if (!index.chapters.some((chapter) => chapter.levels.includes(id))) context.addIssue({ code: 'custom', path, input: id, message: `"${id}" is not a level of any chapter` });
+      if (!index.chapters.some((chapter) => chapter.levels.includes(id)))
+        context.addIssue({ code: 'custom', path, input: id, message: `"${id}" is not a level of any chapter` });
     };
     for (const id of Object.keys(index.ideas)) listed(id, ['ideas', id]);
     const presetIds = new Set<string>();
     index.presets.forEach((preset, p) => {
-      if (presetIds.has(preset.id)) context.addIssue({ code: 'custom', path: ['presets', p, 'id'], input: preset.id, message: `"${preset.id}" is used more than once` });
+      if (presetIds.has(preset.id))
+        context.addIssue({ code: 'custom', path: ['presets', p, 'id'], input: preset.id, message: `"${preset.id}" is used more than once` });
       presetIds.add(preset.id);
       preset.levels.forEach((id, l) => {
         listed(id, ['presets', p, 'levels', l]);
-        if (preset.levels.indexOf(id) !== l) context.addIssue({ code: 'custom', path: ['presets', p, 'levels', l], input: id, message: `"${id}" is used more than once` });
+        if (preset.levels.indexOf(id) !== l)
+          context.addIssue({ code: 'custom', path: ['presets', p, 'levels', l], input: id, message: `"${id}" is used more than once` });
       });
     });
   });

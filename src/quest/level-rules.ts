@@ -29,8 +29,16 @@ interface Problem {
 export function levelRules(level: Level): string[] {
   const sample = sampleState(level.scene);
   const problems = [
-    ...listedOnce(level.tasks.map((task) => task.id), ['tasks'], 'id'),
-    ...listedOnce(level.badges.map((badge) => badge.id), ['badges'], 'id'),
+    ...listedOnce(
+      level.tasks.map((task) => task.id),
+      ['tasks'],
+      'id',
+    ),
+    ...listedOnce(
+      level.badges.map((badge) => badge.id),
+      ['badges'],
+      'id',
+    ),
     ...listedOnce(level.ui.panels, ['ui', 'panels']),
     ...mandatoryCount(level),
     ...level.tasks.flatMap((_, index) => taskProblems(level, index, sample)),
@@ -74,7 +82,10 @@ function taskProblems(level: Level, index: number, sample: LabState): Problem[] 
       if (action.type === APP_ONLY_ACTION) problems.push({ path: at('solution', step), message: 'a view is the task\'s "view", not a step of its solution' });
     });
   } else if (task.solution) {
-    problems.push({ path: at('solution'), message: `a ${kind} task has no solution: ${kind === 'quiz' ? 'its answer is in its goal' : 'it is done with Next'}` });
+    problems.push({
+      path: at('solution'),
+      message: `a ${kind} task has no solution: ${kind === 'quiz' ? 'its answer is in its goal' : 'it is done with Next'}`,
+    });
   }
   if (kind === 'info' && !task.mandatory) problems.push({ path: at('mandatory'), message: 'an info step is read on the way: it must be mandatory' });
 
@@ -156,7 +167,10 @@ function pixelPickingProblems(level: Level): Problem[] {
   });
   const picksPixels = level.tasks.some((task) => task.solution?.some((action) => action.type === 'pixel.selected'));
   if (picksPixels && !level.ui.panels.includes('screen-preview')) {
-    problems.push({ path: ['ui', 'panels'], message: 'must include "screen-preview": a task picks a pixel, and the flat preview is where one is picked exactly' });
+    problems.push({
+      path: ['ui', 'panels'],
+      message: 'must include "screen-preview": a task picks a pixel, and the flat preview is where one is picked exactly',
+    });
   }
   return problems;
 }

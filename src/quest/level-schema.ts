@@ -32,7 +32,8 @@ const BADGES_MAX = 20;
 export const TASK_POINTS: readonly [number, number] = [0, 100];
 
 const guideTargetSchema = z.custom<GuideTarget>((value) => typeof value === 'string' && isGuideTarget(value), {
-  error: (issue) => `must be a control like "tracer.supersampling" or an item like "view.item:ball" (docs/levels.md lists them), got ${describeValue(issue.input)}`,
+  error: (issue) =>
+    `must be a control like "tracer.supersampling" or an item like "view.item:ball" (docs/levels.md lists them), got ${describeValue(issue.input)}`,
 });
 
 const figureSchema = z.strictObject({
@@ -83,7 +84,12 @@ const uiSchema = z
       }
       controls.forEach((control, index) => {
         if (!known.includes(control)) {
-          context.addIssue({ code: 'custom', path: ['controls', panel, index], input: control, message: `must be one of ${known.join(', ')}, got ${describeValue(control)}` });
+          context.addIssue({
+            code: 'custom',
+            path: ['controls', panel, index],
+            input: control,
+            message: `must be one of ${known.join(', ')}, got ${describeValue(control)}`,
+          });
         }
       });
     }
@@ -104,7 +110,7 @@ export const levelSchema = z.strictObject({
   intro: z.strictObject({ text: localizedTextSchema, more: localizedTextSchema.optional() }),
   scene: sceneSchema,
   ui: uiSchema.prefault({}),
-  view: declaredViewSchema.optional().describe('What the lab shows when the level opens (a task\'s own view comes on top).'),
+  view: declaredViewSchema.optional().describe("What the lab shows when the level opens (a task's own view comes on top)."),
   tasks: listOf(taskSchema, [MANDATORY_TASKS[0], TASKS_MAX]),
   badges: listOf(levelBadgeSchema, [0, BADGES_MAX]).default([]),
 });

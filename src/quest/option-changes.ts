@@ -20,4 +20,3 @@ function optionProblems(defaults: object, value: unknown): string[] {
     return typeof given === expected ? [] : [`${field} must be a ${expected}, got ${describeValue(given)}`];
   });
 }
-

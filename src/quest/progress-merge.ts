@@ -95,7 +95,11 @@ function mergeBadges(ours: EarnedBadge[], theirs: EarnedBadge[]): EarnedBadge[] 
   return merged.sort((a, b) => a.t - b.t);
 }
 
-function mergeLevels(ours: Record<string, LevelProgress>, theirs: Record<string, LevelProgress>, events: readonly LoggedEvent[]): Record<string, LevelProgress> {
+function mergeLevels(
+  ours: Record<string, LevelProgress>,
+  theirs: Record<string, LevelProgress>,
+  events: readonly LoggedEvent[],
+): Record<string, LevelProgress> {
   const hintsInLog = new Map<string, number>();
   for (const event of events) if (event.type === 'hint.shown') hintsInLog.set(event.level, (hintsInLog.get(event.level) ?? 0) + 1);
   const merged: Record<string, LevelProgress> = {};

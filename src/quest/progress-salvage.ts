@@ -102,7 +102,9 @@ function fixFor(draft: Record<string, unknown>, issue: Issue, nowIso: string): F
     case 'epoch':
       return { at: [top], kind: 'drop', note: 'left out' };
     case 'badges':
-      return typeof second === 'number' ? { at: [top, second], kind: 'drop', note: 'left out' } : { at: [top], kind: 'set', value: [], note: 'badges left out' };
+      return typeof second === 'number'
+        ? { at: [top, second], kind: 'drop', note: 'left out' }
+        : { at: [top], kind: 'set', value: [], note: 'badges left out' };
     case 'levels':
       return levelFix(draft, path);
     case 'log':

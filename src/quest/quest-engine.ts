@@ -53,7 +53,6 @@ export interface QuestEngineOptions {
  * required and not done; `waiting` a required task after the current one. */
 export type TaskStatus = 'current' | 'open' | 'waiting' | HowCompleted;
 
-
 export interface PredictionView {
   stage: PredictionStage;
   /** A quiz's choices in the order this learner sees them (file positions); empty for a number. */
@@ -195,7 +194,13 @@ export class QuestEngine {
   get points(): number {
     const active = this.active;
     const record = active && this.levelProgress[active.level.id];
-    const waiting = !active || !record ? 0 : active.level.tasks.reduce((sum, task) => sum + (predictionOf(task.goal) && this.stageOf(active, task) === 'wait' ? (record.tasks[task.id]?.points ?? 0) : 0), 0);
+    const waiting =
+      !active || !record
+        ? 0
+        : active.level.tasks.reduce(
+            (sum, task) => sum + (predictionOf(task.goal) && this.stageOf(active, task) === 'wait' ? (record.tasks[task.id]?.points ?? 0) : 0),
+            0,
+          );
     return pointsOf(this.progress) - waiting;
   }
 
@@ -617,7 +622,9 @@ export class QuestEngine {
   /** For a task to do that checks a prediction still waiting for it: the quiz and the prediction. */
   private checksOf(active: ActiveLevel, task: Task): TaskView['checks'] {
     if (kindOfGoal(task.goal) !== 'do' || isCompleted(this.levelProgress[active.level.id], task.id)) return undefined;
-    const quiz = active.level.tasks.find((candidate) => predictionOf(candidate.goal) && this.stageOf(active, candidate) === 'wait' && this.observerOf(active, candidate) === task);
+    const quiz = active.level.tasks.find(
+      (candidate) => predictionOf(candidate.goal) && this.stageOf(active, candidate) === 'wait' && this.observerOf(active, candidate) === task,
+    );
     const prediction = quiz && this.predictionIn(active.level.id, quiz.id);
     const order = quiz && this.predictionView(active, quiz)?.order;
     return quiz && prediction && order ? { quiz, prediction, order } : undefined;

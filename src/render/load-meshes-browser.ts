@@ -8,9 +8,10 @@ import { parseObj } from '../scene/obj-parser.ts';
  * data: URL) and gives us its URL, so a model is only downloaded when a scene needs it.
  */
 const MODEL_URLS: ReadonlyMap<string, string> = new Map(
-  Object.entries(import.meta.glob<string>('../../assets/models/*.obj', { query: '?url', import: 'default', eager: true })).map(
-    ([path, url]) => [path.slice(path.lastIndexOf('/') + 1, -'.obj'.length), url],
-  ),
+  Object.entries(import.meta.glob<string>('../../assets/models/*.obj', { query: '?url', import: 'default', eager: true })).map(([path, url]) => [
+    path.slice(path.lastIndexOf('/') + 1, -'.obj'.length),
+    url,
+  ]),
 );
 
 /** One download and parse per model for the page's lifetime; a failed one is retried next time. */

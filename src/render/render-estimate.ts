@@ -45,9 +45,7 @@ export interface RenderEstimate {
 /** Shadow rays per hit: one per point or spot light, n² per n×n area light (counted even with
  *  shadows off: the light is still sampled n² times). */
 export function shadowRaysPerHit({ lights, settings }: Scene): number {
-  return lights
-    .filter((light) => settings.lightTypes[light.type])
-    .reduce((rays, light) => rays + (light.type === 'area' ? light.samples ** 2 : 1), 0);
+  return lights.filter((light) => settings.lightTypes[light.type]).reduce((rays, light) => rays + (light.type === 'area' ? light.samples ** 2 : 1), 0);
 }
 
 /** Rays one sample (one primary ray and its tree) costs. */

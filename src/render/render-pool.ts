@@ -292,7 +292,8 @@ export class RenderPool {
       heardAt: performance.now(),
       port: this.createWorker({
         onResponse: (data) => this.onMessage(worker, data),
-        onFailure: (message, kind) => (kind === 'not-started' ? this.notStarted(worker, message) : this.replaceWorker(worker, `a render worker stopped: ${message}`)),
+        onFailure: (message, kind) =>
+          kind === 'not-started' ? this.notStarted(worker, message) : this.replaceWorker(worker, `a render worker stopped: ${message}`),
       }),
     };
     return worker;

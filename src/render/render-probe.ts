@@ -16,7 +16,15 @@
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import type { Scene } from '../scene/scene.ts';
 import { measuredEstimate, type SampleCost } from './measured-estimate.ts';
-import { estimateRender, HEAVY_RENDER_SECONDS, modelEstimate, primaryRaysPerSample, RAYS_PER_SECOND_PER_WORKER, raysPerSample, type EstimateRender } from './render-estimate.ts';
+import {
+  estimateRender,
+  HEAVY_RENDER_SECONDS,
+  modelEstimate,
+  primaryRaysPerSample,
+  RAYS_PER_SECOND_PER_WORKER,
+  raysPerSample,
+  type EstimateRender,
+} from './render-estimate.ts';
 import type { RenderPool } from './render-pool.ts';
 import type { EstimateCalibration } from './estimate-calibration.ts';
 import { raysOf } from './render-work.ts';
@@ -64,7 +72,14 @@ export function probeSize(scene: Scene, width: number, height: number, workers: 
  * on, or the last round when none was steady; null when it was cancelled (another render
  * started on the pool) or `signal` aborted it, which stops it before its next round.
  */
-export async function probeSampleCost(pool: RenderPool, scene: Scene, meshes: MeshLibrary, width: number, height: number, signal?: AbortSignal): Promise<SampleCost | null> {
+export async function probeSampleCost(
+  pool: RenderPool,
+  scene: Scene,
+  meshes: MeshLibrary,
+  width: number,
+  height: number,
+  signal?: AbortSignal,
+): Promise<SampleCost | null> {
   const [probeWidth, probeHeight] = probeSize(scene, width, height, pool.size);
   const rounds: SampleCost[] = [];
   /** Where the steady rounds begin, once two in a row took about as long. */
@@ -85,7 +100,11 @@ export async function probeSampleCost(pool: RenderPool, scene: Scene, meshes: Me
 }
 
 function sum(rounds: SampleCost[]): SampleCost {
-  return rounds.reduce((total, round) => ({ samples: total.samples + round.samples, rays: total.rays + round.rays, ms: total.ms + round.ms }), { samples: 0, rays: 0, ms: 0 });
+  return rounds.reduce((total, round) => ({ samples: total.samples + round.samples, rays: total.rays + round.rays, ms: total.ms + round.ms }), {
+    samples: 0,
+    rays: 0,
+    ms: 0,
+  });
 }
 
 export interface EstimateHereOptions {

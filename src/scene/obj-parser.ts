@@ -131,7 +131,9 @@ function shareVertices(positions: number[], normals: number[] | null, corners: n
       firstVertexAt[p] = vertex;
       outPositions.push(positions[3 * p], positions[3 * p + 1], positions[3 * p + 2]);
       if (normals) {
-        const x = normals[3 * n], y = normals[3 * n + 1], z = normals[3 * n + 2];
+        const x = normals[3 * n],
+          y = normals[3 * n + 1],
+          z = normals[3 * n + 2];
         const length = Math.hypot(x, y, z);
         outNormals.push(x / length, y / length, z / length);
       }

@@ -31,9 +31,7 @@ export const alsoWhenFieldsFail = { when: (payload: z.core.ParsePayload) => isRe
 
 /** The view direction is target − position; the same point gives no direction at all. */
 export const cameraHasDirection: Rule = (camera) =>
-  isSamePoint(camera.position, camera.target)
-    ? [{ path: ['target'], input: camera.target, message: 'must differ from camera.position' }]
-    : [];
+  isSamePoint(camera.position, camera.target) ? [{ path: ['target'], input: camera.target, message: 'must differ from camera.position' }] : [];
 
 /** `mesh` names the model of a `shape: "mesh"` object and means nothing on any other. */
 export const meshOnlyOnMeshes: Rule = (object) => {
@@ -86,10 +84,13 @@ export const primaryRaysWithinLimit: Rule = (scene) => {
   if (rays <= most) return [];
   const path = k > 1 ? ['settings', 'timeSamples'] : n > 1 ? ['camera', 'lensSamples'] : ['settings', 'supersampling'];
   const input = k > 1 ? k : n > 1 ? n : s;
-  return [{
-    path, input,
-    message: `makes supersampling² · lensSamples² · timeSamples = ${s}² · ${n}² · ${k} = ${rays} primary rays per pixel, more than ${most}`,
-  }];
+  return [
+    {
+      path,
+      input,
+      message: `makes supersampling² · lensSamples² · timeSamples = ${s}² · ${n}² · ${k} = ${rays} primary rays per pixel, more than ${most}`,
+    },
+  ];
 };
 
 /**

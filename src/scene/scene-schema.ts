@@ -33,19 +33,13 @@ const cameraSchema = z
     position: coordinates().default([0, 1, 5]),
     target: coordinates().default([0, 0.5, 0]).describe('The point the camera looks at; up is +Y.'),
     fov: numberIn(LIMITS.fov).default(45).describe('Vertical field of view in degrees.'),
-    pixels: pair(wholeNumberIn(LIMITS.pixels), 'whole numbers')
-      .default([8, 6])
-      .describe('Columns and rows of the small screen whose rays are drawn in 3D.'),
-    screenDistance: numberIn(LIMITS.screenDistance)
-      .default(1)
-      .describe('Metres from the eye to the drawn screen (drawing only).'),
+    pixels: pair(wholeNumberIn(LIMITS.pixels), 'whole numbers').default([8, 6]).describe('Columns and rows of the small screen whose rays are drawn in 3D.'),
+    screenDistance: numberIn(LIMITS.screenDistance).default(1).describe('Metres from the eye to the drawn screen (drawing only).'),
     aperture: numberIn(LIMITS.aperture).default(0).describe('Lens radius in metres; 0 is a pinhole (everything sharp).'),
     focusDistance: numberIn(LIMITS.focusDistance)
       .optional()
       .describe('Metres to the plane in focus, along the view direction; left out: the distance to target.'),
-    lensSamples: wholeNumberIn(LIMITS.lensSamples)
-      .default(1)
-      .describe('n: n×n points on the lens per pixel sample (ignored while aperture is 0).'),
+    lensSamples: wholeNumberIn(LIMITS.lensSamples).default(1).describe('n: n×n points on the lens per pixel sample (ignored while aperture is 0).'),
   })
   .superRefine(asRefinement(cameraHasDirection), alsoWhenFieldsFail)
   .describe('The ray tracer camera and its small screen of visualized pixels.');
@@ -53,15 +47,11 @@ const cameraSchema = z
 const settingsSchema = z
   .strictObject({
     shadows: z.boolean().default(true),
-    maxDepth: wholeNumberIn(LIMITS.maxDepth)
-      .default(3)
-      .describe('Deepest reflection/refraction bounce; primary rays are depth 0.'),
+    maxDepth: wholeNumberIn(LIMITS.maxDepth).default(3).describe('Deepest reflection/refraction bounce; primary rays are depth 0.'),
     background: color().default([0.7, 0.7, 0.7]).describe('The colour of a ray that hits nothing.'),
     supersampling: wholeNumberIn(LIMITS.supersampling).default(1).describe('s: s×s samples per pixel.'),
     samplePattern: z.enum(['grid', 'jittered', 'random']).default('grid'),
-    imageSize: pair(wholeNumberIn(LIMITS.imageSize), 'whole numbers')
-      .default([512, 384])
-      .describe('Width and height of the full rendered image.'),
+    imageSize: pair(wholeNumberIn(LIMITS.imageSize), 'whole numbers').default([512, 384]).describe('Width and height of the full rendered image.'),
     dithering: z.boolean().default(false).describe('Ordered dithering before 8-bit quantization.'),
     encoding: z
       .enum(['none', 'linear', 'srgb'])
@@ -88,15 +78,11 @@ const materialSchema = z
     color: color().default([1, 1, 1]),
     ambient: coefficient().default(0.2),
     diffuse: coefficient().default(1),
-    specular: coefficient()
-      .default(0)
-      .describe('Highlight strength, and for an opaque object also how much it mirrors.'),
+    specular: coefficient().default(0).describe('Highlight strength, and for an opaque object also how much it mirrors.'),
     shininess: numberIn(LIMITS.shininess).default(32).describe('Phong exponent n: higher is a smaller highlight.'),
     transparent: z.boolean().default(false),
     refractiveIndex: numberIn(LIMITS.refractiveIndex).default(1.5).describe('η, used when transparent.'),
-    roughness: numberIn(LIMITS.roughness)
-      .default(0)
-      .describe('Spread of reflected (and refracted) rays; 0 is a perfect mirror or clear glass.'),
+    roughness: numberIn(LIMITS.roughness).default(0).describe('Spread of reflected (and refracted) rays; 0 is a perfect mirror or clear glass.'),
     glossySamples: wholeNumberIn(LIMITS.glossySamples).default(3).describe('m: m×m reflected (refracted) rays per hit when roughness > 0.'),
   })
   .describe('Phong material (spec §2).');
@@ -110,9 +96,7 @@ export const sceneObjectSchema = z
     position: coordinates().default([0, 0, 0]),
     rotation: coordinates().default([0, 0, 0]).describe('Euler angles XYZ in degrees.'),
     scale: triple(numberIn(LIMITS.scale), 'positive numbers').default([1, 1, 1]),
-    velocity: triple(numberIn(LIMITS.velocity), 'numbers')
-      .default([0, 0, 0])
-      .describe('Metres the object moves while the shutter is open (motion blur).'),
+    velocity: triple(numberIn(LIMITS.velocity), 'numbers').default([0, 0, 0]).describe('Metres the object moves while the shutter is open (motion blur).'),
     material: materialSchema.prefault({}),
   })
   .superRefine(asRefinement(meshOnlyOnMeshes), alsoWhenFieldsFail)

@@ -50,7 +50,10 @@ export class CameraRays {
 
   /** The lens point of unit-disc point (u, v): eye + aperture·(u·right + v·up). */
   lensPoint(u: number, v: number, out: Vector3): Vector3 {
-    return out.copy(this.eye).addScaledVector(this.right, this.aperture * u).addScaledVector(this.up, this.aperture * v);
+    return out
+      .copy(this.eye)
+      .addScaledVector(this.right, this.aperture * u)
+      .addScaledVector(this.up, this.aperture * v);
   }
 
   /** The side of one pixel of an image `height` pixels high, at distance 1 in front of the eye. */
@@ -66,10 +69,6 @@ export class CameraRays {
     const aspect = width / height;
     const sx = ((px / width) * 2 - 1) * this.tanHalfFov * aspect;
     const sy = (1 - (py / height) * 2) * this.tanHalfFov;
-    return out
-      .copy(this.forward)
-      .addScaledVector(this.right, sx)
-      .addScaledVector(this.up, sy)
-      .normalize();
+    return out.copy(this.forward).addScaledVector(this.right, sx).addScaledVector(this.up, sy).normalize();
   }
 }

@@ -22,7 +22,11 @@ export function refract(d: Vector3, n: Vector3, eta: number, out: Vector3): bool
   const cosI = -d.dot(n);
   const k = 1 - eta * eta * (1 - cosI * cosI);
   if (k < 0) return false;
-  out.copy(d).multiplyScalar(eta).addScaledVector(n, eta * cosI - Math.sqrt(k)).normalize();
+  out
+    .copy(d)
+    .multiplyScalar(eta)
+    .addScaledVector(n, eta * cosI - Math.sqrt(k))
+    .normalize();
   return true;
 }
 

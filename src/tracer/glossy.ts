@@ -22,5 +22,9 @@ export function perpendicularBasis(r: Vector3, t: Vector3, b: Vector3): void {
 
 /** normalize(r + ρ·(a·t + b·bAxis)) into `out`. */
 export function glossyDirection(r: Vector3, t: Vector3, bAxis: Vector3, roughness: number, a: number, b: number, out: Vector3): Vector3 {
-  return out.copy(r).addScaledVector(t, roughness * a).addScaledVector(bAxis, roughness * b).normalize();
+  return out
+    .copy(r)
+    .addScaledVector(t, roughness * a)
+    .addScaledVector(bAxis, roughness * b)
+    .normalize();
 }

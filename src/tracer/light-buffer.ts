@@ -122,7 +122,12 @@ export class LightBuffer {
       if (far < near) return null;
       const us = [lo[ua] / near, hi[ua] / near, lo[ua] / far, hi[ua] / far];
       const vs = [lo[va] / near, hi[va] / near, lo[va] / far, hi[va] / far];
-      return [toCell(Math.min(...us), -CELL_MARGIN), toCell(Math.min(...vs), -CELL_MARGIN), toCell(Math.max(...us), CELL_MARGIN), toCell(Math.max(...vs), CELL_MARGIN)];
+      return [
+        toCell(Math.min(...us), -CELL_MARGIN),
+        toCell(Math.min(...vs), -CELL_MARGIN),
+        toCell(Math.max(...us), CELL_MARGIN),
+        toCell(Math.max(...vs), CELL_MARGIN),
+      ];
     });
   }
 }

@@ -83,9 +83,12 @@ export class TracerLight {
 
   /** The four corners of an area light (the base of the cone drawn for merged area rays). */
   corners(): Vector3[] {
-    return [[-1, -1], [1, -1], [1, 1], [-1, 1]].map(([u, v]) =>
-      this.position.clone().addScaledVector(this.halfWidth, u).addScaledVector(this.halfDepth, v),
-    );
+    return [
+      [-1, -1],
+      [1, -1],
+      [1, 1],
+      [-1, 1],
+    ].map(([u, v]) => this.position.clone().addScaledVector(this.halfWidth, u).addScaledVector(this.halfDepth, v));
   }
 
   /**

@@ -19,7 +19,14 @@ const ONE_LEAF_UP_TO = 12;
  * `cone` (when given), written into `out`: how many, or -1 when there are more than `limit`
  * (the shadow candidates of a hit or a patch of hits; more are not worth listing).
  */
-export function listOverlapping(bvhs: readonly ObjectBvh[], box: Box3, out: Intersectable[], limit: number, cone: RayCone | null, from: Intersectable | null = null): number {
+export function listOverlapping(
+  bvhs: readonly ObjectBvh[],
+  box: Box3,
+  out: Intersectable[],
+  limit: number,
+  cone: RayCone | null,
+  from: Intersectable | null = null,
+): number {
   let count = 0;
   for (const bvh of bvhs) {
     count = bvh.overlapping(box, out, count, limit, cone, from);

@@ -104,5 +104,5 @@ export function pixelBytes(color: readonly number[], x: number, y: number, quant
   const at = ((y & 3) * width + (x & 3)) * 3;
   rgb.set(color.slice(0, 3), at);
   const rgba = toRgba8(rgb, width, height, quantization);
-  return [rgba[at / 3 * 4], rgba[at / 3 * 4 + 1], rgba[at / 3 * 4 + 2]];
+  return [rgba[(at / 3) * 4], rgba[(at / 3) * 4 + 1], rgba[(at / 3) * 4 + 2]];
 }

@@ -59,7 +59,9 @@ export class RayCone {
    */
   throughQuad(apex: Vector3, corners: Float64Array, margin: number): this {
     // The quadrilateral's centre is inside the cone.
-    let mx = 0, my = 0, mz = 0;
+    let mx = 0,
+      my = 0,
+      mz = 0;
     for (let i = 0; i < 4; i++) {
       mx += corners[i * 3] / 4;
       my += corners[i * 3 + 1] / 4;
@@ -75,8 +77,12 @@ export class RayCone {
     for (let i = 0; i < 4; i++) {
       const a = i * 3;
       const b = ((i + 1) & 3) * 3;
-      const ax = corners[a] - apex.x, ay = corners[a + 1] - apex.y, az = corners[a + 2] - apex.z;
-      const bx = corners[b] - apex.x, by = corners[b + 1] - apex.y, bz = corners[b + 2] - apex.z;
+      const ax = corners[a] - apex.x,
+        ay = corners[a + 1] - apex.y,
+        az = corners[a + 2] - apex.z;
+      const bx = corners[b] - apex.x,
+        by = corners[b + 1] - apex.y,
+        bz = corners[b + 2] - apex.z;
       this.addPlane(ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx, apex.x, apex.y, apex.z, mx, my, mz, margin);
     }
   }

@@ -37,7 +37,10 @@ export class RayRecorder {
   private lightTerms: LightTermsRecorder | null = null;
   private lightRays: RayNode[] = [];
 
-  constructor(readonly node: RayNode, readonly tree: RayTreeRecording = new RayTreeRecording()) {}
+  constructor(
+    readonly node: RayNode,
+    readonly tree: RayTreeRecording = new RayTreeRecording(),
+  ) {}
 
   /** The ray hit nothing: it carries the background. */
   miss(color: Vector3): void {
@@ -73,8 +76,16 @@ export class RayRecorder {
    * off, so no shadow ray was cast and the node only records the direction to the light.
    */
   reached(
-    attenuation: number, nDotL: number, rDotV: number, from: Vector3, toLight: Vector3, distance: number, lightId: string,
-    diffuse: Color, specular: Color, untested: boolean,
+    attenuation: number,
+    nDotL: number,
+    rDotV: number,
+    from: Vector3,
+    toLight: Vector3,
+    distance: number,
+    lightId: string,
+    diffuse: Color,
+    specular: Color,
+    untested: boolean,
   ): void {
     const ray = newNode('light', from, toLight, distance, true, null, lightId, [diffuse[0] + specular[0], diffuse[1] + specular[1], diffuse[2] + specular[2]]);
     if (untested) ray.untested = true;
@@ -93,7 +104,16 @@ export class RayRecorder {
       const direction = toCentre.subVectors(light.position, point);
       const distance = direction.length();
       const color = sumOf(samples.map((s) => s.color));
-      const merged = newNode(type === 'light' ? 'area-light' : 'area-shadow', point, direction.divideScalar(distance || 1), distance, true, null, light.id, color);
+      const merged = newNode(
+        type === 'light' ? 'area-light' : 'area-shadow',
+        point,
+        direction.divideScalar(distance || 1),
+        distance,
+        true,
+        null,
+        light.id,
+        color,
+      );
       merged.corners = light.corners().map((c) => c.toArray()) as RayNode['corners'];
       if (this.tree.withTerms) merged.parts = { diffuse: sumOf(samples.map((s) => s.parts!.diffuse)), specular: sumOf(samples.map((s) => s.parts!.specular)) };
       if (samples[0].untested) merged.untested = true;
@@ -157,8 +177,14 @@ export class RayRecorder {
 }
 
 function newNode(
-  type: RayType, origin: Vector3, direction: Vector3, length: number, hit: boolean,
-  objectId: string | null, lightId: string | null, color: Color,
+  type: RayType,
+  origin: Vector3,
+  direction: Vector3,
+  length: number,
+  hit: boolean,
+  objectId: string | null,
+  lightId: string | null,
+  color: Color,
 ): RayNode {
   return { type, origin: origin.toArray(), direction: direction.toArray(), length, hit, objectId, lightId, color, contribution: 0, children: [] };
 }

@@ -47,8 +47,15 @@ const times = new Float64Array(LIMITS.timeSamples[1]);
  * @param s samples per side; the scene's supersampling unless a preview asks for 1
  */
 export function renderPixel(
-  scene: TracerScene, x: number, y: number, width: number, height: number, seed: number,
-  out: Vector3, tree: RayTreeRecording | null, s = scene.settings.supersampling,
+  scene: TracerScene,
+  x: number,
+  y: number,
+  width: number,
+  height: number,
+  seed: number,
+  out: Vector3,
+  tree: RayTreeRecording | null,
+  s = scene.settings.supersampling,
 ): Vector3 {
   const integrator = integratorFor(scene);
   const { camera } = scene;
@@ -128,7 +135,15 @@ export function renderPixel(
 
 function primaryNode(ray: Ray): RayNode {
   return {
-    type: 'primary', origin: ray.origin.toArray(), direction: ray.direction.toArray(), length: 0, hit: false,
-    objectId: null, lightId: null, color: [0, 0, 0], contribution: 0, children: [],
+    type: 'primary',
+    origin: ray.origin.toArray(),
+    direction: ray.direction.toArray(),
+    length: 0,
+    hit: false,
+    objectId: null,
+    lightId: null,
+    color: [0, 0, 0],
+    contribution: 0,
+    children: [],
   };
 }

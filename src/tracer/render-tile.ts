@@ -27,7 +27,13 @@ export function renderTile(scene: TracerScene, tile: Tile, options: RenderTileOp
   integrator.stats.primary = integrator.stats.shadow = integrator.stats.reflect = integrator.stats.refract = 0;
   // The tile's primary rays, in the image traced (a preview's is block times smaller).
   integrator.primaryCandidates = primaryCandidates.set(
-    scene, tile.x / block, tile.y / block, (tile.x + tile.width) / block, (tile.y + tile.height) / block, imageWidth / block, imageHeight / block,
+    scene,
+    tile.x / block,
+    tile.y / block,
+    (tile.x + tile.width) / block,
+    (tile.y + tile.height) / block,
+    imageWidth / block,
+    imageHeight / block,
   );
   try {
     renderPixels(scene, tile, options, block, rgb);

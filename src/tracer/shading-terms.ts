@@ -67,7 +67,10 @@ export class LightTermsRecorder {
   private reached = 0;
   private samples = 0;
 
-  constructor(private readonly lightId: string, private readonly ambient: Color) {}
+  constructor(
+    private readonly lightId: string,
+    private readonly ambient: Color,
+  ) {}
 
   /** One sample: its factors as used, and whether a shadow ray was cast and reached the light. */
   sample(attenuation: number, nDotL: number, rDotV: number, shadowRay: 'none' | 'reached' | 'blocked'): void {

@@ -42,7 +42,15 @@ export class ShadowPatch {
    * rays' ε offsets, `limit` is how many are worth listing; `from` is the object `point`
    * lies on, where the BVH walks start (walk-starts.ts).
    */
-  fill(point: Vector3, half: number, light: TracerLight, occluders: readonly ObjectBvh[], margin: number, limit: number, from: Intersectable | null = null): void {
+  fill(
+    point: Vector3,
+    half: number,
+    light: TracerLight,
+    occluders: readonly ObjectBvh[],
+    margin: number,
+    limit: number,
+    from: Intersectable | null = null,
+  ): void {
     this.x = point.x;
     this.y = point.y;
     this.z = point.z;
@@ -72,7 +80,15 @@ export class ShadowPatchPair {
    * The patch whose cube covers `point`; else the one used less recently, filled around
    * `point` (ShadowPatch.fill's arguments).
    */
-  listFor(point: Vector3, half: number, light: TracerLight, occluders: readonly ObjectBvh[], margin: number, limit: number, from: Intersectable | null = null): ShadowPatch {
+  listFor(
+    point: Vector3,
+    half: number,
+    light: TracerLight,
+    occluders: readonly ObjectBvh[],
+    margin: number,
+    limit: number,
+    from: Intersectable | null = null,
+  ): ShadowPatch {
     const last = this.patches[this.used];
     if (last.covers(point)) return last;
     this.used ^= 1;

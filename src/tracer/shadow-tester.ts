@@ -113,7 +113,10 @@ export class ShadowTester {
     // from it: every ray into the solid's inside meets its far side before the light. A
     // recorded tree tests it, to show its nearest blocker. A plane seen from behind has no inside.
     const insideSelf =
-      nearest === false && shape.convex === true && shape.solid === true && frame.entering === false &&
+      nearest === false &&
+      shape.convex === true &&
+      shape.solid === true &&
+      frame.entering === false &&
       boxesApart(shape.worldBounds, this.scene.lights[lightIndex].extent, this.margin) === true;
     // The candidates are gathered at the first ray that needs them: a light wholly behind the surface needs none.
     this.outward = insideSelf ? BLOCKED_BY_SELF : UNKNOWN;
@@ -160,7 +163,13 @@ export class ShadowTester {
       // Rendering: a patch's list, gathered again only when the hit leaves both cubes.
       const half = PATCH_HALF_IN_PIXELS * this.pixelSpread * frame.pathLength;
       const patch = this.patches[frame.depth][this.lightIndex].listFor(
-        frame.hit.point, half, light, this.scene.occluders, this.margin, MAX_LISTED_CANDIDATES, frame.hit.shape,
+        frame.hit.point,
+        half,
+        light,
+        this.scene.occluders,
+        this.margin,
+        MAX_LISTED_CANDIDATES,
+        frame.hit.shape,
       );
       this.candidateCount = patch.count;
       for (let i = 0; i < patch.count; i++) this.candidates[i] = patch.list[i];
@@ -232,7 +241,11 @@ export class ShadowTester {
     const light = this.scene.lights[lightIndex];
     if (light.type === 'area') return null;
     // Listed in the occluders' order: cheap shapes before meshes.
-    return (this.lightBuffers[lightIndex] ??= new LightBuffer(light.position, this.scene.occluders.flatMap((bvh) => bvh.objectsInOrder()), this.margin));
+    return (this.lightBuffers[lightIndex] ??= new LightBuffer(
+      light.position,
+      this.scene.occluders.flatMap((bvh) => bvh.objectsInOrder()),
+      this.margin,
+    ));
   }
 
   /**

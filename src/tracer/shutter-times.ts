@@ -17,9 +17,7 @@ const stream = new RandomStream();
  *   streak is grainier than jittered at the same k.
  * One time (k = 1) is τ = 0 for every pattern: the shutter sees the scene as it stands.
  */
-export function shutterTimes(
-  pattern: TimePattern, k: number, seed: number, x: number, y: number, sample: number, out: Float64Array | number[],
-): void {
+export function shutterTimes(pattern: TimePattern, k: number, seed: number, x: number, y: number, sample: number, out: Float64Array | number[]): void {
   if (k === 1) {
     out[0] = 0;
     return;

@@ -10,9 +10,7 @@ const stream = new RandomStream();
  * jittered: a uniform point inside each cell (stratified sampling);
  * random: s² uniform points anywhere in the pixel (to show why stratifying helps).
  */
-export function samplePosition(
-  pattern: SamplePattern, s: number, index: number, x: number, y: number, seed: number, out: [number, number],
-): [number, number] {
+export function samplePosition(pattern: SamplePattern, s: number, index: number, x: number, y: number, seed: number, out: [number, number]): [number, number] {
   const i = index % s;
   const j = Math.floor(index / s);
   if (pattern === 'grid') {

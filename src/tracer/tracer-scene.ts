@@ -71,7 +71,8 @@ function createShape(object: SceneObject, index: number, meshes: MeshLibrary): S
   const toWorld = objectToWorld(object);
   const moves = object.velocity.some((component) => component !== 0);
   const velocity = moves ? new Vector3(...object.velocity) : null;
-  if (object.shape !== 'mesh') return new Shape(index, object.id, tracerMaterial(object.material), interned(object.shape, SHAPE_KINDS), toWorld, null, velocity);
+  if (object.shape !== 'mesh')
+    return new Shape(index, object.id, tracerMaterial(object.material), interned(object.shape, SHAPE_KINDS), toWorld, null, velocity);
   const mesh = object.mesh === undefined ? undefined : meshes.get(object.mesh);
   if (!mesh) throw new Error(`objects[${index}] ("${object.id}"): the model "${object.mesh}" was not loaded`);
   return new Shape(index, object.id, tracerMaterial(object.material), 'mesh', toWorld, meshAccel(mesh), velocity);

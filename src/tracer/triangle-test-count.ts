@@ -73,7 +73,10 @@ export function bruteForceMeshTests(accel: MeshAccel, o: Vector3, d: Vector3, tM
 
 /** Runs `search` for the object-space ray o + t·d on a fresh counter; its tests and nearest hit. */
 function walkMesh(
-  accel: MeshAccel, o: Vector3, d: Vector3, tMax: number,
+  accel: MeshAccel,
+  o: Vector3,
+  d: Vector3,
+  tMax: number,
   search: (counter: MeshTestCounter, root: BvhNode, triangles: number) => TriangleHit | null,
 ): MeshTests {
   const tree = bvhTree(accel.bvh);
@@ -83,7 +86,13 @@ function walkMesh(
   unitRay.direction.copy(d).divideScalar(scale);
   const counter = new MeshTestCounter(accel, unitRay, tMax * scale);
   const hit = search(counter, tree.root, tree.triangles);
-  return { boxes: counter.visits.length, triangles: counter.triangles, bruteForce: tree.triangles, t: hit ? hit.distance / scale : Infinity, visits: counter.visits };
+  return {
+    boxes: counter.visits.length,
+    triangles: counter.triangles,
+    bruteForce: tree.triangles,
+    t: hit ? hit.distance / scale : Infinity,
+    visits: counter.visits,
+  };
 }
 
 /**

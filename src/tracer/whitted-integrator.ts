@@ -131,7 +131,9 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
     v.copy(ray.direction).negate();
     // Ambient: ka·C (the colour read by index: docs/performance.md, "Array reads").
     const color = material.color;
-    const cr = color[0], cg = color[1], cb = color[2];
+    const cr = color[0],
+      cg = color[1],
+      cb = color[2];
     out.set(cr, cg, cb).multiplyScalar(material.ambient);
     recorder?.ambient(out);
     // Each light: its ambient la·Lc·C, then I·A·S·(diffuse + specular) over its samples.
@@ -176,7 +178,9 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
     // The light's colour is divided by n² for an area light's n×n samples (spec §2).
     const scale = light.intensity / samples;
     const color = material.color;
-    const cr = color[0], cg = color[1], cb = color[2];
+    const cr = color[0],
+      cg = color[1],
+      cb = color[2];
     const shadows = this.scene.settings.shadows === true;
     const recording = recorder !== null;
     if (shadows) this.shadows.startLight(frame, index, recording);
@@ -200,76 +204,77 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
     let sb = 0;
     // The samples row by row: cell (i, j) of the light's n×n grid.
     const perSide = light.samplesPerSide;
-    for (let j = 0; j < perSide; j++) for (let i = 0; i < perSide; i++) {
-      // A point on the light, L toward it and its distance.
-      light.samplePoint(i, j, this.random, lightPoint);
-      let lx = lightPoint.x - px;
-      let ly = lightPoint.y - py;
-      let lz = lightPoint.z - pz;
-      const distance = Math.sqrt(lx * lx + ly * ly + lz * lz);
-      if (distance === 0) {
-        recorder?.noRay(0, 0, 0);
-        continue;
+    for (let j = 0; j < perSide; j++)
+      for (let i = 0; i < perSide; i++) {
+        // A point on the light, L toward it and its distance.
+        light.samplePoint(i, j, this.random, lightPoint);
+        let lx = lightPoint.x - px;
+        let ly = lightPoint.y - py;
+        let lz = lightPoint.z - pz;
+        const distance = Math.sqrt(lx * lx + ly * ly + lz * lz);
+        if (distance === 0) {
+          recorder?.noRay(0, 0, 0);
+          continue;
+        }
+        const inverse = 1 / distance;
+        lx *= inverse;
+        ly *= inverse;
+        lz *= inverse;
+        // A light behind the surface adds nothing: no ray is cast toward it.
+        const nDotL = nx * lx + ny * ly + nz * lz;
+        if (nDotL <= 0) {
+          recorder?.noRay(lightAttenuation(light, distance, lx, ly, lz), nDotL, 0);
+          continue;
+        }
+        // A: distance and angle attenuation.
+        const attenuation = lightAttenuation(light, distance, lx, ly, lz);
+        // Phong: R = 2(N·L)N − L, L mirrored about N; only needed for a highlight (or to show it).
+        const twoNDotL = 2 * nDotL;
+        const rDotV = highlights || recording ? (nx * twoNDotL - lx) * vx + (ny * twoNDotL - ly) * vy + (nz * twoNDotL - lz) * vz : 0;
+        if (attenuation === 0) {
+          recorder?.noRay(0, nDotL, rDotV);
+          continue;
+        }
+        // L as a vector, for the shadow tester and the recorder (field by field, and the side
+        // N_g·L > 0 computed here: docs/performance.md, "Inlining budget").
+        l.x = lx;
+        l.y = ly;
+        l.z = lz;
+        // S: whether the light sample is in view (a shadow ray, when shadows are on).
+        let blocker: Intersectable | null = null;
+        if (shadows) {
+          shadowRays++;
+          frame.lightDistance = distance;
+          blocker = this.shadows.blocker(frame, ngx * lx + ngy * ly + ngz * lz > 0);
+        }
+        if (blocker !== null) {
+          // S = 0: a shadow ray carries black.
+          recorder?.blocked(attenuation, nDotL, rDotV, hit.point, l, this.shadows.blockerDistance, blocker.id, light.id);
+          continue;
+        }
+        // The highlight max(R·V, 0)^n·ks·ls, not tinted by the object's colour.
+        let highlight = 0;
+        if (highlights && (!(rDotV <= 0) || shininess === 0)) highlight = phongPower(Math.max(rDotV, 0), shininess) * material.specular * light.specular;
+        // The diffuse term max(N·L, 0)·kd·ld·C, both scaled by I/n²·A·Lc.
+        const diffuse = nDotL * material.diffuse * light.diffuse;
+        const k = scale * attenuation;
+        const kr = k * lr;
+        const kg = k * lg;
+        const kb = k * lb;
+        const diffuseR = kr * (diffuse * cr);
+        const diffuseG = kg * (diffuse * cg);
+        const diffuseB = kb * (diffuse * cb);
+        dr += diffuseR;
+        dg += diffuseG;
+        db += diffuseB;
+        sr += kr * highlight;
+        sg += kg * highlight;
+        sb += kb * highlight;
+        if (recorder !== null) {
+          const parts = [kr * highlight, kg * highlight, kb * highlight] as [number, number, number];
+          recorder.reached(attenuation, nDotL, rDotV, hit.point, l, distance, light.id, [diffuseR, diffuseG, diffuseB], parts, !shadows);
+        }
       }
-      const inverse = 1 / distance;
-      lx *= inverse;
-      ly *= inverse;
-      lz *= inverse;
-      // A light behind the surface adds nothing: no ray is cast toward it.
-      const nDotL = nx * lx + ny * ly + nz * lz;
-      if (nDotL <= 0) {
-        recorder?.noRay(lightAttenuation(light, distance, lx, ly, lz), nDotL, 0);
-        continue;
-      }
-      // A: distance and angle attenuation.
-      const attenuation = lightAttenuation(light, distance, lx, ly, lz);
-      // Phong: R = 2(N·L)N − L, L mirrored about N; only needed for a highlight (or to show it).
-      const twoNDotL = 2 * nDotL;
-      const rDotV = highlights || recording ? (nx * twoNDotL - lx) * vx + (ny * twoNDotL - ly) * vy + (nz * twoNDotL - lz) * vz : 0;
-      if (attenuation === 0) {
-        recorder?.noRay(0, nDotL, rDotV);
-        continue;
-      }
-      // L as a vector, for the shadow tester and the recorder (field by field, and the side
-      // N_g·L > 0 computed here: docs/performance.md, "Inlining budget").
-      l.x = lx;
-      l.y = ly;
-      l.z = lz;
-      // S: whether the light sample is in view (a shadow ray, when shadows are on).
-      let blocker: Intersectable | null = null;
-      if (shadows) {
-        shadowRays++;
-        frame.lightDistance = distance;
-        blocker = this.shadows.blocker(frame, ngx * lx + ngy * ly + ngz * lz > 0);
-      }
-      if (blocker !== null) {
-        // S = 0: a shadow ray carries black.
-        recorder?.blocked(attenuation, nDotL, rDotV, hit.point, l, this.shadows.blockerDistance, blocker.id, light.id);
-        continue;
-      }
-      // The highlight max(R·V, 0)^n·ks·ls, not tinted by the object's colour.
-      let highlight = 0;
-      if (highlights && (!(rDotV <= 0) || shininess === 0)) highlight = phongPower(Math.max(rDotV, 0), shininess) * material.specular * light.specular;
-      // The diffuse term max(N·L, 0)·kd·ld·C, both scaled by I/n²·A·Lc.
-      const diffuse = nDotL * material.diffuse * light.diffuse;
-      const k = scale * attenuation;
-      const kr = k * lr;
-      const kg = k * lg;
-      const kb = k * lb;
-      const diffuseR = kr * (diffuse * cr);
-      const diffuseG = kg * (diffuse * cg);
-      const diffuseB = kb * (diffuse * cb);
-      dr += diffuseR;
-      dg += diffuseG;
-      db += diffuseB;
-      sr += kr * highlight;
-      sg += kg * highlight;
-      sb += kb * highlight;
-      if (recorder !== null) {
-        const parts = [kr * highlight, kg * highlight, kb * highlight] as [number, number, number];
-        recorder.reached(attenuation, nDotL, rDotV, hit.point, l, distance, light.id, [diffuseR, diffuseG, diffuseB], parts, !shadows);
-      }
-    }
     this.stats.shadow += shadowRays;
     out.x += dr;
     out.y += dg;
@@ -334,7 +339,12 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
 
   /** Traces frame.childDirection from the hit point and adds weight × its colour to `out`; returns the child's recorder. */
   private traceChild(
-    type: 'reflect' | 'refract', frame: ShadingFrame, weight: number, out: Vector3, recorder: RayRecorder | null, leaving: Intersectable | null = null,
+    type: 'reflect' | 'refract',
+    frame: ShadingFrame,
+    weight: number,
+    out: Vector3,
+    recorder: RayRecorder | null,
+    leaving: Intersectable | null = null,
   ): RayRecorder | null {
     this.stats[type]++;
     const origin = offsetOrigin(frame, frame.childDirection, this.scene.epsilon);
@@ -354,6 +364,7 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
  */
 function lightAttenuation(light: TracerLight, distance: number, lx: number, ly: number, lz: number): number {
   let attenuation = light.distanceAttenuation === true ? distanceAttenuation(distance) : 1;
-  if (light.type !== 'point') attenuation *= angleAttenuation(-(light.direction.x * lx + light.direction.y * ly + light.direction.z * lz), light.cosHalfAngle, light.angleExponent);
+  if (light.type !== 'point')
+    attenuation *= angleAttenuation(-(light.direction.x * lx + light.direction.y * ly + light.direction.z * lz), light.cosHalfAngle, light.angleExponent);
   return attenuation;
 }

@@ -82,7 +82,7 @@ function findJsonProblem(text: string): JsonProblem {
         offset++;
         return undefined;
       }
-      if (char < ' ') return fail('a closing \'"\' (write a line break inside a string as \\n)');
+      if (char < ' ') return fail("a closing '\"' (write a line break inside a string as \\n)");
       if (char === '\\') {
         ESCAPE.lastIndex = offset;
         if (!ESCAPE.test(text)) return fail('an escape such as \\n, \\" or \\u00e9');
@@ -91,7 +91,7 @@ function findJsonProblem(text: string): JsonProblem {
         offset++;
       }
     }
-    return fail('a closing \'"\'');
+    return fail("a closing '\"'");
   };
 
   try {

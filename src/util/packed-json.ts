@@ -14,10 +14,7 @@ export async function packJson(value: unknown): Promise<string> {
 
 /** Why a payload did not unpack; the caller words it for the learner (it knows what the link was for). */
 export type PackedJsonProblem =
-  | { problem: 'not-base64url' }
-  | { problem: 'damaged' }
-  | { problem: 'too-large'; limit: number }
-  | { problem: 'not-json'; reason: string };
+  { problem: 'not-base64url' } | { problem: 'damaged' } | { problem: 'too-large'; limit: number } | { problem: 'not-json'; reason: string };
 
 export type UnpackedJson = { ok: true; value: unknown } | ({ ok: false } & PackedJsonProblem);
 

@@ -1,14 +1,4 @@
-import {
-  type Box3,
-  BufferGeometry,
-  Color,
-  Float32BufferAttribute,
-  Group,
-  LineBasicMaterial,
-  LineDashedMaterial,
-  LineSegments,
-  type Matrix4,
-} from 'three';
+import { type Box3, BufferGeometry, Color, Float32BufferAttribute, Group, LineBasicMaterial, LineDashedMaterial, LineSegments, type Matrix4 } from 'three';
 import type { LabState } from '../lab-state/lab-state.ts';
 import { loadMeshes } from '../render/load-meshes-browser.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
@@ -72,7 +62,8 @@ export class BvhBoxes {
   /** Redraws the boxes when what they show changed: the scene, the selection, the selected pixel or the BVH options. */
   update(state: LabState): void {
     const shown = this.shown;
-    if (shown && shown.scene === state.scene && shown.selection === state.selection && shown.selectedPixel === state.selectedPixel && shown.bvh === state.bvh) return;
+    if (shown && shown.scene === state.scene && shown.selection === state.selection && shown.selectedPixel === state.selectedPixel && shown.bvh === state.bvh)
+      return;
     this.shown = { scene: state.scene, selection: state.selection, selectedPixel: state.selectedPixel, bvh: state.bvh };
     const request = ++this.request;
     if (!state.bvh.show && !state.bvh.showBounds) {

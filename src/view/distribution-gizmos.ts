@@ -83,7 +83,12 @@ export class DistributionGizmos {
   private readonly disc = new CircleGeometry(1, 48);
   private readonly discEdge = new BufferGeometry().setFromPoints(circlePoints(48));
   private readonly square = new PlaneGeometry(2, 2);
-  private readonly squareEdge = new BufferGeometry().setFromPoints([new Vector3(-1, -1, 0), new Vector3(1, -1, 0), new Vector3(1, 1, 0), new Vector3(-1, 1, 0)]);
+  private readonly squareEdge = new BufferGeometry().setFromPoints([
+    new Vector3(-1, -1, 0),
+    new Vector3(1, -1, 0),
+    new Vector3(1, 1, 0),
+    new Vector3(-1, 1, 0),
+  ]);
   /** What the motion group holds and must dispose (its materials and path lines). */
   private owned: { dispose(): void }[] = [];
   private key = '';
@@ -141,7 +146,10 @@ export class DistributionGizmos {
       const color = new Color(...object.material.color);
       const from = new Vector3(...object.position);
       const velocity = new Vector3(...object.velocity);
-      const pathGeometry = new BufferGeometry().setAttribute('position', new Float32BufferAttribute([...from.toArray(), ...from.clone().add(velocity).toArray()], 3));
+      const pathGeometry = new BufferGeometry().setAttribute(
+        'position',
+        new Float32BufferAttribute([...from.toArray(), ...from.clone().add(velocity).toArray()], 3),
+      );
       const pathMaterial = new LineBasicMaterial({ color, transparent: true, opacity: 0.8 });
       this.owned.push(pathGeometry, pathMaterial);
       const path = new Line(pathGeometry, pathMaterial);
@@ -163,7 +171,17 @@ export class DistributionGizmos {
 
   dispose(): void {
     for (const item of this.owned) item.dispose();
-    for (const item of [this.lensMaterial, this.lensEdgeMaterial, this.planeMaterial, this.planeEdgeMaterial, this.disc, this.discEdge, this.square, this.squareEdge]) item.dispose();
+    for (const item of [
+      this.lensMaterial,
+      this.lensEdgeMaterial,
+      this.planeMaterial,
+      this.planeEdgeMaterial,
+      this.disc,
+      this.discEdge,
+      this.square,
+      this.squareEdge,
+    ])
+      item.dispose();
     this.group.clear();
   }
 }

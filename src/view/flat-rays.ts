@@ -56,7 +56,11 @@ export class FlatRays {
   readonly pixelStart: Int32Array;
 
   /** `mergeGlossy`: draw a glossy fan of more than 25 rays on one object as one cone (the ray debugger steps through every ray, so it keeps them). */
-  constructor(readonly columns: number, readonly rows: number, private readonly mergeGlossy = true) {
+  constructor(
+    readonly columns: number,
+    readonly rows: number,
+    private readonly mergeGlossy = true,
+  ) {
     this.pixelStart = new Int32Array(columns * rows + 1);
   }
 

@@ -83,11 +83,7 @@ export function cameraChanges(camera: Camera, pose: DraggedPose, snap: boolean):
   const fine = FINE.translate;
   return {
     position: newPosition,
-    target: [
-      roundToStep(newPosition[0] + forward.x, fine),
-      roundToStep(newPosition[1] + forward.y, fine),
-      roundToStep(newPosition[2] + forward.z, fine),
-    ],
+    target: [roundToStep(newPosition[0] + forward.x, fine), roundToStep(newPosition[1] + forward.y, fine), roundToStep(newPosition[2] + forward.z, fine)],
   };
 }
 

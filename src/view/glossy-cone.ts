@@ -72,7 +72,9 @@ function coneOf(type: 'reflect' | 'refract', fan: readonly RayNode[]): GlossyCon
   const corners = [at(uMin, vMin), at(uMax, vMin), at(uMax, vMax), at(uMin, vMax)].map((corner) => corner.toArray()) as GlossyCone['corners'];
   const toCentre = at((uMin + uMax) / 2, (vMin + vMax) / 2).sub(apex);
   const length = toCentre.length();
-  const color = fan.reduce<Vec3>((sum, ray) => [sum[0] + ray.color[0], sum[1] + ray.color[1], sum[2] + ray.color[2]], [0, 0, 0]).map((c) => c / fan.length) as Vec3;
+  const color = fan
+    .reduce<Vec3>((sum, ray) => [sum[0] + ray.color[0], sum[1] + ray.color[1], sum[2] + ray.color[2]], [0, 0, 0])
+    .map((c) => c / fan.length) as Vec3;
   const node: RayNode = {
     type,
     origin: fan[0].origin,

@@ -333,7 +333,14 @@ export class LabView {
 
   /** The raster view from the ray tracer's camera, `width`×`height`, for the render window's comparison. */
   rasterSnapshot(width: number, height: number): Promise<ImageData> {
-    const hidden: Object3D[] = [this.grid, this.lightGizmos.group, this.cameraScreen.rig, this.distribution.group, this.selection.outline, this.selection.helper];
+    const hidden: Object3D[] = [
+      this.grid,
+      this.lightGizmos.group,
+      this.cameraScreen.rig,
+      this.distribution.group,
+      this.selection.outline,
+      this.selection.helper,
+    ];
     const { rayLayer, bvhLayer } = this.drawing;
     if (rayLayer) hidden.push(rayLayer.object);
     if (bvhLayer) hidden.push(bvhLayer);
@@ -412,11 +419,7 @@ export class LabView {
     if (state.scene !== previous?.scene || state.selectedPixel !== previous.selectedPixel) {
       this.distribution.sync(state.scene, (id) => this.objects.objectOf(id), state.selectedPixel);
     }
-    if (
-      state.scene !== previous?.scene ||
-      state.selectedPixel !== previous.selectedPixel ||
-      state.rays.showSamplePoints !== previous.rays.showSamplePoints
-    ) {
+    if (state.scene !== previous?.scene || state.selectedPixel !== previous.selectedPixel || state.rays.showSamplePoints !== previous.rays.showSamplePoints) {
       this.cameraScreen.sync({
         camera: state.scene.camera,
         settings: state.scene.settings,

@@ -203,7 +203,13 @@ function lightShapes() {
 
 /** A closed outline in the XZ plane through (x, z) points. */
 function loop(points: number[][]): BufferGeometry {
-  return new BufferGeometry().setAttribute('position', new Float32BufferAttribute(points.flatMap(([x, z]) => [x, 0, z]), 3));
+  return new BufferGeometry().setAttribute(
+    'position',
+    new Float32BufferAttribute(
+      points.flatMap(([x, z]) => [x, 0, z]),
+      3,
+    ),
+  );
 }
 
 /** The cone's base circle and four lines from the apex, as line segments. */

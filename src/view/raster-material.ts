@@ -43,9 +43,5 @@ export function applyRasterMaterial(target: MeshPhongMaterial, material: Materia
 }
 
 function setEmissive(out: Color, color: RgbColor, ka: number, ambient: Color): void {
-  out.setRGB(
-    Math.min(1, color[0] * (ka + ambient.r)),
-    Math.min(1, color[1] * (ka + ambient.g)),
-    Math.min(1, color[2] * (ka + ambient.b)),
-  );
+  out.setRGB(Math.min(1, color[0] * (ka + ambient.r)), Math.min(1, color[1] * (ka + ambient.g)), Math.min(1, color[2] * (ka + ambient.b)));
 }

@@ -9,16 +9,7 @@
  * Buffers are pooled: they grow by doubling and never shrink, and an update writes only
  * the instances in use (mesh.count) and uploads only that range.
  */
-import {
-  BufferGeometry,
-  Float32BufferAttribute,
-  Group,
-  InstancedBufferAttribute,
-  InstancedMesh,
-  type Material,
-  type Raycaster,
-  type Vector3,
-} from 'three';
+import { BufferGeometry, Float32BufferAttribute, Group, InstancedBufferAttribute, InstancedMesh, type Material, type Raycaster, type Vector3 } from 'three';
 import type { RayViewOptions } from '../lab-state/lab-state.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
 import { focusedRays, type RayFocus } from './ray-focus.ts';
@@ -54,7 +45,9 @@ const FLOATS_PER_CYLINDER = FLOATS_PER_CONE + 4;
  * rebuild copies two numbers per ray from it. Looking each pattern up by its name and copying
  * it with TypedArray.set was a third of a 10k-ray rebuild.
  */
-const DASHES_BY_KEY = Float32Array.from(RAY_COLOR_KEYS.flatMap((key) => (FILLED_GAP_KEYS.has(key) ? [RAY_DASHES[key][0], -RAY_DASHES[key][1]] : RAY_DASHES[key])));
+const DASHES_BY_KEY = Float32Array.from(
+  RAY_COLOR_KEYS.flatMap((key) => (FILLED_GAP_KEYS.has(key) ? [RAY_DASHES[key][0], -RAY_DASHES[key][1]] : RAY_DASHES[key])),
+);
 
 /** Where each key's arrowhead sits (ray-shader.ts arrowAt), by colour-key index like DASHES_BY_KEY. */
 const ARROW_AT_BY_KEY = Float32Array.from(RAY_COLOR_KEYS.map(arrowAt));
@@ -110,7 +103,11 @@ class InstanceBuffers {
   mesh: InstancedMesh;
   private readonly kind: 'cylinder' | 'cone';
 
-  constructor(kind: 'cylinder' | 'cone', material: Material, private readonly parent: Group) {
+  constructor(
+    kind: 'cylinder' | 'cone',
+    material: Material,
+    private readonly parent: Group,
+  ) {
     this.kind = kind;
     this.mesh = this.createMesh(INITIAL_CAPACITY, material);
     parent.add(this.mesh);
@@ -162,7 +159,15 @@ class InstanceBuffers {
 
   /** The instance attributes (the matrix first), to copy a range of them into a piece. */
   get attributes(): InstancedBufferAttribute[] {
-    return [this.mesh.instanceMatrix, this.color, this.alpha, this.growth, ...(this.dash ? [this.dash] : []), ...(this.arrowAt ? [this.arrowAt] : []), ...(this.stop ? [this.stop] : [])];
+    return [
+      this.mesh.instanceMatrix,
+      this.color,
+      this.alpha,
+      this.growth,
+      ...(this.dash ? [this.dash] : []),
+      ...(this.arrowAt ? [this.arrowAt] : []),
+      ...(this.stop ? [this.stop] : []),
+    ];
   }
 
   /** Instances `from` … `to` − 1 of `source` as this mesh's first ones, drawn alone (a piece: RayPool.piece). */
@@ -344,8 +349,14 @@ export class RayPool implements RayLayer {
     const rays = this.drawn.rays.count;
     const cones = this.drawn.cones.count;
     return this.cones.mesh.id < this.cylinders.mesh.id
-      ? [{ kind: 'cone', buffers: this.cones, from: 0, to: cones }, { kind: 'cylinder', buffers: this.cylinders, from: cones, to: cones + rays }]
-      : [{ kind: 'cylinder', buffers: this.cylinders, from: 0, to: rays }, { kind: 'cone', buffers: this.cones, from: rays, to: rays + cones }];
+      ? [
+          { kind: 'cone', buffers: this.cones, from: 0, to: cones },
+          { kind: 'cylinder', buffers: this.cylinders, from: cones, to: cones + rays },
+        ]
+      : [
+          { kind: 'cylinder', buffers: this.cylinders, from: 0, to: rays },
+          { kind: 'cone', buffers: this.cones, from: rays, to: rays + cones },
+        ];
   }
 
   /**

@@ -161,7 +161,9 @@ if (vRayDash.x < 0.0) {
   if (fract(vRayAlong / vRayDash.y + vRayDash.x + 1.0) > ${TIME_STRIPE_SHARE.toFixed(2)}) discard;
 } else if (vRayDash.x > 0.0 && mod(vRayAlong, vRayDash.x + abs(vRayDash.y)) > vRayDash.x) {
   if (vRayDash.y >= 0.0) discard;
-  diffuseColor.rgb = vec3(${hexToColor(GAP_FILL).map((c) => c.toFixed(4)).join(', ')});
+  diffuseColor.rgb = vec3(${hexToColor(GAP_FILL)
+    .map((c) => c.toFixed(4))
+    .join(', ')});
 }
 #endif`;
 
@@ -190,7 +192,11 @@ export function patchRayShader(
  * A ray material. Cones are seen from inside and out (double-sided) in one pass: the
  * instances are not sorted anyway, and one pass keeps them at one draw call.
  */
-export function createRayMaterial(kind: 'cylinder' | 'cone' | 'arrow' | 'hidden' | 'stop', travel: TravelUniform, viewHeight: ViewHeightUniform): MeshBasicMaterial {
+export function createRayMaterial(
+  kind: 'cylinder' | 'cone' | 'arrow' | 'hidden' | 'stop',
+  travel: TravelUniform,
+  viewHeight: ViewHeightUniform,
+): MeshBasicMaterial {
   const material = new MeshBasicMaterial({ color: 0xffffff });
   // Always blended, as alpha comes per instance; ray-pool.ts turns depthWrite off for see-through rays.
   material.transparent = true;

@@ -217,7 +217,7 @@ class VisibilityPass {
   pixel(p: number): void {
     const { flat, options, kept } = this;
     const end = flat.pixelStart[p + 1];
-    for (let i = flat.pixelStart[p]; i < end; ) {
+    for (let i = flat.pixelStart[p]; i < end;) {
       const hidden =
         (options.hideNoHit && flat.hit[i] === 0) ||
         (options.hideNegligible && flat.contribution[i] < options.negligibleThreshold) ||
@@ -250,9 +250,7 @@ class VisibilityPass {
     list.start[j] = start;
     list.alpha[j] = this.alpha;
     list.pixel[j] = p;
-    list.radius[j] = options.dynamicRadius
-      ? options.minRadius + (options.maxRadius - options.minRadius) * clamp01(contribution)
-      : options.radius;
+    list.radius[j] = options.dynamicRadius ? options.minRadius + (options.maxRadius - options.minRadius) * clamp01(contribution) : options.radius;
     const key = flat.colorKey[i];
     list.colorKey[j] = key;
     const tone = options.contributionColor ? contributionTone(contribution) : 1;

@@ -54,7 +54,10 @@ export function stateCommand(command: ViewCommand, state: LabState): StateComman
 
 /** Pixel (x, y) of the camera's screen chosen: only its rays are shown (0, 0 is the top left). */
 function choosePixel(x: number, y: number): StateCommand {
-  return { action: { type: 'pixel.selected', pixel: [x, y] }, note: msg(str`Pixel ${x}, ${y}: only its rays are shown. Arrow keys: the next pixel; Esc: every pixel.`) };
+  return {
+    action: { type: 'pixel.selected', pixel: [x, y] },
+    note: msg(str`Pixel ${x}, ${y}: only its rays are shown. Arrow keys: the next pixel; Esc: every pixel.`),
+  };
 }
 
 function deleteSelection(selection: Selection): StateCommand {

@@ -36,8 +36,7 @@ export function gestureActions(before: ViewPose, after: ViewPose): ViewAction[] 
   sphericalAfter.setFromVector3(offset.subVectors(after.position, after.target));
   const radius = Math.max(sphericalBefore.radius, 1e-9);
   const turned =
-    Math.abs(angleBetween(sphericalBefore.theta, sphericalAfter.theta)) > ANGLE_EPSILON ||
-    Math.abs(sphericalBefore.phi - sphericalAfter.phi) > ANGLE_EPSILON;
+    Math.abs(angleBetween(sphericalBefore.theta, sphericalAfter.theta)) > ANGLE_EPSILON || Math.abs(sphericalBefore.phi - sphericalAfter.phi) > ANGLE_EPSILON;
   if (turned) actions.push({ type: 'view.orbited' });
   if (before.target.distanceTo(after.target) > RELATIVE_EPSILON * radius) actions.push({ type: 'view.panned' });
   if (Math.abs(sphericalAfter.radius - sphericalBefore.radius) > RELATIVE_EPSILON * radius) actions.push({ type: 'view.zoomed' });
@@ -115,13 +114,7 @@ export function framingPose(
  * framed centre in the middle of the canvas, and panning down by (1 − share)·d·tan(fov/2)
  * (half the covered height at that depth) moves it to the middle of the band.
  */
-export function framingPoseAbove(
-  points: readonly Vec3[],
-  fov: number,
-  aspect: number,
-  direction: Vector3,
-  visibleShare: number,
-): ViewPose {
+export function framingPoseAbove(points: readonly Vec3[], fov: number, aspect: number, direction: Vector3, visibleShare: number): ViewPose {
   const share = Math.min(1, Math.max(0.05, visibleShare));
   const tanHalf = Math.tan((fov * Math.PI) / 360);
   const bandFov = (Math.atan(tanHalf * share) * 360) / Math.PI;

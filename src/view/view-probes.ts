@@ -76,7 +76,11 @@ export class ViewProbes {
     const trace = this.view.traceOf(pixel);
     const node = trace ? followRayPath(trace, path) : null;
     if (!node) return null;
-    const points = rayEvidence(node, (point) => this.view.projectToView(point), (point) => hiddenFrom(this.view.camera.position, point, [this.view.opaque]));
+    const points = rayEvidence(
+      node,
+      (point) => this.view.projectToView(point),
+      (point) => hiddenFrom(this.view.camera.position, point, [this.view.opaque]),
+    );
     return { drawnAs: rayColorKey(node.type, node.hit, node.untested), points };
   }
 
@@ -108,7 +112,8 @@ export class ViewProbes {
       for (let x = 0; x < cssWidth; x++) {
         // readPixels rows run bottom-up.
         const i = ((height - 1 - Math.floor(y * ratio)) * width + Math.floor(x * ratio)) * 4;
-        const change = Math.abs(frames[0]![i]! - frames[1]![i]!) + Math.abs(frames[0]![i + 1]! - frames[1]![i + 1]!) + Math.abs(frames[0]![i + 2]! - frames[1]![i + 2]!);
+        const change =
+          Math.abs(frames[0]![i]! - frames[1]![i]!) + Math.abs(frames[0]![i + 1]! - frames[1]![i + 1]!) + Math.abs(frames[0]![i + 2]! - frames[1]![i + 2]!);
         mask[y * cssWidth + x] = change > COVERAGE_CHANGE ? 1 : 0;
       }
     }

@@ -37,7 +37,9 @@ function fakePool(workers: number | undefined) {
     renders: [] as { scene: Scene; finish: () => void }[],
     render(scene: Scene) {
       let finish = () => {};
-      const done = new Promise((resolve) => (finish = () => resolve({ cancelled: false, width: 1, height: 1, rgb: new Float32Array([scene.settings.shadows ? 1 : 0, 0, 0]) })));
+      const done = new Promise(
+        (resolve) => (finish = () => resolve({ cancelled: false, width: 1, height: 1, rgb: new Float32Array([scene.settings.shadows ? 1 : 0, 0, 0]) })),
+      );
       pool.renders.push({ scene, finish });
       return { done };
     },
@@ -107,7 +109,7 @@ describe('LabServices: the lab wired apart from any page', () => {
     expect(services.renderPool).toBe(pools[0]);
   });
 
-  it('traces the store\'s scene at once on the screen pool; a view attached later (the 3D view loads after the panels) gets its rays, listeners hear the next ones, traced inline', async () => {
+  it("traces the store's scene at once on the screen pool; a view attached later (the 3D view loads after the panels) gets its rays, listeners hear the next ones, traced inline", async () => {
     await vi.advanceTimersByTimeAsync(1);
     const { view, calls, rays } = fakeView();
     expect(services.drawn.rays).toBe(0);
@@ -156,7 +158,7 @@ describe('LabServices: the lab wired apart from any page', () => {
     expect(services.drawn.rays).toBe(0);
   });
 
-  it('renders a picture prediction\'s scenes on a one-worker pool of their own, one at a time, each scene once', async () => {
+  it("renders a picture prediction's scenes on a one-worker pool of their own, one at a time, each scene once", async () => {
     const scene = services.store.state.scene;
     const dark = { ...scene, settings: { ...scene.settings, shadows: false } };
     expect(pools).toHaveLength(2); // made when first asked for
@@ -176,7 +178,7 @@ describe('LabServices: the lab wired apart from any page', () => {
     expect((await second).rgb[0]).toBe(0);
   });
 
-  it('on a CPU rasterizer, holds a heavy screen\'s rays to the budget while the learner edits, coarse, and draws them all once the edits stop', async () => {
+  it("on a CPU rasterizer, holds a heavy screen's rays to the budget while the learner edits, coarse, and draws them all once the edits stop", async () => {
     // 4 × 3 pixels of 4 × 4 samples of 4 × 4 lens points: traced in the worker, thousands of rays.
     const { store } = services;
     store.dispatch({ type: 'camera.changed', changes: { pixels: [4, 3], aperture: 0.2, lensSamples: 4 } });

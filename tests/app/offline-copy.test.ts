@@ -119,7 +119,10 @@ test('no service workers, a refused registration, or a page from disk each say w
 
   const fromDisk = new OfflineCopy();
   let registered = false;
-  await fromDisk.start({ protocol: 'file:', serviceWorker: { register: async () => ((registered = true), undefined as unknown as ServiceWorkerRegistration) } });
+  await fromDisk.start({
+    protocol: 'file:',
+    serviceWorker: { register: async () => ((registered = true), undefined as unknown as ServiceWorkerRegistration) },
+  });
   expect(fromDisk.state).toEqual({ kind: 'single-file' });
   expect(registered).toBe(false);
 });

@@ -44,7 +44,9 @@ describe('saving into a full storage', () => {
     session.engine.askHint('predict');
     store.dispatch({ type: 'render.finished', ms: 30 });
     expect(session.saveProblem).toBe('storage-full');
-    expect(saveProblemText('storage-full')).toMatch(/^The browser's storage is full, so progress is not saved\. It is kept while this page is open and saved as soon as there is room: export it \(Menu\) to be safe\.$/);
+    expect(saveProblemText('storage-full')).toMatch(
+      /^The browser's storage is full, so progress is not saved\. It is kept while this page is open and saved as soon as there is room: export it \(Menu\) to be safe\.$/,
+    );
     const inMemory = eventIds(session);
     expect(saved(storage).log.events.length).toBeLessThan(inMemory.length);
 

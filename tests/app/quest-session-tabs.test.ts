@@ -101,7 +101,7 @@ describe('several tabs of the game', () => {
     ]);
   });
 
-  it('show each other\'s work: a task done in one tab moves the other tab on', () => {
+  it("show each other's work: a task done in one tab moves the other tab on", () => {
     const storage = new SharedStorage();
     const [a, b] = [openTab(storage), openTab(storage)];
     const heard = vi.fn();
@@ -121,7 +121,7 @@ describe('several tabs of the game', () => {
     expect([...ids(b.session.engine.progress)].sort()).toEqual([...ids(a.session.engine.progress)].sort());
   });
 
-  it('write back what another tab\'s save lost (two saves that crossed)', () => {
+  it("write back what another tab's save lost (two saves that crossed)", () => {
     const storage = new SharedStorage();
     const [a, b] = [openTab(storage), openTab(storage)];
     act(storage, a, () => a.store.dispatch({ type: 'view.orbited' }));

@@ -28,7 +28,10 @@ describe('scene files', () => {
   });
 
   it('says what is wrong with a damaged file', () => {
-    expect(readSceneFile('{"version": 1, "objects": [')).toEqual({ ok: false, errors: [expect.stringMatching(/^\(root\): not valid JSON at line 1, column 28/)] });
+    expect(readSceneFile('{"version": 1, "objects": [')).toEqual({
+      ok: false,
+      errors: [expect.stringMatching(/^\(root\): not valid JSON at line 1, column 28/)],
+    });
     const wrong = readSceneFile(JSON.stringify({ version: 1, objects: [{ id: 'a', shape: 'cone' }] }));
     expect(wrong.ok).toBe(false);
     if (!wrong.ok) expect(wrong.errors[0]).toBe('objects[0].shape: must be one of sphere, box, cylinder, plane, mesh, got "cone"');

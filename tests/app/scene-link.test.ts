@@ -42,7 +42,10 @@ describe('scene links', () => {
   });
 
   it('checks what the link holds: JSON, then the scene', async () => {
-    expect(await decodeSceneLink(`#/s/${await deflate('{"version": 1,')}`)).toMatchObject({ ok: false, errors: [expect.stringMatching(/^\(root\): not valid JSON/)] });
+    expect(await decodeSceneLink(`#/s/${await deflate('{"version": 1,')}`)).toMatchObject({
+      ok: false,
+      errors: [expect.stringMatching(/^\(root\): not valid JSON/)],
+    });
     expect(await decodeSceneLink(`#/s/${await deflate('{"version": 1, "settings": {"supersampling": 40}}')}`)).toMatchObject({
       ok: false,
       errors: [expect.stringMatching(/^settings\.supersampling: /)],
@@ -64,7 +67,10 @@ describe('size problems in Dutch', () => {
     await speak('nl');
     const bomb = `#/s/${await deflate(' '.repeat(3 * 1024 * 1024))}`;
     expect(await decodeSceneLink(bomb)).toEqual({ ok: false, errors: ['uitgepakt is hij meer dan 2048 kB, groter dan welke scène ook'] });
-    expect(readSceneFile('{}', MAX_SCENE_FILE_BYTES + 1)).toEqual({ ok: false, errors: ['(root): het bestand is 2048 kB; een scènebestand is hooguit 2048 kB'] });
+    expect(readSceneFile('{}', MAX_SCENE_FILE_BYTES + 1)).toEqual({
+      ok: false,
+      errors: ['(root): het bestand is 2048 kB; een scènebestand is hooguit 2048 kB'],
+    });
     await speak('en');
   });
 });

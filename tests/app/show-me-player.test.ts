@@ -27,7 +27,12 @@ describe('show me: facts are performed through the UI, state changes dispatched'
   });
 
   it('has the ray debugger perform what it reports: go to a ray, click a term', () => {
-    const stepped: LabAction = { type: 'debugger.stepped', step: 3, of: 9, ray: { type: 'shadow', depth: 0, hit: true, objectId: 'ball', lightId: 'lamp', from: 'floor' } };
+    const stepped: LabAction = {
+      type: 'debugger.stepped',
+      step: 3,
+      of: 9,
+      ray: { type: 'shadow', depth: 0, hit: true, objectId: 'ball', lightId: 'lamp', from: 'floor' },
+    };
     const clicked: LabAction = { type: 'debugger.term-clicked', term: 'specular', lightId: 'lamp' };
     expect(kindOfAction(stepped)).toBe('fact');
     expect(showMeSteps([{ type: 'pixel.selected', pixel: [2, 2] }, stepped, clicked])).toEqual([

@@ -16,7 +16,7 @@ function level(): Level {
 }
 
 describe('which declared view is applied when', () => {
-  it('opens a level with its view and its first task\'s together, as one action', () => {
+  it("opens a level with its view and its first task's together, as one action", () => {
     const views = new TaskViews();
     const opened = level();
     expect(views.opened(opened, opened.tasks[0]!)).toEqual({
@@ -25,7 +25,7 @@ describe('which declared view is applied when', () => {
     });
   });
 
-  it('applies a task\'s view once, when it becomes current; a task without one leaves the view alone', () => {
+  it("applies a task's view once, when it becomes current; a task without one leaves the view alone", () => {
     const views = new TaskViews();
     const opened = level();
     views.opened(opened, opened.tasks[0]!);
@@ -35,7 +35,7 @@ describe('which declared view is applied when', () => {
     expect(views.changed(opened, opened.tasks[2]!)).toBeNull();
   });
 
-  it('ignores the game\'s changes while a level is opening, and starts afresh after it is left', () => {
+  it("ignores the game's changes while a level is opening, and starts afresh after it is left", () => {
     const views = new TaskViews();
     const opened = level();
     expect(views.changed(opened, opened.tasks[2]!)).toBeNull();
@@ -46,8 +46,8 @@ describe('which declared view is applied when', () => {
   });
 });
 
-describe('a task\'s view on top of its level\'s', () => {
-  it('keeps the level\'s way of looking unless the task has its own, and merges ray options', () => {
+describe("a task's view on top of its level's", () => {
+  it("keeps the level's way of looking unless the task has its own, and merges ray options", () => {
     expect(combineViews({ frame: ['ball'], from: [0, 1, 1], rays: { hideNoHit: true } }, { pixel: [0, 0], rays: { transparency: 0.5 } })).toEqual({
       frame: ['ball'],
       from: [0, 1, 1],

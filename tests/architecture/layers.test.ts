@@ -43,7 +43,9 @@ export function layerOf(path: string): string | undefined {
 
 /** Relative module specifiers of a file: static imports and exports, and import() calls. */
 export function importsOf(text: string): string[] {
-  const found = text.matchAll(/(?:^|\n)\s*(?:import|export)\s[^'"]*?from\s*['"](\.[^'"]+)['"]|(?:^|\n)\s*import\s*['"](\.[^'"]+)['"]|import\(\s*['"](\.[^'"]+)['"]\s*\)/g);
+  const found = text.matchAll(
+    /(?:^|\n)\s*(?:import|export)\s[^'"]*?from\s*['"](\.[^'"]+)['"]|(?:^|\n)\s*import\s*['"](\.[^'"]+)['"]|import\(\s*['"](\.[^'"]+)['"]\s*\)/g,
+  );
   return [...found].map((match) => match[1] ?? match[2] ?? match[3] ?? '');
 }
 
@@ -54,7 +56,9 @@ export function upwardImports(files: { path: string; text: string }[]): string[]
     const from = layerOf(path);
     if (!from) continue;
     for (const specifier of importsOf(text)) {
-      const target = relative(ROOT, resolve(ROOT, dirname(path), specifier)).split('\\').join('/');
+      const target = relative(ROOT, resolve(ROOT, dirname(path), specifier))
+        .split('\\')
+        .join('/');
       const to = layerOf(target);
       if (!to || to === from) continue;
       if (LAYERS[to]! >= LAYERS[from]!) wrong.push(`${path} -> ${target}`);
@@ -85,7 +89,11 @@ describe('the layers', () => {
       { path: 'src/tracer/a.ts', text: "const lazy = () => import('../ui/lab/rt-lab.ts');" },
       { path: 'src/ui/lab/panels/p.ts', text: "import '../../controls/rt-slider.ts';\nimport { storeContext } from '../store-context.ts';" },
     ];
-    expect(upwardImports(files)).toEqual(['src/quest/goal.ts -> src/app/store.ts', 'src/render/pool.ts -> src/quest/goal.ts', 'src/tracer/a.ts -> src/ui/lab/rt-lab.ts']);
+    expect(upwardImports(files)).toEqual([
+      'src/quest/goal.ts -> src/app/store.ts',
+      'src/render/pool.ts -> src/quest/goal.ts',
+      'src/tracer/a.ts -> src/ui/lab/rt-lab.ts',
+    ]);
   });
 
   it('knows the layer of every source folder', () => {

@@ -72,7 +72,11 @@ describe('assignment links', () => {
     if (result.ok) return;
     expect(result.kind).toBe('damaged');
     expect(result.reasons).toEqual(
-      expect.arrayContaining([expect.stringMatching(/^levels: must have at least 1/), expect.stringMatching(/^otherLevels: must be/), expect.stringMatching(/unknown field "extra"/)]),
+      expect.arrayContaining([
+        expect.stringMatching(/^levels: must have at least 1/),
+        expect.stringMatching(/^otherLevels: must be/),
+        expect.stringMatching(/unknown field "extra"/),
+      ]),
     );
   });
 
@@ -110,13 +114,19 @@ describe('assignment links', () => {
     const padded = `{"version": 1, "title": "x"${' '.repeat(5 * 1024 * 1024)}}`;
     const bomb = `#/a/1.${toBase64Url(await deflate(new TextEncoder().encode(padded)))}`;
     expect(bomb.length).toBeLessThan(20_000);
-    expect(await decodeAssignment(bomb, catalog)).toEqual({ ok: false, kind: 'damaged', reasons: ['it unpacks to more than 1024 kB, more than any assignment'] });
+    expect(await decodeAssignment(bomb, catalog)).toEqual({
+      ok: false,
+      kind: 'damaged',
+      reasons: ['it unpacks to more than 1024 kB, more than any assignment'],
+    });
   });
 
   it('refuses ids longer than 64 characters and more than 100 required tasks per level, quoting no long value', async () => {
     const long = 'a'.repeat(100_000);
     const tasks = Array.from({ length: 101 }, (_, i) => `t${i}`);
-    const result = await decodeAssignment(await encodeAssignment({ ...lesson, levels: [long, '01-introduction'], requiredTasks: { [long]: ['orbit'], '01-introduction': tasks } }));
+    const result = await decodeAssignment(
+      await encodeAssignment({ ...lesson, levels: [long, '01-introduction'], requiredTasks: { [long]: ['orbit'], '01-introduction': tasks } }),
+    );
     expect(result).toMatchObject({ ok: false, kind: 'damaged' });
     const reasons = result.ok ? [] : result.reasons;
     expect(reasons).toContain('levels[0]: must be at most 64 characters long');

@@ -22,9 +22,18 @@ const assignment: Assignment = {
 };
 
 describe('a preset on the teacher page', () => {
-  it('selects exactly the short path\'s levels, in its order, each with its own mandatory tasks', () => {
+  it("selects exactly the short path's levels, in its order, each with its own mandatory tasks", () => {
     const chosen = withPreset(assignment, corePreset!, levels);
-    expect(chosen.levels).toEqual(['01-introduction', '02-rays-from-the-camera', '03-shading', '04-shadows', '05-reflections', '10-area-lights', '11-anti-aliasing', '14-finding-your-way']);
+    expect(chosen.levels).toEqual([
+      '01-introduction',
+      '02-rays-from-the-camera',
+      '03-shading',
+      '04-shadows',
+      '05-reflections',
+      '10-area-lights',
+      '11-anti-aliasing',
+      '14-finding-your-way',
+    ]);
     expect(Object.keys(chosen.requiredTasks)).toEqual(chosen.levels);
     for (const id of chosen.levels) {
       const level = levels.find((candidate) => candidate.id === id)!;
@@ -33,7 +42,7 @@ describe('a preset on the teacher page', () => {
     }
   });
 
-  it('keeps the teacher\'s other choices, and leaves out a level this game cannot play', () => {
+  it("keeps the teacher's other choices, and leaves out a level this game cannot play", () => {
     const chosen = withPreset(assignment, { id: 'mixed', title: 'Mixed', levels: ['04-shadows', '99-not-made-yet', '01-introduction'] }, levels);
     expect(chosen).toEqual({
       ...assignment,

@@ -110,7 +110,10 @@ describe('the CSV column table', () => {
       .split('\n')
       .slice(2)
       .map((line) => /^\| `([^`]+)` \| (.*) \|$/.exec(line));
-    expect(rows.every((row) => row !== null), table).toBe(true);
+    expect(
+      rows.every((row) => row !== null),
+      table,
+    ).toBe(true);
     const listed = rows.map((row) => row![1]);
     expect(listed).toEqual([...ATTEMPT_COLUMNS.map((column) => column.name), 'survey_<question>']);
     for (const row of rows) expect(row![2].trim().length, row![1]).toBeGreaterThan(10);

@@ -101,7 +101,11 @@ describe('filters and the survey CSV', () => {
 
   it('lists the assignments and class codes, and shows one of them', () => {
     // A class code is part of the assignment: 3A, 3B and no code are three assignments.
-    expect(assignmentsOf(learners).map((assignment) => assignment.learners).sort()).toEqual([1, 1, 2]);
+    expect(
+      assignmentsOf(learners)
+        .map((assignment) => assignment.learners)
+        .sort(),
+    ).toEqual([1, 1, 2]);
     expect(classCodesOf(learners)).toEqual(['', '3A', '3B']);
     expect(filterLearners(learners, { assignmentId: null, classCode: '3A' }).map((learner) => learner.participant)).toEqual(['P01', 'P02']);
     const threeB = learners.find((learner) => learner.classCode === '3B')!;

@@ -39,7 +39,13 @@ describe('reading one dropped file for the dashboard', () => {
     const fromJson = readExportFile('p01.json', json(good));
     if (!fromCsv.ok || !fromJson.ok) throw new Error('both should read');
     expect(fromCsv.record.attempts).toEqual(fromJson.record.attempts);
-    expect(fromCsv.record).toMatchObject({ participant: 'P01', assignment: CLASS_ASSIGNMENT.title, assignmentId: fromJson.record.assignmentId, visits: [], survey: null });
+    expect(fromCsv.record).toMatchObject({
+      participant: 'P01',
+      assignment: CLASS_ASSIGNMENT.title,
+      assignmentId: fromJson.record.assignmentId,
+      visits: [],
+      survey: null,
+    });
     expect(fromCsv.record).toMatchObject({ learnerId: 'P01', attemptId: good.learner.attemptId, installId: good.learner.installId, classCode: '' });
     expect(fromJson.record).toMatchObject({ learnerId: 'P01', attemptId: good.learner.attemptId, installId: good.learner.installId });
   });
@@ -57,7 +63,9 @@ describe('reading one dropped file for the dashboard', () => {
     expect(reason('photo.png', '\u0089PNG\r\n\u001a\n\u0000\u0000')).toMatch(/not a text file/);
     expect(reason('notes.txt', 'hello there')).toMatch(/not a Ray Tracer Quest export/);
     expect(reason('list.json', '[1, 2]')).toMatch(/holds no JSON object/);
-    expect(reason('p.xapi.json', json([{ actor: { objectType: 'Agent' }, verb: { id: 'x' }, object: {} }]))).toMatch(/^xAPI statements, which are for a school's learning record store/);
+    expect(reason('p.xapi.json', json([{ actor: { objectType: 'Agent' }, verb: { id: 'x' }, object: {} }]))).toMatch(
+      /^xAPI statements, which are for a school's learning record store/,
+    );
     expect(reason('scene.json', json({ version: 1, objects: [] }))).toMatch(/no "format": "ray-tracer-quest-export"/);
     expect(reason('progress.json', json({ kind: 'ray-tracer-quest-progress', version: 1 }))).toMatch(/a saved progress file, not an export/);
     expect(reason('future.json', json({ ...good, version: 2 }))).toMatch(/newer version of the app \(export version 2\)/);
@@ -74,7 +82,9 @@ describe('reading one dropped file for the dashboard', () => {
   });
 
   it('names the damage in a CSV export', () => {
-    expect(reason('a.csv', 'participant,level\nP1,L1\n')).toBe('not a Ray Tracer Quest CSV export (no column "task", "started_at", "duration_ms", "active_ms")');
+    expect(reason('a.csv', 'participant,level\nP1,L1\n')).toBe(
+      'not a Ray Tracer Quest CSV export (no column "task", "started_at", "duration_ms", "active_ms")',
+    );
     const header = 'participant,level,task,started_at,duration_ms,active_ms\n';
     expect(reason('a.csv', `${header}P1,L1,a,2026-03-09T09:00:00Z,ten,5\n`)).toBe('damaged CSV: line 2: duration_ms must be a number of at least 0, got "ten"');
     expect(reason('a.csv', `${header}P1,L1,a,yesterday,10,5\n`)).toBe('damaged CSV: line 2: started_at is not a date');

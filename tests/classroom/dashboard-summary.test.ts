@@ -55,7 +55,18 @@ describe('the class summary', () => {
   it('counts per task: learners, how they finished, hints, and the times of those who completed', () => {
     const [level] = summarizeLevels(records);
     const [x, y] = level.tasks;
-    expect(x).toMatchObject({ task: 'x', mandatory: true, learners: 4, done: 2, shown: 1, skipped: 0, hintsText: 2, hintsGuidance: 1, learnersWithHints: 2, learnersNeedingHelp: 3 });
+    expect(x).toMatchObject({
+      task: 'x',
+      mandatory: true,
+      learners: 4,
+      done: 2,
+      shown: 1,
+      skipped: 0,
+      hintsText: 2,
+      hintsGuidance: 1,
+      learnersWithHints: 2,
+      learnersNeedingHelp: 3,
+    });
     expect(x.times).toEqual([30_000, 40_000, 60_000]);
     expect(x.stats).toMatchObject({ median: 40_000, q1: 35_000, q3: 50_000 });
     expect(completionRate(x)).toBe(0.75);
@@ -68,7 +79,10 @@ describe('the class summary', () => {
   });
 
   it('without level events (a CSV export), passing is completing every mandatory task', () => {
-    const fromCsv = [record('P1', [attempt('x', 1000, null), attempt('x', 2000, 'done'), attempt('y', 1, null, { mandatory: false })], null), record('P2', [attempt('x', 1000, null)], null)];
+    const fromCsv = [
+      record('P1', [attempt('x', 1000, null), attempt('x', 2000, 'done'), attempt('y', 1, null, { mandatory: false })], null),
+      record('P2', [attempt('x', 1000, null)], null),
+    ];
     expect(summarizeLevels(fromCsv)[0]).toMatchObject({ learners: 2, passed: 1, times: [3001] });
   });
 
@@ -78,7 +92,10 @@ describe('the class summary', () => {
   });
 
   it('counts survey answers per step, option and number; lists remarks; names unknown surveys', () => {
-    const answers = (value: number, extra = {}) => ({ id: 'default', answers: { 'learned-soft-shadows': value, ease: 'about-right', minutes: value * 10, ...extra } });
+    const answers = (value: number, extra = {}) => ({
+      id: 'default',
+      answers: { 'learned-soft-shadows': value, ease: 'about-right', minutes: value * 10, ...extra },
+    });
     const { surveys, unknown } = summarizeSurveys(
       [
         record('P1', [], null, answers(5, { feedback: 'Great' })),
@@ -105,7 +122,11 @@ describe('a class of files', () => {
   const files = simulatedClassFiles(30);
 
   it('reads 30 exports, skips a damaged file and a duplicate with their reasons', () => {
-    const read = readClassFiles([...files, { name: 'broken.json', text: '{"format": "ray-tracer-quest-export", ' }, { name: 'copy.json', text: files[3].text }]);
+    const read = readClassFiles([
+      ...files,
+      { name: 'broken.json', text: '{"format": "ray-tracer-quest-export", ' },
+      { name: 'copy.json', text: files[3].text },
+    ]);
     expect(read.records).toHaveLength(30);
     expect(read.skipped).toEqual([
       { file: 'broken.json', reason: 'the file is damaged', detail: expect.stringMatching(/^\(root\): not valid JSON at line 1/) },

@@ -104,7 +104,22 @@ describe('CSV export', () => {
   it('starts with a byte-order mark and the header, with CRLF line ends', () => {
     expect(text.startsWith(`\uFEFF${[...CSV_COLUMNS, ...questions].join(',')}\r\n`)).toBe(true);
     expect(text.endsWith('\r\n')).toBe(true);
-    for (const column of ['participant', 'assignment', 'level', 'task', 'mandatory', 'started_at', 'completed_at', 'duration_ms', 'active_ms', 'hints_text', 'hints_guidance', 'shown_by_app', 'attempts', 'points']) {
+    for (const column of [
+      'participant',
+      'assignment',
+      'level',
+      'task',
+      'mandatory',
+      'started_at',
+      'completed_at',
+      'duration_ms',
+      'active_ms',
+      'hints_text',
+      'hints_guidance',
+      'shown_by_app',
+      'attempts',
+      'points',
+    ]) {
       expect(CSV_COLUMNS).toContain(column);
     }
   });
@@ -122,16 +137,39 @@ describe('CSV export', () => {
   it('has one row per task attempt with times, hints and how it ended', () => {
     const rows = csvRows(text);
     // The optional task is timed only from its first move, in the second visit; the optional info step never.
-    expect(rows.map((row) => `${row.task}#${row.attempts}:${row.how}`)).toEqual(['orbit#1:done', 'select#1:', 'select#2:shown', 'extra#1:skipped', 'guess#1:done', 'read#1:']);
+    expect(rows.map((row) => `${row.task}#${row.attempts}:${row.how}`)).toEqual([
+      'orbit#1:done',
+      'select#1:',
+      'select#2:shown',
+      'extra#1:skipped',
+      'guess#1:done',
+      'read#1:',
+    ]);
     const [orbit, select1, select2, extra, guess, read] = rows;
-    expect(orbit).toMatchObject({ mandatory: 'true', started_at: '2025-03-04T09:00:01.000Z', completed_at: '2025-03-04T09:00:31.000Z', duration_ms: '30000', hints_text: '1', hints_guidance: '0', shown_by_app: 'false', points: '10' });
+    expect(orbit).toMatchObject({
+      mandatory: 'true',
+      started_at: '2025-03-04T09:00:01.000Z',
+      completed_at: '2025-03-04T09:00:31.000Z',
+      duration_ms: '30000',
+      hints_text: '1',
+      hints_guidance: '0',
+      shown_by_app: 'false',
+      points: '10',
+    });
     // Unfinished: the level was closed. Its ring came by itself (an older log): offered, not opened.
     expect(select1).toMatchObject({ completed_at: '', duration_ms: '9000', hints_guidance: '0', hints_offered: '1', hints_opened: '0' });
     expect(select2).toMatchObject({ shown_by_app: 'true', duration_ms: '3500', points: '0', quiz_correct: '' });
     expect(extra).toMatchObject({ mandatory: 'false', started_at: '2025-03-04T09:00:51.000Z', duration_ms: '3000' });
     expect(guess).toMatchObject({ kind: 'quiz', quiz_answers: '1', quiz_correct: 'false', points: '5' });
     // Hints asked for and offered ones opened count as opened; an offer left alone only as offered.
-    expect(rows.map((row) => `${row.task}#${row.attempts}:${row.hints_offered}/${row.hints_opened}`)).toEqual(['orbit#1:0/1', 'select#1:1/0', 'select#2:1/1', 'extra#1:0/0', 'guess#1:1/0', 'read#1:0/0']);
+    expect(rows.map((row) => `${row.task}#${row.attempts}:${row.hints_offered}/${row.hints_opened}`)).toEqual([
+      'orbit#1:0/1',
+      'select#1:1/0',
+      'select#2:1/1',
+      'extra#1:0/0',
+      'guess#1:1/0',
+      'read#1:0/0',
+    ]);
     // An info step is read, not done: never mandatory, even when it is required.
     expect(read).toMatchObject({ kind: 'info', mandatory: 'false' });
   });
@@ -147,7 +185,8 @@ describe('CSV export', () => {
   it('puts the survey answers in one column per question, on each row', () => {
     const rows = csvRows(text);
     expect(Object.keys(rows[0]).filter((column) => column.startsWith('survey_'))).toEqual(questions);
-    for (const row of rows) expect(row).toMatchObject({ survey: 'default', 'survey_computer-skill': '7', survey_feedback: 'Nice, "really"', survey_education: '' });
+    for (const row of rows)
+      expect(row).toMatchObject({ survey: 'default', 'survey_computer-skill': '7', survey_feedback: 'Nice, "really"', survey_education: '' });
     // Not answered yet: the assignment's survey columns are there, empty.
     const [before] = csvRows(exportCsv(input({ survey: null })));
     expect(before).toMatchObject({ survey: '', 'survey_computer-skill': '' });
@@ -182,7 +221,9 @@ describe('JSON export', () => {
     expect(data.events).toEqual({ startedAt: START, events });
     expect(data.progress.points).toBe(10);
     // The CSV's rows, for a reader who wants per-task figures without reading the events.
-    expect(data.attempts.map(({ task, hintsText, hintsGuidance, hintsOffered, hintsOpened }) => ({ task, hintsText, hintsGuidance, hintsOffered, hintsOpened }))).toEqual([
+    expect(
+      data.attempts.map(({ task, hintsText, hintsGuidance, hintsOffered, hintsOpened }) => ({ task, hintsText, hintsGuidance, hintsOffered, hintsOpened })),
+    ).toEqual([
       { task: 'orbit', hintsText: 1, hintsGuidance: 0, hintsOffered: 0, hintsOpened: 1 },
       { task: 'select', hintsText: 0, hintsGuidance: 0, hintsOffered: 1, hintsOpened: 0 },
       { task: 'select', hintsText: 1, hintsGuidance: 0, hintsOffered: 1, hintsOpened: 1 },
@@ -250,7 +291,12 @@ describe('xAPI export', () => {
       // Answered wrong: completed, not a success.
       ['guess', false, 5, 'PT1S'],
     ]);
-    expect(completed.map((s) => [s.result?.extensions?.['https://raytracerquest.example/extensions/hints-offered'], s.result?.extensions?.['https://raytracerquest.example/extensions/hints-opened']])).toEqual([
+    expect(
+      completed.map((s) => [
+        s.result?.extensions?.['https://raytracerquest.example/extensions/hints-offered'],
+        s.result?.extensions?.['https://raytracerquest.example/extensions/hints-opened'],
+      ]),
+    ).toEqual([
       [0, 1],
       [1, 1],
       [1, 0],
@@ -290,7 +336,7 @@ describe('xAPI export', () => {
     expect(first.context.language).toBe('en');
   });
 
-  it('uses the school\'s home page for accounts and tells two playthroughs apart', () => {
+  it("uses the school's home page for accounts and tells two playthroughs apart", () => {
     const school = exportXapi(input({ assignment: { ...assignment, xapiHomePage: 'https://school.example' } }));
     expect(new Set(school.map((s) => s.actor.account.homePage))).toEqual(new Set(['https://school.example']));
     const again = exportXapi(input({ attemptId: '66666666-7777-4888-9999-bbbbbbbbbbbb' }));

@@ -34,9 +34,20 @@ describe('survey files', () => {
   });
 
   it('explains what is wrong in a broken survey file', () => {
-    const broken = { version: 1, id: 'x', title: 'T', questions: [{ id: 'a', type: 'scale', text: 'Q', min: 5, max: 1, minLabel: 'lo', maxLabel: 'hi' }, { id: 'a', type: 'text', text: 'Q' }] };
+    const broken = {
+      version: 1,
+      id: 'x',
+      title: 'T',
+      questions: [
+        { id: 'a', type: 'scale', text: 'Q', min: 5, max: 1, minLabel: 'lo', maxLabel: 'hi' },
+        { id: 'a', type: 'text', text: 'Q' },
+      ],
+    };
     const result = parseSurvey(broken);
-    expect(result).toEqual({ ok: false, errors: ['questions[0].max: max must be above min, with at most 11 steps', 'questions[1].id: "a" is used more than once'] });
+    expect(result).toEqual({
+      ok: false,
+      errors: ['questions[0].max: max must be above min, with at most 11 steps', 'questions[1].id: "a" is used more than once'],
+    });
   });
 });
 
@@ -59,7 +70,16 @@ describe('survey answers', () => {
     id: 't',
     title: 'T',
     questions: [
-      { id: 'pick', type: 'choice', text: 'Pick', required: true, options: [{ id: 'a', text: 'A' }, { id: 'b', text: 'B' }] },
+      {
+        id: 'pick',
+        type: 'choice',
+        text: 'Pick',
+        required: true,
+        options: [
+          { id: 'a', text: 'A' },
+          { id: 'b', text: 'B' },
+        ],
+      },
       { id: 'rate', type: 'scale', text: 'Rate', required: true, min: 1, max: 5, minLabel: 'lo', maxLabel: 'hi' },
       { id: 'age', type: 'number', text: 'Age', required: false, min: 6, max: 120, integer: true },
       { id: 'say', type: 'text', text: 'Say', required: false, maxLength: 5 },
@@ -84,7 +104,7 @@ describe('survey answers', () => {
     });
   });
 
-  it('keeps only the survey\'s own answers, trimmed', () => {
+  it("keeps only the survey's own answers, trimmed", () => {
     expect(cleanAnswers(survey, { pick: 'a', rate: 2, say: '  hi ', other: 'x', age: '' as unknown as number })).toEqual({ pick: 'a', rate: 2, say: 'hi' });
   });
 });
@@ -108,7 +128,10 @@ describe('survey store', () => {
     const storage = new MemoryStorage();
     const raw = '{"survey": 3';
     storage.setItem(surveyKey('k'), raw);
-    expect(loadSurvey(storage, 'k', wallMs)).toEqual({ submission: null, damage: { lost: ['survey', 'submittedAt'], cut: true, raw, backupKey: backupKey('k') } });
+    expect(loadSurvey(storage, 'k', wallMs)).toEqual({
+      submission: null,
+      damage: { lost: ['survey', 'submittedAt'], cut: true, raw, backupKey: backupKey('k') },
+    });
     expect(storage.getItem(backupKey('k'))).toBe(raw);
   });
 
@@ -134,7 +157,11 @@ describe('survey store', () => {
   });
 
   it('asks again when the survey or its time cannot be read', () => {
-    expect(readSurveyText(JSON.stringify({ ...submission, submittedAt: 'yesterday' }))).toMatchObject({ submission: null, damaged: true, lost: ['submittedAt'] });
+    expect(readSurveyText(JSON.stringify({ ...submission, submittedAt: 'yesterday' }))).toMatchObject({
+      submission: null,
+      damaged: true,
+      lost: ['submittedAt'],
+    });
     expect(readSurveyText(JSON.stringify({ ...submission, survey: '' }))).toMatchObject({ submission: null, lost: ['survey'] });
     expect(readSurveyText(JSON.stringify({ ...submission, answers: [1] }))).toMatchObject({ submission: { answers: {} }, lost: ['answers'] });
     expect(readSurveyText('null')).toMatchObject({ submission: null, damaged: true });

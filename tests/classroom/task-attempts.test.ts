@@ -112,7 +112,10 @@ describe('reading a learner’s log as task attempts', () => {
   });
 
   it('times what is still open at export up to the last event', () => {
-    const { attempts, visits } = readLog({ startedAt, events: [{ t: 0, type: 'level.opened', level: 'L1' }, task(1000, 'a'), { t: 4000, type: 'tab.hidden' }] });
+    const { attempts, visits } = readLog({
+      startedAt,
+      events: [{ t: 0, type: 'level.opened', level: 'L1' }, task(1000, 'a'), { t: 4000, type: 'tab.hidden' }],
+    });
     expect(attempts[0]).toMatchObject({ how: null, durationMs: 3000, activeMs: 3000 });
     expect(visits[0]).toMatchObject({ durationMs: 4000, passed: false });
   });

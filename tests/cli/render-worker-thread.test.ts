@@ -20,7 +20,12 @@ describe('a render worker started ahead of its pool', () => {
       expect(takePrestartedRenderWorker()).toBeNull();
       const result = (await pool.render(scene, NO_MESHES, { width: 24, height: 16, preview: false }).done) as FinishedRender;
       expect(result.cancelled).toBe(false);
-      const expected = renderTile(buildTracerScene(scene, NO_MESHES), { x: 0, y: 0, width: 24, height: 16 }, { imageWidth: 24, imageHeight: 16, seed: 0 }, emptyRayStats());
+      const expected = renderTile(
+        buildTracerScene(scene, NO_MESHES),
+        { x: 0, y: 0, width: 24, height: 16 },
+        { imageWidth: 24, imageHeight: 16, seed: 0 },
+        emptyRayStats(),
+      );
       expect(new Uint8Array(result.rgb.buffer)).toEqual(new Uint8Array(expected.buffer));
     } finally {
       pool.dispose();

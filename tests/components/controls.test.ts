@@ -75,7 +75,7 @@ describe('rt-slider', () => {
     await expect.element(page.elementLocator(slider).getByText('Type a whole number between 1 and 64')).toBeVisible();
   });
 
-  it('shows its owner\'s value when the owner refuses a change', async () => {
+  it("shows its owner's value when the owner refuses a change", async () => {
     const slider = await mount('rt-slider', { ...setup, value: 4 });
     const changes = record<ValueDetail<number>>(slider, 'change');
     (page.elementLocator(slider).getByRole('slider').element() as HTMLElement).focus();

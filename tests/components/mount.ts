@@ -8,7 +8,10 @@ import { GuideRegistry } from '../../src/ui/lab/guide-host.ts';
 
 const mounted: Element[] = [];
 
-export async function mount<Tag extends keyof HTMLElementTagNameMap>(tag: Tag, properties: Partial<HTMLElementTagNameMap[Tag]> = {}): Promise<HTMLElementTagNameMap[Tag]> {
+export async function mount<Tag extends keyof HTMLElementTagNameMap>(
+  tag: Tag,
+  properties: Partial<HTMLElementTagNameMap[Tag]> = {},
+): Promise<HTMLElementTagNameMap[Tag]> {
   const element = document.createElement(tag);
   Object.assign(element, properties);
   document.body.append(element);

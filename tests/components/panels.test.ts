@@ -45,7 +45,7 @@ function control(guides: GuideRegistry, target: string) {
 }
 
 describe('each panel draws a guide id for each of its declared controls', () => {
-  it('light: the shared controls, a spot light\'s and an area light\'s', async () => {
+  it("light: the shared controls, a spot light's and an area light's", async () => {
     const drawn = new Set<string>();
     for (const id of ['spot', 'lamp']) {
       const { guides } = await mountPanel('rt-light-panel', storeWith(selectLight(id)));
@@ -70,7 +70,7 @@ describe('each panel draws a guide id for each of its declared controls', () => 
     }
   });
 
-  it('draws only the controls a level names (level 8\'s spot light)', async () => {
+  it("draws only the controls a level names (level 8's spot light)", async () => {
     const shown = ['type', 'spot-angle', 'angle-attenuation', 'intensity'];
     const { guides } = await mountPanel('rt-light-panel', storeWith(selectLight('spot')), { shownControls: shown });
     expect(drawnIds('light', guides)).toEqual(LAB_CONTROLS.light.filter((id) => shown.includes(id)).map((id) => `light.${id}`));
@@ -119,7 +119,7 @@ describe('a control under a name its panel does not declare', () => {
 describe('the light panel', () => {
   const spot = (store: Store) => store.state.scene.lights.find((light) => light.id === 'spot')!;
 
-  it('sets the spot angle by keyboard, within the scene\'s limits', async () => {
+  it("sets the spot angle by keyboard, within the scene's limits", async () => {
     const store = storeWith(selectLight('spot'));
     const { guides } = await mountPanel('rt-light-panel', store);
     const slider = control(guides, 'light.spot-angle').getByRole('slider');
@@ -131,7 +131,7 @@ describe('the light panel', () => {
     await expect.element(slider).toHaveValue(String(LIMITS.spotAngle[1]));
   });
 
-  it('clamps a typed intensity to the schema\'s range, beyond the slider\'s', async () => {
+  it("clamps a typed intensity to the schema's range, beyond the slider's", async () => {
     const store = storeWith(selectLight('spot'));
     const { guides } = await mountPanel('rt-light-panel', store);
     const field = control(guides, 'light.intensity').getByRole('textbox');
@@ -187,7 +187,7 @@ describe('the object panel', () => {
 });
 
 describe('the ray tracer panel (camera and image)', () => {
-  it('steps supersampling and the screen\'s columns by keyboard', async () => {
+  it("steps supersampling and the screen's columns by keyboard", async () => {
     const store = storeWith();
     const { guides } = await mountPanel('rt-tracer-panel', store);
     const supersampling = control(guides, 'tracer.supersampling').getByRole('slider');
@@ -202,7 +202,7 @@ describe('the ray tracer panel (camera and image)', () => {
     expect(store.state.scene.camera.pixels).toEqual([before[0] - 1, before[1]]);
   });
 
-  it('sets the rendered image\'s size, clamped to what the browser can hold, with the reason', async () => {
+  it("sets the rendered image's size, clamped to what the browser can hold, with the reason", async () => {
     const store = storeWith();
     const { panel } = await mountPanel('rt-tracer-panel', store);
     const size = page.elementLocator(panel).getByRole('group', { name: 'Image size (px)' });

@@ -49,7 +49,10 @@ describe('the debugger’s steps over a pixel’s trace', async () => {
   const mirrorPixel = pixelWith(await tracesOf(mirrorScene), (node) => node.type === 'reflect' && node.hit);
   const glassPixel = pixelWith(await tracesOf(glassScene), (node) => node.type === 'refract');
 
-  for (const [name, scene, trace] of [['mirror', mirrorScene, mirrorPixel], ['glass', glassScene, glassPixel]] as const) {
+  for (const [name, scene, trace] of [
+    ['mirror', mirrorScene, mirrorPixel],
+    ['glass', glassScene, glassPixel],
+  ] as const) {
     it(`${name}: every ray is cast once, in the tracer's depth-first order, and the last step averages the pixel`, () => {
       const program = debugProgram(trace, scene);
       const cast = program.steps.filter((step) => step.kind === 'cast' || step.kind === 'light').map((step) => step.ray);

@@ -124,14 +124,18 @@ function checkPixel(program: DebugProgram, scene: Scene, image: Color): void {
     const lightSteps = steps.flatMap((candidate, index) => (candidate.kind === 'light' && candidate.hit === hit ? [index] : []));
     let previous: Color[] | null = null;
     for (const at of lightSteps) {
-      const diffuse = equationAt(program, at, scene)!.terms.filter((term) => term.kind === 'diffuse').map((term) => term.color);
+      const diffuse = equationAt(program, at, scene)!
+        .terms.filter((term) => term.kind === 'diffuse')
+        .map((term) => term.color);
       if (previous) for (const [i, color] of diffuse.entries()) expect(color.every((value, c) => value >= previous![i][c])).toBe(true);
       previous = diffuse;
     }
     const final = equationAt(program, steps.indexOf(step), scene)!;
     expect(final.complete).toBe(true);
     const full = equationOf(hit, scene)!;
-    expect(final.terms.filter((term) => term.kind === 'diffuse').map((term) => term.color)).toEqual(full.terms.filter((term) => term.kind === 'diffuse').map((term) => term.color));
+    expect(final.terms.filter((term) => term.kind === 'diffuse').map((term) => term.color)).toEqual(
+      full.terms.filter((term) => term.kind === 'diffuse').map((term) => term.color),
+    );
     expect(near(final.sum, full.sum, 1e-12)).toBe(true);
   }
 }
@@ -171,7 +175,13 @@ describe('a pixel with everything at once: supersampled, a lens, a shutter, roug
     settings: { maxDepth: 2, background: [0.6, 0.7, 0.9], supersampling: 2, samplePattern: 'jittered', timeSamples: 2 },
     objects: [
       { id: 'floor', shape: 'plane', scale: [10, 1, 10], material: matte([0.8, 0.8, 0.8], { ambient: 0.1, specular: 0.3, roughness: 0.2, glossySamples: 2 }) },
-      { id: 'ball', shape: 'sphere', position: [-0.3, 0.5, -0.3], velocity: [0.5, 0, 0], material: matte([0.9, 0.2, 0.1], { ambient: 0.2, specular: 0.5, roughness: 0.2 }) },
+      {
+        id: 'ball',
+        shape: 'sphere',
+        position: [-0.3, 0.5, -0.3],
+        velocity: [0.5, 0, 0],
+        material: matte([0.9, 0.2, 0.1], { ambient: 0.2, specular: 0.5, roughness: 0.2 }),
+      },
     ],
     lights: [{ id: 'panel', type: 'area', position: [0, 3, 0], size: [1, 1], samples: 2, ambient: 0.1 }],
   });

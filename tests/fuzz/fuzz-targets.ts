@@ -166,7 +166,10 @@ export function inputsFor(target: FuzzTarget): fc.Arbitrary<FuzzInput> {
   const text = (value: string): FuzzInput => ({ text: value, raw: false });
   return fc.oneof(
     { weight: 1, arbitrary: fc.constant(text(sampleText)) },
-    { weight: 10, arbitrary: fc.tuple(fc.nat(), changeArbitrary).map(([pick, change]) => text(JSON.stringify(changed(target.sample, pick, change)) ?? 'null')) },
+    {
+      weight: 10,
+      arbitrary: fc.tuple(fc.nat(), changeArbitrary).map(([pick, change]) => text(JSON.stringify(changed(target.sample, pick, change)) ?? 'null')),
+    },
     { weight: 2, arbitrary: fc.nat({ max: sampleText.length }).map((cut) => text(sampleText.slice(0, cut))) },
     { weight: 2, arbitrary: fc.json({ maxDepth: 4 }).map(text) },
     { weight: 1, arbitrary: fc.string({ maxLength: 200 }).map((value): FuzzInput => ({ text: value, raw: true })) },

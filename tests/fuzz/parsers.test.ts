@@ -9,11 +9,14 @@ const CASES = 1000;
 const targets = await fuzzTargets();
 
 describe('fuzzed parsers', () => {
-  it.each(targets.map((target) => [target.name, target] as const))('%s: every case is accepted or refused with reasons, none crashes or hangs', async (_, target) => {
-    const tally = await fuzz(target, CASES);
-    expect(tally.firstProblem).toBeNull();
-    expect({ crashed: tally.crashed, hangs: tally.hangs, cases: tally.cases }).toEqual({ crashed: 0, hangs: 0, cases: CASES });
-    expect(tally.accepted).toBeGreaterThan(0);
-    expect(tally.refused).toBeGreaterThan(0);
-  });
+  it.each(targets.map((target) => [target.name, target] as const))(
+    '%s: every case is accepted or refused with reasons, none crashes or hangs',
+    async (_, target) => {
+      const tally = await fuzz(target, CASES);
+      expect(tally.firstProblem).toBeNull();
+      expect({ crashed: tally.crashed, hangs: tally.hangs, cases: tally.cases }).toEqual({ crashed: 0, hangs: 0, cases: CASES });
+      expect(tally.accepted).toBeGreaterThan(0);
+      expect(tally.refused).toBeGreaterThan(0);
+    },
+  );
 });

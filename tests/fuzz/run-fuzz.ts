@@ -17,6 +17,7 @@ for (const target of await fuzzTargets()) {
 const header = ['parser', 'cases', 'clean errors', 'accepted', 'crashes', `hangs (>${HANG_MS} ms)`, 'slowest ms'];
 const table = [header, ...rows.map((row) => [row.name, row.cases, row.refused, row.accepted, row.crashed, row.hangs, row.slowestMs.toFixed(1)].map(String))];
 const widths = header.map((_, column) => Math.max(...table.map((row) => row[column].length)));
-for (const row of table) process.stdout.write(`${row.map((cell, column) => (column === 0 ? cell.padEnd(widths[column]) : cell.padStart(widths[column]))).join('  ')}\n`);
+for (const row of table)
+  process.stdout.write(`${row.map((cell, column) => (column === 0 ? cell.padEnd(widths[column]) : cell.padStart(widths[column]))).join('  ')}\n`);
 for (const row of rows) if (row.firstProblem) process.stdout.write(`${row.name}: ${row.firstProblem}\n`);
 process.exitCode = rows.some((row) => row.crashed > 0 || row.hangs > 0) ? 1 : 0;

@@ -48,8 +48,13 @@ describe('the Dutch catalogue', () => {
   });
 
   it('has a Dutch translation for every message (add it to xliff/nl.xlf, then run npm run i18n:build)', () => {
-    const translated = new Set((localizer.readTranslationsSync().translations.get(TARGET) ?? []).filter((message) => text(message).trim() !== '').map((message) => message.name));
-    const missing = localizer.extractSourceMessages().messages.filter((message) => !translated.has(message.name)).map((message) => `${message.file.fileName.slice(root.length + 1)}: ${text(message)}`);
+    const translated = new Set(
+      (localizer.readTranslationsSync().translations.get(TARGET) ?? []).filter((message) => text(message).trim() !== '').map((message) => message.name),
+    );
+    const missing = localizer
+      .extractSourceMessages()
+      .messages.filter((message) => !translated.has(message.name))
+      .map((message) => `${message.file.fileName.slice(root.length + 1)}: ${text(message)}`);
     expect(missing).toEqual([]);
   });
 

@@ -28,7 +28,7 @@ function errorsOf(text: string): string[] {
 }
 
 describe('a broken scene file in English', () => {
-  it('keeps the schema\'s own lines', () => {
+  it("keeps the schema's own lines", () => {
     const errors = errorsOf(brokenScene);
     expect(errors.map(issueText)).toEqual(errors);
   });
@@ -59,11 +59,15 @@ describe('a broken scene file in Dutch', () => {
   });
 
   it('says where a file stops being JSON in Dutch', () => {
-    expect(errorsOf('{ "version": 1,\n  "camera": }').map(issueText)).toEqual(['(het geheel): geen geldige JSON op regel 2, kolom 13: verwacht werd een waarde, maar er staat "}"']);
-    expect(errorsOf('{ "version": 1').map(issueText)).toEqual(['(het geheel): geen geldige JSON op regel 1, kolom 15: verwacht werd "," of "}", maar er staat het einde van de tekst']);
+    expect(errorsOf('{ "version": 1,\n  "camera": }').map(issueText)).toEqual([
+      '(het geheel): geen geldige JSON op regel 2, kolom 13: verwacht werd een waarde, maar er staat "}"',
+    ]);
+    expect(errorsOf('{ "version": 1').map(issueText)).toEqual([
+      '(het geheel): geen geldige JSON op regel 1, kolom 15: verwacht werd "," of "}", maar er staat het einde van de tekst',
+    ]);
   });
 
-  it('says a broken level\'s reasons in Dutch', () => {
+  it("says a broken level's reasons in Dutch", () => {
     const level = JSON.parse(readFileSync(new URL('../../levels/02-rays-from-the-camera.level.json', import.meta.url), 'utf8')) as {
       id: string;
       tasks: { id: string; mandatory?: boolean }[];
@@ -75,7 +79,9 @@ describe('a broken scene file in Dutch', () => {
       if (result.ok) throw new Error('the broken level was accepted');
       return result.errors.map(issueText);
     };
-    expect(wrong((copy) => (copy.id = 'Rays 2'))).toEqual(['id: moet bestaan uit kleine letters en cijfers met "-" ertussen, zoals "rays-from-the-camera", maar is "Rays 2"']);
+    expect(wrong((copy) => (copy.id = 'Rays 2'))).toEqual([
+      'id: moet bestaan uit kleine letters en cijfers met "-" ertussen, zoals "rays-from-the-camera", maar is "Rays 2"',
+    ]);
     const firstId = level.tasks[0]!.id;
     expect(
       wrong((copy) => {
@@ -91,7 +97,9 @@ describe('a broken scene file in Dutch', () => {
     expect(issueText('with: must be a colour of some sort, got 3')).toBe('with: must be a colour of some sort, got 3');
     expect(issueText('options: unknown field "glow", try "shine"')).toBe('options: unknown field "glow", try "shine"');
     // Reasons joined by "; " are said one by one, each known one in Dutch.
-    expect(issueText('rays: unknown field "glow" (known: shadows, depth); depth must be deep, got 3')).toBe('rays: onbekend veld "glow" (bekend zijn: shadows, depth); depth must be deep, got 3');
+    expect(issueText('rays: unknown field "glow" (known: shadows, depth); depth must be deep, got 3')).toBe(
+      'rays: onbekend veld "glow" (bekend zijn: shadows, depth); depth must be deep, got 3',
+    );
     expect(issueText('shape: must be "mesh", got "cube"')).toBe('shape: moet "mesh" zijn, maar is "cube"');
     expect(issueLines('camera.fov: must be at least 1, got nothing\nobjects: must have at most 64 items, got a list of 70 items')).toBe(
       'camera.fov: moet minstens 1 zijn, maar is niets\nobjects: mag hoogstens 64 elementen hebben, maar is een lijst met 70 elementen',

@@ -28,7 +28,9 @@ function englishLabelsIn(dutch: string): string[] {
 function dutchTexts(value: unknown, path: string): { path: string; text: string }[] {
   if (Array.isArray(value)) return value.flatMap((item, index) => dutchTexts(item, `${path}[${index}]`));
   if (typeof value !== 'object' || value === null) return [];
-  return Object.entries(value).flatMap(([key, item]) => (key === 'nl' && typeof item === 'string' ? [{ path, text: item }] : dutchTexts(item, `${path}.${key}`)));
+  return Object.entries(value).flatMap(([key, item]) =>
+    key === 'nl' && typeof item === 'string' ? [{ path, text: item }] : dutchTexts(item, `${path}.${key}`),
+  );
 }
 
 const levelsFolder = new URL('../../levels/', import.meta.url);

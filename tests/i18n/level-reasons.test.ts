@@ -86,7 +86,8 @@ const LEVEL_MISTAKES: Record<string, (level: Level) => void> = {
   'a view framing rays without a pixel': (level) => (level.tasks[2]!.view!.frame = ['pixel-rays']),
   'a view from nowhere': (level) => (level.tasks[2]!.view!.from = [0, 0, 0]),
   'evidence naming a ray by no path': (level) => Object.assign(level.tasks[2]!, { evidence: { rays: { pixel: [3, 2], paths: ['shadow'] } } }),
-  'evidence of a missing object and pixel': (level) => Object.assign(level.tasks[2]!, { evidence: { objects: ['teapot'], rays: { pixel: [9, 9], paths: ['primary'] } } }),
+  'evidence of a missing object and pixel': (level) =>
+    Object.assign(level.tasks[2]!, { evidence: { objects: ['teapot'], rays: { pixel: [9, 9], paths: ['primary'] } } }),
   'a view framing and through the camera': (level) => (level.tasks[2]!.view!.throughCamera = true),
   'a view from a side without a frame': (level) => delete level.tasks[2]!.view!.frame,
   'ray options that are a number': (level) => (level.tasks[2]!.view!.rays = 3),
@@ -107,7 +108,11 @@ const LEVEL_MISTAKES: Record<string, (level: Level) => void> = {
 
 /** The reasons of the level index, through the same loader (levels/index.json with one mistake). */
 function indexReasons(): string[] {
-  const index = JSON.parse(levelText('index.json')) as { chapters: { id: string; levels: string[] }[]; ideas: Record<string, unknown>; presets: { levels: string[] }[] };
+  const index = JSON.parse(levelText('index.json')) as {
+    chapters: { id: string; levels: string[] }[];
+    ideas: Record<string, unknown>;
+    presets: { levels: string[] }[];
+  };
   const [first, second] = index.chapters;
   // A teacher's idea too long for its line; then an idea for a level no chapter lists.
   const longIdea = structuredClone(index);
@@ -121,7 +126,8 @@ function indexReasons(): string[] {
   wrongPlace.chapter = second!.id === shading.chapter ? first!.id : second!.id;
   const moved = loadLevels(levelText('index.json'), (fileName) => (fileName === SHADING ? JSON.stringify(wrongPlace) : levelText(fileName)));
   const missing = loadLevels(levelText('index.json'), (fileName) => (fileName === SHADING ? undefined : levelText(fileName)));
-  const brokenEntries = (catalog: ReturnType<typeof loadLevels>) => catalog.chapters.flatMap((chapter) => chapter.entries.flatMap((entry) => (entry.ok ? [] : entry.errors)));
+  const brokenEntries = (catalog: ReturnType<typeof loadLevels>) =>
+    catalog.chapters.flatMap((chapter) => chapter.entries.flatMap((entry) => (entry.ok ? [] : entry.errors)));
   return [...twice.errors, ...tooLong.errors, ...brokenEntries(moved), ...brokenEntries(missing)];
 }
 
@@ -165,33 +171,53 @@ describe('a broken level in Dutch', () => {
   inDutch();
 
   it('says the level rules in Dutch', () => {
-    expect(reasonsOf('no solution').map(issueText)).toEqual(['tasks[4].solution: is verplicht: de handelingen waarmee deze taak af is ("Laat zien" voert ze uit)']);
+    expect(reasonsOf('no solution').map(issueText)).toEqual([
+      'tasks[4].solution: is verplicht: de handelingen waarmee deze taak af is ("Laat zien" voert ze uit)',
+    ]);
     expect(reasonsOf('an optional info step').map(issueText)).toEqual(['tasks[0].mandatory: een uitlegstap lees je onderweg: die moet verplicht zijn']);
-    expect(reasonsOf('a guide to a hidden panel').map(issueText)).toEqual(['tasks[4].guide: "light.intensity" staat in het paneel light, maar dit level toont dat paneel niet (ui.panels)']);
-    expect(reasonsOf('a guide to a missing object').map(issueText)).toEqual(['tasks[4].guide: de scène van dit level heeft geen object of lamp "teapot" (wel: floor, ball, lamp)']);
-    expect(reasonsOf('a guide to a pixel off the screen').map(issueText)).toEqual(['tasks[4].guide: "9,9" moet "kolom,rij" zijn, binnen het scherm van 6×4, geteld vanaf 0']);
+    expect(reasonsOf('a guide to a hidden panel').map(issueText)).toEqual([
+      'tasks[4].guide: "light.intensity" staat in het paneel light, maar dit level toont dat paneel niet (ui.panels)',
+    ]);
+    expect(reasonsOf('a guide to a missing object').map(issueText)).toEqual([
+      'tasks[4].guide: de scène van dit level heeft geen object of lamp "teapot" (wel: floor, ball, lamp)',
+    ]);
+    expect(reasonsOf('a guide to a pixel off the screen').map(issueText)).toEqual([
+      'tasks[4].guide: "9,9" moet "kolom,rij" zijn, binnen het scherm van 6×4, geteld vanaf 0',
+    ]);
     expect(reasonsOf('a badge for a missing task').map(issueText)).toEqual(['badges[0].tasks[0]: dit level heeft geen taak "no-such-task"']);
   });
 
   it('says the goal, condition and path checks in Dutch', () => {
-    expect(reasonsOf('a goal of two kinds').map(issueText)).toEqual(['tasks[4].goal: mag maar één van de velden event, state, all, any, quiz, estimate, picture, info hebben, maar heeft event en state']);
+    expect(reasonsOf('a goal of two kinds').map(issueText)).toEqual([
+      'tasks[4].goal: mag maar één van de velden event, state, all, any, quiz, estimate, picture, info hebben, maar heeft event en state',
+    ]);
     expect(reasonsOf('an ordering of a text').map(issueText)).toEqual(['tasks[4].goal.value: "<=" vergelijkt getallen, maar krijgt "low"']);
-    expect(reasonsOf('a misspelt field').map(issueText)).toEqual([expect.stringMatching(/^tasks\[4\]\.goal\.state: er is geen veld "setings" in scene \(wel: .*settings.*\)$/)]);
-    expect(reasonsOf('a path into a true or false').map(issueText)).toEqual(['tasks[4].goal.state: scene.settings.shadows is true of false: daarin zit geen veld "on"']);
-    expect(reasonsOf('with on a field the action lacks').map(issueText)).toEqual(['tasks[1].goal.with.column: een actie "pixel.selected" heeft alleen deze velden: pixel']);
+    expect(reasonsOf('a misspelt field').map(issueText)).toEqual([
+      expect.stringMatching(/^tasks\[4\]\.goal\.state: er is geen veld "setings" in scene \(wel: .*settings.*\)$/),
+    ]);
+    expect(reasonsOf('a path into a true or false').map(issueText)).toEqual([
+      'tasks[4].goal.state: scene.settings.shadows is true of false: daarin zit geen veld "on"',
+    ]);
+    expect(reasonsOf('with on a field the action lacks').map(issueText)).toEqual([
+      'tasks[1].goal.with.column: een actie "pixel.selected" heeft alleen deze velden: pixel',
+    ]);
   });
 
   it('says the view and option checks in Dutch, each of several on its own', () => {
-    expect(reasonsOf('a view framing rays without a pixel').map(issueText)).toEqual(['tasks[2].view.frame: "pixel-rays" kan alleen als de weergave ook een pixel kiest ("pixel": [kolom, rij])']);
+    expect(reasonsOf('a view framing rays without a pixel').map(issueText)).toEqual([
+      'tasks[2].view.frame: "pixel-rays" kan alleen als de weergave ook een pixel kiest ("pixel": [kolom, rij])',
+    ]);
     expect(reasonsOf('a view from nowhere').map(issueText)).toEqual(['tasks[2].view.from: moet een richting zijn, niet [0, 0, 0]']);
     expect(reasonsOf('ray options with two mistakes').map(issueText)).toEqual([
       expect.stringMatching(/^tasks\[2\]\.view\.rays: onbekend veld "glow" \(bekend zijn: showRays, .*\); hideNoHit moet true of false zijn, maar is "yes"$/),
     ]);
   });
 
-  it('says the level index\'s reasons in Dutch', () => {
+  it("says the level index's reasons in Dutch", () => {
     const dutch = indexReasons().map(issueText);
-    expect(dutch).toContain(`chapters[0].levels[${JSON.parse(levelText('index.json')).chapters[0].levels.length + 1}]: "${JSON.parse(levelText('index.json')).chapters[0].levels[0]}" komt meer dan één keer voor`);
+    expect(dutch).toContain(
+      `chapters[0].levels[${JSON.parse(levelText('index.json')).chapters[0].levels.length + 1}]: "${JSON.parse(levelText('index.json')).chapters[0].levels[0]}" komt meer dan één keer voor`,
+    );
     expect(dutch).toContain(`id: moet "${shading.id}" zijn, de naam waaronder index.json dit bestand noemt, maar is "shading-copy"`);
     expect(dutch).toContain('(het geheel): het bestand levels/03-shading.level.json bestaat niet');
     expect(dutch).toContain('ideas.retired-level: "retired-level" staat in geen enkel hoofdstuk');
@@ -226,13 +252,21 @@ describe('a file the dashboard skips, in Dutch', () => {
   const good = simulatedExport(0);
 
   it('says the damage of a JSON export, an event log and a CSV export in Dutch', () => {
-    expect(skipped('p.json', JSON.stringify(good).slice(0, 40))).toMatch(/^het bestand is beschadigd: \(het geheel\): geen geldige JSON op regel 1, kolom 41: verwacht werd .*, maar er staat het einde van de tekst$/);
+    expect(skipped('p.json', JSON.stringify(good).slice(0, 40))).toMatch(
+      /^het bestand is beschadigd: \(het geheel\): geen geldige JSON op regel 1, kolom 41: verwacht werd .*, maar er staat het einde van de tekst$/,
+    );
     expect(skipped('p.json', JSON.stringify({ ...good, participant: 42 }))).toBe('beschadigde export: participant: moet een tekst zijn, maar is 42');
     const backwards = good.events.events.map((event, index) => (index === 4 ? { ...event, t: 0 } : event));
-    expect(skipped('p.json', JSON.stringify({ ...good, events: { ...good.events, events: backwards } }))).toBe('beschadigd logboek: events.events[4].t: mag niet eerder zijn dan de gebeurtenis ervoor');
+    expect(skipped('p.json', JSON.stringify({ ...good, events: { ...good.events, events: backwards } }))).toBe(
+      'beschadigd logboek: events.events[4].t: mag niet eerder zijn dan de gebeurtenis ervoor',
+    );
     const header = 'participant,level,task,started_at,duration_ms,active_ms\n';
-    expect(skipped('a.csv', `${header}P1,L1,a,2026-03-09T09:00:00Z,ten,5\n`)).toBe('beschadigde CSV: regel 2: duration_ms moet een getal van minstens 0 zijn, maar is "ten"');
-    expect(skipped('a.csv', `${header}"P1,L1,a,2026-03-09T09:00:00Z,10,5\n`)).toBe('beschadigde CSV: een veld tussen aanhalingstekens dat op regel 2 begint, wordt nooit gesloten');
+    expect(skipped('a.csv', `${header}P1,L1,a,2026-03-09T09:00:00Z,ten,5\n`)).toBe(
+      'beschadigde CSV: regel 2: duration_ms moet een getal van minstens 0 zijn, maar is "ten"',
+    );
+    expect(skipped('a.csv', `${header}"P1,L1,a,2026-03-09T09:00:00Z,10,5\n`)).toBe(
+      'beschadigde CSV: een veld tussen aanhalingstekens dat op regel 2 begint, wordt nooit gesloten',
+    );
   });
 });
 
@@ -282,7 +316,14 @@ function wordedTexts(path: string): string[][] {
 
 /** Every reason the mistakes above produce, once each. */
 async function everyReason(): Promise<string[]> {
-  return [...new Set([...Object.values(LEVEL_MISTAKES).flatMap((mistake) => reasonsWith(mistake)), ...indexReasons(), ...progressReasons(), ...(await assignmentReasons())])];
+  return [
+    ...new Set([
+      ...Object.values(LEVEL_MISTAKES).flatMap((mistake) => reasonsWith(mistake)),
+      ...indexReasons(),
+      ...progressReasons(),
+      ...(await assignmentReasons()),
+    ]),
+  ];
 }
 
 describe('every reason of the level, progress and assignment loaders in Dutch', () => {
@@ -293,7 +334,10 @@ describe('every reason of the level, progress and assignment loaders in Dutch', 
     // Every worded text of the sources is in some reason produced: a new message without a mistake that shows it fails here.
     for (const path of REASON_SOURCES) {
       for (const pieces of wordedTexts(path)) {
-        expect(english.some((line) => pieces.every((piece) => line.includes(piece))), `${path}: ${pieces.join('…')}`).toBe(true);
+        expect(
+          english.some((line) => pieces.every((piece) => line.includes(piece))),
+          `${path}: ${pieces.join('…')}`,
+        ).toBe(true);
       }
     }
     // Reasons that are field names or literals, the same in both languages: none so far.
@@ -302,13 +346,15 @@ describe('every reason of the level, progress and assignment loaders in Dutch', 
       const dutch = issueText(line);
       if (sameInBothLanguages.includes(line)) continue;
       expect(dutch, line).not.toBe(line);
-      expect(dutch.slice(dutch.indexOf(': ') + 2), line).not.toMatch(/\b(must|got|unknown|is required|is used|needs|cannot|not both|has no|there is no|is listed|this app|the event)\b/);
+      expect(dutch.slice(dutch.indexOf(': ') + 2), line).not.toMatch(
+        /\b(must|got|unknown|is required|is used|needs|cannot|not both|has no|there is no|is listed|this app|the event)\b/,
+      );
     }
   });
 });
 
 describe('every reason back in English', () => {
-  it('is the loader\'s own line again, though the Dutch patterns are loaded', async () => {
+  it("is the loader's own line again, though the Dutch patterns are loaded", async () => {
     const english = await everyReason();
     expect(english.map(issueText)).toEqual(english);
   });

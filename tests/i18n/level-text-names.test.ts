@@ -25,7 +25,11 @@ const dutch = screenWords(catalogue, 'nl');
  */
 function problems(path: string, text: string, words: ScreenWords, other: ScreenWords): string[] {
   const unmarked = /(?:^|\.)title$/.test(path) ? [] : unmarkedNames(text, words);
-  return [...(hasStrayMark(text) ? ['a ** without its partner'] : []), ...namesNotOnScreen(text, words, other), ...unmarked.map((phrase) => `"${phrase}" names something on screen without **`)];
+  return [
+    ...(hasStrayMark(text) ? ['a ** without its partner'] : []),
+    ...namesNotOnScreen(text, words, other),
+    ...unmarked.map((phrase) => `"${phrase}" names something on screen without **`),
+  ];
 }
 
 /** Every problem with the names in a level file's texts, as `path.language: problem`. */
@@ -43,7 +47,17 @@ function levelNameProblems(level: unknown): string[] {
 
 describe('the words of the screen', () => {
   it('hold the panels’ section headings, the toolbar’s and the render window’s buttons, in both languages', () => {
-    for (const label of ['Lens and shutter', 'Ray tracer', 'Anti-aliasing', 'Ray colours', 'Save and share', 'Render image', 'Render', 'Time samples (k)', 'Samples per side (n)']) {
+    for (const label of [
+      'Lens and shutter',
+      'Ray tracer',
+      'Anti-aliasing',
+      'Ray colours',
+      'Save and share',
+      'Render image',
+      'Render',
+      'Time samples (k)',
+      'Samples per side (n)',
+    ]) {
       expect(english.exact, label).toContain(label);
     }
     for (const label of ['Lens en sluiter', 'Kleuren van de stralen', 'Opslaan en delen', 'Beeld renderen', 'Renderen', 'Tijdsamples (k)']) {
@@ -66,7 +80,9 @@ describe('a marked name', () => {
     expect(namesNotOnScreen('Press **Focus on Ball**.', english)).toEqual([]);
     expect(namesNotOnScreen('Druk op **Stel scherp op Bal**.', dutch)).toEqual([]);
     expect(namesNotOnScreen('It reads **3 × 3 = 9 rays per pixel**.', english)).toEqual([]);
-    expect(namesNotOnScreen('It reads **3 × 3 = 9 beams per pixel**.', english)).toEqual(['**3 × 3 = 9 beams per pixel** (no label on the English screen reads so)']);
+    expect(namesNotOnScreen('It reads **3 × 3 = 9 beams per pixel**.', english)).toEqual([
+      '**3 × 3 = 9 beams per pixel** (no label on the English screen reads so)',
+    ]);
   });
 
   it('fails when no label reads so, saying what the screen writes where it can tell', () => {
@@ -136,7 +152,15 @@ describe('level texts', () => {
       title: 'T',
       intro: { text: { en: 'I', nl: 'I' } },
       scene: { name: { en: 'not a text' } },
-      tasks: [{ text: 'X', hints: ['H'], figure: { src: 'a.svg', alt: 'A' }, goal: { quiz: { question: 'Q', choices: ['1', { en: '2' }], explanation: 'E' } }, solution: [{ changes: { name: { en: 'no' } } }] }],
+      tasks: [
+        {
+          text: 'X',
+          hints: ['H'],
+          figure: { src: 'a.svg', alt: 'A' },
+          goal: { quiz: { question: 'Q', choices: ['1', { en: '2' }], explanation: 'E' } },
+          solution: [{ changes: { name: { en: 'no' } } }],
+        },
+      ],
     });
     expect(texts.map((text) => text.path)).toEqual([
       'title',
@@ -155,10 +179,22 @@ describe('level texts', () => {
     const written = (hint: { en: string; nl: string }) => ({
       title: { en: 'Zoom in', nl: 'Inzoomen' },
       intro: { text: { en: 'The **Lens and shutter** section has a slider for time.', nl: 'Het kopje **Lens en sluiter** heeft een schuif voor de tijd.' } },
-      tasks: [{ title: 'Moments', text: { en: 'Set **Time samples (k)** under **Lens and shutter** to 4.', nl: 'Zet **Tijdsamples (k)** onder **Lens en sluiter** op 4.' }, hints: [hint] }],
+      tasks: [
+        {
+          title: 'Moments',
+          text: { en: 'Set **Time samples (k)** under **Lens and shutter** to 4.', nl: 'Zet **Tijdsamples (k)** onder **Lens en sluiter** op 4.' },
+          hints: [hint],
+        },
+      ],
     });
-    expect(levelNameProblems(written({ en: 'Press **Render image** at the top, then **Render**.', nl: 'Druk bovenaan op **Beeld renderen** en dan op **Renderen**.' }))).toEqual([]);
-    expect(levelNameProblems(written({ en: 'Press **Render image** at the top, then press Render.', nl: 'Druk bovenaan op **Render image**, dan op **Renderen.' }))).toEqual([
+    expect(
+      levelNameProblems(
+        written({ en: 'Press **Render image** at the top, then **Render**.', nl: 'Druk bovenaan op **Beeld renderen** en dan op **Renderen**.' }),
+      ),
+    ).toEqual([]);
+    expect(
+      levelNameProblems(written({ en: 'Press **Render image** at the top, then press Render.', nl: 'Druk bovenaan op **Render image**, dan op **Renderen.' })),
+    ).toEqual([
       'tasks[0].hints[0].en: "press Render" names something on screen without **',
       'tasks[0].hints[0].nl: a ** without its partner',
       'tasks[0].hints[0].nl: **Render image** (a label of the English screen)',

@@ -40,7 +40,11 @@ describe('choosing the language', () => {
     expect(readRememberedLocale(() => storage as unknown as Storage)).toBe('nl');
     expect(readRememberedLocale(blocked)).toBeNull();
     expect(() => rememberLocale(blocked, 'nl')).not.toThrow();
-    const full = { setItem: () => { throw new DOMException('full', 'QuotaExceededError'); } };
+    const full = {
+      setItem: () => {
+        throw new DOMException('full', 'QuotaExceededError');
+      },
+    };
     expect(() => rememberLocale(() => full, 'en')).not.toThrow();
   });
 });

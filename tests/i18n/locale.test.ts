@@ -12,7 +12,10 @@ import { MemoryStorage, type ProgressProblem } from '../../src/quest/progress-st
 class FakeElement {
   updates = 0;
   shadowRoot: { querySelectorAll(selector: string): FakeElement[] } | null = null;
-  constructor(readonly lit: boolean, inside: FakeElement[] = []) {
+  constructor(
+    readonly lit: boolean,
+    inside: FakeElement[] = [],
+  ) {
     if (inside.length > 0) this.shadowRoot = { querySelectorAll: () => inside };
     if (!lit) (this as { requestUpdate?: unknown }).requestUpdate = undefined;
   }
@@ -97,9 +100,13 @@ describe('the app language at run time', () => {
     expect(progressProblemText(problem, 0)).toBe(
       'Je opgeslagen voortgang is beschadigd en kon niet worden gelezen. Je begint weer vanaf het begin. De opgeslagen gegevens zijn bewaard zoals ze waren: download of herstel ze via het Menu (Beschadigde gegevens).',
     );
-    expect(progressProblemText(repaired, 40)).toMatch(/^Een deel van je opgeslagen voortgang was beschadigd; wat beschadigd was, is weggelaten \(1: settings\.locale\); de rest is bewaard: 40 punten\. Er is geen ruimte om een kopie te bewaren/);
+    expect(progressProblemText(repaired, 40)).toMatch(
+      /^Een deel van je opgeslagen voortgang was beschadigd; wat beschadigd was, is weggelaten \(1: settings\.locale\); de rest is bewaard: 40 punten\. Er is geen ruimte om een kopie te bewaren/,
+    );
     await locale.useLocale('en');
     expect(progressProblemText(problem, 0)).toMatch(/^Your saved progress is damaged/);
-    expect(progressProblemText(repaired, 40)).toMatch(/^Part of your saved progress was damaged, and what was damaged is left out \(1: settings\.locale\); the rest is kept: 40 points\. There is no room/);
+    expect(progressProblemText(repaired, 40)).toMatch(
+      /^Part of your saved progress was damaged, and what was damaged is left out \(1: settings\.locale\); the rest is kept: 40 points\. There is no room/,
+    );
   });
 });

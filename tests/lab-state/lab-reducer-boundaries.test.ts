@@ -27,7 +27,13 @@ describe('pixel.selected: "must be inside the columns×rows screen"', () => {
   });
 
   it('refuses column `columns`, row `rows`, −1 and a fraction, and keeps the state', () => {
-    for (const pixel of [[columns, 0], [0, rows], [-1, 0], [0, -1], [0.5, 0]] as [number, number][]) {
+    for (const pixel of [
+      [columns, 0],
+      [0, rows],
+      [-1, 0],
+      [0, -1],
+      [0.5, 0],
+    ] as [number, number][]) {
       const reduction = reduce(state, { type: 'pixel.selected', pixel });
       expect(reduction.error).toBe(`pixel: must be inside the ${columns}×${rows} screen, got ${pixel[0]},${pixel[1]}`);
       expect(reduction.state).toBe(state);
@@ -48,7 +54,7 @@ describe('a smaller screen "may leave the selected pixel outside it"', () => {
     expect(screenOf(chosen, 8, 4).selectedPixel).toEqual([1, 3]);
   });
 
-  it('a declared view\'s pixel just off the screen is left out, its ray options kept', () => {
+  it("a declared view's pixel just off the screen is left out, its ray options kept", () => {
     const state = initialState(defaultScene());
     const [columns, rows] = state.scene.camera.pixels;
     const off = reduce(state, { type: 'view.applied', view: { pixel: [columns, rows - 1], rays: { hideNoHit: true } } });

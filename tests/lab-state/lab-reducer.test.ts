@@ -29,7 +29,7 @@ describe('the store and its named actions', () => {
     expect(store.sceneRevision).toBe(2);
   });
 
-  it('keeps the scene as it is for a change to the values it has (a slider\'s commit after its last input)', () => {
+  it("keeps the scene as it is for a change to the values it has (a slider's commit after its last input)", () => {
     const store = newStore();
     const seen: string[] = [];
     store.subscribe((_, action) => seen.push(action.type));
@@ -71,7 +71,7 @@ describe('the store and its named actions', () => {
     expect(store.dispatch({ type: 'material.changed', id: 'nope', changes: { ambient: 0.5 } })).toBe('objects: there is no object "nope"');
   });
 
-  it('changing a light type keeps its place and colour and takes the new type\'s defaults', () => {
+  it("changing a light type keeps its place and colour and takes the new type's defaults", () => {
     const store = newStore();
     store.dispatch({ type: 'light.changed', id: 'lamp', changes: { type: 'area' } });
     const lamp = store.state.scene.lights.find((l) => l.id === 'lamp')!;

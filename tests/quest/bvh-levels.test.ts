@@ -28,7 +28,8 @@ async function pixelTests(level: Level): Promise<Map<string, RayTests>> {
   const scene = buildTracerScene(level.scene, meshes);
   const [columns, rows] = level.scene.camera.pixels;
   const tests = new Map<string, RayTests>();
-  for (let row = 0; row < rows; row++) for (let column = 0; column < columns; column++) tests.set(`${column},${row}`, countPixelTests(scene, meshes, [column, row]));
+  for (let row = 0; row < rows; row++)
+    for (let column = 0; column < columns; column++) tests.set(`${column},${row}`, countPixelTests(scene, meshes, [column, row]));
   return tests;
 }
 

@@ -14,7 +14,7 @@ function errorsOf(change: (level: Json & { tasks: Json[] }) => void): string[] {
 }
 
 describe('a declared view in a level file', () => {
-  it('frames the scene\'s things, chooses a pixel and sets ray options', () => {
+  it("frames the scene's things, chooses a pixel and sets ray options", () => {
     const result = parseLevel(
       levelFile((level) => {
         level.view = { frame: ['ball', 'lamp', 'camera'], from: [1, 1, 1] };
@@ -38,7 +38,7 @@ describe('a declared view in a level file', () => {
     ]);
   });
 
-  it('frames a pixel\'s rays only with the pixel it chooses', () => {
+  it("frames a pixel's rays only with the pixel it chooses", () => {
     expect(errorsOf((level) => (level.tasks[0].view = { frame: ['pixel-rays'] }))).toEqual([
       'tasks[0].view.frame: "pixel-rays" needs the view to choose its pixel ("pixel": [column, row])',
     ]);
@@ -56,7 +56,9 @@ describe('a declared view in a level file', () => {
   });
 
   it('is no goal and no solution step: the app applies it, the learner does not', () => {
-    expect(errorsOf((level) => (level.tasks[0].goal = { event: 'view.applied' })).join('\n')).toMatch(/tasks\[0\]\.goal\.event: a level's own view is applied by the app/);
+    expect(errorsOf((level) => (level.tasks[0].goal = { event: 'view.applied' })).join('\n')).toMatch(
+      /tasks\[0\]\.goal\.event: a level's own view is applied by the app/,
+    );
     expect(errorsOf((level) => (level.tasks[0].solution = [{ type: 'view.applied', view: { pixel: [0, 0] } }]))).toEqual([
       'tasks[0].solution[0]: a view is the task\'s "view", not a step of its solution',
     ]);

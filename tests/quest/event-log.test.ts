@@ -60,7 +60,13 @@ describe('the event log', () => {
 
   it('numbers events saved before ids existed the same way in every tab', () => {
     const clock = new FakeClock();
-    const saved = { startedAt: '2025-03-01T09:00:00.000Z', events: [{ t: 0, type: 'tab.hidden' as const }, { t: 5, type: 'tab.visible' as const }] };
+    const saved = {
+      startedAt: '2025-03-01T09:00:00.000Z',
+      events: [
+        { t: 0, type: 'tab.hidden' as const },
+        { t: 5, type: 'tab.visible' as const },
+      ],
+    };
     const first = new EventLog(saved, clock, 'one');
     const second = new EventLog(saved, clock, 'two');
     expect(first.events.slice(0, 2).map((event) => event.id)).toEqual(['saved.0', 'saved.1']);
@@ -70,11 +76,24 @@ describe('the event log', () => {
 
   it('validates saved logs: known events only, times in order', () => {
     const startedAt = '2025-03-01T09:00:00.000Z';
-    expect(eventLogSchema.safeParse({ startedAt, events: [{ t: 5, type: 'tab.hidden' }, { t: 4, type: 'tab.visible' }] }).success).toBe(false);
+    expect(
+      eventLogSchema.safeParse({
+        startedAt,
+        events: [
+          { t: 5, type: 'tab.hidden' },
+          { t: 4, type: 'tab.visible' },
+        ],
+      }).success,
+    ).toBe(false);
     expect(eventLogSchema.safeParse({ startedAt, events: [{ t: 5, type: 'tab.spun' }] }).success).toBe(false);
     expect(eventLogSchema.safeParse({ startedAt, events: [{ t: 5, id: 'x'.repeat(17) + '.1', type: 'tab.hidden' }] }).success).toBe(false);
     expect(eventLogSchema.safeParse({ startedAt, events: [{ t: 5, type: 'level.opened', level: 'a'.repeat(65) }] }).success).toBe(false);
-    expect(eventLogSchema.safeParse({ startedAt, events: [{ t: 5, type: 'task.completed', level: 'a', task: 'b', mandatory: true, required: true, how: 'done', points: 10 }] }).success).toBe(true);
+    expect(
+      eventLogSchema.safeParse({
+        startedAt,
+        events: [{ t: 5, type: 'task.completed', level: 'a', task: 'b', mandatory: true, required: true, how: 'done', points: 10 }],
+      }).success,
+    ).toBe(true);
   });
 
   it('keeps hints offered and opened apart, and still reads a hint shown by itself in an older log', () => {

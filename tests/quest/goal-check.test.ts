@@ -52,29 +52,51 @@ describe('event goals', () => {
     expect(play(goal({ event: 'view.orbited' }), [zoom, orbit])).toEqual([false, true]);
   });
 
-  it('look at the action\'s fields (with) and the state it leaves (where)', () => {
+  it("look at the action's fields (with) and the state it leaves (where)", () => {
     const topLeft = goal({ event: 'pixel.selected', with: { pixel: [0, 0] } });
-    expect(play(topLeft, [{ type: 'pixel.selected', pixel: [1, 0] }, { type: 'pixel.selected', pixel: [0, 0] }])).toEqual([false, true]);
+    expect(
+      play(topLeft, [
+        { type: 'pixel.selected', pixel: [1, 0] },
+        { type: 'pixel.selected', pixel: [0, 0] },
+      ]),
+    ).toEqual([false, true]);
     const noShadows = goal({ event: 'render.finished', where: { 'scene.settings.shadows': false } });
-    expect(play(noShadows, [{ type: 'render.finished', ms: 5 }, { type: 'settings.changed', changes: { shadows: false } }, { type: 'render.finished', ms: 5 }])).toEqual([false, false, true]);
+    expect(
+      play(noShadows, [
+        { type: 'render.finished', ms: 5 },
+        { type: 'settings.changed', changes: { shadows: false } },
+        { type: 'render.finished', ms: 5 },
+      ]),
+    ).toEqual([false, false, true]);
   });
 
   it('take comparisons in where: all of them must hold at the moment of the action', () => {
     const fewSamples = goal({ event: 'render.finished', where: { 'scene.settings.supersampling': { '>=': 2, '<=': 3 } } });
-    const steps = (s: number): LabAction[] => [{ type: 'settings.changed', changes: { supersampling: s } }, { type: 'render.finished', ms: 1 }];
+    const steps = (s: number): LabAction[] => [
+      { type: 'settings.changed', changes: { supersampling: s } },
+      { type: 'render.finished', ms: 1 },
+    ];
     expect(play(fewSamples, [...steps(4), ...steps(2)])).toEqual([false, false, false, true]);
   });
 
   it('look into the ray debugger’s reports: the ray a step reached (kind, depth, where from) and the term clicked', () => {
     const stepped = (type: 'primary' | 'shadow' | 'reflect', depth: number, from: string | null): LabAction => ({
-      type: 'debugger.stepped', step: 1, of: 9, ray: { type, depth, hit: true, objectId: 'ball', lightId: null, from },
+      type: 'debugger.stepped',
+      step: 1,
+      of: 9,
+      ray: { type, depth, hit: true, objectId: 'ball', lightId: null, from },
     });
     const deepReflection = goal({ event: 'debugger.stepped', with: { 'ray.type': 'reflect', 'ray.depth': { '>=': 2 } } });
     expect(play(deepReflection, [stepped('primary', 0, null), stepped('reflect', 1, 'mirror'), stepped('reflect', 2, 'mirror')])).toEqual([false, false, true]);
     const fromFloor = goal({ event: 'debugger.stepped', with: { 'ray.from': 'floor' } });
     expect(play(fromFloor, [stepped('shadow', 0, 'ball'), stepped('shadow', 0, 'floor')])).toEqual([false, true]);
     const highlight = goal({ event: 'debugger.term-clicked', with: { term: 'specular' } });
-    expect(play(highlight, [{ type: 'debugger.term-clicked', term: 'diffuse', lightId: 'lamp' }, { type: 'debugger.term-clicked', term: 'specular', lightId: 'lamp' }])).toEqual([false, true]);
+    expect(
+      play(highlight, [
+        { type: 'debugger.term-clicked', term: 'diffuse', lightId: 'lamp' },
+        { type: 'debugger.term-clicked', term: 'specular', lightId: 'lamp' },
+      ]),
+    ).toEqual([false, true]);
     expect(() => goal({ event: 'debugger.term-clicked', with: { ray: 'x' } })).toThrow(/has term, lightId/);
   });
 
@@ -119,7 +141,9 @@ describe('state goals', () => {
 
   it('hold while the state does, whatever the action', () => {
     const twoSamples = goal({ state: 'scene.settings.supersampling', op: '>=', value: 2 });
-    expect(play(twoSamples, [{ type: 'settings.changed', changes: { supersampling: 2 } }, orbit, { type: 'settings.changed', changes: { supersampling: 1 } }])).toEqual([true, true, false]);
+    expect(
+      play(twoSamples, [{ type: 'settings.changed', changes: { supersampling: 2 } }, orbit, { type: 'settings.changed', changes: { supersampling: 1 } }]),
+    ).toEqual([true, true, false]);
   });
 });
 
@@ -167,7 +191,12 @@ describe('quiz and info goals', () => {
     const quiz = goal({ quiz: { question: 'Q', choices: ['a', 'b'], answer: 0 } });
     const estimate = goal({ estimate: { question: 'Q', answer: 1, tolerance: 0 } });
     if (!('quiz' in quiz) || !('estimate' in estimate)) throw new Error('expected prediction goals');
-    expect([fitsGoal(quiz, { choice: 1 }), fitsGoal(quiz, { choice: 2 }), fitsGoal(quiz, { choice: 0.5 }), fitsGoal(quiz, { value: 0 })]).toEqual([true, false, false, false]);
+    expect([fitsGoal(quiz, { choice: 1 }), fitsGoal(quiz, { choice: 2 }), fitsGoal(quiz, { choice: 0.5 }), fitsGoal(quiz, { value: 0 })]).toEqual([
+      true,
+      false,
+      false,
+      false,
+    ]);
     expect([fitsGoal(estimate, { value: -3 }), fitsGoal(estimate, { value: Number.NaN }), fitsGoal(estimate, { choice: 0 })]).toEqual([true, false, false]);
   });
 

@@ -72,7 +72,16 @@ describe('walking nested goals', () => {
       {
         all: [
           { event: 'view.zoomed' },
-          { any: [{ all: [{ event: 'view.orbited', times: 2 }, { state: 'scene.settings.supersampling', op: '>=', value: 2 }] }] },
+          {
+            any: [
+              {
+                all: [
+                  { event: 'view.orbited', times: 2 },
+                  { state: 'scene.settings.supersampling', op: '>=', value: 2 },
+                ],
+              },
+            ],
+          },
         ],
       },
       { state: 'scene.settings.shadows', op: '==', value: false },
@@ -81,7 +90,10 @@ describe('walking nested goals', () => {
   const start = initialState(defaultScene());
 
   it('children lists what a combination holds, with the steps to it in the file, and nothing for a leaf', () => {
-    expect(children(deep).map((child) => child.steps)).toEqual([['any', 0], ['any', 1]]);
+    expect(children(deep).map((child) => child.steps)).toEqual([
+      ['any', 0],
+      ['any', 1],
+    ]);
     for (const kind of ['event', 'state', 'quiz', 'estimate', 'picture', 'info']) expect(children(goal(EXAMPLES[kind])), kind).toEqual([]);
   });
 
@@ -99,7 +111,12 @@ describe('walking nested goals', () => {
   });
 
   it('tallyAction and checkGoal count an event four levels down', () => {
-    const actions: LabAction[] = [{ type: 'settings.changed', changes: { supersampling: 2 } }, { type: 'view.zoomed' }, { type: 'view.orbited' }, { type: 'view.orbited' }];
+    const actions: LabAction[] = [
+      { type: 'settings.changed', changes: { supersampling: 2 } },
+      { type: 'view.zoomed' },
+      { type: 'view.orbited' },
+      { type: 'view.orbited' },
+    ];
     let state = start;
     let tally = NO_EVENTS;
     const met = actions.map((action) => {
@@ -123,7 +140,24 @@ describe('walking nested goals', () => {
   it('the level rules check a state path four levels down, and name where it is', () => {
     const parsed = parseLevel(
       levelFile((level) => {
-        level.tasks[0].goal = { any: [{ all: [{ any: [{ all: [{ event: 'view.orbited', where: { 'rays.hideNoHits': true } }, { state: 'scene.settings.nope', op: '==', value: 1 }] }] }] }] };
+        level.tasks[0].goal = {
+          any: [
+            {
+              all: [
+                {
+                  any: [
+                    {
+                      all: [
+                        { event: 'view.orbited', where: { 'rays.hideNoHits': true } },
+                        { state: 'scene.settings.nope', op: '==', value: 1 },
+                      ],
+                    },
+                  ],
+                },
+              ],
+            },
+          ],
+        };
       }),
     );
     expect(parsed.ok).toBe(false);

@@ -34,7 +34,9 @@ describe('a task’s figure', () => {
       return result.ok ? [] : result.errors;
     };
     expect(refused('torch.svg')).toEqual([expect.stringMatching(/^tasks\[0\]\.figure\.src: must be .*"?lambert-torch\.svg"?.*, got "torch\.svg"$/)]);
-    expect(refused('../levels/index.json')).toEqual([expect.stringMatching(/^tasks\[0\]\.figure\.src: must be .*lambert-torch\.svg.*, got "\.\.\/levels\/index\.json"$/)]);
+    expect(refused('../levels/index.json')).toEqual([
+      expect.stringMatching(/^tasks\[0\]\.figure\.src: must be .*lambert-torch\.svg.*, got "\.\.\/levels\/index\.json"$/),
+    ]);
   });
 });
 
@@ -49,6 +51,8 @@ describe('the figures in assets/figures', () => {
     expect(svg).toMatch(/<svg [^>]*viewBox="[\d. ]+"/);
     expect(svg).not.toMatch(/<script|<foreignObject|\son\w+=/i);
     // Only references inside the file itself (#id): a data: URL has nothing beside it to load.
-    expect([...svg.matchAll(/(?:href|src)="([^"]*)"|url\(([^)]*)\)/g)].map((match) => match[1] ?? match[2]).filter((target) => !target.startsWith('#'))).toEqual([]);
+    expect(
+      [...svg.matchAll(/(?:href|src)="([^"]*)"|url\(([^)]*)\)/g)].map((match) => match[1] ?? match[2]).filter((target) => !target.startsWith('#')),
+    ).toEqual([]);
   });
 });

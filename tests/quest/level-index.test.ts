@@ -35,7 +35,13 @@ describe('loading the levels of an index', () => {
   });
 
   it('reports problems of the index itself, and then has no chapters', () => {
-    const twice = JSON.stringify({ version: 1, chapters: [{ id: 'a', title: 'A', levels: ['one'] }, { id: 'b', title: 'B', levels: ['one'] }] });
+    const twice = JSON.stringify({
+      version: 1,
+      chapters: [
+        { id: 'a', title: 'A', levels: ['one'] },
+        { id: 'b', title: 'B', levels: ['one'] },
+      ],
+    });
     expect(loadLevels(twice, () => undefined)).toEqual({ chapters: [], errors: ['chapters[1].levels[0]: "one" is used more than once'] });
     expect(loadLevels('{"version": 2, "chapters": []}', () => undefined).errors).toEqual([
       'version: must be 1, got 2',
@@ -46,12 +52,22 @@ describe('loading the levels of an index', () => {
 
 describe('the ideas and presets of an index, for teachers', () => {
   const index = (extra: Record<string, unknown>) =>
-    JSON.stringify({ version: 1, chapters: [{ id: 'a', title: 'A', levels: ['one', 'two'] }, { id: 'b', title: 'B', levels: ['three'] }], ...extra });
+    JSON.stringify({
+      version: 1,
+      chapters: [
+        { id: 'a', title: 'A', levels: ['one', 'two'] },
+        { id: 'b', title: 'B', levels: ['three'] },
+      ],
+      ...extra,
+    });
   const idea = { en: 'looking around', nl: 'rondkijken' };
   const preset = { id: 'short', title: 'Short', levels: ['three', 'one'] };
 
-  it('reads each level\'s idea and the presets; an index without them has none', () => {
-    expect(loadLevelGuide(index({ ideas: { one: idea, three: 'mirrors' }, presets: [preset] }))).toEqual({ ideas: { one: idea, three: 'mirrors' }, presets: [preset] });
+  it("reads each level's idea and the presets; an index without them has none", () => {
+    expect(loadLevelGuide(index({ ideas: { one: idea, three: 'mirrors' }, presets: [preset] }))).toEqual({
+      ideas: { one: idea, three: 'mirrors' },
+      presets: [preset],
+    });
     expect(loadLevelGuide(index({}))).toEqual({ ideas: {}, presets: [] });
     expect(loadLevelGuide('{ "version": 1')).toEqual({ ideas: {}, presets: [] });
   });

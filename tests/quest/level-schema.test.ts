@@ -72,7 +72,7 @@ describe('field messages read `path: reason`, like scene files', () => {
     ]);
   });
 
-  it('checks each goal kind\'s fields where they stand, also inside all/any', () => {
+  it("checks each goal kind's fields where they stand, also inside all/any", () => {
     const [unknownEvent] = errorsOf((level) => (level.tasks[0].goal = { event: 'view.spun' }));
     expect(unknownEvent).toMatch(/^tasks\[0\]\.goal\.event: must be one of scene\.loaded, .*, got "view\.spun"$/);
     expect(errorsOf((level) => (level.tasks[2].goal = { all: [{ event: 'view.orbited' }, { state: 'selection', op: 'is', value: null }] }))).toEqual([
@@ -140,7 +140,10 @@ describe('field messages read `path: reason`, like scene files', () => {
   });
 
   it('gives one line for text that is not JSON', () => {
-    expect(parseLevelJson('{ "version": 1, }')).toEqual({ ok: false, errors: ['(root): not valid JSON at line 1, column 17: expected a field name in double quotes, found "}"'] });
+    expect(parseLevelJson('{ "version": 1, }')).toEqual({
+      ok: false,
+      errors: ['(root): not valid JSON at line 1, column 17: expected a field name in double quotes, found "}"'],
+    });
   });
 });
 
@@ -154,11 +157,13 @@ describe('rules across fields (once every field is valid)', () => {
   });
 
   it('wants a solution and a hint for tasks done in the lab, and none for quiz and info tasks', () => {
-    expect(errorsOf((level) => {
-      delete level.tasks[0].solution;
-      level.tasks[0].hints = [];
-      level.tasks[1].solution = [{ type: 'view.orbited' }];
-    })).toEqual([
+    expect(
+      errorsOf((level) => {
+        delete level.tasks[0].solution;
+        level.tasks[0].hints = [];
+        level.tasks[1].solution = [{ type: 'view.orbited' }];
+      }),
+    ).toEqual([
       'tasks[0].solution: is required: the actions that complete this task ("show me" performs them)',
       'tasks[0].hints: must have at least 1 hint for a task done in the lab',
       'tasks[1].solution: a quiz task has no solution: its answer is in its goal',
@@ -175,23 +180,33 @@ describe('rules across fields (once every field is valid)', () => {
     expect(errorsOf((level) => (level.tasks[2].goal = { event: 'render.finished', where: { 'scene.objects.color': [1, 0, 0] } }))).toEqual([
       'tasks[2].goal.where.scene.objects.color: scene.objects is a list: use [0], [id=…] or .length, not .color',
     ]);
-    expect(errorsOf((level) => (level.tasks[2].goal = { any: [{ state: 'selection.kind', op: '==', value: 'object' }, { state: 'scene..x', op: '==', value: 1 }] }))).toEqual([
-      'tasks[2].goal.any[1].state: cannot read "scene..x" from "..x" on: write .field, [0] or [id=name]',
-    ]);
+    expect(
+      errorsOf(
+        (level) =>
+          (level.tasks[2].goal = {
+            any: [
+              { state: 'selection.kind', op: '==', value: 'object' },
+              { state: 'scene..x', op: '==', value: 1 },
+            ],
+          }),
+      ),
+    ).toEqual(['tasks[2].goal.any[1].state: cannot read "scene..x" from "..x" on: write .field, [0] or [id=name]']);
   });
 
   it('accepts paths the starting state cannot show: ids added later, optional fields, selections', () => {
-    const result = parseLevel(levelFile((level) => {
-      level.tasks[2].goal = {
-        all: [
-          { state: 'scene.objects[id=sphere-1].material.color', op: '==', value: [1, 0, 0] },
-          { state: 'scene.objects[id=ball].name', op: '==', value: 'Ball' },
-          { state: 'selection.id', op: '==', value: 'ball' },
-          { state: 'selectedPixel[0]', op: '==', value: 0 },
-          { state: 'scene.lights.length', op: '>', value: 1 },
-        ],
-      };
-    }));
+    const result = parseLevel(
+      levelFile((level) => {
+        level.tasks[2].goal = {
+          all: [
+            { state: 'scene.objects[id=sphere-1].material.color', op: '==', value: [1, 0, 0] },
+            { state: 'scene.objects[id=ball].name', op: '==', value: 'Ball' },
+            { state: 'selection.id', op: '==', value: 'ball' },
+            { state: 'selectedPixel[0]', op: '==', value: 0 },
+            { state: 'scene.lights.length', op: '>', value: 1 },
+          ],
+        };
+      }),
+    );
     expect(result.ok ? [] : result.errors).toEqual([]);
   });
 
@@ -229,9 +244,17 @@ describe('rules across fields (once every field is valid)', () => {
     expect(result.ok ? [] : result.errors).toEqual([]);
   });
 
-  it('wants a task\'s evidence to name rays by their way from the camera, and things and a pixel the scene has', () => {
-    const valid = parseLevel(levelFile((level) => (level.tasks[0].evidence = { objects: ['ball', 'lamp'], rays: { pixel: [3, 2], paths: ['primary', 'primary/shadow', 'primary/reflect/light'] } })));
-    expect(valid.ok ? valid.level.tasks[0]!.evidence : valid.errors).toEqual({ objects: ['ball', 'lamp'], rays: { pixel: [3, 2], paths: ['primary', 'primary/shadow', 'primary/reflect/light'] } });
+  it("wants a task's evidence to name rays by their way from the camera, and things and a pixel the scene has", () => {
+    const valid = parseLevel(
+      levelFile(
+        (level) =>
+          (level.tasks[0].evidence = { objects: ['ball', 'lamp'], rays: { pixel: [3, 2], paths: ['primary', 'primary/shadow', 'primary/reflect/light'] } }),
+      ),
+    );
+    expect(valid.ok ? valid.level.tasks[0]!.evidence : valid.errors).toEqual({
+      objects: ['ball', 'lamp'],
+      rays: { pixel: [3, 2], paths: ['primary', 'primary/shadow', 'primary/reflect/light'] },
+    });
     expect(errorsOf((level) => (level.tasks[0].evidence = { objects: ['box'], rays: { pixel: [4, 0], paths: ['shadow', 'primary/bounce'] } }))).toEqual([
       'tasks[0].evidence.rays.paths[0]: must be kinds of ray joined by "/", from the camera\'s: "primary", then reflect, refract, shadow, light, area-light, area-shadow',
       'tasks[0].evidence.rays.paths[1]: must be kinds of ray joined by "/", from the camera\'s: "primary", then reflect, refract, shadow, light, area-light, area-shadow',

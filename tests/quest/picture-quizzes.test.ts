@@ -40,8 +40,8 @@ function difference(a: Uint8ClampedArray, b: Uint8ClampedArray): number {
   return sum / ((a.length * 3) / 4) / 255;
 }
 
-describe('a picture prediction\'s scenes', () => {
-  it('are the level\'s starting scene changed by each choice\'s actions, at thumbnail size with its aspect', () => {
+describe("a picture prediction's scenes", () => {
+  it("are the level's starting scene changed by each choice's actions, at thumbnail size with its aspect", () => {
     const scene = { ...defaultScene(), settings: { ...defaultScene().settings, imageSize: [320, 240] as [number, number] } };
     const goal = pictureGoal([[{ type: 'settings.changed', changes: { shadows: false } }], [{ type: 'settings.changed', changes: { supersampling: 3 } }]]);
     const [first, second] = pictureScenes(scene, goal);
@@ -59,10 +59,10 @@ const pictureTasks = readdirSync(levelsFolder)
     return level.tasks.flatMap((task) => (task.goal.kind === 'picture' ? [{ name: `${level.id}/${task.id}`, scene: level.scene, goal: task.goal }] : []));
   });
 
-describe('the levels\' picture predictions', () => {
+describe("the levels' picture predictions", () => {
   it('are there: at least one level asks one', () => expect(pictureTasks.length).toBeGreaterThan(0));
 
-  it.each(pictureTasks)('$name: every choice\'s actions are accepted, and every two pictures differ to the eye', async ({ scene, goal }) => {
+  it.each(pictureTasks)("$name: every choice's actions are accepted, and every two pictures differ to the eye", async ({ scene, goal }) => {
     for (const choice of goal.picture.choices) {
       let state = initialState(scene);
       for (const action of choice.actions) {

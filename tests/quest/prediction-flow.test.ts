@@ -112,7 +112,7 @@ describe('a prediction', () => {
   });
 });
 
-describe('the order of a quiz\'s choices', () => {
+describe("the order of a quiz's choices", () => {
   it('is a permutation, the same for the same seed', () => {
     const order = choiceOrder(5, 'a/b/c');
     expect([...order].sort()).toEqual([0, 1, 2, 3, 4]);

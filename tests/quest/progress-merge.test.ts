@@ -12,14 +12,18 @@ function progress(events: LoggedEvent[], change: Partial<Progress> = {}, started
 
 const hidden = (t: number, id?: string): LoggedEvent => ({ t, type: 'tab.hidden', ...(id === undefined ? {} : { id }) });
 
-describe('merging two tabs\' progress', () => {
-  it('keeps every event of both logs once, in time order, each tab\'s events in their own order', () => {
+describe("merging two tabs' progress", () => {
+  it("keeps every event of both logs once, in time order, each tab's events in their own order", () => {
     const shared = [hidden(0, 'saved.0')];
     const a = progress([...shared, hidden(10, 'a.0'), hidden(30, 'a.1'), hidden(30, 'a.2')]);
     const b = progress([...shared, hidden(20, 'b.0'), hidden(30, 'b.1')]);
     const merged = mergeProgress(a, b).log.events.map((event) => event.id);
     expect(merged).toEqual(['saved.0', 'a.0', 'b.0', 'a.1', 'a.2', 'b.1']);
-    expect(mergeProgress(b, a).log.events.map((event) => event.id).sort()).toEqual([...merged].sort());
+    expect(
+      mergeProgress(b, a)
+        .log.events.map((event) => event.id)
+        .sort(),
+    ).toEqual([...merged].sort());
   });
 
   it('keeps identical events of two tabs apart: their ids differ', () => {
@@ -36,13 +40,19 @@ describe('merging two tabs\' progress', () => {
     expect(mergeProgress(once, once)).toEqual(once);
   });
 
-  it('puts logs that started apart on the earlier start\'s clock, badges too', () => {
+  it("puts logs that started apart on the earlier start's clock, badges too", () => {
     const early = progress([hidden(100, 'a.0')], { badges: [{ badge: { kind: 'first-render' }, t: 100 }] });
     const late = progress([hidden(100, 'b.0')], { badges: [{ badge: { kind: 'sandbox-saved' }, t: 100 }] }, '2025-03-01T09:00:05.000Z');
     const merged = mergeProgress(late, early);
     expect(merged.log.startedAt).toBe(START);
-    expect(merged.log.events.map(({ id, t }) => [id, t])).toEqual([['a.0', 100], ['b.0', 5100]]);
-    expect(merged.badges).toEqual([{ badge: { kind: 'first-render' }, t: 100 }, { badge: { kind: 'sandbox-saved' }, t: 5100 }]);
+    expect(merged.log.events.map(({ id, t }) => [id, t])).toEqual([
+      ['a.0', 100],
+      ['b.0', 5100],
+    ]);
+    expect(merged.badges).toEqual([
+      { badge: { kind: 'first-render' }, t: 100 },
+      { badge: { kind: 'sandbox-saved' }, t: 5100 },
+    ]);
     expect(mergeLogs(late.log, early.log)).toMatchObject({ shiftOurs: 5000, shiftTheirs: 0 });
   });
 
@@ -52,15 +62,24 @@ describe('merging two tabs\' progress', () => {
       badges: [{ badge: { kind: 'first-render' }, t: 50 }],
     });
     const b = progress([], {
-      levels: { first: { tasks: { orbit: { how: 'done', points: 10 } }, hintsUsed: 0 }, second: { tasks: { predict: { how: 'done', points: 10, correct: true } }, hintsUsed: 0 } },
-      badges: [{ badge: { kind: 'first-render' }, t: 20 }, { badge: { kind: 'no-hints', level: 'second' }, t: 60 }],
+      levels: {
+        first: { tasks: { orbit: { how: 'done', points: 10 } }, hintsUsed: 0 },
+        second: { tasks: { predict: { how: 'done', points: 10, correct: true } }, hintsUsed: 0 },
+      },
+      badges: [
+        { badge: { kind: 'first-render' }, t: 20 },
+        { badge: { kind: 'no-hints', level: 'second' }, t: 60 },
+      ],
     });
     const merged = mergeProgress(a, b);
     expect(merged.levels).toEqual({
       first: { tasks: { orbit: { how: 'done', points: 10 }, zoom: { how: 'done', points: 5 } }, hintsUsed: 3 },
       second: { tasks: { predict: { how: 'done', points: 10, correct: true } }, hintsUsed: 0 },
     });
-    expect(merged.badges).toEqual([{ badge: { kind: 'first-render' }, t: 20 }, { badge: { kind: 'no-hints', level: 'second' }, t: 60 }]);
+    expect(merged.badges).toEqual([
+      { badge: { kind: 'first-render' }, t: 20 },
+      { badge: { kind: 'no-hints', level: 'second' }, t: 60 },
+    ]);
   });
 
   it('counts at least the hints the merged log shows: one in each tab is two', () => {
@@ -90,7 +109,7 @@ describe('merging two tabs\' progress', () => {
   });
 });
 
-describe('whether saved progress already holds a tab\'s', () => {
+describe("whether saved progress already holds a tab's", () => {
   const a = progress([hidden(0, 'a.0')], { levels: { first: { tasks: { orbit: { how: 'done', points: 10 } }, hintsUsed: 1 } } });
 
   it('holds its own and anything merged with it', () => {
@@ -106,7 +125,7 @@ describe('whether saved progress already holds a tab\'s', () => {
     expect(holdsAll(a, { ...a, badges: [{ badge: { kind: 'first-render' }, t: 0 }] })).toBe(false);
   });
 
-  it('holds an earlier epoch\'s progress when its own is later, never the other way round', () => {
+  it("holds an earlier epoch's progress when its own is later, never the other way round", () => {
     const reset = progress([], { epoch: '2025-03-01T10:00:00.000Z.abc' });
     expect(holdsAll(reset, a)).toBe(true);
     expect(holdsAll(a, reset)).toBe(false);

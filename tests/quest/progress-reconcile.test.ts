@@ -8,7 +8,7 @@ import { catalogOf, FakeClock, levelWithId } from '../support/quest-fixtures.ts'
 const catalog = catalogOf([{ id: 'test', levels: [levelWithId('first')] }]);
 
 describe('saved points are worked out again from the level files', () => {
-  it('a hand-edited 1e308 becomes the task\'s own points; a shown task or a wrong prediction none', () => {
+  it("a hand-edited 1e308 becomes the task's own points; a shown task or a wrong prediction none", () => {
     const levels = reconcileLevels(
       {
         first: {
@@ -22,12 +22,22 @@ describe('saved points are worked out again from the level files', () => {
       },
       playableLevels(catalog),
     );
-    expect(levels.first.tasks).toEqual({ orbit: { how: 'done', points: 10 }, zoom: { how: 'shown', points: 0 }, predict: { how: 'done', points: 0, correct: false } });
+    expect(levels.first.tasks).toEqual({
+      orbit: { how: 'done', points: 10 },
+      zoom: { how: 'shown', points: 0 },
+      predict: { how: 'done', points: 0, correct: false },
+    });
   });
 
   it('keeps a task or level the game no longer has, with no more points than a task can give', () => {
-    const levels = reconcileLevels({ gone: { tasks: { old: { how: 'done', points: 1e308 } }, hintsUsed: 2 }, first: { tasks: { renamed: { how: 'done', points: 7 } }, hintsUsed: 0 } }, playableLevels(catalog));
-    expect(levels).toEqual({ gone: { tasks: { old: { how: 'done', points: 100 } }, hintsUsed: 2 }, first: { tasks: { renamed: { how: 'done', points: 7 } }, hintsUsed: 0 } });
+    const levels = reconcileLevels(
+      { gone: { tasks: { old: { how: 'done', points: 1e308 } }, hintsUsed: 2 }, first: { tasks: { renamed: { how: 'done', points: 7 } }, hintsUsed: 0 } },
+      playableLevels(catalog),
+    );
+    expect(levels).toEqual({
+      gone: { tasks: { old: { how: 'done', points: 100 } }, hintsUsed: 2 },
+      first: { tasks: { renamed: { how: 'done', points: 7 } }, hintsUsed: 0 },
+    });
   });
 
   it('the engine shows the recomputed points', () => {

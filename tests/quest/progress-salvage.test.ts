@@ -43,7 +43,10 @@ describe('damaged saved progress keeps what is not damaged', () => {
   it('one bad event out of 50: that event is left out, the points and every other event kept', () => {
     expect(progress.log.events.length).toBeGreaterThanOrEqual(50);
     expect(points).toBeGreaterThan(0);
-    const read = readProgressJson(damaged((json) => (json.log.events[20] = { ...json.log.events[20], type: 'tab.exploded' })), NOW);
+    const read = readProgressJson(
+      damaged((json) => (json.log.events[20] = { ...json.log.events[20], type: 'tab.exploded' })),
+      NOW,
+    );
     expect(read.ok).toBe(true);
     if (!read.ok) return;
     expect(pointsOf(read.progress)).toBe(points);
@@ -54,7 +57,10 @@ describe('damaged saved progress keeps what is not damaged', () => {
   });
 
   it('an unknown language code: the default language, the points kept', () => {
-    const read = readProgressJson(damaged((json) => (json.settings.locale = 'fr')), NOW);
+    const read = readProgressJson(
+      damaged((json) => (json.settings.locale = 'fr')),
+      NOW,
+    );
     expect(read).toMatchObject({ ok: true, progress: { settings: { locale: 'en' } } });
     if (!read.ok) return;
     expect(pointsOf(read.progress)).toBe(points);
@@ -62,7 +68,10 @@ describe('damaged saved progress keeps what is not damaged', () => {
   });
 
   it('an event with a wrong time: only that event is left out, not every event after it', () => {
-    const read = readProgressJson(damaged((json) => (json.log.events[10].t = 9e12)), NOW);
+    const read = readProgressJson(
+      damaged((json) => (json.log.events[10].t = 9e12)),
+      NOW,
+    );
     expect(read.ok).toBe(true);
     if (!read.ok) return;
     expect(read.progress.log.events).toHaveLength(progress.log.events.length - 1);
@@ -70,11 +79,17 @@ describe('damaged saved progress keeps what is not damaged', () => {
   });
 
   it('a task with bad points keeps the task (the points are worked out again); one with a bad "how" is left out', () => {
-    const badPoints = readProgressJson(damaged((json) => (json.levels.first.tasks.orbit.points = -5)), NOW);
+    const badPoints = readProgressJson(
+      damaged((json) => (json.levels.first.tasks.orbit.points = -5)),
+      NOW,
+    );
     expect(badPoints).toMatchObject({ ok: true, progress: { levels: { first: { tasks: { orbit: { how: 'done', points: 0 } } } } } });
     const engine = badPoints.ok ? new QuestEngine({ catalog, progress: badPoints.progress, clock: new FakeClock() }) : null;
     expect(engine?.points).toBe(points);
-    const badHow = readProgressJson(damaged((json) => (json.levels.first.tasks.orbit.how = 'guessed')), NOW);
+    const badHow = readProgressJson(
+      damaged((json) => (json.levels.first.tasks.orbit.how = 'guessed')),
+      NOW,
+    );
     expect(badHow.ok && badHow.progress.levels.first.tasks.orbit).toBeUndefined();
     expect(badHow.ok && badHow.repaired).toEqual(['levels.first.tasks.orbit.how: must be one of done, shown, skipped, got "guessed" (task left out)']);
   });
@@ -94,13 +109,21 @@ describe('damaged saved progress keeps what is not damaged', () => {
   });
 
   it('a damaged log start becomes the time of the repair', () => {
-    const read = readProgressJson(damaged((json) => (json.log.startedAt = 'yesterday')), NOW);
+    const read = readProgressJson(
+      damaged((json) => (json.log.startedAt = 'yesterday')),
+      NOW,
+    );
     expect(read).toMatchObject({ ok: true, progress: { log: { startedAt: NOW } } });
   });
 
   it('still refuses what is not progress of this version, and reads good progress without notes', () => {
     expect(readProgressJson('{"kind": "notes"}', NOW)).toMatchObject({ ok: false, kind: 'foreign' });
-    expect(readProgressJson(damaged((json) => (json.version = 2)), NOW)).toMatchObject({ ok: false, kind: 'other-version' });
+    expect(
+      readProgressJson(
+        damaged((json) => (json.version = 2)),
+        NOW,
+      ),
+    ).toMatchObject({ ok: false, kind: 'other-version' });
     expect(readProgressJson('{ broken', NOW)).toMatchObject({ ok: false, kind: 'damaged' });
     expect(readProgressJson(exportProgress(progress), NOW)).toEqual({ ok: true, progress, repaired: [] });
   });

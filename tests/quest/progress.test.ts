@@ -59,8 +59,18 @@ describe('recovering from saved data that cannot be used', () => {
   const cases: { name: string; saved: string; kind: string; reason: RegExp }[] = [
     { name: 'garbage', saved: 'ẞ%&not json', kind: 'damaged', reason: /^\(root\): not valid JSON at line 1, column 1/ },
     { name: 'truncated JSON', saved: JSON.stringify(newProgress(new FakeClock())).slice(0, 60), kind: 'damaged', reason: /^\(root\): not valid JSON/ },
-    { name: 'another app\'s data', saved: JSON.stringify({ theme: 'dark' }), kind: 'foreign', reason: /^kind: must be "ray-tracer-quest-progress" in a progress file, got "kind" nothing$/ },
-    { name: 'a newer version', saved: JSON.stringify({ ...newProgress(new FakeClock()), version: 2 }), kind: 'other-version', reason: /^version: this app reads progress version 1, got 2$/ },
+    {
+      name: "another app's data",
+      saved: JSON.stringify({ theme: 'dark' }),
+      kind: 'foreign',
+      reason: /^kind: must be "ray-tracer-quest-progress" in a progress file, got "kind" nothing$/,
+    },
+    {
+      name: 'a newer version',
+      saved: JSON.stringify({ ...newProgress(new FakeClock()), version: 2 }),
+      kind: 'other-version',
+      reason: /^version: this app reads progress version 1, got 2$/,
+    },
   ];
 
   const opening: Record<string, RegExp> = {
@@ -75,7 +85,9 @@ describe('recovering from saved data that cannot be used', () => {
       expect(problem?.kind).toBe(kind);
       expect(problem?.reasons[0]).toMatch(reason);
       expect(problem && progressProblemText(problem, 0)).toMatch(opening[kind]);
-      expect(problem && progressProblemText(problem, 0)).toMatch(/You start from the beginning\. The saved data as it was is kept: download or restore it from the Menu \(Damaged saves\)\.$/);
+      expect(problem && progressProblemText(problem, 0)).toMatch(
+        /You start from the beginning\. The saved data as it was is kept: download or restore it from the Menu \(Damaged saves\)\.$/,
+      );
       expect(problem?.backupKey).toBe('rtq.progress.backup.2025-03-01T09:00:00.000Z');
       expect(problem?.raw).toBe(saved);
       expect(storage.getItem(problem?.backupKey ?? '')).toBe(saved);
@@ -93,7 +105,9 @@ describe('recovering from saved data that cannot be used', () => {
     const { problem } = store.load(); // same clock reading: the backup key is taken
     expect(problem?.backupKey).toBeNull();
     expect(problem?.raw).toBe('second damage');
-    expect(problem && progressProblemText(problem, 0)).toMatch(/no room to keep a copy of the saved data as it was, so nothing is saved over it until you download it from the Menu/);
+    expect(problem && progressProblemText(problem, 0)).toMatch(
+      /no room to keep a copy of the saved data as it was, so nothing is saved over it until you download it from the Menu/,
+    );
     expect(storage.getItem(`${PROGRESS_KEY}.backup.2025-03-01T09:00:00.000Z`)).toBe('first damage');
   });
 
@@ -109,13 +123,25 @@ describe('recovering from saved data that cannot be used', () => {
     };
     const { problem, progress } = new ProgressStore(blocked, new FakeClock()).load();
     expect(problem).toMatchObject({ kind: 'unreadable-storage', reasons: ['The operation is insecure.'], backupKey: null, raw: null });
-    expect(problem && progressProblemText(problem, 0)).toMatch(/^This browser does not let the app read its storage, so progress lasts only while this page is open\./);
+    expect(problem && progressProblemText(problem, 0)).toMatch(
+      /^This browser does not let the app read its storage, so progress lasts only while this page is open\./,
+    );
     expect(progress.levels).toEqual({});
   });
 
   const refusals = [
-    { name: 'full storage', error: 'QuotaExceededError', kind: 'storage-full', text: /^The browser's storage is full, so progress is not saved\. It is kept while this page is open and saved as soon as there is room: export it \(Menu\) to be safe\.$/ },
-    { name: 'storage that refuses every write', error: 'SecurityError', kind: 'storage-blocked', text: /^The browser does not let the app save, so progress is not saved\./ },
+    {
+      name: 'full storage',
+      error: 'QuotaExceededError',
+      kind: 'storage-full',
+      text: /^The browser's storage is full, so progress is not saved\. It is kept while this page is open and saved as soon as there is room: export it \(Menu\) to be safe\.$/,
+    },
+    {
+      name: 'storage that refuses every write',
+      error: 'SecurityError',
+      kind: 'storage-blocked',
+      text: /^The browser does not let the app save, so progress is not saved\./,
+    },
   ] as const;
   for (const { name, error, kind, text } of refusals) {
     it(`${name}: says why progress was not saved`, () => {
@@ -155,7 +181,11 @@ describe('export, import and reset', () => {
       kind: 'foreign',
       errors: ['kind: must be "ray-tracer-quest-progress" in a progress file, got "kind" nothing'],
     });
-    expect(parseProgressJson('[1, 2]')).toMatchObject({ ok: false, kind: 'foreign', errors: ['kind: must be "ray-tracer-quest-progress" in a progress file, got a list of 2 items'] });
+    expect(parseProgressJson('[1, 2]')).toMatchObject({
+      ok: false,
+      kind: 'foreign',
+      errors: ['kind: must be "ray-tracer-quest-progress" in a progress file, got a list of 2 items'],
+    });
   });
 
   it('reset starts a new epoch that replaces the saved progress, even from a tab that still has the old one', () => {
@@ -176,7 +206,7 @@ describe('export, import and reset', () => {
     expect(store.reset(fresh).epoch! > fresh.epoch!).toBe(true);
   });
 
-  it('keeps a teacher assignment\'s progress apart under its own key', () => {
+  it("keeps a teacher assignment's progress apart under its own key", () => {
     const storage = new MemoryStorage();
     const clock = new FakeClock();
     new ProgressStore(storage, clock, 'rtq.assignment.abc').save(playedProgress(clock));

@@ -14,7 +14,13 @@ import { catalogOf, FakeClock, levelFile, levelWithId } from '../support/quest-f
 function setUp(options: { levels?: Record<string, unknown>[]; progress?: Progress; requiredTasks?: RequiredTasks; clock?: FakeClock } = {}) {
   const clock = options.clock ?? new FakeClock();
   const catalog = catalogOf([{ id: 'test', levels: options.levels ?? [levelWithId('first'), levelWithId('second')] }]);
-  const engine = new QuestEngine({ catalog, progress: options.progress ?? newProgress(clock), clock, requiredTasks: options.requiredTasks, idleHintMs: 30_000 });
+  const engine = new QuestEngine({
+    catalog,
+    progress: options.progress ?? newProgress(clock),
+    clock,
+    requiredTasks: options.requiredTasks,
+    idleHintMs: 30_000,
+  });
   let store: Store | undefined;
   const open = (id: string) => {
     const opened = engine.openLevel(id);
@@ -53,7 +59,7 @@ describe('playing a level', () => {
     expect(setup.engine.points).toBe(30);
   });
 
-  it('does not count a later task\'s event before its turn, but accepts a state already reached', () => {
+  it("does not count a later task's event before its turn, but accepts a state already reached", () => {
     const setup = setUp();
     const store = setup.open('first');
     store.dispatch({ type: 'settings.changed', changes: { supersampling: 3 } });
@@ -121,7 +127,7 @@ describe('playing a level', () => {
     expect(setup.engine.predict('predict', { choice: 1 })).toBeUndefined(); // answered once
   });
 
-  it('logs an optional task as started at the learner\'s first move towards it, not when the level opens', () => {
+  it("logs an optional task as started at the learner's first move towards it, not when the level opens", () => {
     const setup = setUp();
     const store = setup.open('first');
     expect(setup.logged('task.shown').map((event) => [event.task, event.kind])).toEqual([
@@ -156,7 +162,10 @@ describe('playing a level', () => {
     setup.open('first');
     setup.engine.expandExplanation('intro');
     setup.engine.expandExplanation('orbit');
-    expect(setup.logged('explanation.expanded')).toMatchObject([{ level: 'first', task: null }, { level: 'first', task: 'orbit' }]);
+    expect(setup.logged('explanation.expanded')).toMatchObject([
+      { level: 'first', task: null },
+      { level: 'first', task: 'orbit' },
+    ]);
   });
 });
 
@@ -171,7 +180,7 @@ describe('the gate', () => {
     expect(setup.engine.levelStatus('second')).toBe('open');
   });
 
-  it('follows a teacher\'s required tasks instead of the mandatory ones', () => {
+  it("follows a teacher's required tasks instead of the mandatory ones", () => {
     const setup = setUp({ requiredTasks: { first: ['orbit', 'red-ball'] } });
     const store = setup.open('first');
     expect(setup.status()).toMatchObject({ orbit: 'current', predict: 'open', supersample: 'open', 'red-ball': 'waiting' });
@@ -311,7 +320,7 @@ describe('the hint ladder', () => {
 });
 
 describe('badges', () => {
-  it('first render, no hints in a level, a finished chapter, every task, a saved sandbox, a level\'s own badge', () => {
+  it("first render, no hints in a level, a finished chapter, every task, a saved sandbox, a level's own badge", () => {
     const withBadge = levelFile((level) => {
       level.id = 'first';
       level.badges = [{ id: 'painter', title: 'Painter', text: 'You painted the ball.', tasks: ['red-ball'] }];

@@ -17,7 +17,7 @@ const withSettings = (scene: Scene, settings: Partial<Scene['settings']>): Scene
 const cost: SampleCost = { samples: 1000, rays: 40_000, ms: 2000 };
 
 describe('the estimate from a probe of the scene', () => {
-  it('prices every sample of every pass at the probe\'s wall ms per sample, times the session\'s correction', () => {
+  it("prices every sample of every pass at the probe's wall ms per sample, times the session's correction", () => {
     const scene = withSettings(lab, { supersampling: 1 });
     const once = measuredEstimate(cost, scene, { workers: 2, preview: false, correction: 1 });
     // Without previews, a 100 × 100 image at one sample per pixel is 10,000 samples: 20 s.
@@ -36,7 +36,7 @@ describe('the estimate from a probe of the scene', () => {
     expect(estimate(true) / estimate(false)).toBeCloseTo(1 + (1 + 1 / 64 + 1 / 16) / 4, 3);
   });
 
-  it('prices a shallower ray tree by the model\'s ratio of rays per sample, the one part not measured', () => {
+  it("prices a shallower ray tree by the model's ratio of rays per sample, the one part not measured", () => {
     const deep = withSettings(lab, { maxDepth: 6 });
     const estimate = measuredEstimate(cost, deep, { workers: 2, preview: true, correction: 1 });
     expect(estimate(withSettings(deep, { maxDepth: 0 }), 256, 256).seconds).toBeLessThan(estimate(deep, 256, 256).seconds);
@@ -78,7 +78,7 @@ describe('the estimate from a probe of the scene', () => {
   });
 });
 
-describe('the correction from this session\'s renders', () => {
+describe("the correction from this session's renders", () => {
   it('is 1 before any render, and leaves out renders estimated at under 5 s', () => {
     const calibration = new EstimateCalibration();
     expect(calibration.correction).toBe(1);

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { RayCostMap } from '../../src/render/ray-cost-map.ts';
 
-describe('the map of where an image\'s rays go', () => {
-  it('assumes the estimate\'s rays per sample before any tile, then the mean of the tiles traced where it knows nothing', () => {
+describe("the map of where an image's rays go", () => {
+  it("assumes the estimate's rays per sample before any tile, then the mean of the tiles traced where it knows nothing", () => {
     const map = new RayCostMap(64, 64, 7);
     expect(map.snapshot().predictImage(1)).toBeCloseTo(7 * 64 * 64);
     // The top half traced at one sample per 4×4 block: 128 samples, 10 rays each.
@@ -12,10 +12,15 @@ describe('the map of where an image\'s rays go', () => {
     expect(snapshot.predict({ x: 0, y: 32, width: 64, height: 32 }, 1)).toBeCloseTo(10 * 64 * 32);
   });
 
-  it('keeps each cell\'s own cost: a dear corner stays dear', () => {
+  it("keeps each cell's own cost: a dear corner stays dear", () => {
     const map = new RayCostMap(64, 64, 1);
     map.record({ x: 0, y: 0, width: 32, height: 32 }, 1024, 102_400); // 100 rays a sample
-    for (const [x, y] of [[32, 0], [0, 32], [32, 32]]) map.record({ x, y, width: 32, height: 32 }, 1024, 2048); // 2
+    for (const [x, y] of [
+      [32, 0],
+      [0, 32],
+      [32, 32],
+    ])
+      map.record({ x, y, width: 32, height: 32 }, 1024, 2048); // 2
     const snapshot = map.snapshot();
     // At 4 samples per pixel (2×2 supersampling).
     expect(snapshot.predict({ x: 0, y: 0, width: 16, height: 16 }, 4)).toBeCloseTo(100 * 256 * 4);

@@ -51,7 +51,7 @@ describe('the render estimate', () => {
     }
   });
 
-  it('calls the schema\'s heaviest scene heavy: weeks, even on eight workers', () => {
+  it("calls the schema's heaviest scene heavy: weeks, even on eight workers", () => {
     const estimate = estimateRender(heaviest, 4096, 4096, 8);
     expect(estimate.heavy).toBe(true);
     expect(estimate.seconds).toBeGreaterThan(7 * 86_400);

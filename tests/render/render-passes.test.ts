@@ -182,7 +182,7 @@ describe('what a painter must redraw', () => {
     const fine: RenderPass = { ...coarse, block: 2 };
     const tiles = new TiledRender(8, 8, [coarse, fine], {});
     const only = tiles.takeTile()!;
-    const rgb = new Float32Array(8 * 8 * 3).map((_, i) => Math.floor(i / 3) % 8 < 4 ? 1 : 2); // left blocks 1, right blocks 2
+    const rgb = new Float32Array(8 * 8 * 3).map((_, i) => (Math.floor(i / 3) % 8 < 4 ? 1 : 2)); // left blocks 1, right blocks 2
     tiles.accept(only.tileId, rgb, emptyRayStats(), 1);
     const changes = tiles.takeChanges()!;
     expect(changes.preview).toMatchObject({ rows: [0, 4] });

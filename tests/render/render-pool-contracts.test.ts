@@ -64,7 +64,13 @@ function scriptedPool(size = 2): { pool: RenderPool; workers: ScriptedWorker[] }
 /** Answers every queued tile of job `jobId`, round after round, until the job has none left. */
 function finishJob(workers: ScriptedWorker[], jobId: number): void {
   for (let round = 0; round < 10_000; round++) {
-    const next = workers.flatMap((w) => w.queued().filter((t) => t.jobId === jobId).slice(0, 1).map((t) => [w, t] as const));
+    const next = workers.flatMap((w) =>
+      w
+        .queued()
+        .filter((t) => t.jobId === jobId)
+        .slice(0, 1)
+        .map((t) => [w, t] as const),
+    );
     if (next.length === 0) return;
     for (const [worker, tile] of next) worker.finish(tile);
   }

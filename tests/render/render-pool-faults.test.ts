@@ -19,7 +19,12 @@ const fixture = (name: string) => pathToFileURL(new URL(`../support/${name}`, im
 
 /** The image one renderTile over the whole image gives: what any pool must produce. */
 function expectedImage(): Float32Array {
-  return renderTile(buildTracerScene(scene, NO_MESHES), { x: 0, y: 0, width: WIDTH, height: HEIGHT }, { imageWidth: WIDTH, imageHeight: HEIGHT, seed: 0 }, emptyRayStats());
+  return renderTile(
+    buildTracerScene(scene, NO_MESHES),
+    { x: 0, y: 0, width: WIDTH, height: HEIGHT },
+    { imageWidth: WIDTH, imageHeight: HEIGHT, seed: 0 },
+    emptyRayStats(),
+  );
 }
 
 function finished(result: RenderResult): FinishedRender {
@@ -34,7 +39,13 @@ function finished(result: RenderResult): FinishedRender {
  */
 function poolWith(createWorker: CreateRenderWorker, options: Partial<RenderPoolOptions> = {}) {
   const log: string[] = [];
-  const pool = new RenderPool({ size: 2, createWorker, log: (message) => log.push(message), watchdog: { floorMs: 400, sceneBuildMs: 30_000, checkEveryMs: 50 }, ...options });
+  const pool = new RenderPool({
+    size: 2,
+    createWorker,
+    log: (message) => log.push(message),
+    watchdog: { floorMs: 400, sceneBuildMs: 30_000, checkEveryMs: 50 },
+    ...options,
+  });
   return { pool, log };
 }
 
@@ -111,7 +122,9 @@ describe('render workers whose code cannot be loaded', () => {
 describe('render workers that fail', () => {
   it('a worker that crashes: its tiles go to a replacement and the image is complete and right', async () => {
     let started = 0;
-    const { pool, log } = poolWith((handlers) => (started++ === 0 ? createNodeWorkerPort(handlers, fixture('crashing-worker.ts')) : createNodeWorkerPort(handlers)));
+    const { pool, log } = poolWith((handlers) =>
+      started++ === 0 ? createNodeWorkerPort(handlers, fixture('crashing-worker.ts')) : createNodeWorkerPort(handlers),
+    );
     try {
       const result = finished(await pool.render(scene, NO_MESHES, { width: WIDTH, height: HEIGHT }).done);
       expect(new Uint8Array(result.rgb.buffer)).toEqual(new Uint8Array(expectedImage().buffer));
@@ -124,7 +137,9 @@ describe('render workers that fail', () => {
 
   it('a worker that falls silent mid-render (no error, no exit): replaced after its deadline, the render completes', async () => {
     let started = 0;
-    const { pool, log } = poolWith((handlers) => (started++ === 0 ? createNodeWorkerPort(handlers, fixture('silent-worker.ts')) : createNodeWorkerPort(handlers)));
+    const { pool, log } = poolWith((handlers) =>
+      started++ === 0 ? createNodeWorkerPort(handlers, fixture('silent-worker.ts')) : createNodeWorkerPort(handlers),
+    );
     try {
       const result = finished(await pool.render(scene, NO_MESHES, { width: WIDTH, height: HEIGHT }).done);
       expect(new Uint8Array(result.rgb.buffer)).toEqual(new Uint8Array(expectedImage().buffer));
@@ -135,7 +150,10 @@ describe('render workers that fail', () => {
   });
 
   it('a slow worker that still answers is left alone', async () => {
-    const { pool, log } = poolWith(inProcessWorker((response, send) => setTimeout(() => send(response), response.type === 'tile-done' ? 150 : 0)), { size: 1 });
+    const { pool, log } = poolWith(
+      inProcessWorker((response, send) => setTimeout(() => send(response), response.type === 'tile-done' ? 150 : 0)),
+      { size: 1 },
+    );
     try {
       finished(await pool.render(scene, NO_MESHES, { width: 40, height: 30, preview: false }).done);
       expect(log).toEqual([]);
@@ -189,7 +207,10 @@ describe('render workers that fail', () => {
   });
 
   it('a pixel trace on a worker that falls silent fails with the reason instead of waiting for ever', async () => {
-    const { pool } = poolWith(inProcessWorker((response, send) => response.type !== 'pixel-traced' && send(response)), { size: 1 });
+    const { pool } = poolWith(
+      inProcessWorker((response, send) => response.type !== 'pixel-traced' && send(response)),
+      { size: 1 },
+    );
     try {
       pool.setScene(scene, NO_MESHES);
       await pool.ready();

@@ -40,7 +40,12 @@ describe('RenderPool with worker threads', () => {
   it('renders exactly the image that one renderTile over the whole image gives', async () => {
     const result = finished(await pool.render(scene, NO_MESHES, { width: WIDTH, height: HEIGHT, seed: 7 }).done);
     const stats = emptyRayStats();
-    const whole = renderTile(buildTracerScene(scene, NO_MESHES), { x: 0, y: 0, width: WIDTH, height: HEIGHT }, { imageWidth: WIDTH, imageHeight: HEIGHT, seed: 7 }, stats);
+    const whole = renderTile(
+      buildTracerScene(scene, NO_MESHES),
+      { x: 0, y: 0, width: WIDTH, height: HEIGHT },
+      { imageWidth: WIDTH, imageHeight: HEIGHT, seed: 7 },
+      stats,
+    );
 
     expect(result).toMatchObject({ width: WIDTH, height: HEIGHT, workers: 2, stats });
     expect(new Uint8Array(result.rgb.buffer)).toEqual(new Uint8Array(whole.buffer));
@@ -66,13 +71,21 @@ describe('RenderPool with worker threads', () => {
     expect(passes.map((pass) => pass.kind)).toEqual(['preview', 'preview', 'sharp', 'final']);
     expect(events).toEqual([...passes.slice(1).map(() => 'preview'), 'done']);
     // Each coarse preview at its own resolution: pixel (x, y) is block (x, y)'s one sample.
-    passes.filter((pass) => pass.kind === 'preview').forEach(({ block }, i) => {
-      const blocks = renderTile(buildTracerScene(scene, NO_MESHES), { x: 0, y: 0, width: WIDTH, height: HEIGHT }, { imageWidth: WIDTH, imageHeight: HEIGHT, seed: 0, block });
-      const [width, height] = [Math.ceil(WIDTH / block), Math.ceil(HEIGHT / block)];
-      const expected = Array.from({ length: width * height }, (_, p) => [...blocks.slice((Math.floor(p / width) * block * WIDTH + (p % width) * block) * 3).subarray(0, 3)]).flat();
-      expect(previews[i]).toMatchObject({ width, height, block });
-      expect([...previews[i].rgb]).toEqual(expected);
-    });
+    passes
+      .filter((pass) => pass.kind === 'preview')
+      .forEach(({ block }, i) => {
+        const blocks = renderTile(
+          buildTracerScene(scene, NO_MESHES),
+          { x: 0, y: 0, width: WIDTH, height: HEIGHT },
+          { imageWidth: WIDTH, imageHeight: HEIGHT, seed: 0, block },
+        );
+        const [width, height] = [Math.ceil(WIDTH / block), Math.ceil(HEIGHT / block)];
+        const expected = Array.from({ length: width * height }, (_, p) => [
+          ...blocks.slice((Math.floor(p / width) * block * WIDTH + (p % width) * block) * 3).subarray(0, 3),
+        ]).flat();
+        expect(previews[i]).toMatchObject({ width, height, block });
+        expect([...previews[i].rgb]).toEqual(expected);
+      });
     // The sharp pass shows the whole image.
     expect([previews.at(-1)!.width, previews.at(-1)!.height]).toEqual([WIDTH, HEIGHT]);
     expect(progress.at(-1)).toMatchObject({ phase: 'final', pass: passes.length, passes: passes.length, done: progress.at(-1)?.total });

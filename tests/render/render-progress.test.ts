@@ -107,7 +107,7 @@ describe('the progress of a render, in rays', () => {
     expect(reports.filter((report) => report.phase === 'final').some((report) => report.secondsLeft !== null)).toBe(true);
   });
 
-  it('gives the time left from the rays left at the rate since the final pass\'s first tile, after two seconds of it', () => {
+  it("gives the time left from the rays left at the rate since the final pass's first tile, after two seconds of it", () => {
     let now = 0;
     vi.spyOn(performance, 'now').mockImplementation(() => now);
     const [pass] = planPasses(defaultScene(), { width: 100, height: 100, workers: 1, preview: false });

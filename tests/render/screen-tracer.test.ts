@@ -104,7 +104,14 @@ describe('ScreenTracer (fake pool)', () => {
     expect(published).toHaveLength(1);
     const [rays] = published;
     expect([rays.columns, rays.rows]).toEqual([3, 2]);
-    expect(rays.traces.map((trace) => trace.pixel)).toEqual([[0, 0], [1, 0], [2, 0], [0, 1], [1, 1], [2, 1]]);
+    expect(rays.traces.map((trace) => trace.pixel)).toEqual([
+      [0, 0],
+      [1, 0],
+      [2, 0],
+      [0, 1],
+      [1, 1],
+      [2, 1],
+    ]);
     expect(pool.requests.every((request) => request.seed === DEFAULT_SEED)).toBe(true);
     expect(tracer.rays).toBe(rays);
     expect(errors).toEqual([]);
@@ -171,7 +178,10 @@ describe('ScreenTracer (fake pool)', () => {
     await vi.advanceTimersByTimeAsync(0);
     expect(pool.pending.size).toBe(REQUESTS_IN_FLIGHT);
     await pool.answerAll();
-    const blocks = Array.from({ length: Math.ceil(pixels / PIXELS_PER_REQUEST) }, (_, i) => [i * PIXELS_PER_REQUEST, Math.min(PIXELS_PER_REQUEST, pixels - i * PIXELS_PER_REQUEST)]);
+    const blocks = Array.from({ length: Math.ceil(pixels / PIXELS_PER_REQUEST) }, (_, i) => [
+      i * PIXELS_PER_REQUEST,
+      Math.min(PIXELS_PER_REQUEST, pixels - i * PIXELS_PER_REQUEST),
+    ]);
     expect(blocks.length).toBeGreaterThan(REQUESTS_IN_FLIGHT);
     expect(pool.requests.map(({ first, count }) => [first, count])).toEqual(blocks);
     expect(published[0].traces.map((trace) => trace.pixel)).toEqual(Array.from({ length: pixels }, (_, i) => [i % 16, Math.floor(i / 16)]));
@@ -188,7 +198,10 @@ describe('ScreenTracer (fake pool)', () => {
     await pool.answerAll();
     expect(pool.scenes).toEqual([older, newer]);
     expect(pool.requests.filter((request) => request.scene === older)).toHaveLength(256 / PIXELS_PER_REQUEST);
-    expect(published.map((rays) => [rays.columns, rays.rows])).toEqual([[16, 16], [2, 1]]);
+    expect(published.map((rays) => [rays.columns, rays.rows])).toEqual([
+      [16, 16],
+      [2, 1],
+    ]);
   });
 
   it('reports a failed trace to onError once, and publishes nothing for that scene', async () => {
@@ -344,7 +357,10 @@ describe('ScreenTracer with an inline tracer (fake pool)', () => {
 
   it('traces a scene with a model in the worker until the model is loaded and its BVH built, then inline', async () => {
     const base = cheap();
-    const withPrism = (x: number): Scene => ({ ...base, objects: [...base.objects, { ...base.objects[1], id: 'prism', shape: 'mesh', mesh: 'prism', position: [x, 0.5, 2] }] });
+    const withPrism = (x: number): Scene => ({
+      ...base,
+      objects: [...base.objects, { ...base.objects[1], id: 'prism', shape: 'mesh', mesh: 'prism', position: [x, 0.5, 2] }],
+    });
     tracer.update(withPrism(0.5));
     await vi.advanceTimersByTimeAsync(0);
     await pool.answerAll();

@@ -4,13 +4,20 @@ import { createObject, defaultScene } from '../../src/scene/scene-defaults.ts';
 import type { Scene, SceneObject } from '../../src/scene/scene.ts';
 
 /** Whether two objects' footprints on the floor overlap. */
-const overlap = (a: SceneObject, b: SceneObject) => Math.hypot(a.position[0] - b.position[0], a.position[2] - b.position[2]) < footprintRadius(a) + footprintRadius(b);
+const overlap = (a: SceneObject, b: SceneObject) =>
+  Math.hypot(a.position[0] - b.position[0], a.position[2] - b.position[2]) < footprintRadius(a) + footprintRadius(b);
 
 describe('freePlace', () => {
   it('is where the camera looks when nothing stands there', () => {
     const scene = defaultScene();
     expect(freePlace([], 0.5, [1, 0, -2])).toEqual([1, -2]);
-    expect(freePlace(scene.objects.filter((o) => o.shape === 'plane'), 0.5, [0, 0.5, 0])).toEqual([0, 0]);
+    expect(
+      freePlace(
+        scene.objects.filter((o) => o.shape === 'plane'),
+        0.5,
+        [0, 0.5, 0],
+      ),
+    ).toEqual([0, 0]);
   });
 
   it('is the nearest grid point clear of every standing object', () => {

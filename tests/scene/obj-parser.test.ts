@@ -93,7 +93,11 @@ describe('parseObj: bad input names the file and line', () => {
     ['no faces', 'v 0 0 0\n', 'prism.obj: no faces (f lines) found'],
     ['a vertex index past the end', `${SQUARE_CORNERS}\nf 1 2 40`, 'prism.obj line 6: vertex index 40 out of range (file has 4 vertices before this line)'],
     ['a negative index past the start', `${SQUARE_CORNERS}f 1 2 -5`, 'prism.obj line 5: vertex index -5 out of range (file has 4 vertices before this line)'],
-    ['a normal index past the end', `${SQUARE_CORNERS}vn 0 0 1\nf 1//1 2//1 3//2`, 'prism.obj line 6: normal index 2 out of range (file has 1 normal before this line)'],
+    [
+      'a normal index past the end',
+      `${SQUARE_CORNERS}vn 0 0 1\nf 1//1 2//1 3//2`,
+      'prism.obj line 6: normal index 2 out of range (file has 1 normal before this line)',
+    ],
     ['index 0', `${SQUARE_CORNERS}f 0 1 2`, 'prism.obj line 5: vertex index 0 is not valid (OBJ indices start at 1)'],
     ['a fractional index', `${SQUARE_CORNERS}f 1 2 2.5`, 'prism.obj line 5: face corner "2.5" is not v, v/vt, v//vn or v/vt/vn with whole-number indices'],
     ['a corner without a vertex index', `${SQUARE_CORNERS}f /1 2 3`, 'prism.obj line 5: face corner "/1" is not'],

@@ -2,7 +2,7 @@ import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { benchmarkTable, PAGE_PATH, readResults, TABLE_END, TABLE_START, withBenchmarkTable } from '../../scripts/benchmark-table.ts';
 
-describe('docs/benchmarks.md\'s table', () => {
+describe("docs/benchmarks.md's table", () => {
   const page = readFileSync(PAGE_PATH, 'utf8');
   const results = readResults();
 

@@ -33,7 +33,18 @@ function dist(appBytes: number): string {
   for (const [file, content] of Object.entries(files)) writeFileSync(join(dir, file), content);
   const manifest: Manifest = {
     'index.html': { file: 'assets/index.js', isEntry: true, dynamicImports: ['src/app.ts'] },
-    'src/app.ts': { file: 'assets/app.js', imports: ['_shared.js'], dynamicImports: ['src/locales/nl.ts', 'src/i18n/issue-translation.ts', 'virtual:level-texts/en', 'virtual:level-texts/nl', 'src/view.ts', 'src/dashboard.ts'] },
+    'src/app.ts': {
+      file: 'assets/app.js',
+      imports: ['_shared.js'],
+      dynamicImports: [
+        'src/locales/nl.ts',
+        'src/i18n/issue-translation.ts',
+        'virtual:level-texts/en',
+        'virtual:level-texts/nl',
+        'src/view.ts',
+        'src/dashboard.ts',
+      ],
+    },
     'virtual:level-texts/en': { file: 'assets/levels-en.js' },
     'virtual:level-texts/nl': { file: 'assets/levels-nl.js' },
     'src/i18n/issue-translation.ts': { file: 'assets/issue-translation.js', imports: ['_shared.js'] },
@@ -57,17 +68,17 @@ describe('the first-load budget', () => {
     expect(checkFirstLoad(load).ok).toBe(true);
   });
 
-  it('adds the catalogue of a learner in another language, what loads with it, and the levels in that language only', () => {
+  it('adds the catalogue of a learner in another language and the levels in that language only', () => {
     const dir = dist(1000);
     const dutch = firstLoad(dir, 'nl');
-    expect(dutch.files.map((file) => file.file)).toEqual(['assets/index.js', 'assets/app.js', 'assets/shared.js', 'assets/nl.js', 'assets/issue-translation.js', 'assets/levels-nl.js']);
-    expect(dutch.gzipBytes).toBeGreaterThan(firstLoad(dir).gzipBytes + 2500);
+    expect(dutch.files.map((file) => file.file)).toEqual(['assets/index.js', 'assets/app.js', 'assets/shared.js', 'assets/nl.js', 'assets/levels-nl.js']);
+    expect(dutch.gzipBytes).toBeGreaterThan(firstLoad(dir).gzipBytes + 2000);
     expect(() => firstLoad(dir, 'fr')).toThrow(/no catalogue for "fr"/);
   });
 
   it('lists each on-demand part with the chunks only it adds, largest first', () => {
     const parts = afterFirstScreen(dist(1000));
-    expect(parts.map((part) => part.source)).toEqual(['src/view.ts', 'src/dashboard.ts']);
+    expect(parts.map((part) => part.source)).toEqual(['src/view.ts', 'src/dashboard.ts', 'src/i18n/issue-translation.ts']);
     // The view brings three.js; the shared chunk is in the first load already.
     expect(parts[0].gzipBytes).toBeGreaterThan(250_000);
     expect(parts[1].gzipBytes).toBeGreaterThan(140_000);

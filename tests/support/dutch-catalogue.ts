@@ -21,7 +21,12 @@ const UNIT = /<trans-unit id="([^"]+)">\s*<source>([\s\S]*?)<\/source>\s*(?:<tar
 const PLACEHOLDER = /<x [^>]*\/>/g;
 
 function unescapeXml(text: string): string {
-  return text.replace(/&lt;/g, '<').replace(/&gt;/g, '>').replace(/&quot;/g, '"').replace(/&apos;/g, "'").replace(/&amp;/g, '&');
+  return text
+    .replace(/&lt;/g, '<')
+    .replace(/&gt;/g, '>')
+    .replace(/&quot;/g, '"')
+    .replace(/&apos;/g, "'")
+    .replace(/&amp;/g, '&');
 }
 
 function parts(xml: string): string[] {

@@ -13,8 +13,11 @@ export async function standInPage(): Promise<(locale: 'en' | 'nl') => Promise<vo
   vi.stubGlobal('localStorage', new MemoryStorage());
   vi.stubGlobal('location', { search: '' });
   const { useLocale } = await import('../../src/i18n/locale.ts');
+  const { loadIssueTranslation } = await import('../../src/i18n/issue-text.ts');
   return async (locale) => {
     await useLocale(locale);
+    // The page loads the reasons' patterns after its first screen, without waiting; a test waits.
+    if (locale !== 'en') await loadIssueTranslation();
   };
 }
 

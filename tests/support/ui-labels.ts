@@ -43,10 +43,50 @@ function escape(text: string): string {
  * Words that stand before "panel", "button"… without naming it, though a label has them:
  * "the first slider", "the next button", "the mouse button" (the one on the mouse).
  */
-const NOT_NAMES = new Set(['the', 'this', 'that', 'same', 'other', 'first', 'second', 'last', 'next', 'new', 'top', 'left', 'right', 'mouse', 'all', 'one', 'each', 'every', 'and', 'then']);
+const NOT_NAMES = new Set([
+  'the',
+  'this',
+  'that',
+  'same',
+  'other',
+  'first',
+  'second',
+  'last',
+  'next',
+  'new',
+  'top',
+  'left',
+  'right',
+  'mouse',
+  'all',
+  'one',
+  'each',
+  'every',
+  'and',
+  'then',
+]);
 
 /** Words of labels that are not a control's name on their own ("Show its rays", "Your own scene"). */
-const SMALL_WORDS = new Set(['for', 'from', 'with', 'into', 'its', 'you', 'your', 'also', 'both', 'more', 'less', 'not', 'per', 'off', 'out', 'own', 'are', 'was']);
+const SMALL_WORDS = new Set([
+  'for',
+  'from',
+  'with',
+  'into',
+  'its',
+  'you',
+  'your',
+  'also',
+  'both',
+  'more',
+  'less',
+  'not',
+  'per',
+  'off',
+  'out',
+  'own',
+  'are',
+  'was',
+]);
 
 /** Labels up to this many words are a control's name; longer messages are sentences, whose words say nothing. */
 const LABEL_WORDS_MAX = 4;
@@ -98,7 +138,8 @@ export function namesNotOnScreen(text: string, words: ScreenWords, otherLanguage
       const lower = name.toLowerCase();
       const capitals = [...words.exact].find((label) => label.toLowerCase() === lower);
       if (capitals) return `**${name}** (the screen writes "${capitals}")`;
-      if (otherLanguage && isOnScreen(name, otherLanguage)) return `**${name}** (a label of the ${otherLanguage.language === 'en' ? 'English' : 'Dutch'} screen)`;
+      if (otherLanguage && isOnScreen(name, otherLanguage))
+        return `**${name}** (a label of the ${otherLanguage.language === 'en' ? 'English' : 'Dutch'} screen)`;
       return `**${name}** (no label on the ${words.language === 'en' ? 'English' : 'Dutch'} screen reads so)`;
     });
 }
@@ -113,15 +154,70 @@ export function namesNotOnScreen(text: string, words: ScreenWords, otherLanguage
  */
 const CUES: Record<Language, { nounAfter: string[]; nounBefore: string[]; compound: string[]; verbs: string[]; places: string[] }> = {
   en: {
-    nounAfter: ['panel', 'panels', 'section', 'sections', 'button', 'buttons', 'switch', 'switches', 'slider', 'sliders', 'checkbox', 'tab', 'menu', 'field', 'fields', 'heading'],
+    nounAfter: [
+      'panel',
+      'panels',
+      'section',
+      'sections',
+      'button',
+      'buttons',
+      'switch',
+      'switches',
+      'slider',
+      'sliders',
+      'checkbox',
+      'tab',
+      'menu',
+      'field',
+      'fields',
+      'heading',
+    ],
     nounBefore: [],
     compound: [],
-    verbs: ['press', 'presses', 'pressing', 'click', 'clicks', 'clicking', 'click on', 'tap', 'tap on', 'open', 'opens', 'choose', 'pick', 'set', 'switch', 'switch on', 'switch off', 'turn on', 'turn off', 'tick', 'untick'],
+    verbs: [
+      'press',
+      'presses',
+      'pressing',
+      'click',
+      'clicks',
+      'clicking',
+      'click on',
+      'tap',
+      'tap on',
+      'open',
+      'opens',
+      'choose',
+      'pick',
+      'set',
+      'switch',
+      'switch on',
+      'switch off',
+      'turn on',
+      'turn off',
+      'tick',
+      'untick',
+    ],
     places: ['under'],
   },
   nl: {
     nounAfter: [],
-    nounBefore: ['paneel', 'panelen', 'sectie', 'kopje', 'onderdeel', 'knop', 'knoppen', 'schakelaar', 'schuif', 'schuifje', 'schuifregelaar', 'vakje', 'veld', 'tabblad', 'menu'],
+    nounBefore: [
+      'paneel',
+      'panelen',
+      'sectie',
+      'kopje',
+      'onderdeel',
+      'knop',
+      'knoppen',
+      'schakelaar',
+      'schuif',
+      'schuifje',
+      'schuifregelaar',
+      'vakje',
+      'veld',
+      'tabblad',
+      'menu',
+    ],
     compound: ['paneel', 'sectie', 'kopje', 'knop', 'schakelaar', 'schuif', 'schuifje', 'schuifregelaar', 'vakje', 'veld', 'tabblad', 'menu'],
     verbs: ['druk op', 'drukt op', 'klik op', 'klikt op', 'tik op', 'tikt op', 'kies', 'kiest', 'open', 'opent', 'zet', 'vink', 'vinkt'],
     places: ['onder'],
@@ -169,7 +265,11 @@ export function unmarkedNames(text: string, words: ScreenWords): string[] {
     if (!found.includes(match[0])) found.push(match[0]);
   };
   // Longest first, so "switch on Show" is read as "switch on" and a name, not as "switch" and "on".
-  const alternatives = (list: string[]) => [...list].sort((a, b) => b.length - a.length).map((cue) => cue.replace(/ /g, '\\s+')).join('|');
+  const alternatives = (list: string[]) =>
+    [...list]
+      .sort((a, b) => b.length - a.length)
+      .map((cue) => cue.replace(/ /g, '\\s+'))
+      .join('|');
   if (cues.nounAfter.length > 0) {
     // "the Ray tracer panel", "the tracer panel": a capital, or a word of the screen's labels, right before the noun is a name.
     // A symbol in brackets may stand between them: "the Refractive index (η) slider".

@@ -42,10 +42,11 @@ describe('the boxes one ray entered and skipped in the BVH', () => {
     const tree = bvhTree(accel.bvh);
     const parents = new Map<BvhNode, BvhNode>();
     const link = (node: BvhNode) => {
-      for (const child of [node.left, node.right]) if (child) {
-        parents.set(child, node);
-        link(child);
-      }
+      for (const child of [node.left, node.right])
+        if (child) {
+          parents.set(child, node);
+          link(child);
+        }
     };
     link(tree.root);
     const random = new RandomStream().reset(hashKey(16, 9));
@@ -68,11 +69,12 @@ describe('the boxes one ray entered and skipped in the BVH', () => {
         if (node !== tree.root) expect(entered.has(parents.get(node)!)).toBe(true);
       }
       // Both children of an entered box are tested, unless a hit in the near one already beat the far one.
-      for (const node of entered) if (node.left && node.right) {
-        const tested = [node.left, node.right].filter((child) => visits.some((v) => v.node === child));
-        expect(tested.length).toBeGreaterThanOrEqual(1);
-        if (tested.length === 1) skipped++;
-      }
+      for (const node of entered)
+        if (node.left && node.right) {
+          const tested = [node.left, node.right].filter((child) => visits.some((v) => v.node === child));
+          expect(tested.length).toBeGreaterThanOrEqual(1);
+          if (tested.length === 1) skipped++;
+        }
       skipped += visits.filter((v) => !v.entered).length;
       const nearest = nearestTriangle(ray);
       expect(nearest >= 0).toBe(t < Infinity);

@@ -18,7 +18,9 @@ function pointScene(z: number, aperture: number, focusDistance: number, radius: 
   return {
     camera: { position: [0, 0, 0], target: [0, 0, -1], fov: FOV, aperture, focusDistance, lensSamples: 8 },
     settings: { background: [0, 0, 0] },
-    objects: [{ id: 'dot', shape: 'sphere', position: [0, 0, -z], scale: [2 * radius, 2 * radius, 2 * radius], material: matte([1, 1, 1], { ambient: 1, diffuse: 0 }) }],
+    objects: [
+      { id: 'dot', shape: 'sphere', position: [0, 0, -z], scale: [2 * radius, 2 * radius, 2 * radius], material: matte([1, 1, 1], { ambient: 1, diffuse: 0 }) },
+    ],
   };
 }
 
@@ -89,7 +91,11 @@ describe('depth of field', () => {
   // lens of radius a focused at f is spread, on the plane in focus, over a disc of radius
   // R = a·|z − f|/z. A ball of radius r there has radius ρ = r·f/z, and a uniform disc of
   // radius R smeared over it has σ² = (R² + ρ²)/4 along any axis.
-  for (const [z, f, a] of [[4, 2, 0.1], [4, 2, 0.2], [1.5, 3, 0.1]]) {
+  for (const [z, f, a] of [
+    [4, 2, 0.1],
+    [4, 2, 0.2],
+    [1.5, 3, 0.1],
+  ]) {
     it(`the circle of confusion has radius a·|z − f|/z (z = ${z}, f = ${f}, a = ${a})`, () => {
       const r = 0.02;
       const pixelsPerMetre = SIZE / (2 * f * Math.tan((FOV / 2) * (Math.PI / 180)));

@@ -12,7 +12,6 @@ import { walkRays } from '../support/ray-fixtures.ts';
  * must give each traced pixel exactly its image colour, as the plain rays do (ray-tree.test.ts).
  */
 
-
 /** A scene with a mirror, glass, an area light and a moving ball, with `changes` on top. */
 function effectsScene(changes: { camera?: object; settings?: object; rough?: number; velocity?: number[] }): TracerScene {
   const rough = changes.rough ?? 0;
@@ -20,14 +19,27 @@ function effectsScene(changes: { camera?: object; settings?: object; rough?: num
     camera: { position: [0, 1.2, 4], target: [0, 0.4, 0], fov: 50, pixels: [6, 4], ...changes.camera },
     settings: { maxDepth: 3, background: [0.6, 0.7, 0.9], ...changes.settings },
     objects: [
-      { id: 'floor', shape: 'plane', scale: [10, 1, 10], material: matte([0.8, 0.8, 0.8], { ambient: 0.1, specular: 0.3, roughness: rough, glossySamples: 2 }) },
-      { id: 'glass', shape: 'sphere', position: [0.4, 0.5, 0.5], material: matte([1, 1, 1], { transparent: true, diffuse: 0.1, roughness: rough, glossySamples: 2 }) },
-      { id: 'ball', shape: 'sphere', position: [-0.8, 0.5, -0.3], velocity: changes.velocity ?? [0, 0, 0], material: matte([0.9, 0.2, 0.1], { specular: 0.5, roughness: rough }) },
+      {
+        id: 'floor',
+        shape: 'plane',
+        scale: [10, 1, 10],
+        material: matte([0.8, 0.8, 0.8], { ambient: 0.1, specular: 0.3, roughness: rough, glossySamples: 2 }),
+      },
+      {
+        id: 'glass',
+        shape: 'sphere',
+        position: [0.4, 0.5, 0.5],
+        material: matte([1, 1, 1], { transparent: true, diffuse: 0.1, roughness: rough, glossySamples: 2 }),
+      },
+      {
+        id: 'ball',
+        shape: 'sphere',
+        position: [-0.8, 0.5, -0.3],
+        velocity: changes.velocity ?? [0, 0, 0],
+        material: matte([0.9, 0.2, 0.1], { specular: 0.5, roughness: rough }),
+      },
     ],
-    lights: [
-      { id: 'panel', type: 'area', position: [0, 3, 0], size: [1, 1], samples: 2, ambient: 0 },
-      pointLight([2, 3, 2], { id: 'bulb', intensity: 0.5 }),
-    ],
+    lights: [{ id: 'panel', type: 'area', position: [0, 3, 0], size: [1, 1], samples: 2, ambient: 0 }, pointLight([2, 3, 2], { id: 'bulb', intensity: 0.5 })],
   });
 }
 
@@ -36,9 +48,12 @@ const cases: [string, Parameters<typeof effectsScene>[0]][] = [
   ['depth of field with one lens point', { camera: { aperture: 0.2, lensSamples: 1 } }],
   ['glossy reflection and frosted glass (roughness 0.3)', { rough: 0.3 }],
   ['motion blur (velocity 1 m, 4 times)', { velocity: [1, 0, 0.3], settings: { timeSamples: 4 } }],
-  ['motion blur at the grid\'s fixed times', { velocity: [1, 0, 0.3], settings: { timeSamples: 4, timePattern: 'grid' } }],
+  ["motion blur at the grid's fixed times", { velocity: [1, 0, 0.3], settings: { timeSamples: 4, timePattern: 'grid' } }],
   ['motion blur at random times, supersampled', { velocity: [1, 0, 0.3], settings: { timeSamples: 3, timePattern: 'random', supersampling: 2 } }],
-  ['all three, supersampled', { camera: { aperture: 0.1, lensSamples: 2 }, rough: 0.2, velocity: [0.5, 0, 0], settings: { timeSamples: 2, supersampling: 2, samplePattern: 'jittered' } }],
+  [
+    'all three, supersampled',
+    { camera: { aperture: 0.1, lensSamples: 2 }, rough: 0.2, velocity: [0.5, 0, 0], settings: { timeSamples: 2, supersampling: 2, samplePattern: 'jittered' } },
+  ],
 ];
 
 describe('distributed ray trees equal the image', () => {
@@ -87,7 +102,7 @@ describe('distributed ray trees equal the image', () => {
     expect(weighed.children.map((child) => child.weight)).toEqual(Array(12).fill(1 / 12));
   });
 
-  it('a pinhole with one time keeps today\'s tree: no lens or time fields, no extra level', () => {
+  it("a pinhole with one time keeps today's tree: no lens or time fields, no extra level", () => {
     const trace = tracePixel(effectsScene({}), 2, 2, 1);
     walkRays(trace.rays, (n) => {
       expect(n.lensPoint).toBeUndefined();

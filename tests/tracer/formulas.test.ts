@@ -68,7 +68,12 @@ describe('supersampling positions', () => {
   it('the grid puts s×s samples at ((i+0.5)/s, (j+0.5)/s)', () => {
     const out: [number, number] = [0, 0];
     const positions = [0, 1, 2, 3].map((k) => [...samplePosition('grid', 2, k, 5, 7, 1, out)]);
-    expect(positions).toEqual([[0.25, 0.25], [0.75, 0.25], [0.25, 0.75], [0.75, 0.75]]);
+    expect(positions).toEqual([
+      [0.25, 0.25],
+      [0.75, 0.25],
+      [0.25, 0.75],
+      [0.75, 0.75],
+    ]);
   });
 
   it('jittered samples stay in their own cell; random ones anywhere in the pixel; both repeatable', () => {
@@ -89,7 +94,13 @@ describe('supersampling positions', () => {
 
 describe('concentric disc mapping', () => {
   it('maps the square onto the unit disc, edges onto the rim', () => {
-    for (const [u, v] of [[1, 0], [0, 1], [-1, 0.3], [0.5, -1], [1, 1]]) {
+    for (const [u, v] of [
+      [1, 0],
+      [0, 1],
+      [-1, 0.3],
+      [0.5, -1],
+      [1, 1],
+    ]) {
       const [x, y] = concentricDisc(u, v);
       expect(Math.hypot(x, y)).toBeCloseTo(Math.max(Math.abs(u), Math.abs(v)), 12);
     }

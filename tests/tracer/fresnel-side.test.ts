@@ -41,7 +41,7 @@ function cosines(hit: RayNode, eta: number): { cosI: number; cosT: number } {
   return { cosI, cosT: Math.sqrt(1 - sinT * sinT) };
 }
 
-describe('Schlick\'s angle is the one on the side of the lower index', () => {
+describe("Schlick's angle is the one on the side of the lower index", () => {
   it('leaving glass: kr = Schlick(cos θt), the transmitted angle outside', () => {
     // From inside the ball, 0.6 m above its centre, looking sideways: 37° to the normal
     // (cos θi = 0.8), below the critical angle of 41.8°.

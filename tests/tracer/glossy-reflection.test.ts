@@ -25,9 +25,7 @@ function mirrorScene(roughness: number, glossySamples = 3) {
   });
 }
 
-const render = (scene: ReturnType<typeof mirrorScene>) =>
-  renderTile(scene, { x: 0, y: 0, width: W, height: H }, { imageWidth: W, imageHeight: H, seed: 4 });
-
+const render = (scene: ReturnType<typeof mirrorScene>) => renderTile(scene, { x: 0, y: 0, width: W, height: H }, { imageWidth: W, imageHeight: H, seed: 4 });
 
 function maxDifference(a: Float32Array, b: Float32Array): number {
   return a.reduce((worst, value, i) => Math.max(worst, Math.abs(value - b[i])), 0);
@@ -37,7 +35,13 @@ describe('glossy reflection', () => {
   it('the basis around R is orthonormal for any direction, also straight down −z', () => {
     const t = new Vector3();
     const b = new Vector3();
-    for (const r of [[0, 0, -1], [0, 0, 1], [0.3, -0.4, 0.866], [1, 0, 0], [-0.6, 0.8, 0]]) {
+    for (const r of [
+      [0, 0, -1],
+      [0, 0, 1],
+      [0.3, -0.4, 0.866],
+      [1, 0, 0],
+      [-0.6, 0.8, 0],
+    ]) {
       const rv = new Vector3(...r).normalize();
       perpendicularBasis(rv, t, b);
       expect(t.length()).toBeCloseTo(1, 12);

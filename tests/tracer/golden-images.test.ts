@@ -44,8 +44,21 @@ const glassModels = (): Scene =>
     objects: [
       { id: 'floor', shape: 'plane', scale: [8, 1, 8], material: { color: [0.6, 0.6, 0.6] } },
       { id: 'wall', shape: 'plane', position: [0, 1.5, -1.5], rotation: [90, 0, 0], scale: [8, 1, 3], material: { color: [0.9, 0.3, 0.3] } },
-      { id: 'glass', shape: 'mesh', mesh: 'wine-glass', position: [-0.6, 0.502, 0], material: { ambient: 0, diffuse: 0, transparent: true, refractiveIndex: 1.5 } },
-      { id: 'prism', shape: 'mesh', mesh: 'prism', position: [0.2, 0.302, 0.3], scale: [0.6, 0.6, 0.6], material: { color: [0.8, 1, 0.8], diffuse: 0.1, transparent: true } },
+      {
+        id: 'glass',
+        shape: 'mesh',
+        mesh: 'wine-glass',
+        position: [-0.6, 0.502, 0],
+        material: { ambient: 0, diffuse: 0, transparent: true, refractiveIndex: 1.5 },
+      },
+      {
+        id: 'prism',
+        shape: 'mesh',
+        mesh: 'prism',
+        position: [0.2, 0.302, 0.3],
+        scale: [0.6, 0.6, 0.6],
+        material: { color: [0.8, 1, 0.8], diffuse: 0.1, transparent: true },
+      },
       { id: 'robot', shape: 'mesh', mesh: 'character', position: [0.9, 0.5, -0.4], material: { color: [0.9, 0.8, 0.5], specular: 0.3 } },
     ],
     lights: [{ id: 'lamp', type: 'point', position: [1, 3, 2] }],
@@ -59,7 +72,10 @@ const depthOfField = (): Scene =>
     objects: [
       { id: 'floor', shape: 'plane', scale: [12, 1, 20], material: { color: [0.8, 0.8, 0.7] } },
       ...[-1, 0, 1, 2].map((step) => ({
-        id: `ball${step + 1}`, shape: 'sphere', position: [step * 0.7, 0.4, -step * 1.6], scale: [0.8, 0.8, 0.8],
+        id: `ball${step + 1}`,
+        shape: 'sphere',
+        position: [step * 0.7, 0.4, -step * 1.6],
+        scale: [0.8, 0.8, 0.8],
         material: { color: [0.3 + 0.2 * (step + 1), 0.3, 0.9 - 0.2 * (step + 1)] },
       })),
     ],
@@ -75,7 +91,13 @@ const glossy = (): Scene =>
       { id: 'floor', shape: 'plane', scale: [10, 1, 10], material: { color: [0.3, 0.3, 0.3], diffuse: 0.4, specular: 0.6, roughness: 0.12 } },
       { id: 'red', shape: 'box', position: [-1.3, 0.4, -1], rotation: [0, 30, 0], scale: [0.8, 0.8, 0.8], material: { color: [0.9, 0.2, 0.1] } },
       { id: 'metal', shape: 'sphere', position: [0.1, 0.5, -0.4], material: { color: [0.9, 0.8, 0.5], diffuse: 0.2, specular: 0.8, roughness: 0.3 } },
-      { id: 'frosted', shape: 'sphere', position: [1.2, 0.4, 0.5], scale: [0.8, 0.8, 0.8], material: { ambient: 0, diffuse: 0.05, transparent: true, roughness: 0.25, glossySamples: 2 } },
+      {
+        id: 'frosted',
+        shape: 'sphere',
+        position: [1.2, 0.4, 0.5],
+        scale: [0.8, 0.8, 0.8],
+        material: { ambient: 0, diffuse: 0.05, transparent: true, roughness: 0.25, glossySamples: 2 },
+      },
     ],
     lights: [{ id: 'lamp', type: 'point', position: [2, 4, 3] }],
   });

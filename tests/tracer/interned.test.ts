@@ -8,7 +8,7 @@ import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
 const KINDS = { grid: 'grid', jittered: 'jittered' } as const;
 
 describe('interned', () => {
-  it('gives the table\'s constant for a name it holds, and any other string back as it is', () => {
+  it("gives the table's constant for a name it holds, and any other string back as it is", () => {
     expect(interned(['gr', 'id'].join('') as 'grid', KINDS)).toBe('grid');
     expect(interned('random' as 'grid', KINDS)).toBe('random');
     // Names inherited by every object are not constants of the table.
@@ -16,7 +16,7 @@ describe('interned', () => {
   });
 });
 
-describe('a scene that came through postMessage (a render worker\'s)', () => {
+describe("a scene that came through postMessage (a render worker's)", () => {
   it('keeps every setting and renders the same picture as the scene it was copied from', () => {
     const scene: Scene = { ...defaultScene(), settings: { ...defaultScene().settings, samplePattern: 'jittered', supersampling: 2 } };
     const received = structuredClone(scene);

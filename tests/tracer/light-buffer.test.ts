@@ -76,7 +76,15 @@ describe('the light buffer of a point light', () => {
     expect(listedIn(1, 0, 0)).toEqual(['ball5,0,0']);
     expect(listedIn(1, 0.01, -0.01)).toEqual(['ball5,0,0']);
     expect(listedIn(0, 0.01, -1)).toEqual(['ball0,0,-5']);
-    for (const [dx, dy, dz] of [[1, 0.9, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0.9, 0, -1]]) expect(listedIn(dx, dy, dz)).toEqual([]);
+    for (const [dx, dy, dz] of [
+      [1, 0.9, 0],
+      [-1, 0, 0],
+      [0, 1, 0],
+      [0, -1, 0],
+      [0, 0, 1],
+      [0.9, 0, -1],
+    ])
+      expect(listedIn(dx, dy, dz)).toEqual([]);
     // Each in a handful of cells, not in whole faces.
     expect(buffer.objects.length).toBeLessThan(10);
   });

@@ -74,7 +74,10 @@ describe('mesh intersection through the BVH', () => {
 
   it('reports the outward, unit, interpolated normal at the hit', () => {
     const knot = torusKnot();
-    const scene = tracerSceneFrom({ objects: [{ id: 'knot', shape: 'mesh', mesh: 'character', scale: [2, 2, 2], material: matte([1, 1, 1]) }] }, new Map([['character', knot]]));
+    const scene = tracerSceneFrom(
+      { objects: [{ id: 'knot', shape: 'mesh', mesh: 'character', scale: [2, 2, 2], material: matte([1, 1, 1]) }] },
+      new Map([['character', knot]]),
+    );
     // From far in front, toward the vertex that faces the viewer most (the knot has a hole
     // in its middle, and at a silhouette an interpolated normal may turn slightly away).
     let facing = 0;
@@ -92,6 +95,8 @@ describe('mesh intersection through the BVH', () => {
   });
 
   it('a scene naming a model that was not loaded is refused with a clear message', () => {
-    expect(() => tracerSceneFrom({ objects: [{ id: 'glass', shape: 'mesh', mesh: 'wine-glass' }] })).toThrow('objects[0] ("glass"): the model "wine-glass" was not loaded');
+    expect(() => tracerSceneFrom({ objects: [{ id: 'glass', shape: 'mesh', mesh: 'wine-glass' }] })).toThrow(
+      'objects[0] ("glass"): the model "wine-glass" was not loaded',
+    );
   });
 });

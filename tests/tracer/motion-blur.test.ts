@@ -16,7 +16,16 @@ function centreRow(velocity: number, timeSamples: number, timePattern: TimePatte
   const scene = tracerSceneFrom({
     camera: { position: [0, 0, DISTANCE], target: [0, 0, 0], fov: FOV },
     settings: { background: [0, 0, 0], timeSamples, timePattern },
-    objects: [{ id: 'ball', shape: 'sphere', position: [START, 0, 0], velocity: [velocity, 0, 0], scale: [2 * RADIUS, 2 * RADIUS, 2 * RADIUS], material: matte([1, 1, 1], { ambient: 1, diffuse: 0 }) }],
+    objects: [
+      {
+        id: 'ball',
+        shape: 'sphere',
+        position: [START, 0, 0],
+        velocity: [velocity, 0, 0],
+        scale: [2 * RADIUS, 2 * RADIUS, 2 * RADIUS],
+        material: matte([1, 1, 1], { ambient: 1, diffuse: 0 }),
+      },
+    ],
   });
   const rgb = renderTile(scene, { x: 0, y: H / 2, width: W, height: 1 }, { imageWidth: W, imageHeight: H, seed: 9 });
   return Array.from({ length: W }, (_, x) => rgb[x * 3]);
@@ -97,7 +106,7 @@ describe('motion blur', () => {
     });
   });
 
-  it('jittered times: the same 4 samples light pixels in the gaps between the grid\'s copies, unevenly (grain)', () => {
+  it("jittered times: the same 4 samples light pixels in the gaps between the grid's copies, unevenly (grain)", () => {
     const grid = centreRow(FAR, 4, 'grid');
     const jittered = centreRow(FAR, 4, 'jittered');
     const [first, last] = litRange(jittered);

@@ -112,7 +112,10 @@ describe('the BVH over objects', () => {
       };
     }
     const bvh = new ObjectBvh(shapes);
-    for (const [from, direction, first] of [[-10, 1, 's0'], [140, -1, 's63']] as const) {
+    for (const [from, direction, first] of [
+      [-10, 1, 's0'],
+      [140, -1, 's63'],
+    ] as const) {
       tested = 0;
       const hit = new Hit().reset(Infinity);
       bvh.nearest(new Ray().set(new Vector3(from, 0.01, 0.02), new Vector3(direction, 0, 0)), hit, null);

@@ -25,7 +25,19 @@ describe('any-hit occlusion', () => {
   for (const kind of kinds) {
     it(`a ${kind} occludes exactly when the nearest-hit test finds it before the distance`, () => {
       const scene = tracerSceneFrom(
-        { objects: [{ id: 'it', shape: kind, ...(kind === 'mesh' ? { mesh: 'character' } : {}), position: [0.2, -0.1, 0.1], rotation: [20, 40, -10], scale: [1.5, 0.8, 1.2], material: matte([1, 1, 1]) }] },
+        {
+          objects: [
+            {
+              id: 'it',
+              shape: kind,
+              ...(kind === 'mesh' ? { mesh: 'character' } : {}),
+              position: [0.2, -0.1, 0.1],
+              rotation: [20, 40, -10],
+              scale: [1.5, 0.8, 1.2],
+              material: matte([1, 1, 1]),
+            },
+          ],
+        },
         new Map([['character', torusKnot()]]),
       );
       const shape = scene.shapes[0];

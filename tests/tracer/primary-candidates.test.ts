@@ -29,7 +29,10 @@ function lookingDown(): TracerScene {
   return tracerSceneFrom({
     camera: { position: [0, 6, 0], target: [0, 0, 0], fov: 60 },
     // The two differ in colour only, so that an image shows which one won a tie.
-    objects: objects.flatMap((object, i) => [{ ...object, id: `a${i}`, material: matte([1, 0.2, 0.2]) }, { ...object, id: `b${i}`, material: matte([0.2, 0.2, 1]) }]),
+    objects: objects.flatMap((object, i) => [
+      { ...object, id: `a${i}`, material: matte([1, 0.2, 0.2]) },
+      { ...object, id: `b${i}`, material: matte([0.2, 0.2, 1]) },
+    ]),
     lights: [pointLight([0, 8, 0])],
   });
 }
@@ -81,7 +84,7 @@ function compareTiles(scene: TracerScene, size: number, tileSide: number, block 
 }
 
 describe('the objects a tile of primary rays can hit (frustum culling)', () => {
-  it('give the BVH walk\'s hit for every ray of the 256-object grid, from lists much shorter than the scene', () => {
+  it("give the BVH walk's hit for every ray of the 256-object grid, from lists much shorter than the scene", () => {
     const { listed, walked, hits, longest } = compareTiles(grid(16, 128), 128, 8);
     expect(listed).toBeGreaterThan(walked);
     expect(hits).toBeGreaterThan(listed / 4);
@@ -89,13 +92,13 @@ describe('the objects a tile of primary rays can hit (frustum culling)', () => {
     expect(longest).toBeLessThan(64);
   });
 
-  it('give the walk\'s hit in a preview (tiles traced block times smaller)', () => {
+  it("give the walk's hit in a preview (tiles traced block times smaller)", () => {
     const { listed, hits } = compareTiles(grid(16, 128), 128, 16, 4);
     expect(listed).toBeGreaterThan(0);
     expect(hits).toBeGreaterThan(0);
   });
 
-  it('give the walk\'s hit between objects in the same place (ties), with rays of other signs left to the walk', () => {
+  it("give the walk's hit between objects in the same place (ties), with rays of other signs left to the walk", () => {
     const { listed, walked, hits } = compareTiles(lookingDown(), 56, 8);
     expect(listed).toBeGreaterThan(0);
     expect(walked).toBeGreaterThan(0);
@@ -109,7 +112,7 @@ describe('the objects a tile of primary rays can hit (frustum culling)', () => {
     expect(new PrimaryCandidates().set(scene, 0, 0, 16, 16, 64, 64).count).toBeGreaterThanOrEqual(0);
   });
 
-  it('leave a rendered image equal to its pixels\' ray trees, which walk the BVH', () => {
+  it("leave a rendered image equal to its pixels' ray trees, which walk the BVH", () => {
     for (const scene of [grid(16, 8), lookingDown()]) {
       const [width, height] = scene.source.camera.pixels;
       for (let y = 0; y < height; y += 2) {

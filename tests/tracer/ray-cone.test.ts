@@ -16,12 +16,17 @@ const boxOf = ({ worldBounds: { min, max } }: Intersectable) => new Float64Array
 function areaLight(shape: 'rectangle' | 'disc', samples: number): TracerLight {
   return new TracerLight(
     tracerSceneFrom({
-      lights: [{
-        id: 'panel', type: 'area', shape, samples,
-        position: [between(-3, 3), between(2, 5), between(-3, 3)],
-        rotation: [between(-60, 60), between(0, 90), between(-60, 60)],
-        size: [between(0.2, 3), between(0.2, 3)],
-      }],
+      lights: [
+        {
+          id: 'panel',
+          type: 'area',
+          shape,
+          samples,
+          position: [between(-3, 3), between(2, 5), between(-3, 3)],
+          rotation: [between(-60, 60), between(0, 90), between(-60, 60)],
+          size: [between(0.2, 3), between(0.2, 3)],
+        },
+      ],
     }).source.lights[0],
   );
 }

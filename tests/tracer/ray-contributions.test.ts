@@ -19,7 +19,7 @@ function overShared(nodes: RayNode[], out: string[] = []): string[] {
 }
 
 describe('the shares of a hit brighter than white (clamped to 1)', () => {
-  it('divide by the hit\'s unclamped colour: lights adding 0.8 and 0.4 to a hit clamped from 1.2 to 1 get 2/3 and 1/3', () => {
+  it("divide by the hit's unclamped colour: lights adding 0.8 and 0.4 to a hit clamped from 1.2 to 1 get 2/3 and 1/3", () => {
     const strong = node('light', [0.8, 0.8, 0.8]);
     const weak = node('light', [0.4, 0.4, 0.4]);
     const hit = node('primary', [1, 1, 1], [strong, weak]);
@@ -28,7 +28,7 @@ describe('the shares of a hit brighter than white (clamped to 1)', () => {
     expect(strong.contribution).toBeCloseTo(2 / 3, 12);
   });
 
-  it('never add up to more than their parent\'s in a traced tree with bright lights and a mirror', () => {
+  it("never add up to more than their parent's in a traced tree with bright lights and a mirror", () => {
     const scene = tracerSceneFrom({
       settings: { supersampling: 2 },
       objects: [

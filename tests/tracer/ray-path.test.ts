@@ -11,7 +11,11 @@ const trace: PixelTrace = {
   rays: [
     ray('primary', {
       objectId: 'block',
-      children: [ray('shadow', { objectId: 'ball' }), ray('reflect', { objectId: 'wall', children: [ray('light')] }), ray('refract', { objectId: 'block', children: [inside] })],
+      children: [
+        ray('shadow', { objectId: 'ball' }),
+        ray('reflect', { objectId: 'wall', children: [ray('light')] }),
+        ray('refract', { objectId: 'block', children: [inside] }),
+      ],
     }),
   ],
 };

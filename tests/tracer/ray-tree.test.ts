@@ -12,10 +12,22 @@ function node(type: RayType, color: [number, number, number], children: RayNode[
   return { type, origin: [0, 0, 0], direction: [0, 0, 1], length: 1, hit: true, objectId: null, lightId: null, color, contribution: 0, children };
 }
 
-
 const areaLight = (samples: number, extra: Record<string, unknown> = {}) => ({
-  id: 'panel', type: 'area', position: [0, 3, 0], rotation: [0, 0, 0], size: [1, 1], samples, angleAttenuation: 0, shape: 'rectangle',
-  color: [1, 1, 1], intensity: 1, ambient: 0, diffuse: 1, specular: 0, distanceAttenuation: false, ...extra,
+  id: 'panel',
+  type: 'area',
+  position: [0, 3, 0],
+  rotation: [0, 0, 0],
+  size: [1, 1],
+  samples,
+  angleAttenuation: 0,
+  shape: 'rectangle',
+  color: [1, 1, 1],
+  intensity: 1,
+  ambient: 0,
+  diffuse: 1,
+  specular: 0,
+  distanceAttenuation: false,
+  ...extra,
 });
 
 /** A scene with every feature whose randomness or recursion could make a tree disagree with the image. */
@@ -58,7 +70,11 @@ describe('ray contributions (spec §3)', () => {
 });
 
 describe('pixel ray trees', () => {
-  for (const [s, pattern] of [[1, 'grid'], [2, 'jittered'], [3, 'random']] as const) {
+  for (const [s, pattern] of [
+    [1, 'grid'],
+    [2, 'jittered'],
+    [3, 'random'],
+  ] as const) {
     it(`trace(pixel).color equals the rendered image at the camera's resolution (s = ${s}, ${pattern})`, () => {
       const scene = busyScene(s, pattern);
       const [width, height] = scene.source.camera.pixels;
@@ -145,7 +161,11 @@ describe('what a recorded tree adds to the rays (the lab draws it)', () => {
     const glass = scene.source.objects.find((object) => object.id === 'glass')!.position;
     let checked = 0;
     let onGlass = 0;
-    for (const [x, y] of [[4, 4], [2, 3], [6, 1]]) {
+    for (const [x, y] of [
+      [4, 4],
+      [2, 3],
+      [6, 1],
+    ]) {
       walkRays(tracePixel(scene, x, y, 1).rays, (n) => {
         const surfaceRay = n.type === 'primary' || n.type === 'reflect' || n.type === 'refract';
         if (!surfaceRay || !n.hit) {
@@ -180,7 +200,10 @@ describe('what a recorded tree adds to the rays (the lab draws it)', () => {
         lights: [areaLight(samples), pointLight([1, 3, 1])],
       });
     const off = tracePixel(lit(false, 5), 0, 0, 1).rays[0].children;
-    expect(off.map((r) => [r.type, r.untested])).toEqual([['area-light', true], ['light', true]]);
+    expect(off.map((r) => [r.type, r.untested])).toEqual([
+      ['area-light', true],
+      ['light', true],
+    ]);
     const stats = emptyRayStats();
     renderTile(lit(false, 2), { x: 0, y: 0, width: 1, height: 1 }, { imageWidth: 1, imageHeight: 1, seed: 1 }, stats);
     expect(stats.shadow).toBe(0);
@@ -189,6 +212,9 @@ describe('what a recorded tree adds to the rays (the lab draws it)', () => {
     expect(separate.every((r) => r.type === 'light' && r.untested === true)).toBe(true);
     // With Shadows on the roof blocks both lights, and nothing is marked.
     const on = tracePixel(lit(true, 5), 0, 0, 1).rays[0].children;
-    expect(on.map((r) => [r.type, r.untested])).toEqual([['area-shadow', undefined], ['shadow', undefined]]);
+    expect(on.map((r) => [r.type, r.untested])).toEqual([
+      ['area-shadow', undefined],
+      ['shadow', undefined],
+    ]);
   });
 });

@@ -7,7 +7,7 @@ import { tracerSceneFrom } from '../support/test-scene.ts';
 const TILE = { x: 3, y: 2, width: 20, height: 15 };
 const OPTIONS = { imageWidth: 40, imageHeight: 30, seed: 5 };
 
-describe('renderTile, one sample per pixel (the render window\'s sharp pass)', () => {
+describe("renderTile, one sample per pixel (the render window's sharp pass)", () => {
   for (const samplePattern of ['grid', 'jittered'] as const) {
     it(`gives exactly the scene's picture without supersampling (${samplePattern} samples)`, () => {
       const scene = (supersampling: number) => tracerSceneFrom({ ...defaultScene(), settings: { ...defaultScene().settings, supersampling, samplePattern } });

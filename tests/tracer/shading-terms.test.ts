@@ -20,7 +20,9 @@ import { matte, pointLight, sceneFrom, tracerSceneFrom } from '../support/test-s
 
 const levelsFolder = new URL('../../levels/', import.meta.url);
 const catalog = loadLevels(readFileSync(new URL('index.json', levelsFolder), 'utf8'), (name) => readFileSync(new URL(name, levelsFolder), 'utf8'));
-const levelScenes: [string, Scene][] = catalog.chapters.flatMap((chapter) => chapter.entries.flatMap((entry) => (entry.ok ? [[entry.id, entry.level.scene] as [string, Scene]] : [])));
+const levelScenes: [string, Scene][] = catalog.chapters.flatMap((chapter) =>
+  chapter.entries.flatMap((entry) => (entry.ok ? [[entry.id, entry.level.scene] as [string, Scene]] : [])),
+);
 
 /** ambient + Σ lights (ambient + diffuse + specular) + refract + reflect, in that order, per channel. */
 function sumOfParts(terms: ShadingTerms): Color {
@@ -142,7 +144,7 @@ describe('shading terms on every level scene (ray-debugger spec §1)', () => {
 });
 
 describe('shading terms of a rough (glossy) surface (distribution-effects)', () => {
-  it('add its fan up to one term: the rays\' shares summed, their colour the mean of those that left the surface', async () => {
+  it("add its fan up to one term: the rays' shares summed, their colour the mean of those that left the surface", async () => {
     const scene = sceneFrom({
       camera: { position: [0, 1.2, 3], target: [0, 0.3, 0], fov: 45, pixels: [6, 4] },
       settings: { maxDepth: 2, background: [0.6, 0.7, 0.9] },
@@ -184,11 +186,20 @@ describe('shading terms of a rough (glossy) surface (distribution-effects)', () 
 });
 
 /** The terms of the primary ray through pixel (x, y) of a 1×1 screen looking straight down at a plane. */
-function primaryTerms(extra: { lights: unknown[]; objects?: unknown[]; material?: Record<string, unknown>; shadows?: boolean; maxDepth?: number }): ShadingTerms {
+function primaryTerms(extra: {
+  lights: unknown[];
+  objects?: unknown[];
+  material?: Record<string, unknown>;
+  shadows?: boolean;
+  maxDepth?: number;
+}): ShadingTerms {
   const tracer = tracerSceneFrom({
     camera: { position: [0, 2, 0.001], target: [0, 0, 0], fov: 10, pixels: [1, 1] },
     settings: { shadows: extra.shadows ?? true, maxDepth: extra.maxDepth ?? 3 },
-    objects: [{ id: 'floor', shape: 'plane', scale: [20, 1, 20], material: matte([0.5, 0.4, 0.2], { ambient: 0.2, ...extra.material }) }, ...(extra.objects ?? [])],
+    objects: [
+      { id: 'floor', shape: 'plane', scale: [20, 1, 20], material: matte([0.5, 0.4, 0.2], { ambient: 0.2, ...extra.material }) },
+      ...(extra.objects ?? []),
+    ],
     lights: extra.lights,
   });
   const root = tracePixel(tracer, 0, 0, 1, { terms: true }).rays[0];

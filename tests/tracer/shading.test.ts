@@ -15,11 +15,24 @@ const floor = (material: Record<string, unknown>) => ({ id: 'floor', shape: 'pla
 function colorAlong(scene: TracerScene, from: number[], to: number[], node: RayNode | null = null): number[] {
   const origin = new Vector3(...from);
   const direction = new Vector3(...to).sub(origin).normalize();
-  return integratorFor(scene).li(new Ray().set(origin, direction), new Vector3(), node ? new RayRecorder(node) : null).toArray();
+  return integratorFor(scene)
+    .li(new Ray().set(origin, direction), new Vector3(), node ? new RayRecorder(node) : null)
+    .toArray();
 }
 
 function rootNode(): RayNode {
-  return { type: 'primary', origin: [0, 0, 0], direction: [0, 0, 1], length: 0, hit: false, objectId: null, lightId: null, color: [0, 0, 0], contribution: 0, children: [] };
+  return {
+    type: 'primary',
+    origin: [0, 0, 0],
+    direction: [0, 0, 1],
+    length: 0,
+    hit: false,
+    objectId: null,
+    lightId: null,
+    color: [0, 0, 0],
+    contribution: 0,
+    children: [],
+  };
 }
 
 function expectColor(actual: number[], expected: number[]): void {
@@ -71,7 +84,20 @@ describe('Phong shading (spec §2)', () => {
   });
 
   it('a spot light lights inside its cone and nothing outside it', () => {
-    const spot = { id: 'spot', type: 'spot', position: [0, 2, 0], rotation: [0, 0, 0], spotAngle: 60, angleAttenuation: 0, color: [1, 1, 1], intensity: 1, ambient: 0, diffuse: 1, specular: 0, distanceAttenuation: false };
+    const spot = {
+      id: 'spot',
+      type: 'spot',
+      position: [0, 2, 0],
+      rotation: [0, 0, 0],
+      spotAngle: 60,
+      angleAttenuation: 0,
+      color: [1, 1, 1],
+      intensity: 1,
+      ambient: 0,
+      diffuse: 1,
+      specular: 0,
+      distanceAttenuation: false,
+    };
     const scene = tracerSceneFrom({ settings: { background: BLACK }, objects: [floor(matte([1, 1, 1]))], lights: [spot] });
     const edge = (degrees: number) => 2 * Math.tan((degrees * Math.PI) / 180);
     const inside = colorAlong(scene, [edge(29.9), 1, 0], [edge(29.9), 0, 0]);
@@ -92,8 +118,21 @@ describe('Phong shading (spec §2)', () => {
 
 describe('area lights (spec §2)', () => {
   const area = (extra: Record<string, unknown>) => ({
-    id: 'panel', type: 'area', position: [0, 2, 0], rotation: [0, 0, 0], size: [1, 1], samples: 4, angleAttenuation: 0, shape: 'rectangle',
-    color: [1, 1, 1], intensity: 1, ambient: 0, diffuse: 1, specular: 0, distanceAttenuation: false, ...extra,
+    id: 'panel',
+    type: 'area',
+    position: [0, 2, 0],
+    rotation: [0, 0, 0],
+    size: [1, 1],
+    samples: 4,
+    angleAttenuation: 0,
+    shape: 'rectangle',
+    color: [1, 1, 1],
+    intensity: 1,
+    ambient: 0,
+    diffuse: 1,
+    specular: 0,
+    distanceAttenuation: false,
+    ...extra,
   });
 
   it('with every sample visible, the shadowed result equals the unshadowed one, and lies within the N·L bounds', () => {
@@ -107,7 +146,11 @@ describe('area lights (spec §2)', () => {
 
   it('a tiny area light behaves like a spot light at its centre (N·L · cos α), a disc too', () => {
     for (const shape of ['rectangle', 'disc']) {
-      const scene = tracerSceneFrom({ settings: { background: BLACK }, objects: [floor(matte([1, 1, 1]))], lights: [area({ size: [0.01, 0.01], shape, angleAttenuation: 1 })] });
+      const scene = tracerSceneFrom({
+        settings: { background: BLACK },
+        objects: [floor(matte([1, 1, 1]))],
+        lights: [area({ size: [0.01, 0.01], shape, angleAttenuation: 1 })],
+      });
       const nDotL = 2 / Math.sqrt(4 + 1);
       expect(colorAlong(scene, [1, 1, 0.001], [1, 0, 0])[0]).toBeCloseTo(nDotL * nDotL, 2);
     }
@@ -136,7 +179,10 @@ describe('reflection and refraction (spec §2)', () => {
     const scene = tracerSceneFrom({ settings: { background: BLACK }, objects: [floor(mirror), ball], lights: [] });
     const seenInMirror = colorAlong(scene, [0, 2, 2], [0, 0, 0]);
     const seenDirectly = colorAlong(scene, [0, 0.0001, 0], [0, 2, -2]);
-    expectColor(seenInMirror, seenDirectly.map((c) => 0.7 * c));
+    expectColor(
+      seenInMirror,
+      seenDirectly.map((c) => 0.7 * c),
+    );
   });
 
   it('recursion stops at maxDepth: a mirror at depth 0 shows the background', () => {

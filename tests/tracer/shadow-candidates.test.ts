@@ -81,7 +81,7 @@ describe('shadow rays toward an area light', () => {
     expect(raySet).toHaveBeenCalledTimes(1);
   });
 
-  it('still test the hit\'s own shape when a ray can meet it again (a model shadowing itself)', () => {
+  it("still test the hit's own shape when a ray can meet it again (a model shadowing itself)", () => {
     // A model (in the place of the prism): a floor square at y = 0 and a roof square at y = 1 above it.
     const square = (y: number) => [-1, y, -1, 1, y, -1, 1, y, 1, -1, y, 1];
     const model = {

@@ -77,7 +77,11 @@ describe('the time pattern in a scene', () => {
         settings: { timeSamples: K, timePattern, supersampling: 2 },
         objects: [{ id: 'ball', position: [-0.5, 0.5, 0], velocity: [1, 0, 0], material: matte([1, 0, 0]) }],
       });
-      for (const [x, y] of [[0, 0], [2, 1], [3, 2]] as const) {
+      for (const [x, y] of [
+        [0, 0],
+        [2, 1],
+        [3, 2],
+      ] as const) {
         const trace = tracePixel(scene, x, y, 11);
         trace.rays.forEach((root, sample) => {
           expect(root.children.map((child) => child.time)).toEqual(timesOf(timePattern, x, y, sample, K, 11));

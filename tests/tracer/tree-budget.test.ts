@@ -28,7 +28,9 @@ describe('keptTrees: which ray trees a budget keeps', () => {
     const keep = keptTrees(trees(sizes), 100, null);
     expect(keptRays(sizes, keep)).toBe(100);
     // Every fifth tree: no run of the screen is left bare.
-    const gaps = kept(keep).slice(1).map((t, i) => t - kept(keep)[i]);
+    const gaps = kept(keep)
+      .slice(1)
+      .map((t, i) => t - kept(keep)[i]);
     expect(Math.max(...gaps)).toBe(5);
     expect(Math.min(...gaps)).toBe(5);
   });
@@ -112,7 +114,9 @@ describe('thinTraces: a block of pixels sent with a budget', () => {
     const sent = thinTraces(traces, 12, 2);
     expect(sent[2].rays).toEqual(traces[2].rays);
     expect(sent[2].traced).toBeUndefined();
-    const refractions = sent.flatMap((trace) => trace.rays.flatMap((root) => root.children.flatMap((lens) => lens.children))).filter((node) => node.type === 'refract');
+    const refractions = sent
+      .flatMap((trace) => trace.rays.flatMap((root) => root.children.flatMap((lens) => lens.children)))
+      .filter((node) => node.type === 'refract');
     expect(refractions).toHaveLength(1);
   });
 });

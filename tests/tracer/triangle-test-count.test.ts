@@ -32,10 +32,11 @@ describe('the BVH as plain nodes', () => {
     expect(tree.triangles).toBe(8624);
     const covered = new Uint8Array(tree.triangles);
     const visit = (node: typeof tree.root, parent: Float32Array | null) => {
-      if (parent) for (let axis = 0; axis < 3; axis++) {
-        expect(node.bounds[axis]).toBeGreaterThanOrEqual(parent[axis]);
-        expect(node.bounds[axis + 3]).toBeLessThanOrEqual(parent[axis + 3]);
-      }
+      if (parent)
+        for (let axis = 0; axis < 3; axis++) {
+          expect(node.bounds[axis]).toBeGreaterThanOrEqual(parent[axis]);
+          expect(node.bounds[axis + 3]).toBeLessThanOrEqual(parent[axis + 3]);
+        }
       if (node.left && node.right) {
         visit(node.left, node.bounds);
         visit(node.right, node.bounds);

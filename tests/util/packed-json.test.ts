@@ -3,7 +3,7 @@ import { toBase64Url } from '../../src/util/base64url.ts';
 import { packJson, unpackJson } from '../../src/util/packed-json.ts';
 import { deflate } from '../../src/util/zlib-bytes.ts';
 
-describe('packed JSON (the scene and assignment links\' payload)', () => {
+describe("packed JSON (the scene and assignment links' payload)", () => {
   it('unpacks what it packed', async () => {
     const value = { name: 'ë €', list: [1, 2.5, null], nested: { ok: true } };
     const packed = await packJson(value);

@@ -61,11 +61,19 @@ describe('the BVH view options in the app state', () => {
 
 describe('the boxes drawn in the view', () => {
   const drawn = (boxes: BvhBoxes) =>
-    Object.fromEntries(boxes.object.children.map((child) => [child.name, (child as unknown as { geometry: { getAttribute(n: string): { count: number } } }).geometry.getAttribute('position').count / 24]));
+    Object.fromEntries(
+      boxes.object.children.map((child) => [
+        child.name,
+        (child as unknown as { geometry: { getAttribute(n: string): { count: number } } }).geometry.getAttribute('position').count / 24,
+      ]),
+    );
 
   async function boxesFor(state: LabState): Promise<BvhBoxes> {
     let changed = 0;
-    const boxes = new BvhBoxes(() => changed++, async () => meshes);
+    const boxes = new BvhBoxes(
+      () => changed++,
+      async () => meshes,
+    );
     boxes.update(state);
     await expect.poll(() => changed).toBe(1);
     return boxes;
@@ -101,14 +109,19 @@ describe('the boxes drawn in the view', () => {
     expect(material('bvh-ray-entered:hero')).toBe('LineBasicMaterial');
     expect(material('bvh-ray-missed:hero')).toBe('LineDashedMaterial');
     // The tree steps back: every one of its boxes is faint.
-    const tree = (boxes.object.getObjectByName('bvh:hero') as unknown as { geometry: { getAttribute(n: string): { array: ArrayLike<number> } } }).geometry.getAttribute('color').array;
+    const tree = (
+      boxes.object.getObjectByName('bvh:hero') as unknown as { geometry: { getAttribute(n: string): { array: ArrayLike<number> } } }
+    ).geometry.getAttribute('color').array;
     expect(Math.max(...Array.from(tree).filter((_, i) => i % 4 === 3))).toBeLessThan(0.5);
   });
 
   it('draw nothing when both are off, and keep the newest state when models load late', async () => {
     const on = reduce(labState(), { type: 'bvh.changed', changes: { show: true } }).state;
     let release: (library: MeshLibrary) => void = () => {};
-    const boxes = new BvhBoxes(() => {}, () => new Promise((resolve) => (release = resolve)));
+    const boxes = new BvhBoxes(
+      () => {},
+      () => new Promise((resolve) => (release = resolve)),
+    );
     boxes.update(on);
     boxes.update(labState());
     release(meshes);

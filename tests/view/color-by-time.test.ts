@@ -53,7 +53,10 @@ describe('colour by time', () => {
 
 describe('the time ramp as a CSS gradient (the legend’s key)', () => {
   it('has the colours rays are drawn in at τ = 0, ¼, ½, ¾ and 1, from left to right', () => {
-    const stops = [...timeGradient().matchAll(/rgb\((\d+) (\d+) (\d+)\) ([\d.]+)%/g)].map((m) => ({ rgb: [Number(m[1]), Number(m[2]), Number(m[3])], at: Number(m[4]) }));
+    const stops = [...timeGradient().matchAll(/rgb\((\d+) (\d+) (\d+)\) ([\d.]+)%/g)].map((m) => ({
+      rgb: [Number(m[1]), Number(m[2]), Number(m[3])],
+      at: Number(m[4]),
+    }));
     expect(timeGradient().startsWith('linear-gradient(90deg, ')).toBe(true);
     expect(stops.map((stop) => stop.at)).toEqual([0, 25, 50, 75, 100]);
     for (const stop of stops) {
@@ -75,7 +78,14 @@ describe('rays of several moments along one line', () => {
 
   it('stripes each time ray at its moment, and leaves the others to their type’s dashes', () => {
     const drawn = visibleRays(screen(1, 1, tree), { ...DEFAULT_RAY_VIEW, colorByTime: true }, null);
-    expect(Array.from(drawn.rays.moment.subarray(0, drawn.rays.count))).toEqual([-1, Math.fround(0.1), Math.fround(0.1), Math.fround(0.1), Math.fround(0.8), Math.fround(0.8)]);
+    expect(Array.from(drawn.rays.moment.subarray(0, drawn.rays.count))).toEqual([
+      -1,
+      Math.fround(0.1),
+      Math.fround(0.1),
+      Math.fround(0.1),
+      Math.fround(0.8),
+      Math.fround(0.8),
+    ]);
     const off = visibleRays(screen(1, 1, tree), { ...DEFAULT_RAY_VIEW, colorByTime: false }, null);
     expect(Array.from(off.rays.moment.subarray(0, off.rays.count)).every((moment) => moment === -1)).toBe(true);
   });
@@ -108,6 +118,7 @@ describe('rays of several moments along one line', () => {
       timeColor(moment, c);
       return c;
     });
-    for (const [i, a] of colours.entries()) for (const b of colours.slice(i + 1)) expect(Math.max(...a.map((value, axis) => Math.abs(value - b[axis]!)))).toBeGreaterThan(0.2);
+    for (const [i, a] of colours.entries())
+      for (const b of colours.slice(i + 1)) expect(Math.max(...a.map((value, axis) => Math.abs(value - b[axis]!)))).toBeGreaterThan(0.2);
   });
 });

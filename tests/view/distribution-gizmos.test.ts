@@ -50,7 +50,7 @@ describe('distribution gizmos', () => {
   const moving = (settings: Record<string, unknown>) =>
     sceneFrom({ settings: { timeSamples: 4, ...settings }, objects: [{ id: 'ball', position: [1, 0.5, 0], velocity: [2, 0, 0] }, { id: 'still' }] });
 
-  it('draw a moving object at the grid\'s 4 moments, the same for every pixel, with its path', () => {
+  it("draw a moving object at the grid's 4 moments, the same for every pixel, with its path", () => {
     const gizmos = new DistributionGizmos();
     gizmos.sync(moving({ timePattern: 'grid' }), objectOf);
     const copies = copiesOf(gizmos, 'ball');
@@ -67,7 +67,10 @@ describe('distribution gizmos', () => {
       const gizmos = new DistributionGizmos();
       const scene = moving({ timePattern });
       const tracer = buildTracerScene(scene, new Map());
-      for (const pixel of [[3, 2], [0, 1]] as const) {
+      for (const pixel of [
+        [3, 2],
+        [0, 1],
+      ] as const) {
         gizmos.sync(scene, objectOf, pixel);
         const moments = tracePixel(tracer, pixel[0], pixel[1], DEFAULT_SEED).rays[0]!.children.map((ray) => ray.time!);
         expect(moments).toHaveLength(4);

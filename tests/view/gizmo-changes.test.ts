@@ -2,13 +2,7 @@ import { Quaternion, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import { createLight, defaultScene } from '../../src/scene/scene-defaults.ts';
 import type { AreaLight, Camera } from '../../src/scene/scene.ts';
-import {
-  cameraChanges,
-  eulerDegrees,
-  lightChanges,
-  objectChanges,
-  roundToStep,
-} from '../../src/view/gizmo-changes.ts';
+import { cameraChanges, eulerDegrees, lightChanges, objectChanges, roundToStep } from '../../src/view/gizmo-changes.ts';
 import { sceneQuaternion } from '../../src/tracer/scene-rotation.ts';
 
 function pose(position: [number, number, number], degrees: [number, number, number], scale: [number, number, number] = [1, 1, 1]) {

@@ -40,7 +40,10 @@ describe('stepping the selection with the keys, in the gizmo’s mode', () => {
     expect(changes(nudgeAction(state, { mode: 'translate', direction: 'farther', big: false }, fromFront))?.position).toEqual([0.9, 0.4, -0.6]);
     expect(changes(nudgeAction(state, { mode: 'translate', direction: 'right', big: false }, fromLeft))?.position).toEqual([0.9, 0.4, -0.4]);
     // Rotation and scale stay as they were.
-    expect(changes(nudgeAction(state, { mode: 'translate', direction: 'right', big: false }, fromFront))).toMatchObject({ rotation: [0, 30, 0], scale: [0.8, 0.8, 0.8] });
+    expect(changes(nudgeAction(state, { mode: 'translate', direction: 'right', big: false }, fromFront))).toMatchObject({
+      rotation: [0, 30, 0],
+      scale: [0.8, 0.8, 0.8],
+    });
   });
 
   it('turns an object 5° (Shift: 15°) about the vertical, or tilts it about the viewer’s right axis', () => {
@@ -58,9 +61,15 @@ describe('stepping the selection with the keys, in the gizmo’s mode', () => {
   });
 
   it('moves lights, turns a spot (its direction changes), grows an area light’s size', () => {
-    expect(changes(nudgeAction(selecting({ kind: 'light', id: 'lamp' }), { mode: 'translate', direction: 'down', big: true }, fromFront))).toEqual({ position: [2, 3.5, 3] });
-    expect(changes(nudgeAction(selecting({ kind: 'light', id: 'spot' }), { mode: 'rotate', direction: 'down', big: true }, fromFront))?.rotation).toEqual([15, 0, 0]);
-    expect(changes(nudgeAction(selecting({ kind: 'light', id: 'panel' }), { mode: 'scale', direction: 'up', big: false }, fromFront))?.size).toEqual([1.1, 2.2]);
+    expect(changes(nudgeAction(selecting({ kind: 'light', id: 'lamp' }), { mode: 'translate', direction: 'down', big: true }, fromFront))).toEqual({
+      position: [2, 3.5, 3],
+    });
+    expect(changes(nudgeAction(selecting({ kind: 'light', id: 'spot' }), { mode: 'rotate', direction: 'down', big: true }, fromFront))?.rotation).toEqual([
+      15, 0, 0,
+    ]);
+    expect(changes(nudgeAction(selecting({ kind: 'light', id: 'panel' }), { mode: 'scale', direction: 'up', big: false }, fromFront))?.size).toEqual([
+      1.1, 2.2,
+    ]);
   });
 
   it('moves the camera with its target, so only the view changes', () => {

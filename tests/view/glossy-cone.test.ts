@@ -38,7 +38,8 @@ function fan(m: number, spread = 0.3, objectOf: (k: number) => string | null = (
 }
 
 /** A primary ray 4 m long whose hit casts `children`. */
-const pixelWith = (children: RayNode[]) => screen(1, 1, () => [ray('primary', { direction: [0, -1, 0], origin: [0, 4, 0], length: 4, objectId: 'floor', children })]);
+const pixelWith = (children: RayNode[]) =>
+  screen(1, 1, () => [ray('primary', { direction: [0, -1, 0], origin: [0, 4, 0], length: 4, objectId: 'floor', children })]);
 
 const types = (list: SegmentList) => list.nodes.slice(0, list.count).map((node) => node.type);
 
@@ -77,7 +78,7 @@ describe('a glossy fan drawn as one cone (distribution-effects §4)', () => {
     expect([...drawn.rays.start.subarray(1, 37)]).toEqual(rays.map((r) => Math.fround(4 + r.length)));
   });
 
-  it('has a base across the fan that every one of its rays passes through, at the fan\'s mean depth', () => {
+  it("has a base across the fan that every one of its rays passes through, at the fan's mean depth", () => {
     const rays = fan(6, 0.4);
     const drawn = visibleRays(pixelWith(rays), options(), null);
     for (const r of rays) {
@@ -112,14 +113,14 @@ describe('a glossy fan drawn as one cone (distribution-effects §4)', () => {
     expect(drawn.rays.nodes.filter((node) => node.absorbed)).toHaveLength(4);
   });
 
-  it('makes one cone per kind: a rough glass\'s reflected and refracted fans', () => {
+  it("makes one cone per kind: a rough glass's reflected and refracted fans", () => {
     const refracted = fan(6).map((r) => ({ ...r, type: 'refract' as const, objectId: 'glass' }));
     const drawn = visibleRays(pixelWith([...fan(6), ...refracted]), options(), null);
     expect(types(drawn.cones)).toEqual(['reflect', 'refract']);
     expect(drawn.cones.nodes.map((node) => node.objectId)).toEqual(['board', 'glass']);
   });
 
-  it('follows the panel\'s rules: a negligible cone goes with the rays under it', () => {
+  it("follows the panel's rules: a negligible cone goes with the rays under it", () => {
     const drawn = visibleRays(pixelWith(fan(6)), options({ hideNegligible: true, negligibleThreshold: 0.5 }), null);
     expect(drawn.cones.count).toBe(0);
     expect(types(drawn.rays)).toEqual(['primary']);

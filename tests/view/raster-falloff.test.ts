@@ -17,8 +17,8 @@ function runGlsl(source: string): (...args: number[]) => number {
   return new Function('pow', ...params, match[2]!).bind(null, Math.pow) as (...args: number[]) => number;
 }
 
-describe('the 3D view shades with the tracer\'s light fall-off', () => {
-  it('distance attenuation: the shader\'s function is the tracer\'s 1 / (0.04 + 0.1·d + 0.06·d²) when decay says so, else 1', () => {
+describe("the 3D view shades with the tracer's light fall-off", () => {
+  it("distance attenuation: the shader's function is the tracer's 1 / (0.04 + 0.1·d + 0.06·d²) when decay says so, else 1", () => {
     const raster = runGlsl(DISTANCE_FALLOFF_GLSL);
     for (const d of [0, 0.25, 1, 2.2, 3.3, 5, 12.5, 40]) {
       expect(raster(d, 0, FOLLOWS_DISTANCE)).toBeCloseTo(distanceAttenuation(d), 12);
@@ -41,7 +41,7 @@ describe('the 3D view shades with the tracer\'s light fall-off', () => {
     }
   });
 
-  it('the lights chunk swaps three.js\'s fall-off for the tracer\'s and its spot lights call the tracer\'s cone', () => {
+  it("the lights chunk swaps three.js's fall-off for the tracer's and its spot lights call the tracer's cone", () => {
     const chunk = tracerLightsChunk();
     expect(chunk.match(/float getDistanceAttenuation\(/g)).toHaveLength(1);
     expect(chunk).toContain(DISTANCE_FALLOFF_GLSL);
@@ -54,7 +54,7 @@ describe('the 3D view shades with the tracer\'s light fall-off', () => {
     expect(() => tracerLightsChunk('float somethingElse() { return 1.0; }')).toThrow(/three\.js lights_pars_begin changed/);
   });
 
-  it('a patched material compiles the tracer\'s chunk into its fragment shader only', () => {
+  it("a patched material compiles the tracer's chunk into its fragment shader only", () => {
     const material = new MeshPhongMaterial();
     useTracerFalloff(material);
     const shader = { vertexShader: ShaderLib.phong.vertexShader, fragmentShader: ShaderLib.phong.fragmentShader, uniforms: {}, defines: {} };
@@ -68,7 +68,7 @@ describe('the 3D view shades with the tracer\'s light fall-off', () => {
   });
 });
 
-describe('raster lights carry the tracer\'s values', () => {
+describe("raster lights carry the tracer's values", () => {
   function lightsOf(scene: Scene): (PointLight | SpotLight)[] {
     const raster = new RasterLights();
     raster.sync(scene);
@@ -86,7 +86,12 @@ describe('raster lights carry the tracer\'s values', () => {
   }
 
   it('distance attenuation on or off is the decay flag; the intensity is π·I·ld wherever the camera looks', () => {
-    const [off, on] = lightsOf(withLights([{ type: 'point', intensity: 2, diffuse: 0.5 }, { type: 'point', intensity: 2, diffuse: 0.5, distanceAttenuation: true }]));
+    const [off, on] = lightsOf(
+      withLights([
+        { type: 'point', intensity: 2, diffuse: 0.5 },
+        { type: 'point', intensity: 2, diffuse: 0.5, distanceAttenuation: true },
+      ]),
+    );
     expect(off!.decay).toBe(0);
     expect(on!.decay).toBe(FOLLOWS_DISTANCE);
     expect(on!.intensity).toBeCloseTo(Math.PI, 12);
@@ -94,11 +99,13 @@ describe('raster lights carry the tracer\'s values', () => {
     expect(on!.distance).toBe(0);
   });
 
-  it('a spot light\'s cone is the tracer\'s: half its angle, no penumbra, p in distance', () => {
-    const [spot, area] = lightsOf(withLights([
-      { type: 'spot', spotAngle: 60, angleAttenuation: 16, rotation: [0, 0, 0] } as Partial<Light>,
-      { type: 'area', angleAttenuation: 3, rotation: [0, 0, 0], size: [1, 1], samples: 3, shape: 'rectangle' } as Partial<Light>,
-    ])) as SpotLight[];
+  it("a spot light's cone is the tracer's: half its angle, no penumbra, p in distance", () => {
+    const [spot, area] = lightsOf(
+      withLights([
+        { type: 'spot', spotAngle: 60, angleAttenuation: 16, rotation: [0, 0, 0] } as Partial<Light>,
+        { type: 'area', angleAttenuation: 3, rotation: [0, 0, 0], size: [1, 1], samples: 3, shape: 'rectangle' } as Partial<Light>,
+      ]),
+    ) as SpotLight[];
     expect(spot!.angle).toBeCloseTo(Math.PI / 6, 12);
     expect(spot!.penumbra).toBe(0);
     expect(spot!.distance).toBe(16);

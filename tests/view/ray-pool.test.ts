@@ -3,7 +3,16 @@ import { describe, expect, it } from 'vitest';
 import { InstancedMesh, Matrix4, Raycaster, ShaderLib, Vector3, type InstancedBufferAttribute, type MeshBasicMaterial } from 'three';
 import { DEFAULT_RAY_VIEW, type RayViewOptions } from '../../src/lab-state/lab-state.ts';
 import { CONE_OPACITY, LOOP_PAUSE_S, RAY_CONES_NAME, RAY_CYLINDERS_NAME, RayPool } from '../../src/view/ray-pool.ts';
-import { ALPHA_ATTRIBUTE, ARROW_AT, ARROW_AT_ATTRIBUTE, DASH_ATTRIBUTE, FULLY_GROWN, GROWTH_ATTRIBUTE, patchRayShader, STOP_ATTRIBUTE } from '../../src/view/ray-shader.ts';
+import {
+  ALPHA_ATTRIBUTE,
+  ARROW_AT,
+  ARROW_AT_ATTRIBUTE,
+  DASH_ATTRIBUTE,
+  FULLY_GROWN,
+  GROWTH_ATTRIBUTE,
+  patchRayShader,
+  STOP_ATTRIBUTE,
+} from '../../src/view/ray-shader.ts';
 import { hexToColor, RAY_DASHES, rayPalette } from '../../src/view/ray-palette.ts';
 import { keptRays } from '../../src/view/ray-budget.ts';
 import { flattenRays } from '../../src/view/flat-rays.ts';
@@ -40,7 +49,10 @@ const oneTree = () =>
       origin: [0, 1, 5],
       direction: [0, 0, -1],
       length: 4,
-      children: [ray('reflect', { origin: [0, 1, 1], direction: [0, 1, 0], length: 2, contribution: 0.2 }), areaRay('area-light', { origin: [0, 0, 0], contribution: 0.3 })],
+      children: [
+        ray('reflect', { origin: [0, 1, 1], direction: [0, 1, 0], length: 2, contribution: 0.2 }),
+        areaRay('area-light', { origin: [0, 0, 0], contribution: 0.3 }),
+      ],
     }),
   ]);
 
@@ -135,7 +147,7 @@ describe('RayPool instances', () => {
     expect(material().version).toBe(version);
   });
 
-  it('draws a chosen pixel\'s rays with arrowheads and their hidden parts, from the rays\' own buffers, also after they grow', () => {
+  it("draws a chosen pixel's rays with arrowheads and their hidden parts, from the rays' own buffers, also after they grow", () => {
     const pool = new RayPool();
     const rays = syntheticScreen(1_000);
     pool.update(rays, options(), [0, 0]);
@@ -155,8 +167,16 @@ describe('RayPool instances', () => {
     expect((pool.object.getObjectByName(RAY_ARROWS_NAME) as InstancedMesh).instanceMatrix).toBe(cylinders().instanceMatrix);
   });
 
-  it('puts a ray\'s arrowhead a little past its middle and a normal\'s at its tip, in the buffer the arrows share', () => {
-    const rays = screen(1, 1, () => [ray('primary', { origin: [0, 5, 0], direction: [0, -1, 0], length: 4, normal: [0, 1, 0], children: [ray('light', { untested: true, origin: [0, 1, 0], direction: [1, 0, 0] })] })]);
+  it("puts a ray's arrowhead a little past its middle and a normal's at its tip, in the buffer the arrows share", () => {
+    const rays = screen(1, 1, () => [
+      ray('primary', {
+        origin: [0, 5, 0],
+        direction: [0, -1, 0],
+        length: 4,
+        normal: [0, 1, 0],
+        children: [ray('light', { untested: true, origin: [0, 1, 0], direction: [1, 0, 0] })],
+      }),
+    ]);
     const pool = new RayPool();
     pool.update(rays, options(), [0, 0]);
     const { cylinders, attribute } = parts(pool);
@@ -174,7 +194,14 @@ describe('RayPool instances', () => {
   });
 
   it('marks a blocked shadow ray: light paint in its gaps, and a stop plate at its end for a chosen pixel only', () => {
-    const rays = screen(1, 1, () => [ray('primary', { origin: [0, 1, 5], direction: [0, 0, -1], length: 4, children: [ray('shadow', { origin: [0, 1, 1], direction: [0, 1, 0], length: 0.3 })] })]);
+    const rays = screen(1, 1, () => [
+      ray('primary', {
+        origin: [0, 1, 5],
+        direction: [0, 0, -1],
+        length: 4,
+        children: [ray('shadow', { origin: [0, 1, 1], direction: [0, 1, 0], length: 0.3 })],
+      }),
+    ]);
     const pool = new RayPool();
     pool.update(rays, options(), [0, 0]);
     const { cylinders, attribute } = parts(pool);
@@ -366,7 +393,7 @@ describe('RayPool growth animation', () => {
     expect(travel(pool).value).toBe(0);
   });
 
-  it('patches three.js\'s basic shader with the growth and alpha attributes, failing loudly if its chunks change', () => {
+  it("patches three.js's basic shader with the growth and alpha attributes, failing loudly if its chunks change", () => {
     const shader = { vertexShader: ShaderLib.basic.vertexShader, fragmentShader: ShaderLib.basic.fragmentShader, uniforms: {} };
     const uniform = { value: 3 };
     const viewHeight = { value: 768 };
@@ -387,7 +414,9 @@ describe('RayPool growth animation', () => {
     expect(shader.vertexShader).toMatch(/#if defined\(RAY_STOP\)\nattribute float aStop;/);
     expect(shader.vertexShader).toContain(`float stopShown = ${STOP_ATTRIBUTE} * step(1.0, rayGrown);`);
     expect(shader.uniforms).toEqual({ uTravel: uniform, uViewHeight: viewHeight });
-    expect(() => patchRayShader({ vertexShader: 'void main() {}', fragmentShader: '', uniforms: {} }, uniform, viewHeight)).toThrow(/begin_vertex|common|project_vertex/);
+    expect(() => patchRayShader({ vertexShader: 'void main() {}', fragmentShader: '', uniforms: {} }, uniform, viewHeight)).toThrow(
+      /begin_vertex|common|project_vertex/,
+    );
   });
 });
 
@@ -407,7 +436,7 @@ describe('RayPool.pick', () => {
     expect(pool.pick(pointer([10, 5, 0.5], [0, -1, 0]))).toBeNull();
   });
 
-  it('picks the nearest of two rays on the pointer\'s line, and never a hidden one', () => {
+  it("picks the nearest of two rays on the pointer's line, and never a hidden one", () => {
     const rays = screen(1, 1, () => [
       ray('primary', {
         origin: [-2, 1, 0],
@@ -436,7 +465,11 @@ describe('RayPool.pick', () => {
   it('says what a picked line is drawn as: a normal stands for the hit of its ray', () => {
     const primary = ray('primary', { origin: [0, 5, 0], direction: [0, -1, 0], length: 4, normal: [1, 0, 0], objectId: 'floor' });
     const pool = new RayPool();
-    pool.update(screen(1, 1, () => [primary]), options(), [0, 0]);
+    pool.update(
+      screen(1, 1, () => [primary]),
+      options(),
+      [0, 0],
+    );
     // The normal runs from (0, 1, 0) along +x.
     expect(pool.pick(pointer([0.2, 5, 0], [0, -1, 0]))).toMatchObject({ drawnAs: 'normal', type: 'primary', node: primary });
     expect(pool.pick(pointer([0, 3, 5], [0, 0, -1]))).toMatchObject({ drawnAs: 'primary', node: primary });

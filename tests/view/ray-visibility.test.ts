@@ -1,14 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_RAY_VIEW, type RayViewOptions } from '../../src/lab-state/lab-state.ts';
 import { hexToColor, legendKeys, RAY_COLOR_KEYS, RAY_DASHES, rayPalette, type RayColorKey } from '../../src/view/ray-palette.ts';
-import {
-  contributionTone,
-  MIN_ALPHA,
-  MIN_CONTRIBUTION_TONE,
-  NORMAL_LENGTH,
-  type SegmentList,
-  visibleRays,
-} from '../../src/view/ray-visibility.ts';
+import { contributionTone, MIN_ALPHA, MIN_CONTRIBUTION_TONE, NORMAL_LENGTH, type SegmentList, visibleRays } from '../../src/view/ray-visibility.ts';
 import type { RayNode } from '../../src/tracer/ray-tree.ts';
 import { flattenRays, MISS_LENGTH } from '../../src/view/flat-rays.ts';
 import { areaRay, countNodes, ray, screen } from '../support/ray-fixtures.ts';
@@ -77,7 +70,11 @@ describe('visibleRays: which rays are drawn', () => {
   });
 
   it('draws missed rays MISS_LENGTH long and red', () => {
-    const drawn = visibleRays(screen(1, 1, () => [ray('primary', { hit: false, length: 0 })]), options(), null);
+    const drawn = visibleRays(
+      screen(1, 1, () => [ray('primary', { hit: false, length: 0 })]),
+      options(),
+      null,
+    );
     expect(segments(drawn.rays)[0]).toMatchObject({ length: MISS_LENGTH, key: 'no-hit' });
   });
 });
@@ -97,7 +94,11 @@ describe('visibleRays: negligible rays', () => {
 
   it('hides a subtree with its parent even when a child has a larger share', () => {
     const odd = ray('primary', { contribution: 1, children: [ray('reflect', { contribution: 0.01, children: [ray('light', { contribution: 0.5 })] })] });
-    const drawn = visibleRays(screen(1, 1, () => [odd]), options({ hideNegligible: true, negligibleThreshold: 0.1 }), null);
+    const drawn = visibleRays(
+      screen(1, 1, () => [odd]),
+      options({ hideNegligible: true, negligibleThreshold: 0.1 }),
+      null,
+    );
     expect(types(drawn.rays)).toEqual(['primary']);
   });
 
@@ -105,8 +106,24 @@ describe('visibleRays: negligible rays', () => {
     const hitFrom = (contribution: number) =>
       ray('primary', { contribution: 1, children: [ray('reflect', { contribution, children: [ray('shadow', { contribution: 0 })] })] });
     const hidden = options({ hideNegligible: true, negligibleThreshold: 0.05 });
-    expect(types(visibleRays(screen(1, 1, () => [hitFrom(0.2)]), hidden, null).rays)).toEqual(['primary', 'reflect', 'shadow']);
-    expect(types(visibleRays(screen(1, 1, () => [hitFrom(0.04)]), hidden, null).rays)).toEqual(['primary']);
+    expect(
+      types(
+        visibleRays(
+          screen(1, 1, () => [hitFrom(0.2)]),
+          hidden,
+          null,
+        ).rays,
+      ),
+    ).toEqual(['primary', 'reflect', 'shadow']);
+    expect(
+      types(
+        visibleRays(
+          screen(1, 1, () => [hitFrom(0.04)]),
+          hidden,
+          null,
+        ).rays,
+      ),
+    ).toEqual(['primary']);
   });
 });
 
@@ -187,7 +204,11 @@ describe('visibleRays: colour, alpha and radius', () => {
 describe('visibleRays: area cones', () => {
   it('draws area-light and area-shadow nodes as cones to the light corners, coloured as light and shadow', () => {
     const root = ray('primary', { children: [areaRay('area-light', { contribution: 0.3 }), areaRay('area-shadow', { contribution: 0 })] });
-    const drawn = visibleRays(screen(1, 1, () => [root]), options(), null);
+    const drawn = visibleRays(
+      screen(1, 1, () => [root]),
+      options(),
+      null,
+    );
     expect(types(drawn.rays)).toEqual(['primary']);
     expect(types(drawn.cones)).toEqual(['area-light', 'area-shadow']);
     expect(segments(drawn.cones).map((s) => s.key)).toEqual(['light', 'shadow']);
@@ -242,7 +263,11 @@ describe('visibleRays: with Shadows off, the direction to a light is drawn as no
 
   it('as its own legend entry, in its own colour and pattern, never as a traced light ray', () => {
     for (const colorBlindPalette of [false, true]) {
-      const drawn = visibleRays(screen(1, 1, () => [untested()]), options({ colorBlindPalette }), null);
+      const drawn = visibleRays(
+        screen(1, 1, () => [untested()]),
+        options({ colorBlindPalette }),
+        null,
+      );
       const palette = rayPalette(colorBlindPalette ? 'okabe-ito' : 'vrt');
       const [, direction] = segments(drawn.rays);
       expect(direction.key).toBe('untested');
@@ -281,7 +306,11 @@ describe('visibleRays: the surface normal at the selected pixel’s hits', () =>
     });
 
   it('draws a short arrow from each hit along its normal, right after its ray, growing once the ray has arrived', () => {
-    const drawn = visibleRays(screen(2, 1, () => [withNormals()]), options({ contributionColor: true, colorByTime: true }), [1, 0]);
+    const drawn = visibleRays(
+      screen(2, 1, () => [withNormals()]),
+      options({ contributionColor: true, colorByTime: true }),
+      [1, 0],
+    );
     const list = drawn.rays;
     expect(segments(list).map((s) => s.key)).toEqual(['primary', 'normal', 'shadow', 'reflect', 'normal', 'no-hit']);
     const at = (i: number) => ({ origin: [...list.origin.subarray(i * 3, i * 3 + 3)], direction: [...list.direction.subarray(i * 3, i * 3 + 3)] });

@@ -49,7 +49,9 @@ describe('scene sync', () => {
     const sync = new SceneSync(noModels, () => {});
     let state = initialState(defaultScene());
     sync.sync(state.scene);
-    const before = new Map(state.scene.objects.map((o) => [o.id, { geometry: meshOf(sync, o.id).geometry, material: meshOf(sync, o.id).material, mesh: meshOf(sync, o.id) }]));
+    const before = new Map(
+      state.scene.objects.map((o) => [o.id, { geometry: meshOf(sync, o.id).geometry, material: meshOf(sync, o.id).material, mesh: meshOf(sync, o.id) }]),
+    );
     expect(meshOf(sync, 'red-ball').geometry).toBe(meshOf(sync, 'mirror-ball').geometry);
     for (const diffuse of [0.2, 0.4, 0.6, 0.8]) {
       state = apply(state, { type: 'material.changed', id: 'red-ball', changes: { diffuse } });
@@ -122,7 +124,11 @@ describe('scene sync', () => {
       return new Map([[[...names][0]!, TRIANGLE]]) as MeshLibrary;
     };
     const sync = new SceneSync(loader, () => changes++);
-    let state = apply(initialState(defaultScene()), { type: 'object.added', shape: 'mesh', mesh: 'prism' }, { type: 'object.added', shape: 'mesh', mesh: 'prism' });
+    let state = apply(
+      initialState(defaultScene()),
+      { type: 'object.added', shape: 'mesh', mesh: 'prism' },
+      { type: 'object.added', shape: 'mesh', mesh: 'prism' },
+    );
     sync.sync(state.scene);
     expect(meshOf(sync, 'mesh-1').geometry.getAttribute('position')).toBeUndefined();
     await Promise.resolve();
@@ -146,10 +152,13 @@ describe('scene sync', () => {
   it('reports a model that cannot be loaded, and tries again next time', async () => {
     const messages: (string | undefined)[] = [];
     let calls = 0;
-    const sync = new SceneSync(async () => {
-      calls++;
-      throw new Error('mesh "prism": downloading failed (HTTP 404)');
-    }, (error) => messages.push(error));
+    const sync = new SceneSync(
+      async () => {
+        calls++;
+        throw new Error('mesh "prism": downloading failed (HTTP 404)');
+      },
+      (error) => messages.push(error),
+    );
     let state = apply(initialState(defaultScene()), { type: 'object.added', shape: 'mesh', mesh: 'prism' });
     sync.sync(state.scene);
     await new Promise((resolve) => setTimeout(resolve, 0));

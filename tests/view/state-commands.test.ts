@@ -18,18 +18,24 @@ describe('view commands that change the lab state', () => {
 
   it('toggles the gizmo options against the current ones', () => {
     expect(stateCommand({ kind: 'toggle-space' }, base)).toEqual({ action: { type: 'gizmo.changed', changes: { space: 'local' } } });
-    expect(stateCommand({ kind: 'toggle-snap' }, { ...base, gizmo: { ...base.gizmo, snap: true } })).toEqual({ action: { type: 'gizmo.changed', changes: { snap: false } } });
+    expect(stateCommand({ kind: 'toggle-snap' }, { ...base, gizmo: { ...base.gizmo, snap: true } })).toEqual({
+      action: { type: 'gizmo.changed', changes: { snap: false } },
+    });
   });
 
   it('sets a gizmo mode, with a note when the selection cannot be changed that way', () => {
-    expect(stateCommand({ kind: 'gizmo-mode', mode: 'rotate' }, selecting({ kind: 'object', id: firstObject }))).toEqual({ action: { type: 'gizmo.changed', changes: { mode: 'rotate' } } });
+    expect(stateCommand({ kind: 'gizmo-mode', mode: 'rotate' }, selecting({ kind: 'object', id: firstObject }))).toEqual({
+      action: { type: 'gizmo.changed', changes: { mode: 'rotate' } },
+    });
     const camera = stateCommand({ kind: 'gizmo-mode', mode: 'scale' }, selecting({ kind: 'camera' }));
     expect(camera?.action).toEqual({ type: 'gizmo.changed', changes: { mode: 'scale' } });
     expect(camera?.message).toMatch(/cannot be changed that way/);
   });
 
   it('Escape deselects, then shows every pixel again, and does nothing to the state when neither is chosen', () => {
-    expect(stateCommand({ kind: 'escape' }, { ...selecting({ kind: 'camera' }), selectedPixel: [1, 1] })).toEqual({ action: { type: 'selection.changed', selection: null } });
+    expect(stateCommand({ kind: 'escape' }, { ...selecting({ kind: 'camera' }), selectedPixel: [1, 1] })).toEqual({
+      action: { type: 'selection.changed', selection: null },
+    });
     expect(stateCommand({ kind: 'escape' }, { ...base, selectedPixel: [1, 1] })).toEqual({ action: { type: 'pixel.deselected' } });
     expect(stateCommand({ kind: 'escape' }, base)).toEqual({});
   });

@@ -88,7 +88,10 @@ describe('the view’s keys', () => {
     // Every command a key gives appears in the help (by its key).
     for (const key of ['ArrowUp', 'PageUp', '+', '-', 't', 'r', 's', 'g', 'l', 'p', 'n', 'Delete', 'Escape', 'f', 'z', '?']) {
       const shown = key.length === 1 ? key.toUpperCase() : { ArrowUp: '↑', PageUp: 'Page Up', Delete: 'Delete', Escape: 'Esc' }[key];
-      expect(printed.some((label) => label === shown || (key === '-' && label === '−')), key).toBe(true);
+      expect(
+        printed.some((label) => label === shown || (key === '-' && label === '−')),
+        key,
+      ).toBe(true);
     }
     expect(printed).toContain('Tab');
     expect(gestureHelp().length).toBeGreaterThanOrEqual(6);

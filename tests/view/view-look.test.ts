@@ -59,16 +59,22 @@ describe('following a declared look', () => {
     expect(moves).toEqual([]);
   });
 
-  it('frames a pixel\'s rays when their trace comes in, and again for a newer one, until the learner moves', () => {
+  it("frames a pixel's rays when their trace comes in, and again for a newer one, until the learner moves", () => {
     const time = 0;
     const { fake, moves, setRays } = stage();
     const follower = new LookFollower(fake, () => time);
     follower.follow({ frame: ['pixel-rays'] }, true);
     expect(moves).toEqual([]);
     expect(follower.waitingForRays).toBe(true);
-    setRays([[0, 0, 0], [0, 0, -6]]);
+    setRays([
+      [0, 0, 0],
+      [0, 0, -6],
+    ]);
     follower.raysArrived();
-    setRays([[0, 0, 0], [0, 0, -8]]);
+    setRays([
+      [0, 0, 0],
+      [0, 0, -8],
+    ]);
     follower.raysArrived();
     expect(moves.map((move) => move.pose.target.z)).toEqual([-3, -4]);
     follower.userMoved();
@@ -77,13 +83,17 @@ describe('following a declared look', () => {
     expect(follower.waitingForRays).toBe(false);
   });
 
-  it('frames a named pixel\'s rays after their first hit, chosen or not, waiting for their trace too', () => {
+  it("frames a named pixel's rays after their first hit, chosen or not, waiting for their trace too", () => {
     const { fake, moves, setRays } = stage();
     const follower = new LookFollower(fake, () => 0);
     follower.follow({ frame: ['rays:3,1'] }, true);
     expect(follower.waitingForRays).toBe(true);
     // The camera's end ([0, 0, 10]) is left out: only the bounces are framed.
-    setRays([[0, 0, 10], [0, 0, -6], [0, 0, -8]]);
+    setRays([
+      [0, 0, 10],
+      [0, 0, -6],
+      [0, 0, -8],
+    ]);
     follower.raysArrived();
     expect(moves.map((move) => move.pose.target.z)).toEqual([-7]);
     follower.follow({ frame: ['rays:0,0'] }, true);
@@ -91,13 +101,16 @@ describe('following a declared look', () => {
     expect(moves).toHaveLength(1);
   });
 
-  it('stops waiting for a pixel\'s rays after a while', () => {
+  it("stops waiting for a pixel's rays after a while", () => {
     let time = 0;
     const { fake, moves, setRays } = stage();
     const follower = new LookFollower(fake, () => time);
     follower.follow({ frame: ['pixel-rays'] }, true);
     time = PIXEL_RAYS_WAIT_MS + 1;
-    setRays([[0, 0, 0], [0, 0, -6]]);
+    setRays([
+      [0, 0, 0],
+      [0, 0, -6],
+    ]);
     follower.raysArrived();
     expect(moves).toEqual([]);
     expect(follower.waitingForRays).toBe(false);
@@ -114,14 +127,14 @@ describe('the points a framed name stands for', () => {
   cone.position.set(0, 3.5, 0);
   const drawn = (id: string) => (id === 'spot' ? cone : undefined);
 
-  it('takes a light\'s drawn shape as well as its place: a spot\'s cone shows where it points', () => {
+  it("takes a light's drawn shape as well as its place: a spot's cone shows where it points", () => {
     const points = framedPoints('spot', scene, drawn, new Object3D());
     expect(points[0]).toEqual([0, 3, 0]);
     expect(Math.max(...points.map((point) => point[1]))).toBeCloseTo(4);
     expect(points).toHaveLength(9);
   });
 
-  it('falls back to a light\'s place while it is not drawn, and knows no unknown name', () => {
+  it("falls back to a light's place while it is not drawn, and knows no unknown name", () => {
     expect(framedPoints('spot', scene, () => undefined, new Object3D())).toEqual([[0, 3, 0]]);
     expect(framedPoints('nothing', scene, drawn, new Object3D())).toEqual([]);
   });

@@ -61,8 +61,16 @@ describe('the camera flight', () => {
 
 describe('the first view of a scene', () => {
   it('looks at the middle of the objects and camera, from the front left and above, with every point in view', () => {
-    const objects: Vec3[] = [[-1.5, 0.5, 0.3], [1, 0.5, 1.2], [-0.8, 0.35, -2.4], [0, 1, 5]];
-    const lights: Vec3[] = [[2, 4, 3], [-1.5, 3, 0.3]];
+    const objects: Vec3[] = [
+      [-1.5, 0.5, 0.3],
+      [1, 0.5, 1.2],
+      [-0.8, 0.35, -2.4],
+      [0, 1, 5],
+    ];
+    const lights: Vec3[] = [
+      [2, 4, 3],
+      [-1.5, 3, 0.3],
+    ];
     for (const aspect of [16 / 9, 1, 0.6]) {
       const framed = framingPose(objects, [...objects, ...lights], 45, aspect);
       expect(framed.target.toArray().map((v) => Number(v.toFixed(3)))).toEqual([-0.25, 0.675, 1.3]);
@@ -82,7 +90,7 @@ describe('the first view of a scene', () => {
   });
 });
 
-describe('the view at the tracer\'s camera', () => {
+describe("the view at the tracer's camera", () => {
   /** Where the tracer screen's corners land in a view of `viewAspect` (normalised device coordinates). */
   function corners(fovDeg: number, columns: number, rows: number, viewAspect: number) {
     const camera = new PerspectiveCamera(cameraViewFov(fovDeg, columns / rows, viewAspect), viewAspect, 0.1, 100);
@@ -113,7 +121,12 @@ describe('the view at the tracer\'s camera', () => {
 
 describe('framing above panels that cover the bottom of the view', () => {
   it('centres what it frames in the free band at the top, and keeps every point inside it', () => {
-    const points: Vec3[] = [[-1, 0, 0], [1, 0, 0], [0, 1, 0], [0, -1, 0]];
+    const points: Vec3[] = [
+      [-1, 0, 0],
+      [1, 0, 0],
+      [0, 1, 0],
+      [0, -1, 0],
+    ];
     const direction = new Vector3(0, 0, 1);
     const share = 0.6;
     const pose = framingPoseAbove(points, 45, 1.5, direction, share);
@@ -135,7 +148,10 @@ describe('framing above panels that cover the bottom of the view', () => {
   });
 
   it('is the plain framing when nothing is covered', () => {
-    const points: Vec3[] = [[0, 0, 0], [2, 1, 0]];
+    const points: Vec3[] = [
+      [0, 0, 0],
+      [2, 1, 0],
+    ];
     const direction = new Vector3(-0.5, 0.45, 0.74).normalize();
     const above = framingPoseAbove(points, 45, 1.5, direction, 1);
     const plain = framingPose(points, points, 45, 1.5, direction);

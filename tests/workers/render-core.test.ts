@@ -40,7 +40,10 @@ describe('the render worker core', () => {
 
     expect(responses.map((r) => r.type)).toEqual(['scene-ready', 'tile-done', 'tile-done']);
     const done = responses.filter((r) => r.type === 'tile-done');
-    expect(done.map((r) => [r.jobId, r.tileId, r.rgb.length])).toEqual([[5, 0, 24], [5, 1, 24]]);
+    expect(done.map((r) => [r.jobId, r.tileId, r.rgb.length])).toEqual([
+      [5, 0, 24],
+      [5, 1, 24],
+    ]);
     expect(transfers[1]).toEqual([done[0].rgb.buffer]);
   });
 
@@ -72,7 +75,8 @@ describe('the render worker core', () => {
     const first = columns + 2; // wraps onto the next row
     handle(load(1));
     handle({ type: 'trace-pixels', requestId: 7, first, count: columns, seed: 3 });
-    for (let i = 0; i < columns; i++) handle({ type: 'trace-pixel', requestId: 10 + i, x: (first + i) % columns, y: Math.floor((first + i) / columns), seed: 3 });
+    for (let i = 0; i < columns; i++)
+      handle({ type: 'trace-pixel', requestId: 10 + i, x: (first + i) % columns, y: Math.floor((first + i) / columns), seed: 3 });
     handle({ type: 'trace-pixels', requestId: 8, first: columns * rows - 1, count: 2, seed: 3 });
     await settle(2 + columns + 1);
 

@@ -103,7 +103,8 @@ export function meshNormals(accel: MeshAccel, hit: Hit, geometric: Vector3, shad
   // Smooth shading: the vertex normals weighted by the hit's barycentric coordinates.
   barycentricOf(hit.local, a, b, c, barycentric);
   shading
-    .fromArray(normals, ia * 3).multiplyScalar(barycentric.x)
+    .fromArray(normals, ia * 3)
+    .multiplyScalar(barycentric.x)
     .addScaledVector(a.fromArray(normals, ib * 3), barycentric.y)
     .addScaledVector(b.fromArray(normals, ic * 3), barycentric.z);
 }

@@ -63,7 +63,7 @@ function nearestUnder(root: PackedRoot, accel: MeshAccel, node: number): void {
     return;
   }
   // The first child's hit point along the split axis (three.js's Ray.at), against the second box's near side.
-  const point = (axis === 0 ? ray.ox + ray.dx * found.parameter : axis === 1 ? ray.oy + ray.dy * found.parameter : ray.oz + ray.dz * found.parameter);
+  const point = axis === 0 ? ray.ox + ray.dx * found.parameter : axis === 1 ? ray.oy + ray.dy * found.parameter : ray.oz + ray.dz * found.parameter;
   if (leftToRight ? point <= float32[second + axis] : point >= float32[second + axis + 3]) return;
   if (!nodeMeets(float32, second)) return;
   const { distance, face, parameter } = found;

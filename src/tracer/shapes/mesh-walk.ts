@@ -132,45 +132,103 @@ export function meetsTriangle(accel: MeshAccel, triangle: number): boolean {
   const b = index[triangle * 3 + 1] * 3;
   const c = index[triangle * 3 + 2] * 3;
   const { ox, oy, oz, dx, dy, dz } = ray;
-  const aox = positions[a] - ox, aoy = positions[a + 1] - oy, aoz = positions[a + 2] - oz;
-  const box = positions[b] - ox, boy = positions[b + 1] - oy, boz = positions[b + 2] - oz;
-  const cox = positions[c] - ox, coy = positions[c + 1] - oy, coz = positions[c + 2] - oz;
-  const adx = Math.abs(dx), ady = Math.abs(dy), adz = Math.abs(dz);
+  const aox = positions[a] - ox,
+    aoy = positions[a + 1] - oy,
+    aoz = positions[a + 2] - oz;
+  const box = positions[b] - ox,
+    boy = positions[b + 1] - oy,
+    boz = positions[b + 2] - oz;
+  const cox = positions[c] - ox,
+    coy = positions[c + 1] - oy,
+    coz = positions[c + 2] - oz;
+  const adx = Math.abs(dx),
+    ady = Math.abs(dy),
+    adz = Math.abs(dz);
   let dkx: number, dky: number, dkz: number;
   let akx: number, aky: number, akz: number, bkx: number, bky: number, bkz: number, ckx: number, cky: number, ckz: number;
   if (adx >= ady && adx >= adz) {
-    dkz = dx; akz = aox; bkz = box; ckz = cox;
+    dkz = dx;
+    akz = aox;
+    bkz = box;
+    ckz = cox;
     if (dx >= 0) {
-      dkx = dy; dky = dz;
-      akx = aoy; aky = aoz; bkx = boy; bky = boz; ckx = coy; cky = coz;
+      dkx = dy;
+      dky = dz;
+      akx = aoy;
+      aky = aoz;
+      bkx = boy;
+      bky = boz;
+      ckx = coy;
+      cky = coz;
     } else {
-      dkx = dz; dky = dy;
-      akx = aoz; aky = aoy; bkx = boz; bky = boy; ckx = coz; cky = coy;
+      dkx = dz;
+      dky = dy;
+      akx = aoz;
+      aky = aoy;
+      bkx = boz;
+      bky = boy;
+      ckx = coz;
+      cky = coy;
     }
   } else if (ady >= adz) {
-    dkz = dy; akz = aoy; bkz = boy; ckz = coy;
+    dkz = dy;
+    akz = aoy;
+    bkz = boy;
+    ckz = coy;
     if (dy >= 0) {
-      dkx = dz; dky = dx;
-      akx = aoz; aky = aox; bkx = boz; bky = box; ckx = coz; cky = cox;
+      dkx = dz;
+      dky = dx;
+      akx = aoz;
+      aky = aox;
+      bkx = boz;
+      bky = box;
+      ckx = coz;
+      cky = cox;
     } else {
-      dkx = dx; dky = dz;
-      akx = aox; aky = aoz; bkx = box; bky = boz; ckx = cox; cky = coz;
+      dkx = dx;
+      dky = dz;
+      akx = aox;
+      aky = aoz;
+      bkx = box;
+      bky = boz;
+      ckx = cox;
+      cky = coz;
     }
   } else {
-    dkz = dz; akz = aoz; bkz = boz; ckz = coz;
+    dkz = dz;
+    akz = aoz;
+    bkz = boz;
+    ckz = coz;
     if (dz >= 0) {
-      dkx = dx; dky = dy;
-      akx = aox; aky = aoy; bkx = box; bky = boy; ckx = cox; cky = coy;
+      dkx = dx;
+      dky = dy;
+      akx = aox;
+      aky = aoy;
+      bkx = box;
+      bky = boy;
+      ckx = cox;
+      cky = coy;
     } else {
-      dkx = dy; dky = dx;
-      akx = aoy; aky = aox; bkx = boy; bky = box; ckx = coy; cky = cox;
+      dkx = dy;
+      dky = dx;
+      akx = aoy;
+      aky = aox;
+      bkx = boy;
+      bky = box;
+      ckx = coy;
+      cky = cox;
     }
   }
   if (dkz === 0) return false;
-  const sx = dkx / dkz, sy = dky / dkz, sz = 1 / dkz;
-  const ax = akx - sx * akz, ay = aky - sy * akz;
-  const bx = bkx - sx * bkz, by = bky - sy * bkz;
-  const cx = ckx - sx * ckz, cy = cky - sy * ckz;
+  const sx = dkx / dkz,
+    sy = dky / dkz,
+    sz = 1 / dkz;
+  const ax = akx - sx * akz,
+    ay = aky - sy * akz;
+  const bx = bkx - sx * bkz,
+    by = bky - sy * bkz;
+  const cx = ckx - sx * ckz,
+    cy = cky - sy * ckz;
   const u = cx * by - cy * bx;
   const v = ax * cy - ay * cx;
   const w = bx * ay - by * ax;
@@ -181,7 +239,9 @@ export function meetsTriangle(accel: MeshAccel, triangle: number): boolean {
   if (det > 0 ? tScaled < 0 : tScaled > 0) return false;
   // The hit point o + t·d and its distance from o, as Ray.at and Vector3.distanceTo compute them.
   const t = tScaled / det;
-  const ex = ox - (ox + dx * t), ey = oy - (oy + dy * t), ez = oz - (oz + dz * t);
+  const ex = ox - (ox + dx * t),
+    ey = oy - (oy + dy * t),
+    ez = oz - (oz + dz * t);
   const distance = Math.sqrt(ex * ex + ey * ey + ez * ez);
   if (distance > ray.far) return false;
   ray.hitDistance = distance;

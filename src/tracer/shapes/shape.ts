@@ -64,11 +64,9 @@ export class Shape {
     this.normalToWorld.getNormalMatrix(objectToWorld);
     const objectBounds = accel ? accel.bounds : kind === 'plane' ? PLANE_BOUNDS : UNIT_BOUNDS;
     for (let i = 0; i < 8; i++) {
-      corner.set(
-        i & 1 ? objectBounds.max.x : objectBounds.min.x,
-        i & 2 ? objectBounds.max.y : objectBounds.min.y,
-        i & 4 ? objectBounds.max.z : objectBounds.min.z,
-      ).applyMatrix4(objectToWorld);
+      corner
+        .set(i & 1 ? objectBounds.max.x : objectBounds.min.x, i & 2 ? objectBounds.max.y : objectBounds.min.y, i & 4 ? objectBounds.max.z : objectBounds.min.z)
+        .applyMatrix4(objectToWorld);
       this.worldBounds.expandByPoint(corner);
       // A moving shape's box holds it at every time of the shutter: the box swept along the velocity.
       if (velocity) this.worldBounds.expandByPoint(corner.add(velocity));
@@ -76,9 +74,11 @@ export class Shape {
     // At time τ the shape is translated by τ·v, so a ray meets it where the ray moved by −τ·v
     // meets it unmoved: in object space, the origin shifts by τ times this (the direction does not).
     this.localVelocity = velocity
-      ? new Vector3(-(this.m[0] * velocity.x + this.m[1] * velocity.y + this.m[2] * velocity.z),
-        -(this.m[4] * velocity.x + this.m[5] * velocity.y + this.m[6] * velocity.z),
-        -(this.m[8] * velocity.x + this.m[9] * velocity.y + this.m[10] * velocity.z))
+      ? new Vector3(
+          -(this.m[0] * velocity.x + this.m[1] * velocity.y + this.m[2] * velocity.z),
+          -(this.m[4] * velocity.x + this.m[5] * velocity.y + this.m[6] * velocity.z),
+          -(this.m[8] * velocity.x + this.m[9] * velocity.y + this.m[10] * velocity.z),
+        )
       : null;
     // A little slack so that hits on flat or rotated shapes are not lost to rounding.
     this.worldBounds.expandByScalar(1e-6 * (1 + this.worldBounds.getSize(corner).length()));

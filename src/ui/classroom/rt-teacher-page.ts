@@ -202,9 +202,10 @@ export class RtTeacherPage extends LitElement {
           </section>
           <section aria-labelledby="levels-heading">
             <h2 id="levels-heading">${msg('Levels, in the order the students play them')}</h2>
-            ${this.guide.presets.length === 0
-              ? nothing
-              : html`<div class="row">
+            ${
+              this.guide.presets.length === 0
+                ? nothing
+                : html`<div class="row">
                   ${msg('Start from a ready-made list:')}
                   ${this.guide.presets.map(
                     (preset) =>
@@ -212,7 +213,8 @@ export class RtTeacherPage extends LitElement {
                         ${localize(preset.title, locale)}
                       </button>`,
                   )}
-                </div>`}
+                </div>`
+            }
             ${a.levels.length === 0 ? html`<p class="problem">${msg('Add at least one level.')}</p>` : nothing}
             <ol>
               ${a.levels.map((id, index) => this.renderLevel(id, index, locale))}
@@ -281,9 +283,10 @@ export class RtTeacherPage extends LitElement {
         </div>
         <section class="result" aria-labelledby="result-heading">
           <h2 id="result-heading">${msg('Link for the students')}</h2>
-          ${this.problem
-            ? html`<p class="problem" role="alert">${this.problem}</p>`
-            : html`
+          ${
+            this.problem
+              ? html`<p class="problem" role="alert">${this.problem}</p>`
+              : html`
                 <input class="link" type="text" readonly aria-label=${msg('Assignment link')} .value=${this.url ?? ''} @focus=${(e: Event) => (e.target as HTMLInputElement).select()} />
                 <div class="row" style="margin-top: 8px">
                   <button class="primary" type="button" ?disabled=${!this.url || this.stale} @click=${this.copy}>${msg('Copy link')}</button>
@@ -291,8 +294,9 @@ export class RtTeacherPage extends LitElement {
                   <span role="status">${this.status}</span>
                 </div>
                 ${this.qr ? html`<img class="qr" src=${this.qr} alt=${msg('QR code of the assignment link')} />` : nothing}
-                <p class="muted">${msg('Show the QR code on the projector; students scan it or type the link. Progress stays in each student\'s browser.')}</p>
-              `}
+                <p class="muted">${msg("Show the QR code on the projector; students scan it or type the link. Progress stays in each student's browser.")}</p>
+              `
+          }
         </section>
       </main>
     `;
@@ -311,8 +315,9 @@ export class RtTeacherPage extends LitElement {
         <button class="icon" type="button" data-move="1" ?disabled=${index === last} aria-label=${msg(str`Move ${title} down`)} title=${msg('Move down')} @click=${() => this.moveLevel(index, 1)}>↓</button>
         <button class="icon" type="button" aria-label=${msg(str`Remove ${title}`)} title=${msg('Remove from the assignment')} @click=${() => this.removeLevel(id)}>✕</button>
       </div>
-      ${level
-        ? html`<fieldset>
+      ${
+        level
+          ? html`<fieldset>
             <legend>${msg('Required tasks (the others are optional)')}</legend>
             ${level.tasks.map(
               (task) => html`<label class="check">
@@ -321,7 +326,8 @@ export class RtTeacherPage extends LitElement {
               </label>`,
             )}
           </fieldset>`
-        : nothing}
+          : nothing
+      }
     </li>`;
   }
 

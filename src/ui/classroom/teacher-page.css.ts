@@ -3,9 +3,9 @@ import { classroomStyles, pageStyles } from './classroom-styles.ts';
 
 /** The teacher page's layout: the assignment form, the level list with its tasks, the link and its QR code. */
 export const teacherPageStyles = [
-    classroomStyles,
-    pageStyles,
-    css`
+  classroomStyles,
+  pageStyles,
+  css`
       main {
         display: grid;
         grid-template-columns: minmax(0, 1fr) minmax(300px, 420px);
@@ -117,4 +117,4 @@ export const teacherPageStyles = [
         }
       }
     `,
-  ];
+];

@@ -12,7 +12,16 @@ import type { Color } from '../../scene/scene.ts';
 
 /** "#e6261a" for [0.9, 0.15, 0.1]. */
 export function colorToHex(color: Color): string {
-  return '#' + color.map((c) => Math.round(Math.min(1, Math.max(0, c)) * 255).toString(16).padStart(2, '0')).join('');
+  return (
+    '#' +
+    color
+      .map((c) =>
+        Math.round(Math.min(1, Math.max(0, c)) * 255)
+          .toString(16)
+          .padStart(2, '0'),
+      )
+      .join('')
+  );
 }
 
 /** [r, g, b] in 0..1 from "#rrggbb", "rrggbb", "#rgb" or "rgb" (any case); undefined otherwise. */

@@ -35,7 +35,10 @@ const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
 
 /** Reads typed text as a number of `range`; `unit` (such as "°" or "m") may be typed after it. */
 export function parseTypedNumber(text: string, range: NumberRange, unit = ''): TypedNumber {
-  let t = text.trim().replace(/\u2212/g, '-').replace(/\s+/g, '');
+  let t = text
+    .trim()
+    .replace(/\u2212/g, '-')
+    .replace(/\s+/g, '');
   const suffix = unit.replace(/\s+/g, '');
   if (suffix && suffix !== '%' && t.endsWith(suffix)) t = t.slice(0, -suffix.length);
   const typedPercent = t.endsWith('%');

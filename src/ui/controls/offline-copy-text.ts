@@ -12,20 +12,26 @@ export function offlineCopyText(state: OfflineCopyState): string {
       return msg('Storing the app in this browser for offline use…');
     case 'stored':
       return state.newVersionWaiting
-        ? msg('This app works offline: this browser keeps a copy of it. A new version has been stored as well; it starts once every tab of this app has been closed.')
+        ? msg(
+            'This app works offline: this browser keeps a copy of it. A new version has been stored as well; it starts once every tab of this app has been closed.',
+          )
         : msg('This app works offline: this browser keeps a copy of it.');
     case 'single-file':
       return msg('This copy of the app is a single file: it works without a network.');
     case 'not-stored':
       switch (state.reason) {
         case 'unsupported':
-          return msg('This app is not stored for offline use: this browser cannot keep it here (in a private window, for example). It works while you are online.');
+          return msg(
+            'This app is not stored for offline use: this browser cannot keep it here (in a private window, for example). It works while you are online.',
+          );
         case 'refused':
           return state.detail
             ? msg(str`This app is not stored for offline use: the browser refused (${state.detail}). It works while you are online.`)
             : msg('This app is not stored for offline use: the browser refused. It works while you are online.');
         case 'failed':
-          return msg('This app is not stored for offline use: the browser could not store its files, most likely for lack of storage space. It works while you are online; free some disk space and reload to try again.');
+          return msg(
+            'This app is not stored for offline use: the browser could not store its files, most likely for lack of storage space. It works while you are online; free some disk space and reload to try again.',
+          );
       }
   }
 }

@@ -121,9 +121,7 @@ export class RtPanelSection extends LitElement {
     if (open === this.open) return;
     this.open = open;
     writeStorage(STORAGE_PREFIX + this.key, open ? 'open' : 'closed');
-    this.dispatchEvent(
-      new CustomEvent<SectionToggleDetail>('section-toggle', { detail: { name: this.key, open }, bubbles: true, composed: true }),
-    );
+    this.dispatchEvent(new CustomEvent<SectionToggleDetail>('section-toggle', { detail: { name: this.key, open }, bubbles: true, composed: true }));
   }
 
   override render() {

@@ -23,10 +23,12 @@ export function damagedSavesList(saves: readonly DamagedSave[], send: (command: 
           <span>${describe(save)}</span>
           <span class="row">
             <button @click=${() => send({ kind: 'damaged-download', key: save.key })} title=${msg('Download this save exactly as it was')}>${msg('Download')}</button>
-            ${save.held
-              ? nothing
-              : html`<button @click=${() => send({ kind: 'damaged-restore', key: save.key })} title=${msg('Take back into your progress what can be read of this save')}>${msg('Restore')}</button>
-                  <button class="danger" @click=${() => send({ kind: 'damaged-delete', key: save.key })} title=${msg('Delete this copy from the browser, to free space (download it first)')}>${msg('Delete')}</button>`}
+            ${
+              save.held
+                ? nothing
+                : html`<button @click=${() => send({ kind: 'damaged-restore', key: save.key })} title=${msg('Take back into your progress what can be read of this save')}>${msg('Restore')}</button>
+                  <button class="danger" @click=${() => send({ kind: 'damaged-delete', key: save.key })} title=${msg('Delete this copy from the browser, to free space (download it first)')}>${msg('Delete')}</button>`
+            }
           </span>
         </li>`,
       )}

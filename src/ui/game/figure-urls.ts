@@ -5,9 +5,10 @@
  * all. Either is allowed by the build's Content-Security-Policy (img-src 'self' data:).
  */
 const FIGURE_URLS: ReadonlyMap<string, string> = new Map(
-  Object.entries(import.meta.glob<string>('../../../assets/figures/*.{svg,png}', { query: '?url', import: 'default', eager: true })).map(
-    ([path, url]) => [path.slice(path.lastIndexOf('/') + 1), url],
-  ),
+  Object.entries(import.meta.glob<string>('../../../assets/figures/*.{svg,png}', { query: '?url', import: 'default', eager: true })).map(([path, url]) => [
+    path.slice(path.lastIndexOf('/') + 1),
+    url,
+  ]),
 );
 
 /** The figure's URL; undefined only for a name the level schema would have refused (src/quest/figure-files.ts lists the folder). */

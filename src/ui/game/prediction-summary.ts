@@ -19,5 +19,7 @@ export function foldedPrediction(view: TaskView, locale: Locale): string | null 
   if (view.status === 'shown') return msg(str`The answer: “${answerText(goal, locale, prediction.order)}”`);
   if (view.status !== 'done' || !prediction.prediction) return null;
   const said = predictionText(goal, prediction.prediction, locale, prediction.order);
-  return view.correct ? `✓ ${msg(str`You expected “${said}”, and so it is.`)}` : msg(str`You expected “${said}”; the answer is “${answerText(goal, locale, prediction.order)}”.`);
+  return view.correct
+    ? `✓ ${msg(str`You expected “${said}”, and so it is.`)}`
+    : msg(str`You expected “${said}”; the answer is “${answerText(goal, locale, prediction.order)}”.`);
 }

@@ -47,11 +47,13 @@ export class RtHintBox extends LitElement {
         ${view.hints.map((hint, index) => html`<p class="hint"><strong>${msg('Hint')} ${index + 1}:</strong> ${levelText(hint, this.locale)}</p>`)}
         ${view.hintOffered ? html`<p class="visually-hidden">${msg('A hint is ready for you.')}</p>` : nothing}
       </div>
-      ${command
-        ? html`<button class=${view.hintOffered ? 'offer' : ''} data-hint=${next ?? ''} title=${view.hintOffered ? msg('Opening it counts as a hint used; leaving it costs nothing') : this.tooltip(next)} @click=${() => fire(this, QUEST_COMMAND, command)}>
+      ${
+        command
+          ? html`<button class=${view.hintOffered ? 'offer' : ''} data-hint=${next ?? ''} title=${view.hintOffered ? msg('Opening it counts as a hint used; leaving it costs nothing') : this.tooltip(next)} @click=${() => fire(this, QUEST_COMMAND, command)}>
             ${view.hintOffered ? msg('Stuck? A hint is ready — show it') : this.label(view)}
           </button>`
-        : nothing}
+          : nothing
+      }
     `;
   }
 

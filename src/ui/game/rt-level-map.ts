@@ -153,7 +153,8 @@ export class RtLevelMap extends LitElement {
 
   /** The map covers the lab: the focus goes to the level to continue (else the first one to play), not behind the map. */
   protected override firstUpdated(): void {
-    const levels = this.renderRoot.querySelector<HTMLElement>('.level[data-current]') ?? this.renderRoot.querySelector<HTMLElement>('.level[aria-disabled="false"]');
+    const levels =
+      this.renderRoot.querySelector<HTMLElement>('.level[data-current]') ?? this.renderRoot.querySelector<HTMLElement>('.level[aria-disabled="false"]');
     levels?.focus();
   }
 
@@ -165,9 +166,11 @@ export class RtLevelMap extends LitElement {
         <button @click=${() => choose({ kind: 'free-lab' })} title=${msg('Build and explore your own scene with every panel')}>${msg('Free lab')}</button>
         ${this.closable ? html`<button class="primary" @click=${() => choose({ kind: 'close' })}>${msg('Back to the level')}</button>` : nothing}
       </div>
-      ${this.welcome
-        ? html`<p class="welcome">${msg('Welcome to Ray Tracer Quest! Each level teaches one idea about ray tracing. Start with the first level; the next one opens when you finish its tasks.')}</p>`
-        : nothing}
+      ${
+        this.welcome
+          ? html`<p class="welcome">${msg('Welcome to Ray Tracer Quest! Each level teaches one idea about ray tracing. Start with the first level; the next one opens when you finish its tasks.')}</p>`
+          : nothing
+      }
       ${this.chapters.map((chapter, chapterIndex) => {
         // Levels are numbered through the whole curriculum (level 3 is "3." in its chapter too).
         const first = this.chapters.slice(0, chapterIndex).reduce((count, earlier) => count + earlier.levels.length, 1);
@@ -196,11 +199,13 @@ export class RtLevelMap extends LitElement {
     >
       <strong>${number}. ${title}</strong>
       <span class="status">${this.statusText(entry, current)}</span>
-      ${entry.status === 'broken'
-        ? html`<ul class="reasons">
+      ${
+        entry.status === 'broken'
+          ? html`<ul class="reasons">
             ${entry.errors.slice(0, 4).map((error) => html`<li>${issueText(error)}</li>`)}
           </ul>`
-        : nothing}
+          : nothing
+      }
     </button>`;
   }
 

@@ -10,7 +10,9 @@ import '../controls/rt-offline-status.ts';
 export type ProgressCommand =
   | { kind: 'locale'; locale: Locale }
   | { kind: 'palette'; colorBlind: boolean }
-  | { kind: 'export' } | { kind: 'import'; text: string; fileName: string } | { kind: 'reset' }
+  | { kind: 'export' }
+  | { kind: 'import'; text: string; fileName: string }
+  | { kind: 'reset' }
   | { kind: 'damaged-download' | 'damaged-restore' | 'damaged-delete'; key: string };
 
 /**
@@ -23,7 +25,12 @@ export type ProgressCommand =
  * @fires progress-command - CustomEvent<ProgressCommand>.
  */
 export class RtProgressMenu extends LitElement {
-  static override properties = { locale: {}, colorBlind: { type: Boolean, attribute: 'color-blind' }, saveProblem: { attribute: false }, damagedSaves: { attribute: false } };
+  static override properties = {
+    locale: {},
+    colorBlind: { type: Boolean, attribute: 'color-blind' },
+    saveProblem: { attribute: false },
+    damagedSaves: { attribute: false },
+  };
   static override styles = [
     gameStyles,
     damagedSavesStyles,
@@ -94,8 +101,26 @@ export class RtProgressMenu extends LitElement {
     return html`
       <button popovertarget="menu" title=${msg('Language, ray colours and progress: export, import, reset')}>☰ ${msg('Menu')}</button>
       <div id="menu" popover>
-        ${choices(msg('Language'), 'locale', [['en', 'English'], ['nl', 'Nederlands']] as const, this.locale, (locale) => send({ kind: 'locale', locale }))}
-        ${choices(msg('Ray colours'), 'palette', [[false, msg('Standard')], [true, msg('Colour-blind safe')]] as const, this.colorBlind, (colorBlind) => send({ kind: 'palette', colorBlind }))}
+        ${choices(
+          msg('Language'),
+          'locale',
+          [
+            ['en', 'English'],
+            ['nl', 'Nederlands'],
+          ] as const,
+          this.locale,
+          (locale) => send({ kind: 'locale', locale }),
+        )}
+        ${choices(
+          msg('Ray colours'),
+          'palette',
+          [
+            [false, msg('Standard')],
+            [true, msg('Colour-blind safe')],
+          ] as const,
+          this.colorBlind,
+          (colorBlind) => send({ kind: 'palette', colorBlind }),
+        )}
         <fieldset class="stack">
           <legend>${msg('Your progress')}</legend>
           ${this.saveProblem ? html`<p class="save-problem" role="status">⚠ ${this.saveProblem}</p>` : nothing}

@@ -92,7 +92,6 @@ export class RtQuestPanel extends LitElement {
     this.pendingScroll = null;
   });
 
-
   constructor() {
     super();
     this.view = null;
@@ -177,12 +176,14 @@ export class RtQuestPanel extends LitElement {
       <h3>★ ${msg('Level complete!')}</h3>
       <p>${msg(str`You have ${view.points} of ${view.maxPoints} points in this level.`)}</p>
       ${this.returned ? html`<p class="muted" data-note="returned">${msg('You passed this level before, so it opened with its own scene again: your points and finished tasks are kept.')}</p>` : nothing}
-      ${this.badges.length > 0
-        ? html`<p>${msg('Badges earned:')}</p>
+      ${
+        this.badges.length > 0
+          ? html`<p>${msg('Badges earned:')}</p>
             <ul>
               ${this.badges.map((badge) => html`<li>◆ ${badge}</li>`)}
             </ul>`
-        : nothing}
+          : nothing
+      }
       <div class="actions">
         ${this.hasNextLevel ? html`<button class="primary" data-action="next-level" @click=${() => send({ kind: 'next-level' })}>${msg('Next level')}</button>` : nothing}
         <button @click=${() => send({ kind: 'map' })}>${msg('Level map')}</button>

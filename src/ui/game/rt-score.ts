@@ -49,11 +49,13 @@ export class RtScore extends LitElement {
       </button>
       <div id="badges" popover>
         <h3>${msg('Your badges')}</h3>
-        ${this.badges.length === 0
-          ? html`<p class="muted">${msg('No badges yet. Finish levels, render an image or play without hints to earn them.')}</p>`
-          : html`<ul>
+        ${
+          this.badges.length === 0
+            ? html`<p class="muted">${msg('No badges yet. Finish levels, render an image or play without hints to earn them.')}</p>`
+            : html`<ul>
               ${this.badges.map((name) => html`<li>${name}</li>`)}
-            </ul>`}
+            </ul>`
+        }
       </div>
     `;
   }

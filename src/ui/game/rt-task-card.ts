@@ -171,9 +171,11 @@ export class RtTaskCard extends LitElement {
     const openable = (view.status === 'open' && !this.expanded) || folded !== null;
     const title = folded === null ? msg('Show or hide this optional task') : msg('Show or hide the answer and why');
     return html`
-      ${openable
-        ? html`<button class="head ${finished ? 'done' : ''}" aria-expanded=${String(this.opened)} title=${title} @click=${() => (this.opened = !this.opened)}>${head}</button>`
-        : html`<div class="head ${finished ? 'done' : ''}">${head}</div>`}
+      ${
+        openable
+          ? html`<button class="head ${finished ? 'done' : ''}" aria-expanded=${String(this.opened)} title=${title} @click=${() => (this.opened = !this.opened)}>${head}</button>`
+          : html`<div class="head ${finished ? 'done' : ''}">${head}</div>`
+      }
       ${folded !== null && !this.opened ? html`<p class="summary" title=${folded}>${folded}</p>` : nothing}
       ${this.expanded || (openable && this.opened) ? html`<div class="body">${this.body(view, finished)}</div>` : nothing}
     `;
@@ -188,13 +190,15 @@ export class RtTaskCard extends LitElement {
       <p>${levelText(view.task.text, this.locale)}</p>
       ${view.task.more ? explainMore(levelText(view.task.more, this.locale), () => send({ kind: 'explain', task: id })) : nothing}
       ${view.kind === 'quiz' ? html`<rt-quiz .task=${view} locale=${this.locale}></rt-quiz>` : nothing}
-      ${finished
-        ? nothing
-        : html`
+      ${
+        finished
+          ? nothing
+          : html`
             ${view.kind === 'info' ? html`<div class="actions"><button class="primary" @click=${() => send({ kind: 'next' })}>${msg('Next')}</button></div>` : nothing}
             ${view.kind === 'info' ? nothing : html`<rt-hint-box class="hint-box" .task=${view} locale=${this.locale}></rt-hint-box>`}
             ${view.required ? nothing : html`<div class="actions"><button class="link" title=${msg('Leave this optional task out (no points)')} @click=${() => send({ kind: 'skip', task: id })}>${msg('Skip')}</button></div>`}
-          `}
+          `
+      }
     `;
   }
 

@@ -70,7 +70,12 @@ export function guideRect(target: string, stage: GuideStage): ScreenBox | null {
   const projected = point && stage.project(point);
   const canvas = stage.canvas?.getBoundingClientRect();
   if (!projected || !canvas) return null;
-  return { left: canvas.left + projected.x - POINT_RING_PX / 2, top: canvas.top + projected.y - POINT_RING_PX / 2, width: POINT_RING_PX, height: POINT_RING_PX };
+  return {
+    left: canvas.left + projected.x - POINT_RING_PX / 2,
+    top: canvas.top + projected.y - POINT_RING_PX / 2,
+    width: POINT_RING_PX,
+    height: POINT_RING_PX,
+  };
 }
 
 /**

@@ -22,9 +22,12 @@ export function labSidebar(state: LabState, { panels, controls }: Pick<LevelPane
         : panel('light', html`<rt-light-panel .shownControls=${controls('light')}></rt-light-panel>`),
     panel('tracer', html`<rt-tracer-panel .shownControls=${controls('tracer')}></rt-tracer-panel>`),
     panel('rays', html`<rt-ray-panel .shownControls=${controls('rays')}></rt-ray-panel>`),
-    panel('bvh', ON_DEMAND_PANELS.bvh?.state === 'failed'
-      ? html`<rt-load-problem .text=${msg('This panel could not be loaded.')} .reason=${ON_DEMAND_PANELS.bvh.problem}></rt-load-problem>`
-      : html`<rt-bvh-panel .shownControls=${controls('bvh')}></rt-bvh-panel>`),
+    panel(
+      'bvh',
+      ON_DEMAND_PANELS.bvh?.state === 'failed'
+        ? html`<rt-load-problem .text=${msg('This panel could not be loaded.')} .reason=${ON_DEMAND_PANELS.bvh.problem}></rt-load-problem>`
+        : html`<rt-bvh-panel .shownControls=${controls('bvh')}></rt-bvh-panel>`,
+    ),
     panel('file', html`<rt-file-panel></rt-file-panel>`),
   ].filter((part): part is TemplateResult => part !== nothing);
 }

@@ -74,7 +74,12 @@ const coveredLength = (segments: Segment[], box: Box) => segments.reduce((sum, s
  * chosen pixel) run under it there and fewer of them under the upper right place; staying
  * where it is while it covers none of them, so it does not jump about as the rays change.
  */
-export function previewPlace(now: PreviewPlace, segments: Segment[], view: { width: number; height: number }, size: { width: number; height: number }): PreviewPlace {
+export function previewPlace(
+  now: PreviewPlace,
+  segments: Segment[],
+  view: { width: number; height: number },
+  size: { width: number; height: number },
+): PreviewPlace {
   if (segments.length === 0 || view.height < SMALL_VIEW_HEIGHT || size.width === 0) return 'home';
   const covered = (place: PreviewPlace) => coveredLength(segments, previewBox(place, view, size));
   if (covered(now) <= CLEAR_PX) return now;

@@ -37,7 +37,6 @@ function leftOut(repaired: readonly string[]): string {
 /** The address fragment that opens the free lab instead of the game. */
 export const FREE_LAB_HASH = '#free-lab';
 
-
 /**
  * localStorage; when the browser blocks it, a storage that refuses every write, so that the
  * session says progress is not saved (and keeps it for this visit) instead of "saving" it
@@ -115,7 +114,11 @@ export class QuestController implements ReactiveController {
     );
     const damage = session.contextDamage;
     this.contextNote = damage
-      ? contextDamageText({ codeLost: damage.lost.includes('participant-code') && session.needsParticipantCode, attemptLost: damage.lost.includes('attempt'), backedUp: damage.backupKey !== null })
+      ? contextDamageText({
+          codeLost: damage.lost.includes('participant-code') && session.needsParticipantCode,
+          attemptLost: damage.lost.includes('attempt'),
+          backedUp: damage.backupKey !== null,
+        })
       : '';
     const surveyDamage = session.surveyDamage;
     const surveyNote = surveyDamage
@@ -167,7 +170,8 @@ export class QuestController implements ReactiveController {
   private changed(): void {
     // Left the free lab a #free-lab address opened: the address no longer says so, so that a
     // reload returns to the game where the learner is, and the same link pasted again opens it.
-    if (this.session && this.session.mode.kind !== 'free-lab' && location.hash === FREE_LAB_HASH) history.replaceState(history.state, '', location.pathname + location.search);
+    if (this.session && this.session.mode.kind !== 'free-lab' && location.hash === FREE_LAB_HASH)
+      history.replaceState(history.state, '', location.pathname + location.search);
     if (this.welcomeDue && this.session?.mode.kind === 'level') {
       this.welcomeDue = false;
       this.welcome = true;
@@ -219,7 +223,13 @@ export class QuestController implements ReactiveController {
     this.host.closeRenderWindow();
     this.welcome = false;
     const opened = this.session?.openLevel(id);
-    if (opened && !opened.ok) this.host.toast(opened.reason === 'locked' ? msg('That level is still locked: finish the one before it first.') : msg('That level cannot be played: its file has problems.'), 'error');
+    if (opened && !opened.ok)
+      this.host.toast(
+        opened.reason === 'locked'
+          ? msg('That level is still locked: finish the one before it first.')
+          : msg('That level cannot be played: its file has problems.'),
+        'error',
+      );
   }
 
   map(choice: MapChoice): void {
@@ -258,7 +268,10 @@ export class QuestController implements ReactiveController {
         return this.imported(session, command.text, command.fileName);
       case 'reset': {
         const problem = session.reset();
-        this.host.toast(problem ? msg(str`Your progress was not reset: ${saveProblemReason(problem)}.`) : msg('Your progress was reset. Start again from the level map.'), problem ? 'error' : 'info');
+        this.host.toast(
+          problem ? msg(str`Your progress was not reset: ${saveProblemReason(problem)}.`) : msg('Your progress was reset. Start again from the level map.'),
+          problem ? 'error' : 'info',
+        );
         return;
       }
       case 'damaged-download': {
@@ -297,7 +310,9 @@ export class QuestController implements ReactiveController {
     if (problem === undefined) return;
     this.host.toast(
       problem
-        ? msg(str`Thank you! Your answers could not be saved in the browser: ${saveProblemReason(problem)}. They are kept while this page is open: download your data below now for your teacher.`)
+        ? msg(
+            str`Thank you! Your answers could not be saved in the browser: ${saveProblemReason(problem)}. They are kept while this page is open: download your data below now for your teacher.`,
+          )
         : msg('Thank you! Your answers are saved. Download your data below for your teacher.'),
       problem ? 'error' : 'info',
     );
@@ -309,9 +324,15 @@ export class QuestController implements ReactiveController {
     if (result.ok) {
       this.host.toast(msg(str`Progress imported from ${fileName}.`) + leftOut(result.repaired));
     } else if (result.reason === 'unreadable') {
-      this.host.toast(msg(str`${fileName} is not a progress file this app can read, so nothing changed:\n${result.errors.slice(0, 3).map(issueText).join('\n')}`), 'error');
+      this.host.toast(
+        msg(str`${fileName} is not a progress file this app can read, so nothing changed:\n${result.errors.slice(0, 3).map(issueText).join('\n')}`),
+        'error',
+      );
     } else {
-      this.host.toast(msg(str`${fileName} (${fileSize(text.length)}) was not imported: ${saveProblemReason(result.kind)}. Nothing changed: your progress is as it was.`), 'error');
+      this.host.toast(
+        msg(str`${fileName} (${fileSize(text.length)}) was not imported: ${saveProblemReason(result.kind)}. Nothing changed: your progress is as it was.`),
+        'error',
+      );
     }
   }
 
@@ -334,7 +355,10 @@ export class QuestController implements ReactiveController {
     if (problem === this.toldSaveProblem) return;
     const before = this.toldSaveProblem;
     this.toldSaveProblem = problem;
-    const free = problem && this.session?.damagedSaves.all.some((save) => !save.held) ? ` ${msg('Deleting the damaged saves you have downloaded (Menu) frees space.')}` : '';
+    const free =
+      problem && this.session?.damagedSaves.all.some((save) => !save.held)
+        ? ` ${msg('Deleting the damaged saves you have downloaded (Menu) frees space.')}`
+        : '';
     const text = problem ? saveProblemText(problem) + free : before ? msg("Saved again: your progress is in the browser's storage.") : '';
     // At the start the toast is on the page only after the first render.
     if (text) void this.host.updateComplete.then(() => this.host.toast(text, problem ? 'error' : 'info'));

@@ -38,11 +38,17 @@ export function rayColorKeyHint(key: RayColorKey): string {
     case 'primary':
       return msg('From the camera through a pixel.');
     case 'light':
-      return msg('A shadow ray tests whether anything is between the point and a light. This one reaches the light, so the light adds to the point’s colour. A cone: many shadow rays to an area light, all reaching it.');
+      return msg(
+        'A shadow ray tests whether anything is between the point and a light. This one reaches the light, so the light adds to the point’s colour. A cone: many shadow rays to an area light, all reaching it.',
+      );
     case 'shadow':
-      return msg('A shadow ray tests whether anything is between the point and a light. This one is blocked, so that light adds nothing: the point is in its shadow. A cone: many shadow rays to an area light, all blocked.');
+      return msg(
+        'A shadow ray tests whether anything is between the point and a light. This one is blocked, so that light adds nothing: the point is in its shadow. A cone: many shadow rays to an area light, all blocked.',
+      );
     case 'untested':
-      return msg('With Shadows off the tracer casts no shadow rays: every light reaches every point, even through an object. The dotted line only shows the direction to the light.');
+      return msg(
+        'With Shadows off the tracer casts no shadow rays: every light reaches every point, even through an object. The dotted line only shows the direction to the light.',
+      );
     case 'reflect':
       return msg('Bounces off a shiny surface.');
     case 'refract':
@@ -50,7 +56,9 @@ export function rayColorKeyHint(key: RayColorKey): string {
     case 'no-hit':
       return msg('Meets no object and brings back the background colour (drawn 10 m long).');
     case 'normal':
-      return msg('The surface normal N at a hit point: straight out of the surface, on the side the ray came from. Drawn at the hits of the selected pixel’s rays.');
+      return msg(
+        'The surface normal N at a hit point: straight out of the surface, on the side the ray came from. Drawn at the hits of the selected pixel’s rays.',
+      );
   }
 }
 

@@ -309,11 +309,13 @@ export class RtLab extends LitElement {
         <div class="header-actions">
           <rt-score .points=${engine?.points ?? 0} .badges=${(engine?.badges ?? []).map((earned) => badgeName(earned.badge, catalog, locale))}></rt-score>
           <button data-command="levels" @click=${() => session?.openMap()} title=${msg('The level map: chapters, levels and your progress')}>${msg('Levels')}</button>
-          ${shows('render')
-            ? html`<button class="primary" data-command="render-open" data-guide=${guideIds('render.open')} @click=${this.openRenderWindow} title=${msg('Open the render window and ray trace the whole image')}>
+          ${
+            shows('render')
+              ? html`<button class="primary" data-command="render-open" data-guide=${guideIds('render.open')} @click=${this.openRenderWindow} title=${msg('Open the render window and ray trace the whole image')}>
                 ${msg('Render image')}
               </button>`
-            : nothing}
+              : nothing
+          }
           <rt-progress-menu
             locale=${locale}
             ?color-blind=${state.rays.colorBlindPalette}
@@ -339,14 +341,16 @@ export class RtLab extends LitElement {
         ${labLoadProblems(this.loadProblems, shows('debugger'))}
         ${shows('screen-preview') ? html`<rt-screen-preview .rays=${this.services.screenRays}></rt-screen-preview>` : nothing}
         ${viewLegend && state.rays.showRays ? viewLegendBox(this.legendOpen, () => (this.legendOpen = !this.legendOpen)) : nothing}
-        ${shows('debugger')
-          ? html`<rt-ray-debugger
+        ${
+          shows('debugger')
+            ? html`<rt-ray-debugger
               .shownControls=${controls('debugger')}
               .screenRays=${this.services.screenRays}
               .tracePixel=${this.traceWithTerms}
               .showFocus=${this.showRayFocus}
             ></rt-ray-debugger>`
-          : nothing}
+            : nothing
+        }
         <rt-ray-tooltip .hover=${this.hover?.hover ?? null} .x=${this.hover?.x ?? 0} .y=${this.hover?.y ?? 0}></rt-ray-tooltip>
         <rt-render-window
           .pool=${this.services.renderPool}
@@ -360,8 +364,9 @@ export class RtLab extends LitElement {
       <aside class="tasks" aria-label=${msg('Tasks')} @quest-command=${(event: CustomEvent<QuestCommand>) => this.game.quest(event.detail)}>
         ${taskColumn(this.game, this.assignment, (text, tone) => this.toast(text, tone))}
       </aside>
-      ${session?.mode.kind === 'map'
-        ? html`<rt-level-map
+      ${
+        session?.mode.kind === 'map'
+          ? html`<rt-level-map
             .chapters=${engine?.map() ?? []}
             locale=${locale}
             .current=${engine?.progress.current?.level ?? null}
@@ -369,12 +374,15 @@ export class RtLab extends LitElement {
             heading=${this.assignment?.title ?? ''}
             @map-choice=${(event: CustomEvent<MapChoice>) => this.game.map(event.detail)}
           ></rt-level-map>`
-        : nothing}
+          : nothing
+      }
       ${this.renderOpen ? nothing : surveyPage(this.game, this.assignment)}
       <rt-guide-ring .locate=${this.ring.locate}></rt-guide-ring>
-      ${session?.needsParticipantCode
-        ? html`<rt-participant-dialog heading=${this.assignment?.title ?? ''} note=${this.game.contextNote} @participant-code=${(event: CustomEvent<string>) => session.setParticipantCode(event.detail)}></rt-participant-dialog>`
-        : nothing}
+      ${
+        session?.needsParticipantCode
+          ? html`<rt-participant-dialog heading=${this.assignment?.title ?? ''} note=${this.game.contextNote} @participant-code=${(event: CustomEvent<string>) => session.setParticipantCode(event.detail)}></rt-participant-dialog>`
+          : nothing
+      }
     `;
   }
 }

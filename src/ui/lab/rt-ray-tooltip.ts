@@ -142,9 +142,10 @@ export class RtRayTooltip extends StorePanel<'view'> {
         <span class="line" style=${styleMap({ background: palette[drawnAs] })} aria-hidden="true"></span>
         ${normal ? rayColorKeyName('normal') : rayName(node)}
       </p>
-      ${normal
-        ? nothing
-        : html`<p>
+      ${
+        normal
+          ? nothing
+          : html`<p>
               <span class="muted">${msg('Contribution')}</span>
               <span class="value" data-testid="ray-contribution">${formatShare(hover.contribution)}</span>
               <span class="muted">${msg(str`of pixel ${px}, ${py}`)}</span>
@@ -153,7 +154,8 @@ export class RtRayTooltip extends StorePanel<'view'> {
               <span class="muted">${msg('Brings back')}</span>
               <span class="swatch" style=${styleMap({ background: `rgb(${r}, ${g}, ${b})` })} aria-hidden="true"></span>
               <span class="value">${msg(str`RGB ${r}, ${g}, ${b}`)}</span>
-            </p>`}
+            </p>`
+      }
       ${target === null ? nothing : html`<p class="muted">${target}</p>`}
     `;
   }

@@ -178,11 +178,13 @@ export class RtSceneView extends LitElement {
     const state = this.state;
     return html`
       <canvas tabindex="0" data-guide=${guideIds('view.canvas')} role="img" aria-label=${state ? describe(state) : msg('3D view')}></canvas>
-      ${this.view
-        ? nothing
-        : this.viewProblem
-          ? html`<div class="view-status"><rt-load-problem .text=${msg('The 3D view could not be loaded.')} .reason=${this.viewProblem}></rt-load-problem></div>`
-          : html`<p class="view-status" role="status">${msg('Loading the 3D view…')}</p>`}
+      ${
+        this.view
+          ? nothing
+          : this.viewProblem
+            ? html`<div class="view-status"><rt-load-problem .text=${msg('The 3D view could not be loaded.')} .reason=${this.viewProblem}></rt-load-problem></div>`
+            : html`<p class="view-status" role="status">${msg('Loading the 3D view…')}</p>`
+      }
       <rt-view-toolbar
         .gizmo=${state?.gizmo}
         .allowedModes=${state ? modesShown(state) : []}

@@ -157,11 +157,13 @@ export class RtScreenPreview extends StorePanel<'screen-preview'> {
       </div>
       <p class="caption">
         <span role="status">${stale ? msg('Updating…') : selected ? msg(str`Showing the rays of pixel ${selected[0]}, ${selected[1]}`) : msg('Choose a pixel to see only its rays.')}</span>
-        ${selected
-          ? html`<button title=${msg('Show the rays of every pixel again')} @click=${() => this.send('pixel', { type: 'pixel.deselected' })}>
+        ${
+          selected
+            ? html`<button title=${msg('Show the rays of every pixel again')} @click=${() => this.send('pixel', { type: 'pixel.deselected' })}>
               ${msg('Show all pixels')}
             </button>`
-          : ''}
+            : ''
+        }
       </p>
     `;
   }

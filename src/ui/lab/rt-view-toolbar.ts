@@ -214,18 +214,20 @@ export class RtViewToolbar extends LitElement {
     const modes = [
       this.modeButton('translate', msg('Move'), 'T', msg('Move the selection with the gizmo (T)')),
       this.modeButton('rotate', msg('Rotate'), 'R', msg('Rotate the selection with the gizmo (R)')),
-      this.modeButton('scale', msg('Scale', { id: 'gizmo-mode-scale', desc: 'A gizmo mode, beside Move and Rotate: a verb' }), 'S', msg('Scale the selection with the gizmo (S)')),
+      this.modeButton(
+        'scale',
+        msg('Scale', { id: 'gizmo-mode-scale', desc: 'A gizmo mode, beside Move and Rotate: a verb' }),
+        'S',
+        msg('Scale the selection with the gizmo (S)'),
+      ),
     ].filter((button) => button !== nothing);
     const options = [
-      this.toggle(
-        'space',
-        this.gizmo.space === 'local',
-        msg('Local axes'),
-        'L',
-        msg("Gizmo along the selection's own axes instead of the world's (L)"),
-        { kind: 'toggle-space' },
-      ),
-      this.toggle('snap', this.gizmo.snap, msg('Snap'), 'G', msg('Snap to 0.25 m, 15° and 0.25× steps (G; or hold Shift while dragging)'), { kind: 'toggle-snap' }),
+      this.toggle('space', this.gizmo.space === 'local', msg('Local axes'), 'L', msg("Gizmo along the selection's own axes instead of the world's (L)"), {
+        kind: 'toggle-space',
+      }),
+      this.toggle('snap', this.gizmo.snap, msg('Snap'), 'G', msg('Snap to 0.25 m, 15° and 0.25× steps (G; or hold Shift while dragging)'), {
+        kind: 'toggle-snap',
+      }),
     ].filter((button) => button !== nothing);
     return html`
       <div class="bar top">
@@ -234,8 +236,9 @@ export class RtViewToolbar extends LitElement {
           ${options.length > 0 ? html`<div class="group" role="group" aria-label=${msg('Gizmo options')}>${options}</div>` : nothing}
         </div>
         <div class="group end">
-          ${this.pixelSelected
-            ? html`<button
+          ${
+            this.pixelSelected
+              ? html`<button
                 data-command="show-pixel-rays"
                 data-guide=${guideIds('view.show-pixel-rays')}
                 title=${msg("Move the view so that the chosen pixel's whole ray path fits (Z)")}
@@ -244,7 +247,8 @@ export class RtViewToolbar extends LitElement {
                 ${icon(svg`<path d="M3 6V3h3M14 3h3v3M17 14v3h-3M6 17H3v-3" /><circle cx="10" cy="10" r="2.5" />`)}
                 <span class="label">${msg('Show its rays')}</span>
               </button>`
-            : nothing}
+              : nothing
+          }
           <button
             data-command="fly"
             data-guide=${guideIds('view.fly-to-camera')}

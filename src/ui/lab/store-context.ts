@@ -12,6 +12,9 @@ export const storeContext = createContext<Store | undefined>(Symbol('lab-store')
  * Takes the store from the nearest provider and gives it to `use` (again if the provider's
  * store changes). An element that was handed a `store` property directly keeps that one.
  */
-export function consumeStore(host: ReactiveControllerHost & HTMLElement, use: (store: Store | undefined) => void): ContextConsumer<typeof storeContext, typeof host> {
+export function consumeStore(
+  host: ReactiveControllerHost & HTMLElement,
+  use: (store: Store | undefined) => void,
+): ContextConsumer<typeof storeContext, typeof host> {
   return new ContextConsumer(host, { context: storeContext, subscribe: true, callback: use });
 }

@@ -37,13 +37,15 @@ function modeTasks(game: QuestController, assignment: Assignment | null) {
   const { level } = view;
   const earned = session.engine.badges.filter((earnedBadge) => badgeOfLevel(earnedBadge.badge, level.id, level.chapter));
   return html`
-    ${game.welcome
-      ? html`<div class="welcome" role="status">
+    ${
+      game.welcome
+        ? html`<div class="welcome" role="status">
           <p><strong>${msg('Welcome to Ray Tracer Quest!')}</strong></p>
           <p>${msg('Do the tasks below, one at a time. Stuck? Press "Hint". The Levels button shows all levels.')}</p>
           <button @click=${() => game.dismissWelcome()}>${msg('Got it')}</button>
         </div>`
-      : nothing}
+        : nothing
+    }
     <rt-quest-panel
       .view=${view}
       locale=${session.locale}

@@ -38,7 +38,12 @@ export class ViewCoverController implements ReactiveController {
     const { view, overlays, tell } = this.parts();
     if (!view) return;
     const box = view.getBoundingClientRect();
-    tell(coveredBottom(box, overlays.map((overlay) => homeBox(overlay, box))));
+    tell(
+      coveredBottom(
+        box,
+        overlays.map((overlay) => homeBox(overlay, box)),
+      ),
+    );
   }
 }
 

@@ -69,7 +69,11 @@ export class RtApp extends LitElement {
     // Started once per page: a failed load stays failed (its message shows), it is not
     // started again by the render that shows it.
     const page = TEACHER_PAGES[this.route];
-    if (page?.code.state === 'idle') page.code.load().then(() => this.requestUpdate(), () => this.requestUpdate());
+    if (page?.code.state === 'idle')
+      page.code.load().then(
+        () => this.requestUpdate(),
+        () => this.requestUpdate(),
+      );
   }
 
   private async open(hash: string): Promise<void> {
@@ -84,8 +88,10 @@ export class RtApp extends LitElement {
   override render() {
     const page = TEACHER_PAGES[this.route];
     if (page) {
-      if (customElements.get(page.tag)) return this.route === '#/teacher' ? html`<rt-teacher-page></rt-teacher-page>` : html`<rt-dashboard-page></rt-dashboard-page>`;
-      if (page.code.state === 'failed') return html`<rt-load-problem .text=${msg('This page could not be loaded.')} .reason=${page.code.problem}></rt-load-problem>`;
+      if (customElements.get(page.tag))
+        return this.route === '#/teacher' ? html`<rt-teacher-page></rt-teacher-page>` : html`<rt-dashboard-page></rt-dashboard-page>`;
+      if (page.code.state === 'failed')
+        return html`<rt-load-problem .text=${msg('This page could not be loaded.')} .reason=${page.code.problem}></rt-load-problem>`;
       return html`<p class="loading" role="status">${msg('Loading…')}</p>`;
     }
     if (isSceneFragment(this.route)) return html`<rt-scene-link-lab .hash=${this.route}></rt-scene-link-lab>`;

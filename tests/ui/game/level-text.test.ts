@@ -21,6 +21,8 @@ describe('a level text in the task column', () => {
 
   it('hands every piece to lit as a value, so markup in a level file is shown as text', () => {
     // Brackets mark a value: lit escapes it; only the <strong> tags are the app's own markup.
-    expect(shown(levelText('A <img src=x onerror=alert(1)> and **<b>Save</b>**', 'en'))).toBe('[A <img src=x onerror=alert(1)> and ]<strong>[<b>Save</b>]</strong>');
+    expect(shown(levelText('A <img src=x onerror=alert(1)> and **<b>Save</b>**', 'en'))).toBe(
+      '[A <img src=x onerror=alert(1)> and ]<strong>[<b>Save</b>]</strong>',
+    );
   });
 });

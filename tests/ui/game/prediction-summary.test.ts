@@ -13,7 +13,14 @@ const quizTask = {
   mandatory: true,
   points: 10,
   hints: [],
-  goal: goalSchema.parse({ quiz: { question: 'What becomes of the grey shadow ray?', choices: ['It stays grey', 'It is not traced', 'It turns yellow'], answer: 1, explanation: 'Nothing tests the way.' } }),
+  goal: goalSchema.parse({
+    quiz: {
+      question: 'What becomes of the grey shadow ray?',
+      choices: ['It stays grey', 'It is not traced', 'It turns yellow'],
+      answer: 1,
+      explanation: 'Nothing tests the way.',
+    },
+  }),
 } as unknown as Task;
 
 const estimateTask = {
@@ -23,7 +30,18 @@ const estimateTask = {
 } as unknown as Task;
 
 function view(task: Task, status: TaskView['status'], prediction: Partial<PredictionView>, correct?: boolean): TaskView {
-  return { task, kind: 'quiz', required: true, status, points: 0, correct, prediction: { stage: 'explained', order: [2, 0, 1], ...prediction }, hints: [], nextHint: null, hintOffered: false };
+  return {
+    task,
+    kind: 'quiz',
+    required: true,
+    status,
+    points: 0,
+    correct,
+    prediction: { stage: 'explained', order: [2, 0, 1], ...prediction },
+    hints: [],
+    nextHint: null,
+    hintOffered: false,
+  };
 }
 
 describe('an explained prediction folds to one line', () => {
@@ -32,8 +50,12 @@ describe('an explained prediction folds to one line', () => {
   });
 
   it('gives the answer beside a wrong prediction, a number with its tolerance and unit', () => {
-    expect(foldedPrediction(view(quizTask, 'done', { prediction: { choice: 0 } }, false), 'en')).toBe('You expected “It stays grey”; the answer is “It is not traced”.');
-    expect(foldedPrediction(view(estimateTask, 'done', { order: [], prediction: { value: 30 } }, false), 'en')).toBe('You expected “30°”; the answer is “41.8 ± 1°”.');
+    expect(foldedPrediction(view(quizTask, 'done', { prediction: { choice: 0 } }, false), 'en')).toBe(
+      'You expected “It stays grey”; the answer is “It is not traced”.',
+    );
+    expect(foldedPrediction(view(estimateTask, 'done', { order: [], prediction: { value: 30 } }, false), 'en')).toBe(
+      'You expected “30°”; the answer is “41.8 ± 1°”.',
+    );
   });
 
   it('gives the answer after "Show me"', () => {

@@ -1,13 +1,7 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, expectTypeOf, it } from 'vitest';
 import { guideIds, ITEM_TARGETS, LAB_CONTROLS, type ControlOf, type LabPanel } from '../../../src/quest/lab-controls.ts';
-import {
-  CONTROL_NAMES,
-  controlIdOf,
-  isControlName,
-  type ControlName,
-  type UnreachedIds,
-} from '../../../src/ui/lab/panels/control-ids.ts';
+import { CONTROL_NAMES, controlIdOf, isControlName, type ControlName, type UnreachedIds } from '../../../src/ui/lab/panels/control-ids.ts';
 
 /**
  * A panel's controls are named from a declared list (control-ids.ts), not by a kebab-case
@@ -39,7 +33,7 @@ function drawnId(panel: string, id: string): boolean {
   return names === undefined || Object.values(names).includes(id);
 }
 
-describe('each panel declares its controls\' names', () => {
+describe("each panel declares its controls' names", () => {
   it('maps each name to the id levels use, grouped names to one id, and position fields to none', () => {
     expect(controlIdOf('object', 'refractiveIndex')).toBe('refractive-index');
     expect(controlIdOf('light', 'spotAngle')).toBe('spot-angle');
@@ -86,7 +80,7 @@ describe('each panel declares its controls\' names', () => {
   });
 });
 
-describe('guide ids written by hand (the render window, the view\'s buttons)', () => {
+describe("guide ids written by hand (the render window, the view's buttons)", () => {
   it('joins declared targets, and refuses one that is not declared at compile time', () => {
     expect(guideIds('render.zoom', 'render.compare')).toBe('render.zoom render.compare');
     // @ts-expect-error the render window has no "begin": its button is "render.start"

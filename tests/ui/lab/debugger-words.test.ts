@@ -62,13 +62,28 @@ describe('the ray debugger’s words', () => {
   it('gives the causes of a small A that each kind of light has', async () => {
     const scene = levelScene('10-area-lights');
     const area = scene.lights.find((light) => light.type === 'area')!;
-    const point: Scene['lights'][number] = { id: 'bulb', name: { en: 'Bulb', nl: 'Peer' }, type: 'point', position: [0, 3, 0], color: [1, 1, 1], intensity: 1, ambient: 0, diffuse: 1, specular: 1, distanceAttenuation: true };
+    const point: Scene['lights'][number] = {
+      id: 'bulb',
+      name: { en: 'Bulb', nl: 'Peer' },
+      type: 'point',
+      position: [0, 3, 0],
+      color: [1, 1, 1],
+      intensity: 1,
+      ambient: 0,
+      diffuse: 1,
+      specular: 1,
+      distanceAttenuation: true,
+    };
     const withPoint: Scene = { ...scene, lights: [...scene.lights, point] };
-    expect(text.darkReasonText({ kind: 'outside-cone', lightId: area.id }, withPoint)).toMatch(/^The point is behind .*, which shines to one side only \(A = 0\)\.$/);
+    expect(text.darkReasonText({ kind: 'outside-cone', lightId: area.id }, withPoint)).toMatch(
+      /^The point is behind .*, which shines to one side only \(A = 0\)\.$/,
+    );
     expect(text.darkReasonText({ kind: 'weakened', lightId: area.id, attenuation: 0.3 }, withPoint)).toContain('off to the side of the panel');
     expect(text.darkReasonText({ kind: 'weakened', lightId: 'bulb', attenuation: 0.3 }, withPoint)).toBe('Only part of Bulb arrives: A = 0.3 (its distance).');
     await speak('nl');
-    expect(text.darkReasonText({ kind: 'weakened', lightId: 'bulb', attenuation: 0.3 }, withPoint)).toBe('Maar een deel van Peer komt aan: A = 0,3 (door de afstand).');
+    expect(text.darkReasonText({ kind: 'weakened', lightId: 'bulb', attenuation: 0.3 }, withPoint)).toBe(
+      'Maar een deel van Peer komt aan: A = 0,3 (door de afstand).',
+    );
     expect(text.darkReasonText({ kind: 'outside-cone', lightId: area.id }, withPoint)).toContain('schijnt maar naar één kant');
     await speak('en');
   });

@@ -32,10 +32,14 @@ describe('guide target names → places on the page', () => {
     expect(guideRect('view.item:ball', stage({}, project))).toEqual({ left: 10 + 100 - 32, top: 20 + 50 - 32, width: 64, height: 64 });
     guideRect('screen.pixel:3,2', stage({}, project));
     guideRect('screen.grid', stage({}, project));
-    expect(seen).toEqual([[1, 2, 3], [0, 1, 8], [0, 1, 8]]);
+    expect(seen).toEqual([
+      [1, 2, 3],
+      [0, 1, 8],
+      [0, 1, 8],
+    ]);
   });
 
-  it('prefers the flat preview\'s pixel to the camera when the preview is on the page', () => {
+  it("prefers the flat preview's pixel to the camera when the preview is on the page", () => {
     const rect = guideRect('screen.pixel:3,2', stage({ 'screen.pixel:3,2': [boxed(40, 500, 24, 24)] }));
     expect(rect).toEqual({ left: 40, top: 500, width: 24, height: 24 });
   });
@@ -43,7 +47,12 @@ describe('guide target names → places on the page', () => {
   it('rings the Render image button for a control of the closed render window', () => {
     const header = boxed(900, 8, 120, 32);
     expect(guideRect('render.start', stage({ 'render.open': [header] }))).toEqual({ left: 900, top: 8, width: 120, height: 32 });
-    expect(guideRect('render.start', stage({ 'render.open': [header], 'render.start': [boxed(300, 100, 80, 32)] }))).toEqual({ left: 300, top: 100, width: 80, height: 32 });
+    expect(guideRect('render.start', stage({ 'render.open': [header], 'render.start': [boxed(300, 100, 80, 32)] }))).toEqual({
+      left: 300,
+      top: 100,
+      width: 80,
+      height: 32,
+    });
   });
 
   it('rings the button that shows the panels for a control of the hidden panels (a small screen showing the tasks)', () => {
@@ -51,14 +60,24 @@ describe('guide target names → places on the page', () => {
     const hidden = { 'object.color': [boxed(0, 0, 0, 0)] };
     expect(guideRect('object.color', { ...stage(hidden), panelsButton: button })).toEqual({ left: 400, top: 44, width: 170, height: 32 });
     // Shown panels, a wide screen (the button takes no room), or a control not on the page at all: no stand-in.
-    expect(guideRect('object.color', { ...stage({ 'object.color': [boxed(5, 6, 7, 8)] }), panelsButton: button })).toEqual({ left: 5, top: 6, width: 7, height: 8 });
+    expect(guideRect('object.color', { ...stage({ 'object.color': [boxed(5, 6, 7, 8)] }), panelsButton: button })).toEqual({
+      left: 5,
+      top: 6,
+      width: 7,
+      height: 8,
+    });
     expect(guideRect('object.color', { ...stage(hidden), panelsButton: boxed(0, 0, 0, 0) })).toBeNull();
     expect(guideRect('tracer.supersampling', { ...stage({}), panelsButton: button })).toBeNull();
   });
 
   it('has no ring for a control that is not on the page, or a point behind the eye', () => {
     expect(guideRect('tracer.supersampling', stage({}))).toBeNull();
-    expect(guideRect('view.item:ball', stage({}, () => null))).toBeNull();
+    expect(
+      guideRect(
+        'view.item:ball',
+        stage({}, () => null),
+      ),
+    ).toBeNull();
     expect(guideRect('view.item:nothing', stage({}))).toBeNull();
   });
 

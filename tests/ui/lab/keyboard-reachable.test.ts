@@ -25,7 +25,12 @@ const MODE_OF_FIELD: Readonly<Record<string, GizmoMode>> = { position: 'translat
 /** The transforms an action makes that only a drag or the keys can make, as "what: mode" for the ones the keys cannot reach in `level`. */
 function unreachable(level: Level, action: LabAction): string[] {
   if (action.type !== 'object.changed' && action.type !== 'light.changed' && action.type !== 'camera.changed') return [];
-  const selection = action.type === 'object.changed' ? { kind: 'object' as const, id: action.id } : action.type === 'light.changed' ? { kind: 'light' as const, id: action.id } : { kind: 'camera' as const };
+  const selection =
+    action.type === 'object.changed'
+      ? { kind: 'object' as const, id: action.id }
+      : action.type === 'light.changed'
+        ? { kind: 'light' as const, id: action.id }
+        : { kind: 'camera' as const };
   const allowed = gizmoModesFor(selection, level.scene);
   const offered = levelPanels(level).gizmo;
   const { panels, controls } = levelPanels(level);
@@ -44,7 +49,16 @@ describe('every mandatory task by keyboard', () => {
     expect(levels.length).toBeGreaterThanOrEqual(20);
     const moves = levels.flatMap((level) =>
       level.tasks
-        .filter((task) => task.mandatory !== false && (task.solution ?? []).some((action) => ['object.changed', 'light.changed', 'camera.changed'].includes(action.type) && 'changes' in action && Object.keys(action.changes as object).some((field) => field in MODE_OF_FIELD)))
+        .filter(
+          (task) =>
+            task.mandatory !== false &&
+            (task.solution ?? []).some(
+              (action) =>
+                ['object.changed', 'light.changed', 'camera.changed'].includes(action.type) &&
+                'changes' in action &&
+                Object.keys(action.changes as object).some((field) => field in MODE_OF_FIELD),
+            ),
+        )
         .map((task) => `${level.id}/${task.id}`),
     );
     expect(moves).toEqual(expect.arrayContaining(['01-introduction/move-ball', '04-shadows/move-lamp', '14-finding-your-way/fix-spot']));
@@ -61,6 +75,8 @@ describe('every mandatory task by keyboard', () => {
 
   it('would catch a move in a level without move tools', () => {
     const level = levels.find((l) => l.id === '08-spot-lights')!;
-    expect(unreachable(level, { type: 'light.changed', id: 'lamp', changes: { position: [0, 2, 0] } })).toEqual(['light.changed position: needs the translate gizmo']);
+    expect(unreachable(level, { type: 'light.changed', id: 'lamp', changes: { position: [0, 2, 0] } })).toEqual([
+      'light.changed position: needs the translate gizmo',
+    ]);
   });
 });

@@ -25,7 +25,20 @@ describe('names of rays', () => {
   const reached = ray('light', { lightId: 'lamp' });
   const blocked = ray('shadow', { lightId: 'lamp', objectId: 'ball', color: [0, 0, 0] });
   const untested = ray('light', { lightId: 'lamp', untested: true });
-  const lightStep = (node: RayNode): DebugStep => ({ kind: 'light', line: 'lit', ray: node, hit: null, from: null, depth: 0, sample: 0, level: 1, place: null, share: 1, adds: node.color, sum: node.color });
+  const lightStep = (node: RayNode): DebugStep => ({
+    kind: 'light',
+    line: 'lit',
+    ray: node,
+    hit: null,
+    from: null,
+    depth: 0,
+    sample: 0,
+    level: 1,
+    place: null,
+    share: 1,
+    adds: node.color,
+    sum: node.color,
+  });
 
   beforeAll(async () => {
     speak = await standInPage();
@@ -42,7 +55,8 @@ describe('names of rays', () => {
     expect(names.rayColorKeyName('shadow')).toBe('Shadow ray — blocked');
     expect(names.rayName(reached)).toBe('Shadow ray — reaches the light');
     expect(names.rayName(areaRay('area-shadow'))).toBe('Shadow rays to an area light — all blocked (cone)');
-    for (const key of ['light', 'shadow'] as const) expect(names.rayColorKeyHint(key)).toMatch(/^A shadow ray tests whether anything is between the point and a light\./);
+    for (const key of ['light', 'shadow'] as const)
+      expect(names.rayColorKeyHint(key)).toMatch(/^A shadow ray tests whether anything is between the point and a light\./);
     await speak('nl');
     expect(names.rayColorKeyName('light')).toBe('Schaduwstraal — bereikt de lamp');
     expect(names.rayColorKeyName('shadow')).toBe('Schaduwstraal — geblokkeerd');
@@ -87,7 +101,9 @@ describe('names of rays', () => {
     );
     expect(debuggerText.pseudocodeText('shadow-ray')).toBe('if N·L > 0, A > 0 and Shadows is on: cast a shadow ray toward the light');
     await speak('nl');
-    expect(debuggerText.stepText(lightStep(reached), scene)).toBe('De schaduwstraal naar Lamp bereikt die lamp: het diffuse licht en de glansvlek worden opgeteld.');
+    expect(debuggerText.stepText(lightStep(reached), scene)).toBe(
+      'De schaduwstraal naar Lamp bereikt die lamp: het diffuse licht en de glansvlek worden opgeteld.',
+    );
     expect(debuggerText.pseudocodeText('shadow-ray')).toBe('als N·L en A groter dan 0 zijn en Schaduwen aan staat: stuur een schaduwstraal naar de lamp');
     await speak('en');
   });

@@ -6,12 +6,14 @@ const rect = (left: number, top: number, width: number, height: number) => ({ le
 describe('how much of the 3D view panels cover from below', () => {
   const view = rect(300, 45, 786, 723);
 
-  it('counts an overlay in the lower part of the view to the view\'s bottom', () => {
+  it("counts an overlay in the lower part of the view to the view's bottom", () => {
     expect(coveredBottom(view, [rect(308, 480, 352, 280)])).toBe(768 - 480);
   });
 
   it('takes the tallest, and leaves out overlays at the top, beside the view or with no size', () => {
-    expect(coveredBottom(view, [rect(308, 600, 352, 160), rect(308, 420, 770, 340), rect(944, 105, 134, 32), rect(1100, 500, 200, 200), rect(400, 500, 0, 0)])).toBe(768 - 420);
+    expect(
+      coveredBottom(view, [rect(308, 600, 352, 160), rect(308, 420, 770, 340), rect(944, 105, 134, 32), rect(1100, 500, 200, 200), rect(400, 500, 0, 0)]),
+    ).toBe(768 - 420);
     expect(coveredBottom(view, [])).toBe(0);
   });
 });

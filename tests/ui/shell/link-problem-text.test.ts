@@ -13,7 +13,9 @@ describe('the notice of an assignment link that did not open', () => {
   });
 
   it('lists them all when there are few', () => {
-    expect(linkProblemText({ ok: false, kind: 'unknown-levels', reasons: ['a', 'b'] })).toBe('This assignment link names levels or tasks this version of the game does not have: a; b. You are playing freely.');
+    expect(linkProblemText({ ok: false, kind: 'unknown-levels', reasons: ['a', 'b'] })).toBe(
+      'This assignment link names levels or tasks this version of the game does not have: a; b. You are playing freely.',
+    );
     expect(shortList(['a', 'b', 'c', 'd', 'e', 'f'])).toBe('a; b; c; d; e; f');
     expect(shortList(['a', 'b', 'c', 'd', 'e', 'f', 'g'])).toBe('a; b; c; d; e and 2 more');
   });

@@ -3,9 +3,9 @@ import { classroomStyles, pageStyles } from '../classroom-styles.ts';
 
 /** The dashboard page's layout: the drop zone, the filters, each level's charts and tables, the survey charts. */
 export const dashboardPageStyles = [
-    classroomStyles,
-    pageStyles,
-    css`
+  classroomStyles,
+  pageStyles,
+  css`
       main {
         display: flex;
         flex-direction: column;
@@ -107,4 +107,4 @@ export const dashboardPageStyles = [
         color: var(--rt-muted);
       }
     `,
-  ];
+];

@@ -144,7 +144,12 @@ export class RtDashboardPage extends LitElement {
     const learners = this.learners.length;
     const merged = records.length - learners;
     const counted = learners === 1 ? msg('1 learner counted') : msg(str`${learners} learners counted`);
-    const files = merged === 0 ? '' : merged === 1 ? msg(str` (from ${records.length} files: 1 merged into its learner's)`) : msg(str` (from ${records.length} files: ${merged} merged into their learner's)`);
+    const files =
+      merged === 0
+        ? ''
+        : merged === 1
+          ? msg(str` (from ${records.length} files: 1 merged into its learner's)`)
+          : msg(str` (from ${records.length} files: ${merged} merged into their learner's)`);
     const skippedText = skipped.length === 1 ? msg('1 file skipped.') : msg(str`${skipped.length} files skipped.`);
     return `${counted}${files}, ${skippedText}`;
   }
@@ -157,9 +162,10 @@ export class RtDashboardPage extends LitElement {
     const pick = (changes: Partial<LearnerFilter>) => (this.filter = { ...this.filter, ...changes });
     const value = (text: string) => (text === '*' ? null : text);
     return html`<div class="filter">
-      ${assignments.length < 2
-        ? nothing
-        : html`<label
+      ${
+        assignments.length < 2
+          ? nothing
+          : html`<label
             >${msg('Assignment')}
             <select name="assignment" @change=${(event: Event) => pick({ assignmentId: value((event.target as HTMLSelectElement).value) })}>
               <option value="*" ?selected=${this.filter.assignmentId === null}>${msg(str`All (${this.learners.length} learners)`)}</option>
@@ -170,16 +176,19 @@ export class RtDashboardPage extends LitElement {
                   </option>`,
               )}
             </select></label
-          >`}
-      ${classes.length < 2
-        ? nothing
-        : html`<label
+          >`
+      }
+      ${
+        classes.length < 2
+          ? nothing
+          : html`<label
             >${msg('Class')}
             <select name="class" @change=${(event: Event) => pick({ classCode: value((event.target as HTMLSelectElement).value) })}>
               <option value="*" ?selected=${this.filter.classCode === null}>${msg('All classes')}</option>
               ${classes.map((code) => html`<option value=${code} ?selected=${this.filter.classCode === code}>${code === '' ? msg('No class code') : code}</option>`)}
             </select></label
-          >`}
+          >`
+      }
       <span>${msg(str`${this.shown.length} learners shown.`)}</span>
     </div>`;
   }
@@ -276,13 +285,20 @@ export class RtDashboardPage extends LitElement {
     const names = levelNames(this.locale);
     const title = names.level(level.level);
     const stuck = stickingPoints(level.tasks);
-    const rows = level.tasks.map((task) => ({ ...task, label: task.mandatory ? names.task(level.level, task.task) : msg(str`${names.task(level.level, task.task)} (optional)`) }));
+    const rows = level.tasks.map((task) => ({
+      ...task,
+      label: task.mandatory ? names.task(level.level, task.task) : msg(str`${names.task(level.level, task.task)} (optional)`),
+    }));
     return html`<section class="level" data-level=${level.level} aria-label=${title}>
       <h2>${title}</h2>
       <p class="level-facts">
-        ${msg(str`${level.passed} of ${level.learners} learners passed`)}${level.stats
-          ? msg(str`; median active time ${formatDuration(level.stats.median)} (middle half ${formatDuration(level.stats.q1)} – ${formatDuration(level.stats.q3)})`)
-          : ''}
+        ${msg(str`${level.passed} of ${level.learners} learners passed`)}${
+          level.stats
+            ? msg(
+                str`; median active time ${formatDuration(level.stats.median)} (middle half ${formatDuration(level.stats.q1)} – ${formatDuration(level.stats.q3)})`,
+              )
+            : ''
+        }
       </p>
       <h3>${msg('Active time per task')}</h3>
       <rt-dashboard-times

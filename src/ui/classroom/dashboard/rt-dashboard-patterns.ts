@@ -28,7 +28,15 @@ export type PatternName = 'hatch' | 'hatch-sparse' | 'dots' | 'dots-sparse' | nu
  * A filled rectangle: the base colour, then the pattern over it. Coordinates may be
  * percentages ("25%"): bars drawn that way stretch with the page without stretching text.
  */
-export function patternedRect(x: number | string, y: number, width: number | string, height: number, fill: string, pattern: PatternName, className = 'segment') {
+export function patternedRect(
+  x: number | string,
+  y: number,
+  width: number | string,
+  height: number,
+  fill: string,
+  pattern: PatternName,
+  className = 'segment',
+) {
   return svg`<rect class=${className} x=${x} y=${y} width=${width} height=${height} fill=${fill}></rect>
     ${pattern ? svg`<rect x=${x} y=${y} width=${width} height=${height} fill="url(#pattern-${pattern})" pointer-events="none"></rect>` : null}`;
 }

@@ -105,8 +105,9 @@ export class RtDashboardSurvey extends LitElement {
             </tbody>
           </table>`,
         )}
-        ${survey.numbers.length
-          ? html`<table>
+        ${
+          survey.numbers.length
+            ? html`<table>
               <caption>
                 <h3>${msg('Numbers')}</h3>
               </caption>
@@ -129,7 +130,8 @@ export class RtDashboardSurvey extends LitElement {
                 )}
               </tbody>
             </table>`
-          : null}
+            : null
+        }
       </div>
       ${survey.texts.map(
         (question) => html`<details>

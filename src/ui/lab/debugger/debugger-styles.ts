@@ -1,4 +1,5 @@
 import { css } from 'lit';
+import { visuallyHidden } from '../../controls/visually-hidden.css.ts';
 
 /**
  * The ray debugger's card: a header, the step buttons, the sentence of the step, then the
@@ -152,12 +153,7 @@ export const debuggerStyles = css`
     }
     /* The region is still named "Ray debugger"; the pixel and the step keep the first row. */
     h2 {
-      position: absolute;
-      width: 1px;
-      height: 1px;
-      overflow: hidden;
-      clip-path: inset(50%);
-      white-space: nowrap;
+      ${visuallyHidden}
     }
   }
   /* Narrow: the pseudocode above the tree, the equation beside both. */

@@ -163,8 +163,12 @@ function totallyReflected(hit: RayNode): boolean {
 function sampleText(root: RayNode): string {
   const { lensPoints, moments } = lensAndMoments(root);
   const rays = root.children.length;
-  if (lensPoints > 1 && moments > 1) return msg(str`This sample casts ${rays} rays: ${lensPoints} points of the lens, each at ${moments} moments while the shutter is open, all aimed at F, where its pinhole ray meets the plane in focus.`);
-  if (lensPoints > 1) return msg(str`This sample casts ${rays} rays from ${lensPoints} points of the lens, all aimed at F, where its pinhole ray meets the plane in focus.`);
+  if (lensPoints > 1 && moments > 1)
+    return msg(
+      str`This sample casts ${rays} rays: ${lensPoints} points of the lens, each at ${moments} moments while the shutter is open, all aimed at F, where its pinhole ray meets the plane in focus.`,
+    );
+  if (lensPoints > 1)
+    return msg(str`This sample casts ${rays} rays from ${lensPoints} points of the lens, all aimed at F, where its pinhole ray meets the plane in focus.`);
   return msg(str`This sample casts ${rays} rays at ${moments} moments while the shutter is open.`);
 }
 
@@ -172,7 +176,8 @@ function sampleText(root: RayNode): string {
 export function stepText(step: DebugStep, scene: Scene): string {
   const ray = step.ray;
   const counts = msg(str`It counts ${shareText(step.share)} of the pixel.`);
-  if (step.kind === 'lens' && step.place) return `${msg(str`${placeText(step.place)}: its rays start from the same point of the lens, one at each moment.`)} ${counts}`;
+  if (step.kind === 'lens' && step.place)
+    return `${msg(str`${placeText(step.place)}: its rays start from the same point of the lens, one at each moment.`)} ${counts}`;
   if (!ray || step.kind === 'average') return msg('The pixel’s colour is the sum of its rays’ colours, each times its share.');
   const kind = rayLabel(step);
   const object = itemName(scene, ray.objectId);
@@ -187,17 +192,24 @@ export function stepText(step: DebugStep, scene: Scene): string {
       return msg(str`Shading the hit on ${object}: ambient first.`);
     case 'light': {
       const sample = step.place ? `${placeText(step.place)}: ` : '';
-      if (ray.type === 'shadow' || ray.type === 'area-shadow') return sample + msg(str`The shadow ray to ${light} is blocked by ${object || msg('an object')}: S = 0.`);
-      if (ray.untested) return sample + msg(str`Shadows is off: no shadow ray is cast, so ${light} counts as reaching the point: its diffuse and highlight are added.`);
-      if (step.place) return sample + msg(str`The shadow ray to ${light} reaches it: this sample’s diffuse and highlight (1/${lightSamples(step)} of the light) are added.`);
+      if (ray.type === 'shadow' || ray.type === 'area-shadow')
+        return sample + msg(str`The shadow ray to ${light} is blocked by ${object || msg('an object')}: S = 0.`);
+      if (ray.untested)
+        return sample + msg(str`Shadows is off: no shadow ray is cast, so ${light} counts as reaching the point: its diffuse and highlight are added.`);
+      if (step.place)
+        return sample + msg(str`The shadow ray to ${light} reaches it: this sample’s diffuse and highlight (1/${lightSamples(step)} of the light) are added.`);
       return msg(str`The shadow ray to ${light} reaches it: its diffuse and highlight are added.`);
     }
     case 'split':
-      if (totallyReflected(ray)) return msg('Glass, but the ray is inside and meets the surface beyond the critical angle: no ray is refracted, all of it is reflected (total internal reflection).');
+      if (totallyReflected(ray))
+        return msg(
+          'Glass, but the ray is inside and meets the surface beyond the critical angle: no ray is refracted, all of it is reflected (total internal reflection).',
+        );
       return msg(str`Glass: Schlick splits the colour between the refracted and the reflected ray.`);
     case 'return':
       if (!ray.hit) return msg('Nothing hit: the ray returns the background colour.');
-      if (step.adds.some((value) => value !== 0)) return msg(str`The hit on ${object} returns its colour, clamped to 0..1: clamping lowers it, so the pixel’s sum drops.`);
+      if (step.adds.some((value) => value !== 0))
+        return msg(str`The hit on ${object} returns its colour, clamped to 0..1: clamping lowers it, so the pixel’s sum drops.`);
       return msg(str`The hit on ${object} returns its colour, clamped to 0..1.`);
     case 'lens':
       return '';
@@ -218,7 +230,9 @@ export function darkReasonText(reason: DarkReason, scene: Scene): string {
         ? msg(str`In shadow: ${itemName(scene, reason.blockerId)} is between the point and ${itemName(scene, reason.lightId)} (S = 0).`)
         : msg(str`In shadow: something is between the point and ${itemName(scene, reason.lightId)} (S = 0).`);
     case 'part-shadow':
-      return msg(str`Partly in shadow: only ${Math.round(reason.visible * 100)}% of ${itemName(scene, reason.lightId)} is visible (S = ${share.format(reason.visible)}).`);
+      return msg(
+        str`Partly in shadow: only ${Math.round(reason.visible * 100)}% of ${itemName(scene, reason.lightId)} is visible (S = ${share.format(reason.visible)}).`,
+      );
     case 'facing-away':
       return msg(str`The surface faces away from ${itemName(scene, reason.lightId)} (N·L = 0).`);
     case 'outside-cone':
@@ -234,7 +248,9 @@ export function darkReasonText(reason: DarkReason, scene: Scene): string {
         case 'point':
           return msg(str`Only part of ${light} arrives: A = ${attenuation} (its distance).`);
         case 'area':
-          return msg(str`Only part of ${light} arrives: A = ${attenuation} (distance, or the point lies off to the side of the panel, which shines most straight ahead).`);
+          return msg(
+            str`Only part of ${light} arrives: A = ${attenuation} (distance, or the point lies off to the side of the panel, which shines most straight ahead).`,
+          );
         default:
           return msg(str`Only part of ${light} arrives: A = ${attenuation} (distance or the edge of its cone).`);
       }
@@ -242,8 +258,12 @@ export function darkReasonText(reason: DarkReason, scene: Scene): string {
     case 'depth-limit': {
       const object = itemName(scene, reason.objectId);
       return reason.glass
-        ? msg(str`The recursion depth (${reason.maxDepth}) is reached: ${object} is glass, but no refracted or reflected ray is traced, so what it lets through is missing.`)
-        : msg(str`The recursion depth (${reason.maxDepth}) is reached: ${object} reflects (ks = ${share.format(reason.specular)}), but no reflected ray is traced, so that part of its colour is missing.`);
+        ? msg(
+            str`The recursion depth (${reason.maxDepth}) is reached: ${object} is glass, but no refracted or reflected ray is traced, so what it lets through is missing.`,
+          )
+        : msg(
+            str`The recursion depth (${reason.maxDepth}) is reached: ${object} reflects (ks = ${share.format(reason.specular)}), but no reflected ray is traced, so that part of its colour is missing.`,
+          );
     }
   }
 }

@@ -158,10 +158,12 @@ export class RtDebugEquation extends LitElement {
     const now = this.equation;
     if (!before || !now || before.hit !== now.hit || this.average) return;
     // The last of them: a light sample grows its diffuse term and, just under it, its highlight.
-    const grown = now.terms.filter((term) => {
-      const old = before.terms.find((candidate) => candidate.id === term.id);
-      return !old || old.rays.added !== term.rays.added;
-    }).at(-1);
+    const grown = now.terms
+      .filter((term) => {
+        const old = before.terms.find((candidate) => candidate.id === term.id);
+        return !old || old.rays.added !== term.rays.added;
+      })
+      .at(-1);
     const list = this.renderRoot.querySelector('ul.terms');
     if (grown && list) revealRow(list, list.querySelector(`[data-term-row="${CSS.escape(grown.id)}"]`));
   }
@@ -195,7 +197,9 @@ export class RtDebugEquation extends LitElement {
       ? total > 1
         ? msg(str`${added} of ${total} rays added`)
         : msg('its ray is not added yet')
-      : [...(term.samples > 1 ? [msg(str`Σ over ${term.samples} samples; A, S, N·L, R·V are means`)] : []), term.factors.map(factorText).join(' · ')].join(' — ');
+      : [...(term.samples > 1 ? [msg(str`Σ over ${term.samples} samples; A, S, N·L, R·V are means`)] : []), term.factors.map(factorText).join(' · ')].join(
+          ' — ',
+        );
     const kind = pending ? 'pending' : zero ? 'zero' : '';
     if (!term.ray) return this.row(name, term.color, factors, kind);
     return html`<button
@@ -229,7 +233,8 @@ export class RtDebugEquation extends LitElement {
       <h3>${heading}</h3>
       <ul class="terms" tabindex="0" aria-label=${msg('The pixel’s parts')}>
         ${average.parts.map(
-          (part) => html`<li>${this.row(part.place ? placeText(part.place) : msg('Primary ray'), part.ray.color, average.rays > 1 ? msg(str`share ${shareText(part.share)}`) : '', '')}</li>`,
+          (part) =>
+            html`<li>${this.row(part.place ? placeText(part.place) : msg('Primary ray'), part.ray.color, average.rays > 1 ? msg(str`share ${shareText(part.share)}`) : '', '')}</li>`,
         )}
       </ul>
       <ul class="sums">

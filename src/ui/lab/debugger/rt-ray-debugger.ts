@@ -359,9 +359,11 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
     const reasons = subject ? whyDark(subject, scene) : [];
     return html`<div class="why" data-guide=${this.guideOf('why-dark') ?? nothing}>
       <h3>${msg('Why is it dark here?')}</h3>
-      ${reasons.length === 0
-        ? html`<p>${msg('No light is cut off at this point: it is as dark as its terms add up to (its colour C, kd, and the lights’ I and A).')}</p>`
-        : html`<ul>${reasons.map((reason) => html`<li>${darkReasonText(reason, scene)}</li>`)}</ul>`}
+      ${
+        reasons.length === 0
+          ? html`<p>${msg('No light is cut off at this point: it is as dark as its terms add up to (its colour C, kd, and the lights’ I and A).')}</p>`
+          : html`<ul>${reasons.map((reason) => html`<li>${darkReasonText(reason, scene)}</li>`)}</ul>`
+      }
     </div>`;
   }
 }

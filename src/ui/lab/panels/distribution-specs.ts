@@ -13,7 +13,11 @@ export function apertureSpec(): SliderSpec<'aperture'> {
     name: 'aperture',
     label: msg('Aperture (lens radius)'),
     tooltip: msg('The radius of the camera’s lens in metres. 0 is a pinhole: everything is sharp. A wider lens blurs what is not on the plane in focus.'),
-    min: LIMITS.aperture[0], max: 0.3, step: 0.005, inputMax: LIMITS.aperture[1], unit: 'm',
+    min: LIMITS.aperture[0],
+    max: 0.3,
+    step: 0.005,
+    inputMax: LIMITS.aperture[1],
+    unit: 'm',
   };
 }
 
@@ -22,7 +26,12 @@ export function focusDistanceSpec(): SliderSpec<'focusDistance'> {
     name: 'focusDistance',
     label: msg('Focus distance'),
     tooltip: msg('How far ahead of the camera the plane in focus is, in metres. Points on that plane stay sharp at any aperture.'),
-    min: 0.5, max: 15, step: 0.05, inputMin: LIMITS.focusDistance[0], inputMax: LIMITS.focusDistance[1], unit: 'm',
+    min: 0.5,
+    max: 15,
+    step: 0.05,
+    inputMin: LIMITS.focusDistance[0],
+    inputMax: LIMITS.focusDistance[1],
+    unit: 'm',
   };
 }
 
@@ -33,7 +42,11 @@ export function lensSamplesSpec(disabled: boolean): SliderSpec<'lensSamples'> {
     tooltip: disabled
       ? msg('n × n rays from points on the lens per pixel sample. Open the aperture to use it.')
       : msg('n × n rays from points on the lens per pixel sample: less noise in the blur, n² times the work.'),
-    min: LIMITS.lensSamples[0], max: LIMITS.lensSamples[1], step: 1, whole: true, disabled,
+    min: LIMITS.lensSamples[0],
+    max: LIMITS.lensSamples[1],
+    step: 1,
+    whole: true,
+    disabled,
   };
 }
 
@@ -53,7 +66,10 @@ export function timeSamplesSpec(): SliderSpec<'timeSamples'> {
     name: 'timeSamples',
     label: msg('Time samples (k)'),
     tooltip: msg('k moments while the shutter is open, per pixel sample: moving objects blur along their path. k times the work.'),
-    min: LIMITS.timeSamples[0], max: LIMITS.timeSamples[1], step: 1, whole: true,
+    min: LIMITS.timeSamples[0],
+    max: LIMITS.timeSamples[1],
+    step: 1,
+    whole: true,
   };
 }
 
@@ -62,7 +78,9 @@ export function roughnessSpec(): SliderSpec<'roughness'> {
     name: 'roughness',
     label: msg('Roughness (ρ)'),
     tooltip: msg('How far reflected (and, for glass, refracted) rays spread: 0 is a perfect mirror or clear glass, higher blurs the reflection.'),
-    min: LIMITS.roughness[0], max: LIMITS.roughness[1], step: 0.01,
+    min: LIMITS.roughness[0],
+    max: LIMITS.roughness[1],
+    step: 0.01,
   };
 }
 
@@ -73,7 +91,11 @@ export function glossySamplesSpec(disabled: boolean): SliderSpec<'glossySamples'
     tooltip: disabled
       ? msg('m × m spread rays per hit on a rough surface. Raise the roughness to use it.')
       : msg('m × m spread rays per hit on a rough surface: a smoother blur, m² times the rays at every bounce.'),
-    min: LIMITS.glossySamples[0], max: LIMITS.glossySamples[1], step: 1, whole: true, disabled,
+    min: LIMITS.glossySamples[0],
+    max: LIMITS.glossySamples[1],
+    step: 1,
+    whole: true,
+    disabled,
   };
 }
 
@@ -83,6 +105,9 @@ export function velocitySpec(): VectorSpec<'velocity'> {
     name: 'velocity',
     label: msg('Movement while the shutter is open'),
     tooltip: msg('How far the object moves, in metres, while the shutter is open (x right, y up, z toward you). Needs more than 1 time sample to show a blur.'),
-    min, max, step: 0.05, unit: 'm',
+    min,
+    max,
+    step: 0.05,
+    unit: 'm',
   };
 }

@@ -20,5 +20,7 @@ export type MaterialPresetName = keyof typeof MATERIAL_PRESETS;
 /** The preset whose finish `material` has, if any (shown as the pressed preset button). */
 export function matchingPreset(material: Material): MaterialPresetName | undefined {
   const names = Object.keys(MATERIAL_PRESETS) as MaterialPresetName[];
-  return names.find((name) => (Object.entries(MATERIAL_PRESETS[name]) as [keyof MaterialFinish, number | boolean][]).every(([field, value]) => material[field] === value));
+  return names.find((name) =>
+    (Object.entries(MATERIAL_PRESETS[name]) as [keyof MaterialFinish, number | boolean][]).every(([field, value]) => material[field] === value),
+  );
 }

@@ -11,7 +11,15 @@ export function positionSpec(): VectorSpec<'position'> {
 
 export function rotationSpec(): VectorSpec<'rotation'> {
   const [min, max] = LIMITS.coordinate;
-  return { name: 'rotation', label: msg('Rotation'), tooltip: msg('Turns about the x, y and z axes, in degrees (applied in that order).'), min, max, step: 0.1, unit: '°' };
+  return {
+    name: 'rotation',
+    label: msg('Rotation'),
+    tooltip: msg('Turns about the x, y and z axes, in degrees (applied in that order).'),
+    min,
+    max,
+    step: 0.1,
+    unit: '°',
+  };
 }
 
 export function scaleSpec(): VectorSpec<'scale'> {

@@ -127,7 +127,9 @@ export class RtBvhPanel extends StorePanel<'bvh'> {
           {
             name: 'bounds',
             label: msg('Show bounding boxes'),
-            tooltip: msg('Draw the box around every object (dashed). A ray that misses an object’s box cannot hit the object, so the ray tracer tests the box first.'),
+            tooltip: msg(
+              'Draw the box around every object (dashed). A ray that misses an object’s box cannot hit the object, so the ray tracer tests the box first.',
+            ),
           },
           bvh.showBounds,
           (showBounds) => set({ showBounds }),
@@ -136,7 +138,9 @@ export class RtBvhPanel extends StorePanel<'bvh'> {
           {
             name: 'show',
             label: msg('Show the BVH'),
-            tooltip: msg('Draw the boxes inside boxes (the bounding volume hierarchy) that the ray tracer uses for models made of triangles. With a model selected, only its boxes.'),
+            tooltip: msg(
+              'Draw the boxes inside boxes (the bounding volume hierarchy) that the ray tracer uses for models made of triangles. With a model selected, only its boxes.',
+            ),
           },
           bvh.show,
           (show) => set({ show }),
@@ -145,7 +149,9 @@ export class RtBvhPanel extends StorePanel<'bvh'> {
           {
             name: 'depth',
             label: msg('Depth'),
-            tooltip: msg('How deep into the BVH to draw: 0 is one box around the whole model; each step divides every box’s triangles into two groups, each with its own box (boxes may overlap).'),
+            tooltip: msg(
+              'How deep into the BVH to draw: 0 is one box around the whole model; each step divides every box’s triangles into two groups, each with its own box (boxes may overlap).',
+            ),
             min: 0,
             max: BVH_MAX_DEPTH,
             step: 1,
@@ -182,23 +188,29 @@ export class RtBvhPanel extends StorePanel<'bvh'> {
     return html`<div class="counts" role="status" data-triangles=${tests.triangles} data-brute-force=${tests.bruteForce}>
       <p class="headline">${rayTestsHeadline(tests)}</p>
       <p>${boxesLine(pixel, tests, (id) => itemName(state.scene, id))}</p>
-      ${models.length > 0
-        ? html`<ul>
+      ${
+        models.length > 0
+          ? html`<ul>
             ${models.map((object) => {
               const name = itemName(state.scene, object.id);
               const mesh = object.mesh!;
               return html`<li>
-                ${object.boundsHit
-                  ? msg(str`${name}: ${NUMBER.format(mesh.boxes)} BVH boxes and ${NUMBER.format(mesh.triangles)} triangles tested.`)
-                  : msg(str`${name}: its bounding box was missed, so not one of its triangles was tested.`)}
+                ${
+                  object.boundsHit
+                    ? msg(str`${name}: ${NUMBER.format(mesh.boxes)} BVH boxes and ${NUMBER.format(mesh.triangles)} triangles tested.`)
+                    : msg(str`${name}: its bounding box was missed, so not one of its triangles was tested.`)
+                }
               </li>`;
             })}
           </ul>`
-        : nothing}
+          : nothing
+      }
       <p>${tests.hitId === null ? msg('The ray hits nothing.') : msg(str`The ray hits ${itemName(state.scene, tests.hitId)}.`)}</p>
-      ${state.bvh.show && tests.triangles > 0
-        ? html`<p class="muted">${msg('In the view: the boxes this ray went into are solid green; the ones it tested and missed are dashed red, and everything inside them was skipped.')}</p>`
-        : nothing}
+      ${
+        state.bvh.show && tests.triangles > 0
+          ? html`<p class="muted">${msg('In the view: the boxes this ray went into are solid green; the ones it tested and missed are dashed red, and everything inside them was skipped.')}</p>`
+          : nothing
+      }
     </div>`;
   }
 }

@@ -79,7 +79,10 @@ export class RtFilePanel extends StorePanel<'file'> {
     if (!file) return;
     const read = readSceneFile(await file.text(), file.size);
     if (!read.ok) {
-      this.note = { text: msg(str`${file.name} is not a scene file this app can open; your scene is unchanged.\n${read.errors.map(issueText).join('\n')}`), problem: true };
+      this.note = {
+        text: msg(str`${file.name} is not a scene file this app can open; your scene is unchanged.\n${read.errors.map(issueText).join('\n')}`),
+        problem: true,
+      };
       return;
     }
     const error = this.store?.dispatch({ type: 'scene.loaded', scene: read.scene });
@@ -92,7 +95,10 @@ export class RtFilePanel extends StorePanel<'file'> {
     const scene = this.state?.scene;
     if (!scene) return;
     this.link = await sceneLinkUrl(scene, location.href);
-    const long = this.link.length > LONG_LINK_CHARACTERS ? ` ${msg(str`The link is long (${this.link.length} characters); some chat programs cut long links, so a file is safer.`)}` : '';
+    const long =
+      this.link.length > LONG_LINK_CHARACTERS
+        ? ` ${msg(str`The link is long (${this.link.length} characters); some chat programs cut long links, so a file is safer.`)}`
+        : '';
     try {
       await navigator.clipboard.writeText(this.link);
       this.note = { text: msg('The link is copied: paste it to share this scene.') + long, problem: false };
@@ -120,12 +126,14 @@ export class RtFilePanel extends StorePanel<'file'> {
         <input type="file" accept=".json,application/json" @change=${this.loadFile} aria-label=${msg('Scene file to load')} />
         <button name="share" data-guide=${ifDefined(this.guideOf('share'))} @click=${this.shareLink} title=${msg('Make a link that opens this scene, and copy it')}>${msg('Share link')}</button>
       </div>
-      ${this.link
-        ? html`<label class="link">
+      ${
+        this.link
+          ? html`<label class="link">
             ${msg('Link to this scene')}
             <input type="text" readonly .value=${this.link} @focus=${(event: FocusEvent) => (event.target as HTMLInputElement).select()} />
           </label>`
-        : null}
+          : null
+      }
       ${messageLine(this.note?.text, this.note?.problem ?? false)}
     </rt-panel-section>`;
   }

@@ -34,53 +34,51 @@ export class RtLightPanel extends StorePanel<'light'> {
     const changed = (changes: Partial<Light>): LabAction => ({ type: 'light.changed', id: light.id, changes });
     const controls: ControlPart[] = [
       this.choice<LightType>(
-          { name: 'type', label: msg('Type'), tooltip: msg('Point: from one point. Spot: a cone. Area: a panel that casts soft shadows.') },
-          [
-            { value: 'point', label: lightTypeShortName('point'), tooltip: msg('Light from one point, in every direction: hard shadows.') },
-            { value: 'spot', label: lightTypeShortName('spot'), tooltip: msg('A cone of light, like a desk lamp.') },
-            { value: 'area', label: lightTypeShortName('area'), tooltip: msg('A glowing rectangle or disc: soft shadows.') },
-          ],
-          light.type,
-          (type) => changed({ type }),
-        ),
-        this.color(
-          { name: 'color', label: msg('Colour'), tooltip: msg('The colour of the light, as red, green and blue from 0 to 1.') },
-          light.color,
-          (color) => changed({ color }),
-        ),
-        this.slider(
-          {
-            name: 'intensity',
-            label: msg('Intensity (I)'),
-            tooltip: msg('How strong the light is. Type up to 100 (for far objects with distance attenuation).'),
-            min: 0,
-            max: 30,
-            step: 0.05,
-            inputMax: LIMITS.intensity[1],
-          },
-          light.intensity,
-          (intensity) => changed({ intensity }),
-        ),
-        ...this.phongSliders(
-          {
-            ambient: [msg('Ambient'), msg('How much ambient light it adds everywhere, even in shadow.')],
-            diffuse: [msg('Diffuse'), msg('How much it lights surfaces that face it (matte shading).')],
-            specular: [msg('Specular'), msg('How bright the highlights it makes are.')],
-          },
-          light,
-          changed,
-        ),
-        this.switch(
-          {
-            name: 'distanceAttenuation',
-            label: msg('Distance attenuation'),
-            tooltip: msg('Multiply the light by A = 1 / (0.04 + 0.1·d + 0.06·d²) at distance d: above 1 closer than about 3.3 m, below 1 further away.'),
-          },
-          light.distanceAttenuation,
-          (distanceAttenuation) => changed({ distanceAttenuation }),
-        ),
-        ...(light.type === 'spot' ? this.spotControls(light, changed) : []),
-        ...(light.type === 'area' ? this.areaControls(light, changed) : []),
+        { name: 'type', label: msg('Type'), tooltip: msg('Point: from one point. Spot: a cone. Area: a panel that casts soft shadows.') },
+        [
+          { value: 'point', label: lightTypeShortName('point'), tooltip: msg('Light from one point, in every direction: hard shadows.') },
+          { value: 'spot', label: lightTypeShortName('spot'), tooltip: msg('A cone of light, like a desk lamp.') },
+          { value: 'area', label: lightTypeShortName('area'), tooltip: msg('A glowing rectangle or disc: soft shadows.') },
+        ],
+        light.type,
+        (type) => changed({ type }),
+      ),
+      this.color({ name: 'color', label: msg('Colour'), tooltip: msg('The colour of the light, as red, green and blue from 0 to 1.') }, light.color, (color) =>
+        changed({ color }),
+      ),
+      this.slider(
+        {
+          name: 'intensity',
+          label: msg('Intensity (I)'),
+          tooltip: msg('How strong the light is. Type up to 100 (for far objects with distance attenuation).'),
+          min: 0,
+          max: 30,
+          step: 0.05,
+          inputMax: LIMITS.intensity[1],
+        },
+        light.intensity,
+        (intensity) => changed({ intensity }),
+      ),
+      ...this.phongSliders(
+        {
+          ambient: [msg('Ambient'), msg('How much ambient light it adds everywhere, even in shadow.')],
+          diffuse: [msg('Diffuse'), msg('How much it lights surfaces that face it (matte shading).')],
+          specular: [msg('Specular'), msg('How bright the highlights it makes are.')],
+        },
+        light,
+        changed,
+      ),
+      this.switch(
+        {
+          name: 'distanceAttenuation',
+          label: msg('Distance attenuation'),
+          tooltip: msg('Multiply the light by A = 1 / (0.04 + 0.1·d + 0.06·d²) at distance d: above 1 closer than about 3.3 m, below 1 further away.'),
+        },
+        light.distanceAttenuation,
+        (distanceAttenuation) => changed({ distanceAttenuation }),
+      ),
+      ...(light.type === 'spot' ? this.spotControls(light, changed) : []),
+      ...(light.type === 'area' ? this.areaControls(light, changed) : []),
     ];
     return html`
       ${this.section(msg('Light'), 'light', controls, this.identity(shownName(light.name, light.id), lightTypeName(light.type)))}

@@ -140,7 +140,9 @@ export class RtRayPanel extends StorePanel<'rays'> {
           {
             name: 'colorByTime',
             label: msg('Colour by time'),
-            tooltip: msg('Colour each ray by the moment in the open shutter it was sent: dark violet at the start, yellow at the end (needs more than 1 time sample).'),
+            tooltip: msg(
+              'Colour each ray by the moment in the open shutter it was sent: dark violet at the start, yellow at the end (needs more than 1 time sample).',
+            ),
           },
           rays.colorByTime,
           (colorByTime) => set({ colorByTime }),
@@ -174,17 +176,20 @@ export class RtRayPanel extends StorePanel<'rays'> {
           rays.animatePixelByPixel,
           (animatePixelByPixel) => set({ animatePixelByPixel }),
         ),
-        this.switch(
-          { name: 'loop', label: msg('Loop'), tooltip: msg('Start the animation again after a short pause.') },
-          rays.loop,
-          (loop) => set({ loop }),
-        ),
+        this.switch({ name: 'loop', label: msg('Loop'), tooltip: msg('Start the animation again after a short pause.') }, rays.loop, (loop) => set({ loop })),
       ])}
     `;
   }
 
   /** A radius slider in centimetres over a value in metres. */
-  private radiusSlider(name: 'radius' | 'minRadius' | 'maxRadius', label: string, tooltip: string, metres: number, disabled: boolean, action: (metres: number) => LabAction) {
+  private radiusSlider(
+    name: 'radius' | 'minRadius' | 'maxRadius',
+    label: string,
+    tooltip: string,
+    metres: number,
+    disabled: boolean,
+    action: (metres: number) => LabAction,
+  ) {
     return this.slider({ name, label, tooltip, ...RADIUS_CM, unit: 'cm', disabled }, metres * CM_PER_M, (cm) => action(cm / CM_PER_M));
   }
 }

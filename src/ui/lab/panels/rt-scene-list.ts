@@ -230,26 +230,46 @@ export class RtSceneList extends StorePanel<'scene-list'> {
     return html`
       <rt-panel-section heading=${msg('Scene')} name="scene">
         <div role="listbox" aria-label=${msg('Objects, lights and camera')} @keydown=${this.onKeydown}>
-          ${this.shows('objects')
-            ? html`<div role="group" aria-labelledby="objects-label">
+          ${
+            this.shows('objects')
+              ? html`<div role="group" aria-labelledby="objects-label">
                 <div role="presentation" class="group-label" id="objects-label">${msg('Objects')}</div>
                 ${repeat(
                   scene.objects,
                   (o) => o.id,
-                  (o) => option(`object:${o.id}`, shapeIcon(o.shape, o.material.color), shownName(o.name, o.id), shapeName(o), { kind: 'object', id: o.id }, `scene-list.objects scene-list.item:${o.id}`),
+                  (o) =>
+                    option(
+                      `object:${o.id}`,
+                      shapeIcon(o.shape, o.material.color),
+                      shownName(o.name, o.id),
+                      shapeName(o),
+                      { kind: 'object', id: o.id },
+                      `scene-list.objects scene-list.item:${o.id}`,
+                    ),
                 )}
               </div>`
-            : nothing}
-          ${this.shows('lights')
-            ? html`<div role="group" aria-labelledby="lights-label">
+              : nothing
+          }
+          ${
+            this.shows('lights')
+              ? html`<div role="group" aria-labelledby="lights-label">
                 <div role="presentation" class="group-label" id="lights-label">${msg('Lights')}</div>
                 ${repeat(
                   scene.lights,
                   (l) => l.id,
-                  (l) => option(`light:${l.id}`, lightIcon(l.type, l.color), shownName(l.name, l.id), lightTypeName(l.type) + off(l.type), { kind: 'light', id: l.id }, `scene-list.lights scene-list.item:${l.id}`),
+                  (l) =>
+                    option(
+                      `light:${l.id}`,
+                      lightIcon(l.type, l.color),
+                      shownName(l.name, l.id),
+                      lightTypeName(l.type) + off(l.type),
+                      { kind: 'light', id: l.id },
+                      `scene-list.lights scene-list.item:${l.id}`,
+                    ),
                 )}
               </div>`
-            : nothing}
+              : nothing
+          }
           <div role="group" aria-labelledby="camera-label">
             <div role="presentation" class="group-label" id="camera-label">${msg('Camera')}</div>
             ${option('camera', cameraIcon(), msg('Ray tracer camera'), '', { kind: 'camera' }, 'scene-list.item:camera')}
@@ -264,7 +284,9 @@ export class RtSceneList extends StorePanel<'scene-list'> {
   private editing(): TemplateResult {
     const selection = this.state?.selection ?? null;
     const deletable = selection !== null && selection.kind !== 'camera';
-    const label = deletable ? msg(str`Delete ${this.state ? itemName(this.state.scene, selection.id) : selection.id}`) : msg('Select an object or a light to delete it');
+    const label = deletable
+      ? msg(str`Delete ${this.state ? itemName(this.state.scene, selection.id) : selection.id}`)
+      : msg('Select an object or a light to delete it');
     return html`
       <div class="actions">
         <button type="button" data-guide=${guideIds('add-remove.add-object', 'add-remove.add-light')} aria-expanded=${this.adding ? 'true' : 'false'} aria-controls="add" @click=${() => (this.adding = !this.adding)}>

@@ -57,11 +57,7 @@ export class RtTracerPanel extends StorePanel<'tracer'> {
           (background) => set({ background }),
         ),
         ...LIGHT_TYPES.map((type) =>
-          this.switch(
-            lightTypeSwitch(type),
-            settings.lightTypes[type],
-            (on) => set({ lightTypes: { ...settings.lightTypes, [type]: on } }),
-          ),
+          this.switch(lightTypeSwitch(type), settings.lightTypes[type], (on) => set({ lightTypes: { ...settings.lightTypes, [type]: on } })),
         ),
         this.switch(
           {
@@ -82,10 +78,20 @@ export class RtTracerPanel extends StorePanel<'tracer'> {
             {
               value: 'none',
               label: msg('None'),
-              tooltip: msg('The colour c is written as c × 255 and the screen reads that number as its own value, so you see less light than c (no gamma, as in the Virtual Ray Tracer).'),
+              tooltip: msg(
+                'The colour c is written as c × 255 and the screen reads that number as its own value, so you see less light than c (no gamma, as in the Virtual Ray Tracer).',
+              ),
             },
-            { value: 'linear', label: msg('Linear'), tooltip: msg('The light is stored in 256 equal steps and shown as that light: few steps for the dark tones.') },
-            { value: 'srgb', label: msg('sRGB'), tooltip: msg('The light is sRGB-encoded before it is rounded, as in photos and PNG files: many steps for the dark tones.') },
+            {
+              value: 'linear',
+              label: msg('Linear'),
+              tooltip: msg('The light is stored in 256 equal steps and shown as that light: few steps for the dark tones.'),
+            },
+            {
+              value: 'srgb',
+              label: msg('sRGB'),
+              tooltip: msg('The light is sRGB-encoded before it is rounded, as in photos and PNG files: many steps for the dark tones.'),
+            },
           ],
           settings.encoding,
           (encoding) => set({ encoding }),
@@ -165,7 +171,9 @@ export class RtTracerPanel extends StorePanel<'tracer'> {
             step: 1,
             unit: 'px',
             whole: true,
-            limitReason: msg(str`the tracer renders at most ${LIMITS.imageSize[1]} pixels per side, so that the image fits in the browser's memory (${LIMITS.imageSize[1]} × ${LIMITS.imageSize[1]} is already 16 million pixels).`),
+            limitReason: msg(
+              str`the tracer renders at most ${LIMITS.imageSize[1]} pixels per side, so that the image fits in the browser's memory (${LIMITS.imageSize[1]} × ${LIMITS.imageSize[1]} is already 16 million pixels).`,
+            ),
           },
           settings.imageSize,
           (imageSize) => set({ imageSize }),
@@ -199,14 +207,31 @@ export class RtTracerPanel extends StorePanel<'tracer'> {
             ${this.errorLine('focusOnSelected')}`
         : nothing,
       this.slider(lensSamplesSpec(camera.aperture === 0), n, (lensSamples) => cam({ lensSamples }), lensSamplesHint(n, camera.aperture)),
-      this.slider(timeSamplesSpec(), k, (timeSamples) => ({ type: 'settings.changed', changes: { timeSamples } }), k === 1 ? msg('The shutter sees one moment') : msg(str`${k} moments per sample`)),
+      this.slider(
+        timeSamplesSpec(),
+        k,
+        (timeSamples) => ({ type: 'settings.changed', changes: { timeSamples } }),
+        k === 1 ? msg('The shutter sees one moment') : msg(str`${k} moments per sample`),
+      ),
       // The pixel's pattern choice, in time (shutter-times.ts): fixed moments give copies, moments per pixel give grain.
       this.choice<TimePattern>(
-        { name: 'timePattern', label: msg('Time pattern'), tooltip: msg('When in the open shutter each pixel’s rays are sent (with more than 1 time sample).') },
+        {
+          name: 'timePattern',
+          label: msg('Time pattern'),
+          tooltip: msg('When in the open shutter each pixel’s rays are sent (with more than 1 time sample).'),
+        },
         [
           { value: 'grid', label: msg('Grid'), tooltip: msg('The same evenly spaced moments for every pixel: a moving object shows as separate copies.') },
-          { value: 'jittered', label: msg('Jittered'), tooltip: msg('One random moment in each equal part of the open shutter, new for every pixel: a grainy streak instead of copies.') },
-          { value: 'random', label: msg('Random'), tooltip: msg('Moments anywhere in the open shutter, new for every pixel: they can clump, so the streak is grainier.') },
+          {
+            value: 'jittered',
+            label: msg('Jittered'),
+            tooltip: msg('One random moment in each equal part of the open shutter, new for every pixel: a grainy streak instead of copies.'),
+          },
+          {
+            value: 'random',
+            label: msg('Random'),
+            tooltip: msg('Moments anywhere in the open shutter, new for every pixel: they can clump, so the streak is grainier.'),
+          },
         ],
         settings.timePattern,
         (timePattern) => ({ type: 'settings.changed', changes: { timePattern } }),

@@ -194,7 +194,9 @@ export abstract class StorePanel<Panel extends LabPanel = LabPanel> extends LitE
   /** A section that says what to select, for when the panel's kind of item is not selected. */
   protected emptyState(heading: string, name: string, text: string, hint: string): TemplateResult {
     // The ring for any of the panel's controls goes here while they wait for a selection.
-    const guides = LAB_CONTROLS[this.controlPanel].filter((id) => !this.shownControls || this.shownControls.includes(id)).map((id) => `${this.controlPanel}.${id}`);
+    const guides = LAB_CONTROLS[this.controlPanel]
+      .filter((id) => !this.shownControls || this.shownControls.includes(id))
+      .map((id) => `${this.controlPanel}.${id}`);
     return html`<rt-panel-section heading=${heading} name=${name}>
       <div class="empty" data-guide=${guides.join(' ')}>
         <p>${text}</p>

@@ -238,7 +238,8 @@ export class BandPainter {
       before.window.height * scaleY,
     );
     const own = this.previewCanvas;
-    if (this.preview && own?.width === this.preview.width && own.height === this.preview.height) this.drawPreviewRows(context, this.preview, image, view, 0, this.preview.height);
+    if (this.preview && own?.width === this.preview.width && own.height === this.preview.height)
+      this.drawPreviewRows(context, this.preview, image, view, 0, this.preview.height);
     this.paintAgain();
   }
 
@@ -288,7 +289,15 @@ export class BandPainter {
     const { x: offsetX, y: offsetY } = view.window;
     if (view.full.width !== image.width || view.full.height !== image.height) {
       const shrunk = shrinkPiece(image, this.rendered, view.full, this.quantization, part);
-      context.putImageData(this.stretched(shrunk.pixels), shrunk.x - offsetX, shrunk.y - offsetY, shrunk.part.x, shrunk.part.y, shrunk.part.width, shrunk.part.height);
+      context.putImageData(
+        this.stretched(shrunk.pixels),
+        shrunk.x - offsetX,
+        shrunk.y - offsetY,
+        shrunk.part.x,
+        shrunk.part.y,
+        shrunk.part.width,
+        shrunk.part.height,
+      );
       return;
     }
     const { x, y, width, height } = part;

@@ -276,7 +276,15 @@ export class RtRenderWindow extends LitElement {
           ${msg('Save as PNG')}
         </button>
       </div>
-      ${this.check.heavy ? this.check.note(this.check.heavy, (changes, seconds) => this.useLighter(changes, seconds), (seconds) => void this.startRender(true, seconds)) : nothing}
+      ${
+        this.check.heavy
+          ? this.check.note(
+              this.check.heavy,
+              (changes, seconds) => this.useLighter(changes, seconds),
+              (seconds) => void this.startRender(true, seconds),
+            )
+          : nothing
+      }
       ${this.jobs.shown ? this.stage(this.jobs.shown) : html`<div class="placeholder" data-guide=${guideIds('render.zoom', 'render.compare')}>${msg(str`Press Render to ray trace the scene at ${width} × ${height} pixels.`)}</div>`}
       <footer>
         ${this.outcome()} ${this.saveError ? html`<p role="alert" class="error">${this.saveError}</p>` : nothing} ${this.staleNote()}
@@ -353,7 +361,8 @@ export class RtRenderWindow extends LitElement {
           ${this.jobs.hasPartial ? msg('The image on show is partial: the render stopped before every pixel had all its samples. Save as PNG saves it as shown.') : nothing}
         </p>`;
       case 'failed':
-        if (status.unloadable) return html`<rt-load-problem data-testid="render-status" .text=${msg('The render workers could not be loaded.')} .reason=${status.message}></rt-load-problem>`;
+        if (status.unloadable)
+          return html`<rt-load-problem data-testid="render-status" .text=${msg('The render workers could not be loaded.')} .reason=${status.message}></rt-load-problem>`;
         return html`<p role="alert" class="error" data-testid="render-status">${msg(str`The render failed: ${status.message}`)}</p>
           <button @click=${() => void this.startRender()} title=${msg('Start the render again')}>${msg('Try again')}</button>`;
       default:

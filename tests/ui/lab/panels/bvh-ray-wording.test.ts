@@ -62,7 +62,9 @@ describe('a ray into a model', () => {
   });
 
   it('says so when the scene has no model', () => {
-    expect(rayTestsHeadline(rayTests([{ id: 'ball', boundsHit: true, mesh: null }]))).toBe('No model made of triangles in this scene: this ray tested no triangles.');
+    expect(rayTestsHeadline(rayTests([{ id: 'ball', boundsHit: true, mesh: null }]))).toBe(
+      'No model made of triangles in this scene: this ray tested no triangles.',
+    );
   });
 });
 

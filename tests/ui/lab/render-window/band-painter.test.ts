@@ -61,10 +61,16 @@ beforeEach(() => {
   vi.stubGlobal('ImageData', FakeImageData);
   vi.stubGlobal('requestAnimationFrame', (callback: FrameRequestCallback) => frames.push(callback));
   vi.stubGlobal('cancelAnimationFrame', () => (frames.length = 0));
-  vi.stubGlobal('OffscreenCanvas', class {
-    constructor(readonly width: number, readonly height: number) {}
-    getContext = () => fakeContext([], true);
-  });
+  vi.stubGlobal(
+    'OffscreenCanvas',
+    class {
+      constructor(
+        readonly width: number,
+        readonly height: number,
+      ) {}
+      getContext = () => fakeContext([], true);
+    },
+  );
   // Each look at the clock is 3 ms later: the 8 ms budget allows a few pieces of work per frame.
   vi.spyOn(performance, 'now').mockImplementation(() => (now += 3));
 });
@@ -79,7 +85,11 @@ const whole = (full: { width: number; height: number }): CanvasView => ({ full, 
 
 /** A painter on a canvas now `width` × `height`, showing `view` (default: all of the image at its own size). */
 function painterOn(width: number, height: number, view?: CanvasView) {
-  const canvas: { width: number; height: number; getContext: () => unknown } = { width, height, getContext: () => fakeContext(perFrame.at(-1)!, false, canvas) };
+  const canvas: { width: number; height: number; getContext: () => unknown } = {
+    width,
+    height,
+    getContext: () => fakeContext(perFrame.at(-1)!, false, canvas),
+  };
   const painter = new BandPainter(
     () => canvas as unknown as HTMLCanvasElement,
     // A new object each time, as the viewer's tracedView is.
@@ -119,11 +129,24 @@ describe('the render window painter', () => {
   it('puts each tile of the image exactly as its rectangle, quantized from the dither pattern’s corner before it', () => {
     const { painter } = painterOn(64, 48);
     const full = image(64, 48);
-    painter.paintChanges(full, { preview: null, tiles: [{ x: 5, y: 6, width: 7, height: 3 }, { x: 0, y: 0, width: 4, height: 4 }] }, DITHERED);
+    painter.paintChanges(
+      full,
+      {
+        preview: null,
+        tiles: [
+          { x: 5, y: 6, width: 7, height: 3 },
+          { x: 0, y: 0, width: 4, height: 4 },
+        ],
+      },
+      DITHERED,
+    );
     runFrames();
     const puts = perFrame.flat().filter((call) => call.kind === 'put');
     // [quantized width, height, x, y, then the part put: x, y, width, height within it]
-    expect(puts.map((call) => call.args)).toEqual([[8, 5, 4, 4, 1, 2, 7, 3], [4, 4, 0, 0, 0, 0, 4, 4]]);
+    expect(puts.map((call) => call.args)).toEqual([
+      [8, 5, 4, 4, 1, 2, 7, 3],
+      [4, 4, 0, 0, 0, 0, 4, 4],
+    ]);
   });
 
   it('clears the canvas for a new render; the coarser preview’s rows not yet drawn are drawn from the finer one that follows', () => {
@@ -142,20 +165,29 @@ describe('the render window painter', () => {
 
   it('warms up by putting one pixel into a preview canvas of its own, which a real preview replaces at its size', () => {
     const made: { width: number; height: number; puts: number[][] }[] = [];
-    vi.stubGlobal('OffscreenCanvas', class {
-      readonly puts: number[][] = [];
-      constructor(readonly width: number, readonly height: number) {
-        made.push(this);
-      }
-      getContext = () => ({ putImageData: (data: FakeImageData, ...at: number[]) => void this.puts.push([data.width, data.height, ...at]) });
-    });
+    vi.stubGlobal(
+      'OffscreenCanvas',
+      class {
+        readonly puts: number[][] = [];
+        constructor(
+          readonly width: number,
+          readonly height: number,
+        ) {
+          made.push(this);
+        }
+        getContext = () => ({ putImageData: (data: FakeImageData, ...at: number[]) => void this.puts.push([data.width, data.height, ...at]) });
+      },
+    );
     const { painter } = painterOn(64, 64);
     painter.warmUp();
     expect(made).toMatchObject([{ width: 1, height: 1, puts: [[1, 1, 0, 0]] }]);
     expect(frames).toHaveLength(0); // nothing for the visible canvas
     painter.paintChanges(image(64, 64), { preview: { image: { ...image(8, 8), block: 8 }, rows: [0, 8] }, tiles: [] }, PLAIN);
     runFrames();
-    expect(made.map(({ width, height }) => [width, height])).toEqual([[1, 1], [8, 8]]);
+    expect(made.map(({ width, height }) => [width, height])).toEqual([
+      [1, 1],
+      [8, 8],
+    ]);
     expect(perFrame.flat().map((call) => [call.kind, ...call.args])).toEqual([['clear'], ['draw', 0, 0, 8, 8, 0, 0, 64, 64]]);
   });
 
@@ -228,7 +260,17 @@ describe('the render window painter', () => {
     // A 64 × 64 image at its own scale, of which columns 16–47 and rows 8–23 are on screen.
     const view: CanvasView = { full: { width: 64, height: 64 }, window: { x: 16, y: 8, width: 32, height: 16 } };
     const { painter, canvas } = painterOn(64, 64, view);
-    painter.paintChanges(image(64, 64), { preview: null, tiles: [{ x: 0, y: 0, width: 32, height: 32 }, { x: 0, y: 32, width: 32, height: 32 }] }, PLAIN);
+    painter.paintChanges(
+      image(64, 64),
+      {
+        preview: null,
+        tiles: [
+          { x: 0, y: 0, width: 32, height: 32 },
+          { x: 0, y: 32, width: 32, height: 32 },
+        ],
+      },
+      PLAIN,
+    );
     runFrames();
     expect([canvas.width, canvas.height]).toEqual([32, 16]);
     // The first tile's part on screen, columns 16–31 and rows 8–23, at the canvas's (0, 0); the second tile is off screen.
@@ -256,7 +298,12 @@ describe('the render window painter', () => {
     grey.rgb.fill(15 / 255);
     painter.paint(grey, PLAIN);
     runFrames();
-    expect(perFrame.flat().filter((call) => call.kind === 'put').map((call) => call.data![0])).toEqual([15]);
+    expect(
+      perFrame
+        .flat()
+        .filter((call) => call.kind === 'put')
+        .map((call) => call.data![0]),
+    ).toEqual([15]);
     perFrame = [];
     painter.setStretch({ low: 10, high: 20 });
     runFrames();

@@ -4,13 +4,13 @@ import { toRgba8 } from '../../../../src/tracer/quantize.ts';
 
 const rgba = (...pixels: number[][]) => Uint8ClampedArray.from(pixels.flatMap(([r, g, b, a = 255]) => [r!, g!, b!, a]));
 
-describe('stretching an image\'s contrast', () => {
+describe("stretching an image's contrast", () => {
   it('finds the darkest and brightest level over the colour channels, not alpha', () => {
     expect(levelRange(rgba([30, 40, 50, 0], [31, 56, 33, 255]))).toEqual({ low: 30, high: 56 });
     expect(levelRange(new Uint8ClampedArray(0))).toEqual({ low: 0, high: 255 });
   });
 
-  it('maps the image\'s own levels onto 0..255: lowest to black, highest to white, alpha kept', () => {
+  it("maps the image's own levels onto 0..255: lowest to black, highest to white, alpha kept", () => {
     const out = stretchContrast(rgba([31, 31, 31, 200], [56, 56, 56], [43, 44, 45]));
     expect(Array.from(out.slice(0, 4))).toEqual([0, 0, 0, 200]);
     expect(Array.from(out.slice(4, 8))).toEqual([255, 255, 255, 255]);

@@ -1,5 +1,13 @@
 import { describe, expect, it } from 'vitest';
-import { canvasSizeFor, canvasView, enlargesFit, fitLayout, SIDE_BY_SIDE_GAP, zoomInStep, zoomOutStep } from '../../../../src/ui/lab/render-window/image-zoom.ts';
+import {
+  canvasSizeFor,
+  canvasView,
+  enlargesFit,
+  fitLayout,
+  SIDE_BY_SIDE_GAP,
+  zoomInStep,
+  zoomOutStep,
+} from '../../../../src/ui/lab/render-window/image-zoom.ts';
 
 const image = { width: 512, height: 384 };
 

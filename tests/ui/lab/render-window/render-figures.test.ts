@@ -1,5 +1,14 @@
 import { describe, expect, it } from 'vitest';
-import { countRays, formatCount, formatDuration, formatPercent, formatTimeLeft, formatWait, progressText, raysPerSecond } from '../../../../src/ui/lab/render-window/render-figures.ts';
+import {
+  countRays,
+  formatCount,
+  formatDuration,
+  formatPercent,
+  formatTimeLeft,
+  formatWait,
+  progressText,
+  raysPerSecond,
+} from '../../../../src/ui/lab/render-window/render-figures.ts';
 import { formatShare } from '../../../../src/ui/lab/rt-ray-tooltip.ts';
 import { inDutch } from '../../../support/page-locale.ts';
 

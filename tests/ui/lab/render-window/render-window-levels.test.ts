@@ -86,7 +86,11 @@ describe('the render window after a render task', () => {
 
   it('closes in no level for a task that moves nothing in the 3D view', () => {
     const ids = catalog.chapters.flatMap((chapter) => chapter.entries.map((entry) => entry.id));
-    const wrongly = ids.flatMap((id) => closesAt(id).filter((close) => !close.needs3d).map((close) => `${id}/${close.task}`));
+    const wrongly = ids.flatMap((id) =>
+      closesAt(id)
+        .filter((close) => !close.needs3d)
+        .map((close) => `${id}/${close.task}`),
+    );
     expect(wrongly).toEqual([]);
   });
 });

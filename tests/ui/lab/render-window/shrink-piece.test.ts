@@ -59,7 +59,11 @@ describe('a piece of an image shown on a smaller canvas', () => {
     expect(middle.x + middle.part.x).toBe(9);
     expect(middle.part.width).toBe(12); // pixels 9 to 20
     expect(middle.x % 4).toBe(0); // starts at a multiple of the dither period
-    expect(touched(middle).flat().every((level) => level === 128)).toBe(true);
+    expect(
+      touched(middle)
+        .flat()
+        .every((level) => level === 128),
+    ).toBe(true);
     // An end exactly on a canvas pixel's edge (10 × 0.3 = 3) does not touch the next pixel.
     const first = shrinkPiece(grey, null, { width: 30, height: 3 }, PLAIN, { x: 0, y: 0, width: 10, height: 10 });
     expect(first.part).toMatchObject({ x: 0, width: 3 });
