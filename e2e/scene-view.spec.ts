@@ -1,6 +1,6 @@
 import { expect, type Locator, type Page, test } from '@playwright/test';
 import { PNG } from 'pngjs';
-import { Quaternion, Vector3 } from 'three';
+import { type Mesh, type MeshBasicMaterial, Quaternion, Vector3 } from 'three';
 import type { LabState } from '../src/lab-state/lab-state.ts';
 import type { Vec3 } from '../src/scene/scene.ts';
 import { CameraRays } from '../src/tracer/camera-rays.ts';
@@ -133,6 +133,12 @@ test('draws the scene: objects with their colours, the lights, the camera and it
   expect(red).toBeGreaterThan(200);
   const label = await canvas(page).getAttribute('aria-label');
   expect(label).toContain('5 objects, 2 lights');
+  // The gizmos keep their colours as written, the view's first ones too: three.js's colour
+  // management is off before any is made (the lens's disc and edge are #7fd4ff, not linearized).
+  const lensColours = await sceneView(page).evaluate((element: RtSceneView) =>
+    element.labView!.scene.getObjectByName('lens')!.children.map((part) => ((part as Mesh).material as MeshBasicMaterial).color.getHexString()),
+  );
+  expect(lensColours).toEqual(['7fd4ff', '7fd4ff']);
   await expect(canvas(page)).toHaveAttribute('tabindex', '0');
   await page.screenshot({ path: 'test-results/screens/scene-view.png' });
 });

@@ -92,7 +92,7 @@ export class LabView {
   private readonly rasterLights: RasterLights;
   private readonly lightGizmos: LightGizmos;
   private readonly cameraScreen: CameraScreen;
-  private readonly distribution = new DistributionGizmos();
+  private readonly distribution: DistributionGizmos;
   private readonly grid: GridHelper;
   private readonly listeners: { [K in keyof LabViewEvents]: Set<Listener<LabViewEvents[K]>> } = {
     rayHover: new Set(),
@@ -118,8 +118,10 @@ export class LabView {
     readonly store: Store,
     meshLoader: MeshLoader = loadMeshes,
   ) {
-    // Before any colour is made: with management on, hex colours would be linearized.
+    // Before any colour is made (so no part is a field initializer, which runs before this):
+    // with management on, hex colours would be linearized.
     ColorManagement.enabled = false;
+    this.distribution = new DistributionGizmos();
     this.rasterLights = new RasterLights();
     this.lightGizmos = new LightGizmos();
     this.cameraScreen = new CameraScreen();
