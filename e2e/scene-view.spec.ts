@@ -281,18 +281,20 @@ test('the help panel opens with ? and lists every key, and Escape closes it', as
 test('idle costs nothing: no frames when nothing changes or a fact is reported, and a slider drag makes no new geometry', async ({ page }) => {
   // Idle from when the camera's rays are drawn (the 3D view loads, then its rays arrive, and
   // on SwiftShader their first frame compiles shaders for a second or two): from then on a
-  // whole second passes without a frame. A render loop would never get there.
+  // whole second passes without a frame, and none is coming (a frame asked for meanwhile
+  // waits for the shaders, and would land in the next check). A render loop would never get there.
   await expect(sceneView(page)).toHaveAttribute('data-ray-instances', /^[1-9]\d*$/, { timeout: 30_000 });
+  const coming = () => sceneView(page).evaluate((element: RtSceneView) => !element.labView!.probes.idle);
   await expect
     .poll(
       async () => {
         const idle = await frames(page);
         await page.waitForTimeout(1000);
-        return (await frames(page)) - idle;
+        return { drawn: (await frames(page)) - idle, coming: await coming() };
       },
       { timeout: 20_000 },
     )
-    .toBe(0);
+    .toEqual({ drawn: 0, coming: false });
   // Facts the store hears (a render started and finished) change nothing drawn: no frame.
   const idle = await frames(page);
   await sceneView(page).evaluate((element: RtSceneView) => {

@@ -189,6 +189,7 @@ export class LabView {
       camera: this.camera,
       rayLayer: () => this.drawing.rayLayer,
       allRaysDrawn: () => this.drawing.allRaysDrawn,
+      idle: () => this.drawing.scheduler.idle,
       traceOf: (pixel) => this.traceOf(pixel),
       framedPointsOf: (name) => this.framedPointsOf(name),
       projectToView: (point) => this.projectToView(point),

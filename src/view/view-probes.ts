@@ -18,6 +18,8 @@ export interface ProbedView {
   rayLayer(): RayLayer | null;
   /** Whether the last frame showed every instance of the ray layer (piecewise-rays.ts). */
   allRaysDrawn(): boolean;
+  /** Whether no frame is coming until something changes (frame-scheduler.ts). */
+  idle(): boolean;
   /** Pixel `pixel`'s latest trace, chosen or not (null before it is traced). */
   traceOf(pixel: readonly [number, number]): PixelTrace | null;
   /** The world points a declared view fits for `name` (view-look.ts). */
@@ -60,6 +62,15 @@ export class ViewProbes {
   /** Whether the last frame showed every instance of the ray layer (on a CPU rasterizer a heavy layer takes a piece a frame: piecewise-rays.ts). */
   get raysComplete(): boolean {
     return this.view.allRaysDrawn();
+  }
+
+  /**
+   * Whether the view draws no frame until something changes: none scheduled or held. A test
+   * of what costs a frame waits for this, as a frame asked for may wait seconds on SwiftShader
+   * (FrameScheduler.idle).
+   */
+  get idle(): boolean {
+    return this.view.idle();
   }
 
   /** Where the things a declared view frames appear on the canvas (CSS px): the points `frame` fits for `name` (view-look.ts), each projected (null behind the eye). */

@@ -33,6 +33,7 @@ function drawnTwice() {
     camera: new PerspectiveCamera(),
     rayLayer: () => layer,
     allRaysDrawn: () => false,
+    idle: () => true,
     traceOf: () => null,
     framedPointsOf: () => [
       [0, 0, 0],
