@@ -79,6 +79,9 @@ describe.each(LOCALES)('every item, in %s', (locale) => {
     // "All of the above" is right or wrong by the other choices, not by the idea asked.
     for (const choice of choices)
       expect(choice.toLowerCase()).not.toMatch(/all of the above|none of the above|alle bovenstaande|geen van (de|alle) bovenstaande/);
+    // Numbers the way each language writes them (docs/i18n.md): 1.33 in English, 1,33 in Dutch.
+    const wrongDecimal = locale === 'nl' ? /\d\.\d/ : /\d,\d/;
+    for (const text of [question, ...choices]) expect(text, 'a decimal separator of the other language').not.toMatch(wrongDecimal);
     // The question does not hold the key's phrase (a short key, "half", may be there for other reasons).
     if (choices[key].length >= 16) expect(question.toLowerCase()).not.toContain(choices[key].toLowerCase());
   });
