@@ -4,10 +4,12 @@ import { loadBrowserCatalog, loadLevelTexts } from '../../app/level-catalog-brow
 import { isSceneFragment } from '../../app/scene-link.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import { decodeAssignment, isAssignmentFragment } from '../../classroom/assignment-link.ts';
+import { previewedLevelId } from '../../classroom/level-preview.ts';
 import { startLocale } from '../../i18n/locale.ts';
 import { LazyModule } from '../../util/lazy-module.ts';
 import '../controls/rt-load-problem.ts';
 import '../lab/rt-lab.ts';
+import { levelPreviewPage } from './level-preview-page.ts';
 import { linkProblemText } from './link-problem-text.ts';
 import './rt-link-notice.ts';
 import './rt-scene-link-lab.ts';
@@ -32,7 +34,8 @@ type Opened = { hash: string; assignment: Assignment | null; problem: string };
 /**
  * @summary The app's top level: picks the page from the address's #fragment. The lab (with
  * the game) is the default; `#/teacher` is the teacher page; `#/dashboard` the class dashboard;
- * `#/s/<scene>` a shared scene in the lab; `#/survey/<id>` previews a survey; `#/a/<link>` opens a teacher's
+ * `#/s/<scene>` a shared scene in the lab; `#/survey/<id>` previews a survey; `#/preview/<level>` a level;
+ * `#/a/<link>` opens a teacher's
  * assignment in the lab, or, when the link is damaged, free play with a message.
  */
 export class RtApp extends LitElement {
@@ -97,6 +100,9 @@ export class RtApp extends LitElement {
     if (isSceneFragment(this.route)) return html`<rt-scene-link-lab .hash=${this.route}></rt-scene-link-lab>`;
     // A teacher's preview of a survey (linked from the teacher page): nothing is saved.
     if (this.route.startsWith(SURVEY_PREVIEW)) return html`<rt-survey survey-id=${this.route.slice(SURVEY_PREVIEW.length)}></rt-survey>`;
+    // A teacher's preview of one level (linked from the teacher page): nothing is saved.
+    const previewed = previewedLevelId(this.route);
+    if (previewed !== null) return levelPreviewPage(previewed);
     if (isAssignmentFragment(this.route)) {
       if (this.opened?.hash !== this.route) return nothing;
       const { assignment, problem } = this.opened;
