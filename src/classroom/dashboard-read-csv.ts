@@ -52,7 +52,7 @@ export function readCsvExport(file: string, text: string): FileRead {
       file,
       // `5h2-03` and `5H2-03` are one learner (participant-code.ts).
       participant: normalParticipantCode(owner.participant),
-      learnerId: learnerKey(owner.learnerId || owner.participant) || `file:${file}`,
+      learnerId: learnerKey(owner.learnerId || owner.participant, owner.participant) || `file:${file}`,
       attemptId: owner.attemptId || `file:${file}`,
       installId: owner.installId,
       assignment: owner.assignment,

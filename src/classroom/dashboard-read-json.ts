@@ -58,7 +58,7 @@ export function readJsonExport(file: string, text: string): FileRead {
     record: {
       file,
       participant,
-      learnerId: learnerKey(learner('id') || participant) || `file:${file}`,
+      learnerId: learnerKey(learner('id') || participant, participant) || `file:${file}`,
       // An older export's log is still one playthrough: its start time tells it apart.
       attemptId: learner('attemptId') || `log:${assignment.assignmentId}:${participant}:${log.data.startedAt}`,
       installId: learner('installId'),

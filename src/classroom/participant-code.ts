@@ -11,11 +11,13 @@ export function normalParticipantCode(code: string): string {
 }
 
 /**
- * A learner id of an export as the dashboard compares it: a participant code in its normal
- * form; the stand-ins for a learner without a code (`install:<uuid>`, `file:<name>`) as they are.
+ * A learner id of an export as the dashboard compares it: the participant code (the id an
+ * export gives a learner with a code, learner-identity.ts learnerId) in its normal form; any
+ * other id (`install:<uuid>` for a learner without a code, `file:<name>`) as it is.
  */
-export function learnerKey(id: string): string {
-  return /^(install|file):/.test(id) ? id : normalParticipantCode(id);
+export function learnerKey(id: string, participant: string): string {
+  const code = normalParticipantCode(participant);
+  return code !== '' && normalParticipantCode(id) === code ? code : id;
 }
 
 /** The most code slips a handout makes: a large lecture, not an accident of typing. */

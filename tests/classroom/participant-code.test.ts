@@ -11,11 +11,13 @@ describe('participant codes as one learner', () => {
     expect(normalParticipantCode('e\u0301')).toBe(normalParticipantCode('\u00e9'));
   });
 
-  it('keeps the stand-in ids of learners without a code as they are', () => {
+  it('compares a learner id that is the participant code in the normal form, and keeps other ids as they are', () => {
+    expect(learnerKey('p-07', 'p-07')).toBe('P-07');
+    expect(learnerKey('p-07', 'P-07 ')).toBe('P-07');
     const install = 'install:0f8fad5b-d9cb-469f-a165-70867728950e';
-    expect(learnerKey(install)).toBe(install);
-    expect(learnerKey('file:a.csv')).toBe('file:a.csv');
-    expect(learnerKey('p-07')).toBe('P-07');
+    expect(learnerKey(install, '')).toBe(install);
+    expect(learnerKey('file:a.csv', '')).toBe('file:a.csv');
+    expect(learnerKey('learner-1', 'P-4')).toBe('learner-1');
   });
 
   it('numbers a class list of codes from 01, each a valid code', () => {
