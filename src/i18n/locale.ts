@@ -75,5 +75,7 @@ export function chooseLocale(locale: Locale): Promise<Locale> {
  * before the first render, so no English flashes up first.
  */
 export function startLocale(assignment: Locale | null = null): Promise<Locale> {
-  return useLocale(pickLocale({ assignment, search: location.search, remembered: readRememberedLocale(storage), browser: navigator.languages }));
+  return useLocale(
+    pickLocale({ assignment, search: location.search, remembered: readRememberedLocale(storage), browser: globalThis.navigator?.languages ?? [] }),
+  );
 }
