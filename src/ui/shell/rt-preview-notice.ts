@@ -53,7 +53,7 @@ export class RtPreviewNotice extends LitElement {
   override render() {
     if (this.dismissed) return nothing;
     return html`<div role="status">
-      <span><strong>${msg('Preview')}</strong> · ${msg('Nothing is saved: the progress and times of this preview are forgotten when the tab closes.')}</span>
+      <span><strong>${msg('Preview of one level')}</strong> · ${msg('Nothing is saved: the progress and times of this preview are forgotten when the tab closes.')}</span>
       <button type="button" aria-label=${msg('Dismiss message')} title=${msg('Dismiss message')} @click=${() => (this.dismissed = true)}>✕</button>
     </div>`;
   }
