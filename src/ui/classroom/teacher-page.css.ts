@@ -119,6 +119,9 @@ export const teacherPageStyles = [
         border-radius: 6px;
       }
       @media print {
+        :host {
+          background: none;
+        }
         header,
         .form,
         .result > section:not([aria-labelledby='handout-heading']),
