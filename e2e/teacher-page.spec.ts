@@ -2,7 +2,7 @@ import { expect, test } from '@playwright/test';
 
 // The teacher page remembers: an assignment made is kept in the browser and back after a
 // reload, copied for another class with the same levels; any level opens as a preview that
-// saves nothing.
+// saves nothing; the form's own address reopens it elsewhere.
 
 test('the teacher page keeps its assignments, copies one for another class and previews a level', async ({ page }) => {
   await page.goto('./#/teacher');
@@ -28,6 +28,9 @@ test('the teacher page keeps its assignments, copies one for another class and p
   await expect(teacher.locator('li[data-level]')).toHaveCount(2);
   await expect(shelf.getByRole('listitem').first()).toContainText('Lesson 1 for 5H3 · 5H3');
 
+  const formLink = (await teacher.getByRole('link', { name: /This form, to bookmark/ }).getAttribute('href')) ?? '';
+  expect(formLink).toMatch(/^#\/teacher\/a\/1\./);
+
   // Level 4 is locked in free play; its preview opens it at once and writes no progress.
   const preview = teacher.locator('li[data-level="04-shadows"]').getByRole('link', { name: 'Preview' });
   await expect(preview).toHaveAttribute('href', '#/preview/04-shadows');
@@ -38,4 +41,11 @@ test('the teacher page keeps its assignments, copies one for another class and p
   await page.waitForTimeout(500);
   const after = await page.evaluate(() => Object.keys(localStorage).filter((key) => key.startsWith('rtq.progress')));
   expect(after).toEqual(before.filter((key) => key.startsWith('rtq.progress')));
+
+  // The form's own address fills it in a browser that kept nothing.
+  await page.evaluate(() => localStorage.clear());
+  await page.goto(`./${formLink}`);
+  await expect(teacher.getByRole('textbox', { name: /Title \(the students see it\)/ })).toHaveValue('Lesson 1 for 5H3');
+  await expect(teacher.locator('li[data-level]')).toHaveCount(2);
+  await expect(shelf.getByRole('status')).toHaveText(/^Kept in this browser/);
 });

@@ -4,6 +4,7 @@ import { compactAssignment } from '../../src/classroom/assignment-compact.ts';
 import { expandAssignment } from '../../src/classroom/assignment-expand.ts';
 import { mandatoryTasks } from '../../src/classroom/assignment-preset.ts';
 import { playableLevels } from '../../src/quest/level-index.ts';
+import { assignmentHashOfTeacherLink, teacherLinkHash } from '../../src/classroom/teacher-link.ts';
 import { catalogOf, levelWithId } from '../support/quest-fixtures.ts';
 
 const levels = playableLevels(catalogOf([{ id: 'test', levels: [levelWithId('first'), levelWithId('second')] }]));
@@ -26,5 +27,14 @@ describe('an assignment link opened on the teacher page', () => {
     expect(link.requiredTasks).toEqual({ second: [] });
     expect(expandAssignment(link, levels)).toEqual(made);
     expect(mandatoryTasks(second).length).toBeGreaterThan(0);
+  });
+});
+
+describe("the teacher page's address for an assignment", () => {
+  it('carries the students’ link and gives it back', () => {
+    const students = '#/a/1.eJwrSS0uUTAEAAiOAhI';
+    expect(teacherLinkHash(students)).toBe('#/teacher/a/1.eJwrSS0uUTAEAAiOAhI');
+    expect(assignmentHashOfTeacherLink(teacherLinkHash(students))).toBe(students);
+    expect(assignmentHashOfTeacherLink('#/teacher')).toBeNull();
   });
 });

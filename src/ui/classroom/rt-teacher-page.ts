@@ -10,6 +10,7 @@ import { assignmentUrl, decodeAssignment } from '../../classroom/assignment-link
 import { assignmentId } from '../../classroom/assignment-id.ts';
 import { expandAssignment } from '../../classroom/assignment-expand.ts';
 import { estimatedMinutes } from '../../classroom/level-summary.ts';
+import { assignmentHashOfTeacherLink, teacherLinkHash } from '../../classroom/teacher-link.ts';
 import type { Level } from '../../quest/level-schema.ts';
 import { playableLevels, type LevelPreset } from '../../quest/level-index.ts';
 import { currentLocale } from '../../i18n/locale.ts';
@@ -91,6 +92,15 @@ export class RtTeacherPage extends LitElement {
       askParticipantCode: false,
       survey: null,
     };
+  }
+
+  override connectedCallback(): void {
+    super.connectedCallback();
+    // Opened on an assignment (#/teacher/a/…): its form, and the plain address, so that a reload shows what was edited since.
+    const opened = assignmentHashOfTeacherLink(location.hash);
+    if (opened === null) return;
+    history.replaceState(history.state, '', '#/teacher');
+    void this.openLink(opened);
   }
 
   override willUpdate(changed: Map<string, unknown>): void {
@@ -352,6 +362,7 @@ export class RtTeacherPage extends LitElement {
             </div>
             ${this.qr ? html`<img class="qr" src=${this.qr} alt=${msg('QR code of the assignment link')} />` : nothing}
             <p class="muted">${msg("Show the QR code on the projector; students scan it or type the link. Progress stays in each student's browser.")}</p>
+            <p><a href=${this.url ? teacherLinkHash(this.url.replace(/^[^#]*/, '')) : '#/teacher'}>${msg('This form, to bookmark or open in another browser')}</a></p>
           `
       }
     </section>`;

@@ -5,6 +5,7 @@ import { isSceneFragment } from '../../app/scene-link.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import { decodeAssignment, isAssignmentFragment } from '../../classroom/assignment-link.ts';
 import { previewedLevelId } from '../../classroom/level-preview.ts';
+import { TEACHER_LINK_PREFIX } from '../../classroom/teacher-link.ts';
 import { startLocale } from '../../i18n/locale.ts';
 import { LazyModule } from '../../util/lazy-module.ts';
 import '../controls/rt-load-problem.ts';
@@ -27,6 +28,11 @@ const TEACHER_PAGES: Record<string, { tag: string; code: LazyModule<unknown> }> 
   '#/teacher': { tag: 'rt-teacher-page', code: new LazyModule(() => import('../classroom/rt-teacher-page.ts')) },
   '#/dashboard': { tag: 'rt-dashboard-page', code: new LazyModule(() => import('../classroom/dashboard/rt-dashboard-page.ts')) },
 };
+
+/** The teacher page of the address: `#/teacher/a/…` is the teacher page opened on an assignment (classroom/teacher-link.ts). */
+function teacherPage(route: string) {
+  return TEACHER_PAGES[route.startsWith(TEACHER_LINK_PREFIX) ? '#/teacher' : route];
+}
 
 /** An assignment link as opened: the assignment, or why the learner plays freely instead. */
 type Opened = { hash: string; assignment: Assignment | null; problem: string };
@@ -71,7 +77,7 @@ export class RtApp extends LitElement {
     if (isAssignmentFragment(this.route) && this.opened?.hash !== this.route) void this.open(this.route);
     // Started once per page: a failed load stays failed (its message shows), it is not
     // started again by the render that shows it.
-    const page = TEACHER_PAGES[this.route];
+    const page = teacherPage(this.route);
     if (page?.code.state === 'idle')
       page.code.load().then(
         () => this.requestUpdate(),
@@ -89,10 +95,10 @@ export class RtApp extends LitElement {
   }
 
   override render() {
-    const page = TEACHER_PAGES[this.route];
+    const page = teacherPage(this.route);
     if (page) {
       if (customElements.get(page.tag))
-        return this.route === '#/teacher' ? html`<rt-teacher-page></rt-teacher-page>` : html`<rt-dashboard-page></rt-dashboard-page>`;
+        return page.tag === 'rt-teacher-page' ? html`<rt-teacher-page></rt-teacher-page>` : html`<rt-dashboard-page></rt-dashboard-page>`;
       if (page.code.state === 'failed')
         return html`<rt-load-problem .text=${msg('This page could not be loaded.')} .reason=${page.code.problem}></rt-load-problem>`;
       return html`<p class="loading" role="status">${msg('Loading…')}</p>`;
