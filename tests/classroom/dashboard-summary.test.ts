@@ -25,6 +25,8 @@ const attempt = (task: string, activeMs: number, how: TaskAttempt['how'], extra:
   hintsOffered: 0,
   quizAnswers: 0,
   quizCorrect: null,
+  quizChoice: null,
+  explanationOpens: 0,
   ...extra,
 });
 
@@ -37,6 +39,8 @@ const record = (participant: string, attempts: TaskAttempt[], passed: boolean | 
   assignment: 'Lesson',
   assignmentId: 'abc',
   classCode: '',
+  appVersion: '',
+  utcOffsetMin: '',
   attempts,
   visits: passed === null ? [] : [{ level: '02-b', durationMs: 100_000, activeMs: 90_000, passed }],
   survey,
