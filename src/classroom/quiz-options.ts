@@ -1,5 +1,6 @@
 import type { Level } from '../quest/level-schema.ts';
-import { localize, type Locale } from '../quest/localized-text.ts';
+import type { Locale } from '../quest/localized-text.ts';
+import { plainLevelText } from '../quest/text-markup.ts';
 
 /**
  * The options of a level's choice questions as exports and the dashboard name them. Level
@@ -43,8 +44,8 @@ export function choiceQuestions(levels: readonly Level[], locale: Locale): Choic
           {
             level: level.id,
             task: task.id,
-            question: localize(question, locale),
-            options: choices.map((text) => localize(text, locale)),
+            question: plainLevelText(question, locale),
+            options: choices.map((text) => plainLevelText(text, locale)),
             pictures: false,
             answer,
           },
@@ -52,7 +53,7 @@ export function choiceQuestions(levels: readonly Level[], locale: Locale): Choic
       }
       if (goal.kind === 'picture') {
         const { question, choices, answer } = goal.picture;
-        return [{ level: level.id, task: task.id, question: localize(question, locale), options: choices.map(() => ''), pictures: true, answer }];
+        return [{ level: level.id, task: task.id, question: plainLevelText(question, locale), options: choices.map(() => ''), pictures: true, answer }];
       }
       return [];
     }),
