@@ -258,6 +258,7 @@
 's3820fc141d96fe79': `Bestand laden…`,
 's38eb2c68fdad0ad8': `Link delen`,
 's3967b5fc7d9670a5': `Ronddraaien, schuiven, zoomen`,
+'s39bba60b440fcf00': `verplicht`,
 's39d212a05a1d7a17': str`${0} is geen scènebestand dat deze app kan openen; je scène is niet veranderd.
 ${1}`,
 's3a6ea0fd299bfea5': `Eén stap terug (←)`,

@@ -5,7 +5,7 @@ import { combinedCsv, readClassFiles, surveyCsv, type ClassFiles, type DroppedFi
 import { assignmentsOf, classCodesOf, classLearners, filterLearners, type ClassLearner, type LearnerFilter } from '../../../classroom/dashboard-learners.ts';
 import { MAX_EXPORT_BYTES } from '../../../classroom/dashboard-read-file.ts';
 import type { SkippedFile } from '../../../classroom/dashboard-record.ts';
-import { learnerInLevel, summarizeLevels, type LevelSummary } from '../../../classroom/dashboard-summary.ts';
+import { isOptionalTask, learnerInLevel, summarizeLevels, type LevelSummary } from '../../../classroom/dashboard-summary.ts';
 import { stickingPoints, STUCK_MIN_LEARNERS, STUCK_MIN_SHARE, STUCK_TIMES_TYPICAL } from '../../../classroom/dashboard-stuck.ts';
 import { summarizeSurveys, type SurveysSummary } from '../../../classroom/dashboard-survey.ts';
 import { downloadText } from '../../../util/download-file.ts';
@@ -299,7 +299,7 @@ export class RtDashboardPage extends LitElement {
     const stuck = stickingPoints(level.tasks);
     const rows = level.tasks.map((task) => ({
       ...task,
-      label: task.mandatory ? names.task(level.level, task.task) : msg(str`${names.task(level.level, task.task)} (optional)`),
+      label: isOptionalTask(task) ? msg(str`${names.task(level.level, task.task)} (optional)`) : names.task(level.level, task.task),
     }));
     return html`<section class="level" data-level=${level.level} aria-label=${title}>
       <h2>${title}</h2>
