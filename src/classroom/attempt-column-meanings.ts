@@ -11,8 +11,6 @@ export const ATTEMPT_COLUMN_MEANINGS: Readonly<Record<string, { meaning: string;
   assignment: { meaning: "the assignment's title, or empty in free play", unit: 'text' },
   assignment_id: { meaning: "the assignment's id (a hash of the assignment), or empty", unit: 'text (8 hex digits)' },
   class_code: { meaning: "the assignment's class code, or empty", unit: 'text' },
-  app_version: { meaning: 'the version of Ray Tracer Quest that wrote the file', unit: 'text (major.minor.patch)' },
-  utc_offset_min: { meaning: "how far the device's clock was ahead of UTC at the download: local time = UTC time + this", unit: 'minutes' },
   level: { meaning: "the level's id", unit: 'text' },
   task: { meaning: "the task's id within the level", unit: 'text' },
   kind: { meaning: 'do (something in the lab), quiz (a prediction) or info (read, then Next)', unit: 'category' },
@@ -34,5 +32,7 @@ export const ATTEMPT_COLUMN_MEANINGS: Readonly<Record<string, { meaning: string;
   quiz_choice_text: { meaning: "the chosen option's text in the file's language; empty for a picture quiz", unit: 'text' },
   explanation_opens: { meaning: '"Explain more" opened for the task', unit: 'count' },
   points: { meaning: 'points earned (a wrong quiz answer earns none)', unit: 'points' },
+  app_version: { meaning: 'the version of Ray Tracer Quest that wrote the file', unit: 'text (major.minor.patch)' },
+  utc_offset_min: { meaning: "how far the device's clock was ahead of UTC at the download: local time = UTC time + this", unit: 'minutes' },
   survey: { meaning: 'the id of the survey the learner handed in, or empty', unit: 'text' },
 };

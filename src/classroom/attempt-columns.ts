@@ -94,14 +94,6 @@ export const ATTEMPT_COLUMNS: readonly AttemptColumn[] = [
   ownerColumn('assignment', 'assignment', false),
   ownerColumn('assignment_id', 'assignmentId', true),
   ownerColumn('class_code', 'classCode', true),
-  ownerColumn('app_version', 'appVersion', false),
-  {
-    // A number, not text: a text cell starting with "-" would get the apostrophe that keeps formulas out (csv-text.ts).
-    name: 'utc_offset_min',
-    ...plain,
-    value: ({ owner }) => (owner.utcOffsetMin === '' ? '' : Number(owner.utcOffsetMin)),
-    read: (cell, into) => void (into.owner.utcOffsetMin = cell.trim()),
-  },
   { name: 'level', quoted: false, required: true, value: ({ attempt }) => attempt.level, read: (cell, into) => void (into.attempt.level = cell) },
   { name: 'task', quoted: false, required: true, value: ({ attempt }) => attempt.task, read: (cell, into) => void (into.attempt.task = cell) },
   {
@@ -161,6 +153,14 @@ export const ATTEMPT_COLUMNS: readonly AttemptColumn[] = [
   },
   countColumn('explanation_opens', 'explanationOpens'),
   countColumn('points', 'points'),
+  ownerColumn('app_version', 'appVersion', false),
+  {
+    // A number, not text: a text cell starting with "-" would get the apostrophe that keeps formulas out (csv-text.ts).
+    name: 'utc_offset_min',
+    ...plain,
+    value: ({ owner }) => (owner.utcOffsetMin === '' ? '' : Number(owner.utcOffsetMin)),
+    read: (cell, into) => void (into.owner.utcOffsetMin = cell.trim()),
+  },
   { name: 'survey', ...plain, value: ({ owner }) => owner.survey?.id ?? '', read: (cell, into) => void (into.owner.surveyId = cell) },
 ];
 
