@@ -14,6 +14,7 @@ import { currentLocale } from '../../i18n/locale.ts';
 import { plainLevelText } from '../../quest/text-markup.ts';
 import { localize } from '../../quest/localized-text.ts';
 import { teacherPageStyles } from './teacher-page.css.ts';
+import './rt-scorm-download.ts';
 import '../controls/rt-theme-toggle.ts';
 
 /**
@@ -295,6 +296,7 @@ export class RtTeacherPage extends LitElement {
                 </div>
                 ${this.qr ? html`<img class="qr" src=${this.qr} alt=${msg('QR code of the assignment link')} />` : nothing}
                 <p class="muted">${msg("Show the QR code on the projector; students scan it or type the link. Progress stays in each student's browser.")}</p>
+                <rt-scorm-download .link=${this.stale ? null : this.url} .assignmentTitle=${this.assignment.title.trim()}></rt-scorm-download>
               `
           }
         </section>
