@@ -75,7 +75,8 @@ export class RtScormDownload extends LitElement {
       saveBytes(bytes, packageFileName(this.assignmentTitle, version));
       this.status = msg('The package is downloaded: upload it to your learning platform as a SCORM activity.');
     } catch (error) {
-      this.status = msg(str`The package could not be made: ${error instanceof Error ? error.message : String(error)}`);
+      const reason = error instanceof Error ? error.message : String(error);
+      this.status = msg(str`The package could not be made: ${reason}`);
     } finally {
       this.busy = false;
     }
