@@ -8,8 +8,6 @@ import './util/zod-jitless.ts';
 const { startLocale } = await import('./i18n/locale.ts');
 const [{ loadLevelTexts }, locale] = await Promise.all([import('./app/level-catalog-browser.ts'), startLocale()]);
 await loadLevelTexts(locale);
-// Inside a school's learning platform (a SCORM package), the game reports to it: docs/classroom.md.
-await (await import('./app/lms-launch.ts')).joinLearningPlatform(window);
 await import('./ui/shell/rt-app.ts');
 // Dutch asked for and not loadable: the page is in English and says so (the module came with rt-app).
 (await import('./ui/controls/locale-problem.ts')).showLocaleProblem(document);

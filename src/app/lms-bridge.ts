@@ -1,74 +1,46 @@
-import { decodeAssignment, isAssignmentFragment } from '../classroom/assignment-link.ts';
-import { assignmentProgressKey } from '../classroom/assignment-id.ts';
-import type { Assignment } from '../classroom/assignment.ts';
 import { elementsOf, exitValues, interactionValues, statusValues, type CmiValue } from '../classroom/scorm/cmi-values.ts';
 import type { LmsConnection } from '../classroom/scorm/lms-api.ts';
 import { lmsReport, type LmsInteraction, type ReportScope } from '../classroom/scorm/lms-report.ts';
 import { resumeProgress, SUSPEND_DATA_LIMIT, suspendProgress, type SuspendedPart } from '../classroom/scorm/suspend-data.ts';
-import { surveyKey } from '../classroom/survey-store.ts';
-import { systemClock } from '../quest/event-log.ts';
 import { playableLevels } from '../quest/level-index.ts';
-import { PROGRESS_KEY, ProgressStore } from '../quest/progress-store.ts';
+import type { Progress } from '../quest/progress.ts';
 import type { QuestSession } from './quest-session.ts';
-import { sessionContextKey } from './session-context.ts';
-import { onQuestSession } from './session-hooks.ts';
 
 /**
  * The game inside a school's learning platform (SCORM 1.2 or 2004, docs/classroom.md):
  *
- * - At launch, before the game starts: the platform's session is opened; when the platform
- *   says this launch resumes an earlier one (cmi.entry `resume`), the progress it kept in
- *   its suspend data joins this browser's saved progress of the assignment (merged as two
- *   tabs' are). The platform is the record of who plays: when this browser's progress of the
- *   assignment was another learner's (a shared school computer), it is replaced, not merged.
+ * - When the game's first session starts: the platform's session is opened; when the
+ *   platform says this launch resumes an earlier one (cmi.entry `resume`), the progress it
+ *   kept in its suspend data joins the browser's (merged as two tabs' are), and the game
+ *   starts again from it (the finished screen, the level to resume). The platform is the
+ *   record of who plays: when the browser's progress of the assignment was someone else's
+ *   (a shared school computer), it is replaced, not merged.
  * - While the learner plays: after every change of the report (lms-report.ts: completion,
  *   score, one interaction per task and quiz) the changed values are set and committed,
- *   together with the session time, the exit mode and the suspend data.
+ *   together with the session time, the exit (always `suspend`: cmi-values.ts) and the
+ *   suspend data.
  * - When the page goes (pagehide): a last commit, then the platform's session ends.
  */
 
 /** Which learner of the platform this browser's progress of an assignment belongs to. */
 const learnerKey = (progressKey: string) => `rtq.lms-learner.${progressKey}`;
 
-export async function startLmsBridge(lms: LmsConnection, window: Window): Promise<void> {
+/** The platform's session opened, or null when the platform would not open it. */
+export function startLmsBridge(lms: LmsConnection, window: Window): LmsBridge | null {
   if (!lms.initialize()) {
     console.warn(`The learning platform did not open its session (error ${lms.lastError()}): nothing is reported to it.`);
-    return;
+    return null;
   }
-  const assignment = await assignmentOf(window.location.hash);
-  const progressKey = assignment ? assignmentProgressKey(assignment) : PROGRESS_KEY;
-  restore(lms, window, progressKey);
-  const bridge = new LmsBridge(lms, assignment);
-  onQuestSession((session) => bridge.follow(session));
+  const bridge = new LmsBridge(lms, window);
   window.addEventListener('pagehide', () => bridge.finish());
   window.document.addEventListener('visibilitychange', () => {
     if (window.document.visibilityState === 'hidden') bridge.commit();
   });
+  return bridge;
 }
 
-async function assignmentOf(hash: string): Promise<Assignment | null> {
-  if (!isAssignmentFragment(hash)) return null;
-  const decoded = await decodeAssignment(hash);
-  return decoded.ok ? decoded.assignment : null;
-}
-
-/** The platform's suspend data into this browser's saved progress, before the game reads it. */
-function restore(lms: LmsConnection, window: Window, progressKey: string): void {
-  const elements = elementsOf(lms.version);
-  const learner = lms.get(elements.learnerId);
-  const resumed = lms.get(elements.entry) === 'resume' ? resumeProgress(lms.get('cmi.suspend_data'), new Date().toISOString()) : null;
-  try {
-    const storage = window.localStorage;
-    if (storage.getItem(learnerKey(progressKey)) !== learner) {
-      // Another learner's (or no platform's) progress: the platform's learner starts from what the platform kept.
-      for (const key of [progressKey, sessionContextKey(progressKey), surveyKey(progressKey)]) storage.removeItem(key);
-      storage.setItem(learnerKey(progressKey), learner);
-    }
-    if (resumed) new ProgressStore(storage, systemClock, progressKey).save(resumed);
-  } catch (error) {
-    console.warn('The progress the learning platform kept could not be put in this browser’s storage', error);
-  }
-}
+/** Whether any task of `progress` is completed. */
+const hasWork = (progress: Progress) => Object.values(progress.levels).some((level) => Object.keys(level.tasks).length > 0);
 
 class LmsBridge {
   private readonly startedMs = performance.now();
@@ -79,13 +51,13 @@ class LmsBridge {
   private readonly positions = new Map<string, number>();
   private interactionCount: number;
   private session: QuestSession | null = null;
-  private completed = false;
+  private restored = false;
   private toldSuspend: SuspendedPart = 'full';
   private finished = false;
 
   constructor(
     private readonly lms: LmsConnection,
-    private readonly assignment: Assignment | null,
+    private readonly window: Window,
   ) {
     this.interactionCount = Number(lms.get('cmi.interactions._count')) || 0;
     // SCORM 2004 lets us read the interactions of earlier launches: a task is updated in its place, not added twice.
@@ -94,8 +66,13 @@ class LmsBridge {
 
   follow(session: QuestSession): () => void {
     this.session = session;
-    const levels = playableLevels(session.catalog).filter((level) => !this.assignment || this.assignment.levels.includes(level.id));
-    const scope: ReportScope = { levels, requiredTasks: this.assignment?.requiredTasks };
+    if (!this.restored) {
+      this.restored = true;
+      this.restore(session);
+    }
+    const { assignment } = session;
+    const levels = playableLevels(session.catalog).filter((level) => !assignment || assignment.levels.includes(level.id));
+    const scope: ReportScope = { levels, requiredTasks: assignment?.requiredTasks };
     let seen = -1;
     const changed = () => {
       // The report changes only with the log: every completion and answer is an event.
@@ -111,11 +88,33 @@ class LmsBridge {
     };
   }
 
+  /** The platform's suspend data into the session: merged with the learner's own progress, or replacing someone else's. */
+  private restore(session: QuestSession): void {
+    const elements = elementsOf(this.lms.version);
+    const learner = this.lms.get(elements.learnerId);
+    const resumed = this.lms.get(elements.entry) === 'resume' ? resumeProgress(this.lms.get('cmi.suspend_data'), new Date().toISOString()) : null;
+    const key = learnerKey(session.progressKey);
+    let owner: string | null = null;
+    try {
+      owner = this.window.localStorage.getItem(key);
+      this.window.localStorage.setItem(key, learner);
+    } catch {
+      // No storage: the progress is this visit's only, and the platform's.
+    }
+    const someoneElses = owner !== learner && hasWork(session.engine.progress);
+    if (someoneElses) {
+      if (resumed) session.importText(JSON.stringify(resumed));
+      else session.reset();
+    } else if (resumed) {
+      session.engine.absorb(resumed);
+    }
+    if (someoneElses || resumed) session.start();
+  }
+
   /** Sets the values that changed; commits when any did. */
   private report(session: QuestSession, scope: ReportScope): void {
     if (this.finished) return;
     const report = lmsReport(session.engine.progress, scope);
-    this.completed = report.completed;
     const location = session.mode.kind === 'level' ? session.mode.id : null;
     const values = [...statusValues(this.lms.version, report, location), ...report.interactions.flatMap((interaction) => this.interactionAt(interaction))];
     if (values.filter(([element, value]) => this.set(element, value)).length > 0) this.commit();
@@ -143,7 +142,7 @@ class LmsBridge {
   /** The session time, the exit mode and the suspend data, then the platform's commit. */
   commit(): void {
     if (this.finished) return;
-    for (const [element, value] of exitValues(this.lms.version, performance.now() - this.startedMs, this.completed)) this.set(element, value);
+    for (const [element, value] of exitValues(this.lms.version, performance.now() - this.startedMs)) this.set(element, value);
     if (this.session) this.suspend(this.session);
     this.lms.commit();
   }

@@ -67,17 +67,22 @@ export function interactionValues(version: ScormVersion, index: number, interact
   ];
 }
 
-/** This launch's time, and whether the learner will come back to it (`suspend`) or is done. */
-export function exitValues(version: ScormVersion, sessionMs: number, completed: boolean): CmiValue[] {
+/**
+ * This launch's time, and the exit: always `suspend`, also once the assignment is done, so
+ * that the next launch resumes with the progress (cmi.entry `resume`, the suspend data)
+ * instead of starting a new attempt that would report the finished assignment as
+ * incomplete (RTE 4th ed. §4.2.10; RTE 1.2 §3.4.4 cmi.core.exit).
+ */
+export function exitValues(version: ScormVersion, sessionMs: number): CmiValue[] {
   if (version === '2004') {
     return [
       ['cmi.session_time', isoDuration(sessionMs)],
-      ['cmi.exit', completed ? 'normal' : 'suspend'],
+      ['cmi.exit', 'suspend'],
     ];
   }
   return [
     ['cmi.core.session_time', timespan12(sessionMs)],
-    ['cmi.core.exit', completed ? '' : 'suspend'],
+    ['cmi.core.exit', 'suspend'],
   ];
 }
 
