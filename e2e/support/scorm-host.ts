@@ -4,12 +4,12 @@ import type { AddressInfo } from 'node:net';
 
 /**
  * A stand-in for a school's learning platform, for e2e/scorm.spec.ts: a web server that
- * serves an unpacked SCORM package under /package/ and a player page whose window holds
+ * serves unpacked SCORM packages, each under a folder of its own, and a player page whose window holds
  * scorm-again's API (an independent SCORM runtime: https://github.com/jcputney/scorm-again),
  * the way Moodle's player holds its own. The player launches the package's SCO in an
  * iframe, as platforms do.
  *
- * /player.html#<json>: `{ version: '1.2' | '2004', cmi: {…initial values…}, launch: 'package/…' }`.
+ * /player.html#<json>: `{ version: '1.2' | '2004', cmi: {…initial values…}, launch: '<folder>/…' }`.
  */
 
 const RUNTIME = readFileSync(new URL('../../node_modules/scorm-again/dist/scorm-again.min.js', import.meta.url));
@@ -49,18 +49,14 @@ export interface ScormHost {
   close(): Promise<void>;
 }
 
-export async function startScormHost(files: Readonly<Record<string, Uint8Array>>): Promise<ScormHost> {
+/** `packages`: each package's files by their path in it, by the folder it is served from. */
+export async function startScormHost(packages: Readonly<Record<string, Readonly<Record<string, Uint8Array>>>>): Promise<ScormHost> {
   const missing: string[] = [];
+  let launches = 0;
   const server = createServer((request, response) => {
     const path = decodeURIComponent(new URL(request.url ?? '/', 'http://host').pathname);
-    const body =
-      path === '/player.html'
-        ? PLAYER
-        : path === '/scorm-again.js'
-          ? RUNTIME
-          : path.startsWith('/package/')
-            ? files[path.slice('/package/'.length)]
-            : undefined;
+    const [, folder = '', ...rest] = path.split('/');
+    const body = path === '/player.html' ? PLAYER : path === '/scorm-again.js' ? RUNTIME : packages[folder]?.[rest.join('/')];
     if (body === undefined) {
       missing.push(path);
       response.writeHead(404).end();
@@ -72,7 +68,8 @@ export async function startScormHost(files: Readonly<Record<string, Uint8Array>>
   const { port } = server.address() as AddressInfo;
   return {
     missing,
-    playerUrl: (config) => `http://127.0.0.1:${port}/player.html#${encodeURIComponent(JSON.stringify(config))}`,
+    // A query of its own per launch: a new fragment alone would not load the page again.
+    playerUrl: (config) => `http://127.0.0.1:${port}/player.html?launch=${++launches}#${encodeURIComponent(JSON.stringify(config))}`,
     close: () => new Promise((resolve) => server.close(() => resolve())),
   };
 }
