@@ -51,17 +51,17 @@ test('one student hands in four files: the dashboard shows one learner who passe
   await page.getByRole('button', { name: 'Got it' }).click();
 
   await playLevel1UpToTheRayTracer(page);
-  const midway = await download(page, 'Download JSON');
+  const midway = await download(page, 'Download results file');
   await page.reload();
   await expect(page.locator('rt-task-card[status="current"]')).toContainText('Open the ray tracer');
-  const afterReload = await download(page, 'Download JSON');
+  const afterReload = await download(page, 'Download results file');
   await renderFirstImage(page);
   await closeRenderWindow(page);
   const survey = page.locator('rt-lab rt-survey');
   await answerDefaultSurvey(survey, '12');
   await survey.getByRole('button', { name: 'Hand in' }).click();
   await expect(survey).toHaveCount(0);
-  const finalJson = await download(page, 'Download JSON');
+  const finalJson = await download(page, 'Download results file');
   const finalCsv = await download(page, 'Download CSV');
 
   // The CSV: the first task timed from the code, the survey in its own columns, the code kept as text.
