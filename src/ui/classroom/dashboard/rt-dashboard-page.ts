@@ -16,7 +16,10 @@ import { localize, type Locale } from '../../../quest/localized-text.ts';
 import { plainLevelText } from '../../../quest/text-markup.ts';
 import { playableLevels } from '../../../quest/level-index.ts';
 import { dashboardPageStyles } from './dashboard-page.css.ts';
+import './rt-dashboard-class-list.ts';
 import './rt-dashboard-completion.ts';
+import type { PastedCodes } from './rt-dashboard-paste-codes.ts';
+import './rt-dashboard-paste-codes.ts';
 import { learnerLabel } from './rt-dashboard-level-times.ts';
 import { formatDuration } from './rt-dashboard-format.ts';
 import './rt-dashboard-stuck.ts';
@@ -107,6 +110,12 @@ export class RtDashboardPage extends LitElement {
     const read = readClassFiles(dropped, this.files, this.seen);
     this.files = { records: read.records, skipped: [...read.skipped, ...tooBig] };
     this.reading = false;
+  }
+
+  /** Adds the exports of pasted results codes, as if their files were dropped. */
+  private onCodesPasted(event: CustomEvent<PastedCodes>): void {
+    const read = readClassFiles(event.detail.files, this.files, this.seen);
+    this.files = { records: read.records, skipped: [...read.skipped, ...event.detail.skipped] };
   }
 
   private clear(): void {
@@ -216,6 +225,7 @@ export class RtDashboardPage extends LitElement {
               <input type="file" multiple accept=".json,.csv,application/json,text/csv" @change=${this.onChoose} />
             </label>
           </div>
+          <rt-dashboard-paste-codes @codes-pasted=${this.onCodesPasted}></rt-dashboard-paste-codes>
           <p class="privacy">
             <svg viewBox="0 0 16 16" width="16" height="16" aria-hidden="true">
               <rect x="3" y="7" width="10" height="7" rx="1.5" fill="none" stroke="currentColor" stroke-width="1.5" />
@@ -238,6 +248,10 @@ export class RtDashboardPage extends LitElement {
               ${msg('Clear')}
             </button>
           </div>
+        </section>
+        <section aria-labelledby="class-list-heading">
+          <h2 id="class-list-heading">${msg('Class list: who has handed in')}</h2>
+          <rt-dashboard-class-list .learners=${this.shown}></rt-dashboard-class-list>
         </section>
         ${skipped.length ? this.renderSkipped(skipped) : null} ${this.renderLearnerTimes()} ${this.levels.map((level) => this.renderLevel(level))}
         ${this.renderSurveys()}
