@@ -8,7 +8,7 @@ import { exportCsv } from '../../classroom/export-csv.ts';
 import { exportJson } from '../../classroom/export-json.ts';
 import { exportXapi } from '../../classroom/export-xapi.ts';
 import { resultsCode } from '../../classroom/results-code.ts';
-import { installId, randomUuid } from '../../classroom/learner-identity.ts';
+import { exportInstallId, randomUuid } from '../../classroom/learner-identity.ts';
 import type { SurveySubmission } from '../../classroom/survey-answers.ts';
 import { MemoryStorage } from '../../quest/progress-store.ts';
 import type { Progress } from '../../quest/progress.ts';
@@ -27,8 +27,8 @@ const FILES: Record<Format, { extension: string; type: string; text: (input: Exp
  * paste into a form (results-code.ts). CSV (one row per task attempt) and xAPI statements stay
  * below as other formats, for researchers. Made in the browser from the current progress;
  * nothing is uploaded. Set `.progress` (QuestEngine.progress, read at the moment of the click) and the
- * classroom context: `.participant`, `.attemptId`, `.assignment`, `.survey`; the browser's
- * install id is read from localStorage.
+ * classroom context: `.participant`, `.attemptId`, `.assignment`, `.survey`; without a
+ * participant code the browser's install id is read from localStorage.
  * @fires export-failed - detail: the message, when a file could not be made (the lab shows it as a toast).
  */
 export class RtExportMenu extends LitElement {
@@ -152,7 +152,7 @@ export class RtExportMenu extends LitElement {
     return {
       progress,
       participant: this.participant,
-      installId: installId(browserStorage()),
+      installId: exportInstallId(this.participant, browserStorage()),
       attemptId: this.attemptId,
       assignment: this.assignment,
       survey: this.survey,
