@@ -8,6 +8,7 @@ import type { SkippedFile } from '../../../classroom/dashboard-record.ts';
 import { learnerInLevel, summarizeLevels, type LevelSummary } from '../../../classroom/dashboard-summary.ts';
 import { stickingPoints, STUCK_MIN_LEARNERS, STUCK_MIN_SHARE, STUCK_TIMES_TYPICAL } from '../../../classroom/dashboard-stuck.ts';
 import { summarizeSurveys, type SurveysSummary } from '../../../classroom/dashboard-survey.ts';
+import { researchCsv } from '../../../classroom/research-export.ts';
 import { downloadText } from '../../../util/download-file.ts';
 import { issueText } from '../../../i18n/issue-text.ts';
 import { currentLocale } from '../../../i18n/locale.ts';
@@ -141,9 +142,11 @@ export class RtDashboardPage extends LitElement {
     if (input.files?.length) void this.addFiles(input.files).then(() => (input.value = ''));
   }
 
-  private downloadCsv(kind: 'class' | 'survey'): void {
+  private downloadCsv(kind: 'class' | 'survey' | 'research'): void {
     const date = new Date().toISOString().slice(0, 10);
-    const text = kind === 'class' ? combinedCsv(this.shown, surveyById) : surveyCsv(this.shown, surveyById);
+    const freeText = this.renderRoot.querySelector<HTMLInputElement>('input[name="free-text"]')?.checked ?? false;
+    const texts = { class: combinedCsv, survey: surveyCsv, research: (...args: Parameters<typeof surveyCsv>) => researchCsv(...args, { freeText }) };
+    const text = texts[kind](this.shown, surveyById);
     downloadText(`\uFEFF${text}`, `ray-tracer-quest-${kind}-${date}.csv`, 'text/csv;charset=utf-8');
   }
 
@@ -244,6 +247,10 @@ export class RtDashboardPage extends LitElement {
             <button type="button" ?disabled=${!this.shown.some((learner) => learner.survey)} @click=${() => this.downloadCsv('survey')} title=${msg('One row per learner shown who answered the survey, one column per question')}>
               ${msg('Download survey CSV')}
             </button>
+            <button type="button" ?disabled=${this.shown.length === 0} @click=${() => this.downloadCsv('research')} title=${msg('The combined CSV for a study: times in seconds from the start instead of dates and clock times, no device id, no file names')}>
+              ${msg('Download research CSV')}
+            </button>
+            <label><input type="checkbox" name="free-text" /> ${msg('with free-text answers (marked)')}</label>
             <button type="button" ?disabled=${records.length + skipped.length === 0} @click=${this.clear} title=${msg('Forget the files read so far and start again')}>
               ${msg('Clear')}
             </button>
