@@ -4,6 +4,7 @@ import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import { levelTextsLocale, loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
 import { damagedSaveFileName } from '../../app/damaged-saves.ts';
 import { QuestSession } from '../../app/quest-session.ts';
+import { deleteAssignmentData } from '../../app/withdraw-data.ts';
 import type { SaveProblemKind } from '../../quest/progress-store.ts';
 import type { ShowMeStage } from '../../app/show-me-player.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
@@ -284,6 +285,9 @@ export class QuestController implements ReactiveController {
         session.flush();
         return this.changed();
       }
+      case 'withdraw':
+        session.stopSaving();
+        return command.done(deleteAssignmentData(browserStorage(), session.progressKey));
       case 'damaged-restore':
         return this.restored(session, command.key);
       case 'damaged-delete':
