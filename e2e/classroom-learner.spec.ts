@@ -40,6 +40,9 @@ test('one student hands in four files: the dashboard shows one learner who passe
 
   // The code dialog stays open for 10 s: nothing is timed yet.
   const dialog = page.locator('rt-participant-dialog');
+  // First what is recorded and that taking part is voluntary; the code only after "I understand".
+  await expect(dialog.getByText('Taking part is voluntary.')).toBeVisible();
+  await dialog.getByRole('button', { name: 'I understand, start' }).click();
   await expect(dialog.getByRole('textbox', { name: 'Participant code' })).toBeVisible();
   await page.waitForTimeout(CODE_WAIT_MS);
   await dialog.getByRole('textbox', { name: 'Participant code' }).fill('007');

@@ -74,6 +74,7 @@ test('a teacher builds an assignment; a student opens its link and enters a code
   expect((assignment as { requiredTasks: Record<string, string[]> }).requiredTasks['01-introduction']).toContain('pan');
 
   const dialog = page.locator('rt-participant-dialog');
+  await dialog.getByRole('button', { name: 'I understand, start' }).click();
   await expect(dialog.getByRole('textbox', { name: 'Participant code' })).toBeVisible();
   await dialog.getByRole('textbox', { name: 'Participant code' }).fill('P-07');
   await dialog.getByRole('button', { name: 'Start' }).click();
@@ -179,6 +180,7 @@ test('a student plays a one-level assignment, answers the survey and downloads C
   // The student: the link, a code, the level to its end.
   await page.goto(url);
   const dialog = page.locator('rt-participant-dialog');
+  await dialog.getByRole('button', { name: 'I understand, start' }).click();
   await dialog.getByRole('textbox', { name: 'Participant code' }).fill('P-07');
   await dialog.getByRole('button', { name: 'Start' }).click();
   await expect(dialog.getByRole('textbox', { name: 'Participant code' })).toBeHidden();

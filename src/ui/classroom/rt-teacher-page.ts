@@ -15,6 +15,7 @@ import { plainLevelText } from '../../quest/text-markup.ts';
 import { localize } from '../../quest/localized-text.ts';
 import { teacherPageStyles } from './teacher-page.css.ts';
 import '../controls/rt-theme-toggle.ts';
+import { consentSection } from './teacher-consent-section.ts';
 
 /**
  * @summary The teacher page (`#/teacher`): builds an assignment — title, levels and their
@@ -119,6 +120,7 @@ export class RtTeacherPage extends LitElement {
     // An optional field left empty is left out, so the link (and the assignment's id) stays as without it.
     if (next.classCode === undefined) delete next.classCode;
     if (next.xapiHomePage === undefined) delete next.xapiHomePage;
+    if (next.consent === undefined) delete next.consent;
     this.assignment = next;
   }
 
@@ -261,6 +263,7 @@ export class RtTeacherPage extends LitElement {
             ])}
             ${a.survey ? html`<a href=${`#/survey/${a.survey}`} target="_blank" rel="noopener">${msg('Preview the survey (opens a new tab)')}</a>` : nothing}
           </section>
+          ${consentSection(a, (consent) => this.change({ consent }))}
           <section>
             <h2>${msg('For the dashboard and research (optional)')}</h2>
             <label class="field">
