@@ -215,7 +215,7 @@ export class RtExportMenu extends LitElement {
       ${
         this.code === null
           ? nothing
-          : html`<p role="status">
+          : html`<p aria-live="polite">
               ${this.copied ? msg('Copied. Paste it into the form your teacher gave you (Ctrl+V).') : msg('Select all of the code below and copy it (Ctrl+C).')}
             </p>
             <textarea readonly aria-label=${msg('Your results code')} @focus=${(event: FocusEvent) => (event.target as HTMLTextAreaElement).select()}>${this.code}</textarea>`

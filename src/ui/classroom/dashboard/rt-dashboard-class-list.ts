@@ -110,7 +110,7 @@ export class RtDashboardClassList extends LitElement {
 
   private renderCheck(listed: number, check: ClassListCheck) {
     const files = (learner: ClassLearner) => html`<span class="files">(${learner.files.join(', ')})</span>`;
-    return html`<p class="summary" role="status">
+    return html`<p class="summary" aria-live="polite">
         ${msg(str`${check.handedIn.length} of ${listed} handed in, ${check.missing.length} missing.`)}
         ${check.notOnList.length === 0 ? nothing : msg(str`Not on the list: ${check.notOnList.length}.`)}
       </p>

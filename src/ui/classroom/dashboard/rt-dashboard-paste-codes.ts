@@ -95,7 +95,7 @@ export class RtDashboardPasteCodes extends LitElement {
       </label>
       <div class="row">
         <button type="button" @click=${this.read}>${msg('Read the codes')}</button>
-        <p role="status">${this.note}</p>
+        <p aria-live="polite">${this.note}</p>
       </div>`;
   }
 }
