@@ -2,6 +2,7 @@ import { z } from 'zod';
 import { kebabId } from '../quest/kebab-id.ts';
 import { LOCALES } from '../quest/localized-text.ts';
 import type { Assignment } from './assignment.ts';
+import { CONCEPT_TEST_ORDERS } from './concept-test/concept-test-plan.ts';
 
 /**
  * The zod schema of an Assignment, for links opened by students (assignment-link.ts): a link
@@ -33,6 +34,8 @@ export const assignmentSchema = z
       .url({ protocol: /^https?$/, error: 'must be a web address that starts with http:// or https://' })
       .max(200)
       .optional(),
+    // Optional, so that links made before it still open (as version 1).
+    conceptTest: z.enum(CONCEPT_TEST_ORDERS).optional(),
   })
   .superRefine((assignment, context) => {
     assignment.levels.forEach((id, index) => {

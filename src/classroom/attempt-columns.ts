@@ -1,6 +1,8 @@
 import { HOW_COMPLETED } from '../quest/event-log.ts';
 import { TASK_KINDS, type TaskKind } from '../quest/goal.ts';
 import type { SurveyAnswers } from './survey-answers.ts';
+import type { ConceptTestAnswers } from './concept-test/concept-answers.ts';
+import { CONCEPT_COLUMNS } from './concept-test/concept-columns.ts';
 import { hintsOpened, type TaskAttempt } from './task-attempts.ts';
 
 /**
@@ -23,6 +25,8 @@ export interface AttemptOwner {
   assignmentId: string;
   classCode: string;
   survey: { id: string; answers: SurveyAnswers } | null;
+  /** The concept test's answers, when the assignment had one (concept-columns.ts). */
+  conceptTest?: ConceptTestAnswers | null;
 }
 
 /** What one row is written from: whose it is, the attempt, and the attempt's number for its task (1, 2, …). */
@@ -33,11 +37,11 @@ export interface AttemptRow {
 }
 
 /** The owner's fields a row carries as they are (the survey's answers have columns of their own). */
-type OwnerText = Exclude<keyof AttemptOwner, 'survey'>;
+type OwnerText = Exclude<keyof AttemptOwner, 'survey' | 'conceptTest'>;
 
 /** What the reader gathers from one row's cells; `how` is settled afterwards from `completedAt` and `shownByApp`. */
 export interface ReadRow {
-  owner: Record<OwnerText, string> & { surveyId: string };
+  owner: Record<OwnerText, string> & { surveyId: string; conceptTest: ConceptTestAnswers };
   attempt: TaskAttempt;
   shownByApp: boolean;
 }
@@ -135,6 +139,7 @@ export const ATTEMPT_COLUMNS: readonly AttemptColumn[] = [
   },
   countColumn('points', 'points'),
   { name: 'survey', ...plain, value: ({ owner }) => owner.survey?.id ?? '', read: (cell, into) => void (into.owner.surveyId = cell) },
+  ...CONCEPT_COLUMNS,
 ];
 
 /** The survey's answers follow the table as one `survey_<question>` column per question. */
@@ -146,7 +151,17 @@ export const ID_COLUMNS: ReadonlySet<string> = new Set(ATTEMPT_COLUMNS.filter((c
 /** What the reader starts a row from: every cell empty. */
 export function emptyReadRow(): ReadRow {
   return {
-    owner: { learnerId: '', attemptId: '', installId: '', participant: '', assignment: '', assignmentId: '', classCode: '', surveyId: '' },
+    owner: {
+      learnerId: '',
+      attemptId: '',
+      installId: '',
+      participant: '',
+      assignment: '',
+      assignmentId: '',
+      classCode: '',
+      surveyId: '',
+      conceptTest: { pre: null, post: null },
+    },
     attempt: {
       level: '',
       task: '',

@@ -1,4 +1,5 @@
 import type { ClassRecord } from './dashboard-record.ts';
+import { joinedConceptTests } from './concept-test/concept-test-join.ts';
 
 /**
  * One learner is one learner: a student who pressed every download button, or handed in a
@@ -54,7 +55,7 @@ export function classLearners(records: readonly ClassRecord[]): ClassLearner[] {
       kept.survey ??
       copies.filter((copy) => copy.survey).reduce<ClassRecord | null>((best, copy) => (best ? moreComplete(best, copy) : copy), null)?.survey ??
       null;
-    return { kept: { ...kept, survey }, files: copies.map((copy) => copy.file) };
+    return { kept: { ...kept, survey, conceptTest: joinedConceptTests(copies) }, files: copies.map((copy) => copy.file) };
   });
   return groupBy(playthroughs, ({ kept }) => `${kept.assignmentId}\u0000${kept.learnerId}`).map((group) => {
     const parts = group.map(({ kept }) => kept).sort((a, b) => firstMoment(a) - firstMoment(b));
@@ -64,6 +65,7 @@ export function classLearners(records: readonly ClassRecord[]): ClassLearner[] {
       attempts: parts.flatMap((part) => part.attempts),
       visits: parts.flatMap((part) => part.visits),
       survey: [...parts].reverse().find((part) => part.survey)?.survey ?? null,
+      conceptTest: joinedConceptTests(parts),
       parts,
       files: group.flatMap(({ files }) => files),
     };

@@ -5,6 +5,7 @@ import { assignmentId } from './assignment-id.ts';
 import type { AttemptOwner } from './attempt-columns.ts';
 import { learnerId } from './learner-identity.ts';
 import type { SurveySubmission } from './survey-answers.ts';
+import type { ConceptTestAnswers } from './concept-test/concept-answers.ts';
 
 /**
  * Everything an export is made from (export-csv.ts, export-json.ts, export-xapi.ts): the
@@ -21,6 +22,8 @@ export interface ExportInput {
   /** The teacher's assignment, or null in free play. */
   assignment: Assignment | null;
   survey: SurveySubmission | null;
+  /** The concept test's answers, when the assignment has one. */
+  conceptTest?: ConceptTestAnswers | null;
   /** ISO 8601; the moment of the download. */
   exportedAt: string;
   /** The app's version (package.json), so that a researcher knows which game produced the data. */
@@ -47,5 +50,6 @@ export function exportOwner(input: ExportInput): AttemptOwner {
     assignmentId: id ?? '',
     classCode: input.assignment?.classCode ?? '',
     survey: input.survey && { id: input.survey.survey, answers: input.survey.answers },
+    conceptTest: input.conceptTest ?? null,
   };
 }

@@ -6,6 +6,7 @@ import type { ExportInput } from './export-context.ts';
 import { learnerId } from './learner-identity.ts';
 import { hintsOpened, readLog, type TaskAttempt } from './task-attempts.ts';
 import type { SurveySubmission } from './survey-answers.ts';
+import { conceptTestExport, type ConceptTestExport } from './concept-test/concept-test-export.ts';
 
 /**
  * The JSON export: everything a researcher (or the class dashboard) needs from one
@@ -35,6 +36,7 @@ export interface QuestExport {
   events: EventLogData;
   attempts: ExportedAttempt[];
   survey: SurveySubmission | null;
+  conceptTest: ConceptTestExport | null;
 }
 
 export function buildExport(input: ExportInput): QuestExport {
@@ -51,6 +53,7 @@ export function buildExport(input: ExportInput): QuestExport {
     events: progress.log,
     attempts: readLog(progress.log).attempts.map((attempt) => ({ ...attempt, hintsOpened: hintsOpened(attempt) })),
     survey: input.survey,
+    conceptTest: conceptTestExport(input.conceptTest ?? null),
   };
 }
 
