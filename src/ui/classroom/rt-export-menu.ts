@@ -6,6 +6,7 @@ import { exportFileName } from '../../classroom/export-file-name.ts';
 import { APP_VERSION, type ExportInput } from '../../classroom/export-context.ts';
 import { exportCsv } from '../../classroom/export-csv.ts';
 import { exportJson } from '../../classroom/export-json.ts';
+import type { ConceptTestAnswers } from '../../classroom/concept-test/concept-answers.ts';
 import { exportXapi } from '../../classroom/export-xapi.ts';
 import { installId, randomUuid } from '../../classroom/learner-identity.ts';
 import type { SurveySubmission } from '../../classroom/survey-answers.ts';
@@ -35,6 +36,7 @@ export class RtExportMenu extends LitElement {
     attemptId: { attribute: false },
     assignment: { attribute: false },
     survey: { attribute: false },
+    conceptTest: { attribute: false },
   };
 
   static override styles = css`
@@ -73,6 +75,7 @@ export class RtExportMenu extends LitElement {
   declare attemptId: string | null;
   declare assignment: Assignment | null;
   declare survey: SurveySubmission | null;
+  declare conceptTest: ConceptTestAnswers | null;
 
   constructor() {
     super();
@@ -81,6 +84,7 @@ export class RtExportMenu extends LitElement {
     this.attemptId = null;
     this.assignment = null;
     this.survey = null;
+    this.conceptTest = null;
   }
 
   /** The file of one format, exactly as the buttons download it (for tests and other menus). */
@@ -96,6 +100,7 @@ export class RtExportMenu extends LitElement {
       attemptId: this.attemptId,
       assignment: this.assignment,
       survey: this.survey,
+      conceptTest: this.conceptTest,
       exportedAt,
       appVersion: APP_VERSION,
     };

@@ -15,6 +15,7 @@ import { plainLevelText } from '../../quest/text-markup.ts';
 import { localize } from '../../quest/localized-text.ts';
 import { teacherPageStyles } from './teacher-page.css.ts';
 import '../controls/rt-theme-toggle.ts';
+import './rt-teacher-concept-test.ts';
 
 /**
  * @summary The teacher page (`#/teacher`): builds an assignment — title, levels and their
@@ -261,6 +262,7 @@ export class RtTeacherPage extends LitElement {
             ])}
             ${a.survey ? html`<a href=${`#/survey/${a.survey}`} target="_blank" rel="noopener">${msg('Preview the survey (opens a new tab)')}</a>` : nothing}
           </section>
+          <rt-teacher-concept-test .value=${a.conceptTest} @concept-test-change=${(e: CustomEvent<Assignment['conceptTest']>) => this.change({ conceptTest: e.detail })}></rt-teacher-concept-test>
           <section>
             <h2>${msg('For the dashboard and research (optional)')}</h2>
             <label class="field">

@@ -17,6 +17,7 @@ import { plainLevelText } from '../../../quest/text-markup.ts';
 import { playableLevels } from '../../../quest/level-index.ts';
 import { dashboardPageStyles } from './dashboard-page.css.ts';
 import './rt-dashboard-completion.ts';
+import './rt-dashboard-gain.ts';
 import { learnerLabel } from './rt-dashboard-level-times.ts';
 import { formatDuration } from './rt-dashboard-format.ts';
 import './rt-dashboard-stuck.ts';
@@ -240,6 +241,7 @@ export class RtDashboardPage extends LitElement {
           </div>
         </section>
         ${skipped.length ? this.renderSkipped(skipped) : null} ${this.renderLearnerTimes()} ${this.levels.map((level) => this.renderLevel(level))}
+        ${this.shown.some((learner) => learner.conceptTest) ? html`<section aria-labelledby="gain-heading"><h2 id="gain-heading">${msg('Concept test: learning measured')}</h2><rt-dashboard-gain .learners=${this.shown} .locale=${this.locale}></rt-dashboard-gain></section>` : nothing}
         ${this.renderSurveys()}
       </main>
     `;
