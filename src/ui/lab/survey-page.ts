@@ -22,6 +22,7 @@ export function surveyPage(game: QuestController, assignment: Assignment | null)
   return html`<rt-survey-page
     survey-id=${surveyId}
     locale=${game.session?.locale ?? 'en'}
+    .levels=${assignment?.levels ?? null}
     @survey-later=${() => game.putSurveyOff(true)}
     @survey-submitted=${(event: CustomEvent<SurveySubmission>) => game.surveySubmitted(event.detail)}
   ></rt-survey-page>`;
