@@ -17,9 +17,14 @@ export class RtTeacherConceptTest extends LitElement {
   static override styles = [
     classroomStyles,
     css`
+      /* A card like the page's other sections (classroom-styles.ts pageStyles). */
       :host {
         display: block;
         margin-bottom: calc(var(--rt-space) * 2);
+        background: var(--rt-surface);
+        border: 1px solid var(--rt-border);
+        border-radius: var(--rt-radius);
+        padding: 12px 16px;
       }
       h2 {
         font-size: 1.05rem;
