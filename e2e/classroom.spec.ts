@@ -222,7 +222,7 @@ test('a student plays a one-level assignment, answers the survey and downloads C
   });
   expect(exported.survey).toMatchObject({
     survey: 'default',
-    answers: { education: 'secondary', 'computer-skill': 7, minutes: 12, ease: 'about-right', feedback: 'Nice, "really"\nthanks' },
+    answers: { education: 'havo', 'computer-skill': 7, minutes: 12, ease: 'about-right', feedback: 'Nice, "really"\nthanks' },
   });
   const log = eventLogSchema.parse(exported.events);
   const types = log.events.map((event) => event.type);
@@ -297,7 +297,7 @@ test('a student plays a one-level assignment, answers the survey and downloads C
   }
   expect(verb('/passed')).toHaveLength(1);
   expect(verb('/passed')[0].result?.duration).toMatch(ISO_DURATION);
-  expect(verb('/answered').map((statement) => statement.result?.response)).toContain('secondary');
+  expect(verb('/answered').map((statement) => statement.result?.response)).toContain('havo');
 
   // The teacher's dashboard reads the JSON file and shows the level.
   await page.goto('./#/dashboard');
