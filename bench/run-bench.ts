@@ -65,10 +65,8 @@ function loadReferenceScene(): Scene {
 
 /**
  * A full-quality render with `workers` threads, after the same render once so that the JIT
- * has compiled all of the tracer's code the image needs. After a 128 × 128 warm-up, V8
- * still optimized 53 functions during the timed render (its --trace-opt log), the model's
- * and the cylinder's code among them, on the cores the workers need; after a full one, 30,
- * all but one of them the pool's messaging.
+ * has compiled all of the tracer's code the image needs: a smaller warm-up left dozens of
+ * functions to optimize during the timed render (docs/performance.md, "Cold code").
  */
 async function timeRender(scene: Scene, meshes: MeshLibrary, workers: number): Promise<FinishedRender> {
   const pool = createNodeRenderPool(workers);

@@ -9,7 +9,7 @@ import type { SurveyAnswers, SurveySubmission } from './survey-answers.ts';
  * after a reload. The quest session writes them (and keeps them in memory while storage
  * refuses: src/app/pending-writes.ts).
  *
- * A damaged record is never passed over in silence (issue 38): what can still be read of it
+ * A damaged record is never passed over in silence: what can still be read of it
  * is kept (each answer on its own, even from text that is no longer JSON: a record cut short
  * keeps the answers before the cut), what cannot is named, and the exact text is backed up
  * like damaged progress (saved-backups.ts), for the Menu to offer.

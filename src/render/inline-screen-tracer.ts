@@ -27,7 +27,7 @@ const whenIdle: (callback: () => void) => void =
  * (the slider's new position), not one frame later. Through a worker they came back 10–20 ms
  * after the event, after the browser had started the frame that shows the slider: a drag on
  * SwiftShader then took two frames a step (p95 170–225 ms against the ≤ 100 ms goal;
- * docs/benchmarks.md). Only cheap screens (INLINE_RAY_BUDGET) whose models' BVHs are built
+ * docs/benchmark-log.md). Only cheap screens (INLINE_RAY_BUDGET) whose models' BVHs are built
  * already come here; the rest, and every full render, stay in the workers.
  *
  * The trees are the worker's to the bit: the same tracePixels with the same seed.

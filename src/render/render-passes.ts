@@ -82,7 +82,7 @@ const MAX_TILE_SIDE = 32;
  * the 2-worker render took about 0.93× as long, and with 24 times (32 × 32, MAX_TILE_SIDE)
  * 0.95× as long again (7 alternating runs of 3 renders each, the same image to the bit).
  * The order of the pixels inside a tile is not what costs: rows alternating in direction
- * changed nothing (docs/benchmarks.md, sixteenth round).
+ * changed nothing (docs/benchmark-log.md, sixteenth round).
  */
 const RAYS_PER_UNWATCHED_TILE = 24 * RAYS_PER_TILE;
 

@@ -5,13 +5,11 @@
  *
  * They trace it again until two rounds take about as long (STEADY): the first round can be
  * many times slower than the render will be, as workers that have not traced this kind of
- * scene yet run its code unoptimized until V8 has compiled it, on a busy machine for seconds
- * (in Chromium on the project's loaded 2-core machine, 0.19 to 0.26 ms a sample in the first
- * round of a lens scene, 0.008 to 0.018 from the fourth). From that steady pair on, rounds
- * add up until they have taken MEASURED_MS, and together they price a sample: one round of
- * 0.15 s caught the machine's other work in a burst or a lull, and priced one render at
- * 7.6 µs a sample where renders of the scene took 11 (at most MAX_PROBE_ROUNDS rounds in all,
- * and after the second none begun after MAX_PROBE_MS).
+ * scene yet run its code unoptimized until the engine has compiled it, on a busy machine for
+ * seconds. From that steady pair on, rounds add up until they have taken MEASURED_MS, and
+ * together they price a sample: a single short round catches the machine's other work in a
+ * burst or a lull (at most MAX_PROBE_ROUNDS rounds in all, and after the second none begun
+ * after MAX_PROBE_MS). Figures: docs/performance.md, "Cold code".
  */
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import type { Scene } from '../scene/scene.ts';

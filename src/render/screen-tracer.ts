@@ -20,7 +20,7 @@ export const PIXELS_PER_REQUEST = 64;
  * for the 3D view's read-back, and with 2 in flight a 16 × 16 screen's third block was asked
  * for only after that wait, so its rays often missed the next frame: a drag's p95 was
  * 138–140 ms with the page composited on the CPU, 94–98 ms with 4 (the whole of such a
- * screen asked for at once; docs/benchmarks.md).
+ * screen asked for at once; docs/benchmark-log.md).
  */
 export const REQUESTS_IN_FLIGHT = 4;
 

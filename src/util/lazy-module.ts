@@ -4,7 +4,7 @@
  * stored copy, or when a newer build has replaced this page's files on the server (no retry
  * helps: only a reload does). Three tries in about four seconds cover the first case; after
  * that the page says what happened and offers a reload, instead of asking again and again
- * (an unbounded retry sent thousands of requests a second, issue 38).
+ * (an unbounded retry sent thousands of requests a second).
  */
 export const RETRY_DELAYS_MS: readonly number[] = [1000, 3000];
 

@@ -21,7 +21,7 @@ export const BURST_SCALE = 0.5;
  * (SwiftShader, llvmpipe). There a frame of the lab costs 80–105 ms at full size, about half
  * of it per pixel, so a dragged slider's rays reached the screen 0.35–0.5 s after each step.
  * Drawn at half the pixel ratio during the drag, over five paired runs the median step went
- * from 369 to 284 ms and the 95th percentile from 517 to 375 ms (docs/benchmarks.md). A
+ * from 369 to 284 ms and the 95th percentile from 517 to 375 ms (docs/benchmark-log.md). A
  * single edit stays sharp: only the second edit within BURST_GAP_MS starts the reduced
  * drawing, and BURST_GAP_MS after the last edit the view is drawn at full resolution again.
  * This is the adaptive degradation interactive viewers use (draw coarse while the user moves

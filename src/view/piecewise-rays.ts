@@ -18,7 +18,7 @@ import type { RayLayer } from './ray-layer.ts';
 /**
  * Instances (rays and cones) drawn per frame when a heavy ray layer is drawn over several
  * frames. On SwiftShader a sharp frame costs about 0.1 ms per drawn ray (three to four
- * times the coarse frame's 0.035 ms: docs/benchmarks.md, issue 38), so a piece of 400 adds
+ * times the coarse frame's 0.035 ms: docs/benchmark-log.md), so a piece of 400 adds
  * about 40 ms to a frame: an edit arriving meanwhile waits for at most that, where a frame of
  * all 108,836 rays of the free lab's largest settings held it for 6–7 s.
  */

@@ -1,11 +1,10 @@
 /**
  * A budget for the rays the lab's 3D view draws while the learner edits. On a CPU rasterizer
  * (SwiftShader, llvmpipe) every drawn ray costs fill time, and the free lab's largest
- * settings draw tens of thousands of rays: a frame of 27,784 rays took 1.5–2.7 s there and
- * one of 108,836 rays 4–11 s (docs/benchmarks.md, issue 38), so the view froze while a
- * slider moved. While the learner edits, the view draws about EDIT_RAY_BUDGET of them,
- * chosen by the rule of tracer/tree-budget.ts (whole trees, spread over the screen, the
- * chosen pixel's and every kind kept); once the edits stop, all of them
+ * settings draw tens of thousands of rays, seconds a frame there (docs/benchmark-log.md), so
+ * the view froze while a slider moved. While the learner edits, the view draws about
+ * EDIT_RAY_BUDGET of them, chosen by the rule of tracer/tree-budget.ts (whole trees, spread
+ * over the screen, the chosen pixel's and every kind kept); once the edits stop, all of them
  * (RayBudgetWhileEditing).
  */
 import type { ScreenRays } from '../render/screen-rays.ts';
@@ -18,7 +17,7 @@ import type { DrawnRays } from './ray-visibility.ts';
  * The most rays (and cones) drawn per frame while the learner edits, on a CPU rasterizer.
  * On SwiftShader a frame of the lab's view at the coarse resolution of an edit
  * (BurstResolution) cost about 20 ms plus 0.035 ms per drawn ray, the see-through ribbons'
- * fill (docs/benchmarks.md, issue 38): 1,200 rays keep it near 60 ms. Every level's own
+ * fill (docs/benchmark-log.md): 1,200 rays keep it near 60 ms. Every level's own
  * screens draw fewer (at most 957, level 18's; tests/view/ray-budget.test.ts), so a teaching
  * view is never thinned.
  */

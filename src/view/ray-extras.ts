@@ -15,7 +15,7 @@ export const RAY_STOPS_NAME = 'ray-stops';
  * What makes one pixel's rays easy to follow (issue 9: a visible direction, the chosen
  * pixel's rays in front): an arrowhead on each ray, and the parts of the rays that objects
  * hide drawn faintly through them, so a shadow ray behind the ball is still seen, and a
- * plate across the end of each blocked shadow ray where it is stopped (issue 37). All
+ * plate across the end of each blocked shadow ray where it is stopped. All
  * share the ray cylinders' instance buffers (no copy), and are drawn only for a chosen
  * pixel or the ray debugger's: on a whole screen of rays they would be clutter.
  */

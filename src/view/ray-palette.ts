@@ -89,7 +89,7 @@ export const RAY_DASHES: Readonly<Record<RayColorKey, readonly [dash: number, ga
 /**
  * Keys whose dash gaps are painted GAP_FILL instead of left open. A blocked shadow ray is grey
  * (#656565, VRT's and spec §3's), and on the grey floor of the shadow levels it all but
- * vanished (issue 37): light gaps between its grey dashes, like a barrier's stripes, stand out
+ * vanished: light gaps between its grey dashes, like a barrier's stripes, stand out
  * on a light floor and on the dark theme's background alike. The legend draws them too.
  */
 export const FILLED_GAP_KEYS: ReadonlySet<RayColorKey> = new Set(['shadow']);

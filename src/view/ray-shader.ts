@@ -10,7 +10,7 @@
  *   edges lie on either side of the axis, perpendicular to both the axis and the line of
  *   sight, so it covers what a cylinder of its radius would. An unlit ray looks the same
  *   either way, and a CPU rasterizer draws 2 long thin triangles instead of a six-sided
- *   cylinder's 6 in front (docs/benchmarks.md, ninth round);
+ *   cylinder's 6 in front (docs/benchmark-log.md, ninth round);
  * - a minimum width on screen: a ray thinner than RAY_MIN_WIDTH_PX at its depth is
  *   widened to it, so a 1 cm ray stays visible in a scene seen from 10 m (uViewHeight is the
  *   canvas height in CSS px, set before each draw);

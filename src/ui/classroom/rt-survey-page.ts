@@ -16,7 +16,7 @@ import './rt-survey.ts';
  * @fires survey-later - the learner goes back to the lab without handing in.
  */
 export class RtSurveyPage extends LocalizedElement {
-  static override properties = { surveyId: { attribute: 'survey-id' }, locale: {} };
+  static override properties = { surveyId: { attribute: 'survey-id' }, locale: {}, levels: { attribute: false } };
 
   static override styles = [
     classroomStyles,
@@ -53,12 +53,15 @@ export class RtSurveyPage extends LocalizedElement {
 
   declare surveyId: string;
   declare locale: Locale;
+  /** The assignment's levels (rt-survey.ts). */
+  declare levels: readonly string[] | null;
   private readonly focusReturn = new FocusReturn();
 
   constructor() {
     super();
     this.surveyId = 'default';
     this.locale = 'en';
+    this.levels = null;
     this.addEventListener('keydown', (event) => {
       if (event.key === 'Escape') this.later();
     });
@@ -88,7 +91,7 @@ export class RtSurveyPage extends LocalizedElement {
       <div class="bar">
         <button @click=${this.later} title=${msg('Back to the lab; the survey waits in the task column (Esc)')}>${msg('Later')}</button>
       </div>
-      <rt-survey survey-id=${this.surveyId} locale=${this.locale}></rt-survey>
+      <rt-survey survey-id=${this.surveyId} locale=${this.locale} .levels=${this.levels}></rt-survey>
     </section>`;
   }
 }

@@ -10,7 +10,7 @@ import { browserFrames, type FrameHost } from '../../view/frame-scheduler.ts';
  * moves once a frame, just before the frame's callbacks, and a value held for a callback of
  * that frame reached the store after the 3D view had drawn the frame with the old rays. On
  * a CPU rasterizer that stale frame cost 50–100 ms of drawing before the new rays could be
- * drawn (docs/benchmarks.md, ninth round). Sent at once, the edit starts its trace and the
+ * drawn (docs/benchmark-log.md, ninth round). Sent at once, the edit starts its trace and the
  * view's wait for its rays (LabView) before the frame is drawn.
  */
 export class FrameThrottle<T> {

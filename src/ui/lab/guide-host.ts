@@ -73,7 +73,7 @@ export class GuideHostController implements ReactiveController, GuideHost {
  * connect and are forgotten as they disconnect. A host kept after it left would keep its
  * whole element alive, and with it everything it rendered: each visit to the level map
  * replaces the lab's panels, and kept their old ones, about 2,000 DOM nodes and 0.32 MB
- * a visit (issue 38).
+ * a visit.
  */
 export class GuideRegistry {
   private readonly hosts = new Set<GuideHost>();

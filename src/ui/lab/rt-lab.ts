@@ -1,5 +1,5 @@
-import { issueText } from '../../i18n/issue-text.ts';
 import { msg, str } from '@lit/localize';
+import { issueText } from '../../i18n/issue-text.ts';
 import { ContextProvider } from '@lit/context';
 import { html, nothing, type PropertyValues } from 'lit';
 import { LocalizedElement } from '../controls/localized-element.ts';
@@ -7,6 +7,7 @@ import { LabServices, type LoadProblem } from '../../app/lab-services.ts';
 import { labLoadProblems, withProblem } from './lab-load-problem.ts';
 import type { ShowMeStage } from '../../app/show-me-player.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
+import { consentText } from '../../classroom/consent-text.ts';
 import type { LabState } from '../../lab-state/lab-state.ts';
 import type { Store } from '../../lab-state/store.ts';
 import { type UiPanel, guideIds } from '../../quest/lab-controls.ts';
@@ -30,6 +31,7 @@ import { levelPanels } from './level-panels.ts';
 import { labSidebar } from './lab-sidebar.ts';
 import { viewLegendBox } from './view-legend.ts';
 import { sideSwitch } from './side-switch.ts';
+import { conceptTestPage } from './concept-test-page.ts';
 import { surveyPage } from './survey-page.ts';
 import { QuestController } from './quest-controller.ts';
 import type { RtRenderWindow } from './render-window/rt-render-window.ts';
@@ -37,7 +39,7 @@ import type { RtSceneView } from './rt-scene-view.ts';
 import { storeContext } from './store-context.ts';
 import { quizPictureDrawer } from './quiz-picture-drawer.ts';
 import { quizPicturesContext } from '../game/quiz-pictures.ts';
-import { ON_DEMAND_PANELS } from './lab-elements.ts';
+import { loadAfterFirstScreen, ON_DEMAND_PANELS } from './lab-elements.ts';
 import { ViewCoverController } from './view-cover.ts';
 import { PreviewPlaceController } from './preview-place.ts';
 import { boxesOverlap, type GuideAndLook, renderWindowInTheWay } from './render-window/render-window-in-the-way.ts';
@@ -45,18 +47,16 @@ import { boxesOverlap, type GuideAndLook, renderWindowInTheWay } from './render-
 export { FREE_LAB_HASH } from './quest-controller.ts';
 
 /**
- * @summary The lab and the game in it: the 3D view in the centre, editing panels on the
- * left, the level's tasks on the right, the render window over the view, the level map
- * over all. Layout only: the services (store, pools, screen tracer, ray pool) are a
- * LabServices, the game a QuestController, the hint ring a GuideRingDriver. The store
- * reaches the elements inside through `storeContext`. A level shows only the panels and
- * controls it lists; the free lab shows them all.
+ * @summary The lab and the game in it: the 3D view in the centre, editing panels on the left,
+ * the level's tasks on the right, the render window over the view, the level map over all.
+ * Layout only: the services (store, pools, screen tracer, ray pool) are a LabServices, the
+ * game a QuestController, the hint ring a GuideRingDriver. The store reaches the elements
+ * inside through `storeContext`. A level shows only the panels and controls it lists.
  *
  * `assignment`: a teacher's assignment (set before the lab connects, by the router);
- * `sharedScene`: a scene from a shared link (#/s/…), opened in the free lab.
- *
- * For tests and tools: `store`, `guideRect(target)` and `guideElements(target)` (where the
- * hint ring would go for a guide target, and the elements that carry it).
+ * `sharedScene`: a scene from a shared link (#/s/…), opened in the free lab. For tests and
+ * tools: `store`, `guideRect(target)` and `guideElements(target)` (where the hint ring
+ * would go for a guide target, and the elements that carry it).
  */
 export class RtLab extends LocalizedElement {
   static override properties = {
@@ -147,6 +147,7 @@ export class RtLab extends LocalizedElement {
       this.storeProvider.setValue(this.services.store);
     }
     super.connectedCallback();
+    loadAfterFirstScreen(this);
     this.cleanup.push(
       this.services.subscribe(() => this.requestUpdate()),
       this.store.subscribe(() => this.requestUpdate()),
@@ -378,11 +379,11 @@ export class RtLab extends LocalizedElement {
           ></rt-level-map>`
           : nothing
       }
-      ${this.renderOpen ? nothing : surveyPage(this.game, this.assignment)}
+      ${this.renderOpen ? nothing : [conceptTestPage(this.game, (text, tone) => this.toast(text, tone)), surveyPage(this.game, this.assignment)]}
       <rt-guide-ring .locate=${this.ring.locate}></rt-guide-ring>
       ${
         session?.needsParticipantCode
-          ? html`<rt-participant-dialog heading=${this.assignment?.title ?? ''} note=${this.game.contextNote} @participant-code=${(event: CustomEvent<string>) => session.setParticipantCode(event.detail)}></rt-participant-dialog>`
+          ? html`<rt-participant-dialog heading=${this.assignment?.title ?? ''} consent=${consentText(this.assignment)} note=${this.game.contextNote} @participant-code=${(event: CustomEvent<string>) => session.setParticipantCode(event.detail)}></rt-participant-dialog>`
           : nothing
       }
     `;

@@ -84,7 +84,7 @@ export class RtScreenPreview extends StorePanel<'screen-preview'> {
       }
       /* The caption wraps inside the grid's width and never widens the card: a wider card
          would enlarge every cell, and choosing a pixel (a longer caption with its button)
-         would grow the preview over the very rays it shows (issue 37). */
+         would grow the preview over the very rays it shows. */
       .caption {
         contain: inline-size;
         display: flex;

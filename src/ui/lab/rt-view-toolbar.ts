@@ -50,7 +50,7 @@ export class RtViewToolbar extends LocalizedElement {
       font-size: 0.8125rem;
       color: var(--rt-text);
       /* A drag that starts on a pad (pressed and held, then moved) would otherwise select the
-         page's text, and the selection stayed on across levels (issue 37). */
+         page's text, and the selection stayed on across levels. */
       -webkit-user-select: none;
       user-select: none;
     }
@@ -88,7 +88,7 @@ export class RtViewToolbar extends LocalizedElement {
       border-radius: 10px;
       /* Nearly opaque, with no backdrop blur: a blurred group is blurred again from the 3D
          view under it at every frame the view draws, and on a CPU compositor (SwiftShader)
-         the six groups' blur cost 18 ms of a 116 ms frame (docs/benchmarks.md, ninth round). */
+         the six groups' blur cost 18 ms of a 116 ms frame (docs/benchmark-log.md, ninth round). */
       background: color-mix(in srgb, var(--rt-surface) 94%, transparent);
       box-shadow: 0 2px 8px rgb(0 0 0 / 0.12);
     }

@@ -4,7 +4,7 @@ import type { RayTests } from '../../../tracer/triangle-test-count.ts';
 
 /**
  * The sentences of the acceleration panel's "This ray’s tests": what one pixel's ray tested,
- * said so that no two lines contradict each other (issue 37 item 6).
+ * said so that no two lines contradict each other.
  */
 
 const NUMBER = localNumbers();

@@ -20,7 +20,7 @@ export interface FinishedImage {
  * the image; the image and a saved PNG are untouched. It stays on across renders of one scene,
  * and goes off when another scene is loaded (a new level, the free lab, a scene file): it
  * belongs to the banding level's question, and stretched it misled the next level's first
- * render (issue 37).
+ * render.
  */
 export class ContrastToggle implements ReactiveController {
   on = false;

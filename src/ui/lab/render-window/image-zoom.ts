@@ -93,7 +93,7 @@ export function sameView(a: CanvasView, b: CanvasView | null): boolean {
  * The canvas size that shows an `image` in a box of `shown` CSS pixels: one canvas pixel per
  * device pixel of the box, never more than the image's own pixels. A canvas as large as a
  * 4096² image cost the page 40 ms to size and 56–260 ms per changed frame for a compositor
- * on the CPU to copy (docs/benchmarks.md, eighteenth round).
+ * on the CPU to copy (docs/benchmark-log.md, eighteenth round).
  */
 export function canvasSizeFor(image: Size, shown: Size, devicePixelRatio: number): Size {
   const side = (own: number, onScreen: number) => Math.min(own, Math.max(1, Math.round(onScreen * devicePixelRatio)));

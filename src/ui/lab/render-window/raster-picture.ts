@@ -37,7 +37,7 @@ export function takeRasterPicture(snapshot: RasterSnapshot | undefined, width: n
  * Settles once the picture is read back (or has failed), or after RASTER_WAIT_MS. The render's
  * workers start then: the read-back ends in a synchronous round trip to the GPU process, which
  * on a software GPU with both cores tracing waited 100–250 ms behind the GPU process's frames,
- * the page frozen meanwhile (docs/benchmarks.md, fifteenth round).
+ * the page frozen meanwhile (docs/benchmark-log.md, fifteenth round).
  */
 export function readBackOrWait(pixels: Promise<ImageData>): Promise<unknown> {
   const waited = new Promise<void>((resolve) => setTimeout(resolve, RASTER_WAIT_MS));
