@@ -34,7 +34,6 @@ const MAX_FILE_LINES = 500;
 const ALLOWED_LONG_FILES: Record<string, string> = {
   'quest/quest-engine.ts':
     'the game rules as one state machine: every event moves tasks, hints, predictions, badges and timing together; the pure rules live beside it (prediction-stage.ts, goal-check.ts)',
-  'view/lab-view.ts': 'the three.js view: renderer, input, picking, framing; issue 39 item 3 splits it',
   'render/render-pool.ts': 'the worker pool: scheduling, the watchdog and recovery read and change one job state, whose cancellation contract its tests pin',
   'view/ray-pool.ts': 'the instanced rays, cones and arrows write one shared buffer layout; apart, each would restate its offsets',
 };
