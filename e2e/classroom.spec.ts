@@ -49,7 +49,7 @@ async function buildAssignment(page: Page): Promise<string> {
   const url = await linkFor(teacher, { levels: ['01-introduction', '02-rays-from-the-camera'], askParticipantCode: true, survey: 'default' });
   await expect(teacher.getByRole('img', { name: 'QR code of the assignment link' })).toBeVisible();
   await teacher.getByRole('button', { name: 'Copy link' }).click();
-  await expect(teacher.getByRole('status')).toHaveText(/copied|Ctrl\+C/);
+  await expect(teacher.locator('section[aria-labelledby="result-heading"]').getByRole('status')).toHaveText(/copied|Ctrl\+C/);
   await expect(teacher.getByRole('link', { name: 'Open as a student' })).toHaveAttribute('href', url);
   return url;
 }

@@ -1,13 +1,14 @@
 import { msg } from '@lit/localize';
 import { css, html, LitElement, nothing } from 'lit';
 import { PARTICIPANT_CODE } from '../../classroom/learner-identity.ts';
+import { normalParticipantCode } from '../../classroom/participant-code.ts';
 import { fire, gameStyles } from './game-styles.ts';
 
 /**
  * @summary Asks for the participant code a research study hands out, before the first
  * level of an assignment. Friendly, one field, checked as typed.
  *
- * @fires participant-code - CustomEvent<string>: the code, trimmed.
+ * @fires participant-code - CustomEvent<string>: the code, trimmed and in capitals (participant-code.ts).
  */
 export class RtParticipantDialog extends LitElement {
   static override properties = { heading: {}, note: {}, problem: { state: true } };
@@ -73,7 +74,8 @@ export class RtParticipantDialog extends LitElement {
 
   private submit(event: Event): void {
     event.preventDefault();
-    const code = this.renderRoot.querySelector<HTMLInputElement>('input[name=code]')?.value.trim() ?? '';
+    // In capitals, as handed out: `5h2-03` typed is the same learner as `5H2-03`.
+    const code = normalParticipantCode(this.renderRoot.querySelector<HTMLInputElement>('input[name=code]')?.value ?? '');
     if (!PARTICIPANT_CODE.test(code)) {
       this.problem = msg('Use letters, digits, - or _ (up to 32), as on the code you were given.');
       return;

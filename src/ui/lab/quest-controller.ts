@@ -14,7 +14,7 @@ import { contextDamageText, placesOf, progressProblemText, saveProblemReason, sa
 import { localNumbers } from '../../i18n/number-format.ts';
 import { shortList } from '../../i18n/short-list.ts';
 import type { Store } from '../../lab-state/store.ts';
-import { refusingStorage, type KeyValueStorage } from '../../quest/saved-backups.ts';
+import { MemoryStorage, refusingStorage, type KeyValueStorage } from '../../quest/saved-backups.ts';
 import type { Scene } from '../../scene/scene.ts';
 import { downloadText } from '../../util/download-file.ts';
 import type { QuestCommand } from '../game/quest-command.ts';
@@ -102,7 +102,8 @@ export class QuestController implements ReactiveController {
   start(): void {
     this.stop();
     const catalog = loadBrowserCatalog();
-    const storage = browserStorage();
+    // A teacher's preview of a level (the lab's `preview` attribute, classroom/level-preview.ts) keeps nothing.
+    const storage = this.host.hasAttribute('preview') ? new MemoryStorage() : browserStorage();
     const session = new QuestSession({ store: this.host.store, catalog, storage, assignment: this.host.assignment });
     this.session = session;
     // The level texts speak the app's language (an address's ?lang= or the menu's choice may differ from the saved one).
