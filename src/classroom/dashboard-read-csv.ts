@@ -58,6 +58,8 @@ export function readCsvExport(file: string, text: string): FileRead {
       assignment: owner.assignment,
       assignmentId: owner.assignmentId,
       classCode: owner.classCode,
+      appVersion: owner.appVersion,
+      utcOffsetMin: owner.utcOffsetMin,
       attempts,
       visits: [],
       survey: surveyOf(owner.surveyId, names, first),

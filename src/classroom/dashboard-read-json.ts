@@ -62,6 +62,8 @@ export function readJsonExport(file: string, text: string): FileRead {
       // An older export's log is still one playthrough: its start time tells it apart.
       attemptId: learner('attemptId') || `log:${assignment.assignmentId}:${participant}:${log.data.startedAt}`,
       installId: learner('installId'),
+      appVersion: typeof value.appVersion === 'string' ? value.appVersion : '',
+      utcOffsetMin: typeof value.utcOffsetMin === 'number' ? String(value.utcOffsetMin) : '',
       ...assignment,
       attempts,
       visits,

@@ -24,6 +24,10 @@ export interface ClassRecord {
   assignmentId: string;
   /** The assignment's class code, or ''. */
   classCode: string;
+  /** The version of the app that wrote the file, or '' when the file does not say. */
+  appVersion: string;
+  /** The device's minutes ahead of UTC when the file was made, or '' when the file does not say. */
+  utcOffsetMin: string;
   attempts: TaskAttempt[];
   /** Level visits; empty for a CSV export, which has no level events. */
   visits: LevelVisit[];

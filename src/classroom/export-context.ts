@@ -4,6 +4,7 @@ import type { Assignment } from './assignment.ts';
 import { assignmentId } from './assignment-id.ts';
 import type { AttemptOwner } from './attempt-columns.ts';
 import { learnerId } from './learner-identity.ts';
+import type { OptionText } from './quiz-options.ts';
 import type { SurveySubmission } from './survey-answers.ts';
 
 /**
@@ -25,6 +26,14 @@ export interface ExportInput {
   exportedAt: string;
   /** The app's version (package.json), so that a researcher knows which game produced the data. */
   appVersion: string;
+  /**
+   * Minutes the device's clock is ahead of UTC at the download (`-new Date().getTimezoneOffset()`:
+   * 60 in Dutch winter time, 120 in summer), so that UTC times can be read as the pupil's
+   * clock showed them; absent when unknown.
+   */
+  utcOffsetMin?: number;
+  /** The texts of quiz options in the export's language (quiz-options.ts); without it the text columns stay empty. */
+  optionText?: OptionText;
 }
 
 /** The app's version, from package.json (vite and Node both import JSON). */
@@ -46,6 +55,8 @@ export function exportOwner(input: ExportInput): AttemptOwner {
     assignment: title ?? '',
     assignmentId: id ?? '',
     classCode: input.assignment?.classCode ?? '',
+    appVersion: input.appVersion,
+    utcOffsetMin: input.utcOffsetMin === undefined ? '' : String(input.utcOffsetMin),
     survey: input.survey && { id: input.survey.survey, answers: input.survey.answers },
   };
 }

@@ -20,6 +20,8 @@ const owner: AttemptOwner = {
   assignment: 'Lesson 5',
   assignmentId: 'a6a6a6a6',
   classCode: 'class-7',
+  appVersion: '8.9.10',
+  utcOffsetMin: '-330',
   survey: { id: 'default', answers: { ease: 3, 'computer-skill': 'often' } },
 };
 
@@ -40,6 +42,8 @@ const attempts: TaskAttempt[] = [
     hintsOffered: 6,
     quizAnswers: 7,
     quizCorrect: false,
+    quizChoice: null,
+    explanationOpens: 8,
   },
   {
     level: '02-shadows',
@@ -57,11 +61,17 @@ const attempts: TaskAttempt[] = [
     hintsOffered: 16,
     quizAnswers: 17,
     quizCorrect: true,
+    quizChoice: 2,
+    explanationOpens: 18,
   },
 ];
 
 const questions = ['ease', 'computer-skill'];
-const text = csvTable(csvHeader(questions), attemptRows(owner, attempts, questions), ID_COLUMNS);
+const text = csvTable(
+  csvHeader(questions),
+  attemptRows(owner, attempts, questions, (level, task, position) => `${level} ${task} option ${position}`),
+  ID_COLUMNS,
+);
 
 describe('the CSV column table', () => {
   it('gives every column values no other column has, so the round trip below can tell them apart', () => {
@@ -86,6 +96,8 @@ describe('the CSV column table', () => {
       assignment: owner.assignment,
       assignmentId: owner.assignmentId,
       classCode: owner.classCode,
+      appVersion: owner.appVersion,
+      utcOffsetMin: owner.utcOffsetMin,
       visits: [],
     });
     expect(survey).toEqual(owner.survey);
@@ -100,6 +112,9 @@ describe('the CSV column table', () => {
     expect([cell(0, 'hints_opened'), cell(1, 'hints_opened')]).toEqual(['9', '29']);
     expect([cell(0, 'shown_by_app'), cell(1, 'shown_by_app')]).toEqual(['true', 'false']);
     expect([cell(0, 'attempts'), cell(1, 'attempts')]).toEqual(['1', '1']);
+    // The third option in the level file is "c"; its text comes from the level files.
+    expect([cell(0, 'quiz_choice'), cell(1, 'quiz_choice')]).toEqual(['', 'c']);
+    expect([cell(0, 'quiz_choice_text'), cell(1, 'quiz_choice_text')]).toEqual(['', '02-shadows predict option 2']);
   });
 
   it('is what docs/classroom.md lists, in the same order, each with what it holds', () => {

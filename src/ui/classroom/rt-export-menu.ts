@@ -1,6 +1,9 @@
 import { msg, str } from '@lit/localize';
 import { css, html, LitElement } from 'lit';
+import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
+import { choiceQuestions, optionTexts } from '../../classroom/quiz-options.ts';
+import { playableLevels } from '../../quest/level-index.ts';
 import { downloadText } from '../../util/download-file.ts';
 import { exportFileName } from '../../classroom/export-file-name.ts';
 import { APP_VERSION, type ExportInput } from '../../classroom/export-context.ts';
@@ -98,6 +101,9 @@ export class RtExportMenu extends LitElement {
       survey: this.survey,
       exportedAt,
       appVersion: APP_VERSION,
+      utcOffsetMin: -new Date(exportedAt).getTimezoneOffset(),
+      // The options' texts in the language the levels are loaded in: the one the learner played in.
+      optionText: optionTexts(choiceQuestions(playableLevels(loadBrowserCatalog()), this.assignment?.locale ?? progress.settings.locale)),
     };
     const file = FILES[format];
     return { name: exportFileName(this.participant, exportedAt, file.extension), text: file.text(input), type: file.type };

@@ -5,7 +5,7 @@ import { combinedCsv, readClassFiles, surveyCsv, type ClassFiles, type DroppedFi
 import { assignmentsOf, classCodesOf, classLearners, filterLearners, type ClassLearner, type LearnerFilter } from '../../../classroom/dashboard-learners.ts';
 import { MAX_EXPORT_BYTES } from '../../../classroom/dashboard-read-file.ts';
 import type { SkippedFile } from '../../../classroom/dashboard-record.ts';
-import { learnerInLevel, summarizeLevels, type LevelSummary } from '../../../classroom/dashboard-summary.ts';
+import { isOptionalTask, learnerInLevel, summarizeLevels, type LevelSummary } from '../../../classroom/dashboard-summary.ts';
 import { stickingPoints, STUCK_MIN_LEARNERS, STUCK_MIN_SHARE, STUCK_TIMES_TYPICAL } from '../../../classroom/dashboard-stuck.ts';
 import { summarizeSurveys, type SurveysSummary } from '../../../classroom/dashboard-survey.ts';
 import { downloadText } from '../../../util/download-file.ts';
@@ -23,6 +23,9 @@ import './rt-dashboard-stuck.ts';
 import './rt-dashboard-survey.ts';
 import './rt-dashboard-times.ts';
 import '../../controls/rt-theme-toggle.ts';
+import './rt-dashboard-quiz.ts';
+import { researchDownloads } from './dashboard-research-files.ts';
+import { summarizeQuizzes, type QuizSummary } from '../../../classroom/dashboard-quiz.ts';
 
 /** Level and task titles by id, for labels; an id the app does not know is shown as it is. */
 function levelNames(locale: Locale) {
@@ -71,6 +74,7 @@ export class RtDashboardPage extends LitElement {
   private shown: ClassLearner[] = [];
   private levels: LevelSummary[] = [];
   private surveys: SurveysSummary = { surveys: [], unknown: [] };
+  private quizzes: QuizSummary[] = [];
 
   constructor() {
     super();
@@ -89,6 +93,8 @@ export class RtDashboardPage extends LitElement {
       this.levels = summarizeLevels(this.shown);
       this.surveys = summarizeSurveys(this.shown, surveyById);
     }
+    if (changed.has('files') || changed.has('filter') || changed.has('locale'))
+      this.quizzes = summarizeQuizzes(this.shown, researchDownloads.questions(this.locale));
   }
 
   /** Reads dropped or chosen files and adds them to the class (public: tests and other pages may call it). */
@@ -134,7 +140,7 @@ export class RtDashboardPage extends LitElement {
 
   private downloadCsv(kind: 'class' | 'survey'): void {
     const date = new Date().toISOString().slice(0, 10);
-    const text = kind === 'class' ? combinedCsv(this.shown, surveyById) : surveyCsv(this.shown, surveyById);
+    const text = kind === 'class' ? combinedCsv(this.shown, surveyById, researchDownloads.optionText(this.locale)) : surveyCsv(this.shown, surveyById);
     downloadText(`\uFEFF${text}`, `ray-tracer-quest-${kind}-${date}.csv`, 'text/csv;charset=utf-8');
   }
 
@@ -234,6 +240,12 @@ export class RtDashboardPage extends LitElement {
             <button type="button" ?disabled=${!this.shown.some((learner) => learner.survey)} @click=${() => this.downloadCsv('survey')} title=${msg('One row per learner shown who answered the survey, one column per question')}>
               ${msg('Download survey CSV')}
             </button>
+            <button type="button" ?disabled=${this.shown.length === 0} @click=${() => researchDownloads.learnerLevels(this.shown, this.levels)} title=${msg('One row per learner and level: time, passed, tasks, hints, quiz answers')}>
+              ${msg('Download learner × level CSV')}
+            </button>
+            <button type="button" @click=${() => researchDownloads.codebook(this.locale)} title=${msg('What every column, quiz option and survey answer in the downloads means')}>
+              ${msg('Download codebook')}
+            </button>
             <button type="button" ?disabled=${records.length + skipped.length === 0} @click=${this.clear} title=${msg('Forget the files read so far and start again')}>
               ${msg('Clear')}
             </button>
@@ -287,7 +299,7 @@ export class RtDashboardPage extends LitElement {
     const stuck = stickingPoints(level.tasks);
     const rows = level.tasks.map((task) => ({
       ...task,
-      label: task.mandatory ? names.task(level.level, task.task) : msg(str`${names.task(level.level, task.task)} (optional)`),
+      label: isOptionalTask(task) ? msg(str`${names.task(level.level, task.task)} (optional)`) : names.task(level.level, task.task),
     }));
     return html`<section class="level" data-level=${level.level} aria-label=${title}>
       <h2>${title}</h2>
@@ -313,6 +325,7 @@ export class RtDashboardPage extends LitElement {
       ></rt-dashboard-times>
       <h3>${msg('Completion')}</h3>
       <rt-dashboard-completion .rows=${rows} caption=${msg(str`Completion per task in ${title}`)}></rt-dashboard-completion>
+      ${this.renderQuizzes(level.level, title)}
       <h3>${msg('Where learners got stuck')}</h3>
       <p class="rule">${stuckRule()}</p>
       <rt-dashboard-stuck
@@ -320,6 +333,13 @@ export class RtDashboardPage extends LitElement {
         caption=${msg(str`Hints, "show me" and times per task in ${title}`)}
       ></rt-dashboard-stuck>
     </section>`;
+  }
+
+  private renderQuizzes(levelId: string, title: string) {
+    const quizzes = this.quizzes.filter((quiz) => quiz.level === levelId);
+    if (quizzes.length === 0) return nothing;
+    return html`<h3>${msg('Quiz answers')}</h3>
+      <rt-dashboard-quiz .rows=${quizzes} caption=${msg(str`Answers per quiz question in ${title}`)}></rt-dashboard-quiz>`;
   }
 
   private renderSurveys() {
