@@ -24,6 +24,7 @@ import { levelItem, minutesText } from './teacher-level-item.ts';
 import { afterLessonSection, optional, researchSection, settingsSection } from './teacher-sections.ts';
 import type { ShelfRequest } from './rt-teacher-shelf.ts';
 import '../controls/rt-theme-toggle.ts';
+import './rt-scorm-download.ts';
 import './rt-teacher-handout.ts';
 import './rt-teacher-shelf.ts';
 
@@ -362,6 +363,7 @@ export class RtTeacherPage extends LitElement {
             </div>
             ${this.qr ? html`<img class="qr" src=${this.qr} alt=${msg('QR code of the assignment link')} />` : nothing}
             <p class="muted">${msg("Show the QR code on the projector; students scan it or type the link. Progress stays in each student's browser.")}</p>
+            <rt-scorm-download .link=${this.stale ? null : this.url} .assignmentTitle=${this.assignment.title.trim()}></rt-scorm-download>
             <p><a href=${this.url ? teacherLinkHash(this.url.replace(/^[^#]*/, '')) : '#/teacher'}>${msg('This form, to bookmark or open in another browser')}</a></p>
           `
       }

@@ -4,6 +4,7 @@ import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import { levelTextsLocale, loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
 import { damagedSaveFileName } from '../../app/damaged-saves.ts';
 import { QuestSession } from '../../app/quest-session.ts';
+import { followInLearningPlatform } from '../../app/learning-platform.ts';
 import type { SaveProblemKind } from '../../quest/progress-store.ts';
 import type { ShowMeStage } from '../../app/show-me-player.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
@@ -111,6 +112,7 @@ export class QuestController implements ReactiveController {
     this.cleanup.push(
       session.subscribe(() => this.changed()),
       session.attach(document),
+      followInLearningPlatform(session, window),
       () => session.dispose(),
     );
     const damage = session.contextDamage;
