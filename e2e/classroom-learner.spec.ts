@@ -40,6 +40,9 @@ test('one student hands in four files: the dashboard shows one learner who passe
 
   // The code dialog stays open for 10 s: nothing is timed yet.
   const dialog = page.locator('rt-participant-dialog');
+  // First what is recorded and that taking part is voluntary; the code only after "I understand".
+  await expect(dialog.getByText('Taking part is voluntary.')).toBeVisible();
+  await dialog.getByRole('button', { name: 'I understand, start' }).click();
   await expect(dialog.getByRole('textbox', { name: 'Participant code' })).toBeVisible();
   await page.waitForTimeout(CODE_WAIT_MS);
   await dialog.getByRole('textbox', { name: 'Participant code' }).fill('007');
@@ -51,17 +54,17 @@ test('one student hands in four files: the dashboard shows one learner who passe
   await page.getByRole('button', { name: 'Got it' }).click();
 
   await playLevel1UpToTheRayTracer(page);
-  const midway = await download(page, 'Download JSON');
+  const midway = await download(page, 'Download results file');
   await page.reload();
   await expect(page.locator('rt-task-card[status="current"]')).toContainText('Open the ray tracer');
-  const afterReload = await download(page, 'Download JSON');
+  const afterReload = await download(page, 'Download results file');
   await renderFirstImage(page);
   await closeRenderWindow(page);
   const survey = page.locator('rt-lab rt-survey');
   await answerDefaultSurvey(survey, '12');
   await survey.getByRole('button', { name: 'Hand in' }).click();
   await expect(survey).toHaveCount(0);
-  const finalJson = await download(page, 'Download JSON');
+  const finalJson = await download(page, 'Download results file');
   const finalCsv = await download(page, 'Download CSV');
 
   // The CSV: the first task timed from the code, the survey in its own columns, the code kept as text.

@@ -74,6 +74,7 @@ test('a teacher builds an assignment; a student opens its link and enters a code
   expect((assignment as { requiredTasks: Record<string, string[]> }).requiredTasks['01-introduction']).toContain('pan');
 
   const dialog = page.locator('rt-participant-dialog');
+  await dialog.getByRole('button', { name: 'I understand, start' }).click();
   await expect(dialog.getByRole('textbox', { name: 'Participant code' })).toBeVisible();
   await dialog.getByRole('textbox', { name: 'Participant code' }).fill('P-07');
   await dialog.getByRole('button', { name: 'Start' }).click();
@@ -179,6 +180,7 @@ test('a student plays a one-level assignment, answers the survey and downloads C
   // The student: the link, a code, the level to its end.
   await page.goto(url);
   const dialog = page.locator('rt-participant-dialog');
+  await dialog.getByRole('button', { name: 'I understand, start' }).click();
   await dialog.getByRole('textbox', { name: 'Participant code' }).fill('P-07');
   await dialog.getByRole('button', { name: 'Start' }).click();
   await expect(dialog.getByRole('textbox', { name: 'Participant code' })).toBeHidden();
@@ -197,10 +199,10 @@ test('a student plays a one-level assignment, answers the survey and downloads C
   await expect(page.locator('rt-quest-panel').getByText('Level complete!')).toBeVisible();
 
   const csv = await download(page, 'Download CSV');
-  const json = await download(page, 'Download JSON');
+  const json = await download(page, 'Download results file');
   const xapi = await download(page, 'Download xAPI');
   const wallMs = Date.now() - began;
-  expect(csv.name).toMatch(/^ray-tracer-quest-P-07-\d{4}-\d\d-\d\d-\d\d-\d\d-\d\d\.csv$/);
+  expect(csv.name).toMatch(/^ray-tracer-quest-P-07-([A-Za-z0-9-]+-)?\d{4}-\d\d-\d\d-\d\dh\d\d-local\.csv$/);
   expect(json.name).toMatch(/^ray-tracer-quest-P-07-.+\.json$/);
   expect(xapi.name).toMatch(/^ray-tracer-quest-P-07-.+\.xapi\.json$/);
   const inTest = (iso: string) => Date.parse(iso) >= began - 1000 && Date.parse(iso) <= began + wallMs + 1000;

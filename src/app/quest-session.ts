@@ -297,6 +297,9 @@ export class QuestSession {
     return problem;
   }
 
+  /** Saves nothing any more, so that data just deleted (withdraw-data.ts) does not come back before the page starts again. */
+  readonly stopSaving = (): void => void (this.save = () => null);
+
   /** The closing survey's answers: kept, and written now or at a later save. Null when written, else why not (yet). */
   submitSurvey(answers: SurveySubmission): SaveProblemKind | null {
     this.surveyNow = answers;

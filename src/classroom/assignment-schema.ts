@@ -15,6 +15,9 @@ export const LEVELS_MAX = 100;
 /** A class code is a short label like a participant code ("3B", "group-2"). */
 export const CLASS_CODE = /^[\p{L}\p{N}_-]{1,32}$/u;
 
+/** A page of text: room for what is recorded, who sees it, and how to withdraw; short enough for a link. */
+export const CONSENT_MAX = 2000;
+
 /** Far more tasks than a level has; it only stops absurd links. */
 export const TASKS_MAX = 100;
 
@@ -33,6 +36,8 @@ export const assignmentSchema = z
       .url({ protocol: /^https?$/, error: 'must be a web address that starts with http:// or https://' })
       .max(200)
       .optional(),
+    // Added later: an older link has none and opens as before, so the format's version stays 1.
+    consent: z.string().trim().min(1).max(CONSENT_MAX).optional(),
   })
   .superRefine((assignment, context) => {
     assignment.levels.forEach((id, index) => {

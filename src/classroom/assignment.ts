@@ -22,4 +22,9 @@ export interface Assignment {
   classCode?: string;
   /** The school's own address for xAPI accounts (actor.account.homePage), so that code "P-07" of two schools are two people. */
   xapiHomePage?: string;
+  /**
+   * The information pupils read before they type their participant code and start
+   * (consent-text.ts); absent: the app's default text, in the pupil's language.
+   */
+  consent?: string;
 }

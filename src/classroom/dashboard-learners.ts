@@ -1,3 +1,4 @@
+import { codeKey } from './dashboard-class-list.ts';
 import type { ClassRecord } from './dashboard-record.ts';
 
 /**
@@ -9,7 +10,7 @@ import type { ClassRecord } from './dashboard-record.ts';
  * (never added up). A log only grows, so "most complete" is the one with the most finished
  * task attempts, then the most attempts, then the latest moment; on a tie a JSON export
  * (which also has the level visits) beats a CSV export. A learner's playthroughs (the same
- * learner id in the same assignment: say, after "start again") are then joined, in the
+ * learner id in the same assignment, whatever its case: say, after "start again") are then joined, in the
  * order they were played, so the learner is counted once with all their attempts.
  */
 export interface ClassLearner extends ClassRecord {
@@ -56,7 +57,8 @@ export function classLearners(records: readonly ClassRecord[]): ClassLearner[] {
       null;
     return { kept: { ...kept, survey }, files: copies.map((copy) => copy.file) };
   });
-  return groupBy(playthroughs, ({ kept }) => `${kept.assignmentId}\u0000${kept.learnerId}`).map((group) => {
+  // Codes are typed by pupils: "5h2-03" and "5H2-03" are one learner.
+  return groupBy(playthroughs, ({ kept }) => `${kept.assignmentId}\u0000${codeKey(kept.learnerId)}`).map((group) => {
     const parts = group.map(({ kept }) => kept).sort((a, b) => firstMoment(a) - firstMoment(b));
     const latest = parts.at(-1)!;
     return {

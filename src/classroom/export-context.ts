@@ -15,7 +15,7 @@ export interface ExportInput {
   progress: Progress;
   /** The code the learner typed at the start, or null when none was asked. */
   participant: string | null;
-  /** This browser's random id (learner-identity.ts). */
+  /** This browser's random id (learner-identity.ts), or '' when the learner has a participant code. */
   installId: string;
   /** This playthrough's random id: the same in every file exported from one progress. */
   attemptId: string;

@@ -24,6 +24,7 @@ import { levelItem, minutesText } from './teacher-level-item.ts';
 import { afterLessonSection, optional, researchSection, settingsSection } from './teacher-sections.ts';
 import type { ShelfRequest } from './rt-teacher-shelf.ts';
 import '../controls/rt-theme-toggle.ts';
+import { consentSection } from './teacher-consent-section.ts';
 import './rt-scorm-download.ts';
 import './rt-teacher-handout.ts';
 import './rt-teacher-shelf.ts';
@@ -262,7 +263,7 @@ export class RtTeacherPage extends LitElement {
         <rt-theme-toggle></rt-theme-toggle>
       </header>
       <main>
-        <div class="form">${this.renderKept()} ${this.renderTitle()} ${this.renderLevels()} ${settingsSection(this.assignment, this.changer)} ${researchSection(this.assignment, this.changer)}</div>
+        <div class="form">${this.renderKept()} ${this.renderTitle()} ${this.renderLevels()} ${settingsSection(this.assignment, this.changer)} ${researchSection(this.assignment, this.changer)} ${consentSection(this.assignment, (consent) => this.change({ consent }))}</div>
         <div class="result">${this.renderLink()} ${this.renderHandout()} ${afterLessonSection()}</div>
       </main>
     `;

@@ -5,6 +5,7 @@ import { levelTextsLocale, loadBrowserCatalog } from '../../app/level-catalog-br
 import { damagedSaveFileName } from '../../app/damaged-saves.ts';
 import { QuestSession } from '../../app/quest-session.ts';
 import { followInLearningPlatform } from '../../app/learning-platform.ts';
+import { deleteAssignmentData } from '../../app/withdraw-data.ts';
 import type { SaveProblemKind } from '../../quest/progress-store.ts';
 import type { ShowMeStage } from '../../app/show-me-player.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
@@ -287,6 +288,9 @@ export class QuestController implements ReactiveController {
         session.flush();
         return this.changed();
       }
+      case 'withdraw':
+        session.stopSaving();
+        return command.done(deleteAssignmentData(browserStorage(), session.progressKey));
       case 'damaged-restore':
         return this.restored(session, command.key);
       case 'damaged-delete':

@@ -5,6 +5,7 @@ import { LabServices, type LoadProblem } from '../../app/lab-services.ts';
 import { labLoadProblems, withProblem } from './lab-load-problem.ts';
 import type { ShowMeStage } from '../../app/show-me-player.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
+import { consentText } from '../../classroom/consent-text.ts';
 import type { LabState } from '../../lab-state/lab-state.ts';
 import type { Store } from '../../lab-state/store.ts';
 import { type UiPanel, guideIds } from '../../quest/lab-controls.ts';
@@ -380,7 +381,7 @@ export class RtLab extends LitElement {
       <rt-guide-ring .locate=${this.ring.locate}></rt-guide-ring>
       ${
         session?.needsParticipantCode
-          ? html`<rt-participant-dialog heading=${this.assignment?.title ?? ''} note=${this.game.contextNote} @participant-code=${(event: CustomEvent<string>) => session.setParticipantCode(event.detail)}></rt-participant-dialog>`
+          ? html`<rt-participant-dialog heading=${this.assignment?.title ?? ''} consent=${consentText(this.assignment)} note=${this.game.contextNote} @participant-code=${(event: CustomEvent<string>) => session.setParticipantCode(event.detail)}></rt-participant-dialog>`
           : nothing
       }
     `;
