@@ -107,7 +107,7 @@ test('the survey says what is missing and hands in the answers', async ({ page }
   const survey = page.locator('rt-survey');
   await survey.getByRole('button', { name: 'Hand in' }).click();
   await expect(survey.getByRole('alert')).toHaveText(/11 answers still need attention/);
-  await expect(survey.getByRole('radio', { name: 'Primary school' })).toBeFocused();
+  await expect(survey.getByRole('radio', { name: /^vmbo/ })).toBeFocused();
 
   await answerDefaultSurvey(survey, 'lots');
   await survey.getByRole('button', { name: 'Hand in' }).click();
@@ -123,7 +123,7 @@ test('the survey says what is missing and hands in the answers', async ({ page }
   expect(await submitted).toMatchObject({
     survey: 'default',
     answers: {
-      education: 'secondary',
+      education: 'havo',
       'computer-skill': 7,
       'prior-knowledge': 1,
       minutes: 35,
@@ -224,7 +224,7 @@ test('a student plays a one-level assignment, answers the survey and downloads C
   });
   expect(exported.survey).toMatchObject({
     survey: 'default',
-    answers: { education: 'secondary', 'computer-skill': 7, minutes: 12, ease: 'about-right', feedback: 'Nice, "really"\nthanks' },
+    answers: { education: 'havo', 'computer-skill': 7, minutes: 12, ease: 'about-right', feedback: 'Nice, "really"\nthanks' },
   });
   const log = eventLogSchema.parse(exported.events);
   const types = log.events.map((event) => event.type);
@@ -299,7 +299,7 @@ test('a student plays a one-level assignment, answers the survey and downloads C
   }
   expect(verb('/passed')).toHaveLength(1);
   expect(verb('/passed')[0].result?.duration).toMatch(ISO_DURATION);
-  expect(verb('/answered').map((statement) => statement.result?.response)).toContain('secondary');
+  expect(verb('/answered').map((statement) => statement.result?.response)).toContain('havo');
 
   // The teacher's dashboard reads the JSON file and shows the level.
   await page.goto('./#/dashboard');

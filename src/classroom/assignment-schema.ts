@@ -2,6 +2,7 @@ import { z } from 'zod';
 import { kebabId } from '../quest/kebab-id.ts';
 import { LOCALES } from '../quest/localized-text.ts';
 import type { Assignment } from './assignment.ts';
+import { CONCEPT_TEST_ORDERS } from './concept-test/concept-test-plan.ts';
 
 /**
  * The zod schema of an Assignment, for links opened by students (assignment-link.ts): a link
@@ -38,6 +39,8 @@ export const assignmentSchema = z
       .optional(),
     // Added later: an older link has none and opens as before, so the format's version stays 1.
     consent: z.string().trim().min(1).max(CONSENT_MAX).optional(),
+    // Optional, so that links made before it still open (as version 1).
+    conceptTest: z.enum(CONCEPT_TEST_ORDERS).optional(),
   })
   .superRefine((assignment, context) => {
     assignment.levels.forEach((id, index) => {

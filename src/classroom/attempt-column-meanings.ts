@@ -35,4 +35,10 @@ export const ATTEMPT_COLUMN_MEANINGS: Readonly<Record<string, { meaning: string;
   app_version: { meaning: 'the version of Ray Tracer Quest that wrote the file', unit: 'text (major.minor.patch)' },
   utc_offset_min: { meaning: "how far the device's clock was ahead of UTC at the download: local time = UTC time + this", unit: 'minutes' },
   survey: { meaning: 'the id of the survey the learner handed in, or empty', unit: 'text' },
+  concept_pre_form: { meaning: 'the form of the concept test taken before the first level, or empty when none was taken', unit: 'A or B' },
+  concept_pre_right: { meaning: "how many of that test's answers were right", unit: 'count' },
+  concept_pre_answers: { meaning: "that test's answers as item=choice pairs (the bank's ids), separated by spaces", unit: 'text' },
+  concept_post_form: { meaning: 'the form of the concept test taken after the last level (the other form), or empty', unit: 'A or B' },
+  concept_post_right: { meaning: "how many of that test's answers were right", unit: 'count' },
+  concept_post_answers: { meaning: "that test's answers as item=choice pairs, separated by spaces; the same on each of a learner's rows", unit: 'text' },
 };

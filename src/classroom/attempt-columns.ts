@@ -2,6 +2,8 @@ import { HOW_COMPLETED } from '../quest/event-log.ts';
 import { TASK_KINDS, type TaskKind } from '../quest/goal.ts';
 import { optionId, optionPosition, type OptionText } from './quiz-options.ts';
 import type { SurveyAnswers } from './survey-answers.ts';
+import type { ConceptTestAnswers } from './concept-test/concept-answers.ts';
+import { CONCEPT_COLUMNS } from './concept-test/concept-columns.ts';
 import { hintsOpened, type TaskAttempt } from './task-attempts.ts';
 
 /**
@@ -28,6 +30,8 @@ export interface AttemptOwner {
   /** Minutes the device's clock was ahead of UTC when the file was made (120 in Dutch summer time), '' when unknown. */
   utcOffsetMin: string;
   survey: { id: string; answers: SurveyAnswers } | null;
+  /** The concept test's answers, when the assignment had one (concept-columns.ts). */
+  conceptTest?: ConceptTestAnswers | null;
 }
 
 /** What one row is written from: whose it is, the attempt, and the attempt's number for its task (1, 2, …). */
@@ -40,11 +44,11 @@ export interface AttemptRow {
 }
 
 /** The owner's fields a row carries as they are (the survey's answers have columns of their own). */
-type OwnerText = Exclude<keyof AttemptOwner, 'survey'>;
+type OwnerText = Exclude<keyof AttemptOwner, 'survey' | 'conceptTest'>;
 
 /** What the reader gathers from one row's cells; `how` is settled afterwards from `completedAt` and `shownByApp`. */
 export interface ReadRow {
-  owner: Record<OwnerText, string> & { surveyId: string };
+  owner: Record<OwnerText, string> & { surveyId: string; conceptTest: ConceptTestAnswers };
   attempt: TaskAttempt;
   shownByApp: boolean;
 }
@@ -162,6 +166,7 @@ export const ATTEMPT_COLUMNS: readonly AttemptColumn[] = [
     read: (cell, into) => void (into.owner.utcOffsetMin = cell.trim()),
   },
   { name: 'survey', ...plain, value: ({ owner }) => owner.survey?.id ?? '', read: (cell, into) => void (into.owner.surveyId = cell) },
+  ...CONCEPT_COLUMNS,
 ];
 
 /** The survey's answers follow the table as one `survey_<question>` column per question. */
@@ -184,6 +189,7 @@ export function emptyReadRow(): ReadRow {
       appVersion: '',
       utcOffsetMin: '',
       surveyId: '',
+      conceptTest: { pre: null, post: null },
     },
     attempt: {
       level: '',

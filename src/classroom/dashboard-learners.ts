@@ -1,5 +1,6 @@
 import { codeKey } from './dashboard-class-list.ts';
 import type { ClassRecord } from './dashboard-record.ts';
+import { joinedConceptTests } from './concept-test/concept-test-join.ts';
 
 /**
  * One learner is one learner: a student who pressed every download button, or handed in a
@@ -55,7 +56,7 @@ export function classLearners(records: readonly ClassRecord[]): ClassLearner[] {
       kept.survey ??
       copies.filter((copy) => copy.survey).reduce<ClassRecord | null>((best, copy) => (best ? moreComplete(best, copy) : copy), null)?.survey ??
       null;
-    return { kept: { ...kept, survey }, files: copies.map((copy) => copy.file) };
+    return { kept: { ...kept, survey, conceptTest: joinedConceptTests(copies) }, files: copies.map((copy) => copy.file) };
   });
   // Codes are typed by pupils: "5h2-03" and "5H2-03" are one learner.
   return groupBy(playthroughs, ({ kept }) => `${kept.assignmentId}\u0000${codeKey(kept.learnerId)}`).map((group) => {
@@ -66,6 +67,7 @@ export function classLearners(records: readonly ClassRecord[]): ClassLearner[] {
       attempts: parts.flatMap((part) => part.attempts),
       visits: parts.flatMap((part) => part.visits),
       survey: [...parts].reverse().find((part) => part.survey)?.survey ?? null,
+      conceptTest: joinedConceptTests(parts),
       parts,
       files: group.flatMap(({ files }) => files),
     };

@@ -63,6 +63,7 @@ export function readCsvExport(file: string, text: string): FileRead {
       attempts,
       visits: [],
       survey: surveyOf(owner.surveyId, names, first),
+      conceptTest: owner.conceptTest.pre || owner.conceptTest.post ? owner.conceptTest : null,
     },
   };
 }

@@ -10,6 +10,7 @@ import { learnerKey, normalParticipantCode } from './participant-code.ts';
 import { EXPORT_FORMAT, EXPORT_VERSION } from './export-json.ts';
 import type { ClassRecord, FileRead } from './dashboard-record.ts';
 import type { SurveyAnswers } from './survey-answers.ts';
+import { readConceptTestValue } from './concept-test/concept-test-store.ts';
 
 /**
  * Reads a learner's JSON export (src/classroom/export-json.ts) for the dashboard. The
@@ -68,6 +69,8 @@ export function readJsonExport(file: string, text: string): FileRead {
       attempts,
       visits,
       survey: readSurvey(parsed.data.survey),
+      // Only what can be read of it: a damaged answer is left out (as when the game loads it).
+      conceptTest: isRecord(value.conceptTest) ? readConceptTestValue(value.conceptTest).answers : null,
     },
   };
 }

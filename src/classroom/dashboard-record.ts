@@ -1,4 +1,5 @@
 import type { SurveyAnswers } from './survey-answers.ts';
+import type { ConceptTestAnswers } from './concept-test/concept-answers.ts';
 import type { LevelVisit, TaskAttempt } from './task-attempts.ts';
 
 /**
@@ -33,6 +34,8 @@ export interface ClassRecord {
   visits: LevelVisit[];
   /** The closing survey's answers, or null when the learner did not hand one in. */
   survey: { id: string; answers: SurveyAnswers } | null;
+  /** The concept test's answers, or null (or absent) when the learner took none. */
+  conceptTest?: ConceptTestAnswers | null;
 }
 
 /** A file that was not counted, and why. */

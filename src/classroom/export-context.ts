@@ -6,6 +6,7 @@ import type { AttemptOwner } from './attempt-columns.ts';
 import { learnerId } from './learner-identity.ts';
 import type { OptionText } from './quiz-options.ts';
 import type { SurveySubmission } from './survey-answers.ts';
+import type { ConceptTestAnswers } from './concept-test/concept-answers.ts';
 
 /**
  * Everything an export is made from (export-csv.ts, export-json.ts, export-xapi.ts): the
@@ -22,6 +23,8 @@ export interface ExportInput {
   /** The teacher's assignment, or null in free play. */
   assignment: Assignment | null;
   survey: SurveySubmission | null;
+  /** The concept test's answers, when the assignment has one. */
+  conceptTest?: ConceptTestAnswers | null;
   /** ISO 8601; the moment of the download. */
   exportedAt: string;
   /** The app's version (package.json), so that a researcher knows which game produced the data. */
@@ -58,5 +61,6 @@ export function exportOwner(input: ExportInput): AttemptOwner {
     appVersion: input.appVersion,
     utcOffsetMin: input.utcOffsetMin === undefined ? '' : String(input.utcOffsetMin),
     survey: input.survey && { id: input.survey.survey, answers: input.survey.answers },
+    conceptTest: input.conceptTest ?? null,
   };
 }

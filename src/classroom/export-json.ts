@@ -7,6 +7,7 @@ import { learnerId } from './learner-identity.ts';
 import { NO_OPTION_TEXTS, optionId, type OptionText } from './quiz-options.ts';
 import { hintsOpened, readLog, type TaskAttempt } from './task-attempts.ts';
 import type { SurveySubmission } from './survey-answers.ts';
+import { conceptTestExport, type ConceptTestExport } from './concept-test/concept-test-export.ts';
 
 /**
  * The JSON export: everything a researcher (or the class dashboard) needs from one
@@ -38,6 +39,7 @@ export interface QuestExport {
   events: EventLogData;
   attempts: ExportedAttempt[];
   survey: SurveySubmission | null;
+  conceptTest: ConceptTestExport | null;
 }
 
 export function buildExport(input: ExportInput): QuestExport {
@@ -55,6 +57,7 @@ export function buildExport(input: ExportInput): QuestExport {
     events: progress.log,
     attempts: readLog(progress.log).attempts.map((attempt) => exportedAttempt(attempt, input.optionText ?? NO_OPTION_TEXTS)),
     survey: input.survey,
+    conceptTest: conceptTestExport(input.conceptTest ?? null),
   };
 }
 

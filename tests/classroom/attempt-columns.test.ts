@@ -5,6 +5,7 @@ import { attemptRows, csvHeader } from '../../src/classroom/attempt-rows.ts';
 import { csvTable, parseCsv } from '../../src/classroom/csv-text.ts';
 import { readCsvExport } from '../../src/classroom/dashboard-read-csv.ts';
 import type { TaskAttempt } from '../../src/classroom/task-attempts.ts';
+import { conceptBank, formItems } from '../../src/classroom/concept-test/concept-bank.ts';
 
 /**
  * The CSV export's one column table (attempt-columns.ts) is where the header, the rows and
@@ -23,6 +24,22 @@ const owner: AttemptOwner = {
   appVersion: '8.9.10',
   utcOffsetMin: '-330',
   survey: { id: 'default', answers: { ease: 3, 'computer-skill': 'often' } },
+  // Two right answers before (the shipped bank's first items of form A), one wrong after.
+  conceptTest: {
+    pre: {
+      form: 'A',
+      submittedAt: '',
+      answers: Object.fromEntries(
+        formItems(conceptBank!, 'A')
+          .slice(0, 2)
+          .map((item) => [item.id, item.answer]),
+      ),
+    },
+    post: (() => {
+      const item = formItems(conceptBank!, 'B')[0]!;
+      return { form: 'B', submittedAt: '', answers: { [item.id]: item.choices.find((choice) => choice.id !== item.answer)!.id } };
+    })(),
+  },
 };
 
 const attempts: TaskAttempt[] = [
@@ -86,7 +103,7 @@ describe('the CSV column table', () => {
   it('reads back every column of a record as it was written', () => {
     const read = readCsvExport('learner.csv', text);
     if (!read.ok) throw new Error(read.reason);
-    const { survey, attempts: readAttempts, ...who } = read.record;
+    const { survey, conceptTest, attempts: readAttempts, ...who } = read.record;
     expect(who).toEqual({
       file: 'learner.csv',
       learnerId: owner.learnerId,
@@ -101,6 +118,7 @@ describe('the CSV column table', () => {
       visits: [],
     });
     expect(survey).toEqual(owner.survey);
+    expect(conceptTest).toEqual(owner.conceptTest);
     expect(readAttempts).toEqual(attempts);
   });
 

@@ -9,6 +9,7 @@ import { exportFileName } from '../../classroom/export-file-name.ts';
 import { APP_VERSION, type ExportInput } from '../../classroom/export-context.ts';
 import { exportCsv } from '../../classroom/export-csv.ts';
 import { exportJson } from '../../classroom/export-json.ts';
+import type { ConceptTestAnswers } from '../../classroom/concept-test/concept-answers.ts';
 import { exportXapi } from '../../classroom/export-xapi.ts';
 import { resultsCode } from '../../classroom/results-code.ts';
 import { exportInstallId, randomUuid } from '../../classroom/learner-identity.ts';
@@ -43,6 +44,7 @@ export class RtExportMenu extends LitElement {
     survey: { attribute: false },
     code: { state: true },
     copied: { state: true },
+    conceptTest: { attribute: false },
   };
 
   static override styles = css`
@@ -121,6 +123,7 @@ export class RtExportMenu extends LitElement {
   declare code: string | null;
   /** Whether the browser put the code on the clipboard itself. */
   declare copied: boolean;
+  declare conceptTest: ConceptTestAnswers | null;
 
   constructor() {
     super();
@@ -131,6 +134,7 @@ export class RtExportMenu extends LitElement {
     this.survey = null;
     this.code = null;
     this.copied = false;
+    this.conceptTest = null;
   }
 
   /** The file of one format, exactly as the buttons download it (for tests and other menus). */
@@ -161,6 +165,7 @@ export class RtExportMenu extends LitElement {
       assignment: this.assignment,
       survey: this.survey,
       exportedAt: exportedAt.toISOString(),
+      conceptTest: this.conceptTest,
       appVersion: APP_VERSION,
       utcOffsetMin: -exportedAt.getTimezoneOffset(),
       // The options' texts in the language the levels are loaded in: the one the learner played in.

@@ -26,6 +26,7 @@ import type { ShelfRequest } from './rt-teacher-shelf.ts';
 import '../controls/rt-theme-toggle.ts';
 import { consentSection } from './teacher-consent-section.ts';
 import './rt-scorm-download.ts';
+import './rt-teacher-concept-test.ts';
 import './rt-teacher-handout.ts';
 import './rt-teacher-shelf.ts';
 
@@ -263,7 +264,9 @@ export class RtTeacherPage extends LitElement {
         <rt-theme-toggle></rt-theme-toggle>
       </header>
       <main>
-        <div class="form">${this.renderKept()} ${this.renderTitle()} ${this.renderLevels()} ${settingsSection(this.assignment, this.changer)} ${researchSection(this.assignment, this.changer)} ${consentSection(this.assignment, (consent) => this.change({ consent }))}</div>
+        <div class="form">${this.renderKept()} ${this.renderTitle()} ${this.renderLevels()} ${settingsSection(this.assignment, this.changer)} ${researchSection(this.assignment, this.changer)} ${consentSection(this.assignment, (consent) => this.change({ consent }))}
+          <rt-teacher-concept-test .value=${this.assignment.conceptTest} @concept-test-change=${(e: CustomEvent<Assignment['conceptTest']>) => this.change({ conceptTest: e.detail })}></rt-teacher-concept-test>
+        </div>
         <div class="result">${this.renderLink()} ${this.renderHandout()} ${afterLessonSection()}</div>
       </main>
     `;

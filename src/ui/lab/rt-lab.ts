@@ -29,6 +29,7 @@ import { levelPanels } from './level-panels.ts';
 import { labSidebar } from './lab-sidebar.ts';
 import { viewLegendBox } from './view-legend.ts';
 import { sideSwitch } from './side-switch.ts';
+import { conceptTestPage } from './concept-test-page.ts';
 import { surveyPage } from './survey-page.ts';
 import { QuestController } from './quest-controller.ts';
 import type { RtRenderWindow } from './render-window/rt-render-window.ts';
@@ -377,7 +378,7 @@ export class RtLab extends LitElement {
           ></rt-level-map>`
           : nothing
       }
-      ${this.renderOpen ? nothing : surveyPage(this.game, this.assignment)}
+      ${this.renderOpen ? nothing : [conceptTestPage(this.game, (text, tone) => this.toast(text, tone)), surveyPage(this.game, this.assignment)]}
       <rt-guide-ring .locate=${this.ring.locate}></rt-guide-ring>
       ${
         session?.needsParticipantCode

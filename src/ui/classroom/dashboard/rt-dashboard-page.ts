@@ -19,6 +19,7 @@ import './rt-dashboard-class-list.ts';
 import './rt-dashboard-completion.ts';
 import type { PastedCodes } from './rt-dashboard-paste-codes.ts';
 import './rt-dashboard-paste-codes.ts';
+import './rt-dashboard-gain.ts';
 import { learnerLabel } from './rt-dashboard-level-times.ts';
 import { formatDuration } from './rt-dashboard-format.ts';
 import './rt-dashboard-stuck.ts';
@@ -268,6 +269,7 @@ export class RtDashboardPage extends LitElement {
           <rt-dashboard-class-list .learners=${this.shown}></rt-dashboard-class-list>
         </section>
         ${skipped.length ? this.renderSkipped(skipped) : null} ${this.renderLearnerTimes()} ${this.levels.map((level) => this.renderLevel(level))}
+        ${this.shown.some((learner) => learner.conceptTest) ? html`<section aria-labelledby="gain-heading"><h2 id="gain-heading">${msg('Concept test: learning measured')}</h2><rt-dashboard-gain .learners=${this.shown} .locale=${this.locale}></rt-dashboard-gain></section>` : nothing}
         ${this.renderSurveys()}
       </main>
     `;
