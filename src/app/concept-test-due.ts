@@ -1,6 +1,6 @@
 import type { Assignment } from '../classroom/assignment.ts';
 import type { ConceptTestAnswers } from '../classroom/concept-test/concept-answers.ts';
-import { conceptBank } from '../classroom/concept-test/concept-bank.ts';
+import { conceptBankNow } from '../classroom/concept-test/concept-bank.ts';
 import type { ConceptPhase } from '../classroom/concept-test/concept-test-plan.ts';
 
 /**
@@ -15,7 +15,7 @@ export function conceptTestDue(
   answers: ConceptTestAnswers,
   progress: { played: boolean; allPassed: boolean },
 ): ConceptPhase | null {
-  if (!assignment?.conceptTest || !conceptBank) return null;
+  if (!assignment?.conceptTest || !conceptBankNow()) return null;
   if (!answers.pre && !answers.post && !progress.played) return 'pre';
   if (!answers.post && progress.allPassed) return 'post';
   return null;

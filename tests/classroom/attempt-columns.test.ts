@@ -5,7 +5,10 @@ import { attemptRows, csvHeader } from '../../src/classroom/attempt-rows.ts';
 import { csvTable, parseCsv } from '../../src/classroom/csv-text.ts';
 import { readCsvExport } from '../../src/classroom/dashboard-read-csv.ts';
 import type { TaskAttempt } from '../../src/classroom/task-attempts.ts';
-import { conceptBank, formItems } from '../../src/classroom/concept-test/concept-bank.ts';
+import { conceptBankNow, formItems, loadConceptBank } from '../../src/classroom/concept-test/concept-bank.ts';
+
+// The item bank loads apart from the first screen (concept-bank.ts).
+await loadConceptBank();
 
 /**
  * The CSV export's one column table (attempt-columns.ts) is where the header, the rows and
@@ -30,13 +33,13 @@ const owner: AttemptOwner = {
       form: 'A',
       submittedAt: '',
       answers: Object.fromEntries(
-        formItems(conceptBank!, 'A')
+        formItems(conceptBankNow()!, 'A')
           .slice(0, 2)
           .map((item) => [item.id, item.answer]),
       ),
     },
     post: (() => {
-      const item = formItems(conceptBank!, 'B')[0]!;
+      const item = formItems(conceptBankNow()!, 'B')[0]!;
       return { form: 'B', submittedAt: '', answers: { [item.id]: item.choices.find((choice) => choice.id !== item.answer)!.id } };
     })(),
   },

@@ -1,6 +1,6 @@
 import type { AttemptColumn } from '../attempt-columns.ts';
 import { rightCount, type ConceptTestAnswers, type ConceptTestSubmission } from './concept-answers.ts';
-import { conceptBank } from './concept-bank.ts';
+import { conceptBankNow } from './concept-bank.ts';
 import type { ConceptPhase } from './concept-test-plan.ts';
 
 /**
@@ -32,7 +32,7 @@ function phaseColumns(phase: ConceptPhase): AttemptColumn[] {
       ...plain,
       value: ({ owner }) => {
         const submission = submissionOf(owner, phase);
-        return submission ? rightCount(conceptBank, submission) : '';
+        return submission ? rightCount(conceptBankNow(), submission) : '';
       },
     },
     {

@@ -1,5 +1,5 @@
 import { conceptAnswerRows, type ConceptAnswerRow, type ConceptTestAnswers } from './concept-answers.ts';
-import { conceptBank } from './concept-bank.ts';
+import { conceptBankNow } from './concept-bank.ts';
 
 /**
  * The concept test in the JSON export: each phase as it was saved (form, time, item → choice,
@@ -10,5 +10,5 @@ export type ConceptTestExport = ConceptTestAnswers & { answers: ConceptAnswerRow
 
 export function conceptTestExport(answers: ConceptTestAnswers | null): ConceptTestExport | null {
   if (!answers || (!answers.pre && !answers.post)) return null;
-  return { ...answers, answers: conceptAnswerRows(conceptBank, answers) };
+  return { ...answers, answers: conceptAnswerRows(conceptBankNow(), answers) };
 }

@@ -2,7 +2,7 @@ import { msg, str } from '@lit/localize';
 import { css, html, LitElement, nothing } from 'lit';
 import type { ConceptTestSubmission } from '../../classroom/concept-test/concept-answers.ts';
 import type { ConceptForm, ConceptItem } from '../../classroom/concept-test/concept-bank-schema.ts';
-import { conceptBank, formItems } from '../../classroom/concept-test/concept-bank.ts';
+import { conceptBankNow, formItems, loadConceptBank } from '../../classroom/concept-test/concept-bank.ts';
 import type { ConceptPhase } from '../../classroom/concept-test/concept-test-plan.ts';
 import { currentLocale } from '../../i18n/locale.ts';
 import { choiceOrder } from '../../quest/choice-order.ts';
@@ -108,8 +108,15 @@ export class RtConceptTest extends LitElement {
     this.missing = [];
   }
 
+  override connectedCallback(): void {
+    super.connectedCallback();
+    // The bank loads with the first element that shows it (concept-bank.ts).
+    if (!conceptBankNow()) void loadConceptBank().then(() => this.requestUpdate());
+  }
+
   private get items(): ConceptItem[] {
-    return conceptBank ? formItems(conceptBank, this.form) : [];
+    const bank = conceptBankNow();
+    return bank ? formItems(bank, this.form) : [];
   }
 
   /** The page covers the game: the focus comes onto it (read out by its heading), not left behind it. */

@@ -7,23 +7,17 @@ import { playableLevels } from '../../quest/level-index.ts';
 import { downloadText } from '../../util/download-file.ts';
 import { exportFileName } from '../../classroom/export-file-name.ts';
 import { APP_VERSION, type ExportInput } from '../../classroom/export-context.ts';
-import { exportCsv } from '../../classroom/export-csv.ts';
-import { exportJson } from '../../classroom/export-json.ts';
 import type { ConceptTestAnswers } from '../../classroom/concept-test/concept-answers.ts';
-import { exportXapi } from '../../classroom/export-xapi.ts';
-import { resultsCode } from '../../classroom/results-code.ts';
+import type { ExportFormat } from '../../classroom/export-files.ts';
 import { exportInstallId, randomUuid } from '../../classroom/learner-identity.ts';
 import type { SurveySubmission } from '../../classroom/survey-answers.ts';
 import { MemoryStorage } from '../../quest/progress-store.ts';
 import type { Progress } from '../../quest/progress.ts';
 
-type Format = 'csv' | 'json' | 'xapi';
+type Format = ExportFormat;
 
-const FILES: Record<Format, { extension: string; type: string; text: (input: ExportInput) => string }> = {
-  csv: { extension: 'csv', type: 'text/csv;charset=utf-8', text: exportCsv },
-  json: { extension: 'json', type: 'application/json', text: exportJson },
-  xapi: { extension: 'xapi.json', type: 'application/json', text: (input) => `${JSON.stringify(exportXapi(input), null, 2)}\n` },
-};
+/** The exporters, loaded at the first click (export-files.ts). */
+const exportFiles = () => import('../../classroom/export-files.ts');
 
 /**
  * @summary Handing in the results: one results file (the JSON export: everything, with the
@@ -138,16 +132,18 @@ export class RtExportMenu extends LitElement {
   }
 
   /** The file of one format, exactly as the buttons download it (for tests and other menus). */
-  fileOf(format: Format): { name: string; text: string; type: string } | null {
+  async fileOf(format: Format): Promise<{ name: string; text: string; type: string } | null> {
+    const { EXPORT_FILES } = await exportFiles();
     const input = this.exportInput();
     if (!input) return null;
-    const file = FILES[format];
+    const file = EXPORT_FILES[format];
     const name = exportFileName(this.participant, this.assignment?.title ?? null, new Date(input.exportedAt), file.extension);
     return { name, text: file.text(input), type: file.type };
   }
 
   /** The results code of the current progress (results-code.ts), or null without progress. */
-  codeOf(): string | null {
+  async codeOf(): Promise<string | null> {
+    const { resultsCode } = await exportFiles();
     const input = this.exportInput();
     return input && resultsCode(input);
   }
@@ -173,9 +169,9 @@ export class RtExportMenu extends LitElement {
     };
   }
 
-  private download(format: Format): void {
+  private async download(format: Format): Promise<void> {
     try {
-      const file = this.fileOf(format);
+      const file = await this.fileOf(format);
       if (file) downloadText(file.text, file.name, file.type);
     } catch (error) {
       this.failed(error);
@@ -184,7 +180,7 @@ export class RtExportMenu extends LitElement {
 
   private async copyCode(): Promise<void> {
     try {
-      this.code = this.codeOf();
+      this.code = await this.codeOf();
     } catch (error) {
       this.failed(error);
       return;

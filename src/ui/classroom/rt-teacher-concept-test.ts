@@ -1,6 +1,6 @@
 import { msg, str } from '@lit/localize';
 import { css, html, LitElement } from 'lit';
-import { conceptBank, formItems } from '../../classroom/concept-test/concept-bank.ts';
+import { conceptBankNow, formItems, loadConceptBank } from '../../classroom/concept-test/concept-bank.ts';
 import { CONCEPT_TEST_ORDERS, type ConceptTestOrder } from '../../classroom/concept-test/concept-test-plan.ts';
 import { classroomStyles } from './classroom-styles.ts';
 
@@ -62,6 +62,12 @@ export class RtTeacherConceptTest extends LitElement {
     this.value = undefined;
   }
 
+  override connectedCallback(): void {
+    super.connectedCallback();
+    // The bank loads with the first element that shows it (concept-bank.ts).
+    if (!conceptBankNow()) void loadConceptBank().then(() => this.requestUpdate());
+  }
+
   private pick(value: ConceptTestOrder | undefined): void {
     this.value = value;
     this.dispatchEvent(new CustomEvent('concept-test-change', { detail: value, bubbles: true, composed: true }));
@@ -72,10 +78,11 @@ export class RtTeacherConceptTest extends LitElement {
       'a-then-b': msg('Form A before the first level, form B after the last'),
       counterbalanced: msg('Counterbalanced: half of the learners take form B first'),
     };
-    const size = conceptBank ? formItems(conceptBank, 'A').length : 0;
+    const bank = conceptBankNow();
+    const size = bank ? formItems(bank, 'A').length : 0;
     return html`<h2>${msg('Concept test: learning measured (optional)')}</h2>
       ${
-        conceptBank
+        bank
           ? html`<fieldset>
               <legend>${msg('A short multiple-choice test before and after the levels')}</legend>
               <label><input type="radio" name="concept-test" .checked=${!this.value} @change=${() => this.pick(undefined)} />${msg('None')}</label>

@@ -6,7 +6,6 @@ import type { Locale } from '../../quest/localized-text.ts';
 import { damagedSavesList, damagedSavesStyles } from './damaged-saves-list.ts';
 import { fire, gameStyles } from './game-styles.ts';
 import '../controls/rt-offline-status.ts';
-import './rt-withdraw.ts';
 
 /** The detail of `progress-command`. */
 export type ProgressCommand =

@@ -3,7 +3,6 @@ import { html, nothing, type TemplateResult } from 'lit';
 import { conceptForms } from '../../classroom/concept-test/concept-test-plan.ts';
 import { saveProblemReason } from '../../i18n/progress-problem-text.ts';
 import type { ConceptTestHandIn } from '../classroom/rt-concept-test.ts';
-import '../classroom/rt-concept-test.ts';
 import type { QuestController } from './quest-controller.ts';
 
 /**

@@ -22,6 +22,7 @@ import { downloadText } from '../../util/download-file.ts';
 import type { QuestCommand } from '../game/quest-command.ts';
 import type { MapChoice } from '../game/rt-level-map.ts';
 import type { ProgressCommand } from '../game/rt-progress-menu.ts';
+import { conceptBankNow, loadConceptBank } from '../../classroom/concept-test/concept-bank.ts';
 
 /** A file's size in a message, from its characters (what localStorage counts): "3 kB", "9.2 MB". */
 const SIZE = localNumbers({ maximumFractionDigits: 1 });
@@ -103,6 +104,11 @@ export class QuestController implements ReactiveController {
   /** The game: progress from storage (a message if it was damaged), then resume, the first level or the map. */
   start(): void {
     this.stop();
+    // An assignment with a concept test waits for its item bank, loaded apart from the first screen.
+    if (this.host.assignment?.conceptTest && !conceptBankNow()) {
+      void loadConceptBank().then(() => this.host.isConnected && this.start());
+      return;
+    }
     const catalog = loadBrowserCatalog();
     // A teacher's preview of a level (the lab's `preview` attribute, classroom/level-preview.ts) keeps nothing.
     const storage = this.host.hasAttribute('preview') ? new MemoryStorage() : browserStorage();

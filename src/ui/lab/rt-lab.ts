@@ -37,7 +37,7 @@ import type { RtSceneView } from './rt-scene-view.ts';
 import { storeContext } from './store-context.ts';
 import { quizPictureDrawer } from './quiz-picture-drawer.ts';
 import { quizPicturesContext } from '../game/quiz-pictures.ts';
-import { ON_DEMAND_PANELS } from './lab-elements.ts';
+import { loadAfterFirstScreen, ON_DEMAND_PANELS } from './lab-elements.ts';
 import { ViewCoverController } from './view-cover.ts';
 import { PreviewPlaceController } from './preview-place.ts';
 import { boxesOverlap, type GuideAndLook, renderWindowInTheWay } from './render-window/render-window-in-the-way.ts';
@@ -147,6 +147,7 @@ export class RtLab extends LitElement {
       this.storeProvider.setValue(this.services.store);
     }
     super.connectedCallback();
+    loadAfterFirstScreen(this);
     this.cleanup.push(
       this.services.subscribe(() => this.requestUpdate()),
       this.store.subscribe(() => this.requestUpdate()),

@@ -14,7 +14,6 @@ import { levelPreviewPage } from './level-preview-page.ts';
 import { linkProblemText } from './link-problem-text.ts';
 import './rt-link-notice.ts';
 import './rt-scene-link-lab.ts';
-import '../classroom/rt-survey.ts';
 
 /** `#/survey/<id>`: a survey on its own page. */
 export const SURVEY_PREVIEW = '#/survey/';
@@ -29,8 +28,12 @@ const TEACHER_PAGES: Record<string, { tag: string; code: LazyModule<unknown> }> 
   '#/dashboard': { tag: 'rt-dashboard-page', code: new LazyModule(() => import('../classroom/dashboard/rt-dashboard-page.ts')) },
 };
 
+/** A teacher's preview of a survey (`#/survey/<id>`, linked from the teacher page): loaded like the teacher's pages. */
+const SURVEY_PREVIEW_PAGE = { tag: 'rt-survey', code: new LazyModule(() => import('../classroom/rt-survey.ts')) };
+
 /** The teacher page of the address: `#/teacher/a/…` is the teacher page opened on an assignment (classroom/teacher-link.ts). */
 function teacherPage(route: string) {
+  if (route.startsWith(SURVEY_PREVIEW)) return SURVEY_PREVIEW_PAGE;
   return TEACHER_PAGES[route.startsWith(TEACHER_LINK_PREFIX) ? '#/teacher' : route];
 }
 
@@ -97,6 +100,9 @@ export class RtApp extends LitElement {
   override render() {
     const page = teacherPage(this.route);
     if (page) {
+      // A teacher's preview of a survey: nothing is saved.
+      if (customElements.get(page.tag) && page === SURVEY_PREVIEW_PAGE)
+        return html`<rt-survey survey-id=${this.route.slice(SURVEY_PREVIEW.length)}></rt-survey>`;
       if (customElements.get(page.tag))
         return page.tag === 'rt-teacher-page' ? html`<rt-teacher-page></rt-teacher-page>` : html`<rt-dashboard-page></rt-dashboard-page>`;
       if (page.code.state === 'failed')
@@ -104,8 +110,6 @@ export class RtApp extends LitElement {
       return html`<p class="loading" role="status">${msg('Loading…')}</p>`;
     }
     if (isSceneFragment(this.route)) return html`<rt-scene-link-lab .hash=${this.route}></rt-scene-link-lab>`;
-    // A teacher's preview of a survey (linked from the teacher page): nothing is saved.
-    if (this.route.startsWith(SURVEY_PREVIEW)) return html`<rt-survey survey-id=${this.route.slice(SURVEY_PREVIEW.length)}></rt-survey>`;
     // A teacher's preview of one level (linked from the teacher page): nothing is saved.
     const previewed = previewedLevelId(this.route);
     if (previewed !== null) return levelPreviewPage(previewed);

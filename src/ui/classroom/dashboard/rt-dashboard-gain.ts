@@ -1,7 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { css, html, LitElement, nothing } from 'lit';
 import type { ConceptBank } from '../../../classroom/concept-test/concept-bank-schema.ts';
-import { conceptBank } from '../../../classroom/concept-test/concept-bank.ts';
+import { conceptBankNow, loadConceptBank } from '../../../classroom/concept-test/concept-bank.ts';
 import { conceptGains, type ClassGain, type GainLearner, type GainRow } from '../../../classroom/concept-test/concept-gain.ts';
 import { localize, type Locale } from '../../../quest/localized-text.ts';
 import { tableStyles } from './rt-dashboard-chart-styles.ts';
@@ -53,8 +53,14 @@ export class RtDashboardGain extends LitElement {
     this.locale = 'en';
   }
 
+  override connectedCallback(): void {
+    super.connectedCallback();
+    // The bank loads with the first element that shows it (concept-bank.ts).
+    if (!conceptBankNow()) void loadConceptBank().then(() => this.requestUpdate());
+  }
+
   override render() {
-    const bank = conceptBank;
+    const bank = conceptBankNow();
     if (!bank) return nothing;
     const classes = conceptGains(this.learners, bank);
     if (classes.length === 0) return nothing;
