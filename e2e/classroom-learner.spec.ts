@@ -168,7 +168,8 @@ async function expectScalesInOneRow(survey: Locator): Promise<void> {
     .evaluateAll((scales) =>
       scales.map((scale) => new Set([...scale.querySelectorAll('label')].map((label) => Math.round(label.getBoundingClientRect().top))).size),
     );
-  expect(rows.length).toBeGreaterThan(5);
+  // The survey leaves out the questions on ideas its assignment's levels do not teach: four scales are left for level 1.
+  expect(rows.length).toBeGreaterThanOrEqual(4);
   expect(
     rows.every((count) => count === 1),
     JSON.stringify(rows),
