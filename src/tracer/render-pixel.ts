@@ -65,11 +65,11 @@ export function renderPixel(
   seed: number,
   out: Vector3,
   tree: RayTreeRecording | null,
-  samplesPerSide?: number,
+  samplesPerPixel?: number,
 ): Vector3 {
-  if (scene.settings.integrator === 'path')
-    return renderPathPixel(scene, x, y, width, height, seed, out, null, samplesPerSide === undefined ? undefined : samplesPerSide ** 2);
-  const s = samplesPerSide ?? scene.settings.supersampling;
+  if (scene.settings.integrator === 'path') return renderPathPixel(scene, x, y, width, height, seed, out, null, samplesPerPixel);
+  // Whitted mode's samples are a square s × s.
+  const s = samplesPerPixel === undefined ? scene.settings.supersampling : Math.round(Math.sqrt(samplesPerPixel));
   const integrator = whittedIntegratorFor(scene);
   const { camera } = scene;
   const samplePattern = scene.settings.samplePattern;
