@@ -11,7 +11,8 @@ const primaryCandidates = new PrimaryCandidates();
 
 /**
  * Renders one tile of the image: linear RGB, 3 floats per pixel, row-major over the tile,
- * each channel clamped to 0..1. Ray counts are added to `stats` when given.
+ * each channel clamped to 0..1 in Whitted mode (path mode: radiance, unclamped). Ray counts
+ * are added to `stats` when given.
  *
  * With `options.block` > 1 it is a coarse preview: the image is traced as if it were
  * block times smaller (one sample through each block's centre) and each block is filled.

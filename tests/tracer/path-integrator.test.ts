@@ -147,3 +147,17 @@ describe('path mode: recorded paths', () => {
     expect([...ends].sort()).toEqual(['emitter', 'escaped', 'max-depth', 'roulette-stop']);
   });
 });
+
+describe('path mode: a pixel of the camera screen traced again', () => {
+  it('has the colour of that pixel in the image of camera.pixels, and hands back the first K paths', async () => {
+    const { tracePaths } = await import('../../src/tracer/trace-paths.ts');
+    const { renderTile } = await import('../../src/tracer/render-tile.ts');
+    const scene = room({ pathSamples: 24 });
+    const image = renderTile(scene, { x: 0, y: 0, width: 4, height: 4 }, { imageWidth: 4, imageHeight: 4, seed: 3 });
+    const traced = tracePaths(scene, 1, 2, 3, 5);
+    const at = (2 * 4 + 1) * 3;
+    expect(traced.color).toEqual([image[at], image[at + 1], image[at + 2]]);
+    expect(traced.pathCount).toBe(24);
+    expect(traced.paths).toHaveLength(5);
+  });
+});
