@@ -102,7 +102,7 @@ test('SCORM 2004 and 1.2 packages report to scorm-again; 2004 resumes from its s
       'cmi.interactions.0.result': 'correct',
       'cmi.interactions.1.id': '02-rays-from-the-camera/predict-light-path',
       'cmi.interactions.1.type': 'choice',
-      'cmi.interactions.1.learner_response': 'choice-3',
+      'cmi.interactions.1.learner_response': 'd',
       'cmi.interactions.1.result': 'incorrect',
     });
     expect(cmi['cmi.interactions.2.id']).toBeUndefined();

@@ -56,12 +56,11 @@ export function interactionValues(version: ScormVersion, index: number, interact
       [`${at}.latency`, isoDuration(interaction.latencyMs)],
     ];
   }
-  const choice = /^choice-(\d+)$/.exec(interaction.response);
   return [
     [`${at}.id`, interaction.id],
     [`${at}.type`, interaction.type === 'other' ? 'performance' : interaction.type],
     [`${at}.time`, interaction.timestamp.slice(11, 19)],
-    [`${at}.student_response`, choice ? String.fromCharCode(97 + Number(choice[1])) : interaction.response],
+    [`${at}.student_response`, interaction.response],
     [`${at}.result`, interaction.result === 'incorrect' ? 'wrong' : interaction.result],
     [`${at}.latency`, timespan12(interaction.latencyMs)],
   ];

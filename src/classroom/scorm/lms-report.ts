@@ -4,6 +4,7 @@ import { isPassed, requiredTaskIds, type RequiredTasks } from '../../quest/level
 import type { Level } from '../../quest/level-schema.ts';
 import type { Progress } from '../../quest/progress.ts';
 import { isoAt } from '../iso-duration.ts';
+import { optionId } from '../quiz-options.ts';
 
 /**
  * What the game tells the learning platform, read from the learner's progress: whether the
@@ -28,7 +29,7 @@ export interface LmsInteraction {
   id: string;
   /** `choice`: a quiz answered with one of its choices; `numeric`: an estimate; `other`: a task done in the lab. */
   type: 'choice' | 'numeric' | 'other';
-  /** The choice as `choice-<position in the level file>`, the estimate's number, or how the task was completed (done, shown, skipped). */
+  /** The choice's option id (`a`, `b`, … by its place in the level file, as the exports' `quiz_choice`), the estimate's number, or how the task was completed (done, shown, skipped). */
   response: string;
   /** A task done by the learner is correct, one shown by "show me" or skipped is neutral; a quiz is right or wrong. */
   result: InteractionResult;
@@ -96,7 +97,7 @@ function interactionsOf(progress: Progress, levels: readonly Level[]): LmsIntera
       began.set(id, began.get(id) ?? event.t);
     } else if (event.type === 'quiz.answered') {
       const result = event.correct ? 'correct' : 'incorrect';
-      if (event.choice !== undefined) interaction(event, { type: 'choice', response: `choice-${event.choice}`, result });
+      if (event.choice !== undefined) interaction(event, { type: 'choice', response: optionId(event.choice), result });
       else interaction(event, { type: 'numeric', response: String(event.value ?? ''), result });
     } else {
       // A quiz completed without an answer was revealed by "show me".

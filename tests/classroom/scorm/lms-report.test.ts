@@ -82,7 +82,7 @@ describe('what the game reports to a learning platform', () => {
       [`${L1}/orbit`, 'other', 'done', 'correct'],
       [`${L1}/zoom`, 'other', 'shown', 'neutral'],
       [`${L1}/turn-box`, 'other', 'skipped', 'neutral'],
-      [`${L2}/predict-light-path`, 'choice', 'choice-3', 'incorrect'],
+      [`${L2}/predict-light-path`, 'choice', 'd', 'incorrect'],
       [`${L2}/predict-render-rays`, 'numeric', '307200', 'correct'],
     ]);
   });
@@ -122,7 +122,7 @@ describe('the report in each SCORM version’s data model', () => {
       'cmi.interactions.4.id': `${L2}/predict-light-path`,
       'cmi.interactions.4.type': 'choice',
       'cmi.interactions.4.timestamp': '2026-03-04T09:00:11.00Z',
-      'cmi.interactions.4.learner_response': 'choice-3',
+      'cmi.interactions.4.learner_response': 'd',
       'cmi.interactions.4.result': 'incorrect',
       'cmi.interactions.4.latency': 'PT3.5S',
     });
