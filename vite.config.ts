@@ -44,7 +44,14 @@ export default defineConfig({
   worker: { format: 'es' },
   // The manifest is what scripts/first-load.ts reads to hold a student's first load to its
   // budget (`npm run check:size`, part of `npm test`).
-  build: { target: 'es2022', outDir: 'dist', manifest: true },
+  build: {
+    target: 'es2022',
+    outDir: 'dist',
+    manifest: true,
+    // The task figures are files of their own, fetched when a task shows one, not data URLs
+    // in the first load's script (src/ui/game/figure-urls.ts); the USB build inlines them all.
+    assetsInlineLimit: (file) => (file.includes('/assets/figures/') ? false : undefined),
+  },
   preview: { host: '127.0.0.1', port: 4173 },
   plugins: [
     levelTextsPlugin(),

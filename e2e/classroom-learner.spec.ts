@@ -40,6 +40,9 @@ test('one student hands in four files: the dashboard shows one learner who passe
 
   // The code dialog stays open for 10 s: nothing is timed yet.
   const dialog = page.locator('rt-participant-dialog');
+  // First what is recorded and that taking part is voluntary; the code only after "I understand".
+  await expect(dialog.getByText('Taking part is voluntary.')).toBeVisible();
+  await dialog.getByRole('button', { name: 'I understand, start' }).click();
   await expect(dialog.getByRole('textbox', { name: 'Participant code' })).toBeVisible();
   await page.waitForTimeout(CODE_WAIT_MS);
   await dialog.getByRole('textbox', { name: 'Participant code' }).fill('007');
@@ -51,17 +54,17 @@ test('one student hands in four files: the dashboard shows one learner who passe
   await page.getByRole('button', { name: 'Got it' }).click();
 
   await playLevel1UpToTheRayTracer(page);
-  const midway = await download(page, 'Download JSON');
+  const midway = await download(page, 'Download results file');
   await page.reload();
   await expect(page.locator('rt-task-card[status="current"]')).toContainText('Open the ray tracer');
-  const afterReload = await download(page, 'Download JSON');
+  const afterReload = await download(page, 'Download results file');
   await renderFirstImage(page);
   await closeRenderWindow(page);
   const survey = page.locator('rt-lab rt-survey');
   await answerDefaultSurvey(survey, '12');
   await survey.getByRole('button', { name: 'Hand in' }).click();
   await expect(survey).toHaveCount(0);
-  const finalJson = await download(page, 'Download JSON');
+  const finalJson = await download(page, 'Download results file');
   const finalCsv = await download(page, 'Download CSV');
 
   // The CSV: the first task timed from the code, the survey in its own columns, the code kept as text.
@@ -76,7 +79,7 @@ test('one student hands in four files: the dashboard shows one learner who passe
       learner_id: '007',
       class_code: '3B',
       survey: 'default',
-      survey_education: 'secondary',
+      survey_education: 'havo',
       survey_minutes: '12',
       'survey_computer-skill': '7',
     });
@@ -113,7 +116,7 @@ test('the survey has a readable page of its own over the lab at 1366×768, and o
   await page.goto(`./${hash}`);
   const surveyPage = page.getByRole('region', { name: 'Closing survey' });
   const survey = surveyPage.locator('rt-survey');
-  await expect(survey.getByRole('radio', { name: 'Primary school' })).toBeVisible();
+  await expect(survey.getByRole('radio', { name: /^vmbo/ })).toBeVisible();
   await expect(surveyPage).toBeFocused();
   // A question reads as lines of words: wider than 500 px (about 6 words a line at least), its scale's steps in one row.
   expect((await survey.locator('fieldset').first().boundingBox())!.width).toBeGreaterThan(500);
@@ -137,7 +140,7 @@ test('the survey has a readable page of its own over the lab at 1366×768, and o
   // At 200 % zoom (683×384 CSS px) the page covers the lab below the slim header: whole lines,
   // scales in one row, and its buttons a scroll away inside it, the page itself not scrolling.
   await page.setViewportSize({ width: 683, height: 384 });
-  await expect(survey.getByRole('radio', { name: 'Primary school' })).toBeVisible();
+  await expect(survey.getByRole('radio', { name: /^vmbo/ })).toBeVisible();
   expect((await survey.boundingBox())!.width).toBeGreaterThan(600);
   await expectWordsPerLine(survey, 6);
   await expectScalesInOneRow(survey);
@@ -150,7 +153,7 @@ test('the survey has a readable page of its own over the lab at 1366×768, and o
 
   // On a phone the page is as wide as the screen: whole lines, and each scale still in one row.
   await page.setViewportSize({ width: 390, height: 844 });
-  await expect(survey.getByRole('radio', { name: 'Primary school' })).toBeVisible();
+  await expect(survey.getByRole('radio', { name: /^vmbo/ })).toBeVisible();
   expect((await survey.boundingBox())!.width).toBeGreaterThan(370);
   await expectWordsPerLine(survey, 2);
   await expectScalesInOneRow(survey);
@@ -165,7 +168,8 @@ async function expectScalesInOneRow(survey: Locator): Promise<void> {
     .evaluateAll((scales) =>
       scales.map((scale) => new Set([...scale.querySelectorAll('label')].map((label) => Math.round(label.getBoundingClientRect().top))).size),
     );
-  expect(rows.length).toBeGreaterThan(5);
+  // The survey leaves out the questions on ideas its assignment's levels do not teach: four scales are left for level 1.
+  expect(rows.length).toBeGreaterThanOrEqual(4);
   expect(
     rows.every((count) => count === 1),
     JSON.stringify(rows),

@@ -22,7 +22,7 @@ test('the built page has a strict CSP and a render breaks none of it', async ({ 
   await renderWindow.getByRole('button', { name: 'Render', exact: true }).click();
   await expect(renderWindow.getByTestId('render-status')).toContainText(/Done in [\d.]+ (ms|s)/, { timeout: 60_000 });
   const download = page.waitForEvent('download');
-  await page.locator('rt-export-menu').getByRole('button', { name: 'Download JSON' }).click();
+  await page.locator('rt-export-menu').getByRole('button', { name: 'Download results file' }).click();
   await download;
   expect(await page.evaluate(() => (window as unknown as { cspViolations: string[] }).cspViolations)).toEqual([]);
 });

@@ -1,5 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import { mkdirSync, writeFileSync } from 'node:fs';
+import type { ViewProbes } from '../src/view/view-probes.ts';
 import { collectErrors } from './support/game-steps.ts';
 import { sliderLatencyOf, type SliderFrame, type SliderInput } from './support/slider-latency.ts';
 
@@ -12,7 +13,7 @@ import { sliderLatencyOf, type SliderFrame, type SliderInput } from './support/s
  * a budget of them and says so; once the edits stop it draws them all again.
  *
  * Each step is timed from the slider's `input` event to the first frame of the 3D view that
- * shows its value (the view's `drawnScene`), and to the first that shows rays traced with it
+ * shows its value (the view's probes' `drawnScene`), and to the first that shows rays traced with it
  * (`drawnRaysScene`: a screen this size is traced in the worker, so its rays come a trace
  * later). The figures go to test-results/ray-budget-<project>.json for `npm run bench`; the
  * ≤ 100 ms target is the benchmark's, so this test asserts what must always hold: the note,
@@ -45,7 +46,7 @@ async function startRecording(page: Page): Promise<void> {
   await page.locator('rt-scene-view').evaluate(
     (element, [label, ball]) => {
       type Drawn = { objects: { id: string; material: { shininess: number } }[] } | null;
-      const view = (element as unknown as { labView: { drawnScene: Drawn; drawnRaysScene: Drawn } }).labView;
+      const view: { drawnScene: Drawn; drawnRaysScene: Drawn } = (element as unknown as { labView: { probes: ViewProbes } }).labView.probes;
       const record = { inputs: [] as SliderFrame[], frames: [] as SliderFrame[], rayFrames: [] as SliderFrame[], rayCounts: [] as SliderFrame[] };
       (window as unknown as { budgetRecord: typeof record }).budgetRecord = record;
       window.addEventListener(
@@ -184,7 +185,7 @@ async function drawnAll(page: Page, rays?: number, since?: number): Promise<numb
   await expect(page.getByTestId('ray-thinning')).toBeEmpty();
   // On SwiftShader a screen this heavy is drawn a piece a frame (view/piecewise-rays.ts): the last piece too.
   await expect
-    .poll(() => page.locator('rt-scene-view').evaluate((element) => (element as unknown as { labView: { raysComplete: boolean } }).labView.raysComplete), {
+    .poll(() => page.locator('rt-scene-view').evaluate((element) => (element as unknown as { labView: { probes: ViewProbes } }).labView.probes.raysComplete), {
       timeout: 120_000,
     })
     .toBe(true);
@@ -219,10 +220,10 @@ function figuresOf({ inputs, frames, rayFrames, rayCounts }: Recording) {
   return { view: strip(sliderLatencyOf({ inputs, frames })), rays: strip(sliderLatencyOf({ inputs, frames: rayFrames })), mostRays };
 }
 
-/** CSS pixels of the canvas that the drawn rays change (LabView.rayCoverage). */
+/** CSS pixels of the canvas that the drawn rays change (ViewProbes.rayCoverage). */
 async function coveredPixels(page: Page): Promise<number> {
   return page.locator('rt-scene-view').evaluate((element) => {
-    const { mask } = (element as unknown as { labView: { rayCoverage(): { mask: Uint8Array } } }).labView.rayCoverage();
+    const { mask } = (element as unknown as { labView: { probes: ViewProbes } }).labView.probes.rayCoverage();
     return mask.reduce((sum, covered) => sum + covered, 0);
   });
 }

@@ -183,6 +183,7 @@ test('a damaged session record is said in the code dialog, and kept in the Menu 
     survey: null,
   });
   await page.goto(`./${hash}`);
+  await page.locator('rt-participant-dialog').getByRole('button', { name: 'I understand, start' }).click();
   await page.locator('rt-participant-dialog').getByRole('textbox', { name: 'Participant code' }).fill('A17');
   await page.locator('rt-participant-dialog').getByRole('button', { name: 'Start' }).click();
   await expect(page.locator('rt-participant-dialog').getByRole('textbox')).toBeHidden();
@@ -202,6 +203,7 @@ test('a damaged session record is said in the code dialog, and kept in the Menu 
   await later.goto(`./${hash}`);
 
   const dialog = later.locator('rt-participant-dialog');
+  await dialog.getByRole('button', { name: 'I understand, start' }).click();
   await expect(dialog.locator('#code-note')).toContainText('Your saved participant code could not be read: please type it again.');
   await expect(dialog.locator('#code-note')).toContainText('The damaged record is kept: download or restore it from the Menu (Damaged saves).');
   await dialog.getByRole('textbox', { name: 'Participant code' }).fill('A17');
@@ -267,7 +269,7 @@ test('damaged survey answers are said, kept in the Menu, downloaded and restored
   expect(await readFile(await file.path(), 'utf8')).toBe(damaged);
   await entry.getByRole('button', { name: 'Restore' }).click();
   await expectToastOnTop(later, 'The damaged save is restored', 'status');
-  expect((await stored()).answers).toMatchObject({ minutes: 12, education: 'secondary' });
+  expect((await stored()).answers).toMatchObject({ minutes: 12, education: 'havo' });
   await later.screenshot({ path: 'test-results/screens/saves-damaged-survey.png' });
 });
 

@@ -1,6 +1,6 @@
 import { expect, type Locator, type Page, test } from '@playwright/test';
 import { PNG } from 'pngjs';
-import { Quaternion, Vector3 } from 'three';
+import { type Mesh, type MeshBasicMaterial, Quaternion, Vector3 } from 'three';
 import type { LabState } from '../src/lab-state/lab-state.ts';
 import type { Vec3 } from '../src/scene/scene.ts';
 import { CameraRays } from '../src/tracer/camera-rays.ts';
@@ -133,6 +133,12 @@ test('draws the scene: objects with their colours, the lights, the camera and it
   expect(red).toBeGreaterThan(200);
   const label = await canvas(page).getAttribute('aria-label');
   expect(label).toContain('5 objects, 2 lights');
+  // The gizmos keep their colours as written, the view's first ones too: three.js's colour
+  // management is off before any is made (the lens's disc and edge are #7fd4ff, not linearized).
+  const lensColours = await sceneView(page).evaluate((element: RtSceneView) =>
+    element.labView!.scene.getObjectByName('lens')!.children.map((part) => ((part as Mesh).material as MeshBasicMaterial).color.getHexString()),
+  );
+  expect(lensColours).toEqual(['7fd4ff', '7fd4ff']);
   await expect(canvas(page)).toHaveAttribute('tabindex', '0');
   await page.screenshot({ path: 'test-results/screens/scene-view.png' });
 });
@@ -275,18 +281,20 @@ test('the help panel opens with ? and lists every key, and Escape closes it', as
 test('idle costs nothing: no frames when nothing changes or a fact is reported, and a slider drag makes no new geometry', async ({ page }) => {
   // Idle from when the camera's rays are drawn (the 3D view loads, then its rays arrive, and
   // on SwiftShader their first frame compiles shaders for a second or two): from then on a
-  // whole second passes without a frame. A render loop would never get there.
+  // whole second passes without a frame, and none is coming (a frame asked for meanwhile
+  // waits for the shaders, and would land in the next check). A render loop would never get there.
   await expect(sceneView(page)).toHaveAttribute('data-ray-instances', /^[1-9]\d*$/, { timeout: 30_000 });
+  const coming = () => sceneView(page).evaluate((element: RtSceneView) => !element.labView!.probes.idle);
   await expect
     .poll(
       async () => {
         const idle = await frames(page);
         await page.waitForTimeout(1000);
-        return (await frames(page)) - idle;
+        return { drawn: (await frames(page)) - idle, coming: await coming() };
       },
       { timeout: 20_000 },
     )
-    .toBe(0);
+    .toEqual({ drawn: 0, coming: false });
   // Facts the store hears (a render started and finished) change nothing drawn: no frame.
   const idle = await frames(page);
   await sceneView(page).evaluate((element: RtSceneView) => {

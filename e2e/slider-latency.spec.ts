@@ -1,5 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import { mkdirSync, writeFileSync } from 'node:fs';
+import type { ViewProbes } from '../src/view/view-probes.ts';
 import { collectErrors } from './support/game-steps.ts';
 import { sliderLatencyOf, type SliderFrame, type SliderInput } from './support/slider-latency.ts';
 
@@ -8,7 +9,7 @@ import { sliderLatencyOf, type SliderFrame, type SliderInput } from './support/s
  * on a 16 × 16 screen, the red ball's Shininess slider is dragged (a step per frame) and
  * then nudged with the arrow key (a step per 150 ms). Each step runs from the slider's
  * `input` event to the first frame the 3D view drew with rays traced in a scene holding that
- * value or a later one (rt-scene-view's `labView.drawnRaysScene`), on SwiftShader. The
+ * value or a later one (rt-scene-view's `labView.probes.drawnRaysScene`), on SwiftShader. The
  * figures go to test-results/slider-latency-<project>.json for `npm run bench`, once per
  * Playwright project: with the page composited on SwiftShader too ('chromium') and on the CPU
  * ('software-compositing', as Chrome runs without a usable GPU). The ≤ 100 ms target is
@@ -27,7 +28,7 @@ const BALL_NAME = 'Red ball';
 async function startRecording(page: Page): Promise<void> {
   await page.locator('rt-scene-view').evaluate(
     (element, [label, ball]) => {
-      type View = { drawnRaysScene: { objects: { id: string; material: { shininess: number } }[] } | null; canvas: HTMLCanvasElement };
+      type View = { probes: ViewProbes; canvas: HTMLCanvasElement };
       const view = (element as unknown as { labView: View }).labView;
       const record = { inputs: [] as { at: number; value: number }[], frames: [] as { at: number; value: number }[], narrowest: view.canvas.width };
       (window as unknown as { sliderRecord: typeof record }).sliderRecord = record;
@@ -43,7 +44,7 @@ async function startRecording(page: Page): Promise<void> {
       let last: number | undefined;
       // Checked once a frame: a frame drawn with new rays is seen in it or at the next one.
       const frame = () => {
-        const value = view.drawnRaysScene?.objects.find((object) => object.id === ball)?.material.shininess;
+        const value = view.probes.drawnRaysScene?.objects.find((object) => object.id === ball)?.material.shininess;
         if (value !== undefined && value !== last) record.frames.push({ at: performance.now(), value });
         last = value;
         record.narrowest = Math.min(record.narrowest, view.canvas.width);

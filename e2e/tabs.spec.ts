@@ -21,7 +21,7 @@ async function openGame(page: Page): Promise<void> {
 /** The event log of the tab's JSON export, as the learner downloads it. */
 async function exportedEvents(page: Page): Promise<ExportedEvent[]> {
   const started = page.waitForEvent('download');
-  await page.locator('rt-export-menu').getByRole('button', { name: 'Download JSON' }).click();
+  await page.locator('rt-export-menu').getByRole('button', { name: 'Download results file' }).click();
   const file = await started;
   const exported = JSON.parse(await readFile(await file.path(), 'utf8')) as { events: { events: ExportedEvent[] } };
   return exported.events.events;

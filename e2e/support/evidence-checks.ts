@@ -1,6 +1,7 @@
 import { expect, type Page } from '@playwright/test';
 import type { TaskEvidence } from '../../src/quest/task-evidence-schema.ts';
 import type { RayColorKey } from '../../src/view/ray-palette.ts';
+import type { ViewProbes } from '../../src/view/view-probes.ts';
 
 /**
  * Checks of a task's evidence at its start view (docs/levels.md, "Evidence"; issue 37):
@@ -11,8 +12,8 @@ import type { RayColorKey } from '../../src/view/ray-palette.ts';
  * preview, the legend, the view's buttons, the render window, a toast). The rays are the
  * named pixel's whether it is chosen yet or not: a task that asks the learner to choose it
  * is judged by the view the learner chooses it in. The 3D view is reached through
- * rt-scene-view's declared `labView` and its inspection methods (`evidenceRay`,
- * `projectedPointsOf`).
+ * rt-scene-view's declared `labView` and its test probes (`labView.probes.evidenceRay`,
+ * `labView.probes.projectedPointsOf`).
  */
 
 /**
@@ -38,8 +39,7 @@ export const OBJECT_MIN_SIZE = 24;
 type Point = { x: number; y: number };
 interface InspectedView {
   canvas: HTMLCanvasElement;
-  evidenceRay(pixel: readonly [number, number], path: string): { drawnAs: RayColorKey; points: (Point & { hidden: boolean })[] } | null;
-  projectedPointsOf(name: string): (Point | null)[];
+  probes: Pick<ViewProbes, 'evidenceRay' | 'projectedPointsOf'>;
 }
 
 /** What was measured: each ray's length that shows, each object's size. */
@@ -61,7 +61,7 @@ export async function expectEvidenceShows(page: Page, where: string, evidence: T
     await expect
       .poll(
         () =>
-          sceneView.evaluate((element, [at, path]) => (element as unknown as { labView: InspectedView }).labView.evidenceRay(at, path) !== null, [
+          sceneView.evaluate((element, [at, path]) => (element as unknown as { labView: InspectedView }).labView.probes.evidenceRay(at, path) !== null, [
             pixel,
             paths[0]!,
           ] as const),
@@ -86,7 +86,7 @@ export async function expectEvidenceShows(page: Page, where: string, evidence: T
       return over === view.canvas;
     };
     const rays = (named.rays?.paths ?? []).map((path) => {
-      const ray = view.evidenceRay(named.rays!.pixel, path);
+      const ray = view.probes.evidenceRay(named.rays!.pixel, path);
       if (!ray) return { path, drawnAs: null, shown: 0 };
       let shown = 0;
       ray.points.forEach((point, index) => {
@@ -97,7 +97,7 @@ export async function expectEvidenceShows(page: Page, where: string, evidence: T
       return { path, drawnAs: ray.drawnAs, shown: Math.round(shown) };
     });
     const objects = (named.objects ?? []).map((id) => {
-      const points = view.projectedPointsOf(id);
+      const points = view.probes.projectedPointsOf(id);
       const placed = points.filter((point): point is Point => point !== null);
       const xs = placed.map((point) => point.x);
       const ys = placed.map((point) => point.y);

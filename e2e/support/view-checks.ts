@@ -1,12 +1,13 @@
 import { expect, type Page } from '@playwright/test';
 import { combineViews } from '../../src/app/task-views.ts';
 import type { DeclaredView } from '../../src/lab-state/lab-action.ts';
+import type { ViewProbes } from '../../src/view/view-probes.ts';
 
 /**
  * Checks of a declared view on screen (issue 9): once the view has settled, everything its
  * `frame` names is inside the 3D view's canvas and not under a panel, and the chosen
  * pixel's rays are drawn at least RAY_MIN_WIDTH px wide where they can be seen. The 3D
- * view is reached through rt-scene-view's declared `labView` and its inspection methods.
+ * view is reached through rt-scene-view's declared `labView` and its test probes (`labView.probes`).
  */
 
 /** The narrowest a ray may look on screen (CSS px): the shader's minimum, less a pixel for antialiasing. */
@@ -56,7 +57,7 @@ export async function expectViewShows(page: Page, where: string, view: DeclaredV
       continue;
     }
     const points = await sceneView.evaluate(
-      (element, framed) => (element as unknown as { labView: { projectedPointsOf(name: string): (Point | null)[] } }).labView.projectedPointsOf(framed),
+      (element, framed) => (element as unknown as { labView: { probes: ViewProbes } }).labView.probes.projectedPointsOf(framed),
       name,
     );
     expect(points.length, `${where}: "${name}" has a place in the scene`).toBeGreaterThan(0);
@@ -86,9 +87,9 @@ async function expectPixelRaysReadable(page: Page, where: string): Promise<void>
     .toBeGreaterThan(0);
   const widths = await sceneView.evaluate(
     (element, [measured, reach]) => {
-      type View = { pixelRaySegments(): { from: Point; to: Point }[]; rayCoverage(): { width: number; height: number; mask: Uint8Array } };
+      type View = { pixelRaySegments(): { from: Point; to: Point }[]; probes: ViewProbes };
       const view = (element as unknown as { labView: View }).labView;
-      const { width, height, mask } = view.rayCoverage();
+      const { width, height, mask } = view.probes.rayCoverage();
       const covered = (x: number, y: number) => x >= 0 && y >= 0 && x < width && y < height && mask[Math.round(y) * width + Math.round(x)] === 1;
       return view.pixelRaySegments().map(({ from, to }) => {
         const length = Math.hypot(to.x - from.x, to.y - from.y);

@@ -21,6 +21,7 @@ import { randomUuid } from '../classroom/learner-identity.ts';
 import type { SurveySubmission } from '../classroom/survey-answers.ts';
 import { loadSurvey, readSurveyText, surveyKey, type SurveyDamage } from '../classroom/survey-store.ts';
 import { assignmentCatalog } from './assignment-catalog.ts';
+import { ConceptTestKeeper } from './concept-test-keeper.ts';
 import { DamagedSaves, withRestored } from './damaged-saves.ts';
 import { applyPalette, keepPalette } from './palette-setting.ts';
 import { PendingWrites } from './pending-writes.ts';
@@ -82,6 +83,8 @@ export class QuestSession {
   readonly surveyDamage: SurveyDamage | null;
   /** The Menu's damaged saves of this progress key. */
   readonly damagedSaves: DamagedSaves;
+  /** The assignment's concept test: its answers, the one due (the start waits for the one before), handing in. */
+  readonly conceptTests: ConceptTestKeeper;
   private engineNow: QuestEngine;
   private modeNow: SessionMode = { kind: 'map' };
   private readonly store: Store;
@@ -99,7 +102,7 @@ export class QuestSession {
   private readonly writes: PendingWrites;
   private contextNow: SessionContext;
   private surveyNow: SurveySubmission | null;
-  /** `start` was called while the participant code was still needed: it runs again when the code is given. */
+  /** `start` was called while the participant code (or the concept test before) was needed: it runs again when given. */
   private waitingForCode = false;
 
   constructor(options: QuestSessionOptions) {
@@ -122,6 +125,7 @@ export class QuestSession {
     this.surveyNow = survey.submission;
     this.surveyDamage = survey.damage;
     if (survey.damage) this.keepDamagedSurvey(survey.damage);
+    this.conceptTests = new ConceptTestKeeper(this, this.writes, this.storage, this.clock.wallMs());
     const loaded = this.progress.load();
     this.problem = loaded.problem;
     this.damagedSaves = new DamagedSaves(this.storage, this.progress, this.writes, this.progressKey);
@@ -192,8 +196,8 @@ export class QuestSession {
    * while a participant code is needed; a finished assignment opens on its closing screen.
    */
   start(): SessionMode {
-    if (this.needsParticipantCode) {
-      this.waitingForCode = true;
+    this.waitingForCode = this.needsParticipantCode || this.conceptTests.due === 'pre';
+    if (this.waitingForCode) {
       this.openMap();
       return this.modeNow;
     }
@@ -296,6 +300,9 @@ export class QuestSession {
     if (!problem) this.changeContext({ ...this.contextNow, attemptId: randomUuid() });
     return problem;
   }
+
+  /** Saves nothing any more, so that data just deleted (withdraw-data.ts) does not come back before the page starts again. */
+  readonly stopSaving = (): void => void (this.save = () => null);
 
   /** The closing survey's answers: kept, and written now or at a later save. Null when written, else why not (yet). */
   submitSurvey(answers: SurveySubmission): SaveProblemKind | null {

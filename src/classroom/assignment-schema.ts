@@ -2,6 +2,7 @@ import { z } from 'zod';
 import { kebabId } from '../quest/kebab-id.ts';
 import { LOCALES } from '../quest/localized-text.ts';
 import type { Assignment } from './assignment.ts';
+import { CONCEPT_TEST_ORDERS } from './concept-test/concept-test-plan.ts';
 
 /**
  * The zod schema of an Assignment, for links opened by students (assignment-link.ts): a link
@@ -14,6 +15,9 @@ export const TITLE_MAX = 120;
 export const LEVELS_MAX = 100;
 /** A class code is a short label like a participant code ("3B", "group-2"). */
 export const CLASS_CODE = /^[\p{L}\p{N}_-]{1,32}$/u;
+
+/** A page of text: room for what is recorded, who sees it, and how to withdraw; short enough for a link. */
+export const CONSENT_MAX = 2000;
 
 /** Far more tasks than a level has; it only stops absurd links. */
 export const TASKS_MAX = 100;
@@ -33,6 +37,10 @@ export const assignmentSchema = z
       .url({ protocol: /^https?$/, error: 'must be a web address that starts with http:// or https://' })
       .max(200)
       .optional(),
+    // Added later: an older link has none and opens as before, so the format's version stays 1.
+    consent: z.string().trim().min(1).max(CONSENT_MAX).optional(),
+    // Optional, so that links made before it still open (as version 1).
+    conceptTest: z.enum(CONCEPT_TEST_ORDERS).optional(),
   })
   .superRefine((assignment, context) => {
     assignment.levels.forEach((id, index) => {

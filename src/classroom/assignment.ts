@@ -1,3 +1,5 @@
+import type { ConceptTestOrder } from './concept-test/concept-test-plan.ts';
+
 /**
  * A teacher's assignment (spec/classroom.md): which levels, in which order, what is required,
  * and how the session starts and ends. Encoded in a link (see assignment-link.ts); the game
@@ -22,4 +24,11 @@ export interface Assignment {
   classCode?: string;
   /** The school's own address for xAPI accounts (actor.account.homePage), so that code "P-07" of two schools are two people. */
   xapiHomePage?: string;
+  /**
+   * The information pupils read before they type their participant code and start
+   * (consent-text.ts); absent: the app's default text, in the pupil's language.
+   */
+  consent?: string;
+  /** A concept test before the first level and after the last (concept-test-plan.ts); absent: none. */
+  conceptTest?: ConceptTestOrder;
 }

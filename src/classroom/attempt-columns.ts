@@ -1,6 +1,9 @@
 import { HOW_COMPLETED } from '../quest/event-log.ts';
 import { TASK_KINDS, type TaskKind } from '../quest/goal.ts';
+import { optionId, optionPosition, type OptionText } from './quiz-options.ts';
 import type { SurveyAnswers } from './survey-answers.ts';
+import type { ConceptTestAnswers } from './concept-test/concept-answers.ts';
+import { CONCEPT_COLUMNS } from './concept-test/concept-columns.ts';
 import { hintsOpened, type TaskAttempt } from './task-attempts.ts';
 
 /**
@@ -22,7 +25,13 @@ export interface AttemptOwner {
   assignment: string;
   assignmentId: string;
   classCode: string;
+  /** The version of the app that wrote the file (package.json), '' when the file does not say. */
+  appVersion: string;
+  /** Minutes the device's clock was ahead of UTC when the file was made (120 in Dutch summer time), '' when unknown. */
+  utcOffsetMin: string;
   survey: { id: string; answers: SurveyAnswers } | null;
+  /** The concept test's answers, when the assignment had one (concept-columns.ts). */
+  conceptTest?: ConceptTestAnswers | null;
 }
 
 /** What one row is written from: whose it is, the attempt, and the attempt's number for its task (1, 2, …). */
@@ -30,14 +39,16 @@ export interface AttemptRow {
   owner: AttemptOwner;
   attempt: TaskAttempt;
   number: number;
+  /** The text of a chosen quiz option, from the level files in the file's language. */
+  optionText: OptionText;
 }
 
 /** The owner's fields a row carries as they are (the survey's answers have columns of their own). */
-type OwnerText = Exclude<keyof AttemptOwner, 'survey'>;
+type OwnerText = Exclude<keyof AttemptOwner, 'survey' | 'conceptTest'>;
 
 /** What the reader gathers from one row's cells; `how` is settled afterwards from `completedAt` and `shownByApp`. */
 export interface ReadRow {
-  owner: Record<OwnerText, string> & { surveyId: string };
+  owner: Record<OwnerText, string> & { surveyId: string; conceptTest: ConceptTestAnswers };
   attempt: TaskAttempt;
   shownByApp: boolean;
 }
@@ -52,12 +63,12 @@ export interface AttemptColumn {
   /** A file without it is not a Ray Tracer Quest CSV export; the others may be missing in older files (read as empty). */
   required: boolean;
   value(row: AttemptRow): CsvCell;
-  /** Puts the cell where it belongs; absent for a column worked out from others (`hints_opened`, `attempts`). */
+  /** Puts the cell where it belongs; absent for a column worked out from others (`hints_opened`, `attempts`, `quiz_choice_text`). */
   read?(cell: string, into: ReadRow): CellProblem | void;
 }
 
 /** A count or a time in milliseconds; an empty cell is 0. */
-type CountField = 'durationMs' | 'activeMs' | 'points' | 'hintsText' | 'hintsGuidance' | 'hintsOffered' | 'quizAnswers';
+type CountField = 'durationMs' | 'activeMs' | 'points' | 'hintsText' | 'hintsGuidance' | 'hintsOffered' | 'quizAnswers' | 'explanationOpens';
 
 const plain = { quoted: false, required: false };
 
@@ -133,8 +144,29 @@ export const ATTEMPT_COLUMNS: readonly AttemptColumn[] = [
     value: ({ attempt }) => attempt.quizCorrect ?? '',
     read: (cell, into) => void (into.attempt.quizCorrect = cell === '' ? null : cell === 'true'),
   },
+  {
+    name: 'quiz_choice',
+    ...plain,
+    value: ({ attempt }) => (attempt.quizChoice === null ? '' : optionId(attempt.quizChoice)),
+    read: (cell, into) => void (into.attempt.quizChoice = optionPosition(cell.trim().toLowerCase())),
+  },
+  {
+    name: 'quiz_choice_text',
+    ...plain,
+    value: ({ attempt, optionText }) => (attempt.quizChoice === null ? '' : optionText(attempt.level, attempt.task, attempt.quizChoice)),
+  },
+  countColumn('explanation_opens', 'explanationOpens'),
   countColumn('points', 'points'),
+  ownerColumn('app_version', 'appVersion', false),
+  {
+    // A number, not text: a text cell starting with "-" would get the apostrophe that keeps formulas out (csv-text.ts).
+    name: 'utc_offset_min',
+    ...plain,
+    value: ({ owner }) => (owner.utcOffsetMin === '' ? '' : Number(owner.utcOffsetMin)),
+    read: (cell, into) => void (into.owner.utcOffsetMin = cell.trim()),
+  },
   { name: 'survey', ...plain, value: ({ owner }) => owner.survey?.id ?? '', read: (cell, into) => void (into.owner.surveyId = cell) },
+  ...CONCEPT_COLUMNS,
 ];
 
 /** The survey's answers follow the table as one `survey_<question>` column per question. */
@@ -146,7 +178,19 @@ export const ID_COLUMNS: ReadonlySet<string> = new Set(ATTEMPT_COLUMNS.filter((c
 /** What the reader starts a row from: every cell empty. */
 export function emptyReadRow(): ReadRow {
   return {
-    owner: { learnerId: '', attemptId: '', installId: '', participant: '', assignment: '', assignmentId: '', classCode: '', surveyId: '' },
+    owner: {
+      learnerId: '',
+      attemptId: '',
+      installId: '',
+      participant: '',
+      assignment: '',
+      assignmentId: '',
+      classCode: '',
+      appVersion: '',
+      utcOffsetMin: '',
+      surveyId: '',
+      conceptTest: { pre: null, post: null },
+    },
     attempt: {
       level: '',
       task: '',
@@ -163,6 +207,8 @@ export function emptyReadRow(): ReadRow {
       hintsOffered: 0,
       quizAnswers: 0,
       quizCorrect: null,
+      quizChoice: null,
+      explanationOpens: 0,
     },
     shownByApp: false,
   };

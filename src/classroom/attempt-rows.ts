@@ -1,4 +1,5 @@
 import { ATTEMPT_COLUMNS, SURVEY_PREFIX, type AttemptOwner, type CsvCell } from './attempt-columns.ts';
+import type { OptionText } from './quiz-options.ts';
 import type { TaskAttempt } from './task-attempts.ts';
 
 /**
@@ -15,13 +16,13 @@ export function csvHeader(surveyQuestions: readonly string[]): string[] {
   return [...ATTEMPT_COLUMNS.map((column) => column.name), ...surveyQuestions.map((question) => `${SURVEY_PREFIX}${question}`)];
 }
 
-export function attemptRows(owner: AttemptOwner, attempts: readonly TaskAttempt[], surveyQuestions: readonly string[]): CsvCell[][] {
+export function attemptRows(owner: AttemptOwner, attempts: readonly TaskAttempt[], surveyQuestions: readonly string[], optionText: OptionText): CsvCell[][] {
   const tries = new Map<string, number>();
   const answers = surveyQuestions.map((question) => owner.survey?.answers[question] ?? '');
   return attempts.map((attempt) => {
     const key = `${attempt.level}/${attempt.task}`;
     const number = (tries.get(key) ?? 0) + 1;
     tries.set(key, number);
-    return [...ATTEMPT_COLUMNS.map((column) => column.value({ owner, attempt, number })), ...answers];
+    return [...ATTEMPT_COLUMNS.map((column) => column.value({ owner, attempt, number, optionText })), ...answers];
   });
 }

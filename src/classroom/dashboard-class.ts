@@ -5,6 +5,7 @@ import { csvTable } from './csv-text.ts';
 import { readExportFile } from './dashboard-read-file.ts';
 import type { ClassLearner } from './dashboard-learners.ts';
 import type { ClassRecord, SkippedFile } from './dashboard-record.ts';
+import { NO_OPTION_TEXTS, type OptionText } from './quiz-options.ts';
 import { surveyQuestionIds, type SurveyLookup } from './survey-columns.ts';
 
 /**
@@ -57,10 +58,10 @@ const surveyQuestions = (learners: readonly ClassLearner[], surveyById: SurveyLo
  * playthrough, so nothing is counted twice), then the file each row came from. Survey
  * columns in the order of `surveyById`'s questions (the app's surveys.ts).
  */
-export function combinedCsv(learners: readonly ClassLearner[], surveyById: SurveyLookup): string {
+export function combinedCsv(learners: readonly ClassLearner[], surveyById: SurveyLookup, optionText: OptionText = NO_OPTION_TEXTS): string {
   const questions = surveyQuestions(learners, surveyById);
   const rows = learners.flatMap((learner) =>
-    learner.parts.flatMap((part) => attemptRows({ ...part, survey: learner.survey }, part.attempts, questions).map((row) => [...row, part.file])),
+    learner.parts.flatMap((part) => attemptRows({ ...part, survey: learner.survey }, part.attempts, questions, optionText).map((row) => [...row, part.file])),
   );
   return csvTable([...csvHeader(questions), 'file'], rows, ID_COLUMNS);
 }

@@ -1,4 +1,6 @@
+import { codeKey } from './dashboard-class-list.ts';
 import type { ClassRecord } from './dashboard-record.ts';
+import { joinedConceptTests } from './concept-test/concept-test-join.ts';
 
 /**
  * One learner is one learner: a student who pressed every download button, or handed in a
@@ -9,7 +11,7 @@ import type { ClassRecord } from './dashboard-record.ts';
  * (never added up). A log only grows, so "most complete" is the one with the most finished
  * task attempts, then the most attempts, then the latest moment; on a tie a JSON export
  * (which also has the level visits) beats a CSV export. A learner's playthroughs (the same
- * learner id in the same assignment: say, after "start again") are then joined, in the
+ * learner id in the same assignment, whatever its case: say, after "start again") are then joined, in the
  * order they were played, so the learner is counted once with all their attempts.
  */
 export interface ClassLearner extends ClassRecord {
@@ -54,9 +56,10 @@ export function classLearners(records: readonly ClassRecord[]): ClassLearner[] {
       kept.survey ??
       copies.filter((copy) => copy.survey).reduce<ClassRecord | null>((best, copy) => (best ? moreComplete(best, copy) : copy), null)?.survey ??
       null;
-    return { kept: { ...kept, survey }, files: copies.map((copy) => copy.file) };
+    return { kept: { ...kept, survey, conceptTest: joinedConceptTests(copies) }, files: copies.map((copy) => copy.file) };
   });
-  return groupBy(playthroughs, ({ kept }) => `${kept.assignmentId}\u0000${kept.learnerId}`).map((group) => {
+  // Codes are typed by pupils: "5h2-03" and "5H2-03" are one learner.
+  return groupBy(playthroughs, ({ kept }) => `${kept.assignmentId}\u0000${codeKey(kept.learnerId)}`).map((group) => {
     const parts = group.map(({ kept }) => kept).sort((a, b) => firstMoment(a) - firstMoment(b));
     const latest = parts.at(-1)!;
     return {
@@ -64,6 +67,7 @@ export function classLearners(records: readonly ClassRecord[]): ClassLearner[] {
       attempts: parts.flatMap((part) => part.attempts),
       visits: parts.flatMap((part) => part.visits),
       survey: [...parts].reverse().find((part) => part.survey)?.survey ?? null,
+      conceptTest: joinedConceptTests(parts),
       parts,
       files: group.flatMap(({ files }) => files),
     };

@@ -2,6 +2,7 @@ import { msg, str } from '@lit/localize';
 import type { HowCompleted } from '../quest/event-log.ts';
 import { ATTEMPT_COLUMNS, emptyReadRow, SURVEY_PREFIX, type CellProblem, type ReadRow } from './attempt-columns.ts';
 import { parseCsv } from './csv-text.ts';
+import { learnerKey, normalParticipantCode } from './participant-code.ts';
 import type { ClassRecord, FileRead } from './dashboard-record.ts';
 import type { SurveyAnswers } from './survey-answers.ts';
 
@@ -49,16 +50,20 @@ export function readCsvExport(file: string, text: string): FileRead {
     ok: true,
     record: {
       file,
-      participant: owner.participant,
-      learnerId: owner.learnerId || owner.participant || `file:${file}`,
+      // `5h2-03` and `5H2-03` are one learner (participant-code.ts).
+      participant: normalParticipantCode(owner.participant),
+      learnerId: learnerKey(owner.learnerId || owner.participant, owner.participant) || `file:${file}`,
       attemptId: owner.attemptId || `file:${file}`,
       installId: owner.installId,
       assignment: owner.assignment,
       assignmentId: owner.assignmentId,
       classCode: owner.classCode,
+      appVersion: owner.appVersion,
+      utcOffsetMin: owner.utcOffsetMin,
       attempts,
       visits: [],
       survey: surveyOf(owner.surveyId, names, first),
+      conceptTest: owner.conceptTest.pre || owner.conceptTest.post ? owner.conceptTest : null,
     },
   };
 }

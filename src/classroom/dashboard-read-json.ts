@@ -6,9 +6,11 @@ import { PROGRESS_KIND } from '../quest/progress.ts';
 import { isRecord } from '../util/is-record.ts';
 import { readJson } from '../util/read-json.ts';
 import { readLog } from './task-attempts.ts';
+import { learnerKey, normalParticipantCode } from './participant-code.ts';
 import { EXPORT_FORMAT, EXPORT_VERSION } from './export-json.ts';
 import type { ClassRecord, FileRead } from './dashboard-record.ts';
 import type { SurveyAnswers } from './survey-answers.ts';
+import { readConceptTestValue } from './concept-test/concept-test-store.ts';
 
 /**
  * Reads a learner's JSON export (src/classroom/export-json.ts) for the dashboard. The
@@ -48,7 +50,8 @@ export function readJsonExport(file: string, text: string): FileRead {
   const log = eventLogSchema.safeParse(parsed.data.events, { error: describeIssue });
   if (!log.success) return { ok: false, file, reason: msg('damaged event log'), detail: `events.${formatIssues(log.error.issues)[0]}` };
   const { attempts, visits } = readLog(log.data);
-  const participant = parsed.data.participant ?? '';
+  // `5h2-03` and `5H2-03` are one learner (participant-code.ts).
+  const participant = normalParticipantCode(parsed.data.participant ?? '');
   const assignment = assignmentOf(parsed.data.assignment);
   const learner = (name: string) => (isRecord(parsed.data.learner) && typeof parsed.data.learner[name] === 'string' ? parsed.data.learner[name] : '');
   return {
@@ -56,14 +59,18 @@ export function readJsonExport(file: string, text: string): FileRead {
     record: {
       file,
       participant,
-      learnerId: learner('id') || participant || `file:${file}`,
+      learnerId: learnerKey(learner('id') || participant, participant) || `file:${file}`,
       // An older export's log is still one playthrough: its start time tells it apart.
       attemptId: learner('attemptId') || `log:${assignment.assignmentId}:${participant}:${log.data.startedAt}`,
       installId: learner('installId'),
+      appVersion: typeof value.appVersion === 'string' ? value.appVersion : '',
+      utcOffsetMin: typeof value.utcOffsetMin === 'number' ? String(value.utcOffsetMin) : '',
       ...assignment,
       attempts,
       visits,
       survey: readSurvey(parsed.data.survey),
+      // Only what can be read of it: a damaged answer is left out (as when the game loads it).
+      conceptTest: isRecord(value.conceptTest) ? readConceptTestValue(value.conceptTest).answers : null,
     },
   };
 }

@@ -1,4 +1,5 @@
 import type { SurveyAnswers } from './survey-answers.ts';
+import type { ConceptTestAnswers } from './concept-test/concept-answers.ts';
 import type { LevelVisit, TaskAttempt } from './task-attempts.ts';
 
 /**
@@ -24,11 +25,17 @@ export interface ClassRecord {
   assignmentId: string;
   /** The assignment's class code, or ''. */
   classCode: string;
+  /** The version of the app that wrote the file, or '' when the file does not say. */
+  appVersion: string;
+  /** The device's minutes ahead of UTC when the file was made, or '' when the file does not say. */
+  utcOffsetMin: string;
   attempts: TaskAttempt[];
   /** Level visits; empty for a CSV export, which has no level events. */
   visits: LevelVisit[];
   /** The closing survey's answers, or null when the learner did not hand one in. */
   survey: { id: string; answers: SurveyAnswers } | null;
+  /** The concept test's answers, or null (or absent) when the learner took none. */
+  conceptTest?: ConceptTestAnswers | null;
 }
 
 /** A file that was not counted, and why. */

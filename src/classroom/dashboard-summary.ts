@@ -1,5 +1,6 @@
 import type { ClassRecord } from './dashboard-record.ts';
 import { fiveNumbers, type FiveNumbers } from './dashboard-stats.ts';
+import type { TaskKind } from '../quest/goal.ts';
 import { hintsOpened } from './task-attempts.ts';
 
 /**
@@ -17,6 +18,8 @@ export interface TaskSummary {
   level: string;
   task: string;
   mandatory: boolean;
+  /** info, quiz or do, as the files say; null when they do not (logs before 0.1). */
+  kind: TaskKind | null;
   /** Learners who were shown the task. */
   learners: number;
   /** Learners by how they completed it; the rest did not finish it. */
@@ -87,6 +90,7 @@ function summarizeTask(level: string, task: string, records: readonly ClassRecor
     level,
     task,
     mandatory: false,
+    kind: null,
     learners: 0,
     done: 0,
     shown: 0,
@@ -103,6 +107,7 @@ function summarizeTask(level: string, task: string, records: readonly ClassRecor
     if (attempts.length === 0) continue;
     summary.learners++;
     summary.mandatory ||= attempts[0].mandatory;
+    summary.kind ??= attempts[0].kind;
     summary.hintsText += sum(attempts, (attempt) => attempt.hintsText);
     summary.hintsGuidance += sum(attempts, (attempt) => attempt.hintsGuidance);
     const opened = sum(attempts, hintsOpened);
@@ -120,6 +125,11 @@ function summarizeTask(level: string, task: string, records: readonly ClassRecor
 
 function sum<Item>(items: readonly Item[], value: (item: Item) => number): number {
   return items.reduce((total, item) => total + value(item), 0);
+}
+
+/** A task the learner could leave out: not required, and not an info step (which is read, not done). */
+export function isOptionalTask(task: Pick<TaskSummary, 'mandatory' | 'kind'>): boolean {
+  return !task.mandatory && task.kind !== 'info';
 }
 
 /** A task's share of learners who completed it (done or shown), 0..1; 0 when none saw it. */

@@ -4,6 +4,7 @@ import { attemptRows, csvHeader } from './attempt-rows.ts';
 import { csvTable } from './csv-text.ts';
 import { exportOwner, type ExportInput } from './export-context.ts';
 import { surveyQuestionIds } from './survey-columns.ts';
+import { NO_OPTION_TEXTS } from './quiz-options.ts';
 import { surveyById } from './surveys.ts';
 
 /**
@@ -15,7 +16,7 @@ import { surveyById } from './surveys.ts';
  * first ends it unfinished, with an empty completed_at, and coming back starts the next
  * attempt. `attempts` is the attempt's number for its task (1, 2, …), so the last row of a
  * task says how many it took. `active_ms` leaves out the time the tab was hidden or the
- * page closed. Times are ISO 8601 in UTC. The columns and rows are the dashboard's
+ * page closed. Times are ISO 8601 in UTC; utc_offset_min turns them into the pupil's clock time. The columns and rows are the dashboard's
  * combined CSV's (attempt-rows.ts), so the two files always agree.
  *
  * Encoding: UTF-8 with a byte-order mark and CRLF line ends (RFC 4180). Without the mark,
@@ -29,5 +30,7 @@ export const BOM = '\uFEFF';
 export function exportCsv(input: ExportInput): string {
   const owner = exportOwner(input);
   const questions = surveyQuestionIds(surveyById, [input.survey?.survey, input.assignment?.survey], [input.survey?.answers]);
-  return BOM + csvTable(csvHeader(questions), attemptRows(owner, readLog(input.progress.log).attempts, questions), ID_COLUMNS);
+  return (
+    BOM + csvTable(csvHeader(questions), attemptRows(owner, readLog(input.progress.log).attempts, questions, input.optionText ?? NO_OPTION_TEXTS), ID_COLUMNS)
+  );
 }

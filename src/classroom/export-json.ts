@@ -4,8 +4,10 @@ import type { Assignment } from './assignment.ts';
 import { assignmentId } from './assignment-id.ts';
 import type { ExportInput } from './export-context.ts';
 import { learnerId } from './learner-identity.ts';
+import { NO_OPTION_TEXTS, optionId, type OptionText } from './quiz-options.ts';
 import { hintsOpened, readLog, type TaskAttempt } from './task-attempts.ts';
 import type { SurveySubmission } from './survey-answers.ts';
+import { conceptTestExport, type ConceptTestExport } from './concept-test/concept-test-export.ts';
 
 /**
  * The JSON export: everything a researcher (or the class dashboard) needs from one
@@ -15,8 +17,8 @@ import type { SurveySubmission } from './survey-answers.ts';
  * wants the per-task figures without reading events; the dashboard reads the events.
  */
 
-/** A task attempt as the CSV has it, with the hints it counts as used. */
-export type ExportedAttempt = TaskAttempt & { hintsOpened: number };
+/** A task attempt as the CSV has it, with the hints it counts as used and the chosen option's id and text (quiz-options.ts). */
+export type ExportedAttempt = TaskAttempt & { hintsOpened: number; quizChoiceId: string | null; quizChoiceText: string | null };
 
 export const EXPORT_FORMAT = 'ray-tracer-quest-export';
 export const EXPORT_VERSION = 1;
@@ -26,6 +28,8 @@ export interface QuestExport {
   version: typeof EXPORT_VERSION;
   appVersion: string;
   exportedAt: string;
+  /** Minutes the device's clock was ahead of UTC at the download, or null when unknown (export-context.ts). */
+  utcOffsetMin: number | null;
   participant: string | null;
   /** Who and which playthrough (learner-identity.ts): the dashboard merges a learner's files by these. */
   learner: { id: string; installId: string; attemptId: string };
@@ -35,6 +39,7 @@ export interface QuestExport {
   events: EventLogData;
   attempts: ExportedAttempt[];
   survey: SurveySubmission | null;
+  conceptTest: ConceptTestExport | null;
 }
 
 export function buildExport(input: ExportInput): QuestExport {
@@ -44,13 +49,25 @@ export function buildExport(input: ExportInput): QuestExport {
     version: EXPORT_VERSION,
     appVersion: input.appVersion,
     exportedAt: input.exportedAt,
+    utcOffsetMin: input.utcOffsetMin ?? null,
     participant: input.participant,
     learner: { id: learnerId(input.participant, input.installId), installId: input.installId, attemptId: input.attemptId },
     assignment: assignment ? { id: assignmentId(assignment), ...assignment } : null,
     progress: { points: pointsOf(progress), levels: progress.levels, badges: progress.badges },
     events: progress.log,
-    attempts: readLog(progress.log).attempts.map((attempt) => ({ ...attempt, hintsOpened: hintsOpened(attempt) })),
+    attempts: readLog(progress.log).attempts.map((attempt) => exportedAttempt(attempt, input.optionText ?? NO_OPTION_TEXTS)),
     survey: input.survey,
+    conceptTest: conceptTestExport(input.conceptTest ?? null),
+  };
+}
+
+function exportedAttempt(attempt: TaskAttempt, optionText: OptionText): ExportedAttempt {
+  const choice = attempt.quizChoice;
+  return {
+    ...attempt,
+    hintsOpened: hintsOpened(attempt),
+    quizChoiceId: choice === null ? null : optionId(choice),
+    quizChoiceText: choice === null ? null : optionText(attempt.level, attempt.task, choice),
   };
 }
 

@@ -3,6 +3,7 @@ import { fnv1a } from './assignment-id.ts';
 import { hintsOpened, readLog } from './task-attempts.ts';
 import { assignmentLabel, exportOwner, type ExportInput } from './export-context.ts';
 import { isoAt, isoDuration } from './iso-duration.ts';
+import { NO_OPTION_TEXTS, optionId, type OptionText } from './quiz-options.ts';
 import { activities, EXTENSIONS, VERBS, XAPI_BASE, type XapiActivity, type XapiVerb } from './xapi-vocabulary.ts';
 
 /**
@@ -12,7 +13,9 @@ import { activities, EXTENSIONS, VERBS, XAPI_BASE, type XapiActivity, type XapiV
  *
  * Statement ids are derived from their content, so sending the same file twice does not
  * record anything twice (the store refuses a known id). Render and tab events and hint
- * offers are left out: they are the app's, not learning; the JSON export has them. A task's
+ * offers are left out: they are the app's, not learning; the JSON export has them. A quiz
+ * answer's response is the chosen option's id (a, b, … by its place in the level file,
+ * quiz-options.ts), with its text in an extension. A task's
  * completion says how many hints were offered and how many the learner opened; each rung
  * shown is an "experienced" statement of its own, with its trigger (event-log.ts).
  *
@@ -73,7 +76,10 @@ export function exportXapi(input: ExportInput): XapiStatement[] {
         platform: 'Ray Tracer Quest',
         language,
         contextActivities: { ...(level ? { parent: [activities.level(level)] } : {}), grouping },
-        extensions: { [EXTENSIONS.appVersion]: input.appVersion },
+        extensions: {
+          [EXTENSIONS.appVersion]: input.appVersion,
+          ...(input.utcOffsetMin === undefined ? {} : { [EXTENSIONS.utcOffsetMin]: String(input.utcOffsetMin) }),
+        },
       },
       timestamp,
     });
@@ -81,7 +87,7 @@ export function exportXapi(input: ExportInput): XapiStatement[] {
   const openedAt = new Map<string, number>();
   for (const event of events) {
     const at = isoAt(startedAt, event.t);
-    eventStatement(event, at, openedAt, add);
+    eventStatement(event, at, openedAt, add, input.optionText ?? NO_OPTION_TEXTS);
   }
   for (const attempt of readLog(progress.log).attempts) {
     if (attempt.how === null || attempt.completedAt === null) continue;
@@ -96,6 +102,7 @@ export function exportXapi(input: ExportInput): XapiStatement[] {
         [EXTENSIONS.activeMs]: attempt.activeMs,
         [EXTENSIONS.hintsOffered]: attempt.hintsOffered,
         [EXTENSIONS.hintsOpened]: hintsOpened(attempt),
+        [EXTENSIONS.explanationOpens]: attempt.explanationOpens,
       },
     };
     add(attempt.how === 'skipped' ? VERBS.skipped : VERBS.completed, activities.task(attempt.level, attempt.task), attempt.completedAt, result, attempt.level);
@@ -114,7 +121,7 @@ export function exportXapi(input: ExportInput): XapiStatement[] {
 type Add = (verb: XapiVerb, object: XapiActivity, timestamp: string, result?: XapiResult, level?: string) => void;
 
 /** The statement of one logged event, if it has one (task completions come from the attempts). */
-function eventStatement(event: LoggedEvent, at: string, openedAt: Map<string, number>, add: Add): void {
+function eventStatement(event: LoggedEvent, at: string, openedAt: Map<string, number>, add: Add, optionText: OptionText): void {
   switch (event.type) {
     case 'session.started':
       return add(VERBS.launched, activities.app(), event.at);
@@ -129,14 +136,18 @@ function eventStatement(event: LoggedEvent, at: string, openedAt: Map<string, nu
         completion: true,
         duration: isoDuration(event.t - (openedAt.get(event.level) ?? event.t)),
       });
-    case 'quiz.answered':
-      return add(
-        VERBS.answered,
-        activities.task(event.level, event.task),
-        at,
-        { success: event.correct, response: String(event.choice ?? event.value) },
-        event.level,
-      );
+    case 'quiz.answered': {
+      // A choice interaction's response is the chosen option's id (xAPI 1.0.3 §4.1.4.1, "choice"); an estimate's, the number.
+      const result: XapiResult =
+        event.choice === undefined
+          ? { success: event.correct, response: String(event.value) }
+          : {
+              success: event.correct,
+              response: optionId(event.choice),
+              extensions: { [EXTENSIONS.choiceText]: optionText(event.level, event.task, event.choice) },
+            };
+      return add(VERBS.answered, activities.task(event.level, event.task), at, result, event.level);
+    }
     case 'hint.shown':
       return add(
         VERBS.experienced,

@@ -5,7 +5,10 @@ import type { KeyValueStorage } from '../quest/progress-store.ts';
  * tell one student who pressed every download button from several students.
  *
  * - The install id is a random UUID kept in this browser's storage: the same for every
- *   assignment and free play on this computer, until the browser's data is cleared.
+ *   assignment and free play on this computer, until the browser's data is cleared. It is
+ *   made only for learners without a participant code: with a code it would be a second,
+ *   device-wide identifier that links a pupil's work across assignments and classes, which
+ *   a pseudonymous study must not hold (AVG/GDPR art. 5(1)(c), data minimisation).
  * - The attempt id is a random UUID per playthrough (one saved progress): kept with the
  *   progress, the same in every file exported from it, new after "start again".
  * - The learner id names the person: the participant code when one was asked, else the
@@ -59,6 +62,14 @@ export function installId(storage: KeyValueStorage): string {
     // Kept for this visit only; the progress store reports the storage problem.
   }
   return made;
+}
+
+/**
+ * The install id an export carries: none ('') when the learner has a participant code, and
+ * then none is made or kept in the browser either; else this browser's (installId).
+ */
+export function exportInstallId(participant: string | null, storage: KeyValueStorage): string {
+  return participant ? '' : installId(storage);
 }
 
 /** The learner id of the exports: the participant code, else `install:<install id>`. */

@@ -17,6 +17,8 @@ const OPTIONS_MAX = 20;
 const common = {
   id: kebabId(),
   text: localizedTextSchema,
+  /** Asked only in an assignment with at least one of these levels (a question on what they teach); absent: always (survey-for-levels.ts). */
+  levels: z.array(kebabId()).min(1).max(100).optional(),
 };
 
 const choiceSchema = z.strictObject({

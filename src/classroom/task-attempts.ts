@@ -50,6 +50,10 @@ export interface TaskAttempt {
   quizAnswers: number;
   /** Whether the last quiz answer was right; null when no answer was given (not a quiz, or "show me"). */
   quizCorrect: boolean | null;
+  /** The position in the level file of the last choice answered (quiz-options.ts names it a, b, …); null for none or a number. */
+  quizChoice: number | null;
+  /** "Explain more" opened for the task, during the attempt or after it ended (then counted on the task's last attempt). */
+  explanationOpens: number;
 }
 
 export interface LevelVisit {
@@ -101,6 +105,8 @@ export function readLog(log: EventLogData): ReadLog {
   // The open ones with the time they started.
   const openAttempts = new Map<string, { attempt: TaskAttempt; from: number }>();
   const openVisits = new Map<string, { visit: LevelVisit; from: number }>();
+  // Each task's latest attempt, open or ended: an explanation is often read after the answer.
+  const lastAttempts = new Map<string, TaskAttempt>();
   // Optional tasks shown but not yet touched: their attempt starts at the first move.
   const untouched = new Map<string, { level: string; task: string; kind: TaskKind | null }>();
   const timed = (from: number, to: number) => ({ durationMs: to - from, activeMs: activeBetween(spans, from, to) });
@@ -126,7 +132,10 @@ export function readLog(log: EventLogData): ReadLog {
       hintsOffered: 0,
       quizAnswers: 0,
       quizCorrect: null,
+      quizChoice: null,
+      explanationOpens: 0,
     };
+    lastAttempts.set(key(level, task), attempt);
     openAttempts.set(key(level, task), { attempt, from: t });
     attempts.push(attempt);
   };
@@ -171,9 +180,12 @@ export function readLog(log: EventLogData): ReadLog {
       case 'task.started':
         touch(event.level, event.task, event.t);
         break;
-      case 'explanation.expanded':
+      case 'explanation.expanded': {
         touch(event.level, event.task, event.t);
+        const attempt = event.task === null ? undefined : lastAttempts.get(key(event.level, event.task));
+        if (attempt) attempt.explanationOpens++;
         break;
+      }
       case 'task.completed': {
         touch(event.level, event.task, event.t);
         const attempt = openAttempts.get(key(event.level, event.task));
@@ -204,6 +216,7 @@ export function readLog(log: EventLogData): ReadLog {
         if (attempt) {
           attempt.quizAnswers++;
           attempt.quizCorrect = event.correct;
+          attempt.quizChoice = event.choice ?? null;
         }
         break;
       }

@@ -54,7 +54,11 @@ export const activities = {
   question: (survey: string, question: string) => activity(`surveys/${survey}/questions/${question}`, 'question', question),
 };
 
-/** Extensions carry what the spec's fields do not: how a task was completed, active time, hints, the app's version. */
+/**
+ * Extensions carry what the spec's fields do not: how a task was completed, active time,
+ * hints, explanations opened, the chosen option's text, the app's version and the device's
+ * offset from UTC.
+ */
 export const EXTENSIONS = {
   how: `${XAPI_BASE}/extensions/how`,
   activeMs: `${XAPI_BASE}/extensions/active-ms`,
@@ -62,4 +66,7 @@ export const EXTENSIONS = {
   hintsOpened: `${XAPI_BASE}/extensions/hints-opened`,
   trigger: `${XAPI_BASE}/extensions/trigger`,
   appVersion: `${XAPI_BASE}/extensions/app-version`,
+  utcOffsetMin: `${XAPI_BASE}/extensions/utc-offset-min`,
+  choiceText: `${XAPI_BASE}/extensions/choice-text`,
+  explanationOpens: `${XAPI_BASE}/extensions/explanation-opens`,
 } as const;

@@ -4,7 +4,8 @@ import { LOCALES, type Locale } from '../quest/localized-text.ts';
  * Which language the app speaks, decided without touching the page (so it can be tested):
  * a teacher's assignment sets it for the class; otherwise `?lang=nl` in the address (a link
  * a teacher hands out, or a bookmark); otherwise what the learner last picked in the menu;
- * otherwise English, the language the app is written in (DESIGN.md: English first).
+ * otherwise the first of the browser's languages the app speaks (a Dutch browser opens in
+ * Dutch on the first visit); otherwise English, the language the app is written in.
  */
 
 /** The localStorage key of the learner's own choice in the menu. */
@@ -18,6 +19,8 @@ export interface LocaleSources {
   search?: string;
   /** The learner's remembered choice, as read from storage. */
   remembered?: string | null;
+  /** The browser's languages in its order of preference (`navigator.languages`, e.g. `['nl-NL', 'en']`). */
+  browser?: readonly string[];
 }
 
 /** `value` when it names a language of the app ('nl', 'NL', ' en '), else null. */
@@ -26,10 +29,19 @@ export function parseLocale(value: string | null | undefined): Locale | null {
   return LOCALES.find((locale) => locale === code) ?? null;
 }
 
-/** The language to use: assignment > `?lang=` > remembered choice > English. */
+/** The language to use: assignment > `?lang=` > remembered choice > the browser's languages > English. */
 export function pickLocale(sources: LocaleSources): Locale {
   const fromAddress = parseLocale(new URLSearchParams(sources.search ?? '').get('lang'));
-  return sources.assignment ?? fromAddress ?? parseLocale(sources.remembered) ?? 'en';
+  return sources.assignment ?? fromAddress ?? parseLocale(sources.remembered) ?? browserLocale(sources.browser ?? []) ?? 'en';
+}
+
+/** The first of the browser's languages the app speaks, by its primary subtag ('nl-BE' is Dutch), or null. */
+export function browserLocale(languages: readonly string[]): Locale | null {
+  for (const language of languages) {
+    const locale = parseLocale(language.split('-')[0]);
+    if (locale) return locale;
+  }
+  return null;
 }
 
 /** The remembered choice, or null; a browser that blocks storage (it throws) counts as none. */

@@ -70,9 +70,12 @@ export function chooseLocale(locale: Locale): Promise<Locale> {
 
 /**
  * The language for the page being opened (see pickLocale): the assignment's when one is
- * played, else the address's `?lang=`, else the remembered choice, else English. Awaited
+ * played, else the address's `?lang=`, else the remembered choice, else the browser's
+ * language, else English. Awaited
  * before the first render, so no English flashes up first.
  */
 export function startLocale(assignment: Locale | null = null): Promise<Locale> {
-  return useLocale(pickLocale({ assignment, search: location.search, remembered: readRememberedLocale(storage) }));
+  return useLocale(
+    pickLocale({ assignment, search: location.search, remembered: readRememberedLocale(storage), browser: globalThis.navigator?.languages ?? [] }),
+  );
 }

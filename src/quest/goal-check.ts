@@ -1,6 +1,6 @@
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
-import { compare, conditionHolds } from './condition.ts';
+import { compare, conditionHolds, type JsonValue } from './condition.ts';
 import { goalParts, predictionParts, type EventGoal, type Goal, type PredictionGoal } from './goal.ts';
 import { readPath } from './state-path.ts';
 
@@ -64,17 +64,24 @@ export function checkGoal(goal: Goal, state: LabState, tally: EventTally): boole
 }
 
 /**
- * Whether `action` is a step towards `goal`: it is one of the goal's events, or it changed
+ * Whether `action` is a step towards `goal`: it is one of the goal's events with the goal's
+ * `with` fields (selecting pixel 3,1 is no step towards "select pixel 0,0"), or it changed
  * a value one of its state goals looks at. Used to time an optional task from the learner's
- * first move towards it rather than from the moment its level opened.
+ * first move towards it rather than from the moment its level opened, so a task nobody
+ * touched has no attempt in the exports.
+ *
+ * Values are compared by content, not by reference: the store rebuilds the scene on every
+ * edit, so painting the ball gives the box a new but equal object, and that is no change.
+ * `where` is left out on purpose: it says what the action must leave behind to complete
+ * the goal, and a move that does not get there yet is still a move towards it.
  */
 export function touchesGoal(goal: Goal, before: LabState | null, state: LabState, action: LabAction): boolean {
   return goalParts(goal).some(({ goal: part }) => {
     switch (part.kind) {
       case 'event':
-        return action.type === part.event;
+        return eventMatches({ ...part, where: undefined }, state, action);
       case 'state':
-        return before !== null && readPath(before, part.state) !== readPath(state, part.state);
+        return before !== null && !sameContent(readPath(before, part.state), readPath(state, part.state));
       // A combination is a step towards it through its parts, which goalParts lists too.
       case 'all':
       case 'any':
@@ -89,6 +96,14 @@ export function touchesGoal(goal: Goal, before: LabState | null, state: LabState
       }
     }
   });
+}
+
+/** Whether two values read from the state hold the same content (numbers within the goals' tolerance). */
+function sameContent(a: unknown, b: unknown): boolean {
+  if (a === b) return true;
+  // A value that is not there equals nothing in `compare`, but two absences are no change.
+  if (a === undefined || b === undefined) return false;
+  return compare(a, '==', b as JsonValue);
 }
 
 /** A prediction as the learner gives it: a position in a quiz's choices, or a number. */

@@ -40,6 +40,15 @@ export class FrameScheduler {
     private readonly host: FrameHost = browserFrames,
   ) {}
 
+  /**
+   * Whether no frame is coming: none scheduled, none waiting for a hold to end. A scheduled
+   * frame can wait seconds for the browser's next frame (on SwiftShader while the GPU process
+   * compiles the shaders of the last one), so a second without frames does not prove this.
+   */
+  get idle(): boolean {
+    return this.pending === null && !this.heldFrame;
+  }
+
   /** Schedules one frame, unless one is already scheduled (or frames are held: then at the hold's end). */
   requestRender(): void {
     if (this.disposed) return;

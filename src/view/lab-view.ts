@@ -1,19 +1,13 @@
-import { itemName } from '../i18n/scene-item-names.ts';
 import { msg, str } from '@lit/localize';
 import {
-  BoxHelper,
   ColorManagement,
   GridHelper,
-  Group,
   HemisphereLight,
-  LinearSRGBColorSpace,
   type Object3D,
-  PerspectiveCamera,
-  Raycaster,
-  Scene as ThreeScene,
-  Vector2,
+  type PerspectiveCamera,
+  type Scene as ThreeScene,
   Vector3,
-  WebGLRenderer,
+  type WebGLRenderer,
 } from 'three';
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
@@ -21,45 +15,29 @@ import { loadMeshes } from '../render/load-meshes-browser.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
 import type { Store } from '../lab-state/store.ts';
-import type { Scene, Vec3 } from '../scene/scene.ts';
+import type { Vec3 } from '../scene/scene.ts';
 import { CameraScreen } from './camera-screen.ts';
 import { DistributionGizmos } from './distribution-gizmos.ts';
-import { CameraFlight } from './fly-to-camera.ts';
-import { type Animator, FrameScheduler } from './frame-scheduler.ts';
-import { cameraChanges, lightChanges, objectChanges } from './gizmo-changes.ts';
-import { effectiveGizmoMode, gizmoModesFor, type GizmoMode } from './gizmo-modes.ts';
-import { nudgeAction, nudgeNote, viewAxesOf } from './gizmo-nudge.ts';
+import type { Animator } from './frame-scheduler.ts';
+import type { GizmoMode } from './gizmo-modes.ts';
 import { LightGizmos } from './light-gizmos.ts';
-import { Picker, type PickResult } from './picking.ts';
+import type { PickResult } from './picking.ts';
 import { RasterLights } from './raster-lights.ts';
 import { rasterSnapshot } from './raster-snapshot.ts';
-import type { RayHover, RayLayer } from './ray-layer.ts';
+import type { RayLayer } from './ray-layer.ts';
 import { type MeshLoader, SceneSync } from './scene-sync.ts';
-import { TransformGizmo } from './transform-gizmo.ts';
-import { sameSelection, stateCommand, type StateCommand } from './state-commands.ts';
-import { type ArrowTarget, keyCommand, type ViewCommand } from './view-commands.ts';
-import { ViewControls } from './view-controls.ts';
+import { SelectionGizmo } from './selection-gizmo.ts';
+import type { ViewCommand } from './view-commands.ts';
+import { type RayHoverDetail, ViewInput } from './view-input.ts';
 import { rayPathPoints, rayPathPointsFromHit, raySegments } from './ray-path-points.ts';
-import { followRayPath } from '../tracer/ray-path.ts';
 import { framedRaysPixel } from '../lab-state/framed-rays.ts';
-import { hiddenFrom, rayEvidence, type EvidencePoint } from './ray-evidence.ts';
-import { rayColorKey, type RayColorKey } from './ray-palette.ts';
-import { cameraViewFov, framingPose, framingPoseAbove, type ViewPose } from './view-pose.ts';
-import { drawsInSoftware } from './software-renderer.ts';
-import { BurstResolution } from './burst-resolution.ts';
-import { PiecewiseRays } from './piecewise-rays.ts';
+import { ViewProbes } from './view-probes.ts';
+import { ViewDrawing } from './view-drawing.ts';
+import { ViewNavigation } from './view-navigation.ts';
 import type { Thinning } from './ray-budget.ts';
-import { framedPoints, LookFollower } from './view-look.ts';
+import { framedPoints } from './view-look.ts';
 
-/** The hovered ray and where the pointer is, for a tooltip next to it. */
-export interface RayHoverDetail {
-  hover: RayHover;
-  /** CSS px from the canvas's top-left corner. */
-  x: number;
-  y: number;
-  clientX: number;
-  clientY: number;
-}
+export type { RayHoverDetail } from './view-input.ts';
 
 interface LabViewEvents {
   rayHover: RayHoverDetail | null;
@@ -77,40 +55,19 @@ interface LabViewEvents {
 
 type Listener<T> = (value: T) => void;
 
-/** A pointer press that moves less than this (CSS px) before release is a click, not a drag. */
-const CLICK_SLOP = 6;
-/** Toolbar steps: one press orbits 15°, pans a tenth of the view, zooms 1.25×. */
-const BUTTON_ORBIT_DEG = 15;
-const BUTTON_PAN = 0.1;
-const BUTTON_ZOOM = 1.25;
 /** Nearer than this to the tracer camera's eye, its body would fill the view: hide it. */
 const INSIDE_CAMERA = 0.35;
-const SELECTION_COLOR = 0x3b82f6;
 
-/** How much (sum over RGB, 0–765) drawing the rays must change a pixel for rayCoverage to count it. */
-const COVERAGE_CHANGE = 24;
-
-/** The 3D view's own vertical field of view (degrees), which declared views frame with. */
-const VIEW_FOV = 45;
 /** Multisampling of the render window's raster picture on a GPU (none on a CPU rasterizer, as the view itself). */
 const SNAPSHOT_SAMPLES = 4;
 
 /**
- * How long the view waits after an edit of the scene for the edit's rays, before it draws
- * the edit without them. On a CPU rasterizer a frame costs about 50 ms, and the main thread
- * waits most of it for the 3D view's read-back: drawing the edit at once made its rays, back
- * from the screen tracer 10–20 ms later, wait for a second frame. Held until they come, one
- * frame shows both: in five e2e runs with the page composited on the CPU, an arrow key's
- * step went from p95 95–106 to 71–84 ms, a drag's from 64–98 to 64–68 ms and the first
- * drag's from 103–134 to 62–72 ms (docs/benchmark-log.md). A 16 × 16 screen takes about 15 ms
- * to trace; a bigger one is drawn after this wait, and its rays when they come.
- */
-const RAYS_WAIT_MS = 60;
-
-/**
  * The lab's 3D view: the scene from the store drawn with three.js (objects with a Phong look,
- * lights as gizmos, the ray tracer's camera and its screen), navigation, selection, the
- * transform gizmo and the flight to the tracer's camera. Draws only when something changed.
+ * lights as gizmos, the ray tracer's camera and its screen), kept in step with the store, and
+ * the one object the page talks to. Its parts each hold one concept: drawing and when it
+ * happens (view-drawing.ts), where the user looks from (view-navigation.ts), the selection's
+ * outline and handles (selection-gizmo.ts), pointer and keys (view-input.ts), and what browser
+ * tests read off the view (view-probes.ts). Draws only when something changed.
  *
  * Colours are display values throughout, as in the ray tracer (no gamma): three.js's colour
  * management is switched off and the canvas shows the linear values as they are, so an
@@ -118,22 +75,24 @@ const RAYS_WAIT_MS = 60;
  */
 export class LabView {
   readonly renderer: WebGLRenderer;
-  readonly scene = new ThreeScene();
+  readonly scene: ThreeScene;
   /** The user's viewpoint (not the ray tracer's camera). */
-  readonly camera = new PerspectiveCamera(VIEW_FOV, 1, 0.05, 500);
-  private readonly scheduler: FrameScheduler;
-  private readonly controls: ViewControls;
-  private readonly gizmo: TransformGizmo;
-  private offeredModes: readonly GizmoMode[] | undefined = undefined;
-  private readonly flight: CameraFlight;
+  readonly camera: PerspectiveCamera;
+  /** WebGL draws on a CPU rasterizer (ViewDrawing.software). */
+  readonly software: boolean;
+  /** The renderer, frames on demand, sizes and the CPU rasterizer's economies (view-drawing.ts). */
+  private readonly drawing: ViewDrawing;
+  /** Orbit, pan, zoom, flights and framing (view-navigation.ts). */
+  private readonly navigation: ViewNavigation;
+  /** Pointer, keys, picking and view commands (view-input.ts). */
+  private readonly input: ViewInput;
+  /** The selection's outline and handles (selection-gizmo.ts). */
+  private readonly selection: SelectionGizmo;
   private readonly objects: SceneSync;
   private readonly rasterLights: RasterLights;
   private readonly lightGizmos: LightGizmos;
   private readonly cameraScreen: CameraScreen;
-  private readonly distribution = new DistributionGizmos();
-  private readonly picker = new Picker();
-  private readonly rayRaycaster = new Raycaster();
-  private readonly selectionBox: BoxHelper;
+  private readonly distribution: DistributionGizmos;
   private readonly grid: GridHelper;
   private readonly listeners: { [K in keyof LabViewEvents]: Set<Listener<LabViewEvents[K]>> } = {
     rayHover: new Set(),
@@ -144,88 +103,63 @@ export class LabView {
     thinning: new Set(),
   };
   private readonly unsubscribe: () => void;
-  private readonly cleanups: (() => void)[] = [];
   private previous: LabState | null = null;
-  private rayLayer: RayLayer | null = null;
-  private bvhLayer: Object3D | null = null;
-  private removeRayAnimator: (() => void) | null = null;
-  private lastHover: RayHover | null = null;
-  private press: { id: number; x: number; y: number; onGizmo: boolean } | null = null;
-  private hoverQueued = false;
-  private pointer: { x: number; y: number } | null = null;
-  private frames = 0;
   /** The camera's pixels' latest rays (for "show its rays"). */
   private screenRays: ScreenRays | null = null;
-  /**
-   * For tests and tools: the scene whose traced rays the last drawn frame showed (null
-   * before any), so a browser test can time a slider step to its rays on screen.
-   */
-  drawnRaysScene: Scene | null = null;
-  /** For tests and tools: the scene the last drawn frame showed (its objects, lights and camera), null before any. */
-  drawnScene: Scene | null = null;
-  private sized = false;
-  /** WebGL draws on a CPU rasterizer (SwiftShader, llvmpipe): no antialiasing, bursts drawn coarse, rays held to a budget while the learner edits (LabServices). */
-  readonly software: boolean;
-  /** On a CPU rasterizer: a burst of edits is drawn at reduced resolution (null on a GPU). */
-  private readonly burst: BurstResolution | null;
-  /** On a CPU rasterizer: a heavy ray layer is drawn a piece a frame (null on a GPU). */
-  private readonly pieces: PiecewiseRays | null;
+  /** For browser tests and tools: what the view shows, read off it (view-probes.ts). */
+  readonly probes: ViewProbes;
   /** The thinning the last drawn frame showed, as last told. */
   private drawnThinning: Thinning | null = null;
-  /** The share of the device pixel ratio drawn now (below 1 during a burst). */
-  private resolutionScale = 1;
-  private coveredBottom = 0;
   /** A scene was loaded and nothing drawn since: a declared look then jumps instead of gliding. */
   private sceneJustLoaded = false;
-  private readonly look: LookFollower;
 
   constructor(
     readonly canvas: HTMLCanvasElement,
     readonly store: Store,
     meshLoader: MeshLoader = loadMeshes,
   ) {
-    // Before any colour is made: with management on, hex colours would be linearized.
+    // Before any colour is made (so no part is a field initializer, which runs before this):
+    // with management on, hex colours would be linearized.
     ColorManagement.enabled = false;
+    this.distribution = new DistributionGizmos();
     this.rasterLights = new RasterLights();
     this.lightGizmos = new LightGizmos();
     this.cameraScreen = new CameraScreen();
-    this.selectionBox = new BoxHelper(new Group(), SELECTION_COLOR);
     this.grid = new GridHelper(20, 20, 0x6b7686, 0x8a94a3);
-    this.software = drawsInSoftware();
-    this.renderer = new WebGLRenderer({ canvas, antialias: !this.software, alpha: true });
-    this.burst = this.software ? new BurstResolution((scale) => this.setResolutionScale(scale)) : null;
-    this.renderer.outputColorSpace = LinearSRGBColorSpace;
-    this.renderer.setClearColor(0x000000, 0);
-    this.pieces = this.software ? new PiecewiseRays(this.renderer) : null;
-    this.scheduler = new FrameScheduler((changed) => this.draw(changed));
+    this.drawing = new ViewDrawing(canvas, {
+      beforeDraw: () => this.beforeDraw(),
+      drawn: () => this.drawn(),
+      // The first framing guessed a square view; frame again for the real shape.
+      firstSized: () => {
+        this.navigation.frameScene();
+        this.navigation.follow(this.store.state.look, false);
+      },
+    });
+    this.renderer = this.drawing.renderer;
+    this.scene = this.drawing.scene;
+    this.camera = this.drawing.camera;
+    this.software = this.drawing.software;
 
     // The gizmo first: its pointerdown must claim a drag before the orbit controls see it.
-    this.gizmo = new TransformGizmo(this.camera, canvas, {
+    this.selection = new SelectionGizmo(this.camera, canvas, {
+      state: () => this.store.state,
+      objectOf: (id) => this.objects.objectOf(id),
+      lightOf: (id) => this.lightGizmos.objectOf(id),
+      cameraRig: this.cameraScreen.rig,
+      cameraBody: this.cameraScreen.body,
       changed: () => this.requestRender(),
-      draggingChanged: (dragging) => {
-        this.controls.enabled = !dragging;
+      draggingChanged: (dragging) => this.navigation.pauseGestures(dragging),
+      // A refused drag is shown, and the drawing, left where the drag put it, is put back.
+      dragged: (action) => {
+        if (this.dispatch(action)) this.resync();
       },
-      dragEnded: (object, snapped) => this.commitDrag(object, snapped),
     });
-    this.controls = new ViewControls(this.camera, canvas, this.scheduler, (action) => this.dispatch(action));
-    this.controls.orbit.addEventListener('start', () => {
-      this.flight.userMoved();
-      this.look.userMoved();
-    });
-    this.flight = new CameraFlight(this.controls, this.scheduler, (atCamera) => this.emit('flight', atCamera));
-    this.look = new LookFollower({
+    this.navigation = new ViewNavigation(this.camera, canvas, this.drawing.scheduler, store, {
       pointsOf: (name) => this.framedPointsOf(name),
       pixelRayPoints: () => this.pixelRayPoints(),
-      pose: () => this.controls.pose,
-      fov: VIEW_FOV,
-      aspect: () => this.camera.aspect,
-      visibleShare: () => this.visibleShare(),
-      moveTo: (pose, glide) => {
-        if (glide) return this.flight.glide(pose);
-        this.flight.forget();
-        this.controls.setPose(pose);
-      },
-      throughCamera: () => this.flight.flyTo(this.tracerCameraPose(), () => {}),
+      dispatch: (action) => this.dispatch(action),
+      flightChanged: (atCamera) => this.emit('flight', atCamera),
+      message: (text) => this.emit('message', text),
     });
     this.objects = new SceneSync(meshLoader, (error) => {
       if (error) this.emit('message', msg(str`A model could not be loaded: ${error}`));
@@ -245,115 +179,93 @@ export class LabView {
       this.lightGizmos.group,
       this.cameraScreen.rig,
       this.distribution.group,
-      this.selectionBox,
-      this.gizmo.helper,
+      this.selection.outline,
+      this.selection.helper,
     );
 
-    this.listen(canvas, 'pointerdown', (event) => this.pointerDown(event));
-    this.listen(canvas, 'pointerup', (event) => this.pointerUp(event));
-    this.listen(canvas, 'pointermove', (event) => this.pointerMoved(event));
-    this.listen(canvas, 'pointerleave', () => this.pointerLeft());
-    this.listen(canvas, 'keydown', (event) => this.keyDown(event));
+    this.probes = new ViewProbes({
+      renderer: this.renderer,
+      scene: this.scene,
+      camera: this.camera,
+      rayLayer: () => this.drawing.rayLayer,
+      allRaysDrawn: () => this.drawing.allRaysDrawn,
+      idle: () => this.drawing.scheduler.idle,
+      traceOf: (pixel) => this.traceOf(pixel),
+      framedPointsOf: (name) => this.framedPointsOf(name),
+      projectToView: (point) => this.projectToView(point),
+      opaque: this.objects.group,
+      requestRender: () => this.requestRender(),
+    });
+
+    this.input = new ViewInput(canvas, this.camera, store, {
+      pickable: [this.objects.group, this.lightGizmos.group, this.cameraScreen.rig],
+      selection: this.selection,
+      navigation: this.navigation,
+      rayLayer: () => this.drawing.rayLayer,
+      dispatch: (action) => this.dispatch(action),
+      rayHover: (detail) => this.emit('rayHover', detail),
+      message: (text) => this.emit('message', text),
+      note: (text) => this.emit('note', text),
+      help: () => this.emit('help', undefined),
+    });
     this.unsubscribe = store.subscribe((state, action) => {
       this.update(state);
       if (action.type === 'scene.loaded') {
-        this.flight.forget();
-        this.frameScene();
+        this.navigation.sceneLoaded();
         this.sceneJustLoaded = true;
       }
     });
     this.update(store.state);
-    this.frameScene();
-    this.look.follow(store.state.look, false);
+    this.navigation.frameScene();
+    this.navigation.follow(store.state.look, false);
   }
 
   /** Whether the view is still on its way: a flight or glide under way, or a framing waiting for its pixel's rays. */
   get moving(): boolean {
-    return this.flight.flying || this.look.waitingForRays;
+    return this.navigation.moving;
   }
 
   /** How many frames were drawn so far (idle means it stops growing). */
   get frameCount(): number {
-    return this.frames;
-  }
-
-  /** Whether the view is at the ray tracer's camera, or has a way back to where it was. */
-  get atCamera(): boolean {
-    return this.flight.atCamera;
+    return this.drawing.frameCount;
   }
 
   /** Draws one frame soon (call after changing anything drawn, like the ray layer's content). */
   requestRender(): void {
-    this.scheduler.requestRender();
+    this.drawing.requestRender();
   }
 
   /** Calls `animator` every frame; frames keep coming while it returns true. Returns its remover. */
   addAnimator(animator: Animator): () => void {
-    return this.scheduler.addAnimator(animator);
+    return this.drawing.addAnimator(animator);
   }
 
   /** The canvas's size in CSS pixels; drawn at up to 2 device pixels per CSS pixel (school laptops). */
   setSize(width: number, height: number): void {
-    if (width <= 0 || height <= 0) return;
-    this.renderer.setPixelRatio(Math.min(2, window.devicePixelRatio || 1) * this.resolutionScale);
-    this.renderer.setSize(width, height, false);
-    const first = !this.sized;
-    this.sized = true;
-    this.camera.aspect = width / height;
-    this.camera.updateProjectionMatrix();
-    // The first framing guessed a square view; frame again for the real shape.
-    if (first) {
-      this.frameScene();
-      this.look.follow(this.store.state.look, false);
-    }
-    // A resized canvas is blank until drawn: draw now, not next frame, so it never flickers.
-    this.scheduler.renderNow();
-  }
-
-  /** Draws at `scale` × the device pixel ratio from now on (redrawn at once). */
-  private setResolutionScale(scale: number): void {
-    this.resolutionScale = scale;
-    if (!this.sized) return;
-    // The renderer keeps the size last set in CSS pixels.
-    const { x: width, y: height } = this.renderer.getSize(cssSize);
-    this.setSize(width, height);
+    this.drawing.setSize(width, height);
   }
 
   /** Colours the camera's screen with the traced pixels. */
   setScreenRays(rays: ScreenRays): void {
     this.screenRays = rays;
     this.cameraScreen.setScreenRays(rays);
-    this.look.raysArrived();
-    this.requestRender();
-    // After asking for the frame: the rays an edit's hold waited for are drawn in it, and the
-    // next edit's hold does not delay it.
-    this.scheduler.release();
+    this.navigation.raysArrived();
+    this.drawing.raysArrived();
   }
 
   /** Shows the drawn rays (replacing any before), animates them and picks them for hover. */
   setRayLayer(layer: RayLayer | null): void {
-    if (this.rayLayer) this.scene.remove(this.rayLayer.object);
-    this.removeRayAnimator?.();
-    this.removeRayAnimator = null;
-    this.rayLayer = layer;
-    if (layer) {
-      this.scene.add(layer.object);
-      this.removeRayAnimator = this.scheduler.addAnimator((time) => layer.tick(time));
-    }
-    this.requestRender();
+    this.drawing.setRayLayer(layer);
   }
 
   /** On a CPU rasterizer: draws coarse while `thinned` (the rays held to a budget), sharp at once after. */
   holdCoarse(thinned: boolean): void {
-    this.burst?.hold(thinned);
+    this.drawing.holdCoarse(thinned);
   }
 
   /** Shows the acceleration boxes (BvhBoxes.object), replacing any before; null removes them. */
   setBvhLayer(object: Object3D | null): void {
-    if (this.bvhLayer) this.scene.remove(this.bvhLayer);
-    this.bvhLayer = object;
-    if (object) this.scene.add(object);
-    this.requestRender();
+    this.drawing.setBvhLayer(object);
   }
 
   /** Calls `listener` with the ray under the pointer (or null when it leaves it). Returns its remover. */
@@ -369,101 +281,32 @@ export class LabView {
 
   /** Does what a key or a toolbar button asks; `glide` spreads a step over a few frames (buttons). */
   execute(command: ViewCommand, glide = false): void {
-    const state = this.store.state;
-    switch (command.kind) {
-      case 'orbit':
-        return this.controls.orbitBy(command.dxDeg, command.dyDeg, glide);
-      case 'pan':
-        return this.controls.panBy(command.dx, command.dy, glide);
-      case 'zoom':
-        return this.controls.zoomBy(command.factor, glide);
-      case 'escape':
-        if (this.flight.atCamera) this.flyBack();
-        return this.apply(stateCommand(command, state));
-      case 'fly':
-        return this.flight.atCamera ? this.flyBack() : this.flyToCamera();
-      case 'show-pixel-rays':
-        return this.showPixelRays();
-      case 'help':
-        return this.emit('help', undefined);
-      case 'nudge':
-        return this.nudge(command);
-      default:
-        return this.apply(stateCommand(command, state));
-    }
-  }
-
-  /** Dispatches a command's action and shows its message (or, when it went through, its note). */
-  private apply(command: StateCommand | null): void {
-    const refused = command?.action ? this.dispatch(command.action) : undefined;
-    if (command?.message) this.emit('message', command.message);
-    if (command?.note && !refused) this.emit('note', command.note);
-  }
-
-  /**
-   * The gizmo mode the arrow keys work in for the selection, or null when its handles are
-   * not shown (nothing selected, or a level without move tools): as the handles, the chosen
-   * mode when the selection and the page allow it.
-   */
-  private nudgeMode(state: LabState): GizmoMode | null {
-    const allowed = gizmoModesFor(state.selection, state.scene).filter((mode) => this.offeredModes?.includes(mode) ?? true);
-    if (allowed.length === 0) return null;
-    const mode = effectiveGizmoMode(state.gizmo.mode, gizmoModesFor(state.selection, state.scene));
-    return allowed.includes(mode) ? mode : allowed[0]!;
-  }
-
-  private arrowTarget(state: LabState): ArrowTarget {
-    if (this.nudgeMode(state)) return 'selection';
-    return state.selectedPixel ? 'pixel' : 'view';
-  }
-
-  /** One key step of the selection in its gizmo mode, along the world axes nearest the viewer's. */
-  private nudge(command: Extract<ViewCommand, { kind: 'nudge' }>): void {
-    const state = this.store.state;
-    const mode = this.nudgeMode(state);
-    const action = mode && nudgeAction(state, { mode, direction: command.direction, big: command.big }, viewAxesOf(this.camera));
-    if (!mode || !action || this.dispatch(action)) return;
-    this.emit('note', nudgeNote(this.selectionName(state), mode, command.big));
-  }
-
-  private selectionName({ scene, selection }: LabState): string {
-    if (selection?.kind === 'object' || selection?.kind === 'light') return itemName(scene, selection.id);
-    return msg("The ray tracer's camera");
+    this.input.execute(command, glide);
   }
 
   /** Orbits the view as a toolbar button does: +dx moves the eye right around the target, +dy up. */
-  orbit(dxDeg = BUTTON_ORBIT_DEG, dyDeg = 0): void {
-    this.controls.orbitBy(dxDeg, dyDeg, true);
+  orbit(dxDeg?: number, dyDeg?: number): void {
+    this.navigation.orbit(dxDeg, dyDeg);
   }
 
   /** Pans as a toolbar button does: shares of the visible height, +dx right, +dy up. */
-  pan(dx = BUTTON_PAN, dy = 0): void {
-    this.controls.panBy(dx, dy, true);
+  pan(dx?: number, dy?: number): void {
+    this.navigation.pan(dx, dy);
   }
 
   /** Zooms as a toolbar button does: factor > 1 moves closer. */
-  zoom(factor = BUTTON_ZOOM): void {
-    this.controls.zoomBy(factor, true);
+  zoom(factor?: number): void {
+    this.navigation.zoom(factor);
   }
 
   /** Glides to the ray tracer's camera (eye, target, fov); reports view.flew-to-camera on arrival. */
   flyToCamera(): void {
-    this.flight.flyTo(this.tracerCameraPose(), () => this.dispatch({ type: 'view.flew-to-camera' }));
+    this.navigation.flyToCamera();
   }
 
-  /**
-   * "Show its rays": glides, from the side the view looks from now, to where the chosen
-   * pixel's whole ray path (and the camera it starts at) fits the view.
-   */
+  /** "Show its rays": glides to where the chosen pixel's whole ray path (and the camera it starts at) fits the view. */
   showPixelRays(): void {
-    const points = this.pixelRayPoints();
-    if (!points) {
-      this.emit('message', msg('Choose a pixel first: its rays are what this shows.'));
-      return;
-    }
-    const pose = this.controls.pose;
-    const direction = pose.position.clone().sub(pose.target).normalize();
-    this.flight.glide(framingPoseAbove(points, VIEW_FOV, this.camera.aspect, direction, this.visibleShare()));
+    this.navigation.showPixelRays();
   }
 
   /**
@@ -471,13 +314,7 @@ export class LabView {
    * the ray debugger): framing then fits what it shows into the part above.
    */
   setCoveredBottom(px: number): void {
-    this.coveredBottom = Math.max(0, px);
-  }
-
-  private visibleShare(): number {
-    const height = this.canvas.clientHeight;
-    // Never frame into a sliver: below 40 % the panels cover the view and it is better whole.
-    return height > 0 ? Math.max(0.4, 1 - this.coveredBottom / height) : 1;
+    this.navigation.setCoveredBottom(px);
   }
 
   /** The chosen pixel's latest trace, or null without a pixel or its trace. */
@@ -497,34 +334,21 @@ export class LabView {
     return trace ? [...rayPathPoints(trace), this.store.state.scene.camera.position] : null;
   }
 
-  /** Glides back to where the view was before flying to the camera. */
-  flyBack(): void {
-    this.flight.back();
-  }
-
   /** The raster view from the ray tracer's camera, `width`×`height`, for the render window's comparison. */
   rasterSnapshot(width: number, height: number): Promise<ImageData> {
-    const hidden: Object3D[] = [this.grid, this.lightGizmos.group, this.cameraScreen.rig, this.distribution.group, this.selectionBox, this.gizmo.helper];
-    if (this.rayLayer) hidden.push(this.rayLayer.object);
-    if (this.bvhLayer) hidden.push(this.bvhLayer);
+    const hidden: Object3D[] = [
+      this.grid,
+      this.lightGizmos.group,
+      this.cameraScreen.rig,
+      this.distribution.group,
+      this.selection.outline,
+      this.selection.helper,
+    ];
+    const { rayLayer, bvhLayer } = this.drawing;
+    if (rayLayer) hidden.push(rayLayer.object);
+    if (bvhLayer) hidden.push(bvhLayer);
     const { camera, settings } = this.store.state.scene;
     return rasterSnapshot(this.renderer, this.scene, hidden, camera, settings.background, width, height, this.software ? 0 : SNAPSHOT_SAMPLES);
-  }
-
-  /** Looks at the whole scene (objects, lights and the tracer's camera) from the front left, above. */
-  frameScene(): void {
-    const { objects, lights, camera } = this.store.state.scene;
-    const centre = [...objects.map((o) => o.position), camera.position];
-    const pose = framingPose(centre, [...centre, ...lights.map((l) => l.position)], this.camera.fov, this.camera.aspect);
-    this.controls.setPose(pose);
-  }
-
-  /**
-   * For tests and tools: where the things a declared view frames appear on the canvas (CSS
-   * px): the points `frame` fits for `name` (view-look.ts), each projected (null behind the eye).
-   */
-  projectedPointsOf(name: string): ({ x: number; y: number } | null)[] {
-    return this.framedPointsOf(name).map((point) => this.projectToView(point));
   }
 
   /** The world points a declared view fits for `name` (view-look.ts), from what is drawn now and the latest trace. */
@@ -538,7 +362,7 @@ export class LabView {
     return framedPoints(name, this.store.state.scene, drawn, this.cameraScreen.rig);
   }
 
-  /** For tests and tools: the chosen pixel's rays as segments on the canvas (CSS px), none without a pixel or its trace. */
+  /** The chosen pixel's rays as segments on the canvas (CSS px), none without a pixel or its trace: where the pixel preview must not cover them (preview-place.ts). */
   pixelRaySegments(): { from: { x: number; y: number }; to: { x: number; y: number } }[] {
     const trace = this.selectedTrace();
     if (!trace) return [];
@@ -547,57 +371,6 @@ export class LabView {
       const to = this.projectToView(end);
       return from && to ? [{ from, to }] : [];
     });
-  }
-
-  /**
-   * For tests and tools: the ray `path` names (tracer/ray-path.ts) in pixel `pixel`'s latest
-   * trace, chosen or not, as the legend entry it is drawn as and points along it on the canvas,
-   * each hidden or not behind an opaque object (ray-evidence.ts); null without such a ray.
-   */
-  evidenceRay(pixel: readonly [number, number], path: string): { drawnAs: RayColorKey; points: EvidencePoint[] } | null {
-    const trace = this.traceOf(pixel);
-    const node = trace ? followRayPath(trace, path) : null;
-    if (!node) return null;
-    const points = rayEvidence(
-      node,
-      (point) => this.projectToView(point),
-      (point) => hiddenFrom(this.camera.position, point, [this.objects.group]),
-    );
-    return { drawnAs: rayColorKey(node.type, node.hit, node.untested), points };
-  }
-
-  /**
-   * For tests and tools: where the drawn rays show, as one byte per CSS pixel of the canvas
-   * (1 where drawing the rays changed the picture), from a frame drawn now with them and one
-   * without: what is covered or off screen counts as not shown.
-   */
-  rayCoverage(): { width: number; height: number; mask: Uint8Array } {
-    const gl = this.renderer.getContext();
-    const width = gl.drawingBufferWidth;
-    const height = gl.drawingBufferHeight;
-    const frames = [true, false].map((shown) => {
-      if (this.rayLayer) this.rayLayer.object.visible = shown;
-      this.renderer.render(this.scene, this.camera);
-      const pixels = new Uint8Array(width * height * 4);
-      gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-      return pixels;
-    });
-    if (this.rayLayer) this.rayLayer.object.visible = true;
-    this.requestRender();
-    const ratio = this.renderer.getPixelRatio();
-    const cssWidth = Math.round(width / ratio);
-    const cssHeight = Math.round(height / ratio);
-    const mask = new Uint8Array(cssWidth * cssHeight);
-    for (let y = 0; y < cssHeight; y++) {
-      for (let x = 0; x < cssWidth; x++) {
-        // readPixels rows run bottom-up.
-        const i = ((height - 1 - Math.floor(y * ratio)) * width + Math.floor(x * ratio)) * 4;
-        const change =
-          Math.abs(frames[0]![i]! - frames[1]![i]!) + Math.abs(frames[0]![i + 1]! - frames[1]![i + 1]!) + Math.abs(frames[0]![i + 2]! - frames[1]![i + 2]!);
-        mask[y * cssWidth + x] = change > COVERAGE_CHANGE ? 1 : 0;
-      }
-    }
-    return { width: cssWidth, height: cssHeight, mask };
   }
 
   /** Where a world point appears on the canvas (CSS px from its top-left), or null behind the eye. */
@@ -610,29 +383,22 @@ export class LabView {
 
   /** What a click at (clientX, clientY) would select: an object, a light, the camera, a screen pixel, or null for empty space. */
   pickAt(clientX: number, clientY: number): PickResult | null {
-    this.picker.aim(this.camera, this.canvas, clientX, clientY);
-    return this.picker.pick([this.objects.group, this.lightGizmos.group, this.cameraScreen.rig]);
+    return this.input.pickAt(clientX, clientY);
   }
 
   dispose(): void {
     this.unsubscribe();
-    for (const cleanup of this.cleanups) cleanup();
-    this.removeRayAnimator?.();
-    if (this.rayLayer) this.scene.remove(this.rayLayer.object);
-    this.burst?.dispose();
-    this.pieces?.dispose();
-    this.flight.dispose();
-    this.gizmo.dispose();
-    this.controls.dispose();
-    this.scheduler.dispose();
+    this.input.dispose();
+    this.drawing.stop();
+    this.navigation.dispose();
+    this.selection.dispose();
     this.objects.dispose();
     this.rasterLights.dispose();
     this.lightGizmos.dispose();
     this.cameraScreen.dispose();
     this.distribution.dispose();
-    this.selectionBox.dispose();
     this.grid.dispose();
-    this.renderer.dispose();
+    this.drawing.dispose();
   }
 
   // --- store → drawing ---
@@ -645,12 +411,12 @@ export class LabView {
     const previous = this.previous;
     this.previous = state;
     // A level's first view is where it starts, not a flight away from the scene's framing.
-    if (previous && state.look !== previous.look) this.look.follow(state.look, !this.sceneJustLoaded);
+    if (previous && state.look !== previous.look) this.navigation.follow(state.look, !this.sceneJustLoaded);
     if (state.scene !== previous?.scene) {
       this.objects.sync(state.scene);
       this.rasterLights.sync(state.scene);
       this.lightGizmos.sync(state.scene);
-      if (previous && !sameCamera(previous, state)) this.flight.cameraMoved(this.tracerCameraPose());
+      if (previous && !sameCamera(previous, state)) this.navigation.cameraEdited();
     }
     // A moving object's copies show the chosen pixel's moments where each pixel has its own.
     if (state.scene !== previous?.scene || state.selectedPixel !== previous.selectedPixel) {
@@ -664,12 +430,8 @@ export class LabView {
         showSamplePoints: state.rays.showSamplePoints,
       });
     }
-    if (!this.gizmo.dragging) this.updateGizmo(state);
-    if (previous && state.scene !== previous.scene) {
-      this.burst?.edited();
-      // Rays held to a budget are a heavy screen's, traced in the worker for longer than the wait.
-      if (!this.burst?.holding) this.scheduler.holdFor(RAYS_WAIT_MS);
-    }
+    if (!this.selection.dragging) this.selection.update(state);
+    if (previous && state.scene !== previous.scene) this.drawing.sceneEdited();
     this.requestRender();
   }
 
@@ -678,47 +440,8 @@ export class LabView {
    * selection shows its outline but no handles: a level without move tools shows no arrows.
    */
   setGizmoModes(modes: readonly GizmoMode[] | undefined): void {
-    this.offeredModes = modes;
-    this.updateGizmo(this.store.state);
+    this.selection.setModes(modes, this.store.state);
     this.requestRender();
-  }
-
-  /** Puts the gizmo and the selection outline on the selection, in a mode it allows. */
-  private updateGizmo(state: LabState): void {
-    const target = this.selectedObject(state);
-    const allowed = gizmoModesFor(state.selection, state.scene);
-    const handles = this.offeredModes === undefined || this.offeredModes.some((mode) => allowed.includes(mode));
-    this.gizmo.setSnapOption(state.gizmo.snap);
-    this.gizmo.attach(handles ? target : null, effectiveGizmoMode(state.gizmo.mode, allowed), state.gizmo.space);
-    this.outlineSelection(state, target);
-  }
-
-  /** The selection outline: a box around the object or light (around the camera's body only, not its screen). */
-  private outlineSelection(state: LabState, target: Object3D | null): void {
-    this.selectionBox.visible = target !== null;
-    if (target) this.selectionBox.setFromObject(state.selection?.kind === 'camera' ? this.cameraScreen.body : target);
-  }
-
-  private selectedObject(state: LabState): Object3D | null {
-    const selection = state.selection;
-    if (!selection) return null;
-    if (selection.kind === 'camera') return this.cameraScreen.rig;
-    const object = selection.kind === 'object' ? this.objects.objectOf(selection.id) : this.lightGizmos.objectOf(selection.id);
-    return object ?? null;
-  }
-
-  /** Writes a finished gizmo drag to the store; a refused one is shown and undone. */
-  private commitDrag(object: Object3D, snapped: boolean): void {
-    const { selection, scene } = this.store.state;
-    const pose = { position: object.position, quaternion: object.quaternion, scale: object.scale };
-    let action: LabAction | null = null;
-    if (selection?.kind === 'object') action = { type: 'object.changed', id: selection.id, changes: objectChanges(pose, snapped) };
-    if (selection?.kind === 'camera') action = { type: 'camera.changed', changes: cameraChanges(scene.camera, pose, snapped) };
-    if (selection?.kind === 'light') {
-      const light = scene.lights.find((l) => l.id === selection.id);
-      if (light) action = { type: 'light.changed', id: light.id, changes: lightChanges(light, pose, snapped) };
-    }
-    if (action && this.dispatch(action)) this.resync();
   }
 
   /** Redraws everything from the store (after a refused drag left the drawing off the state). */
@@ -727,125 +450,21 @@ export class LabView {
     this.update(this.store.state);
   }
 
-  /**
-   * For tests and tools: whether the last frame showed every instance of the ray layer (on a
-   * CPU rasterizer a heavy layer takes a piece a frame: piecewise-rays.ts).
-   */
-  get raysComplete(): boolean {
-    return !this.pieces?.unfinished;
+  /** Before a frame: the camera's body hides when the view is inside it, and the outline follows a drag in progress. */
+  private beforeDraw(): void {
+    this.cameraScreen.setViewedFromEye(this.camera.position.distanceTo(this.cameraScreen.rig.position) < INSIDE_CAMERA);
+    this.selection.followDrag(this.store.state);
   }
 
-  private draw(changed: boolean): void {
-    if (!changed && this.pieces?.unfinished && this.rayLayer) {
-      this.pieces.drawNext(this.camera, this.rayLayer);
-      if (this.pieces.unfinished) this.scheduler.requestMore();
-      this.frames++;
-      return;
-    }
-    this.cameraScreen.setViewedFromEye(this.camera.position.distanceTo(this.cameraScreen.rig.position) < INSIDE_CAMERA);
-    // The outline follows a drag in progress.
-    if (this.selectionBox.visible && this.gizmo.dragging) this.outlineSelection(this.store.state, this.selectedObject(this.store.state));
-    if (this.pieces) {
-      this.pieces.drawChanged(this.scene, this.camera, this.rayLayer);
-      if (this.pieces.unfinished) this.scheduler.requestMore();
-    } else this.renderer.render(this.scene, this.camera);
-    this.drawnRaysScene = this.screenRays?.scene ?? null;
-    this.drawnScene = this.store.state.scene;
-    const thinning = this.rayLayer?.thinning ?? null;
+  /** After a frame: tells the probes what it showed, and the page how many rays it drew. */
+  private drawn(): void {
+    this.probes.frameDrawn(this.store.state.scene, this.screenRays?.scene ?? null);
+    const thinning = this.drawing.rayLayer?.thinning ?? null;
     if (thinning?.shown !== this.drawnThinning?.shown || thinning?.of !== this.drawnThinning?.of) {
       this.drawnThinning = thinning;
       this.emit('thinning', thinning);
     }
-    this.frames++;
     this.sceneJustLoaded = false;
-  }
-
-  // --- pointer and keys ---
-
-  private pointerDown(event: PointerEvent): void {
-    if (!event.isPrimary) {
-      this.press = null;
-      return;
-    }
-    this.press = { id: event.pointerId, x: event.clientX, y: event.clientY, onGizmo: this.gizmo.hovering || this.gizmo.dragging };
-  }
-
-  private pointerUp(event: PointerEvent): void {
-    const press = this.press;
-    this.press = null;
-    if (!press || press.id !== event.pointerId || press.onGizmo || event.button !== 0) return;
-    if (Math.hypot(event.clientX - press.x, event.clientY - press.y) > CLICK_SLOP) return;
-    this.click(this.pickAt(event.clientX, event.clientY));
-  }
-
-  /** A click selects what it hit, toggles a screen pixel, or deselects on empty space. */
-  private click(hit: PickResult | null): void {
-    const state = this.store.state;
-    if (hit === null) {
-      if (state.selection) this.dispatch({ type: 'selection.changed', selection: null });
-      return;
-    }
-    if (hit.kind === 'pixel') {
-      const [x, y] = hit.pixel;
-      const again = state.selectedPixel?.[0] === x && state.selectedPixel[1] === y;
-      this.dispatch(again ? { type: 'pixel.deselected' } : { type: 'pixel.selected', pixel: hit.pixel });
-      return;
-    }
-    const selection = hit.kind === 'camera' ? { kind: 'camera' as const } : hit;
-    if (!sameSelection(state.selection, selection)) this.dispatch({ type: 'selection.changed', selection });
-  }
-
-  /** Hover work waits for the next frame: one pick per frame however fast the pointer moves. */
-  private pointerMoved(event: PointerEvent): void {
-    if (event.pointerType === 'touch') return;
-    this.pointer = { x: event.clientX, y: event.clientY };
-    if (this.hoverQueued) return;
-    this.hoverQueued = true;
-    requestAnimationFrame(() => {
-      this.hoverQueued = false;
-      this.hover();
-    });
-  }
-
-  private hover(): void {
-    const pointer = this.pointer;
-    if (!pointer || this.gizmo.dragging || this.press) return;
-    const hit = this.pickAt(pointer.x, pointer.y);
-    this.canvas.style.cursor = hit ? 'pointer' : '';
-    let hover: RayHover | null = null;
-    if (this.rayLayer) {
-      this.rayRaycaster.ray.copy(this.picker.raycaster.ray);
-      this.rayRaycaster.camera = this.camera;
-      hover = this.rayLayer.pick(this.rayRaycaster);
-    }
-    // Over a ray the tooltip follows the pointer; off rays, one null says so.
-    if (hover === null && this.lastHover === null) return;
-    this.lastHover = hover;
-    const rect = this.canvas.getBoundingClientRect();
-    const at = { x: pointer.x - rect.left, y: pointer.y - rect.top, clientX: pointer.x, clientY: pointer.y };
-    this.emit('rayHover', hover ? { hover, ...at } : null);
-  }
-
-  private pointerLeft(): void {
-    this.pointer = null;
-    this.canvas.style.cursor = '';
-    if (this.lastHover) {
-      this.lastHover = null;
-      this.emit('rayHover', null);
-    }
-  }
-
-  private keyDown(event: KeyboardEvent): void {
-    const command = keyCommand(event, this.arrowTarget(this.store.state));
-    if (!command) return;
-    event.preventDefault();
-    this.execute(command);
-  }
-
-  /** At the tracer's camera, wide enough to show all of its screen of pixels in this view's shape. */
-  private tracerCameraPose(): ViewPose {
-    const { position, target, fov, pixels } = this.store.state.scene.camera;
-    return { position: new Vector3(...position), target: new Vector3(...target), fov: cameraViewFov(fov, pixels[0] / pixels[1], this.camera.aspect) };
   }
 
   /** Dispatches, showing the reason when the store refuses. Returns that reason. */
@@ -858,16 +477,9 @@ export class LabView {
   private emit<K extends keyof LabViewEvents>(type: K, value: LabViewEvents[K]): void {
     for (const listener of this.listeners[type]) (listener as Listener<LabViewEvents[K]>)(value);
   }
-
-  private listen<K extends keyof HTMLElementEventMap>(target: HTMLElement, type: K, handler: (event: HTMLElementEventMap[K]) => void): void {
-    target.addEventListener(type, handler);
-    this.cleanups.push(() => target.removeEventListener(type, handler));
-  }
 }
 
 const projected = new Vector3();
-/** Scratch for the canvas size read back from the renderer. */
-const cssSize = new Vector2();
 
 function sameCamera(a: LabState, b: LabState): boolean {
   const x = a.scene.camera;

@@ -5,6 +5,10 @@ import { attemptRows, csvHeader } from '../../src/classroom/attempt-rows.ts';
 import { csvTable, parseCsv } from '../../src/classroom/csv-text.ts';
 import { readCsvExport } from '../../src/classroom/dashboard-read-csv.ts';
 import type { TaskAttempt } from '../../src/classroom/task-attempts.ts';
+import { conceptBankNow, formItems, loadConceptBank } from '../../src/classroom/concept-test/concept-bank.ts';
+
+// The item bank loads apart from the first screen (concept-bank.ts).
+await loadConceptBank();
 
 /**
  * The CSV export's one column table (attempt-columns.ts) is where the header, the rows and
@@ -20,7 +24,25 @@ const owner: AttemptOwner = {
   assignment: 'Lesson 5',
   assignmentId: 'a6a6a6a6',
   classCode: 'class-7',
+  appVersion: '8.9.10',
+  utcOffsetMin: '-330',
   survey: { id: 'default', answers: { ease: 3, 'computer-skill': 'often' } },
+  // Two right answers before (the shipped bank's first items of form A), one wrong after.
+  conceptTest: {
+    pre: {
+      form: 'A',
+      submittedAt: '',
+      answers: Object.fromEntries(
+        formItems(conceptBankNow()!, 'A')
+          .slice(0, 2)
+          .map((item) => [item.id, item.answer]),
+      ),
+    },
+    post: (() => {
+      const item = formItems(conceptBankNow()!, 'B')[0]!;
+      return { form: 'B', submittedAt: '', answers: { [item.id]: item.choices.find((choice) => choice.id !== item.answer)!.id } };
+    })(),
+  },
 };
 
 const attempts: TaskAttempt[] = [
@@ -40,6 +62,8 @@ const attempts: TaskAttempt[] = [
     hintsOffered: 6,
     quizAnswers: 7,
     quizCorrect: false,
+    quizChoice: null,
+    explanationOpens: 8,
   },
   {
     level: '02-shadows',
@@ -57,11 +81,17 @@ const attempts: TaskAttempt[] = [
     hintsOffered: 16,
     quizAnswers: 17,
     quizCorrect: true,
+    quizChoice: 2,
+    explanationOpens: 18,
   },
 ];
 
 const questions = ['ease', 'computer-skill'];
-const text = csvTable(csvHeader(questions), attemptRows(owner, attempts, questions), ID_COLUMNS);
+const text = csvTable(
+  csvHeader(questions),
+  attemptRows(owner, attempts, questions, (level, task, position) => `${level} ${task} option ${position}`),
+  ID_COLUMNS,
+);
 
 describe('the CSV column table', () => {
   it('gives every column values no other column has, so the round trip below can tell them apart', () => {
@@ -76,7 +106,7 @@ describe('the CSV column table', () => {
   it('reads back every column of a record as it was written', () => {
     const read = readCsvExport('learner.csv', text);
     if (!read.ok) throw new Error(read.reason);
-    const { survey, attempts: readAttempts, ...who } = read.record;
+    const { survey, conceptTest, attempts: readAttempts, ...who } = read.record;
     expect(who).toEqual({
       file: 'learner.csv',
       learnerId: owner.learnerId,
@@ -86,9 +116,12 @@ describe('the CSV column table', () => {
       assignment: owner.assignment,
       assignmentId: owner.assignmentId,
       classCode: owner.classCode,
+      appVersion: owner.appVersion,
+      utcOffsetMin: owner.utcOffsetMin,
       visits: [],
     });
     expect(survey).toEqual(owner.survey);
+    expect(conceptTest).toEqual(owner.conceptTest);
     expect(readAttempts).toEqual(attempts);
   });
 
@@ -100,6 +133,9 @@ describe('the CSV column table', () => {
     expect([cell(0, 'hints_opened'), cell(1, 'hints_opened')]).toEqual(['9', '29']);
     expect([cell(0, 'shown_by_app'), cell(1, 'shown_by_app')]).toEqual(['true', 'false']);
     expect([cell(0, 'attempts'), cell(1, 'attempts')]).toEqual(['1', '1']);
+    // The third option in the level file is "c"; its text comes from the level files.
+    expect([cell(0, 'quiz_choice'), cell(1, 'quiz_choice')]).toEqual(['', 'c']);
+    expect([cell(0, 'quiz_choice_text'), cell(1, 'quiz_choice_text')]).toEqual(['', '02-shadows predict option 2']);
   });
 
   it('is what docs/classroom.md lists, in the same order, each with what it holds', () => {

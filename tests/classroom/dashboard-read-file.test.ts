@@ -50,6 +50,14 @@ describe('reading one dropped file for the dashboard', () => {
     expect(fromJson.record).toMatchObject({ learnerId: 'P01', attemptId: good.learner.attemptId, installId: good.learner.installId });
   });
 
+  it('reads a code typed in lower case as the same learner as in capitals', () => {
+    const lower = readExportFile('p01-lower.json', json({ ...good, participant: 'p01', learner: { ...good.learner, id: 'p01' } }));
+    const upper = readExportFile('p01.json', json(good));
+    if (!lower.ok || !upper.ok) throw new Error('both should read');
+    expect(lower.record).toMatchObject({ participant: 'P01', learnerId: 'P01' });
+    expect(lower.record.learnerId).toBe(upper.record.learnerId);
+  });
+
   it('reads a CSV export from before hint offers: no offers, its hints as opened', () => {
     const header = 'participant,level,task,started_at,completed_at,duration_ms,active_ms,how,hints_text,hints_guidance';
     const read = readExportFile('old.csv', `${header}\r\nP1,01-introduction,orbit,2026-03-09T09:00:00.000Z,2026-03-09T09:00:05.000Z,5000,5000,done,1,0\r\n`);

@@ -6,6 +6,7 @@ const task = (id: string, needingHelp: number, learners = 20, mandatory = true):
   level: 'l',
   task: id,
   mandatory,
+  kind: 'do',
   learners,
   done: learners,
   shown: 0,

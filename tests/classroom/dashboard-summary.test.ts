@@ -4,7 +4,7 @@ import { readClassFiles, combinedCsv } from '../../src/classroom/dashboard-class
 import { classLearners } from '../../src/classroom/dashboard-learners.ts';
 import { parseCsv } from '../../src/classroom/csv-text.ts';
 import type { ClassRecord } from '../../src/classroom/dashboard-record.ts';
-import { completionRate, summarizeLevels } from '../../src/classroom/dashboard-summary.ts';
+import { completionRate, isOptionalTask, summarizeLevels } from '../../src/classroom/dashboard-summary.ts';
 import { summarizeSurveys } from '../../src/classroom/dashboard-survey.ts';
 import { surveyById } from '../../src/classroom/surveys.ts';
 import { simulatedClassFiles } from '../support/class-exports.ts';
@@ -25,6 +25,8 @@ const attempt = (task: string, activeMs: number, how: TaskAttempt['how'], extra:
   hintsOffered: 0,
   quizAnswers: 0,
   quizCorrect: null,
+  quizChoice: null,
+  explanationOpens: 0,
   ...extra,
 });
 
@@ -37,6 +39,8 @@ const record = (participant: string, attempts: TaskAttempt[], passed: boolean | 
   assignment: 'Lesson',
   assignmentId: 'abc',
   classCode: '',
+  appVersion: '',
+  utcOffsetMin: '',
   attempts,
   visits: passed === null ? [] : [{ level: '02-b', durationMs: 100_000, activeMs: 90_000, passed }],
   survey,
@@ -151,5 +155,23 @@ describe('a class of files', () => {
     expect(rows).toHaveLength(records.reduce((total, item) => total + item.attempts.length, 0));
     expect(rows[0].at(-1)).toBe(files[0].name);
     expect(new Set(rows.map((row) => row[0])).size).toBe(30);
+  });
+});
+
+describe('optional tasks on the dashboard', () => {
+  it('are the ones a learner could leave out: an info step is read, never "optional"', () => {
+    const [level] = summarizeLevels([
+      record(
+        'P1',
+        [
+          attempt('intro', 1000, null, { kind: 'info', mandatory: false }),
+          attempt('extra', 1000, 'skipped', { mandatory: false }),
+          attempt('main', 1000, 'done'),
+        ],
+        true,
+      ),
+    ]);
+    const optional = Object.fromEntries(level.tasks.map((task) => [task.task, isOptionalTask(task)]));
+    expect(optional).toEqual({ intro: false, extra: true, main: false });
   });
 });

@@ -86,6 +86,8 @@ function input(overrides: Partial<ExportInput> = {}): ExportInput {
     survey: { survey: 'default', submittedAt: '2025-03-04T10:00:00.000Z', answers: { 'computer-skill': 7, feedback: 'Nice, "really"' } },
     exportedAt: '2025-03-04T10:01:00.000Z',
     appVersion: '9.9.9',
+    utcOffsetMin: -330,
+    optionText: (level, task, position) => `${level}/${task} option ${position}`,
     ...overrides,
   };
 }
@@ -161,6 +163,18 @@ describe('CSV export', () => {
     expect(select2).toMatchObject({ shown_by_app: 'true', duration_ms: '3500', points: '0', quiz_correct: '' });
     expect(extra).toMatchObject({ mandatory: 'false', started_at: '2025-03-04T09:00:51.000Z', duration_ms: '3000' });
     expect(guess).toMatchObject({ kind: 'quiz', quiz_answers: '1', quiz_correct: 'false', points: '5' });
+    // The third choice in the level file, by its letter and its text in the export's language.
+    expect(guess).toMatchObject({ quiz_choice: 'c', quiz_choice_text: 'l1/guess option 2' });
+    expect(rows.filter((row) => row.quiz_choice !== '').map((row) => row.task)).toEqual(['guess']);
+    expect(rows.map((row) => `${row.task}#${row.attempts}:${row.explanation_opens}`)).toEqual([
+      'orbit#1:0',
+      'select#1:0',
+      'select#2:1',
+      'extra#1:0',
+      'guess#1:0',
+      'read#1:0',
+    ]);
+    for (const row of rows) expect(row).toMatchObject({ app_version: '9.9.9', utc_offset_min: '-330' });
     // Hints asked for and offered ones opened count as opened; an offer left alone only as offered.
     expect(rows.map((row) => `${row.task}#${row.attempts}:${row.hints_offered}/${row.hints_opened}`)).toEqual([
       'orbit#1:0/1',
@@ -232,6 +246,10 @@ describe('JSON export', () => {
       { task: 'read', hintsText: 0, hintsGuidance: 0, hintsOffered: 0, hintsOpened: 0 },
     ]);
     expect(data.survey?.answers).toEqual({ 'computer-skill': 7, feedback: 'Nice, "really"' });
+    expect(data.utcOffsetMin).toBe(-330);
+    expect(data.attempts.find((attempt) => attempt.task === 'guess')).toMatchObject({ quizChoice: 2, quizChoiceId: 'c', quizChoiceText: 'l1/guess option 2' });
+    expect(data.attempts.find((attempt) => attempt.task === 'orbit')).toMatchObject({ quizChoice: null, quizChoiceId: null, quizChoiceText: null });
+    expect(data.attempts.map((attempt) => attempt.explanationOpens)).toEqual([0, 0, 1, 0, 0, 0]);
   });
 
   it('knows the app version from package.json', () => {
@@ -317,7 +335,16 @@ describe('xAPI export', () => {
 
   it('reports quiz answers, the passed level, and the survey answers', () => {
     const quiz = statements.find((s) => s.verb.id.endsWith('/answered') && s.object.id.endsWith('/tasks/guess'));
-    expect(quiz?.result).toEqual({ success: false, response: '2' });
+    // A choice interaction's response is the option's id; its text rides along in an extension.
+    expect(quiz?.result).toEqual({
+      success: false,
+      response: 'c',
+      extensions: { 'https://raytracerquest.example/extensions/choice-text': 'l1/guess option 2' },
+    });
+    expect(quiz?.context.extensions).toEqual({
+      'https://raytracerquest.example/extensions/app-version': '9.9.9',
+      'https://raytracerquest.example/extensions/utc-offset-min': '-330',
+    });
     const passed = statements.find((s) => s.verb.id.endsWith('/passed'));
     expect(passed?.result).toMatchObject({ success: true, duration: 'PT4S' });
     const answer = statements.find((s) => s.object.id.endsWith('/questions/computer-skill'));

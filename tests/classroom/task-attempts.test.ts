@@ -49,6 +49,8 @@ describe('reading a learner’s log as task attempts', () => {
         hintsOffered: 1,
         quizAnswers: 0,
         quizCorrect: null,
+        quizChoice: null,
+        explanationOpens: 0,
       },
     ]);
   });

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { LOCALE_KEY, parseLocale, pickLocale, readRememberedLocale, rememberLocale } from '../../src/i18n/locale-choice.ts';
+import { browserLocale, LOCALE_KEY, parseLocale, pickLocale, readRememberedLocale, rememberLocale } from '../../src/i18n/locale-choice.ts';
 import { MemoryStorage } from '../../src/quest/progress-store.ts';
 
 const blocked = (): Storage => {
@@ -25,6 +25,18 @@ describe('choosing the language', () => {
     expect(pickLocale({ search: '', remembered: 'nl' })).toBe('nl');
     expect(pickLocale({ search: '', remembered: null })).toBe('en');
     expect(pickLocale({})).toBe('en');
+  });
+
+  it("opens in the browser's language when nothing else chose one", () => {
+    expect(pickLocale({ search: '', remembered: null, browser: ['nl-NL', 'en-US'] })).toBe('nl');
+    expect(pickLocale({ search: '', remembered: null, browser: ['de-DE', 'nl-BE', 'en'] })).toBe('nl');
+    expect(pickLocale({ search: '', remembered: null, browser: ['fr-FR', 'de'] })).toBe('en');
+    // A choice made in the menu, the address or an assignment wins over the browser.
+    expect(pickLocale({ search: '', remembered: 'en', browser: ['nl-NL'] })).toBe('en');
+    expect(pickLocale({ search: '?lang=en', browser: ['nl-NL'] })).toBe('en');
+    expect(pickLocale({ assignment: 'en', browser: ['nl'] })).toBe('en');
+    expect(browserLocale([])).toBeNull();
+    expect(browserLocale(['EN-gb'])).toBe('en');
   });
 
   it('passes over an address or a remembered value that names no language of the app', () => {

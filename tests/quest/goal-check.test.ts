@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import type { LabAction } from '../../src/lab-state/lab-action.ts';
 import { reduce } from '../../src/lab-state/lab-reducer.ts';
 import { initialState, type LabState } from '../../src/lab-state/lab-state.ts';
-import { checkGoal, eventMatches, fitsGoal, isRightPrediction, NO_EVENTS, tallyAction, type EventTally } from '../../src/quest/goal-check.ts';
+import { checkGoal, eventMatches, fitsGoal, isRightPrediction, NO_EVENTS, tallyAction, touchesGoal, type EventTally } from '../../src/quest/goal-check.ts';
 import { goalSchema, type Goal } from '../../src/quest/goal.ts';
 import { problemWithPath, readPath } from '../../src/quest/state-path.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
@@ -204,5 +204,27 @@ describe('quiz and info goals', () => {
     expect(play(goal({ info: true }), [orbit])).toEqual([false]);
     expect(play(goal({ quiz: { question: 'Q', choices: ['a', 'b'], answer: 0 } }), [orbit])).toEqual([false]);
     expect(play(goal({ estimate: { question: 'Q', answer: 1, tolerance: 0.1 } }), [orbit])).toEqual([false]);
+  });
+});
+
+describe('a step towards a goal (touchesGoal)', () => {
+  const step = (g: Goal, action: LabAction) => touchesGoal(g, start, reduce(start, action).state, action);
+  const [first, second] = start.scene.objects;
+
+  it('is a change of a value a state goal looks at, compared by content: editing one object is no step towards another', () => {
+    const otherColour = goal({ state: `scene.objects[id=${second.id}].material.color`, op: '!=', value: [0, 0, 0] });
+    const paint: LabAction = { type: 'material.changed', id: first.id, changes: { color: [0.1, 0.5, 1] } };
+    // The reducer gives every object a new (equal) value; only the painted one changed.
+    expect(reduce(start, paint).state.scene.objects[1]).not.toBe(second);
+    expect(step(otherColour, paint)).toBe(false);
+    expect(step(goal({ state: `scene.objects[id=${first.id}].material.color`, op: '!=', value: [0, 0, 0] }), paint)).toBe(true);
+  });
+
+  it("is the goal's event with the goal's `with` fields, whatever `where` says", () => {
+    const topLeftFile = { event: 'pixel.selected', with: { pixel: [0, 0] }, where: { 'scene.settings.supersampling': 4 } };
+    const topLeft = goal(topLeftFile);
+    expect(step(topLeft, { type: 'pixel.selected', pixel: [2, 2] })).toBe(false);
+    expect(step(topLeft, { type: 'pixel.selected', pixel: [0, 0] })).toBe(true);
+    expect(step(goal({ any: [topLeftFile, { event: 'view.zoomed' }] }), zoom)).toBe(true);
   });
 });

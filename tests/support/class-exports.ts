@@ -116,7 +116,7 @@ export function testUuid(n: number): string {
 function surveyAnswers(rand: () => number): SurveyAnswers {
   const likert = () => Math.min(5, 1 + Math.floor(rand() * 3 + rand() * 3));
   return {
-    education: rand() < 0.7 ? 'secondary' : 'bachelor',
+    education: rand() < 0.7 ? 'havo' : 'vwo',
     'computer-skill': 1 + Math.floor(rand() * 10),
     'prior-knowledge': 1 + Math.floor(rand() * 3),
     minutes: 20 + Math.floor(rand() * 40),

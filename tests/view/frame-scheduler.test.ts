@@ -117,6 +117,32 @@ function withFakeTimers() {
 describe('holding frames back (an edit waits for its rays)', () => {
   afterEach(() => vi.useRealTimers());
 
+  it('is idle only while no frame is coming: none scheduled, none waiting for a hold', () => {
+    const { frames, scheduler } = withFakeTimers();
+    expect(scheduler.idle).toBe(true);
+    scheduler.requestRender();
+    expect(scheduler.idle).toBe(false);
+    frames.tick();
+    expect(scheduler.idle).toBe(true);
+    // A hold alone brings no frame; a frame asked for during it comes at its end.
+    scheduler.holdFor(60);
+    expect(scheduler.idle).toBe(true);
+    scheduler.requestMore();
+    expect(scheduler.idle).toBe(false);
+    vi.advanceTimersByTime(60);
+    expect(scheduler.idle).toBe(false);
+    frames.tick();
+    expect(scheduler.idle).toBe(true);
+    // A moving animator keeps the next frame coming.
+    let moves = 2;
+    scheduler.addAnimator(() => moves-- > 0);
+    frames.tick();
+    expect(scheduler.idle).toBe(false);
+    frames.tick();
+    frames.tick();
+    expect(scheduler.idle).toBe(true);
+  });
+
   it('draws a frame asked for during a hold once it is released, and only one', () => {
     const { frames, scheduler, draws } = withFakeTimers();
     scheduler.requestRender(); // scheduled before the hold: held too

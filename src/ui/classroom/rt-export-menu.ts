@@ -1,31 +1,32 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html, LitElement, nothing } from 'lit';
+import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
+import { choiceQuestions, optionTexts } from '../../classroom/quiz-options.ts';
+import { playableLevels } from '../../quest/level-index.ts';
 import { downloadText } from '../../util/download-file.ts';
 import { exportFileName } from '../../classroom/export-file-name.ts';
 import { APP_VERSION, type ExportInput } from '../../classroom/export-context.ts';
-import { exportCsv } from '../../classroom/export-csv.ts';
-import { exportJson } from '../../classroom/export-json.ts';
-import { exportXapi } from '../../classroom/export-xapi.ts';
-import { installId, randomUuid } from '../../classroom/learner-identity.ts';
+import type { ConceptTestAnswers } from '../../classroom/concept-test/concept-answers.ts';
+import type { ExportFormat } from '../../classroom/export-files.ts';
+import { exportInstallId, randomUuid } from '../../classroom/learner-identity.ts';
 import type { SurveySubmission } from '../../classroom/survey-answers.ts';
 import { MemoryStorage } from '../../quest/progress-store.ts';
 import type { Progress } from '../../quest/progress.ts';
 
-type Format = 'csv' | 'json' | 'xapi';
+type Format = ExportFormat;
 
-const FILES: Record<Format, { extension: string; type: string; text: (input: ExportInput) => string }> = {
-  csv: { extension: 'csv', type: 'text/csv;charset=utf-8', text: exportCsv },
-  json: { extension: 'json', type: 'application/json', text: exportJson },
-  xapi: { extension: 'xapi.json', type: 'application/json', text: (input) => `${JSON.stringify(exportXapi(input), null, 2)}\n` },
-};
+/** The exporters, loaded at the first click (export-files.ts). */
+const exportFiles = () => import('../../classroom/export-files.ts');
 
 /**
- * @summary The results downloads: CSV (one row per task attempt), JSON (everything, with the
- * full event log) and xAPI statements. Made in the browser from the current progress; nothing
- * is uploaded. Set `.progress` (QuestEngine.progress, read at the moment of the click) and the
- * classroom context: `.participant`, `.attemptId`, `.assignment`, `.survey`; the browser's
- * install id is read from localStorage.
+ * @summary Handing in the results: one results file (the JSON export: everything, with the
+ * full event log and the survey; the dashboard reads it), or the same as a results code to
+ * paste into a form (results-code.ts). CSV (one row per task attempt) and xAPI statements stay
+ * below as other formats, for researchers. Made in the browser from the current progress;
+ * nothing is uploaded. Set `.progress` (QuestEngine.progress, read at the moment of the click) and the
+ * classroom context: `.participant`, `.attemptId`, `.assignment`, `.survey`; without a
+ * participant code the browser's install id is read from localStorage.
  * @fires export-failed - detail: the message, when a file could not be made (the lab shows it as a toast).
  */
 export class RtExportMenu extends LitElement {
@@ -35,13 +36,52 @@ export class RtExportMenu extends LitElement {
     attemptId: { attribute: false },
     assignment: { attribute: false },
     survey: { attribute: false },
+    code: { state: true },
+    copied: { state: true },
+    conceptTest: { attribute: false },
   };
 
   static override styles = css`
     :host {
+      display: grid;
+      gap: var(--rt-space);
+    }
+    .row {
       display: flex;
       flex-wrap: wrap;
+      align-items: center;
       gap: var(--rt-space);
+    }
+    .primary {
+      background: var(--rt-accent);
+      border-color: var(--rt-accent);
+      color: var(--rt-accent-text);
+      font-weight: 600;
+    }
+    .primary:hover {
+      background: var(--rt-accent);
+      filter: brightness(1.1);
+    }
+    p {
+      margin: 0;
+      font-size: 0.9em;
+      color: var(--rt-muted);
+    }
+    textarea {
+      font: 0.8em / 1.3 ui-monospace, monospace;
+      width: 100%;
+      box-sizing: border-box;
+      height: 5em;
+      resize: vertical;
+      word-break: break-all;
+      background: var(--rt-surface);
+      color: var(--rt-text);
+      border: 1px solid var(--rt-border);
+      border-radius: var(--rt-radius);
+    }
+    .research button {
+      min-height: 28px;
+      font-size: 0.9em;
     }
     button {
       font: inherit;
@@ -73,6 +113,11 @@ export class RtExportMenu extends LitElement {
   declare attemptId: string | null;
   declare assignment: Assignment | null;
   declare survey: SurveySubmission | null;
+  /** The results code last made, shown so that it can also be copied by hand. */
+  declare code: string | null;
+  /** Whether the browser put the code on the clipboard itself. */
+  declare copied: boolean;
+  declare conceptTest: ConceptTestAnswers | null;
 
   constructor() {
     super();
@@ -81,50 +126,117 @@ export class RtExportMenu extends LitElement {
     this.attemptId = null;
     this.assignment = null;
     this.survey = null;
+    this.code = null;
+    this.copied = false;
+    this.conceptTest = null;
   }
 
   /** The file of one format, exactly as the buttons download it (for tests and other menus). */
-  fileOf(format: Format): { name: string; text: string; type: string } | null {
+  async fileOf(format: Format): Promise<{ name: string; text: string; type: string } | null> {
+    const { EXPORT_FILES } = await exportFiles();
+    const input = this.exportInput();
+    if (!input) return null;
+    const file = EXPORT_FILES[format];
+    const name = exportFileName(this.participant, this.assignment?.title ?? null, new Date(input.exportedAt), file.extension);
+    return { name, text: file.text(input), type: file.type };
+  }
+
+  /** The results code of the current progress (results-code.ts), or null without progress. */
+  async codeOf(): Promise<string | null> {
+    const { resultsCode } = await exportFiles();
+    const input = this.exportInput();
+    return input && resultsCode(input);
+  }
+
+  private exportInput(): ExportInput | null {
     const progress = typeof this.progress === 'function' ? this.progress() : this.progress;
     if (!progress) return null;
-    const exportedAt = new Date().toISOString();
     this.attemptId ??= randomUuid();
-    const input: ExportInput = {
+    const exportedAt = new Date();
+    return {
       progress,
       participant: this.participant,
-      installId: installId(browserStorage()),
+      installId: exportInstallId(this.participant, browserStorage()),
       attemptId: this.attemptId,
       assignment: this.assignment,
       survey: this.survey,
-      exportedAt,
+      exportedAt: exportedAt.toISOString(),
+      conceptTest: this.conceptTest,
       appVersion: APP_VERSION,
+      utcOffsetMin: -exportedAt.getTimezoneOffset(),
+      // The options' texts in the language the levels are loaded in: the one the learner played in.
+      optionText: optionTexts(choiceQuestions(playableLevels(loadBrowserCatalog()), this.assignment?.locale ?? progress.settings.locale)),
     };
-    const file = FILES[format];
-    return { name: exportFileName(this.participant, exportedAt, file.extension), text: file.text(input), type: file.type };
   }
 
-  private download(format: Format): void {
+  private async download(format: Format): Promise<void> {
     try {
-      const file = this.fileOf(format);
+      const file = await this.fileOf(format);
       if (file) downloadText(file.text, file.name, file.type);
     } catch (error) {
-      const reason = error instanceof Error ? error.message : String(error);
-      this.dispatchEvent(new CustomEvent('export-failed', { detail: msg(str`The results could not be exported: ${reason}`), bubbles: true, composed: true }));
+      this.failed(error);
     }
+  }
+
+  private async copyCode(): Promise<void> {
+    try {
+      this.code = await this.codeOf();
+    } catch (error) {
+      this.failed(error);
+      return;
+    }
+    if (this.code === null) return;
+    this.copied = false;
+    try {
+      // Refused on a page served over plain http and in some browsers' settings: the code is then shown selected, to copy by hand.
+      await navigator.clipboard.writeText(this.code);
+      this.copied = true;
+    } catch {
+      await this.updateComplete;
+      this.renderRoot.querySelector('textarea')?.select();
+    }
+  }
+
+  private failed(error: unknown): void {
+    const reason = error instanceof Error ? error.message : String(error);
+    this.dispatchEvent(new CustomEvent('export-failed', { detail: msg(str`The results could not be exported: ${reason}`), bubbles: true, composed: true }));
   }
 
   override render() {
     const none = this.progress === null;
     return html`
-      <button type="button" ?disabled=${none} @click=${() => this.download('csv')} title=${msg('One row per task attempt, with times and hints: for a spreadsheet')}>
-        ${msg('Download CSV')}
-      </button>
-      <button type="button" ?disabled=${none} @click=${() => this.download('json')} title=${msg('Everything, with the full event log and survey answers: for the class dashboard')}>
-        ${msg('Download JSON')}
-      </button>
-      <button type="button" ?disabled=${none} @click=${() => this.download('xapi')} title=${msg("xAPI statements, for your school's learning record store")}>
-        ${msg('Download xAPI')}
-      </button>
+      <div class="row">
+        <button
+          type="button"
+          class="primary"
+          ?disabled=${none}
+          @click=${() => this.download('json')}
+          title=${msg('One file with all your results and survey answers, named with your code: hand this file in')}
+        >
+          ${msg('Download results file')}
+        </button>
+        <button type="button" ?disabled=${none} @click=${() => void this.copyCode()} title=${msg('The same results as one line of text, to paste into the form your teacher gave you')}>
+          ${msg('Copy results code')}
+        </button>
+      </div>
+      <p>${msg('Hand in what your teacher asked for: the file, or the code pasted into their form. Both hold the same results.')}</p>
+      ${
+        this.code === null
+          ? nothing
+          : html`<p aria-live="polite">
+              ${this.copied ? msg('Copied. Paste it into the form your teacher gave you (Ctrl+V).') : msg('Select all of the code below and copy it (Ctrl+C).')}
+            </p>
+            <textarea readonly aria-label=${msg('Your results code')} @focus=${(event: FocusEvent) => (event.target as HTMLTextAreaElement).select()}>${this.code}</textarea>`
+      }
+      <div class="row research">
+        <p>${msg('Other formats, for research:')}</p>
+        <button type="button" ?disabled=${none} @click=${() => this.download('csv')} title=${msg('One row per task attempt, with times and hints: for a spreadsheet')}>
+          ${msg('Download CSV')}
+        </button>
+        <button type="button" ?disabled=${none} @click=${() => this.download('xapi')} title=${msg("xAPI statements, for your school's learning record store")}>
+          ${msg('Download xAPI')}
+        </button>
+      </div>
     `;
   }
 }

@@ -15,7 +15,7 @@ import './rt-survey.ts';
  * @fires survey-later - the learner goes back to the lab without handing in.
  */
 export class RtSurveyPage extends LitElement {
-  static override properties = { surveyId: { attribute: 'survey-id' }, locale: {} };
+  static override properties = { surveyId: { attribute: 'survey-id' }, locale: {}, levels: { attribute: false } };
 
   static override styles = [
     classroomStyles,
@@ -52,12 +52,15 @@ export class RtSurveyPage extends LitElement {
 
   declare surveyId: string;
   declare locale: Locale;
+  /** The assignment's levels (rt-survey.ts). */
+  declare levels: readonly string[] | null;
   private readonly focusReturn = new FocusReturn();
 
   constructor() {
     super();
     this.surveyId = 'default';
     this.locale = 'en';
+    this.levels = null;
     this.addEventListener('keydown', (event) => {
       if (event.key === 'Escape') this.later();
     });
@@ -87,7 +90,7 @@ export class RtSurveyPage extends LitElement {
       <div class="bar">
         <button @click=${this.later} title=${msg('Back to the lab; the survey waits in the task column (Esc)')}>${msg('Later')}</button>
       </div>
-      <rt-survey survey-id=${this.surveyId} locale=${this.locale}></rt-survey>
+      <rt-survey survey-id=${this.surveyId} locale=${this.locale} .levels=${this.levels}></rt-survey>
     </section>`;
   }
 }

@@ -3,6 +3,7 @@ import { css, html, LitElement, nothing } from 'lit';
 import { checkAnswers, cleanAnswers, type AnswerProblem, type SurveyAnswers, type SurveySubmission } from '../../classroom/survey-answers.ts';
 import type { Survey, SurveyQuestion } from '../../classroom/survey-schema.ts';
 import { surveyById } from '../../classroom/surveys.ts';
+import { surveyForLevels } from '../../classroom/survey-for-levels.ts';
 import { currentLocale } from '../../i18n/locale.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
 import { classroomStyles } from './classroom-styles.ts';
@@ -19,6 +20,7 @@ export class RtSurvey extends LitElement {
   static override properties = {
     surveyId: { attribute: 'survey-id' },
     locale: {},
+    levels: { attribute: false },
     answers: { state: true },
     problems: { state: true },
     submitted: { state: true },
@@ -126,6 +128,8 @@ export class RtSurvey extends LitElement {
 
   declare surveyId: string;
   declare locale: Locale;
+  /** The assignment's levels: questions on ideas none of them teaches are left out; null (a preview) asks them all. */
+  declare levels: readonly string[] | null;
   declare answers: SurveyAnswers;
   declare problems: Record<string, AnswerProblem>;
   declare submitted: boolean;
@@ -135,13 +139,15 @@ export class RtSurvey extends LitElement {
     this.surveyId = 'default';
     // The page's language, unless the assignment names its own (a teacher's preview names none).
     this.locale = currentLocale();
+    this.levels = null;
     this.answers = {};
     this.problems = {};
     this.submitted = false;
   }
 
   private get survey(): Survey | undefined {
-    return surveyById(this.surveyId);
+    const survey = surveyById(this.surveyId);
+    return survey && surveyForLevels(survey, this.levels);
   }
 
   private text(text: Parameters<typeof localize>[0]): string {

@@ -6,22 +6,41 @@ import type { Assignment } from '../../classroom/assignment.ts';
 import { assignmentSchema, CLASS_CODE, TITLE_MAX } from '../../classroom/assignment-schema.ts';
 import { compactAssignment } from '../../classroom/assignment-compact.ts';
 import { mandatoryTasks, withPreset } from '../../classroom/assignment-preset.ts';
-import { assignmentUrl } from '../../classroom/assignment-link.ts';
-import { SURVEY_IDS } from '../../classroom/surveys.ts';
+import { assignmentUrl, decodeAssignment } from '../../classroom/assignment-link.ts';
+import { assignmentId } from '../../classroom/assignment-id.ts';
+import { expandAssignment } from '../../classroom/assignment-expand.ts';
+import { estimatedMinutes } from '../../classroom/level-summary.ts';
+import { assignmentHashOfTeacherLink, teacherLinkHash } from '../../classroom/teacher-link.ts';
 import type { Level } from '../../quest/level-schema.ts';
 import { playableLevels, type LevelPreset } from '../../quest/level-index.ts';
 import { currentLocale } from '../../i18n/locale.ts';
 import { plainLevelText } from '../../quest/text-markup.ts';
 import { localize } from '../../quest/localized-text.ts';
+import { issueText } from '../../i18n/issue-text.ts';
+import { shortList } from '../../i18n/short-list.ts';
 import { teacherPageStyles } from './teacher-page.css.ts';
+import { TeacherKeeper } from './teacher-keeper.ts';
+import { levelItem, minutesText } from './teacher-level-item.ts';
+import { afterLessonSection, optional, researchSection, settingsSection } from './teacher-sections.ts';
+import type { ShelfRequest } from './rt-teacher-shelf.ts';
 import '../controls/rt-theme-toggle.ts';
+import { consentSection } from './teacher-consent-section.ts';
+import './rt-scorm-download.ts';
+import './rt-teacher-concept-test.ts';
+import './rt-teacher-handout.ts';
+import './rt-teacher-shelf.ts';
 
 /**
  * @summary The teacher page (`#/teacher`): builds an assignment — title, levels and their
- * order (by hand or from a preset of levels/index.json, each level with its one idea),
- * required tasks, other levels, language, participant code, closing survey — and shows its
- * link with a copy button, a QR code for the projector and a link to try it as a student.
- * Nothing is stored or sent: the link is the assignment.
+ * order (by hand or from a preset of levels/index.json, each level with its one idea, task
+ * kinds, minutes and a preview), required tasks, other levels, language, participant code,
+ * closing survey — and shows its link with a copy button, a QR code for the projector, a
+ * link to try it as a student, a printable handout and the way to the dashboard.
+ * Every assignment that makes a link is kept in this browser (teacher-keeper.ts) and the
+ * page reopens the last one; nothing is sent anywhere: the link is the assignment.
+ *
+ * The page is a list of sections (`render`): a new part of the assignment is a function
+ * `(assignment, change) => template` in a file of its own, added to that list with one line.
  */
 export class RtTeacherPage extends LitElement {
   static override properties = {
@@ -47,27 +66,44 @@ export class RtTeacherPage extends LitElement {
 
   private readonly levels: Level[] = playableLevels(loadBrowserCatalog());
   private readonly guide = loadBrowserLevelGuide();
+  private readonly keeper = new TeacherKeeper(this);
   private made = 0;
 
   constructor() {
     super();
-    const first = this.levels[0];
-    this.assignment = {
-      version: 1,
-      title: msg('Ray tracing lesson'),
-      levels: first ? [first.id] : [],
-      requiredTasks: first ? { [first.id]: mandatoryTasks(first) } : {},
-      otherLevels: 'hidden',
-      // The teacher's own language: a Dutch teacher's pupils get Dutch unless chosen otherwise.
-      locale: currentLocale(),
-      askParticipantCode: false,
-      survey: null,
-    };
+    const latest = this.keeper.latest;
+    this.assignment = latest?.assignment ?? this.newAssignment();
+    if (latest) this.keeper.show(latest);
+    else this.keeper.startNew(this.assignment);
     this.url = null;
     this.qr = null;
     this.status = '';
     this.stale = false;
     this.adding = '';
+  }
+
+  /** A first assignment: the first level, in the teacher's own language (a Dutch teacher's pupils get Dutch unless chosen otherwise). */
+  private newAssignment(): Assignment {
+    const first = this.levels[0];
+    return {
+      version: 1,
+      title: msg('Ray tracing lesson'),
+      levels: first ? [first.id] : [],
+      requiredTasks: first ? { [first.id]: mandatoryTasks(first) } : {},
+      otherLevels: 'hidden',
+      locale: currentLocale(),
+      askParticipantCode: false,
+      survey: null,
+    };
+  }
+
+  override connectedCallback(): void {
+    super.connectedCallback();
+    // Opened on an assignment (#/teacher/a/…): its form, and the plain address, so that a reload shows what was edited since.
+    const opened = assignmentHashOfTeacherLink(location.hash);
+    if (opened === null) return;
+    history.replaceState(history.state, '', '#/teacher');
+    void this.openLink(opened);
   }
 
   override willUpdate(changed: Map<string, unknown>): void {
@@ -99,9 +135,11 @@ export class RtTeacherPage extends LitElement {
     this.stale = true;
     if (this.problem) {
       this.url = this.qr = null;
+      this.keeper.notKept();
       return;
     }
-    const assignment = compactAssignment({ ...this.assignment, title: this.assignment.title.trim() }, this.levels);
+    const made = { ...this.assignment, title: this.assignment.title.trim() };
+    const assignment = compactAssignment(made, this.levels);
     const url = await assignmentUrl(assignment, location.href);
     // Level L (7 % recovery) is enough for a projected code nothing covers, and gives the
     // fewest, largest squares: what matters from the back of a classroom.
@@ -112,7 +150,45 @@ export class RtTeacherPage extends LitElement {
     this.qr = `data:image/svg+xml;charset=utf-8,${encodeURIComponent(svg)}`;
     this.status = '';
     this.stale = false;
+    this.keeper.keep(made);
   }
+
+  /** A request of the kept assignments' list: open, forget, start anew, open a link, copy for another class. */
+  private async shelfRequest(request: ShelfRequest): Promise<void> {
+    switch (request.kind) {
+      case 'open': {
+        const entry = this.keeper.entries.find((candidate) => candidate.id === request.id);
+        if (entry) this.keeper.show(entry);
+        if (entry) this.assignment = entry.assignment;
+        return;
+      }
+      case 'remove':
+        return this.keeper.remove(request.id);
+      case 'new':
+        this.assignment = this.newAssignment();
+        return this.keeper.startNew(this.assignment);
+      case 'copy':
+        this.keeper.startNew();
+        this.assignment = { ...this.assignment, title: request.title };
+        return this.change({ classCode: optional(request.classCode) });
+      case 'open-link':
+        return this.openLink(request.link);
+    }
+  }
+
+  /** A link pasted in: its assignment fills the form, as the one kept from it when there is one. */
+  private async openLink(link: string): Promise<void> {
+    const hash = link.slice(Math.max(0, link.indexOf('#')));
+    const result = await decodeAssignment(hash, loadBrowserCatalog());
+    if (!result.ok) return this.keeper.tellProblem(msg(str`This link did not open: ${shortList(result.reasons.map(issueText))}.`));
+    const kept = this.keeper.entries.find((entry) => assignmentId(compactAssignment(entry.assignment, this.levels)) === assignmentId(result.assignment));
+    if (kept) this.keeper.show(kept);
+    else this.keeper.startNew();
+    this.assignment = kept?.assignment ?? expandAssignment(result.assignment, this.levels);
+  }
+
+  /** What a section of the page calls with its changes to the assignment. */
+  private readonly changer = (changes: Partial<Assignment>): void => this.change(changes);
 
   private change(changes: Partial<Assignment>): void {
     const next: Assignment = { ...this.assignment, ...changes };
@@ -181,11 +257,6 @@ export class RtTeacherPage extends LitElement {
   }
 
   override render() {
-    const a = this.assignment;
-    const locale = a.locale;
-    const available = this.levels.filter((level) => !a.levels.includes(level.id));
-    const adding = available.find((level) => level.id === this.adding) ?? available[0];
-    const addingIdea = adding ? this.idea(adding.id, locale) : null;
     return html`
       <header>
         <h1>${msg('Make an assignment')}</h1>
@@ -193,166 +264,123 @@ export class RtTeacherPage extends LitElement {
         <rt-theme-toggle></rt-theme-toggle>
       </header>
       <main>
-        <div>
-          <section>
-            <label class="field">
-              ${msg('Title (the students see it)')}
-              <input type="text" name="title" maxlength=${TITLE_MAX} .value=${a.title} @input=${(e: Event) => this.change({ title: (e.target as HTMLInputElement).value })} />
-            </label>
-          </section>
-          <section aria-labelledby="levels-heading">
-            <h2 id="levels-heading">${msg('Levels, in the order the students play them')}</h2>
-            ${
-              this.guide.presets.length === 0
-                ? nothing
-                : html`<div class="row">
-                  ${msg('Start from a ready-made list:')}
-                  ${this.guide.presets.map(
-                    (preset) =>
-                      html`<button type="button" data-preset=${preset.id} title=${msg('Replaces the levels below with this list, each with its mandatory tasks')} @click=${() => this.usePreset(preset)}>
-                        ${localize(preset.title, locale)}
-                      </button>`,
-                  )}
-                </div>`
-            }
-            ${a.levels.length === 0 ? html`<p class="problem">${msg('Add at least one level.')}</p>` : nothing}
-            <ol>
-              ${a.levels.map((id, index) => this.renderLevel(id, index, locale))}
-            </ol>
-            <div class="row">
-              <label for="add-level">${msg('Add a level')}</label>
-              <select
-                id="add-level"
-                name="add-level"
-                aria-describedby="add-level-idea"
-                ?disabled=${available.length === 0}
-                @change=${(e: Event) => (this.adding = (e.target as HTMLSelectElement).value)}
-              >
-                ${available.map((level) => html`<option value=${level.id}>${plainLevelText(level.title, locale)}</option>`)}
-              </select>
-              <button
-                type="button"
-                ?disabled=${available.length === 0}
-                title=${msg('Add the chosen level at the end of the list')}
-                @click=${() => this.addLevel(this.renderRoot.querySelector<HTMLSelectElement>('#add-level')?.value ?? '')}
-              >
-                ${msg('Add')}
-              </button>
-            </div>
-            <p class="idea" id="add-level-idea" data-level=${adding?.id ?? ''}>${addingIdea ?? ''}</p>
-          </section>
-          <section>
-            <h2>${msg('Settings')}</h2>
-            ${this.renderChoice(msg('Other levels'), 'otherLevels', a.otherLevels, [
-              ['hidden', msg('Hidden: only the assignment')],
-              ['shown', msg('Shown: playable after the assignment')],
-            ])}
-            ${this.renderChoice(msg('Language'), 'locale', a.locale, [
-              ['en', 'English'],
-              ['nl', 'Nederlands'],
-            ])}
-            ${this.renderChoice(msg('Participant code'), 'askParticipantCode', a.askParticipantCode ? 'yes' : 'no', [
-              ['no', msg('Do not ask')],
-              ['yes', msg('Ask for a code at the start (for research)')],
-            ])}
-            ${this.renderChoice(msg('Closing survey'), 'survey', a.survey ?? 'none', [
-              ['none', msg('None')],
-              ...SURVEY_IDS.map((id): [string, string] => [id, id === 'default' ? msg('The standard questions (about 5 minutes)') : id]),
-            ])}
-            ${a.survey ? html`<a href=${`#/survey/${a.survey}`} target="_blank" rel="noopener">${msg('Preview the survey (opens a new tab)')}</a>` : nothing}
-          </section>
-          <section>
-            <h2>${msg('For the dashboard and research (optional)')}</h2>
-            <label class="field">
-              ${msg('Class code (the dashboard can show one class)')}
-              <input type="text" name="class-code" maxlength="32" placeholder="3B" .value=${a.classCode ?? ''} @input=${(e: Event) => this.change({ classCode: optional((e.target as HTMLInputElement).value) })} />
-            </label>
-            <label class="field">
-              ${msg("Your school's web address, for xAPI accounts")}
-              <input
-                type="url"
-                name="xapi-home-page"
-                maxlength="200"
-                placeholder="https://school.example"
-                .value=${a.xapiHomePage ?? ''}
-                @input=${(e: Event) => this.change({ xapiHomePage: optional((e.target as HTMLInputElement).value) })}
-              />
-            </label>
-            <p class="muted">${msg('With a learning record store shared by schools, this keeps code "P-07" of your school apart from another school\'s.')}</p>
-          </section>
+        <div class="form">${this.renderKept()} ${this.renderTitle()} ${this.renderLevels()} ${settingsSection(this.assignment, this.changer)} ${researchSection(this.assignment, this.changer)} ${consentSection(this.assignment, (consent) => this.change({ consent }))}
+          <rt-teacher-concept-test .value=${this.assignment.conceptTest} @concept-test-change=${(e: CustomEvent<Assignment['conceptTest']>) => this.change({ conceptTest: e.detail })}></rt-teacher-concept-test>
         </div>
-        <section class="result" aria-labelledby="result-heading">
-          <h2 id="result-heading">${msg('Link for the students')}</h2>
-          ${
-            this.problem
-              ? html`<p class="problem" role="alert">${this.problem}</p>`
-              : html`
-                <input class="link" type="text" readonly aria-label=${msg('Assignment link')} .value=${this.url ?? ''} @focus=${(e: Event) => (e.target as HTMLInputElement).select()} />
-                <div class="row" style="margin-top: 8px">
-                  <button class="primary" type="button" ?disabled=${!this.url || this.stale} @click=${this.copy}>${msg('Copy link')}</button>
-                  <a class="button" href=${(!this.stale && this.url) || '#/teacher'} aria-disabled=${this.stale ? 'true' : 'false'} target="_blank" rel="noopener">${msg('Open as a student')}</a>
-                  <span role="status">${this.status}</span>
-                </div>
-                ${this.qr ? html`<img class="qr" src=${this.qr} alt=${msg('QR code of the assignment link')} />` : nothing}
-                <p class="muted">${msg("Show the QR code on the projector; students scan it or type the link. Progress stays in each student's browser.")}</p>
-              `
-          }
-        </section>
+        <div class="result">${this.renderLink()} ${this.renderHandout()} ${afterLessonSection()}</div>
       </main>
     `;
   }
 
-  private renderLevel(id: string, index: number, locale: Assignment['locale']) {
-    const level = this.level(id);
-    const title = level ? plainLevelText(level.title, locale) : id;
-    const idea = this.idea(id, locale);
-    const required = new Set(this.assignment.requiredTasks[id] ?? []);
-    const last = this.assignment.levels.length - 1;
-    return html`<li data-level=${id}>
-      <div class="level-head">
-        <span class="level-name"><strong>${title}</strong>${idea === null ? nothing : html`<span class="idea">${idea}</span>`}</span>
-        <button class="icon" type="button" data-move="-1" ?disabled=${index === 0} aria-label=${msg(str`Move ${title} up`)} title=${msg('Move up')} @click=${() => this.moveLevel(index, -1)}>↑</button>
-        <button class="icon" type="button" data-move="1" ?disabled=${index === last} aria-label=${msg(str`Move ${title} down`)} title=${msg('Move down')} @click=${() => this.moveLevel(index, 1)}>↓</button>
-        <button class="icon" type="button" aria-label=${msg(str`Remove ${title}`)} title=${msg('Remove from the assignment')} @click=${() => this.removeLevel(id)}>✕</button>
-      </div>
+  private renderKept() {
+    return html`<section aria-labelledby="kept-heading">
+      <h2 id="kept-heading">${msg('Your assignments (kept in this browser)')}</h2>
+      <rt-teacher-shelf
+        .entries=${this.keeper.entries}
+        .current=${this.keeper.id}
+        .status=${this.keeper.status}
+        .problem=${this.keeper.problem}
+        .copyTitle=${this.assignment.title}
+        @shelf-request=${(event: CustomEvent<ShelfRequest>) => void this.shelfRequest(event.detail)}
+      ></rt-teacher-shelf>
+    </section>`;
+  }
+
+  private renderTitle() {
+    return html`<section>
+      <label class="field">
+        ${msg('Title (the students see it)')}
+        <input type="text" name="title" maxlength=${TITLE_MAX} .value=${this.assignment.title} @input=${(e: Event) => this.change({ title: (e.target as HTMLInputElement).value })} />
+      </label>
+    </section>`;
+  }
+
+  private renderLevels() {
+    const a = this.assignment;
+    const locale = a.locale;
+    const available = this.levels.filter((level) => !a.levels.includes(level.id));
+    const adding = available.find((level) => level.id === this.adding) ?? available[0];
+    const addingIdea = adding ? this.idea(adding.id, locale) : null;
+    const minutes = a.levels.reduce((sum, id) => {
+      const level = this.level(id);
+      return sum + (level ? estimatedMinutes(level, a.requiredTasks[id] ?? []) : 0);
+    }, 0);
+    return html`<section aria-labelledby="levels-heading">
+      <h2 id="levels-heading">${msg('Levels, in the order the students play them')}</h2>
       ${
-        level
-          ? html`<fieldset>
-            <legend>${msg('Required tasks (the others are optional)')}</legend>
-            ${level.tasks.map(
-              (task) => html`<label class="check">
-                <input type="checkbox" name=${`${id}/${task.id}`} .checked=${required.has(task.id)} @change=${(e: Event) => this.toggleTask(id, task.id, (e.target as HTMLInputElement).checked)} />
-                ${plainLevelText(task.title, locale)} ${task.mandatory ? nothing : html`<span class="muted">${msg('(optional in the level)')}</span>`}
-              </label>`,
+        this.guide.presets.length === 0
+          ? nothing
+          : html`<div class="row">
+            ${msg('Start from a ready-made list:')}
+            ${this.guide.presets.map(
+              (preset) =>
+                html`<button type="button" data-preset=${preset.id} title=${msg('Replaces the levels below with this list, each with its mandatory tasks')} @click=${() => this.usePreset(preset)}>
+                  ${localize(preset.title, locale)}
+                </button>`,
             )}
-          </fieldset>`
-          : nothing
+          </div>`
       }
-    </li>`;
+      ${a.levels.length === 0 ? html`<p class="problem">${msg('Add at least one level.')}</p>` : nothing}
+      <ol>
+        ${a.levels.map((id, index) =>
+          levelItem(
+            { id, level: this.level(id), index, last: a.levels.length - 1, locale, idea: this.idea(id, locale), required: a.requiredTasks[id] ?? [] },
+            {
+              move: (at, by) => this.moveLevel(at, by),
+              remove: (level) => this.removeLevel(level),
+              toggleTask: (level, task, on) => this.toggleTask(level, task, on),
+            },
+          ),
+        )}
+      </ol>
+      ${a.levels.length === 0 ? nothing : html`<p class="muted" id="total-minutes">${msg(str`In all about ${minutesText(minutes)} minutes for the required tasks (an estimate from the kinds of task, not measured).`)}</p>`}
+      <div class="row">
+        <label for="add-level">${msg('Add a level')}</label>
+        <select id="add-level" name="add-level" aria-describedby="add-level-idea" ?disabled=${available.length === 0} @change=${(e: Event) => (this.adding = (e.target as HTMLSelectElement).value)}>
+          ${available.map((level) => html`<option value=${level.id}>${plainLevelText(level.title, locale)}</option>`)}
+        </select>
+        <button
+          type="button"
+          ?disabled=${available.length === 0}
+          title=${msg('Add the chosen level at the end of the list')}
+          @click=${() => this.addLevel(this.renderRoot.querySelector<HTMLSelectElement>('#add-level')?.value ?? '')}
+        >
+          ${msg('Add')}
+        </button>
+      </div>
+      <p class="idea" id="add-level-idea" data-level=${adding?.id ?? ''}>${addingIdea ?? ''}</p>
+    </section>`;
   }
 
-  private renderChoice(legend: string, name: 'otherLevels' | 'locale' | 'askParticipantCode' | 'survey', value: string, options: [string, string][]) {
-    const pick = (option: string) => {
-      if (name === 'askParticipantCode') this.change({ askParticipantCode: option === 'yes' });
-      else if (name === 'survey') this.change({ survey: option === 'none' ? null : option });
-      else if (name === 'locale') this.change({ locale: option === 'nl' ? 'nl' : 'en' });
-      else this.change({ otherLevels: option === 'shown' ? 'shown' : 'hidden' });
-    };
-    return html`<fieldset class="choices">
-      <legend>${legend}</legend>
-      ${options.map(
-        ([option, label]) => html`<label class="check">
-          <input type="radio" name=${name} value=${option} .checked=${value === option} @change=${() => pick(option)} />
-          ${label}
-        </label>`,
-      )}
-    </fieldset>`;
+  private renderLink() {
+    return html`<section aria-labelledby="result-heading">
+      <h2 id="result-heading">${msg('Link for the students')}</h2>
+      ${
+        this.problem
+          ? html`<p class="problem" role="alert">${this.problem}</p>`
+          : html`
+            <input class="link" type="text" readonly aria-label=${msg('Assignment link')} .value=${this.url ?? ''} @focus=${(e: Event) => (e.target as HTMLInputElement).select()} />
+            <div class="row" style="margin-top: 8px">
+              <button class="primary" type="button" ?disabled=${!this.url || this.stale} @click=${this.copy}>${msg('Copy link')}</button>
+              <a class="button" href=${(!this.stale && this.url) || '#/teacher'} aria-disabled=${this.stale ? 'true' : 'false'} target="_blank" rel="noopener">${msg('Open as a student')}</a>
+              <span role="status">${this.status}</span>
+            </div>
+            ${this.qr ? html`<img class="qr" src=${this.qr} alt=${msg('QR code of the assignment link')} />` : nothing}
+            <p class="muted">${msg("Show the QR code on the projector; students scan it or type the link. Progress stays in each student's browser.")}</p>
+            <rt-scorm-download .link=${this.stale ? null : this.url} .assignmentTitle=${this.assignment.title.trim()}></rt-scorm-download>
+            <p><a href=${this.url ? teacherLinkHash(this.url.replace(/^[^#]*/, '')) : '#/teacher'}>${msg('This form, to bookmark or open in another browser')}</a></p>
+          `
+      }
+    </section>`;
   }
-}
 
-/** A typed optional field: trimmed, undefined when empty. */
-function optional(text: string): string | undefined {
-  return text.trim() === '' ? undefined : text.trim();
+  private renderHandout() {
+    if (this.problem || !this.url || !this.qr) return nothing;
+    return html`<section aria-labelledby="handout-heading">
+      <h2 id="handout-heading">${msg('Handout')}</h2>
+      <rt-teacher-handout .url=${this.url} .qr=${this.qr} .heading=${this.assignment.title} .classCode=${this.assignment.classCode} .askCodes=${this.assignment.askParticipantCode}></rt-teacher-handout>
+    </section>`;
+  }
 }
 
 customElements.define('rt-teacher-page', RtTeacherPage);

@@ -1,7 +1,10 @@
 import { css } from 'lit';
 import { classroomStyles, pageStyles } from './classroom-styles.ts';
 
-/** The teacher page's layout: the assignment form, the level list with its tasks, the link and its QR code. */
+/**
+ * The teacher page's layout: the assignment form, the level list with its tasks, the link and
+ * its QR code; in print, only the handout (rt-teacher-handout.ts draws its sheet).
+ */
 export const teacherPageStyles = [
   classroomStyles,
   pageStyles,
@@ -50,6 +53,10 @@ export const teacherPageStyles = [
         flex: 1;
         min-width: 10em;
       }
+      .level-facts {
+        margin: 4px 0 0;
+        font-size: 0.9em;
+      }
       .idea {
         display: block;
         font-size: 0.9em;
@@ -93,6 +100,9 @@ export const teacherPageStyles = [
         position: sticky;
         top: calc(var(--rt-space) * 2);
         align-self: start;
+        /* The handout and the dashboard follow the QR code: all of it stays reachable on a laptop screen. */
+        max-height: calc(100vh - var(--rt-space) * 4);
+        overflow-y: auto;
       }
       .link {
         width: 100%;
@@ -102,11 +112,36 @@ export const teacherPageStyles = [
       .qr {
         display: block;
         width: 100%;
-        max-width: 380px;
+        max-width: 300px;
         aspect-ratio: 1;
         margin: var(--rt-space) auto;
         background: #fff;
         border-radius: 6px;
+      }
+      @media print {
+        :host {
+          background: none;
+        }
+        header,
+        .form,
+        .result > section:not([aria-labelledby='handout-heading']),
+        #handout-heading {
+          display: none;
+        }
+        main {
+          display: block;
+          padding: 0;
+        }
+        section {
+          border: 0;
+          padding: 0;
+          background: none;
+        }
+        .result {
+          position: static;
+          max-height: none;
+          overflow: visible;
+        }
       }
       @media (max-width: 900px) {
         main {

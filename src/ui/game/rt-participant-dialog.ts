@@ -1,16 +1,19 @@
 import { msg } from '@lit/localize';
 import { css, html, LitElement, nothing } from 'lit';
 import { PARTICIPANT_CODE } from '../../classroom/learner-identity.ts';
+import { normalParticipantCode } from '../../classroom/participant-code.ts';
 import { fire, gameStyles } from './game-styles.ts';
 
 /**
  * @summary Asks for the participant code a research study hands out, before the first
- * level of an assignment. Friendly, one field, checked as typed.
+ * level of an assignment. Friendly, one field, checked as typed. With a `consent` text
+ * (consent-text.ts) the pupil first reads it and presses "I understand, start"; the code
+ * comes after, so that nobody types an identifier before knowing what it is for.
  *
- * @fires participant-code - CustomEvent<string>: the code, trimmed.
+ * @fires participant-code - CustomEvent<string>: the code, trimmed and in capitals (participant-code.ts).
  */
 export class RtParticipantDialog extends LitElement {
-  static override properties = { heading: {}, note: {}, problem: { state: true } };
+  static override properties = { heading: {}, note: {}, consent: {}, problem: { state: true }, informed: { state: true } };
   static override styles = [
     gameStyles,
     css`
@@ -35,6 +38,9 @@ export class RtParticipantDialog extends LitElement {
         display: flex;
         justify-content: flex-end;
       }
+      .consent p {
+        white-space: pre-line;
+      }
     `,
   ];
 
@@ -42,13 +48,19 @@ export class RtParticipantDialog extends LitElement {
   declare heading: string;
   /** Why the code is asked again (a damaged saved record), or ''. */
   declare note: string;
+  /** What the pupil reads before giving the code, or '' for none. */
+  declare consent: string;
   declare private problem: string;
+  /** The pupil has read the consent text and chose to start. */
+  declare private informed: boolean;
 
   constructor() {
     super();
     this.heading = '';
     this.note = '';
     this.problem = '';
+    this.consent = '';
+    this.informed = false;
   }
 
   override firstUpdated(): void {
@@ -57,7 +69,27 @@ export class RtParticipantDialog extends LitElement {
 
   override render() {
     return html`<dialog aria-labelledby="code-title" aria-describedby=${this.note ? 'code-note' : nothing} @cancel=${(event: Event) => event.preventDefault()}>
-      <form @submit=${this.submit}>
+      ${this.consent && !this.informed ? this.renderConsent() : this.renderCode()}
+    </dialog>`;
+  }
+
+  private renderConsent() {
+    return html`<div class="consent">
+      <h2 id="code-title">${this.heading || msg('Welcome!')}</h2>
+      <h3>${msg('Before you start')}</h3>
+      ${this.consent.split(/\n\s*\n/).map((paragraph) => html`<p>${paragraph.trim()}</p>`)}
+      <div class="actions"><button class="primary" type="button" autofocus @click=${this.start}>${msg('I understand, start')}</button></div>
+    </div>`;
+  }
+
+  private async start(): Promise<void> {
+    this.informed = true;
+    await this.updateComplete;
+    this.renderRoot.querySelector<HTMLInputElement>('input[name=code]')?.focus();
+  }
+
+  private renderCode() {
+    return html`<form @submit=${this.submit}>
         <h2 id="code-title">${this.heading || msg('Welcome!')}</h2>
         ${this.note ? html`<p id="code-note" class="note">⚠ ${this.note}</p>` : nothing}
         <p>${msg('Your teacher gave you a participant code. Type it here, so your work can be matched to you without your name.')}</p>
@@ -67,13 +99,13 @@ export class RtParticipantDialog extends LitElement {
         </label>
         <p id="code-problem" class="problem" role="alert">${this.problem}</p>
         <div class="actions"><button class="primary" type="submit">${msg('Start')}</button></div>
-      </form>
-    </dialog>`;
+      </form>`;
   }
 
   private submit(event: Event): void {
     event.preventDefault();
-    const code = this.renderRoot.querySelector<HTMLInputElement>('input[name=code]')?.value.trim() ?? '';
+    // In capitals, as handed out: `5h2-03` typed is the same learner as `5H2-03`.
+    const code = normalParticipantCode(this.renderRoot.querySelector<HTMLInputElement>('input[name=code]')?.value ?? '');
     if (!PARTICIPANT_CODE.test(code)) {
       this.problem = msg('Use letters, digits, - or _ (up to 32), as on the code you were given.');
       return;

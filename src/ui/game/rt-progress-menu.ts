@@ -1,6 +1,7 @@
 import { msg } from '@lit/localize';
 import { css, html, LitElement, nothing } from 'lit';
 import type { DamagedSave } from '../../app/damaged-saves.ts';
+import type { WithdrawReport } from '../../app/withdraw-data.ts';
 import type { Locale } from '../../quest/localized-text.ts';
 import { damagedSavesList, damagedSavesStyles } from './damaged-saves-list.ts';
 import { fire, gameStyles } from './game-styles.ts';
@@ -13,6 +14,7 @@ export type ProgressCommand =
   | { kind: 'export' }
   | { kind: 'import'; text: string; fileName: string }
   | { kind: 'reset' }
+  | { kind: 'withdraw'; done: (report: WithdrawReport) => void }
   | { kind: 'damaged-download' | 'damaged-restore' | 'damaged-delete'; key: string };
 
 /**
@@ -130,6 +132,7 @@ export class RtProgressMenu extends LitElement {
           </button>
           <input type="file" accept=".json,application/json" aria-label=${msg('Progress file to import')} @change=${this.imported} />
           <button class="danger" @click=${this.askReset} title=${msg('Start the game from the beginning')}>${msg('Reset progress…')}</button>
+          <rt-withdraw></rt-withdraw>
         </fieldset>
         ${damagedSavesList(this.damagedSaves, send)}
         <rt-offline-status></rt-offline-status>

@@ -161,7 +161,7 @@ export class RtTaskCard extends LitElement {
       <span class="label">
         <span class="title">${plainLevelText(view.task.title, this.locale)}<span class="visually-hidden"> (${statusText(view)})</span></span>
         <span class="tags">
-          ${view.task.mandatory ? nothing : html`<span class="tag muted">${msg('optional')}</span>`}
+          ${requirementTag(view)}
           ${view.task.points > 0 ? html`<span class="tag muted" title=${msg('Points')}>${finished && view.prediction?.stage !== 'wait' ? msg(str`${view.points} pts`) : msg(str`${view.task.points} pts`)}</span>` : nothing}
         </span>
       </span>
@@ -214,6 +214,16 @@ function checksLine(view: TaskView, locale: Locale): TemplateResult | typeof not
   if (!view.checks || !goal) return nothing;
   const predicted = predictionText(goal, view.checks.prediction, locale, view.checks.order);
   return html`<p class="checks">${msg(str`You predicted: “${predicted}”. Watch what really happens.`)}</p>`;
+}
+
+/**
+ * Whether the task counts for passing, as this learner's assignment has it: a task the
+ * teacher made required says "required" (its level file calls it optional), one the
+ * assignment leaves out says "optional"; a task the level itself requires needs no tag.
+ */
+function requirementTag(view: TaskView): TemplateResult | typeof nothing {
+  if (!view.required) return html`<span class="tag muted">${msg('optional')}</span>`;
+  return view.task.mandatory ? nothing : html`<span class="tag">${msg('required')}</span>`;
 }
 
 const MARKS: Record<TaskView['status'], string> = { current: '▶', open: '○', waiting: '·', done: '✓', shown: '✓', skipped: '–' };

@@ -4,10 +4,7 @@ import { LazyModule } from '../../util/lazy-module.ts';
  * Registers every element the lab's template uses (imported for their side effect: each
  * module defines its custom element), but those of ON_DEMAND_PANELS.
  */
-import '../game/rt-assignment-done.ts';
-import '../classroom/rt-export-menu.ts';
 import '../game/rt-participant-dialog.ts';
-import '../classroom/rt-survey-page.ts';
 import '../game/rt-level-map.ts';
 import '../game/rt-progress-menu.ts';
 import '../game/rt-quest-panel.ts';
@@ -39,3 +36,29 @@ export const ON_DEMAND_PANELS: Partial<Record<UiPanel, LazyModule<unknown>>> = {
   bvh: new LazyModule(() => import('./panels/rt-bvh-panel.ts')),
   debugger: new LazyModule(() => import('./debugger/rt-ray-debugger.ts')),
 };
+
+/**
+ * Parts the first screen never shows: the closing survey, the concept test, the end of an
+ * assignment, the Menu's hand-in buttons and withdrawal, and the render window's side-by-side
+ * comparison. They load once the lab is on
+ * the page, and the lab renders again as each is defined (the survey waits for its element:
+ * survey-page.ts); one that cannot be loaded is said in the console and left out.
+ */
+const AFTER_FIRST_SCREEN = [
+  () => import('../classroom/rt-survey-page.ts'),
+  () => import('../classroom/rt-concept-test.ts'),
+  () => import('../game/rt-withdraw.ts'),
+  () => import('../game/rt-assignment-done.ts'),
+  () => import('../classroom/rt-export-menu.ts'),
+  () => import('./render-window/rt-image-compare.ts'),
+];
+
+export function loadAfterFirstScreen(host: { requestUpdate(): void }): void {
+  setTimeout(() => {
+    for (const load of AFTER_FIRST_SCREEN)
+      load().then(
+        () => host.requestUpdate(),
+        (error: unknown) => console.warn('A part of the lab could not be loaded', error),
+      );
+  });
+}

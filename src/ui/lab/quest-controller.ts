@@ -4,6 +4,8 @@ import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import { levelTextsLocale, loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
 import { damagedSaveFileName } from '../../app/damaged-saves.ts';
 import { QuestSession } from '../../app/quest-session.ts';
+import { followInLearningPlatform } from '../../app/learning-platform.ts';
+import { deleteAssignmentData } from '../../app/withdraw-data.ts';
 import type { SaveProblemKind } from '../../quest/progress-store.ts';
 import type { ShowMeStage } from '../../app/show-me-player.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
@@ -14,12 +16,13 @@ import { contextDamageText, placesOf, progressProblemText, saveProblemReason, sa
 import { localNumbers } from '../../i18n/number-format.ts';
 import { shortList } from '../../i18n/short-list.ts';
 import type { Store } from '../../lab-state/store.ts';
-import { refusingStorage, type KeyValueStorage } from '../../quest/saved-backups.ts';
+import { MemoryStorage, refusingStorage, type KeyValueStorage } from '../../quest/saved-backups.ts';
 import type { Scene } from '../../scene/scene.ts';
 import { downloadText } from '../../util/download-file.ts';
 import type { QuestCommand } from '../game/quest-command.ts';
 import type { MapChoice } from '../game/rt-level-map.ts';
 import type { ProgressCommand } from '../game/rt-progress-menu.ts';
+import { conceptBankNow, loadConceptBank } from '../../classroom/concept-test/concept-bank.ts';
 
 /** A file's size in a message, from its characters (what localStorage counts): "3 kB", "9.2 MB". */
 const SIZE = localNumbers({ maximumFractionDigits: 1 });
@@ -101,8 +104,14 @@ export class QuestController implements ReactiveController {
   /** The game: progress from storage (a message if it was damaged), then resume, the first level or the map. */
   start(): void {
     this.stop();
+    // An assignment with a concept test waits for its item bank, loaded apart from the first screen.
+    if (this.host.assignment?.conceptTest && !conceptBankNow()) {
+      void loadConceptBank().then(() => this.host.isConnected && this.start());
+      return;
+    }
     const catalog = loadBrowserCatalog();
-    const storage = browserStorage();
+    // A teacher's preview of a level (the lab's `preview` attribute, classroom/level-preview.ts) keeps nothing.
+    const storage = this.host.hasAttribute('preview') ? new MemoryStorage() : browserStorage();
     const session = new QuestSession({ store: this.host.store, catalog, storage, assignment: this.host.assignment });
     this.session = session;
     // The level texts speak the app's language (an address's ?lang= or the menu's choice may differ from the saved one).
@@ -110,6 +119,7 @@ export class QuestController implements ReactiveController {
     this.cleanup.push(
       session.subscribe(() => this.changed()),
       session.attach(document),
+      followInLearningPlatform(session, window),
       () => session.dispose(),
     );
     const damage = session.contextDamage;
@@ -284,6 +294,9 @@ export class QuestController implements ReactiveController {
         session.flush();
         return this.changed();
       }
+      case 'withdraw':
+        session.stopSaving();
+        return command.done(deleteAssignmentData(browserStorage(), session.progressKey));
       case 'damaged-restore':
         return this.restored(session, command.key);
       case 'damaged-delete':

@@ -5,6 +5,7 @@ import { LabServices, type LoadProblem } from '../../app/lab-services.ts';
 import { labLoadProblems, withProblem } from './lab-load-problem.ts';
 import type { ShowMeStage } from '../../app/show-me-player.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
+import { consentText } from '../../classroom/consent-text.ts';
 import type { LabState } from '../../lab-state/lab-state.ts';
 import type { Store } from '../../lab-state/store.ts';
 import { type UiPanel, guideIds } from '../../quest/lab-controls.ts';
@@ -28,6 +29,7 @@ import { levelPanels } from './level-panels.ts';
 import { labSidebar } from './lab-sidebar.ts';
 import { viewLegendBox } from './view-legend.ts';
 import { sideSwitch } from './side-switch.ts';
+import { conceptTestPage } from './concept-test-page.ts';
 import { surveyPage } from './survey-page.ts';
 import { QuestController } from './quest-controller.ts';
 import type { RtRenderWindow } from './render-window/rt-render-window.ts';
@@ -35,7 +37,7 @@ import type { RtSceneView } from './rt-scene-view.ts';
 import { storeContext } from './store-context.ts';
 import { quizPictureDrawer } from './quiz-picture-drawer.ts';
 import { quizPicturesContext } from '../game/quiz-pictures.ts';
-import { ON_DEMAND_PANELS } from './lab-elements.ts';
+import { loadAfterFirstScreen, ON_DEMAND_PANELS } from './lab-elements.ts';
 import { ViewCoverController } from './view-cover.ts';
 import { PreviewPlaceController } from './preview-place.ts';
 import { boxesOverlap, type GuideAndLook, renderWindowInTheWay } from './render-window/render-window-in-the-way.ts';
@@ -145,6 +147,7 @@ export class RtLab extends LitElement {
       this.storeProvider.setValue(this.services.store);
     }
     super.connectedCallback();
+    loadAfterFirstScreen(this);
     this.cleanup.push(
       this.services.subscribe(() => this.requestUpdate()),
       this.store.subscribe(() => this.requestUpdate()),
@@ -376,11 +379,11 @@ export class RtLab extends LitElement {
           ></rt-level-map>`
           : nothing
       }
-      ${this.renderOpen ? nothing : surveyPage(this.game, this.assignment)}
+      ${this.renderOpen ? nothing : [conceptTestPage(this.game, (text, tone) => this.toast(text, tone)), surveyPage(this.game, this.assignment)]}
       <rt-guide-ring .locate=${this.ring.locate}></rt-guide-ring>
       ${
         session?.needsParticipantCode
-          ? html`<rt-participant-dialog heading=${this.assignment?.title ?? ''} note=${this.game.contextNote} @participant-code=${(event: CustomEvent<string>) => session.setParticipantCode(event.detail)}></rt-participant-dialog>`
+          ? html`<rt-participant-dialog heading=${this.assignment?.title ?? ''} consent=${consentText(this.assignment)} note=${this.game.contextNote} @participant-code=${(event: CustomEvent<string>) => session.setParticipantCode(event.detail)}></rt-participant-dialog>`
           : nothing
       }
     `;

@@ -7,7 +7,8 @@ import type { QuestController } from './quest-controller.ts';
 /** The id of the assignment's closing survey when it is due (every level passed, not handed in yet), else null. */
 function surveyDue(game: QuestController, assignment: Assignment | null): string | null {
   const surveyId = assignment?.survey;
-  return surveyId && game.session?.allPassed && !game.survey && customElements.get('rt-survey-page') ? surveyId : null;
+  // The concept test after the levels comes first (concept-test-page.ts).
+  return surveyId && game.session?.allPassed && !game.survey && !game.session.conceptTests.due && customElements.get('rt-survey-page') ? surveyId : null;
 }
 
 /**
@@ -21,6 +22,7 @@ export function surveyPage(game: QuestController, assignment: Assignment | null)
   return html`<rt-survey-page
     survey-id=${surveyId}
     locale=${game.session?.locale ?? 'en'}
+    .levels=${assignment?.levels ?? null}
     @survey-later=${() => game.putSurveyOff(true)}
     @survey-submitted=${(event: CustomEvent<SurveySubmission>) => game.surveySubmitted(event.detail)}
   ></rt-survey-page>`;

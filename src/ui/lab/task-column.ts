@@ -67,6 +67,7 @@ function yourData(game: QuestController, assignment: Assignment | null, toast: (
       .attemptId=${session.context.attemptId}
       .assignment=${assignment}
       .survey=${game.survey}
+      .conceptTest=${session.conceptTests.answers}
       @export-failed=${(event: CustomEvent<string>) => toast(event.detail, 'error')}
     ></rt-export-menu>
   </section>`;

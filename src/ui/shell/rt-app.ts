@@ -4,14 +4,16 @@ import { loadBrowserCatalog, loadLevelTexts } from '../../app/level-catalog-brow
 import { isSceneFragment } from '../../app/scene-link.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import { decodeAssignment, isAssignmentFragment } from '../../classroom/assignment-link.ts';
+import { previewedLevelId } from '../../classroom/level-preview.ts';
+import { TEACHER_LINK_PREFIX } from '../../classroom/teacher-link.ts';
 import { startLocale } from '../../i18n/locale.ts';
 import { LazyModule } from '../../util/lazy-module.ts';
 import '../controls/rt-load-problem.ts';
 import '../lab/rt-lab.ts';
+import { levelPreviewPage } from './level-preview-page.ts';
 import { linkProblemText } from './link-problem-text.ts';
 import './rt-link-notice.ts';
 import './rt-scene-link-lab.ts';
-import '../classroom/rt-survey.ts';
 
 /** `#/survey/<id>`: a survey on its own page. */
 export const SURVEY_PREVIEW = '#/survey/';
@@ -26,13 +28,23 @@ const TEACHER_PAGES: Record<string, { tag: string; code: LazyModule<unknown> }> 
   '#/dashboard': { tag: 'rt-dashboard-page', code: new LazyModule(() => import('../classroom/dashboard/rt-dashboard-page.ts')) },
 };
 
+/** A teacher's preview of a survey (`#/survey/<id>`, linked from the teacher page): loaded like the teacher's pages. */
+const SURVEY_PREVIEW_PAGE = { tag: 'rt-survey', code: new LazyModule(() => import('../classroom/rt-survey.ts')) };
+
+/** The teacher page of the address: `#/teacher/a/…` is the teacher page opened on an assignment (classroom/teacher-link.ts). */
+function teacherPage(route: string) {
+  if (route.startsWith(SURVEY_PREVIEW)) return SURVEY_PREVIEW_PAGE;
+  return TEACHER_PAGES[route.startsWith(TEACHER_LINK_PREFIX) ? '#/teacher' : route];
+}
+
 /** An assignment link as opened: the assignment, or why the learner plays freely instead. */
 type Opened = { hash: string; assignment: Assignment | null; problem: string };
 
 /**
  * @summary The app's top level: picks the page from the address's #fragment. The lab (with
  * the game) is the default; `#/teacher` is the teacher page; `#/dashboard` the class dashboard;
- * `#/s/<scene>` a shared scene in the lab; `#/survey/<id>` previews a survey; `#/a/<link>` opens a teacher's
+ * `#/s/<scene>` a shared scene in the lab; `#/survey/<id>` previews a survey; `#/preview/<level>` a level;
+ * `#/a/<link>` opens a teacher's
  * assignment in the lab, or, when the link is damaged, free play with a message.
  */
 export class RtApp extends LitElement {
@@ -68,7 +80,7 @@ export class RtApp extends LitElement {
     if (isAssignmentFragment(this.route) && this.opened?.hash !== this.route) void this.open(this.route);
     // Started once per page: a failed load stays failed (its message shows), it is not
     // started again by the render that shows it.
-    const page = TEACHER_PAGES[this.route];
+    const page = teacherPage(this.route);
     if (page?.code.state === 'idle')
       page.code.load().then(
         () => this.requestUpdate(),
@@ -86,17 +98,21 @@ export class RtApp extends LitElement {
   }
 
   override render() {
-    const page = TEACHER_PAGES[this.route];
+    const page = teacherPage(this.route);
     if (page) {
+      // A teacher's preview of a survey: nothing is saved.
+      if (customElements.get(page.tag) && page === SURVEY_PREVIEW_PAGE)
+        return html`<rt-survey survey-id=${this.route.slice(SURVEY_PREVIEW.length)}></rt-survey>`;
       if (customElements.get(page.tag))
-        return this.route === '#/teacher' ? html`<rt-teacher-page></rt-teacher-page>` : html`<rt-dashboard-page></rt-dashboard-page>`;
+        return page.tag === 'rt-teacher-page' ? html`<rt-teacher-page></rt-teacher-page>` : html`<rt-dashboard-page></rt-dashboard-page>`;
       if (page.code.state === 'failed')
         return html`<rt-load-problem .text=${msg('This page could not be loaded.')} .reason=${page.code.problem}></rt-load-problem>`;
       return html`<p class="loading" role="status">${msg('Loading…')}</p>`;
     }
     if (isSceneFragment(this.route)) return html`<rt-scene-link-lab .hash=${this.route}></rt-scene-link-lab>`;
-    // A teacher's preview of a survey (linked from the teacher page): nothing is saved.
-    if (this.route.startsWith(SURVEY_PREVIEW)) return html`<rt-survey survey-id=${this.route.slice(SURVEY_PREVIEW.length)}></rt-survey>`;
+    // A teacher's preview of one level (linked from the teacher page): nothing is saved.
+    const previewed = previewedLevelId(this.route);
+    if (previewed !== null) return levelPreviewPage(previewed);
     if (isAssignmentFragment(this.route)) {
       if (this.opened?.hash !== this.route) return nothing;
       const { assignment, problem } = this.opened;

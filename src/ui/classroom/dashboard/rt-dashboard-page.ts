@@ -1,14 +1,13 @@
 import { msg, str } from '@lit/localize';
 import { html, LitElement, nothing } from 'lit';
 import { loadBrowserCatalog } from '../../../app/level-catalog-browser.ts';
-import { combinedCsv, readClassFiles, surveyCsv, type ClassFiles, type DroppedFile } from '../../../classroom/dashboard-class.ts';
+import { readClassFiles, type ClassFiles, type DroppedFile } from '../../../classroom/dashboard-class.ts';
 import { assignmentsOf, classCodesOf, classLearners, filterLearners, type ClassLearner, type LearnerFilter } from '../../../classroom/dashboard-learners.ts';
 import { MAX_EXPORT_BYTES } from '../../../classroom/dashboard-read-file.ts';
 import type { SkippedFile } from '../../../classroom/dashboard-record.ts';
-import { learnerInLevel, summarizeLevels, type LevelSummary } from '../../../classroom/dashboard-summary.ts';
+import { isOptionalTask, learnerInLevel, summarizeLevels, type LevelSummary } from '../../../classroom/dashboard-summary.ts';
 import { stickingPoints, STUCK_MIN_LEARNERS, STUCK_MIN_SHARE, STUCK_TIMES_TYPICAL } from '../../../classroom/dashboard-stuck.ts';
 import { summarizeSurveys, type SurveysSummary } from '../../../classroom/dashboard-survey.ts';
-import { downloadText } from '../../../util/download-file.ts';
 import { issueText } from '../../../i18n/issue-text.ts';
 import { currentLocale } from '../../../i18n/locale.ts';
 import { surveyById } from '../../../classroom/surveys.ts';
@@ -16,13 +15,20 @@ import { localize, type Locale } from '../../../quest/localized-text.ts';
 import { plainLevelText } from '../../../quest/text-markup.ts';
 import { playableLevels } from '../../../quest/level-index.ts';
 import { dashboardPageStyles } from './dashboard-page.css.ts';
+import './rt-dashboard-class-list.ts';
 import './rt-dashboard-completion.ts';
+import type { PastedCodes } from './rt-dashboard-paste-codes.ts';
+import './rt-dashboard-paste-codes.ts';
+import './rt-dashboard-gain.ts';
 import { learnerLabel } from './rt-dashboard-level-times.ts';
 import { formatDuration } from './rt-dashboard-format.ts';
 import './rt-dashboard-stuck.ts';
 import './rt-dashboard-survey.ts';
 import './rt-dashboard-times.ts';
 import '../../controls/rt-theme-toggle.ts';
+import './rt-dashboard-quiz.ts';
+import { researchDownloads, type ClassCsvKind } from './dashboard-research-files.ts';
+import { summarizeQuizzes, type QuizSummary } from '../../../classroom/dashboard-quiz.ts';
 
 /** Level and task titles by id, for labels; an id the app does not know is shown as it is. */
 function levelNames(locale: Locale) {
@@ -71,6 +77,7 @@ export class RtDashboardPage extends LitElement {
   private shown: ClassLearner[] = [];
   private levels: LevelSummary[] = [];
   private surveys: SurveysSummary = { surveys: [], unknown: [] };
+  private quizzes: QuizSummary[] = [];
 
   constructor() {
     super();
@@ -89,6 +96,8 @@ export class RtDashboardPage extends LitElement {
       this.levels = summarizeLevels(this.shown);
       this.surveys = summarizeSurveys(this.shown, surveyById);
     }
+    if (changed.has('files') || changed.has('filter') || changed.has('locale'))
+      this.quizzes = summarizeQuizzes(this.shown, researchDownloads.questions(this.locale));
   }
 
   /** Reads dropped or chosen files and adds them to the class (public: tests and other pages may call it). */
@@ -107,6 +116,12 @@ export class RtDashboardPage extends LitElement {
     const read = readClassFiles(dropped, this.files, this.seen);
     this.files = { records: read.records, skipped: [...read.skipped, ...tooBig] };
     this.reading = false;
+  }
+
+  /** Adds the exports of pasted results codes, as if their files were dropped. */
+  private onCodesPasted(event: CustomEvent<PastedCodes>): void {
+    const read = readClassFiles(event.detail.files, this.files, this.seen);
+    this.files = { records: read.records, skipped: [...read.skipped, ...event.detail.skipped] };
   }
 
   private clear(): void {
@@ -132,10 +147,9 @@ export class RtDashboardPage extends LitElement {
     if (input.files?.length) void this.addFiles(input.files).then(() => (input.value = ''));
   }
 
-  private downloadCsv(kind: 'class' | 'survey'): void {
-    const date = new Date().toISOString().slice(0, 10);
-    const text = kind === 'class' ? combinedCsv(this.shown, surveyById) : surveyCsv(this.shown, surveyById);
-    downloadText(`\uFEFF${text}`, `ray-tracer-quest-${kind}-${date}.csv`, 'text/csv;charset=utf-8');
+  private downloadCsv(kind: ClassCsvKind): void {
+    const freeText = this.renderRoot.querySelector<HTMLInputElement>('input[name="free-text"]')?.checked ?? false;
+    researchDownloads.classCsv(kind, this.shown, this.locale, freeText);
   }
 
   /** "3 learners counted (5 files, 2 merged into their learner's), 1 file skipped." */
@@ -216,6 +230,7 @@ export class RtDashboardPage extends LitElement {
               <input type="file" multiple accept=".json,.csv,application/json,text/csv" @change=${this.onChoose} />
             </label>
           </div>
+          <rt-dashboard-paste-codes @codes-pasted=${this.onCodesPasted}></rt-dashboard-paste-codes>
           <p class="privacy">
             <svg viewBox="0 0 16 16" width="16" height="16" aria-hidden="true">
               <rect x="3" y="7" width="10" height="7" rx="1.5" fill="none" stroke="currentColor" stroke-width="1.5" />
@@ -234,12 +249,27 @@ export class RtDashboardPage extends LitElement {
             <button type="button" ?disabled=${!this.shown.some((learner) => learner.survey)} @click=${() => this.downloadCsv('survey')} title=${msg('One row per learner shown who answered the survey, one column per question')}>
               ${msg('Download survey CSV')}
             </button>
+            <button type="button" ?disabled=${this.shown.length === 0} @click=${() => researchDownloads.learnerLevels(this.shown, this.levels)} title=${msg('One row per learner and level: time, passed, tasks, hints, quiz answers')}>
+              ${msg('Download learner × level CSV')}
+            </button>
+            <button type="button" @click=${() => researchDownloads.codebook(this.locale)} title=${msg('What every column, quiz option and survey answer in the downloads means')}>
+              ${msg('Download codebook')}
+            </button>
+            <button type="button" ?disabled=${this.shown.length === 0} @click=${() => this.downloadCsv('research')} title=${msg('The combined CSV for a study: times in seconds from the start instead of dates and clock times, no device id, no file names')}>
+              ${msg('Download research CSV')}
+            </button>
+            <label><input type="checkbox" name="free-text" /> ${msg('with free-text answers (marked)')}</label>
             <button type="button" ?disabled=${records.length + skipped.length === 0} @click=${this.clear} title=${msg('Forget the files read so far and start again')}>
               ${msg('Clear')}
             </button>
           </div>
         </section>
+        <section aria-labelledby="class-list-heading">
+          <h2 id="class-list-heading">${msg('Class list: who has handed in')}</h2>
+          <rt-dashboard-class-list .learners=${this.shown}></rt-dashboard-class-list>
+        </section>
         ${skipped.length ? this.renderSkipped(skipped) : null} ${this.renderLearnerTimes()} ${this.levels.map((level) => this.renderLevel(level))}
+        ${this.shown.some((learner) => learner.conceptTest) ? html`<section aria-labelledby="gain-heading"><h2 id="gain-heading">${msg('Concept test: learning measured')}</h2><rt-dashboard-gain .learners=${this.shown} .locale=${this.locale}></rt-dashboard-gain></section>` : nothing}
         ${this.renderSurveys()}
       </main>
     `;
@@ -287,7 +317,7 @@ export class RtDashboardPage extends LitElement {
     const stuck = stickingPoints(level.tasks);
     const rows = level.tasks.map((task) => ({
       ...task,
-      label: task.mandatory ? names.task(level.level, task.task) : msg(str`${names.task(level.level, task.task)} (optional)`),
+      label: isOptionalTask(task) ? msg(str`${names.task(level.level, task.task)} (optional)`) : names.task(level.level, task.task),
     }));
     return html`<section class="level" data-level=${level.level} aria-label=${title}>
       <h2>${title}</h2>
@@ -313,6 +343,7 @@ export class RtDashboardPage extends LitElement {
       ></rt-dashboard-times>
       <h3>${msg('Completion')}</h3>
       <rt-dashboard-completion .rows=${rows} caption=${msg(str`Completion per task in ${title}`)}></rt-dashboard-completion>
+      ${this.renderQuizzes(level.level, title)}
       <h3>${msg('Where learners got stuck')}</h3>
       <p class="rule">${stuckRule()}</p>
       <rt-dashboard-stuck
@@ -320,6 +351,13 @@ export class RtDashboardPage extends LitElement {
         caption=${msg(str`Hints, "show me" and times per task in ${title}`)}
       ></rt-dashboard-stuck>
     </section>`;
+  }
+
+  private renderQuizzes(levelId: string, title: string) {
+    const quizzes = this.quizzes.filter((quiz) => quiz.level === levelId);
+    if (quizzes.length === 0) return nothing;
+    return html`<h3>${msg('Quiz answers')}</h3>
+      <rt-dashboard-quiz .rows=${quizzes} caption=${msg(str`Answers per quiz question in ${title}`)}></rt-dashboard-quiz>`;
   }
 
   private renderSurveys() {

@@ -1,6 +1,6 @@
 import { msg } from '@lit/localize';
 import { css, html } from 'lit';
-import { completionRate, type TaskSummary } from '../../../classroom/dashboard-summary.ts';
+import { completionRate, isOptionalTask, type TaskSummary } from '../../../classroom/dashboard-summary.ts';
 import { DashboardChart } from './rt-dashboard-chart.ts';
 import { tableStyles } from './rt-dashboard-chart-styles.ts';
 import { formatDuration, formatPercent } from './rt-dashboard-format.ts';
@@ -67,7 +67,7 @@ export class RtDashboardStuck extends DashboardChart<TaskSummary & { stuck: bool
           const { stuck } = task;
           return html`<tr class=${stuck ? 'stuck' : ''} data-task=${task.task}>
             <th scope="row">
-              ${task.task}${task.mandatory ? '' : html` <span class="muted">(${msg('optional')})</span>`}
+              ${task.task}${isOptionalTask(task) ? html` <span class="muted">(${msg('optional')})</span>` : ''}
               ${stuck ? html`<span class="flag">⚠ ${msg('sticking point')}</span>` : null}
             </th>
             <td>${task.learners}</td>

@@ -21,7 +21,6 @@ import { renderWindowLayout } from './render-window-layout.css.ts';
 import { controlStyles } from './render-window-styles.ts';
 import { pngFileName, savePng } from './save-png.ts';
 import type { RtImageCompare } from './rt-image-compare.ts';
-import './rt-image-compare.ts';
 import '../../controls/rt-load-problem.ts';
 import { paintRasterPicture, type RasterSnapshot, readBackOrWait, takeRasterPicture } from './raster-picture.ts';
 import { guideIds } from '../../../quest/lab-controls.ts';

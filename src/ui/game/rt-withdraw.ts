@@ -1,0 +1,111 @@
+import { msg, str } from '@lit/localize';
+import { css, html, LitElement } from 'lit';
+import type { WithdrawReport } from '../../app/withdraw-data.ts';
+import { fire, gameStyles } from './game-styles.ts';
+import type { ProgressCommand } from './rt-progress-menu.ts';
+
+/**
+ * @summary "Withdraw and delete my data" in the Menu: a confirmation that says what will be
+ * deleted (and what cannot be: what was already handed in), then the `withdraw` command,
+ * then what was deleted, with "Start again" (the page reloads and the assignment opens
+ * afresh, asking for a code).
+ * @fires progress-command - `{ kind: 'withdraw', done }`; `done` gets the report.
+ */
+export class RtWithdraw extends LitElement {
+  static override properties = { report: { state: true } };
+
+  static override styles = [
+    gameStyles,
+    css`
+      :host {
+        display: grid;
+      }
+      dialog {
+        max-width: 400px;
+        border: 1px solid var(--rt-border);
+        border-radius: var(--rt-radius);
+        background: var(--rt-surface);
+        color: var(--rt-text);
+      }
+      .actions {
+        display: flex;
+        gap: 8px;
+        justify-content: flex-end;
+      }
+      button.danger {
+        border-color: var(--rt-danger);
+        color: var(--rt-danger);
+      }
+    `,
+  ];
+
+  /** What was deleted, once it was. */
+  declare report: WithdrawReport | null;
+
+  constructor() {
+    super();
+    this.report = null;
+  }
+
+  private ask(): void {
+    const dialog = this.renderRoot.querySelector<HTMLDialogElement>('dialog.confirm')!;
+    dialog.returnValue = '';
+    dialog.showModal();
+  }
+
+  private closed(event: Event): void {
+    if ((event.target as HTMLDialogElement).returnValue !== 'delete') return;
+    fire<ProgressCommand>(this, 'progress-command', {
+      kind: 'withdraw',
+      done: (report) => {
+        this.report = report;
+        void this.updateComplete.then(() => this.renderRoot.querySelector<HTMLDialogElement>('dialog.report')?.showModal());
+      },
+    });
+  }
+
+  override render() {
+    return html`
+      <button class="danger" @click=${this.ask} title=${msg('Stop taking part and delete what this browser kept of this assignment (or of free play, when no assignment is open)')}>
+        ${msg('Withdraw and delete my data…')}
+      </button>
+      <dialog class="confirm" aria-labelledby="withdraw-title" @close=${this.closed}>
+        <h3 id="withdraw-title">${msg('Withdraw and delete your data?')}</h3>
+        <p>
+          ${msg('This deletes from this browser: your progress with the record of what you did, your participant code, your survey answers and their backups. It cannot be undone.')}
+        </p>
+        <p>${msg('A results file or code you already handed in is not in this browser: ask your teacher to delete it. Close other tabs of this game first.')}</p>
+        <form method="dialog" class="actions">
+          <button value="cancel" autofocus>${msg('Cancel')}</button>
+          <button value="delete" class="danger">${msg('Delete my data')}</button>
+        </form>
+      </dialog>
+      <dialog class="report" aria-labelledby="withdrawn-title" @close=${() => location.reload()}>
+        <h3 id="withdrawn-title">${msg('Your data was deleted')}</h3>
+        ${this.report ? reportText(this.report) : ''}
+        <form method="dialog" class="actions">
+          <button value="ok" class="primary" autofocus>${msg('Start again')}</button>
+        </form>
+      </dialog>
+    `;
+  }
+}
+
+function reportText(report: WithdrawReport) {
+  const deleted = [
+    report.progress ? msg('your progress and the record of what you did') : null,
+    report.session ? msg('your participant code') : null,
+    report.survey ? msg('your survey answers') : null,
+    report.backups === 0 ? null : report.backups === 1 ? msg('1 backup') : msg(str`${report.backups} backups`),
+  ].filter((item) => item !== null);
+  return html`${deleted.length === 0 ? html`<p>${msg('There was nothing saved in this browser to delete.')}</p>` : html`<p>${msg('Deleted from this browser:')}</p><ul>${deleted.map((item) => html`<li>${item}</li>`)}</ul>`}
+  ${report.failed.length === 0 ? '' : html`<p>⚠ ${msg("The browser refused to delete some of it: clear this site's data in the browser's settings.")}</p>`}`;
+}
+
+customElements.define('rt-withdraw', RtWithdraw);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-withdraw': RtWithdraw;
+  }
+}
