@@ -1,4 +1,4 @@
-/** `rt render`: renders a scene with the worker pool and writes a PNG (spec §4). */
+/** `rt render`: renders a scene with the worker pool and writes a PNG, or a PFM of its linear colours (spec §4). */
 import { availableParallelism } from 'node:os';
 import type { FinishedRender } from '../render/render-job.ts';
 import { estimateRender, lighterRenders, modelEstimate } from '../render/render-estimate.ts';
@@ -9,6 +9,7 @@ import { toRgba8 } from '../tracer/quantize.ts';
 import { InputError } from './cli-errors.ts';
 import type { Command, CommandLine } from './command-line.ts';
 import { createNodeRenderPool } from './node-worker-port.ts';
+import { writePfm } from './pfm-file.ts';
 import { checkWritable, writePng } from './png-file.ts';
 import { loadSceneMeshes, readScene } from './scene-file.ts';
 import { workersWorthStarting } from './workers-worth-starting.ts';
@@ -22,21 +23,23 @@ const WORKERS_PER_CORE = 4;
 const SEED_RANGE: readonly [number, number] = [0, 2 ** 32 - 1];
 
 export const renderCommand: Command = {
-  strings: ['out', 'width', 'height', 'workers', 'seed'],
+  strings: ['out', 'width', 'height', 'workers', 'seed', 'samples'],
   flags: ['stats', 'force'],
-  help: `Usage: rt render <scene.json|level-id> --out <file.png> [options]
+  help: `Usage: rt render <scene.json|level-id> --out <file.png|file.pfm> [options]
 
 Renders a scene file, or the scene of level <level-id> (levels/<id>.level.json or
-levels/*-<id>.level.json), and writes it as a PNG.
+levels/*-<id>.level.json), and writes it as a PNG, or as a PFM of the linear colours
+(32-bit floats, unclamped: path mode's radiance, for comparing with other renderers).
 
 Options:
-  --out <file.png>  where to write the image (required)
+  --out <file>      where to write the image (required): .png or .pfm
   --width W         image width in pixels (default: the scene's settings.imageSize)
   --height H        image height; with only one of the two, the scene's aspect ratio is kept
   --workers N       worker threads, at most 4 per core and never more than the image has tiles
                     (default: one per core, but one for a small render, where starting
                     more threads costs more than they save)
   --seed S          seed of the random choices, 0..4294967295 (default 0)
+  --samples N       path mode: N paths per pixel instead of the scene's settings.pathSamples
   --force           render even when the estimate says it takes more than a minute
   --stats           print, last, one JSON line: {"ms":…,"workers":N,"rays":{"primary":…,"shadow":…,
                     "reflect":…,"refract":…,"total":…}}; ms is the render after the threads started
@@ -44,13 +47,18 @@ Options:
 `,
   async run(line) {
     const source = line.onePositional('scene file or level id');
-    const out = line.requiredText('out', '<file.png>');
-    if (!/\.png$/i.test(out)) throw line.usageError(`--out must name a .png file, the only format rt writes, got "${out}"`);
+    const out = line.requiredText('out', '<file.png|file.pfm>');
+    const format = /\.png$/i.test(out) ? 'png' : /\.pfm$/i.test(out) ? 'pfm' : null;
+    if (format === null) throw line.usageError(`--out must name a .png or a .pfm file, the formats rt writes, got "${out}"`);
     const cores = availableParallelism();
     const requested = line.wholeNumber('workers', [1, WORKERS_PER_CORE * cores]);
     const seed = line.wholeNumber('seed', SEED_RANGE);
 
-    const { scene } = await readScene(source);
+    const read = await readScene(source);
+    const samples = line.wholeNumber('samples', LIMITS.pathSamples);
+    if (samples !== undefined && read.scene.settings.integrator !== 'path')
+      throw line.usageError("--samples sets path mode's paths per pixel; this scene is rendered in Whitted mode (settings.integrator)");
+    const scene = samples === undefined ? read.scene : { ...read.scene, settings: { ...read.scene.settings, pathSamples: samples } };
     const [width, height] = imageSize(line, scene);
     const workers = Math.min(requested ?? workersWorthStarting(scene, width, height, cores), tileCount(scene, width, height));
     if (!line.flag('force')) refuseHeavy(scene, width, height, workers);
@@ -70,7 +78,8 @@ Options:
       pool.dispose(); // the worker threads would keep the process alive
     }
 
-    await writePng(out, toRgba8(result.rgb, width, height, scene.settings), width, height);
+    if (format === 'pfm') await writePfm(out, result.rgb, width, height);
+    else await writePng(out, toRgba8(result.rgb, width, height, scene.settings), width, height);
     process.stdout.write(`wrote ${out} (${width}×${height})\n`);
     if (line.flag('stats')) {
       const { stats } = result;

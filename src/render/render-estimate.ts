@@ -52,6 +52,9 @@ export function shadowRaysPerHit({ lights, settings }: Scene): number {
 export function raysPerSample(scene: Scene): number {
   const { objects, settings } = scene;
   const shadowRays = shadowRaysPerHit(scene);
+  // A path: at most maxDepth + 1 vertices, each with one light sample per light. An upper
+  // bound: paths that escape or end by roulette cost less.
+  if (settings.integrator === 'path') return (settings.maxDepth + 1) * (1 + scene.lights.filter((light) => settings.lightTypes[light.type]).length);
   // A rough material spreads each of its reflected and refracted rays into m² (distribution-effects §2).
   const childRays = objects.reduce((sum, { material }) => {
     const spread = material.roughness > 0 ? material.glossySamples ** 2 : 1;
@@ -69,12 +72,19 @@ export function raysPerSample(scene: Scene): number {
  * (distribution-effects §2); 1 for a pinhole and a closed-at-once shutter.
  */
 export function primaryRaysPerSample({ camera, settings }: Scene): number {
+  // Path mode: every path has one primary ray, its lens point and moment its own.
+  if (settings.integrator === 'path') return 1;
   return (camera.aperture > 0 ? camera.lensSamples ** 2 : 1) * settings.timeSamples;
 }
 
-/** Primary rays per pixel: s² samples of primaryRaysPerSample each. */
+/** Samples per pixel: s² (supersampling), or path mode's N paths. */
+export function samplesPerPixel({ settings }: Scene): number {
+  return settings.integrator === 'path' ? settings.pathSamples : settings.supersampling ** 2;
+}
+
+/** Primary rays per pixel: samplesPerPixel samples of primaryRaysPerSample each. */
 export function primaryRaysPerPixel(scene: Scene): number {
-  return scene.settings.supersampling ** 2 * primaryRaysPerSample(scene);
+  return samplesPerPixel(scene) * primaryRaysPerSample(scene);
 }
 
 /**

@@ -29,7 +29,7 @@
  */
 import type { Scene } from '../scene/scene.ts';
 import type { Tile } from '../tracer/tile.ts';
-import { primaryRaysPerSample, RAYS_PER_SECOND_PER_WORKER, raysPerSample, shadowRaysPerHit } from './render-estimate.ts';
+import { primaryRaysPerSample, RAYS_PER_SECOND_PER_WORKER, raysPerSample, samplesPerPixel, shadowRaysPerHit } from './render-estimate.ts';
 
 /** What a pass makes: coarse blocks, one sample per pixel, or the finished image. */
 export type PassKind = 'preview' | 'sharp' | 'final';
@@ -38,8 +38,8 @@ export interface RenderPass {
   kind: PassKind;
   /** 1, or n > 1 for one traced sample per n×n block (a preview). */
   block: number;
-  /** Samples per side of each traced pixel: the scene's supersampling in the final pass, else 1. */
-  samplesPerSide: number;
+  /** Samples of each traced pixel: the scene's (s² or path mode's N) in the final pass, else 1. */
+  samplesPerPixel: number;
   /** The pass's tiles in pixels, multiples of `block` (the image's edges cut the last ones). */
   tileWidth: number;
   tileHeight: number;
@@ -89,30 +89,29 @@ const RAYS_PER_UNWATCHED_TILE = 24 * RAYS_PER_TILE;
 export function planPasses(scene: Scene, { width, height, workers, preview, oneSample }: PassPlanOptions): RenderPass[] {
   // Each lens and time ray of a sample is a primary ray with its own shadow rays (distribution-effects §2).
   const oneSampleSide = tileSide((1 + shadowRaysPerHit(scene)) * primaryRaysPerSample(scene));
-  if (oneSample) return [{ kind: 'final', block: 1, samplesPerSide: 1, tileWidth: oneSampleSide, tileHeight: oneSampleSide }];
-  const supersampling = scene.settings.supersampling;
+  if (oneSample) return [{ kind: 'final', block: 1, samplesPerPixel: 1, tileWidth: oneSampleSide, tileHeight: oneSampleSide }];
   const finalSide = finalTileSide(scene, preview);
-  const final: RenderPass = { kind: 'final', block: 1, samplesPerSide: supersampling, tileWidth: finalSide, tileHeight: finalSide };
+  const final: RenderPass = { kind: 'final', block: 1, samplesPerPixel: samplesPerPixel(scene), tileWidth: finalSide, tileHeight: finalSide };
   if (!preview) return [final];
   const secondsPerSample = (raysPerSample(scene) * primaryRaysPerSample(scene)) / (RAYS_PER_SECOND_PER_WORKER * Math.max(1, workers));
   const passes: RenderPass[] = [];
   for (let block = firstBlock(width, height, secondsPerSample); block >= FINEST_PREVIEW_BLOCK; block /= 2) {
-    passes.push({ kind: 'preview', block, samplesPerSide: 1, ...previewTile(width, block, oneSampleSide ** 2) });
+    passes.push({ kind: 'preview', block, samplesPerPixel: 1, ...previewTile(width, block, oneSampleSide ** 2) });
   }
-  if (supersampling > 1) passes.push({ kind: 'sharp', block: 1, samplesPerSide: 1, tileWidth: oneSampleSide, tileHeight: oneSampleSide });
+  if (final.samplesPerPixel > 1) passes.push({ kind: 'sharp', block: 1, samplesPerPixel: 1, tileWidth: oneSampleSide, tileHeight: oneSampleSide });
   passes.push(final);
   return passes;
 }
 
 /** The tile side of the final pass, after previews or without them (`rt render` counts its tiles to cap the workers). */
 export function finalTileSide(scene: Scene, preview: boolean): number {
-  const raysPerPixel = (1 + shadowRaysPerHit(scene)) * primaryRaysPerSample(scene) * scene.settings.supersampling ** 2;
+  const raysPerPixel = (1 + shadowRaysPerHit(scene)) * primaryRaysPerSample(scene) * samplesPerPixel(scene);
   return tileSide(raysPerPixel, preview ? RAYS_PER_TILE : RAYS_PER_UNWATCHED_TILE);
 }
 
 /** Samples a pass traces for `tile`: one per block (rows and columns cut by the edge count whole), s² per pixel in the final pass. */
-export function tracedSamples({ width, height }: Tile, { block, samplesPerSide }: Pick<RenderPass, 'block' | 'samplesPerSide'>): number {
-  return Math.ceil(width / block) * Math.ceil(height / block) * samplesPerSide ** 2;
+export function tracedSamples({ width, height }: Tile, { block, samplesPerPixel }: Pick<RenderPass, 'block' | 'samplesPerPixel'>): number {
+  return Math.ceil(width / block) * Math.ceil(height / block) * samplesPerPixel;
 }
 
 /**

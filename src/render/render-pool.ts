@@ -391,7 +391,7 @@ export class RenderPool {
           jobId: job.id,
           tileId: next.tileId,
           tile: next.tile,
-          options: { imageWidth: width, imageHeight: height, seed: job.seed, block: next.block, samplesPerSide: next.samplesPerSide },
+          options: { imageWidth: width, imageHeight: height, seed: job.seed, block: next.block, samplesPerPixel: next.samplesPerPixel },
         };
         const rays = tracedSamples(next.tile, next) * job.raysPerSample;
         this.post(worker, request, () => worker.tiles.set(next.tileId, { assignment: next, rays }));

@@ -28,8 +28,8 @@ const SECONDS_BEFORE_TIME_LEFT = 2;
 const REST_FLOOR = 1e-6;
 
 /** A pass's samples per pixel: s² in the final pass, one per block² in a preview. */
-function samplesPerPixel({ block, samplesPerSide }: Pick<RenderPass, 'block' | 'samplesPerSide'>): number {
-  return samplesPerSide ** 2 / block ** 2;
+function samplesPerPixel({ block, samplesPerPixel }: Pick<RenderPass, 'block' | 'samplesPerPixel'>): number {
+  return samplesPerPixel / block ** 2;
 }
 
 export function raysOf(stats: RayStats): number {

@@ -35,7 +35,7 @@ export interface TileAssignment {
   tileId: number;
   tile: Tile;
   block: number;
-  samplesPerSide: number;
+  samplesPerPixel: number;
 }
 
 export class TiledRender {
@@ -103,7 +103,7 @@ export class TiledRender {
     if (!next) {
       if (this.taken === pass.count) return null;
       const index = this.taken++;
-      next = { tileId: pass.firstId + index, tile: this.tileOf(pass, index), block: pass.block, samplesPerSide: pass.samplesPerSide };
+      next = { tileId: pass.firstId + index, tile: this.tileOf(pass, index), block: pass.block, samplesPerPixel: pass.samplesPerPixel };
     }
     this.outstanding.set(next.tileId, next);
     return next;

@@ -58,6 +58,10 @@ export const LIMITS = {
   timeSamples: [1, 16],
   /** s²·n²·k, the primary rays of one pixel (distribution-effects §1). */
   primaryRaysPerPixel: [1, 1024],
+  /** N: random paths per pixel in path mode (path-tracing spec §1); 65,536 converges any lesson's scene. */
+  pathSamples: [1, 65_536],
+  /** Stops of exposure in path mode: the picture times 2^exposure before display. */
+  exposure: [-10, 10],
   /** Characters in an id (goals and ray trees quote it) and in a display name. */
   idLength: [1, 64],
   nameLength: [0, 100],

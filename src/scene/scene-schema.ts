@@ -71,6 +71,12 @@ const settingsSchema = z
       .enum(['grid', 'jittered', 'random'])
       .default('jittered')
       .describe('Where the k times go: the same moments (i + ½)/k for every pixel, (i + ξ)/k per pixel sample, or k uniform ones.'),
+    integrator: z.enum(['whitted', 'path']).default('whitted').describe("Which estimator renders the scene: Whitted's recursive tracer or a path tracer."),
+    pathSamples: wholeNumberIn(LIMITS.pathSamples).default(16).describe('N: random paths per pixel (path mode).'),
+    bounceSampling: z.enum(['cosine', 'uniform']).default('cosine').describe('How a diffuse bounce picks its direction (path mode).'),
+    lightSampling: z.boolean().default(true).describe('At each diffuse vertex, also a shadow ray to a point on each light (path mode).'),
+    russianRoulette: z.boolean().default(false).describe('End paths at random, survivors weighted up, as well as at maxDepth (path mode).'),
+    exposure: numberIn(LIMITS.exposure).default(0).describe('Stops: the picture times 2^exposure before display (path mode).'),
   })
   .describe('How the image is rendered.');
 

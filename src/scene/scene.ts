@@ -69,7 +69,22 @@ export interface RenderSettings {
   /** k: times in the open shutter per pixel sample (motion blur). */
   timeSamples: number;
   timePattern: TimePattern;
+  /** Which estimator renders the scene: Whitted's recursive tracer, or a path tracer (docs/path-tracing.md). */
+  integrator: Integrator;
+  /** N: random paths per pixel (path mode). */
+  pathSamples: number;
+  /** How a diffuse bounce picks its direction (path mode). */
+  bounceSampling: BounceSampling;
+  /** Next-event estimation: at each diffuse vertex, a shadow ray to a point on each light (path mode). */
+  lightSampling: boolean;
+  /** End paths at random, survivors weighted up, as well as at maxDepth (path mode). */
+  russianRoulette: boolean;
+  /** Stops: the picture times 2^exposure before display (path mode). */
+  exposure: number;
 }
+
+export type Integrator = 'whitted' | 'path';
+export type BounceSampling = 'cosine' | 'uniform';
 
 export interface Material {
   color: Color;

@@ -25,8 +25,15 @@ import { linearToSrgb, srgbToLinear } from './srgb.ts';
  */
 const BAYER_4X4 = [0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5];
 
-/** What decides the image's 8-bit values: the scene's settings of those names. */
-export type Quantization = Pick<RenderSettings, 'dithering' | 'encoding'>;
+/**
+ * What decides the image's 8-bit values: the scene's settings of those names. In path mode
+ * the picture is radiance, shown sRGB-encoded after multiplying by 2^exposure, whatever
+ * `encoding` says (path-tracing spec §2: the linear values are what a `.pfm` keeps).
+ */
+export type Quantization = Pick<RenderSettings, 'dithering' | 'encoding' | 'integrator' | 'exposure'>;
+
+/** The defaults' quantization: c·255 with no gamma and no dithering, a Whitted picture. */
+export const PLAIN_QUANTIZATION: Quantization = { dithering: false, encoding: 'none', integrator: 'whitted', exposure: 0 };
 
 /** The threshold in (−0.5, 0.5) of one 8-bit step that Bayer entry k adds; none (0) for k = 16, no dithering. */
 const threshold = (k: number) => (k === 16 ? 0 : (k + 0.5) / 16 - 0.5);
@@ -70,7 +77,11 @@ function srgbByte(k: number, light: number): number {
   return byte;
 }
 
-export function toRgba8(rgb: Float32Array, width: number, height: number, { dithering, encoding }: Quantization): Uint8ClampedArray {
+export function toRgba8(rgb: Float32Array, width: number, height: number, quantization: Quantization): Uint8ClampedArray {
+  const { dithering } = quantization;
+  const path = quantization.integrator === 'path';
+  const encoding = path ? 'srgb' : quantization.encoding;
+  const scale = path ? 2 ** quantization.exposure : 1;
   const rgba = new Uint8ClampedArray(width * height * 4);
   for (let y = 0; y < height; y++) {
     for (let x = 0; x < width; x++) {
@@ -78,7 +89,7 @@ export function toRgba8(rgb: Float32Array, width: number, height: number, { dith
       const k = dithering ? BAYER_4X4[(y & 3) * 4 + (x & 3)] : 16;
       const offset = threshold(k);
       for (let c = 0; c < 3; c++) {
-        const value = Math.min(1, Math.max(0, rgb[pixel * 3 + c]));
+        const value = Math.min(1, Math.max(0, rgb[pixel * 3 + c] * scale));
         rgba[pixel * 4 + c] =
           encoding === 'none'
             ? Math.round(value * 255 + offset)

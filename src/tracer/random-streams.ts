@@ -25,6 +25,8 @@ export const LENS_STREAM = 0x1e25;
 export const SHUTTER_TIME_STREAM = 0x71fe;
 /** A hit's glossy directions (whitted-integrator.ts). */
 export const GLOSS_STREAM = 0x6c055;
+/** A path's random numbers at each bounce, keyed by the bounce (path-integrator.ts). */
+export const PATH_BOUNCE_STREAM = 0x3b0c;
 
 /** Where in a key a stream's number stands, and so which indices it must stay clear of. */
 export type StreamPlace = 'pixel sample' | 'hit';
@@ -35,6 +37,7 @@ export const RANDOM_STREAMS: readonly { name: string; stream: number; place: Str
   { name: 'lens', stream: LENS_STREAM, place: 'pixel sample' },
   { name: 'shutter time', stream: SHUTTER_TIME_STREAM, place: 'pixel sample' },
   { name: 'gloss', stream: GLOSS_STREAM, place: 'hit' },
+  { name: 'path bounce', stream: PATH_BOUNCE_STREAM, place: 'hit' },
 ];
 
 /**

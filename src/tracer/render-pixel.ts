@@ -10,11 +10,18 @@ import { shutterTimes } from './shutter-times.ts';
 import { samplePosition } from './supersampling.ts';
 import type { TracerScene } from './tracer-scene.ts';
 import { WhittedIntegrator } from './whitted-integrator.ts';
+import { pathIntegratorFor, renderPathPixel } from './render-path-pixel.ts';
+import type { Estimator } from './estimator.ts';
 
 // One integrator per prepared scene: its scratch frames are sized by the scene's maxDepth.
 const integrators = new WeakMap<TracerScene, WhittedIntegrator>();
 
-export function integratorFor(scene: TracerScene): WhittedIntegrator {
+/** The scene's estimator, as the tile loop sees it: its ray counts and the tile's primary candidates. */
+export function integratorFor(scene: TracerScene): Estimator<unknown> {
+  return scene.settings.integrator === 'path' ? pathIntegratorFor(scene) : whittedIntegratorFor(scene);
+}
+
+function whittedIntegratorFor(scene: TracerScene): WhittedIntegrator {
   let integrator = integrators.get(scene);
   if (!integrator) {
     integrator = new WhittedIntegrator(scene);
@@ -44,7 +51,10 @@ const times = new Float64Array(LIMITS.timeSamples[1]);
  * n²·k primary rays, each weighted 1/(n²·k) (distribution-effects §2). With more than one,
  * its root is the pinhole ray to the plane in focus (hit, length to F, no object), with one
  * child per lens point and time (§3); with one, that ray is the root.
- * @param s samples per side; the scene's supersampling unless a preview asks for 1
+ *
+ * In path mode the pixel is the mean of its paths (render-path-pixel.ts); its ray tree is
+ * not recorded here (a pixel's paths are: tracePaths).
+ * @param s samples per side; the scene's supersampling (path mode: its pathSamples) unless a preview asks for 1 (path mode: s² paths)
  */
 export function renderPixel(
   scene: TracerScene,
@@ -55,9 +65,12 @@ export function renderPixel(
   seed: number,
   out: Vector3,
   tree: RayTreeRecording | null,
-  s = scene.settings.supersampling,
+  samplesPerPixel?: number,
 ): Vector3 {
-  const integrator = integratorFor(scene);
+  if (scene.settings.integrator === 'path') return renderPathPixel(scene, x, y, width, height, seed, out, null, samplesPerPixel);
+  // Whitted mode's samples are a square s × s.
+  const s = samplesPerPixel === undefined ? scene.settings.supersampling : Math.round(Math.sqrt(samplesPerPixel));
+  const integrator = whittedIntegratorFor(scene);
   const { camera } = scene;
   const samplePattern = scene.settings.samplePattern;
   const samples = s * s;

@@ -11,11 +11,12 @@ const primaryCandidates = new PrimaryCandidates();
 
 /**
  * Renders one tile of the image: linear RGB, 3 floats per pixel, row-major over the tile,
- * each channel clamped to 0..1. Ray counts are added to `stats` when given.
+ * each channel clamped to 0..1 in Whitted mode (path mode: radiance, unclamped). Ray counts
+ * are added to `stats` when given.
  *
  * With `options.block` > 1 it is a coarse preview: the image is traced as if it were
  * block times smaller (one sample through each block's centre) and each block is filled.
- * `options.samplesPerSide` 1 at block 1 traces one sample per pixel (the sharp pass).
+ * `options.samplesPerPixel` 1 at block 1 traces one sample per pixel (the sharp pass).
  */
 export function renderTile(scene: TracerScene, tile: Tile, options: RenderTileOptions, stats?: RayStats): Float32Array {
   const { imageWidth, imageHeight } = options;
@@ -49,7 +50,7 @@ function renderPixels(scene: TracerScene, tile: Tile, options: RenderTileOptions
   const rowLength = tile.width * 3;
   for (let by = 0; by < tile.height; by += block) {
     for (let bx = 0; bx < tile.width; bx += block) {
-      if (block === 1) renderPixel(scene, tile.x + bx, tile.y + by, imageWidth, imageHeight, seed, color, null, options.samplesPerSide);
+      if (block === 1) renderPixel(scene, tile.x + bx, tile.y + by, imageWidth, imageHeight, seed, color, null, options.samplesPerPixel);
       else renderPixel(scene, (tile.x + bx) / block, (tile.y + by) / block, imageWidth / block, imageHeight / block, seed, color, null, 1);
       for (let i = by * rowLength + bx * 3, end = by * rowLength + Math.min(bx + block, tile.width) * 3; i < end; i += 3) {
         rgb[i] = color.x;

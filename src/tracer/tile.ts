@@ -20,5 +20,5 @@ export interface RenderTileOptions {
    * Samples per side of each pixel at full quality (block 1): default the scene's
    * supersampling; 1 gives the render window's sharp one-sample picture. Previews always trace 1.
    */
-  samplesPerSide?: number;
+  samplesPerPixel?: number;
 }

@@ -139,10 +139,10 @@ describe('rt with bad input or asking for help', () => {
     ['__proto__ as an option', () => ['trace', file('scene.json'), '--pixel', '0,0', '--__proto__', 'x'], 2, /unknown option --__proto__/],
     ['a missing --out', () => ['render', file('scene.json')], 2, /missing --out/],
     [
-      'an --out that is not a PNG',
+      'an --out that is neither PNG nor PFM',
       () => ['render', file('scene.json'), '--out', file('x.jpg')],
       2,
-      /--out must name a \.png file, the only format rt writes, got ".*x\.jpg"/,
+      /--out must name a \.png or a \.pfm file, the formats rt writes, got ".*x\.jpg"/,
     ],
     [
       'far more workers than cores',

@@ -1,9 +1,9 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { renderImageData } from '../../src/render/image-data.ts';
-import type { Quantization } from '../../src/tracer/quantize.ts';
+import { PLAIN_QUANTIZATION, type Quantization } from '../../src/tracer/quantize.ts';
 
-const PLAIN: Quantization = { dithering: false, encoding: 'none' };
-const DITHERED: Quantization = { dithering: true, encoding: 'none' };
+const PLAIN: Quantization = PLAIN_QUANTIZATION;
+const DITHERED: Quantization = { ...PLAIN_QUANTIZATION, dithering: true };
 
 /**
  * Node has no ImageData: a stand-in with the browser's constructor signature records what the
@@ -62,7 +62,7 @@ describe('renderImageData in bands', () => {
   it('gives, band by band, exactly the rows of the whole image, with or without dithering, in every encoding', () => {
     for (const dithering of [false, true]) {
       for (const encoding of ['none', 'linear', 'srgb'] as const) {
-        const quantization = { dithering, encoding };
+        const quantization = { ...PLAIN_QUANTIZATION, dithering, encoding };
         const whole = renderImageData(ramp, quantization).data;
         const bands = [renderImageData(ramp, quantization, 0, 4), renderImageData(ramp, quantization, 4, 8), renderImageData(ramp, quantization, 8, 10)];
         expect(bands.map((band) => band.height)).toEqual([4, 4, 2]);

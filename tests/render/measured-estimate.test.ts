@@ -53,10 +53,10 @@ describe('the estimate from a probe of the scene', () => {
     expect(smaller.width / smaller.height).toBeCloseTo(1024 / 768, 1);
   });
 
-  /** Rays of a render of `scene` at `samplesPerSide`, traced here. */
-  function raysOfRender(scene: Scene, width: number, height: number, samplesPerSide: number): number {
+  /** Rays of a render of `scene` at `samplesPerPixel`, traced here. */
+  function raysOfRender(scene: Scene, width: number, height: number, samplesPerPixel: number): number {
     const stats = emptyRayStats();
-    renderTile(buildTracerScene(scene, new Map()), { x: 0, y: 0, width, height }, { imageWidth: width, imageHeight: height, seed: 0, samplesPerSide }, stats);
+    renderTile(buildTracerScene(scene, new Map()), { x: 0, y: 0, width, height }, { imageWidth: width, imageHeight: height, seed: 0, samplesPerPixel }, stats);
     return raysOf(stats);
   }
 
@@ -71,7 +71,7 @@ describe('the estimate from a probe of the scene', () => {
     for (const [name, scene] of Object.entries(scenes)) {
       const probe = { samples: (width / 4) * (height / 4), rays: raysOfRender(scene, width / 4, height / 4, 1), ms: 1 };
       const estimated = measuredEstimate(probe, scene, { workers: 1, preview: false, correction: 1 })(scene, width, height).rays;
-      const real = raysOfRender(scene, width, height, scene.settings.supersampling);
+      const real = raysOfRender(scene, width, height, scene.settings.supersampling ** 2);
       expect(estimated / real, name).toBeGreaterThan(0.9);
       expect(estimated / real, name).toBeLessThan(1.1);
     }

@@ -6,6 +6,8 @@ import { TiledRender, type TileAssignment } from '../../src/render/tiled-render.
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 import type { Scene } from '../../src/scene/scene.ts';
 import { emptyRayStats } from '../../src/tracer/ray-tree.ts';
+import { renderTile } from '../../src/tracer/render-tile.ts';
+import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
 import { heaviestScene } from '../support/heavy-scenes.ts';
 import { sceneFrom } from '../support/test-scene.ts';
 
@@ -27,21 +29,34 @@ function playRender(width: number, height: number, passes: RenderPass[]): { repo
     const taken = [];
     for (let next = tiles.takeTile(); next; next = tiles.takeTile()) taken.push(next);
     // One ray per sample: the progress in rays counts the pass's samples.
-    for (const { tileId, tile, block, samplesPerSide } of taken) {
-      tiles.accept(tileId, new Float32Array(tile.width * tile.height * 3), { ...emptyRayStats(), primary: tracedSamples(tile, { block, samplesPerSide }) }, 1);
+    for (const { tileId, tile, block, samplesPerPixel } of taken) {
+      tiles.accept(tileId, new Float32Array(tile.width * tile.height * 3), { ...emptyRayStats(), primary: tracedSamples(tile, { block, samplesPerPixel }) }, 1);
     }
   }
   return { reports, previews };
 }
 
 describe('the pass plan', () => {
+  it("traces path mode's N paths per pixel in the final pass, after a sharp pass of one path", () => {
+    const scene = sceneFrom({ ...defaultScene(), settings: { ...defaultScene().settings, integrator: 'path', pathSamples: 10 } });
+    const passes = planPasses(scene, { width: 64, height: 48, workers: 2, preview: true });
+    expect(passes.slice(-2).map(({ kind, samplesPerPixel }) => [kind, samplesPerPixel])).toEqual([
+      ['sharp', 1],
+      ['final', 10],
+    ]);
+    const stats = emptyRayStats();
+    const tile = { x: 0, y: 0, width: 4, height: 3 };
+    renderTile(buildTracerScene(scene, new Map()), tile, { imageWidth: 64, imageHeight: 48, seed: 0, samplesPerPixel: passes.at(-1)!.samplesPerPixel }, stats);
+    expect(stats.primary).toBe(10 * 4 * 3);
+  });
+
   it('previews the default scene in 8×8 and 4×4 blocks, then a sharp one-sample pass, then full quality', () => {
     const passes = planPasses(withSupersampling(2), { width: 512, height: 384, workers: 2, preview: true });
-    expect(passes.map(({ kind, block, samplesPerSide }) => [kind, block, samplesPerSide])).toEqual([
+    expect(passes.map(({ kind, block, samplesPerPixel }) => [kind, block, samplesPerPixel])).toEqual([
       ['preview', 8, 1],
       ['preview', 4, 1],
       ['sharp', 1, 1],
-      ['final', 1, 2],
+      ['final', 1, 4],
     ]);
     // The sharp pass costs a quarter of the final one with 2×2 supersampling.
     const [sharp, final] = passes.slice(2).map((pass) => tracedSamples({ x: 0, y: 0, width: 512, height: 384 }, pass));
@@ -66,7 +81,7 @@ describe('the pass plan', () => {
 
   it('makes only the final pass without previews (rt render)', () => {
     expect(planPasses(withSupersampling(3), { width: 64, height: 64, workers: 1, preview: false })).toEqual([
-      { kind: 'final', block: 1, samplesPerSide: 3, tileWidth: expect.any(Number), tileHeight: expect.any(Number) },
+      { kind: 'final', block: 1, samplesPerPixel: 9, tileWidth: expect.any(Number), tileHeight: expect.any(Number) },
     ]);
   });
 
@@ -145,8 +160,8 @@ describe('what a painter must redraw', () => {
 
   it('a preview pass at its own resolution, one value per block, and the image untouched until the sharp pass', () => {
     const [width, height, block] = [10, 7, 4];
-    const preview: RenderPass = { kind: 'preview', block, samplesPerSide: 1, tileWidth: 12, tileHeight: 4 };
-    const sharp: RenderPass = { kind: 'sharp', block: 1, samplesPerSide: 1, tileWidth: 5, tileHeight: 5 };
+    const preview: RenderPass = { kind: 'preview', block, samplesPerPixel: 1, tileWidth: 12, tileHeight: 4 };
+    const sharp: RenderPass = { kind: 'sharp', block: 1, samplesPerPixel: 1, tileWidth: 5, tileHeight: 5 };
     const shown: unknown[] = [];
     const tiles = new TiledRender(width, height, [preview, sharp], { onPreview: (image) => shown.push(image) });
     // As a worker fills a preview tile: every pixel of a block has the block's value.
@@ -178,7 +193,7 @@ describe('what a painter must redraw', () => {
   });
 
   it('a finer preview starts as the coarser one scaled up, and takes over its rows not yet asked for', () => {
-    const coarse: RenderPass = { kind: 'preview', block: 4, samplesPerSide: 1, tileWidth: 8, tileHeight: 8 };
+    const coarse: RenderPass = { kind: 'preview', block: 4, samplesPerPixel: 1, tileWidth: 8, tileHeight: 8 };
     const fine: RenderPass = { ...coarse, block: 2 };
     const tiles = new TiledRender(8, 8, [coarse, fine], {});
     const only = tiles.takeTile()!;
@@ -191,7 +206,7 @@ describe('what a painter must redraw', () => {
   });
 
   it('past 256 tiles, the rows they span as one full-width tile', () => {
-    const pass: RenderPass = { kind: 'final', block: 1, samplesPerSide: 1, tileWidth: 1, tileHeight: 1 };
+    const pass: RenderPass = { kind: 'final', block: 1, samplesPerPixel: 1, tileWidth: 1, tileHeight: 1 };
     const tiles = new TiledRender(30, 20, [pass], {});
     for (let i = 0; i < 300; i++) {
       const next = tiles.takeTile()!;

@@ -19,10 +19,10 @@ function raysAt(x: number, y: number): number {
 }
 
 /** The rays a tile of `pass` traces: one sample per block (at its top-left pixel), s² per pixel in the final pass. */
-function tileRays(tile: Tile, { block, samplesPerSide }: Pick<RenderPass, 'block' | 'samplesPerSide'>): number {
+function tileRays(tile: Tile, { block, samplesPerPixel }: Pick<RenderPass, 'block' | 'samplesPerPixel'>): number {
   let rays = 0;
   for (let y = tile.y; y < tile.y + tile.height; y += block) {
-    for (let x = tile.x; x < tile.x + tile.width; x += block) rays += raysAt(x, y) * samplesPerSide ** 2;
+    for (let x = tile.x; x < tile.x + tile.width; x += block) rays += raysAt(x, y) * samplesPerPixel;
   }
   return rays;
 }

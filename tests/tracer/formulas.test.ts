@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import { angleAttenuation, distanceAttenuation } from '../../src/tracer/attenuation.ts';
 import { reflect, refract, schlickReflectance } from '../../src/tracer/fresnel.ts';
 import { concentricDisc } from '../../src/tracer/lights.ts';
-import { toRgba8 } from '../../src/tracer/quantize.ts';
+import { PLAIN_QUANTIZATION, toRgba8 } from '../../src/tracer/quantize.ts';
 import { samplePosition } from '../../src/tracer/supersampling.ts';
 
 describe('attenuation', () => {
@@ -111,7 +111,7 @@ describe('8-bit quantization', () => {
   it('by default (no encoding, no dithering) is exactly round(clamp(c)·255)', () => {
     const values = [0, 0.5, 1, -0.2, 1.7, 0.1234, 0.99];
     const rgb = new Float32Array(values.length * 3).map((_, i) => values[Math.floor(i / 3)]);
-    const rgba = toRgba8(rgb, values.length, 1, { dithering: false, encoding: 'none' });
+    const rgba = toRgba8(rgb, values.length, 1, PLAIN_QUANTIZATION);
     values.forEach((c, i) => {
       const expected = Math.round(Math.min(1, Math.max(0, Math.fround(c))) * 255);
       expect([rgba[i * 4], rgba[i * 4 + 1], rgba[i * 4 + 2], rgba[i * 4 + 3]]).toEqual([expected, expected, expected, 255]);
@@ -121,8 +121,8 @@ describe('8-bit quantization', () => {
   it('with dithering keeps the mean of a flat area but breaks a band into a pattern', () => {
     const level = 10.3 / 255;
     const rgb = new Float32Array(16 * 16 * 3).fill(level);
-    const plain = toRgba8(rgb, 16, 16, { dithering: false, encoding: 'none' });
-    const dithered = toRgba8(rgb, 16, 16, { dithering: true, encoding: 'none' });
+    const plain = toRgba8(rgb, 16, 16, PLAIN_QUANTIZATION);
+    const dithered = toRgba8(rgb, 16, 16, { ...PLAIN_QUANTIZATION, dithering: true });
     const red = (image: Uint8ClampedArray) => Array.from({ length: 256 }, (_, i) => image[i * 4]);
     expect(new Set(red(plain))).toEqual(new Set([10]));
     expect(new Set(red(dithered))).toEqual(new Set([10, 11]));

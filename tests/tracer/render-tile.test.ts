@@ -12,7 +12,7 @@ describe("renderTile, one sample per pixel (the render window's sharp pass)", ()
     it(`gives exactly the scene's picture without supersampling (${samplePattern} samples)`, () => {
       const scene = (supersampling: number) => tracerSceneFrom({ ...defaultScene(), settings: { ...defaultScene().settings, supersampling, samplePattern } });
       const stats = emptyRayStats();
-      const sharp = renderTile(scene(3), TILE, { ...OPTIONS, samplesPerSide: 1 }, stats);
+      const sharp = renderTile(scene(3), TILE, { ...OPTIONS, samplesPerPixel: 1 }, stats);
 
       expect(sharp).toEqual(renderTile(scene(1), TILE, OPTIONS));
       expect(stats.primary).toBe(TILE.width * TILE.height);

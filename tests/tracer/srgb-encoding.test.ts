@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import type { ImageEncoding } from '../../src/scene/scene.ts';
 import { sceneSchema } from '../../src/scene/scene-schema.ts';
-import { toRgba8 } from '../../src/tracer/quantize.ts';
+import { PLAIN_QUANTIZATION, toRgba8 } from '../../src/tracer/quantize.ts';
 import { linearToSrgb, srgbToLinear } from '../../src/tracer/srgb.ts';
 
 /** The light a screen shows for byte b (IEC 61966-2-1's decoding, written out here). */
@@ -13,7 +13,7 @@ const shownLight = (byte: number) => {
 /** The red bytes of a one-row image of grey values `lights`. */
 function bytes(lights: number[], encoding: ImageEncoding, dithering = false): number[] {
   const rgb = Float32Array.from(lights.flatMap((light) => [light, light, light]));
-  const rgba = toRgba8(rgb, lights.length, 1, { dithering, encoding });
+  const rgba = toRgba8(rgb, lights.length, 1, { ...PLAIN_QUANTIZATION, dithering, encoding });
   return lights.map((_, i) => rgba[i * 4]!);
 }
 
@@ -61,7 +61,7 @@ describe('storing the image in 8 bits', () => {
     for (const dithering of [false, true]) {
       const rgb = Float32Array.from(ramp.flatMap((light) => [light, light, light]));
       const height = Math.floor(ramp.length / width);
-      const rgba = toRgba8(rgb.subarray(0, width * height * 3), width, height, { dithering, encoding: 'srgb' });
+      const rgba = toRgba8(rgb.subarray(0, width * height * 3), width, height, { ...PLAIN_QUANTIZATION, dithering, encoding: 'srgb' });
       const bayer = [0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5];
       const wrong = ramp.slice(0, width * height).filter((light, i) => {
         const threshold = dithering ? (bayer[(Math.floor(i / width) % 4) * 4 + (i % width)]! + 0.5) / 16 - 0.5 : 0;
@@ -105,7 +105,7 @@ describe('storing the image in 8 bits', () => {
     const width = 16;
     const grey = (encoding: ImageEncoding, light: number) => {
       const rgb = new Float32Array(width * 4 * 3).fill(light);
-      const rgba = toRgba8(rgb, width, 4, { dithering: true, encoding });
+      const rgba = toRgba8(rgb, width, 4, { ...PLAIN_QUANTIZATION, dithering: true, encoding });
       return Array.from({ length: width * 4 }, (_, i) => rgba[i * 4]!);
     };
     // Linear level 2.5: half the pixels show level 2 (byte 22), half level 3 (byte 28).

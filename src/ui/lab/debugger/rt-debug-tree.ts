@@ -4,7 +4,7 @@ import { LocalizedElement } from '../../controls/localized-element.ts';
 import { styleMap } from 'lit/directives/style-map.js';
 import { lightRayShare, type DebugProgram, type DebugStep } from '../../../debugger/debug-steps.ts';
 import type { Quantization } from '../../../tracer/quantize.ts';
-import { pixelBytes } from '../../../tracer/quantize.ts';
+import { PLAIN_QUANTIZATION, pixelBytes } from '../../../tracer/quantize.ts';
 import type { Color, Scene } from '../../../scene/scene.ts';
 import { colorToHex } from '../../controls/color-hex.ts';
 import { colorText } from './debug-numbers.ts';
@@ -138,7 +138,7 @@ export class RtDebugTree extends LocalizedElement {
     this.program = null;
     this.index = 0;
     this.scene = null;
-    this.quantization = { encoding: 'none', dithering: false };
+    this.quantization = PLAIN_QUANTIZATION;
   }
 
   protected override updated(changed: PropertyValues<this>): void {

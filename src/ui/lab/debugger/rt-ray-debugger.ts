@@ -8,6 +8,7 @@ import type { DebuggerAction, LabAction } from '../../../lab-state/lab-action.ts
 import { LAB_CONTROLS } from '../../../quest/lab-controls.ts';
 import type { ScreenRays } from '../../../render/screen-rays.ts';
 import type { PixelTrace, RayNode } from '../../../tracer/ray-tree.ts';
+import { PLAIN_QUANTIZATION } from '../../../tracer/quantize.ts';
 import type { RayFocus } from '../../../view/ray-focus.ts';
 import { StorePanel } from '../panels/store-panel.ts';
 import { darkReasonText, stepText } from './debugger-text.ts';
@@ -345,7 +346,7 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
     const [x, y] = program.trace.pixel;
     const screen = this.screenRays;
     const image = screen && x < screen.columns && y < screen.rows ? (screen.traces[y * screen.columns + x]?.color ?? null) : null;
-    return { ...pixelAverage(program), image, pixel: [x, y], quantization: this.state?.scene.settings ?? { encoding: 'none', dithering: false } };
+    return { ...pixelAverage(program), image, pixel: [x, y], quantization: this.state?.scene.settings ?? PLAIN_QUANTIZATION };
   }
 
   /** "Why is it dark here?", only on a dark pixel: the reasons of the hit the step is at (or of its sample's first hit). */

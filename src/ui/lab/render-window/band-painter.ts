@@ -1,6 +1,6 @@
 import { DITHER_PERIOD, renderImageData } from '../../../render/image-data.ts';
 import type { PreviewImage, RenderChanges, RenderImage } from '../../../render/render-job.ts';
-import type { Quantization } from '../../../tracer/quantize.ts';
+import { PLAIN_QUANTIZATION, type Quantization } from '../../../tracer/quantize.ts';
 import type { Tile } from '../../../tracer/tile.ts';
 import { type LevelRange, stretchContrast } from './contrast-stretch.ts';
 import { type CanvasView, pixelsCovering, type Rect, sameView, type Size } from './image-zoom.ts';
@@ -43,7 +43,7 @@ const bandRows = (width: number) => Math.max(DITHER_PERIOD, Math.floor(BAND_PIXE
 export class BandPainter {
   private image: RenderImage | null = null;
   /** How the image is quantized: the rendered scene's dithering and encoding. */
-  private quantization: Quantization = { dithering: false, encoding: 'none' };
+  private quantization: Quantization = PLAIN_QUANTIZATION;
   /** Whether all of the image is to be shown (a finished render), not only its tiles. */
   private whole = false;
   /** Whole-image rows still to paint, [from, to); none when from ≥ to. */

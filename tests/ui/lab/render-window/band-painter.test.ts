@@ -2,10 +2,10 @@ import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import type { PreviewImage, RenderImage } from '../../../../src/render/render-job.ts';
 import { BandPainter } from '../../../../src/ui/lab/render-window/band-painter.ts';
 import type { CanvasView } from '../../../../src/ui/lab/render-window/image-zoom.ts';
-import type { Quantization } from '../../../../src/tracer/quantize.ts';
+import { PLAIN_QUANTIZATION, type Quantization } from '../../../../src/tracer/quantize.ts';
 
-const PLAIN: Quantization = { dithering: false, encoding: 'none' };
-const DITHERED: Quantization = { dithering: true, encoding: 'none' };
+const PLAIN: Quantization = PLAIN_QUANTIZATION;
+const DITHERED: Quantization = { ...PLAIN_QUANTIZATION, dithering: true };
 
 /**
  * Node has no canvas: stand-ins record what the painter does in each animation frame (how

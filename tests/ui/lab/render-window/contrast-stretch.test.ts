@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { levelRange, stretchContrast } from '../../../../src/ui/lab/render-window/contrast-stretch.ts';
-import { toRgba8 } from '../../../../src/tracer/quantize.ts';
+import { PLAIN_QUANTIZATION, toRgba8 } from '../../../../src/tracer/quantize.ts';
 
 const rgba = (...pixels: number[][]) => Uint8ClampedArray.from(pixels.flatMap(([r, g, b, a = 255]) => [r!, g!, b!, a]));
 
@@ -33,7 +33,7 @@ describe("stretching an image's contrast", () => {
     // A slow ramp over 16 × 4 pixels, quantized with the tracer's Bayer dithering.
     const width = 16;
     const rgb = new Float32Array(width * 4 * 3).map((_, i) => 0.12 + (Math.floor(i / 3) % width) * 0.0004);
-    const dithered = toRgba8(rgb, width, 4, { dithering: true, encoding: 'none' });
+    const dithered = toRgba8(rgb, width, 4, { ...PLAIN_QUANTIZATION, dithering: true });
     const range = levelRange(dithered);
     expect(range.high - range.low).toBeLessThanOrEqual(2);
     const out = stretchContrast(dithered, range);

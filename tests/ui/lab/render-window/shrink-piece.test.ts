@@ -1,10 +1,10 @@
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import type { RenderImage } from '../../../../src/render/render-job.ts';
 import { shrinkPiece } from '../../../../src/ui/lab/render-window/shrink-piece.ts';
-import type { Quantization } from '../../../../src/tracer/quantize.ts';
+import { PLAIN_QUANTIZATION, type Quantization } from '../../../../src/tracer/quantize.ts';
 
-const PLAIN: Quantization = { dithering: false, encoding: 'none' };
-const DITHERED: Quantization = { dithering: true, encoding: 'none' };
+const PLAIN: Quantization = PLAIN_QUANTIZATION;
+const DITHERED: Quantization = { ...PLAIN_QUANTIZATION, dithering: true };
 
 /** Node has no ImageData: a stand-in with its (data, width, height) constructor. */
 class FakeImageData {

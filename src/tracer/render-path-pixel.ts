@@ -1,0 +1,71 @@
+import { Vector3 } from 'three';
+import { PathIntegrator } from './path-integrator.ts';
+import type { PathRecorder } from './path-recorder.ts';
+import { Ray } from './ray.ts';
+import { concentricDisc } from './lights.ts';
+import { PIXEL_POSITION_STREAM } from './random-streams.ts';
+import { hashKey, RandomStream } from './sampler.ts';
+import type { TracerScene } from './tracer-scene.ts';
+
+// One integrator per prepared scene, as for Whitted mode (render-pixel.ts).
+const integrators = new WeakMap<TracerScene, PathIntegrator>();
+
+export function pathIntegratorFor(scene: TracerScene): PathIntegrator {
+  let integrator = integrators.get(scene);
+  if (!integrator) {
+    integrator = new PathIntegrator(scene);
+    integrators.set(scene, integrator);
+  }
+  return integrator;
+}
+
+const direction = new Vector3();
+const focalPoint = new Vector3();
+const lensPoint = new Vector3();
+const primary = new Ray();
+const pathColor = new Vector3();
+const random = new RandomStream();
+
+/**
+ * The colour of pixel (x, y) in path mode (path-tracing spec §2): the mean of `paths` paths'
+ * contributions, each started at a uniform random point of the pixel's square (a box
+ * filter), through a uniform random point of the lens when it has an aperture, at a uniform
+ * random moment of the open shutter when the scene asks for more than one time sample. With
+ * `recorder`, every path is recorded there, and the mean of their contributions, summed in
+ * the same order, is this colour to the last bit.
+ */
+export function renderPathPixel(
+  scene: TracerScene,
+  x: number,
+  y: number,
+  width: number,
+  height: number,
+  seed: number,
+  out: Vector3,
+  recorder: PathRecorder | null,
+  paths = scene.settings.pathSamples,
+): Vector3 {
+  const integrator = pathIntegratorFor(scene);
+  const { camera } = scene;
+  const hasLens = camera.aperture > 0;
+  const moving = scene.settings.timeSamples > 1;
+  out.set(0, 0, 0);
+  for (let sample = 0; sample < paths; sample++) {
+    random.reset(hashKey(seed, x, y, sample, PIXEL_POSITION_STREAM));
+    camera.direction(x + random.next(), y + random.next(), width, height, direction);
+    let time = 0;
+    if (hasLens) {
+      camera.focalPoint(direction, focalPoint);
+      const [u, v] = concentricDisc(2 * random.next() - 1, 2 * random.next() - 1);
+      camera.lensPoint(u, v, lensPoint);
+      direction.subVectors(focalPoint, lensPoint).normalize();
+    } else lensPoint.copy(camera.eye);
+    if (moving) time = random.next();
+    integrator.startSubSample(seed, x, y, sample, 0, time);
+    primary.set(lensPoint, direction);
+    primary.time = time;
+    integrator.stats.primary++;
+    out.add(integrator.li(primary, pathColor, recorder));
+  }
+  return out.divideScalar(paths);
+}
