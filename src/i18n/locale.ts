@@ -54,8 +54,10 @@ export async function useLocale(locale: Locale): Promise<Locale> {
   // the first screen, and a reason on screen before they arrive is said again once they have
   // (each element renders again on this event, src/ui/controls/localized-element.ts).
   if (currentLocale() !== 'en') {
+    // The page asked now is the one told later (a test's stand-in window may be gone by then).
+    const page = window;
     loadIssueTranslation().then(
-      () => window.dispatchEvent(new Event(ISSUE_TEXTS_LOADED)),
+      () => page.dispatchEvent(new Event(ISSUE_TEXTS_LOADED)),
       (error: unknown) => console.warn('The translated reasons could not be loaded; they are shown in English', error),
     );
   }
