@@ -13,6 +13,7 @@
  * (estimate-calibration.ts). The model's estimate of the same render (render-estimate.ts),
  * which the window used before, is given beside it.
  */
+import { issueLine } from '../src/util/issue.ts';
 import { readScene } from '../src/cli/scene-file.ts';
 import { createNodeRenderPool } from '../src/cli/node-worker-port.ts';
 import { EstimateCalibration } from '../src/render/estimate-calibration.ts';
@@ -45,7 +46,7 @@ export interface EstimateCase {
 async function levelScene(level: string, edit: (scene: Record<string, unknown>) => Record<string, unknown>): Promise<Scene> {
   const { scene } = await readScene(level);
   const parsed = parseScene(edit(structuredClone(scene) as unknown as Record<string, unknown>));
-  if (!parsed.ok) throw new Error(`the ${level} bench scene is invalid:\n${parsed.errors.join('\n')}`);
+  if (!parsed.ok) throw new Error(`the ${level} bench scene is invalid:\n${parsed.errors.map(issueLine).join('\n')}`);
   return parsed.scene;
 }
 

@@ -5,6 +5,7 @@
  * image whatever the count, so 3 × 3 = 9 and 16 × 16 = 256 objects (the scene limit) take
  * about the same number of rays: their time ratio is the cost of the object count itself.
  */
+import { issueLine } from '../src/util/issue.ts';
 import type { Scene } from '../src/scene/scene.ts';
 import { parseScene } from '../src/scene/scene-schema.ts';
 
@@ -40,6 +41,6 @@ export function objectGridScene(side: number): Scene {
       { id: 'bulb', type: 'point', position: [3, 4, 3], color: [1, 0.95, 0.85], intensity: 0.5, ambient: 0.05 },
     ],
   });
-  if (!parsed.ok) throw new Error(`the ${side}×${side} grid scene is invalid:\n${parsed.errors.join('\n')}`);
+  if (!parsed.ok) throw new Error(`the ${side}×${side} grid scene is invalid:\n${parsed.errors.map(issueLine).join('\n')}`);
   return parsed.scene;
 }

@@ -12,6 +12,7 @@
  * step ≤ 100 ms at the 95th percentile on SwiftShader with the free lab's largest settings
  * (bench/browser-ray-budget-figures.ts).
  */
+import { issueLine } from '../src/util/issue.ts';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { Ray as ThreeRay, DoubleSide, Vector3 } from 'three';
@@ -58,7 +59,7 @@ const CROP = { x: 240, y: 232, width: 32, height: 32 };
 
 function loadReferenceScene(): Scene {
   const parsed = parseSceneJson(readFileSync(SCENE_FILE, 'utf8'));
-  if (!parsed.ok) throw new Error(`bench/scenes/reference.json is invalid:\n${parsed.errors.join('\n')}`);
+  if (!parsed.ok) throw new Error(`bench/scenes/reference.json is invalid:\n${parsed.errors.map(issueLine).join('\n')}`);
   return parsed.scene;
 }
 

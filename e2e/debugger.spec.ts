@@ -1,3 +1,4 @@
+import { issueLine } from '../src/util/issue.ts';
 import { expect, test, type Page } from '@playwright/test';
 import { mkdirSync, readFileSync } from 'node:fs';
 import { encodeSceneLink } from '../src/app/scene-link.ts';
@@ -170,7 +171,7 @@ test('a level\'s debugger task: the ring shows the way in, and "Show me" steps t
 /** A level's starting scene with `change` made, as a learner makes it in that level. */
 function levelScene(id: string, change: (scene: Scene) => void): Scene {
   const parsed = parseLevel(JSON.parse(readFileSync(new URL(`${id}.level.json`, levelsFolder), 'utf8')));
-  if (!parsed.ok) throw new Error(parsed.errors.join('\n'));
+  if (!parsed.ok) throw new Error(parsed.errors.map(issueLine).join('\n'));
   const scene = structuredClone(parsed.level.scene);
   change(scene);
   return scene;

@@ -1,3 +1,4 @@
+import { wordedIssue } from '../util/issue.ts';
 import type { Assignment } from '../classroom/assignment.ts';
 import type { CatalogChapter, CatalogEntry, LevelCatalog } from '../quest/level-index.ts';
 
@@ -15,7 +16,11 @@ export function assignmentCatalog(catalog: LevelCatalog, assignment: Assignment)
   const listed = new Set(assignment.levels);
   const chosen = assignment.levels.map(
     (id): CatalogEntry =>
-      entries.get(id) ?? { id, ok: false, errors: [`(root): the assignment lists the level "${id}", which this version of the game does not have`] },
+      entries.get(id) ?? {
+        id,
+        ok: false,
+        errors: [wordedIssue('(root)', `the assignment lists the level "${id}", which this version of the game does not have`)],
+      },
   );
   const first: CatalogChapter = { id: ASSIGNMENT_CHAPTER, title: assignment.title, entries: chosen };
   const others =

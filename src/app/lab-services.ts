@@ -1,3 +1,4 @@
+import { issueText } from '../i18n/issue-text.ts';
 import { initialState, type LabState } from '../lab-state/lab-state.ts';
 import { Store } from '../lab-state/store.ts';
 import type { RenderImage } from '../render/render-job.ts';
@@ -120,7 +121,7 @@ export class LabServices {
         for (const listener of [...this.listeners]) listener(rays);
       }),
       this.store.subscribe((state, _action, error, live) => {
-        if (error) options.report(error, 'error');
+        if (error) options.report(error.map(issueText).join('\n'), 'error');
         this.followBudget(state, live === true);
         this.tracer.update(state.scene);
         this.layers?.boxes.update(state);

@@ -1,3 +1,4 @@
+import { wordedIssue } from '../util/issue.ts';
 import { loadLevelGuide, loadLevels, type LevelCatalog, type LevelGuide } from '../quest/level-index.ts';
 import type { Locale } from '../quest/localized-text.ts';
 
@@ -27,13 +28,15 @@ export function levelTextsLocale(): Locale | null {
 /** Every level listed in levels/index.json, playable or broken, in the loaded language. */
 export function loadBrowserCatalog(): LevelCatalog {
   const files = texts?.files;
-  if (!files) return { chapters: [], errors: ['(root): the level texts were not loaded'] };
+  if (!files) return { chapters: [], errors: [wordedIssue('(root)', 'the level texts were not loaded')] };
   if (catalog?.files !== files) {
     const index = files['index.json'];
     catalog = {
       files,
       catalog:
-        index === undefined ? { chapters: [], errors: ['(root): levels/index.json is missing from this build'] } : loadLevels(index, (name) => files[name]),
+        index === undefined
+          ? { chapters: [], errors: [wordedIssue('(root)', 'levels/index.json is missing from this build')] }
+          : loadLevels(index, (name) => files[name]),
     };
   }
   return catalog.catalog;

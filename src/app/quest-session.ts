@@ -28,6 +28,7 @@ import { PendingWrites } from './pending-writes.ts';
 import { loadSessionContext, readContextText, sessionContextKey, type ContextDamage, type SessionContext } from './session-context.ts';
 import { playShowMe, showMeSteps, type ShowMeStage } from './show-me-player.ts';
 import type { Store } from '../lab-state/store.ts';
+import type { Issue } from '../util/issue.ts';
 import { SandboxSaver } from './sandbox-saver.ts';
 import { attachToPage } from './session-page.ts';
 import { TaskViews } from './task-views.ts';
@@ -69,7 +70,7 @@ export interface QuestSessionOptions {
 }
 
 export type ImportResult =
-  { ok: true; repaired: string[] } | { ok: false; reason: 'unreadable'; errors: string[] } | { ok: false; reason: 'not-saved'; kind: SaveProblemKind };
+  { ok: true; repaired: string[] } | { ok: false; reason: 'unreadable'; errors: Issue[] } | { ok: false; reason: 'not-saved'; kind: SaveProblemKind };
 
 export class QuestSession {
   readonly catalog: LevelCatalog;

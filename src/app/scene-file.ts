@@ -1,4 +1,3 @@
-import { msg, str } from '@lit/localize';
 import { isRecord } from '../util/is-record.ts';
 import { readJson } from '../util/read-json.ts';
 import { parseScene, type SceneParseResult } from '../scene/scene-schema.ts';
@@ -45,13 +44,11 @@ export function readSceneFile(text: string, bytes = text.length): SceneParseResu
   if (bytes > MAX_SCENE_FILE_BYTES) {
     const size = Math.round(bytes / 1024);
     const most = MAX_SCENE_FILE_BYTES / 1024;
-    return { ok: false, errors: [msg(str`(root): the file is ${size} kB; a scene file is at most ${most} kB`)] };
+    return { ok: false, errors: [{ path: '(root)', reason: { code: 'fileTooLarge', kilobytes: size, most } }] };
   }
   const json = readJson(text);
-  if (!json.ok) return { ok: false, errors: [json.error] };
+  if (!json.ok) return { ok: false, errors: [json.issue] };
   if (!isRecord(json.value) || !('tasks' in json.value && 'scene' in json.value)) return parseScene(json.value);
   const level = parseScene(json.value.scene);
-  return level.ok
-    ? level
-    : { ok: false, errors: level.errors.map((error) => (error.startsWith('(root)') ? `scene${error.slice('(root)'.length)}` : `scene.${error}`)) };
+  return level.ok ? level : { ok: false, errors: level.errors.map((error) => ({ ...error, path: error.path === '(root)' ? 'scene' : `scene.${error.path}` })) };
 }

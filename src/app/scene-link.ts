@@ -1,4 +1,5 @@
 import { msg, str } from '@lit/localize';
+import { wordedIssue } from '../util/issue.ts';
 import { packJson, unpackJson } from '../util/packed-json.ts';
 import { parseScene, type SceneParseResult } from '../scene/scene-schema.ts';
 import type { Scene } from '../scene/scene.ts';
@@ -51,11 +52,11 @@ export async function decodeSceneLink(hash: string): Promise<SceneParseResult> {
     case 'too-large':
       return damaged(msg(str`it unpacks to more than ${unpacked.limit / 1024} kB, more than any scene`));
     case 'not-json':
-      return damaged(unpacked.reason);
+      return { ok: false, errors: [unpacked.issue] };
   }
 }
 
 /** A problem with the link itself (not with a field of the scene): a reason without a path. */
 function damaged(reason: string): SceneParseResult {
-  return { ok: false, errors: [reason] };
+  return { ok: false, errors: [wordedIssue(null, reason)] };
 }

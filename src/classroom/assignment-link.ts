@@ -1,5 +1,6 @@
+import { wordedIssue, type Issue } from '../util/issue.ts';
 import { msg, str } from '@lit/localize';
-import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
+import { describeIssue, issuesOf } from '../scene/scene-issues.ts';
 import type { LevelCatalog } from '../quest/level-index.ts';
 import type { Assignment } from './assignment.ts';
 import { assignmentSchema } from './assignment-schema.ts';
@@ -30,7 +31,7 @@ export const MAX_ASSIGNMENT_BYTES = 1024 * 1024;
 /** Why a link did not open: the link itself is damaged, from another version, or names levels or tasks this game does not have. */
 export type LinkProblemKind = 'damaged' | 'other-version' | 'unknown-levels';
 
-export type AssignmentLinkResult = { ok: true; assignment: Assignment } | { ok: false; kind: LinkProblemKind; reasons: string[] };
+export type AssignmentLinkResult = { ok: true; assignment: Assignment } | { ok: false; kind: LinkProblemKind; reasons: Issue[] };
 
 /** Whether an address fragment is meant as an assignment link (damaged or not). */
 export function isAssignmentFragment(hash: string): boolean {
@@ -58,14 +59,16 @@ export async function decodeAssignment(hash: string, catalog?: LevelCatalog): Pr
   if (dot < 0) return damaged(msg('the version number is missing'));
   const version = body.slice(0, dot);
   if (version !== String(LINK_VERSION)) {
-    return { ok: false, kind: 'other-version', reasons: [msg(str`the link has version ${JSON.stringify(version)}; this app opens version ${LINK_VERSION}`)] };
+    const reason = msg(str`the link has version ${JSON.stringify(version)}; this app opens version ${LINK_VERSION}`);
+    return { ok: false, kind: 'other-version', reasons: [wordedIssue(null, reason)] };
   }
   const unpacked = await unpackJson(body.slice(dot + 1), MAX_ASSIGNMENT_BYTES);
   if (!unpacked.ok) return damaged(packedProblemText(unpacked));
   const parsed = assignmentSchema.safeParse(unpacked.value, { error: describeIssue });
-  if (!parsed.success) return { ok: false, kind: 'damaged', reasons: formatIssues(parsed.error.issues) };
+  if (!parsed.success) return { ok: false, kind: 'damaged', reasons: issuesOf(parsed.error.issues) };
   const unknown = catalog ? unknownParts(parsed.data, catalog) : [];
-  return unknown.length === 0 ? { ok: true, assignment: parsed.data } : { ok: false, kind: 'unknown-levels', reasons: unknown };
+  if (unknown.length === 0) return { ok: true, assignment: parsed.data };
+  return { ok: false, kind: 'unknown-levels', reasons: unknown.map((part) => wordedIssue(null, part)) };
 }
 
 /** The levels and required tasks of `assignment` that the catalog does not have, as "level" or "level/task". */
@@ -81,8 +84,8 @@ export function unknownParts(assignment: Assignment, catalog: LevelCatalog): str
   return unknown;
 }
 
-/** Why the link's payload did not unpack, in the learner's language. */
-function packedProblemText(unpacked: PackedJsonProblem): string {
+/** Why the link's payload did not unpack (said in the learner's language). */
+function packedProblemText(unpacked: PackedJsonProblem): Issue | string {
   switch (unpacked.problem) {
     case 'not-base64url':
       return msg('it contains characters that cannot be part of a link, or it was cut short');
@@ -91,10 +94,10 @@ function packedProblemText(unpacked: PackedJsonProblem): string {
     case 'too-large':
       return msg(str`it unpacks to more than ${unpacked.limit / 1024} kB, more than any assignment`);
     case 'not-json':
-      return unpacked.reason;
+      return unpacked.issue;
   }
 }
 
-function damaged(reason: string): AssignmentLinkResult {
-  return { ok: false, kind: 'damaged', reasons: [reason] };
+function damaged(reason: Issue | string): AssignmentLinkResult {
+  return { ok: false, kind: 'damaged', reasons: [typeof reason === 'string' ? wordedIssue(null, reason) : reason] };
 }

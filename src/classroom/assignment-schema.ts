@@ -1,4 +1,5 @@
 import { z } from 'zod';
+import { reasonIssue, withReason } from '../scene/scene-issues.ts';
 import { kebabId } from '../quest/kebab-id.ts';
 import { LOCALES } from '../quest/localized-text.ts';
 import type { Assignment } from './assignment.ts';
@@ -32,9 +33,12 @@ export const assignmentSchema = z
     locale: z.enum(LOCALES),
     askParticipantCode: z.boolean(),
     survey: kebabId().nullable(),
-    classCode: z.string().regex(CLASS_CODE, 'a class code has 1 to 32 letters, digits, - or _').optional(),
+    classCode: z
+      .string()
+      .regex(CLASS_CODE, { error: (issue) => withReason(issue, { code: 'notClassCode' }) })
+      .optional(),
     xapiHomePage: z
-      .url({ protocol: /^https?$/, error: 'must be a web address that starts with http:// or https://' })
+      .url({ protocol: /^https?$/, error: (issue) => withReason(issue, { code: 'notWebAddress' }) })
       .max(200)
       .optional(),
     // Added later: an older link has none and opens as before, so the format's version stays 1.
@@ -44,12 +48,10 @@ export const assignmentSchema = z
   })
   .superRefine((assignment, context) => {
     assignment.levels.forEach((id, index) => {
-      if (assignment.levels.indexOf(id) !== index)
-        context.addIssue({ code: 'custom', path: ['levels', index], input: id, message: `"${id}" is listed more than once` });
+      if (assignment.levels.indexOf(id) !== index) context.addIssue(reasonIssue(['levels', index], id, { code: 'listedTwice', id }));
     });
     for (const id of Object.keys(assignment.requiredTasks)) {
-      if (!assignment.levels.includes(id))
-        context.addIssue({ code: 'custom', path: ['requiredTasks', id], input: id, message: `"${id}" is not one of the assignment's levels` });
+      if (!assignment.levels.includes(id)) context.addIssue(reasonIssue(['requiredTasks', id], id, { code: 'notAssignmentLevel', id }));
     }
   });
 

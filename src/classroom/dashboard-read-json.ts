@@ -1,9 +1,10 @@
 import { msg, str } from '@lit/localize';
 import { z } from 'zod';
 import { eventLogSchema } from '../quest/event-log.ts';
-import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
+import { describeIssue, issuesOf } from '../scene/scene-issues.ts';
 import { PROGRESS_KIND } from '../quest/progress.ts';
 import { isRecord } from '../util/is-record.ts';
+import type { Issue } from '../util/issue.ts';
 import { readJson } from '../util/read-json.ts';
 import { readLog } from './task-attempts.ts';
 import { learnerKey, normalParticipantCode } from './participant-code.ts';
@@ -31,7 +32,7 @@ const exportSchema = z.looseObject({
 
 export function readJsonExport(file: string, text: string): FileRead {
   const json = readJson(text);
-  if (!json.ok) return { ok: false, file, reason: msg('the file is damaged'), detail: json.error };
+  if (!json.ok) return { ok: false, file, reason: msg('the file is damaged'), detail: json.issue };
   const value = json.value;
   if (isXapi(value))
     return {
@@ -46,9 +47,9 @@ export function readJsonExport(file: string, text: string): FileRead {
     return { ok: false, file, reason: msg(str`made by a newer version of the app (export version ${value.version}); open the dashboard of that version`) };
   }
   const parsed = exportSchema.safeParse(value, { error: describeIssue });
-  if (!parsed.success) return { ok: false, file, reason: msg('damaged export'), detail: formatIssues(parsed.error.issues)[0] };
+  if (!parsed.success) return { ok: false, file, reason: msg('damaged export'), detail: issuesOf(parsed.error.issues)[0] };
   const log = eventLogSchema.safeParse(parsed.data.events, { error: describeIssue });
-  if (!log.success) return { ok: false, file, reason: msg('damaged event log'), detail: `events.${formatIssues(log.error.issues)[0]}` };
+  if (!log.success) return { ok: false, file, reason: msg('damaged event log'), detail: inEvents(issuesOf(log.error.issues)[0]) };
   const { attempts, visits } = readLog(log.data);
   // `5h2-03` and `5H2-03` are one learner (participant-code.ts).
   const participant = normalParticipantCode(parsed.data.participant ?? '');
@@ -91,4 +92,9 @@ function readSurvey(survey: unknown): ClassRecord['survey'] {
   if (!isRecord(survey) || typeof survey.survey !== 'string' || !isRecord(survey.answers)) return null;
   const answers = Object.fromEntries(Object.entries(survey.answers).filter(([, value]) => typeof value === 'number' || typeof value === 'string'));
   return { id: survey.survey, answers: answers as SurveyAnswers };
+}
+
+/** An issue of the event log, at its place in the export file. */
+function inEvents(issue: Issue | undefined): Issue | undefined {
+  return issue && { ...issue, path: issue.path === '(root)' || issue.path === null ? 'events' : `events.${issue.path}` };
 }

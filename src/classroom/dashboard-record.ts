@@ -1,3 +1,4 @@
+import type { Issue } from '../util/issue.ts';
 import type { SurveyAnswers } from './survey-answers.ts';
 import type { ConceptTestAnswers } from './concept-test/concept-answers.ts';
 import type { LevelVisit, TaskAttempt } from './task-attempts.ts';
@@ -44,10 +45,10 @@ export interface SkippedFile {
   /** Why, in the app's language. */
   reason: string;
   /**
-   * The schema's or the JSON reader's own `path: reason` line, in English as they word it
-   * (src/scene/scene-issues.ts): the page says it in its language after `reason`.
+   * The schema's or the JSON reader's own issue (src/util/issue.ts): the page says it in its
+   * language after `reason`.
    */
-  detail?: string;
+  detail?: Issue;
 }
 
 export type FileRead = { ok: true; record: ClassRecord } | ({ ok: false } & SkippedFile);

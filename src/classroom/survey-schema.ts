@@ -1,5 +1,5 @@
 import { z } from 'zod';
-import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
+import { describeIssue, formatIssues, reasonIssue, withReason } from '../scene/scene-issues.ts';
 import { kebabId } from '../quest/kebab-id.ts';
 import { localizedTextSchema } from '../quest/localized-text.ts';
 import { listOf } from '../scene/scene-schema-parts.ts';
@@ -39,7 +39,7 @@ const scaleSchema = z
     maxLabel: localizedTextSchema,
   })
   // More than eleven steps is no longer a scale one can answer at a glance.
-  .refine((scale) => scale.max > scale.min && scale.max - scale.min <= 10, { message: 'max must be above min, with at most 11 steps', path: ['max'] });
+  .refine((scale) => scale.max > scale.min && scale.max - scale.min <= 10, { error: (issue) => withReason(issue, { code: 'scaleSteps' }), path: ['max'] });
 
 const numberSchema = z.strictObject({
   ...common,
@@ -71,8 +71,7 @@ export const surveySchema = z
   .superRefine((survey, context) => {
     const seen = new Set<string>();
     survey.questions.forEach((question, index) => {
-      if (seen.has(question.id))
-        context.addIssue({ code: 'custom', path: ['questions', index, 'id'], input: question.id, message: `"${question.id}" is used more than once` });
+      if (seen.has(question.id)) context.addIssue(reasonIssue(['questions', index, 'id'], question.id, { code: 'usedMoreThanOnce', value: question.id }));
       seen.add(question.id);
     });
   });

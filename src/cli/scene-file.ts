@@ -7,6 +7,7 @@ import { readFileSync } from 'node:fs';
 import { readdir, readFile, stat } from 'node:fs/promises';
 import { dirname, join, relative } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { issueLine } from '../util/issue.ts';
 import { describeJsonError } from '../util/json-error.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';
@@ -43,10 +44,10 @@ export async function checkSceneFile(file: string): Promise<SceneFileCheck> {
   if (hasField(json, 'chapters')) return checkLevelIndex(file, text);
   if (hasField(json, 'tasks')) {
     const level = parseLevel(json);
-    return level.ok ? { ok: true, scene: level.level.scene } : { ok: false, problems: level.errors };
+    return level.ok ? { ok: true, scene: level.level.scene } : { ok: false, problems: level.errors.map(issueLine) };
   }
   const scene = parseScene(json);
-  return scene.ok ? scene : { ok: false, problems: scene.errors };
+  return scene.ok ? scene : { ok: false, problems: scene.errors.map(issueLine) };
 }
 
 function checkLevelIndex(file: string, text: string): SceneFileCheck {
@@ -59,9 +60,9 @@ function checkLevelIndex(file: string, text: string): SceneFileCheck {
   };
   const catalog = loadLevels(text, readLevelFile);
   const broken = catalog.chapters.flatMap((chapter) =>
-    chapter.entries.flatMap((entry) => (entry.ok ? [] : entry.errors.map((error) => `level "${entry.id}": ${error}`))),
+    chapter.entries.flatMap((entry) => (entry.ok ? [] : entry.errors.map((error) => `level "${entry.id}": ${issueLine(error)}`))),
   );
-  const problems = [...catalog.errors, ...broken];
+  const problems = [...catalog.errors.map(issueLine), ...broken];
   return problems.length === 0 ? { ok: true, scene: null } : { ok: false, problems };
 }
 

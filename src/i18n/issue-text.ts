@@ -1,26 +1,24 @@
+import { issueLine, type Issue } from '../util/issue.ts';
+
 /**
- * The `path: reason` lines that say why a scene file, a level, a link or saved progress
- * cannot be used, in the app's language. The schemas, the level rules and the JSON reader
- * are pure (no lit; `rt validate` prints them as they are) and word their reasons in
- * English; the learner-facing app reads each reason by its English pattern and says it
- * again through msg() (issue-translation.ts and the pattern lists it gathers). Those
- * patterns load after a translation of the app (locale.ts), not with the first screen: until
- * they have, and always in English, a line is shown as the schema wrote it.
+ * Why a scene file, a level, a link, saved progress or a change cannot be used, in the app's
+ * language: each issue's coded reason (src/util/issue.ts) said by its code's msg()
+ * (local-reason.ts). Those sayings load after a translation of the app (locale.ts), not with
+ * the first screen, since a refusal is rare: until they have, and always in English, an issue
+ * is shown in the English `rt validate` prints, which is the same words.
  */
 
-let translate: ((line: string) => string) | null = null;
+let localIssue: ((issue: Issue) => string) | null = null;
 
-/** Loads the patterns; asked for once a language other than English is in use. */
+/** The window event sent once the sayings have loaded, so a reason on screen is said again. */
+export const ISSUE_TEXTS_LOADED = 'rt-issue-texts-loaded';
+
+/** Loads the sayings; asked for once a language other than English is in use. */
 export async function loadIssueTranslation(): Promise<void> {
-  translate ??= (await import('./issue-translation.ts')).translateIssue;
+  localIssue ??= (await import('./local-reason.ts')).localIssue;
 }
 
-/** One `path: reason` line (or a bare reason) in the app's language. */
-export function issueText(line: string): string {
-  return translate ? translate(line) : line;
-}
-
-/** Every line of a multi-line reason (a store's refusal may hold several) in the app's language. */
-export function issueLines(text: string): string {
-  return text.split('\n').map(issueText).join('\n');
+/** One issue in the app's language. */
+export function issueText(issue: Issue): string {
+  return localIssue ? localIssue(issue) : issueLine(issue);
 }

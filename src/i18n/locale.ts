@@ -1,9 +1,8 @@
 import { configureLocalization } from '@lit/localize';
 import { sourceLocale, targetLocales } from '../locales/locale-codes.ts';
 import type { Locale } from '../quest/localized-text.ts';
-import { loadIssueTranslation } from './issue-text.ts';
+import { ISSUE_TEXTS_LOADED, loadIssueTranslation } from './issue-text.ts';
 import { pickLocale, readRememberedLocale, rememberLocale } from './locale-choice.ts';
-import { rerenderAll } from './rerender-all.ts';
 import { LazyModule } from '../util/lazy-module.ts';
 
 /**
@@ -39,7 +38,8 @@ export function currentLocale(): Locale {
 }
 
 /**
- * Switches to `locale`: the messages are loaded, then `<html lang>` and every element follow.
+ * Switches to `locale`: the messages are loaded, then `<html lang>` follows, and every element
+ * renders again by itself (src/ui/controls/localized-element.ts).
  * Resolves to the language in use afterwards: when the Dutch module cannot be loaded (the
  * network dropped), the app goes on in the language it had instead of not starting.
  */
@@ -50,12 +50,14 @@ export async function useLocale(locale: Locale): Promise<Locale> {
     console.error(`The ${locale} texts could not be loaded`, error);
   }
   document.documentElement.lang = currentLocale();
-  rerenderAll(document);
   // The reasons a refused file is said for (issue-text.ts) are rare: their patterns load after
-  // the first screen, and a reason on screen before they arrive is said again once they have.
+  // the first screen, and a reason on screen before they arrive is said again once they have
+  // (each element renders again on this event, src/ui/controls/localized-element.ts).
   if (currentLocale() !== 'en') {
+    // The page asked now is the one told later (a test's stand-in window may be gone by then).
+    const page = window;
     loadIssueTranslation().then(
-      () => rerenderAll(document),
+      () => page.dispatchEvent(new Event(ISSUE_TEXTS_LOADED)),
       (error: unknown) => console.warn('The translated reasons could not be loaded; they are shown in English', error),
     );
   }

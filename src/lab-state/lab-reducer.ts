@@ -1,17 +1,18 @@
 import { createLight, createObject } from '../scene/scene-defaults.ts';
 import { lightSchema, parseScene } from '../scene/scene-schema.ts';
 import type { Light, Scene } from '../scene/scene.ts';
+import type { Issue } from '../util/issue.ts';
 import { sameValue } from '../util/same-value.ts';
 import type { DeclaredView, LabAction } from './lab-action.ts';
 import { type LabState, BVH_MAX_DEPTH, DEFAULT_BVH_VIEW, DEFAULT_GIZMO, DEFAULT_RAY_VIEW } from './lab-state.ts';
 
-/** The next state, or the unchanged state with the reason an action was refused. */
-export type Reduction = { state: LabState; error?: string };
+/** The next state, or the unchanged state with the reasons an action was refused. */
+export type Reduction = { state: LabState; error?: Issue[] };
 
 /**
  * Applies one action (pure: no DOM, so level solutions run headless in Node). A change
  * that would make the scene invalid (an out-of-range value, an unknown id) is refused with
- * the schema's `path: reason` message and nothing is lost.
+ * the schema's issues (`path: reason`) and nothing is lost.
  */
 export function reduce(state: LabState, action: LabAction): Reduction {
   switch (action.type) {
@@ -81,7 +82,7 @@ export function reduce(state: LabState, action: LabAction): Reduction {
       const [x, y] = action.pixel;
       const [columns, rows] = state.scene.camera.pixels;
       if (!Number.isInteger(x) || !Number.isInteger(y) || x < 0 || y < 0 || x >= columns || y >= rows) {
-        return { state, error: `pixel: must be inside the ${columns}×${rows} screen, got ${x},${y}` };
+        return { state, error: [{ path: 'pixel', reason: { code: 'pixelOffScreenAt', columns, rows, column: x, row: y } }] };
       }
       return { state: { ...state, selectedPixel: [x, y] } };
     }
@@ -96,7 +97,7 @@ export function reduce(state: LabState, action: LabAction): Reduction {
     case 'bvh.changed': {
       const { depth } = action.changes;
       if (depth !== undefined && !(Number.isInteger(depth) && depth >= 0 && depth <= BVH_MAX_DEPTH)) {
-        return { state, error: `bvh.depth: must be a whole number from 0 to ${BVH_MAX_DEPTH}, got ${depth}` };
+        return { state, error: [{ path: 'bvh.depth', reason: { code: 'bvhDepth', most: BVH_MAX_DEPTH, got: depth } }] };
       }
       return { state: { ...state, bvh: { ...state.bvh, ...action.changes } } };
     }
@@ -131,16 +132,16 @@ function applyView(state: LabState, view: DeclaredView): Reduction {
  * them by identity. (A loaded scene is new even with the same values: listeners take it as
  * a fresh start.)
  */
-function withChange(state: LabState, scene: Scene, precondition?: string): Reduction {
+function withChange(state: LabState, scene: Scene, precondition?: Issue): Reduction {
   if (!precondition && sameValue(scene, state.scene)) return { state };
   return withScene(state, scene, precondition);
 }
 
 /** Validates the new scene; keeps the old state with the reasons when it is invalid. */
-function withScene(state: LabState, scene: Scene, precondition?: string): Reduction {
-  if (precondition) return { state, error: precondition };
+function withScene(state: LabState, scene: Scene, precondition?: Issue): Reduction {
+  if (precondition) return { state, error: [precondition] };
   const parsed = parseScene(scene);
-  if (!parsed.ok) return { state, error: parsed.errors.join('\n') };
+  if (!parsed.ok) return { state, error: parsed.errors };
   const next = { ...state, scene: parsed.scene };
   // A smaller screen may leave the selected pixel outside it.
   const [columns, rows] = parsed.scene.camera.pixels;
@@ -167,10 +168,10 @@ function deselect(state: LabState, id: string): LabState {
   return selection && selection.kind !== 'camera' && selection.id === id ? { ...state, selection: null } : state;
 }
 
-function objectExists(state: LabState, id: string): string | undefined {
-  return state.scene.objects.some((o) => o.id === id) ? undefined : `objects: there is no object "${id}"`;
+function objectExists(state: LabState, id: string): Issue | undefined {
+  return state.scene.objects.some((o) => o.id === id) ? undefined : { path: 'objects', reason: { code: 'noObject', id } };
 }
 
-function lightExists(state: LabState, id: string): string | undefined {
-  return state.scene.lights.some((l) => l.id === id) ? undefined : `lights: there is no light "${id}"`;
+function lightExists(state: LabState, id: string): Issue | undefined {
+  return state.scene.lights.some((l) => l.id === id) ? undefined : { path: 'lights', reason: { code: 'noLight', id } };
 }

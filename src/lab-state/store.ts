@@ -1,12 +1,13 @@
 import type { LabAction } from './lab-action.ts';
 import { reduce, type Reduction } from './lab-reducer.ts';
 import type { LabState } from './lab-state.ts';
+import { wordedIssue, type Issue } from '../util/issue.ts';
 
 /**
  * Called after every dispatched action with the state it produced (unchanged when refused).
  * `live` marks a value the learner is still dragging through: a settled action follows it.
  */
-export type StoreListener = (state: LabState, action: LabAction, error?: string, live?: boolean) => void;
+export type StoreListener = (state: LabState, action: LabAction, error?: Issue[], live?: boolean) => void;
 
 /** How an action was dispatched. */
 export interface DispatchOptions {
@@ -40,8 +41,8 @@ export class Store {
     return this.revision;
   }
 
-  /** Applies the action; returns the reason when it was refused (the state is then unchanged). */
-  dispatch(action: LabAction, options: DispatchOptions = {}): string | undefined {
+  /** Applies the action; returns the reasons when it was refused (the state is then unchanged). */
+  dispatch(action: LabAction, options: DispatchOptions = {}): Issue[] | undefined {
     const { state, error } = safeReduce(this.current, action);
     if (state.scene !== this.current.scene) this.revision++;
     this.current = state;
@@ -61,6 +62,7 @@ function safeReduce(state: LabState, action: LabAction): Reduction {
   try {
     return reduce(state, action);
   } catch (error) {
-    return { state, error: `${action.type}: ${error instanceof Error ? error.message : String(error)}` };
+    // A bug, not a mistake of the learner's: said as the browser words it.
+    return { state, error: [wordedIssue(action.type, error instanceof Error ? error.message : String(error))] };
   }
 }

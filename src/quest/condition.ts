@@ -1,5 +1,7 @@
 import { z } from 'zod';
+import { reasonIssue } from '../scene/scene-issues.ts';
 import { isRecord } from '../util/is-record.ts';
+import type { Reason } from '../util/issue.ts';
 
 /**
  * How goals compare a value of the state (or of an action) with the value a level expects.
@@ -72,8 +74,8 @@ function isComparison(key: string): key is Comparison {
 }
 
 /** Why `value` cannot be compared by `op` (ordering needs a number), or undefined. */
-export function problemWithComparison(op: Comparison, value: JsonValue): string | undefined {
-  if (['>', '>=', '<', '<='].includes(op) && typeof value !== 'number') return `"${op}" compares numbers, got ${JSON.stringify(value)}`;
+export function problemWithComparison(op: Comparison, value: JsonValue): Reason | undefined {
+  if (['>', '>=', '<', '<='].includes(op) && typeof value !== 'number') return { code: 'comparesNumbers', op, got: JSON.stringify(value) };
   return undefined;
 }
 
@@ -83,15 +85,11 @@ export const conditionSchema = z.json().superRefine((condition, context) => {
   const keys = Object.keys(condition);
   const ops = keys.filter(isComparison);
   if (ops.length > 0 && ops.length < keys.length) {
-    context.addIssue({
-      code: 'custom',
-      input: condition,
-      message: `mixes comparisons (${ops.join(', ')}) with fields (${keys.filter((key) => !isComparison(key)).join(', ')})`,
-    });
+    context.addIssue(reasonIssue([], condition, { code: 'mixedCondition', ops, fields: keys.filter((key) => !isComparison(key)) }));
   }
   for (const op of ops) {
     const problem = problemWithComparison(op, condition[op]);
-    if (problem) context.addIssue({ code: 'custom', path: [op], input: condition[op], message: problem });
+    if (problem) context.addIssue(reasonIssue([op], condition[op], problem));
   }
 });
 

@@ -1,6 +1,7 @@
 import { z } from 'zod';
 import type { DeclaredView } from '../lab-state/lab-action.ts';
 import { DEFAULT_RAY_VIEW } from '../lab-state/lab-state.ts';
+import { reasonIssue, withReason } from '../scene/scene-issues.ts';
 import { optionChanges } from './option-changes.ts';
 
 /**
@@ -15,7 +16,7 @@ export const FRAMED_PARTS = ['camera', 'pixel-rays'] as const;
 
 const direction = z
   .tuple([z.number(), z.number(), z.number()])
-  .refine(([x, y, z]) => Math.hypot(x, y, z) > 1e-6, { message: 'must be a direction, not [0, 0, 0]' });
+  .refine(([x, y, z]) => Math.hypot(x, y, z) > 1e-6, { error: (issue) => withReason(issue, { code: 'zeroDirection' }) });
 
 export const declaredViewSchema = z
   .strictObject({
@@ -36,14 +37,9 @@ export const declaredViewSchema = z
   })
   .superRefine((view, context) => {
     if (view.throughCamera && view.frame) {
-      context.addIssue({
-        code: 'custom',
-        path: ['throughCamera'],
-        input: view.throughCamera,
-        message: 'a view either frames things or looks through the camera, not both',
-      });
+      context.addIssue(reasonIssue(['throughCamera'], view.throughCamera, { code: 'frameAndCamera' }));
     }
-    if (view.from && !view.frame) context.addIssue({ code: 'custom', path: ['from'], input: view.from, message: '"from" needs a "frame" to look at' });
+    if (view.from && !view.frame) context.addIssue(reasonIssue(['from'], view.from, { code: 'fromWithoutFrame' }));
   });
 
 type SameType<A, B> = [A] extends [B] ? ([B] extends [A] ? true : false) : false;

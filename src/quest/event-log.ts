@@ -1,4 +1,5 @@
 import { z } from 'zod';
+import { reasonIssue } from '../scene/scene-issues.ts';
 import { badgeSchema } from './badges.ts';
 import { TASK_KINDS } from './goal.ts';
 import { ID_MAX } from './kebab-id.ts';
@@ -105,7 +106,7 @@ export type QuestEvent = LoggedEvent extends infer Event ? (Event extends Logged
 export const eventLogSchema = z.strictObject({ startedAt: z.iso.datetime(), events: z.array(loggedEventSchema) }).superRefine((log, context) => {
   log.events.forEach((event, index) => {
     if (index > 0 && event.t < log.events[index - 1].t) {
-      context.addIssue({ code: 'custom', path: ['events', index, 't'], input: event.t, message: 'must not be earlier than the event before it' });
+      context.addIssue(reasonIssue(['events', index, 't'], event.t, { code: 'earlierThanBefore' }));
     }
   });
 });

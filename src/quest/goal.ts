@@ -1,11 +1,12 @@
 import { z } from 'zod';
 import type { LabActionType } from '../lab-state/lab-action.ts';
-import { describeValue } from '../scene/scene-issues.ts';
+import { reasonIssue } from '../scene/scene-issues.ts';
 import { wholeNumberIn } from '../scene/scene-schema-parts.ts';
 import { actionFields, APP_ONLY_ACTION, LAB_ACTION_TYPES, labActionSchema } from './lab-action-schema.ts';
 import { chosenBy } from './chosen-schema.ts';
 import { COMPARISONS, conditionSchema, problemWithComparison, type Comparison, type JsonValue } from './condition.ts';
 import { isRecord } from '../util/is-record.ts';
+import { gotOf, type Reason } from '../util/issue.ts';
 import { localizedTextSchema, type LocalizedText } from './localized-text.ts';
 import { parsePath } from './state-path.ts';
 
@@ -161,7 +162,7 @@ export function explanationOf(goal: PredictionGoal): LocalizedText | undefined {
 
 const pathSyntax = z.string().superRefine((path, context) => {
   const parsed = parsePath(path);
-  if (!parsed.ok) context.addIssue({ code: 'custom', input: path, message: parsed.reason });
+  if (!parsed.ok) context.addIssue(reasonIssue([], path, parsed.reason));
 });
 
 const eventGoalSchema = z
@@ -173,12 +174,7 @@ const eventGoalSchema = z
   })
   .superRefine((goal, context) => {
     if (goal.event === APP_ONLY_ACTION) {
-      context.addIssue({
-        code: 'custom',
-        path: ['event'],
-        input: goal.event,
-        message: "a level's own view is applied by the app, not done by the learner: no goal can wait for it",
-      });
+      context.addIssue(reasonIssue(['event'], goal.event, { code: 'appOnlyAction' }));
     }
     // `with` looks into the action, so its paths must start at one of that action's fields.
     const fields = actionFields(goal.event);
@@ -186,8 +182,7 @@ const eventGoalSchema = z
       const parsed = parsePath(path);
       const first = parsed.ok ? parsed.steps[0] : undefined;
       if (first?.kind === 'field' && !fields.includes(first.name)) {
-        const has = fields.length === 0 ? 'has no fields' : `has ${fields.join(', ')}`;
-        context.addIssue({ code: 'custom', path: ['with', path], input: path, message: `a "${goal.event}" action ${has}` });
+        context.addIssue(reasonIssue(['with', path], path, { code: 'actionFields', event: goal.event, fields }));
       }
     }
   })
@@ -197,7 +192,7 @@ const stateGoalSchema = z
   .strictObject({ state: pathSyntax, op: z.enum(COMPARISONS), value: z.json() })
   .superRefine((goal, context) => {
     const problem = problemWithComparison(goal.op, goal.value);
-    if (problem) context.addIssue({ code: 'custom', path: ['value'], input: goal.value, message: problem });
+    if (problem) context.addIssue(reasonIssue(['value'], goal.value, problem));
   })
   .transform((goal) => ({ kind: 'state' as const, ...goal }));
 
@@ -212,12 +207,7 @@ const quizGoalSchema = z
       })
       .superRefine((quiz, context) => {
         if (quiz.answer >= quiz.choices.length) {
-          context.addIssue({
-            code: 'custom',
-            path: ['answer'],
-            input: quiz.answer,
-            message: `must be the position of a choice, 0 to ${quiz.choices.length - 1}`,
-          });
+          context.addIssue(reasonIssue(['answer'], quiz.answer, { code: 'choiceOutOfRange', last: quiz.choices.length - 1 }));
         }
       }),
   })
@@ -251,12 +241,7 @@ const pictureGoalSchema = z
       })
       .superRefine((picture, context) => {
         if (picture.answer >= picture.choices.length) {
-          context.addIssue({
-            code: 'custom',
-            path: ['answer'],
-            input: picture.answer,
-            message: `must be the position of a choice, 0 to ${picture.choices.length - 1}`,
-          });
+          context.addIssue(reasonIssue(['answer'], picture.answer, { code: 'choiceOutOfRange', last: picture.choices.length - 1 }));
         }
       }),
   })
@@ -293,13 +278,13 @@ const STAND_ALONE_KINDS = GOAL_KINDS.filter((kind) => !(kind in SCENE_GOAL_SCHEM
 
 function chooseByField<Output>(kinds: Record<string, z.ZodType<Output>>, standAlone: readonly string[]) {
   const names = Object.keys(kinds);
-  return (input: unknown): z.ZodType<Output> | string => {
-    if (!isRecord(input)) return `must be a goal: an object with one of the fields ${names.join(', ')}, got ${describeValue(input)}`;
+  return (input: unknown): z.ZodType<Output> | Reason => {
+    if (!isRecord(input)) return { code: 'notAGoal', fields: names, got: gotOf(input) };
     const alone = standAlone.find((name) => name in input);
-    if (alone) return `a "${alone}" goal is a task's whole goal; it cannot be inside "all" or "any"`;
+    if (alone) return { code: 'goalStandsAlone', kind: alone };
     const present = names.filter((name) => name in input);
-    if (present.length === 0) return `must have one of the fields ${names.join(', ')}`;
-    if (present.length > 1) return `must have only one of the fields ${names.join(', ')}, got ${present.join(' and ')}`;
+    if (present.length === 0) return { code: 'noGoalField', fields: names };
+    if (present.length > 1) return { code: 'manyGoalFields', fields: names, present };
     return kinds[present[0]];
   };
 }

@@ -1,5 +1,6 @@
 import { z } from 'zod';
-import { describeValue } from '../scene/scene-issues.ts';
+import { withReason } from '../scene/scene-issues.ts';
+import { gotOf } from '../util/issue.ts';
 import { LIMITS } from '../scene/scene-limits.ts';
 
 /** As scene ids: long enough for any name, short enough that a message quoting one stays readable. */
@@ -11,5 +12,5 @@ export const kebabId = () =>
     .string()
     .max(ID_MAX)
     .regex(/^[a-z0-9]+(-[a-z0-9]+)*$/, {
-      error: (issue) => `must be lower-case letters and digits joined by "-", like "rays-from-the-camera", got ${describeValue(issue.input)}`,
+      error: (issue) => withReason(issue, { code: 'notKebabId', got: gotOf(issue.input) }),
     });

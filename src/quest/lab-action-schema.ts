@@ -3,7 +3,8 @@ import { DEBUGGER_TERMS, type LabAction, type LabActionType } from '../lab-state
 import { DEFAULT_BVH_VIEW, DEFAULT_RAY_VIEW } from '../lab-state/lab-state.ts';
 import type { Camera, Light, Material, RenderSettings, SceneObject } from '../scene/scene.ts';
 import { sceneSchema } from '../scene/scene-schema.ts';
-import { describeValue } from '../scene/scene-issues.ts';
+import { withReason } from '../scene/scene-issues.ts';
+import { gotOf } from '../util/issue.ts';
 import { isRecord } from '../util/is-record.ts';
 import { declaredViewSchema } from './declared-view-schema.ts';
 import { optionChanges } from './option-changes.ts';
@@ -22,7 +23,7 @@ const id = () => z.string().min(1);
 
 /** An object of fields to change; the reducer validates the changed scene. */
 const sceneChanges = <Fields>() =>
-  z.custom<Partial<Fields>>((value) => isRecord(value), { error: (issue) => `must be an object of fields to change, got ${describeValue(issue.input)}` });
+  z.custom<Partial<Fields>>((value) => isRecord(value), { error: (issue) => withReason(issue, { code: 'notFieldChanges', got: gotOf(issue.input) }) });
 
 const selectionSchema = z
   .discriminatedUnion('kind', [

@@ -1,5 +1,6 @@
+import type { Issue } from '../util/issue.ts';
 import { z } from 'zod';
-import { describeIssue, formatIssues } from '../scene/scene-issues.ts';
+import { describeIssue, issuesOf, reasonIssue } from '../scene/scene-issues.ts';
 import { listOf } from '../scene/scene-schema-parts.ts';
 import { chosenBy } from './chosen-schema.ts';
 import { kebabId } from './kebab-id.ts';
@@ -48,7 +49,7 @@ export const levelIndexSchema = z
   .superRefine((index, context) => {
     const seen = new Set<string>();
     const once = (id: string, path: (string | number)[]) => {
-      if (seen.has(id)) context.addIssue({ code: 'custom', path, input: id, message: `"${id}" is used more than once` });
+      if (seen.has(id)) context.addIssue(reasonIssue(path, id, { code: 'usedMoreThanOnce', value: id }));
       seen.add(id);
     };
     index.chapters.forEach((chapter, c) => {
@@ -57,19 +58,16 @@ export const levelIndexSchema = z
     });
     // Ideas and presets name levels the chapters list: a renamed or removed level must not leave them behind.
     const listed = (id: string, path: (string | number)[]) => {
-      if (!index.chapters.some((chapter) => chapter.levels.includes(id)))
-        context.addIssue({ code: 'custom', path, input: id, message: `"${id}" is not a level of any chapter` });
+      if (!index.chapters.some((chapter) => chapter.levels.includes(id))) context.addIssue(reasonIssue(path, id, { code: 'notInAnyChapter', id }));
     };
     for (const id of Object.keys(index.ideas)) listed(id, ['ideas', id]);
     const presetIds = new Set<string>();
     index.presets.forEach((preset, p) => {
-      if (presetIds.has(preset.id))
-        context.addIssue({ code: 'custom', path: ['presets', p, 'id'], input: preset.id, message: `"${preset.id}" is used more than once` });
+      if (presetIds.has(preset.id)) context.addIssue(reasonIssue(['presets', p, 'id'], preset.id, { code: 'usedMoreThanOnce', value: preset.id }));
       presetIds.add(preset.id);
       preset.levels.forEach((id, l) => {
         listed(id, ['presets', p, 'levels', l]);
-        if (preset.levels.indexOf(id) !== l)
-          context.addIssue({ code: 'custom', path: ['presets', p, 'levels', l], input: id, message: `"${id}" is used more than once` });
+        if (preset.levels.indexOf(id) !== l) context.addIssue(reasonIssue(['presets', p, 'levels', l], id, { code: 'usedMoreThanOnce', value: id }));
       });
     });
   });
@@ -80,7 +78,7 @@ export interface LevelGuide {
   presets: LevelPreset[];
 }
 
-export type CatalogEntry = { id: string; ok: true; level: Level } | { id: string; ok: false; errors: string[] };
+export type CatalogEntry = { id: string; ok: true; level: Level } | { id: string; ok: false; errors: Issue[] };
 
 export interface CatalogChapter {
   id: string;
@@ -91,7 +89,7 @@ export interface CatalogChapter {
 /** Every level the index lists, playable or broken, in order; `errors` are the index's own. */
 export interface LevelCatalog {
   chapters: CatalogChapter[];
-  errors: string[];
+  errors: Issue[];
 }
 
 export function levelFileName(id: string): string {
@@ -120,24 +118,23 @@ export function loadLevelGuide(indexText: string): LevelGuide {
   return index.ok ? { ideas: index.data.ideas, presets: index.data.presets } : { ideas: {}, presets: [] };
 }
 
-function readIndex(indexText: string): { ok: true; data: z.output<typeof levelIndexSchema> } | { ok: false; errors: string[] } {
+function readIndex(indexText: string): { ok: true; data: z.output<typeof levelIndexSchema> } | { ok: false; errors: Issue[] } {
   const json = readJson(indexText);
-  if (!json.ok) return { ok: false, errors: [json.error] };
+  if (!json.ok) return { ok: false, errors: [json.issue] };
   const index = levelIndexSchema.safeParse(json.value, { error: describeIssue });
-  return index.success ? { ok: true, data: index.data } : { ok: false, errors: formatIssues(index.error.issues) };
+  return index.success ? { ok: true, data: index.data } : { ok: false, errors: issuesOf(index.error.issues) };
 }
 
 function loadEntry(id: string, chapter: string, readLevelFile: (fileName: string) => string | undefined): CatalogEntry {
   const fileName = levelFileName(id);
   const text = readLevelFile(fileName);
-  if (text === undefined) return { id, ok: false, errors: [`(root): there is no file levels/${fileName}`] };
+  if (text === undefined) return { id, ok: false, errors: [{ path: '(root)', reason: { code: 'noLevelFile', file: `levels/${fileName}` } }] };
   const parsed = parseLevelJson(text);
   if (!parsed.ok) return { id, ok: false, errors: parsed.errors };
   const { level } = parsed;
-  const errors = [
-    ...(level.id === id ? [] : [`id: must be "${id}", the name index.json lists this file under, got "${level.id}"`]),
-    ...(level.chapter === chapter ? [] : [`chapter: must be "${chapter}", the chapter index.json lists it in, got "${level.chapter}"`]),
-  ];
+  const errors: Issue[] = [];
+  if (level.id !== id) errors.push({ path: 'id', reason: { code: 'levelIdMismatch', id, got: level.id } });
+  if (level.chapter !== chapter) errors.push({ path: 'chapter', reason: { code: 'chapterMismatch', chapter, got: level.chapter } });
   return errors.length === 0 ? { id, ok: true, level } : { id, ok: false, errors };
 }
 

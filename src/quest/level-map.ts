@@ -1,3 +1,4 @@
+import type { Issue } from '../util/issue.ts';
 import { isPassed, requiredTaskIds, type RequiredTasks } from './level-gate.ts';
 import { playableLevels, type LevelCatalog } from './level-index.ts';
 import type { Level } from './level-schema.ts';
@@ -16,7 +17,7 @@ export interface LevelMapEntry {
   id: string;
   status: LevelStatus;
   /** Why a broken level is broken. */
-  errors: string[];
+  errors: Issue[];
   /** The level, unless it is broken. */
   level?: Level;
   points: number;

@@ -2,7 +2,8 @@ import { initialState, type LabState } from '../lab-state/lab-state.ts';
 import type { DeclaredView } from '../lab-state/lab-action.ts';
 import { framedRaysPixel } from '../lab-state/framed-rays.ts';
 import type { Scene } from '../scene/scene.ts';
-import { formatIssues } from '../scene/scene-issues.ts';
+import { formatPath } from '../scene/scene-issues.ts';
+import { gotOf, wordedIssue, type Issue, type Reason } from '../util/issue.ts';
 import { FRAMED_PARTS } from './declared-view-schema.ts';
 import { goalParts, kindOfGoal, type Goal } from './goal.ts';
 import { APP_ONLY_ACTION } from './lab-action-schema.ts';
@@ -20,13 +21,14 @@ import type { TaskEvidence } from './task-evidence-schema.ts';
 /** The mandatory tasks a level must have (spec: one idea per level, 3–10 tasks to do and see it). */
 export const MANDATORY_TASKS: readonly [fewest: number, most: number] = [3, 10];
 
+/** A problem with its reason as data (src/util/issue.ts), or as English words (state-path.ts's, not coded yet). */
 interface Problem {
   path: (string | number)[];
-  message: string;
+  reason: Reason | string;
 }
 
-/** Every problem as a `path: reason` line, like the schema's. */
-export function levelRules(level: Level): string[] {
+/** Every problem, with its path, like the schema's. */
+export function levelRules(level: Level): Issue[] {
   const sample = sampleState(level.scene);
   const problems = [
     ...listedOnce(
@@ -48,7 +50,7 @@ export function levelRules(level: Level): string[] {
     ...level.tasks.flatMap((task, index) => (task.evidence ? evidenceProblems(level.scene, task.evidence, ['tasks', index, 'evidence']) : [])),
     ...badgeProblems(level),
   ];
-  return formatIssues(problems.map(({ path, message }) => ({ code: 'custom', path, message })));
+  return problems.map(({ path, reason }): Issue => (typeof reason === 'string' ? wordedIssue(formatPath(path), reason) : { path: formatPath(path), reason }));
 }
 
 /** `values` name each thing once; the second, third… use is reported where it stands. */
@@ -59,7 +61,7 @@ function listedOnce(values: readonly string[], listPath: (string | number)[], fi
       seen.add(value);
       return [];
     }
-    return [{ path: [...listPath, index, ...(field ? [field] : [])], message: `"${value}" is used more than once` }];
+    return [{ path: [...listPath, index, ...(field ? [field] : [])], reason: { code: 'usedMoreThanOnce', value } }];
   });
 }
 
@@ -67,7 +69,7 @@ function mandatoryCount(level: Level): Problem[] {
   const count = level.tasks.filter((task) => task.mandatory).length;
   const [fewest, most] = MANDATORY_TASKS;
   if (count >= fewest && count <= most) return [];
-  return [{ path: ['tasks'], message: `must have ${fewest} to ${most} mandatory tasks, got ${count}` }];
+  return [{ path: ['tasks'], reason: { code: 'mandatoryTasks', fewest, most, count } }];
 }
 
 function taskProblems(level: Level, index: number, sample: LabState): Problem[] {
@@ -76,21 +78,18 @@ function taskProblems(level: Level, index: number, sample: LabState): Problem[] 
   const problems: Problem[] = [];
   const kind = kindOfGoal(task.goal);
   if (kind === 'do') {
-    if (!task.solution) problems.push({ path: at('solution'), message: 'is required: the actions that complete this task ("show me" performs them)' });
-    if (task.hints.length === 0) problems.push({ path: at('hints'), message: 'must have at least 1 hint for a task done in the lab' });
+    if (!task.solution) problems.push({ path: at('solution'), reason: { code: 'solutionRequired' } });
+    if (task.hints.length === 0) problems.push({ path: at('hints'), reason: { code: 'hintRequired' } });
     task.solution?.forEach((action, step) => {
-      if (action.type === APP_ONLY_ACTION) problems.push({ path: at('solution', step), message: 'a view is the task\'s "view", not a step of its solution' });
+      if (action.type === APP_ONLY_ACTION) problems.push({ path: at('solution', step), reason: { code: 'viewInSolution' } });
     });
   } else if (task.solution) {
-    problems.push({
-      path: at('solution'),
-      message: `a ${kind} task has no solution: ${kind === 'quiz' ? 'its answer is in its goal' : 'it is done with Next'}`,
-    });
+    problems.push({ path: at('solution'), reason: { code: 'solutionNotAllowed', kind } });
   }
-  if (kind === 'info' && !task.mandatory) problems.push({ path: at('mandatory'), message: 'an info step is read on the way: it must be mandatory' });
+  if (kind === 'info' && !task.mandatory) problems.push({ path: at('mandatory'), reason: { code: 'infoNotMandatory' } });
 
   for (const { goal, path } of goalParts(task.goal, at('goal'))) problems.push(...statePathProblems(goal, path, sample));
-  if (task.guide) problems.push(...guideProblems(level, task.guide).map((message) => ({ path: at('guide'), message })));
+  if (task.guide) problems.push(...guideProblems(level, task.guide).map((reason) => ({ path: at('guide'), reason })));
   return problems;
 }
 
@@ -127,28 +126,28 @@ function sampleState(scene: Scene): LabState {
 
 function pathProblem(path: string, sample: LabState, at: (string | number)[]): Problem[] {
   const problem = problemWithPath(path, sample);
-  return problem ? [{ path: at, message: problem }] : [];
+  return problem ? [{ path: at, reason: problem }] : [];
 }
 
 /** A guide must ring something the learner can see in this level. */
-function guideProblems(level: Level, target: GuideTarget): string[] {
+function guideProblems(level: Level, target: GuideTarget): Reason[] {
   const { panel, control, item } = partsOfTarget(target);
   const shown = (ALWAYS_SHOWN as readonly string[]).includes(panel) || level.ui.panels.some((listed) => listed === panel);
-  if (!shown) return [`"${target}" is in the ${panel} panel, which this level does not show (ui.panels)`];
+  if (!shown) return [{ code: 'panelNotShown', target, panel }];
   const narrowed: Partial<Record<string, string[]>> = level.ui.controls ?? {};
   const only = narrowed[panel];
-  if (only && !only.includes(control)) return [`"${target}" is hidden by ui.controls.${panel}`];
+  if (only && !only.includes(control)) return [{ code: 'controlHidden', target, panel }];
   if (item === undefined) return [];
   if (control === 'pixel') return pixelProblems(level.scene, item);
   const ids = [...level.scene.objects, ...level.scene.lights].map((thing) => thing.id);
-  return ids.includes(item) ? [] : [`no object or light "${item}" in this level's scene (it has ${ids.join(', ')})`];
+  return ids.includes(item) ? [] : [{ code: 'noSuchItem', item, ids }];
 }
 
-function pixelProblems(scene: Scene, item: string): string[] {
+function pixelProblems(scene: Scene, item: string): Reason[] {
   const [columns, rows] = scene.camera.pixels;
   const match = /^(\d+),(\d+)$/.exec(item);
   if (match && Number(match[1]) < columns && Number(match[2]) < rows) return [];
-  return [`"${item}" must be "column,row" inside the ${columns}×${rows} screen, counting from 0`];
+  return [{ code: 'pixelOffScreen', item, columns, rows }];
 }
 
 /**
@@ -163,14 +162,11 @@ function pixelPickingProblems(level: Level): Problem[] {
     const pixel = goal.kind === 'event' && goal.event === 'pixel.selected' ? goal.with?.pixel : undefined;
     if (!Array.isArray(pixel)) return;
     const target = `screen.pixel:${pixel[0]},${pixel[1]}`;
-    if (task.guide !== target) problems.push({ path: ['tasks', index, 'guide'], message: `must be "${target}", the pixel its goal asks for` });
+    if (task.guide !== target) problems.push({ path: ['tasks', index, 'guide'], reason: { code: 'guideNotGoalPixel', target } });
   });
   const picksPixels = level.tasks.some((task) => task.solution?.some((action) => action.type === 'pixel.selected'));
   if (picksPixels && !level.ui.panels.includes('screen-preview')) {
-    problems.push({
-      path: ['ui', 'panels'],
-      message: 'must include "screen-preview": a task picks a pixel, and the flat preview is where one is picked exactly',
-    });
+    problems.push({ path: ['ui', 'panels'], reason: { code: 'previewRequired' } });
   }
   return problems;
 }
@@ -186,16 +182,16 @@ function viewProblems(scene: Scene, view: DeclaredView, at: (string | number)[])
   (view.frame ?? []).forEach((name, index) => {
     const raysOf = framedRaysPixel(name);
     if (raysOf) {
-      for (const message of pixelProblems(scene, raysOf.join(','))) problems.push({ path: [...at, 'frame', index], message });
+      for (const reason of pixelProblems(scene, raysOf.join(','))) problems.push({ path: [...at, 'frame', index], reason });
     } else if (!names.includes(name)) {
-      problems.push({ path: [...at, 'frame', index], message: `must be one of ${[...names, 'rays:<column>,<row>'].join(', ')}, got "${name}"` });
+      problems.push({ path: [...at, 'frame', index], reason: { code: 'notAllowed', allowed: [...names, 'rays:<column>,<row>'], got: gotOf(name) } });
     }
   });
   if (view.pixel) {
-    for (const message of pixelProblems(scene, view.pixel.join(','))) problems.push({ path: [...at, 'pixel'], message });
+    for (const reason of pixelProblems(scene, view.pixel.join(','))) problems.push({ path: [...at, 'pixel'], reason });
   }
   if (view.frame?.includes('pixel-rays') && !view.pixel) {
-    problems.push({ path: [...at, 'frame'], message: '"pixel-rays" needs the view to choose its pixel ("pixel": [column, row])' });
+    problems.push({ path: [...at, 'frame'], reason: { code: 'pixelRaysWithoutPixel' } });
   }
   return problems;
 }
@@ -204,10 +200,10 @@ function viewProblems(scene: Scene, view: DeclaredView, at: (string | number)[])
 function evidenceProblems(scene: Scene, evidence: TaskEvidence, at: (string | number)[]): Problem[] {
   const ids = [...scene.objects, ...scene.lights].map((thing) => thing.id);
   const problems: Problem[] = (evidence.objects ?? []).flatMap((id, index) =>
-    ids.includes(id) ? [] : [{ path: [...at, 'objects', index], message: `no object or light "${id}" in this level's scene (it has ${ids.join(', ')})` }],
+    ids.includes(id) ? [] : [{ path: [...at, 'objects', index], reason: { code: 'noSuchItem', item: id, ids } }],
   );
   if (evidence.rays) {
-    for (const message of pixelProblems(scene, evidence.rays.pixel.join(','))) problems.push({ path: [...at, 'rays', 'pixel'], message });
+    for (const reason of pixelProblems(scene, evidence.rays.pixel.join(','))) problems.push({ path: [...at, 'rays', 'pixel'], reason });
   }
   return problems;
 }
@@ -216,7 +212,7 @@ function badgeProblems(level: Level): Problem[] {
   const taskIds = level.tasks.map((task) => task.id);
   return level.badges.flatMap((badge, badgeIndex) =>
     badge.tasks.flatMap((taskId, index) =>
-      taskIds.includes(taskId) ? [] : [{ path: ['badges', badgeIndex, 'tasks', index], message: `no task "${taskId}" in this level` }],
+      taskIds.includes(taskId) ? [] : [{ path: ['badges', badgeIndex, 'tasks', index], reason: { code: 'noSuchTask', id: taskId } }],
     ),
   );
 }

@@ -1,6 +1,7 @@
+import { gotOf, type Issue } from '../util/issue.ts';
 import { z } from 'zod';
 import { sceneSchema } from '../scene/scene-schema.ts';
-import { describeIssue, describeValue, formatIssues } from '../scene/scene-issues.ts';
+import { describeIssue, issuesOf, reasonIssue, withReason } from '../scene/scene-issues.ts';
 import { listOf, wholeNumberIn } from '../scene/scene-schema-parts.ts';
 import { labActionSchema } from './lab-action-schema.ts';
 import { declaredViewSchema } from './declared-view-schema.ts';
@@ -32,8 +33,7 @@ const BADGES_MAX = 20;
 export const TASK_POINTS: readonly [number, number] = [0, 100];
 
 const guideTargetSchema = z.custom<GuideTarget>((value) => typeof value === 'string' && isGuideTarget(value), {
-  error: (issue) =>
-    `must be a control like "tracer.supersampling" or an item like "view.item:ball" (docs/levels.md lists them), got ${describeValue(issue.input)}`,
+  error: (issue) => withReason(issue, { code: 'notGuideTarget', got: gotOf(issue.input) }),
 });
 
 const figureSchema = z.strictObject({
@@ -74,22 +74,19 @@ const uiSchema = z
   .superRefine((ui, context) => {
     for (const panel of Object.keys(ui.hidden ?? {})) {
       if (ui.panels.some((shown) => shown === panel)) {
-        context.addIssue({ code: 'custom', path: ['hidden', panel], input: panel, message: `the ${panel} panel is in ui.panels: it cannot be hidden too` });
+        context.addIssue(reasonIssue(['hidden', panel], panel, { code: 'panelShownAndHidden', panel }));
       }
     }
     for (const [panel, controls] of Object.entries(ui.controls ?? {})) {
       const known: readonly string[] = LAB_CONTROLS[panel as keyof typeof LAB_CONTROLS];
       if (!ui.panels.some((shown) => shown === panel)) {
-        context.addIssue({ code: 'custom', path: ['controls', panel], input: panel, message: `the ${panel} panel is not in ui.panels` });
+        context.addIssue(reasonIssue(['controls', panel], panel, { code: 'panelNotListed', panel }));
       }
       controls.forEach((control, index) => {
         if (!known.includes(control)) {
-          context.addIssue({
-            code: 'custom',
-            path: ['controls', panel, index],
-            input: control,
-            message: `must be one of ${known.join(', ')}, got ${describeValue(control)}`,
-          });
+          // As an enum says it: one allowed value quoted, several as a list.
+          const allowed = known.length === 1 ? [JSON.stringify(known[0])] : known;
+          context.addIssue(reasonIssue(['controls', panel, index], control, { code: 'notAllowed', allowed, got: gotOf(control) }));
         }
       });
     }
@@ -120,12 +117,12 @@ export type Task = Level['tasks'][number];
 export type LevelBadge = Level['badges'][number];
 export type LevelUi = Level['ui'];
 
-export type LevelParseResult = { ok: true; level: Level } | { ok: false; errors: string[] };
+export type LevelParseResult = { ok: true; level: Level } | { ok: false; errors: Issue[] };
 
 /** Checks a level file's parsed JSON, fills in its defaults and lists every problem. */
 export function parseLevel(input: unknown): LevelParseResult {
   const result = levelSchema.safeParse(input, { error: describeIssue });
-  if (!result.success) return { ok: false, errors: formatIssues(result.error.issues) };
+  if (!result.success) return { ok: false, errors: issuesOf(result.error.issues) };
   const problems = levelRules(result.data);
   return problems.length === 0 ? { ok: true, level: result.data } : { ok: false, errors: problems };
 }
@@ -133,5 +130,5 @@ export function parseLevel(input: unknown): LevelParseResult {
 /** `parseLevel` for the text of a level file; bad JSON gives one line with its place. */
 export function parseLevelJson(text: string): LevelParseResult {
   const json = readJson(text);
-  return json.ok ? parseLevel(json.value) : { ok: false, errors: [json.error] };
+  return json.ok ? parseLevel(json.value) : { ok: false, errors: [json.issue] };
 }

@@ -1,22 +1,25 @@
 import { z } from 'zod';
-import { describeValue } from '../scene/scene-issues.ts';
+import { reasonIssue } from '../scene/scene-issues.ts';
 import { isRecord } from '../util/is-record.ts';
+import { gotOf, type PlainType, type Reason } from '../util/issue.ts';
 
 /**
  * Changes to lab options that have no schema of their own (the ray panel's, the BVH view's),
- * as level files write them: each field must exist in `defaults` with the same type.
+ * as level files write them: each field must exist in `defaults` with the same type. Each
+ * wrong field is a problem of its own, at the changes' path.
  */
 export function optionChanges<Options extends object>(defaults: Options) {
-  return z.custom<Partial<Options>>((value) => optionProblems(defaults, value).length === 0, {
-    error: (issue) => optionProblems(defaults, issue.input).join('; '),
+  return z.custom<Partial<Options>>().superRefine((value, context) => {
+    for (const reason of optionProblems(defaults, value)) context.addIssue(reasonIssue([], value, reason));
   });
 }
 
-function optionProblems(defaults: object, value: unknown): string[] {
-  if (!isRecord(value)) return [`must be an object of fields to change, got ${describeValue(value)}`];
-  return Object.entries(value).flatMap(([field, given]) => {
-    if (!(field in defaults)) return [`unknown field "${field}" (known: ${Object.keys(defaults).join(', ')})`];
-    const expected = typeof defaults[field as keyof typeof defaults];
-    return typeof given === expected ? [] : [`${field} must be a ${expected}, got ${describeValue(given)}`];
+function optionProblems(defaults: object, value: unknown): Reason[] {
+  if (!isRecord(value)) return [{ code: 'notFieldChanges', got: gotOf(value) }];
+  return Object.entries(value).flatMap(([field, given]): Reason[] => {
+    if (!(field in defaults)) return [{ code: 'unknownOption', field, known: Object.keys(defaults) }];
+    // The options' defaults are numbers, texts and switches.
+    const expected = typeof defaults[field as keyof typeof defaults] as PlainType;
+    return typeof given === expected ? [] : [{ code: 'optionType', field, expected, got: gotOf(given) }];
   });
 }

@@ -1,4 +1,5 @@
-import { describeIssue, describeValue, formatIssues } from '../scene/scene-issues.ts';
+import { gotOf, issueLine, type Issue, type Reason } from '../util/issue.ts';
+import { describeIssue, issuesOf } from '../scene/scene-issues.ts';
 import type { QuestClock } from './event-log.ts';
 import { isRecord } from '../util/is-record.ts';
 import { newEpoch, newProgress, PROGRESS_KIND, PROGRESS_VERSION, progressSchema, type Progress } from './progress.ts';
@@ -52,9 +53,9 @@ export type SaveProblemKind = 'storage-full' | 'storage-blocked' | 'damaged-held
 /** `saved`: what is in storage now, ours merged with what other tabs had saved. */
 export type SaveResult = { ok: true; saved: Progress } | { ok: false; kind: SaveProblemKind };
 type ParseProblemKind = 'damaged' | 'foreign' | 'other-version';
-export type ProgressParseResult = { ok: true; progress: Progress } | { ok: false; kind: ParseProblemKind; errors: string[] };
+export type ProgressParseResult = { ok: true; progress: Progress } | { ok: false; kind: ParseProblemKind; errors: Issue[] };
 /** Progress read with its damaged parts left out: `repaired` lists them (empty when nothing was). */
-export type ProgressRead = { ok: true; progress: Progress; repaired: string[] } | { ok: false; kind: ParseProblemKind; errors: string[] };
+export type ProgressRead = { ok: true; progress: Progress; repaired: string[] } | { ok: false; kind: ParseProblemKind; errors: Issue[] };
 
 export class ProgressStore {
   /** Damaged text still under the progress key because no backup of it could be written. */
@@ -81,7 +82,7 @@ export class ProgressStore {
     if (backupKey === null) this.heldText = raw;
     const problem: ProgressProblem = read.ok
       ? { kind: 'repaired', reasons: read.repaired, backupKey, raw }
-      : { kind: read.kind, reasons: read.errors, backupKey, raw };
+      : { kind: read.kind, reasons: read.errors.map(issueLine), backupKey, raw };
     return { progress: read.ok ? read.progress : newProgress(this.clock), problem };
   }
 
@@ -144,20 +145,21 @@ export class ProgressStore {
 /** Checks progress read from storage or a file: first that it is ours, then its version, then every field. */
 export function parseProgress(input: unknown): ProgressParseResult {
   if (!isRecord(input) || input.kind !== PROGRESS_KIND) {
-    const got = isRecord(input) ? `"kind" ${describeValue(input.kind)}` : describeValue(input);
-    return { ok: false, kind: 'foreign', errors: [`kind: must be "${PROGRESS_KIND}" in a progress file, got ${got}`] };
+    const got = isRecord(input) ? { inField: true, got: gotOf(input.kind) } : { inField: false, got: gotOf(input) };
+    return { ok: false, kind: 'foreign', errors: [{ path: 'kind', reason: { code: 'progressKind', kind: PROGRESS_KIND, ...got } }] };
   }
   if (input.version !== PROGRESS_VERSION) {
-    return { ok: false, kind: 'other-version', errors: [`version: this app reads progress version ${PROGRESS_VERSION}, got ${describeValue(input.version)}`] };
+    const reason: Reason = { code: 'progressVersion', version: PROGRESS_VERSION, got: gotOf(input.version) };
+    return { ok: false, kind: 'other-version', errors: [{ path: 'version', reason }] };
   }
   const result = progressSchema.safeParse(input, { error: describeIssue });
-  return result.success ? { ok: true, progress: result.data } : { ok: false, kind: 'damaged', errors: formatIssues(result.error.issues) };
+  return result.success ? { ok: true, progress: result.data } : { ok: false, kind: 'damaged', errors: issuesOf(result.error.issues) };
 }
 
 /** Progress from the text of storage or of an imported file (the learner's "import progress"). */
 export function parseProgressJson(text: string): ProgressParseResult {
   const json = readJson(text);
-  return json.ok ? parseProgress(json.value) : { ok: false, kind: 'damaged', errors: [json.error] };
+  return json.ok ? parseProgress(json.value) : { ok: false, kind: 'damaged', errors: [json.issue] };
 }
 
 /**
@@ -167,7 +169,7 @@ export function parseProgressJson(text: string): ProgressParseResult {
  */
 export function readProgressJson(text: string, nowIso: string): ProgressRead {
   const json = readJson(text);
-  if (!json.ok) return { ok: false, kind: 'damaged', errors: [json.error] };
+  if (!json.ok) return { ok: false, kind: 'damaged', errors: [json.issue] };
   const strict = parseProgress(json.value);
   if (strict.ok) return { ...strict, repaired: [] };
   const salvaged = strict.kind === 'damaged' && isRecord(json.value) ? salvageProgress(json.value, nowIso) : null;

@@ -1,3 +1,4 @@
+import type { Issue } from '../util/issue.ts';
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
 import type { Scene } from '../scene/scene.ts';
@@ -303,7 +304,7 @@ export class QuestEngine {
    * live action (a value passed while dragging) starts tasks but completes none: "set it to 4"
    * is met by the value the learner lets go at, not by one the slider passed on its way to 6.
    */
-  readonly observe = (state: LabState, action: LabAction, error?: string, live = false): void => {
+  readonly observe = (state: LabState, action: LabAction, error?: readonly Issue[], live = false): void => {
     if (error !== undefined) return;
     this.lastActivity = this.log.now();
     const levelId = this.active?.level.id ?? null;

@@ -13,10 +13,11 @@
  */
 
 import { isRecord } from '../util/is-record.ts';
+import type { PlainType, Reason } from '../util/issue.ts';
 
 export type PathStep = { kind: 'field'; name: string } | { kind: 'index'; index: number } | { kind: 'id'; id: string };
 
-export type ParsedPath = { ok: true; steps: PathStep[] } | { ok: false; reason: string };
+export type ParsedPath = { ok: true; steps: PathStep[] } | { ok: false; reason: Reason };
 
 const FIRST_FIELD = /[A-Za-z_][A-Za-z0-9_]*/y;
 const NEXT_STEP = /\.([A-Za-z_][A-Za-z0-9_]*)|\[([0-9]+)\]|\[id=([^\]]+)\]/y;
@@ -24,14 +25,14 @@ const NEXT_STEP = /\.([A-Za-z_][A-Za-z0-9_]*)|\[([0-9]+)\]|\[id=([^\]]+)\]/y;
 export function parsePath(text: string): ParsedPath {
   FIRST_FIELD.lastIndex = 0;
   const first = FIRST_FIELD.exec(text);
-  if (!first) return { ok: false, reason: `must start with a field name, like "scene.settings.shadows", got ${JSON.stringify(text)}` };
+  if (!first) return { ok: false, reason: { code: 'pathStart', path: text } };
   const steps: PathStep[] = [{ kind: 'field', name: first[0] }];
   let offset = FIRST_FIELD.lastIndex;
   while (offset < text.length) {
     NEXT_STEP.lastIndex = offset;
     const step = NEXT_STEP.exec(text);
     if (!step) {
-      return { ok: false, reason: `cannot read ${JSON.stringify(text)} from ${JSON.stringify(text.slice(offset))} on: write .field, [0] or [id=name]` };
+      return { ok: false, reason: { code: 'pathUnreadable', path: text, rest: text.slice(offset) } };
     }
     const [, name, index, id] = step;
     if (name !== undefined) steps.push({ kind: 'field', name });
@@ -77,23 +78,23 @@ const OPTIONAL_FIELDS = new Set(['name', 'mesh']);
  * id that is not in it (the learner may add that object later), a position past its end,
  * anything below a `null`.
  */
-export function problemWithPath(path: string, sample: unknown): string | undefined {
+export function problemWithPath(path: string, sample: unknown): Reason | undefined {
   const parsed = parsePath(path);
   if (!parsed.ok) return parsed.reason;
   let value = sample;
   let place = '';
   for (const step of parsed.steps) {
-    const where = place === '' ? '' : ` in ${place}`;
     if (value === null || value === undefined) return undefined;
     if (step.kind === 'field') {
-      if (Array.isArray(value) && step.name !== 'length') return `${place} is a list: use [0], [id=…] or .length, not .${step.name}`;
+      if (Array.isArray(value) && step.name !== 'length') return { code: 'pathIsList', place, field: step.name };
       if (isRecord(value) && !Object.hasOwn(value, step.name)) {
         if (OPTIONAL_FIELDS.has(step.name)) return undefined;
-        return `no field "${step.name}"${where} (it has ${Object.keys(value).join(', ')})`;
+        return { code: 'pathNoField', field: step.name, place, fields: Object.keys(value) };
       }
-      if (!Array.isArray(value) && !isRecord(value)) return `${place} is a ${typeof value}: it has no field "${step.name}"`;
+      // The lab's state is JSON-like: below an object or a list there are only these.
+      if (!Array.isArray(value) && !isRecord(value)) return { code: 'pathNotObject', place, type: typeof value as PlainType, field: step.name };
     } else if (!Array.isArray(value)) {
-      return `${place} is not a list, so ${step.kind === 'index' ? `[${step.index}]` : `[id=${step.id}]`} cannot select from it`;
+      return { code: 'pathNotList', place, step: step.kind === 'index' ? `[${step.index}]` : `[id=${step.id}]` };
     }
     value = takeStep(value, step);
     place += step.kind === 'field' ? `${place === '' ? '' : '.'}${step.name}` : step.kind === 'index' ? `[${step.index}]` : `[id=${step.id}]`;

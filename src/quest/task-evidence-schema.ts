@@ -1,4 +1,5 @@
 import { z } from 'zod';
+import { withReason } from '../scene/scene-issues.ts';
 import { RAY_PATH_KINDS, RAY_PATH_PATTERN } from '../tracer/ray-path.ts';
 
 /**
@@ -15,7 +16,7 @@ export const taskEvidenceSchema = z.strictObject({
       paths: z
         .array(
           z.string().regex(RAY_PATH_PATTERN, {
-            message: `must be kinds of ray joined by "/", from the camera's: "primary", then ${RAY_PATH_KINDS.slice(1).join(', ')}`,
+            error: (issue) => withReason(issue, { code: 'rayPathKinds', kinds: RAY_PATH_KINDS.slice(1) }),
           }),
         )
         .min(1)

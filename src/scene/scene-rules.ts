@@ -1,4 +1,5 @@
 import type { z } from 'zod';
+import { englishReason, type Reason } from '../util/issue.ts';
 import { MESH_ASSET_NAMES } from './mesh-assets.ts';
 import { LIMITS } from './scene-limits.ts';
 
@@ -11,7 +12,7 @@ import { LIMITS } from './scene-limits.ts';
 interface RuleIssue {
   path: (string | number)[];
   input: unknown;
-  message: string;
+  reason: Reason;
 }
 
 type Rule = (value: Record<string, unknown>) => RuleIssue[];
@@ -19,7 +20,8 @@ type Rule = (value: Record<string, unknown>) => RuleIssue[];
 /** A rule as the function of a zod `superRefine`. */
 export function asRefinement(rule: Rule) {
   return (value: Record<string, unknown>, context: z.RefinementCtx) => {
-    for (const issue of rule(value)) context.addIssue({ code: 'custom', ...issue });
+    // The reason rides along on the issue, as the error maps leave it (scene-issues.ts).
+    for (const issue of rule(value)) context.addIssue({ code: 'custom', message: englishReason(issue.reason), ...issue });
   };
 }
 
@@ -31,15 +33,15 @@ export const alsoWhenFieldsFail = { when: (payload: z.core.ParsePayload) => isRe
 
 /** The view direction is target − position; the same point gives no direction at all. */
 export const cameraHasDirection: Rule = (camera) =>
-  isSamePoint(camera.position, camera.target) ? [{ path: ['target'], input: camera.target, message: 'must differ from camera.position' }] : [];
+  isSamePoint(camera.position, camera.target) ? [{ path: ['target'], input: camera.target, reason: { code: 'targetIsPosition' } }] : [];
 
 /** `mesh` names the model of a `shape: "mesh"` object and means nothing on any other. */
 export const meshOnlyOnMeshes: Rule = (object) => {
   if (object.shape === 'mesh' && object.mesh === undefined) {
-    return [{ path: ['mesh'], input: undefined, message: `is required when shape is "mesh" (one of ${MESH_ASSET_NAMES.join(', ')})` }];
+    return [{ path: ['mesh'], input: undefined, reason: { code: 'meshRequired', meshes: MESH_ASSET_NAMES } }];
   }
   if (object.shape !== 'mesh' && object.mesh !== undefined) {
-    return [{ path: ['mesh'], input: object.mesh, message: 'is only allowed when shape is "mesh"' }];
+    return [{ path: ['mesh'], input: object.mesh, reason: { code: 'meshNotAllowed' } }];
   }
   return [];
 };
@@ -66,7 +68,7 @@ export const idsAreUnique: Rule = (scene) => {
       return [];
     }
     const count = uses.get(id) ?? 0;
-    return [{ path, input: id, message: `${JSON.stringify(id)} is used ${count === 2 ? 'twice' : `${count} times`}` }];
+    return [{ path, input: id, reason: { code: 'idReused', id, uses: count } }];
   });
 };
 
@@ -88,7 +90,7 @@ export const primaryRaysWithinLimit: Rule = (scene) => {
     {
       path,
       input,
-      message: `makes supersampling² · lensSamples² · timeSamples = ${s}² · ${n}² · ${k} = ${rays} primary rays per pixel, more than ${most}`,
+      reason: { code: 'tooManyRays', supersampling: s, lensSamples: n, timeSamples: k, rays, most },
     },
   ];
 };

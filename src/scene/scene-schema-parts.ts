@@ -1,5 +1,6 @@
 import { z } from 'zod';
-import { describeValue } from './scene-issues.ts';
+import { gotOf, type ListItems } from '../util/issue.ts';
+import { withReason } from './scene-issues.ts';
 
 /**
  * The building blocks the scene schema is made of. Each carries its own error message where
@@ -23,27 +24,27 @@ export function wholeNumberIn([lowest, highest]: Range) {
   const error = rangeError(lowest, highest);
   return z
     .number()
-    .multipleOf(1, { error: (issue) => `must be a whole number, got ${describeValue(issue.input)}` })
+    .multipleOf(1, { error: (issue) => withReason(issue, { code: 'notWhole', got: gotOf(issue.input) }) })
     .min(lowest, { error })
     .max(highest, { error });
 }
 
 function rangeError(lowest: number, highest: number) {
-  return (issue: { input?: unknown }) => `must be between ${lowest} and ${highest}, got ${describeValue(issue.input)}`;
+  return (issue: { input?: unknown }) => withReason(issue, { code: 'outOfRange', lowest, highest, got: gotOf(issue.input) });
 }
 
 /** [x, y, z], [r, g, b] and the like. */
-export function triple<Item extends z.ZodType>(item: Item, itemsAre: string) {
-  return z.tuple([item, item, item], { error: listError(3, itemsAre) });
+export function triple<Item extends z.ZodType>(item: Item, items: ListItems) {
+  return z.tuple([item, item, item], { error: listError(3, items) });
 }
 
 /** [width, height] and the like. */
-export function pair<Item extends z.ZodType>(item: Item, itemsAre: string) {
-  return z.tuple([item, item], { error: listError(2, itemsAre) });
+export function pair<Item extends z.ZodType>(item: Item, items: ListItems) {
+  return z.tuple([item, item], { error: listError(2, items) });
 }
 
-function listError(length: number, itemsAre: string) {
-  return (issue: { input?: unknown }) => `must be a list of ${length} ${itemsAre}, got ${describeValue(issue.input)}`;
+function listError(length: number, items: ListItems) {
+  return (issue: { input?: unknown }) => withReason(issue, { code: 'notListOf', length, items, got: gotOf(issue.input) });
 }
 
 /**

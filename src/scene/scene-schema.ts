@@ -4,8 +4,9 @@ import { MESH_ASSET_NAMES } from './mesh-assets.ts';
 import { alsoWhenFieldsFail, asRefinement, cameraHasDirection, idsAreUnique, meshOnlyOnMeshes, primaryRaysWithinLimit } from './scene-rules.ts';
 import { LIMITS } from './scene-limits.ts';
 import { numberIn, pair, triple, wholeNumberIn } from './scene-schema-parts.ts';
-import { describeIssue, formatIssues } from './scene-issues.ts';
-import { describeJsonError } from '../util/json-error.ts';
+import { describeIssue, issuesOf, withReason } from './scene-issues.ts';
+import type { Issue } from '../util/issue.ts';
+import { jsonIssue } from '../util/json-error.ts';
 
 /**
  * The scene file's schema (spec §1): every field but the ids (and `version`) has a default,
@@ -23,7 +24,7 @@ const nameText = () => z.string().max(LIMITS.nameLength[1]);
 const name = () =>
   z
     .union([nameText(), z.strictObject({ en: nameText(), nl: nameText().optional() })], {
-      error: () => `must be a text, or { "en": …, "nl": … } with a text per language (en is required; each at most ${LIMITS.nameLength[1]} characters)`,
+      error: (issue) => withReason(issue, { code: 'notNameText', most: LIMITS.nameLength[1] }),
     })
     .optional()
     .describe('A friendly name for the UI: a text, or { "en": …, "nl": … } with one per language.');
@@ -170,13 +171,14 @@ export const sceneSchema = z
       'position, and supersampling² · lensSamples² · timeSamples is at most 1024. See docs/scene-format.md.',
   });
 
-export type SceneParseResult = { ok: true; scene: Scene } | { ok: false; errors: string[] };
+/** A scene, or every problem with it as data (src/util/issue.ts). */
+export type SceneParseResult = { ok: true; scene: Scene } | { ok: false; errors: Issue[] };
 
 /** Checks a scene file's parsed JSON and fills in every default; lists every problem. */
 export function parseScene(input: unknown): SceneParseResult {
   const result = sceneSchema.safeParse(input, { error: describeIssue });
   if (result.success) return { ok: true, scene: result.data };
-  return { ok: false, errors: formatIssues(result.error.issues) };
+  return { ok: false, errors: issuesOf(result.error.issues) };
 }
 
 /** `parseScene` for the text of a scene file; bad JSON gives one line with its place. */
@@ -187,7 +189,7 @@ export function parseSceneJson(text: string): SceneParseResult {
   try {
     input = JSON.parse(json);
   } catch {
-    return { ok: false, errors: [describeJsonError(json)] };
+    return { ok: false, errors: [jsonIssue(json)] };
   }
   return parseScene(input);
 }

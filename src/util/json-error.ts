@@ -1,27 +1,34 @@
+import { issueLine, type Issue, type JsonExpected } from './issue.ts';
+
 /**
- * One `path: reason` line for text that is not JSON, e.g.
+ * Why a text is not JSON, as an issue (src/util/issue.ts); in English, e.g.
  * `(root): not valid JSON at line 3, column 7: expected a value, found "}"`.
  *
  * We find the place ourselves because the engines do not agree: V8 gives no position for an
  * unexpected token, Safari none at all. This runs only after JSON.parse has failed, so it
  * only has to find where the text stops being JSON, not build anything.
  */
-export function describeJsonError(text: string): string {
+export function jsonIssue(text: string): Issue {
   const problem = findJsonProblem(text);
   const { line, column } = placeOfOffset(text, problem.offset);
-  const found = problem.offset < text.length ? JSON.stringify(text[problem.offset]) : 'the end of the text';
-  return `(root): not valid JSON at line ${line}, column ${column}: expected ${problem.expected}, found ${found}`;
+  const found = problem.offset < text.length ? text[problem.offset]! : null;
+  return { path: '(root)', reason: { code: 'notJson', line, column, expected: problem.expected, found } };
+}
+
+/** `jsonIssue` as the English line `rt validate` prints. */
+export function describeJsonError(text: string): string {
+  return issueLine(jsonIssue(text));
 }
 
 interface JsonProblem {
   offset: number;
-  expected: string;
+  expected: JsonExpected;
 }
 
 /** Scans JSON's grammar (RFC 8259) and stops at the first character that does not fit. */
 function findJsonProblem(text: string): JsonProblem {
   let offset = 0;
-  const fail = (expected: string): JsonProblem => ({ offset, expected });
+  const fail = (expected: JsonExpected): JsonProblem => ({ offset, expected });
   const skipWhitespace = () => {
     while (offset < text.length && ' \t\n\r'.includes(text[offset])) offset++;
   };
@@ -40,12 +47,12 @@ function findJsonProblem(text: string): JsonProblem {
       }
     }
     NUMBER.lastIndex = offset;
-    if (!NUMBER.test(text)) return fail('a value');
+    if (!NUMBER.test(text)) return fail({ kind: 'value' });
     offset = NUMBER.lastIndex;
     return undefined;
   };
 
-  const readContainer = (close: string, isObject: boolean): JsonProblem | undefined => {
+  const readContainer = (close: '}' | ']', isObject: boolean): JsonProblem | undefined => {
     offset++;
     skipWhitespace();
     if (text[offset] === close) {
@@ -55,11 +62,11 @@ function findJsonProblem(text: string): JsonProblem {
     for (;;) {
       if (isObject) {
         skipWhitespace();
-        if (text[offset] !== '"') return fail('a field name in double quotes');
+        if (text[offset] !== '"') return fail({ kind: 'field name' });
         const nameProblem = readString();
         if (nameProblem) return nameProblem;
         skipWhitespace();
-        if (text[offset] !== ':') return fail('":"');
+        if (text[offset] !== ':') return fail({ kind: 'colon' });
         offset++;
       }
       const valueProblem = readValue();
@@ -69,7 +76,7 @@ function findJsonProblem(text: string): JsonProblem {
         offset++;
         return undefined;
       }
-      if (text[offset] !== ',') return fail(`"," or "${close}"`);
+      if (text[offset] !== ',') return fail({ kind: 'comma or close', close });
       offset++;
     }
   };
@@ -82,25 +89,25 @@ function findJsonProblem(text: string): JsonProblem {
         offset++;
         return undefined;
       }
-      if (char < ' ') return fail("a closing '\"' (write a line break inside a string as \\n)");
+      if (char < ' ') return fail({ kind: 'closing quote, no line break' });
       if (char === '\\') {
         ESCAPE.lastIndex = offset;
-        if (!ESCAPE.test(text)) return fail('an escape such as \\n, \\" or \\u00e9');
+        if (!ESCAPE.test(text)) return fail({ kind: 'escape' });
         offset = ESCAPE.lastIndex;
       } else {
         offset++;
       }
     }
-    return fail("a closing '\"'");
+    return fail({ kind: 'closing quote' });
   };
 
   try {
     const problem = readValue();
     skipWhitespace();
-    return problem ?? fail('the end of the text');
+    return problem ?? fail({ kind: 'end of text' });
   } catch {
     // Only nesting deep enough to exhaust the stack gets here; point at where we were.
-    return fail('less deeply nested lists and objects');
+    return fail({ kind: 'less nesting' });
   }
 }
 

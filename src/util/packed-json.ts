@@ -1,3 +1,4 @@
+import type { Issue } from './issue.ts';
 import { fromBase64Url, toBase64Url } from './base64url.ts';
 import { readJson } from './read-json.ts';
 import { deflate, inflate, InflatedTooLarge } from './zlib-bytes.ts';
@@ -14,7 +15,7 @@ export async function packJson(value: unknown): Promise<string> {
 
 /** Why a payload did not unpack; the caller words it for the learner (it knows what the link was for). */
 export type PackedJsonProblem =
-  { problem: 'not-base64url' } | { problem: 'damaged' } | { problem: 'too-large'; limit: number } | { problem: 'not-json'; reason: string };
+  { problem: 'not-base64url' } | { problem: 'damaged' } | { problem: 'too-large'; limit: number } | { problem: 'not-json'; issue: Issue };
 
 export type UnpackedJson = { ok: true; value: unknown } | ({ ok: false } & PackedJsonProblem);
 
@@ -33,5 +34,5 @@ export async function unpackJson(payload: string, limit: number): Promise<Unpack
     return error instanceof InflatedTooLarge ? { ok: false, problem: 'too-large', limit: error.limit } : { ok: false, problem: 'damaged' };
   }
   const json = readJson(text);
-  return json.ok ? { ok: true, value: json.value } : { ok: false, problem: 'not-json', reason: json.error };
+  return json.ok ? { ok: true, value: json.value } : { ok: false, problem: 'not-json', issue: json.issue };
 }

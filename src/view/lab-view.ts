@@ -1,3 +1,5 @@
+import type { Issue } from '../util/issue.ts';
+import { issueText } from '../i18n/issue-text.ts';
 import { msg, str } from '@lit/localize';
 import {
   ColorManagement,
@@ -468,9 +470,9 @@ export class LabView {
   }
 
   /** Dispatches, showing the reason when the store refuses. Returns that reason. */
-  private dispatch(action: LabAction): string | undefined {
+  private dispatch(action: LabAction): Issue[] | undefined {
     const error = this.store.dispatch(action);
-    if (error) this.emit('message', error);
+    if (error) this.emit('message', error.map(issueText).join('\n'));
     return error;
   }
 

@@ -1,6 +1,7 @@
 import { msg } from '@lit/localize';
 import { type Object3D, type PerspectiveCamera, Raycaster } from 'three';
 import { itemName } from '../i18n/scene-item-names.ts';
+import type { Issue } from '../util/issue.ts';
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
 import type { Store } from '../lab-state/store.ts';
@@ -33,8 +34,8 @@ export interface InputParts {
   readonly navigation: ViewNavigation;
   /** The drawn rays, or null. */
   rayLayer(): RayLayer | null;
-  /** Dispatches, showing the reason when the store refuses. Returns that reason. */
-  dispatch(action: LabAction): string | undefined;
+  /** Dispatches, showing the reasons when the store refuses. Returns them. */
+  dispatch(action: LabAction): Issue[] | undefined;
   /** The ray under the pointer, or null when it leaves the rays. */
   rayHover(detail: RayHoverDetail | null): void;
   /** Something to tell the user (a toast). */

@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { describe, expect, it } from 'vitest';
 import { combineViews, TaskViews } from '../../src/app/task-views.ts';
 import { parseLevel, type Level } from '../../src/quest/level-schema.ts';
@@ -11,7 +12,7 @@ function level(): Level {
       file.tasks[2].view = { frame: ['lamp'], rays: { transparency: 0.4 } };
     }),
   );
-  if (!result.ok) throw new Error(result.errors.join('\n'));
+  if (!result.ok) throw new Error(result.errors.map(issueLine).join('\n'));
   return result.level;
 }
 

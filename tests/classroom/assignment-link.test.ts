@@ -3,12 +3,19 @@ import { describe, expect, it } from 'vitest';
 import type { Assignment } from '../../src/classroom/assignment.ts';
 import { assignmentId, assignmentProgressKey } from '../../src/classroom/assignment-id.ts';
 import { assignmentUrl, decodeAssignment, encodeAssignment, isAssignmentFragment } from '../../src/classroom/assignment-link.ts';
+import { issueLine } from '../../src/util/issue.ts';
 import { fromBase64Url, toBase64Url } from '../../src/util/base64url.ts';
 import { deflate } from '../../src/util/zlib-bytes.ts';
 import { loadLevels } from '../../src/quest/level-index.ts';
 import { PROGRESS_KEY } from '../../src/quest/progress-store.ts';
 
 const levelsFolder = new URL('../../levels/', import.meta.url);
+
+/** A decoded link with its reasons as the English lines `rt validate` prints. */
+async function decoded(...args: Parameters<typeof decodeAssignment>) {
+  const result = await decodeAssignment(...args);
+  return result.ok ? result : { ...result, reasons: result.reasons.map(issueLine) };
+}
 const readLevelFile = (name: string) => (existsSync(new URL(name, levelsFolder)) ? readFileSync(new URL(name, levelsFolder), 'utf8') : undefined);
 const catalog = loadLevels(readFileSync(new URL('index.json', levelsFolder), 'utf8'), readLevelFile);
 
@@ -35,7 +42,7 @@ describe('assignment links', () => {
     const fragment = await encodeAssignment(lesson);
     expect(fragment).toMatch(/^#\/a\/1\.[A-Za-z0-9_-]+$/);
     expect(isAssignmentFragment(fragment)).toBe(true);
-    expect(await decodeAssignment(fragment, catalog)).toEqual({ ok: true, assignment: lesson });
+    expect(await decoded(fragment, catalog)).toEqual({ ok: true, assignment: lesson });
   });
 
   it('is short enough for a QR code a phone reads from a projector', async () => {
@@ -46,28 +53,28 @@ describe('assignment links', () => {
 
   it('refuses a link that was cut short', async () => {
     const fragment = await encodeAssignment(lesson);
-    const result = await decodeAssignment(fragment.slice(0, -6));
+    const result = await decoded(fragment.slice(0, -6));
     expect(result).toMatchObject({ ok: false, kind: 'damaged' });
   });
 
   it('refuses a link with a changed character (the checksum catches it)', async () => {
     const fragment = await encodeAssignment(lesson);
-    for (const at of [1, 5, 20, 60]) expect(await decodeAssignment(flip(fragment, at))).toMatchObject({ ok: false, kind: 'damaged' });
+    for (const at of [1, 5, 20, 60]) expect(await decoded(flip(fragment, at))).toMatchObject({ ok: false, kind: 'damaged' });
   });
 
   it('refuses characters that are not base64url, and a missing version', async () => {
-    expect(await decodeAssignment('#/a/1.abc$def')).toEqual({ ok: false, kind: 'damaged', reasons: [expect.stringContaining('characters')] });
-    expect(await decodeAssignment('#/a/abcdef')).toEqual({ ok: false, kind: 'damaged', reasons: ['the version number is missing'] });
+    expect(await decoded('#/a/1.abc$def')).toEqual({ ok: false, kind: 'damaged', reasons: [expect.stringContaining('characters')] });
+    expect(await decoded('#/a/abcdef')).toEqual({ ok: false, kind: 'damaged', reasons: ['the version number is missing'] });
   });
 
   it('says which version a link from another app version has', async () => {
     const fragment = (await encodeAssignment(lesson)).replace('#/a/1.', '#/a/7.');
-    expect(await decodeAssignment(fragment)).toEqual({ ok: false, kind: 'other-version', reasons: ['the link has version "7"; this app opens version 1'] });
+    expect(await decoded(fragment)).toEqual({ ok: false, kind: 'other-version', reasons: ['the link has version "7"; this app opens version 1'] });
   });
 
   it('lists the fields of a well-formed link whose assignment is wrong', async () => {
     const edited = { ...lesson, levels: [], otherLevels: 'secret', extra: 1 } as unknown as Assignment;
-    const result = await decodeAssignment(await encodeAssignment(edited), catalog);
+    const result = await decoded(await encodeAssignment(edited), catalog);
     expect(result.ok).toBe(false);
     if (result.ok) return;
     expect(result.kind).toBe('damaged');
@@ -82,7 +89,7 @@ describe('assignment links', () => {
 
   it('refuses required tasks of levels outside the assignment, and duplicate levels', async () => {
     const edited: Assignment = { ...lesson, levels: ['01-introduction', '01-introduction'], requiredTasks: { 'other-level': ['x'] } };
-    const result = await decodeAssignment(await encodeAssignment(edited));
+    const result = await decoded(await encodeAssignment(edited));
     expect(result).toEqual({
       ok: false,
       kind: 'damaged',
@@ -92,7 +99,7 @@ describe('assignment links', () => {
 
   it('lists the levels and tasks this game does not have', async () => {
     const foreign: Assignment = { ...lesson, levels: ['01-introduction', '09-caustics', '10-fog'], requiredTasks: { '01-introduction': ['orbit', 'juggle'] } };
-    expect(await decodeAssignment(await encodeAssignment(foreign), catalog)).toEqual({
+    expect(await decoded(await encodeAssignment(foreign), catalog)).toEqual({
       ok: false,
       kind: 'unknown-levels',
       reasons: ['09-caustics', '10-fog', '01-introduction/juggle'],
@@ -101,11 +108,11 @@ describe('assignment links', () => {
 
   it('carries an optional class code and xAPI home page, checked', async () => {
     const school = { ...lesson, classCode: '3B', xapiHomePage: 'https://school.example/' };
-    expect(await decodeAssignment(await encodeAssignment(school), catalog)).toEqual({ ok: true, assignment: school });
+    expect(await decoded(await encodeAssignment(school), catalog)).toEqual({ ok: true, assignment: school });
     // Without them the link and the id are the same as before the fields existed.
     expect(assignmentId({ ...school, classCode: undefined, xapiHomePage: undefined })).toBe(assignmentId(lesson));
     expect(assignmentId(school)).not.toBe(assignmentId(lesson));
-    const bad = await decodeAssignment(await encodeAssignment({ ...lesson, classCode: '3 B', xapiHomePage: 'ftp://school.example' }), catalog);
+    const bad = await decoded(await encodeAssignment({ ...lesson, classCode: '3 B', xapiHomePage: 'ftp://school.example' }), catalog);
     expect(bad.ok).toBe(false);
     if (!bad.ok) expect(bad.reasons.join('\n')).toMatch(/classCode[\s\S]*xapiHomePage|xapiHomePage[\s\S]*classCode/);
   });
@@ -114,7 +121,7 @@ describe('assignment links', () => {
     const padded = `{"version": 1, "title": "x"${' '.repeat(5 * 1024 * 1024)}}`;
     const bomb = `#/a/1.${toBase64Url(await deflate(new TextEncoder().encode(padded)))}`;
     expect(bomb.length).toBeLessThan(20_000);
-    expect(await decodeAssignment(bomb, catalog)).toEqual({
+    expect(await decoded(bomb, catalog)).toEqual({
       ok: false,
       kind: 'damaged',
       reasons: ['it unpacks to more than 1024 kB, more than any assignment'],
@@ -124,7 +131,7 @@ describe('assignment links', () => {
   it('refuses ids longer than 64 characters and more than 100 required tasks per level, quoting no long value', async () => {
     const long = 'a'.repeat(100_000);
     const tasks = Array.from({ length: 101 }, (_, i) => `t${i}`);
-    const result = await decodeAssignment(
+    const result = await decoded(
       await encodeAssignment({ ...lesson, levels: [long, '01-introduction'], requiredTasks: { [long]: ['orbit'], '01-introduction': tasks } }),
     );
     expect(result).toMatchObject({ ok: false, kind: 'damaged' });

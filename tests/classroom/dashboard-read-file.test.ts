@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { issueLine } from '../../src/util/issue.ts';
 import { readExportFile } from '../../src/classroom/dashboard-read-file.ts';
 import { exportCsv } from '../../src/classroom/export-csv.ts';
 import { newProgress } from '../../src/quest/progress.ts';
@@ -10,7 +11,7 @@ const json = (value: unknown) => JSON.stringify(value);
 const reason = (name: string, text: string) => {
   const read = readExportFile(name, text);
   if (read.ok) return 'read';
-  return read.detail === undefined ? read.reason : `${read.reason}: ${read.detail}`;
+  return read.detail === undefined ? read.reason : `${read.reason}: ${issueLine(read.detail)}`;
 };
 
 describe('reading one dropped file for the dashboard', () => {

@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { copyFileSync, mkdirSync, mkdtempSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -31,7 +32,7 @@ afterEach(() => rmSync(join(cacheDir, '..'), { recursive: true, force: true }));
 
 function referenceScene(): Scene {
   const parsed = parseSceneJson(readFileSync(REFERENCE, 'utf8'));
-  if (!parsed.ok) throw new Error(parsed.errors.join('\n'));
+  if (!parsed.ok) throw new Error(parsed.errors.map(issueLine).join('\n'));
   return parsed.scene;
 }
 

@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { equationOf, pixelAverage, toByte } from '../../src/debugger/debug-equation.ts';
@@ -15,7 +16,7 @@ import { matte, pointLight, sceneFrom } from '../support/test-scene.ts';
 
 function levelScene(file: string): Scene {
   const parsed = parseLevel(JSON.parse(readFileSync(new URL(`../../levels/${file}.level.json`, import.meta.url), 'utf8')));
-  if (!parsed.ok) throw new Error(parsed.errors.join('\n'));
+  if (!parsed.ok) throw new Error(parsed.errors.map(issueLine).join('\n'));
   return parsed.level.scene;
 }
 

@@ -13,6 +13,8 @@ import { QuestEngine } from '../../src/quest/quest-engine.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 import { parseSceneJson } from '../../src/scene/scene-schema.ts';
 import { toBase64Url } from '../../src/util/base64url.ts';
+import { issueLine, type Issue } from '../../src/util/issue.ts';
+import { isRecord } from '../../src/util/is-record.ts';
 import { readJson } from '../../src/util/read-json.ts';
 import { deflate } from '../../src/util/zlib-bytes.ts';
 import { simulatedExport } from '../support/class-exports.ts';
@@ -49,7 +51,12 @@ const levelFiles = new Map(readdirSync(levelsFolder).map((name) => [name, readFi
 const firstLevel = JSON.parse(levelFiles.get('01-introduction.level.json') ?? '{}') as unknown;
 const defaultSurvey = JSON.parse(readFileSync(new URL('../../src/classroom/surveys/default.survey.json', import.meta.url), 'utf8')) as unknown;
 
-const isReasons = (value: unknown) => Array.isArray(value) && value.length > 0 && value.every((reason) => typeof reason === 'string' && reason.length > 0);
+/** A reason line, or an issue (src/util/issue.ts) whose English line says something. */
+const isReason = (reason: unknown) =>
+  typeof reason === 'string'
+    ? reason.length > 0
+    : isRecord(reason) && typeof reason.path !== 'undefined' && isRecord(reason.reason) && issueLine(reason as unknown as Issue).length > 0;
+const isReasons = (value: unknown) => Array.isArray(value) && value.length > 0 && value.every(isReason);
 
 /** A parse result of the `{ ok, errors }` shape, judged. */
 function judged(result: { ok: boolean; errors?: unknown; reasons?: unknown; reason?: unknown }): Outcome {

@@ -12,6 +12,7 @@ import { issueText } from '../../src/i18n/issue-text.ts';
 import { loadLevels } from '../../src/quest/level-index.ts';
 import { parseProgress } from '../../src/quest/progress-store.ts';
 import { newProgress } from '../../src/quest/progress.ts';
+import { issueLine, type Issue } from '../../src/util/issue.ts';
 import { simulatedExport } from '../support/class-exports.ts';
 import { inDutch } from '../support/page-locale.ts';
 
@@ -32,7 +33,7 @@ interface Level {
 }
 
 /** The reasons the real level loader gives level 3 with `change` made to a copy, through levels/index.json. */
-function reasonsWith(change: (level: Level) => void): string[] {
+function reasonsWith(change: (level: Level) => void): Issue[] {
   const level = structuredClone(shading);
   change(level);
   const catalog = loadLevels(levelText('index.json'), (fileName) => (fileName === SHADING ? JSON.stringify(level) : levelText(fileName)));
@@ -107,7 +108,7 @@ const LEVEL_MISTAKES: Record<string, (level: Level) => void> = {
 };
 
 /** The reasons of the level index, through the same loader (levels/index.json with one mistake). */
-function indexReasons(): string[] {
+function indexReasons(): Issue[] {
   const index = JSON.parse(levelText('index.json')) as {
     chapters: { id: string; levels: string[] }[];
     ideas: Record<string, unknown>;
@@ -134,7 +135,7 @@ function indexReasons(): string[] {
 const clock = { monotonicMs: () => 0, wallMs: () => Date.parse('2026-12-01T10:00:00Z') };
 
 /** Saved progress that is not ours, of another version, and with its events out of order. */
-function progressReasons(): string[] {
+function progressReasons(): Issue[] {
   const progress = newProgress(clock) as unknown as Record<string, unknown> & { log: { events: unknown[] } };
   const event = (t: number, id: string) => ({ t, id, type: 'tab.hidden' });
   const outOfOrder = { ...progress, log: { ...progress.log, events: [event(20, 'tab.1'), event(10, 'tab.2')] } };
@@ -147,7 +148,7 @@ function progressReasons(): string[] {
 }
 
 /** An assignment link that lists a level twice, requires tasks of a level it does not list, and has a wrong class code and home page. */
-async function assignmentReasons(): Promise<string[]> {
+async function assignmentReasons(): Promise<Issue[]> {
   const assignment = {
     version: 1,
     title: 'Lesson 2',
@@ -185,6 +186,12 @@ describe('a broken level in Dutch', () => {
       'tasks[4].guide: "9,9" moet "kolom,rij" zijn, binnen het scherm van 6×4, geteld vanaf 0',
     ]);
     expect(reasonsOf('a badge for a missing task').map(issueText)).toEqual(['badges[0].tasks[0]: dit level heeft geen taak "no-such-task"']);
+    // Said by their codes (local-reason.ts), not read back out of English.
+    expect(
+      ['no solution', 'an optional info step', 'a guide to a hidden panel', 'a guide to a pixel off the screen', 'a badge for a missing task'].flatMap((name) =>
+        reasonsOf(name).map((issue) => issue.reason.code),
+      ),
+    ).toEqual(['solutionRequired', 'infoNotMandatory', 'panelNotShown', 'pixelOffScreen', 'noSuchTask']);
   });
 
   it('says the goal, condition and path checks in Dutch', () => {
@@ -203,13 +210,14 @@ describe('a broken level in Dutch', () => {
     ]);
   });
 
-  it('says the view and option checks in Dutch, each of several on its own', () => {
+  it('says the view and option checks in Dutch, each of several on a line of its own', () => {
     expect(reasonsOf('a view framing rays without a pixel').map(issueText)).toEqual([
       'tasks[2].view.frame: "pixel-rays" kan alleen als de weergave ook een pixel kiest ("pixel": [kolom, rij])',
     ]);
     expect(reasonsOf('a view from nowhere').map(issueText)).toEqual(['tasks[2].view.from: moet een richting zijn, niet [0, 0, 0]']);
     expect(reasonsOf('ray options with two mistakes').map(issueText)).toEqual([
-      expect.stringMatching(/^tasks\[2\]\.view\.rays: onbekend veld "glow" \(bekend zijn: showRays, .*\); hideNoHit moet true of false zijn, maar is "yes"$/),
+      expect.stringMatching(/^tasks\[2\]\.view\.rays: onbekend veld "glow" \(bekend zijn: showRays, .*\)$/),
+      'tasks[2].view.rays: hideNoHit moet true of false zijn, maar is "yes"',
     ]);
   });
 
@@ -314,23 +322,26 @@ function wordedTexts(path: string): string[][] {
   return found;
 }
 
-/** Every reason the mistakes above produce, once each. */
-async function everyReason(): Promise<string[]> {
-  return [
-    ...new Set([
-      ...Object.values(LEVEL_MISTAKES).flatMap((mistake) => reasonsWith(mistake)),
-      ...indexReasons(),
-      ...progressReasons(),
-      ...(await assignmentReasons()),
-    ]),
+type Problem = Issue;
+const lineOf = (problem: Problem) => issueLine(problem);
+
+/** Every reason the mistakes above produce, once each (by its English line). */
+async function everyReason(): Promise<Problem[]> {
+  const all = [
+    ...Object.values(LEVEL_MISTAKES).flatMap((mistake) => reasonsWith(mistake)),
+    ...indexReasons(),
+    ...progressReasons(),
+    ...(await assignmentReasons()),
   ];
+  return [...new Map(all.map((problem) => [lineOf(problem), problem])).values()];
 }
 
 describe('every reason of the level, progress and assignment loaders in Dutch', () => {
   inDutch();
 
   it('is produced above, and no reason comes out still in English', async () => {
-    const english = await everyReason();
+    const problems = await everyReason();
+    const english = problems.map(lineOf);
     // Every worded text of the sources is in some reason produced: a new message without a mistake that shows it fails here.
     for (const path of REASON_SOURCES) {
       for (const pieces of wordedTexts(path)) {
@@ -342,8 +353,9 @@ describe('every reason of the level, progress and assignment loaders in Dutch', 
     }
     // Reasons that are field names or literals, the same in both languages: none so far.
     const sameInBothLanguages: string[] = [];
-    for (const line of english) {
-      const dutch = issueText(line);
+    for (const problem of problems) {
+      const line = lineOf(problem);
+      const dutch = issueText(problem);
       if (sameInBothLanguages.includes(line)) continue;
       expect(dutch, line).not.toBe(line);
       expect(dutch.slice(dutch.indexOf(': ') + 2), line).not.toMatch(
@@ -354,8 +366,8 @@ describe('every reason of the level, progress and assignment loaders in Dutch', 
 });
 
 describe('every reason back in English', () => {
-  it("is the loader's own line again, though the Dutch patterns are loaded", async () => {
-    const english = await everyReason();
-    expect(english.map(issueText)).toEqual(english);
+  it("is the loader's own line again, though the Dutch sayings are loaded", async () => {
+    const problems = await everyReason();
+    expect(problems.map(issueText)).toEqual(problems.map(lineOf));
   });
 });

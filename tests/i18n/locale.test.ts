@@ -1,44 +1,32 @@
 // The run-time wiring of the language, on a stand-in page (the unit tests run without a browser):
 // the real generated Dutch module is loaded, msg() answers in Dutch, <html lang> follows, and
-// every element on the page is asked to render again.
-import { msg, str } from '@lit/localize';
+// an element that asked to (LocalizedElement, via updateWhenLocaleChanges) renders again.
+import { msg, str, updateWhenLocaleChanges } from '@lit/localize';
+import type { ReactiveController } from 'lit';
 import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import { LOCALE_KEY } from '../../src/i18n/locale-choice.ts';
 import { progressProblemText } from '../../src/i18n/progress-problem-text.ts';
-import { rerenderAll } from '../../src/i18n/rerender-all.ts';
 import { MemoryStorage, type ProgressProblem } from '../../src/quest/progress-store.ts';
 
-/** A stand-in element: counts its re-renders, may hold a shadow root with more elements. */
+/** A stand-in element on the page: counts its re-renders, as a Lit element connects its controllers. */
 class FakeElement {
   updates = 0;
-  shadowRoot: { querySelectorAll(selector: string): FakeElement[] } | null = null;
-  constructor(
-    readonly lit: boolean,
-    inside: FakeElement[] = [],
-  ) {
-    if (inside.length > 0) this.shadowRoot = { querySelectorAll: () => inside };
-    if (!lit) (this as { requestUpdate?: unknown }).requestUpdate = undefined;
+  readonly controllers: ReactiveController[] = [];
+  addController(controller: ReactiveController): void {
+    this.controllers.push(controller);
+  }
+  connect(): void {
+    for (const controller of this.controllers) controller.hostConnected?.();
   }
   requestUpdate(): void {
     this.updates++;
   }
 }
 
-describe('rerenderAll', () => {
-  it('asks every Lit element to render, inside shadow roots too, and skips plain elements', () => {
-    const deep = new FakeElement(true);
-    const plain = new FakeElement(false, [deep]);
-    const inner = new FakeElement(true);
-    const outer = new FakeElement(true, [inner, plain]);
-    rerenderAll({ querySelectorAll: () => [outer] } as unknown as ParentNode);
-    expect([outer.updates, inner.updates, deep.updates]).toEqual([1, 1, 1]);
-  });
-});
-
 describe('the app language at run time', () => {
   const storage = new MemoryStorage();
-  const lit = new FakeElement(true);
-  const page = { documentElement: { lang: 'en' }, querySelectorAll: () => [lit] };
+  const lit = new FakeElement();
+  const page = { documentElement: { lang: 'en' } };
   let locale: typeof import('../../src/i18n/locale.ts');
   let numbers: typeof import('../../src/i18n/number-format.ts');
 
@@ -48,6 +36,9 @@ describe('the app language at run time', () => {
     vi.stubGlobal('localStorage', storage);
     vi.stubGlobal('location', { search: '?lang=nl' });
     locale = await import('../../src/i18n/locale.ts');
+    // What LocalizedElement's constructor does (src/ui/controls/localized-element.ts).
+    updateWhenLocaleChanges(lit as unknown as Parameters<typeof updateWhenLocaleChanges>[0]);
+    lit.connect();
     numbers = await import('../../src/i18n/number-format.ts');
   });
 

@@ -5,6 +5,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { reduce } from '../../src/lab-state/lab-reducer.ts';
+import { issueLine } from '../../src/util/issue.ts';
 import { BVH_MAX_DEPTH, initialState, type LabState } from '../../src/lab-state/lab-state.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 
@@ -35,7 +36,7 @@ describe('pixel.selected: "must be inside the columns×rows screen"', () => {
       [0.5, 0],
     ] as [number, number][]) {
       const reduction = reduce(state, { type: 'pixel.selected', pixel });
-      expect(reduction.error).toBe(`pixel: must be inside the ${columns}×${rows} screen, got ${pixel[0]},${pixel[1]}`);
+      expect(reduction.error?.map(issueLine)).toEqual([`pixel: must be inside the ${columns}×${rows} screen, got ${pixel[0]},${pixel[1]}`]);
       expect(reduction.state).toBe(state);
     }
   });
@@ -77,7 +78,7 @@ describe('bvh.changed: "a whole number from 0 to BVH_MAX_DEPTH"', () => {
   it('refuses −1, BVH_MAX_DEPTH + 1 and a fraction, and keeps the state', () => {
     for (const depth of [-1, BVH_MAX_DEPTH + 1, 1.5]) {
       const reduction = reduce(state, { type: 'bvh.changed', changes: { depth } });
-      expect(reduction.error).toBe(`bvh.depth: must be a whole number from 0 to ${BVH_MAX_DEPTH}, got ${depth}`);
+      expect(reduction.error?.map(issueLine)).toEqual([`bvh.depth: must be a whole number from 0 to ${BVH_MAX_DEPTH}, got ${depth}`]);
       expect(reduction.state).toBe(state);
     }
   });

@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { issueLine } from '../../src/util/issue.ts';
 import type { LabAction } from '../../src/lab-state/lab-action.ts';
 import { Store } from '../../src/lab-state/store.ts';
 import { DEFAULT_GIZMO, DEFAULT_RAY_VIEW, initialState } from '../../src/lab-state/lab-state.ts';
@@ -66,9 +67,9 @@ describe('the store and its named actions', () => {
     const store = newStore();
     const before = store.state;
     const error = store.dispatch({ type: 'settings.changed', changes: { supersampling: 40 } });
-    expect(error).toBe('settings.supersampling: must be between 1 and 8, got 40');
+    expect(error?.map(issueLine)).toEqual(['settings.supersampling: must be between 1 and 8, got 40']);
     expect(store.state).toBe(before);
-    expect(store.dispatch({ type: 'material.changed', id: 'nope', changes: { ambient: 0.5 } })).toBe('objects: there is no object "nope"');
+    expect(store.dispatch({ type: 'material.changed', id: 'nope', changes: { ambient: 0.5 } })?.map(issueLine)).toEqual(['objects: there is no object "nope"']);
   });
 
   it("changing a light type keeps its place and colour and takes the new type's defaults", () => {
@@ -92,13 +93,13 @@ describe('the store and its named actions', () => {
     const store = newStore();
     const before = store.state;
     const bogus = { type: 'light.changed', id: 'spot', changes: { type: 'laser' } } as unknown as Parameters<Store['dispatch']>[0];
-    expect(store.dispatch(bogus)).toMatch(/^light\.changed: /);
+    expect(store.dispatch(bogus)?.map(issueLine)).toEqual([expect.stringMatching(/^light\.changed: /)]);
     expect(store.state).toBe(before);
   });
 
   it('selects only pixels on the screen, and forgets one the screen shrinks away from', () => {
     const store = newStore();
-    expect(store.dispatch({ type: 'pixel.selected', pixel: [8, 0] })).toBe('pixel: must be inside the 8×6 screen, got 8,0');
+    expect(store.dispatch({ type: 'pixel.selected', pixel: [8, 0] })?.map(issueLine)).toEqual(['pixel: must be inside the 8×6 screen, got 8,0']);
     store.dispatch({ type: 'pixel.selected', pixel: [7, 5] });
     expect(store.state.selectedPixel).toEqual([7, 5]);
     store.dispatch({ type: 'camera.changed', changes: { pixels: [4, 4] } });

@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { initialState } from '../../src/lab-state/lab-state.ts';
@@ -19,7 +20,7 @@ import { countPixelTests, type RayTests } from '../../src/tracer/triangle-test-c
 
 function readLevel(id: string): Level {
   const parsed = parseLevelJson(readFileSync(new URL(`../../levels/${id}.level.json`, import.meta.url), 'utf8'));
-  if (!parsed.ok) throw new Error(parsed.errors.join('\n'));
+  if (!parsed.ok) throw new Error(parsed.errors.map(issueLine).join('\n'));
   return parsed.level;
 }
 

@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { describe, expect, it } from 'vitest';
 import { initialState } from '../../src/lab-state/lab-state.ts';
 import { reduce } from '../../src/lab-state/lab-reducer.ts';
@@ -10,7 +11,7 @@ type Json = Record<string, unknown>;
 
 function errorsOf(change: (level: Json & { tasks: Json[] }) => void): string[] {
   const result = parseLevel(levelFile(change));
-  return result.ok ? [] : result.errors;
+  return result.ok ? [] : result.errors.map(issueLine);
 }
 
 describe('a declared view in a level file', () => {
@@ -21,7 +22,7 @@ describe('a declared view in a level file', () => {
         level.tasks[0].view = { frame: ['pixel-rays'], pixel: [3, 2], rays: { hideNoHit: true } };
       }),
     );
-    if (!result.ok) throw new Error(result.errors.join('\n'));
+    if (!result.ok) throw new Error(result.errors.map(issueLine).join('\n'));
     expect(result.level.view?.frame).toEqual(['ball', 'lamp', 'camera']);
     expect(result.level.tasks[0].view).toEqual({ frame: ['pixel-rays'], pixel: [3, 2], rays: { hideNoHit: true } });
   });

@@ -6,6 +6,7 @@ import { checkGoal, eventMatches, fitsGoal, isRightPrediction, NO_EVENTS, tallyA
 import { goalSchema, type Goal } from '../../src/quest/goal.ts';
 import { problemWithPath, readPath } from '../../src/quest/state-path.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
+import { englishReason } from '../../src/util/issue.ts';
 
 const start = initialState(defaultScene());
 
@@ -38,12 +39,16 @@ describe('paths into the state', () => {
   });
 
   it('are checked against a sample state, with reasons', () => {
+    const problemWith = (path: string) => {
+      const reason = problemWithPath(path, start);
+      return reason && englishReason(reason);
+    };
     expect(problemWithPath('scene.camera.fov', start)).toBeUndefined();
-    expect(problemWithPath('scene.camera.fov.x', start)).toBe('scene.camera.fov is a number: it has no field "x"');
-    expect(problemWithPath('scene.settings[0]', start)).toBe('scene.settings is not a list, so [0] cannot select from it');
-    expect(problemWithPath('rays.hideNoHits', start)).toMatch(/^no field "hideNoHits" in rays \(it has showRays, hideNoHit, /);
-    expect(problemWithPath('Scene', start)).toBe('no field "Scene" (it has scene, selection, selectedPixel, rays, gizmo, bvh, look)');
-    expect(problemWithPath('3d', start)).toBe('must start with a field name, like "scene.settings.shadows", got "3d"');
+    expect(problemWith('scene.camera.fov.x')).toBe('scene.camera.fov is a number: it has no field "x"');
+    expect(problemWith('scene.settings[0]')).toBe('scene.settings is not a list, so [0] cannot select from it');
+    expect(problemWith('rays.hideNoHits')).toMatch(/^no field "hideNoHits" in rays \(it has showRays, hideNoHit, /);
+    expect(problemWith('Scene')).toBe('no field "Scene" (it has scene, selection, selectedPixel, rays, gizmo, bvh, look)');
+    expect(problemWith('3d')).toBe('must start with a field name, like "scene.settings.shadows", got "3d"');
   });
 });
 

@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { describe, expect, it } from 'vitest';
 import type { LabAction } from '../../src/lab-state/lab-action.ts';
 import { reduce } from '../../src/lab-state/lab-reducer.ts';
@@ -161,7 +162,7 @@ describe('walking nested goals', () => {
       }),
     );
     expect(parsed.ok).toBe(false);
-    const errors = parsed.ok ? [] : parsed.errors;
+    const errors = parsed.ok ? [] : parsed.errors.map(issueLine);
     expect(errors.some((line) => line.startsWith('tasks[0].goal.any[0].all[0].any[0].all[0].where.rays.hideNoHits: no field "hideNoHits"'))).toBe(true);
     expect(errors.some((line) => line.startsWith('tasks[0].goal.any[0].all[0].any[0].all[1].state: no field "nope"'))).toBe(true);
   });

@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import type { LabAction } from '../../src/lab-state/lab-action.ts';
@@ -103,7 +104,7 @@ describe('every task guides to a control its solution uses', () => {
 
   for (const entry of catalog.chapters.flatMap((chapter) => chapter.entries)) {
     it(`${entry.id}`, () => {
-      if (!entry.ok) throw new Error(`levels/${entry.id}.level.json is broken:\n${entry.errors.join('\n')}`);
+      if (!entry.ok) throw new Error(`levels/${entry.id}.level.json is broken:\n${entry.errors.map(issueLine).join('\n')}`);
       const guided = entry.level.tasks.filter((task) => task.guide && task.solution);
       expect(guided.length, `${entry.id} has guided tasks`).toBeGreaterThan(0);
       for (const task of guided) {

@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { readdirSync, readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { FIGURE_FILES } from '../../src/quest/figure-files.ts';
@@ -22,16 +23,16 @@ const withFigure = (figure: unknown) => parseLevel(levelFile((level) => (level.t
 describe('a task’s figure', () => {
   it('is a shipped figure with an alt text in the level’s languages', () => {
     const result = withFigure({ src: 'lambert-torch.svg', alt: ALT });
-    if (!result.ok) throw new Error(result.errors.join('\n'));
+    if (!result.ok) throw new Error(result.errors.map(issueLine).join('\n'));
     expect(result.level.tasks[0].figure).toEqual({ src: 'lambert-torch.svg', alt: ALT });
   });
 
   it('needs its alt text, and a figure the app ships', () => {
-    expect(withFigure({ src: 'lambert-torch.svg' })).toEqual({ ok: false, errors: ['tasks[0].figure.alt: is required'] });
+    expect(withFigure({ src: 'lambert-torch.svg' })).toEqual({ ok: false, errors: [{ path: 'tasks[0].figure.alt', reason: { code: 'required' } }] });
     // The reason lists the figures there are ("must be "lambert-torch.svg"" while it is the only one).
     const refused = (src: string) => {
       const result = withFigure({ src, alt: ALT });
-      return result.ok ? [] : result.errors;
+      return result.ok ? [] : result.errors.map(issueLine);
     };
     expect(refused('torch.svg')).toEqual([expect.stringMatching(/^tasks\[0\]\.figure\.src: must be .*"?lambert-torch\.svg"?.*, got "torch\.svg"$/)]);
     expect(refused('../levels/index.json')).toEqual([

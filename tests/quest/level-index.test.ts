@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { describe, expect, it } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { IDEA_MAX, loadLevelGuide, loadLevels, playableLevels } from '../../src/quest/level-index.ts';
@@ -13,7 +14,7 @@ describe('loading the levels of an index', () => {
     const [first, second, third] = catalog.chapters[0].entries;
     expect(first.ok).toBe(true);
     expect(second).toMatchObject({ id: 'broken-level', ok: false });
-    expect(!second.ok && second.errors[0]).toMatch(/^tasks\[0\]\.goal\.event: must be one of/);
+    expect(!second.ok && issueLine(second.errors[0]!)).toMatch(/^tasks\[0\]\.goal\.event: must be one of/);
     expect(third.ok).toBe(true);
     expect(playableLevels(catalog).map((level) => level.id)).toEqual(['first', 'third']);
   });
@@ -26,7 +27,7 @@ describe('loading the levels of an index', () => {
       'moved.level.json': JSON.stringify(levelWithId('moved', 'other-chapter')),
     };
     const entries = loadLevels(index, (name) => files[name]).chapters[0].entries;
-    expect(entries.map((entry) => (entry.ok ? 'ok' : entry.errors))).toEqual([
+    expect(entries.map((entry) => (entry.ok ? 'ok' : entry.errors.map(issueLine)))).toEqual([
       ['(root): there is no file levels/missing.level.json'],
       ['(root): not valid JSON at line 1, column 15: expected "," or "}", found the end of the text'],
       ['id: must be "renamed", the name index.json lists this file under, got "old-name"'],
@@ -42,8 +43,8 @@ describe('loading the levels of an index', () => {
         { id: 'b', title: 'B', levels: ['one'] },
       ],
     });
-    expect(loadLevels(twice, () => undefined)).toEqual({ chapters: [], errors: ['chapters[1].levels[0]: "one" is used more than once'] });
-    expect(loadLevels('{"version": 2, "chapters": []}', () => undefined).errors).toEqual([
+    expect(loadLevels(twice, () => undefined).errors.map(issueLine)).toEqual(['chapters[1].levels[0]: "one" is used more than once']);
+    expect(loadLevels('{"version": 2, "chapters": []}', () => undefined).errors.map(issueLine)).toEqual([
       'version: must be 1, got 2',
       'chapters: must have at least 1 items, got a list of 0 items',
     ]);
@@ -73,7 +74,7 @@ describe('the ideas and presets of an index, for teachers', () => {
   });
 
   it('refuses ideas and presets that name a level no chapter lists, a level twice, a preset id twice, an idea longer than a line', () => {
-    const errors = (extra: Record<string, unknown>) => loadLevels(index(extra), () => undefined).errors;
+    const errors = (extra: Record<string, unknown>) => loadLevels(index(extra), () => undefined).errors.map(issueLine);
     expect(errors({ ideas: { one: idea, gone: idea } })).toEqual(['ideas.gone: "gone" is not a level of any chapter']);
     expect(errors({ presets: [{ ...preset, levels: ['one', 'four', 'one'] }] })).toEqual([
       'presets[0].levels[1]: "four" is not a level of any chapter',

@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { describe, expect, it } from 'vitest';
 import { parseLevel, parseLevelJson } from '../../src/quest/level-schema.ts';
 import { localize } from '../../src/quest/localized-text.ts';
@@ -9,13 +10,13 @@ type Json = Record<string, unknown>;
 function errorsOf(change: (level: Json & { tasks: Json[] }) => void): string[] {
   const result = parseLevel(levelFile(change));
   if (result.ok) throw new Error('expected the level to be rejected');
-  return result.errors;
+  return result.errors.map(issueLine);
 }
 
 describe('a valid level', () => {
   it('gets its defaults: mandatory, 10 points (5 when optional), no hints, no badges', () => {
     const result = parseLevel(levelFile((level) => delete level.tasks[1].hints));
-    if (!result.ok) throw new Error(result.errors.join('\n'));
+    if (!result.ok) throw new Error(result.errors.map(issueLine).join('\n'));
     const [orbit, predict, , redBall] = result.level.tasks;
     expect(orbit).toMatchObject({ mandatory: true, points: 10 });
     expect(redBall).toMatchObject({ mandatory: false, points: 5 });
@@ -113,7 +114,8 @@ describe('field messages read `path: reason`, like scene files', () => {
     const [unknownType] = errorsOf((level) => (level.tasks[0].solution = [{ type: 'view.spun' }]));
     expect(unknownType).toMatch(/^tasks\[0\]\.solution\[0\]\.type: must be one of scene\.loaded, .*, got "view\.spun"$/);
     expect(errorsOf((level) => (level.tasks[0].solution = [{ type: 'rays.changed', changes: { hideNoHit: 'yes', glow: 1 } }]))).toEqual([
-      'tasks[0].solution[0].changes: hideNoHit must be a boolean, got "yes"; unknown field "glow" (known: showRays, hideNoHit, hideNegligible, negligibleThreshold, transparency, radius, dynamicRadius, minRadius, maxRadius, contributionColor, colorBlindPalette, animate, animationSpeed, animatePixelByPixel, loop, showSamplePoints, colorByTime)',
+      'tasks[0].solution[0].changes: hideNoHit must be a boolean, got "yes"',
+      'tasks[0].solution[0].changes: unknown field "glow" (known: showRays, hideNoHit, hideNegligible, negligibleThreshold, transparency, radius, dynamicRadius, minRadius, maxRadius, contributionColor, colorBlindPalette, animate, animationSpeed, animatePixelByPixel, loop, showSamplePoints, colorByTime)',
     ]);
   });
 
@@ -140,10 +142,10 @@ describe('field messages read `path: reason`, like scene files', () => {
   });
 
   it('gives one line for text that is not JSON', () => {
-    expect(parseLevelJson('{ "version": 1, }')).toEqual({
-      ok: false,
-      errors: ['(root): not valid JSON at line 1, column 17: expected a field name in double quotes, found "}"'],
-    });
+    const notJson = parseLevelJson('{ "version": 1, }');
+    expect(notJson.ok ? [] : notJson.errors.map(issueLine)).toEqual([
+      '(root): not valid JSON at line 1, column 17: expected a field name in double quotes, found "}"',
+    ]);
   });
 });
 
@@ -207,7 +209,7 @@ describe('rules across fields (once every field is valid)', () => {
         };
       }),
     );
-    expect(result.ok ? [] : result.errors).toEqual([]);
+    expect(result.ok ? [] : result.errors.map(issueLine)).toEqual([]);
   });
 
   it('wants a guide the learner can see: a shown panel, an allowed control, an item in the scene', () => {
@@ -241,7 +243,7 @@ describe('rules across fields (once every field is valid)', () => {
         (level.ui as { panels: string[] }).panels.push('screen-preview');
       }),
     );
-    expect(result.ok ? [] : result.errors).toEqual([]);
+    expect(result.ok ? [] : result.errors.map(issueLine)).toEqual([]);
   });
 
   it("wants a task's evidence to name rays by their way from the camera, and things and a pixel the scene has", () => {

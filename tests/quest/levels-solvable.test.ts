@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { existsSync, readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { initialState } from '../../src/lab-state/lab-state.ts';
@@ -34,7 +35,7 @@ for (const chapter of catalog.chapters) {
   describe(`chapter ${chapter.id}`, () => {
     for (const entry of chapter.entries) {
       it(`${entry.id} is valid and solved by its solutions`, () => {
-        if (!entry.ok) throw new Error(`levels/${entry.id}.level.json is broken:\n${entry.errors.join('\n')}`);
+        if (!entry.ok) throw new Error(`levels/${entry.id}.level.json is broken:\n${entry.errors.map(issueLine).join('\n')}`);
         const { level } = entry;
         const clock = new FakeClock();
         // Every level is open: each one is tested on its own.

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { newProgress, pointsOf, type Progress } from '../../src/quest/progress.ts';
 import { exportProgress, MemoryStorage, parseProgressJson, PROGRESS_KEY, ProgressStore, type KeyValueStorage } from '../../src/quest/progress-store.ts';
+import { issueLine } from '../../src/util/issue.ts';
 import { progressProblemText, saveProblemText } from '../../src/i18n/progress-problem-text.ts';
 import { QuestEngine } from '../../src/quest/quest-engine.ts';
 import { initialState } from '../../src/lab-state/lab-state.ts';
@@ -176,12 +177,13 @@ describe('export, import and reset', () => {
   });
 
   it('refuses a file that is not progress, with reasons', () => {
-    expect(parseProgressJson('{"version": 1, "objects": []}')).toEqual({
+    const inLines = (read: ReturnType<typeof parseProgressJson>) => (read.ok ? read : { ...read, errors: read.errors.map(issueLine) });
+    expect(inLines(parseProgressJson('{"version": 1, "objects": []}'))).toEqual({
       ok: false,
       kind: 'foreign',
       errors: ['kind: must be "ray-tracer-quest-progress" in a progress file, got "kind" nothing'],
     });
-    expect(parseProgressJson('[1, 2]')).toMatchObject({
+    expect(inLines(parseProgressJson('[1, 2]'))).toMatchObject({
       ok: false,
       kind: 'foreign',
       errors: ['kind: must be "ray-tracer-quest-progress" in a progress file, got a list of 2 items'],

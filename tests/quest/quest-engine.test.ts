@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { describe, expect, it } from 'vitest';
 import { initialState } from '../../src/lab-state/lab-state.ts';
 import { Store } from '../../src/lab-state/store.ts';
@@ -83,7 +84,7 @@ describe('playing a level', () => {
     const store = setup.open('first');
     store.dispatch({ type: 'view.orbited' });
     setup.engine.predict('predict', { choice: 1 });
-    expect(store.dispatch({ type: 'settings.changed', changes: { supersampling: 40 } })).toMatch(/^settings.supersampling/);
+    expect(store.dispatch({ type: 'settings.changed', changes: { supersampling: 40 } })).toMatchObject([{ path: 'settings.supersampling' }]);
     expect(setup.status().supersample).toBe('current');
   });
 
@@ -197,7 +198,7 @@ describe('the gate', () => {
     const setup = setUp({ levels: [levelWithId('first'), broken, levelWithId('third')] });
     passFirstLevel(setup);
     const [map] = setup.engine.map();
-    expect(map.levels.map(({ id, status, errors, points }) => ({ id, status, errors, points }))).toEqual([
+    expect(map.levels.map(({ id, status, errors, points }) => ({ id, status, errors: errors.map(issueLine), points }))).toEqual([
       { id: 'first', status: 'passed', errors: [], points: 30 },
       { id: 'broken', status: 'broken', errors: ['tasks: must have at least 3 items, got a list of 0 items'], points: 0 },
       { id: 'third', status: 'open', errors: [], points: 0 },

@@ -1,5 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { parseScene } from '../../src/scene/scene-schema.ts';
+import { parseScene, type SceneParseResult } from '../../src/scene/scene-schema.ts';
+import { issueLine } from '../../src/util/issue.ts';
+
+/** A result with its problems as the English lines `rt validate` prints. */
+function inLines(result: SceneParseResult) {
+  return result.ok ? result : { ok: false, errors: result.errors.map(issueLine) };
+}
 
 // Every number a scene file may hold, tried just inside and just outside its limits; the
 // cross-field limit on primary rays per pixel (distribution-effects §1).
@@ -7,7 +13,7 @@ import { parseScene } from '../../src/scene/scene-schema.ts';
 function errorsOf(fields: Record<string, unknown>): string[] {
   const result = parseScene({ version: 1, ...fields });
   if (result.ok) throw new Error('expected the scene to be rejected');
-  return result.errors;
+  return result.errors.map(issueLine);
 }
 
 /** A scene file with one value set at a dotted path such as `camera.pixels.0`. */
@@ -88,10 +94,10 @@ describe('limits at both ends', () => {
     const shownPath = path.replace(/\.(\d+)/g, '[$1]');
     for (const inside of [lowest, highest]) {
       const result = parseScene(withValueAt(path, inside));
-      expect(result.ok ? [] : result.errors).toEqual([]);
+      expect(result.ok ? [] : result.errors.map(issueLine)).toEqual([]);
     }
     for (const outside of [lowest - step, highest + step]) {
-      expect(parseScene(withValueAt(path, outside))).toEqual({
+      expect(inLines(parseScene(withValueAt(path, outside)))).toEqual({
         ok: false,
         errors: [`${shownPath}: must be between ${lowest} and ${highest}, got ${outside}`],
       });

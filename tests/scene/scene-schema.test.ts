@@ -1,5 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { parseScene, parseSceneJson } from '../../src/scene/scene-schema.ts';
+import { parseScene, parseSceneJson, type SceneParseResult } from '../../src/scene/scene-schema.ts';
+import { issueLine } from '../../src/util/issue.ts';
+
+/** A result with its problems as the English lines `rt validate` prints. */
+function inLines(result: SceneParseResult) {
+  return result.ok ? result : { ok: false, errors: result.errors.map(issueLine) };
+}
 
 /** The example scene of spec §1, word for word. */
 const SPEC_EXAMPLE = {
@@ -35,7 +41,7 @@ const SPEC_EXAMPLE = {
 function errorsOf(fields: Record<string, unknown>): string[] {
   const result = parseScene({ version: 1, ...fields });
   if (result.ok) throw new Error('expected the scene to be rejected');
-  return result.errors;
+  return result.errors.map(issueLine);
 }
 
 /** A scene file with one object whose fields are `object` (plus an id). */
@@ -81,7 +87,7 @@ describe('defaults', () => {
       objects: [{ id: 'ball' }],
       lights: [{ id: 'bulb' }, { id: 'spot', type: 'spot' }, { id: 'panel', type: 'area' }],
     });
-    if (!result.ok) throw new Error(result.errors.join('\n'));
+    if (!result.ok) throw new Error(result.errors.map(issueLine).join('\n'));
     const common = {
       position: [0, 3, 0],
       color: [1, 1, 1],
@@ -133,7 +139,7 @@ describe('defaults', () => {
 describe('valid scenes', () => {
   it('accepts the example of spec §1 and keeps its values', () => {
     const result = parseScene(SPEC_EXAMPLE);
-    if (!result.ok) throw new Error(result.errors.join('\n'));
+    if (!result.ok) throw new Error(result.errors.map(issueLine).join('\n'));
     expect(result.scene).toMatchObject(SPEC_EXAMPLE);
   });
 
@@ -156,7 +162,7 @@ describe('valid scenes', () => {
       ...withObject({ name }),
       ...withLight({ name: { en: 'Key light', nl: 'Hoofdlamp' } }),
     });
-    if (!result.ok) throw new Error(result.errors.join('\n'));
+    if (!result.ok) throw new Error(result.errors.map(issueLine).join('\n'));
     expect([result.scene.name, result.scene.objects[0].name, result.scene.lights[0].name]).toEqual([
       { en: 'Two mirrors' },
       name,
@@ -173,7 +179,7 @@ describe('each kind of problem reads as "path: reason"', () => {
     ['no version', {}, 'version: is required'],
     ['another version', { version: 2 }, 'version: must be 1, got 2'],
   ])('the whole file is %s', (_what, input, message) => {
-    expect(parseScene(input)).toEqual({ ok: false, errors: [message] });
+    expect(inLines(parseScene(input))).toEqual({ ok: false, errors: [message] });
   });
 
   it.each<[Record<string, unknown>, string]>([
@@ -305,11 +311,11 @@ describe('scene file text', () => {
     ['{ "version": 01 }', 'at line 1, column 15: expected "," or "}", found "1"'],
     ['{ "version": 1 } extra', 'at line 1, column 18: expected the end of the text, found "e"'],
   ])('%j is not JSON', (text, where) => {
-    expect(parseSceneJson(text)).toEqual({ ok: false, errors: [`(root): not valid JSON ${where}`] });
+    expect(inLines(parseSceneJson(text))).toEqual({ ok: false, errors: [`(root): not valid JSON ${where}`] });
   });
 
   it('checks the scene once the JSON is fine', () => {
-    expect(parseSceneJson('{ "version": 1, "camera": { "fov": 400 } }')).toEqual({
+    expect(inLines(parseSceneJson('{ "version": 1, "camera": { "fov": 400 } }'))).toEqual({
       ok: false,
       errors: ['camera.fov: must be between 1 and 179, got 400'],
     });
@@ -397,7 +403,7 @@ describe('random input', () => {
       expect(parseScene(result.scene)).toEqual(result);
     } else {
       expect(result.errors.length).toBeGreaterThan(0);
-      for (const error of result.errors) expect(error).toMatch(/^\S+: \S/);
+      for (const error of result.errors) expect(issueLine(error)).toMatch(/^\S+: \S/);
     }
   }
 

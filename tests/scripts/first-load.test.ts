@@ -25,7 +25,7 @@ function dist(appBytes: number): string {
     'assets/nl.js': noise(2000),
     'assets/levels-en.js': noise(3000),
     'assets/levels-nl.js': noise(3100),
-    'assets/issue-translation.js': noise(500),
+    'assets/local-reason.js': noise(500),
     'assets/view.js': noise(150_000),
     'assets/three.js': noise(100_000),
     'assets/dashboard.js': noise(40_000),
@@ -36,18 +36,11 @@ function dist(appBytes: number): string {
     'src/app.ts': {
       file: 'assets/app.js',
       imports: ['_shared.js'],
-      dynamicImports: [
-        'src/locales/nl.ts',
-        'src/i18n/issue-translation.ts',
-        'virtual:level-texts/en',
-        'virtual:level-texts/nl',
-        'src/view.ts',
-        'src/dashboard.ts',
-      ],
+      dynamicImports: ['src/locales/nl.ts', 'src/i18n/local-reason.ts', 'virtual:level-texts/en', 'virtual:level-texts/nl', 'src/view.ts', 'src/dashboard.ts'],
     },
     'virtual:level-texts/en': { file: 'assets/levels-en.js' },
     'virtual:level-texts/nl': { file: 'assets/levels-nl.js' },
-    'src/i18n/issue-translation.ts': { file: 'assets/issue-translation.js', imports: ['_shared.js'] },
+    'src/i18n/local-reason.ts': { file: 'assets/local-reason.js', imports: ['_shared.js'] },
     '_shared.js': { file: 'assets/shared.js' },
     'src/locales/nl.ts': { file: 'assets/nl.js', imports: ['_shared.js'] },
     'src/view.ts': { file: 'assets/view.js', imports: ['_three.js', '_shared.js'] },
@@ -78,7 +71,7 @@ describe('the first-load budget', () => {
 
   it('lists each on-demand part with the chunks only it adds, largest first', () => {
     const parts = afterFirstScreen(dist(1000));
-    expect(parts.map((part) => part.source)).toEqual(['src/view.ts', 'src/dashboard.ts', 'src/i18n/issue-translation.ts']);
+    expect(parts.map((part) => part.source)).toEqual(['src/view.ts', 'src/dashboard.ts', 'src/i18n/local-reason.ts']);
     // The view brings three.js; the shared chunk is in the first load already.
     expect(parts[0].gzipBytes).toBeGreaterThan(250_000);
     expect(parts[1].gzipBytes).toBeGreaterThan(140_000);

@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { parseScene } from '../../src/scene/scene-schema.ts';
 import type { Scene } from '../../src/scene/scene.ts';
 import type { MeshLibrary } from '../../src/scene/mesh-data.ts';
@@ -6,7 +7,7 @@ import { buildTracerScene, type TracerScene } from '../../src/tracer/tracer-scen
 /** A scene from a partial scene file, with the schema's defaults; fails loudly if invalid. */
 export function sceneFrom(file: Record<string, unknown>): Scene {
   const result = parseScene({ version: 1, ...file });
-  if (!result.ok) throw new Error(`test scene is invalid:\n${result.errors.join('\n')}`);
+  if (!result.ok) throw new Error(`test scene is invalid:\n${result.errors.map(issueLine).join('\n')}`);
   return result.scene;
 }
 

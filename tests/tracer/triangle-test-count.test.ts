@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { DoubleSide, Ray as ThreeRay, Vector3 } from 'three';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { loadMeshesFromDisk } from '../../src/scene/load-meshes-node.ts';
@@ -130,7 +131,7 @@ describe('counting the tests of one ray against a scene', () => {
       ],
       lights: [{ id: 'lamp', position: [2, 4, 3] }],
     });
-    if (!parsed.ok) throw new Error(parsed.errors.join('\n'));
+    if (!parsed.ok) throw new Error(parsed.errors.map(issueLine).join('\n'));
     return buildTracerScene(parsed.scene, meshes);
   }
   const ray = (origin: Vector3, target: Vector3) => new Ray().set(origin, target.clone().sub(origin).normalize());

@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { reduce } from '../../src/lab-state/lab-reducer.ts';
 import { type LabState, initialState } from '../../src/lab-state/lab-state.ts';
@@ -24,7 +25,7 @@ function labState(camera: object = {}): LabState {
       { id: 'pill', shape: 'mesh', mesh: 'capsule', position: [2, 0.5, 0] },
     ],
   });
-  if (!parsed.ok) throw new Error(parsed.errors.join('\n'));
+  if (!parsed.ok) throw new Error(parsed.errors.map(issueLine).join('\n'));
   return initialState(parsed.scene);
 }
 
@@ -46,7 +47,7 @@ describe('the BVH view options in the app state', () => {
     const start = labState();
     for (const depth of [-1, 21, 2.5, Number.NaN]) {
       const { state, error } = reduce(start, { type: 'bvh.changed', changes: { depth } });
-      expect(error).toMatch(/^bvh\.depth: must be a whole number from 0 to 20/);
+      expect(error?.map(issueLine)).toEqual([expect.stringMatching(/^bvh\.depth: must be a whole number from 0 to 20/)]);
       expect(state).toBe(start);
     }
   });
@@ -55,7 +56,10 @@ describe('the BVH view options in the app state', () => {
     expect(labActionSchema.safeParse({ type: 'bvh.changed', changes: { showBounds: true } }).success).toBe(true);
     const wrong = labActionSchema.safeParse({ type: 'bvh.changed', changes: { depth: 'deep', colour: 1 } });
     expect(wrong.success).toBe(false);
-    expect(wrong.error?.issues[0].message).toMatch(/depth must be a number.*unknown field "colour"/);
+    expect(wrong.error?.issues.map((issue) => issue.message)).toEqual([
+      'depth must be a number, got "deep"',
+      expect.stringMatching(/^unknown field "colour" \(known: /),
+    ]);
   });
 });
 

@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { PerspectiveCamera } from 'three';
 import { describe, expect, it } from 'vitest';
 import { initialState, type LabState } from '../../src/lab-state/lab-state.ts';
@@ -9,7 +10,7 @@ import { nudgeAction, nudgeNote, type ViewAxes, viewAxesOf } from '../../src/vie
 
 function sceneOf(input: unknown): Scene {
   const parsed = parseScene(input);
-  if (!parsed.ok) throw new Error(parsed.errors.join('\n'));
+  if (!parsed.ok) throw new Error(parsed.errors.map(issueLine).join('\n'));
   return parsed.scene;
 }
 

@@ -1,3 +1,4 @@
+import { issueLine } from '../../src/util/issue.ts';
 import { type BufferGeometry, type Mesh, type MeshPhongMaterial, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
 import { type LabAction } from '../../src/lab-state/lab-action.ts';
@@ -13,7 +14,7 @@ const TRIANGLE: MeshData = { positions: new Float32Array([0, 0, 0, 1, 0, 0, 0, 1
 function apply(state: LabState, ...actions: LabAction[]): LabState {
   for (const action of actions) {
     const { state: next, error } = reduce(state, action);
-    if (error) throw new Error(error);
+    if (error) throw new Error(error.map(issueLine).join('\n'));
     state = next;
   }
   return state;

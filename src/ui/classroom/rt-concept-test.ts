@@ -1,5 +1,5 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
 import type { ConceptTestSubmission } from '../../classroom/concept-test/concept-answers.ts';
 import type { ConceptForm, ConceptItem } from '../../classroom/concept-test/concept-bank-schema.ts';
 import { conceptBankNow, formItems, loadConceptBank } from '../../classroom/concept-test/concept-bank.ts';
@@ -8,6 +8,7 @@ import { currentLocale } from '../../i18n/locale.ts';
 import { choiceOrder } from '../../quest/choice-order.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
 import { classroomStyles } from './classroom-styles.ts';
+import { LocalizedElement } from '../controls/localized-element.ts';
 
 /** What the page hands out: which test, and the answers. */
 export interface ConceptTestHandIn {
@@ -25,7 +26,7 @@ export interface ConceptTestHandIn {
  * not sure"): an item left open would count as wrong without saying so.
  * @fires concept-test-submitted - detail: ConceptTestHandIn; save it (QuestSession.submitConceptTest).
  */
-export class RtConceptTest extends LitElement {
+export class RtConceptTest extends LocalizedElement {
   static override properties = {
     phase: {},
     form: {},

@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import { choiceQuestions, optionTexts } from '../../classroom/quiz-options.ts';
@@ -29,7 +30,7 @@ const exportFiles = () => import('../../classroom/export-files.ts');
  * participant code the browser's install id is read from localStorage.
  * @fires export-failed - detail: the message, when a file could not be made (the lab shows it as a toast).
  */
-export class RtExportMenu extends LitElement {
+export class RtExportMenu extends LocalizedElement {
   static override properties = {
     progress: { attribute: false },
     participant: { attribute: false },

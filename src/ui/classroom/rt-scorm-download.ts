@@ -1,9 +1,10 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
 import { fetchBuildFiles, listBuildFiles } from '../../app/build-files.ts';
 import { fnv1a } from '../../classroom/assignment-id.ts';
 import type { ScormVersion } from '../../classroom/scorm/lms-api.ts';
 import { classroomStyles } from './classroom-styles.ts';
+import { LocalizedElement } from '../controls/localized-element.ts';
 
 /**
  * The teacher page's SCORM downloads: the assignment as a package that a school's learning
@@ -13,7 +14,7 @@ import { classroomStyles } from './classroom-styles.ts';
  * page came from; the dev server and the USB-stick copy have no list of them, and the
  * buttons then say so instead of making a package that would not run.
  */
-export class RtScormDownload extends LitElement {
+export class RtScormDownload extends LocalizedElement {
   static override properties = {
     link: { attribute: false },
     assignmentTitle: { attribute: false },

@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import type { Locale } from '../../quest/localized-text.ts';
 import { FocusReturn } from '../controls/focus-return.ts';
 import { classroomStyles } from './classroom-styles.ts';
@@ -14,7 +15,7 @@ import './rt-survey.ts';
  * The survey's own `survey-submitted` event bubbles out of this element unchanged.
  * @fires survey-later - the learner goes back to the lab without handing in.
  */
-export class RtSurveyPage extends LitElement {
+export class RtSurveyPage extends LocalizedElement {
   static override properties = { surveyId: { attribute: 'survey-id' }, locale: {}, levels: { attribute: false } };
 
   static override styles = [

@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import { checkAnswers, cleanAnswers, type AnswerProblem, type SurveyAnswers, type SurveySubmission } from '../../classroom/survey-answers.ts';
 import type { Survey, SurveyQuestion } from '../../classroom/survey-schema.ts';
 import { surveyById } from '../../classroom/surveys.ts';
@@ -16,7 +17,7 @@ import { classroomStyles } from './classroom-styles.ts';
  * @fires survey-submitted - detail: SurveySubmission (the survey's id, the time, the answers);
  * save it next to the progress (QuestSession.submitSurvey, survey-store.ts), and pass it to the exports.
  */
-export class RtSurvey extends LitElement {
+export class RtSurvey extends LocalizedElement {
   static override properties = {
     surveyId: { attribute: 'survey-id' },
     locale: {},

@@ -1,8 +1,9 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html } from 'lit';
 import { conceptBankNow, formItems, loadConceptBank } from '../../classroom/concept-test/concept-bank.ts';
 import { CONCEPT_TEST_ORDERS, type ConceptTestOrder } from '../../classroom/concept-test/concept-test-plan.ts';
 import { classroomStyles } from './classroom-styles.ts';
+import { LocalizedElement } from '../controls/localized-element.ts';
 
 /**
  * @summary The teacher page's section for the concept test (issue 40, "learning measured"):
@@ -11,7 +12,7 @@ import { classroomStyles } from './classroom-styles.ts';
  * bank in this version of the app there is nothing to choose, and it says so.
  * @fires concept-test-change - detail: ConceptTestOrder, or undefined for none.
  */
-export class RtTeacherConceptTest extends LitElement {
+export class RtTeacherConceptTest extends LocalizedElement {
   static override properties = { value: { attribute: false } };
 
   static override styles = [

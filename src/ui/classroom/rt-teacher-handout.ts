@@ -1,7 +1,8 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
 import { MAX_NUMBERED_CODES, numberedCodes } from '../../classroom/participant-code.ts';
 import { classroomStyles } from './classroom-styles.ts';
+import { LocalizedElement } from '../controls/localized-element.ts';
 
 /**
  * @summary The printable handout of an assignment: a page with its title, QR code and link,
@@ -9,7 +10,7 @@ import { classroomStyles } from './classroom-styles.ts';
  * `5H2-01` … `5H2-30`, named after the class code (classroom/participant-code.ts). On screen
  * it is the number of slips and a Print button; the sheet itself shows only in print.
  */
-export class RtTeacherHandout extends LitElement {
+export class RtTeacherHandout extends LocalizedElement {
   static override properties = {
     url: {},
     qr: {},

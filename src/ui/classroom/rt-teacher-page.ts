@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { html, LitElement, nothing } from 'lit';
+import { html, nothing } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import QRCode from 'qrcode';
 import { loadBrowserCatalog, loadBrowserLevelGuide } from '../../app/level-catalog-browser.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
@@ -42,7 +43,7 @@ import './rt-teacher-shelf.ts';
  * The page is a list of sections (`render`): a new part of the assignment is a function
  * `(assignment, change) => template` in a file of its own, added to that list with one line.
  */
-export class RtTeacherPage extends LitElement {
+export class RtTeacherPage extends LocalizedElement {
   static override properties = {
     assignment: { state: true },
     url: { state: true },

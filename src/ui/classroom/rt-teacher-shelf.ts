@@ -1,9 +1,10 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
 import type { SavedAssignment } from '../../classroom/saved-assignments.ts';
 import { CLASS_CODE, TITLE_MAX } from '../../classroom/assignment-schema.ts';
 import { formatLocale } from '../../i18n/format-locale.ts';
 import { classroomStyles } from './classroom-styles.ts';
+import { LocalizedElement } from '../controls/localized-element.ts';
 
 /** What the page is asked to do with the kept assignments. */
 export type ShelfRequest =
@@ -22,7 +23,7 @@ export type ShelfRequest =
  *
  * @fires shelf-request - CustomEvent<ShelfRequest>.
  */
-export class RtTeacherShelf extends LitElement {
+export class RtTeacherShelf extends LocalizedElement {
   static override properties = {
     entries: { attribute: false },
     current: {},

@@ -1,4 +1,5 @@
-import { html, LitElement, type CSSResultGroup, type TemplateResult } from 'lit';
+import { html, type CSSResultGroup, type TemplateResult } from 'lit';
+import { LocalizedElement } from './localized-element.ts';
 import { controlStyles } from './controls.css.ts';
 
 /** The detail of a control's `input` and `change` events. */
@@ -10,7 +11,7 @@ export type ValueDetail<T> = { value: T };
  * a name for its owner, a disabled state, and the owner's reason for refusing its last
  * change (`error`), shown next to it until the owner clears it.
  */
-export class ControlElement extends LitElement {
+export class ControlElement extends LocalizedElement {
   static override properties = {
     label: {},
     tooltip: {},

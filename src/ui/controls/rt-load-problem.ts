@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html } from 'lit';
+import { LocalizedElement } from './localized-element.ts';
 import { controlStyles } from './controls.css.ts';
 
 /**
@@ -12,7 +13,7 @@ import { controlStyles } from './controls.css.ts';
  * browser's words, shown small for whoever helps; `closable`: a Close button too, for a
  * message over a page that goes on without what failed (the Dutch texts).
  */
-export class RtLoadProblem extends LitElement {
+export class RtLoadProblem extends LocalizedElement {
   static override properties = { text: {}, reason: {}, closable: { type: Boolean } };
 
   static override styles = [

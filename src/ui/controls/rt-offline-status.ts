@@ -1,4 +1,5 @@
-import { css, html, LitElement } from 'lit';
+import { css, html } from 'lit';
+import { LocalizedElement } from './localized-element.ts';
 import { offlineCopy, type OfflineCopyState } from '../../app/offline-copy.ts';
 import { offlineCopyText } from './offline-copy-text.ts';
 
@@ -7,7 +8,7 @@ import { offlineCopyText } from './offline-copy-text.ts';
  * network (src/app/offline-copy.ts), kept current while the service worker stores it.
  * A warning sign as well as the words when it does not.
  */
-export class RtOfflineStatus extends LitElement {
+export class RtOfflineStatus extends LocalizedElement {
   static override properties = { state: { state: true } };
 
   static override styles = css`

@@ -1,4 +1,5 @@
-import { css, html, LitElement } from 'lit';
+import { css, html } from 'lit';
+import { LocalizedElement } from './localized-element.ts';
 import { controlStyles } from './controls.css.ts';
 
 /** The detail of rt-panel-section's `section-toggle` event. */
@@ -15,7 +16,7 @@ const STORAGE_PREFIX = 'rt-section:';
  * @fires section-toggle - CustomEvent<SectionToggleDetail> (bubbles, composed) when the
  *   user opens or closes it (for the app's `panel.opened` action).
  */
-export class RtPanelSection extends LitElement {
+export class RtPanelSection extends LocalizedElement {
   static override properties = {
     heading: {},
     name: { reflect: true },

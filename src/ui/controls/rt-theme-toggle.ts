@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html } from 'lit';
+import { LocalizedElement } from './localized-element.ts';
 import { applyTheme, savedTheme, type ThemeChoice } from '../../app/theme.ts';
 
 const NEXT: Record<ThemeChoice, ThemeChoice> = { system: 'light', light: 'dark', dark: 'system' };
@@ -7,7 +8,7 @@ const NEXT: Record<ThemeChoice, ThemeChoice> = { system: 'light', light: 'dark',
 /**
  * @summary A button that cycles the colour theme: system → light → dark, remembered.
  */
-export class RtThemeToggle extends LitElement {
+export class RtThemeToggle extends LocalizedElement {
   static override properties = { choice: { state: true } };
 
   static override styles = css`

@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html } from 'lit';
+import { LocalizedElement } from './localized-element.ts';
 
 interface Toast {
   id: number;
@@ -23,7 +24,7 @@ const MS_PER_CHARACTER = 60;
  * is put again on top each time a message comes, above the level map, the Menu and a dialog
  * opened before it.
  */
-export class RtToast extends LitElement {
+export class RtToast extends LocalizedElement {
   static override properties = { toasts: { state: true } };
 
   static override styles = css`

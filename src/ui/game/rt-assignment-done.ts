@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import { fire, gameStyles } from './game-styles.ts';
 
 /**
@@ -8,7 +9,7 @@ import { fire, gameStyles } from './game-styles.ts';
  *
  * @fires open-map - CustomEvent<null>: the learner wants the level map (to replay a level).
  */
-export class RtAssignmentDone extends LitElement {
+export class RtAssignmentDone extends LocalizedElement {
   static override properties = { heading: {} };
   static override styles = [
     gameStyles,

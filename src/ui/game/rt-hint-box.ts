@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import type { Locale } from '../../quest/localized-text.ts';
 import type { TaskView } from '../../quest/quest-engine.ts';
 import { fire, gameStyles } from './game-styles.ts';
@@ -15,7 +16,7 @@ import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
  *
  * @fires quest-command - `hint` or `show-me` for the task.
  */
-export class RtHintBox extends LitElement {
+export class RtHintBox extends LocalizedElement {
   static override properties = { task: { attribute: false }, locale: {} };
   static override styles = [
     gameStyles,

@@ -1,6 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { issueText } from '../../i18n/issue-text.ts';
-import { css, html, LitElement, nothing, type TemplateResult } from 'lit';
+import { css, html, nothing, type TemplateResult } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import type { LevelMapEntry, ChapterMapView } from '../../quest/level-map.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
 import { plainLevelText } from '../../quest/text-markup.ts';
@@ -17,7 +18,7 @@ export type MapChoice = { kind: 'level'; id: string } | { kind: 'free-lab' } | {
  *
  * @fires map-choice - CustomEvent<MapChoice>.
  */
-export class RtLevelMap extends LitElement {
+export class RtLevelMap extends LocalizedElement {
   static override properties = {
     chapters: { attribute: false },
     locale: {},

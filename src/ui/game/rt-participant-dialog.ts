@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import { PARTICIPANT_CODE } from '../../classroom/learner-identity.ts';
 import { normalParticipantCode } from '../../classroom/participant-code.ts';
 import { fire, gameStyles } from './game-styles.ts';
@@ -12,7 +13,7 @@ import { fire, gameStyles } from './game-styles.ts';
  *
  * @fires participant-code - CustomEvent<string>: the code, trimmed and in capitals (participant-code.ts).
  */
-export class RtParticipantDialog extends LitElement {
+export class RtParticipantDialog extends LocalizedElement {
   static override properties = { heading: {}, note: {}, consent: {}, problem: { state: true }, informed: { state: true } };
   static override styles = [
     gameStyles,

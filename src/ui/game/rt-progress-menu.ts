@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import type { DamagedSave } from '../../app/damaged-saves.ts';
 import type { WithdrawReport } from '../../app/withdraw-data.ts';
 import type { Locale } from '../../quest/localized-text.ts';
@@ -26,7 +27,7 @@ export type ProgressCommand =
  *
  * @fires progress-command - CustomEvent<ProgressCommand>.
  */
-export class RtProgressMenu extends LitElement {
+export class RtProgressMenu extends LocalizedElement {
   static override properties = {
     locale: {},
     colorBlind: { type: Boolean, attribute: 'color-blind' },

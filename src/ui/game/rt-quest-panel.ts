@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
+import { css, html, nothing, type PropertyValues } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import type { Locale } from '../../quest/localized-text.ts';
 import type { LevelView } from '../../quest/quest-engine.ts';
 import { plainLevelText } from '../../quest/text-markup.ts';
@@ -19,7 +20,7 @@ import { type TaskFocus, type TaskScroll, taskScroll } from './task-scroll.ts';
  *
  * @fires quest-command - everything the learner asks (QuestCommand).
  */
-export class RtQuestPanel extends LitElement {
+export class RtQuestPanel extends LocalizedElement {
   static override properties = {
     view: { attribute: false },
     locale: {},

@@ -1,6 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { ContextConsumer } from '@lit/context';
-import { css, html, LitElement, nothing, type TemplateResult } from 'lit';
+import { css, html, nothing, type TemplateResult } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import type { Prediction } from '../../quest/goal-check.ts';
 import { explanationOf, predictionOf, predictionParts, type PictureGoal, type PredictionGoal, type QuizGoal } from '../../quest/goal.ts';
 import type { Locale } from '../../quest/localized-text.ts';
@@ -24,7 +25,7 @@ import { quizPicturesContext } from './quiz-pictures.ts';
  *
  * @fires quest-command - `predict`, `reflect` (with the choice or number) and `continue`.
  */
-export class RtQuiz extends LitElement {
+export class RtQuiz extends LocalizedElement {
   static override properties = { task: { attribute: false }, locale: {}, picked: { state: true }, typed: { state: true }, problem: { state: true } };
   static override styles = [
     gameStyles,

@@ -1,12 +1,13 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import { gameStyles } from './game-styles.ts';
 
 /**
  * @summary The learner's score in the header: points and a badge count; the button opens
  * a popover listing the badges by name.
  */
-export class RtScore extends LitElement {
+export class RtScore extends LocalizedElement {
   static override properties = { points: { type: Number }, badges: { attribute: false } };
   static override styles = [
     gameStyles,

@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing, type TemplateResult } from 'lit';
+import { css, html, nothing, type TemplateResult } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import { predictionOf } from '../../quest/goal.ts';
 import type { Locale } from '../../quest/localized-text.ts';
 import type { Task } from '../../quest/level-schema.ts';
@@ -26,7 +27,7 @@ import './rt-quiz.ts';
  *
  * @fires quest-command - next, skip, explain (and, from inside, hint, show-me, answer).
  */
-export class RtTaskCard extends LitElement {
+export class RtTaskCard extends LocalizedElement {
   static override properties = { task: { attribute: false }, locale: {}, expanded: { type: Boolean, reflect: true }, opened: { state: true } };
   static override styles = [
     gameStyles,

@@ -1,8 +1,9 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html } from 'lit';
 import type { WithdrawReport } from '../../app/withdraw-data.ts';
 import { fire, gameStyles } from './game-styles.ts';
 import type { ProgressCommand } from './rt-progress-menu.ts';
+import { LocalizedElement } from '../controls/localized-element.ts';
 
 /**
  * @summary "Withdraw and delete my data" in the Menu: a confirmation that says what will be
@@ -11,7 +12,7 @@ import type { ProgressCommand } from './rt-progress-menu.ts';
  * afresh, asking for a code).
  * @fires progress-command - `{ kind: 'withdraw', done }`; `done` gets the report.
  */
-export class RtWithdraw extends LitElement {
+export class RtWithdraw extends LocalizedElement {
   static override properties = { report: { state: true } };
 
   static override styles = [

@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
+import { css, html, nothing, type PropertyValues } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import type { ScreenBox } from './guide-targets.ts';
 import { styleMap } from 'lit/directives/style-map.js';
 
@@ -14,7 +15,7 @@ const GAP_PX = 6;
  * up afresh each time, so an element rendered anew is found again. Nothing runs while no
  * ring is shown. With reduced motion the ring is a thick, still outline.
  */
-export class RtGuideRing extends LitElement {
+export class RtGuideRing extends LocalizedElement {
   static override properties = { locate: { attribute: false }, box: { state: true } };
   static override styles = css`
     :host {

@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement, type PropertyValues } from 'lit';
+import { css, html, type PropertyValues } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import { controlStyles } from '../controls/controls.css.ts';
 import { gestureHelp, type KeyHelp, keyHelp } from '../../view/view-commands.ts';
 
@@ -10,7 +11,7 @@ import { gestureHelp, type KeyHelp, keyHelp } from '../../view/view-commands.ts'
  *
  * @fires help-closed - Event: the dialog closed (the owner sets `open` back to false).
  */
-export class RtHelpPanel extends LitElement {
+export class RtHelpPanel extends LocalizedElement {
   static override properties = { open: { type: Boolean, reflect: true } };
 
   static override styles = [

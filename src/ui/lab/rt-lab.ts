@@ -1,6 +1,8 @@
 import { msg, str } from '@lit/localize';
+import { issueText } from '../../i18n/issue-text.ts';
 import { ContextProvider } from '@lit/context';
-import { html, LitElement, nothing, type PropertyValues } from 'lit';
+import { html, nothing, type PropertyValues } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import { LabServices, type LoadProblem } from '../../app/lab-services.ts';
 import { labLoadProblems, withProblem } from './lab-load-problem.ts';
 import type { ShowMeStage } from '../../app/show-me-player.ts';
@@ -45,20 +47,18 @@ import { boxesOverlap, type GuideAndLook, renderWindowInTheWay } from './render-
 export { FREE_LAB_HASH } from './quest-controller.ts';
 
 /**
- * @summary The lab and the game in it: the 3D view in the centre, editing panels on the
- * left, the level's tasks on the right, the render window over the view, the level map
- * over all. Layout only: the services (store, pools, screen tracer, ray pool) are a
- * LabServices, the game a QuestController, the hint ring a GuideRingDriver. The store
- * reaches the elements inside through `storeContext`. A level shows only the panels and
- * controls it lists; the free lab shows them all.
+ * @summary The lab and the game in it: the 3D view in the centre, editing panels on the left,
+ * the level's tasks on the right, the render window over the view, the level map over all.
+ * Layout only: the services (store, pools, screen tracer, ray pool) are a LabServices, the
+ * game a QuestController, the hint ring a GuideRingDriver. The store reaches the elements
+ * inside through `storeContext`. A level shows only the panels and controls it lists.
  *
  * `assignment`: a teacher's assignment (set before the lab connects, by the router);
- * `sharedScene`: a scene from a shared link (#/s/…), opened in the free lab.
- *
- * For tests and tools: `store`, `guideRect(target)` and `guideElements(target)` (where the
- * hint ring would go for a guide target, and the elements that carry it).
+ * `sharedScene`: a scene from a shared link (#/s/…), opened in the free lab. For tests and
+ * tools: `store`, `guideRect(target)` and `guideElements(target)` (where the hint ring
+ * would go for a guide target, and the elements that carry it).
  */
-export class RtLab extends LitElement {
+export class RtLab extends LocalizedElement {
   static override properties = {
     hover: { state: true },
     renderOpen: { state: true },
@@ -257,7 +257,7 @@ export class RtLab extends LitElement {
   readonly stage: ShowMeStage = {
     dispatch: (action) => {
       const error = this.store.dispatch(action);
-      if (error) this.toast(error, 'error');
+      if (error) this.toast(error.map(issueText).join('\n'), 'error');
     },
     orbit: () => this.labView()?.orbit(),
     pan: () => this.labView()?.pan(),

@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
+import { css, html, nothing, type PropertyValues } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import type { LabState } from '../../lab-state/lab-state.ts';
 import type { Store } from '../../lab-state/store.ts';
 import { GIZMO_MODES, gizmoModesFor, type GizmoMode } from '../../view/gizmo-modes.ts';
@@ -33,7 +34,7 @@ const labViewCode = new LazyModule(() => import('../../view/lab-view.ts'));
  *   after the element's first render, so the panels and the tasks do not wait for three.js).
  * @cssprop --rt-view-bg - The view's background behind the scene (a soft vertical gradient by default).
  */
-export class RtSceneView extends LitElement {
+export class RtSceneView extends LocalizedElement {
   static override properties = {
     store: { attribute: false },
     gizmoControls: { attribute: false },

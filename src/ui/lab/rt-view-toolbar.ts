@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement, nothing, svg, type SVGTemplateResult, type TemplateResult } from 'lit';
+import { css, html, nothing, svg, type SVGTemplateResult, type TemplateResult } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import { DEFAULT_GIZMO, type GizmoOptions } from '../../lab-state/lab-state.ts';
 import { GIZMO_MODES, type GizmoMode } from '../../view/gizmo-modes.ts';
 import type { ViewCommand } from '../../view/view-commands.ts';
@@ -28,7 +29,7 @@ const ZOOM_STEP = 1.25;
  * @fires view-command - CustomEvent<ViewCommand>: a button asks the view to do something.
  * @fires view-pads - CustomEvent<boolean>: a small view's pads were unfolded (true) or folded.
  */
-export class RtViewToolbar extends LitElement {
+export class RtViewToolbar extends LocalizedElement {
   static override properties = {
     gizmo: { attribute: false },
     allowedModes: { attribute: false },

@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
-import { html, LitElement, nothing } from 'lit';
+import { html, nothing } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import { loadBrowserCatalog, loadLevelTexts } from '../../app/level-catalog-browser.ts';
 import { isSceneFragment } from '../../app/scene-link.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
@@ -47,7 +48,7 @@ type Opened = { hash: string; assignment: Assignment | null; problem: string };
  * `#/a/<link>` opens a teacher's
  * assignment in the lab, or, when the link is damaged, free play with a message.
  */
-export class RtApp extends LitElement {
+export class RtApp extends LocalizedElement {
   static override properties = { route: { state: true }, opened: { state: true } };
 
   declare route: string;

@@ -1,12 +1,13 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 
 /**
  * @summary A message across the top of the page that stays until it is dismissed: why an
  * assignment link did not open (a toast would vanish before a student could show it to the
  * teacher).
  */
-export class RtLinkNotice extends LitElement {
+export class RtLinkNotice extends LocalizedElement {
   static override properties = { text: {}, dismissed: { state: true } };
 
   static override styles = css`

@@ -1,11 +1,12 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 
 /**
  * @summary The note over a teacher's level preview: that nothing of it is kept, so a teacher
  * does not mistake it for a pupil's session. It can be put away; it comes back on reload.
  */
-export class RtPreviewNotice extends LitElement {
+export class RtPreviewNotice extends LocalizedElement {
   static override properties = { dismissed: { state: true } };
 
   static override styles = css`

@@ -1,6 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { issueText } from '../../i18n/issue-text.ts';
-import { html, LitElement, nothing } from 'lit';
+import { html, nothing } from 'lit';
+import { LocalizedElement } from '../controls/localized-element.ts';
 import type { SceneParseResult } from '../../scene/scene-schema.ts';
 import { decodeSceneLink } from '../../app/scene-link.ts';
 import '../lab/rt-lab.ts';
@@ -11,7 +12,7 @@ import './rt-link-notice.ts';
  * `sharedScene`: the free lab with every panel), or, when the link is damaged, the lab as
  * usual under a message that says why. Set `hash`.
  */
-export class RtSceneLinkLab extends LitElement {
+export class RtSceneLinkLab extends LocalizedElement {
   static override properties = { hash: {}, read: { state: true } };
 
   declare hash: string;

@@ -2,6 +2,7 @@
 // refracted (total internal reflection) is not said to be split by Schlick, and "why is it dark"
 // names the cause of a small A that the light's kind can have (a point light: only distance;
 // an area light shines to one side of its panel, it has no cone). In English and in Dutch.
+import { issueLine } from '../../../src/util/issue.ts';
 import { readFileSync } from 'node:fs';
 import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import { debugProgram } from '../../../src/debugger/debug-steps.ts';
@@ -14,7 +15,7 @@ import { standInPage } from '../../support/page-locale.ts';
 
 function levelScene(id: string): Scene {
   const parsed = parseLevel(JSON.parse(readFileSync(new URL(`../../../levels/${id}.level.json`, import.meta.url), 'utf8')));
-  if (!parsed.ok) throw new Error(parsed.errors.join('\n'));
+  if (!parsed.ok) throw new Error(parsed.errors.map(issueLine).join('\n'));
   return parsed.level.scene;
 }
 

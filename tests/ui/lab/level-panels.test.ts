@@ -1,3 +1,4 @@
+import { issueLine } from '../../../src/util/issue.ts';
 import { describe, expect, it } from 'vitest';
 import { parseLevel, type Level } from '../../../src/quest/level-schema.ts';
 import { levelPanels } from '../../../src/ui/lab/level-panels.ts';
@@ -6,7 +7,7 @@ import { levelFile } from '../../support/quest-fixtures.ts';
 /** The test level with `ui` as given. */
 function levelWith(ui: Record<string, unknown>): Level {
   const result = parseLevel(levelFile((level) => (level.ui = ui)));
-  if (!result.ok) throw new Error(result.errors.join('\n'));
+  if (!result.ok) throw new Error(result.errors.map(issueLine).join('\n'));
   return result.level;
 }
 

@@ -1,10 +1,9 @@
-import { LitElement } from 'lit';
-
+import { LocalizedElement } from '../../controls/localized-element.ts';
 /**
  * What every dashboard chart takes: its rows (one per task or question) and a caption that
  * says what it shows, for screen readers.
  */
-export class DashboardChart<Row> extends LitElement {
+export class DashboardChart<Row> extends LocalizedElement {
   static override properties = { rows: { attribute: false }, caption: {} };
 
   declare rows: readonly Row[];

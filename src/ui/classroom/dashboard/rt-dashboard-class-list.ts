@@ -1,8 +1,9 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
 import { checkClassList, parseClassList, type ClassListCheck } from '../../../classroom/dashboard-class-list.ts';
 import type { ClassLearner } from '../../../classroom/dashboard-learners.ts';
 import { classroomStyles } from '../classroom-styles.ts';
+import { LocalizedElement } from '../../controls/localized-element.ts';
 
 /** Where the pasted list is kept, so that a reload or the next lesson does not ask for it again. */
 export const CLASS_LIST_KEY = 'rtq.dashboard.class-list';
@@ -13,7 +14,7 @@ export const CLASS_LIST_KEY = 'rtq.dashboard.class-list';
  * is not on the list, with their files. Set `.learners` (the learners shown). The list stays
  * in this browser only (localStorage).
  */
-export class RtDashboardClassList extends LitElement {
+export class RtDashboardClassList extends LocalizedElement {
   static override properties = {
     learners: { attribute: false },
     text: { state: true },

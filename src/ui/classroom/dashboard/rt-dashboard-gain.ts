@@ -1,11 +1,12 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing } from 'lit';
+import { css, html, nothing } from 'lit';
 import type { ConceptBank } from '../../../classroom/concept-test/concept-bank-schema.ts';
 import { conceptBankNow, loadConceptBank } from '../../../classroom/concept-test/concept-bank.ts';
 import { conceptGains, type ClassGain, type GainLearner, type GainRow } from '../../../classroom/concept-test/concept-gain.ts';
 import { localize, type Locale } from '../../../quest/localized-text.ts';
 import { tableStyles } from './rt-dashboard-chart-styles.ts';
 import { formatPercent } from './rt-dashboard-format.ts';
+import { LocalizedElement } from '../../controls/localized-element.ts';
 
 /**
  * @summary The concept test on the dashboard: per class a table of the ideas, each with the
@@ -13,7 +14,7 @@ import { formatPercent } from './rt-dashboard-format.ts';
  * Hake's normalized gain ⟨g⟩ of those averages (concept-gain.ts). Shown only when a learner
  * shown took a concept test.
  */
-export class RtDashboardGain extends LitElement {
+export class RtDashboardGain extends LocalizedElement {
   static override properties = { learners: { attribute: false }, locale: {} };
 
   static override styles = [

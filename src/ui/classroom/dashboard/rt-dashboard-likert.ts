@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, svg } from 'lit';
+import { css, html, svg } from 'lit';
+import { LocalizedElement } from '../../controls/localized-element.ts';
 import type { ScaleSummary } from '../../../classroom/dashboard-survey.ts';
 import { localize, type Locale } from '../../../quest/localized-text.ts';
 import { chartStyles } from './rt-dashboard-chart-styles.ts';
@@ -36,7 +37,7 @@ const MIN_LABELLED_SHARE = 0.05;
  * ("helped a lot"), each with its count written in it and told apart by colour and texture;
  * a legend names the steps. Give it questions that share one scale.
  */
-export class RtDashboardLikert extends LitElement {
+export class RtDashboardLikert extends LocalizedElement {
   static override properties = { scales: { attribute: false }, locale: {}, caption: {} };
 
   static override styles = [

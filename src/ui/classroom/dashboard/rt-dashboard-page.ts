@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { html, LitElement, nothing } from 'lit';
+import { html, nothing } from 'lit';
+import { LocalizedElement } from '../../controls/localized-element.ts';
 import { loadBrowserCatalog } from '../../../app/level-catalog-browser.ts';
 import { readClassFiles, type ClassFiles, type DroppedFile } from '../../../classroom/dashboard-class.ts';
 import { assignmentsOf, classCodesOf, classLearners, filterLearners, type ClassLearner, type LearnerFilter } from '../../../classroom/dashboard-learners.ts';
@@ -51,7 +52,7 @@ function levelNames(locale: Locale) {
  * stuck, completion and the survey answers; files that are not exports are listed with the
  * reason and skipped. Everything is read in the browser; nothing is uploaded.
  */
-export class RtDashboardPage extends LitElement {
+export class RtDashboardPage extends LocalizedElement {
   static override properties = {
     files: { state: true },
     reading: { state: true },

@@ -1,9 +1,10 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html } from 'lit';
 import type { DroppedFile } from '../../../classroom/dashboard-class.ts';
 import type { SkippedFile } from '../../../classroom/dashboard-record.ts';
 import { decodeResultsCode, findResultsCodes, RESULTS_CODE_PREFIX } from '../../../classroom/results-code.ts';
 import { classroomStyles } from '../classroom-styles.ts';
+import { LocalizedElement } from '../../controls/localized-element.ts';
 
 /** What pasting gives the dashboard: the codes' exports as files, and the codes that could not be read. */
 export interface PastedCodes {
@@ -17,7 +18,7 @@ export interface PastedCodes {
  * each code as the results file it stands for.
  * @fires codes-pasted - detail: PastedCodes
  */
-export class RtDashboardPasteCodes extends LitElement {
+export class RtDashboardPasteCodes extends LocalizedElement {
   static override properties = {
     note: { state: true },
   };

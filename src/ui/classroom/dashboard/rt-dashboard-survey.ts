@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement } from 'lit';
+import { css, html } from 'lit';
+import { LocalizedElement } from '../../controls/localized-element.ts';
 import type { ScaleSummary, SurveySummary } from '../../../classroom/dashboard-survey.ts';
 import { localize, type Locale } from '../../../quest/localized-text.ts';
 import './rt-dashboard-likert.ts';
@@ -19,7 +20,7 @@ function groupScales(scales: readonly ScaleSummary[]): ScaleSummary[][] {
  * per kind of scale), choices and numbers as small tables, free-text remarks in a
  * collapsible list.
  */
-export class RtDashboardSurvey extends LitElement {
+export class RtDashboardSurvey extends LocalizedElement {
   static override properties = { summary: { attribute: false }, locale: {} };
 
   static override styles = css`

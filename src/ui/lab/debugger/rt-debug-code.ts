@@ -1,5 +1,6 @@
 import { msg } from '@lit/localize';
-import { css, html, LitElement, type PropertyValues } from 'lit';
+import { css, html, type PropertyValues } from 'lit';
+import { LocalizedElement } from '../../controls/localized-element.ts';
 import { styleMap } from 'lit/directives/style-map.js';
 import { LINE_INDENT, PSEUDOCODE_LINES, type PseudocodeLine } from '../../../debugger/pseudocode.ts';
 import { pseudocodeText } from './debugger-text.ts';
@@ -14,7 +15,7 @@ import { scrollCue } from './scroll-cue.ts';
  * `line`: the current line's id (pseudocode.ts), or null before the first step.
  * @csspart line - each line of code
  */
-export class RtDebugCode extends LitElement {
+export class RtDebugCode extends LocalizedElement {
   static override properties = { line: {} };
 
   static override styles = css`

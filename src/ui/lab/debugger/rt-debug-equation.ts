@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
+import { css, html, nothing, type PropertyValues } from 'lit';
+import { LocalizedElement } from '../../controls/localized-element.ts';
 import { styleMap } from 'lit/directives/style-map.js';
 import type { Equation, EquationTerm, Factor, PixelAverage } from '../../../debugger/debug-equation.ts';
 import { localNumbers } from '../../../i18n/number-format.ts';
@@ -40,7 +41,7 @@ export type TermClickDetail = EquationTerm;
  *
  * @event term-click - a term was chosen (detail: the EquationTerm)
  */
-export class RtDebugEquation extends LitElement {
+export class RtDebugEquation extends LocalizedElement {
   static override properties = {
     equation: { attribute: false },
     average: { attribute: false },

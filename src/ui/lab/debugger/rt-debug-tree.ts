@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { css, html, LitElement, nothing, type PropertyValues } from 'lit';
+import { css, html, nothing, type PropertyValues } from 'lit';
+import { LocalizedElement } from '../../controls/localized-element.ts';
 import { styleMap } from 'lit/directives/style-map.js';
 import { lightRayShare, type DebugProgram, type DebugStep } from '../../../debugger/debug-steps.ts';
 import type { Quantization } from '../../../tracer/quantize.ts';
@@ -27,7 +28,7 @@ const INDENT_PX = 12;
  * `program`, `index` (the cursor), `scene`; `quantization` (the image's encoding and dithering).
  * Rows carry `data-level`; the sum carries `data-sum` (r g b) for tests.
  */
-export class RtDebugTree extends LitElement {
+export class RtDebugTree extends LocalizedElement {
   static override properties = {
     program: { attribute: false },
     index: { type: Number },

@@ -1,6 +1,7 @@
-import { css, html, LitElement, nothing, type CSSResultGroup, type PropertyValues, type TemplateResult } from 'lit';
+import { css, html, nothing, type CSSResultGroup, type PropertyValues, type TemplateResult } from 'lit';
+import { LocalizedElement } from '../../controls/localized-element.ts';
 import { ifDefined } from 'lit/directives/if-defined.js';
-import { issueLines } from '../../../i18n/issue-text.ts';
+import { issueText } from '../../../i18n/issue-text.ts';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { LabState } from '../../../lab-state/lab-state.ts';
 import type { Store } from '../../../lab-state/store.ts';
@@ -72,7 +73,7 @@ export interface VectorSpec<Name extends string = string> extends ControlText<Na
  * GuideHostController), and `shownControls` narrows the panel to the level's choice; a
  * section left with no control is left out.
  */
-export abstract class StorePanel<Panel extends LabPanel = LabPanel> extends LitElement {
+export abstract class StorePanel<Panel extends LabPanel = LabPanel> extends LocalizedElement {
   static override properties = {
     store: { attribute: false },
     shownControls: { attribute: false },
@@ -182,7 +183,7 @@ export abstract class StorePanel<Panel extends LabPanel = LabPanel> extends LitE
   /** Dispatches a control's change; `live` while the learner is still dragging it. */
   protected send(name: string, action: LabAction, live = false): void {
     const refused = this.store?.dispatch(action, { live });
-    const error = refused && issueLines(refused);
+    const error = refused?.map(issueText).join('\n');
     if (error !== this.errors[name]) this.errors = { ...this.errors, [name]: error };
   }
 

@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { html, LitElement, nothing } from 'lit';
+import { html, nothing } from 'lit';
+import { LocalizedElement } from '../../controls/localized-element.ts';
 import { createRef, ref } from 'lit/directives/ref.js';
 import { styleMap } from 'lit/directives/style-map.js';
 import {
@@ -62,7 +63,7 @@ interface ViewCentre {
  * @fires view-change - `tracedView` changed (a zoom, a scroll, a resized window, another
  *   image size): the parent draws the traced canvas for the new view.
  */
-export class RtImageCompare extends LitElement {
+export class RtImageCompare extends LocalizedElement {
   static override properties = {
     imageWidth: { type: Number },
     imageHeight: { type: Number },

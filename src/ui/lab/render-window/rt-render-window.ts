@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
-import { html, LitElement, nothing, type PropertyValues } from 'lit';
+import { html, nothing, type PropertyValues } from 'lit';
+import { LocalizedElement } from '../../controls/localized-element.ts';
 import { createRef, ref } from 'lit/directives/ref.js';
 import { renderImageData } from '../../../render/image-data.ts';
 import type { RenderImage } from '../../../render/render-job.ts';
@@ -51,7 +52,7 @@ import { guideIds } from '../../../quest/lab-controls.ts';
  * @fires close - The user asked to close the window (close button or Escape); the parent
  *   removes `open` and returns focus where it was.
  */
-export class RtRenderWindow extends LitElement {
+export class RtRenderWindow extends LocalizedElement {
   static override properties = {
     store: { attribute: false },
     pool: { attribute: false },
