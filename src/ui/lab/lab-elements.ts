@@ -19,7 +19,6 @@ import './panels/rt-ray-legend.ts';
 import './panels/rt-ray-panel.ts';
 import './panels/rt-scene-list.ts';
 import './panels/rt-tracer-panel.ts';
-import './render-window/rt-render-window.ts';
 import './rt-guide-ring.ts';
 import './rt-ray-tooltip.ts';
 import './rt-scene-view.ts';
@@ -36,6 +35,14 @@ export const ON_DEMAND_PANELS: Partial<Record<UiPanel, LazyModule<unknown>>> = {
   bvh: new LazyModule(() => import('./panels/rt-bvh-panel.ts')),
   debugger: new LazyModule(() => import('./debugger/rt-ray-debugger.ts')),
 };
+
+/**
+ * The render window: closed on the first screen, so its code (the tiled render's painting,
+ * the estimates, saving the picture) loads right after it, tried again like the on-demand
+ * panels; Render opens it at once and it upgrades when its code is there. One that cannot be
+ * loaded is said over the 3D view with a Reload button (lab-load-problem.ts).
+ */
+export const RENDER_WINDOW = new LazyModule(() => import('./render-window/rt-render-window.ts'));
 
 /**
  * Parts the first screen never shows: the closing survey, the concept test, the end of an
@@ -55,6 +62,10 @@ const AFTER_FIRST_SCREEN = [
 
 export function loadAfterFirstScreen(host: { requestUpdate(): void }): void {
   setTimeout(() => {
+    RENDER_WINDOW.load().then(
+      () => host.requestUpdate(),
+      () => host.requestUpdate(),
+    );
     for (const load of AFTER_FIRST_SCREEN)
       load().then(
         () => host.requestUpdate(),

@@ -39,7 +39,7 @@ import type { RtSceneView } from './rt-scene-view.ts';
 import { storeContext } from './store-context.ts';
 import { quizPictureDrawer } from './quiz-picture-drawer.ts';
 import { quizPicturesContext } from '../game/quiz-pictures.ts';
-import { loadAfterFirstScreen, ON_DEMAND_PANELS } from './lab-elements.ts';
+import { loadAfterFirstScreen, ON_DEMAND_PANELS, RENDER_WINDOW } from './lab-elements.ts';
 import { ViewCoverController } from './view-cover.ts';
 import { PreviewPlaceController } from './preview-place.ts';
 import { boxesOverlap, type GuideAndLook, renderWindowInTheWay } from './render-window/render-window-in-the-way.ts';
@@ -250,6 +250,8 @@ export class RtLab extends LocalizedElement {
 
   private openRenderWindow(): void {
     this.renderOpen = true;
+    // Loaded after the first screen; a click before that, or a load that failed, is answered here.
+    RENDER_WINDOW.load().catch(() => this.requestUpdate());
     this.store.dispatch({ type: 'panel.opened', panel: 'render' });
   }
 
@@ -266,7 +268,11 @@ export class RtLab extends LocalizedElement {
     openRender: () => this.openRenderWindow(),
     render: () => {
       this.openRenderWindow();
-      void this.updateComplete.then(() => this.renderRoot.querySelector<RtRenderWindow>('rt-render-window')?.startRender());
+      // The window's code may still be loading (RENDER_WINDOW): it renders once it is there.
+      void Promise.all([this.updateComplete, RENDER_WINDOW.load()]).then(
+        () => this.renderRoot.querySelector<RtRenderWindow>('rt-render-window')?.startRender(),
+        () => this.requestUpdate(),
+      );
     },
     openPanel: (panel) => this.store.dispatch({ type: 'panel.opened', panel }),
     debug: (action) => this.renderRoot.querySelector('rt-ray-debugger')?.perform(action),
