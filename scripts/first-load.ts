@@ -10,7 +10,9 @@ import { gzipSync } from 'node:zlib';
  * - the entry script and every chunk it imports statically;
  * - the entry's dynamic imports with their static imports: `src/main.ts` awaits each of them
  *   before the first render (the language, then the app);
- * - for a learner in another language, that language's catalogue (`src/locales/<code>.ts`);
+ * - for a learner in another language, that language's catalogue of the first screen's
+ *   messages (`src/locales/<code>.ts`; the later parts' messages load once the screen is up:
+ *   scripts/split-dutch-catalogue.ts);
  * - the level files in the learner's language (`virtual:level-texts/<code>`).
  *
  * What loads once that screen is up is listed apart ("after the first screen"): the 3D view

@@ -10,9 +10,6 @@ import { issueLine, type Issue } from '../util/issue.ts';
 
 let localIssue: ((issue: Issue) => string) | null = null;
 
-/** The window event sent once the sayings have loaded, so a reason on screen is said again. */
-export const ISSUE_TEXTS_LOADED = 'rt-issue-texts-loaded';
-
 /** Loads the sayings; asked for once a language other than English is in use. */
 export async function loadIssueTranslation(): Promise<void> {
   localIssue ??= (await import('./local-reason.ts')).localIssue;

@@ -1,14 +1,16 @@
 import { configureLocalization } from '@lit/localize';
 import { sourceLocale, targetLocales } from '../locales/locale-codes.ts';
 import type { Locale } from '../quest/localized-text.ts';
-import { ISSUE_TEXTS_LOADED, loadIssueTranslation } from './issue-text.ts';
+import { loadIssueTranslation } from './issue-text.ts';
+import { LATER_TEXTS_ARRIVED } from './later-texts.ts';
 import { pickLocale, readRememberedLocale, rememberLocale } from './locale-choice.ts';
 import { LazyModule } from '../util/lazy-module.ts';
 
 /**
- * The app's language at run time (@lit/localize in runtime mode): the Dutch messages are a
- * module of their own (src/locales/nl.ts, built from xliff/nl.xlf), loaded only when Dutch
- * is chosen. `<html lang>` follows, so screen readers, hyphenation and the browser's own
+ * The app's language at run time (@lit/localize in runtime mode): the Dutch messages are
+ * modules of their own (built from xliff/nl.xlf), loaded only when Dutch is chosen: those of
+ * the first screen (src/locales/nl.ts) before it, those of the parts that load later
+ * (nl-later.ts) while it is up, added to the first ones (scripts/split-dutch-catalogue.ts). `<html lang>` follows, so screen readers, hyphenation and the browser's own
  * controls use the right language.
  */
 
@@ -18,6 +20,13 @@ import { LazyModule } from '../util/lazy-module.ts';
  * (src/ui/controls/locale-problem.ts).
  */
 const dutchTexts = new LazyModule(() => import('../locales/nl.ts'));
+const laterDutchTexts = new LazyModule(() => import('../locales/nl-later.ts'));
+
+/** The later Dutch messages, added to the first screen's (lit-localize reads them from that object). */
+async function addLaterDutchTexts(): Promise<void> {
+  const [first, later] = await Promise.all([dutchTexts.load(), laterDutchTexts.load()]);
+  Object.assign(first.templates, later.templates);
+}
 
 const localization = configureLocalization({
   sourceLocale,
@@ -31,6 +40,12 @@ export function dutchTextsProblem(): string | null {
 }
 
 const storage = () => localStorage;
+
+/** Settles once the texts of the later parts are in (or could not be loaded): tests await it. */
+let laterTexts: Promise<void> = Promise.resolve();
+export function laterTextsSettled(): Promise<void> {
+  return laterTexts;
+}
 
 /** The language the app speaks now. */
 export function currentLocale(): Locale {
@@ -50,16 +65,17 @@ export async function useLocale(locale: Locale): Promise<Locale> {
     console.error(`The ${locale} texts could not be loaded`, error);
   }
   document.documentElement.lang = currentLocale();
-  // The reasons a refused file is said for (issue-text.ts) are rare: their patterns load after
-  // the first screen, and a reason on screen before they arrive is said again once they have
-  // (each element renders again on this event, src/ui/controls/localized-element.ts).
+  // The later parts' messages and the reasons a refused file is said for (issue-text.ts) load
+  // after the first screen; a text on screen before they arrive is said again once they have
+  // (src/i18n/later-texts.ts). The page asked now is the one told later (a test's stand-in
+  // window may be gone by then).
   if (currentLocale() !== 'en') {
-    // The page asked now is the one told later (a test's stand-in window may be gone by then).
     const page = window;
-    loadIssueTranslation().then(
-      () => page.dispatchEvent(new Event(ISSUE_TEXTS_LOADED)),
-      (error: unknown) => console.warn('The translated reasons could not be loaded; they are shown in English', error),
+    const arrived = (): void => void page.dispatchEvent(new Event(LATER_TEXTS_ARRIVED));
+    laterTexts = addLaterDutchTexts().then(arrived, (error: unknown) =>
+      console.warn('The Dutch texts of later pages could not be loaded; they are shown in English', error),
     );
+    loadIssueTranslation().then(arrived, (error: unknown) => console.warn('The translated reasons could not be loaded; they are shown in English', error));
   }
   return currentLocale();
 }

@@ -12,12 +12,13 @@ export async function standInPage(): Promise<(locale: 'en' | 'nl') => Promise<vo
   vi.stubGlobal('document', { documentElement: { lang: 'en' }, querySelectorAll: () => [] });
   vi.stubGlobal('localStorage', new MemoryStorage());
   vi.stubGlobal('location', { search: '' });
-  const { useLocale } = await import('../../src/i18n/locale.ts');
+  const { laterTextsSettled, useLocale } = await import('../../src/i18n/locale.ts');
   const { loadIssueTranslation } = await import('../../src/i18n/issue-text.ts');
   return async (locale) => {
     await useLocale(locale);
-    // The page loads the reasons' patterns after its first screen, without waiting; a test waits.
-    if (locale !== 'en') await loadIssueTranslation();
+    // The page loads the later parts' texts and the reasons' patterns after its first screen,
+    // without waiting; a test waits.
+    if (locale !== 'en') await Promise.all([laterTextsSettled(), loadIssueTranslation()]);
   };
 }
 
