@@ -26,6 +26,7 @@ import { afterLessonSection, optional, researchSection, settingsSection } from '
 import type { ShelfRequest } from './rt-teacher-shelf.ts';
 import '../controls/rt-theme-toggle.ts';
 import { consentSection } from './teacher-consent-section.ts';
+import { asksNoSurveyQuestion } from './teacher-survey-questions.ts';
 import './rt-scorm-download.ts';
 import './rt-teacher-concept-test.ts';
 import './rt-teacher-handout.ts';
@@ -122,6 +123,7 @@ export class RtTeacherPage extends LocalizedElement {
   private get problem(): string | null {
     if (this.assignment.title.trim() === '') return msg('Give the assignment a title.');
     if (this.assignment.levels.length === 0) return msg('Add at least one level.');
+    if (asksNoSurveyQuestion(this.assignment)) return msg('Tick at least one survey question, or choose no closing survey.');
     const { classCode, xapiHomePage } = this.assignment;
     if (classCode !== undefined && !CLASS_CODE.test(classCode)) return msg('A class code has up to 32 letters, digits, - or _ (no spaces).');
     if (xapiHomePage !== undefined && !assignmentSchema.shape.xapiHomePage.safeParse(xapiHomePage).success) {
@@ -196,6 +198,7 @@ export class RtTeacherPage extends LocalizedElement {
     // An optional field left empty is left out, so the link (and the assignment's id) stays as without it.
     if (next.classCode === undefined) delete next.classCode;
     if (next.xapiHomePage === undefined) delete next.xapiHomePage;
+    if (next.surveyQuestions === undefined) delete next.surveyQuestions;
     this.assignment = next;
   }
 
