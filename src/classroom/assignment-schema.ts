@@ -45,6 +45,8 @@ export const assignmentSchema = z
     consent: z.string().trim().min(1).max(CONSENT_MAX).optional(),
     // Optional, so that links made before it still open (as version 1).
     conceptTest: z.enum(CONCEPT_TEST_ORDERS).optional(),
+    // Optional like the two above; a question the survey does not have is ignored (survey-for-levels.ts).
+    surveyQuestions: z.record(kebabId(), z.boolean()).optional(),
   })
   .superRefine((assignment, context) => {
     assignment.levels.forEach((id, index) => {

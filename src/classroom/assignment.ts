@@ -31,4 +31,10 @@ export interface Assignment {
   consent?: string;
   /** A concept test before the first level and after the last (concept-test-plan.ts); absent: none. */
   conceptTest?: ConceptTestOrder;
+  /**
+   * The teacher's own choice of the survey's questions (survey-for-levels.ts): per question
+   * id, asked (true) or not (false), where it differs from the default, which asks the
+   * questions that fit the levels; absent: the default.
+   */
+  surveyQuestions?: Record<string, boolean>;
 }

@@ -41,7 +41,11 @@ export function codebookMarkdown({ appVersion, madeAt, locale, questions, survey
       ['column', 'meaning', 'unit'],
       [
         ...attemptRows,
-        [`\`${SURVEY_PREFIX}<question>\``, 'the answer to that survey question (see Survey below)', 'per question'],
+        [
+          `\`${SURVEY_PREFIX}<question>\``,
+          "the answer to that survey question (see Survey below). A learner's own CSV has a column only for the questions their assignment asked; in the combined CSV an empty cell is a question left open or not asked of that learner",
+          'per question',
+        ],
         ['`file`', 'combined CSV only: the file the row came from', 'text'],
       ],
     ),
@@ -75,7 +79,10 @@ export function codebookMarkdown({ appVersion, madeAt, locale, questions, survey
 }
 
 function surveyQuestionText(question: SurveyQuestion, locale: Locale): string {
-  const heading = `### \`${SURVEY_PREFIX}${question.id}\` (${question.type}${question.required ? ', required' : ', optional'})\n\n${localize(question.text, locale)}`;
+  const asked = question.levels
+    ? `\n\nAsked by default only in assignments with one of the levels ${question.levels.map((level) => `\`${level}\``).join(', ')}; the teacher may tick it on or off (the assignment's \`surveyQuestions\`).`
+    : '';
+  const heading = `### \`${SURVEY_PREFIX}${question.id}\` (${question.type}${question.required ? ', required' : ', optional'})\n\n${localize(question.text, locale)}${asked}`;
   switch (question.type) {
     case 'choice':
       return `${heading}\n\n${table(

@@ -6,6 +6,7 @@ import { exportOwner, type ExportInput } from './export-context.ts';
 import { surveyQuestionIds } from './survey-columns.ts';
 import { NO_OPTION_TEXTS } from './quiz-options.ts';
 import { surveyById } from './surveys.ts';
+import { surveyAsked } from './survey-for-levels.ts';
 
 /**
  * The CSV export (spec/classroom.md; every column is defined in docs/classroom.md): one row
@@ -23,14 +24,26 @@ import { surveyById } from './surveys.ts';
  * Excel reads UTF-8 as the local code page and mangles names and typed text; R, Python and
  * LibreOffice skip it. Learner-typed fields that start like a formula get an apostrophe
  * (csv-text.ts), so opening the file cannot run anything; identifiers are always quoted.
+ *
+ * Survey columns are the questions the assignment asked (survey-for-levels.ts): a question
+ * the teacher left out, or that does not fit the levels, has no column, so an empty cell
+ * always means "asked and left open".
  */
 
 export const BOM = '\uFEFF';
 
 export function exportCsv(input: ExportInput): string {
   const owner = exportOwner(input);
-  const questions = surveyQuestionIds(surveyById, [input.survey?.survey, input.assignment?.survey], [input.survey?.answers]);
+  const questions = surveyQuestionIds(askedSurvey(input), [input.survey?.survey, input.assignment?.survey], [input.survey?.answers]);
   return (
     BOM + csvTable(csvHeader(questions), attemptRows(owner, readLog(input.progress.log).attempts, questions, input.optionText ?? NO_OPTION_TEXTS), ID_COLUMNS)
   );
+}
+
+/** The surveys as this learner's assignment asked them (free play: whole). */
+function askedSurvey({ assignment }: ExportInput) {
+  return (id: string) => {
+    const survey = surveyById(id);
+    return survey && assignment ? surveyAsked(survey, assignment.levels, assignment.surveyQuestions) : survey;
+  };
 }

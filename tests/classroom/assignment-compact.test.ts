@@ -25,6 +25,14 @@ describe('the compact assignment of a link', () => {
     expect(compact.requiredTasks).toEqual({ second: ['orbit', 'predict', 'supersample', 'zoom'], third: [] });
   });
 
+  it("carries the teacher's survey questions only where they differ from the default, and none without a survey", () => {
+    const withSurvey: Assignment = { ...assignment, survey: 'default', surveyQuestions: { 'learned-ray-tracing': true, age: false } };
+    // learned-ray-tracing is asked anyway (it names no levels): only "age off" is the teacher's own.
+    expect(compactAssignment(withSurvey, levels).surveyQuestions).toEqual({ age: false });
+    expect('surveyQuestions' in compactAssignment({ ...withSurvey, surveyQuestions: { 'learned-ray-tracing': true } }, levels)).toBe(false);
+    expect('surveyQuestions' in compactAssignment({ ...withSurvey, survey: null }, levels)).toBe(false);
+  });
+
   it('requires the same tasks in the game', () => {
     for (const level of levels) expect(requiredTaskIds(level, compact.requiredTasks)).toEqual(requiredTaskIds(level, assignment.requiredTasks));
   });

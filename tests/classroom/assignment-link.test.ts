@@ -45,6 +45,13 @@ describe('assignment links', () => {
     expect(await decoded(fragment, catalog)).toEqual({ ok: true, assignment: lesson });
   });
 
+  it("round-trips the teacher's choice of survey questions, and refuses one that is not yes or no", async () => {
+    const chosen: Assignment = { ...lesson, surveyQuestions: { age: false, 'learned-soft-shadows': true } };
+    expect(await decoded(await encodeAssignment(chosen), catalog)).toEqual({ ok: true, assignment: chosen });
+    const wrong = { ...lesson, surveyQuestions: { age: 'no' } } as unknown as Assignment;
+    expect(await decoded(await encodeAssignment(wrong), catalog)).toMatchObject({ ok: false, kind: 'damaged' });
+  });
+
   it('is short enough for a QR code a phone reads from a projector', async () => {
     const url = await assignmentUrl(lesson, 'https://school.example/rt-quest/index.html#/teacher');
     expect(url.startsWith('https://school.example/rt-quest/index.html#/a/1.')).toBe(true);

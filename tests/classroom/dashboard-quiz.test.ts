@@ -140,4 +140,13 @@ describe('the codebook', () => {
       if (question.type === 'scale') expect(text).toContain(`from ${question.min} (`);
     }
   });
+
+  it('says which survey questions are asked only with some levels, and that the teacher may choose otherwise', () => {
+    const soft = survey.questions.find((question) => question.id === 'learned-soft-shadows');
+    expect(soft?.levels).toEqual(['10-area-lights']);
+    expect(text).toMatch(
+      /### `survey_learned-soft-shadows`[^#]*Asked by default only in assignments with one of the levels `10-area-lights`; the teacher may tick it on or off/,
+    );
+    expect(text).not.toMatch(/### `survey_age`[^#]*Asked by default only/);
+  });
 });

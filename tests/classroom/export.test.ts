@@ -101,7 +101,10 @@ function csvRows(text: string): Record<string, string>[] {
 
 describe('CSV export', () => {
   const text = exportCsv(input());
-  const questions = surveyById('default')!.questions.map((question) => `survey_${question.id}`);
+  // Level l1 teaches none of the ideas some questions ask about: those are not asked, and have no column.
+  const questions = surveyById('default')!
+    .questions.filter((question) => !question.levels)
+    .map((question) => `survey_${question.id}`);
 
   it('starts with a byte-order mark and the header, with CRLF line ends', () => {
     expect(text.startsWith(`\uFEFF${[...CSV_COLUMNS, ...questions].join(',')}\r\n`)).toBe(true);
@@ -204,6 +207,12 @@ describe('CSV export', () => {
     // Not answered yet: the assignment's survey columns are there, empty.
     const [before] = csvRows(exportCsv(input({ survey: null })));
     expect(before).toMatchObject({ survey: '', 'survey_computer-skill': '' });
+    // The teacher's own choice: a question ticked off has no column, one ticked on has one.
+    const chosen = csvRows(exportCsv(input({ assignment: { ...assignment, surveyQuestions: { age: false, 'learned-soft-shadows': true } } })));
+    const columns = Object.keys(chosen[0]);
+    expect(columns).not.toContain('survey_age');
+    expect(columns).toContain('survey_learned-soft-shadows');
+    expect(columns).not.toContain('survey_learned-attenuation');
     // Free play without a survey: no survey columns.
     expect(Object.keys(csvRows(exportCsv(input({ survey: null, assignment: null })))[0]).some((column) => column.startsWith('survey_'))).toBe(false);
   });

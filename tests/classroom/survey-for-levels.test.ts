@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { readFileSync } from 'node:fs';
-import { surveyForLevels } from '../../src/classroom/survey-for-levels.ts';
+import { ownSurveyChoice, surveyAsked, surveyForLevels } from '../../src/classroom/survey-for-levels.ts';
 import { surveyById } from '../../src/classroom/surveys.ts';
 
 const survey = surveyById('default')!;
@@ -17,6 +17,39 @@ describe('the survey an assignment asks', () => {
     expect(lesson).toContain('learned-ray-tracing');
     expect(ids(['09-attenuation', '10-area-lights'])).toEqual(expect.arrayContaining(['learned-attenuation', 'learned-soft-shadows', 'learned-light-sources']));
     expect(ids(null)).toEqual(survey.questions.map((question) => question.id));
+  });
+
+  it("asks the teacher's own choice over the default", () => {
+    const lesson = ['01-introduction', '04-shadows'];
+    const asked = (choice: Record<string, boolean>) => surveyAsked(survey, lesson, choice).questions.map((question) => question.id);
+    const chosen = asked({ 'learned-soft-shadows': true, age: false });
+    expect(chosen).toContain('learned-soft-shadows');
+    expect(chosen).not.toContain('age');
+    expect(chosen).not.toContain('learned-attenuation');
+    // In the survey's order, whatever the order of the choice.
+    expect(chosen).toEqual(survey.questions.map((question) => question.id).filter((id) => chosen.includes(id)));
+    // A question the survey does not have changes nothing.
+    expect(asked({ 'not-a-question': true })).toEqual(ids(lesson));
+    // Every question off (only a hand-edited link does that): the default's questions rather than none.
+    expect(asked(Object.fromEntries(survey.questions.map((question) => [question.id, false])))).toEqual(ids(lesson));
+  });
+
+  it("keeps of the teacher's choice only what differs from the default", () => {
+    const lesson = ['01-introduction', '09-attenuation'];
+    expect(
+      ownSurveyChoice(survey, lesson, {
+        'learned-attenuation': true,
+        'learned-soft-shadows': false,
+        'learned-supersampling': true,
+        age: false,
+        'not-a-question': true,
+      }),
+    ).toEqual({
+      'learned-supersampling': true,
+      age: false,
+    });
+    expect(ownSurveyChoice(survey, lesson, { 'learned-attenuation': true })).toBeUndefined();
+    expect(ownSurveyChoice(survey, lesson, undefined)).toBeUndefined();
   });
 
   it('names only levels the game has', () => {

@@ -4,6 +4,7 @@ import { LocalizedElement } from '../controls/localized-element.ts';
 import type { Locale } from '../../quest/localized-text.ts';
 import { FocusReturn } from '../controls/focus-return.ts';
 import { classroomStyles } from './classroom-styles.ts';
+import type { Assignment } from '../../classroom/assignment.ts';
 import './rt-survey.ts';
 
 /**
@@ -16,7 +17,7 @@ import './rt-survey.ts';
  * @fires survey-later - the learner goes back to the lab without handing in.
  */
 export class RtSurveyPage extends LocalizedElement {
-  static override properties = { surveyId: { attribute: 'survey-id' }, locale: {}, levels: { attribute: false } };
+  static override properties = { surveyId: { attribute: 'survey-id' }, locale: {}, levels: { attribute: false }, choice: { attribute: false } };
 
   static override styles = [
     classroomStyles,
@@ -55,6 +56,8 @@ export class RtSurveyPage extends LocalizedElement {
   declare locale: Locale;
   /** The assignment's levels (rt-survey.ts). */
   declare levels: readonly string[] | null;
+  /** The teacher's own choice of questions (rt-survey.ts). */
+  declare choice: Assignment['surveyQuestions'];
   private readonly focusReturn = new FocusReturn();
 
   constructor() {
@@ -91,7 +94,7 @@ export class RtSurveyPage extends LocalizedElement {
       <div class="bar">
         <button @click=${this.later} title=${msg('Back to the lab; the survey waits in the task column (Esc)')}>${msg('Later')}</button>
       </div>
-      <rt-survey survey-id=${this.surveyId} locale=${this.locale} .levels=${this.levels}></rt-survey>
+      <rt-survey survey-id=${this.surveyId} locale=${this.locale} .levels=${this.levels} .choice=${this.choice}></rt-survey>
     </section>`;
   }
 }

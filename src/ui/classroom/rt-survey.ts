@@ -4,7 +4,8 @@ import { LocalizedElement } from '../controls/localized-element.ts';
 import { checkAnswers, cleanAnswers, type AnswerProblem, type SurveyAnswers, type SurveySubmission } from '../../classroom/survey-answers.ts';
 import type { Survey, SurveyQuestion } from '../../classroom/survey-schema.ts';
 import { surveyById } from '../../classroom/surveys.ts';
-import { surveyForLevels } from '../../classroom/survey-for-levels.ts';
+import { surveyAsked } from '../../classroom/survey-for-levels.ts';
+import type { Assignment } from '../../classroom/assignment.ts';
 import { currentLocale } from '../../i18n/locale.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
 import { classroomStyles } from './classroom-styles.ts';
@@ -22,6 +23,7 @@ export class RtSurvey extends LocalizedElement {
     surveyId: { attribute: 'survey-id' },
     locale: {},
     levels: { attribute: false },
+    choice: { attribute: false },
     answers: { state: true },
     problems: { state: true },
     submitted: { state: true },
@@ -131,6 +133,8 @@ export class RtSurvey extends LocalizedElement {
   declare locale: Locale;
   /** The assignment's levels: questions on ideas none of them teaches are left out; null (a preview) asks them all. */
   declare levels: readonly string[] | null;
+  /** The teacher's own choice of questions (Assignment.surveyQuestions), over the levels' default. */
+  declare choice: Assignment['surveyQuestions'];
   declare answers: SurveyAnswers;
   declare problems: Record<string, AnswerProblem>;
   declare submitted: boolean;
@@ -148,7 +152,7 @@ export class RtSurvey extends LocalizedElement {
 
   private get survey(): Survey | undefined {
     const survey = surveyById(this.surveyId);
-    return survey && surveyForLevels(survey, this.levels);
+    return survey && surveyAsked(survey, this.levels, this.choice);
   }
 
   private text(text: Parameters<typeof localize>[0]): string {

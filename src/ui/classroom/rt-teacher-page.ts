@@ -4,13 +4,12 @@ import { LocalizedElement } from '../controls/localized-element.ts';
 import QRCode from 'qrcode';
 import { loadBrowserCatalog, loadBrowserLevelGuide } from '../../app/level-catalog-browser.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
-import { assignmentSchema, CLASS_CODE, TITLE_MAX } from '../../classroom/assignment-schema.ts';
+import { TITLE_MAX } from '../../classroom/assignment-schema.ts';
 import { compactAssignment } from '../../classroom/assignment-compact.ts';
 import { mandatoryTasks, withPreset } from '../../classroom/assignment-preset.ts';
 import { assignmentUrl, decodeAssignment } from '../../classroom/assignment-link.ts';
 import { assignmentId } from '../../classroom/assignment-id.ts';
 import { expandAssignment } from '../../classroom/assignment-expand.ts';
-import { estimatedMinutes } from '../../classroom/level-summary.ts';
 import { assignmentHashOfTeacherLink, teacherLinkHash } from '../../classroom/teacher-link.ts';
 import type { Level } from '../../quest/level-schema.ts';
 import { playableLevels, type LevelPreset } from '../../quest/level-index.ts';
@@ -21,11 +20,13 @@ import { issueText } from '../../i18n/issue-text.ts';
 import { shortList } from '../../i18n/short-list.ts';
 import { teacherPageStyles } from './teacher-page.css.ts';
 import { TeacherKeeper } from './teacher-keeper.ts';
-import { levelItem, minutesText } from './teacher-level-item.ts';
+import { levelItem } from './teacher-level-item.ts';
+import { MeasuredMinutesController, totalMinutesText } from './teacher-minutes.ts';
 import { afterLessonSection, optional, researchSection, settingsSection } from './teacher-sections.ts';
 import type { ShelfRequest } from './rt-teacher-shelf.ts';
 import '../controls/rt-theme-toggle.ts';
 import { consentSection } from './teacher-consent-section.ts';
+import { assignmentProblem } from './teacher-assignment-problem.ts';
 import './rt-scorm-download.ts';
 import './rt-teacher-concept-test.ts';
 import './rt-teacher-handout.ts';
@@ -68,6 +69,7 @@ export class RtTeacherPage extends LocalizedElement {
   private readonly levels: Level[] = playableLevels(loadBrowserCatalog());
   private readonly guide = loadBrowserLevelGuide();
   private readonly keeper = new TeacherKeeper(this);
+  private readonly measured = new MeasuredMinutesController(this);
   private made = 0;
 
   constructor() {
@@ -120,14 +122,7 @@ export class RtTeacherPage extends LocalizedElement {
 
   /** The problem that keeps the assignment from being a link, or null. */
   private get problem(): string | null {
-    if (this.assignment.title.trim() === '') return msg('Give the assignment a title.');
-    if (this.assignment.levels.length === 0) return msg('Add at least one level.');
-    const { classCode, xapiHomePage } = this.assignment;
-    if (classCode !== undefined && !CLASS_CODE.test(classCode)) return msg('A class code has up to 32 letters, digits, - or _ (no spaces).');
-    if (xapiHomePage !== undefined && !assignmentSchema.shape.xapiHomePage.safeParse(xapiHomePage).success) {
-      return msg("The school's address for xAPI must be a web address starting with https:// or http://.");
-    }
-    return null;
+    return assignmentProblem(this.assignment);
   }
 
   private async makeLink(): Promise<void> {
@@ -196,6 +191,7 @@ export class RtTeacherPage extends LocalizedElement {
     // An optional field left empty is left out, so the link (and the assignment's id) stays as without it.
     if (next.classCode === undefined) delete next.classCode;
     if (next.xapiHomePage === undefined) delete next.xapiHomePage;
+    if (next.surveyQuestions === undefined) delete next.surveyQuestions;
     this.assignment = next;
   }
 
@@ -302,10 +298,6 @@ export class RtTeacherPage extends LocalizedElement {
     const available = this.levels.filter((level) => !a.levels.includes(level.id));
     const adding = available.find((level) => level.id === this.adding) ?? available[0];
     const addingIdea = adding ? this.idea(adding.id, locale) : null;
-    const minutes = a.levels.reduce((sum, id) => {
-      const level = this.level(id);
-      return sum + (level ? estimatedMinutes(level, a.requiredTasks[id] ?? []) : 0);
-    }, 0);
     return html`<section aria-labelledby="levels-heading">
       <h2 id="levels-heading">${msg('Levels, in the order the students play them')}</h2>
       ${
@@ -325,7 +317,16 @@ export class RtTeacherPage extends LocalizedElement {
       <ol>
         ${a.levels.map((id, index) =>
           levelItem(
-            { id, level: this.level(id), index, last: a.levels.length - 1, locale, idea: this.idea(id, locale), required: a.requiredTasks[id] ?? [] },
+            {
+              id,
+              level: this.level(id),
+              index,
+              last: a.levels.length - 1,
+              locale,
+              idea: this.idea(id, locale),
+              required: a.requiredTasks[id] ?? [],
+              measured: this.measured.levels[id],
+            },
             {
               move: (at, by) => this.moveLevel(at, by),
               remove: (level) => this.removeLevel(level),
@@ -334,7 +335,7 @@ export class RtTeacherPage extends LocalizedElement {
           ),
         )}
       </ol>
-      ${a.levels.length === 0 ? nothing : html`<p class="muted" id="total-minutes">${msg(str`In all about ${minutesText(minutes)} minutes for the required tasks (an estimate from the kinds of task, not measured).`)}</p>`}
+      ${a.levels.length === 0 ? nothing : html`<p class="muted" id="total-minutes">${totalMinutesText(a, this.levels, this.measured.levels)}</p>`}
       <div class="row">
         <label for="add-level">${msg('Add a level')}</label>
         <select id="add-level" name="add-level" aria-describedby="add-level-idea" ?disabled=${available.length === 0} @change=${(e: Event) => (this.adding = (e.target as HTMLSelectElement).value)}>

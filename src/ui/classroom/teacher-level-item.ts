@@ -1,8 +1,9 @@
 import { msg, str } from '@lit/localize';
 import { html, nothing } from 'lit';
 import { levelPreviewHash } from '../../classroom/level-preview.ts';
-import { estimatedMinutes, taskKindCounts, type TeacherTaskKind } from '../../classroom/level-summary.ts';
-import { formatLocale } from '../../i18n/format-locale.ts';
+import { taskKindCounts, type TeacherTaskKind } from '../../classroom/level-summary.ts';
+import type { MeasuredLevel } from '../../classroom/measured-minutes.ts';
+import { levelMinutesText } from './teacher-minutes.ts';
 import type { Level } from '../../quest/level-schema.ts';
 import type { Locale } from '../../quest/localized-text.ts';
 import { plainLevelText } from '../../quest/text-markup.ts';
@@ -23,16 +24,18 @@ export interface LevelItem {
   locale: Locale;
   idea: string | null;
   required: readonly string[];
+  /** The class's median time in the level, when the dashboard in this browser has read results of it. */
+  measured?: MeasuredLevel;
 }
 
 /**
  * One level of the teacher page's list: its title and one idea, what its required tasks ask
- * (task kinds) and take (a stated estimate of minutes, classroom/level-summary.ts), a
+ * (task kinds) and take (a class's median minutes when known, else a stated estimate: teacher-minutes.ts), a
  * preview that opens it without the levels before it, the buttons that order or remove it,
  * and its tasks to require.
  */
 export function levelItem(item: LevelItem, actions: LevelItemActions) {
-  const { id, level, index, last, locale, idea, required } = item;
+  const { id, level, index, last, locale, idea, required, measured } = item;
   const title = level ? plainLevelText(level.title, locale) : id;
   return html`<li data-level=${id}>
     <div class="level-head">
@@ -44,7 +47,7 @@ export function levelItem(item: LevelItem, actions: LevelItemActions) {
       <button class="icon" type="button" data-move="1" ?disabled=${index === last} aria-label=${msg(str`Move ${title} down`)} title=${msg('Move down')} @click=${() => actions.move(index, 1)}>↓</button>
       <button class="icon" type="button" aria-label=${msg(str`Remove ${title}`)} title=${msg('Remove from the assignment')} @click=${() => actions.remove(id)}>✕</button>
     </div>
-    ${level ? html`<p class="level-facts">${levelFacts(level, required)}</p>` : nothing}
+    ${level ? html`<p class="level-facts">${levelFacts(level, required, measured)}</p>` : nothing}
     ${
       level
         ? html`<fieldset>
@@ -61,16 +64,11 @@ export function levelItem(item: LevelItem, actions: LevelItemActions) {
   </li>`;
 }
 
-/** "Required: 6 in the lab, 2 questions · about 9,5 min" (the page's language, its decimal mark). */
-export function levelFacts(level: Level, required: readonly string[]): string {
+/** "Required: 6 in the lab, 2 questions · about 9,5 min (estimate)" (the page's language, its decimal mark). */
+export function levelFacts(level: Level, required: readonly string[], measured?: MeasuredLevel): string {
   const kinds = taskKindCounts(level, required).map(({ kind, count }) => kindText(kind, count));
-  const minutes = minutesText(estimatedMinutes(level, required));
-  return kinds.length === 0 ? msg(str`No required tasks · about ${minutes} min`) : msg(str`Required: ${kinds.join(', ')} · about ${minutes} min`);
-}
-
-/** Minutes in the page's language: "9.5" in English, "9,5" in Dutch. */
-export function minutesText(minutes: number): string {
-  return new Intl.NumberFormat(formatLocale(), { maximumFractionDigits: 1 }).format(minutes);
+  const time = levelMinutesText(level, required, measured);
+  return kinds.length === 0 ? msg(str`No required tasks · ${time}`) : msg(str`Required: ${kinds.join(', ')} · ${time}`);
 }
 
 function kindText(kind: TeacherTaskKind, count: number): string {

@@ -2,6 +2,7 @@ import { msg } from '@lit/localize';
 import { html, nothing } from 'lit';
 import type { Assignment } from '../../classroom/assignment.ts';
 import { SURVEY_IDS } from '../../classroom/surveys.ts';
+import { surveyQuestionsSection } from './teacher-survey-questions.ts';
 
 /**
  * Sections of the teacher page (rt-teacher-page.ts), each a function of the assignment and
@@ -12,7 +13,7 @@ import { SURVEY_IDS } from '../../classroom/surveys.ts';
 /** Changes some fields of the assignment the page shows. */
 export type ChangeAssignment = (changes: Partial<Assignment>) => void;
 
-/** How the game starts and ends for the students: other levels, language, participant code, survey. */
+/** How the game starts and ends for the students: other levels, language, participant code, survey and its questions. */
 export function settingsSection(a: Assignment, change: ChangeAssignment) {
   return html`<section>
     <h2>${msg('Settings')}</h2>
@@ -33,6 +34,7 @@ export function settingsSection(a: Assignment, change: ChangeAssignment) {
       ...SURVEY_IDS.map((id): [string, string] => [id, id === 'default' ? msg('The standard questions (about 5 minutes)') : id]),
     ])}
     ${a.survey ? html`<a href=${`#/survey/${a.survey}`} target="_blank" rel="noopener">${msg('Preview the survey (opens a new tab)')}</a>` : nothing}
+    ${surveyQuestionsSection(a, change)}
   </section>`;
 }
 

@@ -23,6 +23,7 @@ export function surveyPage(game: QuestController, assignment: Assignment | null)
     survey-id=${surveyId}
     locale=${game.session?.locale ?? 'en'}
     .levels=${assignment?.levels ?? null}
+    .choice=${assignment?.surveyQuestions}
     @survey-later=${() => game.putSurveyOff(true)}
     @survey-submitted=${(event: CustomEvent<SurveySubmission>) => game.surveySubmitted(event.detail)}
   ></rt-survey-page>`;

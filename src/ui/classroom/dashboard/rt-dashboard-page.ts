@@ -30,6 +30,7 @@ import '../../controls/rt-theme-toggle.ts';
 import './rt-dashboard-quiz.ts';
 import { researchDownloads, type ClassCsvKind } from './dashboard-research-files.ts';
 import { summarizeQuizzes, type QuizSummary } from '../../../classroom/dashboard-quiz.ts';
+import { keepClassMinutes } from '../teacher-minutes.ts';
 
 /** Level and task titles by id, for labels; an id the app does not know is shown as it is. */
 function levelNames(locale: Locale) {
@@ -92,6 +93,8 @@ export class RtDashboardPage extends LocalizedElement {
 
   protected override willUpdate(changed: Map<PropertyKey, unknown>): void {
     if (changed.has('files')) this.learners = classLearners(this.files.records);
+    // Kept for the teacher page's typical minutes per level (teacher-minutes.ts).
+    if (changed.has('files')) keepClassMinutes(this.learners);
     if (changed.has('files') || changed.has('filter')) {
       this.shown = filterLearners(this.learners, this.filter);
       this.levels = summarizeLevels(this.shown);
