@@ -288,7 +288,8 @@ export class PathIntegrator implements Estimator<PathRecorder> {
     shadowRay.far = distance - 2 * epsilon;
     // Any blocker will do (any-hit), as in Whitted mode's shadow rays: `occludes` is true
     // exactly when `intersect` would find a hit, so the answer is the nearest-hit walk's,
-    // without finishing the walk after the first blocker (docs/benchmark-log.md, Cycles).
+    // without finishing the walk after the first blocker (docs/benchmark-log.md, "Path mode
+    // against Blender's Cycles").
     for (const occluders of this.scene.occluders) if (occluders.firstBlocker(shadowRay, null, EVERYWHERE, this.hit.shape) !== null) return false;
     return this.nearestEmitter(shadowRay, shadowRay.far, emitter) === null;
   }
