@@ -1,4 +1,4 @@
-import { Box3, Vector3 } from 'three';
+import { Vector3 } from 'three';
 import { angleAttenuation } from './attenuation.ts';
 import { AreaEmitter } from './area-emitter.ts';
 import { fresnelDielectric } from './dielectric-fresnel.ts';
@@ -18,8 +18,6 @@ import { hashKey, RandomStream } from './sampler.ts';
 import type { TracerScene } from './tracer-scene.ts';
 
 const INV_PI = 1 / Math.PI;
-/** A box around everything: shadow rays in path mode test every object their walk meets. */
-const EVERYWHERE = new Box3(new Vector3(-Infinity, -Infinity, -Infinity), new Vector3(Infinity, Infinity, Infinity));
 
 /**
  * A path tracer (Kajiya, "The Rendering Equation", 1986) for the path-tracing spec's
@@ -59,14 +57,13 @@ export class PathIntegrator implements Estimator<PathRecorder> {
   /** Path mode's primary rays walk the BVH (the candidates list objects only, not emitters). */
   primaryCandidates: PrimaryCandidates | null = null;
   private readonly emitters: AreaEmitter[];
-  /** Each of the scene's lights' emitter, by the light's index (null for point and spot lights). */
-  private readonly emitterOfLight: (AreaEmitter | null)[];
   private readonly random = new RandomStream();
   private sampleKey = 0;
   private time = 0;
   private readonly ray = new Ray();
   private readonly hit = new Hit();
   private readonly shadowRay = new Ray();
+  private readonly shadowHit = new Hit();
   private readonly throughput = new Vector3();
   private readonly albedo = new Vector3();
   private readonly normal = new Vector3();
@@ -83,8 +80,7 @@ export class PathIntegrator implements Estimator<PathRecorder> {
   private emitterDistance = Infinity;
 
   constructor(private readonly scene: TracerScene) {
-    this.emitterOfLight = scene.lights.map((light) => (light.type === 'area' ? new AreaEmitter(light) : null));
-    this.emitters = this.emitterOfLight.filter((emitter) => emitter !== null);
+    this.emitters = scene.lights.filter((light) => light.type === 'area').map((light) => new AreaEmitter(light));
   }
 
   startPixelSample(seed: number, x: number, y: number, sample: number): void {
@@ -242,12 +238,12 @@ export class PathIntegrator implements Estimator<PathRecorder> {
   private sampleLights(out: Vector3, recorder: PathRecorder | null): void {
     const { settings, lights } = this.scene;
     const { random, hit, normal: n, geometricNormal: ng, toLight, lightPoint, added, throughput, albedo } = this;
-    for (let index = 0; index < lights.length; index++) {
-      const light = lights[index];
-      const emitter = this.emitterOfLight[index];
+    for (const light of lights) {
+      let emitter: AreaEmitter | null = null;
       let radiance: number;
-      if (emitter !== null) {
+      if (light.type === 'area') {
         if (!settings.lightSampling) continue;
+        emitter = this.emitters.find((candidate) => candidate.light === light)!;
         emitter.samplePoint(random.next(), random.next(), lightPoint);
       } else lightPoint.copy(light.position);
       toLight.subVectors(lightPoint, hit.point);
@@ -285,13 +281,10 @@ export class PathIntegrator implements Estimator<PathRecorder> {
     shadowRay.set(this.origin.copy(this.hit.point).addScaledVector(this.geometricNormal, epsilon), toLight);
     shadowRay.time = this.time;
     this.stats.shadow++;
-    shadowRay.far = distance - 2 * epsilon;
-    // Any blocker will do (any-hit), as in Whitted mode's shadow rays: `occludes` is true
-    // exactly when `intersect` would find a hit, so the answer is the nearest-hit walk's,
-    // without finishing the walk after the first blocker (docs/benchmark-log.md, "Path mode
-    // against Blender's Cycles").
-    for (const occluders of this.scene.occluders) if (occluders.firstBlocker(shadowRay, null, EVERYWHERE, this.hit.shape) !== null) return false;
-    return this.nearestEmitter(shadowRay, shadowRay.far, emitter) === null;
+    const far = distance - 2 * epsilon;
+    this.scene.objects.nearest(shadowRay, this.shadowHit.reset(far), null, null, this.hit.shape);
+    if (this.shadowHit.shape !== null) return false;
+    return this.nearestEmitter(shadowRay, far, emitter) === null;
   }
 
   /** Spreads the mirror direction by roughness ρ around itself, as Whitted mode's glossy rays (distribution-effects §2). */
