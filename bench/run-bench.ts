@@ -10,7 +10,8 @@
  * fails otherwise. `npm run bench -- estimates` runs that part alone and updates its
  * figures in bench/results.json. Issue 38: a slider
  * step ≤ 100 ms at the 95th percentile on SwiftShader with the free lab's largest settings
- * (bench/browser-ray-budget-figures.ts).
+ * (bench/browser-ray-budget-figures.ts). Issue 42: path mode within 2× of Blender's Cycles on the
+ * anchor's Cornell box (bench/cycles-anchor.json, copied from bench/cycles-strategies.sh).
  */
 import { issueLine } from '../src/util/issue.ts';
 import { readFileSync, writeFileSync } from 'node:fs';
@@ -47,12 +48,23 @@ const SCENE_FILE = new URL('scenes/reference.json', import.meta.url);
 const RESULTS_FILE = new URL('results.json', import.meta.url);
 /** The last side-by-side run of the native anchor's measure.sh (it runs this benchmark itself, so it cannot be read from here). */
 const ANCHOR_FILE = new URL('anchor.json', import.meta.url);
+/** The last side-by-side run of Blender's Cycles against path mode (bench/cycles-strategies.sh; Blender stays out of the benchmark). */
+const CYCLES_ANCHOR_FILE = new URL('cycles-anchor.json', import.meta.url);
 
 interface SideBySide {
   measured: string;
   anchorRenderMs2Threads: number;
   oursRenderMs2Workers: number;
   ratio: number;
+}
+/** Cycles' figures: its render alone, against the whole `rt render` process (cycles-strategies.sh runs the anchor's measure.sh). */
+interface CyclesSideBySide {
+  measured: string;
+  cyclesRenderMs2Threads: number;
+  oursRenderMs2Workers: number;
+  ratio: number;
+  /** The same comparison in CPU seconds, start-up left out: steadier than wall time on a busy machine. */
+  cpuRatio: number;
 }
 /** The naive tracer takes minutes for the whole image: both tracers run on this centre crop. */
 const CROP = { x: 240, y: 232, width: 32, height: 32 };
@@ -254,6 +266,7 @@ async function main(): Promise<void> {
   const objectCount = await timeObjectCounts();
   const rtRender16 = { introductionMs: rtRender16Ms('introduction'), referenceMs: rtRender16Ms(fileURLToPath(SCENE_FILE)) };
   const anchor = JSON.parse(readFileSync(ANCHOR_FILE, 'utf8')) as SideBySide;
+  const cycles = JSON.parse(readFileSync(CYCLES_ANCHOR_FILE, 'utf8')) as CyclesSideBySide;
   const firstLoadFigures = measureFirstLoad();
   const estimates = await measureEstimates();
 
@@ -279,6 +292,13 @@ async function main(): Promise<void> {
       oursRenderMs2Workers: anchor.oursRenderMs2Workers,
       ratio: anchor.ratio,
     },
+    cyclesAnchor: {
+      measured: cycles.measured,
+      cyclesRenderMs2Threads: cycles.cyclesRenderMs2Threads,
+      oursRenderMs2Workers: cycles.oursRenderMs2Workers,
+      ratio: cycles.ratio,
+      cpuRatio: cycles.cpuRatio,
+    },
     objectCount,
     rtRender16Ms: { introduction: round(rtRender16.introductionMs), reference: round(rtRender16.referenceMs) },
     view: roundedView(view),
@@ -297,6 +317,11 @@ async function main(): Promise<void> {
     [
       `vs native Embree anchor, side by side (${anchor.measured})`,
       `${anchor.ratio}× (${anchor.oursRenderMs2Workers} / ${anchor.anchorRenderMs2Threads} ms)`,
+      '≤ 2.0× (aim 1.5×)',
+    ],
+    [
+      `path mode vs Blender's Cycles, Cornell box, side by side (${cycles.measured})`,
+      `${cycles.ratio}× (${cycles.oursRenderMs2Workers} / ${cycles.cyclesRenderMs2Threads} ms), CPU time ${cycles.cpuRatio}×`,
       '≤ 2.0× (aim 1.5×)',
     ],
     ['worker scaling 1 → 2', `${results.workerScaling}×`, '≥ 1.8×'],
