@@ -98,8 +98,11 @@ export interface TileDoneResponse {
   type: 'tile-done';
   jobId: number;
   tileId: number;
-  /** Linear RGB, 3 floats per pixel, row-major over the tile; its buffer is transferred. */
-  rgb: Float32Array<ArrayBuffer>;
+  /**
+   * Linear RGB, 3 floats per pixel, row-major over the tile; its buffer is transferred. A
+   * Float64Array in a progressive path pass: each pixel's running sum of its paths so far.
+   */
+  rgb: Float32Array<ArrayBuffer> | Float64Array<ArrayBuffer>;
   stats: RayStats;
   /** Time the worker spent on this tile, in milliseconds. */
   ms: number;

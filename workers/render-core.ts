@@ -6,6 +6,7 @@
 import type { MeshData } from '../src/scene/mesh-data.ts';
 import { emptyRayStats } from '../src/tracer/ray-tree.ts';
 import { renderTile } from '../src/tracer/render-tile.ts';
+import { renderPathTile } from '../src/tracer/render-path-tile.ts';
 import { tracePixel, tracePixels } from '../src/tracer/trace-pixel.ts';
 import { thinTraces } from '../src/tracer/tree-budget.ts';
 import { buildTracerScene, type TracerScene } from '../src/tracer/tracer-scene.ts';
@@ -93,7 +94,9 @@ export function createRenderHandler(post: PostResponse): (request: RenderRequest
       try {
         const stats = emptyRayStats();
         const start = performance.now();
-        const rgb = transferable(renderTile(tracerOf(next.scene), tile, options, stats));
+        const tracer = tracerOf(next.scene);
+        // A progressive path pass carries each pixel's sum on (render-path-tile.ts), in a fresh buffer of its own.
+        const rgb = options.pathSums ? renderPathTile(tracer, tile, options, stats) : transferable(renderTile(tracer, tile, options, stats));
         post({ type: 'tile-done', jobId, tileId, rgb, stats, ms: performance.now() - start }, [rgb.buffer]);
       } catch (error) {
         fail({ type: 'render-tile', jobId, tileId }, error);

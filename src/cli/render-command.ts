@@ -120,6 +120,7 @@ function refuseHeavy(scene: Scene, width: number, height: number, workers: numbe
     const takes = `about ${describeSeconds(lighter.estimate.seconds)}`;
     if (lighter.change === 'supersampling') return `settings.supersampling ${lighter.supersampling} (${takes})`;
     if (lighter.change === 'max-depth') return `settings.maxDepth ${lighter.maxDepth} (${takes})`;
+    if (lighter.change === 'path-samples') return `--samples ${lighter.pathSamples} (${takes})`;
     return `--width ${lighter.width} --height ${lighter.height} (${takes})`;
   });
   const lighter = options.length > 0 ? `; lighter: ${options.join(', or ')}` : '';

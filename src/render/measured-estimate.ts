@@ -65,7 +65,8 @@ export function measuredEstimate(cost: SampleCost, probed: Scene, { workers, pre
     const image = { x: 0, y: 0, width, height };
     const passes = planPasses(scene, { width, height, workers, preview });
     const samples = passes.reduce((sum, pass) => sum + tracedSamples(image, pass), 0);
-    const finalSamples = tracedSamples(image, passes[passes.length - 1]);
+    // The image's samples: the final pass's, or in path mode the paths of all its refining passes (path-passes.ts).
+    const finalSamples = passes.reduce((sum, pass) => sum + (pass.kind === 'final' ? tracedSamples(image, pass) : 0), 0);
     const rays = finalSamples * raysPerProbeSample * relative;
     const seconds = (samples * msPerSample * relative * correction) / 1000;
     return { rays, raysPerPixel: rays / (width * height), seconds, heavy: seconds > HEAVY_RENDER_SECONDS };

@@ -109,6 +109,7 @@ export function estimateRender(scene: Scene, width: number, height: number, work
 /** A change that makes a heavy render lighter, with its estimate: for the learner to pick. */
 export type LighterRender =
   | { change: 'supersampling'; supersampling: number; estimate: RenderEstimate }
+  | { change: 'path-samples'; pathSamples: number; estimate: RenderEstimate }
   | { change: 'image-size'; width: number; height: number; estimate: RenderEstimate }
   | { change: 'max-depth'; maxDepth: number; estimate: RenderEstimate };
 
@@ -116,14 +117,26 @@ export type LighterRender =
  * For a heavy render, the mildest change of each kind that brings it under
  * HEAVY_RENDER_SECONDS by `estimateRender`: fewer samples, a smaller image (same aspect
  * ratio), a shallower ray tree. A kind that cannot get there alone is left out; none for a
- * render that is not heavy.
+ * render that is not heavy. In path mode fewer samples are fewer paths per pixel (supersampling
+ * has no meaning there): the largest power of two below N that is light enough, the counts
+ * the Monte Carlo level compares (1, 4, 16, 64, 256), each halving of N making the noise
+ * √2 times larger.
  */
 export function lighterRenders(scene: Scene, width: number, height: number, estimate: EstimateRender): LighterRender[] {
   const full = estimate(scene, width, height);
   if (!full.heavy) return [];
   const lighter: LighterRender[] = [];
   const withSettings = (changes: Partial<Scene['settings']>): Scene => ({ ...scene, settings: { ...scene.settings, ...changes } });
-  for (let supersampling = scene.settings.supersampling - 1; supersampling >= 1; supersampling--) {
+  if (scene.settings.integrator === 'path') {
+    for (let pathSamples = 2 ** Math.floor(Math.log2(scene.settings.pathSamples - 1)); pathSamples >= 1; pathSamples /= 2) {
+      const fewer = estimate(withSettings({ pathSamples }), width, height);
+      if (!fewer.heavy) {
+        lighter.push({ change: 'path-samples', pathSamples, estimate: fewer });
+        break;
+      }
+    }
+  }
+  for (let supersampling = scene.settings.integrator === 'path' ? 0 : scene.settings.supersampling - 1; supersampling >= 1; supersampling--) {
     const smaller = estimate(withSettings({ supersampling }), width, height);
     if (!smaller.heavy) {
       lighter.push({ change: 'supersampling', supersampling, estimate: smaller });

@@ -48,6 +48,18 @@ export interface RenderProgress {
   total: number;
   /** Seconds the render has left at the final pass's rate so far (render-work.ts); null before the final pass's first seconds. */
   secondsLeft: number | null;
+  /** In path mode's progressive passes (path-passes.ts), how many paths per pixel are done; null in the other passes. */
+  paths: PathCount | null;
+}
+
+/** Paths per pixel of a progressive path render: "37 of 256 paths per pixel". */
+export interface PathCount {
+  /** Paths every pixel of the picture on show holds (a pass's tiles not back yet still show the paths before it). */
+  done: number;
+  /** N, the scene's pathSamples. */
+  total: number;
+  /** The render's share done, 0..1: the passes done and the pass under way's share of its rays. */
+  fraction: number;
 }
 
 export interface RenderOptions {

@@ -14,6 +14,8 @@
  *   after about 1/s² of the final time; without supersampling the final pass is that picture
  *   and the sharp pass is left out.
  * - **The final pass** traces every pixel at the scene's supersampling: the image.
+ * - **Path mode** (path-passes.ts) follows the previews with passes of one path per pixel (or
+ *   a few), each added to the pixels' sums: every one of them is a final pass.
  *
  * A worker cannot stop inside a tile, so a tile's time bounds how soon a new render takes
  * over from the old one: the goal is well under 50 ms. Smaller tiles also share the last
@@ -29,6 +31,7 @@
  */
 import type { Scene } from '../scene/scene.ts';
 import type { Tile } from '../tracer/tile.ts';
+import { pathPasses, pathsPerPass, refinesPaths } from './path-passes.ts';
 import { primaryRaysPerSample, RAYS_PER_SECOND_PER_WORKER, raysPerSample, samplesPerPixel, shadowRaysPerHit } from './render-estimate.ts';
 
 /** What a pass makes: coarse blocks, one sample per pixel, or the finished image. */
@@ -43,6 +46,8 @@ export interface RenderPass {
   /** The pass's tiles in pixels, multiples of `block` (the image's edges cut the last ones). */
   tileWidth: number;
   tileHeight: number;
+  /** Path mode's progressive passes (path-passes.ts): the pass adds paths firstPath … firstPath + samplesPerPixel − 1 to every pixel's sum. */
+  firstPath?: number;
 }
 
 export interface PassPlanOptions {
@@ -97,6 +102,10 @@ export function planPasses(scene: Scene, { width, height, workers, preview, oneS
   const passes: RenderPass[] = [];
   for (let block = firstBlock(width, height, secondsPerSample); block >= FINEST_PREVIEW_BLOCK; block /= 2) {
     passes.push({ kind: 'preview', block, samplesPerPixel: 1, ...previewTile(width, block, oneSampleSide ** 2) });
+  }
+  if (refinesPaths(scene, width, height, preview)) {
+    const pathRays = raysPerSample(scene);
+    return [...passes, ...pathPasses(scene.settings.pathSamples, pathsPerPass(scene, width, height, workers), (paths) => tileSide(pathRays * paths))];
   }
   if (final.samplesPerPixel > 1) passes.push({ kind: 'sharp', block: 1, samplesPerPixel: 1, tileWidth: oneSampleSide, tileHeight: oneSampleSide });
   passes.push(final);

@@ -26,6 +26,7 @@ import type { FailedRequest, PixelsTracedResponse, PixelTracedResponse, RayBudge
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import type { Scene } from '../scene/scene.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
+import type { RenderTileOptions } from '../tracer/tile.ts';
 import { DEFAULT_SEED, type RenderJob, type RenderOptions, type RenderResult } from './render-job.ts';
 import type { CreateRenderWorker, RenderWorkerPort } from './render-worker-port.ts';
 import { planPasses, tracedSamples } from './render-passes.ts';
@@ -386,13 +387,10 @@ export class RenderPool {
         const next = job.tiles.takeTile();
         if (!next) return;
         this.sendScene(worker);
-        const request: RenderRequest = {
-          type: 'render-tile',
-          jobId: job.id,
-          tileId: next.tileId,
-          tile: next.tile,
-          options: { imageWidth: width, imageHeight: height, seed: job.seed, block: next.block, samplesPerPixel: next.samplesPerPixel },
-        };
+        const options: RenderTileOptions = { imageWidth: width, imageHeight: height, seed: job.seed, block: next.block, samplesPerPixel: next.samplesPerPixel };
+        // A progressive path pass: the worker carries the tile's sums of paths on (path-passes.ts).
+        if (next.firstPath !== undefined) Object.assign(options, { firstPath: next.firstPath, pathSums: job.tiles.sumsOf(next.tile) });
+        const request: RenderRequest = { type: 'render-tile', jobId: job.id, tileId: next.tileId, tile: next.tile, options };
         const rays = tracedSamples(next.tile, next) * job.raysPerSample;
         this.post(worker, request, () => worker.tiles.set(next.tileId, { assignment: next, rays }));
       }

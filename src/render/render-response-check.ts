@@ -25,10 +25,11 @@ export function checkResponse(data: unknown): CheckedResponse {
     case 'tile-done': {
       const { jobId, tileId, rgb, stats, ms } = data;
       if (!isId(jobId) || !isId(tileId) || !isTime(ms)) return refuse('a tile-done without job and tile ids and a time');
-      if (!(rgb instanceof Float32Array) || !(rgb.buffer instanceof ArrayBuffer)) return refuse('a tile-done whose pixels are not a Float32Array');
+      const floats = rgb instanceof Float32Array || rgb instanceof Float64Array;
+      if (!floats || !(rgb.buffer instanceof ArrayBuffer)) return refuse('a tile-done whose pixels are not a Float32Array or Float64Array');
       if (!isRecord(stats) || !RAY_KINDS.every((kind) => isTime(stats[kind]))) return refuse('a tile-done without ray counts');
       const counts = { primary: stats.primary as number, shadow: stats.shadow as number, reflect: stats.reflect as number, refract: stats.refract as number };
-      return accept({ type: 'tile-done', jobId, tileId, rgb: rgb as Float32Array<ArrayBuffer>, stats: counts, ms });
+      return accept({ type: 'tile-done', jobId, tileId, rgb: rgb as Float32Array<ArrayBuffer> | Float64Array<ArrayBuffer>, stats: counts, ms });
     }
     case 'pixel-traced':
       if (!isId(data.requestId) || !isRayTree(data.trace)) {

@@ -9,12 +9,13 @@
  * prediction p ≤ r). It reaches 1 with the pass's last tile and not before.
  *
  * The time left is given in the final pass, which is most of the render: its predicted rays
- * left at the rate it has traced rays since its first tile came back (wall clock, all
- * workers together). Counting from the render's start took in the workers' scene build (a
- * render once said "about 4 h left" for 45 s); counting the sharp pass took in a pass that
- * traced fewer rays a second (in one browser render 1.0 million against the final pass's
- * 1.46 million: one sample a pixel in tiles painted one by one), and said "about 2 min
- * left" 60 s before the end.
+ * left (in path mode with those of the final passes after it, path-passes.ts) at the rate it
+ * has traced rays since its first tile came back (wall clock, all workers together).
+ * Counting from the render's start took in the workers' scene build (a render once said
+ * "about 4 h left" for 45 s); counting the sharp pass took in a pass that traced fewer rays
+ * a second (in one browser render 1.0 million against the final pass's 1.46 million: one
+ * sample a pixel in tiles painted one by one), and said "about 2 min left" 60 s before the
+ * end.
  */
 import type { RayStats } from '../tracer/ray-tree.ts';
 import type { Tile } from '../tracer/tile.ts';
@@ -56,6 +57,10 @@ export class RenderWork {
   private pass: RenderPass | undefined;
   private passDone = 0;
   private passRemaining = 0;
+  /** Samples per pixel of the final passes after the current one (path mode's progressive passes), by pass index. */
+  private readonly laterSamples: number[];
+  /** The rays those later passes are predicted to take. */
+  private laterRays = 0;
 
   constructor(
     width: number,
@@ -64,6 +69,7 @@ export class RenderWork {
     assumedRaysPerSample: number,
   ) {
     this.map = new RayCostMap(width, height, assumedRaysPerSample);
+    this.laterSamples = passes.map((_, index) => passes.slice(index + 1).reduce((sum, pass) => sum + (pass.kind === 'final' ? samplesPerPixel(pass) : 0), 0));
     this.snapshot = this.map.snapshot();
     this.startPass(0);
   }
@@ -74,6 +80,8 @@ export class RenderWork {
     this.snapshot = this.map.snapshot();
     this.passDone = 0;
     this.passRemaining = this.pass ? this.snapshot.predictImage(samplesPerPixel(this.pass)) : 0;
+    // The prediction is linear in the samples: one image's worth of a sample, times theirs.
+    this.laterRays = this.pass ? this.snapshot.predictImage(1) * this.laterSamples[index] : 0;
   }
 
   /** A tile of the current pass came back with `samples` traced; `last`: the pass's last tile. */
@@ -98,6 +106,6 @@ export class RenderWork {
     const seconds = (now - this.clock.at) / 1000;
     const rays = this.rays - this.clock.rays;
     if (seconds < SECONDS_BEFORE_TIME_LEFT || rays <= 0) return null;
-    return (this.passRemaining * seconds) / rays;
+    return ((this.passRemaining + this.laterRays) * seconds) / rays;
   }
 }

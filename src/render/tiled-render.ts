@@ -14,7 +14,7 @@ import { addRayStats, emptyRayStats, type RayStats } from '../tracer/ray-tree.ts
 import type { Tile } from '../tracer/tile.ts';
 import { tracedSamples, type RenderPass } from './render-passes.ts';
 import { RenderWork } from './render-work.ts';
-import type { PreviewImage, RenderChanges, RenderImage, RenderOptions, RenderProgress } from './render-job.ts';
+import type { PathCount, PreviewImage, RenderChanges, RenderImage, RenderOptions, RenderProgress } from './render-job.ts';
 
 /** Tiles listed for the painter at most; past this many, the rows they span are given as one full-width tile. */
 const MAX_CHANGED_TILES = 256;
@@ -36,6 +36,8 @@ export interface TileAssignment {
   tile: Tile;
   block: number;
   samplesPerPixel: number;
+  /** A progressive path pass's first path (path-passes.ts): the tile carries its pixels' sums on. */
+  firstPath?: number;
 }
 
 export class TiledRender {
@@ -69,6 +71,11 @@ export class TiledRender {
   private changedTiles: Tile[] = [];
   /** Whether changedTiles is the one full-width tile of many tiles' rows. */
   private changedAsRows = false;
+  /**
+   * Path mode's progressive passes: each pixel's sum of its paths so far, in 64-bit floats as
+   * the tracer sums them (render-path-tile.ts); null for a render without them.
+   */
+  private readonly sums: Float64Array | null;
 
   /** `assumedRaysPerSample`: the render estimate's rays per sample, to predict the first pass's progress by. */
   constructor(
@@ -87,6 +94,7 @@ export class TiledRender {
       firstId += count;
     }
     this.work = new RenderWork(width, height, passes, assumedRaysPerSample);
+    this.sums = passes.some((pass) => pass.firstPath !== undefined) ? new Float64Array(width * height * 3) : null;
     this.startPass();
   }
 
@@ -104,6 +112,7 @@ export class TiledRender {
       if (this.taken === pass.count) return null;
       const index = this.taken++;
       next = { tileId: pass.firstId + index, tile: this.tileOf(pass, index), block: pass.block, samplesPerPixel: pass.samplesPerPixel };
+      if (pass.firstPath !== undefined) next.firstPath = pass.firstPath;
     }
     this.outstanding.set(next.tileId, next);
     return next;
@@ -117,12 +126,31 @@ export class TiledRender {
     this.returned.push(tile);
   }
 
-  /** Why a finished tile cannot be pasted (not handed out or already back, wrong pixel count), or null when it can. */
-  problemWith(tileId: number, rgb: Float32Array): string | null {
-    const tile = this.outstanding.get(tileId)?.tile;
-    if (!tile) return `tile ${tileId} is not one being rendered`;
+  /** The running sums of a progressive path pass's tile (path-passes.ts), copied for its worker to carry on. */
+  sumsOf({ x, y, width, height }: Tile): Float64Array {
+    const sums = new Float64Array(width * height * 3);
+    if (!this.sums) return sums;
+    for (let row = 0; row < height; row++) {
+      const from = ((y + row) * this.image.width + x) * 3;
+      sums.set(this.sums.subarray(from, from + width * 3), row * width * 3);
+    }
+    return sums;
+  }
+
+  /**
+   * Why a finished tile cannot be pasted (not handed out or already back, wrong pixel count,
+   * 32-bit pixels where a progressive path pass wants 64-bit sums or the other way round),
+   * or null when it can.
+   */
+  problemWith(tileId: number, rgb: Float32Array | Float64Array): string | null {
+    const assignment = this.outstanding.get(tileId);
+    if (!assignment) return `tile ${tileId} is not one being rendered`;
+    const { tile, firstPath } = assignment;
     const expected = tile.width * tile.height * 3;
-    return rgb.length === expected ? null : `tile ${tileId} came back with ${rgb.length} values instead of ${expected}`;
+    if (rgb.length !== expected) return `tile ${tileId} came back with ${rgb.length} values instead of ${expected}`;
+    if ((firstPath !== undefined) !== rgb instanceof Float64Array)
+      return `tile ${tileId} came back with ${firstPath === undefined ? 'sums of paths' : 'pixels'} instead of ${firstPath === undefined ? 'pixels' : 'sums of paths'}`;
+    return null;
   }
 
   /**
@@ -131,19 +159,26 @@ export class TiledRender {
    * run, so a callback that throws leaves the render consistent. The caller checks the tile
    * with `problemWith` first.
    */
-  accept(tileId: number, rgb: Float32Array, stats: RayStats, ms: number): void {
+  accept(tileId: number, rgb: Float32Array | Float64Array, stats: RayStats, ms: number): void {
     const pass = this.passes[this.pass];
     const tile = this.tileOf(pass, tileId - pass.firstId);
     this.outstanding.delete(tileId);
     const preview = this.preview;
-    if (preview) this.pastePreview(preview, tile, rgb);
+    if (rgb instanceof Float64Array) this.addPaths(tile, rgb, (pass.firstPath ?? 0) + pass.samplesPerPixel);
+    else if (preview) this.pastePreview(preview, tile, rgb);
     else this.paste(tile, rgb);
     this.slowestTileMs = Math.max(this.slowestTileMs, ms);
     if (pass.kind === 'final') addRayStats(this.stats, stats);
     const first = ++this.finishedInPass === 1;
     const passComplete = this.finishedInPass === pass.count;
     const work = this.work.tileBack(tile, tracedSamples(tile, pass), stats, passComplete);
-    const progress: RenderProgress = { phase: pass.kind, pass: this.pass + 1, passes: this.passes.length, ...work };
+    const progress: RenderProgress = {
+      phase: pass.kind,
+      pass: this.pass + 1,
+      passes: this.passes.length,
+      ...work,
+      paths: this.pathCount(pass, work, passComplete),
+    };
     if (passComplete) {
       this.pass++;
       this.taken = 0;
@@ -222,6 +257,34 @@ export class TiledRender {
         preview.rgb[to + 2] = rgb[from + 2];
       }
     }
+  }
+
+  /**
+   * A progressive path pass's tile: its pixels' new sums kept, and shown divided by the paths
+   * they hold, as `v · (1/paths)`: three.js's divideScalar, which a one-pass render's pixel
+   * ends with (render-path-pixel.ts), so the last pass shows the same bits.
+   */
+  private addPaths(tile: Tile, sums: Float64Array, paths: number): void {
+    const { x, y, width, height } = tile;
+    const scale = 1 / paths;
+    this.noteChanged(tile);
+    for (let row = 0; row < height; row++) {
+      let at = ((y + row) * this.image.width + x) * 3;
+      for (let i = row * width * 3, end = i + width * 3; i < end; i++, at++) {
+        this.sums![at] = sums[i];
+        this.image.rgb[at] = sums[i] * scale;
+      }
+    }
+  }
+
+  /** The paths per pixel done after this tile of a progressive path pass; null in the other passes. */
+  private pathCount(pass: RenderPass, work: { done: number; total: number }, passComplete: boolean): PathCount | null {
+    if (pass.firstPath === undefined) return null;
+    const total = this.passes[this.passes.length - 1]!;
+    const paths = (total.firstPath ?? 0) + total.samplesPerPixel;
+    const done = pass.firstPath + (passComplete ? pass.samplesPerPixel : 0);
+    const share = passComplete ? 1 : work.done / Math.max(work.total, Number.MIN_VALUE);
+    return { done, total: paths, fraction: (pass.firstPath + pass.samplesPerPixel * share) / paths };
   }
 
   /** Tiles run row by row, top to bottom; those on the right and bottom edges are cut to fit. */

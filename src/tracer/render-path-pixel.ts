@@ -45,12 +45,33 @@ export function renderPathPixel(
   recorder: PathRecorder | null,
   paths = scene.settings.pathSamples,
 ): Vector3 {
+  out.set(0, 0, 0);
+  return addPathSamples(scene, x, y, width, height, seed, 0, paths, out, recorder).divideScalar(paths);
+}
+
+/**
+ * Adds the contributions of pixel (x, y)'s paths `from` … `to` − 1 to `sum`, one by one in
+ * that order. The render window's progressive passes continue a pixel's sum pass after pass
+ * (render-path-tile.ts): floating-point addition is not associative, so only a sum carried
+ * on in the same order ends where one pass over all N paths ends, to the last bit.
+ */
+export function addPathSamples(
+  scene: TracerScene,
+  x: number,
+  y: number,
+  width: number,
+  height: number,
+  seed: number,
+  from: number,
+  to: number,
+  sum: Vector3,
+  recorder: PathRecorder | null = null,
+): Vector3 {
   const integrator = pathIntegratorFor(scene);
   const { camera } = scene;
   const hasLens = camera.aperture > 0;
   const moving = scene.settings.timeSamples > 1;
-  out.set(0, 0, 0);
-  for (let sample = 0; sample < paths; sample++) {
+  for (let sample = from; sample < to; sample++) {
     random.reset(hashKey(seed, x, y, sample, PIXEL_POSITION_STREAM));
     camera.direction(x + random.next(), y + random.next(), width, height, direction);
     let time = 0;
@@ -65,7 +86,7 @@ export function renderPathPixel(
     primary.set(lensPoint, direction);
     primary.time = time;
     integrator.stats.primary++;
-    out.add(integrator.li(primary, pathColor, recorder));
+    sum.add(integrator.li(primary, pathColor, recorder));
   }
-  return out.divideScalar(paths);
+  return sum;
 }

@@ -19,9 +19,19 @@ const primaryCandidates = new PrimaryCandidates();
  * `options.samplesPerPixel` 1 at block 1 traces one sample per pixel (the sharp pass).
  */
 export function renderTile(scene: TracerScene, tile: Tile, options: RenderTileOptions, stats?: RayStats): Float32Array {
-  const { imageWidth, imageHeight } = options;
   const block = Math.max(1, Math.floor(options.block ?? 1));
   const rgb = new Float32Array(tile.width * tile.height * 3);
+  traceTile(scene, tile, options, block, stats, () => renderPixels(scene, tile, options, block, rgb));
+  return rgb;
+}
+
+/**
+ * Runs `trace` over a tile of the image traced `block` times smaller: the integrator's pixel
+ * spread and the objects the tile's primary rays can meet are set for it, and the rays it
+ * traced are added to `stats` when given.
+ */
+export function traceTile(scene: TracerScene, tile: Tile, options: RenderTileOptions, block: number, stats: RayStats | undefined, trace: () => void): void {
+  const { imageWidth, imageHeight } = options;
   const integrator = integratorFor(scene);
   // A preview traces an image `block` times smaller: its pixels are that much wider.
   integrator.pixelSpread = scene.camera.pixelSpread(imageHeight / block);
@@ -37,12 +47,11 @@ export function renderTile(scene: TracerScene, tile: Tile, options: RenderTileOp
     imageHeight / block,
   );
   try {
-    renderPixels(scene, tile, options, block, rgb);
+    trace();
   } finally {
     integrator.primaryCandidates = null;
   }
   if (stats) addRayStats(stats, integrator.stats);
-  return rgb;
 }
 
 function renderPixels(scene: TracerScene, tile: Tile, options: RenderTileOptions, block: number, rgb: Float32Array): void {

@@ -21,4 +21,11 @@ export interface RenderTileOptions {
    * supersampling; 1 gives the render window's sharp one-sample picture. Previews always trace 1.
    */
   samplesPerPixel?: number;
+  /**
+   * Path mode's progressive passes (render-path-tile.ts): the pass traces paths firstPath …
+   * firstPath + samplesPerPixel − 1 of each pixel, added to `pathSums`, the tile's running
+   * sums of the paths before (3 per pixel, row-major over the tile).
+   */
+  firstPath?: number;
+  pathSums?: Float64Array;
 }

@@ -29,6 +29,17 @@ describe('the estimate from a probe of the scene', () => {
     expect(once(scene, 200, 100).seconds).toBeCloseTo(40);
   });
 
+  it("counts the rays of all path mode's refining passes as the image's, and every path's time", () => {
+    const scene = withSettings(lab, { integrator: 'path', pathSamples: 64 });
+    const inWindow = measuredEstimate(cost, scene, { workers: 2, preview: true, correction: 1 })(scene, 320, 240);
+    const oneShot = measuredEstimate(cost, scene, { workers: 2, preview: false, correction: 1 })(scene, 320, 240);
+    expect(inWindow.rays).toBeCloseTo(64 * 320 * 240 * 40);
+    expect(oneShot.rays).toBeCloseTo(inWindow.rays);
+    // The window adds only its coarse previews, a few percent of one path per pixel.
+    expect(inWindow.seconds).toBeGreaterThan(oneShot.seconds);
+    expect(inWindow.seconds).toBeLessThan(oneShot.seconds * (1 + 1 / 64));
+  });
+
   it('adds the previews and the sharp pass of the render window to the final pass', () => {
     const scene = withSettings(lab, { supersampling: 2 });
     const estimate = (preview: boolean) => measuredEstimate(cost, scene, { workers: 2, preview, correction: 1 })(scene, 512, 384).seconds;

@@ -74,4 +74,25 @@ describe('the render estimate', () => {
     expect(size.width / size.height).toBeCloseTo(1);
     expect(lighterRenders(defaultScene(), 512, 384, modelEstimate(2))).toEqual([]);
   });
+
+  it('in path mode, counts pathSamples × pixels × path length, and suggests fewer paths per pixel, never supersampling', () => {
+    const path = (settings: Record<string, unknown>) =>
+      sceneFrom({ ...defaultScene(), settings: { ...defaultScene().settings, integrator: 'path', ...settings } });
+    const scene = path({ pathSamples: 4096, maxDepth: 7, supersampling: 4 });
+    const [width, height] = [640, 480];
+    const full = estimateRender(scene, width, height, 2);
+    // Rays of one path at most: (maxDepth + 1) vertices, each its ray and a light sample per light.
+    const perPath = 8 * (1 + defaultScene().lights.length);
+    expect(full.rays).toBe(4096 * width * height * perPath);
+    expect(estimateRender(path({ pathSamples: 1024, maxDepth: 7, supersampling: 4 }), width, height, 2).rays).toBe(full.rays / 4);
+    expect(full.heavy).toBe(true);
+    const lighter = lighterRenders(scene, width, height, modelEstimate(2));
+    expect(lighter.map((option) => option.change)).toEqual(['path-samples', 'image-size', 'max-depth'].slice(0, lighter.length));
+    const fewer = lighter[0];
+    if (fewer?.change !== 'path-samples') throw new Error('no fewer-paths suggestion');
+    expect(fewer.estimate.heavy).toBe(false);
+    // The largest power of two that is light enough: twice as many paths would be heavy.
+    expect(Math.log2(fewer.pathSamples) % 1).toBe(0);
+    expect(estimateRender(path({ pathSamples: 2 * fewer.pathSamples, maxDepth: 7 }), width, height, 2).heavy).toBe(true);
+  });
 });

@@ -106,6 +106,8 @@ export class HeavyRenderCheck implements ReactiveController {
       switch (choice.change) {
         case 'supersampling':
           return html`<button @click=${() => use({ supersampling: choice.supersampling }, seconds)}>${msg(str`Supersampling ${choice.supersampling} (about ${wait})`)}</button>`;
+        case 'path-samples':
+          return html`<button @click=${() => use({ pathSamples: choice.pathSamples }, seconds)}>${msg(str`${choice.pathSamples} paths per pixel (about ${wait})`)}</button>`;
         case 'image-size':
           return html`<button @click=${() => use({ imageSize: [choice.width, choice.height] }, seconds)}>${msg(str`${choice.width} × ${choice.height} pixels (about ${wait})`)}</button>`;
         case 'max-depth':

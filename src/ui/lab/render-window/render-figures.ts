@@ -3,7 +3,7 @@
  * took, how many rays it traced and how many per second.
  */
 import { msg, str } from '@lit/localize';
-import type { RenderProgress } from '../../../render/render-job.ts';
+import type { PathCount, RenderProgress } from '../../../render/render-job.ts';
 import type { RayStats } from '../../../tracer/ray-tree.ts';
 import { localNumbers } from '../../../i18n/number-format.ts';
 
@@ -11,6 +11,7 @@ import { localNumbers } from '../../../i18n/number-format.ts';
 const inUnitsFormat = localNumbers({ maximumFractionDigits: 2 });
 const seconds2 = localNumbers({ minimumFractionDigits: 2, maximumFractionDigits: 2 });
 const tenths = localNumbers({ minimumFractionDigits: 1, maximumFractionDigits: 1 });
+const wholeNumbers = localNumbers({ maximumFractionDigits: 0 });
 
 /** Every ray the render traced: primary, shadow, reflected and refracted. */
 export function countRays(stats: RayStats): number {
@@ -60,8 +61,21 @@ export function formatTimeLeft(secondsLeft: number): string {
  * The pass under way and how far into it: "Step 1 of 4: quick preview 40 %", then "sharp
  * picture (1 sample per pixel)", then "full quality"; "Rendering 42 %" for a render of one
  * pass. Each pass counts from 0 to 100 %, so even a render of days shows movement at once.
+ * Path mode's passes that refine the picture say how many paths per pixel it holds: "37 of
+ * 256 paths per pixel, 14 %" (the render's share done, as the bar shows it).
  */
-export function progressText({ phase, pass, passes, done, total }: Pick<RenderProgress, 'phase' | 'pass' | 'passes' | 'done' | 'total'>): string {
+export function progressText({
+  phase,
+  pass,
+  passes,
+  done,
+  total,
+  paths,
+}: Pick<RenderProgress, 'phase' | 'pass' | 'passes' | 'done' | 'total'> & { paths?: PathCount | null }): string {
+  if (paths)
+    return msg(
+      str`${wholeNumbers.format(paths.done)} of ${wholeNumbers.format(paths.total)} paths per pixel, ${formatPercent(Math.floor(paths.fraction * 1e6), 1e6)}`,
+    );
   const percent = formatPercent(done, total);
   if (passes === 1) return msg(str`Rendering ${percent}`);
   switch (phase) {
@@ -83,4 +97,14 @@ export function formatPercent(done: number, total: number): string {
   const perMille = Math.min(1000, Math.max(0, Math.floor((1000 * done) / Math.max(total, 1))));
   if (perMille < 100) return `${tenths.format(perMille / 10)} %`;
   return `${Math.floor(perMille / 10)} %`;
+}
+
+/** How full the progress bar is, 0..1: the pass's share of its rays, or in path mode's refining passes the render's. */
+export function progressFraction({ done, total, paths }: Pick<RenderProgress, 'done' | 'total'> & { paths?: PathCount | null }): number {
+  return paths ? paths.fraction : done / Math.max(total, Number.MIN_VALUE);
+}
+
+/** A cancelled path render's picture: "Each of its pixels holds at least 37 of the 256 paths." */
+export function pathsOnShow({ done, total }: PathCount): string {
+  return msg(str`Each of its pixels holds at least ${wholeNumbers.format(done)} of the ${wholeNumbers.format(total)} paths.`);
 }

@@ -1,6 +1,6 @@
 import type { ReactiveController, ReactiveControllerHost } from 'lit';
 import { loadMeshes } from '../../../render/load-meshes-browser.ts';
-import type { RenderChanges, RenderImage, RenderJob, RenderProgress } from '../../../render/render-job.ts';
+import type { PathCount, RenderChanges, RenderImage, RenderJob, RenderProgress } from '../../../render/render-job.ts';
 import { RenderWorkersUnavailable, type RenderPool } from '../../../render/render-pool.ts';
 import type { Store } from '../../../lab-state/store.ts';
 import { meshNamesInScene } from '../../../scene/mesh-names.ts';
@@ -16,8 +16,8 @@ export type RenderStatus =
   | { kind: 'starting' }
   | ({ kind: 'rendering' } & RenderProgress)
   | { kind: 'finished'; ms: number; rays: number; workers: number }
-  /** byUser: the Cancel button; otherwise the pool dropped the job (a new scene or render). */
-  | { kind: 'cancelled'; byUser: boolean }
+  /** byUser: the Cancel button; otherwise the pool dropped the job (a new scene or render). `paths`: a path render's count on show. */
+  | { kind: 'cancelled'; byUser: boolean; paths?: PathCount | null }
   /** `unloadable`: the workers' code could not be loaded (render-pool.ts): only a reload helps. */
   | { kind: 'failed'; message: string; unloadable: boolean };
 
@@ -145,8 +145,9 @@ export class RenderJobController implements ReactiveController {
   cancel(store: Store | undefined): void {
     if (!this.running) return;
     this.cancelledImage = this.job?.image ?? null;
+    const paths = this.status.kind === 'rendering' ? this.status.paths : null;
     this.stop();
-    this.setStatus({ kind: 'cancelled', byUser: true });
+    this.setStatus({ kind: 'cancelled', byUser: true, paths });
     store?.dispatch({ type: 'render.cancelled' });
   }
 

@@ -16,7 +16,7 @@ import { BandPainter } from './band-painter.ts';
 import { canvasView } from './image-zoom.ts';
 import { ContrastToggle } from './contrast-toggle.ts';
 import { errorMessage, RenderJobController, type ShownRender } from './render-job-controller.ts';
-import { formatCount, formatDuration, formatTimeLeft, progressText, raysPerSecond } from './render-figures.ts';
+import { formatCount, formatDuration, pathsOnShow, formatTimeLeft, progressFraction, progressText, raysPerSecond } from './render-figures.ts';
 import { HeavyRenderCheck } from './heavy-render-check.ts';
 import { renderWindowLayout } from './render-window-layout.css.ts';
 import { controlStyles } from './render-window-styles.ts';
@@ -320,7 +320,7 @@ export class RtRenderWindow extends LocalizedElement {
       case 'starting':
         return html`<progress aria-label=${label}></progress><span class="phase">${msg('Starting…')}</span>`;
       case 'rendering':
-        return html`<progress aria-label=${label} max=${status.total} value=${status.done}></progress>
+        return html`<progress aria-label=${label} max="1" value=${progressFraction(status)}></progress>
           <span class="phase" data-testid="render-progress">${progressText(status)}</span>`;
       case 'finished':
         return html`<progress aria-label=${label} max="1" value="1"></progress><span class="phase">${msg('Done')}</span>`;
@@ -359,6 +359,7 @@ export class RtRenderWindow extends LocalizedElement {
         return html`<p role="status" data-testid="render-status">
           ${status.byUser ? msg('Render cancelled.') : msg('The render was stopped before it finished (the scene changed or another render started).')}
           ${this.jobs.hasPartial ? msg('The image on show is partial: the render stopped before every pixel had all its samples. Save as PNG saves it as shown.') : nothing}
+          ${status.paths?.done ? pathsOnShow(status.paths) : nothing}
         </p>`;
       case 'failed':
         if (status.unloadable)

@@ -40,7 +40,7 @@ function spans(from: number, to: number, scale: number, origin: number): Spans {
  * smaller than the image: each the mean of the image pixels under it, weighted by the area
  * they cover (a box filter), over the pixels `rendered` says hold a value (null: all do), so a
  * canvas pixel half on a tile not traced yet shows the traced half, not a mix with black.
- * Averaged as shown (each value clamped to 0–1) and quantized like the image itself
+ * Averaged as shown (each value clamped to 0–1, in path mode after its exposure) and quantized like the image itself
  * (toRgba8, with its dithering and encoding), dithered by canvas position: the pixels start at a multiple of the dither period
  * and `part` says which of them the piece touched.
  */
@@ -58,6 +58,8 @@ export function shrinkPiece(image: RenderImage, rendered: Uint8Array | null, can
   const columns = spans(fromX, toX, scaleX, left);
   const rows = spans(fromY, toY, scaleY, top);
   // Per canvas pixel: weighted sums of R, G, B, and of the weights.
+  // Path mode shows radiance times 2^exposure (quantize.ts): clamped after that scale, as shown.
+  const scale = quantization.integrator === 'path' ? 2 ** quantization.exposure : 1;
   const sums = new Float64Array(width * height * 4);
   const add = (row: number, column: number, weight: number, r: number, g: number, b: number) => {
     if (weight <= 0 || row < 0 || column < 0 || row >= height || column >= width) return;
@@ -73,9 +75,9 @@ export function shrinkPiece(image: RenderImage, rendered: Uint8Array | null, can
     for (let x = fromX; x < toX; x++) {
       const pixel = y * image.width + x;
       if (rendered && !rendered[pixel]) continue;
-      const r = Math.min(1, Math.max(0, image.rgb[pixel * 3]));
-      const g = Math.min(1, Math.max(0, image.rgb[pixel * 3 + 1]));
-      const b = Math.min(1, Math.max(0, image.rgb[pixel * 3 + 2]));
+      const r = Math.min(1, Math.max(0, image.rgb[pixel * 3] * scale));
+      const g = Math.min(1, Math.max(0, image.rgb[pixel * 3 + 1] * scale));
+      const b = Math.min(1, Math.max(0, image.rgb[pixel * 3 + 2] * scale));
       const column = columns.first[x - fromX];
       const columnShare = columns.share[x - fromX];
       add(row, column, rowShare * columnShare, r, g, b);
@@ -89,7 +91,7 @@ export function shrinkPiece(image: RenderImage, rendered: Uint8Array | null, can
     const weight = sums[i * 4 + 3];
     if (weight > 0) for (let c = 0; c < 3; c++) rgb[i * 3 + c] = sums[i * 4 + c] / weight;
   }
-  const rgba = toRgba8(rgb, width, height, quantization);
+  const rgba = toRgba8(rgb, width, height, { ...quantization, exposure: 0 });
   return {
     x: left,
     y: top,

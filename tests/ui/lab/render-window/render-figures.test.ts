@@ -6,6 +6,8 @@ import {
   formatPercent,
   formatTimeLeft,
   formatWait,
+  pathsOnShow,
+  progressFraction,
   progressText,
   raysPerSecond,
 } from '../../../../src/ui/lab/render-window/render-figures.ts';
@@ -63,6 +65,14 @@ describe('render figures', () => {
     expect(progressText({ phase: 'final', pass: 1, passes: 1, done: 42, total: 100 })).toBe('Rendering 42 %');
   });
 
+  it("counts path mode's paths per pixel, and fills the bar by the render's share of them", () => {
+    const progress = { phase: 'final', pass: 40, passes: 259, done: 50, total: 100, paths: { done: 37, total: 256, fraction: 37.5 / 256 } } as const;
+    expect(progressText(progress)).toBe('37 of 256 paths per pixel, 14 %');
+    expect(progressFraction(progress)).toBe(37.5 / 256);
+    expect(progressFraction({ ...progress, paths: null })).toBe(0.5);
+    expect(pathsOnShow({ done: 37, total: 256, fraction: 0.2 })).toBe('Each of its pixels holds at least 37 of the 256 paths.');
+  });
+
   it('shows a tenth of a percent under 10 %, rounded down, so a long pass moves and only a finished one reads 100 %', () => {
     expect(formatPercent(0, 16_777_216)).toBe('0.0 %');
     expect(formatPercent(16_777, 16_777_216)).toBe('0.0 %');
@@ -89,5 +99,8 @@ describe('render figures in Dutch', () => {
     // The render's progress under 10 % too (it read "2.5 %" in the Dutch window).
     expect(formatPercent(25, 1000)).toBe('2,5 %');
     expect(formatTimeLeft(150)).toBe('nog ongeveer 3 min');
+    expect(progressText({ phase: 'final', pass: 3, passes: 9, done: 1, total: 2, paths: { done: 1024, total: 4096, fraction: 0.25 } })).toBe(
+      '1.024 van de 4.096 paden per pixel, 25 %',
+    );
   });
 });

@@ -2,6 +2,7 @@ import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import type { RenderImage } from '../../../../src/render/render-job.ts';
 import { shrinkPiece } from '../../../../src/ui/lab/render-window/shrink-piece.ts';
 import { PLAIN_QUANTIZATION, type Quantization } from '../../../../src/tracer/quantize.ts';
+import { linearToSrgb } from '../../../../src/tracer/srgb.ts';
 
 const PLAIN: Quantization = PLAIN_QUANTIZATION;
 const DITHERED: Quantization = { ...PLAIN_QUANTIZATION, dithering: true };
@@ -50,6 +51,15 @@ describe('a piece of an image shown on a smaller canvas', () => {
     const highlight = image(2, 2, (x, y) => (x === 0 && y === 0 ? 8 : 0.5));
     const shrunk = shrinkPiece(highlight, null, { width: 1, height: 1 }, PLAIN, { x: 0, y: 0, width: 2, height: 2 });
     expect(touched(shrunk)).toEqual([[Math.round(((1 + 0.5 * 3) / 4) * 255)]]);
+  });
+
+  it('in path mode, averages radiance times 2^exposure, clamped after the exposure, and shows it sRGB-encoded', () => {
+    // Exposure −2: the emitter's 8 shows as 1 (clamped), the walls' 0.5 as 0.125.
+    const path: Quantization = { ...PLAIN_QUANTIZATION, integrator: 'path', exposure: -2 };
+    const highlight = image(2, 2, (x, y) => (x === 0 && y === 0 ? 8 : 0.5));
+    const shrunk = shrinkPiece(highlight, null, { width: 1, height: 1 }, path, { x: 0, y: 0, width: 2, height: 2 });
+    const shown = (1 + 0.125 * 3) / 4;
+    expect(touched(shrunk)).toEqual([[Math.round(255 * linearToSrgb(shown))]]);
   });
 
   it('touches every canvas pixel the piece overlaps and no other; neighbouring pieces share the pixel between them', () => {
