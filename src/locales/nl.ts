@@ -188,7 +188,6 @@
 's2490d305ff5f3dd1': `Maak eerst de opdrachten van de levels hiervoor af om dit level te openen`,
 's24afdb48933806f7': `Geraytraced beeld`,
 's24d6cd714d9842ff': str`moet een geheel getal van 0 tot en met ${0} zijn, maar is ${1}`,
-'s24d831fa11e82792': `Stuur op elk mat punt van een pad ook een schaduwstraal naar een punt op elke lamp. Zonder dit zien alleen paden die toevallig een lamp raken die lamp, en puntlampen worden nooit gezien.`,
 's24d88080a290e124': `Sluit het rendervenster`,
 's24f34205e80dbab6': str`Deze opdrachtlink noemt levels of opdrachten die deze versie van het spel niet heeft: ${0}. Je speelt nu vrij.`,
 's2558123f61bc1afe': str`${0} op diepte ${1} raakt niets.`,
@@ -1276,5 +1275,6 @@ ${1}`,
 'sff304b4696126b81': str`Ingeleverd (${0})`,
 'sffd0815bb58a51ba': `Opslaan en delen`,
 'sffe3311218868702': `De kleur c wordt opgeslagen als c × 255 en het scherm leest dat getal als zijn eigen waarde, dus je ziet minder licht dan c (zonder gamma, zoals in de Virtual Ray Tracer).`,
+'s4a23ff70dab2f12f': `At every matt point of a path, also send a shadow ray to a random point on each area light. Without it, only paths that happen to hit the lamp see it. Point and spot lights are always sampled: no path can hit them.`,
     };
   

@@ -75,7 +75,7 @@ export function lightSamplingText(): ControlText<'lightSampling'> {
     name: 'lightSampling',
     label: msg('Light sampling'),
     tooltip: msg(
-      'At every matt point of a path, also send a shadow ray to a point on each light. Without it, only paths that happen to hit a lamp see it, and point lights are never seen.',
+      'At every matt point of a path, also send a shadow ray to a random point on each area light. Without it, only paths that happen to hit the lamp see it. Point and spot lights are always sampled: no path can hit them.',
     ),
   };
 }
