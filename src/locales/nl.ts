@@ -90,7 +90,7 @@
 's101fdcbb9dedf6c3': str`${0} is ${1} gedraaid.`,
 's1024f85a133bd685': `De grootte van het beeld dat de volgende render maakt (in te stellen in het ray-tracerpaneel)`,
 's1050891f7b6ecbfd': `een waarde`,
-'s108e9a348bcea6a8': `Schaduwstralen naar lampen`,
+'s108e9a348bcea6a8': `Schaduwstralen naar vlaklampen`,
 's1097e5d7360bef25': `Vastklikken aan of uit zonder Shift ingedrukt te houden`,
 's10c5ee6aa9e42c86': str`een lijst van ${0} gehele getallen`,
 's11f349c90d7ebf00': `de code is onvolledig of beschadigd: vraag de leerling hem helemaal opnieuw te kopiëren`,
