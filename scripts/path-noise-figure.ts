@@ -40,7 +40,7 @@ const errors = COUNTS.map((n, i) => rmsError(render(scene, n, i + 1), reference)
 for (const [i, n] of COUNTS.entries()) console.log(`N = ${n}: error ${errors[i]!.toExponential(3)}`);
 
 // Log–log axes: N from 1 to 256 left to right; the error axis spans the measured errors, in half decades.
-const [left, right, top, bottom] = [70, 570, 20, 280];
+const [left, right, top, bottom] = [78, 400, 22, 236];
 const logMax = Math.ceil(Math.log10(errors[0]! * 1.2) * 2) / 2;
 const logMin = Math.floor(Math.log10(Math.min(...errors) / 1.5) * 2) / 2;
 const x = (n: number) => left + ((right - left) * Math.log(n)) / Math.log(256);
@@ -48,7 +48,7 @@ const y = (error: number) => top + ((bottom - top) * (logMax - Math.log10(error)
 const line = (n: number) => errors[0]! / Math.sqrt(n);
 const ticksY: number[] = [];
 for (let e = Math.ceil(logMin); e <= Math.floor(logMax); e++) ticksY.push(e);
-const svg = `<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 600 330" width="600" height="330">
+const svg = `<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 440 280" width="440" height="280">
   <!--
     Made by scripts/path-noise-figure.ts from this tracer's renders of level ${LEVEL}'s room
     (${SIZE} × ${SIZE}, against ${REFERENCE_PATHS} paths per pixel): the dots are the measured
@@ -56,13 +56,13 @@ const svg = `<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 600 330" width
     dot. Both axes are logarithmic. Only numbers and N are written, so the figure serves every
     language; mid-tone colours read on the light and the dark theme alike.
   -->
-  <path d="M${left} ${top}V${bottom}H${right}" fill="none" stroke="#868e96" stroke-width="2" />
-${COUNTS.map((n) => `  <path d="M${x(n).toFixed(1)} ${bottom}v8" stroke="#868e96" stroke-width="2" />\n  <text x="${x(n).toFixed(1)}" y="${bottom + 28}" fill="#868e96" font-family="sans-serif" font-size="18" text-anchor="middle">${n}</text>`).join('\n')}
-${ticksY.map((e) => `  <path d="M${left - 8} ${y(10 ** e).toFixed(1)}h8" stroke="#868e96" stroke-width="2" />\n  <text x="${left - 12}" y="${(y(10 ** e) + 6).toFixed(1)}" fill="#868e96" font-family="sans-serif" font-size="16" text-anchor="end">10<tspan dy="-8" font-size="12">${e}</tspan></text>`).join('\n')}
-  <text x="${right + 8}" y="${bottom + 6}" fill="#868e96" font-family="Georgia, serif" font-size="20" font-style="italic">N</text>
+  <path d="M${left} ${top}V${bottom}H${right}" fill="none" stroke="#868e96" stroke-width="3" />
+${COUNTS.map((n) => `  <path d="M${x(n).toFixed(1)} ${bottom}v8" stroke="#868e96" stroke-width="2" />\n  <text x="${x(n).toFixed(1)}" y="${bottom + 34}" fill="#868e96" font-family="sans-serif" font-size="24" text-anchor="middle">${n}</text>`).join('\n')}
+${ticksY.map((e) => `  <path d="M${left - 8} ${y(10 ** e).toFixed(1)}h8" stroke="#868e96" stroke-width="2" />\n  <text x="${left - 12}" y="${(y(10 ** e) + 8).toFixed(1)}" fill="#868e96" font-family="sans-serif" font-size="22" text-anchor="end">10<tspan dy="-10" font-size="16">${e}</tspan></text>`).join('\n')}
+  <text x="${right + 8}" y="${bottom + 6}" fill="#868e96" font-family="Georgia, serif" font-size="26" font-style="italic">N</text>
   <path d="M${x(1).toFixed(1)} ${y(line(1)).toFixed(1)}L${x(256).toFixed(1)} ${y(line(256)).toFixed(1)}" stroke="#f08c00" stroke-width="3" stroke-dasharray="10 7" />
-  <text x="${(x(256) - 10).toFixed(1)}" y="${(y(line(256)) - 14).toFixed(1)}" fill="#f08c00" font-family="Georgia, serif" font-size="20" font-style="italic" text-anchor="end">1/√N</text>
-${COUNTS.map((n, i) => `  <circle cx="${x(n).toFixed(1)}" cy="${y(errors[i]!).toFixed(1)}" r="8" fill="#1c7ed6" />`).join('\n')}
+  <text x="${x(32).toFixed(1)}" y="${(y(line(32)) + 34).toFixed(1)}" fill="#f08c00" font-family="Georgia, serif" font-size="26" font-style="italic" text-anchor="end">1/√N</text>
+${COUNTS.map((n, i) => `  <circle cx="${x(n).toFixed(1)}" cy="${y(errors[i]!).toFixed(1)}" r="9" fill="#1c7ed6" />`).join('\n')}
 </svg>
 `;
 writeFileSync(OUT, svg);
