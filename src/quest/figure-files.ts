@@ -5,6 +5,6 @@
  * (tests/quest/level-figures.test.ts checks the list is the folder's). SVG or PNG: the kinds
  * the offline cache keeps (vite.config.ts).
  */
-export const FIGURE_FILES = ['lambert-torch.svg'] as const;
+export const FIGURE_FILES = ['lambert-torch.svg', 'path-noise-error.svg'] as const;
 
 export type FigureFile = (typeof FIGURE_FILES)[number];

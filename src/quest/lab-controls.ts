@@ -65,6 +65,12 @@ export const LAB_CONTROLS = {
     'lens-samples',
     'time-samples',
     'time-pattern',
+    'integrator',
+    'path-samples',
+    'bounce-sampling',
+    'light-sampling',
+    'russian-roulette',
+    'exposure',
   ],
   rays: [
     'show',

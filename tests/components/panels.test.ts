@@ -216,6 +216,28 @@ describe('the ray tracer panel (camera and image)', () => {
   });
 });
 
+describe('the ray tracer panel (path tracing)', () => {
+  it('switches to path tracing by pointer: the depth reads as bounces, and paths per pixel step by keyboard', async () => {
+    const store = storeWith();
+    const { panel, guides } = await mountPanel('rt-tracer-panel', store, { shownControls: ['integrator', 'max-depth', 'path-samples'] });
+    await expect.element(page.elementLocator(panel).getByText('Recursion depth')).toBeVisible();
+    await userEvent.click(control(guides, 'tracer.integrator').getByRole('radio', { name: 'Path tracing' }));
+    expect(store.state.scene.settings.integrator).toBe('path');
+    await expect.element(page.elementLocator(panel).getByText('Max bounces')).toBeVisible();
+    (control(guides, 'tracer.path-samples').getByRole('slider').element() as HTMLElement).focus();
+    await userEvent.keyboard('{ArrowRight}');
+    expect(store.state.scene.settings.pathSamples).toBe(17);
+    // A narrowed panel leaves out what the level does not name.
+    expect(guides.elements('tracer.russian-roulette')).toEqual([]);
+  });
+
+  it('leaves the Path tracing section out of a level that names none of its controls', async () => {
+    const { panel } = await mountPanel('rt-tracer-panel', storeWith(), { shownControls: ['shadows'] });
+    await expect.element(page.elementLocator(panel).getByText('Shadows')).toBeVisible();
+    expect(panel.shadowRoot?.querySelector('rt-panel-section[name="tracer-path"]')).toBeNull();
+  });
+});
+
 describe('the ray panel', () => {
   it('hides the rays by pointer and sets their radius in centimetres', async () => {
     const store = storeWith();

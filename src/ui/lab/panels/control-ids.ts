@@ -64,6 +64,12 @@ export const CONTROL_NAMES = {
     lensSamples: 'lens-samples',
     timeSamples: 'time-samples',
     timePattern: 'time-pattern',
+    integrator: 'integrator',
+    pathSamples: 'path-samples',
+    bounceSampling: 'bounce-sampling',
+    lightSampling: 'light-sampling',
+    russianRoulette: 'russian-roulette',
+    exposure: 'exposure',
     imageSize: null,
   },
   rays: {

@@ -2,11 +2,23 @@ import { msg, str } from '@lit/localize';
 import { html, nothing } from 'lit';
 import { ifDefined } from 'lit/directives/if-defined.js';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
-import type { Camera, ImageEncoding, LightType, RenderSettings, SamplePattern, TimePattern } from '../../../scene/scene.ts';
+import type { BounceSampling, Camera, ImageEncoding, Integrator, LightType, RenderSettings, SamplePattern, TimePattern } from '../../../scene/scene.ts';
 import { LIMITS } from '../../../scene/scene-limits.ts';
 import { effectiveFocusDistance, focusDistanceTo } from '../../../scene/camera-focus.ts';
 import { shownName } from '../scene-names.ts';
 import { apertureSpec, focusDistanceSpec, lensSamplesHint, lensSamplesSpec, timeSamplesSpec } from './distribution-specs.ts';
+import {
+  bounceSamplingOptions,
+  bounceSamplingText,
+  exposureSpec,
+  integratorOptions,
+  integratorText,
+  lightSamplingText,
+  maxBouncesText,
+  pathSamplesHint,
+  pathSamplesSpec,
+  russianRouletteText,
+} from './path-specs.ts';
 import { StorePanel, type ControlPart, type ControlText } from './store-panel.ts';
 
 const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
@@ -40,9 +52,14 @@ export class RtTracerPanel extends StorePanel<'tracer'> {
         ),
         this.slider(
           {
-            name: 'maxDepth',
-            label: msg('Recursion depth'),
-            tooltip: msg('How many times a ray may reflect or refract; at 0 the rays from the camera and their shadow rays are still traced.'),
+            // Path mode counts the same setting as bounces (docs/path-tracing.md).
+            ...(settings.integrator === 'path'
+              ? maxBouncesText()
+              : {
+                  name: 'maxDepth',
+                  label: msg('Recursion depth'),
+                  tooltip: msg('How many times a ray may reflect or refract; at 0 the rays from the camera and their shadow rays are still traced.'),
+                }),
             min: LIMITS.maxDepth[0],
             max: LIMITS.maxDepth[1],
             step: 1,
@@ -97,6 +114,7 @@ export class RtTracerPanel extends StorePanel<'tracer'> {
           (encoding) => set({ encoding }),
         ),
       ])}
+      ${this.section(msg('Path tracing'), 'tracer-path', this.pathControls(settings))}
       ${this.section(msg('Anti-aliasing'), 'tracer-supersampling', [
         this.slider(
           {
@@ -180,6 +198,19 @@ export class RtTracerPanel extends StorePanel<'tracer'> {
         ),
       ])}
     `;
+  }
+
+  /** Path mode (spec path-tracing §1): the estimator, N paths per pixel, the bounce and light sampling, Russian roulette, the exposure. */
+  private pathControls(settings: RenderSettings): ControlPart[] {
+    const set = (changes: Partial<RenderSettings>): LabAction => ({ type: 'settings.changed', changes });
+    return [
+      this.choice<Integrator>(integratorText(), integratorOptions(), settings.integrator, (integrator) => set({ integrator })),
+      this.slider(pathSamplesSpec(), settings.pathSamples, (pathSamples) => set({ pathSamples }), pathSamplesHint(settings.pathSamples)),
+      this.choice<BounceSampling>(bounceSamplingText(), bounceSamplingOptions(), settings.bounceSampling, (bounceSampling) => set({ bounceSampling })),
+      this.switch(lightSamplingText(), settings.lightSampling, (lightSampling) => set({ lightSampling })),
+      this.switch(russianRouletteText(), settings.russianRoulette, (russianRoulette) => set({ russianRoulette })),
+      this.slider(exposureSpec(), settings.exposure, (exposure) => set({ exposure })),
+    ];
   }
 
   /** Depth of field and motion blur: aperture, focus distance (with "focus on the selected object"), lens and time samples, and when the time samples fall. */
