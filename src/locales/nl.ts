@@ -185,6 +185,7 @@ ${1}`,
 's49f06dca0feeb2f3': `Gelijkmatig`,
 's49f27147fde9e966': `Willekeurige paden die van elk oppervlak terugkaatsen (Kajiya 1986): licht via muren wordt berekend, niet nagebootst. Met weinig paden ruist het beeld.`,
 's4a14c560a0dca399': `Gebroken straal`,
+'s4a23ff70dab2f12f': `Stuur bij elk mat punt van een pad ook een schaduwstraal naar een willekeurig punt op elke vlaklamp. Zonder dit zien alleen paden die de lamp toevallig raken hem. Naar puntlampen en spotlampen gaat altijd een schaduwstraal: geen pad kan ze raken.`,
 's4a329a5e0781cabe': `De normaal N in een raakpunt: loodrecht uit het oppervlak, aan de kant waar de straal vandaan kwam. Getekend bij de raakpunten van de stralen van de gekozen pixel.`,
 's4a8cdc2f5f3de122': `Slepen met links`,
 's4a9a31623ab5f213': `Scène`,
@@ -628,6 +629,5 @@ ${1}`,
 'sfd67904abce9a0ff': `Toon zijn stralen`,
 'sfee77015590f6fb7': `Beschadigde gegevens konden niet worden gekopieerd (de opslag van de browser is vol), dus er wordt niets overheen opgeslagen. Download ze via het Menu (Beschadigde gegevens), dan gaat het opslaan verder; tot die tijd blijft wat niet is opgeslagen bewaard zolang deze pagina open is.`,
 'sffd0815bb58a51ba': `Opslaan en delen`,
-'sffe3311218868702': `De kleur c wordt opgeslagen als c × 255 en het scherm leest dat getal als zijn eigen waarde, dus je ziet minder licht dan c (zonder gamma, zoals in de Virtual Ray Tracer).`,
-'s4a23ff70dab2f12f': `At every matt point of a path, also send a shadow ray to a random point on each area light. Without it, only paths that happen to hit the lamp see it. Point and spot lights are always sampled: no path can hit them.`
+'sffe3311218868702': `De kleur c wordt opgeslagen als c × 255 en het scherm leest dat getal als zijn eigen waarde, dus je ziet minder licht dan c (zonder gamma, zoals in de Virtual Ray Tracer).`
 };
