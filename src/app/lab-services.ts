@@ -177,10 +177,8 @@ export class LabServices {
     return this.tracer.traceWithTerms(x, y);
   }
 
-  /** Pixel (x, y)'s first `keep` sample paths in path mode, for the path debugger (the scene of the latest screen). */
-  tracePaths(x: number, y: number, keep: number): Promise<LabPaths> {
-    return this.tracer.tracePaths(x, y, keep);
-  }
+  /** Pixel (x, y)'s first `keep` sample paths in path mode, for the path debugger (the scene of the latest screen); bound, so lit sees one function. */
+  readonly tracePaths = (x: number, y: number, keep: number): Promise<LabPaths> => this.tracer.tracePaths(x, y, keep);
 
   /** The ray debugger's pixel drawn instead of the screen's rays (null: the screen again). */
   setRayFocus(focus: RayFocus | null): void {
