@@ -79,7 +79,8 @@ function segmentRay(from: PathVertex, to: PathVertex, type: RayType, width: numb
   return {
     type,
     origin,
-    direction: from.direction ?? unit(origin, to.point),
+    // From vertex to vertex: the tracer's ray starts ε off the surface, the drawing at the point.
+    direction: unit(origin, to.point),
     length,
     hit: to.event !== 'escaped',
     objectId: to.objectId,
