@@ -37,6 +37,32 @@ export function vertexText(row: PathVertexRow, sampling: BounceSampling): string
   }
 }
 
+/** The event's short name, for the table. */
+export function eventName(event: PathVertexRow['event']): string {
+  switch (event) {
+    case 'camera':
+      return msg('camera');
+    case 'diffuse':
+      return msg('diffuse bounce');
+    case 'mirror':
+      return msg('mirror');
+    case 'glass-reflect':
+      return msg('glass, reflected');
+    case 'glass-refract':
+      return msg('glass, refracted');
+    case 'emitter':
+      return msg('area light');
+    case 'escaped':
+      return msg('escaped');
+    case 'roulette-stop':
+      return msg('stopped by roulette');
+    case 'max-depth':
+      return msg('depth reached');
+    case 'absorbed':
+      return msg('absorbed');
+  }
+}
+
 /** Russian roulette's weight at a vertex, or ''. */
 export function survivalText(row: PathVertexRow): string {
   return row.survival === null

@@ -8,7 +8,7 @@ import { pathFocus, pathTrees, type PathTrees } from '../../../view/path-focus.t
 import type { RayFocus } from '../../../view/ray-focus.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
 import { colorText } from './debug-numbers.ts';
-import { lightSampleText, pathNumber, survivalText, vertexText } from './path-debugger-text.ts';
+import { eventName, lightSampleText, pathNumber, survivalText, vertexText } from './path-debugger-text.ts';
 
 /** Keys → moves: ← → along the path, ↑ ↓ to the previous or next path, Home and End to its ends. */
 const KEY_MOVES: Readonly<Record<string, readonly [path: number, vertex: number | 'start' | 'end']>> = {
@@ -227,7 +227,7 @@ export class RtPathDebugger extends LocalizedElement {
         ${rows.slice(0, this.vertex + 1).map(
           (row, i) => html`<tr class=${i === this.vertex ? 'current' : ''}>
             <td>${i}</td>
-            <td>${row.event}${row.objectId ? ` · ${row.objectId}` : ''}${row.lightId ? ` · ${row.lightId}` : ''}</td>
+            <td>${eventName(row.event)}${row.objectId ? ` · ${row.objectId}` : ''}${row.lightId ? ` · ${row.lightId}` : ''}</td>
             <td>
               ${row.factor ? colorText(row.factor) : '–'}
               ${row.cosTheta !== null && row.pdf !== null ? html`<small>cosθ = ${pathNumber.format(row.cosTheta)}, pdf = ${pathNumber.format(row.pdf)}</small>` : nothing}
