@@ -10,6 +10,7 @@
  */
 import type { MeshLibrary } from '../src/scene/mesh-data.ts';
 import type { Scene } from '../src/scene/scene.ts';
+import type { LabPaths } from '../src/tracer/lab-paths.ts';
 import type { PixelTrace, RayStats } from '../src/tracer/ray-tree.ts';
 import type { RenderTileOptions, Tile } from '../src/tracer/tile.ts';
 
@@ -65,6 +66,16 @@ export interface TracePixelsRequest {
   budget?: RayBudget;
 }
 
+/** Trace one pixel in path mode and return its first `keep` sample paths (the lab's path view and debugger). */
+export interface TracePathsRequest {
+  type: 'trace-paths';
+  requestId: number;
+  x: number;
+  y: number;
+  seed: number;
+  keep: number;
+}
+
 /** A budget for a block's ray trees: about `rays` rays, all of them for screen pixel `keepPixel` (y · columns + x, or null). */
 export interface RayBudget {
   rays: number;
@@ -83,7 +94,7 @@ export interface CancelRequest {
  */
 export const WORKER_STARTED = 'render-worker-started';
 
-export type RenderRequest = LoadSceneRequest | RenderTileRequest | TracePixelRequest | TracePixelsRequest | CancelRequest;
+export type RenderRequest = LoadSceneRequest | RenderTileRequest | TracePixelRequest | TracePixelsRequest | TracePathsRequest | CancelRequest;
 
 // ── Responses: worker → pool ─────────────────────────────────────────────────────────────
 
@@ -114,6 +125,12 @@ export interface PixelTracedResponse {
   trace: PixelTrace;
 }
 
+export interface PathsTracedResponse {
+  type: 'paths-traced';
+  requestId: number;
+  paths: LabPaths;
+}
+
 export interface PixelsTracedResponse {
   type: 'pixels-traced';
   requestId: number;
@@ -126,7 +143,8 @@ export type FailedRequest =
   | { type: 'load-scene'; sceneId: number }
   | { type: 'render-tile'; jobId: number; tileId: number }
   | { type: 'trace-pixel'; requestId: number }
-  | { type: 'trace-pixels'; requestId: number };
+  | { type: 'trace-pixels'; requestId: number }
+  | { type: 'trace-paths'; requestId: number };
 
 /** A request threw; the worker itself keeps running and answers later requests. */
 export interface ErrorResponse {
@@ -136,7 +154,7 @@ export interface ErrorResponse {
   message: string;
 }
 
-export type RenderResponse = SceneReadyResponse | TileDoneResponse | PixelTracedResponse | PixelsTracedResponse | ErrorResponse;
+export type RenderResponse = SceneReadyResponse | TileDoneResponse | PixelTracedResponse | PixelsTracedResponse | PathsTracedResponse | ErrorResponse;
 
 /** How a worker posts a response; `transfer` lists buffers to move instead of copy. */
 export type PostResponse = (response: RenderResponse, transfer: ArrayBuffer[]) => void;

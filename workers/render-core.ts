@@ -4,6 +4,7 @@
  * files only connect it to their message port.
  */
 import type { MeshData } from '../src/scene/mesh-data.ts';
+import { labPaths } from '../src/tracer/lab-paths.ts';
 import { emptyRayStats } from '../src/tracer/ray-tree.ts';
 import { renderTile } from '../src/tracer/render-tile.ts';
 import { renderPathTile } from '../src/tracer/render-path-tile.ts';
@@ -11,7 +12,16 @@ import { tracePixel, tracePixels } from '../src/tracer/trace-pixel.ts';
 import { thinTraces } from '../src/tracer/tree-budget.ts';
 import { buildTracerScene, type TracerScene } from '../src/tracer/tracer-scene.ts';
 import { nextTask } from './next-task.ts';
-import type { FailedRequest, LoadSceneRequest, PostResponse, RenderRequest, RenderTileRequest, TracePixelRequest, TracePixelsRequest } from './protocol.ts';
+import type {
+  FailedRequest,
+  LoadSceneRequest,
+  PostResponse,
+  RenderRequest,
+  RenderTileRequest,
+  TracePathsRequest,
+  TracePixelRequest,
+  TracePixelsRequest,
+} from './protocol.ts';
 
 /** The scene that tiles and traces use: built, or why it could not be built. */
 type LoadedScene = { built: true; tracer: TracerScene } | { built: false; reason: string };
@@ -80,6 +90,14 @@ export function createRenderHandler(post: PostResponse): (request: RenderRequest
     }
   }
 
+  function tracePathsNow({ requestId, x, y, seed, keep }: TracePathsRequest): void {
+    try {
+      post({ type: 'paths-traced', requestId, paths: labPaths(tracerOf(scene), x, y, seed, keep) }, []);
+    } catch (error) {
+      fail({ type: 'trace-paths', requestId }, error);
+    }
+  }
+
   function scheduleRender(): void {
     if (renderScheduled || queue.length === 0) return;
     renderScheduled = true;
@@ -119,6 +137,9 @@ export function createRenderHandler(post: PostResponse): (request: RenderRequest
         break;
       case 'trace-pixels':
         traceManyNow(request);
+        break;
+      case 'trace-paths':
+        tracePathsNow(request);
         break;
       case 'cancel':
         for (let i = queue.length - 1; i >= 0; i--) {

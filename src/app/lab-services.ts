@@ -7,6 +7,7 @@ import { LazyModule } from '../util/lazy-module.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';
 import type { Scene } from '../scene/scene.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
+import type { LabPaths } from '../tracer/lab-paths.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
 import type { RayFocus } from '../view/ray-focus.ts';
 import { ScreenTracer } from '../render/screen-tracer.ts';
@@ -175,6 +176,9 @@ export class LabServices {
   traceWithTerms(x: number, y: number): Promise<PixelTrace> {
     return this.tracer.traceWithTerms(x, y);
   }
+
+  /** Pixel (x, y)'s first `keep` sample paths in path mode, for the path debugger (the scene of the latest screen); bound, so lit sees one function. */
+  readonly tracePaths = (x: number, y: number, keep: number): Promise<LabPaths> => this.tracer.tracePaths(x, y, keep);
 
   /** The ray debugger's pixel drawn instead of the screen's rays (null: the screen again). */
   setRayFocus(focus: RayFocus | null): void {

@@ -3,6 +3,7 @@ import { meshNamesInScene } from '../scene/mesh-names.ts';
 import type { Scene } from '../scene/scene.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
 import { hasMeshAccel, meshAccel } from '../tracer/shapes/mesh-accel.ts';
+import { labPaths, type LabPaths } from '../tracer/lab-paths.ts';
 import { tracePixel, tracePixels } from '../tracer/trace-pixel.ts';
 import { buildTracerScene, type TracerScene } from '../tracer/tracer-scene.ts';
 import { estimateRender } from './render-estimate.ts';
@@ -75,5 +76,11 @@ export class InlineScreenTracer {
   traceWithTerms(x: number, y: number): PixelTrace {
     if (!this.built) throw new Error('no screen has been traced here yet');
     return tracePixel(this.built, x, y, DEFAULT_SEED, { terms: true });
+  }
+
+  /** Pixel (x, y)'s first `keep` paths in path mode, in the scene last traced here. */
+  tracePaths(x: number, y: number, keep: number): LabPaths {
+    if (!this.built) throw new Error('no screen has been traced here yet');
+    return labPaths(this.built, x, y, DEFAULT_SEED, keep);
   }
 }

@@ -22,7 +22,16 @@
  * and trace with `RenderWorkersUnavailable`, starting no more workers, so that the page can
  * say so with a Reload button instead of asking the server again at every edit.
  */
-import type { FailedRequest, PixelsTracedResponse, PixelTracedResponse, RayBudget, RenderRequest, RenderResponse } from '../../workers/protocol.ts';
+import type {
+  FailedRequest,
+  PathsTracedResponse,
+  PixelsTracedResponse,
+  PixelTracedResponse,
+  RayBudget,
+  RenderRequest,
+  RenderResponse,
+} from '../../workers/protocol.ts';
+import type { LabPaths } from '../tracer/lab-paths.ts';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
 import type { Scene } from '../scene/scene.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
@@ -105,12 +114,16 @@ interface Waiter {
   reject(error: Error): void;
 }
 
+/** The requests that ask for a pixel's rays or paths, and their answers. */
+type TraceRequestType = 'trace-pixel' | 'trace-pixels' | 'trace-paths';
+type TraceAnswer = PixelTracedResponse | PixelsTracedResponse | PathsTracedResponse;
+
 interface PendingTrace {
   worker: PoolWorker;
   /** As posted: asked again of another worker when this one could not start. */
-  request: Extract<RenderRequest, { type: 'trace-pixel' | 'trace-pixels' }>;
-  /** The worker's answer: `pixel-traced` for tracePixel, `pixels-traced` for tracePixels. */
-  resolve(answer: PixelTracedResponse | PixelsTracedResponse): void;
+  request: Extract<RenderRequest, { type: TraceRequestType }>;
+  /** The worker's answer: `pixel-traced` for tracePixel, `pixels-traced` for tracePixels, `paths-traced` for tracePaths. */
+  resolve(answer: TraceAnswer): void;
   reject(error: Error): void;
 }
 
@@ -245,11 +258,16 @@ export class RenderPool {
     );
   }
 
+  /**
+   * The first `keep` sample paths of pixel (x, y) of the camera's screen in path mode, and
+   * every path's contribution (lab-paths.ts), in the scene last rendered or set.
+   */
+  tracePaths(x: number, y: number, keep: number, seed = DEFAULT_SEED): Promise<LabPaths> {
+    return this.askForTraces({ type: 'trace-paths', requestId: 0, x, y, seed, keep }, (answer) => (answer.type === 'paths-traced' ? answer.paths : null));
+  }
+
   /** Posts a pixel-trace request (its requestId is assigned here); `read` takes the answer apart, null for a wrong one. */
-  private askForTraces<T>(
-    request: Extract<RenderRequest, { type: 'trace-pixel' | 'trace-pixels' }>,
-    read: (answer: PixelTracedResponse | PixelsTracedResponse) => T | null,
-  ): Promise<T> {
+  private askForTraces<T>(request: Extract<RenderRequest, { type: TraceRequestType }>, read: (answer: TraceAnswer) => T | null): Promise<T> {
     this.assertOpen();
     if (this.unavailable) return Promise.reject(this.unavailable);
     if (!this.scene) return Promise.reject(new Error('there is no scene to trace: render or set one first'));
@@ -258,7 +276,7 @@ export class RenderPool {
     this.sendScene(worker);
     const requestId = ++this.lastId;
     return new Promise((resolve, reject) => {
-      const resolveAnswer = (answer: PixelTracedResponse | PixelsTracedResponse) => {
+      const resolveAnswer = (answer: TraceAnswer) => {
         const value = read(answer);
         if (value === null) reject(new Error(`a render worker answered a ${request.type} request with a ${answer.type} of the wrong size`));
         else resolve(value);
@@ -440,6 +458,7 @@ export class RenderPool {
       }
       case 'pixel-traced':
       case 'pixels-traced':
+      case 'paths-traced':
         this.takeTrace(response.requestId)?.resolve(response);
         break;
       case 'error':
@@ -460,6 +479,7 @@ export class RenderPool {
         break;
       case 'trace-pixel':
       case 'trace-pixels':
+      case 'trace-paths':
         this.takeTrace(failed.requestId)?.reject(new Error(message));
         break;
     }

@@ -41,6 +41,11 @@ export function checkResponse(data: unknown): CheckedResponse {
         return refuse('a pixels-traced without a request id and ray trees');
       }
       return accept(data as unknown as RenderResponse);
+    case 'paths-traced':
+      if (!isId(data.requestId) || !isRecord(data.paths) || !Array.isArray(data.paths.paths) || !Array.isArray(data.paths.contributions)) {
+        return refuse('a paths-traced without a request id and paths');
+      }
+      return accept(data as unknown as RenderResponse);
     case 'error': {
       const failed = checkFailed(data.failed);
       if (!failed || typeof data.message !== 'string') return refuse('an error without the failed request and a message');
@@ -56,7 +61,8 @@ function checkFailed(failed: unknown): FailedRequest | null {
   if (!isRecord(failed)) return null;
   if (failed.type === 'load-scene' && isId(failed.sceneId)) return { type: 'load-scene', sceneId: failed.sceneId };
   if (failed.type === 'render-tile' && isId(failed.jobId) && isId(failed.tileId)) return { type: 'render-tile', jobId: failed.jobId, tileId: failed.tileId };
-  if ((failed.type === 'trace-pixel' || failed.type === 'trace-pixels') && isId(failed.requestId)) return { type: failed.type, requestId: failed.requestId };
+  if ((failed.type === 'trace-pixel' || failed.type === 'trace-pixels' || failed.type === 'trace-paths') && isId(failed.requestId))
+    return { type: failed.type, requestId: failed.requestId };
   return null;
 }
 

@@ -1,6 +1,7 @@
 import type { MeshData, MeshLibrary } from '../scene/mesh-data.ts';
 import { meshNamesInScene } from '../scene/mesh-names.ts';
 import type { Scene } from '../scene/scene.ts';
+import type { LabPaths } from '../tracer/lab-paths.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
 import type { InlineScreenTracer } from './inline-screen-tracer.ts';
 import { DEFAULT_SEED } from './render-job.ts';
@@ -25,7 +26,7 @@ export const PIXELS_PER_REQUEST = 64;
 export const REQUESTS_IN_FLIGHT = 4;
 
 /** What the tracer needs of a RenderPool (a test can pass a fake). */
-export type ScreenTracePool = Pick<RenderPool, 'setScene' | 'tracePixel' | 'tracePixels'>;
+export type ScreenTracePool = Pick<RenderPool, 'setScene' | 'tracePixel' | 'tracePixels' | 'tracePaths'>;
 
 export type ScreenRaysListener = (rays: ScreenRays) => void;
 
@@ -134,6 +135,14 @@ export class ScreenTracer {
     // A promise's executor turns a throw into a rejection.
     if (inline) return new Promise((resolve) => resolve(inline.traceWithTerms(x, y)));
     return this.pool.tracePixel(x, y, DEFAULT_SEED, true);
+  }
+
+  /** Pixel (x, y)'s first `keep` paths in path mode (lab-paths.ts), in the scene of the latest published screen. */
+  tracePaths(x: number, y: number, keep: number): Promise<LabPaths> {
+    if (this.disposed || !this.latest) return Promise.reject(new Error('the camera’s screen has not been traced yet'));
+    const inline = this.latestInline ? this.inline : null;
+    if (inline) return new Promise((resolve) => resolve(inline.tracePaths(x, y, keep)));
+    return this.pool.tracePaths(x, y, keep, DEFAULT_SEED);
   }
 
   /** Calls `listener` with every published screen, and at once with the last one if any. Returns the unsubscribe. */

@@ -43,6 +43,11 @@ export interface RecordedPath {
 export class PathRecorder {
   readonly paths: RecordedPath[] = [];
   private current: RecordedPath | null = null;
+  /**
+   * Light samples taken at the surface the path has just hit: the integrator samples the
+   * lights before it records that surface's vertex, so they wait here for it.
+   */
+  private pending: LightSampleRay[] = [];
 
   start(origin: Vector3, direction: Vector3): void {
     this.current = { vertices: [], contribution: [0, 0, 0] };
@@ -69,13 +74,14 @@ export class PathRecorder {
       direction: direction?.toArray() ?? null,
       pdf,
       throughput,
-      lightSamples: [],
+      lightSamples: this.pending,
     });
+    this.pending = [];
   }
 
-  /** A light sample of the last vertex. */
+  /** A light sample taken at the surface whose vertex is recorded next. */
   lightSample(lightId: string, target: Vector3, visible: boolean, added: Color): void {
-    this.current!.vertices.at(-1)!.lightSamples.push({ lightId, target: target.toArray(), visible, added });
+    this.pending.push({ lightId, target: target.toArray(), visible, added });
   }
 
   end(contribution: Vector3): void {

@@ -22,6 +22,10 @@ export interface RayFocus {
   highlighted: RayNode | null;
   /** Whether the highlighted ray grows from its origin (it was just cast). */
   grow: boolean;
+  /** Rays drawn at full opacity though not highlighted (a path's rays among the pixel's other paths). */
+  bright?: ReadonlySet<RayNode>;
+  /** Width by each ray's contribution, whatever the ray panel says (a path's throughput). */
+  widthByContribution?: boolean;
 }
 
 /** Opacity of the rays that are not highlighted: still there to follow, clearly in the background. */
@@ -51,7 +55,15 @@ function screenOf(trace: PixelTrace): ScreenRays {
  * else 0 (nothing to animate).
  */
 export function focusedRays(focus: RayFocus, options: RayViewOptions, into = new DrawnRays(), style?: RayStyle): DrawnRays {
-  const all: RayViewOptions = { ...options, showRays: true, hideNoHit: false, hideNegligible: false, transparency: 0, animatePixelByPixel: false };
+  const all: RayViewOptions = {
+    ...options,
+    showRays: true,
+    hideNoHit: false,
+    hideNegligible: false,
+    transparency: 0,
+    animatePixelByPixel: false,
+    ...(focus.widthByContribution ? { dynamicRadius: true } : {}),
+  };
   // Every glossy ray as itself: the debugger steps through (and highlights) each one. The
   // pixel as the chosen one of its 1 × 1 screen, so its hits show their normals.
   visibleRays(screenOf(focus.trace), all, [0, 0], into, style, false);
@@ -66,7 +78,7 @@ export function focusedRays(focus: RayFocus, options: RayViewOptions, into = new
       const normal = list.colorKey[kept] === NORMAL_KEY;
       const highlighted = node === focus.highlighted;
       const grows = highlighted && focus.grow;
-      list.alpha[kept] = highlighted ? 1 : DIMMED_ALPHA;
+      list.alpha[kept] = highlighted || focus.bright?.has(node) ? 1 : DIMMED_ALPHA;
       if (highlighted && !normal) list.radius[kept] *= HIGHLIGHT_RADIUS_SCALE;
       list.start[kept] = grows ? (normal ? node.length : 0) : GROWN_LONG_AGO;
       if (grows) travelEnd = Math.max(travelEnd, list.start[kept] + list.length[kept]);

@@ -10,6 +10,7 @@ import { loadMeshesFromDisk } from '../../src/scene/load-meshes-node.ts';
 import type { MeshLibrary } from '../../src/scene/mesh-data.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 import type { Scene } from '../../src/scene/scene.ts';
+import type { LabPaths } from '../../src/tracer/lab-paths.ts';
 import type { PixelTrace } from '../../src/tracer/ray-tree.ts';
 import type { RayBudget } from '../../workers/protocol.ts';
 import { tracePixel } from '../../src/tracer/trace-pixel.ts';
@@ -46,6 +47,10 @@ class FakePool implements ScreenTracePool {
 
   tracePixel(): Promise<PixelTrace> {
     return Promise.reject(new Error('the screen tracer traces pixels in blocks'));
+  }
+
+  tracePaths(): Promise<LabPaths> {
+    return Promise.reject(new Error('these tests trace no paths'));
   }
 
   tracePixels(first: number, count: number, seed?: number, budget?: RayBudget): Promise<PixelTrace[]> {

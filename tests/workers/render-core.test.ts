@@ -141,3 +141,24 @@ describe('the render worker core', () => {
     ]);
   });
 });
+
+describe('the render worker core in path mode', () => {
+  it('answers trace-paths with the first paths and every path’s contribution, their mean the pixel', async () => {
+    const pathScene = { ...scene, settings: { ...scene.settings, integrator: 'path' as const, pathSamples: 12 } };
+    const { handle, responses, settle } = worker();
+    handle(load(1, pathScene));
+    handle({ type: 'trace-paths', requestId: 9, x: 3, y: 2, seed: 5, keep: 4 });
+    await settle(2);
+
+    const answer = responses[1];
+    if (answer?.type !== 'paths-traced') throw new Error(`expected paths-traced, got ${answer?.type}`);
+    expect(answer.requestId).toBe(9);
+    expect(answer.paths.pixel).toEqual([3, 2]);
+    expect(answer.paths.pathCount).toBe(12);
+    expect(answer.paths.paths).toHaveLength(4);
+    expect(answer.paths.contributions).toHaveLength(12);
+    expect(answer.paths.paths[0]!.vertices[0]!.event).toBe('camera');
+    const mean = [0, 1, 2].map((c) => Math.fround(answer.paths.contributions.reduce((sum, contribution) => sum + contribution[c]!, 0) / 12));
+    expect(answer.paths.color).toEqual(mean);
+  });
+});

@@ -355,7 +355,7 @@ export class RtLab extends LocalizedElement {
             ? html`<rt-ray-debugger
               .shownControls=${controls('debugger')}
               .screenRays=${this.services.screenRays}
-              .tracePixel=${this.traceWithTerms}
+              .tracePixel=${this.traceWithTerms} .tracePaths=${this.services.tracePaths}
               .showFocus=${this.showRayFocus}
             ></rt-ray-debugger>`
             : nothing

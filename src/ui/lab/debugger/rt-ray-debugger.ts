@@ -17,6 +17,8 @@ import type { PixelSum, TermClickDetail } from './rt-debug-equation.ts';
 import './rt-debug-code.ts';
 import './rt-debug-equation.ts';
 import './rt-debug-tree.ts';
+import './rt-path-debugger.ts';
+import type { LabPaths } from '../../../tracer/lab-paths.ts';
 
 /** Milliseconds between steps while playing: time to see a ray grow (about 1 s at the default speed) and read the line. */
 export const PLAY_INTERVAL_MS = 1100;
@@ -51,6 +53,7 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
   static override properties = {
     ...StorePanel.properties,
     tracePixel: { attribute: false },
+    tracePaths: { attribute: false },
     screenRays: { attribute: false },
     showFocus: { attribute: false },
     open: { type: Boolean, reflect: true },
@@ -64,6 +67,8 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
   static override styles = [StorePanel.styles, debuggerStyles];
 
   declare tracePixel: ((x: number, y: number) => Promise<PixelTrace>) | null;
+  /** In path mode the debugger steps through the pixel's sample paths instead (rt-path-debugger.ts). */
+  declare tracePaths: ((x: number, y: number, keep: number) => Promise<LabPaths>) | null;
   declare screenRays: ScreenRays | null;
   declare showFocus: ((focus: RayFocus | null) => void) | null;
   declare open: boolean;
@@ -83,6 +88,7 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
   constructor() {
     super();
     this.tracePixel = null;
+    this.tracePaths = null;
     this.screenRays = null;
     this.showFocus = null;
     this.open = false;
@@ -102,7 +108,7 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
   protected override willUpdate(changed: PropertyValues<this>): void {
     super.willUpdate(changed);
     const pixel = this.state?.selectedPixel ?? null;
-    if (!this.open || !pixel) {
+    if (!this.open || !pixel || this.pathMode) {
       if (this.program) this.leave();
       return;
     }
@@ -136,6 +142,10 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
     this.tracedFor = null;
     this.pinned = null;
     this.showFocus?.(null);
+  }
+
+  private get pathMode(): boolean {
+    return this.state?.scene.settings.integrator === 'path';
   }
 
   private get step(): DebugStep | null {
@@ -230,6 +240,7 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
   }
 
   private onKeyDown(event: KeyboardEvent): void {
+    if (this.pathMode) return this.renderRoot.querySelector('rt-path-debugger')?.onKeyDown(event);
     const target = event.composedPath()[0];
     const onButton = target instanceof HTMLButtonElement;
     if (event.key === ' ' && !onButton) {
@@ -291,7 +302,7 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
           ${msg('Close')}
         </button>
       </header>
-      ${pixel ? this.renderProgram() : this.renderNoPixel()}
+      ${pixel ? (this.pathMode ? this.renderPaths(pixel) : this.renderProgram()) : this.renderNoPixel()}
     </section>`;
   }
 
@@ -300,6 +311,11 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
       <p>${msg('Choose a pixel first: click one on the camera’s screen in the 3D view or in the image preview.')}</p>
       <button @click=${this.useMiddlePixel}>${msg('Use the middle pixel')}</button>
     </div>`;
+  }
+
+  private renderPaths(pixel: readonly [number, number]) {
+    const settings = this.state?.scene.settings ?? null;
+    return html`<rt-path-debugger .pixel=${pixel} .settings=${settings} .screenRays=${this.screenRays} .tracePaths=${this.tracePaths} .showFocus=${this.showFocus}></rt-path-debugger>`;
   }
 
   private renderProgram() {

@@ -1,0 +1,270 @@
+import { msg, str } from '@lit/localize';
+import { css, html, nothing, type PropertyValues } from 'lit';
+import { meanOfPaths, pathRows, type PathVertexRow } from '../../../debugger/path-steps.ts';
+import type { ScreenRays } from '../../../render/screen-rays.ts';
+import type { RenderSettings } from '../../../scene/scene.ts';
+import { LAB_PATH_COUNT, type LabPaths } from '../../../tracer/lab-paths.ts';
+import { pathFocus, pathTrees, type PathTrees } from '../../../view/path-focus.ts';
+import type { RayFocus } from '../../../view/ray-focus.ts';
+import { LocalizedElement } from '../../controls/localized-element.ts';
+import { colorText } from './debug-numbers.ts';
+import { eventName, lightSampleText, pathNumber, survivalText, vertexText } from './path-debugger-text.ts';
+
+/** Keys → moves: ← → along the path, ↑ ↓ to the previous or next path, Home and End to its ends. */
+const KEY_MOVES: Readonly<Record<string, readonly [path: number, vertex: number | 'start' | 'end']>> = {
+  ArrowRight: [0, 1],
+  ArrowLeft: [0, -1],
+  ArrowDown: [1, 'start'],
+  ArrowUp: [-1, 'start'],
+  Home: [0, 'start'],
+  End: [0, 'end'],
+};
+
+/**
+ * @summary The ray debugger in path mode (path-tracing spec §5): the selected pixel's first
+ * few sample paths drawn in the 3D view, growing vertex by vertex, and one path stepped
+ * through as the rendering equation's estimate: at each vertex its event, f·cosθ/pdf, the
+ * throughput so far, what light sampling and light seen directly added, and the path's sum,
+ * which ends at its contribution; under it, the pixel as the mean of all its paths.
+ *
+ * `pixel`, `settings` (the scene's), `screenRays` (a new screen traces the paths again),
+ * `tracePaths` (the lab's services), `showFocus` (draws in 3D). Carries `data-path` and
+ * `data-vertex` for tests.
+ */
+export class RtPathDebugger extends LocalizedElement {
+  static override properties = {
+    pixel: { attribute: false },
+    settings: { attribute: false },
+    screenRays: { attribute: false },
+    tracePaths: { attribute: false },
+    showFocus: { attribute: false },
+    paths: { state: true },
+    path: { state: true },
+    vertex: { state: true },
+    problem: { state: true },
+  };
+
+  static override styles = css`
+    :host {
+      display: flex;
+      flex-direction: column;
+      gap: 4px;
+      min-height: 0;
+      flex: 1;
+      font-size: 0.8rem;
+    }
+    .controls {
+      display: flex;
+      flex-wrap: wrap;
+      align-items: center;
+      gap: 6px;
+    }
+    .controls button {
+      min-height: 30px;
+      padding: 0 10px;
+    }
+    .muted {
+      color: var(--rt-muted);
+    }
+    p {
+      margin: 0;
+    }
+    .table {
+      flex: 1;
+      min-height: 0;
+      overflow-y: auto;
+    }
+    table {
+      border-collapse: collapse;
+      width: 100%;
+      font-variant-numeric: tabular-nums;
+    }
+    th,
+    td {
+      text-align: left;
+      vertical-align: top;
+      padding: 2px 6px;
+      border-bottom: 1px solid var(--rt-border, #ccc);
+    }
+    tr.current {
+      background: var(--rt-highlight, rgba(255, 200, 0, 0.18));
+    }
+    td small {
+      display: block;
+      color: var(--rt-muted);
+    }
+  `;
+
+  declare pixel: readonly [number, number] | null;
+  declare settings: RenderSettings | null;
+  declare screenRays: ScreenRays | null;
+  declare tracePaths: ((x: number, y: number, keep: number) => Promise<LabPaths>) | null;
+  declare showFocus: ((focus: RayFocus | null) => void) | null;
+  declare private paths: LabPaths | null;
+  declare private path: number;
+  declare private vertex: number;
+  declare private problem: string | null;
+  private rows: PathVertexRow[][] = [];
+  private trees: PathTrees | null = null;
+  private request = 0;
+  private tracedFor: { pixel: readonly [number, number]; rays: ScreenRays | null } | null = null;
+
+  constructor() {
+    super();
+    this.pixel = null;
+    this.settings = null;
+    this.screenRays = null;
+    this.tracePaths = null;
+    this.showFocus = null;
+    this.paths = null;
+    this.path = 0;
+    this.vertex = 0;
+    this.problem = null;
+  }
+
+  override disconnectedCallback(): void {
+    super.disconnectedCallback();
+    this.request++;
+    this.tracedFor = null;
+    this.showFocus?.(null);
+  }
+
+  protected override willUpdate(changed: PropertyValues<this>): void {
+    const pixel = this.pixel;
+    const traced = this.tracedFor;
+    if (pixel && (!traced || traced.pixel !== pixel || traced.rays !== this.screenRays)) void this.load(pixel);
+    if (changed.has('settings') && this.paths && this.settings) this.arrange(this.paths);
+  }
+
+  private async load(pixel: readonly [number, number]): Promise<void> {
+    this.tracedFor = { pixel, rays: this.screenRays };
+    const request = ++this.request;
+    if (!this.tracePaths) return;
+    try {
+      const paths = await this.tracePaths(pixel[0], pixel[1], LAB_PATH_COUNT);
+      if (request !== this.request) return;
+      this.problem = null;
+      this.arrange(paths);
+      this.moveTo(Math.min(this.path, paths.paths.length - 1), 0);
+    } catch (error) {
+      if (request === this.request) this.problem = error instanceof Error ? error.message : String(error);
+    }
+  }
+
+  private arrange(paths: LabPaths): void {
+    const settings = { russianRoulette: this.settings?.russianRoulette ?? false };
+    this.paths = paths;
+    this.rows = paths.paths.map((path) => pathRows(path, settings));
+    this.trees = pathTrees(
+      paths,
+      this.rows.map((rows) => rows.map((row) => row.throughput)),
+    );
+  }
+
+  private moveTo(path: number, vertex: number): void {
+    if (!this.trees || this.rows.length === 0) return;
+    this.path = Math.max(0, Math.min(this.rows.length - 1, path));
+    this.vertex = Math.max(0, Math.min(this.rows[this.path].length - 1, vertex));
+    this.showFocus?.(pathFocus(this.trees, this.path, this.vertex));
+  }
+
+  private move(pathStep: number, vertex: number | 'start' | 'end'): void {
+    const path = this.path + pathStep;
+    const last = (this.rows[Math.max(0, Math.min(this.rows.length - 1, path))]?.length ?? 1) - 1;
+    this.moveTo(path, vertex === 'start' ? 0 : vertex === 'end' ? last : this.vertex + vertex);
+  }
+
+  /** Its keys, also when the debugger's card around it has the focus. */
+  readonly onKeyDown = (event: KeyboardEvent): void => {
+    const move = KEY_MOVES[event.key];
+    if (!move || event.altKey || event.ctrlKey || event.metaKey) return;
+    event.preventDefault();
+    event.stopPropagation();
+    this.move(...move);
+  };
+
+  protected override updated(): void {
+    // The current vertex's row stays in view as the cursor moves.
+    this.renderRoot.querySelector('tr.current')?.scrollIntoView({ block: 'nearest' });
+    this.dataset.path = this.paths ? String(this.path) : '';
+    this.dataset.vertex = this.paths ? String(this.vertex) : '';
+  }
+
+  override render() {
+    if (this.problem) return html`<p role="alert">${msg(str`The paths could not be traced: ${this.problem}`)}</p>`;
+    const paths = this.paths;
+    const rows = this.rows[this.path];
+    if (!paths || !rows) return html`<p role="status">${msg('Tracing the pixel’s paths…')}</p>`;
+    const row = rows[this.vertex];
+    const shown = paths.paths.length;
+    return html`<div class="controls" role="toolbar" aria-label=${msg('Step along the paths')}>
+        <button aria-keyshortcuts="ArrowUp" title=${msg('The previous path (↑)')} ?disabled=${this.path === 0} @click=${() => this.move(-1, 'start')}>▲ ${msg('Path')}</button>
+        <strong>${msg(str`Path ${this.path + 1} of ${shown}`)}</strong>
+        <button aria-keyshortcuts="ArrowDown" title=${msg('The next path (↓)')} ?disabled=${this.path === shown - 1} @click=${() => this.move(1, 'start')}>${msg('Path')} ▼</button>
+        <button aria-keyshortcuts="ArrowLeft" title=${msg('One vertex back (←)')} ?disabled=${this.vertex === 0} @click=${() => this.move(0, -1)}>◀ ${msg('Back')}</button>
+        <span>${msg(str`vertex ${this.vertex} of ${rows.length - 1}`)}</span>
+        <button aria-keyshortcuts="ArrowRight" title=${msg('One vertex on (→)')} ?disabled=${this.vertex === rows.length - 1} @click=${() => this.move(0, 1)}>${msg('Step')} ▶</button>
+        <span class="muted">${msg('Keys: ← → ↑ ↓ Home End')}</span>
+      </div>
+      <p role="status" aria-live="polite">${vertexText(row, this.settings?.bounceSampling ?? 'cosine')} ${survivalText(row)}</p>
+      <div class="table" tabindex="0" @keydown=${this.onKeyDown}>${this.renderTable(rows)}</div>
+      ${this.renderPixel(paths, rows)}`;
+  }
+
+  private renderTable(rows: PathVertexRow[]) {
+    return html`<table>
+      <thead>
+        <tr>
+          <th>#</th>
+          <th>${msg('Event')}</th>
+          <th title=${msg('L = Le + f·cosθ·Li / pdf, unrolled along the path: the throughput carries each factor f·cosθ/pdf; the light found is added times the throughput.')}>f·cosθ/pdf</th>
+          <th>${msg('Throughput so far')}</th>
+          <th>${msg('Added here')}</th>
+          <th>${msg('Path’s sum')}</th>
+        </tr>
+      </thead>
+      <tbody>
+        ${rows.slice(0, this.vertex + 1).map(
+          (row, i) => html`<tr class=${i === this.vertex ? 'current' : ''}>
+            <td>${i}</td>
+            <td>${eventName(row.event)}${row.objectId ? ` · ${row.objectId}` : ''}${row.lightId ? ` · ${row.lightId}` : ''}</td>
+            <td>
+              ${row.factor ? colorText(row.factor) : '–'}
+              ${row.cosTheta !== null && row.pdf !== null ? html`<small>cosθ = ${pathNumber.format(row.cosTheta)}, pdf = ${pathNumber.format(row.pdf)}</small>` : nothing}
+              ${row.survival !== null ? html`<small>÷ ${pathNumber.format(row.survival)} (${msg('roulette')})</small>` : nothing}
+            </td>
+            <td>${colorText(row.throughput)}</td>
+            <td>
+              ${row.lightSamples.map((sample) => html`<small>${lightSampleText(sample)}</small>`)}
+              ${row.emitted.some((value) => value !== 0) ? html`<small>${msg(str`Seen directly: ${colorText(row.emitted)}`)}</small>` : nothing}
+              ${row.lightSamples.length === 0 && row.emitted.every((value) => value === 0) ? '–' : nothing}
+            </td>
+            <td>${colorText(row.runningSum)}</td>
+          </tr>`,
+        )}
+      </tbody>
+    </table>`;
+  }
+
+  /** The path's contribution, and the pixel as the mean of all the pixel's paths. */
+  private renderPixel(paths: LabPaths, rows: PathVertexRow[]) {
+    const done = this.vertex === rows.length - 1;
+    const listed = paths.paths.map((path) => colorText(path.contribution)).join(' ');
+    return html`<p>
+        ${done ? msg(str`This path adds ${colorText(paths.paths[this.path].contribution)} to the pixel.`) : msg('Step to the path’s end to see what it adds to the pixel.')}
+        ${msg(str`The pixel is the mean of all ${paths.pathCount} paths’ contributions: ${colorText(meanOfPaths(paths.contributions))}.`)}
+      </p>
+      <p class="muted">
+        ${msg(str`The first ${paths.paths.length} paths add: ${listed}.`)}
+        ${msg('The 3D view draws them up to this vertex: this path bright, the others dimmed, light samples to their points on the lights (grey dashes: blocked), each ray as wide as the path’s throughput.')}
+      </p>`;
+  }
+}
+
+customElements.define('rt-path-debugger', RtPathDebugger);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-path-debugger': RtPathDebugger;
+  }
+}

@@ -1,0 +1,56 @@
+import { describe, expect, it } from 'vitest';
+import { pathRows } from '../../src/debugger/path-steps.ts';
+import { labPaths } from '../../src/tracer/lab-paths.ts';
+import { pathFocus, pathTrees } from '../../src/view/path-focus.ts';
+import { matte, tracerSceneFrom } from '../support/test-scene.ts';
+
+const scene = tracerSceneFrom({
+  camera: { position: [0, 1, 3.5], target: [0, 0.5, 0], fov: 45, pixels: [4, 4] },
+  settings: { integrator: 'path', background: [0.2, 0.2, 0.2], maxDepth: 4, pathSamples: 16 },
+  objects: [
+    { id: 'floor', shape: 'plane', scale: [3, 1, 3], material: matte([0.7, 0.7, 0.7]) },
+    { id: 'ball', shape: 'sphere', position: [0, 0.5, 0], scale: [0.5, 0.5, 0.5], material: matte([0.8, 0.3, 0.3]) },
+  ],
+  lights: [{ id: 'panel', type: 'area', position: [0, 2, 0], size: [0.5, 0.5], color: [1, 1, 1], intensity: 5, samples: 1 }],
+});
+const paths = labPaths(scene, 2, 2, 1, 5);
+const rows = paths.paths.map((path) => pathRows(path, { russianRoulette: false }));
+const trees = pathTrees(
+  paths,
+  rows.map((r) => r.map((row) => row.throughput)),
+);
+
+describe('a pixel’s paths as ray trees for the 3D view', () => {
+  it('has one tree per path, a ray per segment from vertex to vertex, a light or shadow ray per light sample', () => {
+    expect(trees.trace.rays).toHaveLength(5);
+    paths.paths.forEach((path, p) => {
+      expect(trees.segments[p]).toHaveLength(path.vertices.length - 1);
+      trees.segments[p]!.forEach((ray, i) => {
+        expect(ray.origin).toEqual(path.vertices[i]!.point);
+        const end = ray.origin.map((o, c) => o + ray.direction[c]! * ray.length);
+        end.forEach((value, c) => expect(value).toBeCloseTo(path.vertices[i + 1]!.point[c]!, 9));
+        expect(ray.type).toBe(i === 0 ? 'primary' : 'reflect');
+      });
+      path.vertices.forEach((vertex, i) => {
+        expect(trees.lights[p]![i]!.map((ray) => ray.type)).toEqual(vertex.lightSamples.map((sample) => (sample.visible ? 'light' : 'shadow')));
+      });
+    });
+    expect(trees.lights.flat(2).length).toBeGreaterThan(0);
+  });
+
+  it('shows every path up to the cursor’s vertex, the chosen path bright and its newest ray growing', () => {
+    const focus = pathFocus(trees, 1, 2);
+    const expected = trees.segments.flatMap((segments, p) => [...segments.slice(0, 2), ...trees.lights[p]!.slice(0, 3).flat()]);
+    expect([...focus.shown].sort()).toEqual(expected.sort());
+    expect(focus.highlighted).toBe(trees.segments[1]![1]);
+    expect(focus.grow).toBe(true);
+    for (const ray of focus.bright ?? []) expect(trees.segments[1]!.includes(ray) || trees.lights[1]!.flat().includes(ray)).toBe(true);
+    expect(focus.widthByContribution).toBe(true);
+    // At the camera nothing has been cast yet.
+    expect(pathFocus(trees, 0, 0).shown.size).toBe(0);
+  });
+
+  it('draws a segment as wide as the throughput it carries', () => {
+    rows.forEach((r, p) => trees.segments[p]!.forEach((ray, i) => expect(ray.contribution).toBeCloseTo(Math.min(1, Math.max(...r[i]!.throughput)), 12)));
+  });
+});
