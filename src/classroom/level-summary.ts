@@ -40,6 +40,7 @@ export function teacherTaskKind(goal: Goal): TeacherTaskKind {
     case 'state':
     case 'all':
     case 'any':
+    case 'challenge':
       return 'action';
     default: {
       const never: never = goal;

@@ -76,6 +76,8 @@ export type LabAction =
   | { type: 'render.finished'; ms: number }
   | { type: 'render.cancelled' }
   | { type: 'render.saved' }
+  /** A challenge's pictures were compared after a render: `difference` is challenge-closeness.ts's measure. */
+  | { type: 'challenge.compared'; difference: number }
   /** The scene was saved as a file or copied as a link (the sandbox level and its badge listen). */
   | { type: 'scene.saved'; to: 'file' | 'link' }
   | { type: 'panel.opened'; panel: string }

@@ -91,6 +91,8 @@ export const loggedEventSchema = z.discriminatedUnion('type', [
   z.strictObject({ t, id, type: z.literal('quiz.explained'), level, task }),
   z.strictObject({ t, id, type: z.literal('render.started'), level: level.nullable() }),
   z.strictObject({ t, id, type: z.literal('render.finished'), level: level.nullable(), ms: z.number().min(0) }),
+  /** A challenge's pictures compared after a render (logs from issue 41 on): `difference` is the measure, within the threshold or not. */
+  z.strictObject({ t, id, type: z.literal('challenge.compared'), level: level.nullable(), difference: z.number().min(0) }),
   /** The tab was hidden or shown again: active time is the time in between hidden ones. */
   z.strictObject({ t, id, type: z.literal('tab.hidden') }),
   z.strictObject({ t, id, type: z.literal('tab.visible') }),

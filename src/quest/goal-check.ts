@@ -1,7 +1,7 @@
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
 import { compare, conditionHolds, type JsonValue } from './condition.ts';
-import { goalParts, predictionParts, type EventGoal, type Goal, type PredictionGoal } from './goal.ts';
+import { goalParts, predictionParts, type ChallengeGoal, type EventGoal, type Goal, type PredictionGoal } from './goal.ts';
 import { readPath } from './state-path.ts';
 
 /**
@@ -12,16 +12,18 @@ import { readPath } from './state-path.ts';
  * kept by the caller (the quest engine, per task) so that these functions stay pure.
  */
 
-/** How often each event goal inside a task's goal has matched since the task was shown. */
-export type EventTally = ReadonlyMap<EventGoal, number>;
+/** How often each event goal (or challenge: each close render) inside a task's goal has matched since the task was shown. */
+export type EventTally = ReadonlyMap<EventGoal | ChallengeGoal, number>;
 
 export const NO_EVENTS: EventTally = new Map();
 
 /** The tally after `action`, which left the app in `state`: every event goal it matches counts once more. */
 export function tallyAction(goal: Goal, tally: EventTally, state: LabState, action: LabAction): EventTally {
-  let next: Map<EventGoal, number> | undefined;
+  let next: Map<EventGoal | ChallengeGoal, number> | undefined;
   for (const { goal: part } of goalParts(goal)) {
-    if (part.kind !== 'event' || !eventMatches(part, state, action)) continue;
+    if (part.kind !== 'event' && part.kind !== 'challenge') continue;
+    const matches = part.kind === 'event' ? eventMatches(part, state, action) : isCloseEnough(part, action);
+    if (!matches) continue;
     next ??= new Map(tally);
     next.set(part, (next.get(part) ?? 0) + 1);
   }
@@ -36,6 +38,11 @@ export function eventMatches(goal: EventGoal, state: LabState, action: LabAction
   return holds(action, goal.with) && holds(state, goal.where);
 }
 
+/** The action reports a comparison of the challenge's pictures within its threshold. */
+function isCloseEnough(goal: ChallengeGoal, action: LabAction): boolean {
+  return action.type === 'challenge.compared' && action.difference <= goal.challenge.measure.threshold;
+}
+
 /**
  * Whether the goal is met in `state`, given the events tallied since its task was shown.
  * Quiz, estimate and info goals are never met here: they complete through the quest
@@ -45,6 +52,8 @@ export function checkGoal(goal: Goal, state: LabState, tally: EventTally): boole
   switch (goal.kind) {
     case 'event':
       return (tally.get(goal) ?? 0) >= (goal.times ?? 1);
+    case 'challenge':
+      return (tally.get(goal) ?? 0) >= 1;
     case 'state':
       return compare(readPath(state, goal.state), goal.op, goal.value);
     case 'all':
@@ -82,6 +91,9 @@ export function touchesGoal(goal: Goal, before: LabState | null, state: LabState
         return eventMatches({ ...part, where: undefined }, state, action);
       case 'state':
         return before !== null && !sameContent(readPath(before, part.state), readPath(state, part.state));
+      // Every render of a challenge is a try at it, close or not.
+      case 'challenge':
+        return action.type === 'challenge.compared';
       // A combination is a step towards it through its parts, which goalParts lists too.
       case 'all':
       case 'any':

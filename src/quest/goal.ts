@@ -9,6 +9,7 @@ import { isRecord } from '../util/is-record.ts';
 import { gotOf, type Reason } from '../util/issue.ts';
 import { localizedTextSchema, type LocalizedText } from './localized-text.ts';
 import { parsePath } from './state-path.ts';
+import { CONTROL_TARGETS } from './lab-controls.ts';
 
 /**
  * What a task asks of the learner, as data (DESIGN.md: a discriminated union, not a pile of
@@ -63,6 +64,15 @@ export interface EstimateGoal {
  */
 export type PictureGoal = z.output<typeof pictureGoalSchema>;
 
+/**
+ * Match the target picture (spec/challenges.md §2): done when a render of the learner's scene
+ * comes within `measure.threshold` of the target's, both rendered by the tracer at
+ * `measure.size` (challenge-closeness.ts says how they are compared). The app reports each
+ * comparison as a `challenge.compared` action; the goal counts the close ones, as an event
+ * goal counts its events.
+ */
+export type ChallengeGoal = z.output<typeof challengeGoalSchema>;
+
 /** Read, then press Next (`{ "info": true }` in a level file). */
 export interface InfoGoal {
   kind: 'info';
@@ -84,7 +94,7 @@ export interface AnyGoal {
 export type SceneGoal = EventGoal | StateGoal | AllGoal | AnyGoal;
 
 /** Quiz, estimate and info goals are answered through the task panel, so they stand alone. */
-export type Goal = SceneGoal | QuizGoal | EstimateGoal | PictureGoal | InfoGoal;
+export type Goal = SceneGoal | QuizGoal | EstimateGoal | PictureGoal | ChallengeGoal | InfoGoal;
 
 /** Every kind of goal; a level file names it by the field that holds the goal's content. */
 export type GoalKind = Goal['kind'];
@@ -108,6 +118,7 @@ export function kindOfGoal(goal: Goal): TaskKind {
     case 'state':
     case 'all':
     case 'any':
+    case 'challenge':
       return 'do';
     default: {
       const never: never = goal;
@@ -128,6 +139,7 @@ export function predictionOf(goal: Goal): PredictionGoal | undefined {
     case 'state':
     case 'all':
     case 'any':
+    case 'challenge':
       return undefined;
     default: {
       const never: never = goal;
@@ -247,6 +259,30 @@ const pictureGoalSchema = z
   })
   .transform((goal) => ({ kind: 'picture' as const, ...goal }));
 
+/** The size of the pictures a challenge compares when the level does not say: small, so that both render well under a second. */
+export const CHALLENGE_SIZE: readonly [number, number] = [64, 48];
+
+const challengeGoalSchema = z
+  .strictObject({
+    challenge: z.strictObject({
+      target: z
+        .array(labActionSchema)
+        .min(1)
+        .max(10)
+        .describe("The changes to the level's starting scene that make the target picture; the learner never sees them."),
+      editable: z.array(z.enum(CONTROL_TARGETS)).min(1).max(6).describe('The controls the learner may use; the level shows only these (the rest is locked).'),
+      measure: z.strictObject({
+        size: z
+          .tuple([wholeNumberIn([8, 160]), wholeNumberIn([8, 120])])
+          .default([CHALLENGE_SIZE[0], CHALLENGE_SIZE[1]])
+          .describe('Width and height of both pictures compared, in pixels.'),
+        threshold: z.number().gt(0).max(1).describe('The largest mean difference per pixel and colour channel, in linear light (0–1), that counts as a match.'),
+      }),
+      par: z.strictObject({ renders: wholeNumberIn([1, 50]).describe('Renders for three stars: two stars up to 1.5 times as many, one star for any match.') }),
+    }),
+  })
+  .transform((goal) => ({ kind: 'challenge' as const, ...goal }));
+
 const infoGoalSchema = z.strictObject({ info: z.literal(true) }).transform((): InfoGoal => ({ kind: 'info' }));
 
 const innerGoals = () => z.array(z.lazy(() => sceneGoalSchema)).min(1);
@@ -267,6 +303,7 @@ const GOAL_SCHEMAS: { [Kind in GoalKind]: z.ZodType<Extract<Goal, { kind: Kind }
   quiz: quizGoalSchema,
   estimate: estimateGoalSchema,
   picture: pictureGoalSchema,
+  challenge: challengeGoalSchema,
   info: infoGoalSchema,
 };
 
@@ -314,6 +351,7 @@ export function children(goal: Goal): GoalChild[] {
     case 'quiz':
     case 'estimate':
     case 'picture':
+    case 'challenge':
     case 'info':
       return [];
     default: {
@@ -339,4 +377,5 @@ export type SchemaMatchesGoalTypes = [
   Assert<SameType<z.output<typeof estimateGoalSchema>, EstimateGoal>>,
   Assert<SameType<z.output<typeof infoGoalSchema>, InfoGoal>>,
   Assert<SameType<z.output<typeof pictureGoalSchema>, PictureGoal>>,
+  Assert<SameType<z.output<typeof challengeGoalSchema>, ChallengeGoal>>,
 ];

@@ -68,6 +68,7 @@ export const labActionSchema = z.discriminatedUnion('type', [
   z.strictObject({ type: z.literal('render.finished'), ms: z.number().min(0) }),
   fact('render.cancelled'),
   fact('render.saved'),
+  z.strictObject({ type: z.literal('challenge.compared'), difference: z.number().min(0) }),
   z.strictObject({ type: z.literal('scene.saved'), to: z.enum(['file', 'link']) }),
   z.strictObject({ type: z.literal('panel.opened'), panel: z.string().min(1) }),
   z.strictObject({

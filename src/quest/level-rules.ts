@@ -90,6 +90,12 @@ function taskProblems(level: Level, index: number, sample: LabState): Problem[] 
 
   for (const { goal, path } of goalParts(task.goal, at('goal'))) problems.push(...statePathProblems(goal, path, sample));
   if (task.guide) problems.push(...guideProblems(level, task.guide).map((reason) => ({ path: at('guide'), reason })));
+  // A challenge's controls are the only way to the target: the learner must be able to see them.
+  if (task.goal.kind === 'challenge') {
+    task.goal.challenge.editable.forEach((control, place) =>
+      problems.push(...guideProblems(level, control).map((reason) => ({ path: at('goal', 'challenge', 'editable', place), reason }))),
+    );
+  }
   return problems;
 }
 
@@ -107,6 +113,7 @@ function statePathProblems(goal: Goal, path: (string | number)[], sample: LabSta
     case 'quiz':
     case 'estimate':
     case 'picture':
+    case 'challenge':
     case 'info':
       return [];
     default: {

@@ -309,6 +309,7 @@ export class QuestEngine {
     this.lastActivity = this.log.now();
     const levelId = this.active?.level.id ?? null;
     if (action.type === 'render.started') this.append({ type: 'render.started', level: levelId });
+    if (action.type === 'challenge.compared') this.append({ type: 'challenge.compared', level: levelId, difference: action.difference });
     if (action.type === 'render.finished') {
       this.append({ type: 'render.finished', level: levelId, ms: action.ms });
       this.award({ kind: 'first-render' });

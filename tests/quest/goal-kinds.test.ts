@@ -28,6 +28,14 @@ const EXAMPLES: Record<string, unknown> = {
   quiz: { quiz: { question: 'Which?', choices: ['a', 'b'], answer: 0 } },
   estimate: { estimate: { question: 'How far?', answer: 5, tolerance: 0.5 } },
   picture: { picture: { question: 'Which picture?', choices: [{ actions: [{ type: 'view.orbited' }] }, { actions: [{ type: 'view.zoomed' }] }], answer: 1 } },
+  challenge: {
+    challenge: {
+      target: [{ type: 'settings.changed', changes: { shadows: false } }],
+      editable: ['tracer.shadows'],
+      measure: { threshold: 0.01 },
+      par: { renders: 2 },
+    },
+  },
   info: { info: true },
 };
 
@@ -52,6 +60,7 @@ describe('goal kinds', () => {
         case 'quiz':
         case 'estimate':
         case 'picture':
+        case 'challenge':
         case 'info':
           return part.kind;
         default: {
@@ -95,7 +104,7 @@ describe('walking nested goals', () => {
       ['any', 0],
       ['any', 1],
     ]);
-    for (const kind of ['event', 'state', 'quiz', 'estimate', 'picture', 'info']) expect(children(goal(EXAMPLES[kind])), kind).toEqual([]);
+    for (const kind of ['event', 'state', 'quiz', 'estimate', 'picture', 'challenge', 'info']) expect(children(goal(EXAMPLES[kind])), kind).toEqual([]);
   });
 
   it('goalParts reaches every goal at every depth, with its path as the file writes it', () => {

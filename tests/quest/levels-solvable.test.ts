@@ -10,6 +10,7 @@ import { loadLevels } from '../../src/quest/level-index.ts';
 import { newProgress } from '../../src/quest/progress.ts';
 import { QuestEngine } from '../../src/quest/quest-engine.ts';
 import { FakeClock, rightPrediction } from '../support/quest-fixtures.ts';
+import { challengeDifference } from '../support/challenge-render.ts';
 
 /**
  * Every level in levels/index.json is valid and solved by its own solutions, headless, as
@@ -18,7 +19,9 @@ import { FakeClock, rightPrediction } from '../support/quest-fixtures.ts';
  * that task as done by the learner. A task that is already complete before its solution
  * runs would complete itself in the game; that fails too. The level's and tasks' declared
  * views are applied as the game applies them (task-views.ts), and a view must not do its
- * task's work: after it, the task's goal must still be unmet.
+ * task's work: after it, the task's goal must still be unmet. A challenge's render is
+ * measured as the app's challenge referee measures it (rendered in-process here), and the
+ * comparison dispatched: a solution cannot report its own closeness.
  */
 
 const levelsFolder = new URL('../../levels/', import.meta.url);
@@ -34,7 +37,7 @@ describe('levels/index.json', () => {
 for (const chapter of catalog.chapters) {
   describe(`chapter ${chapter.id}`, () => {
     for (const entry of chapter.entries) {
-      it(`${entry.id} is valid and solved by its solutions`, () => {
+      it(`${entry.id} is valid and solved by its solutions`, async () => {
         if (!entry.ok) throw new Error(`levels/${entry.id}.level.json is broken:\n${entry.errors.map(issueLine).join('\n')}`);
         const { level } = entry;
         const clock = new FakeClock();
@@ -60,7 +63,12 @@ for (const chapter of catalog.chapters) {
           if (prediction) expect(engine.predict(task.id, rightPrediction(prediction))).toEqual({ correct: true });
           else if (kindOfGoal(task.goal) === 'info') expect(engine.next(), `info step "${task.id}" was not the current task`).toBe(true);
           for (const action of task.solution ?? []) {
+            expect(action.type, `task "${task.id}": only the app compares a challenge's pictures`).not.toBe('challenge.compared');
             expect(store.dispatch(action), `task "${task.id}": ${action.type} was refused`).toBeUndefined();
+            if (task.goal.kind === 'challenge' && action.type === 'render.finished') {
+              const difference = await challengeDifference(level.scene, task.goal, store.state.scene);
+              expect(store.dispatch({ type: 'challenge.compared', difference })).toBeUndefined();
+            }
           }
           expect(statusOf(task.id), `task "${task.id}" was not completed by its solution`).toBe('done');
           // A prediction is explained once the task that shows its result is done; then the learner continues.

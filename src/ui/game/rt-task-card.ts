@@ -14,6 +14,7 @@ import { foldedPrediction } from './prediction-summary.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 import './rt-hint-box.ts';
 import './rt-quiz.ts';
+import './rt-challenge.ts';
 
 /**
  * @summary One task in the task list: a status mark (in words for screen readers, as a
@@ -178,6 +179,7 @@ export class RtTaskCard extends LocalizedElement {
           : html`<div class="head ${finished ? 'done' : ''}">${head}</div>`
       }
       ${folded !== null && !this.opened ? html`<p class="summary" title=${folded}>${folded}</p>` : nothing}
+      ${finished && view.task.goal.kind === 'challenge' ? html`<rt-challenge summary .goal=${view.task.goal} locale=${this.locale}></rt-challenge>` : nothing}
       ${this.expanded || (openable && this.opened) ? html`<div class="body">${this.body(view, finished)}</div>` : nothing}
     `;
   }
@@ -191,6 +193,7 @@ export class RtTaskCard extends LocalizedElement {
       <p>${levelText(view.task.text, this.locale)}</p>
       ${view.task.more ? explainMore(levelText(view.task.more, this.locale), () => send({ kind: 'explain', task: id })) : nothing}
       ${view.kind === 'quiz' ? html`<rt-quiz .task=${view} locale=${this.locale}></rt-quiz>` : nothing}
+      ${view.task.goal.kind === 'challenge' ? html`<rt-challenge .goal=${view.task.goal} locale=${this.locale}></rt-challenge>` : nothing}
       ${
         finished
           ? nothing

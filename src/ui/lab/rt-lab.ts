@@ -37,8 +37,7 @@ import { QuestController } from './quest-controller.ts';
 import type { RtRenderWindow } from './render-window/rt-render-window.ts';
 import type { RtSceneView } from './rt-scene-view.ts';
 import { storeContext } from './store-context.ts';
-import { quizPictureDrawer } from './quiz-picture-drawer.ts';
-import { quizPicturesContext } from '../game/quiz-pictures.ts';
+import { providePictures } from './picture-providers.ts';
 import { loadAfterFirstScreen, ON_DEMAND_PANELS, RENDER_WINDOW } from './lab-elements.ts';
 import { ViewCoverController } from './view-cover.ts';
 import { PreviewPlaceController } from './preview-place.ts';
@@ -101,7 +100,7 @@ export class RtLab extends LocalizedElement {
     this.sharedScene = null;
     this.services = this.createServices();
     this.storeProvider = new ContextProvider(this, { context: storeContext, initialValue: this.services.store });
-    new ContextProvider(this, { context: quizPicturesContext, initialValue: quizPictureDrawer(() => this.services) });
+    providePictures(this, () => ({ services: this.services, levelScene: this.level()?.scene }));
     new GuideHostController(this);
     new ViewCoverController(this, () => ({
       view: this.sceneView(),

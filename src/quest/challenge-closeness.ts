@@ -1,0 +1,60 @@
+import { initialState } from '../lab-state/lab-state.ts';
+import { reduce } from '../lab-state/lab-reducer.ts';
+import type { Scene } from '../scene/scene.ts';
+import type { ChallengeGoal } from './goal.ts';
+
+/**
+ * The measure of a match-the-target challenge (spec/challenges.md §2). Both pictures are
+ * rendered by the same tracer at the challenge's small size (64 × 48 unless the level says
+ * otherwise) with the same seed, so the same scene gives the same picture, difference 0.
+ *
+ * The measure is the mean absolute difference per pixel and colour channel in linear light,
+ * each value clamped to 0..1 as the picture shows it: 0 is the same picture, 1 is black
+ * against white everywhere. For the learner: "on average, how far each pixel's red, green
+ * and blue are from the target's". It is the plainest error there is (Shirley and Marschner,
+ * Fundamentals of Computer Graphics, compare images pixel by pixel in linear intensity); a
+ * soft shadow's width or a lens's blur changes many pixels a little, which it counts.
+ */
+
+/** The target's scene and the learner's, both at the challenge's size, ready to render. */
+export function challengeScenes(levelScene: Scene, goal: ChallengeGoal, learnerScene: Scene): { target: Scene; attempt: Scene } {
+  let state = initialState(levelScene);
+  // Refused actions change nothing; tests/quest/challenges.test.ts checks none is refused.
+  for (const action of goal.challenge.target) state = reduce(state, action).state;
+  return { target: atSize(state.scene, goal), attempt: atSize(learnerScene, goal) };
+}
+
+function atSize(scene: Scene, goal: ChallengeGoal): Scene {
+  const imageSize: [number, number] = [goal.challenge.measure.size[0], goal.challenge.measure.size[1]];
+  return { ...scene, settings: { ...scene.settings, imageSize } };
+}
+
+/** The mean absolute difference of two linear RGB pictures of the same size, per pixel and channel, each value clamped to 0..1. */
+export function meanLinearDifference(a: Float32Array, b: Float32Array): number {
+  if (a.length !== b.length || a.length === 0) throw new Error(`pictures of different sizes: ${a.length} and ${b.length} values`);
+  let sum = 0;
+  for (let i = 0; i < a.length; i++) sum += Math.abs(clamp01(a[i]) - clamp01(b[i]));
+  return sum / a.length;
+}
+
+/** Per pixel, the mean absolute difference of its three channels (0..1): what the difference picture shows. */
+export function pixelDifferences(a: Float32Array, b: Float32Array): Float32Array {
+  const out = new Float32Array(Math.floor(a.length / 3));
+  for (let pixel = 0; pixel < out.length; pixel++) {
+    let sum = 0;
+    for (let c = 0; c < 3; c++) sum += Math.abs(clamp01(a[pixel * 3 + c]) - clamp01(b[pixel * 3 + c]));
+    out[pixel] = sum / 3;
+  }
+  return out;
+}
+
+function clamp01(value: number): number {
+  return Math.min(1, Math.max(0, value));
+}
+
+/** Stars for a match after `renders` renders: 3 at or under par, 2 within 1.5 × par, else 1 (the rule the panel shows before the start). */
+export function challengeStars(renders: number, par: number): 1 | 2 | 3 {
+  if (renders <= par) return 3;
+  if (renders <= Math.floor(par * 1.5)) return 2;
+  return 1;
+}
