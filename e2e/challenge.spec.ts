@@ -8,7 +8,7 @@ import { closeRenderWindow, collectErrors, current, expectStatus, levelsFolder, 
 
 const index = JSON.parse(readFileSync(new URL('index.json', levelsFolder), 'utf8')) as { chapters: { levels: string[] }[] };
 const order = index.chapters.flatMap((chapter) => chapter.levels);
-const LEVEL = '21-match-the-highlight';
+const LEVEL = '25-match-the-highlight';
 
 async function render(page: Page): Promise<void> {
   await openRayTracer(page);
