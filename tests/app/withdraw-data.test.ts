@@ -50,7 +50,7 @@ describe('withdraw and delete my data', () => {
     session.setParticipantCode('A17');
     session.start();
     store.dispatch({ type: 'view.orbited' });
-    session.submitSurvey({ survey: 'default', submittedAt: '2026-01-01T00:00:00.000Z', answers: { feedback: 'fine' } });
+    session.survey.submit({ survey: 'default', submittedAt: '2026-01-01T00:00:00.000Z', answers: { feedback: 'fine' } });
     const key = session.progressKey;
     expect(storage.getItem(key)).not.toBeNull();
     session.stopSaving();
