@@ -303,7 +303,7 @@ export class QuestSession {
   /**
    * Takes a damaged save's contents back: a progress backup's tasks, badges and events join
    * the progress (damaged-saves.ts withRestored); a session record's code and attempt come
-   * back; survey answers come back by their keeper. Its parts this version
+   * back; survey and concept-test answers come back by their keepers. Its parts this version
    * cannot read are reported, and nothing changes when none can.
    */
   restoreBackup(key: string): ImportResult {
@@ -311,6 +311,7 @@ export class QuestSession {
     if (text === null) return { ok: false, reason: 'unreadable', errors: [] };
     if (this.damagedSaves.what(key) === 'session') return this.restoreContext(text);
     if (this.damagedSaves.what(key) === 'survey') return this.survey.restore(text);
+    if (this.damagedSaves.what(key) === 'concept-test') return this.conceptTests.restore(text);
     const read = readProgressJson(text, new Date(this.clock.wallMs()).toISOString());
     if (!read.ok) return { ok: false, reason: 'unreadable', errors: read.errors };
     const current = this.engineNow.progress;

@@ -238,6 +238,7 @@
 's2ef7ce14110547a5': `Nog een hint`,
 's2f15238ed09951bf': str`Het sample: ${0} stralen`,
 's2f1f7f962fff8d49': str`Pixel ${0}, ${1}: zijn straal testte ${2} omhullende dozen (één per object) en ging door ${3} ervan: ${4}.`,
+'s2f2c2bf5a2917992': `Antwoorden op de begriptoets`,
 's2f349d7b55d8b297': str`${0} × ${1} pixels`,
 's2f541c30f520eeb5': str`Supersampling ${0} (ongeveer ${1})`,
 's2fa05f91c1baa29b': str`${0} weghalen`,
