@@ -40,8 +40,7 @@ export class ConceptTestKeeper {
     this.key = conceptTestKey(session.progressKey);
     const loaded = loadConceptTest(storage, session.progressKey, wallMs);
     this.answersNow = loaded.answers;
-    if (loaded.damage?.backupKey === null) writes.hold(this.key, loaded.damage.raw);
-    if (loaded.damage) writes.put(this.key, JSON.stringify(loaded.answers));
+    if (loaded.damage) writes.replaceDamaged(this.key, loaded.damage, JSON.stringify(loaded.answers));
   }
 
   get answers(): ConceptTestAnswers {

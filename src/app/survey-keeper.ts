@@ -35,12 +35,7 @@ export class SurveyKeeper {
     const loaded = loadSurvey(storage, session.progressKey, wallMs);
     this.submissionNow = loaded.submission;
     this.damage = loaded.damage;
-    // A record that could not be backed up is held (nothing is written over it until it is, or
-    // the learner has downloaded it); what could be read of it is written in its place at the
-    // next save (after the backup), so that the next visit does not find the damage again and
-    // back it up once more.
-    if (loaded.damage?.backupKey === null) writes.hold(this.key, loaded.damage.raw);
-    if (loaded.damage) writes.put(this.key, this.submissionNow && JSON.stringify(this.submissionNow));
+    if (loaded.damage) writes.replaceDamaged(this.key, loaded.damage, this.submissionNow && JSON.stringify(this.submissionNow));
   }
 
   /** The answers, once handed in (kept in memory when they could not be written yet). */
