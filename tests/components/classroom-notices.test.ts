@@ -49,6 +49,19 @@ describe('rt-withdraw', () => {
     report.addEventListener('close', (event) => event.stopImmediatePropagation(), { capture: true });
   }
 
+  /** Asks to withdraw, confirms, and answers the command with `report`, as the quest controller does. */
+  async function withdrawWith(report: WithdrawReport) {
+    const withdraw = await mount('rt-withdraw', {});
+    keepPage(withdraw);
+    const commands = record<ProgressCommand>(withdraw, 'progress-command');
+    const view = page.elementLocator(withdraw);
+    await view.getByRole('button', { name: 'Withdraw and delete my data…' }).click();
+    await view.getByRole('button', { name: 'Delete my data', exact: true }).click();
+    expect(commands.map((command) => command.kind)).toEqual(['withdraw']);
+    (commands[0] as Extract<ProgressCommand, { kind: 'withdraw' }>).done(report);
+    return { withdraw, done: view.getByRole('dialog', { name: 'Your data was deleted' }) };
+  }
+
   it('deletes nothing when the learner cancels', async () => {
     const withdraw = await mount('rt-withdraw', {});
     const commands = record<ProgressCommand>(withdraw, 'progress-command');
@@ -61,17 +74,7 @@ describe('rt-withdraw', () => {
   });
 
   it('asks, sends the withdraw command, then says what was deleted', async () => {
-    const withdraw = await mount('rt-withdraw', {});
-    keepPage(withdraw);
-    const commands = record<ProgressCommand>(withdraw, 'progress-command');
-    const view = page.elementLocator(withdraw);
-    await view.getByRole('button', { name: 'Withdraw and delete my data…' }).click();
-    await view.getByRole('button', { name: 'Delete my data', exact: true }).click();
-    expect(commands.map((command) => command.kind)).toEqual(['withdraw']);
-
-    const report: WithdrawReport = { progress: true, session: true, survey: false, conceptTest: true, backups: 2, failed: [] };
-    (commands[0] as Extract<ProgressCommand, { kind: 'withdraw' }>).done(report);
-    const done = view.getByRole('dialog', { name: 'Your data was deleted' });
+    const { withdraw, done } = await withdrawWith({ progress: true, session: true, survey: false, conceptTest: true, backups: 2, failed: [] });
     await expect.element(done).toBeVisible();
     expect([...withdraw.shadowRoot!.querySelectorAll('dialog.report li')].map((item) => item.textContent)).toEqual([
       'your progress and the record of what you did',
@@ -83,21 +86,7 @@ describe('rt-withdraw', () => {
   });
 
   it('says when the browser refused to delete some of it', async () => {
-    const withdraw = await mount('rt-withdraw', {});
-    keepPage(withdraw);
-    const commands = record<ProgressCommand>(withdraw, 'progress-command');
-    const view = page.elementLocator(withdraw);
-    await view.getByRole('button', { name: 'Withdraw and delete my data…' }).click();
-    await view.getByRole('button', { name: 'Delete my data', exact: true }).click();
-    (commands[0] as Extract<ProgressCommand, { kind: 'withdraw' }>).done({
-      progress: false,
-      session: false,
-      survey: false,
-      conceptTest: false,
-      backups: 0,
-      failed: ['rtq.progress'],
-    });
-    const done = view.getByRole('dialog', { name: 'Your data was deleted' });
+    const { done } = await withdrawWith({ progress: false, session: false, survey: false, conceptTest: false, backups: 0, failed: ['rtq.progress'] });
     await expect.element(done).toHaveTextContent('There was nothing saved in this browser to delete.');
     await expect.element(done).toHaveTextContent("The browser refused to delete some of it: clear this site's data in the browser's settings.");
   });
