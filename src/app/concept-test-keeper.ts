@@ -1,12 +1,12 @@
 import type { Assignment } from '../classroom/assignment.ts';
 import type { ConceptTestAnswers, ConceptTestSubmission } from '../classroom/concept-test/concept-answers.ts';
 import type { ConceptPhase } from '../classroom/concept-test/concept-test-plan.ts';
-import { conceptTestKey, loadConceptTest } from '../classroom/concept-test/concept-test-store.ts';
+import { conceptTestKey, loadConceptTest, readConceptTestText } from '../classroom/concept-test/concept-test-store.ts';
 import type { KeyValueStorage, SaveProblemKind } from '../quest/progress-store.ts';
 import type { QuestEngine } from '../quest/quest-engine.ts';
 import { conceptTestDue } from './concept-test-due.ts';
 import type { PendingWrites } from './pending-writes.ts';
-import type { SessionMode } from './quest-session.ts';
+import type { ImportResult, SessionMode } from './quest-session.ts';
 
 /** What the keeper needs of its quest session. */
 export interface ConceptTestSession {
@@ -40,8 +40,7 @@ export class ConceptTestKeeper {
     this.key = conceptTestKey(session.progressKey);
     const loaded = loadConceptTest(storage, session.progressKey, wallMs);
     this.answersNow = loaded.answers;
-    if (loaded.damage?.backupKey === null) writes.hold(this.key, loaded.damage.raw);
-    if (loaded.damage) writes.put(this.key, JSON.stringify(loaded.answers));
+    if (loaded.damage) writes.replaceDamaged(this.key, loaded.damage, JSON.stringify(loaded.answers));
   }
 
   get answers(): ConceptTestAnswers {
@@ -65,5 +64,21 @@ export class ConceptTestKeeper {
     const problem = this.writes.waiting(this.key) ? (this.session.saveProblem ?? 'storage-blocked') : null;
     if (phase === 'pre' && this.session.mode.kind === 'map') this.session.start();
     return problem;
+  }
+
+  /**
+   * A backup of a damaged record (the Menu's "Damaged saves"): each test that can be read of
+   * it comes back, in place of this visit's answers to the same test (as a survey backup's
+   * answers do: survey-keeper.ts); a start that waited for the test before goes on.
+   */
+  restore(text: string): ImportResult {
+    const { answers, lost } = readConceptTestText(text);
+    if (answers.pre === null && answers.post === null) return { ok: false, reason: 'unreadable', errors: [] };
+    const waited = this.due === 'pre';
+    this.answersNow = { pre: answers.pre ?? this.answersNow.pre, post: answers.post ?? this.answersNow.post };
+    this.writes.put(this.key, JSON.stringify(this.answersNow));
+    this.session.flush();
+    if (waited && this.due !== 'pre' && this.session.mode.kind === 'map') this.session.start();
+    return { ok: true, repaired: lost };
   }
 }

@@ -3,12 +3,14 @@ import type { Progress } from '../quest/progress.ts';
 import type { ProgressStore } from '../quest/progress-store.ts';
 import { listBackups, type KeyValueStorage } from '../quest/saved-backups.ts';
 import { surveyKey } from '../classroom/survey-store.ts';
+import { conceptTestKey } from '../classroom/concept-test/concept-test-store.ts';
 import type { PendingWrites } from './pending-writes.ts';
 import { sessionContextKey } from './session-context.ts';
 
 /**
  * The Menu's "Damaged saves": every copy of saved data that could not be used as it was,
- * for this session's progress key, its session record and its survey answers — the backups in storage, and the
+ * for this session's progress key, its session record, its survey answers and its concept-test
+ * answers — the backups in storage, and the
  * damaged text still held under its own key because there was no room for a backup. Each
  * can be downloaded exactly as it was; a backup can be deleted (to free space) and a held
  * one is released once downloaded, so that saving goes on.
@@ -17,7 +19,7 @@ import { sessionContextKey } from './session-context.ts';
 /** One damaged save. `held`: still under its own key (no backup), `key` is then that key. */
 export interface DamagedSave {
   key: string;
-  what: 'progress' | 'session' | 'survey';
+  what: 'progress' | 'session' | 'survey' | 'concept-test';
   /** When the backup was made (ISO 8601), or null for a held one. */
   madeAt: string | null;
   /** Its length in characters. */
@@ -27,17 +29,21 @@ export interface DamagedSave {
 
 export class DamagedSaves {
   private listed: DamagedSave[] = [];
-  private readonly contextKey: string;
-  private readonly surveyKey: string;
+  /** Each record kept next to the progress, by what it is. */
+  private readonly records: ReadonlyMap<string, DamagedSave['what']>;
 
   constructor(
     private readonly storage: KeyValueStorage,
     private readonly progress: ProgressStore,
     private readonly writes: PendingWrites,
-    private readonly progressKey: string,
+    progressKey: string,
   ) {
-    this.contextKey = sessionContextKey(progressKey);
-    this.surveyKey = surveyKey(progressKey);
+    this.records = new Map<string, DamagedSave['what']>([
+      [progressKey, 'progress'],
+      [sessionContextKey(progressKey), 'session'],
+      [surveyKey(progressKey), 'survey'],
+      [conceptTestKey(progressKey), 'concept-test'],
+    ]);
     this.refresh();
   }
 
@@ -48,13 +54,12 @@ export class DamagedSaves {
 
   /** Looks again: after a save that may have backed up a held text, a release or a deletion. */
   refresh(): void {
-    const what = (key: string): DamagedSave['what'] => (key === this.progressKey ? 'progress' : key === this.contextKey ? 'session' : 'survey');
-    const held: DamagedSave[] = [
-      [this.progressKey, this.progress.held],
-      [this.contextKey, this.writes.held(this.contextKey)],
-      [this.surveyKey, this.writes.held(this.surveyKey)],
-    ].flatMap(([key, text]) => (key !== null && text !== null ? [{ key, what: what(key), madeAt: null, size: text.length, held: true }] : []));
-    const stored = listBackups(this.storage, [this.progressKey, this.contextKey, this.surveyKey]).map(({ key, of, madeAt, size }) => ({
+    const what = (key: string): DamagedSave['what'] => this.records.get(key) ?? 'progress';
+    const held: DamagedSave[] = [...this.records].flatMap(([key, kind]) => {
+      const text = kind === 'progress' ? this.progress.held : this.writes.held(key);
+      return text === null ? [] : [{ key, what: kind, madeAt: null, size: text.length, held: true }];
+    });
+    const stored = listBackups(this.storage, [...this.records.keys()]).map(({ key, of, madeAt, size }) => ({
       key,
       what: what(of),
       madeAt,
@@ -114,7 +119,7 @@ export function withRestored(current: Progress, restored: Progress): Progress {
 
 /** The download's name: what it is and when it was kept ("ray-tracer-quest-damaged-progress-2025-03-01T09-00-00.json"). */
 export function damagedSaveFileName(save: DamagedSave): string {
-  const what = { progress: 'progress', session: 'session-record', survey: 'survey-answers' }[save.what];
+  const what = { progress: 'progress', session: 'session-record', survey: 'survey-answers', 'concept-test': 'concept-test-answers' }[save.what];
   const when = save.madeAt ? `-${save.madeAt.slice(0, 19).replaceAll(':', '-')}` : '';
   return `ray-tracer-quest-damaged-${what}${when}.json`;
 }

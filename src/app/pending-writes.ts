@@ -40,6 +40,17 @@ export class PendingWrites {
     this.heldTexts.set(key, raw);
   }
 
+  /**
+   * A record found damaged when the session started: held while it has no backup (nothing is
+   * written over it until it has, or the learner has downloaded it), and what could be read of
+   * it (`readable`; null: nothing) written in its place at the next flush, after the backup, so
+   * that the next visit does not find the damage again and back it up once more.
+   */
+  replaceDamaged(key: string, damage: { raw: string; backupKey: string | null }, readable: string | null): void {
+    if (damage.backupKey === null) this.hold(key, damage.raw);
+    this.put(key, readable);
+  }
+
   held(key: string): string | null {
     return this.heldTexts.get(key) ?? null;
   }

@@ -18,8 +18,6 @@ import { QuestEngine, type OpenLevelResult } from '../quest/quest-engine.ts';
 import { defaultScene } from '../scene/scene-defaults.ts';
 import { assignmentProgressKey } from '../classroom/assignment-id.ts';
 import { randomUuid } from '../classroom/learner-identity.ts';
-import type { SurveySubmission } from '../classroom/survey-answers.ts';
-import { loadSurvey, readSurveyText, surveyKey, type SurveyDamage } from '../classroom/survey-store.ts';
 import { assignmentCatalog } from './assignment-catalog.ts';
 import { ConceptTestKeeper } from './concept-test-keeper.ts';
 import { DamagedSaves, withRestored } from './damaged-saves.ts';
@@ -31,6 +29,7 @@ import type { Store } from '../lab-state/store.ts';
 import type { Issue } from '../util/issue.ts';
 import { SandboxSaver } from './sandbox-saver.ts';
 import { attachToPage } from './session-page.ts';
+import { SurveyKeeper } from './survey-keeper.ts';
 import { TaskViews } from './task-views.ts';
 
 /**
@@ -80,8 +79,8 @@ export class QuestSession {
   readonly problem: ProgressProblem | undefined;
   /** What of the saved session record (participant code, attempt) could not be read, if any. */
   readonly contextDamage: ContextDamage | null;
-  /** What of the saved survey answers could not be read, if any. */
-  readonly surveyDamage: SurveyDamage | null;
+  /** The closing survey: its answers (kept in memory when they could not be written yet), a damaged record of them, handing in. */
+  readonly survey: SurveyKeeper;
   /** The Menu's damaged saves of this progress key. */
   readonly damagedSaves: DamagedSaves;
   /** The assignment's concept test: its answers, the one due (the start waits for the one before), handing in. */
@@ -102,7 +101,6 @@ export class QuestSession {
   private saveProblemNow: SaveProblemKind | null = null;
   private readonly writes: PendingWrites;
   private contextNow: SessionContext;
-  private surveyNow: SurveySubmission | null;
   /** `start` was called while the participant code (or the concept test before) was needed: it runs again when given. */
   private waitingForCode = false;
 
@@ -122,10 +120,12 @@ export class QuestSession {
     this.contextDamage = context.damage;
     if (context.damage && context.damage.backupKey === null) this.writes.hold(sessionContextKey(this.progressKey), context.damage.raw);
     if (this.contextNow.attemptId === null) this.saveContext({ ...this.contextNow, attemptId: randomUuid() });
-    const survey = loadSurvey(this.storage, this.progressKey, this.clock.wallMs());
-    this.surveyNow = survey.submission;
-    this.surveyDamage = survey.damage;
-    if (survey.damage) this.keepDamagedSurvey(survey.damage);
+    this.survey = new SurveyKeeper(
+      { progressKey: this.progressKey, save: () => this.save(), notify: () => this.notify() },
+      this.writes,
+      this.storage,
+      this.clock.wallMs(),
+    );
     this.conceptTests = new ConceptTestKeeper(this, this.writes, this.storage, this.clock.wallMs());
     const loaded = this.progress.load();
     this.problem = loaded.problem;
@@ -168,11 +168,6 @@ export class QuestSession {
   /** Why the last save failed (progress, session record or survey), until a save works again. */
   get saveProblem(): SaveProblemKind | null {
     return this.saveProblemNow;
-  }
-
-  /** The closing survey's answers, once handed in (kept in memory when they could not be written yet). */
-  get survey(): SurveySubmission | null {
-    return this.surveyNow;
   }
 
   /** Whether the start should ask for a participant code (an assignment that wants one, none given yet). */
@@ -305,25 +300,18 @@ export class QuestSession {
   /** Saves nothing any more, so that data just deleted (withdraw-data.ts) does not come back before the page starts again. */
   readonly stopSaving = (): void => void (this.save = () => null);
 
-  /** The closing survey's answers: kept, and written now or at a later save. Null when written, else why not (yet). */
-  submitSurvey(answers: SurveySubmission): SaveProblemKind | null {
-    this.surveyNow = answers;
-    this.writes.put(surveyKey(this.progressKey), JSON.stringify(answers));
-    const problem = this.save();
-    this.notify();
-    return this.writes.waiting(surveyKey(this.progressKey)) ? (problem ?? 'storage-blocked') : null;
-  }
-
   /**
    * Takes a damaged save's contents back: a progress backup's tasks, badges and events join
    * the progress (damaged-saves.ts withRestored); a session record's code and attempt come
-   * back. Its parts this version cannot read are reported, and nothing changes when none can.
+   * back; survey and concept-test answers come back by their keepers. Its parts this version
+   * cannot read are reported, and nothing changes when none can.
    */
   restoreBackup(key: string): ImportResult {
     const text = this.damagedSaves.text(key);
     if (text === null) return { ok: false, reason: 'unreadable', errors: [] };
     if (this.damagedSaves.what(key) === 'session') return this.restoreContext(text);
-    if (this.damagedSaves.what(key) === 'survey') return this.restoreSurvey(text);
+    if (this.damagedSaves.what(key) === 'survey') return this.survey.restore(text);
+    if (this.damagedSaves.what(key) === 'concept-test') return this.conceptTests.restore(text);
     const read = readProgressJson(text, new Date(this.clock.wallMs()).toISOString());
     if (!read.ok) return { ok: false, reason: 'unreadable', errors: read.errors };
     const current = this.engineNow.progress;
@@ -437,30 +425,6 @@ export class QuestSession {
       attemptId: context.attemptId ?? this.contextNow.attemptId,
     });
     return { ok: true, repaired: [] };
-  }
-
-  /**
-   * A damaged survey record: held when it could not be backed up (nothing is written over it
-   * until it is, or the learner has downloaded it); what could be read of it is written in its
-   * place at the next save (after the backup), so that the next visit does not find the damage
-   * again and back it up once more.
-   */
-  private keepDamagedSurvey(damage: SurveyDamage): void {
-    const key = surveyKey(this.progressKey);
-    if (damage.backupKey === null) this.writes.hold(key, damage.raw);
-    this.writes.put(key, this.surveyNow && JSON.stringify(this.surveyNow));
-  }
-
-  /**
-   * A survey backup: the answers that can be read of it come back (they replace this visit's
-   * answers to the same questions, the other answers stay), with the time they were handed in.
-   */
-  private restoreSurvey(text: string): ImportResult {
-    const { submission, lost } = readSurveyText(text);
-    if (submission === null) return { ok: false, reason: 'unreadable', errors: [] };
-    const current = this.surveyNow?.survey === submission.survey ? this.surveyNow.answers : {};
-    this.submitSurvey({ ...submission, answers: { ...current, ...submission.answers } });
-    return { ok: true, repaired: lost };
   }
 
   /**

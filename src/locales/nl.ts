@@ -121,6 +121,7 @@
 's2de969afacdaa7a6': `Vorm`,
 's2eae4de5c08dd804': `Je punten, badges en afgeronde levels zijn dan weg. Exporteer eerst je voortgang als je die misschien terug wilt.`,
 's2ef7ce14110547a5': `Nog een hint`,
+'s2f2c2bf5a2917992': `Antwoorden op de begriptoets`,
 's302cbb19bf9a174a': `Uit`,
 's30a9c8e2b1674364': str`Jouw voorspelling: ‘${0}’.`,
 's30fee907bd57e7e9': `Patroon`,

@@ -87,15 +87,15 @@ describe('saving into a full storage', () => {
     const { session } = played(storage);
     const answers = { survey: 'default', submittedAt: '2025-03-01T09:30:00.000Z', answers: { rate: 4 } };
     storage.fill(10);
-    expect(session.submitSurvey(answers)).toBe('storage-full');
-    expect(session.survey).toEqual(answers);
+    expect(session.survey.submit(answers)).toBe('storage-full');
+    expect(session.survey.submission).toEqual(answers);
     expect(storage.getItem(surveyKey(PROGRESS_KEY))).toBeNull();
 
     storage.removeItem('filler');
     session.flush(); // leaving the page, or any later change
     expect(session.saveProblem).toBeNull();
     expect(JSON.parse(storage.getItem(surveyKey(PROGRESS_KEY)) ?? 'null')).toEqual(answers);
-    expect(open(storage).session.survey).toEqual(answers);
+    expect(open(storage).session.survey.submission).toEqual(answers);
   });
 
   it('does not reset progress it cannot write, and says why', () => {
@@ -243,75 +243,6 @@ describe('a damaged session record', () => {
     expect(session.restoreBackup(backup!.key)).toEqual({ ok: true, repaired: [] });
     expect(session.context).toEqual({ participantCode: 'B2', attemptId: attempt });
     expect(JSON.parse(storage.getItem(key) ?? 'null')).toEqual({ participantCode: 'B2', attemptId: attempt });
-  });
-});
-
-describe('damaged survey answers', () => {
-  const answers = { survey: 'default', submittedAt: '2025-03-01T09:30:00.000Z', answers: { rate: 4, say: 'fun' } };
-  const key = surveyKey(PROGRESS_KEY);
-
-  it('are backed up, what can be read is kept, and a restore brings the rest back', () => {
-    const storage = new QuotaStorage(200_000);
-    const raw = JSON.stringify({ ...answers, answers: { rate: 4, say: 'fun', pick: ['a'] } });
-    storage.setItem(key, raw);
-    const { session } = open(storage);
-    expect(session.surveyDamage).toMatchObject({ lost: ['answers.pick'], raw, backupKey: `${key}.backup.2025-03-01T09:00:00.000Z` });
-    expect(session.survey).toEqual(answers);
-    // What could be read is written in its place: the next visit finds no damage (and makes no second copy).
-    expect(JSON.parse(storage.getItem(key) ?? 'null')).toEqual(answers);
-    expect(open(storage).session.surveyDamage).toBeNull();
-
-    const [backup] = session.damagedSaves.all;
-    expect(backup).toMatchObject({ what: 'survey', held: false });
-    expect(session.damagedSaves.text(backup!.key)).toBe(raw);
-    expect(session.restoreBackup(backup!.key)).toEqual({ ok: true, repaired: ['answers.pick'] });
-    expect(session.survey).toEqual(answers);
-  });
-
-  it('that cannot be read are asked again; a restore brings back what is in the backup', () => {
-    const storage = new QuotaStorage(200_000);
-    const raw = JSON.stringify(answers).slice(0, -3); // cut short inside the last answer
-    storage.setItem(key, raw);
-    const { session } = open(storage);
-    expect(session.surveyDamage).toMatchObject({ cut: true, raw });
-    expect(session.survey).toEqual({ ...answers, answers: { rate: 4 } });
-
-    storage.setItem(key, '{"survey": 3, "answers": {"rate": 2}}');
-    const later = new FakeClock();
-    later.advance(60_000);
-    const again = open(storage, null, later).session;
-    expect(again.survey).toBeNull();
-    expect(storage.getItem(key)).toBeNull(); // nothing readable: removed once backed up
-    // The learner hands in the survey again, then restores the damaged answers: theirs win for the same questions.
-    expect(again.submitSurvey({ ...answers, answers: { rate: 5, more: 'yes' } })).toBeNull();
-    const backups = again.damagedSaves.all.filter((save) => save.what === 'survey');
-    expect(backups.map((save) => again.damagedSaves.text(save.key))).toEqual([raw, '{"survey": 3, "answers": {"rate": 2}}']);
-    expect(again.restoreBackup(backups[0]!.key)).toEqual({ ok: true, repaired: [] });
-    expect(again.survey).toEqual({ ...answers, answers: { rate: 4, more: 'yes' } });
-    expect(again.restoreBackup(backups[1]!.key)).toMatchObject({ ok: false, reason: 'unreadable' });
-  });
-
-  it('with no room for a copy are not written over, even by a new hand-in, until downloaded', () => {
-    const storage = new QuotaStorage(200_000);
-    played(storage).session.dispose();
-    const raw = `{"survey":"default","submittedAt":"2025-03-01T09:30:00.000Z","answers":{"rate":4,"say":"${'a long answer '.repeat(200)}, damaged`;
-    storage.setItem(key, raw);
-    // Room for the progress to grow by a few events, not for a copy of the answers.
-    storage.fill(raw.length / 2);
-    const { session } = open(storage);
-    expect(session.surveyDamage).toMatchObject({ backupKey: null, raw });
-    expect(session.saveProblem).toBe('damaged-held');
-    expect(session.submitSurvey(answers)).toBe('damaged-held');
-    expect(session.survey).toEqual(answers); // kept in memory
-    expect(storage.getItem(key)).toBe(raw);
-    expect(session.damagedSaves.all).toEqual([{ key, what: 'survey', madeAt: null, size: raw.length, held: true }]);
-    expect(session.damagedSaves.text(key)).toBe(raw);
-
-    session.damagedSaves.downloaded(key);
-    session.flush();
-    expect(session.saveProblem).toBeNull();
-    expect(JSON.parse(storage.getItem(key) ?? 'null')).toEqual(answers);
-    expect(session.damagedSaves.all).toEqual([]);
   });
 });
 

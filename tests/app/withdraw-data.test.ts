@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import type { Assignment } from '../../src/classroom/assignment.ts';
 import { assignmentProgressKey } from '../../src/classroom/assignment-id.ts';
+import { conceptTestKey } from '../../src/classroom/concept-test/concept-test-store.ts';
 import { surveyKey } from '../../src/classroom/survey-store.ts';
 import { QuestSession } from '../../src/app/quest-session.ts';
 import { sessionContextKey } from '../../src/app/session-context.ts';
@@ -31,16 +32,18 @@ describe('withdraw and delete my data', () => {
       key,
       sessionContextKey(key),
       surveyKey(key),
+      conceptTestKey(key),
       `${key}.backup.2026-01-01T00:00:00.000Z`,
       `${surveyKey(key)}.backup.2026-01-02T00:00:00.000Z`,
+      `${conceptTestKey(key)}.backup.2026-01-03T00:00:00.000Z`,
     ])
       storage.setItem(stored, '{}');
     storage.setItem(PROGRESS_KEY, 'free play');
     storage.setItem('rtq.theme', 'dark');
-    expect(deleteAssignmentData(storage, key)).toEqual({ progress: true, session: true, survey: true, backups: 2, failed: [] });
+    expect(deleteAssignmentData(storage, key)).toEqual({ progress: true, session: true, survey: true, conceptTest: true, backups: 3, failed: [] });
     expect(storage.length).toBe(2);
     expect(storage.getItem(PROGRESS_KEY)).toBe('free play');
-    expect(deleteAssignmentData(storage, key)).toEqual({ progress: false, session: false, survey: false, backups: 0, failed: [] });
+    expect(deleteAssignmentData(storage, key)).toEqual({ progress: false, session: false, survey: false, conceptTest: false, backups: 0, failed: [] });
   });
 
   it('leaves nothing behind when the session stops saving first and then goes on (an idle hint, leaving the page)', () => {
@@ -50,7 +53,7 @@ describe('withdraw and delete my data', () => {
     session.setParticipantCode('A17');
     session.start();
     store.dispatch({ type: 'view.orbited' });
-    session.submitSurvey({ survey: 'default', submittedAt: '2026-01-01T00:00:00.000Z', answers: { feedback: 'fine' } });
+    session.survey.submit({ survey: 'default', submittedAt: '2026-01-01T00:00:00.000Z', answers: { feedback: 'fine' } });
     const key = session.progressKey;
     expect(storage.getItem(key)).not.toBeNull();
     session.stopSaving();

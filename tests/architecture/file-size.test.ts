@@ -34,8 +34,6 @@ const MAX_FILE_LINES = 500;
 const ALLOWED_LONG_FILES: Record<string, string> = {
   'quest/quest-engine.ts':
     'the game rules as one state machine: every event moves tasks, hints, predictions, badges and timing together; the pure rules live beside it (prediction-stage.ts, goal-check.ts)',
-  'app/quest-session.ts':
-    "the game's controller: store, engine, storage, the participant code and the closing steps meet here; its survey handling is the next to move out, as the concept test's did (concept-test-keeper.ts)",
   'render/render-pool.ts': 'the worker pool: scheduling, the watchdog and recovery read and change one job state, whose cancellation contract its tests pin',
   'view/ray-pool.ts': 'the instanced rays, cones and arrows write one shared buffer layout; apart, each would restate its offsets',
 };

@@ -16,7 +16,7 @@ import { classroomStyles } from './classroom-styles.ts';
  * everywhere). "Hand in" checks the answers; each problem is said next to its question and
  * the first one gets the focus.
  * @fires survey-submitted - detail: SurveySubmission (the survey's id, the time, the answers);
- * save it next to the progress (QuestSession.submitSurvey, survey-store.ts), and pass it to the exports.
+ * save it next to the progress (survey-keeper.ts, survey-store.ts), and pass it to the exports.
  */
 export class RtSurvey extends LocalizedElement {
   static override properties = {

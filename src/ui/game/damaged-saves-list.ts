@@ -37,7 +37,12 @@ export function damagedSavesList(saves: readonly DamagedSave[], send: (command: 
 }
 
 function describe(save: DamagedSave): string {
-  const what = { progress: () => msg('Progress'), session: () => msg('Participant code and attempt'), survey: () => msg('Survey answers') }[save.what]();
+  const what = {
+    progress: () => msg('Progress'),
+    session: () => msg('Participant code and attempt'),
+    survey: () => msg('Survey answers'),
+    'concept-test': () => msg('Concept test answers'),
+  }[save.what]();
   const size = KILOBYTES.format(Math.max(1, save.size / 1000));
   if (!save.madeAt) return msg(str`${what}, not copied (no room), ${size} kB: download it so that saving can go on`);
   const when = new Date(save.madeAt).toLocaleString(currentLocale(), { dateStyle: 'medium', timeStyle: 'short' });

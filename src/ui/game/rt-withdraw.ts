@@ -73,7 +73,7 @@ export class RtWithdraw extends LocalizedElement {
       <dialog class="confirm" aria-labelledby="withdraw-title" @close=${this.closed}>
         <h3 id="withdraw-title">${msg('Withdraw and delete your data?')}</h3>
         <p>
-          ${msg('This deletes from this browser: your progress with the record of what you did, your participant code, your survey answers and their backups. It cannot be undone.')}
+          ${msg('This deletes from this browser: your progress with the record of what you did, your participant code, your survey and concept test answers and their backups. It cannot be undone.')}
         </p>
         <p>${msg('A results file or code you already handed in is not in this browser: ask your teacher to delete it. Close other tabs of this game first.')}</p>
         <form method="dialog" class="actions">
@@ -97,6 +97,7 @@ function reportText(report: WithdrawReport) {
     report.progress ? msg('your progress and the record of what you did') : null,
     report.session ? msg('your participant code') : null,
     report.survey ? msg('your survey answers') : null,
+    report.conceptTest ? msg('your concept test answers') : null,
     report.backups === 0 ? null : report.backups === 1 ? msg('1 backup') : msg(str`${report.backups} backups`),
   ].filter((item) => item !== null);
   return html`${deleted.length === 0 ? html`<p>${msg('There was nothing saved in this browser to delete.')}</p>` : html`<p>${msg('Deleted from this browser:')}</p><ul>${deleted.map((item) => html`<li>${item}</li>`)}</ul>`}

@@ -130,11 +130,11 @@ export class QuestController implements ReactiveController {
           backedUp: damage.backupKey !== null,
         })
       : '';
-    const surveyDamage = session.surveyDamage;
+    const surveyDamage = session.survey.damage;
     const surveyNote = surveyDamage
       ? surveyDamageText({
-          askedAgain: session.survey === null,
-          kept: Object.keys(session.survey?.answers ?? {}).length,
+          askedAgain: session.survey.submission === null,
+          kept: Object.keys(session.survey.submission?.answers ?? {}).length,
           leftOut: surveyDamage.cut || surveyDamage.lost.includes('answers') ? null : surveyDamage.lost.length,
           backedUp: surveyDamage.backupKey !== null,
         })
@@ -314,12 +314,12 @@ export class QuestController implements ReactiveController {
 
   /** The survey's answers for the task column: as handed in this visit or read from storage. */
   get survey(): SurveySubmission | null {
-    return this.session?.survey ?? null;
+    return this.session?.survey.submission ?? null;
   }
 
   /** The closing survey was handed in: kept with this session's progress, and said "saved" only when it was. */
   surveySubmitted(answers: SurveySubmission): void {
-    const problem = this.session?.submitSurvey(answers);
+    const problem = this.session?.survey.submit(answers);
     if (problem === undefined) return;
     this.host.toast(
       problem
