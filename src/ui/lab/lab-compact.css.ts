@@ -157,6 +157,13 @@ const compact = css`
       width: clamp(240px, calc(100vw - 320px), 360px);
       height: auto;
     }
+    /* Messages at the top of the task column, just under its switch (the slim header and the
+       switch end at about 82 px): a new current task scrolls into view at the column's foot
+       (scroll-in-box.ts), where a message in the bottom corner would cover its Hint button;
+       at the top it covers the level's text, already read. */
+    :host(:not([free-lab])) rt-toast {
+      inset: 88px var(--rt-space) auto auto;
+    }
   }
 
   /* Below the view: a phone held upright. */
