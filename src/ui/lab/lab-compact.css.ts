@@ -157,10 +157,8 @@ const compact = css`
       width: clamp(240px, calc(100vw - 320px), 360px);
       height: auto;
     }
-    /* Messages at the top of the task column, just under its switch (the slim header and the
-       switch end at about 82 px): a new current task scrolls into view at the column's foot
-       (scroll-in-box.ts), where a message in the bottom corner would cover its Hint button;
-       at the top it covers the level's text, already read. */
+    /* Messages at the top of the task column (lab-layout.css.ts), here under its switch: the
+       slim header and the switch end at about 82 px. */
     :host(:not([free-lab])) rt-toast {
       inset: 88px var(--rt-space) auto auto;
     }
@@ -195,6 +193,10 @@ const compact = css`
     rt-ray-debugger[open] {
       top: 0;
       height: auto;
+    }
+    /* The column's top is below the view here: messages keep the bottom corner, not the view. */
+    :host(:not([free-lab])) rt-toast {
+      inset: auto var(--rt-space) calc(var(--rt-space) * 2) auto;
     }
   }
 `;

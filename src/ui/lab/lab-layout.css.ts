@@ -208,6 +208,12 @@ const labGrid = css`
       outline: 3px solid var(--rt-focus);
       outline-offset: 2px;
     }
+    /* Messages at the top of the task column, under the header: a new current task scrolls
+       into view at the column's foot (scroll-in-box.ts), where a message in the bottom corner
+       covered its text and its Hint button; at the top it covers the level's text, already read. */
+    :host(:not([free-lab])) rt-toast {
+      inset: 52px var(--rt-space) auto auto;
+    }
     /* Narrow screens (1024 px tablets) keep the tasks and narrow both sides; the free lab gives the tasks' room to the view. */
     @media (max-width: 1180px) {
       :host {
