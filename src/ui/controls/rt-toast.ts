@@ -32,7 +32,7 @@ export class RtToast extends LocalizedElement {
        lab-layout.css.ts makes it): there it covers neither the 3D view, with the rays and
        pads a task names or rings, nor the panels a hint rings. On a small screen that is
        the column beside (or below) the view too. The lab moves it to the top of its task
-       column (lab-layout.css.ts), clear of the current task at the column's foot. */
+       column when the current task is at the column's foot (toast-place.ts). */
     :host {
       position: fixed;
       inset: auto var(--rt-space) calc(var(--rt-space) * 2) auto;

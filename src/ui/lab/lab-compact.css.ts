@@ -157,9 +157,9 @@ const compact = css`
       width: clamp(240px, calc(100vw - 320px), 360px);
       height: auto;
     }
-    /* Messages at the top of the task column (lab-layout.css.ts), here under its switch: the
+    /* A message at the top of the task column (toast-place.ts) goes under its switch: the
        slim header and the switch end at about 82 px. */
-    :host(:not([free-lab])) rt-toast {
+    :host(:not([free-lab])) rt-toast[data-place='top'] {
       inset: 88px var(--rt-space) auto auto;
     }
   }
@@ -195,7 +195,7 @@ const compact = css`
       height: auto;
     }
     /* The column's top is below the view here: messages keep the bottom corner, not the view. */
-    :host(:not([free-lab])) rt-toast {
+    :host(:not([free-lab])) rt-toast[data-place='top'] {
       inset: auto var(--rt-space) calc(var(--rt-space) * 2) auto;
     }
   }

@@ -208,10 +208,9 @@ const labGrid = css`
       outline: 3px solid var(--rt-focus);
       outline-offset: 2px;
     }
-    /* Messages at the top of the task column, under the header: a new current task scrolls
-       into view at the column's foot (scroll-in-box.ts), where a message in the bottom corner
-       covered its text and its Hint button; at the top it covers the level's text, already read. */
-    :host(:not([free-lab])) rt-toast {
+    /* Messages go to the end of the task column away from the current task (toast-place.ts):
+       its foot (rt-toast.ts) or, here, its top under the header. */
+    :host(:not([free-lab])) rt-toast[data-place='top'] {
       inset: 52px var(--rt-space) auto auto;
     }
     /* Narrow screens (1024 px tablets) keep the tasks and narrow both sides; the free lab gives the tasks' room to the view. */
