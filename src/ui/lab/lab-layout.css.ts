@@ -177,6 +177,12 @@ const labGrid = css`
       top: 60px;
       right: var(--rt-space);
     }
+    /* With the gizmo's options the view's top bar can wrap to two rows (Dutch labels at
+       1366×768: "Toon zijn stralen", "Camerabeeld" and "Hulp" go to the second row): the
+       button goes under both, not over them. */
+    :host([gizmo-options]) rt-ray-debugger:not([open]) {
+      top: 100px;
+    }
     rt-ray-debugger[open] {
       top: auto;
       bottom: var(--rt-space);
