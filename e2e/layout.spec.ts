@@ -294,6 +294,18 @@ test.describe('200 % zoom', () => {
     // The hint ring for a control of the hidden panels goes around the button that shows them, then around the control.
     await current(page).getByRole('button', { name: 'Hint' }).click();
     await current(page).getByRole('button', { name: 'Another hint' }).click();
+    // A message (here the one a closed render window leaves) does not cover the current task's hint buttons.
+    await page
+      .locator('rt-lab')
+      .evaluate((lab: HTMLElement & { toast(text: string): void }) =>
+        lab.toast('The render window was closed to show the 3D view this task needs. Open it again with Render image.'),
+      );
+    const message = (await page.locator('rt-toast .toast').boundingBox())!;
+    for (const button of await current(page).getByRole('button').all()) {
+      const box = await button.boundingBox();
+      if (box) expect(overlap(box, message), JSON.stringify({ box, message })).toBe(false);
+    }
+    await page.locator('rt-toast').getByRole('button', { name: 'Dismiss message' }).click();
     await current(page).getByRole('button', { name: 'Show me where' }).click();
     const showPanels = page.getByRole('button', { name: 'Scene and settings' });
     await expectRingAround(page, showPanels);
@@ -317,6 +329,15 @@ test.describe('200 % zoom', () => {
     await expect(page.locator('rt-screen-preview').getByRole('button', { name: 'Pixel 0, 0', exact: true })).toBeVisible();
     await expectLaidOut(page, 'panels');
     await expect(page.locator('[data-command="show-panels"]')).toBeHidden();
+    // The pixel preview's caption is whole inside its card (the grid scrolls instead), also with a pixel chosen.
+    const preview = page.locator('rt-screen-preview');
+    for (const choose of [false, true]) {
+      if (choose) await preview.getByRole('button', { name: 'Pixel 0, 0', exact: true }).click();
+      const caption = (await preview.locator('.caption').boundingBox())!;
+      const card = (await preview.boundingBox())!;
+      expect(caption.height).toBeGreaterThan(10);
+      expect(caption.y >= card.y && caption.y + caption.height <= card.y + card.height + 0.5, JSON.stringify({ caption, card })).toBe(true);
+    }
     await page.screenshot({ path: 'test-results/screens/layout-zoom-200-free-lab.png' });
   });
 

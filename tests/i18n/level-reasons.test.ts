@@ -243,7 +243,7 @@ describe('a broken level in Dutch', () => {
       'classCode: een klascode heeft 1 tot 32 letters, cijfers, - of _',
       'xapiHomePage: moet een webadres zijn dat begint met http:// of https://',
       'levels[1]: "shading" staat er meer dan één keer in',
-      'requiredTasks.shadows: "shadows" hoort niet bij de levels van de opdracht',
+      'requiredTasks.shadows: "shadows" hoort niet bij de levels van de lesopdracht',
     ]);
   });
 });

@@ -77,7 +77,7 @@ export class RtTeacherConceptTest extends LocalizedElement {
   override render() {
     const labels: Record<ConceptTestOrder, string> = {
       'a-then-b': msg('Form A before the first level, form B after the last'),
-      counterbalanced: msg('Counterbalanced: half of the learners take form B first'),
+      counterbalanced: msg('Counterbalanced: about half of the learners, chosen at random, take form B first'),
     };
     const bank = conceptBankNow();
     const size = bank ? formItems(bank, 'A').length : 0;
@@ -94,7 +94,7 @@ export class RtTeacherConceptTest extends LocalizedElement {
             </fieldset>
             <p>
               ${msg(
-                str`Each form has ${size} questions on the same ideas, in two versions (A and B). The dashboard shows the scores before and after and the normalized gain per idea.`,
+                str`Forms A and B each have ${size} questions on the same ideas. The dashboard shows the scores before and after and the normalized gain per idea.`,
               )}
             </p>`
           : html`<p>${msg('This version of the app has no concept test.')}</p>`

@@ -31,7 +31,8 @@ export class RtToast extends LocalizedElement {
     /* In the bottom right corner, over the lab's task column (at most 280 px wide, as
        lab-layout.css.ts makes it): there it covers neither the 3D view, with the rays and
        pads a task names or rings, nor the panels a hint rings. On a small screen that is
-       the column beside (or below) the view too. */
+       the column beside (or below) the view too. The lab moves it to the top of its task
+       column when the current task is at the column's foot (toast-place.ts). */
     :host {
       position: fixed;
       inset: auto var(--rt-space) calc(var(--rt-space) * 2) auto;

@@ -157,6 +157,11 @@ const compact = css`
       width: clamp(240px, calc(100vw - 320px), 360px);
       height: auto;
     }
+    /* A message at the top of the task column (toast-place.ts) goes under its switch: the
+       slim header and the switch end at about 82 px. */
+    :host(:not([free-lab])) rt-toast[data-place='top'] {
+      inset: 88px var(--rt-space) auto auto;
+    }
   }
 
   /* Below the view: a phone held upright. */
@@ -188,6 +193,10 @@ const compact = css`
     rt-ray-debugger[open] {
       top: 0;
       height: auto;
+    }
+    /* The column's top is below the view here: messages keep the bottom corner, not the view. */
+    :host(:not([free-lab])) rt-toast[data-place='top'] {
+      inset: auto var(--rt-space) calc(var(--rt-space) * 2) auto;
     }
   }
 `;

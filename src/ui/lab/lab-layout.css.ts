@@ -177,6 +177,12 @@ const labGrid = css`
       top: 60px;
       right: var(--rt-space);
     }
+    /* With the gizmo's options the view's top bar can wrap to two rows (Dutch labels at
+       1366×768: "Toon zijn stralen", "Camerabeeld" and "Hulp" go to the second row): the
+       button goes under both, not over them. */
+    :host([gizmo-options]) rt-ray-debugger:not([open]) {
+      top: 100px;
+    }
     rt-ray-debugger[open] {
       top: auto;
       bottom: var(--rt-space);
@@ -207,6 +213,11 @@ const labGrid = css`
     .primary:focus-visible {
       outline: 3px solid var(--rt-focus);
       outline-offset: 2px;
+    }
+    /* Messages go to the end of the task column away from the current task (toast-place.ts):
+       its foot (rt-toast.ts) or, here, its top under the header. */
+    :host(:not([free-lab])) rt-toast[data-place='top'] {
+      inset: 52px var(--rt-space) auto auto;
     }
     /* Narrow screens (1024 px tablets) keep the tasks and narrow both sides; the free lab gives the tasks' room to the view. */
     @media (max-width: 1180px) {

@@ -7,6 +7,7 @@ import { LabServices, type LoadProblem } from '../../app/lab-services.ts';
 import { labLoadProblems, withProblem } from './lab-load-problem.ts';
 import type { ShowMeStage } from '../../app/show-me-player.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
+import { placedToast } from './toast-place.ts';
 import { consentText } from '../../classroom/consent-text.ts';
 import type { LabState } from '../../lab-state/lab-state.ts';
 import type { Store } from '../../lab-state/store.ts';
@@ -21,7 +22,6 @@ import { badgeName } from '../game/badge-names.ts';
 import type { QuestCommand } from '../game/quest-command.ts';
 import type { MapChoice } from '../game/rt-level-map.ts';
 import type { ProgressCommand } from '../game/rt-progress-menu.ts';
-import type { RtToast } from '../controls/rt-toast.ts';
 import { GuideHostController } from './guide-host.ts';
 import { GuideRingDriver } from './guide-ring-driver.ts';
 import type { ScreenBox } from './guide-targets.ts';
@@ -236,7 +236,7 @@ export class RtLab extends LocalizedElement {
   }
 
   toast(text: string, tone: 'info' | 'error' = 'info'): void {
-    this.renderRoot.querySelector<RtToast>('rt-toast')?.show(text, tone);
+    placedToast(this.renderRoot)?.show(text, tone);
   }
 
   closeRenderWindow(): void {

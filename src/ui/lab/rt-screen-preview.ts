@@ -45,8 +45,20 @@ export class RtScreenPreview extends StorePanel<'screen-preview'> {
   static override styles = [
     StorePanel.styles,
     css`
+      /* When the view is short (200 % zoom, a phone) the host's height is capped
+         (lab-compact.css.ts): then the grid scrolls and the caption stays under it, on
+         screen, instead of being scrolled away below the last row. */
+      :host {
+        display: flex;
+        flex-direction: column;
+      }
       .grid {
+        flex: 0 1 auto;
+        min-height: 0;
+        overflow: auto;
         display: grid;
+        /* Rows as tall as their square cells, also when the grid is shorter: it scrolls. */
+        grid-auto-rows: max-content;
         gap: 1px;
         max-width: 100%;
         padding: 1px;
@@ -86,6 +98,7 @@ export class RtScreenPreview extends StorePanel<'screen-preview'> {
          would enlarge every cell, and choosing a pixel (a longer caption with its button)
          would grow the preview over the very rays it shows. */
       .caption {
+        flex: none;
         contain: inline-size;
         display: flex;
         flex-wrap: wrap;
