@@ -45,6 +45,14 @@ export const ON_DEMAND_PANELS: Partial<Record<UiPanel, LazyModule<unknown>>> = {
 export const RENDER_WINDOW = new LazyModule(() => import('./render-window/rt-render-window.ts'));
 
 /**
+ * Runs `then` once the render window's code is there (Render may be clicked, or a "show me"
+ * render asked, before it is); a load that failed makes `host` render again, to say so.
+ */
+export function withRenderWindow(host: { requestUpdate(): void }, then: () => unknown = () => undefined): void {
+  RENDER_WINDOW.load().then(then, () => host.requestUpdate());
+}
+
+/**
  * Parts the first screen never shows: the closing survey, the concept test, the end of an
  * assignment, the Menu's hand-in buttons and withdrawal, and the render window's side-by-side
  * comparison. They load once the lab is on

@@ -38,7 +38,7 @@ import type { RtRenderWindow } from './render-window/rt-render-window.ts';
 import type { RtSceneView } from './rt-scene-view.ts';
 import { storeContext } from './store-context.ts';
 import { providePictures } from './picture-providers.ts';
-import { loadAfterFirstScreen, ON_DEMAND_PANELS, RENDER_WINDOW } from './lab-elements.ts';
+import { loadAfterFirstScreen, ON_DEMAND_PANELS, withRenderWindow } from './lab-elements.ts';
 import { ViewCoverController } from './view-cover.ts';
 import { PreviewPlaceController } from './preview-place.ts';
 import { boxesOverlap, type GuideAndLook, renderWindowInTheWay } from './render-window/render-window-in-the-way.ts';
@@ -249,8 +249,7 @@ export class RtLab extends LocalizedElement {
 
   private openRenderWindow(): void {
     this.renderOpen = true;
-    // Loaded after the first screen; a click before that, or a load that failed, is answered here.
-    RENDER_WINDOW.load().catch(() => this.requestUpdate());
+    withRenderWindow(this);
     this.store.dispatch({ type: 'panel.opened', panel: 'render' });
   }
 
@@ -267,11 +266,7 @@ export class RtLab extends LocalizedElement {
     openRender: () => this.openRenderWindow(),
     render: () => {
       this.openRenderWindow();
-      // The window's code may still be loading (RENDER_WINDOW): it renders once it is there.
-      void Promise.all([this.updateComplete, RENDER_WINDOW.load()]).then(
-        () => this.renderRoot.querySelector<RtRenderWindow>('rt-render-window')?.startRender(),
-        () => this.requestUpdate(),
-      );
+      withRenderWindow(this, () => this.updateComplete.then(() => this.renderRoot.querySelector<RtRenderWindow>('rt-render-window')?.startRender()));
     },
     openPanel: (panel) => this.store.dispatch({ type: 'panel.opened', panel }),
     debug: (action) => this.renderRoot.querySelector('rt-ray-debugger')?.perform(action),
