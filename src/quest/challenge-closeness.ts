@@ -11,9 +11,9 @@ import type { ChallengeGoal } from './goal.ts';
  * The measure is the mean absolute difference per pixel and colour channel in linear light,
  * each value clamped to 0..1 as the picture shows it: 0 is the same picture, 1 is black
  * against white everywhere. For the learner: "on average, how far each pixel's red, green
- * and blue are from the target's". It is the plainest error there is (Shirley and Marschner,
- * Fundamentals of Computer Graphics, compare images pixel by pixel in linear intensity); a
- * soft shadow's width or a lens's blur changes many pixels a little, which it counts.
+ * and blue are from the target's". It is the plainest error there is (the L1 error in
+ * linear light, before any display curve); a soft shadow's width or a lens's blur changes
+ * many pixels a little, which it counts.
  */
 
 /** The target's scene and the learner's, both at the challenge's size, ready to render. */

@@ -31,7 +31,7 @@ export function vertexText(row: PathVertexRow, sampling: BounceSampling): string
     case 'roulette-stop':
       return msg('Russian roulette stops the path here: nothing more is added.');
     case 'max-depth':
-      return msg(str`Hits ${where} after the last bounce that Recursion depth allows: the path ends.`);
+      return msg(str`Hits ${where} after the last bounce that Max bounces allows: the path ends.`);
     case 'absorbed':
       return msg(str`Ends at ${where}: the sampled direction went into the surface, or the surface reflects nothing.`);
   }
