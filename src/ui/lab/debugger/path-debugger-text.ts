@@ -14,7 +14,9 @@ export function vertexText(row: PathVertexRow, sampling: BounceSampling): string
       return msg('The camera ray leaves through a random point of the pixel. The throughput starts at (1, 1, 1).');
     case 'diffuse': {
       const how = sampling === 'cosine' ? msg('drawn with density cosθ/π (cosine-weighted)') : msg('drawn uniformly over the hemisphere, density 1/(2π)');
-      return msg(str`Hits ${where}: a diffuse bounce. The new direction is ${how}; the throughput is multiplied by f·cosθ/pdf, with f = albedo/π.`);
+      return msg(
+        str`Hits ${where}: a diffuse bounce. The new direction is ${how}; the throughput is multiplied by f·cosθ/pdf, with f = albedo/π, and divided by the chance of picking the diffuse part when the surface also has a mirror part.`,
+      );
     }
     case 'mirror':
       return msg(str`Hits ${where}: the mirror part reflects. The throughput is multiplied by ks over the chance of picking the mirror.`);
@@ -57,7 +59,7 @@ export function eventName(event: PathVertexRow['event']): string {
     case 'roulette-stop':
       return msg('stopped by roulette');
     case 'max-depth':
-      return msg('depth reached');
+      return msg('max bounces reached');
     case 'absorbed':
       return msg('absorbed');
   }

@@ -236,7 +236,7 @@ export class RtPathDebugger extends LocalizedElement {
             <td>${colorText(row.throughput)}</td>
             <td>
               ${row.lightSamples.map((sample) => html`<small>${lightSampleText(sample)}</small>`)}
-              ${row.emitted.some((value) => value !== 0) ? html`<small>${msg(str`Seen directly: ${colorText(row.emitted)}`)}</small>` : nothing}
+              ${row.emitted.some((value) => value !== 0) ? html`<small>${msg(str`Met by this ray: ${colorText(row.emitted)}`)}</small>` : nothing}
               ${row.lightSamples.length === 0 && row.emitted.every((value) => value === 0) ? '–' : nothing}
             </td>
             <td>${colorText(row.runningSum)}</td>

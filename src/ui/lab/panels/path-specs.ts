@@ -34,7 +34,7 @@ export function pathSamplesSpec(): SliderSpec<'pathSamples'> {
   return {
     name: 'pathSamples',
     label: msg('Paths per pixel (N)'),
-    tooltip: msg('N random paths per pixel, averaged (path tracing): four times the paths, half the noise. Type up to 65536.'),
+    tooltip: msg('N random paths per pixel, averaged (path tracing): more paths, less noise, more time. Type up to 65536.'),
     min: LIMITS.pathSamples[0],
     max: 256,
     step: 1,
@@ -60,12 +60,12 @@ export function bounceSamplingOptions(): ChoiceOption[] {
     {
       value: 'cosine',
       label: msg('Cosine'),
-      tooltip: msg('More often close to the normal, where light counts most (cos θ): less noise for the same work.'),
+      tooltip: msg('More often close to the normal, where cos θ is large.'),
     },
     {
       value: 'uniform',
       label: msg('Uniform'),
-      tooltip: msg('Every direction of the half sphere above the surface equally often: the same picture on average, more noise.'),
+      tooltip: msg('Every direction of the half sphere above the surface equally often.'),
     },
   ];
 }
@@ -84,7 +84,7 @@ export function russianRouletteText(): ControlText<'russianRoulette'> {
   return {
     name: 'russianRoulette',
     label: msg('Russian roulette'),
-    tooltip: msg('From the second bounce on, end dim paths at random; the paths that go on count for more, so the picture stays the same on average.'),
+    tooltip: msg('From the second bounce on, end dim paths at random; the paths that go on count for more.'),
   };
 }
 
