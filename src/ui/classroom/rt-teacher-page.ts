@@ -135,6 +135,8 @@ export class RtTeacherPage extends LocalizedElement {
       return;
     }
     const made = { ...this.assignment, title: this.assignment.title.trim() };
+    // Kept before the link is computed, not after: a reload right after typing finds the change.
+    this.keeper.keep(made);
     const assignment = compactAssignment(made, this.levels);
     const url = await assignmentUrl(assignment, location.href);
     // Level L (7 % recovery) is enough for a projected code nothing covers, and gives the
@@ -146,7 +148,6 @@ export class RtTeacherPage extends LocalizedElement {
     this.qr = `data:image/svg+xml;charset=utf-8,${encodeURIComponent(svg)}`;
     this.status = '';
     this.stale = false;
-    this.keeper.keep(made);
   }
 
   /** A request of the kept assignments' list: open, forget, start anew, open a link, copy for another class. */
