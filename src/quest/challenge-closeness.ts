@@ -1,6 +1,6 @@
 import { initialState } from '../lab-state/lab-state.ts';
 import { reduce } from '../lab-state/lab-reducer.ts';
-import type { Scene } from '../scene/scene.ts';
+import type { RenderSettings, Scene } from '../scene/scene.ts';
 import type { ChallengeGoal } from './goal.ts';
 
 /**
@@ -13,7 +13,9 @@ import type { ChallengeGoal } from './goal.ts';
  * against white everywhere. For the learner: "on average, how far each pixel's red, green
  * and blue are from the target's". It is the plainest error there is (the L1 error in
  * linear light, before any display curve); a soft shadow's width or a lens's blur changes
- * many pixels a little, which it counts.
+ * many pixels a little, which it counts. In path mode the picture is radiance, shown times
+ * 2^exposure (quantize.ts): it is measured as shown (shownLight), so that the number and
+ * the difference picture mean for a dim room what they mean for any other picture.
  */
 
 /** The target's scene and the learner's, both at the challenge's size, ready to render. */
@@ -27,6 +29,13 @@ export function challengeScenes(levelScene: Scene, goal: ChallengeGoal, learnerS
 function atSize(scene: Scene, goal: ChallengeGoal): Scene {
   const imageSize: [number, number] = [goal.challenge.measure.size[0], goal.challenge.measure.size[1]];
   return { ...scene, settings: { ...scene.settings, imageSize } };
+}
+
+/** A render's linear RGB as the render window shows it: path mode's radiance times 2^exposure, Whitted mode's as it is. */
+export function shownLight(rgb: Float32Array, settings: Pick<RenderSettings, 'integrator' | 'exposure'>): Float32Array {
+  if (settings.integrator !== 'path') return rgb;
+  const scale = 2 ** settings.exposure;
+  return rgb.map((value) => value * scale);
 }
 
 /** The mean absolute difference of two linear RGB pictures of the same size, per pixel and channel, each value clamped to 0..1. */

@@ -1,7 +1,7 @@
 import type { LabServices } from '../../app/lab-services.ts';
 import type { Store } from '../../lab-state/store.ts';
 import type { RenderImage } from '../../render/render-job.ts';
-import { challengeScenes, meanLinearDifference, pixelDifferences } from '../../quest/challenge-closeness.ts';
+import { challengeScenes, meanLinearDifference, pixelDifferences, shownLight } from '../../quest/challenge-closeness.ts';
 import type { ChallengeGoal } from '../../quest/goal.ts';
 import type { Scene } from '../../scene/scene.ts';
 import { toRgba8 } from '../../tracer/quantize.ts';
@@ -69,13 +69,15 @@ export class ChallengeReferee implements ChallengePictures {
     try {
       const [target, attempt] = await Promise.all([this.services().renderPicture(scenes.target), this.services().renderPicture(scenes.attempt)]);
       if (goal !== this.goal) return;
-      const value = meanLinearDifference(target.rgb, attempt.rgb);
+      const targetLight = shownLight(target.rgb, scenes.target.settings);
+      const attemptLight = shownLight(attempt.rgb, scenes.attempt.settings);
+      const value = meanLinearDifference(targetLight, attemptLight);
       const renders = this.view.renders + 1;
       const matched = value <= goal.challenge.measure.threshold;
       this.update({
         target: picture(target, scenes.target),
         attempt: picture(attempt, scenes.attempt),
-        difference: differencePicture(target, attempt),
+        difference: differencePicture(targetLight, attemptLight, target.width, target.height),
         value,
         renders,
         matchedAfter: this.view.matchedAfter ?? (matched ? renders : null),
@@ -105,12 +107,12 @@ function picture(image: RenderImage, scene: Scene): ImageData {
 }
 
 /** Grey where the two differ: the square root lifts small differences (0.01 shows as 10 % grey) so a near miss is still seen. */
-function differencePicture(a: RenderImage, b: RenderImage): ImageData {
-  const differences = pixelDifferences(a.rgb, b.rgb);
+function differencePicture(a: Float32Array, b: Float32Array, width: number, height: number): ImageData {
+  const differences = pixelDifferences(a, b);
   const rgba = new Uint8ClampedArray(differences.length * 4);
   differences.forEach((difference, pixel) => {
     const grey = Math.round(Math.sqrt(difference) * 255);
     rgba.set([grey, grey, grey, 255], pixel * 4);
   });
-  return new ImageData(rgba, a.width, a.height);
+  return new ImageData(rgba, width, height);
 }
