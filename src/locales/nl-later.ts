@@ -403,7 +403,7 @@
 's87b76f43120ab398': str`deze app leest voortgang van versie ${0}, maar de versie is ${1}`,
 's87f09a6ef6bfb7b9': `Terug naar de vragen die bij de levels passen`,
 's884891b6131ca6c6': `Mediane actieve tijd van wie de opdracht voltooide`,
-'s8a3ed2d41ea944ab': `Debug een pixel`,
+'s8a3ed2d41ea944ab': `Pixel stap voor stap`,
 's8a75aa3216f1ce8c': `voor elke lamp (een vlaklamp: elk van zijn samples, met I gedeeld door hun aantal):`,
 's8a7793c9bfa945e1': str`Het eerste pad voegt toe: ${0}.`,
 's8adba6258b7c5b68': `Begin opnieuw met renderen`,
