@@ -11,6 +11,7 @@ import { stickingPoints, STUCK_MIN_LEARNERS, STUCK_MIN_SHARE, STUCK_TIMES_TYPICA
 import { summarizeSurveys, type SurveysSummary } from '../../../classroom/dashboard-survey.ts';
 import { issueText } from '../../../i18n/issue-text.ts';
 import { learnersCounted } from '../../../i18n/counted.ts';
+import { respondentsText, unknownSurveyText } from './survey-respondents.ts';
 import { currentLocale } from '../../../i18n/locale.ts';
 import { surveyById } from '../../../classroom/surveys.ts';
 import { localize, type Locale } from '../../../quest/localized-text.ts';
@@ -370,21 +371,11 @@ export class RtDashboardPage extends LocalizedElement {
     return html`${surveys.map(
       (survey) => html`<section class="survey" data-survey=${survey.id}>
         <h2>${msg(str`Survey: ${localize(survey.title, this.locale)}`)}</h2>
-        <p class="level-facts">${survey.respondents === 1 ? msg('1 learner answered.') : msg(str`${survey.respondents} learners answered.`)}</p>
+        <p class="level-facts">${respondentsText(survey.respondents)}</p>
         <rt-dashboard-survey .summary=${survey} .locale=${this.locale}></rt-dashboard-survey>
       </section>`,
     )}
-    ${unknown.map(
-      (survey) => html`<section>
-        <p>⚠ ${
-          survey.respondents === 1
-            ? msg(str`1 learner answered a survey this version of the app does not know ("${survey.id}"); the answers are in the files but not shown here.`)
-            : msg(
-                str`${survey.respondents} learners answered a survey this version of the app does not know ("${survey.id}"); their answers are in the files but not shown here.`,
-              )
-        }</p>
-      </section>`,
-    )}`;
+    ${unknown.map((survey) => html`<section><p>⚠ ${unknownSurveyText(survey.respondents, survey.id)}</p></section>`)}`;
   }
 }
 
