@@ -10,7 +10,7 @@ import { expectAccessible } from './support/axe.ts';
 // (the lab under them was checked just before).
 
 const classFiles = simulatedClassFiles(3);
-const DEBUG_A_PIXEL = { en: 'Debug a pixel', nl: 'Debug een pixel' } as const;
+const DEBUG_A_PIXEL = { en: 'Debug a pixel', nl: 'Pixel stap voor stap' } as const;
 
 for (const lang of ['en', 'nl'] as const) {
   test(`no serious axe violation in the lab, the level map and the render window (${lang})`, async ({ page }) => {

@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
 import type { ProgressProblem, SaveProblemKind } from '../quest/progress-store.ts';
+import { answersCounted, pointsCounted } from './counted.ts';
 import { shortList } from './short-list.ts';
 
 /**
@@ -20,7 +21,7 @@ export function progressProblemText(problem: ProgressProblem, points: number): s
   if (problem.kind === 'repaired') {
     const count = problem.reasons.length;
     const left = shortList(placesOf(problem.reasons), 3, ', ');
-    return `${msg(str`Part of your saved progress was damaged, and what was damaged is left out (${count}: ${left}); the rest is kept: ${points} points.`)} ${kept}`;
+    return `${msg(str`Part of your saved progress was damaged, and what was damaged is left out (${count}: ${left}); the rest is kept: ${pointsCounted(points)}.`)} ${kept}`;
   }
   const what = {
     damaged: () => msg('Your saved progress is damaged and could not be read.'),
@@ -80,7 +81,7 @@ export function surveyDamageText(damage: { askedAgain: boolean; kept: number; le
   const what = damage.askedAgain
     ? msg('Your saved survey answers could not be read, so the survey will ask for them again.')
     : leftOut === null
-      ? msg(str`Your saved survey answers were damaged; what could be read of them is kept (${kept} answers).`)
+      ? msg(str`Your saved survey answers were damaged; what could be read of them is kept (${answersCounted(kept)}).`)
       : msg(str`Your saved survey answers were damaged: ${kept} kept, ${leftOut} left out because they could not be read.`);
   const where = damage.backedUp
     ? msg('The damaged answers are kept: download or restore them from the Menu (Damaged saves).')

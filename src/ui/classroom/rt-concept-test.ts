@@ -163,7 +163,7 @@ export class RtConceptTest extends LocalizedElement {
       ${items.map((item, index) => this.renderItem(item, index + 1))}
       <div class="actions">
         <button class="primary" type="submit">${msg('Hand in')}</button>
-        ${this.missing.length > 0 ? html`<span class="problem" role="alert">${msg(str`${this.missing.length} questions have no answer yet.`)}</span>` : nothing}
+        ${this.missing.length > 0 ? html`<span class="problem" role="alert">${this.missing.length === 1 ? msg('1 question has no answer yet.') : msg(str`${this.missing.length} questions have no answer yet.`)}</span>` : nothing}
       </div>
     </form>`;
   }

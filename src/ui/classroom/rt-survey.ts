@@ -199,7 +199,7 @@ export class RtSurvey extends LocalizedElement {
         ${survey.questions.map((question, index) => this.renderQuestion(question, index + 1))}
         <div class="actions">
           <button class="primary" type="submit">${msg('Hand in')}</button>
-          ${count > 0 ? html`<span class="problem" role="alert">${msg(str`${count} answers still need attention.`)}</span>` : nothing}
+          ${count > 0 ? html`<span class="problem" role="alert">${count === 1 ? msg('1 answer still needs attention.') : msg(str`${count} answers still need attention.`)}</span>` : nothing}
         </div>
       </form>
     `;

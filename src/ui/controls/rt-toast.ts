@@ -31,8 +31,9 @@ export class RtToast extends LocalizedElement {
     /* In the bottom right corner, over the lab's task column (at most 280 px wide, as
        lab-layout.css.ts makes it): there it covers neither the 3D view, with the rays and
        pads a task names or rings, nor the panels a hint rings. On a small screen that is
-       the column beside (or below) the view too. The lab moves it to the top of its task
-       column when the current task is at the column's foot (toast-place.ts). */
+       the column beside (or below) the view too. The lab moves it to the column's top, or
+       over the panels, so that it covers neither the level's intro nor the current task
+       (toast-place.ts). */
     :host {
       position: fixed;
       inset: auto var(--rt-space) calc(var(--rt-space) * 2) auto;

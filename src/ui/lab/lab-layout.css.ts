@@ -214,10 +214,14 @@ const labGrid = css`
       outline: 3px solid var(--rt-focus);
       outline-offset: 2px;
     }
-    /* Messages go to the end of the task column away from the current task (toast-place.ts):
-       its foot (rt-toast.ts) or, here, its top under the header. */
+    /* Messages go to an end of the task column that covers neither the level's intro nor the
+       current task (toast-place.ts): its foot (rt-toast.ts) or, here, its top under the header… */
     :host(:not([free-lab])) rt-toast[data-place='top'] {
       inset: 52px var(--rt-space) auto auto;
+    }
+    /* …or, when either end would cover the level's intro or the current task, over the foot of the panels column. */
+    :host(:not([free-lab])) rt-toast[data-place='panels'] {
+      inset: auto auto calc(var(--rt-space) * 2) var(--rt-space);
     }
     /* Narrow screens (1024 px tablets) keep the tasks and narrow both sides; the free lab gives the tasks' room to the view. */
     @media (max-width: 1180px) {

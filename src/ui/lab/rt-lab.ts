@@ -7,7 +7,7 @@ import { LabServices, type LoadProblem } from '../../app/lab-services.ts';
 import { labLoadProblems, withProblem } from './lab-load-problem.ts';
 import type { ShowMeStage } from '../../app/show-me-player.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
-import { placedToast } from './toast-place.ts';
+import { showToast } from './toast-place.ts';
 import { consentText } from '../../classroom/consent-text.ts';
 import type { LabState } from '../../lab-state/lab-state.ts';
 import type { Store } from '../../lab-state/store.ts';
@@ -236,7 +236,7 @@ export class RtLab extends LocalizedElement {
   }
 
   toast(text: string, tone: 'info' | 'error' = 'info'): void {
-    placedToast(this.renderRoot)?.show(text, tone);
+    showToast(this.renderRoot, text, tone);
   }
 
   closeRenderWindow(): void {

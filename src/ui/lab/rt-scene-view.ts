@@ -7,6 +7,7 @@ import { GIZMO_MODES, gizmoModesFor, type GizmoMode } from '../../view/gizmo-mod
 import type { LabView, RayHoverDetail } from '../../view/lab-view.ts';
 import type { Thinning } from '../../view/ray-budget.ts';
 import { localNumbers } from '../../i18n/number-format.ts';
+import { lightsCounted, objectsCounted } from '../../i18n/counted.ts';
 import type { ViewCommand } from '../../view/view-commands.ts';
 import { LazyModule } from '../../util/lazy-module.ts';
 import '../controls/rt-load-problem.ts';
@@ -296,7 +297,7 @@ function describe(state: LabState): string {
         ? msg("The ray tracer's camera is selected.")
         : msg(str`Selected: ${itemName(scene, selection.id)}.`);
   return msg(
-    str`3D view of "${name}": ${scene.objects.length} objects, ${scene.lights.length} lights and the ray tracer's camera with its ${scene.camera.pixels[0]}×${scene.camera.pixels[1]} screen. ${selected} Arrow keys orbit (with something selected: move it), Shift with arrows pans, plus and minus zoom, P chooses a pixel; press ? for every key.`,
+    str`3D view of "${name}": ${objectsCounted(scene.objects.length)}, ${lightsCounted(scene.lights.length)} and the ray tracer's camera with its ${scene.camera.pixels[0]}×${scene.camera.pixels[1]} screen. ${selected} Arrow keys orbit (with something selected: move it), Shift with arrows pans, plus and minus zoom, P chooses a pixel; press ? for every key.`,
   );
 }
 

@@ -10,6 +10,8 @@ import { isOptionalTask, learnerInLevel, summarizeLevels, type LevelSummary } fr
 import { stickingPoints, STUCK_MIN_LEARNERS, STUCK_MIN_SHARE, STUCK_TIMES_TYPICAL } from '../../../classroom/dashboard-stuck.ts';
 import { summarizeSurveys, type SurveysSummary } from '../../../classroom/dashboard-survey.ts';
 import { issueText } from '../../../i18n/issue-text.ts';
+import { learnersCounted } from '../../../i18n/counted.ts';
+import { respondentsText, unknownSurveyText } from './survey-respondents.ts';
 import { currentLocale } from '../../../i18n/locale.ts';
 import { surveyById } from '../../../classroom/surveys.ts';
 import { localize, type Locale } from '../../../quest/localized-text.ts';
@@ -186,7 +188,7 @@ export class RtDashboardPage extends LocalizedElement {
           : html`<label
             >${msg('Assignment')}
             <select name="assignment" @change=${(event: Event) => pick({ assignmentId: value((event.target as HTMLSelectElement).value) })}>
-              <option value="*" ?selected=${this.filter.assignmentId === null}>${msg(str`All (${this.learners.length} learners)`)}</option>
+              <option value="*" ?selected=${this.filter.assignmentId === null}>${msg(str`All (${learnersCounted(this.learners.length)})`)}</option>
               ${assignments.map(
                 (assignment) =>
                   html`<option value=${assignment.id} ?selected=${this.filter.assignmentId === assignment.id}>
@@ -207,7 +209,7 @@ export class RtDashboardPage extends LocalizedElement {
             </select></label
           >`
       }
-      <span>${msg(str`${this.shown.length} learners shown.`)}</span>
+      <span>${msg(str`${learnersCounted(this.shown.length)} shown.`)}</span>
     </div>`;
   }
 
@@ -288,7 +290,7 @@ export class RtDashboardPage extends LocalizedElement {
       <h2 id="learner-times-heading">${msg('Time per level, per learner')}</h2>
       <!-- A long class folds away, so the levels below stay in reach. -->
       <details ?open=${this.shown.length <= 40}>
-        <summary>${msg(str`${this.shown.length} learners`)}</summary>
+        <summary>${learnersCounted(this.shown.length)}</summary>
         <rt-dashboard-level-times
           .rows=${rows}
           .levels=${this.levels.map((level) => names.level(level.level))}
@@ -369,15 +371,11 @@ export class RtDashboardPage extends LocalizedElement {
     return html`${surveys.map(
       (survey) => html`<section class="survey" data-survey=${survey.id}>
         <h2>${msg(str`Survey: ${localize(survey.title, this.locale)}`)}</h2>
-        <p class="level-facts">${msg(str`${survey.respondents} learners answered.`)}</p>
+        <p class="level-facts">${respondentsText(survey.respondents)}</p>
         <rt-dashboard-survey .summary=${survey} .locale=${this.locale}></rt-dashboard-survey>
       </section>`,
     )}
-    ${unknown.map(
-      (survey) => html`<section>
-        <p>⚠ ${msg(str`${survey.respondents} learners answered a survey this version of the app does not know ("${survey.id}"); their answers are in the files but not shown here.`)}</p>
-      </section>`,
-    )}`;
+    ${unknown.map((survey) => html`<section><p>⚠ ${unknownSurveyText(survey.respondents, survey.id)}</p></section>`)}`;
   }
 }
 

@@ -252,10 +252,14 @@ export class RtPathDebugger extends LocalizedElement {
     const listed = paths.paths.map((path) => colorText(path.contribution)).join(' ');
     return html`<p>
         ${done ? msg(str`This path adds ${colorText(paths.paths[this.path].contribution)} to the pixel.`) : msg('Step to the path’s end to see what it adds to the pixel.')}
-        ${msg(str`The pixel is the mean of all ${paths.pathCount} paths’ contributions: ${colorText(meanOfPaths(paths.contributions))}.`)}
+        ${
+          paths.pathCount === 1
+            ? msg(str`The pixel is its one path’s contribution: ${colorText(meanOfPaths(paths.contributions))}.`)
+            : msg(str`The pixel is the mean of all ${paths.pathCount} paths’ contributions: ${colorText(meanOfPaths(paths.contributions))}.`)
+        }
       </p>
       <p class="muted">
-        ${msg(str`The first ${paths.paths.length} paths add: ${listed}.`)}
+        ${paths.paths.length === 1 ? msg(str`The first path adds: ${listed}.`) : msg(str`The first ${paths.paths.length} paths add: ${listed}.`)}
         ${msg('The 3D view draws them up to this vertex: this path bright, the others dimmed, light samples to their points on the lights (grey dashes: blocked), each ray as wide as the path’s throughput.')}
       </p>`;
   }

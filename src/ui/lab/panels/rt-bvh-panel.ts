@@ -4,6 +4,7 @@ import type { LabAction } from '../../../lab-state/lab-action.ts';
 import { type LabState, BVH_MAX_DEPTH, type BvhViewOptions } from '../../../lab-state/lab-state.ts';
 import { loadMeshes } from '../../../render/load-meshes-browser.ts';
 import { localNumbers } from '../../../i18n/number-format.ts';
+import { bvhBoxesCounted, trianglesCounted } from '../../../i18n/counted.ts';
 import type { MeshLibrary } from '../../../scene/mesh-data.ts';
 import { meshNamesInScene } from '../../../scene/mesh-names.ts';
 import type { Scene } from '../../../scene/scene.ts';
@@ -197,7 +198,9 @@ export class RtBvhPanel extends StorePanel<'bvh'> {
               return html`<li>
                 ${
                   object.boundsHit
-                    ? msg(str`${name}: ${NUMBER.format(mesh.boxes)} BVH boxes and ${NUMBER.format(mesh.triangles)} triangles tested.`)
+                    ? msg(
+                        str`${name}: ${bvhBoxesCounted(mesh.boxes, NUMBER.format(mesh.boxes))} and ${trianglesCounted(mesh.triangles, NUMBER.format(mesh.triangles))} tested.`,
+                      )
                     : msg(str`${name}: its bounding box was missed, so not one of its triangles was tested.`)
                 }
               </li>`;

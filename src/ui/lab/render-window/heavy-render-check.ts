@@ -107,7 +107,7 @@ export class HeavyRenderCheck implements ReactiveController {
         case 'supersampling':
           return html`<button @click=${() => use({ supersampling: choice.supersampling }, seconds)}>${msg(str`Supersampling ${choice.supersampling} (about ${wait})`)}</button>`;
         case 'path-samples':
-          return html`<button @click=${() => use({ pathSamples: choice.pathSamples }, seconds)}>${msg(str`${choice.pathSamples} paths per pixel (about ${wait})`)}</button>`;
+          return html`<button @click=${() => use({ pathSamples: choice.pathSamples }, seconds)}>${choice.pathSamples === 1 ? msg(str`1 path per pixel (about ${wait})`) : msg(str`${choice.pathSamples} paths per pixel (about ${wait})`)}</button>`;
         case 'image-size':
           return html`<button @click=${() => use({ imageSize: [choice.width, choice.height] }, seconds)}>${msg(str`${choice.width} × ${choice.height} pixels (about ${wait})`)}</button>`;
         case 'max-depth':
