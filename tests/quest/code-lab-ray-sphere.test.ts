@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { gradeLab, type LabCase, type LabOutcome, type Vec3 } from '../../src/quest/code-labs/code-lab-grading.ts';
-import { RAY_SPHERE_EDGES, RAY_SPHERE_TOLERANCE, raySphereCases, tracerHitSphere } from '../../src/quest/code-labs/ray-sphere-lab.ts';
+import { RAY_SPHERE_EDGES } from '../../src/quest/code-labs/ray-sphere-edges.ts';
+import { RAY_SPHERE_TOLERANCE, raySphereCases, tracerHitSphere } from '../../src/quest/code-labs/ray-sphere-lab.ts';
 
 type HitSphere = (origin: Vec3, direction: Vec3, center: Vec3, radius: number) => unknown;
 

@@ -1,7 +1,7 @@
 import { z } from 'zod';
 import { wholeNumberIn } from '../../scene/scene-schema-parts.ts';
 import { localizedTextSchema } from '../localized-text.ts';
-import { RAY_SPHERE_EDGES } from './ray-sphere-lab.ts';
+import { RAY_SPHERE_EDGES } from './ray-sphere-edges.ts';
 
 /**
  * A code lab's goal (spec/code-labs.md §1): write one function of the tracer, with its

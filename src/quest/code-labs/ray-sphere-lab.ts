@@ -3,6 +3,7 @@ import { RandomStream } from '../../tracer/sampler.ts';
 import { intersectUnitSphere } from '../../tracer/shapes/sphere.ts';
 import { FOUND, REACH, unitSpan } from '../../tracer/shapes/unit-span.ts';
 import type { LabCase, Tolerance, Vec3 } from './code-lab-grading.ts';
+import type { RaySphereEdge } from './ray-sphere-edges.ts';
 
 /**
  * The first code lab: ray–sphere intersection (Shirley & Marschner, "Fundamentals of
@@ -16,10 +17,6 @@ import type { LabCase, Tolerance, Vec3 } from './code-lab-grading.ts';
  * anything a picture shows, and far above the rounding of either form of the formula.
  */
 export const RAY_SPHERE_TOLERANCE: Tolerance = { relative: 1e-6 };
-
-/** The named edge cases, each a misconception the random cases may not hit (spec/code-labs.md §1). */
-export const RAY_SPHERE_EDGES = ['hit-from-outside', 'miss', 'sphere-behind', 'inside-sphere', 'tangent', 'off-centre'] as const;
-export type RaySphereEdge = (typeof RAY_SPHERE_EDGES)[number];
 
 const v = (x: number, y: number, z: number): Vec3 => ({ x, y, z });
 
