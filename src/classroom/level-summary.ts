@@ -41,6 +41,7 @@ export function teacherTaskKind(goal: Goal): TeacherTaskKind {
     case 'all':
     case 'any':
     case 'challenge':
+    case 'code':
       return 'action';
     default: {
       const never: never = goal;

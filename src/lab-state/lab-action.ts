@@ -78,6 +78,8 @@ export type LabAction =
   | { type: 'render.saved' }
   /** A challenge's pictures were compared after a render: `difference` is challenge-closeness.ts's measure. */
   | { type: 'challenge.compared'; difference: number }
+  /** A code lab's run was graded: `passed` of `total` cases, `failed` the kind of the first that failed (code-lab-grading.ts). */
+  | { type: 'code.graded'; lab: string; passed: number; total: number; failed: string | null }
   /** The scene was saved as a file or copied as a link (the sandbox level and its badge listen). */
   | { type: 'scene.saved'; to: 'file' | 'link' }
   | { type: 'panel.opened'; panel: string }

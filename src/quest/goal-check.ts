@@ -1,7 +1,7 @@
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
 import { compare, conditionHolds, type JsonValue } from './condition.ts';
-import { goalParts, predictionParts, type ChallengeGoal, type EventGoal, type Goal, type PredictionGoal } from './goal.ts';
+import { goalParts, predictionParts, type ChallengeGoal, type CodeGoal, type EventGoal, type Goal, type PredictionGoal } from './goal.ts';
 import { readPath } from './state-path.ts';
 
 /**
@@ -12,17 +12,22 @@ import { readPath } from './state-path.ts';
  * kept by the caller (the quest engine, per task) so that these functions stay pure.
  */
 
-/** How often each event goal (or challenge: each close render) inside a task's goal has matched since the task was shown. */
-export type EventTally = ReadonlyMap<EventGoal | ChallengeGoal, number>;
+/**
+ * How often each event goal (or challenge: each close render; code lab: each run that
+ * passed every case) inside a task's goal has matched since the task was shown.
+ */
+export type EventTally = ReadonlyMap<TalliedGoal, number>;
+type TalliedGoal = EventGoal | ChallengeGoal | CodeGoal;
 
 export const NO_EVENTS: EventTally = new Map();
 
 /** The tally after `action`, which left the app in `state`: every event goal it matches counts once more. */
 export function tallyAction(goal: Goal, tally: EventTally, state: LabState, action: LabAction): EventTally {
-  let next: Map<EventGoal | ChallengeGoal, number> | undefined;
+  let next: Map<TalliedGoal, number> | undefined;
   for (const { goal: part } of goalParts(goal)) {
-    if (part.kind !== 'event' && part.kind !== 'challenge') continue;
-    const matches = part.kind === 'event' ? eventMatches(part, state, action) : isCloseEnough(part, action);
+    if (part.kind !== 'event' && part.kind !== 'challenge' && part.kind !== 'code') continue;
+    const matches =
+      part.kind === 'event' ? eventMatches(part, state, action) : part.kind === 'challenge' ? isCloseEnough(part, action) : allPassed(part, action);
     if (!matches) continue;
     next ??= new Map(tally);
     next.set(part, (next.get(part) ?? 0) + 1);
@@ -43,6 +48,11 @@ function isCloseEnough(goal: ChallengeGoal, action: LabAction): boolean {
   return action.type === 'challenge.compared' && action.difference <= goal.challenge.measure.threshold;
 }
 
+/** The action reports a run of the lab's function that passed every case. */
+function allPassed(goal: CodeGoal, action: LabAction): boolean {
+  return action.type === 'code.graded' && action.lab === goal.code.lab && action.passed === action.total;
+}
+
 /**
  * Whether the goal is met in `state`, given the events tallied since its task was shown.
  * Quiz, estimate and info goals are never met here: they complete through the quest
@@ -53,6 +63,7 @@ export function checkGoal(goal: Goal, state: LabState, tally: EventTally): boole
     case 'event':
       return (tally.get(goal) ?? 0) >= (goal.times ?? 1);
     case 'challenge':
+    case 'code':
       return (tally.get(goal) ?? 0) >= 1;
     case 'state':
       return compare(readPath(state, goal.state), goal.op, goal.value);
@@ -94,6 +105,9 @@ export function touchesGoal(goal: Goal, before: LabState | null, state: LabState
       // Every render of a challenge is a try at it, close or not.
       case 'challenge':
         return action.type === 'challenge.compared';
+      // Every run of a code lab is a try at it, passed or not.
+      case 'code':
+        return action.type === 'code.graded' && action.lab === part.code.lab;
       // A combination is a step towards it through its parts, which goalParts lists too.
       case 'all':
       case 'any':

@@ -10,6 +10,7 @@ import { gotOf, type Reason } from '../util/issue.ts';
 import { localizedTextSchema, type LocalizedText } from './localized-text.ts';
 import { parsePath } from './state-path.ts';
 import { CONTROL_TARGETS } from './lab-controls.ts';
+import { codeGoalSchema, type CodeGoal } from './code-labs/code-goal.ts';
 
 /**
  * What a task asks of the learner, as data (DESIGN.md: a discriminated union, not a pile of
@@ -94,7 +95,9 @@ export interface AnyGoal {
 export type SceneGoal = EventGoal | StateGoal | AllGoal | AnyGoal;
 
 /** Quiz, estimate and info goals are answered through the task panel, so they stand alone. */
-export type Goal = SceneGoal | QuizGoal | EstimateGoal | PictureGoal | ChallengeGoal | InfoGoal;
+export type Goal = SceneGoal | QuizGoal | EstimateGoal | PictureGoal | ChallengeGoal | CodeGoal | InfoGoal;
+
+export type { CodeGoal };
 
 /** Every kind of goal; a level file names it by the field that holds the goal's content. */
 export type GoalKind = Goal['kind'];
@@ -119,6 +122,7 @@ export function kindOfGoal(goal: Goal): TaskKind {
     case 'all':
     case 'any':
     case 'challenge':
+    case 'code':
       return 'do';
     default: {
       const never: never = goal;
@@ -140,6 +144,7 @@ export function predictionOf(goal: Goal): PredictionGoal | undefined {
     case 'all':
     case 'any':
     case 'challenge':
+    case 'code':
       return undefined;
     default: {
       const never: never = goal;
@@ -304,6 +309,7 @@ const GOAL_SCHEMAS: { [Kind in GoalKind]: z.ZodType<Extract<Goal, { kind: Kind }
   estimate: estimateGoalSchema,
   picture: pictureGoalSchema,
   challenge: challengeGoalSchema,
+  code: codeGoalSchema,
   info: infoGoalSchema,
 };
 
@@ -352,6 +358,7 @@ export function children(goal: Goal): GoalChild[] {
     case 'estimate':
     case 'picture':
     case 'challenge':
+    case 'code':
     case 'info':
       return [];
     default: {

@@ -69,6 +69,7 @@ export const labActionSchema = z.discriminatedUnion('type', [
   fact('render.cancelled'),
   fact('render.saved'),
   z.strictObject({ type: z.literal('challenge.compared'), difference: z.number().min(0) }),
+  z.strictObject({ type: z.literal('code.graded'), lab: z.string().min(1), passed: z.int().min(0), total: z.int().min(1), failed: z.string().nullable() }),
   z.strictObject({ type: z.literal('scene.saved'), to: z.enum(['file', 'link']) }),
   z.strictObject({ type: z.literal('panel.opened'), panel: z.string().min(1) }),
   z.strictObject({

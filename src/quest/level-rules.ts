@@ -78,7 +78,8 @@ function taskProblems(level: Level, index: number, sample: LabState): Problem[] 
   const problems: Problem[] = [];
   const kind = kindOfGoal(task.goal);
   if (kind === 'do') {
-    if (!task.solution) problems.push({ path: at('solution'), reason: { code: 'solutionRequired' } });
+    // A code lab offers no "show me" (spec/code-labs.md §1): its last hint may show a line, never the whole function.
+    if (!task.solution && task.goal.kind !== 'code') problems.push({ path: at('solution'), reason: { code: 'solutionRequired' } });
     if (task.hints.length === 0) problems.push({ path: at('hints'), reason: { code: 'hintRequired' } });
     task.solution?.forEach((action, step) => {
       if (action.type === APP_ONLY_ACTION) problems.push({ path: at('solution', step), reason: { code: 'viewInSolution' } });
@@ -114,6 +115,7 @@ function statePathProblems(goal: Goal, path: (string | number)[], sample: LabSta
     case 'estimate':
     case 'picture':
     case 'challenge':
+    case 'code':
     case 'info':
       return [];
     default: {

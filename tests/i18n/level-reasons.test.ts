@@ -196,7 +196,7 @@ describe('a broken level in Dutch', () => {
 
   it('says the goal, condition and path checks in Dutch', () => {
     expect(reasonsOf('a goal of two kinds').map(issueText)).toEqual([
-      'tasks[4].goal: mag maar één van de velden event, state, all, any, quiz, estimate, picture, challenge, info hebben, maar heeft event en state',
+      'tasks[4].goal: mag maar één van de velden event, state, all, any, quiz, estimate, picture, challenge, code, info hebben, maar heeft event en state',
     ]);
     expect(reasonsOf('an ordering of a text').map(issueText)).toEqual(['tasks[4].goal.value: "<=" vergelijkt getallen, maar krijgt "low"']);
     expect(reasonsOf('a misspelt field').map(issueText)).toEqual([

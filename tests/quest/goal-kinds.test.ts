@@ -36,6 +36,16 @@ const EXAMPLES: Record<string, unknown> = {
       par: { renders: 2 },
     },
   },
+  code: {
+    code: {
+      lab: 'ray-sphere',
+      function: 'hitSphere',
+      signature: 'hitSphere(origin, direction, center, radius)',
+      contract: 'The nearest t > 0, or null.',
+      skeleton: 'function hitSphere(origin, direction, center, radius) {}',
+      cases: { edges: ['tangent'], random: 10, seed: 1 },
+    },
+  },
   info: { info: true },
 };
 
@@ -104,7 +114,7 @@ describe('walking nested goals', () => {
       ['any', 0],
       ['any', 1],
     ]);
-    for (const kind of ['event', 'state', 'quiz', 'estimate', 'picture', 'challenge', 'info']) expect(children(goal(EXAMPLES[kind])), kind).toEqual([]);
+    for (const kind of ['event', 'state', 'quiz', 'estimate', 'picture', 'challenge', 'code', 'info']) expect(children(goal(EXAMPLES[kind])), kind).toEqual([]);
   });
 
   it('goalParts reaches every goal at every depth, with its path as the file writes it', () => {

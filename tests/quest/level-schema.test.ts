@@ -63,13 +63,13 @@ describe('field messages read `path: reason`, like scene files', () => {
 
   it('says what a goal lacks when its kind cannot be told', () => {
     expect(errorsOf((level) => (level.tasks[0].goal = { happens: 'view.orbited' }))).toEqual([
-      'tasks[0].goal: must have one of the fields event, state, all, any, quiz, estimate, picture, challenge, info',
+      'tasks[0].goal: must have one of the fields event, state, all, any, quiz, estimate, picture, challenge, code, info',
     ]);
     expect(errorsOf((level) => (level.tasks[0].goal = { event: 'view.orbited', state: 'selection', op: '==', value: null }))).toEqual([
-      'tasks[0].goal: must have only one of the fields event, state, all, any, quiz, estimate, picture, challenge, info, got event and state',
+      'tasks[0].goal: must have only one of the fields event, state, all, any, quiz, estimate, picture, challenge, code, info, got event and state',
     ]);
     expect(errorsOf((level) => (level.tasks[0].goal = 'orbit'))).toEqual([
-      'tasks[0].goal: must be a goal: an object with one of the fields event, state, all, any, quiz, estimate, picture, challenge, info, got "orbit"',
+      'tasks[0].goal: must be a goal: an object with one of the fields event, state, all, any, quiz, estimate, picture, challenge, code, info, got "orbit"',
     ]);
   });
 

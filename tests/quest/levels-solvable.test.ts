@@ -11,6 +11,7 @@ import { newProgress } from '../../src/quest/progress.ts';
 import { QuestEngine } from '../../src/quest/quest-engine.ts';
 import { FakeClock, rightPrediction } from '../support/quest-fixtures.ts';
 import { challengeDifference } from '../support/challenge-render.ts';
+import { tracerRun } from '../support/code-lab-run.ts';
 
 /**
  * Every level in levels/index.json is valid and solved by its own solutions, headless, as
@@ -70,6 +71,8 @@ for (const chapter of catalog.chapters) {
               expect(store.dispatch({ type: 'challenge.compared', difference })).toBeUndefined();
             }
           }
+          // A code lab has no solution: the tracer's own function, graded on the level's cases as the app grades the learner's, must pass them.
+          if (task.goal.kind === 'code') expect(store.dispatch(tracerRun(task.goal))).toBeUndefined();
           expect(statusOf(task.id), `task "${task.id}" was not completed by its solution`).toBe('done');
           // A prediction is explained once the task that shows its result is done; then the learner continues.
           const revealing = engine.level?.revealing;

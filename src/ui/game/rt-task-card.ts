@@ -15,6 +15,7 @@ import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 import './rt-hint-box.ts';
 import './rt-quiz.ts';
 import './rt-challenge.ts';
+import { codeLabPanel } from './code-lab/code-lab-panel.ts';
 
 /**
  * @summary One task in the task list: a status mark (in words for screen readers, as a
@@ -180,6 +181,7 @@ export class RtTaskCard extends LocalizedElement {
       }
       ${folded !== null && !this.opened ? html`<p class="summary" title=${folded}>${folded}</p>` : nothing}
       ${finished && view.task.goal.kind === 'challenge' ? html`<rt-challenge summary .goal=${view.task.goal} locale=${this.locale}></rt-challenge>` : nothing}
+      ${finished && view.task.goal.kind === 'code' ? codeLabPanel(view.task.goal, this.locale, this) : nothing}
       ${this.expanded || (openable && this.opened) ? html`<div class="body">${this.body(view, finished)}</div>` : nothing}
     `;
   }
@@ -194,6 +196,7 @@ export class RtTaskCard extends LocalizedElement {
       ${view.task.more ? explainMore(levelText(view.task.more, this.locale), () => send({ kind: 'explain', task: id })) : nothing}
       ${view.kind === 'quiz' ? html`<rt-quiz .task=${view} locale=${this.locale}></rt-quiz>` : nothing}
       ${view.task.goal.kind === 'challenge' ? html`<rt-challenge .goal=${view.task.goal} locale=${this.locale}></rt-challenge>` : nothing}
+      ${view.task.goal.kind === 'code' && !finished ? codeLabPanel(view.task.goal, this.locale, this) : nothing}
       ${
         finished
           ? nothing

@@ -1,0 +1,34 @@
+import { z } from 'zod';
+import { wholeNumberIn } from '../../scene/scene-schema-parts.ts';
+import { localizedTextSchema } from '../localized-text.ts';
+import { RAY_SPHERE_EDGES } from './ray-sphere-edges.ts';
+
+/**
+ * A code lab's goal (spec/code-labs.md §1): write one function of the tracer, with its
+ * signature and contract in the learner's language, starting from a skeleton; done when
+ * every case passes (code-lab-grading.ts). `lab` names the grader, which knows the tracer's
+ * own function and the named edge cases the level may list. In a level file:
+ * `{ "code": { "lab": "ray-sphere", "function": "hitSphere", … } }`.
+ */
+export const codeGoalSchema = z
+  .strictObject({
+    code: z.strictObject({
+      lab: z.literal('ray-sphere').describe('Which of the tracer’s functions the learner writes; it is the reference and knows the cases.'),
+      function: z
+        .string()
+        .regex(/^[A-Za-z_$][\w$]*$/)
+        .describe('The name the learner’s function must have.'),
+      signature: z.string().min(1).max(200).describe('The call as the contract shows it, e.g. "hitSphere(origin, direction, center, radius)".'),
+      contract: localizedTextSchema.describe('What comes in, what must come out, the units.'),
+      skeleton: z.string().min(1).max(4000).describe('The starting code: the function with its steps as comments.'),
+      cases: z.strictObject({
+        edges: z.array(z.enum(RAY_SPHERE_EDGES)).min(1).describe('The named edge cases, graded first and named in the result.'),
+        random: wholeNumberIn([0, 1000]).describe('How many seeded random cases follow them.'),
+        seed: wholeNumberIn([0, 2 ** 31 - 1]),
+      }),
+    }),
+  })
+  .transform((goal) => ({ kind: 'code' as const, ...goal }));
+
+/** Done once a run of the learner's function passes every case. */
+export type CodeGoal = z.output<typeof codeGoalSchema>;

@@ -1,0 +1,23 @@
+/**
+ * The learner's code per lab, kept in this browser so that it survives a reload. A key of
+ * its own beside the progress (`rtq.progress`): exporting it with the progress waits for the
+ * classroom side of code labs.
+ */
+const PREFIX = 'rtq.code-lab.';
+
+export function savedCode(lab: string): string | null {
+  try {
+    return localStorage.getItem(PREFIX + lab);
+  } catch {
+    return null;
+  }
+}
+
+export function saveCode(lab: string, code: string | null): void {
+  try {
+    if (code === null) localStorage.removeItem(PREFIX + lab);
+    else localStorage.setItem(PREFIX + lab, code);
+  } catch {
+    // Storage full or refused (a private window): the code stays in the editor for this visit.
+  }
+}

@@ -1,0 +1,69 @@
+import { msg, str } from '@lit/localize';
+import type { CaseFailure, Vec3 } from '../../../quest/code-labs/code-lab-grading.ts';
+
+/** A kind of case as the result list names it: the misconception its edge case tests. */
+export function caseKindName(kind: string): string {
+  switch (kind) {
+    case 'hit-from-outside':
+      return msg('a ray from outside that hits');
+    case 'miss':
+      return msg('a ray that misses');
+    case 'sphere-behind':
+      return msg('a sphere behind the ray’s origin');
+    case 'inside-sphere':
+      return msg('a ray that starts inside the sphere');
+    case 'tangent':
+      return msg('a ray that just touches the sphere');
+    case 'off-centre':
+      return msg('a sphere away from the origin');
+    case 'random':
+      return msg('random rays and spheres');
+    default:
+      return kind;
+  }
+}
+
+const numberText = (value: number) => String(Number(value.toPrecision(6)));
+const vectorText = (v: Vec3) => `(${numberText(v.x)}, ${numberText(v.y)}, ${numberText(v.z)})`;
+
+/** The case's input, spelled out: origin, direction, centre and radius. */
+export function caseInput(args: unknown[]): string {
+  const [origin, direction, center, radius] = args as [Vec3, Vec3, Vec3, number];
+  return `origin ${vectorText(origin)}, direction ${vectorText(direction)}, center ${vectorText(center)}, radius ${numberText(radius)}`;
+}
+
+/** What was expected and what came back, in words. */
+export function failureText(failure: CaseFailure): string {
+  const expected = failure.labCase.expected;
+  const expectedText = expected === null ? msg('null (no hit)') : `t = ${numberText(expected)}`;
+  switch (failure.reason) {
+    case 'threw': {
+      const message = failure.message ?? '';
+      return failure.line ? msg(str`Your function threw ${message} at line ${failure.line}.`) : msg(str`Your function threw ${message}.`);
+    }
+    case 'wrong-type':
+      return msg(str`Expected ${expectedText}, got ${failure.got}: return a number or null.`);
+    case 'not-a-number':
+      return msg(str`Expected ${expectedText}, got ${failure.got}: is something under a square root negative, or divided by 0?`);
+    case 'expected-hit':
+      return msg(str`Expected ${expectedText}, got null: the ray does hit the sphere.`);
+    case 'expected-miss':
+      return msg(str`Expected ${expectedText}, got t = ${failure.got}: no hit in front of the ray’s origin counts.`);
+    case 'wrong-value':
+      return msg(str`Expected ${expectedText}, got t = ${failure.got}.`);
+  }
+}
+
+/** The lab's vector library, as the panel documents it (public/code-lab-sandbox.html defines it). */
+export function vectorLibrary(): [call: string, meaning: string][] {
+  return [
+    ['vec(x, y, z)', msg('a vector: an object with x, y and z')],
+    ['add(a, b), sub(a, b)', msg('a + b, a − b')],
+    ['scale(a, s)', msg('a times the number s')],
+    ['dot(a, b)', msg('the dot product a · b')],
+    ['cross(a, b)', msg('the cross product a × b')],
+    ['length(a)', msg('the length |a|')],
+    ['normalize(a)', msg('a with length 1')],
+    ['mix(a, b, t)', msg('a + (b − a) · t')],
+  ];
+}

@@ -1,0 +1,234 @@
+import { ContextConsumer } from '@lit/context';
+import { msg, str } from '@lit/localize';
+import type { EditorView } from 'codemirror';
+import { css, html, nothing, type PropertyValues } from 'lit';
+import type { CodeGoal } from '../../../quest/code-labs/code-goal.ts';
+import { gradeLab, type LabReport } from '../../../quest/code-labs/code-lab-grading.ts';
+import { labCases } from '../../../quest/code-labs/lab-cases.ts';
+import type { Locale } from '../../../quest/localized-text.ts';
+import { LocalizedElement } from '../../controls/localized-element.ts';
+import { gameStyles } from '../game-styles.ts';
+import { levelText } from '../level-text.ts';
+import { createCodeEditor, replaceCode } from './code-editor.ts';
+import { codeLabHostContext } from './code-lab-host.ts';
+import { caseInput, caseKindName, failureText, vectorLibrary } from './code-lab-texts.ts';
+import { savedCode, saveCode } from './code-drafts.ts';
+import { LabSandbox, RUN_LIMIT_MS, type SandboxResult } from './lab-sandbox.ts';
+
+/** What the result area shows: nothing yet, a run under way, a graded run, or why a run gave no answers. */
+type RunState = { kind: 'idle' } | { kind: 'running' } | { kind: 'graded'; report: LabReport } | Exclude<SandboxResult, { kind: 'ran' }>;
+
+/**
+ * The last run's result per lab, for this visit: the task card shows a new panel once the task
+ * is done (the run that passed), which should still say how that run went.
+ */
+const lastRuns = new Map<string, RunState>();
+
+/**
+ * @summary A code lab (spec/code-labs.md): the function's signature and contract, the vector
+ * library, an editor holding the learner's code (kept per lab in this browser), **Run tests**
+ * and the result: passes per kind of case and the first failing case spelled out; each run
+ * is reported to the lab (codeLabHostContext). The code runs only on Run, in the sandbox
+ * (lab-sandbox.ts). Loaded only when a level shows a code task.
+ */
+export class RtCodeLab extends LocalizedElement {
+  static override properties = { goal: { attribute: false }, locale: {}, state: { state: true } };
+  static override styles = [
+    gameStyles,
+    css`
+      :host {
+        display: block;
+        margin: 8px 0;
+      }
+      h3 {
+        margin: 0 0 6px;
+        font-size: 1rem;
+      }
+      code,
+      .editor {
+        font-family: ui-monospace, monospace;
+      }
+      .editor {
+        border: 1px solid var(--rt-border);
+        font-size: 0.85rem;
+        max-height: 22rem;
+        overflow: auto;
+      }
+      .editor .cm-editor {
+        background: var(--rt-surface, white);
+        color: var(--rt-text, black);
+      }
+      .buttons {
+        display: flex;
+        gap: 6px;
+        margin: 6px 0;
+      }
+      ul {
+        margin: 4px 0;
+        padding-left: 1.2em;
+      }
+      .fail {
+        color: var(--rt-error, #b00020);
+      }
+    `,
+  ];
+
+  declare goal: CodeGoal | null;
+  declare locale: Locale;
+  declare private state: RunState;
+  private readonly host = new ContextConsumer(this, { context: codeLabHostContext, subscribe: true });
+  private readonly sandbox = new LabSandbox();
+  private editor: EditorView | null = null;
+  private code = '';
+
+  constructor() {
+    super();
+    this.goal = null;
+    this.locale = 'en';
+    this.state = { kind: 'idle' };
+  }
+
+  override disconnectedCallback(): void {
+    super.disconnectedCallback();
+    this.sandbox.close();
+    this.editor?.destroy();
+    this.editor = null;
+  }
+
+  protected override willUpdate(changed: PropertyValues): void {
+    if (changed.has('goal') && this.goal) this.state = lastRuns.get(this.goal.code.lab) ?? { kind: 'idle' };
+  }
+
+  protected override updated(changed: PropertyValues): void {
+    const place = this.renderRoot.querySelector<HTMLElement>('.editor');
+    if (!this.goal || !place) return;
+    if (this.editor && !changed.has('goal') && !changed.has('locale')) return;
+    const { lab, skeleton } = this.goal.code;
+    // A new language keeps the code being written; a new lab starts from its own.
+    this.code = this.editor && !changed.has('goal') ? this.editor.state.doc.toString() : (savedCode(lab) ?? skeleton);
+    this.editor?.destroy();
+    this.editor = createCodeEditor({
+      parent: place,
+      doc: this.code,
+      label: msg('Your function: code editor'),
+      syntaxError: msg('Syntax error: the browser cannot run this line as it is.'),
+      onChange: (code) => {
+        this.code = code;
+        saveCode(lab, code === skeleton ? null : code);
+      },
+    });
+  }
+
+  override render() {
+    const goal = this.goal;
+    if (!goal) return nothing;
+    return html`
+      <section class="card" aria-labelledby="code-lab-title">
+        <h3 id="code-lab-title">${msg('Code lab')}</h3>
+        <p><code>${goal.code.signature}</code></p>
+        <p>${levelText(goal.code.contract, this.locale)}</p>
+        <details>
+          <summary>${msg('Vector library')}</summary>
+          <ul>
+            ${vectorLibrary().map(([call, meaning]) => html`<li><code>${call}</code>: ${meaning}</li>`)}
+          </ul>
+          <p>${msg('Math.sqrt, Math.abs and the rest of Math work as in any JavaScript.')}</p>
+        </details>
+        <div class="editor"></div>
+        <div class="buttons">
+          <button class="primary" ?disabled=${this.state.kind === 'running'} @click=${() => void this.run(goal)}>${msg('Run tests')}</button>
+          <button @click=${() => this.reset(goal)}>${msg('Reset to skeleton')}</button>
+        </div>
+        <div role="status" aria-live="polite">${this.result()}</div>
+      </section>
+    `;
+  }
+
+  private result() {
+    const state = this.state;
+    const seconds = RUN_LIMIT_MS / 1000;
+    switch (state.kind) {
+      case 'idle':
+        return html`<p>${msg(str`Run tests runs your function on every case, for at most ${seconds} s.`)}</p>`;
+      case 'running':
+        return html`<p>${msg('Running your function…')}</p>`;
+      case 'timeout':
+        return html`<p class="fail">
+          ${
+            state.caseIndex === null
+              ? msg(str`Your code did not finish within ${seconds} s, before the first case. Is there a loop that never ends?`)
+              : msg(str`Your function did not return within ${seconds} s on case ${state.caseIndex + 1}. Is there a loop that never ends?`)
+          }
+        </p>`;
+      case 'failed':
+        return html`<p class="fail">
+          ${state.line ? msg(str`Your code could not run: ${state.message} at line ${state.line}.`) : msg(str`Your code could not run: ${state.message}.`)}
+        </p>`;
+      case 'no-function':
+        return html`<p class="fail">${msg(str`There is no function named ${state.name} in your code.`)}</p>`;
+      case 'graded':
+        return this.report(state.report);
+    }
+  }
+
+  private report(report: LabReport) {
+    const failure = report.firstFailure;
+    return html`
+      <p class=${failure ? 'fail' : ''}>${msg(str`${report.passed} of ${report.total} cases pass.`)}</p>
+      <ul>
+        ${report.kinds.map(
+          (kind) =>
+            html`<li class=${kind.passed < kind.total ? 'fail' : ''}>${kind.passed === kind.total ? '✓' : '✗'} ${caseKindName(kind.kind)}: ${kind.passed}/${kind.total}</li>`,
+        )}
+      </ul>
+      ${
+        failure
+          ? html`<p>
+            <strong>${msg(str`First failing case: case ${failure.index + 1}, ${caseKindName(failure.labCase.kind)}.`)}</strong><br />
+            <code>${caseInput(failure.labCase.args)}</code><br />
+            ${failureText(failure)}
+          </p>`
+          : nothing
+      }
+    `;
+  }
+
+  private async run(goal: CodeGoal): Promise<void> {
+    this.state = { kind: 'running' };
+    const { cases, tolerance } = labCases(goal);
+    let result: SandboxResult;
+    try {
+      result = await this.sandbox.run(
+        this.code,
+        goal.code.function,
+        cases.map((labCase) => labCase.args),
+      );
+    } catch (error) {
+      this.sandbox.close();
+      result = { kind: 'failed', message: String(error), line: null };
+    }
+    if (result.kind !== 'ran') {
+      this.state = result;
+      lastRuns.set(goal.code.lab, result);
+      return;
+    }
+    const report = gradeLab(cases, result.outcomes, tolerance);
+    this.state = { kind: 'graded', report };
+    lastRuns.set(goal.code.lab, this.state);
+    const failure = report.firstFailure;
+    this.host.value?.graded({ lab: goal.code.lab, passed: report.passed, total: report.total, failed: failure?.labCase.kind ?? null });
+  }
+
+  private reset(goal: CodeGoal): void {
+    if (!this.editor || !confirm(msg('Replace your code with the skeleton? Your code is lost.'))) return;
+    replaceCode(this.editor, goal.code.skeleton);
+  }
+}
+
+customElements.define('rt-code-lab', RtCodeLab);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-code-lab': RtCodeLab;
+  }
+}
