@@ -11,7 +11,7 @@ export function pathKey(paths: boolean): TemplateResult | typeof nothing {
   if (!paths) return nothing;
   return html`<ul class="path-key" data-key="paths" aria-label=${msg('A pixel’s paths')}>
     <li><span class="path-mark solid" aria-hidden="true"></span>${msg('Solid: the path’s own rays, from the camera bounce by bounce')}</li>
-    <li><span class="path-mark dashed" aria-hidden="true"></span>${msg('Dashed: light sampling, a shadow ray to a point on a light')}</li>
+    <li><span class="path-mark dashed" aria-hidden="true"></span>${msg('Dashed: a shadow ray to a point on a light (Light sampling)')}</li>
     <li><span class="path-mark widths" aria-hidden="true"></span>${msg('Width: the path’s throughput so far (thin: little of the light it finds reaches the pixel)')}</li>
     <li><span class="path-mark lobe" aria-hidden="true"></span>${msg('Violet lobe: at a diffuse bounce, how likely each new direction is (cosine lobe or uniform hemisphere, as Bounce direction says)')}</li>
   </ul>`;
