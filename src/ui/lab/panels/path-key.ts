@@ -9,11 +9,25 @@ import { css, html, nothing, type TemplateResult } from 'lit';
  */
 export function pathKey(paths: boolean): TemplateResult | typeof nothing {
   if (!paths) return nothing;
+  const entries: [mark: string, name: string, detail: string, hint: string][] = [
+    ['solid', msg('Solid'), msg('the path’s bounces'), msg('The path’s own rays: from the camera, bounce by bounce.')],
+    ['dashed', msg('Dashed'), msg('shadow ray to a light'), msg('At a diffuse bounce, a shadow ray to a random point on a light (Light sampling).')],
+    ['widths', msg('Width'), msg('throughput so far'), msg('Thin: little of the light the path finds from here on reaches the pixel.')],
+    [
+      'lobe',
+      msg('Violet lobe'),
+      msg('odds of each new direction'),
+      msg('At a diffuse bounce: how likely each new direction is, a cosine lobe or a uniform hemisphere, as Bounce direction says.'),
+    ],
+  ];
   return html`<ul class="path-key" data-key="paths" aria-label=${msg('A pixel’s paths')}>
-    <li><span class="path-mark solid" aria-hidden="true"></span>${msg('Solid: the path’s own rays, from the camera bounce by bounce')}</li>
-    <li><span class="path-mark dashed" aria-hidden="true"></span>${msg('Dashed: a shadow ray to a point on a light (Light sampling)')}</li>
-    <li><span class="path-mark widths" aria-hidden="true"></span>${msg('Width: the path’s throughput so far (thin: little of the light it finds reaches the pixel)')}</li>
-    <li><span class="path-mark lobe" aria-hidden="true"></span>${msg('Violet lobe: at a diffuse bounce, how likely each new direction is (cosine lobe or uniform hemisphere, as Bounce direction says)')}</li>
+    ${entries.map(
+      ([mark, name, detail, hint]) =>
+        html`<li title=${hint}>
+          <span class="path-mark ${mark}" aria-hidden="true"></span>
+          <span>${name}<span class="detail"><span class="visually-hidden"> — </span>${detail}</span></span>
+        </li>`,
+    )}
   </ul>`;
 }
 
@@ -25,9 +39,6 @@ export const pathKeyStyles = css`
     margin-top: 6px;
     font-size: 0.85em;
     color: var(--rt-muted);
-  }
-  ul.path-key li {
-    cursor: default;
   }
   .path-mark {
     flex: none;
