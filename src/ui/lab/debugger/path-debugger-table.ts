@@ -74,6 +74,12 @@ export const pathTableStyles = css`
     border-bottom: 1px solid var(--rt-border, #ccc);
     white-space: nowrap;
   }
+  /* The table scrolls to the current vertex in a short dock: its header stays above the rows. */
+  th {
+    position: sticky;
+    top: 0;
+    background: var(--rt-surface);
+  }
   td:nth-child(2) {
     white-space: normal;
   }
