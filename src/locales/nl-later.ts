@@ -162,7 +162,7 @@
 's31c6186a1ce9787f': str`Het rasterbeeld kon niet worden getoond (${0}).`,
 's320e1962b6129ad6': `moet een richting zijn, niet [0, 0, 0]`,
 's3231d0dc6fe30d4a': `Diepte`,
-'s3234860bda6d5b96': `De som van het pad is de kolom Hier opgeteld bij elkaar opgeteld.`,
+'s3234860bda6d5b96': `De som van het pad is het totaal van de kolom Hier opgeteld.`,
 's32b4e037464f0ab9': str`moet een tekst zijn, of { "en": …, "nl": … } met een tekst per taal (en is verplicht; elk hoogstens ${0} tekens)`,
 's339fa954aa739b18': `Kies eerst een pixel: dit laat zijn stralen zien.`,
 's342e3e076f5537f3': `Beeldweergave: scroll met de pijltjestoetsen als je bent ingezoomd`,
