@@ -11,6 +11,7 @@ import type { LabPaths } from '../tracer/lab-paths.ts';
 import type { PixelTrace } from '../tracer/ray-tree.ts';
 import type { RayFocus } from '../view/ray-focus.ts';
 import { ScreenTracer } from '../render/screen-tracer.ts';
+import { PathPixelFocus } from './path-pixel-focus.ts';
 import { defaultScene } from '../scene/scene-defaults.ts';
 import type { BvhBoxes } from '../view/bvh-boxes.ts';
 import type { LabView } from '../view/lab-view.ts';
@@ -78,6 +79,15 @@ export class LabServices {
   private layers: { rays: RayPool; boxes: BvhBoxes } | null = null;
   /** The ray debugger's focus, kept for a ray pool made after it was set. */
   private focus: RayFocus | null = null;
+  /** A chosen pixel's paths in path mode, drawn while the debugger draws nothing (path-pixel-focus.ts). */
+  private pixelPaths: RayFocus | null = null;
+  private readonly pathPixel = new PathPixelFocus(
+    (x, y, keep) => this.tracer.tracePaths(x, y, keep),
+    (focus) => {
+      this.pixelPaths = focus;
+      this.setRayFocus(this.focus);
+    },
+  );
   /** When the rays are held to a budget: on a CPU rasterizer, once its view is attached. */
   private budget: RayBudgetWhileEditing | null = null;
   /** The scene and ray options last seen, to tell an edit. */
@@ -117,6 +127,7 @@ export class LabServices {
     this.cleanup.push(
       this.tracer.subscribe((rays) => {
         this.view?.setScreenRays(rays);
+        this.pathPixel.follow(this.store.state, rays);
         this.redrawRays();
         this.prepareBudget();
         for (const listener of [...this.listeners]) listener(rays);
@@ -125,6 +136,7 @@ export class LabServices {
         if (error) options.report(error.map(issueText).join('\n'), 'error');
         this.followBudget(state, live === true);
         this.tracer.update(state.scene);
+        this.pathPixel.follow(state, this.screenRays);
         this.layers?.boxes.update(state);
         // Rebuilding the pool costs ~1 ms per 10k rays: only when what it shows changed.
         if (state.rays !== this.drawnWith.rays || state.selectedPixel !== this.drawnWith.selectedPixel) this.redrawRays();
@@ -160,7 +172,7 @@ export class LabServices {
     if (this.disposed) return;
     if (!this.layers) {
       this.layers = { rays: new RayPool(), boxes: new BvhBoxes(() => this.view?.requestRender(), this.loadMeshes) };
-      this.layers.rays.setFocus(this.focus);
+      this.layers.rays.setFocus(this.focus ?? this.pixelPaths);
       this.tracer.traceInline(new InlineScreenTracer());
     }
     if (view.software && !this.budget) this.budget = new RayBudgetWhileEditing(() => this.applyBudget());
@@ -183,7 +195,7 @@ export class LabServices {
   /** The ray debugger's pixel drawn instead of the screen's rays (null: the screen again). */
   setRayFocus(focus: RayFocus | null): void {
     this.focus = focus;
-    this.layers?.rays.setFocus(focus);
+    this.layers?.rays.setFocus(focus ?? this.pixelPaths);
     this.redrawRays();
   }
 

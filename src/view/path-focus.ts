@@ -6,11 +6,12 @@
  * (how much of the light it brings back reaches the pixel). Pure: the debugger builds the
  * focus, the pool draws it.
  */
-import type { Color } from '../scene/scene.ts';
+import type { BounceSampling, Color } from '../scene/scene.ts';
 import type { LabPaths } from '../tracer/lab-paths.ts';
 import type { PathVertex } from '../tracer/path-recorder.ts';
 import type { RayNode, RayType } from '../tracer/ray-tree.ts';
 import type { RayFocus } from './ray-focus.ts';
+import { LOBE_SIZE } from './sampling-lobe.ts';
 
 /** The paths as trees, and each path's rays by the vertex they arrive at or start from. */
 export interface PathTrees {
@@ -20,6 +21,8 @@ export interface PathTrees {
   segments: RayNode[][];
   /** lights[p][i]: the light-sampling rays taken at vertex i of path p. */
   lights: RayNode[][][];
+  /** vertices[p]: path p's vertices, as recorded. */
+  vertices: PathVertex[][];
 }
 
 /** The throughput `carried` along each segment (what the debugger's rows say after each vertex), by path. */
@@ -51,15 +54,17 @@ export function pathTrees(paths: LabPaths, carried: readonly (readonly Color[])[
     segments.push(pathSegments);
     lights.push(pathLights);
   });
-  return { trace: { pixel: paths.pixel, color: paths.color, rays: roots }, segments, lights };
+  return { trace: { pixel: paths.pixel, color: paths.color, rays: roots }, segments, lights, vertices: paths.paths.map((path) => path.vertices) };
 }
 
 /**
  * What the 3D view shows with the cursor at vertex `vertex` of path `chosen`: every path up to
  * that vertex (its bounces so far and the light samples taken on the way), the chosen path
  * bright, the rest dimmed, and the chosen path's ray into that vertex highlighted and growing.
+ * At a diffuse bounce, the distribution its next direction is drawn from (`sampling`, the
+ * scene's bounceSampling) stands around the normal as a lobe.
  */
-export function pathFocus(trees: PathTrees, chosen: number, vertex: number): RayFocus {
+export function pathFocus(trees: PathTrees, chosen: number, vertex: number, sampling: BounceSampling = 'cosine'): RayFocus {
   const shown = new Set<RayNode>();
   const bright = new Set<RayNode>();
   trees.segments.forEach((segments, p) => {
@@ -70,7 +75,19 @@ export function pathFocus(trees: PathTrees, chosen: number, vertex: number): Ray
     }
   });
   const highlighted = vertex > 0 ? (trees.segments[chosen]?.[vertex - 1] ?? null) : null;
-  return { trace: trees.trace, shown, highlighted, grow: highlighted !== null, bright, widthByContribution: true };
+  const at = trees.vertices[chosen]?.[vertex];
+  const lobe = at?.event === 'diffuse' && at.normal ? { point: at.point, normal: at.normal, sampling, size: LOBE_SIZE } : null;
+  return { trace: trees.trace, shown, highlighted, grow: highlighted !== null, bright, widthByContribution: true, paths: true, lobe };
+}
+
+/**
+ * Every path whole, all bright, none highlighted: a chosen pixel's paths with the debugger
+ * closed. They grow from the camera bounce by bounce as the ray panel's animation plays
+ * (each ray starts where its parent ends, the light samples when their vertex is reached).
+ */
+export function allPathsFocus(trees: PathTrees): RayFocus {
+  const shown = new Set([...trees.segments.flat(), ...trees.lights.flat(2)]);
+  return { trace: trees.trace, shown, highlighted: null, grow: false, bright: shown, widthByContribution: true, paths: true, lobe: null, animated: true };
 }
 
 function segmentRay(from: PathVertex, to: PathVertex, type: RayType, width: number): RayNode {

@@ -8,6 +8,7 @@ import type { RayViewOptions } from '../lab-state/lab-state.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
 import type { PixelTrace, RayNode } from '../tracer/ray-tree.ts';
 import { RAY_COLOR_KEY_INDEX } from './ray-palette.ts';
+import type { SamplingLobe } from './sampling-lobe.ts';
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
 
 const NORMAL_KEY = RAY_COLOR_KEY_INDEX.normal;
@@ -26,6 +27,15 @@ export interface RayFocus {
   bright?: ReadonlySet<RayNode>;
   /** Width by each ray's contribution, whatever the ray panel says (a path's throughput). */
   widthByContribution?: boolean;
+  /** A pixel's sample paths: bounces solid, light-sampling rays dashed (path-dashes.ts). */
+  paths?: boolean;
+  /**
+   * Every ray keeps its place in the ray panel's animation (it grows after its parent) instead
+   * of being there at once: the paths drawn with the debugger closed (path-focus.ts allPathsFocus).
+   */
+  animated?: boolean;
+  /** The sampling distribution drawn at a path's vertex (sampling-lobe.ts), or none. */
+  lobe?: SamplingLobe | null;
 }
 
 /** Opacity of the rays that are not highlighted: still there to follow, clearly in the background. */
@@ -39,7 +49,7 @@ const GROWN_LONG_AGO = -1e9;
 
 /** One pixel's trace as a 1×1 screen (cached: the flattened rays are cached per screen object). */
 const screens = new WeakMap<PixelTrace, ScreenRays>();
-function screenOf(trace: PixelTrace): ScreenRays {
+export function screenOf(trace: PixelTrace): ScreenRays {
   let screen = screens.get(trace);
   if (!screen) {
     screen = { columns: 1, rows: 1, traces: [trace] };
@@ -80,8 +90,8 @@ export function focusedRays(focus: RayFocus, options: RayViewOptions, into = new
       const grows = highlighted && focus.grow;
       list.alpha[kept] = highlighted || focus.bright?.has(node) ? 1 : DIMMED_ALPHA;
       if (highlighted && !normal) list.radius[kept] *= HIGHLIGHT_RADIUS_SCALE;
-      list.start[kept] = grows ? (normal ? node.length : 0) : GROWN_LONG_AGO;
-      if (grows) travelEnd = Math.max(travelEnd, list.start[kept] + list.length[kept]);
+      if (!focus.animated) list.start[kept] = grows ? (normal ? node.length : 0) : GROWN_LONG_AGO;
+      if (grows || focus.animated) travelEnd = Math.max(travelEnd, list.start[kept] + list.length[kept]);
       kept++;
     }
     list.count = kept;

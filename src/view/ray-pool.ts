@@ -12,7 +12,7 @@
 import { BufferGeometry, Float32BufferAttribute, Group, InstancedBufferAttribute, InstancedMesh, type Material, type Raycaster, type Vector3 } from 'three';
 import type { RayViewOptions } from '../lab-state/lab-state.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
-import { focusedRays, type RayFocus } from './ray-focus.ts';
+import { focusedRays, type RayFocus, screenOf } from './ray-focus.ts';
 import type { RayHover, RayLayer } from './ray-layer.ts';
 import { RayExtras } from './ray-extras.ts';
 import {
@@ -30,7 +30,9 @@ import {
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
 import { keptRays, type Thinning, thinningOf } from './ray-budget.ts';
 import { flattenRays } from './flat-rays.ts';
-import { FILLED_GAP_KEYS, RAY_COLOR_KEYS, RAY_DASHES, STOPPED_KEYS } from './ray-palette.ts';
+import { FILLED_GAP_KEYS, RAY_COLOR_KEYS, RAY_DASHES, type RayColorKey, STOPPED_KEYS } from './ray-palette.ts';
+import { PATH_DASHES } from './path-dashes.ts';
+import { SamplingLobeMesh } from './sampling-lobe-mesh.ts';
 import { timeStripe } from './time-colors.ts';
 
 /** Instances allocated at first; the buffers double from there as needed. */
@@ -45,9 +47,15 @@ const FLOATS_PER_CYLINDER = FLOATS_PER_CONE + 4;
  * rebuild copies two numbers per ray from it. Looking each pattern up by its name and copying
  * it with TypedArray.set was a third of a 10k-ray rebuild.
  */
-const DASHES_BY_KEY = Float32Array.from(
-  RAY_COLOR_KEYS.flatMap((key) => (FILLED_GAP_KEYS.has(key) ? [RAY_DASHES[key][0], -RAY_DASHES[key][1]] : RAY_DASHES[key])),
-);
+const DASHES_BY_KEY = dashesByKey(RAY_DASHES);
+
+/** PATH_DASHES in the same form: a pixel's sample paths (path-dashes.ts). */
+const PATH_DASHES_BY_KEY = dashesByKey(PATH_DASHES);
+
+/** Patterns by key as (dash, gap) pairs by colour-key index; a filled gap is stored negative (ray-shader.ts aDash). */
+function dashesByKey(dashes: Readonly<Record<RayColorKey, readonly [number, number]>>): Float32Array {
+  return Float32Array.from(RAY_COLOR_KEYS.flatMap((key) => (FILLED_GAP_KEYS.has(key) ? [dashes[key][0], -dashes[key][1]] : dashes[key])));
+}
 
 /** Where each key's arrowhead sits (ray-shader.ts arrowAt), by colour-key index like DASHES_BY_KEY. */
 const ARROW_AT_BY_KEY = Float32Array.from(RAY_COLOR_KEYS.map(arrowAt));
@@ -277,6 +285,8 @@ export class RayPool implements RayLayer {
   private readonly pieceCylinders = new InstanceBuffers('cylinder', this.rayMaterial, this.pieceObject);
   private readonly pieceCones = new InstanceBuffers('cone', this.coneMaterial, this.pieceObject);
   private readonly drawn = new DrawnRays();
+  /** A path vertex's sampling distribution, drawn with a pixel's sample paths (sampling-lobe-mesh.ts). */
+  private readonly lobe = new SamplingLobeMesh(this.object);
   private animation: AnimationInputs = { rays: null, selectedPixel: null, animate: false, pixelByPixel: false };
   private speed = 1;
   private loop = false;
@@ -383,7 +393,8 @@ export class RayPool implements RayLayer {
     const kept = !focus && !selectedPixel && rays && this.budget !== null ? keptRays(flattenRays(rays), this.budget, null) : null;
     const drawn = focus ? focusedRays(focus, options, this.drawn, this.style) : visibleRays(rays, options, selectedPixel, this.drawn, this.style, true, kept);
     this.thinned = focus ? null : thinningOf(rays, drawn, kept !== null, selectedPixel !== null);
-    this.writeCylinders(drawn.rays);
+    this.writeCylinders(drawn.rays, focus?.paths ? PATH_DASHES_BY_KEY : DASHES_BY_KEY);
+    this.lobe.show(focus?.lobe ?? null);
     this.writeCones(drawn.cones);
     const oneTree = focus !== null || selectedPixel !== null;
     this.extras.update(this.cylinders.mesh, drawn.rays.count, oneTree, oneTree && anyStopped(drawn.rays));
@@ -392,7 +403,9 @@ export class RayPool implements RayLayer {
     // three compiles opaque materials with alpha forced to 1, and switching compiles a new
     // program: a 528 ms long task in the e2e run on SwiftShader, mid-drag of the slider.)
     this.rayMaterial.depthWrite = !focus && (drawn.rays.count === 0 || drawn.rays.alpha[0] >= 1);
-    if (focus) this.growFocus(focus, options);
+    // Paths drawn whole play like a chosen pixel's tree, from the start when they are new.
+    if (focus?.animated) this.updateAnimation(screenOf(focus.trace), options, [0, 0]);
+    else if (focus) this.growFocus(focus, options);
     else this.updateAnimation(rays, options, selectedPixel);
   }
 
@@ -427,6 +440,7 @@ export class RayPool implements RayLayer {
 
   dispose(): void {
     this.extras.dispose();
+    this.lobe.dispose();
     this.cylinders.dispose();
     this.cones.dispose();
     this.pieceCylinders.dispose();
@@ -435,12 +449,12 @@ export class RayPool implements RayLayer {
     this.object.clear();
   }
 
-  private writeCylinders(list: SegmentList): void {
+  private writeCylinders(list: SegmentList, dashes: Float32Array): void {
     const buffers = this.cylinders;
     buffers.reserve(list.count);
     const matrix = buffers.mesh.instanceMatrix.array as Float32Array;
     for (let i = 0; i < list.count; i++) writeCylinderMatrix(matrix, i * 16, list, i);
-    this.writeAttributes(buffers, list, 1);
+    this.writeAttributes(buffers, list, 1, dashes);
   }
 
   private writeCones(list: SegmentList): void {
@@ -448,10 +462,10 @@ export class RayPool implements RayLayer {
     buffers.reserve(list.count);
     const matrix = buffers.mesh.instanceMatrix.array as Float32Array;
     for (let i = 0; i < list.count; i++) writeConeMatrix(matrix, i * 16, list, i);
-    this.writeAttributes(buffers, list, CONE_OPACITY);
+    this.writeAttributes(buffers, list, CONE_OPACITY, DASHES_BY_KEY);
   }
 
-  private writeAttributes(buffers: InstanceBuffers, list: SegmentList, opacity: number): void {
+  private writeAttributes(buffers: InstanceBuffers, list: SegmentList, opacity: number, dashes: Float32Array): void {
     const { count } = list;
     (buffers.color.array as Float32Array).set(list.color.subarray(0, count * 3));
     const alpha = buffers.alpha.array as Float32Array;
@@ -467,8 +481,8 @@ export class RayPool implements RayLayer {
         const key = list.colorKey[i];
         if (list.moment[i] >= 0) timeStripe(list.moment[i], dash, i * 2);
         else {
-          dash[i * 2] = DASHES_BY_KEY[key * 2];
-          dash[i * 2 + 1] = DASHES_BY_KEY[key * 2 + 1];
+          dash[i * 2] = dashes[key * 2];
+          dash[i * 2 + 1] = dashes[key * 2 + 1];
         }
         arrowAt[i] = ARROW_AT_BY_KEY[key];
         stop[i] = STOP_BY_KEY[key];

@@ -1,7 +1,11 @@
 import { describe, expect, it } from 'vitest';
 import { pathRows } from '../../src/debugger/path-steps.ts';
 import { labPaths } from '../../src/tracer/lab-paths.ts';
-import { pathFocus, pathTrees } from '../../src/view/path-focus.ts';
+import { allPathsFocus, pathFocus, pathTrees } from '../../src/view/path-focus.ts';
+import { LOBE_SIZE } from '../../src/view/sampling-lobe.ts';
+import { RAY_COLOR_KEY_INDEX } from '../../src/view/ray-palette.ts';
+import { focusedRays } from '../../src/view/ray-focus.ts';
+import { DEFAULT_RAY_VIEW } from '../../src/lab-state/lab-state.ts';
 import { matte, tracerSceneFrom } from '../support/test-scene.ts';
 
 const scene = tracerSceneFrom({
@@ -52,5 +56,36 @@ describe('a pixel’s paths as ray trees for the 3D view', () => {
 
   it('draws a segment as wide as the throughput it carries', () => {
     rows.forEach((r, p) => trees.segments[p]!.forEach((ray, i) => expect(ray.contribution).toBeCloseTo(Math.min(1, Math.max(...r[i]!.throughput)), 12)));
+  });
+
+  it('stands the sampling lobe at a diffuse vertex, by the scene’s strategy, and at no other', () => {
+    let diffuse = 0;
+    paths.paths.forEach((path, p) =>
+      path.vertices.forEach((vertex, i) => {
+        for (const sampling of ['cosine', 'uniform'] as const) {
+          const lobe = pathFocus(trees, p, i, sampling).lobe;
+          if (vertex.event !== 'diffuse') expect(lobe).toBeNull();
+          else expect(lobe).toEqual({ point: vertex.point, normal: vertex.normal, sampling, size: LOBE_SIZE });
+        }
+        if (vertex.event === 'diffuse') diffuse++;
+      }),
+    );
+    expect(diffuse).toBeGreaterThan(0);
+    expect(pathFocus(trees, 0, 0).paths).toBe(true);
+  });
+
+  it('with the debugger closed, shows every path whole, growing from the camera bounce by bounce', () => {
+    const focus = allPathsFocus(trees);
+    expect(focus.shown.size).toBe(trees.segments.flat().length + trees.lights.flat(2).length);
+    expect(focus.highlighted).toBeNull();
+    expect(focus.animated).toBe(true);
+    const drawn = focusedRays(focus, { ...DEFAULT_RAY_VIEW, animate: true });
+    const startOf = new Map<unknown, number>();
+    for (let i = 0; i < drawn.rays.count; i++) if (drawn.rays.colorKey[i] !== RAY_COLOR_KEY_INDEX.normal) startOf.set(drawn.rays.nodes[i], drawn.rays.start[i]);
+    // Each bounce starts to grow where the one before it has arrived.
+    trees.segments.forEach((segments) =>
+      segments.slice(1).forEach((ray, i) => expect(startOf.get(ray)).toBeCloseTo(startOf.get(segments[i])! + segments[i]!.length, 4)),
+    );
+    expect(drawn.travelEnd).toBeGreaterThan(Math.max(...trees.segments.map((segments) => segments[0]!.length)));
   });
 });

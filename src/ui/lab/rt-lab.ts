@@ -343,7 +343,7 @@ export class RtLab extends LocalizedElement {
         ></rt-scene-view>
         ${labLoadProblems(this.loadProblems, shows('debugger'))}
         ${shows('screen-preview') ? html`<rt-screen-preview .rays=${this.services.screenRays}></rt-screen-preview>` : nothing}
-        ${viewLegend && state.rays.showRays ? viewLegendBox(this.legendOpen, () => (this.legendOpen = !this.legendOpen)) : nothing}
+        ${viewLegend && (state.rays.showRays || (state.scene.settings.integrator === 'path' && state.selectedPixel)) ? viewLegendBox(this.legendOpen, () => (this.legendOpen = !this.legendOpen)) : nothing}
         ${
           shows('debugger')
             ? html`<rt-ray-debugger

@@ -1,6 +1,8 @@
 import { msg, str } from '@lit/localize';
-import { css, html, nothing, type PropertyValues } from 'lit';
+import { css, html, type PropertyValues } from 'lit';
+import { pathRayOf } from '../../../debugger/path-goals.ts';
 import { meanOfPaths, pathRows, type PathVertexRow } from '../../../debugger/path-steps.ts';
+import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { ScreenRays } from '../../../render/screen-rays.ts';
 import type { RenderSettings } from '../../../scene/scene.ts';
 import { LAB_PATH_COUNT, type LabPaths } from '../../../tracer/lab-paths.ts';
@@ -8,7 +10,8 @@ import { pathFocus, pathTrees, type PathTrees } from '../../../view/path-focus.t
 import type { RayFocus } from '../../../view/ray-focus.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
 import { colorText } from './debug-numbers.ts';
-import { eventName, lightSampleText, pathNumber, survivalText, vertexText } from './path-debugger-text.ts';
+import { survivalText, vertexText } from './path-debugger-text.ts';
+import { pathTable, pathTableStyles, vertexEstimate } from './path-debugger-table.ts';
 
 /** Keys → moves: ← → along the path, ↑ ↓ to the previous or next path, Home and End to its ends. */
 const KEY_MOVES: Readonly<Record<string, readonly [path: number, vertex: number | 'start' | 'end']>> = {
@@ -28,7 +31,8 @@ const KEY_MOVES: Readonly<Record<string, readonly [path: number, vertex: number 
  * which ends at its contribution; under it, the pixel as the mean of all its paths.
  *
  * `pixel`, `settings` (the scene's), `screenRays` (a new screen traces the paths again),
- * `tracePaths` (the lab's services), `showFocus` (draws in 3D). Carries `data-path` and
+ * `tracePaths` (the lab's services), `showFocus` (draws in 3D), `report` (each move as
+ * `debugger.stepped`, debugger/path-goals.ts). Carries `data-path` and
  * `data-vertex` for tests.
  */
 export class RtPathDebugger extends LocalizedElement {
@@ -38,13 +42,16 @@ export class RtPathDebugger extends LocalizedElement {
     screenRays: { attribute: false },
     tracePaths: { attribute: false },
     showFocus: { attribute: false },
+    report: { attribute: false },
     paths: { state: true },
     path: { state: true },
     vertex: { state: true },
     problem: { state: true },
   };
 
-  static override styles = css`
+  static override styles = [
+    pathTableStyles,
+    css`
     :host {
       display: flex;
       flex-direction: column;
@@ -74,32 +81,15 @@ export class RtPathDebugger extends LocalizedElement {
       min-height: 0;
       overflow-y: auto;
     }
-    table {
-      border-collapse: collapse;
-      width: 100%;
-      font-variant-numeric: tabular-nums;
-    }
-    th,
-    td {
-      text-align: left;
-      vertical-align: top;
-      padding: 2px 6px;
-      border-bottom: 1px solid var(--rt-border, #ccc);
-    }
-    tr.current {
-      background: var(--rt-highlight, rgba(255, 200, 0, 0.18));
-    }
-    td small {
-      display: block;
-      color: var(--rt-muted);
-    }
-  `;
+  `,
+  ];
 
   declare pixel: readonly [number, number] | null;
   declare settings: RenderSettings | null;
   declare screenRays: ScreenRays | null;
   declare tracePaths: ((x: number, y: number, keep: number) => Promise<LabPaths>) | null;
   declare showFocus: ((focus: RayFocus | null) => void) | null;
+  declare report: ((action: LabAction) => void) | null;
   declare private paths: LabPaths | null;
   declare private path: number;
   declare private vertex: number;
@@ -116,6 +106,7 @@ export class RtPathDebugger extends LocalizedElement {
     this.screenRays = null;
     this.tracePaths = null;
     this.showFocus = null;
+    this.report = null;
     this.paths = null;
     this.path = 0;
     this.vertex = 0;
@@ -165,7 +156,10 @@ export class RtPathDebugger extends LocalizedElement {
     if (!this.trees || this.rows.length === 0) return;
     this.path = Math.max(0, Math.min(this.rows.length - 1, path));
     this.vertex = Math.max(0, Math.min(this.rows[this.path].length - 1, vertex));
-    this.showFocus?.(pathFocus(this.trees, this.path, this.vertex));
+    this.showFocus?.(pathFocus(this.trees, this.path, this.vertex, this.settings?.bounceSampling));
+    // As the Whitted debugger does, so that a path level's task can ask for a step.
+    const recorded = this.paths?.paths[this.path];
+    if (recorded) this.report?.({ type: 'debugger.stepped', step: this.vertex, of: recorded.vertices.length, ray: pathRayOf(recorded, this.vertex) });
   }
 
   private move(pathStep: number, vertex: number | 'start' | 'end'): void {
@@ -207,43 +201,9 @@ export class RtPathDebugger extends LocalizedElement {
         <span class="muted">${msg('Keys: ← → ↑ ↓ Home End')}</span>
       </div>
       <p role="status" aria-live="polite">${vertexText(row, this.settings?.bounceSampling ?? 'cosine')} ${survivalText(row)}</p>
-      <div class="table" tabindex="0" @keydown=${this.onKeyDown}>${this.renderTable(rows)}</div>
+      ${vertexEstimate(row)}
+      <div class="table" tabindex="0" @keydown=${this.onKeyDown}>${pathTable(rows, this.vertex)}</div>
       ${this.renderPixel(paths, rows)}`;
-  }
-
-  private renderTable(rows: PathVertexRow[]) {
-    return html`<table>
-      <thead>
-        <tr>
-          <th>#</th>
-          <th>${msg('Event')}</th>
-          <th title=${msg('L = Le + f·cosθ·Li / pdf, unrolled along the path: the throughput carries each factor f·cosθ/pdf; the light found is added times the throughput.')}>f·cosθ/pdf</th>
-          <th>${msg('Throughput so far')}</th>
-          <th>${msg('Added here')}</th>
-          <th>${msg('Path’s sum')}</th>
-        </tr>
-      </thead>
-      <tbody>
-        ${rows.slice(0, this.vertex + 1).map(
-          (row, i) => html`<tr class=${i === this.vertex ? 'current' : ''}>
-            <td>${i}</td>
-            <td>${eventName(row.event)}${row.objectId ? ` · ${row.objectId}` : ''}${row.lightId ? ` · ${row.lightId}` : ''}</td>
-            <td>
-              ${row.factor ? colorText(row.factor) : '–'}
-              ${row.cosTheta !== null && row.pdf !== null ? html`<small>cosθ = ${pathNumber.format(row.cosTheta)}, pdf = ${pathNumber.format(row.pdf)}</small>` : nothing}
-              ${row.survival !== null ? html`<small>÷ ${pathNumber.format(row.survival)} (${msg('roulette')})</small>` : nothing}
-            </td>
-            <td>${colorText(row.throughput)}</td>
-            <td>
-              ${row.lightSamples.map((sample) => html`<small>${lightSampleText(sample)}</small>`)}
-              ${row.emitted.some((value) => value !== 0) ? html`<small>${msg(str`Met by this ray: ${colorText(row.emitted)}`)}</small>` : nothing}
-              ${row.lightSamples.length === 0 && row.emitted.every((value) => value === 0) ? '–' : nothing}
-            </td>
-            <td>${colorText(row.runningSum)}</td>
-          </tr>`,
-        )}
-      </tbody>
-    </table>`;
   }
 
   /** The path's contribution, and the pixel as the mean of all the pixel's paths. */
@@ -251,6 +211,7 @@ export class RtPathDebugger extends LocalizedElement {
     const done = this.vertex === rows.length - 1;
     const listed = paths.paths.map((path) => colorText(path.contribution)).join(' ');
     return html`<p>
+        ${msg('The path’s sum is the Added here column added up.')}
         ${done ? msg(str`This path adds ${colorText(paths.paths[this.path].contribution)} to the pixel.`) : msg('Step to the path’s end to see what it adds to the pixel.')}
         ${
           paths.pathCount === 1
@@ -260,7 +221,7 @@ export class RtPathDebugger extends LocalizedElement {
       </p>
       <p class="muted">
         ${paths.paths.length === 1 ? msg(str`The first path adds: ${listed}.`) : msg(str`The first ${paths.paths.length} paths add: ${listed}.`)}
-        ${msg('The 3D view draws them up to this vertex: this path bright, the others dimmed, light samples to their points on the lights (grey dashes: blocked), each ray as wide as the path’s throughput.')}
+        ${msg('The 3D view draws them up to this vertex: this path bright, the others dimmed; the legend says what the dashes, widths and the lobe mean.')}
       </p>`;
   }
 }

@@ -6,6 +6,8 @@ import { FILLED_GAP_KEYS, GAP_FILL, legendKeys, paletteNameFor, RAY_DASHES, type
 import { rayColorKeyHint, rayColorKeyName } from '../ray-names.ts';
 import { StorePanel } from './store-panel.ts';
 import { timeKey, timeKeyStyles } from './time-key.ts';
+import { pathKey, pathKeyStyles } from './path-key.ts';
+import { PATH_DASHES } from '../../../view/path-dashes.ts';
 
 /**
  * @summary The ray colours' legend: a swatch and the name of each kind of ray (never the
@@ -16,7 +18,11 @@ import { timeKey, timeKeyStyles } from './time-key.ts';
  *
  * While "Colour by time" is on, a key of the time colours follows (time-key.ts).
  *
- * Reads `store` (rays.colorBlindPalette, rays.colorByTime, scene.settings.shadows); changes nothing.
+ * In path mode with a pixel chosen, the swatches take the paths' patterns and a key of the
+ * paths' marks follows (path-key.ts).
+ *
+ * Reads `store` (rays.colorBlindPalette, rays.colorByTime, scene.settings.shadows and
+ * integrator, selectedPixel); changes nothing.
  */
 export class RtRayLegend extends StorePanel<'rays'> {
   protected readonly controlPanel = 'rays';
@@ -25,6 +31,7 @@ export class RtRayLegend extends StorePanel<'rays'> {
     // The dash between a name and its detail is read out; on screen the line break stands for it.
     visuallyHiddenStyles,
     timeKeyStyles,
+    pathKeyStyles,
     css`
       ul {
         display: grid;
@@ -73,15 +80,18 @@ export class RtRayLegend extends StorePanel<'rays'> {
 
   override render() {
     const palette = rayPalette(paletteNameFor(this.state?.rays.colorBlindPalette ?? false));
+    // Path mode draws a chosen pixel's sample paths, in their own patterns (path-dashes.ts).
+    const paths = this.state?.scene.settings.integrator === 'path' && this.state.selectedPixel !== null;
+    const dashes = paths ? PATH_DASHES : RAY_DASHES;
     return html`<ul aria-label=${msg('Ray colours')}>
       ${legendKeys(this.state?.scene.settings.shadows !== false).map(
         (key) => html`<li title=${rayColorKeyHint(key)} data-key=${key}>
-          <span class=${STOPPED_KEYS.has(key) ? 'swatch stopped' : 'swatch'} style=${styleMap({ background: swatch(palette[key], key), color: palette[key] })} aria-hidden="true"></span>
+          <span class=${STOPPED_KEYS.has(key) ? 'swatch stopped' : 'swatch'} style=${styleMap({ background: swatch(palette[key], key, dashes), color: palette[key] })} aria-hidden="true"></span>
           ${entryName(rayColorKeyName(key))}
         </li>`,
       )}
     </ul>
-    ${timeKey(this.state?.rays.colorByTime ?? false)}`;
+    ${timeKey(this.state?.rays.colorByTime ?? false)} ${pathKey(paths)}`;
   }
 }
 
@@ -99,8 +109,8 @@ function entryName(name: string) {
  * The swatch's paint: the ray's colour in its dashes (RAY_DASHES at 150 px per metre), their
  * gaps open or filled as the view draws them, or solid.
  */
-function swatch(color: string, key: RayColorKey): string {
-  const [dash, gap] = RAY_DASHES[key].map((metres) => metres * 150);
+function swatch(color: string, key: RayColorKey, dashes: typeof RAY_DASHES): string {
+  const [dash, gap] = dashes[key].map((metres) => metres * 150);
   const between = FILLED_GAP_KEYS.has(key) ? GAP_FILL : 'transparent';
   const line = dash > 0 ? `repeating-linear-gradient(90deg, ${color} 0 ${dash}px, ${between} ${dash}px ${dash + gap}px)` : color;
   return line;

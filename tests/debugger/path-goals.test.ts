@@ -1,0 +1,35 @@
+import { describe, expect, it } from 'vitest';
+import { pathRayOf } from '../../src/debugger/path-goals.ts';
+import { labPaths } from '../../src/tracer/lab-paths.ts';
+import { matte, tracerSceneFrom } from '../support/test-scene.ts';
+
+const scene = tracerSceneFrom({
+  camera: { position: [0, 1, 3.5], target: [0, 0.5, 0], fov: 45, pixels: [4, 4] },
+  settings: { integrator: 'path', background: [0.2, 0.2, 0.2], maxDepth: 4, pathSamples: 16 },
+  objects: [
+    { id: 'floor', shape: 'plane', scale: [3, 1, 3], material: matte([0.7, 0.7, 0.7]) },
+    { id: 'ball', shape: 'sphere', position: [0, 0.5, 0], scale: [0.5, 0.5, 0.5], material: matte([0.8, 0.3, 0.3]) },
+  ],
+  lights: [{ id: 'panel', type: 'area', position: [0, 2, 0], size: [0.5, 0.5], color: [1, 1, 1], intensity: 5, samples: 1 }],
+});
+
+describe('the path debugger’s steps as the quest engine sees them', () => {
+  it('reports no ray at the camera, then the ray that arrived at each vertex', () => {
+    const paths = labPaths(scene, 2, 2, 1, 16).paths;
+    for (const path of paths) {
+      expect(pathRayOf(path, 0)).toBeNull();
+      for (let i = 1; i < path.vertices.length; i++) {
+        const ray = pathRayOf(path, i)!;
+        const at = path.vertices[i]!;
+        expect(ray.type).toBe(i === 1 ? 'primary' : 'reflect');
+        expect(ray.depth).toBe(i - 1);
+        expect(ray.objectId).toBe(at.objectId);
+        expect(ray.hit).toBe(at.event !== 'escaped');
+        expect(ray.from).toBe(path.vertices[i - 1]!.objectId);
+      }
+      expect(pathRayOf(path, path.vertices.length)).toBeNull();
+    }
+    // The pixel looks at the ball: its first ray arrives there from the camera.
+    expect(paths.some((path) => pathRayOf(path, 1)?.objectId === 'ball')).toBe(true);
+  });
+});
