@@ -73,11 +73,13 @@ export type LabAction =
   | { type: 'view.zoomed' }
   | { type: 'view.flew-to-camera' }
   | { type: 'render.started' }
-  | { type: 'render.finished'; ms: number }
+  /** `rays`: the rays the render traced (the render window counts them; a solution's render leaves it out). */
+  | { type: 'render.finished'; ms: number; rays?: number }
   | { type: 'render.cancelled' }
   | { type: 'render.saved' }
   /** A challenge's pictures were compared after a render: `difference` is challenge-closeness.ts's measure. */
-  | { type: 'challenge.compared'; difference: number }
+  /** The referee's counts since the challenge started, this render included (quest/challenge-par.ts). */
+  | { type: 'challenge.compared'; difference: number; renders: number; changes: number; rays: number }
   /** The scene was saved as a file or copied as a link (the sandbox level and its badge listen). */
   | { type: 'scene.saved'; to: 'file' | 'link' }
   | { type: 'panel.opened'; panel: string }
