@@ -106,9 +106,19 @@ export const loggedEventSchema = z.discriminatedUnion('type', [
   /**
    * A challenge's pictures compared after a render (logs from issue 41 on): `difference` is the
    * measure, within the threshold or not; the renders, changes and rays counted since the
-   * challenge started, this render included (later logs; the first ones lack them).
+   * challenge started, this render included, the challenge task and the match score the
+   * learner read (challenge-closeness.ts matchScore) (later logs; the first ones lack them).
    */
-  z.strictObject({ t, id, type: z.literal('challenge.compared'), level: level.nullable(), difference: z.number().min(0), ...optionalCounts }),
+  z.strictObject({
+    t,
+    id,
+    type: z.literal('challenge.compared'),
+    level: level.nullable(),
+    difference: z.number().min(0),
+    ...optionalCounts,
+    task: task.optional(),
+    score: z.number().min(0).max(100).optional(),
+  }),
   /** The tab was hidden or shown again: active time is the time in between hidden ones. */
   z.strictObject({ t, id, type: z.literal('tab.hidden') }),
   z.strictObject({ t, id, type: z.literal('tab.visible') }),

@@ -20,6 +20,7 @@ import type { LocalizedText } from './localized-text.ts';
 import { pointsOf, PROGRESS_KIND, PROGRESS_VERSION, type LevelProgress, type Progress, type QuestSettings } from './progress.ts';
 import { levelBadgesEarned, pointsFor, starsEarned } from './scoring.ts';
 import type { Stars } from './challenge-par.ts';
+import { matchScore } from './challenge-closeness.ts';
 import { holdsAll, mergeProgress } from './progress-merge.ts';
 import { reconcileLevels } from './progress-reconcile.ts';
 
@@ -312,10 +313,7 @@ export class QuestEngine {
     this.lastActivity = this.log.now();
     const levelId = this.active?.level.id ?? null;
     if (action.type === 'render.started') this.append({ type: 'render.started', level: levelId });
-    if (action.type === 'challenge.compared') {
-      const { difference, renders, changes, rays } = action;
-      this.append({ type: 'challenge.compared', level: levelId, difference, renders, changes, rays });
-    }
+    if (action.type === 'challenge.compared') this.append(comparisonEvent(this.active, action));
     if (action.type === 'render.finished') {
       this.append({ type: 'render.finished', level: levelId, ms: action.ms });
       this.award({ kind: 'first-render' });
@@ -726,4 +724,13 @@ export class QuestEngine {
     this.changed = false;
     for (const listener of [...this.listeners]) listener(events);
   }
+}
+
+/** A comparison as logged: with the counts, and the open level's challenge task and the match score its learner read. */
+function comparisonEvent(active: ActiveLevel | null, action: Extract<LabAction, { type: 'challenge.compared' }>): QuestEvent {
+  const { difference, renders, changes, rays } = action;
+  const event = { type: 'challenge.compared' as const, level: active?.level.id ?? null, difference, renders, changes, rays };
+  const task = active?.level.tasks.find((candidate) => active.tallies.has(candidate.id) && candidate.goal.kind === 'challenge');
+  if (task?.goal.kind !== 'challenge') return event;
+  return { ...event, task: task.id, score: matchScore(difference, task.goal.challenge.measure.threshold) };
 }

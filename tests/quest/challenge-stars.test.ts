@@ -89,10 +89,11 @@ describe('a matched challenge', () => {
     ]);
     expect(engine.progress.levels.match.tasks.match).toEqual({ how: 'done', points: 7, stars: 2 });
     const compared = engine.events.filter((event) => event.type === 'challenge.compared');
-    expect(compared.map((event) => [event.difference, event.renders, event.changes, event.rays])).toEqual([
-      [0.2, 1, 1, 1000],
-      [0.05, 2, 2, 2000],
-      [0.005, 3, 3, 3000],
+    // Logged with the challenge task and the match score the learner read (threshold 0.01: 75 at 0.01).
+    expect(compared.map((event) => [event.task, event.difference, event.renders, event.changes, event.rays, event.score])).toEqual([
+      ['match', 0.2, 1, 1, 1000, 42],
+      ['match', 0.05, 2, 2, 2000, 57],
+      ['match', 0.005, 3, 3, 3000, 82],
     ]);
     const completed = engine.events.find(
       (event): event is Extract<LoggedEvent, { type: 'task.completed' }> => event.type === 'task.completed' && event.task === 'match',
