@@ -1,6 +1,7 @@
 import type { LoggedEvent } from '../quest/event-log.ts';
 import { fnv1a } from './assignment-id.ts';
 import { hintsOpened, readLog } from './task-attempts.ts';
+import type { ChallengeTries } from './challenge-attempt.ts';
 import { assignmentLabel, exportOwner, type ExportInput } from './export-context.ts';
 import { isoAt, isoDuration } from './iso-duration.ts';
 import { NO_OPTION_TEXTS, optionId, type OptionText } from './quiz-options.ts';
@@ -103,6 +104,7 @@ export function exportXapi(input: ExportInput): XapiStatement[] {
         [EXTENSIONS.hintsOffered]: attempt.hintsOffered,
         [EXTENSIONS.hintsOpened]: hintsOpened(attempt),
         [EXTENSIONS.explanationOpens]: attempt.explanationOpens,
+        ...challengeExtensions(attempt.challenge),
       },
     };
     add(attempt.how === 'skipped' ? VERBS.skipped : VERBS.completed, activities.task(attempt.level, attempt.task), attempt.completedAt, result, attempt.level);
@@ -171,4 +173,16 @@ function statementId(statement: Omit<XapiStatement, 'id'>, index: number): strin
   const hex = [0x811c9dc5, 0x01000193, 0x2545f491, 0x9e3779b9].map((seed) => fnv1a(text, seed).toString(16).padStart(8, '0')).join('');
   const variant = ((parseInt(hex[16], 16) & 0x3) | 0x8).toString(16);
   return `${hex.slice(0, 8)}-${hex.slice(8, 12)}-8${hex.slice(13, 16)}-${variant}${hex.slice(17, 20)}-${hex.slice(20, 32)}`;
+}
+
+/** A challenge's tries as the CSV's challenge_* columns (xAPI extensions hold numbers and text). */
+function challengeExtensions(tries: ChallengeTries | undefined): Record<string, string | number> {
+  if (!tries) return {};
+  return {
+    [EXTENSIONS.challengeRenders]: tries.renders,
+    [EXTENSIONS.challengeChanges]: tries.changes,
+    [EXTENSIONS.challengeRays]: tries.rays,
+    [EXTENSIONS.challengeScores]: tries.scores.join(' '),
+    ...(tries.stars === null ? {} : { [EXTENSIONS.challengeStars]: tries.stars }),
+  };
 }

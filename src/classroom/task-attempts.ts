@@ -1,5 +1,6 @@
 import type { EventLogData, HowCompleted, LoggedEvent } from '../quest/event-log.ts';
 import type { TaskKind } from '../quest/goal.ts';
+import { addComparison, type ChallengeTries } from './challenge-attempt.ts';
 
 /**
  * A learner's event log read back as task attempts and level visits: what the dashboard
@@ -54,6 +55,8 @@ export interface TaskAttempt {
   quizChoice: number | null;
   /** "Explain more" opened for the task, during the attempt or after it ended (then counted on the task's last attempt). */
   explanationOpens: number;
+  /** A challenge task's tries in this attempt (challenge-attempt.ts); absent for other tasks and in logs before they were recorded. */
+  challenge?: ChallengeTries;
 }
 
 export interface LevelVisit {
@@ -190,6 +193,7 @@ export function readLog(log: EventLogData): ReadLog {
         touch(event.level, event.task, event.t);
         const attempt = openAttempts.get(key(event.level, event.task));
         if (attempt) closeAttempt(attempt, event.t, { how: event.how, points: event.points });
+        if (attempt?.attempt.challenge && event.stars !== undefined) attempt.attempt.challenge.stars = event.stars;
         break;
       }
       case 'hint.offered': {
@@ -208,6 +212,11 @@ export function readLog(log: EventLogData): ReadLog {
         // The show-me rung is counted when it is used: the task is then completed as 'shown'.
         else if (event.step === 'text') attempt.hintsText++;
         else if (event.step === 'guidance') attempt.hintsGuidance++;
+        break;
+      }
+      case 'challenge.compared': {
+        const attempt = event.level === null || event.task === undefined ? undefined : openAttempts.get(key(event.level, event.task))?.attempt;
+        if (attempt) attempt.challenge = addComparison(attempt.challenge, event);
         break;
       }
       case 'quiz.answered': {

@@ -69,4 +69,10 @@ export const EXTENSIONS = {
   utcOffsetMin: `${XAPI_BASE}/extensions/utc-offset-min`,
   choiceText: `${XAPI_BASE}/extensions/choice-text`,
   explanationOpens: `${XAPI_BASE}/extensions/explanation-opens`,
+  /** A challenge's tries, as the CSV's challenge_* columns (challenge-attempt.ts). */
+  challengeRenders: `${XAPI_BASE}/extensions/challenge-renders`,
+  challengeChanges: `${XAPI_BASE}/extensions/challenge-changes`,
+  challengeRays: `${XAPI_BASE}/extensions/challenge-rays`,
+  challengeScores: `${XAPI_BASE}/extensions/challenge-scores`,
+  challengeStars: `${XAPI_BASE}/extensions/challenge-stars`,
 } as const;

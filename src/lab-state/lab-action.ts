@@ -73,11 +73,12 @@ export type LabAction =
   | { type: 'view.zoomed' }
   | { type: 'view.flew-to-camera' }
   | { type: 'render.started' }
-  | { type: 'render.finished'; ms: number }
+  /** `rays`: the rays the render traced (the render window counts them; a solution's render leaves it out). */
+  | { type: 'render.finished'; ms: number; rays?: number }
   | { type: 'render.cancelled' }
   | { type: 'render.saved' }
-  /** A challenge's pictures were compared after a render: `difference` is challenge-closeness.ts's measure. */
-  | { type: 'challenge.compared'; difference: number }
+  /** A challenge's pictures were compared after a render: `difference` is challenge-closeness.ts's measure, the counts the referee's since the challenge started, this render included (quest/challenge-par.ts). */
+  | { type: 'challenge.compared'; difference: number; renders: number; changes: number; rays: number }
   /** A code lab's run was graded: `passed` of `total` cases, `failed` the kind of the first that failed (code-lab-grading.ts). */
   | { type: 'code.graded'; lab: string; passed: number; total: number; failed: string | null }
   /** The scene was saved as a file or copied as a link (the sandbox level and its badge listen). */

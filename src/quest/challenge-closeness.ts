@@ -61,9 +61,19 @@ function clamp01(value: number): number {
   return Math.min(1, Math.max(0, value));
 }
 
-/** Stars for a match after `renders` renders: 3 at or under par, 2 within 1.5 × par, else 1 (the rule the panel shows before the start). */
-export function challengeStars(renders: number, par: number): 1 | 2 | 3 {
-  if (renders <= par) return 3;
-  if (renders <= Math.floor(par * 1.5)) return 2;
-  return 1;
+/** The match score of the threshold itself: a score at or above it is a match. */
+export const MATCH_SCORE = 75;
+
+/**
+ * The difference as a pupil reads it (docs/levels.md): a match score from 0 to 100,
+ * 75 − 25 · log₁₀(difference / threshold), rounded down. A raw difference of 0.0001 says
+ * little; this says how close a render is to a match, the same way in every challenge:
+ * 75 or more is a match, every ten times closer to the target adds 25 (100 at a tenth of
+ * the threshold), every ten times further takes 25 off (0 at a thousand times it). Rounded
+ * down, so that a score shown as 75 is always a match.
+ */
+export function matchScore(difference: number, threshold: number): number {
+  if (difference <= 0) return 100;
+  const score = MATCH_SCORE - 25 * Math.log10(difference / threshold);
+  return Math.min(100, Math.max(0, Math.floor(score)));
 }

@@ -1,6 +1,7 @@
 import { z } from 'zod';
 import { reasonIssue } from '../scene/scene-issues.ts';
 import { badgeSchema } from './badges.ts';
+import { optionalCounts, starsSchema } from './challenge-par.ts';
 import { TASK_KINDS } from './goal.ts';
 import { ID_MAX } from './kebab-id.ts';
 
@@ -72,7 +73,18 @@ export const loggedEventSchema = z.discriminatedUnion('type', [
   z.strictObject({ t, id, type: z.literal('task.shown'), level, task, ...taskFlags, kind: z.enum(TASK_KINDS).optional() }),
   /** The learner's first action towards an optional task (its time starts here, not when the level opened). */
   z.strictObject({ t, id, type: z.literal('task.started'), level, task }),
-  z.strictObject({ t, id, type: z.literal('task.completed'), level, task, ...taskFlags, how: z.enum(HOW_COMPLETED), points: z.number().min(0) }),
+  /** `stars`: a challenge matched by the learner, its golf score (challenge-par.ts; later logs). */
+  z.strictObject({
+    t,
+    id,
+    type: z.literal('task.completed'),
+    level,
+    task,
+    ...taskFlags,
+    how: z.enum(HOW_COMPLETED),
+    points: z.number().min(0),
+    stars: starsSchema.optional(),
+  }),
   /**
    * After idle time on its task, the app offered the next rung: the learner sees that a hint
    * is ready, not the hint. It costs nothing; opening it is a `hint.shown` with trigger
@@ -91,8 +103,22 @@ export const loggedEventSchema = z.discriminatedUnion('type', [
   z.strictObject({ t, id, type: z.literal('quiz.explained'), level, task }),
   z.strictObject({ t, id, type: z.literal('render.started'), level: level.nullable() }),
   z.strictObject({ t, id, type: z.literal('render.finished'), level: level.nullable(), ms: z.number().min(0) }),
-  /** A challenge's pictures compared after a render (logs from issue 41 on): `difference` is the measure, within the threshold or not. */
-  z.strictObject({ t, id, type: z.literal('challenge.compared'), level: level.nullable(), difference: z.number().min(0) }),
+  /**
+   * A challenge's pictures compared after a render (logs from issue 41 on): `difference` is the
+   * measure, within the threshold or not; the renders, changes and rays counted since the
+   * challenge started, this render included, the challenge task and the match score the
+   * learner read (challenge-closeness.ts matchScore) (later logs; the first ones lack them).
+   */
+  z.strictObject({
+    t,
+    id,
+    type: z.literal('challenge.compared'),
+    level: level.nullable(),
+    difference: z.number().min(0),
+    ...optionalCounts,
+    task: task.optional(),
+    score: z.number().min(0).max(100).optional(),
+  }),
   /** The tab was hidden or shown again: active time is the time in between hidden ones. */
   z.strictObject({ t, id, type: z.literal('tab.hidden') }),
   z.strictObject({ t, id, type: z.literal('tab.visible') }),

@@ -2,6 +2,7 @@ import { z } from 'zod';
 import type { LabActionType } from '../lab-state/lab-action.ts';
 import { reasonIssue } from '../scene/scene-issues.ts';
 import { wholeNumberIn } from '../scene/scene-schema-parts.ts';
+import { challengeParSchema } from './challenge-par.ts';
 import { actionFields, APP_ONLY_ACTION, LAB_ACTION_TYPES, labActionSchema } from './lab-action-schema.ts';
 import { chosenBy } from './chosen-schema.ts';
 import { COMPARISONS, conditionSchema, problemWithComparison, type Comparison, type JsonValue } from './condition.ts';
@@ -283,7 +284,7 @@ const challengeGoalSchema = z
           .describe('Width and height of both pictures compared, in pixels.'),
         threshold: z.number().gt(0).max(1).describe('The largest mean difference per pixel and colour channel, in linear light (0–1), that counts as a match.'),
       }),
-      par: z.strictObject({ renders: wholeNumberIn([1, 50]).describe('Renders for three stars: two stars up to 1.5 times as many, one star for any match.') }),
+      par: challengeParSchema,
     }),
   })
   .transform((goal) => ({ kind: 'challenge' as const, ...goal }));

@@ -6,6 +6,7 @@ import { sceneSchema } from '../scene/scene-schema.ts';
 import { withReason } from '../scene/scene-issues.ts';
 import { gotOf } from '../util/issue.ts';
 import { isRecord } from '../util/is-record.ts';
+import { challengeCountsShape } from './challenge-par.ts';
 import { declaredViewSchema } from './declared-view-schema.ts';
 import { optionChanges } from './option-changes.ts';
 
@@ -65,10 +66,10 @@ export const labActionSchema = z.discriminatedUnion('type', [
   fact('view.zoomed'),
   fact('view.flew-to-camera'),
   fact('render.started'),
-  z.strictObject({ type: z.literal('render.finished'), ms: z.number().min(0) }),
+  z.strictObject({ type: z.literal('render.finished'), ms: z.number().min(0), rays: z.int().min(0).optional() }),
   fact('render.cancelled'),
   fact('render.saved'),
-  z.strictObject({ type: z.literal('challenge.compared'), difference: z.number().min(0) }),
+  z.strictObject({ type: z.literal('challenge.compared'), difference: z.number().min(0), ...challengeCountsShape }),
   z.strictObject({ type: z.literal('code.graded'), lab: z.string().min(1), passed: z.int().min(0), total: z.int().min(1), failed: z.string().nullable() }),
   z.strictObject({ type: z.literal('scene.saved'), to: z.enum(['file', 'link']) }),
   z.strictObject({ type: z.literal('panel.opened'), panel: z.string().min(1) }),

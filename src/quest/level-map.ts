@@ -4,9 +4,10 @@ import { playableLevels, type LevelCatalog } from './level-index.ts';
 import type { Level } from './level-schema.ts';
 import type { LocalizedText } from './localized-text.ts';
 import type { LevelProgress } from './progress.ts';
+import type { Stars } from './challenge-par.ts';
 
 /**
- * The level map: chapters, and for each level its lock, tick and points. A level opens when
+ * The level map: chapters, and for each level its lock, tick, points and a challenge's stars. A level opens when
  * every playable level before it is passed (the gate); broken levels are listed with their
  * reasons and passed over, so one bad file does not lock the rest of the game.
  */
@@ -22,6 +23,8 @@ export interface LevelMapEntry {
   level?: Level;
   points: number;
   maxPoints: number;
+  /** The golf score of the level's challenge, once the learner matched it (the first challenge task's saved stars). */
+  stars?: Stars;
 }
 
 export interface ChapterMapView {
@@ -55,7 +58,14 @@ export function levelMap(catalog: LevelCatalog, progress: ProgressByLevel, assig
         level: entry.level,
         points: done.reduce((sum, task) => sum + task.points, 0),
         maxPoints: entry.level.tasks.reduce((sum, task) => sum + task.points, 0),
+        ...starsOf(entry.level, progress[entry.id]),
       };
     }),
   }));
+}
+
+function starsOf(level: Level, record: LevelProgress | undefined): { stars?: Stars } {
+  const challenge = level.tasks.find((task) => task.goal.kind === 'challenge');
+  const stars = challenge && record?.tasks[challenge.id]?.stars;
+  return stars === undefined ? {} : { stars };
 }

@@ -17,7 +17,7 @@ export function reconcileLevels(levels: Record<string, LevelProgress>, known: re
     const tasks: Record<string, TaskRecord> = {};
     for (const [taskId, task] of Object.entries(record.tasks)) {
       const fromFile = level?.tasks.find((candidate) => candidate.id === taskId);
-      const points = fromFile ? pointsFor(fromFile, task.how, task.correct) : Math.min(task.points, TASK_POINTS[1]);
+      const points = fromFile ? pointsFor(fromFile, task.how, task.correct, task.stars) : Math.min(task.points, TASK_POINTS[1]);
       tasks[taskId] = points === task.points ? task : { ...task, points };
     }
     reconciled[id] = { ...record, tasks };

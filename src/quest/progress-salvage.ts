@@ -117,7 +117,7 @@ function fixFor(draft: Record<string, unknown>, issue: Issue, nowIso: string): F
   }
 }
 
-/** `levels.<id>…`: the level, one of its tasks, a task's points or `correct`, or its hint count. */
+/** `levels.<id>…`: the level, one of its tasks, a task's points, `correct` or `stars`, or its hint count. */
 function levelFix(draft: Record<string, unknown>, path: readonly Key[]): Fix | null {
   const [, id, part, task, field] = path;
   if (path.length === 1) return { at: path, kind: 'set', value: {}, note: 'levels left out' };
@@ -128,7 +128,7 @@ function levelFix(draft: Record<string, unknown>, path: readonly Key[]): Fix | n
   if (part !== 'tasks') return { at: path.slice(0, 2), kind: 'drop', note: 'level left out' };
   if (path.length === 3) return { at: path, kind: 'set', value: {}, note: 'tasks left out' };
   if (field === 'points' && path.length === 5) return { at: path, kind: 'set', value: 0, note: 'worked out again from the level file' };
-  if (field === 'correct' && path.length === 5) return { at: path, kind: 'drop', note: 'left out' };
+  if ((field === 'correct' || field === 'stars') && path.length === 5) return { at: path, kind: 'drop', note: 'left out' };
   return task === undefined ? null : { at: path.slice(0, 4), kind: 'drop', note: 'task left out' };
 }
 

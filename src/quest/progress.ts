@@ -2,6 +2,7 @@ import { z } from 'zod';
 import { sceneSchema } from '../scene/scene-schema.ts';
 import type { Scene } from '../scene/scene.ts';
 import { earnedBadgeSchema } from './badges.ts';
+import { starsSchema } from './challenge-par.ts';
 import { eventLogSchema, HOW_COMPLETED, newEventLogData, randomSessionId, type QuestClock } from './event-log.ts';
 import { ID_MAX } from './kebab-id.ts';
 import { LOCALES } from './localized-text.ts';
@@ -28,6 +29,8 @@ const taskRecordSchema = z.strictObject({
   points: z.number().min(0),
   /** Quiz tasks only: whether the prediction was right. */
   correct: z.boolean().optional(),
+  /** Challenge tasks matched by the learner (saves from issue 41 on): the golf score, which sets the points (scoring.ts). */
+  stars: starsSchema.optional(),
 });
 export type TaskRecord = z.output<typeof taskRecordSchema>;
 

@@ -18,7 +18,9 @@ import { playableLevels, type LevelCatalog } from './level-index.ts';
 import type { Level, Task } from './level-schema.ts';
 import type { LocalizedText } from './localized-text.ts';
 import { pointsOf, PROGRESS_KIND, PROGRESS_VERSION, type LevelProgress, type Progress, type QuestSettings } from './progress.ts';
-import { levelBadgesEarned, pointsFor } from './scoring.ts';
+import { levelBadgesEarned, pointsFor, starsEarned } from './scoring.ts';
+import type { Stars } from './challenge-par.ts';
+import { matchScore } from './challenge-closeness.ts';
 import { holdsAll, mergeProgress } from './progress-merge.ts';
 import { reconcileLevels } from './progress-reconcile.ts';
 
@@ -77,6 +79,8 @@ export interface TaskView {
   points: number;
   /** For an answered quiz: whether the prediction was right. */
   correct?: boolean;
+  /** For a challenge the learner matched: its golf score, as saved. */
+  stars?: Stars;
   /** For a quiz or estimate: its stage, the order of its choices, the learner's prediction. */
   prediction?: PredictionView;
   /** For the task that checks a prediction, while it is to do: that prediction and its quiz. */
@@ -309,7 +313,7 @@ export class QuestEngine {
     this.lastActivity = this.log.now();
     const levelId = this.active?.level.id ?? null;
     if (action.type === 'render.started') this.append({ type: 'render.started', level: levelId });
-    if (action.type === 'challenge.compared') this.append({ type: 'challenge.compared', level: levelId, difference: action.difference });
+    if (action.type === 'challenge.compared') this.append(comparisonEvent(this.active, action));
     if (action.type === 'render.finished') {
       this.append({ type: 'render.finished', level: levelId, ms: action.ms });
       this.award({ kind: 'first-render' });
@@ -332,7 +336,10 @@ export class QuestEngine {
         if (live) continue;
         const next = tallyAction(task.goal, tally, state, action);
         active.tallies.set(taskId, next);
-        if (checkGoal(task.goal, state, next)) this.complete(active, task, active.shownByApp.has(taskId) ? 'shown' : 'done');
+        if (!checkGoal(task.goal, state, next)) continue;
+        const how = active.shownByApp.has(taskId) ? 'shown' : 'done';
+        // A challenge matched by the learner keeps its golf score; one shown by "show me" earns none.
+        this.complete(active, task, how, undefined, how === 'done' ? starsEarned(task.goal, action) : undefined);
       }
     }
     this.publish();
@@ -558,17 +565,27 @@ export class QuestEngine {
     }
   }
 
-  private complete(active: ActiveLevel, task: Task, how: HowCompleted, correct?: boolean): void {
+  private complete(active: ActiveLevel, task: Task, how: HowCompleted, correct?: boolean, stars?: Stars): void {
     const { level, required } = active;
     const before = this.recordOf(level.id);
     const wasPassed = isPassed(level, before, required);
-    const points = pointsFor(task, how, correct);
-    const record = { tasks: { ...before.tasks, [task.id]: { how, points, ...(correct === undefined ? {} : { correct }) } }, hintsUsed: before.hintsUsed };
+    const points = pointsFor(task, how, correct, stars);
+    const scored = { ...(correct === undefined ? {} : { correct }), ...(stars === undefined ? {} : { stars }) };
+    const record = { tasks: { ...before.tasks, [task.id]: { how, points, ...scored } }, hintsUsed: before.hintsUsed };
     this.levelProgress = { ...this.levelProgress, [level.id]: record };
     active.tallies.delete(task.id);
     if (active.ring?.task === task.id) active.ring = null;
     const isRequired = required.has(task.id);
-    this.append({ type: 'task.completed', level: level.id, task: task.id, mandatory: task.mandatory, required: isRequired, how, points });
+    this.append({
+      type: 'task.completed',
+      level: level.id,
+      task: task.id,
+      mandatory: task.mandatory,
+      required: isRequired,
+      how,
+      points,
+      ...(stars === undefined ? {} : { stars }),
+    });
 
     if (isPassed(level, record, required) && !wasPassed) {
       this.append({ type: 'level.passed', level: level.id });
@@ -684,6 +701,7 @@ export class QuestEngine {
       // A prediction's points show once its result has been observed (see `points`).
       points: prediction?.stage === 'wait' ? 0 : (done?.points ?? 0),
       ...(done?.correct === undefined ? {} : { correct: done.correct }),
+      ...(done?.stars === undefined ? {} : { stars: done.stars }),
       ...(prediction ? { prediction } : {}),
       ...(checks ? { checks } : {}),
       hints: task.hints.slice(0, hints.texts),
@@ -706,4 +724,13 @@ export class QuestEngine {
     this.changed = false;
     for (const listener of [...this.listeners]) listener(events);
   }
+}
+
+/** A comparison as logged: with the counts, and the open level's challenge task and the match score its learner read. */
+function comparisonEvent(active: ActiveLevel | null, action: Extract<LabAction, { type: 'challenge.compared' }>): QuestEvent {
+  const { difference, renders, changes, rays } = action;
+  const event = { type: 'challenge.compared' as const, level: active?.level.id ?? null, difference, renders, changes, rays };
+  const task = active?.level.tasks.find((candidate) => active.tallies.has(candidate.id) && candidate.goal.kind === 'challenge');
+  if (task?.goal.kind !== 'challenge') return event;
+  return { ...event, task: task.id, score: matchScore(difference, task.goal.challenge.measure.threshold) };
 }

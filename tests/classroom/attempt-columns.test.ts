@@ -64,6 +64,7 @@ const attempts: TaskAttempt[] = [
     quizCorrect: false,
     quizChoice: null,
     explanationOpens: 8,
+    challenge: { renders: 21, changes: 22, rays: 23, scores: [24, 25.5], stars: 3 },
   },
   {
     level: '02-shadows',

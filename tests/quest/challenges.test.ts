@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import type { LabAction } from '../../src/lab-state/lab-action.ts';
 import { initialState } from '../../src/lab-state/lab-state.ts';
 import { reduce } from '../../src/lab-state/lab-reducer.ts';
-import { challengeScenes, challengeStars, meanLinearDifference, pixelDifferences } from '../../src/quest/challenge-closeness.ts';
+import { challengeScenes, MATCH_SCORE, matchScore, meanLinearDifference, pixelDifferences } from '../../src/quest/challenge-closeness.ts';
 import { checkGoal, NO_EVENTS, tallyAction, touchesGoal } from '../../src/quest/goal-check.ts';
 import { goalSchema, kindOfGoal, type ChallengeGoal } from '../../src/quest/goal.ts';
 import { levelSchema } from '../../src/quest/level-schema.ts';
@@ -56,17 +56,17 @@ describe('a challenge goal', () => {
     const goal = challenge(0.01);
     const state = initialState(defaultScene());
     expect(kindOfGoal(goal)).toBe('do');
-    const far = tallyAction(goal, NO_EVENTS, state, { type: 'challenge.compared', difference: 0.02 });
+    const far = tallyAction(goal, NO_EVENTS, state, { type: 'challenge.compared', difference: 0.02, renders: 1, changes: 0, rays: 0 });
     expect(checkGoal(goal, state, far)).toBe(false);
     const rendered = tallyAction(goal, far, state, { type: 'render.finished', ms: 10 });
     expect(checkGoal(goal, state, rendered)).toBe(false);
-    const close = tallyAction(goal, rendered, state, { type: 'challenge.compared', difference: 0.01 });
+    const close = tallyAction(goal, rendered, state, { type: 'challenge.compared', difference: 0.01, renders: 2, changes: 1, rays: 0 });
     expect(checkGoal(goal, state, close)).toBe(true);
   });
 
   it('counts every comparison as a try, close or not', () => {
     const state = initialState(defaultScene());
-    expect(touchesGoal(challenge(), state, state, { type: 'challenge.compared', difference: 0.5 })).toBe(true);
+    expect(touchesGoal(challenge(), state, state, { type: 'challenge.compared', difference: 0.5, renders: 1, changes: 0, rays: 0 })).toBe(true);
     expect(touchesGoal(challenge(), state, state, { type: 'render.started' })).toBe(false);
   });
 
@@ -80,10 +80,23 @@ describe('a challenge goal', () => {
   });
 });
 
-describe('the golf stars', () => {
-  it('give three at or under par, two within one and a half times par, else one', () => {
-    expect([1, 3, 4, 5, 6, 20].map((renders) => challengeStars(renders, 4))).toEqual([3, 3, 3, 2, 2, 1]);
-    expect([1, 2, 3].map((renders) => challengeStars(renders, 1))).toEqual([3, 1, 1]);
+describe('the match score', () => {
+  it('is 75 at the threshold, 25 more for each tenfold step closer, 25 less for each step further, within 0..100', () => {
+    expect(matchScore(0.0001, 0.0001)).toBe(MATCH_SCORE);
+    expect(matchScore(0.00001, 0.0001)).toBe(100);
+    expect(matchScore(0.001, 0.0001)).toBe(50);
+    expect(matchScore(0.1, 0.0001)).toBe(0);
+    expect(matchScore(0, 0.01)).toBe(100);
+    expect(matchScore(1, 0.01)).toBe(25);
+  });
+
+  it('is a match exactly when it is 75 or more, however close to the threshold', () => {
+    for (const threshold of [0.0001, 0.005, 0.03]) {
+      for (const factor of [0.999, 1, 1.001, 1.5, 0.5]) {
+        const difference = threshold * factor;
+        expect(matchScore(difference, threshold) >= MATCH_SCORE, `${difference} against ${threshold}`).toBe(difference <= threshold);
+      }
+    }
   });
 });
 

@@ -68,7 +68,7 @@ for (const chapter of catalog.chapters) {
             expect(store.dispatch(action), `task "${task.id}": ${action.type} was refused`).toBeUndefined();
             if (task.goal.kind === 'challenge' && action.type === 'render.finished') {
               const difference = await challengeDifference(level.scene, task.goal, store.state.scene);
-              expect(store.dispatch({ type: 'challenge.compared', difference })).toBeUndefined();
+              expect(store.dispatch({ type: 'challenge.compared', difference, renders: 1, changes: 0, rays: 0 })).toBeUndefined();
             }
           }
           // A code lab has no solution: the tracer's own function, graded on the level's cases as the app grades the learner's, must pass them.

@@ -1,4 +1,5 @@
 import { createContext } from '@lit/context';
+import type { ChallengeCounts } from '../../quest/challenge-par.ts';
 import type { ChallengeGoal } from '../../quest/goal.ts';
 
 /** What the challenge panel shows: the latest comparison of the learner's render with the target. */
@@ -10,11 +11,12 @@ export interface ChallengeView {
   difference: ImageData | null;
   /** The measure of the last comparison (challenge-closeness.ts); null before the first render. */
   value: number | null;
-  /** Renders compared, and changes to the scene, since the level opened. */
+  /** Renders compared, changes to the scene, and rays the learner's renders traced, since the level opened. */
   renders: number;
   changes: number;
-  /** The renders it took to come within the threshold the first time; null while not yet matched. */
-  matchedAfter: number | null;
+  rays: number;
+  /** The counts when the render first came within the threshold (its golf score); null while not yet matched. */
+  matched: ChallengeCounts | null;
   /** A comparison is being rendered. */
   measuring: boolean;
 }

@@ -1,22 +1,25 @@
 import { msg, str } from '@lit/localize';
 import { ContextConsumer } from '@lit/context';
 import { css, html, nothing, type PropertyValues } from 'lit';
-import { challengeStars } from '../../quest/challenge-closeness.ts';
+import { MATCH_SCORE, matchScore } from '../../quest/challenge-closeness.ts';
+import { challengeStars, starText, type ChallengeCounts, type Stars } from '../../quest/challenge-par.ts';
 import type { ChallengeGoal } from '../../quest/goal.ts';
 import type { Locale } from '../../quest/localized-text.ts';
 import { LocalizedElement } from '../controls/localized-element.ts';
 import { challengePicturesContext, type ChallengeView } from './challenge-pictures.ts';
+import { rayCount, starRuleText } from './challenge-rule-text.ts';
 import { gameStyles } from './game-styles.ts';
 
 /**
  * @summary The challenge panel of a match-the-target task (spec/challenges.md §2): the
  * target picture beside the learner's last render and their difference, a meter of the
- * difference with the match threshold marked, the star rule (shown before the first render)
- * and the renders and changes counted. The lab's referee (challengePicturesContext) renders
- * and measures; this element only shows.
+ * difference as a match score with the match line marked, the star rule (shown before the
+ * first render) and the renders, changes and rays counted. The lab's referee
+ * (challengePicturesContext) renders and measures; this element only shows. Once the task is
+ * done it shows only the stars, the saved ones when the learner comes back to the level.
  */
 export class RtChallenge extends LocalizedElement {
-  static override properties = { goal: { attribute: false }, locale: {}, summary: { type: Boolean }, view: { state: true } };
+  static override properties = { goal: { attribute: false }, locale: {}, summary: { type: Boolean }, stars: { type: Number }, view: { state: true } };
   static override styles = [
     gameStyles,
     css`
@@ -80,6 +83,8 @@ export class RtChallenge extends LocalizedElement {
   declare locale: Locale;
   /** Once the task is done: only the stars the match earned (the panel itself has served). */
   declare summary: boolean;
+  /** The stars saved with the learner's progress for this challenge; null when none were earned (or not yet). */
+  declare stars: Stars | null;
   declare private view: ChallengeView | null;
   private readonly referee = new ContextConsumer(this, { context: challengePicturesContext, subscribe: true });
   private stop: (() => void) | null = null;
@@ -90,6 +95,7 @@ export class RtChallenge extends LocalizedElement {
     this.goal = null;
     this.locale = 'en';
     this.summary = false;
+    this.stars = null;
     this.view = null;
   }
 
@@ -117,43 +123,49 @@ export class RtChallenge extends LocalizedElement {
     if (!goal) return nothing;
     const { threshold } = goal.challenge.measure;
     const [width, height] = goal.challenge.measure.size;
-    const par = goal.challenge.par.renders;
     const view = this.view;
-    const number = (value: number) => new Intl.NumberFormat(this.locale, { maximumSignificantDigits: 2 }).format(value);
-    const limit = number(threshold);
-    const stars =
-      view && view.matchedAfter !== null
-        ? html`<p class="stars">${msg(str`Matched after ${view.matchedAfter} renders: ${'★'.repeat(challengeStars(view.matchedAfter, par))}`)}</p>`
-        : nothing;
-    if (this.summary) return stars;
+    const score = view?.value === null || !view ? null : matchScore(view.value, threshold);
+    if (this.summary) return this.earned(goal, view?.matched ?? null);
     return html`
       <section class="card" aria-labelledby="challenge-title">
         <h3 id="challenge-title">${msg('Challenge')}</h3>
-        <p>${msg(str`Match the target: a difference of ${limit} or less, measured on ${width} × ${height} pixels.`)}</p>
-        <p>${msg(str`Stars: ★★★ within ${par} renders, ★★ within ${Math.floor(par * 1.5)}, ★ for any match.`)}</p>
+        <p>${msg(str`Match the target: a match score of ${MATCH_SCORE} or more, measured on ${width} × ${height} pixels.`)}</p>
+        <p>
+          ${msg("The score compares each pixel's red, green and blue with the target's: 100 means (almost) the same picture, and each time your render gets ten times closer, the score goes up by 25.")}
+        </p>
+        <p>${starRuleText(goal.challenge.par, this.locale)}</p>
         <p>${msg('Only the settings shown in the panels can change; everything else in this scene is locked.')}</p>
         <div class="pictures">
           ${this.picture('target', msg('Target'))} ${this.picture('attempt', msg('Your last render'))}
           ${this.picture('difference', msg('Difference (brighter: further off)'))}
         </div>
         <div class="meter">
-          <meter
-            aria-label=${msg('Closeness to the target')}
-            min="0"
-            max="1"
-            low=${MARK}
-            optimum="1"
-            value=${view?.value === null || !view ? 0 : closeness(view.value, threshold)}
-          ></meter>
-          <span class="mark" style="left: ${MARK * 100}%" aria-hidden="true"></span>
+          <meter aria-label=${msg('Match score')} min="0" max="100" low=${MATCH_SCORE} optimum="100" value=${score ?? 0}></meter>
+          <span class="mark" style="left: ${MATCH_SCORE}%" aria-hidden="true"></span>
         </div>
         <p aria-live="polite">
-          ${view?.measuring ? msg('Comparing your render with the target…') : view?.value === null || !view ? msg('Render to compare with the target.') : msg(str`Difference: ${number(view.value)} (match: ${limit} or less).`)}
+          ${view?.measuring ? msg('Comparing your render with the target…') : score === null ? msg('Render to compare with the target.') : msg(str`Match score: ${score} of 100 (a match: ${MATCH_SCORE} or more).`)}
         </p>
-        <p>${msg(str`Renders: ${view?.renders ?? 0} · changes: ${view?.changes ?? 0}`)}</p>
-        ${stars}
+        <p>${this.countsText(view)}</p>
+        ${view?.matched ? this.earned(goal, view.matched) : nothing}
       </section>
     `;
+  }
+
+  /** The stars of a match: this visit's, with what it took, else the saved ones. */
+  private earned(goal: ChallengeGoal, matched: ChallengeCounts | null) {
+    if (matched) {
+      const stars = starText(challengeStars(matched, goal.challenge.par));
+      return html`<p class="stars">${msg(str`Matched after ${matched.renders} renders and ${matched.changes} changes: ${stars}`)}</p>`;
+    }
+    return this.stars ? html`<p class="stars">${msg(str`Stars earned: ${starText(this.stars)}`)}</p>` : nothing;
+  }
+
+  private countsText(view: ChallengeView | null): string {
+    const renders = view?.renders ?? 0;
+    const changes = view?.changes ?? 0;
+    if (this.goal?.challenge.par.kind !== 'rays') return msg(str`Renders: ${renders} · changes: ${changes}`);
+    return msg(str`Renders: ${renders} · changes: ${changes} · rays: ${rayCount(view?.rays ?? 0, this.locale)}`);
   }
 
   private picture(which: 'target' | 'attempt' | 'difference', caption: string) {
@@ -174,19 +186,6 @@ export class RtChallenge extends LocalizedElement {
       else context.clearRect(0, 0, canvas.width, canvas.height);
     }
   }
-}
-
-/** Where the threshold sits on the meter: two thirds of the way, so a near miss still shows progress. */
-const MARK = 2 / 3;
-
-/**
- * The meter's fill for a difference: on a log scale, from a hundred times the threshold
- * (empty) to a tenth of it (full), so that each tenfold step closer moves it a third.
- */
-export function closeness(difference: number, threshold: number): number {
-  if (difference <= 0) return 1;
-  const decades = Math.log10(difference / threshold);
-  return Math.min(1, Math.max(0, MARK - decades / 3));
 }
 
 customElements.define('rt-challenge', RtChallenge);

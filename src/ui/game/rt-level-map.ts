@@ -5,6 +5,7 @@ import { LocalizedElement } from '../controls/localized-element.ts';
 import type { LevelMapEntry, ChapterMapView } from '../../quest/level-map.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
 import { plainLevelText } from '../../quest/text-markup.ts';
+import { starText } from '../../quest/challenge-par.ts';
 import { FocusReturn } from '../controls/focus-return.ts';
 import { fire, gameStyles } from './game-styles.ts';
 
@@ -13,8 +14,8 @@ export type MapChoice = { kind: 'level'; id: string } | { kind: 'free-lab' } | {
 
 /**
  * @summary The level map: chapters with their levels, each marked passed (✓), open,
- * locked (×, with what opens it in its tooltip) or broken (⚠, with the file's problems), its points, and
- * the level the learner is in. Also the way into the free lab.
+ * locked (×, with what opens it in its tooltip) or broken (⚠, with the file's problems), its points,
+ * a matched challenge's stars (★★☆), and the level the learner is in. Also the way into the free lab.
  *
  * @fires map-choice - CustomEvent<MapChoice>.
  */
@@ -102,6 +103,11 @@ export class RtLevelMap extends LocalizedElement {
       }
       [data-status='broken'] .status {
         color: var(--rt-danger);
+      }
+      /* A challenge's golf score (★★☆): the learner's own, shown only to them. */
+      .stars {
+        font-size: 0.875rem;
+        letter-spacing: 1px;
       }
       .reasons {
         margin: 4px 0 0;
@@ -200,6 +206,7 @@ export class RtLevelMap extends LocalizedElement {
     >
       <strong>${number}. ${title}</strong>
       <span class="status">${this.statusText(entry, current)}</span>
+      ${entry.stars ? html`<span class="stars" role="img" aria-label=${msg(str`Challenge: ${entry.stars} of 3 stars`)}>${starText(entry.stars)}</span>` : nothing}
       ${
         entry.status === 'broken'
           ? html`<ul class="reasons">

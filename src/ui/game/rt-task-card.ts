@@ -180,7 +180,7 @@ export class RtTaskCard extends LocalizedElement {
           : html`<div class="head ${finished ? 'done' : ''}">${head}</div>`
       }
       ${folded !== null && !this.opened ? html`<p class="summary" title=${folded}>${folded}</p>` : nothing}
-      ${finished && view.task.goal.kind === 'challenge' ? html`<rt-challenge summary .goal=${view.task.goal} locale=${this.locale}></rt-challenge>` : nothing}
+      ${finished && view.task.goal.kind === 'challenge' ? html`<rt-challenge summary .goal=${view.task.goal} .stars=${view.stars ?? null} locale=${this.locale}></rt-challenge>` : nothing}
       ${finished && view.task.goal.kind === 'code' ? codeLabPanel(view.task.goal, this.locale, this) : nothing}
       ${this.expanded || (openable && this.opened) ? html`<div class="body">${this.body(view, finished)}</div>` : nothing}
     `;

@@ -7,14 +7,25 @@ import type { Scene } from '../../scene/scene.ts';
 import { toRgba8 } from '../../tracer/quantize.ts';
 import type { ChallengePictures, ChallengeView } from '../game/challenge-pictures.ts';
 
-const NOTHING_YET: ChallengeView = { target: null, attempt: null, difference: null, value: null, renders: 0, changes: 0, matchedAfter: null, measuring: false };
+const NOTHING_YET: ChallengeView = {
+  target: null,
+  attempt: null,
+  difference: null,
+  value: null,
+  renders: 0,
+  changes: 0,
+  rays: 0,
+  matched: null,
+  measuring: false,
+};
 
 /**
  * The lab's referee of a match-the-target challenge. While a challenge panel watches a goal,
- * every finished render of the learner's is rendered again at the challenge's small size on
+ * every finished render of the learner's (its rays counted) is rendered again at the challenge's small size on
  * the services' picture worker, with the target beside it (the same tracer and seed, so the
  * same scene gives the same picture), measured, and reported to the store as
- * challenge.compared: the quest engine checks the goal and logs each comparison. Changes to
+ * challenge.compared with the counts so far: the quest engine checks the goal, logs each
+ * comparison and keeps the stars of a match. Changes to
  * the scene are counted too; a loaded scene (the level opened again) starts the count anew.
  */
 export class ChallengeReferee implements ChallengePictures {
@@ -35,8 +46,10 @@ export class ChallengeReferee implements ChallengePictures {
       scene = state.scene;
       if (error || live || !this.goal) return;
       if (action.type === 'scene.loaded') this.update({ ...NOTHING_YET, target: this.view.target });
-      else if (action.type === 'render.finished') void this.measure(store, this.goal, state.scene);
-      else if (changed) this.update({ changes: this.view.changes + 1 });
+      else if (action.type === 'render.finished') {
+        this.update({ rays: this.view.rays + (action.rays ?? 0) });
+        void this.measure(store, this.goal, state.scene);
+      } else if (changed) this.update({ changes: this.view.changes + 1 });
     });
   }
 
@@ -72,18 +85,18 @@ export class ChallengeReferee implements ChallengePictures {
       const targetLight = shownLight(target.rgb, scenes.target.settings);
       const attemptLight = shownLight(attempt.rgb, scenes.attempt.settings);
       const value = meanLinearDifference(targetLight, attemptLight);
-      const renders = this.view.renders + 1;
+      const counts = { renders: this.view.renders + 1, changes: this.view.changes, rays: this.view.rays };
       const matched = value <= goal.challenge.measure.threshold;
       this.update({
         target: picture(target, scenes.target),
         attempt: picture(attempt, scenes.attempt),
         difference: differencePicture(targetLight, attemptLight, target.width, target.height),
         value,
-        renders,
-        matchedAfter: this.view.matchedAfter ?? (matched ? renders : null),
+        renders: counts.renders,
+        matched: this.view.matched ?? (matched ? counts : null),
         measuring: false,
       });
-      store.dispatch({ type: 'challenge.compared', difference: value });
+      store.dispatch({ type: 'challenge.compared', difference: value, ...counts });
     } catch {
       this.update({ measuring: false });
     }

@@ -30,6 +30,7 @@ import './rt-dashboard-survey.ts';
 import './rt-dashboard-times.ts';
 import '../../controls/rt-theme-toggle.ts';
 import './rt-dashboard-quiz.ts';
+import './rt-dashboard-challenges.ts';
 import { researchDownloads, type ClassCsvKind } from './dashboard-research-files.ts';
 import { summarizeQuizzes, type QuizSummary } from '../../../classroom/dashboard-quiz.ts';
 import { keepClassMinutes } from '../teacher-minutes.ts';
@@ -349,7 +350,7 @@ export class RtDashboardPage extends LocalizedElement {
       ></rt-dashboard-times>
       <h3>${msg('Completion')}</h3>
       <rt-dashboard-completion .rows=${rows} caption=${msg(str`Completion per task in ${title}`)}></rt-dashboard-completion>
-      ${this.renderQuizzes(level.level, title)}
+      ${this.renderQuizzes(level.level, title)}<rt-dashboard-challenges .records=${this.shown} level=${level.level}></rt-dashboard-challenges>
       <h3>${msg('Where learners got stuck')}</h3>
       <p class="rule">${stuckRule()}</p>
       <rt-dashboard-stuck

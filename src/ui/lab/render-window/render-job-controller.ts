@@ -132,8 +132,9 @@ export class RenderJobController implements ReactiveController {
       }
       this.finished = result;
       this.painter.paint(result, quantization);
-      this.setStatus({ kind: 'finished', ms: result.ms, rays: countRays(result.stats), workers: result.workers });
-      store.dispatch({ type: 'render.finished', ms: result.ms });
+      const rays = countRays(result.stats);
+      this.setStatus({ kind: 'finished', ms: result.ms, rays, workers: result.workers });
+      store.dispatch({ type: 'render.finished', ms: result.ms, rays });
     } catch (error) {
       if (!isCurrent()) return;
       this.job = null;

@@ -1,0 +1,79 @@
+import { msg, str } from '@lit/localize';
+import { css, html, nothing } from 'lit';
+import { reachedMatch, summarizeChallenges } from '../../../classroom/dashboard-challenges.ts';
+import type { ClassRecord } from '../../../classroom/dashboard-record.ts';
+import { MATCH_SCORE } from '../../../quest/challenge-closeness.ts';
+import { LocalizedElement } from '../../controls/localized-element.ts';
+import { tableStyles } from './rt-dashboard-chart-styles.ts';
+
+/**
+ * @summary How close the class got in a level's challenges (classroom/dashboard-challenges.ts):
+ * per challenge the learners who rendered, each one's best match score (lowest first), who
+ * matched it themselves with how many stars, and the last score of those who stopped
+ * without a match. Nothing when the level has no challenge anyone rendered in.
+ */
+export class RtDashboardChallenges extends LocalizedElement {
+  static override properties = { records: { attribute: false }, level: {} };
+  static override styles = [
+    tableStyles,
+    css`
+      table {
+        width: 100%;
+      }
+      th:first-child {
+        text-align: left;
+        font-weight: normal;
+      }
+    `,
+  ];
+
+  declare records: readonly ClassRecord[];
+  declare level: string;
+
+  constructor() {
+    super();
+    this.records = [];
+    this.level = '';
+  }
+
+  override render() {
+    const challenges = summarizeChallenges(this.records).filter((challenge) => challenge.level === this.level);
+    if (challenges.length === 0) return nothing;
+    const list = (scores: readonly number[]) => (scores.length === 0 ? '–' : scores.join(', '));
+    return html`<h3>${msg('Challenges')}</h3>
+      <table>
+        <caption>
+          ${msg(str`How close learners got to each challenge's target: a match score of ${MATCH_SCORE} or more is a match`)}
+        </caption>
+        <thead>
+          <tr>
+            <th scope="col">${msg('Task')}</th>
+            <th scope="col" title=${msg('Learners who rendered at least once')}>n</th>
+            <th scope="col">${msg('Best match score per learner')}</th>
+            <th scope="col">${msg('Matched by themselves (★ / ★★ / ★★★)')}</th>
+            <th scope="col">${msg('Stopped without a match, at')}</th>
+          </tr>
+        </thead>
+        <tbody>
+          ${challenges.map(
+            (challenge) =>
+              html`<tr data-task=${challenge.task}>
+                <th scope="row">${challenge.task}</th>
+                <td>${challenge.learners}</td>
+                <td>${list(challenge.bestScores)} (${msg(str`${reachedMatch(challenge)} reached ${MATCH_SCORE}`)})</td>
+                <td>${challenge.matched} (${challenge.stars.join(' / ')})</td>
+                <td>${list(challenge.stoppedAt)}</td>
+              </tr>`,
+          )}
+        </tbody>
+      </table>`;
+  }
+}
+
+customElements.define('rt-dashboard-challenges', RtDashboardChallenges);
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'rt-dashboard-challenges': RtDashboardChallenges;
+  }
+}
