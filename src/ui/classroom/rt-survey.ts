@@ -25,6 +25,7 @@ export class RtSurvey extends LocalizedElement {
     locale: {},
     levels: { attribute: false },
     choice: { attribute: false },
+    questions: { attribute: false },
     answers: { state: true },
     problems: { state: true },
     submitted: { state: true },
@@ -114,6 +115,8 @@ export class RtSurvey extends LocalizedElement {
   declare levels: readonly string[] | null;
   /** The teacher's own choice of questions (Assignment.surveyQuestions), over the levels' default. */
   declare choice: Assignment['surveyQuestions'];
+  /** Exactly these questions, by id (the teacher's preview of their choice, survey-preview-link.ts); null: by the levels and the choice. */
+  declare questions: readonly string[] | null;
   declare answers: SurveyAnswers;
   declare problems: Record<string, AnswerProblem>;
   declare submitted: boolean;
@@ -124,6 +127,7 @@ export class RtSurvey extends LocalizedElement {
     // The page's language, unless the assignment names its own (a teacher's preview names none).
     this.locale = currentLocale();
     this.levels = null;
+    this.questions = null;
     this.answers = {};
     this.problems = {};
     this.submitted = false;
@@ -131,6 +135,8 @@ export class RtSurvey extends LocalizedElement {
 
   private get survey(): Survey | undefined {
     const survey = surveyById(this.surveyId);
+    const only = this.questions;
+    if (survey && only) return surveyAsked(survey, null, Object.fromEntries(survey.questions.map((question) => [question.id, only.includes(question.id)])));
     return survey && surveyAsked(survey, this.levels, this.choice);
   }
 
