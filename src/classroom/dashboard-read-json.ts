@@ -39,7 +39,7 @@ export function readJsonExport(file: string, text: string): FileRead {
     return {
       ok: false,
       file,
-      reason: msg("xAPI statements, which are for a school's learning record store: drop the learner's JSON or CSV export here instead"),
+      reason: msg("xAPI statements, which are for a school's learning record store: drop the student's JSON or CSV export here instead"),
     };
   if (!isRecord(value)) return { ok: false, file, reason: msg('not a Ray Tracer Quest export (the file holds no JSON object)') };
   if (value.kind === PROGRESS_KIND) return { ok: false, file, reason: msg('a saved progress file, not an export: export the results from the game instead') };

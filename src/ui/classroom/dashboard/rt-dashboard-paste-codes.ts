@@ -67,7 +67,7 @@ export class RtDashboardPasteCodes extends LocalizedElement {
       this.count += 1;
       const name = msg(str`results code ${this.count}`);
       const text = decodeResultsCode(code);
-      if (text === null) pasted.skipped.push({ file: name, reason: msg('the code is incomplete or damaged: ask the pupil to copy all of it again') });
+      if (text === null) pasted.skipped.push({ file: name, reason: msg('the code is incomplete or damaged: ask the student to copy all of it again') });
       else pasted.files.push({ name, text });
     }
     this.note = codes.length === 1 ? msg('1 code read.') : msg(str`${codes.length} codes read.`);

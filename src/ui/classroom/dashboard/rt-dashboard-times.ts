@@ -129,7 +129,7 @@ export class RtDashboardTimes extends DashboardChart<TimeRow> {
 
 function describe(label: string, stats: FiveNumbers): string {
   return msg(
-    str`${label}: median ${formatDuration(stats.median)}, middle half ${formatDuration(stats.q1)}–${formatDuration(stats.q3)}, fastest ${formatDuration(stats.min)}, slowest ${formatDuration(stats.max)} (${stats.count} learners)`,
+    str`${label}: median ${formatDuration(stats.median)}, middle half ${formatDuration(stats.q1)}–${formatDuration(stats.q3)}, fastest ${formatDuration(stats.min)}, slowest ${formatDuration(stats.max)} (${stats.count} students)`,
   );
 }
 
