@@ -127,6 +127,27 @@ describe('rt-dashboard-class-list', () => {
     expect(names('.not-on-list')).toEqual(['5H2-09 (ray-tracer-quest-5H2-09.json)']);
   });
 
+  it('lists a result without a participant code as not on the list, and asks again once the list is cleared', async () => {
+    const anonymous = classLearners(
+      readClassFiles([
+        {
+          name: 'results.json',
+          text: JSON.stringify({ ...simulatedExport(5), participant: null, learner: { ...simulatedExport(5).learner, id: 'install:abc' } }),
+        },
+      ]).records,
+    );
+    const list = await mount('rt-dashboard-class-list', { learners: [...learners, ...anonymous] });
+    const view = page.elementLocator(list);
+    const box = view.getByRole('textbox', { name: 'Participant codes you handed out, one per line' });
+    await box.fill('5H2-01');
+    await expect.element(view.getByText('1 of 1 handed in, 0 missing.')).toBeVisible();
+    await expect.element(view.getByRole('heading', { name: 'Not on the list (3)' })).toBeVisible();
+    expect(list.shadowRoot!.querySelector('.not-on-list')!.textContent).toContain('(no code) (results.json)');
+    await box.fill('');
+    await expect.element(view.getByText('Paste the class list to see who has handed in')).toBeVisible();
+    expect(localStorage.getItem(CLASS_LIST_KEY)).toBe('');
+  });
+
   it('keeps the pasted list in this browser for the next visit', async () => {
     const first = await mount('rt-dashboard-class-list', { learners });
     await page.elementLocator(first).getByRole('textbox').fill('5H2-01\n5H2-04');
