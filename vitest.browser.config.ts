@@ -1,5 +1,6 @@
 import { playwright } from '@vitest/browser-playwright';
 import { defineConfig } from 'vitest/config';
+import { levelTextsPlugin } from './scripts/level-texts-plugin.ts';
 
 /**
  * Component tests (tests/components/): the panels and their controls rendered in a real
@@ -12,6 +13,8 @@ import { defineConfig } from 'vitest/config';
 const executablePath = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
 
 export default defineConfig({
+  // The levels' texts as the app loads them (virtual:level-texts/<locale>): the export menu reads the quiz options' texts.
+  plugins: [levelTextsPlugin()],
   // Found by vite only once a test imports them: bundled up front, so that a run does not
   // reload the page half-way (and load lit twice).
   optimizeDeps: {
@@ -25,6 +28,7 @@ export default defineConfig({
       '@lit/context',
       '@lit/localize',
       'zod',
+      'fflate',
     ],
   },
   test: {

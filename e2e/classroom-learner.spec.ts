@@ -103,8 +103,8 @@ test('one student hands in four files: the dashboard shows one learner who passe
     buffer: Buffer.from(file.text),
   }));
   await dashboard.locator('input[type=file]').setInputFiles(files);
-  await expect(dashboard.getByRole('status')).toHaveText(/1 learner counted \(from 4 files: 3 merged into their learner's\), 0 files skipped\./);
-  await expect(dashboard.locator('section.level[data-level="01-introduction"] .level-facts')).toContainText('1 of 1 learners passed');
+  await expect(dashboard.getByRole('status')).toHaveText(/1 student counted \(from 4 files: 3 merged into their student's\), 0 files skipped\./);
+  await expect(dashboard.locator('section.level[data-level="01-introduction"] .level-facts')).toContainText('1 of 1 students passed');
   expect(errors).toEqual([]);
 });
 

@@ -305,7 +305,7 @@ test('a student plays a one-level assignment, answers the survey and downloads C
   await page.goto('./#/dashboard');
   const dashboard = page.locator('rt-dashboard-page');
   await dashboard.locator('input[type=file]').setInputFiles({ name: json.name, mimeType: 'application/json', buffer: Buffer.from(json.text) });
-  await expect(dashboard.getByRole('status').filter({ hasText: '1 learner counted' })).toBeVisible();
+  await expect(dashboard.getByRole('status').filter({ hasText: '1 student counted' })).toBeVisible();
   await expect(dashboard.locator('section.level[data-level="01-introduction"]')).toBeVisible();
   expect(errors).toEqual([]);
 });

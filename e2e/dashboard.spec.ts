@@ -32,7 +32,7 @@ test('the dashboard reads a class of exports, shows the charts and skips a damag
   await dashboard
     .locator('input[type=file]')
     .setInputFiles([...files.slice(0, 20), damaged].map((file) => ({ name: file.name, mimeType: 'application/json', buffer: Buffer.from(file.text) })));
-  await expect(dashboard.getByRole('status').filter({ hasText: '20 learners counted, 1 file skipped.' })).toBeVisible();
+  await expect(dashboard.getByRole('status').filter({ hasText: '20 students counted, 1 file skipped.' })).toBeVisible();
 
   // Drag and drop, added to what was read.
   const dataTransfer = await page.evaluateHandle((dropped) => {
@@ -41,7 +41,7 @@ test('the dashboard reads a class of exports, shows the charts and skips a damag
     return transfer;
   }, files.slice(20));
   await dashboard.locator('.drop').dispatchEvent('drop', { dataTransfer });
-  await expect(dashboard.getByRole('status').filter({ hasText: '30 learners counted, 1 file skipped.' })).toBeVisible();
+  await expect(dashboard.getByRole('status').filter({ hasText: '30 students counted, 1 file skipped.' })).toBeVisible();
 
   // The skipped file and its reason.
   const skipped = dashboard.locator('.skipped-files');
@@ -66,7 +66,7 @@ test('the dashboard reads a class of exports, shows the charts and skips a damag
   // The survey: six 1–5 questions in one Likert chart whose segments add up to the answers.
   const respondents = expected.records.filter((record) => record.survey).length;
   const survey = dashboard.locator('section.survey');
-  await expect(survey).toContainText(`${respondents} learners answered.`);
+  await expect(survey).toContainText(`${respondents} students answered.`);
   const helped = survey.locator('rt-dashboard-likert').filter({ hasText: 'Helped a lot' });
   await expect(helped.locator('svg.bar')).toHaveCount(6);
   const shadows = helped.locator('svg.bar[data-question="learned-soft-shadows"]');
@@ -98,7 +98,7 @@ test('the dashboard works at 1024×768 and clears', async ({ page }) => {
   await dashboard
     .locator('input[type=file]')
     .setInputFiles(files.slice(0, 3).map((file) => ({ name: file.name, mimeType: 'application/json', buffer: Buffer.from(file.text) })));
-  await expect(dashboard.getByRole('status')).toHaveText('3 learners counted, 0 files skipped.');
+  await expect(dashboard.getByRole('status')).toHaveText('3 students counted, 0 files skipped.');
   const width = await page.evaluate(() => document.documentElement.scrollWidth);
   expect(width).toBeLessThanOrEqual(1024);
   await dashboard.getByRole('button', { name: 'Clear' }).click();

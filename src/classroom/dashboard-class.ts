@@ -6,7 +6,7 @@ import { readExportFile } from './dashboard-read-file.ts';
 import type { ClassLearner } from './dashboard-learners.ts';
 import type { ClassRecord, SkippedFile } from './dashboard-record.ts';
 import { NO_OPTION_TEXTS, type OptionText } from './quiz-options.ts';
-import { surveyQuestionIds, type SurveyLookup } from './survey-columns.ts';
+import { handedInQuestionIds, type SurveyLookup } from './survey-columns.ts';
 
 /**
  * A class's dropped files, read: the records that count and the files skipped with their
@@ -46,17 +46,18 @@ export function readClassFiles(
   return { records, skipped };
 }
 
+/** The questions some learner's assignment asked (survey-columns.ts): a question none asked has no column. */
 const surveyQuestions = (learners: readonly ClassLearner[], surveyById: SurveyLookup) =>
-  surveyQuestionIds(
+  handedInQuestionIds(
     surveyById,
-    learners.map((learner) => learner.survey?.id),
-    learners.map((learner) => learner.survey?.answers),
+    learners.map((learner) => learner.survey),
   );
 
 /**
  * The combined CSV: the learners' CSV export's columns and rows (the kept file of each
  * playthrough, so nothing is counted twice), then the file each row came from. Survey
- * columns in the order of `surveyById`'s questions (the app's surveys.ts).
+ * columns: the questions the learners' assignments asked, in the order of `surveyById`'s
+ * questions (the app's surveys.ts).
  */
 export function combinedCsv(learners: readonly ClassLearner[], surveyById: SurveyLookup, optionText: OptionText = NO_OPTION_TEXTS): string {
   const questions = surveyQuestions(learners, surveyById);
@@ -66,7 +67,7 @@ export function combinedCsv(learners: readonly ClassLearner[], surveyById: Surve
   return csvTable([...csvHeader(questions), 'file'], rows, ID_COLUMNS);
 }
 
-/** The survey CSV: one row per learner who answered, one column per question. */
+/** The survey CSV: one row per learner who answered, one column per question their assignments asked. */
 export function surveyCsv(learners: readonly ClassLearner[], surveyById: SurveyLookup): string {
   const answered = learners.filter((learner) => learner.survey);
   const questions = surveyQuestions(answered, surveyById);

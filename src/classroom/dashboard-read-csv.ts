@@ -90,10 +90,12 @@ function howOf(how: HowCompleted | null, shownByApp: boolean): HowCompleted {
 function surveyOf(id: string, names: readonly string[], row: readonly string[]): ClassRecord['survey'] {
   if (id === '') return null;
   const answers: SurveyAnswers = {};
+  // The file has a column for each question the learner's assignment asked (export-csv.ts).
+  const columns = names.filter((name) => name.startsWith(SURVEY_PREFIX)).map((name) => name.slice(SURVEY_PREFIX.length));
   names.forEach((name, index) => {
     const value = row[index] ?? '';
     if (!name.startsWith(SURVEY_PREFIX) || value === '') return;
     answers[name.slice(SURVEY_PREFIX.length)] = /^-?\d+(\.\d+)?$/.test(value) ? Number(value) : value;
   });
-  return { id, answers };
+  return { id, answers, asked: { columns } };
 }

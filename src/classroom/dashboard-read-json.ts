@@ -11,6 +11,7 @@ import { learnerKey, normalParticipantCode } from './participant-code.ts';
 import { EXPORT_FORMAT, EXPORT_VERSION } from './export-json.ts';
 import type { ClassRecord, FileRead } from './dashboard-record.ts';
 import type { SurveyAnswers } from './survey-answers.ts';
+import type { SurveyAsked } from './survey-columns.ts';
 import { readConceptTestValue } from './concept-test/concept-test-store.ts';
 
 /**
@@ -38,7 +39,7 @@ export function readJsonExport(file: string, text: string): FileRead {
     return {
       ok: false,
       file,
-      reason: msg("xAPI statements, which are for a school's learning record store: drop the learner's JSON or CSV export here instead"),
+      reason: msg("xAPI statements, which are for a school's learning record store: drop the student's JSON or CSV export here instead"),
     };
   if (!isRecord(value)) return { ok: false, file, reason: msg('not a Ray Tracer Quest export (the file holds no JSON object)') };
   if (value.kind === PROGRESS_KIND) return { ok: false, file, reason: msg('a saved progress file, not an export: export the results from the game instead') };
@@ -69,7 +70,7 @@ export function readJsonExport(file: string, text: string): FileRead {
       ...assignment,
       attempts,
       visits,
-      survey: readSurvey(parsed.data.survey),
+      survey: readSurvey(parsed.data.survey, parsed.data.assignment),
       // Only what can be read of it: a damaged answer is left out (as when the game loads it).
       conceptTest: isRecord(value.conceptTest) ? readConceptTestValue(value.conceptTest).answers : null,
     },
@@ -87,11 +88,23 @@ function assignmentOf(assignment: unknown): { assignment: string; assignmentId: 
   return { assignment: field('title'), assignmentId: field('id'), classCode: field('classCode') };
 }
 
-/** The survey submission (survey-answers.ts SurveySubmission): its id and the answers that are numbers or text. */
-function readSurvey(survey: unknown): ClassRecord['survey'] {
+/**
+ * The survey submission (survey-answers.ts SurveySubmission): its id and the answers that are
+ * numbers or text, and what the assignment asked (its levels and the teacher's choice).
+ */
+function readSurvey(survey: unknown, assignment: unknown): ClassRecord['survey'] {
   if (!isRecord(survey) || typeof survey.survey !== 'string' || !isRecord(survey.answers)) return null;
   const answers = Object.fromEntries(Object.entries(survey.answers).filter(([, value]) => typeof value === 'number' || typeof value === 'string'));
-  return { id: survey.survey, answers: answers as SurveyAnswers };
+  return { id: survey.survey, answers: answers as SurveyAnswers, asked: askedOf(assignment) };
+}
+
+function askedOf(assignment: unknown): SurveyAsked {
+  if (!isRecord(assignment) || !Array.isArray(assignment.levels)) return null;
+  const levels = assignment.levels.filter((level): level is string => typeof level === 'string');
+  const choice = isRecord(assignment.surveyQuestions)
+    ? Object.fromEntries(Object.entries(assignment.surveyQuestions).filter((entry): entry is [string, boolean] => typeof entry[1] === 'boolean'))
+    : undefined;
+  return choice ? { levels, choice } : { levels };
 }
 
 /** An issue of the event log, at its place in the export file. */

@@ -1,5 +1,5 @@
 import type { Issue } from '../util/issue.ts';
-import type { SurveyAnswers } from './survey-answers.ts';
+import type { HandedInSurvey } from './survey-columns.ts';
 import type { ConceptTestAnswers } from './concept-test/concept-answers.ts';
 import type { LevelVisit, TaskAttempt } from './task-attempts.ts';
 
@@ -33,8 +33,8 @@ export interface ClassRecord {
   attempts: TaskAttempt[];
   /** Level visits; empty for a CSV export, which has no level events. */
   visits: LevelVisit[];
-  /** The closing survey's answers, or null when the learner did not hand one in. */
-  survey: { id: string; answers: SurveyAnswers } | null;
+  /** The closing survey's answers (and which questions were asked), or null when the learner did not hand one in. */
+  survey: HandedInSurvey | null;
   /** The concept test's answers, or null (or absent) when the learner took none. */
   conceptTest?: ConceptTestAnswers | null;
 }

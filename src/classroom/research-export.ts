@@ -2,7 +2,7 @@ import { ID_COLUMNS, SURVEY_PREFIX } from './attempt-columns.ts';
 import { attemptRows, csvHeader } from './attempt-rows.ts';
 import { csvTable } from './csv-text.ts';
 import type { ClassLearner } from './dashboard-learners.ts';
-import { surveyQuestionIds, type SurveyLookup } from './survey-columns.ts';
+import { handedInQuestionIds, type SurveyLookup } from './survey-columns.ts';
 import { NO_OPTION_TEXTS, type OptionText } from './quiz-options.ts';
 
 /**
@@ -33,10 +33,9 @@ export function researchCsv(
   options: ResearchOptions,
   optionText: OptionText = NO_OPTION_TEXTS,
 ): string {
-  const allQuestions = surveyQuestionIds(
+  const allQuestions = handedInQuestionIds(
     surveyById,
-    learners.map((learner) => learner.survey?.id),
-    learners.map((learner) => learner.survey?.answers),
+    learners.map((learner) => learner.survey),
   );
   const known = new Map(learners.flatMap((learner) => surveyById(learner.survey?.id ?? '')?.questions ?? []).map((question) => [question.id, question]));
   const isFreeText = (id: string) => (known.get(id)?.type ?? 'text') === 'text';

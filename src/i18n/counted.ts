@@ -15,7 +15,7 @@ export function lightsCounted(n: number): string {
 }
 
 export function learnersCounted(n: number): string {
-  return n === 1 ? msg('1 learner') : msg(str`${n} learners`);
+  return n === 1 ? msg('1 student') : msg(str`${n} students`);
 }
 
 /** `shown`: the count as the panel writes it (with a thousands separator). */

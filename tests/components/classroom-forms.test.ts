@@ -1,7 +1,7 @@
-// The classroom's forms: the concept test page a pupil hands in, and the dashboard's class
-// list a teacher pastes codes into. Reached through properties, events and what a user sees.
+// The classroom's forms: the concept test page and the closing survey a pupil hands in, and
+// the dashboard's class list a teacher pastes codes into. Reached through properties, events and what a user sees.
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
-import { page } from 'vitest/browser';
+import { page, userEvent } from 'vitest/browser';
 import type { ConceptItem } from '../../src/classroom/concept-test/concept-bank-schema.ts';
 import { formItems, loadConceptBank } from '../../src/classroom/concept-test/concept-bank.ts';
 import { readClassFiles } from '../../src/classroom/dashboard-class.ts';
@@ -11,6 +11,9 @@ import '../../src/ui/classroom/dashboard/rt-dashboard-class-list.ts';
 import { CLASS_LIST_KEY } from '../../src/ui/classroom/dashboard/rt-dashboard-class-list.ts';
 import '../../src/ui/classroom/rt-concept-test.ts';
 import type { ConceptTestHandIn } from '../../src/ui/classroom/rt-concept-test.ts';
+import '../../src/ui/classroom/rt-survey.ts';
+import type { SurveySubmission } from '../../src/classroom/survey-answers.ts';
+import { surveyById } from '../../src/classroom/surveys.ts';
 import { simulatedExport } from '../support/class-exports.ts';
 import { mount, record, unmountAll } from './mount.ts';
 
@@ -24,7 +27,7 @@ describe('rt-concept-test', () => {
     items = formItems(bank, 'B');
   });
 
-  const question = (page: HTMLElement, item: ConceptItem) => page.shadowRoot!.querySelector<HTMLFieldSetElement>(`fieldset[data-item="${item.id}"]`)!;
+  const question = (page: HTMLElement, item: ConceptItem) => page.shadowRoot!.querySelector<HTMLFieldSetElement>(`fieldset[data-question="${item.id}"]`)!;
 
   it('asks every question of its form, and hands in nothing while one is open', async () => {
     const test = await mount('rt-concept-test', { phase: 'post', form: 'B', seed: 'attempt-1', locale: 'en' });
@@ -67,6 +70,38 @@ describe('rt-concept-test', () => {
   });
 });
 
+describe('rt-survey', () => {
+  /** The teacher ticked only the minutes and the (optional) age. */
+  const choice = Object.fromEntries(surveyById('default')!.questions.map((question) => [question.id, question.id === 'minutes' || question.id === 'age']));
+
+  it("asks only the teacher's questions, says what is wrong under the question, and hands in once it is right", async () => {
+    const survey = await mount('rt-survey', { surveyId: 'default', locale: 'en', levels: ['01-look-around'], choice });
+    const view = page.elementLocator(survey);
+    const handedIn = record<SurveySubmission>(survey, 'survey-submitted');
+    expect([...survey.shadowRoot!.querySelectorAll('fieldset')].map((card) => card.dataset['question'])).toEqual(['minutes', 'age']);
+
+    await view.getByRole('button', { name: 'Hand in' }).click();
+    await expect.element(view.getByRole('alert')).toHaveTextContent('1 answer still needs attention.');
+    const minutes = view.getByRole('textbox', { name: 'About how many minutes did you spend on the game?' });
+    // The first question with a problem has the focus (inside the survey's shadow root).
+    expect(survey.shadowRoot!.activeElement).toBe(minutes.element());
+    const card = view.getByRole('group', { name: /About how many minutes/ });
+    await expect.element(card).toHaveAttribute('aria-invalid', 'true');
+    await expect.element(card).toHaveTextContent('Please answer this question.');
+    expect(handedIn).toEqual([]);
+
+    await minutes.fill('half an hour');
+    await userEvent.tab(); // the field reads its text when it is left, as a pupil does
+    await view.getByRole('button', { name: 'Hand in' }).click();
+    await expect.element(card).toHaveTextContent('Please type a number, like 25.');
+    await minutes.fill('25');
+    await userEvent.tab();
+    await view.getByRole('button', { name: 'Hand in' }).click();
+    expect(handedIn.map((submission) => submission.answers)).toEqual([{ minutes: 25 }]);
+    await expect.element(view.getByRole('status')).toHaveTextContent('Thank you for your answers.');
+  });
+});
+
 describe('rt-dashboard-class-list', () => {
   beforeEach(() => localStorage.removeItem(CLASS_LIST_KEY));
   afterEach(() => localStorage.removeItem(CLASS_LIST_KEY));
@@ -90,6 +125,27 @@ describe('rt-dashboard-class-list', () => {
     expect(names('.missing')).toEqual(['5h2-03']); // as pasted
     expect(names('.handed-in')).toEqual(['5H2-01 (ray-tracer-quest-5H2-01.json)', '5H2-02 (ray-tracer-quest-5h2-02.json)']);
     expect(names('.not-on-list')).toEqual(['5H2-09 (ray-tracer-quest-5H2-09.json)']);
+  });
+
+  it('lists a result without a participant code as not on the list, and asks again once the list is cleared', async () => {
+    const anonymous = classLearners(
+      readClassFiles([
+        {
+          name: 'results.json',
+          text: JSON.stringify({ ...simulatedExport(5), participant: null, learner: { ...simulatedExport(5).learner, id: 'install:abc' } }),
+        },
+      ]).records,
+    );
+    const list = await mount('rt-dashboard-class-list', { learners: [...learners, ...anonymous] });
+    const view = page.elementLocator(list);
+    const box = view.getByRole('textbox', { name: 'Participant codes you handed out, one per line' });
+    await box.fill('5H2-01');
+    await expect.element(view.getByText('1 of 1 handed in, 0 missing.')).toBeVisible();
+    await expect.element(view.getByRole('heading', { name: 'Not on the list (3)' })).toBeVisible();
+    expect(list.shadowRoot!.querySelector('.not-on-list')!.textContent).toContain('(no code) (results.json)');
+    await box.fill('');
+    await expect.element(view.getByText('Paste the class list to see who has handed in')).toBeVisible();
+    expect(localStorage.getItem(CLASS_LIST_KEY)).toBe('');
   });
 
   it('keeps the pasted list in this browser for the next visit', async () => {

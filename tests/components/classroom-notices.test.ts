@@ -5,8 +5,10 @@ import { afterEach, describe, expect, it } from 'vitest';
 import { page, userEvent } from 'vitest/browser';
 import type { WithdrawReport } from '../../src/app/withdraw-data.ts';
 import '../../src/ui/game/rt-participant-dialog.ts';
+import '../../src/ui/game/rt-progress-menu.ts';
 import type { ProgressCommand } from '../../src/ui/game/rt-progress-menu.ts';
 import '../../src/ui/game/rt-withdraw.ts';
+import '../../src/ui/shell/rt-link-notice.ts';
 import '../../src/ui/shell/rt-preview-notice.ts';
 import { mount, record, unmountAll } from './mount.ts';
 
@@ -101,5 +103,41 @@ describe('rt-preview-notice', () => {
     await view.getByRole('button', { name: 'Dismiss message' }).click();
     await expect.element(view.getByRole('status')).not.toBeInTheDocument();
     expect(notice.dismissed).toBe(true);
+  });
+});
+
+describe('rt-link-notice', () => {
+  it('shows why a link did not open until dismissed, and again for the next problem', async () => {
+    const notice = await mount('rt-link-notice', { text: 'This assignment link is damaged.' });
+    const view = page.elementLocator(notice);
+    await expect.element(view.getByRole('alert')).toHaveTextContent('This assignment link is damaged.');
+    await view.getByRole('button', { name: 'Dismiss message' }).click();
+    await expect.element(view.getByRole('alert')).not.toBeInTheDocument();
+    notice.text = 'This link is for another version of the game.';
+    await expect.element(view.getByRole('alert')).toHaveTextContent('another version of the game');
+  });
+
+  it('shows nothing without a text', async () => {
+    const notice = await mount('rt-link-notice', {});
+    expect(notice.shadowRoot!.querySelector('[role=alert]')).toBeNull();
+  });
+});
+
+describe("rt-progress-menu's reset", () => {
+  it('resets only after "Reset" in its confirmation, not after Cancel', async () => {
+    const menu = await mount('rt-progress-menu', {});
+    const commands = record<ProgressCommand>(menu, 'progress-command');
+    const view = page.elementLocator(menu);
+    await view.getByRole('button', { name: /Menu/ }).click();
+    await view.getByRole('button', { name: 'Reset progress…' }).click();
+    const confirm = view.getByRole('dialog', { name: 'Reset all progress?' });
+    await confirm.getByRole('button', { name: 'Cancel' }).click();
+    await expect.element(confirm).not.toBeInTheDocument();
+    expect(commands).toEqual([]);
+    // The modal dialog closed the Menu's popover: it is opened again, as a learner would.
+    await view.getByRole('button', { name: /Menu/ }).click();
+    await view.getByRole('button', { name: 'Reset progress…' }).click();
+    await confirm.getByRole('button', { name: 'Reset', exact: true }).click();
+    expect(commands).toEqual([{ kind: 'reset' }]);
   });
 });

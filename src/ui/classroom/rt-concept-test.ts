@@ -1,5 +1,5 @@
 import { msg, str } from '@lit/localize';
-import { css, html, nothing } from 'lit';
+import { css, html } from 'lit';
 import type { ConceptTestSubmission } from '../../classroom/concept-test/concept-answers.ts';
 import type { ConceptForm, ConceptItem } from '../../classroom/concept-test/concept-bank-schema.ts';
 import { conceptBankNow, formItems, loadConceptBank } from '../../classroom/concept-test/concept-bank.ts';
@@ -8,6 +8,7 @@ import { currentLocale } from '../../i18n/locale.ts';
 import { choiceOrder } from '../../quest/choice-order.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
 import { classroomStyles } from './classroom-styles.ts';
+import { focusQuestion, handInRow, questionCard, questionFormStyles } from './question-form.ts';
 import { LocalizedElement } from '../controls/localized-element.ts';
 
 /** What the page hands out: which test, and the answers. */
@@ -38,6 +39,7 @@ export class RtConceptTest extends LocalizedElement {
 
   static override styles = [
     classroomStyles,
+    questionFormStyles,
     css`
       :host {
         position: fixed;
@@ -58,35 +60,12 @@ export class RtConceptTest extends LocalizedElement {
       h2 {
         margin: 0 0 8px;
       }
-      fieldset {
-        border: 1px solid var(--rt-border);
-        border-radius: var(--rt-radius);
-        background: var(--rt-surface);
-        margin: 0 0 12px;
-        padding: 12px 16px;
-        min-width: 0;
-        overflow-wrap: anywhere;
-      }
-      fieldset[aria-invalid='true'] {
-        border-color: var(--rt-danger);
-        border-width: 2px;
-      }
-      legend {
-        font-weight: 600;
-        padding: 0 4px;
-      }
       label {
         display: flex;
         gap: 8px;
         align-items: center;
         min-height: var(--rt-target);
         cursor: pointer;
-      }
-      .actions {
-        display: flex;
-        flex-wrap: wrap;
-        gap: 12px;
-        align-items: center;
       }
     `,
   ];
@@ -135,8 +114,7 @@ export class RtConceptTest extends LocalizedElement {
     const items = this.items;
     this.missing = items.filter((item) => !this.answers[item.id]).map((item) => item.id);
     if (this.missing.length > 0) {
-      await this.updateComplete;
-      this.renderRoot.querySelector<HTMLInputElement>(`[data-item="${this.missing[0]}"] input`)?.focus();
+      await focusQuestion(this, this.missing[0]!);
       return;
     }
     const answers = Object.fromEntries(items.map((item) => [item.id, this.answers[item.id]!]));
@@ -161,27 +139,25 @@ export class RtConceptTest extends LocalizedElement {
         }
       </p>
       ${items.map((item, index) => this.renderItem(item, index + 1))}
-      <div class="actions">
-        <button class="primary" type="submit">${msg('Hand in')}</button>
-        ${this.missing.length > 0 ? html`<span class="problem" role="alert">${this.missing.length === 1 ? msg('1 question has no answer yet.') : msg(str`${this.missing.length} questions have no answer yet.`)}</span>` : nothing}
-      </div>
+      ${handInRow(this.missing.length, (count) => (count === 1 ? msg('1 question has no answer yet.') : msg(str`${count} questions have no answer yet.`)))}
     </form>`;
   }
 
   private renderItem(item: ConceptItem, number: number) {
     const missing = this.missing.includes(item.id);
     const order = choiceOrder(item.choices.length, `${this.seed}/${item.id}`);
-    return html`<fieldset data-item=${item.id} aria-invalid=${missing ? 'true' : 'false'} aria-describedby=${missing ? `${item.id}-missing` : nothing}>
-      <legend>${number}. ${localize(item.question, this.locale)}</legend>
-      ${order.map((position) => {
+    return questionCard({
+      id: item.id,
+      legend: html`${number}. ${localize(item.question, this.locale)}`,
+      input: html`${order.map((position) => {
         const choice = item.choices[position]!;
         return html`<label>
           <input type="radio" name=${item.id} .checked=${this.answers[item.id] === choice.id} @change=${() => this.choose(item.id, choice.id)} />
           ${localize(choice.text, this.locale)}
         </label>`;
-      })}
-      ${missing ? html`<p class="problem" id=${`${item.id}-missing`}>${msg('Please choose an answer (a guess is fine).')}</p>` : nothing}
-    </fieldset>`;
+      })}`,
+      problem: missing ? msg('Please choose an answer (a guess is fine).') : '',
+    });
   }
 }
 

@@ -1,6 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { css, html, nothing } from 'lit';
 import { LocalizedElement } from '../controls/localized-element.ts';
+import { codeBoxStyles } from './code-box.css.ts';
 import { loadBrowserCatalog } from '../../app/level-catalog-browser.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import { choiceQuestions, optionTexts } from '../../classroom/quiz-options.ts';
@@ -42,10 +43,13 @@ export class RtExportMenu extends LocalizedElement {
     conceptTest: { attribute: false },
   };
 
-  static override styles = css`
+  static override styles = [
+    codeBoxStyles,
+    css`
     :host {
       display: grid;
       gap: var(--rt-space);
+      --code-box-height: 5em;
     }
     .row {
       display: flex;
@@ -67,18 +71,6 @@ export class RtExportMenu extends LocalizedElement {
       margin: 0;
       font-size: 0.9em;
       color: var(--rt-muted);
-    }
-    textarea {
-      font: 0.8em / 1.3 ui-monospace, monospace;
-      width: 100%;
-      box-sizing: border-box;
-      height: 5em;
-      resize: vertical;
-      word-break: break-all;
-      background: var(--rt-surface);
-      color: var(--rt-text);
-      border: 1px solid var(--rt-border);
-      border-radius: var(--rt-radius);
     }
     .research button {
       min-height: 28px;
@@ -105,7 +97,8 @@ export class RtExportMenu extends LocalizedElement {
       cursor: not-allowed;
       opacity: 0.6;
     }
-  `;
+  `,
+  ];
 
   /** The progress to export; a function is called at the click, so the file has the latest events. */
   declare progress: Progress | (() => Progress) | null;
@@ -227,7 +220,7 @@ export class RtExportMenu extends LocalizedElement {
           : html`<p aria-live="polite">
               ${this.copied ? msg('Copied. Paste it into the form your teacher gave you (Ctrl+V).') : msg('Select all of the code below and copy it (Ctrl+C).')}
             </p>
-            <textarea readonly aria-label=${msg('Your results code')} @focus=${(event: FocusEvent) => (event.target as HTMLTextAreaElement).select()}>${this.code}</textarea>`
+            <textarea class="codes" readonly aria-label=${msg('Your results code')} @focus=${(event: FocusEvent) => (event.target as HTMLTextAreaElement).select()}>${this.code}</textarea>`
       }
       <div class="row research">
         <p>${msg('Other formats, for research:')}</p>

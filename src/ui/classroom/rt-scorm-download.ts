@@ -87,7 +87,7 @@ export class RtScormDownload extends LocalizedElement {
     const disabled = !this.link || this.busy;
     return html`
       <h3>${msg('For a learning platform (SCORM)')}</h3>
-      <p class="muted">${msg("Moodle, Canvas, itslearning and Brightspace import a SCORM package and record each pupil's completion, score and answers. Choose 2004 when your platform offers it (it also records how long each answer took); 1.2 works almost everywhere.")}</p>
+      <p class="muted">${msg("Moodle, Canvas, itslearning and Brightspace import a SCORM package and record each student's completion, score and answers. Choose 2004 when your platform offers it (it also records how long each answer took); 1.2 works almost everywhere.")}</p>
       <div class="row">
         <button type="button" ?disabled=${disabled} @click=${() => this.download('2004')}>${msg('SCORM 2004 package')}</button>
         <button type="button" ?disabled=${disabled} @click=${() => this.download('1.2')}>${msg('SCORM 1.2 package')}</button>

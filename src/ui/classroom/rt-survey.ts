@@ -9,6 +9,7 @@ import type { Assignment } from '../../classroom/assignment.ts';
 import { currentLocale } from '../../i18n/locale.ts';
 import { localize, type Locale } from '../../quest/localized-text.ts';
 import { classroomStyles } from './classroom-styles.ts';
+import { focusQuestion, handInRow, questionCard, questionFormStyles } from './question-form.ts';
 
 /**
  * @summary The closing questionnaire: one question after another on a page that scrolls,
@@ -24,6 +25,7 @@ export class RtSurvey extends LocalizedElement {
     locale: {},
     levels: { attribute: false },
     choice: { attribute: false },
+    questions: { attribute: false },
     answers: { state: true },
     problems: { state: true },
     submitted: { state: true },
@@ -31,6 +33,7 @@ export class RtSurvey extends LocalizedElement {
 
   static override styles = [
     classroomStyles,
+    questionFormStyles,
     css`
       :host {
         display: block;
@@ -45,24 +48,6 @@ export class RtSurvey extends LocalizedElement {
       }
       h2 {
         margin: 0 0 var(--rt-space);
-      }
-      fieldset {
-        border: 1px solid var(--rt-border);
-        border-radius: var(--rt-radius);
-        background: var(--rt-surface);
-        margin: 0 0 calc(var(--rt-space) * 1.5);
-        padding: 12px 16px;
-        /* A fieldset is as wide as its widest line by default: long options must wrap instead. */
-        min-width: 0;
-        overflow-wrap: anywhere;
-      }
-      fieldset[aria-invalid='true'] {
-        border-color: var(--rt-danger);
-        border-width: 2px;
-      }
-      legend {
-        font-weight: 600;
-        padding: 0 4px;
       }
       .optional {
         font-weight: normal;
@@ -105,11 +90,6 @@ export class RtSurvey extends LocalizedElement {
         min-height: 4.5em;
         resize: vertical;
       }
-      .actions {
-        display: flex;
-        gap: var(--rt-space);
-        align-items: center;
-      }
       /* A narrow survey (a phone) puts the ends' labels above and below the scale, and its
          steps share one row: 1 to 10 in a 300 px row leaves each step's target 29 px wide,
          above WCAG 2.2's 24 px minimum, instead of breaking the scale over two rows. */
@@ -135,6 +115,8 @@ export class RtSurvey extends LocalizedElement {
   declare levels: readonly string[] | null;
   /** The teacher's own choice of questions (Assignment.surveyQuestions), over the levels' default. */
   declare choice: Assignment['surveyQuestions'];
+  /** Exactly these questions, by id (the teacher's preview of their choice, survey-preview-link.ts); null: by the levels and the choice. */
+  declare questions: readonly string[] | null;
   declare answers: SurveyAnswers;
   declare problems: Record<string, AnswerProblem>;
   declare submitted: boolean;
@@ -145,6 +127,7 @@ export class RtSurvey extends LocalizedElement {
     // The page's language, unless the assignment names its own (a teacher's preview names none).
     this.locale = currentLocale();
     this.levels = null;
+    this.questions = null;
     this.answers = {};
     this.problems = {};
     this.submitted = false;
@@ -152,6 +135,8 @@ export class RtSurvey extends LocalizedElement {
 
   private get survey(): Survey | undefined {
     const survey = surveyById(this.surveyId);
+    const only = this.questions;
+    if (survey && only) return surveyAsked(survey, null, Object.fromEntries(survey.questions.map((question) => [question.id, only.includes(question.id)])));
     return survey && surveyAsked(survey, this.levels, this.choice);
   }
 
@@ -178,8 +163,7 @@ export class RtSurvey extends LocalizedElement {
     this.problems = checkAnswers(survey, this.answers);
     const first = survey.questions.find((question) => this.problems[question.id]);
     if (first) {
-      await this.updateComplete;
-      this.renderRoot.querySelector<HTMLElement>(`[data-question="${first.id}"] :is(input, textarea)`)?.focus();
+      await focusQuestion(this, first.id);
       return;
     }
     const submission: SurveySubmission = { survey: survey.id, submittedAt: new Date().toISOString(), answers: cleanAnswers(survey, this.answers) };
@@ -191,30 +175,24 @@ export class RtSurvey extends LocalizedElement {
     const survey = this.survey;
     if (!survey) return html`<p class="problem" role="alert">${msg(str`The survey "${this.surveyId}" is not part of this version of the game.`)}</p>`;
     if (this.submitted) return html`<h2>${this.text(survey.title)}</h2><p role="status">${msg('Thank you for your answers.')}</p>`;
-    const count = Object.keys(this.problems).length;
     return html`
       <form @submit=${this.submit} novalidate>
         <h2>${this.text(survey.title)}</h2>
         ${survey.intro ? html`<p>${this.text(survey.intro)}</p>` : nothing}
         ${survey.questions.map((question, index) => this.renderQuestion(question, index + 1))}
-        <div class="actions">
-          <button class="primary" type="submit">${msg('Hand in')}</button>
-          ${count > 0 ? html`<span class="problem" role="alert">${count === 1 ? msg('1 answer still needs attention.') : msg(str`${count} answers still need attention.`)}</span>` : nothing}
-        </div>
+        ${handInRow(Object.keys(this.problems).length, (count) => (count === 1 ? msg('1 answer still needs attention.') : msg(str`${count} answers still need attention.`)))}
       </form>
     `;
   }
 
   private renderQuestion(question: SurveyQuestion, number: number) {
     const problem = this.problems[question.id];
-    const problemId = `${question.id}-problem`;
-    return html`
-      <fieldset data-question=${question.id} aria-invalid=${problem ? 'true' : 'false'} aria-describedby=${problem ? problemId : nothing}>
-        <legend>${number}. ${this.text(question.text)} ${question.required ? nothing : html`<span class="optional">${msg('(optional)')}</span>`}</legend>
-        ${this.renderInput(question)}
-        ${problem ? html`<p class="problem" id=${problemId}>${this.describe(problem)}</p>` : nothing}
-      </fieldset>
-    `;
+    return questionCard({
+      id: question.id,
+      legend: html`${number}. ${this.text(question.text)} ${question.required ? nothing : html`<span class="optional">${msg('(optional)')}</span>`}`,
+      input: this.renderInput(question),
+      problem: problem ? this.describe(problem) : '',
+    });
   }
 
   private renderInput(question: SurveyQuestion) {

@@ -77,7 +77,7 @@ export class RtTeacherConceptTest extends LocalizedElement {
   override render() {
     const labels: Record<ConceptTestOrder, string> = {
       'a-then-b': msg('Form A before the first level, form B after the last'),
-      counterbalanced: msg('Counterbalanced: about half of the learners, chosen at random, take form B first'),
+      counterbalanced: msg('Counterbalanced: about half of the students, chosen at random, take form B first'),
     };
     const bank = conceptBankNow();
     const size = bank ? formItems(bank, 'A').length : 0;

@@ -21,11 +21,11 @@ export function consentSection(assignment: Assignment, change: (consent: string 
     <h2>${msg('Information before the start')}</h2>
     <!-- The field outside its label: the label's bold would make the grey default text hard to read. -->
     <label class="field" for="consent">
-      ${msg('What pupils read before they type their code: what is recorded, who sees it, that taking part is voluntary, how to withdraw')}
+      ${msg('What students read before they type their code: what is recorded, who sees it, that taking part is voluntary, how to withdraw')}
     </label>
     <textarea id="consent" name="consent" rows="8" style="width: 100%" maxlength=${CONSENT_MAX} .value=${assignment.consent ?? ''} placeholder=${defaultConsentText()} @input=${typed}></textarea>
     <p class="muted">
-      ${msg(str`Left empty, pupils read the text shown in grey, in their language. Up to ${CONSENT_MAX} characters; a blank line starts a new paragraph.`)}
+      ${msg(str`Left empty, students read the text shown in grey, in their language. Up to ${CONSENT_MAX} characters; a blank line starts a new paragraph.`)}
     </p>
   </section>`;
 }

@@ -80,7 +80,9 @@ export function minutesText(minutes: number): string {
 export function levelMinutesText(level: Level, required: readonly string[], measured: MeasuredLevel | undefined): string {
   const minutes = minutesText(levelMinutes(level, required, measured));
   if (!measured) return msg(str`about ${minutes} min (estimate)`);
-  return measured.learners === 1 ? msg(str`about ${minutes} min (time of 1 pupil)`) : msg(str`about ${minutes} min (median of ${measured.learners} pupils)`);
+  return measured.learners === 1
+    ? msg(str`about ${minutes} min (time of 1 student)`)
+    : msg(str`about ${minutes} min (median of ${measured.learners} students)`);
 }
 
 /** The whole assignment's minutes, and where they come from, under the level list. */
@@ -96,7 +98,7 @@ export function totalMinutesText(a: Assignment, levels: readonly Level[], measur
   const minutes = minutesText(total);
   return anyMeasured
     ? msg(
-        str`In all about ${minutes} minutes: the median active time of pupils whose results the dashboard in this browser has read, and an estimate from the kinds of task for levels it has no results of.`,
+        str`In all about ${minutes} minutes: the median active time of students whose results the dashboard in this browser has read, and an estimate from the kinds of task for levels it has no results of.`,
       )
     : msg(str`In all about ${minutes} minutes for the required tasks (an estimate from the kinds of task, not measured).`);
 }

@@ -1,7 +1,9 @@
 import { msg } from '@lit/localize';
 import { html, nothing } from 'lit';
 import type { Assignment } from '../../classroom/assignment.ts';
-import { SURVEY_IDS } from '../../classroom/surveys.ts';
+import { surveyAsked } from '../../classroom/survey-for-levels.ts';
+import { surveyPreviewHash } from '../../classroom/survey-preview-link.ts';
+import { SURVEY_IDS, surveyById } from '../../classroom/surveys.ts';
 import { surveyQuestionsSection } from './teacher-survey-questions.ts';
 
 /**
@@ -33,9 +35,15 @@ export function settingsSection(a: Assignment, change: ChangeAssignment) {
       ['none', msg('None')],
       ...SURVEY_IDS.map((id): [string, string] => [id, id === 'default' ? msg('The standard questions (about 5 minutes)') : id]),
     ])}
-    ${a.survey ? html`<a href=${`#/survey/${a.survey}`} target="_blank" rel="noopener">${msg('Preview the survey (opens a new tab)')}</a>` : nothing}
+    ${a.survey ? html`<a href=${surveyPreview(a.survey, a)} target="_blank" rel="noopener">${msg('Preview the survey (opens a new tab)')}</a>` : nothing}
     ${surveyQuestionsSection(a, change)}
   </section>`;
+}
+
+/** The preview's address: the survey with the questions this assignment asks. */
+function surveyPreview(surveyId: string, a: Assignment): string {
+  const survey = surveyById(surveyId);
+  return surveyPreviewHash(surveyId, survey ? surveyAsked(survey, a.levels, a.surveyQuestions).questions.map((question) => question.id) : []);
 }
 
 /** The class code and the school's address: what the dashboard and xAPI need. */

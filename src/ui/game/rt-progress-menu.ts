@@ -5,6 +5,7 @@ import type { DamagedSave } from '../../app/damaged-saves.ts';
 import type { WithdrawReport } from '../../app/withdraw-data.ts';
 import type { Locale } from '../../quest/localized-text.ts';
 import { damagedSavesList, damagedSavesStyles } from './damaged-saves-list.ts';
+import { askToConfirm, confirmDialog, confirmDialogStyles } from './confirm-dialog.ts';
 import { fire, gameStyles } from './game-styles.ts';
 import '../controls/rt-offline-status.ts';
 
@@ -37,6 +38,7 @@ export class RtProgressMenu extends LocalizedElement {
   static override styles = [
     gameStyles,
     damagedSavesStyles,
+    confirmDialogStyles,
     css`
       [popover] {
         width: 280px;
@@ -64,22 +66,6 @@ export class RtProgressMenu extends LocalizedElement {
       }
       input[type='file'] {
         display: none;
-      }
-      dialog {
-        max-width: 360px;
-        border: 1px solid var(--rt-border);
-        border-radius: var(--rt-radius);
-        background: var(--rt-surface);
-        color: var(--rt-text);
-      }
-      .actions {
-        display: flex;
-        gap: 8px;
-        justify-content: flex-end;
-      }
-      button.danger {
-        border-color: var(--rt-danger);
-        color: var(--rt-danger);
       }
     `,
   ];
@@ -132,33 +118,23 @@ export class RtProgressMenu extends LocalizedElement {
             ${msg('Import progress…')}
           </button>
           <input type="file" accept=".json,application/json" aria-label=${msg('Progress file to import')} @change=${this.imported} />
-          <button class="danger" @click=${this.askReset} title=${msg('Start the game from the beginning')}>${msg('Reset progress…')}</button>
+          <button class="danger" @click=${() => askToConfirm(this.renderRoot, 'reset')} title=${msg('Start the game from the beginning')}>${msg('Reset progress…')}</button>
           <rt-withdraw></rt-withdraw>
         </fieldset>
         ${damagedSavesList(this.damagedSaves, send)}
         <rt-offline-status></rt-offline-status>
       </div>
-      <dialog aria-labelledby="reset-title" @close=${(event: Event) => (event.target as HTMLDialogElement).returnValue === 'reset' && send({ kind: 'reset' })}>
-        <h3 id="reset-title">${msg('Reset all progress?')}</h3>
-        <p>${msg('Your points, badges and finished levels will be gone. Export your progress first if you may want it back.')}</p>
-        <form method="dialog" class="actions">
-          <button value="cancel" autofocus>${msg('Cancel')}</button>
-          <button value="reset" class="danger">${msg('Reset')}</button>
-        </form>
-      </dialog>
+      ${confirmDialog({
+        name: 'reset',
+        title: msg('Reset all progress?'),
+        body: html`<p>${msg('Your points, badges and finished levels will be gone. Export your progress first if you may want it back.')}</p>`,
+        cancel: msg('Cancel'),
+        confirm: msg('Reset'),
+        // Sent once the dialog has closed, so that its message is not under the dialog.
+        confirmed: () => send({ kind: 'reset' }),
+      })}
     `;
   }
-
-  /**
-   * The confirmation; the reset is sent once it has closed with "Reset" (its message then is
-   * not under the dialog). Its answer is cleared first: Escape leaves the last one.
-   */
-  private readonly askReset = () => {
-    const dialog = this.renderRoot.querySelector('dialog');
-    if (!dialog) return;
-    dialog.returnValue = '';
-    dialog.showModal();
-  };
 
   private async imported(event: Event): Promise<void> {
     const input = event.target as HTMLInputElement;

@@ -1,6 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { css, html } from 'lit';
 import type { WithdrawReport } from '../../app/withdraw-data.ts';
+import { askToConfirm, confirmDialog, confirmDialogStyles } from './confirm-dialog.ts';
 import { fire, gameStyles } from './game-styles.ts';
 import type { ProgressCommand } from './rt-progress-menu.ts';
 import { LocalizedElement } from '../controls/localized-element.ts';
@@ -17,25 +18,10 @@ export class RtWithdraw extends LocalizedElement {
 
   static override styles = [
     gameStyles,
+    confirmDialogStyles,
     css`
       :host {
         display: grid;
-      }
-      dialog {
-        max-width: 400px;
-        border: 1px solid var(--rt-border);
-        border-radius: var(--rt-radius);
-        background: var(--rt-surface);
-        color: var(--rt-text);
-      }
-      .actions {
-        display: flex;
-        gap: 8px;
-        justify-content: flex-end;
-      }
-      button.danger {
-        border-color: var(--rt-danger);
-        color: var(--rt-danger);
       }
     `,
   ];
@@ -48,14 +34,7 @@ export class RtWithdraw extends LocalizedElement {
     this.report = null;
   }
 
-  private ask(): void {
-    const dialog = this.renderRoot.querySelector<HTMLDialogElement>('dialog.confirm')!;
-    dialog.returnValue = '';
-    dialog.showModal();
-  }
-
-  private closed(event: Event): void {
-    if ((event.target as HTMLDialogElement).returnValue !== 'delete') return;
+  private withdraw(): void {
     fire<ProgressCommand>(this, 'progress-command', {
       kind: 'withdraw',
       done: (report) => {
@@ -67,20 +46,20 @@ export class RtWithdraw extends LocalizedElement {
 
   override render() {
     return html`
-      <button class="danger" @click=${this.ask} title=${msg('Stop taking part and delete what this browser kept of this assignment (or of free play, when no assignment is open)')}>
+      <button class="danger" @click=${() => askToConfirm(this.renderRoot, 'withdraw')} title=${msg('Stop taking part and delete what this browser kept of this assignment (or of free play, when no assignment is open)')}>
         ${msg('Withdraw and delete my data…')}
       </button>
-      <dialog class="confirm" aria-labelledby="withdraw-title" @close=${this.closed}>
-        <h3 id="withdraw-title">${msg('Withdraw and delete your data?')}</h3>
-        <p>
-          ${msg('This deletes from this browser: your progress with the record of what you did, your participant code, your survey and concept test answers and their backups. It cannot be undone.')}
-        </p>
-        <p>${msg('A results file or code you already handed in is not in this browser: ask your teacher to delete it. Close other tabs of this game first.')}</p>
-        <form method="dialog" class="actions">
-          <button value="cancel" autofocus>${msg('Cancel')}</button>
-          <button value="delete" class="danger">${msg('Delete my data')}</button>
-        </form>
-      </dialog>
+      ${confirmDialog({
+        name: 'withdraw',
+        title: msg('Withdraw and delete your data?'),
+        body: html`<p>
+            ${msg('This deletes from this browser: your progress with the record of what you did, your participant code, your survey and concept test answers and their backups. It cannot be undone.')}
+          </p>
+          <p>${msg('A results file or code you already handed in is not in this browser: ask your teacher to delete it. Close other tabs of this game first.')}</p>`,
+        cancel: msg('Cancel'),
+        confirm: msg('Delete my data'),
+        confirmed: () => this.withdraw(),
+      })}
       <dialog class="report" aria-labelledby="withdrawn-title" @close=${() => location.reload()}>
         <h3 id="withdrawn-title">${msg('Your data was deleted')}</h3>
         ${this.report ? reportText(this.report) : ''}

@@ -6,6 +6,7 @@ import { isSceneFragment } from '../../app/scene-link.ts';
 import type { Assignment } from '../../classroom/assignment.ts';
 import { decodeAssignment, isAssignmentFragment } from '../../classroom/assignment-link.ts';
 import { previewedLevelId } from '../../classroom/level-preview.ts';
+import { readSurveyPreview, SURVEY_PREVIEW } from '../../classroom/survey-preview-link.ts';
 import { TEACHER_LINK_PREFIX } from '../../classroom/teacher-link.ts';
 import { startLocale } from '../../i18n/locale.ts';
 import { LazyModule } from '../../util/lazy-module.ts';
@@ -15,9 +16,6 @@ import { levelPreviewPage } from './level-preview-page.ts';
 import { linkProblemText } from './link-problem-text.ts';
 import './rt-link-notice.ts';
 import './rt-scene-link-lab.ts';
-
-/** `#/survey/<id>`: a survey on its own page. */
-export const SURVEY_PREVIEW = '#/survey/';
 
 /**
  * The teacher's pages, loaded when first opened: a student never needs them, and the QR
@@ -102,8 +100,10 @@ export class RtApp extends LocalizedElement {
     const page = teacherPage(this.route);
     if (page) {
       // A teacher's preview of a survey: nothing is saved.
-      if (customElements.get(page.tag) && page === SURVEY_PREVIEW_PAGE)
-        return html`<rt-survey survey-id=${this.route.slice(SURVEY_PREVIEW.length)}></rt-survey>`;
+      if (customElements.get(page.tag) && page === SURVEY_PREVIEW_PAGE) {
+        const { surveyId, questions } = readSurveyPreview(this.route);
+        return html`<rt-survey survey-id=${surveyId} .questions=${questions}></rt-survey>`;
+      }
       if (customElements.get(page.tag))
         return page.tag === 'rt-teacher-page' ? html`<rt-teacher-page></rt-teacher-page>` : html`<rt-dashboard-page></rt-dashboard-page>`;
       if (page.code.state === 'failed')

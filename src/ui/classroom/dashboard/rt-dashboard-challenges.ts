@@ -43,13 +43,13 @@ export class RtDashboardChallenges extends LocalizedElement {
     return html`<h3>${msg('Challenges')}</h3>
       <table>
         <caption>
-          ${msg(str`How close learners got to each challenge's target: a match score of ${MATCH_SCORE} or more is a match`)}
+          ${msg(str`How close students got to each challenge's target: a match score of ${MATCH_SCORE} or more is a match`)}
         </caption>
         <thead>
           <tr>
             <th scope="col">${msg('Task')}</th>
-            <th scope="col" title=${msg('Learners who rendered at least once')}>n</th>
-            <th scope="col">${msg('Best match score per learner')}</th>
+            <th scope="col" title=${msg('Students who rendered at least once')}>n</th>
+            <th scope="col">${msg('Best match score per student')}</th>
             <th scope="col">${msg('Matched by themselves (★ / ★★ / ★★★)')}</th>
             <th scope="col">${msg('Stopped without a match, at')}</th>
           </tr>

@@ -3,6 +3,7 @@ import { css, html, nothing } from 'lit';
 import { checkClassList, parseClassList, type ClassListCheck } from '../../../classroom/dashboard-class-list.ts';
 import type { ClassLearner } from '../../../classroom/dashboard-learners.ts';
 import { classroomStyles } from '../classroom-styles.ts';
+import { codeBoxStyles } from '../code-box.css.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
 
 /** Where the pasted list is kept, so that a reload or the next lesson does not ask for it again. */
@@ -22,30 +23,17 @@ export class RtDashboardClassList extends LocalizedElement {
 
   static override styles = [
     classroomStyles,
+    codeBoxStyles,
     css`
       :host {
         display: block;
+        --code-box-height: 12em;
       }
       .paste {
         display: grid;
         grid-template-columns: minmax(12em, 18em) 1fr;
         gap: calc(var(--rt-space) * 2);
         align-items: start;
-      }
-      textarea {
-        font: inherit;
-        width: 100%;
-        box-sizing: border-box;
-        height: 12em;
-        resize: vertical;
-        background: var(--rt-surface);
-        color: var(--rt-text);
-        border: 1px solid var(--rt-border);
-        border-radius: var(--rt-radius);
-      }
-      label {
-        display: grid;
-        gap: 4px;
       }
       .summary {
         margin: 0 0 var(--rt-space);

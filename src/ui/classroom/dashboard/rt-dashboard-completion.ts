@@ -23,7 +23,7 @@ const PARTS: readonly { part: Part; fill: string; pattern: PatternName }[] = [
 ];
 
 const partNames = (): Record<Part, string> => ({
-  done: msg('done by the learner'),
+  done: msg('done by the student'),
   shown: msg('shown by the app ("show me")'),
   skipped: msg('skipped (optional)'),
   unfinished: msg('not finished'),

@@ -68,14 +68,14 @@ export class RtDashboardGain extends LocalizedElement {
     if (classes.length === 0) return nothing;
     return html`<p>
         ${msg(
-          "Scores are the share of questions answered right, averaged over the learners who took both tests (n). ⟨g⟩ is the normalized gain of those class averages, (after − before) / (100 % − before) (Hake 1998): the part of what was left to learn that was learned. It is not the average of each learner's gain.",
+          "Scores are the share of questions answered right, averaged over the students who took both tests (n). ⟨g⟩ is the normalized gain of those class averages, (after − before) / (100 % − before) (Hake 1998): the part of what was left to learn that was learned. It is not the average of each student's gain.",
         )}
       </p>
       ${classes.map((group) => this.renderClass(group, bank))}`;
   }
 
   private renderClass(group: ClassGain, bank: ConceptBank) {
-    const name = group.classCode === '' ? msg('Learners without a class code') : msg(str`Class ${group.classCode}`);
+    const name = group.classCode === '' ? msg('Students without a class code') : msg(str`Class ${group.classCode}`);
     const concept = (row: GainRow) =>
       row.concept === null ? msg('Whole test') : localize(bank.concepts.find((candidate) => candidate.id === row.concept)?.name ?? row.concept, this.locale);
     const number = new Intl.NumberFormat(this.locale, { minimumFractionDigits: 2, maximumFractionDigits: 2 });

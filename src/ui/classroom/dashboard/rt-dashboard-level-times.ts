@@ -71,7 +71,7 @@ export class RtDashboardLevelTimes extends DashboardChart<LearnerLevelRow> {
       </caption>
       <thead>
         <tr>
-          <th scope="col">${msg('Learner')}</th>
+          <th scope="col">${msg('Student')}</th>
           ${this.levels.map((level) => html`<th scope="col">${level}</th>`)}
         </tr>
       </thead>

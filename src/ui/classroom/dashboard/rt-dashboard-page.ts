@@ -164,13 +164,13 @@ export class RtDashboardPage extends LocalizedElement {
     const { records, skipped } = this.files;
     const learners = this.learners.length;
     const merged = records.length - learners;
-    const counted = learners === 1 ? msg('1 learner counted') : msg(str`${learners} learners counted`);
+    const counted = learners === 1 ? msg('1 student counted') : msg(str`${learners} students counted`);
     const files =
       merged === 0
         ? ''
         : merged === 1
-          ? msg(str` (from ${records.length} files: 1 merged into its learner's)`)
-          : msg(str` (from ${records.length} files: ${merged} merged into their learner's)`);
+          ? msg(str` (from ${records.length} files: 1 merged into its student's)`)
+          : msg(str` (from ${records.length} files: ${merged} merged into their student's)`);
     const skippedText = skipped.length === 1 ? msg('1 file skipped.') : msg(str`${skipped.length} files skipped.`);
     return `${counted}${files}, ${skippedText}`;
   }
@@ -250,14 +250,14 @@ export class RtDashboardPage extends LocalizedElement {
           </p>
           ${this.renderFilter()}
           <div class="actions">
-            <button type="button" ?disabled=${this.shown.length === 0} @click=${() => this.downloadCsv('class')} title=${msg('One CSV with every task attempt of every learner shown, for a spreadsheet or R')}>
+            <button type="button" ?disabled=${this.shown.length === 0} @click=${() => this.downloadCsv('class')} title=${msg('One CSV with every task attempt of every student shown, for a spreadsheet or R')}>
               ${msg('Download combined CSV')}
             </button>
-            <button type="button" ?disabled=${!this.shown.some((learner) => learner.survey)} @click=${() => this.downloadCsv('survey')} title=${msg('One row per learner shown who answered the survey, one column per question')}>
+            <button type="button" ?disabled=${!this.shown.some((learner) => learner.survey)} @click=${() => this.downloadCsv('survey')} title=${msg('One row per student shown who answered the survey, one column per question')}>
               ${msg('Download survey CSV')}
             </button>
-            <button type="button" ?disabled=${this.shown.length === 0} @click=${() => researchDownloads.learnerLevels(this.shown, this.levels)} title=${msg('One row per learner and level: time, passed, tasks, hints, quiz answers')}>
-              ${msg('Download learner × level CSV')}
+            <button type="button" ?disabled=${this.shown.length === 0} @click=${() => researchDownloads.learnerLevels(this.shown, this.levels)} title=${msg('One row per student and level: time, passed, tasks, hints, quiz answers')}>
+              ${msg('Download student × level CSV')}
             </button>
             <button type="button" @click=${() => researchDownloads.codebook(this.locale)} title=${msg('What every column, quiz option and survey answer in the downloads means')}>
               ${msg('Download codebook')}
@@ -288,14 +288,14 @@ export class RtDashboardPage extends LocalizedElement {
     const names = levelNames(this.locale);
     const rows = this.shown.map((learner) => ({ learner: learnerLabel(learner), cells: this.levels.map((level) => learnerInLevel(learner, level.level)) }));
     return html`<section class="learner-times" aria-labelledby="learner-times-heading">
-      <h2 id="learner-times-heading">${msg('Time per level, per learner')}</h2>
+      <h2 id="learner-times-heading">${msg('Time per level, per student')}</h2>
       <!-- A long class folds away, so the levels below stay in reach. -->
       <details ?open=${this.shown.length <= 40}>
         <summary>${learnersCounted(this.shown.length)}</summary>
         <rt-dashboard-level-times
           .rows=${rows}
           .levels=${this.levels.map((level) => names.level(level.level))}
-          caption=${msg('Active time of each learner in each level; a striped bar: not passed (yet)')}
+          caption=${msg('Active time of each student in each level; a striped bar: not passed (yet)')}
         ></rt-dashboard-level-times>
       </details>
     </section>`;
@@ -329,7 +329,7 @@ export class RtDashboardPage extends LocalizedElement {
     return html`<section class="level" data-level=${level.level} aria-label=${title}>
       <h2>${title}</h2>
       <p class="level-facts">
-        ${msg(str`${level.passed} of ${level.learners} learners passed`)}${
+        ${msg(str`${level.passed} of ${level.learners} students passed`)}${
           level.stats
             ? msg(
                 str`; median active time ${formatDuration(level.stats.median)} (middle half ${formatDuration(level.stats.q1)} – ${formatDuration(level.stats.q3)})`,
@@ -340,18 +340,18 @@ export class RtDashboardPage extends LocalizedElement {
       <h3>${msg('Active time per task')}</h3>
       <rt-dashboard-times
         .rows=${rows}
-        caption=${msg(str`Active time per task in ${title}: a box for the middle half, a line for the median, a dot per learner`)}
+        caption=${msg(str`Active time per task in ${title}: a box for the middle half, a line for the median, a dot per student`)}
       ></rt-dashboard-times>
-      <h3>${msg('Active time for the whole level (learners who passed)')}</h3>
+      <h3>${msg('Active time for the whole level (students who passed)')}</h3>
       <rt-dashboard-times
         class="whole-level"
         .rows=${[{ label: msg('Whole level'), times: level.times, stats: level.stats }]}
-        caption=${msg(str`Active time for the whole of ${title}, of the learners who passed it`)}
+        caption=${msg(str`Active time for the whole of ${title}, of the students who passed it`)}
       ></rt-dashboard-times>
       <h3>${msg('Completion')}</h3>
       <rt-dashboard-completion .rows=${rows} caption=${msg(str`Completion per task in ${title}`)}></rt-dashboard-completion>
       ${this.renderQuizzes(level.level, title)}<rt-dashboard-challenges .records=${this.shown} level=${level.level}></rt-dashboard-challenges>
-      <h3>${msg('Where learners got stuck')}</h3>
+      <h3>${msg('Where students got stuck')}</h3>
       <p class="rule">${stuckRule()}</p>
       <rt-dashboard-stuck
         .rows=${rows.map((row) => ({ ...row, task: names.task(level.level, row.task), stuck: stuck.has(row.task) }))}
@@ -384,7 +384,7 @@ export class RtDashboardPage extends LocalizedElement {
 function stuckRule(): string {
   const share = `${Math.round(STUCK_MIN_SHARE * 100)} %`;
   return msg(
-    str`⚠ marks a sticking point: a required task where at least ${share} of the learners needed help (a hint they opened, "show me", or they did not finish it) and at least ${STUCK_TIMES_TYPICAL} times as many as on a typical task of this level (the median). A hint offered after idling counts only when the learner opened it. Tasks seen by fewer than ${STUCK_MIN_LEARNERS} learners are not marked.`,
+    str`⚠ marks a sticking point: a required task where at least ${share} of the students needed help (a hint they opened, "show me", or they did not finish it) and at least ${STUCK_TIMES_TYPICAL} times as many as on a typical task of this level (the median). A hint offered after idling counts only when the student opened it. Tasks seen by fewer than ${STUCK_MIN_LEARNERS} students are not marked.`,
   );
 }
 

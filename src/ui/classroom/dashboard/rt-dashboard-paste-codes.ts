@@ -4,6 +4,7 @@ import type { DroppedFile } from '../../../classroom/dashboard-class.ts';
 import type { SkippedFile } from '../../../classroom/dashboard-record.ts';
 import { decodeResultsCode, findResultsCodes, RESULTS_CODE_PREFIX } from '../../../classroom/results-code.ts';
 import { classroomStyles } from '../classroom-styles.ts';
+import { codeBoxStyles } from '../code-box.css.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
 
 /** What pasting gives the dashboard: the codes' exports as files, and the codes that could not be read. */
@@ -25,27 +26,12 @@ export class RtDashboardPasteCodes extends LocalizedElement {
 
   static override styles = [
     classroomStyles,
+    codeBoxStyles,
     css`
       :host {
         display: grid;
         gap: var(--rt-space);
         margin-top: calc(var(--rt-space) * 2);
-      }
-      textarea {
-        font: 0.85em / 1.3 ui-monospace, monospace;
-        width: 100%;
-        box-sizing: border-box;
-        height: 6em;
-        resize: vertical;
-        word-break: break-all;
-        background: var(--rt-surface);
-        color: var(--rt-text);
-        border: 1px solid var(--rt-border);
-        border-radius: var(--rt-radius);
-      }
-      label {
-        display: grid;
-        gap: 4px;
       }
       .row {
         display: flex;
@@ -81,7 +67,7 @@ export class RtDashboardPasteCodes extends LocalizedElement {
       this.count += 1;
       const name = msg(str`results code ${this.count}`);
       const text = decodeResultsCode(code);
-      if (text === null) pasted.skipped.push({ file: name, reason: msg('the code is incomplete or damaged: ask the pupil to copy all of it again') });
+      if (text === null) pasted.skipped.push({ file: name, reason: msg('the code is incomplete or damaged: ask the student to copy all of it again') });
       else pasted.files.push({ name, text });
     }
     this.note = codes.length === 1 ? msg('1 code read.') : msg(str`${codes.length} codes read.`);
@@ -92,7 +78,7 @@ export class RtDashboardPasteCodes extends LocalizedElement {
   override render() {
     return html`<label>
         ${msg('Or paste results codes (from your form: one code, a column, or everything at once)')}
-        <textarea spellcheck="false" placeholder=${`${RESULTS_CODE_PREFIX}…`}></textarea>
+        <textarea class="codes" spellcheck="false" placeholder=${`${RESULTS_CODE_PREFIX}…`}></textarea>
       </label>
       <div class="row">
         <button type="button" @click=${this.read}>${msg('Read the codes')}</button>

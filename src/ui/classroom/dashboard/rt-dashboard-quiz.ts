@@ -44,9 +44,9 @@ export class RtDashboardQuiz extends DashboardChart<QuizSummary> {
       <thead>
         <tr>
           <th scope="col">${msg('Question')}</th>
-          <th scope="col" title=${msg('Learners who answered; each counts once, with their first answer')}>n</th>
-          <th scope="col" title=${msg('Learners whose first answer was right')}>${msg('Right')}</th>
-          <th scope="col">${msg('Wrong answers chosen (learners)')}</th>
+          <th scope="col" title=${msg('Students who answered; each counts once, with their first answer')}>n</th>
+          <th scope="col" title=${msg('Students whose first answer was right')}>${msg('Right')}</th>
+          <th scope="col">${msg('Wrong answers chosen (students)')}</th>
         </tr>
       </thead>
       <tbody>

@@ -53,13 +53,13 @@ export class RtDashboardStuck extends DashboardChart<TaskSummary & { stuck: bool
       <thead>
         <tr>
           <th scope="col">${msg('Task')}</th>
-          <th scope="col" title=${msg('Learners who were shown the task')}>${msg('Learners')}</th>
-          <th scope="col" title=${msg('Done by the learner or shown by "show me"')}>${msg('Completed')}</th>
+          <th scope="col" title=${msg('Students who were shown the task')}>${msg('Students')}</th>
+          <th scope="col" title=${msg('Done by the student or shown by "show me"')}>${msg('Completed')}</th>
           <th scope="col" title=${msg('Median active time of those who completed it')}>${msg('Median')}</th>
-          <th scope="col" title=${msg('From the first to the third quartile: the middle half of the learners')}>${msg('Middle half')}</th>
-          <th scope="col" title=${msg('Learners who opened at least one hint')}>${msg('Needed a hint')}</th>
+          <th scope="col" title=${msg('From the first to the third quartile: the middle half of the students')}>${msg('Middle half')}</th>
+          <th scope="col" title=${msg('Students who opened at least one hint')}>${msg('Needed a hint')}</th>
           <th scope="col" title=${msg('Text hints and guidance (pointing at the control) opened, in total')}>${msg('Hints / guidance')}</th>
-          <th scope="col" title=${msg('Learners who let the app do the task')}>${msg('Show me')}</th>
+          <th scope="col" title=${msg('Students who let the app do the task')}>${msg('Show me')}</th>
         </tr>
       </thead>
       <tbody>
