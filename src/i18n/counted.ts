@@ -14,7 +14,7 @@ export function lightsCounted(n: number): string {
   return n === 1 ? msg('1 light') : msg(str`${n} lights`);
 }
 
-export function learnersCounted(n: number): string {
+export function studentsCounted(n: number): string {
   return n === 1 ? msg('1 student') : msg(str`${n} students`);
 }
 

@@ -4,14 +4,14 @@ import { readdirSync, readFileSync, statSync } from 'node:fs';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
-import { answersCounted, bvhBoxesCounted, learnersCounted, lightsCounted, objectsCounted, pointsCounted, trianglesCounted } from '../../src/i18n/counted.ts';
+import { answersCounted, bvhBoxesCounted, studentsCounted, lightsCounted, objectsCounted, pointsCounted, trianglesCounted } from '../../src/i18n/counted.ts';
 import { surveyDamageText } from '../../src/i18n/progress-problem-text.ts';
 import { inDutch } from '../support/page-locale.ts';
 
 const COUNTERS = {
   objects: objectsCounted,
   lights: lightsCounted,
-  learners: learnersCounted,
+  learners: studentsCounted,
   answers: answersCounted,
   points: pointsCounted,
   boxes: (n: number) => bvhBoxesCounted(n, String(n)),
@@ -32,7 +32,7 @@ describe('counts in English', () => {
   says({
     objects: ['object', 'objects'],
     lights: ['light', 'lights'],
-    learners: ['learner', 'learners'],
+    learners: ['student', 'students'],
     answers: ['answer', 'answers'],
     points: ['point', 'points'],
     boxes: ['BVH box', 'BVH boxes'],
@@ -69,7 +69,7 @@ const sources = (folder: string): string[] =>
 describe('every count of these nouns goes through a singular', () => {
   // "${n} lights" in a message is the plural branch of a `=== 1 ?` (counted.ts), or a part
   // such as "of ${total} learners" that is never one thing alone, or a constant (STUCK_MIN_LEARNERS) that is more than one.
-  const BARE_COUNT = /(?<!of |all )\$\{(?![A-Z_]+\})[^}]*\} (objects|lights|learners|answers|triangles|BVH boxes)\b/;
+  const BARE_COUNT = /(?<!of |all )\$\{(?![A-Z_]+\})[^}]*\} (objects|lights|learners|students|answers|triangles|BVH boxes)\b/;
   it('has no bare count left in src', () => {
     const bare = sources(SRC).flatMap((path) => {
       const lines = readFileSync(path, 'utf8').split('\n');

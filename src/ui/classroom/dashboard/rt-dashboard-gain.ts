@@ -3,7 +3,7 @@ import { css, html, nothing } from 'lit';
 import type { ConceptBank } from '../../../classroom/concept-test/concept-bank-schema.ts';
 import { conceptBankNow, loadConceptBank } from '../../../classroom/concept-test/concept-bank.ts';
 import { conceptGains, type ClassGain, type GainLearner, type GainRow } from '../../../classroom/concept-test/concept-gain.ts';
-import { learnersCounted } from '../../../i18n/counted.ts';
+import { studentsCounted } from '../../../i18n/counted.ts';
 import { localize, type Locale } from '../../../quest/localized-text.ts';
 import { tableStyles } from './rt-dashboard-chart-styles.ts';
 import { formatPercent } from './rt-dashboard-format.ts';
@@ -107,7 +107,7 @@ export class RtDashboardGain extends LocalizedElement {
       </table>
       ${
         group.preOnly + group.postOnly > 0
-          ? html`<p>${msg(str`Not counted: ${learnersCounted(group.preOnly)} with only the test before, ${group.postOnly} with only the test after.`)}</p>`
+          ? html`<p>${msg(str`Not counted: ${studentsCounted(group.preOnly)} with only the test before, ${group.postOnly} with only the test after.`)}</p>`
           : nothing
       }`;
   }

@@ -10,7 +10,7 @@ import { isOptionalTask, learnerInLevel, summarizeLevels, type LevelSummary } fr
 import { stickingPoints, STUCK_MIN_LEARNERS, STUCK_MIN_SHARE, STUCK_TIMES_TYPICAL } from '../../../classroom/dashboard-stuck.ts';
 import { summarizeSurveys, type SurveysSummary } from '../../../classroom/dashboard-survey.ts';
 import { issueText } from '../../../i18n/issue-text.ts';
-import { learnersCounted } from '../../../i18n/counted.ts';
+import { studentsCounted } from '../../../i18n/counted.ts';
 import { respondentsText, unknownSurveyText } from './survey-respondents.ts';
 import { currentLocale } from '../../../i18n/locale.ts';
 import { surveyById } from '../../../classroom/surveys.ts';
@@ -189,7 +189,7 @@ export class RtDashboardPage extends LocalizedElement {
           : html`<label
             >${msg('Assignment')}
             <select name="assignment" @change=${(event: Event) => pick({ assignmentId: value((event.target as HTMLSelectElement).value) })}>
-              <option value="*" ?selected=${this.filter.assignmentId === null}>${msg(str`All (${learnersCounted(this.learners.length)})`)}</option>
+              <option value="*" ?selected=${this.filter.assignmentId === null}>${msg(str`All (${studentsCounted(this.learners.length)})`)}</option>
               ${assignments.map(
                 (assignment) =>
                   html`<option value=${assignment.id} ?selected=${this.filter.assignmentId === assignment.id}>
@@ -210,7 +210,7 @@ export class RtDashboardPage extends LocalizedElement {
             </select></label
           >`
       }
-      <span>${msg(str`${learnersCounted(this.shown.length)} shown.`)}</span>
+      <span>${msg(str`${studentsCounted(this.shown.length)} shown.`)}</span>
     </div>`;
   }
 
@@ -291,7 +291,7 @@ export class RtDashboardPage extends LocalizedElement {
       <h2 id="learner-times-heading">${msg('Time per level, per student')}</h2>
       <!-- A long class folds away, so the levels below stay in reach. -->
       <details ?open=${this.shown.length <= 40}>
-        <summary>${learnersCounted(this.shown.length)}</summary>
+        <summary>${studentsCounted(this.shown.length)}</summary>
         <rt-dashboard-level-times
           .rows=${rows}
           .levels=${this.levels.map((level) => names.level(level.level))}

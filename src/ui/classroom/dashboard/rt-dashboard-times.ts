@@ -1,7 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { css, html, svg } from 'lit';
 import { axisEnd, type FiveNumbers } from '../../../classroom/dashboard-stats.ts';
-import { learnersCounted } from '../../../i18n/counted.ts';
+import { studentsCounted } from '../../../i18n/counted.ts';
 import { DashboardChart } from './rt-dashboard-chart.ts';
 import { chartStyles } from './rt-dashboard-chart-styles.ts';
 import { formatDuration } from './rt-dashboard-format.ts';
@@ -130,7 +130,7 @@ export class RtDashboardTimes extends DashboardChart<TimeRow> {
 
 function describe(label: string, stats: FiveNumbers): string {
   return msg(
-    str`${label}: median ${formatDuration(stats.median)}, middle half ${formatDuration(stats.q1)}–${formatDuration(stats.q3)}, fastest ${formatDuration(stats.min)}, slowest ${formatDuration(stats.max)} (${learnersCounted(stats.count)})`,
+    str`${label}: median ${formatDuration(stats.median)}, middle half ${formatDuration(stats.q1)}–${formatDuration(stats.q3)}, fastest ${formatDuration(stats.min)}, slowest ${formatDuration(stats.max)} (${studentsCounted(stats.count)})`,
   );
 }
 
