@@ -154,6 +154,7 @@
 's38eb2c68fdad0ad8': `Link delen`,
 's3967b5fc7d9670a5': `Ronddraaien, schuiven, zoomen`,
 's39bba60b440fcf00': `verplicht`,
+'s39c780ef729d13a0': `Hoe de score werkt`,
 's39d212a05a1d7a17': str`${0} is geen scènebestand dat deze app kan openen; je scène is niet veranderd.
 ${1}`,
 's3a1373f6fc7b106f': `De stralen van het pad zelf: vanaf de camera, weerkaatsing na weerkaatsing.`,

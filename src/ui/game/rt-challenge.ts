@@ -11,10 +11,11 @@ import { rayCount, starRuleText } from './challenge-rule-text.ts';
 import { gameStyles } from './game-styles.ts';
 
 /**
- * @summary The challenge panel of a match-the-target task (spec/challenges.md §2): the
- * target picture beside the learner's last render and their difference, a meter of the
- * difference as a match score with the match line marked, the star rule (shown before the
- * first render) and the renders, changes and rays counted. The lab's referee
+ * @summary The challenge panel of a match-the-target task (spec/challenges.md §2): a meter of
+ * the difference as a match score with the match line marked, the target picture beside the
+ * learner's last render and their difference, the star rule (open before the first render,
+ * folded after it so that the pictures and the meter fit a 768-pixel-high screen) and the
+ * renders, changes and rays counted. The lab's referee
  * (challengePicturesContext) renders and measures; this element only shows. Once the task is
  * done it shows only the stars, the saved ones when the learner comes back to the level.
  */
@@ -76,6 +77,10 @@ export class RtChallenge extends LocalizedElement {
       .stars {
         font-weight: 600;
       }
+      summary {
+        cursor: pointer;
+        font-size: 0.875rem;
+      }
     `,
   ];
 
@@ -129,16 +134,6 @@ export class RtChallenge extends LocalizedElement {
     return html`
       <section class="card" aria-labelledby="challenge-title">
         <h3 id="challenge-title">${msg('Challenge')}</h3>
-        <p>${msg(str`Match the target: a match score of ${MATCH_SCORE} or more, measured on ${width} × ${height} pixels.`)}</p>
-        <p>
-          ${msg("The score compares each pixel's red, green and blue with the target's: 100 means (almost) the same picture, and each time your render gets ten times closer, the score goes up by 25.")}
-        </p>
-        <p>${starRuleText(goal.challenge.par, this.locale)}</p>
-        <p>${msg('Only the settings shown in the panels can change; everything else in this scene is locked.')}</p>
-        <div class="pictures">
-          ${this.picture('target', msg('Target'))} ${this.picture('attempt', msg('Your last render'))}
-          ${this.picture('difference', msg('Difference (brighter: further off)'))}
-        </div>
         <div class="meter">
           <meter aria-label=${msg('Match score')} min="0" max="100" low=${MATCH_SCORE} optimum="100" value=${score ?? 0}></meter>
           <span class="mark" style="left: ${MATCH_SCORE}%" aria-hidden="true"></span>
@@ -146,6 +141,19 @@ export class RtChallenge extends LocalizedElement {
         <p aria-live="polite">
           ${view?.measuring ? msg('Comparing your render with the target…') : score === null ? msg('Render to compare with the target.') : msg(str`Match score: ${score} of 100 (a match: ${MATCH_SCORE} or more).`)}
         </p>
+        <div class="pictures">
+          ${this.picture('target', msg('Target'))} ${this.picture('attempt', msg('Your last render'))}
+          ${this.picture('difference', msg('Difference (brighter: further off)'))}
+        </div>
+        <details ?open=${(view?.renders ?? 0) === 0}>
+          <summary>${msg('How it is scored')}</summary>
+          <p>${msg(str`Match the target: a match score of ${MATCH_SCORE} or more, measured on ${width} × ${height} pixels.`)}</p>
+          <p>
+            ${msg("The score compares each pixel's red, green and blue with the target's: 100 means (almost) the same picture, and each time your render gets ten times closer, the score goes up by 25.")}
+          </p>
+          <p>${starRuleText(goal.challenge.par, this.locale)}</p>
+          <p>${msg('Only the settings shown in the panels can change; everything else in this scene is locked.')}</p>
+        </details>
         <p>${this.countsText(view)}</p>
         ${view?.matched ? this.earned(goal, view.matched) : nothing}
       </section>
