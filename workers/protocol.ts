@@ -62,7 +62,7 @@ export interface TracePixelsRequest {
   first: number;
   count: number;
   seed: number;
-  /** Send at most about this many rays, by the rule of tracer/tree-budget.ts (the lab while the learner edits); the colours are the full trace's. */
+  /** Send, and record, only about this many rays, by the rule of tracer/tree-budget.ts (the lab while the learner edits); the colours are the full trace's. */
   budget?: RayBudget;
 }
 

@@ -9,7 +9,7 @@ import { emptyRayStats } from '../src/tracer/ray-tree.ts';
 import { renderTile } from '../src/tracer/render-tile.ts';
 import { renderPathTile } from '../src/tracer/render-path-tile.ts';
 import { tracePixel, tracePixels } from '../src/tracer/trace-pixel.ts';
-import { thinTraces } from '../src/tracer/tree-budget.ts';
+import { tracePixelsWithinBudget } from '../src/tracer/trace-within-budget.ts';
 import { buildTracerScene, type TracerScene } from '../src/tracer/tracer-scene.ts';
 import { nextTask } from './next-task.ts';
 import type {
@@ -81,10 +81,12 @@ export function createRenderHandler(post: PostResponse): (request: RenderRequest
       if (!Number.isInteger(first) || !Number.isInteger(count) || first < 0 || count < 1 || first + count > columns * rows) {
         throw new RangeError(`pixels ${first} to ${first + count - 1} are not on the ${columns}×${rows} screen`);
       }
-      const traces = tracePixels(tracer, first, count, seed);
-      // A block's trees are copied into the page's memory as objects, a cost per ray on its main thread.
-      const sent = budget ? thinTraces(traces, budget.rays, budget.keepPixel === null ? null : budget.keepPixel - first) : traces;
-      post({ type: 'pixels-traced', requestId, traces: sent }, []);
+      // A block's trees are copied into the page's memory as objects, a cost per ray on its main thread;
+      // with a budget, only the trees it keeps are recorded at all.
+      const traces = budget
+        ? tracePixelsWithinBudget(tracer, first, count, seed, budget.rays, budget.keepPixel === null ? null : budget.keepPixel - first)
+        : tracePixels(tracer, first, count, seed);
+      post({ type: 'pixels-traced', requestId, traces }, []);
     } catch (error) {
       fail({ type: 'trace-pixels', requestId }, error);
     }

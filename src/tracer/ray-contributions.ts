@@ -1,7 +1,8 @@
 import type { RayNode } from './ray-tree.ts';
 
 /**
- * Fills in each ray's share of the pixel (spec §3): roots get 1/s²; a child gets
+ * Fills in each ray's share of the pixel (spec §3): roots get 1/s² (`rootShare`, when only
+ * some of the s² roots are recorded: trace-within-budget.ts); a child gets
  * parent.contribution × (what the parent adds from it) / (the parent's colour), summed
  * over the channels, and 0 when the parent is black. `weights` holds what the parent
  * multiplies the child's colour by (ks, kr or kt; light rays are added as they are).
@@ -14,8 +15,13 @@ import type { RayNode } from './ray-tree.ts';
  * parent's share (shares over 100 % in the ray panel). Over the unclamped sum, the
  * children's shares add up to at most the parent's; the rest is the hit's own ambient term.
  */
-export function assignContributions(roots: RayNode[], weights: ReadonlyMap<RayNode, number>, unclampedSums: ReadonlyMap<RayNode, number> = new Map()): void {
-  for (const root of roots) assign(root, 1 / roots.length, weights, unclampedSums);
+export function assignContributions(
+  roots: RayNode[],
+  weights: ReadonlyMap<RayNode, number>,
+  unclampedSums: ReadonlyMap<RayNode, number> = new Map(),
+  rootShare = 1 / roots.length,
+): void {
+  for (const root of roots) assign(root, rootShare, weights, unclampedSums);
 }
 
 function assign(node: RayNode, contribution: number, weights: ReadonlyMap<RayNode, number>, unclampedSums: ReadonlyMap<RayNode, number>): void {

@@ -1,6 +1,7 @@
 import { Vector3 } from 'three';
 import type { Color } from '../scene/scene.ts';
 import type { TracerLight } from './lights.ts';
+import type { Ray } from './ray.ts';
 import type { RayNode, RayType } from './ray-tree.ts';
 import { LightTermsRecorder, type ShadingTerms } from './shading-terms.ts';
 
@@ -12,17 +13,116 @@ const MERGE_AREA_SAMPLES = 25;
 
 const toCentre = new Vector3();
 
+/**
+ * What renderPixel tells of a pixel's camera rays, tree by tree (the trees of
+ * tree-budget.ts): a sample's one ray; or, when a sample casts several (lens points, shutter
+ * times), its pinhole ray and then each of them. RayTreeRecording records every tree;
+ * ray-tree-tally.ts only counts their rays, and trace-within-budget.ts records the chosen ones.
+ */
+export interface PixelRecording {
+  /** A sample's one camera ray: what observes its tree, or null when it is not recorded. */
+  sampleRay(ray: Ray): RayObserver | null;
+  /** A sample's pinhole ray, which meets the plane in focus at `focalLength`: the root of the rays that follow. */
+  pinholeRay(ray: Ray, focalLength: number): void;
+  /** One of a sample's rays from the lens point `lensPoint` at `time`, adding `weight` × its colour to the sample: its observer, or null. */
+  lensRay(ray: Ray, lensPoint: Vector3, time: number, weight: number): RayObserver | null;
+  /** A sample with lens points or shutter times is done; `color` is what its pinhole ray carries. */
+  sampleDone(color: Vector3): void;
+  /**
+   * Asked before each sample's ray or lens ray is traced: true to leave its tree out
+   * untraced (the pixel's colour is then not what it would be: trace-within-budget.ts knows
+   * the colours already).
+   */
+  skips(): boolean;
+}
+
 /** A pixel's ray tree while it is traced (spec §3): its roots, and what each child adds to its parent. */
-export class RayTreeRecording {
+export class RayTreeRecording implements PixelRecording {
   /** One root per supersample. */
   readonly roots: RayNode[] = [];
   /** What each child adds to its parent per unit of its colour (ks, kr, kt, a lens ray's 1/(n²·k), or 1). */
   readonly weights = new Map<RayNode, number>();
   /** A hit's colour summed over its channels before clamping: what its children's shares divide (ray-contributions.ts). */
   readonly unclampedSums = new Map<RayNode, number>();
+  /** The pinhole ray of the sample being traced, when its rays are its children. */
+  private pinhole: RayNode | null = null;
 
   /** @param withTerms whether hits also get their shading terms (ray-debugger spec §1); the colours are the same either way */
   constructor(readonly withTerms = false) {}
+
+  sampleRay(ray: Ray): RayObserver | null {
+    const recorder = new RayRecorder(primaryNode(ray), this);
+    this.roots.push(recorder.node);
+    return recorder;
+  }
+
+  pinholeRay(ray: Ray, focalLength: number): void {
+    const root = primaryNode(ray);
+    root.hit = true;
+    root.length = focalLength;
+    this.roots.push(root);
+    this.pinhole = root;
+  }
+
+  lensRay(ray: Ray, lensPoint: Vector3, time: number, weight: number): RayObserver | null {
+    const recorder = new RayRecorder(primaryNode(ray), this);
+    recorder.node.lensPoint = lensPoint.toArray();
+    recorder.node.time = time;
+    if (this.pinhole) {
+      this.pinhole.children.push(recorder.node);
+      this.weights.set(recorder.node, weight);
+    } else this.roots.push(recorder.node);
+    return recorder;
+  }
+
+  sampleDone(color: Vector3): void {
+    if (this.pinhole) this.pinhole.color = color.toArray();
+    this.pinhole = null;
+  }
+
+  skips(): boolean {
+    return false;
+  }
+}
+
+/**
+ * What the Whitted integrator tells of each ray it traces, when asked to (rendering passes
+ * null): RayRecorder records it in a ray tree, ray-tree-tally.ts only counts it.
+ */
+export interface RayObserver {
+  miss(color: Vector3): void;
+  ambient(color: Vector3): void;
+  startLight(light: TracerLight, ambient: Color): void;
+  noRay(attenuation: number, nDotL: number, rDotV: number): void;
+  blocked(attenuation: number, nDotL: number, rDotV: number, from: Vector3, toLight: Vector3, length: number, blockerId: string, lightId: string): void;
+  reached(
+    attenuation: number,
+    nDotL: number,
+    rDotV: number,
+    from: Vector3,
+    toLight: Vector3,
+    distance: number,
+    lightId: string,
+    diffuse: Color,
+    specular: Color,
+    untested: boolean,
+  ): void;
+  finishLight(light: TracerLight, point: Vector3, diffuse: Color, specular: Color): void;
+  depthLimited(wouldContinue: boolean): void;
+  child(type: 'reflect' | 'refract', origin: Vector3, direction: Vector3, weight: number): RayObserver;
+  absorbed(type: 'reflect' | 'refract', point: Vector3, direction: Vector3, objectId: string | null, weight: number): void;
+  childTerm(type: 'reflect' | 'refract', weight: number, color: Vector3): void;
+  hit(length: number, objectId: string, normal: Vector3, sum: Color, color: Vector3): void;
+  /** The ray is one of a rough surface's spread rays. */
+  markGlossy(): void;
+}
+
+/**
+ * Whether a light's sample rays are shown as one cone (area-light or area-shadow): an area
+ * light with at least MERGE_AREA_SAMPLES samples whose rays all agree (spec §3).
+ */
+export function mergesSamples(light: TracerLight, allAgree: boolean): boolean {
+  return light.type === 'area' && light.sampleCount >= MERGE_AREA_SAMPLES && allAgree;
 }
 
 /**
@@ -31,7 +131,7 @@ export class RayTreeRecording {
  * recorded by a recorder of its own). Rendering passes null for it, so the arithmetic is the
  * same with or without one and a pixel's tree has exactly the image's colour.
  */
-export class RayRecorder {
+export class RayRecorder implements RayObserver {
   private terms: ShadingTerms | null = null;
   /** The light being shaded: its terms (with terms) and its sample rays, added at finishLight. */
   private lightTerms: LightTermsRecorder | null = null;
@@ -99,7 +199,7 @@ export class RayRecorder {
     const samples = this.lightRays;
     const type = samples[0]?.type;
     const allAgree = samples.length > 0 && samples.every((s) => s.type === type);
-    if (light.type !== 'area' || light.sampleCount < MERGE_AREA_SAMPLES || !allAgree) this.node.children.push(...samples);
+    if (!mergesSamples(light, allAgree)) this.node.children.push(...samples);
     else {
       const direction = toCentre.subVectors(light.position, point);
       const distance = direction.length();
@@ -133,6 +233,10 @@ export class RayRecorder {
     this.node.children.push(child);
     this.tree.weights.set(child, weight);
     return new RayRecorder(child, this.tree);
+  }
+
+  markGlossy(): void {
+    this.node.glossy = true;
   }
 
   /** A glossy direction on the wrong side of the surface: not traced, it adds black (an absorbed ray of length 0). */
@@ -174,6 +278,21 @@ export class RayRecorder {
       this.node.terms = this.terms;
     }
   }
+}
+
+function primaryNode(ray: Ray): RayNode {
+  return {
+    type: 'primary',
+    origin: ray.origin.toArray(),
+    direction: ray.direction.toArray(),
+    length: 0,
+    hit: false,
+    objectId: null,
+    lightId: null,
+    color: [0, 0, 0],
+    contribution: 0,
+    children: [],
+  };
 }
 
 function newNode(

@@ -1,8 +1,7 @@
 import { Vector3 } from 'three';
 import { LIMITS } from '../scene/scene-limits.ts';
 import { discPointBuffer, jitteredDiscPoints } from './disc-samples.ts';
-import { RayRecorder, type RayTreeRecording } from './ray-recorder.ts';
-import type { RayNode } from './ray-tree.ts';
+import type { PixelRecording, RayObserver } from './ray-recorder.ts';
 import { Ray } from './ray.ts';
 import { LENS_STREAM } from './random-streams.ts';
 import { hashKey, RandomStream } from './sampler.ts';
@@ -44,7 +43,8 @@ const times = new Float64Array(LIMITS.timeSamples[1]);
 
 /**
  * The colour of pixel (x, y) of a width×height image: the mean of its s×s supersamples,
- * each weighted 1/s² (spec §2). With `tree`, each sample's ray tree is recorded there.
+ * each weighted 1/s² (spec §2). With `tree`, each sample's ray tree is told to it (a
+ * RayTreeRecording records them all).
  * The image and the ray tree both come from here, so they always agree.
  *
  * A sample with a lens (aperture > 0, n×n lens points) or a shutter (k > 1 times) casts
@@ -64,7 +64,7 @@ export function renderPixel(
   height: number,
   seed: number,
   out: Vector3,
-  tree: RayTreeRecording | null,
+  tree: PixelRecording | null,
   samplesPerPixel?: number,
 ): Vector3 {
   if (scene.settings.integrator === 'path') return renderPathPixel(scene, x, y, width, height, seed, out, null, samplesPerPixel);
@@ -92,13 +92,9 @@ export function renderPixel(
     if (!distributed) {
       primary.set(camera.eye, direction);
       primary.time = 0;
+      if (tree?.skips() === true) continue;
       integrator.stats.primary++;
-      let root: RayRecorder | null = null;
-      if (tree) {
-        root = new RayRecorder(primaryNode(primary), tree);
-        tree.roots.push(root.node);
-      }
-      out.add(integrator.li(primary, sampleColor, root));
+      out.add(integrator.li(primary, sampleColor, tree ? tree.sampleRay(primary) : null));
       continue;
     }
     // The pinhole ray meets the plane in focus at F; every lens ray aims at F.
@@ -106,13 +102,7 @@ export function renderPixel(
     if (hasLens) jitteredDiscPoints(n, random.reset(hashKey(seed, x, y, sample, LENS_STREAM)), lensPoints);
     // k times in the open shutter, by the time pattern; every lens point is traced at each of them.
     shutterTimes(timePattern, k, seed, x, y, sample, times);
-    let root: RayNode | null = null;
-    if (tree && nested) {
-      root = primaryNode(primary.set(camera.eye, direction));
-      root.hit = true;
-      root.length = focalPoint.distanceTo(camera.eye);
-      tree.roots.push(root);
-    }
+    if (tree && nested) tree.pinholeRay(primary.set(camera.eye, direction), focalPoint.distanceTo(camera.eye));
     sampleColor.set(0, 0, 0);
     for (let lens = 0; lens < lensRays; lens++) {
       if (hasLens) {
@@ -123,40 +113,17 @@ export function renderPixel(
         lensDirection.copy(direction);
       }
       for (let i = 0; i < k; i++) {
+        if (tree?.skips() === true) continue;
         integrator.startSubSample(seed, x, y, sample, lens * k + i, times[i]);
         primary.set(lensPoint, lensDirection);
         primary.time = times[i];
         integrator.stats.primary++;
-        let ray: RayRecorder | null = null;
-        if (tree) {
-          ray = new RayRecorder(primaryNode(primary), tree);
-          ray.node.lensPoint = lensPoint.toArray();
-          ray.node.time = times[i];
-          if (root) {
-            root.children.push(ray.node);
-            tree.weights.set(ray.node, weight);
-          } else tree.roots.push(ray.node);
-        }
+        const ray: RayObserver | null = tree ? tree.lensRay(primary, lensPoint, times[i], weight) : null;
         sampleColor.addScaledVector(integrator.li(primary, subSampleColor, ray), weight);
       }
     }
-    if (root) root.color = sampleColor.toArray();
+    tree?.sampleDone(sampleColor);
     out.add(sampleColor);
   }
   return out.divideScalar(samples);
-}
-
-function primaryNode(ray: Ray): RayNode {
-  return {
-    type: 'primary',
-    origin: ray.origin.toArray(),
-    direction: ray.direction.toArray(),
-    length: 0,
-    hit: false,
-    objectId: null,
-    lightId: null,
-    color: [0, 0, 0],
-    contribution: 0,
-    children: [],
-  };
 }

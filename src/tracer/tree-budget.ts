@@ -1,4 +1,4 @@
-import type { PixelTrace, RayNode } from './ray-tree.ts';
+import type { PixelTrace, RayNode, RayType } from './ray-tree.ts';
 
 /**
  * Which ray trees a budget of rays keeps, when a screen has more rays than can be shown while
@@ -159,7 +159,7 @@ function rayTreesOf(traces: readonly PixelTrace[]): BudgetTrees & { nodes: RayNo
     nodes,
     nested,
     count: nodes.length,
-    kindCount: Object.keys(TYPE_INDEX).length * 4,
+    kindCount: RAY_KIND_COUNT,
     size: (t) => sizes[t],
     pixel: (t) => pixels[t],
     parent: (t) => parents[t],
@@ -170,11 +170,18 @@ function rayTreesOf(traces: readonly PixelTrace[]): BudgetTrees & { nodes: RayNo
 }
 
 /** A ray's kind for the rule: its type, and whether it hit and was tested (the legend's entries follow from these). */
-function kindOf(node: RayNode): number {
-  return TYPE_INDEX[node.type] * 4 + (node.hit ? 2 : 0) + (node.untested ? 1 : 0);
+export function rayKind(type: RayType, hit: boolean, untested: boolean): number {
+  return TYPE_INDEX[type] * 4 + (hit ? 2 : 0) + (untested ? 1 : 0);
 }
 
-const TYPE_INDEX: Readonly<Record<RayNode['type'], number>> = { primary: 0, reflect: 1, refract: 2, shadow: 3, light: 4, 'area-light': 5, 'area-shadow': 6 };
+function kindOf(node: RayNode): number {
+  return rayKind(node.type, node.hit, node.untested === true);
+}
+
+const TYPE_INDEX: Readonly<Record<RayType, number>> = { primary: 0, reflect: 1, refract: 2, shadow: 3, light: 4, 'area-light': 5, 'area-shadow': 6 };
+
+/** Kinds are numbered 0 … RAY_KIND_COUNT − 1 (rayKind). */
+export const RAY_KIND_COUNT = Object.keys(TYPE_INDEX).length * 4;
 
 function countRays(roots: readonly RayNode[]): number {
   let rays = 0;

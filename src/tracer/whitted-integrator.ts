@@ -12,7 +12,7 @@ import { phongPower } from './phong-power.ts';
 import type { PrimaryCandidates } from './primary-candidates.ts';
 import type { Ray } from './ray.ts';
 import { rayMeetsBox } from './ray-box.ts';
-import type { RayRecorder } from './ray-recorder.ts';
+import type { RayObserver } from './ray-recorder.ts';
 import type { RayStats } from './ray-tree.ts';
 import { emptyRayStats } from './ray-tree.ts';
 import { hashKey, RandomStream } from './sampler.ts';
@@ -27,9 +27,9 @@ import { GLOSS_STREAM } from './random-streams.ts';
  * Schlick-weighted reflection/refraction split for transparent ones; rough materials spread
  * those rays (Cook et al.'s distributed ray tracing, 1984: distribution-effects §2). Its `Li`
  * follows pbrt's WhittedIntegrator (pbrt-v3 §1.3.6); visibility is one call to the
- * ShadowTester, recording one RayRecorder argument that rendering passes as null.
+ * ShadowTester, recording one RayObserver argument that rendering passes as null.
  */
-export class WhittedIntegrator implements Estimator<RayRecorder> {
+export class WhittedIntegrator implements Estimator<RayObserver> {
   readonly stats: RayStats = emptyRayStats();
   /** The objects the primary rays of the tile being rendered can hit (renderTile); null or none listed: they walk the BVH. */
   primaryCandidates: PrimaryCandidates | null = null;
@@ -70,7 +70,7 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
     this.time = this.shadows.time = time;
   }
 
-  li(ray: Ray, out: Vector3, recorder: RayRecorder | null): Vector3 {
+  li(ray: Ray, out: Vector3, recorder: RayObserver | null): Vector3 {
     return this.trace(ray, 0, out, recorder, null);
   }
 
@@ -78,7 +78,7 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
    * Li at recursion depth `depth`: the colour seen along `ray`, clamped to 0..1 per channel.
    * @param leaving a convex shape the ray leaves outward, which it cannot hit again
    */
-  private trace(ray: Ray, depth: number, out: Vector3, recorder: RayRecorder | null, leaving: Intersectable | null): Vector3 {
+  private trace(ray: Ray, depth: number, out: Vector3, recorder: RayObserver | null, leaving: Intersectable | null): Vector3 {
     const frame = this.frames[depth];
     // Find the nearest hit, or return the background.
     const hit = this.intersect(ray, frame, leaving);
@@ -115,7 +115,7 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
   }
 
   /** Writes the unclamped colour of frame's hit into `out`. */
-  private shade(ray: Ray, shape: Intersectable, frame: ShadingFrame, out: Vector3, recorder: RayRecorder | null): void {
+  private shade(ray: Ray, shape: Intersectable, frame: ShadingFrame, out: Vector3, recorder: RayObserver | null): void {
     const { hit, normal: n, geometricNormal: ng, toViewer: v } = frame;
     const material = shape.material;
     // Turn the normals toward the incoming ray; a back-face hit means the ray is inside.
@@ -171,7 +171,7 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
    * and then added to `out`, so a hit's terms add up to its colour exactly (shading-terms.ts).
    * Its flags are compared with === true: docs/performance.md, "Boolean tests".
    */
-  private addDirectLight(light: TracerLight, index: number, frame: ShadingFrame, material: Material, out: Vector3, recorder: RayRecorder | null): void {
+  private addDirectLight(light: TracerLight, index: number, frame: ShadingFrame, material: Material, out: Vector3, recorder: RayObserver | null): void {
     const { hit, normal: n, toViewer: v, lightPoint, toLight: l } = frame;
     const samples = light.sampleCount;
     if (light.type === 'area') this.random.reset(hashKey(this.sampleKey, index, this.lightEvaluation++));
@@ -286,7 +286,7 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
   }
 
   /** Transparent surface: kr·Li(reflected) + kt·Li(refracted), Schlick's kr (spec §2). */
-  private addTransmission(ray: Ray, frame: ShadingFrame, material: Material, entering: boolean, out: Vector3, recorder: RayRecorder | null): void {
+  private addTransmission(ray: Ray, frame: ShadingFrame, material: Material, entering: boolean, out: Vector3, recorder: RayObserver | null): void {
     const n = frame.normal;
     const eta = entering ? 1 / material.refractiveIndex : material.refractiveIndex;
     const refracted = refract(ray.direction, n, eta, frame.childDirection);
@@ -315,7 +315,7 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
    * wrong side of the surface (into it for a reflection, back out for a refraction) is not
    * traced and adds black; a recorded tree keeps it as an absorbed ray of length 0.
    */
-  private traceGlossy(type: 'reflect' | 'refract', frame: ShadingFrame, weight: number, material: Material, out: Vector3, recorder: RayRecorder | null): void {
+  private traceGlossy(type: 'reflect' | 'refract', frame: ShadingFrame, weight: number, material: Material, out: Vector3, recorder: RayObserver | null): void {
     const { ideal, tangent, bitangent, discPoints, geometricNormal: ng } = frame;
     const m = material.glossySamples;
     ideal.copy(frame.childDirection);
@@ -333,7 +333,7 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
       }
       const leaving = type === 'reflect' ? leavingShape(frame, direction) : null;
       const child = this.traceChild(type, frame, share, out, recorder, leaving);
-      if (child !== null) child.node.glossy = true;
+      child?.markGlossy();
     }
   }
 
@@ -343,9 +343,9 @@ export class WhittedIntegrator implements Estimator<RayRecorder> {
     frame: ShadingFrame,
     weight: number,
     out: Vector3,
-    recorder: RayRecorder | null,
+    recorder: RayObserver | null,
     leaving: Intersectable | null = null,
-  ): RayRecorder | null {
+  ): RayObserver | null {
     this.stats[type]++;
     const origin = offsetOrigin(frame, frame.childDirection, this.scene.epsilon);
     const ray = frame.childRay.set(origin, frame.childDirection);
