@@ -169,6 +169,11 @@ describe('rt-export-menu', () => {
     const code = (box.element() as HTMLTextAreaElement).value;
     expect(code.startsWith(RESULTS_CODE_PREFIX)).toBe(true);
     expect(JSON.parse(decodeResultsCode(code)!).participant).toBe('5H2-03');
+
+    // Pressed again for another code (a shared computer): the box shows the new code, not the first.
+    menu.participant = '5H2-04';
+    await view.getByRole('button', { name: 'Copy results code' }).click();
+    await vi.waitFor(() => expect(JSON.parse(decodeResultsCode((box.element() as HTMLTextAreaElement).value)!).participant).toBe('5H2-04'));
   });
 
   it('makes the CSV for research with one row per task attempt', async () => {

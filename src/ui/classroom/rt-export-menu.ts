@@ -220,7 +220,7 @@ export class RtExportMenu extends LocalizedElement {
           : html`<p aria-live="polite">
               ${this.copied ? msg('Copied. Paste it into the form your teacher gave you (Ctrl+V).') : msg('Select all of the code below and copy it (Ctrl+C).')}
             </p>
-            <textarea class="codes" readonly aria-label=${msg('Your results code')} @focus=${(event: FocusEvent) => (event.target as HTMLTextAreaElement).select()}>${this.code}</textarea>`
+            <textarea class="codes" readonly aria-label=${msg('Your results code')} @focus=${(event: FocusEvent) => (event.target as HTMLTextAreaElement).select()} .value=${this.code}></textarea>`
       }
       <div class="row research">
         <p>${msg('Other formats, for research:')}</p>
