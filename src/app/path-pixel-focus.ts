@@ -1,8 +1,7 @@
-import { pathRows } from '../debugger/path-steps.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
-import { LAB_PATH_COUNT, type LabPaths } from '../tracer/lab-paths.ts';
-import { allPathsFocus, pathTrees } from '../view/path-focus.ts';
+import { LAB_PATH_COUNT } from '../tracer/lab-path-count.ts';
+import type { LabPaths } from '../tracer/lab-paths.ts';
 import type { RayFocus } from '../view/ray-focus.ts';
 
 /**
@@ -33,8 +32,9 @@ export class PathPixelFocus {
     if (traced && traced.pixel === pixel && traced.rays === rays) return;
     this.tracedFor = { pixel, rays };
     const request = ++this.request;
-    this.tracePaths(pixel[0], pixel[1], LAB_PATH_COUNT).then(
-      (paths) => {
+    // The drawing code loads with the first chosen pixel in path mode, not with the first screen.
+    Promise.all([this.tracePaths(pixel[0], pixel[1], LAB_PATH_COUNT), import('../debugger/path-steps.ts'), import('../view/path-focus.ts')]).then(
+      ([paths, { pathRows }, { allPathsFocus, pathTrees }]) => {
         if (request !== this.request) return;
         // The throughput each segment carries, as the debugger's rows compute it.
         const carried = paths.paths.map((path) => pathRows(path, { russianRoulette }).map((row) => row.throughput));

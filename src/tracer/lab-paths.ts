@@ -1,9 +1,7 @@
 import type { Color } from '../scene/scene.ts';
 import { tracePaths, type PixelPaths } from './trace-paths.ts';
 import type { TracerScene } from './tracer-scene.ts';
-
-/** How many of a pixel's paths the lab draws and steps through: few enough to follow by eye. */
-export const LAB_PATH_COUNT = 8;
+import { LAB_PATH_COUNT } from './lab-path-count.ts';
 
 /**
  * A pixel's paths for the lab (the 3D view and the ray debugger): the first `keep` paths with

@@ -5,7 +5,8 @@ import { meanOfPaths, pathRows, type PathVertexRow } from '../../../debugger/pat
 import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { ScreenRays } from '../../../render/screen-rays.ts';
 import type { RenderSettings } from '../../../scene/scene.ts';
-import { LAB_PATH_COUNT, type LabPaths } from '../../../tracer/lab-paths.ts';
+import { LAB_PATH_COUNT } from '../../../tracer/lab-path-count.ts';
+import type { LabPaths } from '../../../tracer/lab-paths.ts';
 import { pathFocus, pathTrees, type PathTrees } from '../../../view/path-focus.ts';
 import type { RayFocus } from '../../../view/ray-focus.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
