@@ -12,17 +12,30 @@ import type { Level } from '../quest/level-schema.ts';
  * has played.
  */
 
-/** The kinds of task in a teacher's words: read a text, answer a choice question, choose a picture, estimate a number, do something in the lab. */
-export const TEACHER_TASK_KINDS = ['action', 'question', 'picture', 'estimate', 'read'] as const;
+/**
+ * The kinds of task in a teacher's words: do something in the lab, match a target picture (a
+ * challenge), write a function (a code lab), answer a choice question, choose a picture,
+ * estimate a number, read a text.
+ */
+export const TEACHER_TASK_KINDS = ['action', 'challenge', 'code', 'question', 'picture', 'estimate', 'read'] as const;
 export type TeacherTaskKind = (typeof TEACHER_TASK_KINDS)[number];
 
 /**
  * Minutes a task of each kind is counted for: a text to read half a minute; a question or a
  * picture to choose one minute (read, think, answer, read the explanation); a number to
  * estimate, or an action in the lab (find the control, do it, look at the result), a minute
- * and a half.
+ * and a half; a challenge four (study the target, change, render and compare three or four
+ * times: its par); a code lab eight (read the contract, write, run the tests a few times).
  */
-export const MINUTES_PER_TASK: Readonly<Record<TeacherTaskKind, number>> = { read: 0.5, question: 1, picture: 1, estimate: 1.5, action: 1.5 };
+export const MINUTES_PER_TASK: Readonly<Record<TeacherTaskKind, number>> = {
+  read: 0.5,
+  question: 1,
+  picture: 1,
+  estimate: 1.5,
+  action: 1.5,
+  challenge: 4,
+  code: 8,
+};
 /** Reading a level's introduction. */
 export const INTRO_MINUTES = 1;
 
@@ -40,9 +53,11 @@ export function teacherTaskKind(goal: Goal): TeacherTaskKind {
     case 'state':
     case 'all':
     case 'any':
-    case 'challenge':
-    case 'code':
       return 'action';
+    case 'challenge':
+      return 'challenge';
+    case 'code':
+      return 'code';
     default: {
       const never: never = goal;
       return never;

@@ -16,11 +16,18 @@ describe('what each level asks, for the teacher page', () => {
       expect(counts.reduce((sum, { count }) => sum + count, 0)).toBe(each.tasks.length);
     }
     // Level 2 (rays from the camera): an info step, two choice questions, a number to estimate,
-    // six things to do in the lab and its code lab (counted with them until it is a kind of its own).
+    // six things to do in the lab and a function to write.
     expect(taskKindCounts(level('02-rays-from-the-camera'))).toEqual([
-      { kind: 'action', count: 7 },
+      { kind: 'action', count: 6 },
+      { kind: 'code', count: 1 },
       { kind: 'question', count: 2 },
       { kind: 'estimate', count: 1 },
+      { kind: 'read', count: 1 },
+    ]);
+    // A challenge level: its rules to read, the ball to select, the target picture to match.
+    expect(taskKindCounts(level('25-match-the-highlight'))).toEqual([
+      { kind: 'action', count: 1 },
+      { kind: 'challenge', count: 1 },
       { kind: 'read', count: 1 },
     ]);
   });

@@ -75,6 +75,10 @@ function kindText(kind: TeacherTaskKind, count: number): string {
   switch (kind) {
     case 'action':
       return count === 1 ? msg('1 thing to do in the lab') : msg(str`${count} things to do in the lab`);
+    case 'challenge':
+      return count === 1 ? msg('1 target picture to match') : msg(str`${count} target pictures to match`);
+    case 'code':
+      return count === 1 ? msg('1 function to write') : msg(str`${count} functions to write`);
     case 'question':
       return count === 1 ? msg('1 question') : msg(str`${count} questions`);
     case 'picture':
