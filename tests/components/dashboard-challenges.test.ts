@@ -31,14 +31,15 @@ const attempt = (how: TaskAttempt['how'], scores: number[], stars: 1 | 2 | 3 | n
 const learner = (attempts: TaskAttempt[]) => ({ attempts, visits: [] }) as unknown as ClassRecord;
 
 describe('rt-dashboard-challenges', () => {
-  it("shows each learner's best score, the stars of those who matched and where the others stopped", async () => {
+  it("shows each learner's best score (the task by its title), the stars of those who matched and where the others stopped", async () => {
     const table = await mount('rt-dashboard-challenges', {
       level: 'L25',
+      taskName: (task: string) => (task === 'match' ? 'Match the target' : task),
       records: [learner([attempt('done', [20, 80], 3)]), learner([attempt(null, [10, 40])]), learner([attempt(null, [50]), attempt('done', [76], 1)])],
     });
     const row = table.shadowRoot!.querySelector('tr[data-task="match"]')!;
     expect([...row.querySelectorAll('th, td')].map((cell) => cell.textContent!.trim())).toEqual([
-      'match',
+      'Match the target',
       '3',
       '40, 76, 80 (2 reached 75)',
       '2 (1 / 0 / 1)',

@@ -13,7 +13,7 @@ import { tableStyles } from './rt-dashboard-chart-styles.ts';
  * without a match. Nothing when the level has no challenge anyone rendered in.
  */
 export class RtDashboardChallenges extends LocalizedElement {
-  static override properties = { records: { attribute: false }, level: {} };
+  static override properties = { records: { attribute: false }, level: {}, taskName: { attribute: false } };
   static override styles = [
     tableStyles,
     css`
@@ -29,11 +29,14 @@ export class RtDashboardChallenges extends LocalizedElement {
 
   declare records: readonly ClassRecord[];
   declare level: string;
+  /** A task's title in the page's language, from its id (the id itself when none is given). */
+  declare taskName: (task: string) => string;
 
   constructor() {
     super();
     this.records = [];
     this.level = '';
+    this.taskName = (task) => task;
   }
 
   override render() {
@@ -58,7 +61,7 @@ export class RtDashboardChallenges extends LocalizedElement {
           ${challenges.map(
             (challenge) =>
               html`<tr data-task=${challenge.task}>
-                <th scope="row">${challenge.task}</th>
+                <th scope="row">${this.taskName(challenge.task)}</th>
                 <td>${challenge.learners}</td>
                 <td>${list(challenge.bestScores)} (${msg(str`${reachedMatch(challenge)} reached ${MATCH_SCORE}`)})</td>
                 <td>${challenge.matched} (${challenge.stars.join(' / ')})</td>

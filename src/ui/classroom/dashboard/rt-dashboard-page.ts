@@ -350,7 +350,8 @@ export class RtDashboardPage extends LocalizedElement {
       ></rt-dashboard-times>
       <h3>${msg('Completion')}</h3>
       <rt-dashboard-completion .rows=${rows} caption=${msg(str`Completion per task in ${title}`)}></rt-dashboard-completion>
-      ${this.renderQuizzes(level.level, title)}<rt-dashboard-challenges .records=${this.shown} level=${level.level}></rt-dashboard-challenges>
+      ${this.renderQuizzes(level.level, title)}
+      <rt-dashboard-challenges .records=${this.shown} level=${level.level} .taskName=${(task: string) => names.task(level.level, task)}></rt-dashboard-challenges>
       <h3>${msg('Where students got stuck')}</h3>
       <p class="rule">${stuckRule()}</p>
       <rt-dashboard-stuck
