@@ -245,7 +245,7 @@
 's4ca9e43cc1c59729': `Getallen`,
 's4cd8ac6a56f90d1e': str`moet ${0} tot ${1} verplichte taken hebben, maar heeft er ${2}`,
 's4d3756db0338c961': `geblokkeerd: S = 0, de lamp voegt niets toe`,
-'s4d791ee2e52c31a5': `Verlaat de scène: de achtergrond telt gewicht × zijn stralingsdichtheid op. Het pad eindigt.`,
+'s4d791ee2e52c31a5': `Verlaat de scène: de achtergrond telt gewicht × zijn licht (de radiantie) op. Het pad eindigt.`,
 's4dbf72fe5b081ecf': `Begriptoets: leerwinst gemeten`,
 's4ea0f21fc2a338a1': `Omhoog`,
 's4ea38bc26318117d': str`${0} van ${1} (${2})`,
