@@ -15,7 +15,7 @@ export function caseKindName(kind: string): string {
     case 'tangent':
       return msg('a ray that just touches the sphere');
     case 'off-centre':
-      return msg('a sphere away from the origin');
+      return msg('a sphere whose centre is not at (0, 0, 0)');
     case 'random':
       return msg('random rays and spheres');
     default:
@@ -48,7 +48,7 @@ export function failureText(failure: CaseFailure): string {
     case 'expected-hit':
       return msg(str`Expected ${expectedText}, got null: the ray does hit the sphere.`);
     case 'expected-miss':
-      return msg(str`Expected ${expectedText}, got t = ${failure.got}: no hit in front of the ray’s origin counts.`);
+      return msg(str`Expected ${expectedText}, got t = ${failure.got}: only a hit in front of the ray’s origin (t > 0) counts.`);
     case 'wrong-value':
       return msg(str`Expected ${expectedText}, got t = ${failure.got}.`);
   }

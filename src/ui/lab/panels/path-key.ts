@@ -11,12 +11,17 @@ export function pathKey(paths: boolean): TemplateResult | typeof nothing {
   if (!paths) return nothing;
   const entries: [mark: string, name: string, detail: string, hint: string][] = [
     ['solid', msg('Solid'), msg('the path’s bounces'), msg('The path’s own rays: from the camera, bounce by bounce.')],
-    ['dashed', msg('Dashed'), msg('shadow ray to a light'), msg('At a diffuse bounce, a shadow ray to a random point on a light (Light sampling).')],
+    [
+      'dashed',
+      msg('Dashed'),
+      msg('shadow ray to a light'),
+      msg('At a diffuse bounce, a shadow ray to each point or spot light, and with Light sampling on to a random point on each area light.'),
+    ],
     ['widths', msg('Width'), msg('throughput so far'), msg('Thin: little of the light the path finds from here on reaches the pixel.')],
     [
       'lobe',
       msg('Violet lobe'),
-      msg('odds of each new direction'),
+      msg('density of the new direction'),
       msg('At a diffuse bounce: how likely each new direction is, a cosine lobe or a uniform hemisphere, as Bounce direction says.'),
     ],
   ];
