@@ -57,7 +57,7 @@ test('a challenge compares each render with its target and is met only near it',
   await render(page);
   await expectStatus(page, 'Match the target', 'done');
   // Matched on the second render, within par: the done task keeps its stars.
-  await expect(page.locator('rt-task-card[data-task="match"] rt-challenge')).toContainText(/Matched after 2 renders and \d+ changes: ★★★/);
+  await expect(page.locator('rt-task-card[data-task="match"] rt-challenge')).toContainText(/Matched \(renders: 2 · changes: \d+\): ★★★/);
   // The stars are kept: the level map shows them by the level.
   await page.locator('[data-command="levels"]').click();
   await expect(page.locator(`rt-level-map [data-level="${LEVEL}"] .stars`)).toHaveText('★★★');

@@ -164,7 +164,7 @@ export class RtChallenge extends LocalizedElement {
   private earned(goal: ChallengeGoal, matched: ChallengeCounts | null) {
     if (matched) {
       const stars = starText(challengeStars(matched, goal.challenge.par));
-      return html`<p class="stars">${msg(str`Matched after ${matched.renders} renders and ${matched.changes} changes: ${stars}`)}</p>`;
+      return html`<p class="stars">${msg(str`Matched (renders: ${matched.renders} · changes: ${matched.changes}): ${stars}`)}</p>`;
     }
     return this.stars ? html`<p class="stars">${msg(str`Stars earned: ${starText(this.stars)}`)}</p>` : nothing;
   }
