@@ -10,9 +10,8 @@ import type { ScormVersion } from './lms-api.ts';
  *
  * The two editions differ in namespaces, in the `schemaversion` ("1.2" or "2004 4th Edition")
  * and in the spelling of `adlcp:scormtype` (1.2) / `adlcp:scormType` (2004). The XSD files
- * the `schemaLocation` names are not in the package (this project has no copy of ADL's):
- * platforms that import without validating against them (Moodle does) take the package as
- * it is; one that insists on them would need them added (docs/classroom.md).
+ * the `schemaLocation` names travel in the package (scorm-schemas.ts), and the manifest is
+ * validated against them in tests/classroom/scorm/scorm-manifest-xsd.test.ts.
  */
 
 export interface ManifestInput {

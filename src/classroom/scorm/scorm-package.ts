@@ -1,11 +1,13 @@
 import { strToU8, zipSync, type Zippable } from 'fflate';
 import type { ScormVersion } from './lms-api.ts';
 import { scormManifest } from './scorm-manifest.ts';
+import { scormSchemaFiles } from './scorm-schemas.ts';
 
 /**
- * A SCORM package: a zip with `imsmanifest.xml` at its root and the app's built files beside
- * it (IMS Content Packaging: the "package interchange file"). Pictures and models are
- * stored as they are (already compressed or small), the rest deflated.
+ * A SCORM package: a zip with `imsmanifest.xml` and the schema files it names at its root,
+ * and the app's built files beside them (IMS Content Packaging: the "package interchange
+ * file"). Pictures and models are stored as they are (already compressed or small), the
+ * rest deflated.
  */
 
 export interface PackageInput {
@@ -23,6 +25,7 @@ const STORED = /\.(png|jpe?g|gif|webp|woff2?)$/i;
 export function scormPackage(input: PackageInput): Uint8Array {
   const manifest = scormManifest({ ...input, files: [...input.files.keys()] });
   const entries: Zippable = { 'imsmanifest.xml': strToU8(manifest) };
+  for (const [name, text] of scormSchemaFiles(input.version)) entries[name] = strToU8(text);
   for (const [path, bytes] of input.files) entries[path] = [bytes, { level: STORED.test(path) ? 0 : 6 }];
   return zipSync(entries);
 }

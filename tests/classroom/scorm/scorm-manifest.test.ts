@@ -4,11 +4,11 @@ import { describe, expect, it } from 'vitest';
 import type { ScormVersion } from '../../../src/classroom/scorm/lms-api.ts';
 import { scormManifest, SCHEMA_VERSION } from '../../../src/classroom/scorm/scorm-manifest.ts';
 import { packageFileName, scormPackage } from '../../../src/classroom/scorm/scorm-package.ts';
+import { scormSchemaFiles } from '../../../src/classroom/scorm/scorm-schemas.ts';
 
 // The manifest checked as a platform reads it: XML, the namespaces of each edition, the
 // schema version, and every reference resolving (organization → item → resource → files in
-// the zip). xmllint and ADL's XSD files are not on this machine, so the XSDs' rules that a
-// platform's import depends on are checked here by hand. xmldom (a dependency of Workbox's)
+// the zip). The XSDs' own rules are checked by libxml2 in scorm-manifest-xsd.test.ts. xmldom (a dependency of Workbox's)
 // lets some malformed XML pass, so the escaping is checked on the text as well, and the
 // browser test (e2e/scorm.spec.ts) parses the built package's manifest with Chromium's
 // strict XML parser.
@@ -54,9 +54,14 @@ describe.each(['1.2', '2004'] as const)('the SCORM %s package', (version) => {
   const zip = unzipSync(scormPackage({ version, identifier: 'rtq-0a1b2c3d', title: TITLE, parameters: PARAMETERS, files: FILES }));
   const { cp, adlcp, scormType } = NS[version];
 
-  it('holds imsmanifest.xml at its root and every file of the build, unchanged', () => {
-    expect(Object.keys(zip).sort()).toEqual(['imsmanifest.xml', ...FILES.keys()].sort());
+  it('holds imsmanifest.xml and the schemas it names at its root, and every file of the build, unchanged', () => {
+    const schemas = [...scormSchemaFiles(version).keys()];
+    expect(Object.keys(zip).sort()).toEqual(['imsmanifest.xml', ...schemas, ...FILES.keys()].sort());
     for (const [path, bytes] of FILES) expect(zip[path]).toEqual(bytes);
+    const manifest = parse(strFromU8(zip['imsmanifest.xml'])).documentElement;
+    const locations = manifest.getAttributeNS('http://www.w3.org/2001/XMLSchema-instance', 'schemaLocation')!.split(/\s+/);
+    const named = locations.filter((_, index) => index % 2 === 1);
+    for (const file of named) expect(schemas, `${file} is in the package`).toContain(file);
   });
 
   it('has a well-formed manifest in the edition’s namespace, with its schema version', () => {
