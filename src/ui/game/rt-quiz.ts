@@ -109,7 +109,20 @@ export class RtQuiz extends LocalizedElement {
         align-items: center;
         gap: 6px;
       }
+      .pictures .frame {
+        position: relative;
+      }
+      .pictures .state {
+        position: absolute;
+        inset: 0;
+        display: grid;
+        place-items: center;
+        text-align: center;
+        font-size: 0.8rem;
+        color: var(--rt-muted);
+      }
       .pictures canvas {
+        display: block;
         width: 100%;
         height: auto;
         background: var(--rt-surface-2);
@@ -129,8 +142,8 @@ export class RtQuiz extends LocalizedElement {
   /** The stage `picked`/`typed` belong to: they are cleared when it moves on. */
   private pickedFor = '';
   private readonly pictures = new ContextConsumer(this, { context: quizPicturesContext, subscribe: true });
-  /** The pictures painted into this element's canvases, by scene: a re-render keeps them. */
-  private readonly painted = new Map<object, ImageData | null>();
+  /** The pictures painted into this element's canvases, by scene (null: it could not be made), or still being drawn: a re-render keeps them. */
+  private readonly painted = new Map<object, ImageData | null | 'drawing'>();
 
   constructor() {
     super();
@@ -208,9 +221,16 @@ export class RtQuiz extends LocalizedElement {
       const radio = html`<input type="radio" name=${`quiz-${view.task.id}`} .checked=${open ? this.picked === index : mine !== undefined && 'choice' in mine && mine.choice === index} @change=${() => (this.picked = index)} />`;
       if (!pictures) return html`<label>${radio}<span class="choice">${shown}</span>${tags}</label>`;
       const [width, height] = pictures[index].settings.imageSize;
+      const painted = this.painted.get(pictures[index]);
+      // Renders take a few seconds on a slow machine: an empty frame would look broken.
+      const state = painted === undefined || painted === 'drawing' ? msg('Drawing…') : painted === null ? msg('Could not be drawn') : '';
       // The render is for the eye (no words could stand for it): the radio's name is its letter.
       return html`<label>
-        <canvas data-picture=${index} width=${width} height=${height} aria-hidden="true"></canvas>
+        <span class="frame"
+          ><canvas data-picture=${index} width=${width} height=${height} aria-hidden="true"></canvas>${
+            state ? html`<span class="state" aria-hidden="true">${state}</span>` : nothing
+          }</span
+        >
         <span class="letter">${radio} ${text} ${tags}</span>
       </label>`;
     });
@@ -225,14 +245,14 @@ export class RtQuiz extends LocalizedElement {
       const scene = pictures[Number(canvas.dataset.picture)];
       const done = this.painted.get(scene);
       if (done !== undefined) {
-        if (done) canvas.getContext('2d')?.putImageData(done, 0, 0);
+        if (done instanceof ImageData) canvas.getContext('2d')?.putImageData(done, 0, 0);
         continue;
       }
       void drawer.draw(scene).then((image) => {
         this.painted.set(scene, image);
         this.requestUpdate();
       });
-      this.painted.set(scene, null);
+      this.painted.set(scene, 'drawing');
     }
   }
 
