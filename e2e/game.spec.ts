@@ -342,7 +342,7 @@ test('level 3 is played to the end through the UI: pixels, sliders by typing and
   const errors = collectErrors(page);
   await page.goto('./');
   await page.getByRole('button', { name: 'Got it' }).click();
-  await importProgress(page, progressFile(['01-introduction', '02-rays-from-the-camera']));
+  await importProgress(page, progressFile(['01-introduction', '02-rays-from-the-camera', '32-match-the-shot']));
   await page.locator('[data-command="levels"]').click();
   await expect(page.locator('rt-level-map [data-level="04-shadows"]')).toHaveAttribute('data-status', 'locked');
   await page.locator('rt-level-map [data-level="03-shading"]').click();

@@ -108,7 +108,7 @@ test('the shadows level by keyboard only: a pixel of the camera’s screen with 
 }) => {
   await page.goto('./');
   await page.getByRole('button', { name: 'Got it' }).click();
-  await importProgress(page, progressFile(['01-introduction', '02-rays-from-the-camera', '03-shading']));
+  await importProgress(page, progressFile(['01-introduction', '02-rays-from-the-camera', '32-match-the-shot', '03-shading']));
   await page.locator('[data-command="levels"]').click();
   await page.locator('rt-level-map [data-level="04-shadows"]').click();
   await expect(panel(page).getByRole('heading', { name: 'Shadows' })).toBeVisible();

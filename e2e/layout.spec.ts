@@ -230,8 +230,8 @@ test.describe('a phone on its side', () => {
     await expectViewAndCurrentTask(page);
     await expectTouchTargets(page);
     await page.screenshot({ path: 'test-results/screens/layout-phone-landscape.png' });
-    // Level 3 (the camera's image over the view, its rays drawn): passed levels 1 and 2, the first task done.
-    await importProgress(page, progressFile(['01-introduction', '02-rays-from-the-camera']));
+    // Level 3 (the camera's image over the view, its rays drawn): passed levels 1, 2 and 32 (the chapter's challenge), the first task done.
+    await importProgress(page, progressFile(['01-introduction', '02-rays-from-the-camera', '32-match-the-shot']));
     if (!(await page.locator('rt-level-map').isVisible())) await page.locator('[data-command="levels"]').tap();
     await page.locator('rt-level-map [data-level="03-shading"]').tap();
     await expect(page.getByRole('heading', { name: 'Shading' })).toBeVisible();

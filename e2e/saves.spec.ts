@@ -64,7 +64,7 @@ test('with storage full an import is refused and said, over the level map; with 
 
   await fillStorage(page);
   // A file larger than the progress saved now, which it would replace: it cannot fit.
-  const progress = JSON.parse(progressFile(['01-introduction', '02-rays-from-the-camera']));
+  const progress = JSON.parse(progressFile(['01-introduction', '02-rays-from-the-camera', '32-match-the-shot']));
   progress.log.events = Array.from({ length: 400 }, (_, index) => ({ t: index * 1000, id: `old.${index}`, type: index % 2 ? 'tab.visible' : 'tab.hidden' }));
   const file = JSON.stringify(progress);
   await importFile(page, file);

@@ -83,3 +83,32 @@ describe("the noisy challenges' thresholds", () => {
     60_000,
   );
 });
+
+describe("level 32's threshold", () => {
+  // The target: the ball at (−0.5, 0.5, 1), a 30° field of view. The arrow keys move the ball
+  // 0.1 m a press and the slider steps 1°: a drag within 2 cm matches, one key or one degree off does not.
+  const shot = (position: [number, number, number], fov: number): LabAction[] => [
+    { type: 'object.changed', id: 'ball', changes: { position } },
+    { type: 'camera.changed', changes: { fov } },
+  ];
+  const near: [string, LabAction[]][] = [
+    ['2 cm to the right', shot([-0.48, 0.5, 1], 30)],
+    ['2 cm nearer', shot([-0.5, 0.5, 1.02], 30)],
+  ];
+  const off: [string, LabAction[]][] = [
+    ['one key press to the right', shot([-0.4, 0.5, 1], 30)],
+    ['one key press to the left', shot([-0.6, 0.5, 1], 30)],
+    ['one key press nearer', shot([-0.5, 0.5, 1.1], 30)],
+    ['one key press farther', shot([-0.5, 0.5, 0.9], 30)],
+    ['1° narrower', shot([-0.5, 0.5, 1], 29)],
+    ['1° wider', shot([-0.5, 0.5, 1], 31)],
+  ];
+
+  it('is met within a drag’s accuracy of the target, not one key press or one degree off', async () => {
+    const { scene, goal } = challengeOf('32-match-the-shot');
+    const threshold = goal.challenge.measure.threshold;
+    const after = (actions: LabAction[]) => actions.reduce((state, action) => sceneAfter(state, action), scene);
+    for (const [name, actions] of near) expect(await challengeDifference(scene, goal, after(actions)), name).toBeLessThanOrEqual(threshold);
+    for (const [name, actions] of off) expect(await challengeDifference(scene, goal, after(actions)), name).toBeGreaterThan(threshold);
+  }, 60_000);
+});

@@ -9,6 +9,10 @@ import { goalSchema, kindOfGoal, type ChallengeGoal } from '../../src/quest/goal
 import { levelSchema } from '../../src/quest/level-schema.ts';
 import type { Scene } from '../../src/scene/scene.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
+import { loadMeshesFromDisk } from '../../src/scene/load-meshes-node.ts';
+import { meshNamesInScene } from '../../src/scene/mesh-names.ts';
+import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
+import { countPixelTests, type RayTests } from '../../src/tracer/triangle-test-count.ts';
 import { challengeDifference } from '../support/challenge-render.ts';
 
 /**
@@ -151,5 +155,53 @@ describe("the levels' challenges", () => {
       const difference = await challengeDifference(scene, goal, sceneAfter(scene, wrong.actions));
       expect(difference, wrong.name).toBeGreaterThan(threshold);
     }
+  });
+});
+
+/**
+ * The going-fast chapter's challenge has no target picture (a BVH never changes one:
+ * docs/levels.md "A challenge without a picture"): its goals are pixels found by their rays'
+ * cost. Each goal must accept exactly the pixels the real counter says the fact is true of,
+ * none at the start (no pixel chosen), and the quiz's explanation must give the real count.
+ */
+describe('level 33: the dearest ray', () => {
+  const level = levelSchema.parse(JSON.parse(readFileSync(new URL('33-the-dearest-ray.level.json', levelsFolder), 'utf8')));
+
+  async function pixelTests(): Promise<Map<string, RayTests>> {
+    const meshes = await loadMeshesFromDisk(meshNamesInScene(level.scene));
+    const tracer = buildTracerScene(level.scene, meshes);
+    const [columns, rows] = level.scene.camera.pixels;
+    const tests = new Map<string, RayTests>();
+    for (let row = 0; row < rows; row++)
+      for (let column = 0; column < columns; column++) tests.set(`${column},${row}`, countPixelTests(tracer, meshes, [column, row]));
+    return tests;
+  }
+
+  const goalOf = (taskId: string) => level.tasks.find((task) => task.id === taskId)!.goal;
+  const accepted = (taskId: string, keys: Iterable<string>) =>
+    [...keys].filter((key) =>
+      checkGoal(goalOf(taskId), { ...initialState(level.scene), selectedPixel: key.split(',').map(Number) as [number, number] }, NO_EVENTS),
+    );
+  const where = (tests: Map<string, RayTests>, fact: (test: RayTests) => boolean) => [...tests].filter(([, test]) => fact(test)).map(([key]) => key);
+
+  it('"in the box, not one triangle" accepts exactly the pixels whose rays meet the character’s box and test no triangle', async () => {
+    const tests = await pixelTests();
+    const skipped = where(tests, (test) => test.objects.some((object) => object.id === 'hero' && object.boundsHit) && test.triangles === 0);
+    expect(skipped.length).toBeGreaterThan(0);
+    expect(accepted('box-but-no-triangle', tests.keys())).toEqual(skipped);
+    expect(checkGoal(goalOf('box-but-no-triangle'), initialState(level.scene), NO_EVENTS)).toBe(false);
+  });
+
+  it('"the dearest ray" accepts exactly the pixel whose ray tests the most triangles, a ray that misses the character', async () => {
+    const tests = await pixelTests();
+    const most = Math.max(...[...tests.values()].map((test) => test.triangles));
+    const dearest = where(tests, (test) => test.triangles === most);
+    expect(dearest).toHaveLength(1);
+    expect(accepted('find-dearest', tests.keys())).toEqual(dearest);
+    expect(checkGoal(goalOf('find-dearest'), initialState(level.scene), NO_EVENTS)).toBe(false);
+    expect(tests.get(dearest[0])!.hitId).not.toBe('hero');
+    const quiz = goalOf('predict-dearest');
+    if (quiz.kind !== 'quiz') throw new Error('expected the quiz');
+    expect(JSON.stringify(quiz.quiz.explanation)).toContain(`tested ${most} triangles`);
   });
 });
