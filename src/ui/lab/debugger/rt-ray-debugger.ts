@@ -174,6 +174,12 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
    * first hit that has it (which the debugger then reports, as for a learner).
    */
   perform(action: DebuggerAction): void {
+    if (this.pathMode) {
+      // In path mode the path debugger finds the vertex (rt-path-debugger.ts perform).
+      if (!this.open) this.toggleOpen(true);
+      void this.updateComplete.then(() => this.renderRoot.querySelector('rt-path-debugger')?.perform(action));
+      return;
+    }
     this.shown = action;
     if (!this.open) this.toggleOpen(true);
     else this.applyShown();
