@@ -61,6 +61,7 @@ export class RtPathDebugger extends LocalizedElement {
       gap: 4px;
       min-height: 0;
       flex: 1;
+      overflow-y: auto;
       font-size: 0.8rem;
     }
     .controls {
@@ -83,9 +84,10 @@ export class RtPathDebugger extends LocalizedElement {
     p {
       margin: 0;
     }
+    /* At 1366×768 a diffuse vertex's estimate left the table no height at all: it keeps two rows, the dock scrolls. */
     .table {
       flex: 1;
-      min-height: 0;
+      min-height: 5.5em;
       overflow-y: auto;
     }
   `,
@@ -221,6 +223,9 @@ export class RtPathDebugger extends LocalizedElement {
     this.renderRoot.querySelector('tr.current')?.scrollIntoView({ block: 'nearest' });
     this.dataset.path = this.paths ? String(this.path) : '';
     this.dataset.vertex = this.paths ? String(this.vertex) : '';
+    // An option's selected attribute stops counting once the list was used: its value follows the cursor.
+    const list = this.renderRoot.querySelector('select');
+    if (list) list.value = String(this.vertex);
   }
 
   override render() {
