@@ -14,6 +14,8 @@ export interface RayHover {
   node: RayNode;
   /** Metres from the ray's origin to the point of it nearest the pointer. */
   at: number;
+  /** A ray of a pixel's sample paths (path mode): `contribution` is the throughput it carries. */
+  path: boolean;
 }
 
 /**

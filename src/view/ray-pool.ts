@@ -435,15 +435,9 @@ export class RayPool implements RayLayer {
     const pixel = best.list.pixel[best.index];
     const columns = this.drawn.columns;
     const drawnAs = RAY_COLOR_KEYS[best.list.colorKey[best.index]];
-    return {
-      type: node.type,
-      drawnAs,
-      contribution: node.contribution,
-      color: node.color,
-      pixel: [pixel % columns, Math.floor(pixel / columns)],
-      node,
-      at: best.at,
-    };
+    // A focus draws its pixel as a 1 × 1 screen: the pixel is the trace's own.
+    const [x, y] = this.focus ? this.focus.trace.pixel : [pixel % columns, Math.floor(pixel / columns)];
+    return { type: node.type, drawnAs, contribution: node.contribution, color: node.color, pixel: [x, y], node, at: best.at, path: this.focus?.paths === true };
   }
 
   /** A click on a drawn ray, offered to the focus that drew it (the path debugger's vertex choice); true when it took it. */

@@ -17,7 +17,7 @@ function pathFocus(paths: boolean): RayFocus {
   const camera = ray('primary', { origin: [0, 1, 5], direction: [0, 0, -1], length: 4, children: [light, blocked, bounce] });
   const all = new Set<RayNode>([camera, light, blocked, bounce]);
   return {
-    trace: { pixel: [0, 0], color: [0, 0, 0], rays: [camera] },
+    trace: { pixel: [2, 3], color: [0, 0, 0], rays: [camera] },
     shown: all,
     highlighted: null,
     grow: false,
@@ -82,6 +82,8 @@ describe('a pixel’s sample paths in the ray pool', () => {
     const camera = focus.trace.rays[0]!;
     expect(hover?.node).toBe(camera);
     expect(hover?.at).toBeCloseTo(3, 2);
+    // The tooltip names the focus's own pixel, and knows the ray is a path's.
+    expect(hover).toMatchObject({ pixel: focus.trace.pixel, path: true });
     expect(pool.click(hover!)).toBe(true);
     expect(chosen).toEqual([[camera, hover!.at]]);
     // A focus that chooses nothing (the Whitted debugger's) leaves the click to the view.
