@@ -170,12 +170,11 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
 
   /**
    * "Show me" performs a debugger action visibly: the debugger opens on the selected pixel and
-   * moves to the first step that reaches the action's ray, or clicks the action's term at the
-   * first hit that has it (which the debugger then reports, as for a learner).
+   * moves to the first step that reaches the action's ray (in path mode the path debugger goes
+   * to its vertex), or clicks the action's term at the first hit that has it (reported as a learner's).
    */
   perform(action: DebuggerAction): void {
     if (this.pathMode) {
-      // In path mode the path debugger finds the vertex (rt-path-debugger.ts perform).
       if (!this.open) this.toggleOpen(true);
       void this.updateComplete.then(() => this.renderRoot.querySelector('rt-path-debugger')?.perform(action));
       return;
