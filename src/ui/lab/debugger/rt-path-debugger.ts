@@ -4,7 +4,8 @@ import { findPathVertex, pathRayOf } from '../../../debugger/path-goals.ts';
 import { meanOfPaths, pathRows, type PathVertexRow } from '../../../debugger/path-steps.ts';
 import type { DebuggerAction, LabAction } from '../../../lab-state/lab-action.ts';
 import type { ScreenRays } from '../../../render/screen-rays.ts';
-import type { RenderSettings } from '../../../scene/scene.ts';
+import type { RenderSettings, Scene } from '../../../scene/scene.ts';
+import { itemName } from '../scene-names.ts';
 import { LAB_PATH_COUNT } from '../../../tracer/lab-path-count.ts';
 import type { LabPaths } from '../../../tracer/lab-paths.ts';
 import { pathFocus, pathTrees, type PathTrees } from '../../../view/path-focus.ts';
@@ -42,6 +43,7 @@ export class RtPathDebugger extends LocalizedElement {
   static override properties = {
     pixel: { attribute: false },
     settings: { attribute: false },
+    scene: { attribute: false },
     screenRays: { attribute: false },
     tracePaths: { attribute: false },
     showFocus: { attribute: false },
@@ -95,6 +97,8 @@ export class RtPathDebugger extends LocalizedElement {
 
   declare pixel: readonly [number, number] | null;
   declare settings: RenderSettings | null;
+  /** The scene, for its objects' and lights' names (the rows keep ids, as goals read them). */
+  declare scene: Scene | null;
   declare screenRays: ScreenRays | null;
   declare tracePaths: ((x: number, y: number, keep: number) => Promise<LabPaths>) | null;
   declare showFocus: ((focus: RayFocus | null) => void) | null;
@@ -114,6 +118,7 @@ export class RtPathDebugger extends LocalizedElement {
     super();
     this.pixel = null;
     this.settings = null;
+    this.scene = null;
     this.screenRays = null;
     this.tracePaths = null;
     this.showFocus = null;
@@ -231,7 +236,7 @@ export class RtPathDebugger extends LocalizedElement {
   override render() {
     if (this.problem) return html`<p role="alert">${msg(str`The paths could not be traced: ${this.problem}`)}</p>`;
     const paths = this.paths;
-    const rows = this.rows[this.path];
+    const rows = this.rows[this.path]?.map((row) => this.named(row));
     if (!paths || !rows) return html`<p role="status">${msg('Tracing the pixel’s paths…')}</p>`;
     const row = rows[this.vertex];
     const shown = paths.paths.length;
@@ -249,6 +254,15 @@ export class RtPathDebugger extends LocalizedElement {
       ${vertexEstimate(row)}
       <div class="table" tabindex="0" @keydown=${this.onKeyDown}>${pathTable(rows, this.vertex)}</div>
       ${this.renderPixel(paths, rows)}`;
+  }
+
+  /** A row with the names the scene list shows ("Back wall", "Achterwand") for its ids. */
+  private named(row: PathVertexRow): PathVertexRow {
+    const scene = this.scene;
+    if (!scene) return row;
+    const name = (id: string | null) => (id === null ? null : itemName(scene, id));
+    const lightSamples = row.lightSamples.map((sample) => ({ ...sample, lightId: itemName(scene, sample.lightId) }));
+    return { ...row, objectId: name(row.objectId), lightId: name(row.lightId), lightSamples };
   }
 
   /**

@@ -320,7 +320,7 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
 
   private renderPaths(pixel: readonly [number, number]) {
     const settings = this.state?.scene.settings ?? null;
-    return html`<rt-path-debugger .pixel=${pixel} .settings=${settings} .screenRays=${this.screenRays} .tracePaths=${this.tracePaths} .showFocus=${this.showFocus} .report=${(action: LabAction) => this.report(action)}></rt-path-debugger>`;
+    return html`<rt-path-debugger .pixel=${pixel} .settings=${settings} .scene=${this.state?.scene ?? null} .screenRays=${this.screenRays} .tracePaths=${this.tracePaths} .showFocus=${this.showFocus} .report=${(action: LabAction) => this.report(action)}></rt-path-debugger>`;
   }
 
   private renderProgram() {
