@@ -21,3 +21,24 @@ export function pathRayOf(path: RecordedPath, vertex: number): DebuggerRay | nul
     from: from.objectId,
   };
 }
+
+/**
+ * Where "show me" takes the path debugger for a task's `debugger.stepped` (the path and the
+ * vertex): the first vertex, path by path, whose arriving ray has every field of `want`;
+ * failing that (another pixel, a changed scene), the first ray of its kind; the camera for a
+ * step with no ray. Null when no path shown has such a ray.
+ */
+export function findPathVertex(paths: readonly RecordedPath[], want: Partial<DebuggerRay> | null): { path: number; vertex: number } | null {
+  if (paths.length === 0) return null;
+  if (!want) return { path: 0, vertex: 0 };
+  const matching = (fields: Partial<DebuggerRay>) => {
+    for (let path = 0; path < paths.length; path++) {
+      for (let vertex = 1; vertex < paths[path].vertices.length; vertex++) {
+        const ray = pathRayOf(paths[path], vertex);
+        if (ray && Object.entries(fields).every(([field, value]) => ray[field as keyof DebuggerRay] === value)) return { path, vertex };
+      }
+    }
+    return null;
+  };
+  return matching(want) ?? (want.type ? matching({ type: want.type }) : null);
+}

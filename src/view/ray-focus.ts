@@ -36,6 +36,11 @@ export interface RayFocus {
   animated?: boolean;
   /** The sampling distribution drawn at a path's vertex (sampling-lobe.ts), or none. */
   lobe?: SamplingLobe | null;
+  /**
+   * A click on one of the drawn rays, `at` metres from its origin: returns true when it chose
+   * something (the path debugger jumps to the clicked vertex) and the click selects nothing else.
+   */
+  chooseRay?: (node: RayNode, at: number) => boolean;
 }
 
 /** Opacity of the rays that are not highlighted: still there to follow, clearly in the background. */

@@ -12,6 +12,10 @@ export interface RayHover {
   color: [number, number, number];
   pixel: [number, number];
   node: RayNode;
+  /** Metres from the ray's origin to the point of it nearest the pointer. */
+  at: number;
+  /** A ray of a pixel's sample paths (path mode): `contribution` is the throughput it carries. */
+  path: boolean;
 }
 
 /**
@@ -25,6 +29,8 @@ export interface RayLayer {
   tick(timeMs: number): boolean;
   /** The nearest ray under the pointer, or null. */
   pick(raycaster: Raycaster): RayHover | null;
+  /** Offers a click on a drawn ray to whoever drew it (RayFocus.chooseRay); true when it was taken. */
+  click(hover: RayHover): boolean;
   /** How many rays are drawn of how many while a budget leaves some out (ray-budget.ts); null when all are. */
   readonly thinning: Thinning | null;
   /** The instances `object` draws (rays and cones), counted in the order it draws them, as the pieces below are. */

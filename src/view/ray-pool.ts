@@ -423,11 +423,11 @@ export class RayPool implements RayLayer {
   /** The nearest drawn ray (or cone) under the pointer, as far as it has grown. */
   pick(raycaster: Raycaster): RayHover | null {
     const { origin, direction } = raycaster.ray;
-    const best = { along: Infinity, list: null as SegmentList | null, index: -1 };
+    const best = { along: Infinity, at: 0, list: null as SegmentList | null, index: -1 };
     for (const list of [this.drawn.rays, this.drawn.cones]) {
       for (let i = 0; i < list.count; i++) {
         const along = this.pickSegment(list, i, origin, direction);
-        if (along < best.along) Object.assign(best, { along, list, index: i });
+        if (along < best.along) Object.assign(best, { along, at: this.pickedAt, list, index: i });
       }
     }
     if (!best.list) return null;
@@ -435,7 +435,14 @@ export class RayPool implements RayLayer {
     const pixel = best.list.pixel[best.index];
     const columns = this.drawn.columns;
     const drawnAs = RAY_COLOR_KEYS[best.list.colorKey[best.index]];
-    return { type: node.type, drawnAs, contribution: node.contribution, color: node.color, pixel: [pixel % columns, Math.floor(pixel / columns)], node };
+    // A focus draws its pixel as a 1 × 1 screen: the pixel is the trace's own.
+    const [x, y] = this.focus ? this.focus.trace.pixel : [pixel % columns, Math.floor(pixel / columns)];
+    return { type: node.type, drawnAs, contribution: node.contribution, color: node.color, pixel: [x, y], node, at: best.at, path: this.focus?.paths === true };
+  }
+
+  /** A click on a drawn ray, offered to the focus that drew it (the path debugger's vertex choice); true when it took it. */
+  click(hover: RayHover): boolean {
+    return this.focus?.chooseRay?.(hover.node, hover.at) ?? false;
   }
 
   dispose(): void {
@@ -528,7 +535,10 @@ export class RayPool implements RayLayer {
     this.resumeTravel = 0;
   }
 
-  /** Distance along the pointer ray to segment i when the pointer is over it, else Infinity. */
+  /** Where along the last segment pickSegment found the pointer over it: metres from the segment's origin. */
+  private pickedAt = 0;
+
+  /** Distance along the pointer ray to segment i when the pointer is over it, else Infinity (and pickedAt set). */
   private pickSegment(list: SegmentList, i: number, origin: Vector3, direction: Vector3): number {
     const grown = Math.min(list.length[i], this.travel.value - list.start[i]);
     if (grown <= 0) return Infinity;
@@ -556,7 +566,9 @@ export class RayPool implements RayLayer {
     const ey = wy + t * direction.y - s * dy;
     const ez = wz + t * direction.z - s * dz;
     const reach = (list.withCorners ? coneRadiusAt(list, i, s) : list.radius[i]) + PICK_ANGLE * t;
-    return ex * ex + ey * ey + ez * ez <= reach * reach ? t : Infinity;
+    if (ex * ex + ey * ey + ez * ez > reach * reach) return Infinity;
+    this.pickedAt = s;
+    return t;
   }
 }
 

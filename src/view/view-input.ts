@@ -149,7 +149,24 @@ export class ViewInput {
     this.press = null;
     if (!press || press.id !== event.pointerId || press.onGizmo || event.button !== 0) return;
     if (Math.hypot(event.clientX - press.x, event.clientY - press.y) > CLICK_SLOP) return;
+    if (this.clickRay(event.clientX, event.clientY)) return;
     this.click(this.pickAt(event.clientX, event.clientY));
+  }
+
+  /** A click on a drawn ray that the rays' owner takes (a path vertex for the path debugger) selects nothing else. */
+  private clickRay(clientX: number, clientY: number): boolean {
+    const rayLayer = this.parts.rayLayer();
+    if (!rayLayer) return false;
+    this.picker.aim(this.camera, this.canvas, clientX, clientY);
+    const hover = this.pickRay(rayLayer);
+    return hover !== null && rayLayer.click(hover);
+  }
+
+  /** The drawn ray along the picker's aimed ray, or null. */
+  private pickRay(rayLayer: RayLayer): RayHover | null {
+    this.rayRaycaster.ray.copy(this.picker.raycaster.ray);
+    this.rayRaycaster.camera = this.camera;
+    return rayLayer.pick(this.rayRaycaster);
   }
 
   /** A click selects what it hit, toggles a screen pixel, or deselects on empty space. */
@@ -186,13 +203,8 @@ export class ViewInput {
     if (!pointer || this.parts.selection.dragging || this.press) return;
     const hit = this.pickAt(pointer.x, pointer.y);
     this.canvas.style.cursor = hit ? 'pointer' : '';
-    let hover: RayHover | null = null;
     const rayLayer = this.parts.rayLayer();
-    if (rayLayer) {
-      this.rayRaycaster.ray.copy(this.picker.raycaster.ray);
-      this.rayRaycaster.camera = this.camera;
-      hover = rayLayer.pick(this.rayRaycaster);
-    }
+    const hover = rayLayer ? this.pickRay(rayLayer) : null;
     // Over a ray the tooltip follows the pointer; off rays, one null says so.
     if (hover === null && this.lastHover === null) return;
     this.lastHover = hover;

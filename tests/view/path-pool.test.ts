@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import type { InstancedBufferAttribute, InstancedMesh, Mesh } from 'three';
+import { type InstancedBufferAttribute, type InstancedMesh, type Mesh, Raycaster, Vector3 } from 'three';
 import { DEFAULT_RAY_VIEW } from '../../src/lab-state/lab-state.ts';
 import { PATH_DASHES } from '../../src/view/path-dashes.ts';
 import { RAY_DASHES } from '../../src/view/ray-palette.ts';
@@ -17,7 +17,7 @@ function pathFocus(paths: boolean): RayFocus {
   const camera = ray('primary', { origin: [0, 1, 5], direction: [0, 0, -1], length: 4, children: [light, blocked, bounce] });
   const all = new Set<RayNode>([camera, light, blocked, bounce]);
   return {
-    trace: { pixel: [0, 0], color: [0, 0, 0], rays: [camera] },
+    trace: { pixel: [2, 3], color: [0, 0, 0], rays: [camera] },
     shown: all,
     highlighted: null,
     grow: false,
@@ -69,5 +69,26 @@ describe('a pixel’s sample paths in the ray pool', () => {
     expect(surface!.position.toArray()).toEqual([0, 1, 1]);
     const position = surface!.geometry.getAttribute('position');
     for (let i = 0; i < position.count; i++) expect(Math.hypot(position.getX(i), position.getY(i), position.getZ(i))).toBeCloseTo(0.2, 5);
+  });
+
+  it('offers a click on a drawn path ray to the focus, with how far along the ray it landed', () => {
+    const focus = pathFocus(true);
+    const chosen: [RayNode, number][] = [];
+    const pool = new RayPool();
+    pool.setFocus({ ...focus, chooseRay: (node, at) => chosen.push([node, at]) > 0 });
+    pool.update(null, DEFAULT_RAY_VIEW, null);
+    // Straight down onto the camera ray (from z = 5 toward z = 1), 1 m before its end.
+    const hover = pool.pick(new Raycaster(new Vector3(0, 5, 2), new Vector3(0, -1, 0)));
+    const camera = focus.trace.rays[0]!;
+    expect(hover?.node).toBe(camera);
+    expect(hover?.at).toBeCloseTo(3, 2);
+    // The tooltip names the focus's own pixel, and knows the ray is a path's.
+    expect(hover).toMatchObject({ pixel: focus.trace.pixel, path: true });
+    expect(pool.click(hover!)).toBe(true);
+    expect(chosen).toEqual([[camera, hover!.at]]);
+    // A focus that chooses nothing (the Whitted debugger's) leaves the click to the view.
+    pool.setFocus(pathFocus(false));
+    pool.update(null, DEFAULT_RAY_VIEW, null);
+    expect(pool.click(hover!)).toBe(false);
   });
 });

@@ -166,6 +166,11 @@ const labGrid = css`
       background: var(--rt-surface);
       box-shadow: var(--rt-shadow);
     }
+    /* Above the open debugger's dock it scrolls: its last entries (a path's width and lobe) stay in reach. */
+    main:has(rt-ray-debugger[open]) .view-legend {
+      max-height: calc(54% - 60px - 2 * var(--rt-space));
+      overflow-y: auto;
+    }
     /* Its button only folds it away on a phone (below); it looks like the header's buttons. */
     .legend-toggle {
       display: none;

@@ -145,7 +145,9 @@ export class RtRayTooltip extends StorePanel<'view'> {
       ${
         normal
           ? nothing
-          : html`<p>
+          : hover.path
+            ? this.renderPathRay(hover)
+            : html`<p>
               <span class="muted">${msg('Contribution')}</span>
               <span class="value" data-testid="ray-contribution">${formatShare(hover.contribution)}</span>
               <span class="muted">${msg(str`of pixel ${px}, ${py}`)}</span>
@@ -158,6 +160,21 @@ export class RtRayTooltip extends StorePanel<'view'> {
       }
       ${target === null ? nothing : html`<p class="muted">${target}</p>`}
     `;
+  }
+
+  /**
+   * A path's ray (path mode) is no share of the pixel (its width is the throughput, capped,
+   * which the debugger's table gives exactly) and a bounce brings back no colour of its own:
+   * only a light sample says what it added.
+   */
+  private renderPathRay(hover: RayHover) {
+    if (hover.type !== 'light' && hover.type !== 'shadow') return nothing;
+    const [r, g, b] = colorBytes(hover.color);
+    return html`<p>
+      <span class="muted">${msg('Added here')}</span>
+      <span class="swatch" style=${styleMap({ background: `rgb(${r}, ${g}, ${b})` })} aria-hidden="true"></span>
+      <span class="value">${msg(str`RGB ${r}, ${g}, ${b}`)}</span>
+    </p>`;
   }
 }
 

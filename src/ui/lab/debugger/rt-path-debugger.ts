@@ -1,17 +1,20 @@
 import { msg, str } from '@lit/localize';
 import { css, html, type PropertyValues } from 'lit';
-import { pathRayOf } from '../../../debugger/path-goals.ts';
+import { findPathVertex, pathRayOf } from '../../../debugger/path-goals.ts';
 import { meanOfPaths, pathRows, type PathVertexRow } from '../../../debugger/path-steps.ts';
-import type { LabAction } from '../../../lab-state/lab-action.ts';
+import type { DebuggerAction, LabAction } from '../../../lab-state/lab-action.ts';
 import type { ScreenRays } from '../../../render/screen-rays.ts';
-import type { RenderSettings } from '../../../scene/scene.ts';
+import type { RenderSettings, Scene } from '../../../scene/scene.ts';
+import { itemName } from '../scene-names.ts';
 import { LAB_PATH_COUNT } from '../../../tracer/lab-path-count.ts';
 import type { LabPaths } from '../../../tracer/lab-paths.ts';
 import { pathFocus, pathTrees, type PathTrees } from '../../../view/path-focus.ts';
 import type { RayFocus } from '../../../view/ray-focus.ts';
+import { pathVertexOfRay } from '../../../view/path-vertex-pick.ts';
+import type { RayNode } from '../../../tracer/ray-tree.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
 import { colorText } from './debug-numbers.ts';
-import { survivalText, vertexText } from './path-debugger-text.ts';
+import { eventName, survivalText, vertexText } from './path-debugger-text.ts';
 import { pathTable, pathTableStyles, vertexEstimate } from './path-debugger-table.ts';
 
 /** Keys → moves: ← → along the path, ↑ ↓ to the previous or next path, Home and End to its ends. */
@@ -40,6 +43,7 @@ export class RtPathDebugger extends LocalizedElement {
   static override properties = {
     pixel: { attribute: false },
     settings: { attribute: false },
+    scene: { attribute: false },
     screenRays: { attribute: false },
     tracePaths: { attribute: false },
     showFocus: { attribute: false },
@@ -59,6 +63,7 @@ export class RtPathDebugger extends LocalizedElement {
       gap: 4px;
       min-height: 0;
       flex: 1;
+      overflow-y: auto;
       font-size: 0.8rem;
     }
     .controls {
@@ -74,12 +79,17 @@ export class RtPathDebugger extends LocalizedElement {
     .muted {
       color: var(--rt-muted);
     }
+    .vertex-choice select {
+      min-height: 30px;
+      margin-left: 4px;
+    }
     p {
       margin: 0;
     }
+    /* At 1366×768 a diffuse vertex's estimate left the table no height at all: it keeps two rows, the dock scrolls. */
     .table {
       flex: 1;
-      min-height: 0;
+      min-height: 5.5em;
       overflow-y: auto;
     }
   `,
@@ -87,6 +97,8 @@ export class RtPathDebugger extends LocalizedElement {
 
   declare pixel: readonly [number, number] | null;
   declare settings: RenderSettings | null;
+  /** The scene, for its objects' and lights' names (the rows keep ids, as goals read them). */
+  declare scene: Scene | null;
   declare screenRays: ScreenRays | null;
   declare tracePaths: ((x: number, y: number, keep: number) => Promise<LabPaths>) | null;
   declare showFocus: ((focus: RayFocus | null) => void) | null;
@@ -99,11 +111,14 @@ export class RtPathDebugger extends LocalizedElement {
   private trees: PathTrees | null = null;
   private request = 0;
   private tracedFor: { pixel: readonly [number, number]; rays: ScreenRays | null } | null = null;
+  /** What "show me" asked for, done once the paths are traced. */
+  private shown: DebuggerAction | null = null;
 
   constructor() {
     super();
     this.pixel = null;
     this.settings = null;
+    this.scene = null;
     this.screenRays = null;
     this.tracePaths = null;
     this.showFocus = null;
@@ -138,6 +153,7 @@ export class RtPathDebugger extends LocalizedElement {
       this.problem = null;
       this.arrange(paths);
       this.moveTo(Math.min(this.path, paths.paths.length - 1), 0);
+      this.applyShown();
     } catch (error) {
       if (request === this.request) this.problem = error instanceof Error ? error.message : String(error);
     }
@@ -157,10 +173,38 @@ export class RtPathDebugger extends LocalizedElement {
     if (!this.trees || this.rows.length === 0) return;
     this.path = Math.max(0, Math.min(this.rows.length - 1, path));
     this.vertex = Math.max(0, Math.min(this.rows[this.path].length - 1, vertex));
-    this.showFocus?.(pathFocus(this.trees, this.path, this.vertex, this.settings?.bounceSampling));
+    this.showFocus?.({ ...pathFocus(this.trees, this.path, this.vertex, this.settings?.bounceSampling), chooseRay: this.chooseRay });
     // As the Whitted debugger does, so that a path level's task can ask for a step.
     const recorded = this.paths?.paths[this.path];
     if (recorded) this.report?.({ type: 'debugger.stepped', step: this.vertex, of: recorded.vertices.length, ray: pathRayOf(recorded, this.vertex) });
+  }
+
+  /** A click in the 3D view on a drawn path: the debugger goes to the vertex clicked (path-vertex-pick.ts). */
+  private readonly chooseRay = (node: RayNode, at: number): boolean => {
+    const choice = this.trees && pathVertexOfRay(this.trees, node, at);
+    if (!choice) return false;
+    this.moveTo(choice.path, choice.vertex);
+    return true;
+  };
+
+  /**
+   * "Show me" for a task's path-debugger step: goes to the first vertex whose arriving ray
+   * matches the solution's (debugger/path-goals.ts findPathVertex), which the debugger then
+   * reports as a learner's step; waits for the paths when they are still being traced.
+   */
+  perform(action: DebuggerAction): void {
+    this.shown = action;
+    this.applyShown();
+  }
+
+  private applyShown(): void {
+    const action = this.shown;
+    if (!action || !this.paths) return;
+    this.shown = null;
+    // A term of the Whitted debugger's equation has no path-mode counterpart.
+    if (action.type !== 'debugger.stepped') return;
+    const found = findPathVertex(this.paths.paths, action.ray);
+    if (found) this.moveTo(found.path, found.vertex);
   }
 
   private move(pathStep: number, vertex: number | 'start' | 'end'): void {
@@ -172,7 +216,8 @@ export class RtPathDebugger extends LocalizedElement {
   /** Its keys, also when the debugger's card around it has the focus. */
   readonly onKeyDown = (event: KeyboardEvent): void => {
     const move = KEY_MOVES[event.key];
-    if (!move || event.altKey || event.ctrlKey || event.metaKey) return;
+    // The vertex list's own arrows choose in it.
+    if (!move || event.altKey || event.ctrlKey || event.metaKey || event.composedPath()[0] instanceof HTMLSelectElement) return;
     event.preventDefault();
     event.stopPropagation();
     this.move(...move);
@@ -183,12 +228,15 @@ export class RtPathDebugger extends LocalizedElement {
     this.renderRoot.querySelector('tr.current')?.scrollIntoView({ block: 'nearest' });
     this.dataset.path = this.paths ? String(this.path) : '';
     this.dataset.vertex = this.paths ? String(this.vertex) : '';
+    // An option's selected attribute stops counting once the list was used: its value follows the cursor.
+    const list = this.renderRoot.querySelector('select');
+    if (list) list.value = String(this.vertex);
   }
 
   override render() {
     if (this.problem) return html`<p role="alert">${msg(str`The paths could not be traced: ${this.problem}`)}</p>`;
     const paths = this.paths;
-    const rows = this.rows[this.path];
+    const rows = this.rows[this.path]?.map((row) => this.named(row));
     if (!paths || !rows) return html`<p role="status">${msg('Tracing the pixel’s paths…')}</p>`;
     const row = rows[this.vertex];
     const shown = paths.paths.length;
@@ -199,12 +247,35 @@ export class RtPathDebugger extends LocalizedElement {
         <button aria-keyshortcuts="ArrowLeft" title=${msg('One vertex back (←)')} ?disabled=${this.vertex === 0} @click=${() => this.move(0, -1)}>◀ ${msg('Back')}</button>
         <span>${msg(str`vertex ${this.vertex} of ${rows.length - 1}`)}</span>
         <button aria-keyshortcuts="ArrowRight" title=${msg('One vertex on (→)')} ?disabled=${this.vertex === rows.length - 1} @click=${() => this.move(0, 1)}>${msg('Step')} ▶</button>
+        ${this.renderVertexChoice(rows)}
         <span class="muted">${msg('Keys: ← → ↑ ↓ Home End')}</span>
       </div>
       <p role="status" aria-live="polite">${vertexText(row, this.settings?.bounceSampling ?? 'cosine')} ${survivalText(row)}</p>
       ${vertexEstimate(row)}
       <div class="table" tabindex="0" @keydown=${this.onKeyDown}>${pathTable(rows, this.vertex)}</div>
       ${this.renderPixel(paths, rows)}`;
+  }
+
+  /** A row with the names the scene list shows ("Back wall", "Achterwand") for its ids. */
+  private named(row: PathVertexRow): PathVertexRow {
+    const scene = this.scene;
+    if (!scene) return row;
+    const name = (id: string | null) => (id === null ? null : itemName(scene, id));
+    const lightSamples = row.lightSamples.map((sample) => ({ ...sample, lightId: itemName(scene, sample.lightId) }));
+    return { ...row, objectId: name(row.objectId), lightId: name(row.lightId), lightSamples };
+  }
+
+  /**
+   * The vertex chosen from a list (the keyboard's way to what a click on a drawn vertex in
+   * the 3D view does): the debugger jumps there, and at a diffuse bounce the lobe is drawn.
+   */
+  private renderVertexChoice(rows: PathVertexRow[]) {
+    return html`<label class="vertex-choice" title=${msg('Or click a vertex of a drawn path in the 3D view.')}
+      >${msg('Go to')}
+      <select @change=${(event: Event) => this.moveTo(this.path, Number((event.target as HTMLSelectElement).value))}>
+        ${rows.map((row, i) => html`<option value=${i} ?selected=${i === this.vertex}>${i} · ${eventName(row.event)}${row.objectId ? ` · ${row.objectId}` : ''}</option>`)}
+      </select></label
+    >`;
   }
 
   /** The path's contribution, and the pixel as the mean of all the pixel's paths. */
@@ -222,7 +293,7 @@ export class RtPathDebugger extends LocalizedElement {
       </p>
       <p class="muted">
         ${paths.paths.length === 1 ? msg(str`The first path adds: ${listed}.`) : msg(str`The first ${paths.paths.length} paths add: ${listed}.`)}
-        ${msg('The 3D view draws them up to this vertex: this path bright, the others dimmed; the legend says what the dashes, widths and the lobe mean.')}
+        ${msg('The 3D view draws them up to this vertex: this path bright, the others dimmed; a click on a drawn vertex goes there. The legend says what the dashes, widths and the lobe mean.')}
       </p>`;
   }
 }

@@ -170,10 +170,15 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
 
   /**
    * "Show me" performs a debugger action visibly: the debugger opens on the selected pixel and
-   * moves to the first step that reaches the action's ray, or clicks the action's term at the
-   * first hit that has it (which the debugger then reports, as for a learner).
+   * moves to the first step that reaches the action's ray (in path mode the path debugger goes
+   * to its vertex), or clicks the action's term at the first hit that has it (reported as a learner's).
    */
   perform(action: DebuggerAction): void {
+    if (this.pathMode) {
+      if (!this.open) this.toggleOpen(true);
+      void this.updateComplete.then(() => this.renderRoot.querySelector('rt-path-debugger')?.perform(action));
+      return;
+    }
     this.shown = action;
     if (!this.open) this.toggleOpen(true);
     else this.applyShown();
@@ -315,7 +320,7 @@ export class RtRayDebugger extends StorePanel<'debugger'> {
 
   private renderPaths(pixel: readonly [number, number]) {
     const settings = this.state?.scene.settings ?? null;
-    return html`<rt-path-debugger .pixel=${pixel} .settings=${settings} .screenRays=${this.screenRays} .tracePaths=${this.tracePaths} .showFocus=${this.showFocus} .report=${(action: LabAction) => this.report(action)}></rt-path-debugger>`;
+    return html`<rt-path-debugger .pixel=${pixel} .settings=${settings} .scene=${this.state?.scene ?? null} .screenRays=${this.screenRays} .tracePaths=${this.tracePaths} .showFocus=${this.showFocus} .report=${(action: LabAction) => this.report(action)}></rt-path-debugger>`;
   }
 
   private renderProgram() {
