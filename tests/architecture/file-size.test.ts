@@ -36,7 +36,6 @@ const ALLOWED_LONG_FILES: Record<string, string> = {
     'the game rules as one state machine: every event moves tasks, hints, predictions, badges and timing together; the pure rules live beside it (prediction-stage.ts, goal-check.ts)',
   'render/render-pool.ts':
     "the worker pool: scheduling, the watchdog, recovery and path mode's running sums read and change one job state, whose cancellation contract its tests pin",
-  'view/ray-pool.ts': 'the instanced rays, cones and arrows write one shared buffer layout; apart, each would restate its offsets',
 };
 
 const ROOT = fileURLToPath(new URL('../..', import.meta.url));
