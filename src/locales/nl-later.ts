@@ -66,7 +66,7 @@
 's142286c1a975100a': str`${0} vragen over licht en stralen. Kies wat jij nu denkt; gok als je het niet zeker weet. Je ziet niet of je antwoorden goed zijn. Na het laatste level krijg je zulke vragen nog een keer, zodat je docent kan zien wat je geleerd hebt.`,
 's1423654d63845a2a': str`Tests uitvoeren probeert je functie op alle gevallen, hoogstens ${0} s lang.`,
 's14330cf5f6d37498': `Beste score per leerling`,
-'s147456ecb3835d5f': `Hier wordt geen licht tegengehouden: het punt is zo donker als zijn termen samen zijn (zijn kleur C, kd, en I en A van de lampen).`,
+'s147456ecb3835d5f': `Hier wordt geen licht geblokkeerd: het punt is zo donker als zijn termen samen zijn (zijn kleur C, kd, en I en A van de lampen).`,
 's149518443c94bca4': `Moodle, Canvas, itslearning en Brightspace lezen een SCORM-pakket in en houden per leerling bij of de lesopdracht af is, de score en de antwoorden. Kies 2004 als je leeromgeving dat aanbiedt (dan staat er ook bij hoe lang elk antwoord duurde); 1.2 werkt bijna overal.`,
 's14bfe0b2e0065256': `een straal die binnen de bol begint`,
 's150dbc2e082fa471': str`Versie A en versie B hebben elk ${0} vragen over dezelfde ideeën. Het dashboard toont de scores voor en na en de genormaliseerde leerwinst per idee.`,

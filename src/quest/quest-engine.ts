@@ -2,27 +2,25 @@ import type { Issue } from '../util/issue.ts';
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
 import type { Scene } from '../scene/scene.ts';
-import { sameBadge, type Badge, type EarnedBadge } from './badges.ts';
-import { EventLog, systemClock, type HintStep, type HowCompleted, type LoggedEvent, type OfferedStep, type QuestClock, type QuestEvent } from './event-log.ts';
+import { newVisit, pointsAwaitingObservation, stageInVisit, workableTask, type ActiveLevel } from './active-level.ts';
+import type { EarnedBadge } from './badges.ts';
+import { systemClock, type HintStep, type HowCompleted, type LoggedEvent, type OfferedStep, type QuestClock } from './event-log.ts';
 import { APP_ONLY_ACTION } from './lab-action-schema.ts';
-import { choiceOrder } from './choice-order.ts';
-import { checkGoal, fitsGoal, isRightPrediction, NO_EVENTS, tallyAction, touchesGoal, type EventTally, type Prediction } from './goal-check.ts';
-import { kindOfGoal, predictionOf, predictionParts, type PictureGoal, type TaskKind } from './goal.ts';
+import { checkGoal, fitsGoal, isRightPrediction, NO_EVENTS, tallyAction, touchesGoal, type Prediction } from './goal-check.ts';
+import { kindOfGoal, predictionOf, predictionParts, type PictureGoal } from './goal.ts';
 import { pictureScenes } from './picture-scenes.ts';
-import { lastPrediction, observerOf, predictionRevealedBy, stageOf, type PredictionStage, type Reveal } from './prediction-stage.ts';
-import { canShowMe, climb, nextHintStep, NO_HINTS, type HintProgress } from './hint-ladder.ts';
-import type { GuideTarget } from './lab-controls.ts';
+import { predictionRevealedBy, type PredictionStage } from './prediction-stage.ts';
+import { canShowMe, climb, nextHintStep, NO_HINTS } from './hint-ladder.ts';
 import { currentTask, isCompleted, isPassed, requiredTaskIds, type RequiredTasks } from './level-gate.ts';
 import { levelMap, statusOfLevel, type ChapterMapView, type LevelStatus } from './level-map.ts';
 import { playableLevels, type LevelCatalog } from './level-index.ts';
 import type { Level, Task } from './level-schema.ts';
-import type { LocalizedText } from './localized-text.ts';
-import { pointsOf, PROGRESS_KIND, PROGRESS_VERSION, type LevelProgress, type Progress, type QuestSettings } from './progress.ts';
+import { pointsOf, type Progress, type QuestSettings } from './progress.ts';
 import { levelBadgesEarned, pointsFor, starsEarned } from './scoring.ts';
 import type { Stars } from './challenge-par.ts';
-import { matchScore } from './challenge-closeness.ts';
-import { holdsAll, mergeProgress } from './progress-merge.ts';
-import { reconcileLevels } from './progress-reconcile.ts';
+import { comparisonEvent } from './challenge-progress.ts';
+import { KeptProgress, type QuestListener } from './kept-progress.ts';
+import { levelViewOf, type LevelView, type ViewSources } from './level-view.ts';
 
 /**
  * The game's rules, with no DOM: which level is open, which task is the learner's, when a
@@ -52,111 +50,21 @@ export interface QuestEngineOptions {
   session?: string;
 }
 
-/** A task's status: `current` is the required task to do now; `open` a task that is not
- * required and not done; `waiting` a required task after the current one. */
-export type TaskStatus = 'current' | 'open' | 'waiting' | HowCompleted;
-
-export interface PredictionView {
-  stage: PredictionStage;
-  /** A quiz's choices in the order this learner sees them (file positions); empty for a number. */
-  order: number[];
-  /** The learner's prediction, once made (from the log). */
-  prediction?: Prediction;
-  /** What a learner whose prediction was wrong said they saw. */
-  reflection?: Prediction;
-  /** The task whose result checks the prediction; none when the result is seen at once. */
-  observer?: Task;
-  /** A picture prediction's scenes to render, one per choice in file order. */
-  pictures?: readonly Scene[];
-}
-
-export interface TaskView {
-  task: Task;
-  kind: TaskKind;
-  required: boolean;
-  status: TaskStatus;
-  /** Points earned; 0 until completed. */
-  points: number;
-  /** For an answered quiz: whether the prediction was right. */
-  correct?: boolean;
-  /** For a challenge the learner matched: its golf score, as saved. */
-  stars?: Stars;
-  /** For a quiz or estimate: its stage, the order of its choices, the learner's prediction. */
-  prediction?: PredictionView;
-  /** For the task that checks a prediction, while it is to do: that prediction and its quiz. */
-  checks?: { quiz: Task; prediction: Prediction; order: number[] };
-  /** The text hints shown so far. */
-  hints: LocalizedText[];
-  /** What asking for help does next (`show-me`: offer the "Show me" button); null when nothing is left. */
-  nextHint: HintStep | null;
-  /** The app offered the next rung after idle time and the learner has not opened it yet. */
-  hintOffered: boolean;
-}
-
-export interface LevelView {
-  level: Level;
-  tasks: TaskView[];
-  /** The required task to do now; null once the level is passed, or while a prediction is revealed. */
-  current: TaskView | null;
-  /** The prediction being revealed after its observation (the learner continues from it), or null. */
-  revealing: TaskView | null;
-  /** The level opened with the scene the learner left it with, not its own (see openLevel). */
-  sceneKept: boolean;
-  passed: boolean;
-  points: number;
-  maxPoints: number;
-  /** The control to ring: the guide of the last guidance shown, while its task is not done. */
-  ring: GuideTarget | null;
-}
-
 /** What "show me" performs: the solution's actions, one by one through the store; or a quiz's answer (a choice's position, or an estimate's number). */
 export type ShowMe = { kind: 'actions'; actions: LabAction[] } | { kind: 'answer'; answer: number };
 
 export type OpenLevelResult = { ok: true; level: Level; scene: Scene } | { ok: false; reason: 'unknown' | 'broken' | 'locked' };
 
-/** Called after every change, with the events it logged (none when only the scene or settings changed). */
-export type QuestListener = (events: readonly LoggedEvent[]) => void;
-
-/** The open level's state that lasts for this visit only. */
-interface ActiveLevel {
-  level: Level;
-  required: ReadonlySet<string>;
-  current: Task | undefined;
-  /** Event goals matched since each watched task was shown. */
-  tallies: Map<string, EventTally>;
-  hints: Map<string, HintProgress>;
-  /** Tasks whose first rung was offered after idle time (once per visit). */
-  offered: Set<string>;
-  /** Tasks whose "show me" was used: they complete as shown. */
-  shownByApp: Set<string>;
-  /** Optional tasks the learner has started on in this visit (`task.started` logged). */
-  started: Set<string>;
-  ring: { task: string; target: GuideTarget } | null;
-  /** The prediction whose result was just observed: it holds the level until the learner continues. */
-  reveal: Reveal | null;
-  /** Opened with the scene the learner left, not the level's own. */
-  sceneKept: boolean;
-}
-
 export class QuestEngine {
   private readonly catalog: LevelCatalog;
   private readonly levels: Level[];
-  private readonly log: EventLog;
   private readonly assignment: RequiredTasks | undefined;
   private readonly idleHintMs: number;
-  private levelProgress: Record<string, LevelProgress>;
-  private earned: EarnedBadge[];
-  private settings: QuestSettings;
-  private sandbox: Scene | null;
-  private resumable: Progress['current'];
-  private readonly epoch: string | undefined;
+  private readonly kept: KeptProgress;
   private active: ActiveLevel | null = null;
   private lastState: LabState | null = null;
   private lastActivity: number;
   private visible = true;
-  private readonly listeners = new Set<QuestListener>();
-  private unpublished: LoggedEvent[] = [];
-  private changed = false;
   private readonly pictureCache = new WeakMap<PictureGoal, readonly Scene[]>();
 
   constructor(options: QuestEngineOptions) {
@@ -164,91 +72,48 @@ export class QuestEngine {
     this.levels = playableLevels(options.catalog);
     this.assignment = options.requiredTasks;
     this.idleHintMs = options.idleHintMs ?? IDLE_HINT_MS;
-    const { progress } = options;
-    this.levelProgress = reconcileLevels(progress.levels, this.levels);
-    this.earned = progress.badges;
-    this.settings = progress.settings;
-    this.sandbox = progress.sandbox;
-    this.resumable = progress.current;
-    this.epoch = progress.epoch;
-    this.log = new EventLog(progress.log, options.clock ?? systemClock, options.session);
-    this.lastActivity = this.log.now();
+    this.kept = new KeptProgress(options.progress, this.levels, options.clock ?? systemClock, options.session);
+    this.lastActivity = this.kept.log.now();
   }
 
   // ─── Reading ───────────────────────────────────────────────────────────────
 
   /** Everything to save; the event log inside is shared and only ever grows. */
   get progress(): Progress {
-    return {
-      kind: PROGRESS_KIND,
-      version: PROGRESS_VERSION,
-      levels: this.levelProgress,
-      badges: this.earned,
-      settings: this.settings,
-      sandbox: this.sandbox,
-      current: this.resumable,
-      log: this.log.data,
-      ...(this.epoch === undefined ? {} : { epoch: this.epoch }),
-    };
+    return this.kept.progress;
   }
 
-  /**
-   * The learner's points, less those of predictions in the open level still waiting for their
-   * observation: a score that jumped at "lock in" would tell whether the prediction was right.
-   */
+  /** The learner's points, less those of the open level's predictions still waiting for their observation (active-level.ts). */
   get points(): number {
     const active = this.active;
-    const record = active && this.levelProgress[active.level.id];
-    const waiting =
-      !active || !record
-        ? 0
-        : active.level.tasks.reduce(
-            (sum, task) => sum + (predictionOf(task.goal) && this.stageOf(active, task) === 'wait' ? (record.tasks[task.id]?.points ?? 0) : 0),
-            0,
-          );
-    return pointsOf(this.progress) - waiting;
+    return pointsOf(this.progress) - (active ? pointsAwaitingObservation(active, this.kept.levels[active.level.id]) : 0);
   }
 
   get badges(): readonly EarnedBadge[] {
-    return this.earned;
+    return this.kept.badges;
   }
 
   get events(): readonly LoggedEvent[] {
-    return this.log.events;
+    return this.kept.log.events;
   }
 
   /** The level being played, or null on the level map. */
   get level(): LevelView | null {
     const active = this.active;
-    if (!active) return null;
-    const { level, required } = active;
-    const record = this.levelProgress[level.id];
-    const tasks = level.tasks.map((task) => this.taskView(active, task));
-    return {
-      level,
-      tasks,
-      current: tasks.find((view) => view.status === 'current') ?? null,
-      revealing: tasks.find((view) => view.task.id === active.reveal?.quiz) ?? null,
-      sceneKept: active.sceneKept,
-      passed: isPassed(level, record, required),
-      points: tasks.reduce((sum, view) => sum + view.points, 0),
-      maxPoints: level.tasks.reduce((sum, task) => sum + task.points, 0),
-      ring: active.ring?.target ?? null,
-    };
+    return active && levelViewOf(this.viewSources(active), active);
   }
 
   /** The level map: chapters, each level's lock, tick and points; broken levels with their reasons. */
   map(): ChapterMapView[] {
-    return levelMap(this.catalog, this.levelProgress, this.assignment);
+    return levelMap(this.catalog, this.kept.levels, this.assignment);
   }
 
   levelStatus(id: string): LevelStatus {
-    return statusOfLevel(this.catalog, this.levelProgress, this.assignment, id);
+    return statusOfLevel(this.catalog, this.kept.levels, this.assignment, id);
   }
 
   subscribe(listener: QuestListener): () => void {
-    this.listeners.add(listener);
-    return () => this.listeners.delete(listener);
+    return this.kept.subscribe(listener);
   }
 
   // ─── Levels ────────────────────────────────────────────────────────────────
@@ -263,42 +128,30 @@ export class QuestEngine {
     if (!level) return { ok: false, reason: this.catalog.chapters.some((chapter) => chapter.entries.some((entry) => entry.id === id)) ? 'broken' : 'unknown' };
     if (this.levelStatus(id) === 'locked') return { ok: false, reason: 'locked' };
     this.closeLevel();
-    const sceneKept = this.resumable?.level === id;
-    const scene = sceneKept && this.resumable ? this.resumable.scene : level.scene;
-    this.resumable = { level: id, scene };
+    const sceneKept = this.kept.resumable?.level === id;
+    const scene = sceneKept && this.kept.resumable ? this.kept.resumable.scene : level.scene;
+    this.kept.resumable = { level: id, scene };
     this.lastState = null;
-    const active: ActiveLevel = {
-      level,
-      required: requiredTaskIds(level, this.assignment),
-      current: undefined,
-      tallies: new Map(),
-      hints: new Map(),
-      offered: new Set(),
-      shownByApp: new Set(),
-      started: new Set(),
-      ring: null,
-      reveal: null,
-      sceneKept,
-    };
+    const active = newVisit(level, requiredTaskIds(level, this.assignment), sceneKept);
     this.active = active;
-    this.append({ type: 'level.opened', level: id });
+    this.kept.append({ type: 'level.opened', level: id });
     // Tasks that are not required can be done any time: they are all shown at once.
     for (const task of level.tasks) {
-      if (active.required.has(task.id) || isCompleted(this.levelProgress[id], task.id)) continue;
+      if (active.required.has(task.id) || isCompleted(this.kept.levels[id], task.id)) continue;
       active.tallies.set(task.id, NO_EVENTS);
-      this.append({ type: 'task.shown', level: id, task: task.id, mandatory: task.mandatory, required: false, kind: kindOfGoal(task.goal) });
+      this.kept.append({ type: 'task.shown', level: id, task: task.id, mandatory: task.mandatory, required: false, kind: kindOfGoal(task.goal) });
     }
     this.showCurrentTask(active);
-    this.publish();
+    this.kept.publish();
     return { ok: true, level, scene };
   }
 
   /** Back to the level map. The level's scene is remembered for when the learner returns. */
   closeLevel(): void {
     if (!this.active) return;
-    this.append({ type: 'level.closed', level: this.active.level.id });
+    this.kept.append({ type: 'level.closed', level: this.active.level.id });
     this.active = null;
-    this.publish();
+    this.kept.publish();
   }
 
   // ─── Fed by the store ──────────────────────────────────────────────────────
@@ -310,24 +163,24 @@ export class QuestEngine {
    */
   readonly observe = (state: LabState, action: LabAction, error?: readonly Issue[], live = false): void => {
     if (error !== undefined) return;
-    this.lastActivity = this.log.now();
+    this.lastActivity = this.kept.log.now();
     const levelId = this.active?.level.id ?? null;
-    if (action.type === 'render.started') this.append({ type: 'render.started', level: levelId });
-    if (action.type === 'challenge.compared') this.append(comparisonEvent(this.active, action));
+    if (action.type === 'render.started') this.kept.append({ type: 'render.started', level: levelId });
+    if (action.type === 'challenge.compared') this.kept.append(comparisonEvent(this.active, action));
     if (action.type === 'render.finished') {
-      this.append({ type: 'render.finished', level: levelId, ms: action.ms });
-      this.award({ kind: 'first-render' });
+      this.kept.append({ type: 'render.finished', level: levelId, ms: action.ms });
+      this.kept.award({ kind: 'first-render' });
     }
     const active = this.active;
     if (active) {
-      if (this.resumable?.scene !== state.scene) {
-        this.resumable = { level: active.level.id, scene: state.scene };
-        this.changed = true;
+      if (this.kept.resumable?.scene !== state.scene) {
+        this.kept.resumable = { level: active.level.id, scene: state.scene };
+        this.kept.changed = true;
       }
       const before = this.lastState;
       this.lastState = state;
       // A declared view is the app's doing: it neither starts a task nor counts towards one.
-      if (action.type === APP_ONLY_ACTION) return this.publish();
+      if (action.type === APP_ONLY_ACTION) return this.kept.publish();
       for (const [taskId, tally] of [...active.tallies]) {
         const task = active.level.tasks.find((candidate) => candidate.id === taskId);
         // A task completed by an earlier one in this loop (the next current task) is no longer watched.
@@ -342,7 +195,7 @@ export class QuestEngine {
         this.complete(active, task, how, undefined, how === 'done' ? starsEarned(task.goal, action) : undefined);
       }
     }
-    this.publish();
+    this.kept.publish();
   };
 
   // ─── The task panel ────────────────────────────────────────────────────────
@@ -353,7 +206,7 @@ export class QuestEngine {
     const task = active?.current;
     if (!active || !task || kindOfGoal(task.goal) !== 'info') return false;
     this.complete(active, task, 'done');
-    this.publish();
+    this.kept.publish();
     return true;
   }
 
@@ -367,11 +220,11 @@ export class QuestEngine {
     if (!found || !goal || !fitsGoal(goal, prediction)) return undefined;
     const { active, task } = found;
     const correct = isRightPrediction(goal, prediction);
-    this.lastActivity = this.log.now();
+    this.lastActivity = this.kept.log.now();
     this.startOptional(active, taskId);
-    this.append({ type: 'quiz.answered', level: active.level.id, task: taskId, ...prediction, correct });
+    this.kept.append({ type: 'quiz.answered', level: active.level.id, task: taskId, ...prediction, correct });
     this.complete(active, task, 'done', correct);
-    this.publish();
+    this.kept.publish();
     return { correct };
   }
 
@@ -382,10 +235,10 @@ export class QuestEngine {
     const goal = task && predictionOf(task.goal);
     if (!active || !task || !goal || this.stageOf(active, task) !== 'reflect' || !fitsGoal(goal, prediction)) return undefined;
     const correct = isRightPrediction(goal, prediction);
-    this.lastActivity = this.log.now();
+    this.lastActivity = this.kept.log.now();
     active.reveal = { quiz: taskId, reflection: prediction };
-    this.append({ type: 'quiz.reflected', level: active.level.id, task: taskId, ...prediction, correct });
-    this.publish();
+    this.kept.append({ type: 'quiz.reflected', level: active.level.id, task: taskId, ...prediction, correct });
+    this.kept.publish();
     return { correct };
   }
 
@@ -394,11 +247,11 @@ export class QuestEngine {
     const active = this.active;
     const task = active?.level.tasks.find((candidate) => candidate.id === taskId);
     if (!active || !task || this.stageOf(active, task) !== 'explain') return false;
-    this.lastActivity = this.log.now();
+    this.lastActivity = this.kept.log.now();
     active.reveal = null;
-    this.append({ type: 'quiz.explained', level: active.level.id, task: taskId });
+    this.kept.append({ type: 'quiz.explained', level: active.level.id, task: taskId });
     if (!active.current) this.showCurrentTask(active);
-    this.publish();
+    this.kept.publish();
     return true;
   }
 
@@ -420,7 +273,7 @@ export class QuestEngine {
     active.hints.set(taskId, climb(hints, step));
     if (step === 'guidance' && task.guide) active.ring = { task: taskId, target: task.guide };
     this.hintShown(active, task, step, trigger);
-    this.publish();
+    this.kept.publish();
     return step;
   }
 
@@ -444,7 +297,7 @@ export class QuestEngine {
       active.shownByApp.add(taskId);
       shown = { kind: 'actions', actions: task.solution };
     }
-    this.publish();
+    this.kept.publish();
     return shown;
   }
 
@@ -454,7 +307,7 @@ export class QuestEngine {
     if (!found || found.active.required.has(taskId)) return false;
     this.startOptional(found.active, taskId);
     this.complete(found.active, found.task, 'skipped');
-    this.publish();
+    this.kept.publish();
     return true;
   }
 
@@ -462,10 +315,10 @@ export class QuestEngine {
   expandExplanation(taskId: string | 'intro'): void {
     const active = this.active;
     if (!active || (taskId !== 'intro' && !active.level.tasks.some((task) => task.id === taskId))) return;
-    this.lastActivity = this.log.now();
+    this.lastActivity = this.kept.log.now();
     if (taskId !== 'intro') this.startOptional(active, taskId);
-    this.append({ type: 'explanation.expanded', level: active.level.id, task: taskId === 'intro' ? null : taskId });
-    this.publish();
+    this.kept.append({ type: 'explanation.expanded', level: active.level.id, task: taskId === 'intro' ? null : taskId });
+    this.kept.publish();
   }
 
   // ─── Time and attention ────────────────────────────────────────────────────
@@ -480,85 +333,74 @@ export class QuestEngine {
     const active = this.active;
     const task = active?.current;
     if (!active || !task || !this.visible || kindOfGoal(task.goal) === 'info' || active.offered.has(task.id) || active.hints.has(task.id)) return;
-    if (this.log.now() - this.lastActivity < this.idleHintMs) return;
+    if (this.kept.log.now() - this.lastActivity < this.idleHintMs) return;
     const step = nextHintStep(task, NO_HINTS);
     if (step !== 'text' && step !== 'guidance') return;
     active.offered.add(task.id);
-    this.append({ type: 'hint.offered', level: active.level.id, task: task.id, step });
-    this.publish();
+    this.kept.append({ type: 'hint.offered', level: active.level.id, task: task.id, step });
+    this.kept.publish();
   }
 
   /** The tab was hidden or shown (document.visibilitychange, pagehide): active time leaves out hidden time. */
   visibilityChanged(visible: boolean): void {
     if (visible === this.visible) return;
     this.visible = visible;
-    this.append({ type: visible ? 'tab.visible' : 'tab.hidden' });
+    this.kept.append({ type: visible ? 'tab.visible' : 'tab.hidden' });
     // Time away is not time stuck on the task.
-    if (visible) this.lastActivity = this.log.now();
-    this.publish();
+    if (visible) this.lastActivity = this.kept.log.now();
+    this.kept.publish();
   }
 
   // ─── Other progress ────────────────────────────────────────────────────────
 
   saveSandbox(scene: Scene): void {
-    this.sandbox = scene;
-    this.changed = true;
-    this.award({ kind: 'sandbox-saved' });
-    this.publish();
+    this.kept.sandbox = scene;
+    this.kept.changed = true;
+    this.kept.award({ kind: 'sandbox-saved' });
+    this.kept.publish();
   }
 
   changeSettings(changes: Partial<QuestSettings>): void {
-    this.settings = { ...this.settings, ...changes };
-    this.changed = true;
-    this.publish();
+    this.kept.settings = { ...this.kept.settings, ...changes };
+    this.kept.changed = true;
+    this.kept.publish();
   }
 
   /**
-   * Takes in what another tab saved (progress-merge.ts): its events, tasks, badges and hint
-   * counts join ours, and its settings replace ours (the learner changed them there last).
-   * The open level moves on when its current task was completed there. Returns false, and
-   * tells no one, when there was nothing new; progress of a later epoch (a reset or import
-   * there) is not merged: the caller replaces the engine.
+   * Takes in what another tab saved (kept-progress.ts). The open level moves on when its
+   * current task was completed there. Returns false, and tells no one, when there was nothing
+   * new; progress of a later epoch (a reset or import there) is not merged: the caller
+   * replaces the engine.
    */
   absorb(theirs: Progress): boolean {
-    const ours = this.progress;
-    if ((theirs.epoch ?? '') !== (ours.epoch ?? '')) return false;
-    if (holdsAll(ours, theirs) && JSON.stringify(theirs.settings) === JSON.stringify(ours.settings)) return false;
-    const merged = mergeProgress(ours, theirs);
-    this.levelProgress = reconcileLevels(merged.levels, this.levels);
-    this.earned = merged.badges;
-    this.settings = theirs.settings;
-    this.log.adopt(merged.log);
+    if (!this.kept.absorb(theirs)) return false;
     const active = this.active;
     if (active) {
-      for (const taskId of [...active.tallies.keys()]) if (isCompleted(this.levelProgress[active.level.id], taskId)) active.tallies.delete(taskId);
-      if (active.current && isCompleted(this.levelProgress[active.level.id], active.current.id)) this.showCurrentTask(active);
+      for (const taskId of [...active.tallies.keys()]) if (isCompleted(this.kept.levels[active.level.id], taskId)) active.tallies.delete(taskId);
+      if (active.current && isCompleted(this.kept.levels[active.level.id], active.current.id)) this.showCurrentTask(active);
     }
-    this.changed = true;
-    this.publish();
+    this.kept.publish();
     return true;
   }
 
   // ─── Rules ─────────────────────────────────────────────────────────────────
 
-  /** The task if the learner can work on it now: in the open level, not done, and either current or not required. */
+  /** The open level and the task, if the learner can work on it now (active-level.ts). */
   private workableTask(taskId: string): { active: ActiveLevel; task: Task } | undefined {
     const active = this.active;
-    const task = active?.level.tasks.find((candidate) => candidate.id === taskId);
-    if (!active || !task || isCompleted(this.levelProgress[active.level.id], taskId)) return undefined;
-    if (active.required.has(taskId) && active.current?.id !== taskId) return undefined;
-    return { active, task };
+    const task = active && workableTask(active, this.kept.levels[active.level.id], taskId);
+    return active && task ? { active, task } : undefined;
   }
 
   /** Makes the first required task not yet done the current one, and completes it at once if its goal already holds. */
   private showCurrentTask(active: ActiveLevel): void {
     const { level } = active;
-    const task = currentTask(level, this.levelProgress[level.id], active.required);
+    const task = currentTask(level, this.kept.levels[level.id], active.required);
     active.current = task;
     if (!task) return;
     active.tallies.set(task.id, NO_EVENTS);
-    this.lastActivity = this.log.now();
-    this.append({ type: 'task.shown', level: level.id, task: task.id, mandatory: task.mandatory, required: true, kind: kindOfGoal(task.goal) });
+    this.lastActivity = this.kept.log.now();
+    this.kept.append({ type: 'task.shown', level: level.id, task: task.id, mandatory: task.mandatory, required: true, kind: kindOfGoal(task.goal) });
     // A learner who already did what the task asks (say, set supersampling to 2 earlier) is not made to do it again.
     if (this.lastState && kindOfGoal(task.goal) === 'do' && checkGoal(task.goal, this.lastState, NO_EVENTS)) {
       this.complete(active, task, active.shownByApp.has(task.id) ? 'shown' : 'done');
@@ -567,16 +409,16 @@ export class QuestEngine {
 
   private complete(active: ActiveLevel, task: Task, how: HowCompleted, correct?: boolean, stars?: Stars): void {
     const { level, required } = active;
-    const before = this.recordOf(level.id);
+    const before = this.kept.levelOf(level.id);
     const wasPassed = isPassed(level, before, required);
     const points = pointsFor(task, how, correct, stars);
     const scored = { ...(correct === undefined ? {} : { correct }), ...(stars === undefined ? {} : { stars }) };
     const record = { tasks: { ...before.tasks, [task.id]: { how, points, ...scored } }, hintsUsed: before.hintsUsed };
-    this.levelProgress = { ...this.levelProgress, [level.id]: record };
+    this.kept.levels = { ...this.kept.levels, [level.id]: record };
     active.tallies.delete(task.id);
     if (active.ring?.task === task.id) active.ring = null;
     const isRequired = required.has(task.id);
-    this.append({
+    this.kept.append({
       type: 'task.completed',
       level: level.id,
       task: task.id,
@@ -588,10 +430,10 @@ export class QuestEngine {
     });
 
     if (isPassed(level, record, required) && !wasPassed) {
-      this.append({ type: 'level.passed', level: level.id });
+      this.kept.append({ type: 'level.passed', level: level.id });
       this.awardChapter(level.chapter);
     }
-    for (const badge of levelBadgesEarned(level, record, required)) this.award(badge);
+    for (const badge of levelBadgesEarned(level, record, required)) this.kept.award(badge);
     const revealed = how === 'skipped' ? undefined : predictionRevealedBy(level, required, record, task);
     if (revealed) active.reveal = { quiz: revealed.id };
     // A revealed prediction holds the level: the next task comes when the learner continues.
@@ -601,33 +443,17 @@ export class QuestEngine {
     }
   }
 
-  private observerOf(active: ActiveLevel, quiz: Task): Task | undefined {
-    return observerOf(active.level, active.required, quiz);
-  }
-
   private stageOf(active: ActiveLevel, task: Task): PredictionStage {
-    return stageOf(active.level, active.required, this.levelProgress[active.level.id], active.reveal, task);
+    return stageInVisit(active, this.kept.levels[active.level.id], task);
   }
 
-  private predictionIn(levelId: string, taskId: string): Prediction | undefined {
-    return lastPrediction(this.log.events, levelId, taskId);
-  }
-
-  private predictionView(active: ActiveLevel, task: Task): PredictionView | undefined {
-    const goal = predictionOf(task.goal);
-    if (!goal) return undefined;
-    const seed = `${this.log.data.startedAt}/${active.level.id}/${task.id}`;
-    const prediction = this.predictionIn(active.level.id, task.id);
-    const reflection = active.reveal?.quiz === task.id ? active.reveal.reflection : undefined;
-    const observer = this.observerOf(active, task);
-    const pictures = goal.kind === 'picture' ? this.picturesOf(active.level, goal) : undefined;
+  /** What the task panel's views are read from (level-view.ts). */
+  private viewSources(active: ActiveLevel): ViewSources {
     return {
-      ...(pictures ? { pictures } : {}),
-      stage: this.stageOf(active, task),
-      order: choiceOrder(predictionParts(goal).choices, seed),
-      ...(prediction ? { prediction } : {}),
-      ...(reflection ? { reflection } : {}),
-      ...(observer ? { observer } : {}),
+      record: this.kept.levels[active.level.id],
+      events: this.kept.log.events,
+      logStart: this.kept.log.data.startedAt,
+      pictures: (goal) => this.picturesOf(active.level, goal),
     };
   }
 
@@ -638,99 +464,30 @@ export class QuestEngine {
     return scenes;
   }
 
-  /** For a task to do that checks a prediction still waiting for it: the quiz and the prediction. */
-  private checksOf(active: ActiveLevel, task: Task): TaskView['checks'] {
-    if (kindOfGoal(task.goal) !== 'do' || isCompleted(this.levelProgress[active.level.id], task.id)) return undefined;
-    const quiz = active.level.tasks.find(
-      (candidate) => predictionOf(candidate.goal) && this.stageOf(active, candidate) === 'wait' && this.observerOf(active, candidate) === task,
-    );
-    const prediction = quiz && this.predictionIn(active.level.id, quiz.id);
-    const order = quiz && this.predictionView(active, quiz)?.order;
-    return quiz && prediction && order ? { quiz, prediction, order } : undefined;
-  }
-
   /**
    * Logs the learner's first move towards an optional task in this visit: its time runs
    * from here (spec/classroom.md), so a task nobody touched is not timed at all.
    */
   private startOptional(active: ActiveLevel, taskId: string): void {
-    if (active.required.has(taskId) || active.started.has(taskId) || isCompleted(this.levelProgress[active.level.id], taskId)) return;
+    if (active.required.has(taskId) || active.started.has(taskId) || isCompleted(this.kept.levels[active.level.id], taskId)) return;
     active.started.add(taskId);
-    this.append({ type: 'task.started', level: active.level.id, task: taskId });
+    this.kept.append({ type: 'task.started', level: active.level.id, task: taskId });
   }
 
   /** A rung the learner opened: it counts against the level's "No hints needed" badge. */
   private hintShown(active: ActiveLevel, task: Task, step: HintStep, trigger: 'asked' | 'offered'): void {
     const { level } = active;
-    const before = this.recordOf(level.id);
-    this.levelProgress = { ...this.levelProgress, [level.id]: { ...before, hintsUsed: before.hintsUsed + 1 } };
-    this.lastActivity = this.log.now();
-    this.append({ type: 'hint.shown', level: level.id, task: task.id, step, trigger });
-  }
-
-  private recordOf(levelId: string): LevelProgress {
-    return this.levelProgress[levelId] ?? { tasks: {}, hintsUsed: 0 };
+    const before = this.kept.levelOf(level.id);
+    this.kept.levels = { ...this.kept.levels, [level.id]: { ...before, hintsUsed: before.hintsUsed + 1 } };
+    this.lastActivity = this.kept.log.now();
+    this.kept.append({ type: 'hint.shown', level: level.id, task: task.id, step, trigger });
   }
 
   private awardChapter(chapterId: string): void {
     const chapter = this.catalog.chapters.find((candidate) => candidate.id === chapterId);
     const levels = chapter?.entries.flatMap((entry) => (entry.ok ? [entry.level] : [])) ?? [];
-    if (levels.every((level) => isPassed(level, this.levelProgress[level.id], requiredTaskIds(level, this.assignment)))) {
-      this.award({ kind: 'chapter-done', chapter: chapterId });
+    if (levels.every((level) => isPassed(level, this.kept.levels[level.id], requiredTaskIds(level, this.assignment)))) {
+      this.kept.award({ kind: 'chapter-done', chapter: chapterId });
     }
   }
-
-  private award(badge: Badge): void {
-    if (this.earned.some((earned) => sameBadge(earned.badge, badge))) return;
-    const logged = this.append({ type: 'badge.earned', badge });
-    this.earned = [...this.earned, { badge, t: logged.t }];
-  }
-
-  private taskView(active: ActiveLevel, task: Task): TaskView {
-    const done = this.levelProgress[active.level.id]?.tasks[task.id];
-    const required = active.required.has(task.id);
-    const status: TaskStatus = done ? done.how : active.current?.id === task.id ? 'current' : required ? 'waiting' : 'open';
-    const hints = active.hints.get(task.id) ?? NO_HINTS;
-    const prediction = this.predictionView(active, task);
-    const checks = this.checksOf(active, task);
-    return {
-      task,
-      kind: kindOfGoal(task.goal),
-      required,
-      status,
-      // A prediction's points show once its result has been observed (see `points`).
-      points: prediction?.stage === 'wait' ? 0 : (done?.points ?? 0),
-      ...(done?.correct === undefined ? {} : { correct: done.correct }),
-      ...(done?.stars === undefined ? {} : { stars: done.stars }),
-      ...(prediction ? { prediction } : {}),
-      ...(checks ? { checks } : {}),
-      hints: task.hints.slice(0, hints.texts),
-      nextHint: done ? null : nextHintStep(task, hints),
-      hintOffered: !done && active.offered.has(task.id),
-    };
-  }
-
-  private append(event: QuestEvent): LoggedEvent {
-    const logged = this.log.append(event);
-    this.unpublished.push(logged);
-    return logged;
-  }
-
-  /** Tells listeners once per call from outside, with everything that call logged. */
-  private publish(): void {
-    if (this.unpublished.length === 0 && !this.changed) return;
-    const events = this.unpublished;
-    this.unpublished = [];
-    this.changed = false;
-    for (const listener of [...this.listeners]) listener(events);
-  }
-}
-
-/** A comparison as logged: with the counts, and the open level's challenge task and the match score its learner read. */
-function comparisonEvent(active: ActiveLevel | null, action: Extract<LabAction, { type: 'challenge.compared' }>): QuestEvent {
-  const { difference, renders, changes, rays } = action;
-  const event = { type: 'challenge.compared' as const, level: active?.level.id ?? null, difference, renders, changes, rays };
-  const task = active?.level.tasks.find((candidate) => active.tallies.has(candidate.id) && candidate.goal.kind === 'challenge');
-  if (task?.goal.kind !== 'challenge') return event;
-  return { ...event, task: task.id, score: matchScore(difference, task.goal.challenge.measure.threshold) };
 }

@@ -6,62 +6,25 @@
  * ray-visibility.ts). Per instance: a matrix (position, axis, radius, length), a colour,
  * an alpha and the growth animation's (start, length) (ray-shader.ts).
  *
- * Buffers are pooled: they grow by doubling and never shrink, and an update writes only
- * the instances in use (mesh.count) and uploads only that range.
+ * Buffers are pooled (instance-buffers.ts): they grow by doubling and never shrink, and an
+ * update writes only the instances in use (mesh.count: instance-matrices.ts places them,
+ * instance-attributes.ts styles them) and uploads only that range.
  */
-import { BufferGeometry, Float32BufferAttribute, Group, InstancedBufferAttribute, InstancedMesh, type Material, type Raycaster, type Vector3 } from 'three';
+import { Group, InstancedMesh, type Raycaster, type Vector3 } from 'three';
 import type { RayViewOptions } from '../lab-state/lab-state.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
 import { focusedRays, type RayFocus, screenOf } from './ray-focus.ts';
 import type { RayHover, RayLayer } from './ray-layer.ts';
 import { RayExtras } from './ray-extras.ts';
-import {
-  ALPHA_ATTRIBUTE,
-  ARROW_AT_ATTRIBUTE,
-  arrowAt,
-  createRayMaterial,
-  DASH_ATTRIBUTE,
-  FULLY_GROWN,
-  GROWTH_ATTRIBUTE,
-  type TravelUniform,
-  STOP_ATTRIBUTE,
-  type ViewHeightUniform,
-} from './ray-shader.ts';
+import { createRayMaterial, FULLY_GROWN, type TravelUniform, type ViewHeightUniform } from './ray-shader.ts';
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
 import { keptRays, type Thinning, thinningOf } from './ray-budget.ts';
 import { flattenRays } from './flat-rays.ts';
-import { FILLED_GAP_KEYS, RAY_COLOR_KEYS, RAY_DASHES, type RayColorKey, STOPPED_KEYS } from './ray-palette.ts';
-import { PATH_DASHES } from './path-dashes.ts';
+import { RAY_COLOR_KEYS } from './ray-palette.ts';
 import { SamplingLobeMesh } from './sampling-lobe-mesh.ts';
-import { timeStripe } from './time-colors.ts';
-
-/** Instances allocated at first; the buffers double from there as needed. */
-const INITIAL_CAPACITY = 256;
-
-/** Floats per instance: matrix 16, colour 3, alpha 1, growth 2; a cylinder adds its dash 2, arrowhead place 1 and stop 1. */
-const FLOATS_PER_CONE = 22;
-const FLOATS_PER_CYLINDER = FLOATS_PER_CONE + 4;
-
-/**
- * RAY_DASHES as (dash, gap) pairs by colour-key index, the form SegmentList.colorKey holds: a
- * rebuild copies two numbers per ray from it. Looking each pattern up by its name and copying
- * it with TypedArray.set was a third of a 10k-ray rebuild.
- */
-const DASHES_BY_KEY = dashesByKey(RAY_DASHES);
-
-/** PATH_DASHES in the same form: a pixel's sample paths (path-dashes.ts). */
-const PATH_DASHES_BY_KEY = dashesByKey(PATH_DASHES);
-
-/** Patterns by key as (dash, gap) pairs by colour-key index; a filled gap is stored negative (ray-shader.ts aDash). */
-function dashesByKey(dashes: Readonly<Record<RayColorKey, readonly [number, number]>>): Float32Array {
-  return Float32Array.from(RAY_COLOR_KEYS.flatMap((key) => (FILLED_GAP_KEYS.has(key) ? [dashes[key][0], -dashes[key][1]] : dashes[key])));
-}
-
-/** Where each key's arrowhead sits (ray-shader.ts arrowAt), by colour-key index like DASHES_BY_KEY. */
-const ARROW_AT_BY_KEY = Float32Array.from(RAY_COLOR_KEYS.map(arrowAt));
-
-/** 1 for the keys with a stop plate at their end (STOPPED_KEYS), by colour-key index. */
-const STOP_BY_KEY = Float32Array.from(RAY_COLOR_KEYS.map((key) => (STOPPED_KEYS.has(key) ? 1 : 0)));
+import { FLOATS_PER_CONE, FLOATS_PER_CYLINDER, InstanceBuffers } from './instance-buffers.ts';
+import { anyStopped, DASHES_BY_KEY, PATH_DASHES_BY_KEY, writeInstanceAttributes } from './instance-attributes.ts';
+import { coneRadiusAt, writeConeMatrix, writeCylinderMatrix } from './instance-matrices.ts';
 
 /**
  * Opacity of the cones relative to the rays: a cone is a solid volume the size of the
@@ -82,9 +45,8 @@ export const PICK_ANGLE = 0.004;
  */
 export const LOOP_PAUSE_S = 1;
 
-/** Names of the two meshes in RayPool.object (for tests and debugging tools). */
-export const RAY_CYLINDERS_NAME = 'ray-cylinders';
-export const RAY_CONES_NAME = 'ray-cones';
+/** The two meshes' names in RayPool.object, where tests and debugging tools look for them. */
+export { RAY_CONES_NAME, RAY_CYLINDERS_NAME } from './instance-buffers.ts';
 
 export interface RayPoolStats {
   /** Cylinders drawn (mesh.count). */
@@ -104,164 +66,6 @@ interface AnimationInputs {
   selectedPixel: readonly [number, number] | null;
   animate: boolean;
   pixelByPixel: boolean;
-}
-
-/** One instanced mesh and its capacity; replaced by a twice larger one when full. */
-class InstanceBuffers {
-  mesh: InstancedMesh;
-  private readonly kind: 'cylinder' | 'cone';
-
-  constructor(
-    kind: 'cylinder' | 'cone',
-    material: Material,
-    private readonly parent: Group,
-  ) {
-    this.kind = kind;
-    this.mesh = this.createMesh(INITIAL_CAPACITY, material);
-    parent.add(this.mesh);
-  }
-
-  get capacity(): number {
-    return this.mesh.instanceMatrix.count;
-  }
-
-  get alpha(): InstancedBufferAttribute {
-    return this.mesh.geometry.getAttribute(ALPHA_ATTRIBUTE) as InstancedBufferAttribute;
-  }
-
-  get growth(): InstancedBufferAttribute {
-    return this.mesh.geometry.getAttribute(GROWTH_ATTRIBUTE) as InstancedBufferAttribute;
-  }
-
-  get color(): InstancedBufferAttribute {
-    return this.mesh.instanceColor as InstancedBufferAttribute;
-  }
-
-  /** The dash pattern by instance (cylinders only; see RAY_DASHES). */
-  get dash(): InstancedBufferAttribute | undefined {
-    return this.mesh.geometry.getAttribute(DASH_ATTRIBUTE) as InstancedBufferAttribute | undefined;
-  }
-
-  /** Where each instance's arrowhead sits along it (cylinders only; the arrows share it). */
-  get arrowAt(): InstancedBufferAttribute | undefined {
-    return this.mesh.geometry.getAttribute(ARROW_AT_ATTRIBUTE) as InstancedBufferAttribute | undefined;
-  }
-
-  /** 1 where an instance is a stopped ray with a plate at its end (cylinders only; the plates share it). */
-  get stop(): InstancedBufferAttribute | undefined {
-    return this.mesh.geometry.getAttribute(STOP_ATTRIBUTE) as InstancedBufferAttribute | undefined;
-  }
-
-  /** Makes room for `count` instances, replacing the mesh (and freeing its GPU buffers) when too small. */
-  reserve(count: number): void {
-    if (count <= this.capacity) return;
-    let capacity = this.capacity;
-    while (capacity < count) capacity *= 2;
-    const old = this.mesh;
-    this.mesh = this.createMesh(capacity, old.material as Material);
-    this.parent.remove(old);
-    this.parent.add(this.mesh);
-    old.geometry.dispose();
-    old.dispose();
-  }
-
-  /** The instance attributes (the matrix first), to copy a range of them into a piece. */
-  get attributes(): InstancedBufferAttribute[] {
-    return [
-      this.mesh.instanceMatrix,
-      this.color,
-      this.alpha,
-      this.growth,
-      ...(this.dash ? [this.dash] : []),
-      ...(this.arrowAt ? [this.arrowAt] : []),
-      ...(this.stop ? [this.stop] : []),
-    ];
-  }
-
-  /** Instances `from` … `to` − 1 of `source` as this mesh's first ones, drawn alone (a piece: RayPool.piece). */
-  copyRange(source: InstanceBuffers, from: number, to: number): void {
-    const count = Math.max(0, to - from);
-    this.reserve(count);
-    const targets = this.attributes;
-    source.attributes.forEach((attribute, a) => {
-      const size = attribute.itemSize;
-      (targets[a].array as Float32Array).set((attribute.array as Float32Array).subarray(from * size, to * size));
-    });
-    this.commit(count);
-  }
-
-  /** Draws the first `count` instances only (those uploaded stay), or all `uploaded` of them. */
-  limit(count: number, uploaded: number): void {
-    this.mesh.count = Math.min(count, uploaded);
-    this.mesh.visible = this.mesh.count > 0;
-  }
-
-  /** Uploads the first `count` instances and draws that many. */
-  commit(count: number): void {
-    this.mesh.count = count;
-    this.mesh.visible = count > 0;
-    if (count === 0) return;
-    for (const attribute of this.attributes) {
-      attribute.clearUpdateRanges();
-      attribute.addUpdateRange(0, count * attribute.itemSize);
-      attribute.needsUpdate = true;
-    }
-  }
-
-  dispose(): void {
-    this.mesh.geometry.dispose();
-    this.mesh.dispose();
-  }
-
-  private createMesh(capacity: number, material: Material): InstancedMesh {
-    const geometry = this.kind === 'cone' ? pyramidGeometry() : ribbonGeometry();
-    geometry.setAttribute(ALPHA_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity), 1));
-    geometry.setAttribute(GROWTH_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity * 2), 2));
-    if (this.kind === 'cylinder') {
-      geometry.setAttribute(DASH_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity * 2), 2));
-      geometry.setAttribute(ARROW_AT_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity), 1));
-      geometry.setAttribute(STOP_ATTRIBUTE, new InstancedBufferAttribute(new Float32Array(capacity), 1));
-    }
-    const mesh = new InstancedMesh(geometry, material, capacity);
-    mesh.name = this.kind === 'cone' ? RAY_CONES_NAME : RAY_CYLINDERS_NAME;
-    mesh.instanceColor = new InstancedBufferAttribute(new Float32Array(capacity * 3), 3);
-    mesh.count = 0;
-    mesh.visible = false;
-    // The rays are spread over the whole scene and change every update: a bounding sphere
-    // over 50k instance matrices would cost more than it ever culls.
-    mesh.frustumCulled = false;
-    // Hover goes through RayPool.pick; three's per-instance raycast would test 50k
-    // instances whenever the view raycasts its scene to select an object.
-    mesh.raycast = () => {};
-    return mesh;
-  }
-}
-
-/**
- * A ray's ribbon: x = ±1 across it, z from 0 to 1 along it. The vertex shader turns it to
- * face the eye at the width of the instance's cylinder (ray-shader.ts): the instances keep
- * a cylinder's matrix (axis and radius), and 2 triangles do what a six-sided cylinder's 12 did.
- */
-function ribbonGeometry(): BufferGeometry {
-  const positions = [-1, 0, 0, 1, 0, 0, -1, 0, 1, 1, 0, 1];
-  return new BufferGeometry().setAttribute('position', new Float32BufferAttribute(positions, 3)).setIndex([0, 1, 2, 2, 1, 3]);
-}
-
-/**
- * An area cone: apex at the origin, base corners (∓1, ∓1, 1) in RayNode.corners order, so
- * one affine instance matrix maps it onto any hit point and light rectangle (or glossy fan base).
- */
-function pyramidGeometry(): BufferGeometry {
-  const base = [
-    [-1, -1, 1],
-    [1, -1, 1],
-    [1, 1, 1],
-    [-1, 1, 1],
-  ];
-  const positions: number[] = [];
-  for (let k = 0; k < 4; k++) positions.push(0, 0, 0, ...base[k], ...base[(k + 1) % 4]);
-  positions.push(...base[0], ...base[2], ...base[1], ...base[0], ...base[3], ...base[2]);
-  return new BufferGeometry().setAttribute('position', new Float32BufferAttribute(positions, 3));
 }
 
 /** Implements RayLayer for the lab view. Call update() on every change of rays or options. */
@@ -461,7 +265,7 @@ export class RayPool implements RayLayer {
     buffers.reserve(list.count);
     const matrix = buffers.mesh.instanceMatrix.array as Float32Array;
     for (let i = 0; i < list.count; i++) writeCylinderMatrix(matrix, i * 16, list, i);
-    this.writeAttributes(buffers, list, 1, dashes);
+    writeInstanceAttributes(buffers, list, 1, dashes);
   }
 
   private writeCones(list: SegmentList): void {
@@ -469,33 +273,7 @@ export class RayPool implements RayLayer {
     buffers.reserve(list.count);
     const matrix = buffers.mesh.instanceMatrix.array as Float32Array;
     for (let i = 0; i < list.count; i++) writeConeMatrix(matrix, i * 16, list, i);
-    this.writeAttributes(buffers, list, CONE_OPACITY, DASHES_BY_KEY);
-  }
-
-  private writeAttributes(buffers: InstanceBuffers, list: SegmentList, opacity: number, dashes: Float32Array): void {
-    const { count } = list;
-    (buffers.color.array as Float32Array).set(list.color.subarray(0, count * 3));
-    const alpha = buffers.alpha.array as Float32Array;
-    const growth = buffers.growth.array as Float32Array;
-    const dash = buffers.dash?.array as Float32Array | undefined;
-    const arrowAt = buffers.arrowAt?.array as Float32Array | undefined;
-    const stop = buffers.stop?.array as Float32Array | undefined;
-    for (let i = 0; i < count; i++) {
-      alpha[i] = list.alpha[i] * opacity;
-      growth[i * 2] = list.start[i];
-      growth[i * 2 + 1] = list.length[i];
-      if (dash && arrowAt && stop) {
-        const key = list.colorKey[i];
-        if (list.moment[i] >= 0) timeStripe(list.moment[i], dash, i * 2);
-        else {
-          dash[i * 2] = dashes[key * 2];
-          dash[i * 2 + 1] = dashes[key * 2 + 1];
-        }
-        arrowAt[i] = ARROW_AT_BY_KEY[key];
-        stop[i] = STOP_BY_KEY[key];
-      }
-    }
-    buffers.commit(count);
+    writeInstanceAttributes(buffers, list, CONE_OPACITY, DASHES_BY_KEY);
   }
 
   /** Restarts the growth when what grows changed; only re-times it when just the speed did. */
@@ -570,91 +348,4 @@ export class RayPool implements RayLayer {
     this.pickedAt = s;
     return t;
   }
-}
-
-/** Whether any of the drawn rays ends stopped (a blocked shadow ray): only then are stop plates drawn. */
-function anyStopped(list: SegmentList): boolean {
-  for (let i = 0; i < list.count; i++) if (STOP_BY_KEY[list.colorKey[i]] === 1) return true;
-  return false;
-}
-
-/** A cone's half-width at `s` metres from its apex: the larger half-side of the light, scaled. */
-function coneRadiusAt(list: SegmentList, i: number, s: number): number {
-  const c = list.corners;
-  const k = i * 12;
-  const halfWidth = Math.hypot(c[k + 3] - c[k], c[k + 4] - c[k + 1], c[k + 5] - c[k + 2]) / 2;
-  const halfDepth = Math.hypot(c[k + 9] - c[k], c[k + 10] - c[k + 1], c[k + 11] - c[k + 2]) / 2;
-  return (Math.max(halfWidth, halfDepth) * s) / list.length[i];
-}
-
-/**
- * Unit cylinder → ray i: column 0 and 1 an orthonormal basis across the ray scaled by its
- * radius, column 2 the direction scaled by its length, column 3 its origin (column-major,
- * as three.js stores matrices). The helper axis is +Y unless the ray is nearly vertical.
- */
-function writeCylinderMatrix(m: Float32Array, at: number, list: SegmentList, i: number): void {
-  const o = i * 3;
-  const dx = list.direction[o];
-  const dy = list.direction[o + 1];
-  const dz = list.direction[o + 2];
-  const r = list.radius[i];
-  const length = list.length[i];
-  // x = normalize(helper × d); y = d × x. The square root written out: d is a unit vector, so
-  // nothing can overflow, and Math.hypot (varargs, guarded against overflow) was a quarter of
-  // a 10k-ray rebuild.
-  let xx: number;
-  let xy: number;
-  let xz: number;
-  if (Math.abs(dy) < 0.99) {
-    const n = 1 / Math.sqrt(dz * dz + dx * dx);
-    xx = dz * n;
-    xy = 0;
-    xz = -dx * n;
-  } else {
-    const n = 1 / Math.sqrt(dz * dz + dy * dy);
-    xx = 0;
-    xy = -dz * n;
-    xz = dy * n;
-  }
-  const yx = dy * xz - dz * xy;
-  const yy = dz * xx - dx * xz;
-  const yz = dx * xy - dy * xx;
-  m[at] = xx * r;
-  m[at + 1] = xy * r;
-  m[at + 2] = xz * r;
-  m[at + 3] = 0;
-  m[at + 4] = yx * r;
-  m[at + 5] = yy * r;
-  m[at + 6] = yz * r;
-  m[at + 7] = 0;
-  m[at + 8] = dx * length;
-  m[at + 9] = dy * length;
-  m[at + 10] = dz * length;
-  m[at + 11] = 0;
-  m[at + 12] = list.origin[o];
-  m[at + 13] = list.origin[o + 1];
-  m[at + 14] = list.origin[o + 2];
-  m[at + 15] = 1;
-}
-
-/**
- * Unit pyramid → cone i: apex at the hit point, base (x, y, 1) ↦ centre + x·U + y·V with
- * U, V the light's half-sides from its corners c0..c3 (U = (c1 − c0)/2, V = (c3 − c0)/2).
- */
-function writeConeMatrix(m: Float32Array, at: number, list: SegmentList, i: number): void {
-  const c = list.corners;
-  const k = i * 12;
-  const o = i * 3;
-  for (let axis = 0; axis < 3; axis++) {
-    const apex = list.origin[o + axis];
-    const centre = (c[k + axis] + c[k + 3 + axis] + c[k + 6 + axis] + c[k + 9 + axis]) / 4;
-    m[at + axis] = (c[k + 3 + axis] - c[k + axis]) / 2;
-    m[at + 4 + axis] = (c[k + 9 + axis] - c[k + axis]) / 2;
-    m[at + 8 + axis] = centre - apex;
-    m[at + 12 + axis] = apex;
-  }
-  m[at + 3] = 0;
-  m[at + 7] = 0;
-  m[at + 11] = 0;
-  m[at + 15] = 1;
 }

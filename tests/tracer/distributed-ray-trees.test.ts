@@ -4,7 +4,8 @@ import { emptyRayStats } from '../../src/tracer/ray-tree.ts';
 import { renderTile } from '../../src/tracer/render-tile.ts';
 import { tracePixel } from '../../src/tracer/trace-pixel.ts';
 import type { TracerScene } from '../../src/tracer/tracer-scene.ts';
-import { matte, pointLight, tracerSceneFrom } from '../support/test-scene.ts';
+import { effectsScene as effectsSceneWith, type EffectsChanges } from '../support/effects-scene.ts';
+import { matte } from '../support/test-scene.ts';
 import { walkRays } from '../support/ray-fixtures.ts';
 
 /**
@@ -12,35 +13,16 @@ import { walkRays } from '../support/ray-fixtures.ts';
  * must give each traced pixel exactly its image colour, as the plain rays do (ray-tree.test.ts).
  */
 
-/** A scene with a mirror, glass, an area light and a moving ball, with `changes` on top. */
-function effectsScene(changes: { camera?: object; settings?: object; rough?: number; velocity?: number[] }): TracerScene {
-  const rough = changes.rough ?? 0;
-  return tracerSceneFrom({
-    camera: { position: [0, 1.2, 4], target: [0, 0.4, 0], fov: 50, pixels: [6, 4], ...changes.camera },
-    settings: { maxDepth: 3, background: [0.6, 0.7, 0.9], ...changes.settings },
-    objects: [
-      {
-        id: 'floor',
-        shape: 'plane',
-        scale: [10, 1, 10],
-        material: matte([0.8, 0.8, 0.8], { ambient: 0.1, specular: 0.3, roughness: rough, glossySamples: 2 }),
-      },
-      {
-        id: 'glass',
-        shape: 'sphere',
-        position: [0.4, 0.5, 0.5],
-        material: matte([1, 1, 1], { transparent: true, diffuse: 0.1, roughness: rough, glossySamples: 2 }),
-      },
-      {
-        id: 'ball',
-        shape: 'sphere',
-        position: [-0.8, 0.5, -0.3],
-        velocity: changes.velocity ?? [0, 0, 0],
-        material: matte([0.9, 0.2, 0.1], { specular: 0.5, roughness: rough }),
-      },
-    ],
-    lights: [{ id: 'panel', type: 'area', position: [0, 3, 0], size: [1, 1], samples: 2, ambient: 0 }, pointLight([2, 3, 2], { id: 'bulb', intensity: 0.5 })],
-  });
+/** The effects scene with a red, glossy ball moving at `velocity`. */
+function effectsScene(changes: EffectsChanges & { velocity?: number[] }): TracerScene {
+  const ball = {
+    id: 'ball',
+    shape: 'sphere',
+    position: [-0.8, 0.5, -0.3],
+    velocity: changes.velocity ?? [0, 0, 0],
+    material: matte([0.9, 0.2, 0.1], { specular: 0.5, roughness: changes.rough ?? 0 }),
+  };
+  return effectsSceneWith([6, 4], changes, [ball]);
 }
 
 const cases: [string, Parameters<typeof effectsScene>[0]][] = [

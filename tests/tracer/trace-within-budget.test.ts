@@ -5,7 +5,8 @@ import { tracePixels } from '../../src/tracer/trace-pixel.ts';
 import { tracePixelsWithinBudget } from '../../src/tracer/trace-within-budget.ts';
 import { buildTracerScene, type TracerScene } from '../../src/tracer/tracer-scene.ts';
 import { thinTraces, tracedRays } from '../../src/tracer/tree-budget.ts';
-import { matte, pointLight, tracerSceneFrom } from '../support/test-scene.ts';
+import { effectsScene as effectsSceneWith, type EffectsChanges } from '../support/effects-scene.ts';
+import { matte } from '../support/test-scene.ts';
 
 /**
  * The worker's budgeted screen (trace-within-budget.ts) records only the trees the budget
@@ -13,33 +14,12 @@ import { matte, pointLight, tracerSceneFrom } from '../support/test-scene.ts';
  * (thinTraces over tracePixels), bit for bit: the same trees, colours, shares and counts.
  */
 
-/** A scene with a mirror, glass, a moving ball, an area light of `areaSamples`² samples and a point light. */
-function effectsScene(changes: { camera?: object; settings?: object; rough?: number; areaSamples?: number }): TracerScene {
-  const rough = changes.rough ?? 0;
-  return tracerSceneFrom({
-    camera: { position: [0, 1.2, 4], target: [0, 0.4, 0], fov: 50, pixels: [5, 4], ...changes.camera },
-    settings: { maxDepth: 3, background: [0.6, 0.7, 0.9], ...changes.settings },
-    objects: [
-      {
-        id: 'floor',
-        shape: 'plane',
-        scale: [10, 1, 10],
-        material: matte([0.8, 0.8, 0.8], { ambient: 0.1, specular: 0.3, roughness: rough, glossySamples: 2 }),
-      },
-      {
-        id: 'glass',
-        shape: 'sphere',
-        position: [0.4, 0.5, 0.5],
-        material: matte([1, 1, 1], { transparent: true, diffuse: 0.1, roughness: rough, glossySamples: 2 }),
-      },
-      { id: 'mirror', shape: 'sphere', position: [-0.8, 0.5, -0.3], velocity: [0.6, 0, 0.2], material: matte([0.9, 0.9, 0.9], { specular: 0.8 }) },
-      { id: 'block', shape: 'box', position: [1.3, 0.3, -0.8], scale: [0.6, 0.6, 0.6], material: matte([0.2, 0.4, 0.9]) },
-    ],
-    lights: [
-      { id: 'panel', type: 'area', position: [0, 3, 0], size: [1, 1], samples: changes.areaSamples ?? 2, ambient: 0 },
-      pointLight([2, 3, 2], { id: 'bulb', intensity: 0.5 }),
-    ],
-  });
+/** The effects scene with a moving mirror ball and a blue block. */
+function effectsScene(changes: EffectsChanges): TracerScene {
+  return effectsSceneWith([5, 4], changes, [
+    { id: 'mirror', shape: 'sphere', position: [-0.8, 0.5, -0.3], velocity: [0.6, 0, 0.2], material: matte([0.9, 0.9, 0.9], { specular: 0.8 }) },
+    { id: 'block', shape: 'box', position: [1.3, 0.3, -0.8], scale: [0.6, 0.6, 0.6], material: matte([0.2, 0.4, 0.9]) },
+  ]);
 }
 
 /** The free lab's scene with its largest settings (1,024 camera rays a pixel) on a screen of `pixels`. */

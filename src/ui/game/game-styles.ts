@@ -86,6 +86,21 @@ export const gameStyles = [
   `,
 ];
 
+/**
+ * A panel inside a task card (a challenge, a code lab): a block set off a little from the task's
+ * text, its heading the size of the text around it.
+ */
+export const taskPanelStyles = css`
+  :host {
+    display: block;
+    margin: 8px 0;
+  }
+  h3 {
+    margin: 0 0 6px;
+    font-size: 1rem;
+  }
+`;
+
 /** Sends a bubbling, composed event, so it reaches the lab through shadow roots. */
 export function fire<T>(from: HTMLElement, type: string, detail: T): void {
   from.dispatchEvent(new CustomEvent<T>(type, { detail, bubbles: true, composed: true }));

@@ -1,7 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { predictionOf } from '../../quest/goal.ts';
 import type { Locale } from '../../quest/localized-text.ts';
-import type { TaskView } from '../../quest/quest-engine.ts';
+import type { TaskView } from '../../quest/level-view.ts';
 import { answerText, predictionText } from './prediction-text.ts';
 
 /**

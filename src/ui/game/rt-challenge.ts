@@ -8,7 +8,7 @@ import type { Locale } from '../../quest/localized-text.ts';
 import { LocalizedElement } from '../controls/localized-element.ts';
 import { challengePicturesContext, type ChallengeView } from './challenge-pictures.ts';
 import { rayCount, starRuleText } from './challenge-rule-text.ts';
-import { gameStyles } from './game-styles.ts';
+import { gameStyles, taskPanelStyles } from './game-styles.ts';
 
 /**
  * @summary The challenge panel of a match-the-target task (spec/challenges.md §2): a meter of
@@ -23,15 +23,8 @@ export class RtChallenge extends LocalizedElement {
   static override properties = { goal: { attribute: false }, locale: {}, summary: { type: Boolean }, stars: { type: Number }, view: { state: true } };
   static override styles = [
     gameStyles,
+    taskPanelStyles,
     css`
-      :host {
-        display: block;
-        margin: 8px 0;
-      }
-      h3 {
-        margin: 0 0 6px;
-        font-size: 1rem;
-      }
       p {
         margin: 4px 0;
       }

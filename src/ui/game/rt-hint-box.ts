@@ -2,7 +2,7 @@ import { msg } from '@lit/localize';
 import { css, html, nothing } from 'lit';
 import { LocalizedElement } from '../controls/localized-element.ts';
 import type { Locale } from '../../quest/localized-text.ts';
-import type { TaskView } from '../../quest/quest-engine.ts';
+import type { TaskView } from '../../quest/level-view.ts';
 import { fire, gameStyles } from './game-styles.ts';
 import { levelText } from './level-text.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';

@@ -2,7 +2,7 @@ import { msg, str } from '@lit/localize';
 import { css, html, nothing, type PropertyValues } from 'lit';
 import { LocalizedElement } from '../controls/localized-element.ts';
 import type { Locale } from '../../quest/localized-text.ts';
-import type { LevelView } from '../../quest/quest-engine.ts';
+import type { LevelView } from '../../quest/level-view.ts';
 import { plainLevelText } from '../../quest/text-markup.ts';
 import { explainMore, fire, gameStyles } from './game-styles.ts';
 import { levelText } from './level-text.ts';

@@ -5,7 +5,7 @@ import { LocalizedElement } from '../controls/localized-element.ts';
 import type { Prediction } from '../../quest/goal-check.ts';
 import { explanationOf, predictionOf, predictionParts, type PictureGoal, type PredictionGoal, type QuizGoal } from '../../quest/goal.ts';
 import type { Locale } from '../../quest/localized-text.ts';
-import type { TaskView } from '../../quest/quest-engine.ts';
+import type { TaskView } from '../../quest/level-view.ts';
 import { plainLevelText } from '../../quest/text-markup.ts';
 import { parseTypedNumber } from '../controls/number-input.ts';
 import { fire, gameStyles } from './game-styles.ts';

@@ -4,7 +4,7 @@ import { LocalizedElement } from '../controls/localized-element.ts';
 import { predictionOf } from '../../quest/goal.ts';
 import type { Locale } from '../../quest/localized-text.ts';
 import type { Task } from '../../quest/level-schema.ts';
-import type { TaskView } from '../../quest/quest-engine.ts';
+import type { TaskView } from '../../quest/level-view.ts';
 import { plainLevelText } from '../../quest/text-markup.ts';
 import { figureUrl } from './figure-urls.ts';
 import { explainMore, fire, gameStyles } from './game-styles.ts';

@@ -195,6 +195,14 @@ const labGrid = css`
       right: var(--rt-space);
       height: 46%;
     }
+    /* The open debugger's dock starts at 54 % of the view, less the gap: the legend keeps above it,
+       in two columns (rt-ray-legend's grid fills the width), and scrolls if it is still too long
+       (a time or path key under the rays). :where keeps small screens' folding legend (lab-compact.css.ts) in charge. */
+    :where(main:has(rt-ray-debugger[open])) .view-legend {
+      width: 21em;
+      max-height: calc(54% - 60px - 2 * var(--rt-space));
+      overflow-y: auto;
+    }
     /* The debugger shows its pixel; another is chosen on the camera's screen in 3D (or after closing it). */
     main:has(rt-ray-debugger[open]) rt-screen-preview {
       display: none;

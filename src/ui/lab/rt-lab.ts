@@ -41,7 +41,7 @@ import { providePictures } from './picture-providers.ts';
 import { loadAfterFirstScreen, ON_DEMAND_PANELS, withRenderWindow } from './lab-elements.ts';
 import { ViewCoverController } from './view-cover.ts';
 import { PreviewPlaceController } from './preview-place.ts';
-import { boxesOverlap, type GuideAndLook, renderWindowInTheWay } from './render-window/render-window-in-the-way.ts';
+import { RenderWindowWatch } from './render-window/render-window-watch.ts';
 
 export { FREE_LAB_HASH } from './quest-controller.ts';
 
@@ -179,27 +179,19 @@ export class RtLab extends LocalizedElement {
    * 3D view or a hint rings something under it; the toast says why, and how to bring it back.
    */
   private closeRenderWindowWhenInTheWay(): void {
-    const now = { ring: this.currentRing(), look: this.store.state.look };
-    const inTheWay = renderWindowInTheWay(this.lastGuideAndLook, now, (ring) => this.coveredByRenderWindow(ring));
-    this.lastGuideAndLook = now;
-    if (!this.renderOpen || !inTheWay) return;
+    if (!this.renderWindowWatch.mustClose({ ring: this.currentRing(), look: this.store.state.look }, this.renderOpen)) return;
     this.renderOpen = false;
     this.toast(msg('The render window was closed to show the 3D view this task needs. Open it again with Render image.'));
   }
-  /** Whether the render window hides the guide target `ring` (a 3D object or pixel has no element: it is in the view). */
-  private coveredByRenderWindow(ring: string): boolean {
-    const window = this.renderRoot.querySelector('rt-render-window');
-    const elements = this.guideElements(ring);
-    if (!window || elements.length === 0) return true;
-    const box = window.getBoundingClientRect();
-    return elements.some((element) => boxesOverlap(element.getBoundingClientRect(), box));
-  }
+  private readonly renderWindowWatch = new RenderWindowWatch(
+    () => this.renderRoot.querySelector('rt-render-window'),
+    (target) => this.guideElements(target),
+  );
   /** What the hint ring points at in the level being played, or null. */
   private currentRing(): string | null {
     const session = this.game.session;
     return session?.mode.kind === 'level' ? (session.engine.level?.ring ?? null) : null;
   }
-  private lastGuideAndLook: GuideAndLook = { ring: null, look: null };
 
   protected override updated(): void {
     this.ring.follow(this.currentRing());

@@ -1,7 +1,7 @@
 // The line an explained prediction folds to (issue 37: "an answered quiz stays open and
 // pushes the next task below the fold"): what the learner expected and the answer.
 import { describe, expect, it } from 'vitest';
-import type { PredictionView, TaskView } from '../../../src/quest/quest-engine.ts';
+import type { PredictionView, TaskView } from '../../../src/quest/level-view.ts';
 import { goalSchema } from '../../../src/quest/goal.ts';
 import type { Task } from '../../../src/quest/level-schema.ts';
 import { foldedPrediction } from '../../../src/ui/game/prediction-summary.ts';

@@ -1,10 +1,10 @@
 import { msg, str } from '@lit/localize';
-import { css, html, nothing } from 'lit';
+import { html, nothing } from 'lit';
 import { reachedMatch, summarizeChallenges } from '../../../classroom/dashboard-challenges.ts';
 import type { ClassRecord } from '../../../classroom/dashboard-record.ts';
 import { MATCH_SCORE } from '../../../quest/challenge-closeness.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
-import { tableStyles } from './rt-dashboard-chart-styles.ts';
+import { namedRowsTableStyles, tableStyles } from './rt-dashboard-chart-styles.ts';
 
 /**
  * @summary How close the class got in a level's challenges (classroom/dashboard-challenges.ts):
@@ -14,18 +14,7 @@ import { tableStyles } from './rt-dashboard-chart-styles.ts';
  */
 export class RtDashboardChallenges extends LocalizedElement {
   static override properties = { records: { attribute: false }, level: {}, taskName: { attribute: false } };
-  static override styles = [
-    tableStyles,
-    css`
-      table {
-        width: 100%;
-      }
-      th:first-child {
-        text-align: left;
-        font-weight: normal;
-      }
-    `,
-  ];
+  static override styles = [tableStyles, namedRowsTableStyles];
 
   declare records: readonly ClassRecord[];
   declare level: string;

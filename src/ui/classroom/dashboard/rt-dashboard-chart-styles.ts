@@ -64,3 +64,14 @@ export const tableStyles = css`
     vertical-align: bottom;
   }
 `;
+
+/** A table with a row per task or question across the page: its first column names the row, left and in plain weight. */
+export const namedRowsTableStyles = css`
+  table {
+    width: 100%;
+  }
+  th:first-child {
+    text-align: left;
+    font-weight: normal;
+  }
+`;

@@ -3,7 +3,8 @@ import { html, nothing } from 'lit';
 import { LocalizedElement } from '../../controls/localized-element.ts';
 import { loadBrowserCatalog } from '../../../app/level-catalog-browser.ts';
 import { readClassFiles, type ClassFiles, type DroppedFile } from '../../../classroom/dashboard-class.ts';
-import { assignmentsOf, classCodesOf, classLearners, filterLearners, type ClassLearner, type LearnerFilter } from '../../../classroom/dashboard-learners.ts';
+import { classLearners, filterLearners, type ClassLearner, type LearnerFilter } from '../../../classroom/dashboard-learners.ts';
+import { learnerFilter } from './learner-filter.ts';
 import { MAX_EXPORT_BYTES } from '../../../classroom/dashboard-read-file.ts';
 import type { SkippedFile } from '../../../classroom/dashboard-record.ts';
 import { isOptionalTask, learnerInLevel, summarizeLevels, type LevelSummary } from '../../../classroom/dashboard-summary.ts';
@@ -175,45 +176,6 @@ export class RtDashboardPage extends LocalizedElement {
     return `${counted}${files}, ${skippedText}`;
   }
 
-  /** Choosers for one assignment and one class, when the files hold more than one. */
-  private renderFilter() {
-    const assignments = assignmentsOf(this.learners);
-    const classes = classCodesOf(this.learners);
-    if (assignments.length < 2 && classes.length < 2) return nothing;
-    const pick = (changes: Partial<LearnerFilter>) => (this.filter = { ...this.filter, ...changes });
-    const value = (text: string) => (text === '*' ? null : text);
-    return html`<div class="filter">
-      ${
-        assignments.length < 2
-          ? nothing
-          : html`<label
-            >${msg('Assignment')}
-            <select name="assignment" @change=${(event: Event) => pick({ assignmentId: value((event.target as HTMLSelectElement).value) })}>
-              <option value="*" ?selected=${this.filter.assignmentId === null}>${msg(str`All (${studentsCounted(this.learners.length)})`)}</option>
-              ${assignments.map(
-                (assignment) =>
-                  html`<option value=${assignment.id} ?selected=${this.filter.assignmentId === assignment.id}>
-                    ${assignment.id === '' ? msg('Free play (no assignment)') : assignment.title} (${assignment.learners})
-                  </option>`,
-              )}
-            </select></label
-          >`
-      }
-      ${
-        classes.length < 2
-          ? nothing
-          : html`<label
-            >${msg('Class')}
-            <select name="class" @change=${(event: Event) => pick({ classCode: value((event.target as HTMLSelectElement).value) })}>
-              <option value="*" ?selected=${this.filter.classCode === null}>${msg('All classes')}</option>
-              ${classes.map((code) => html`<option value=${code} ?selected=${this.filter.classCode === code}>${code === '' ? msg('No class code') : code}</option>`)}
-            </select></label
-          >`
-      }
-      <span>${msg(str`${studentsCounted(this.shown.length)} shown.`)}</span>
-    </div>`;
-  }
-
   override render() {
     const { records, skipped } = this.files;
     return html`
@@ -248,7 +210,7 @@ export class RtDashboardPage extends LocalizedElement {
           <p class="status" role="status">
             ${this.reading ? msg('Reading the files…') : records.length + skipped.length > 0 ? this.statusText() : ''}
           </p>
-          ${this.renderFilter()}
+          ${learnerFilter(this.learners, this.shown.length, this.filter, (changes) => (this.filter = { ...this.filter, ...changes }))}
           <div class="actions">
             <button type="button" ?disabled=${this.shown.length === 0} @click=${() => this.downloadCsv('class')} title=${msg('One CSV with every task attempt of every student shown, for a spreadsheet or R')}>
               ${msg('Download combined CSV')}

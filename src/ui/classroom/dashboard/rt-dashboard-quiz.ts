@@ -3,7 +3,7 @@ import { css, html } from 'lit';
 import type { QuizSummary } from '../../../classroom/dashboard-quiz.ts';
 import { optionId } from '../../../classroom/quiz-options.ts';
 import { DashboardChart } from './rt-dashboard-chart.ts';
-import { tableStyles } from './rt-dashboard-chart-styles.ts';
+import { namedRowsTableStyles, tableStyles } from './rt-dashboard-chart-styles.ts';
 import { formatPercent } from './rt-dashboard-format.ts';
 
 /**
@@ -14,14 +14,8 @@ import { formatPercent } from './rt-dashboard-format.ts';
 export class RtDashboardQuiz extends DashboardChart<QuizSummary> {
   static override styles = [
     tableStyles,
+    namedRowsTableStyles,
     css`
-      table {
-        width: 100%;
-      }
-      th:first-child {
-        text-align: left;
-        font-weight: normal;
-      }
       td.number {
         text-align: right;
         white-space: nowrap;

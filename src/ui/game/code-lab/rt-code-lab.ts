@@ -7,7 +7,7 @@ import { gradeLab, type LabReport } from '../../../quest/code-labs/code-lab-grad
 import { labCases } from '../../../quest/code-labs/lab-cases.ts';
 import type { Locale } from '../../../quest/localized-text.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
-import { gameStyles } from '../game-styles.ts';
+import { gameStyles, taskPanelStyles } from '../game-styles.ts';
 import { levelText } from '../level-text.ts';
 import { createCodeEditor, replaceCode } from './code-editor.ts';
 import { codeLabHostContext } from './code-lab-host.ts';
@@ -35,15 +35,8 @@ export class RtCodeLab extends LocalizedElement {
   static override properties = { goal: { attribute: false }, locale: {}, state: { state: true } };
   static override styles = [
     gameStyles,
+    taskPanelStyles,
     css`
-      :host {
-        display: block;
-        margin: 8px 0;
-      }
-      h3 {
-        margin: 0 0 6px;
-        font-size: 1rem;
-      }
       code,
       .editor {
         font-family: ui-monospace, monospace;
