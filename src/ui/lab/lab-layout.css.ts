@@ -166,11 +166,6 @@ const labGrid = css`
       background: var(--rt-surface);
       box-shadow: var(--rt-shadow);
     }
-    /* Above the open debugger's dock it scrolls: its last entries (a path's width and lobe) stay in reach. */
-    main:has(rt-ray-debugger[open]) .view-legend {
-      max-height: calc(54% - 60px - 2 * var(--rt-space));
-      overflow-y: auto;
-    }
     /* Its button only folds it away on a phone (below); it looks like the header's buttons. */
     .legend-toggle {
       display: none;
@@ -197,7 +192,7 @@ const labGrid = css`
     }
     /* The open debugger's dock starts at 54 % of the view, less the gap: the legend keeps above it,
        in two columns (rt-ray-legend's grid fills the width), and scrolls if it is still too long
-       (a time or path key under the rays). :where keeps small screens' folding legend (lab-compact.css.ts) in charge. */
+       (a time or path key under the rays: a path's width and lobe stay in reach). :where keeps small screens' folding legend (lab-compact.css.ts) in charge. */
     :where(main:has(rt-ray-debugger[open])) .view-legend {
       width: 21em;
       max-height: calc(54% - 60px - 2 * var(--rt-space));
