@@ -1,7 +1,6 @@
 import type { Vector3 } from 'three';
 import type { BounceSampling } from '../scene/scene.ts';
 import { perpendicularBasis } from './glossy.ts';
-import { concentricDisc } from './lights.ts';
 
 const INV_TWO_PI = 1 / (2 * Math.PI);
 
@@ -21,7 +20,26 @@ export function sampleHemisphere(kind: BounceSampling, n: Vector3, u: number, v:
   let y: number;
   let z: number;
   if (kind === 'cosine') {
-    [x, y] = concentricDisc(2 * u - 1, 2 * v - 1);
+    // concentricDisc (lights.ts) written out: its array was garbage and its call was not
+    // inlined into the path loop (docs/performance.md, "Numbers passed to calls").
+    const a = 2 * u - 1;
+    const b = 2 * v - 1;
+    if (a === 0 && b === 0) {
+      x = 0;
+      y = 0;
+    } else {
+      let r: number;
+      let theta: number;
+      if (Math.abs(a) > Math.abs(b)) {
+        r = a;
+        theta = (Math.PI / 4) * (b / a);
+      } else {
+        r = b;
+        theta = Math.PI / 2 - (Math.PI / 4) * (a / b);
+      }
+      x = r * Math.cos(theta);
+      y = r * Math.sin(theta);
+    }
     z = Math.sqrt(Math.max(0, 1 - x * x - y * y));
   } else {
     z = u;
@@ -30,7 +48,15 @@ export function sampleHemisphere(kind: BounceSampling, n: Vector3, u: number, v:
     x = r * Math.cos(phi);
     y = r * Math.sin(phi);
   }
-  out.copy(n).multiplyScalar(z).addScaledVector(tangent, x).addScaledVector(bitangent, y).normalize();
+  // n·z + tangent·x + bitangent·y, normalized, on plain numbers in the order of the Vector3
+  // methods it stands for (copy, multiplyScalar, addScaledVector twice, normalize).
+  const dx = n.x * z + tangent.x * x + bitangent.x * y;
+  const dy = n.y * z + tangent.y * x + bitangent.y * y;
+  const dz = n.z * z + tangent.z * x + bitangent.z * y;
+  const inverseLength = 1 / (Math.sqrt(dx * dx + dy * dy + dz * dz) || 1);
+  out.x = dx * inverseLength;
+  out.y = dy * inverseLength;
+  out.z = dz * inverseLength;
   return hemisphereDensity(kind, z);
 }
 

@@ -206,14 +206,14 @@ export class ObjectBvh {
 
   /**
    * The first object found that the ray hits closer than ray.far (any-hit, for shadow rays),
-   * or null. `skip` is not tested, nor the objects whose box does not overlap `within`.
-   * `from`: the object the ray starts on, where the walk starts (walk-starts.ts).
+   * or null. `skip` is not tested, nor, when `within` is given, the objects whose box does
+   * not overlap it. `from`: the object the ray starts on, where the walk starts (walk-starts.ts).
    */
-  firstBlocker(ray: Ray, skip: Intersectable | null, within: Box3, from: Intersectable | null = null): Intersectable | null {
+  firstBlocker(ray: Ray, skip: Intersectable | null, within: Box3 | null, from: Intersectable | null = null): Intersectable | null {
     const tMax = ray.far;
     const { boxes, link, count, items, itemBoxes, stack } = this;
     if (items.length === 0) return null;
-    setWithin(within);
+    if (within) setWithin(within);
     let size = this.starts.fill(stack, from);
     while (size > 0) {
       const node = stack[--size];
@@ -222,7 +222,7 @@ export class ObjectBvh {
       if (n > 0) {
         for (let i = link[node], end = i + n; i < end; i++) {
           const item = items[i];
-          if (item !== skip && overlapsWithin(itemBoxes, i * 6) && item.occludes(ray)) return item;
+          if (item !== skip && (!within || overlapsWithin(itemBoxes, i * 6)) && item.occludes(ray)) return item;
         }
         continue;
       }

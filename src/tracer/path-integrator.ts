@@ -14,7 +14,7 @@ import type { PrimaryCandidates } from './primary-candidates.ts';
 import { PATH_BOUNCE_STREAM } from './random-streams.ts';
 import { Ray } from './ray.ts';
 import { emptyRayStats, type RayStats } from './ray-tree.ts';
-import { hashKey, RandomStream } from './sampler.ts';
+import { hashIn, hashKey, RandomStream } from './sampler.ts';
 import type { TracerScene } from './tracer-scene.ts';
 
 const INV_PI = 1 / Math.PI;
@@ -57,13 +57,15 @@ export class PathIntegrator implements Estimator<PathRecorder> {
   /** Path mode's primary rays walk the BVH (the candidates list objects only, not emitters). */
   primaryCandidates: PrimaryCandidates | null = null;
   private readonly emitters: AreaEmitter[];
+  /** Per light of scene.lights, its emitter (area lights) or null, for light sampling. */
+  private readonly emitterOf: (AreaEmitter | null)[];
   private readonly random = new RandomStream();
-  private sampleKey = 0;
+  /** hashKey(sample's key, PATH_BOUNCE_STREAM), hashed once per path: a bounce's key is hashIn(it, bounce). */
+  private bouncesKey = 0;
   private time = 0;
   private readonly ray = new Ray();
   private readonly hit = new Hit();
   private readonly shadowRay = new Ray();
-  private readonly shadowHit = new Hit();
   private readonly throughput = new Vector3();
   private readonly albedo = new Vector3();
   private readonly normal = new Vector3();
@@ -80,16 +82,17 @@ export class PathIntegrator implements Estimator<PathRecorder> {
   private emitterDistance = Infinity;
 
   constructor(private readonly scene: TracerScene) {
-    this.emitters = scene.lights.filter((light) => light.type === 'area').map((light) => new AreaEmitter(light));
+    this.emitterOf = scene.lights.map((light) => (light.type === 'area' ? new AreaEmitter(light) : null));
+    this.emitters = this.emitterOf.filter((emitter) => emitter !== null);
   }
 
   startPixelSample(seed: number, x: number, y: number, sample: number): void {
-    this.sampleKey = hashKey(seed, x, y, sample);
+    this.bouncesKey = hashKey(hashKey(seed, x, y, sample), PATH_BOUNCE_STREAM);
     this.time = 0;
   }
 
   startSubSample(seed: number, x: number, y: number, sample: number, subSample: number, time: number): void {
-    this.sampleKey = hashKey(seed, x, y, sample, subSample);
+    this.bouncesKey = hashKey(hashKey(seed, x, y, sample, subSample), PATH_BOUNCE_STREAM);
     this.time = time;
   }
 
@@ -108,7 +111,8 @@ export class PathIntegrator implements Estimator<PathRecorder> {
     let skip: Intersectable | null = null;
     let from: Intersectable | null = null;
     for (;;) {
-      random.reset(hashKey(this.sampleKey, PATH_BOUNCE_STREAM, bounces));
+      // The bounce's stream, hashKey(sample's key, PATH_BOUNCE_STREAM, bounces) to the bit.
+      random.reset(hashIn(this.bouncesKey, bounces));
       hit.reset(Infinity);
       this.scene.objects.nearest(ray, hit, skip, null, from);
       const emitter = this.nearestEmitter(ray, hit.t, null);
@@ -135,7 +139,10 @@ export class PathIntegrator implements Estimator<PathRecorder> {
       // Normals toward the incoming ray; a back-face hit means the ray is inside.
       n.copy(hit.normal);
       ng.copy(hit.geometricNormal);
-      const entering = ng.dot(ray.direction) < 0;
+      // The loop's dot products are written out: past V8's inlining budget (docs/performance.md,
+      // "Inlining budget") Vector3.dot was called and returned its number boxed, garbage per bounce.
+      const d = ray.direction;
+      const entering = ng.x * d.x + ng.y * d.y + ng.z * d.z < 0;
       if (!entering) {
         n.negate();
         ng.negate();
@@ -178,8 +185,8 @@ export class PathIntegrator implements Estimator<PathRecorder> {
           countedByLightSample = false;
         } else {
           pdf = sampleHemisphere(settings.bounceSampling, n, random.next(), random.next(), this.tangent, this.bitangent, direction);
-          const cosTheta = n.dot(direction);
-          if (pdf === 0 || ng.dot(direction) <= 0) {
+          const cosTheta = n.x * direction.x + n.y * direction.y + n.z * direction.z;
+          if (pdf === 0 || ng.x * direction.x + ng.y * direction.y + ng.z * direction.z <= 0) {
             this.end(recorder, 'absorbed', hit.point, n, shape.id, null);
             break;
           }
@@ -205,9 +212,10 @@ export class PathIntegrator implements Estimator<PathRecorder> {
         }
       }
       // The next ray starts ε off the surface, on the side it leaves toward.
-      const side = ng.dot(direction) >= 0 ? epsilon : -epsilon;
+      const leaving = ng.x * direction.x + ng.y * direction.y + ng.z * direction.z;
+      const side = leaving >= 0 ? epsilon : -epsilon;
       ray.set(this.origin.copy(hit.point).addScaledVector(ng, side), direction);
-      skip = shape.convex && entering && ng.dot(direction) > 0 ? shape : null;
+      skip = shape.convex && entering && leaving > 0 ? shape : null;
       from = shape;
     }
     recorder?.end(out);
@@ -238,23 +246,24 @@ export class PathIntegrator implements Estimator<PathRecorder> {
   private sampleLights(out: Vector3, recorder: PathRecorder | null): void {
     const { settings, lights } = this.scene;
     const { random, hit, normal: n, geometricNormal: ng, toLight, lightPoint, added, throughput, albedo } = this;
-    for (const light of lights) {
-      let emitter: AreaEmitter | null = null;
+    for (let index = 0; index < lights.length; index++) {
+      const light = lights[index];
+      const emitter = this.emitterOf[index];
       let radiance: number;
-      if (light.type === 'area') {
+      if (emitter !== null) {
         if (!settings.lightSampling) continue;
-        emitter = this.emitters.find((candidate) => candidate.light === light)!;
         emitter.samplePoint(random.next(), random.next(), lightPoint);
       } else lightPoint.copy(light.position);
       toLight.subVectors(lightPoint, hit.point);
       const distanceSquared = toLight.lengthSq();
       const distance = Math.sqrt(distanceSquared);
       toLight.divideScalar(distance);
-      const cosSurface = n.dot(toLight);
-      if (cosSurface <= 0 || ng.dot(toLight) <= 0) continue;
+      const cosSurface = n.x * toLight.x + n.y * toLight.y + n.z * toLight.z;
+      if (cosSurface <= 0 || ng.x * toLight.x + ng.y * toLight.y + ng.z * toLight.z <= 0) continue;
       if (emitter !== null) {
         // Radiance Le over the point's density in solid angle, d²/(A·cosθ_light).
-        const cosLight = -toLight.dot(light.direction);
+        const facing = light.direction;
+        const cosLight = -(toLight.x * facing.x + toLight.y * facing.y + toLight.z * facing.z);
         if (cosLight <= 0) continue;
         radiance = (light.intensity * cosLight * emitter.area) / distanceSquared;
       } else {
@@ -282,8 +291,10 @@ export class PathIntegrator implements Estimator<PathRecorder> {
     shadowRay.time = this.time;
     this.stats.shadow++;
     const far = distance - 2 * epsilon;
-    this.scene.objects.nearest(shadowRay, this.shadowHit.reset(far), null, null, this.hit.shape);
-    if (this.shadowHit.shape !== null) return false;
+    // Any blocker will do, not the nearest (pbrt-v4's Unoccluded, §7.1 and §13.4); the
+    // convex shapes first, as Whitted mode's shadow rays try them.
+    shadowRay.far = far;
+    for (const occluders of this.scene.occluders) if (occluders.firstBlocker(shadowRay, null, null, this.hit.shape) !== null) return false;
     return this.nearestEmitter(shadowRay, far, emitter) === null;
   }
 

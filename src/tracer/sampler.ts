@@ -18,8 +18,11 @@ function mix32(x: number): number {
 /** The key before any integer is hashed in. */
 const KEY_START = 0x9e3779b9;
 
-/** One more integer hashed into a key. */
-function hashIn(key: number, value: number): number {
+/**
+ * One more integer hashed into a key: hashKey(a, b, c) is hashIn(hashKey(a, b), c) to the
+ * bit, so a caller that draws many keys with the same first integers hashes those once.
+ */
+export function hashIn(key: number, value: number): number {
   return mix32(key ^ mix32(value | 0));
 }
 

@@ -1,6 +1,6 @@
 import { Box3, Matrix4, Vector3 } from 'three';
 import type { MeshLibrary } from '../scene/mesh-data.ts';
-import type { RenderSettings, SamplePattern, Scene, SceneObject, ShapeKind } from '../scene/scene.ts';
+import type { BounceSampling, RenderSettings, SamplePattern, Scene, SceneObject, ShapeKind } from '../scene/scene.ts';
 import { CameraRays } from './camera-rays.ts';
 import type { Intersectable } from './intersectable.ts';
 import { interned } from './interned.ts';
@@ -11,9 +11,10 @@ import { meshAccel } from './shapes/mesh-accel.ts';
 import { Shape } from './shapes/shape.ts';
 import { sceneQuaternion } from './scene-rotation.ts';
 
-/** The shape kinds and sample (and time) patterns the tracer compares in its hot code, kept as this program's own constants (see interned.ts). */
+/** The shape kinds, sample (and time) patterns and path mode's bounce sampling the tracer compares in its hot code, kept as this program's own constants (see interned.ts). */
 const SHAPE_KINDS: { readonly [K in ShapeKind]: K } = { sphere: 'sphere', box: 'box', cylinder: 'cylinder', plane: 'plane', mesh: 'mesh' };
 const SAMPLE_PATTERNS: { readonly [K in SamplePattern]: K } = { grid: 'grid', jittered: 'jittered', random: 'random' };
+const BOUNCE_SAMPLINGS: { readonly [K in BounceSampling]: K } = { cosine: 'cosine', uniform: 'uniform' };
 
 /** Everything the tracer needs, prepared once per scene (and reused for every tile). */
 export interface TracerScene {
@@ -49,6 +50,7 @@ export function buildTracerScene(scene: Scene, meshes: MeshLibrary): TracerScene
       ...scene.settings,
       samplePattern: interned(scene.settings.samplePattern, SAMPLE_PATTERNS),
       timePattern: interned(scene.settings.timePattern, SAMPLE_PATTERNS),
+      bounceSampling: interned(scene.settings.bounceSampling, BOUNCE_SAMPLINGS),
     },
     camera: new CameraRays(scene.camera),
     shapes,

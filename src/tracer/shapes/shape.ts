@@ -153,9 +153,11 @@ export class Shape {
       case 'mesh':
         meshNormals(this.accel!, hit, geometric, hit.normal);
     }
-    if (this.kind !== 'mesh') hit.normal.copy(geometric);
     geometric.applyMatrix3(this.normalToWorld).normalize();
-    hit.normal.applyMatrix3(this.normalToWorld).normalize();
+    // Only a mesh's shading normal differs from its geometric one; the others are the same
+    // vector transformed alike, so it is copied, not transformed a second time.
+    if (this.kind === 'mesh') hit.normal.applyMatrix3(this.normalToWorld).normalize();
+    else hit.normal.copy(geometric);
   }
 
   /** Whether the object-space ray o + t·d meets the shape for a t in (0, span[REACH]); the nearest such t goes to span[FOUND]. */
