@@ -4,9 +4,10 @@ import { RAY_SPHERE_TOLERANCE, raySphereCases } from './ray-sphere-lab.ts';
 
 /** The cases a code goal is graded on, and the tolerance its answers are compared within: its lab's grader, as the level asks. */
 export function labCases(goal: CodeGoal): { cases: LabCase[]; tolerance: Tolerance } {
-  const { edges, random, seed } = goal.code.cases;
-  switch (goal.code.lab) {
+  const code = goal.code;
+  const { random, seed } = code.cases;
+  switch (code.lab) {
     case 'ray-sphere':
-      return { cases: raySphereCases(edges, random, seed), tolerance: RAY_SPHERE_TOLERANCE };
+      return { cases: raySphereCases(code.cases.edges, random, seed), tolerance: RAY_SPHERE_TOLERANCE };
   }
 }

@@ -16,7 +16,7 @@ import type { RaySphereEdge } from './ray-sphere-edges.ts';
  * t is a distance along a unit direction; 1e-6 of it (or 1e-6 m for t below 1) is far below
  * anything a picture shows, and far above the rounding of either form of the formula.
  */
-export const RAY_SPHERE_TOLERANCE: Tolerance = { relative: 1e-6 };
+export const RAY_SPHERE_TOLERANCE: Tolerance = { answer: 'number', relative: 1e-6 };
 
 const v = (x: number, y: number, z: number): Vec3 => ({ x, y, z });
 
