@@ -145,7 +145,8 @@ export function judge(labCase: LabCase, outcome: LabOutcome, tolerance: Toleranc
         const close = closeAll([got.x, got.y, got.z], [want.x, want.y, want.z], tolerance.relative, length(want));
         return close ? null : fail('wrong-value', got, answer);
       }
-      if (angleBetween(got, want) > tolerance.radians) return fail('wrong-value', got, answer);
+      // A zero vector has no direction (its angle to anything comes out 0): it is a wrong one, not a short one.
+      if (length(got) === 0 || angleBetween(got, want) > tolerance.radians) return fail('wrong-value', got, answer);
       return Math.abs(length(got) - 1) <= tolerance.length ? null : fail('not-unit', got, answer);
     }
     case 'colour': {

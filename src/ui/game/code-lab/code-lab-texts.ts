@@ -16,8 +16,16 @@ export function caseKindName(kind: string): string {
       return msg('a ray that just touches the sphere');
     case 'off-centre':
       return msg('a sphere whose centre is not at (0, 0, 0)');
+    case 'mirror-slanted':
+      return msg('a ray at 45° onto a floor');
+    case 'mirror-head-on':
+      return msg('a ray straight onto the mirror');
+    case 'mirror-grazing':
+      return msg('a ray that grazes the mirror');
+    case 'mirror-tilted':
+      return msg('a mirror tilted along no axis');
     case 'random':
-      return msg('random rays and spheres');
+      return msg('random cases');
     default:
       return kind;
   }
