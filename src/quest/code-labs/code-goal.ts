@@ -3,6 +3,7 @@ import { wholeNumberIn } from '../../scene/scene-schema-parts.ts';
 import { localizedTextSchema } from '../localized-text.ts';
 import { MIRROR_EDGES } from './mirror-edges.ts';
 import { RAY_SPHERE_EDGES } from './ray-sphere-edges.ts';
+import { REFRACTION_EDGES } from './refraction-edges.ts';
 
 /** What every lab's goal holds besides its `lab` and its cases. */
 const labFields = {
@@ -40,7 +41,7 @@ const labGoal = <const Lab extends string, const Edges extends readonly [string,
  */
 export const codeGoalSchema = z
   .strictObject({
-    code: z.discriminatedUnion('lab', [labGoal('ray-sphere', RAY_SPHERE_EDGES), labGoal('mirror', MIRROR_EDGES)]),
+    code: z.discriminatedUnion('lab', [labGoal('ray-sphere', RAY_SPHERE_EDGES), labGoal('mirror', MIRROR_EDGES), labGoal('refraction', REFRACTION_EDGES)]),
   })
   .transform((goal) => ({ kind: 'code' as const, ...goal }));
 

@@ -24,6 +24,16 @@ export function caseKindName(kind: string): string {
       return msg('a ray that grazes the mirror');
     case 'mirror-tilted':
       return msg('a mirror tilted along no axis');
+    case 'into-glass-slanted':
+      return msg('a ray at 45° from air into glass');
+    case 'into-glass-straight':
+      return msg('a ray straight into the glass');
+    case 'out-of-glass-slanted':
+      return msg('a ray from inside the glass out into the air');
+    case 'total-internal-reflection':
+      return msg('a ray inside the glass beyond the critical angle');
+    case 'into-diamond':
+      return msg('a ray into diamond, through a surface tilted along no axis');
     case 'random':
       return msg('random cases');
     default:
