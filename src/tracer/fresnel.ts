@@ -30,6 +30,15 @@ export function refract(d: Vector3, n: Vector3, eta: number, out: Vector3): bool
   return true;
 }
 
+/**
+ * η = n₁/n₂ for Snell's law at a surface of a material with refractive index `refractiveIndex`
+ * in air (n = 1): 1/n for a ray entering it, n for a ray leaving it. With the normal turned
+ * toward the incoming ray (the whitted integrator's shade), it is what `refract` takes.
+ */
+export function relativeIndex(entering: boolean, refractiveIndex: number): number {
+  return entering ? 1 / refractiveIndex : refractiveIndex;
+}
+
 /** Mirror reflection of `d` about the unit normal `n`: d − 2(d·n)n. */
 export function reflect(d: Vector3, n: Vector3, out: Vector3): Vector3 {
   return out.copy(d).addScaledVector(n, -2 * d.dot(n));

@@ -2,7 +2,7 @@ import type { Vector3 } from 'three';
 import type { Material } from '../scene/scene.ts';
 import { angleAttenuation, distanceAttenuation } from './attenuation.ts';
 import type { Estimator } from './estimator.ts';
-import { reflect, refract, schlickReflectance } from './fresnel.ts';
+import { reflect, refract, relativeIndex, schlickReflectance } from './fresnel.ts';
 import { jitteredDiscPoints } from './disc-samples.ts';
 import { glossyDirection, perpendicularBasis } from './glossy.ts';
 import type { Hit } from './hit.ts';
@@ -288,7 +288,7 @@ export class WhittedIntegrator implements Estimator<RayObserver> {
   /** Transparent surface: kr·Li(reflected) + kt·Li(refracted), Schlick's kr (spec §2). */
   private addTransmission(ray: Ray, frame: ShadingFrame, material: Material, entering: boolean, out: Vector3, recorder: RayObserver | null): void {
     const n = frame.normal;
-    const eta = entering ? 1 / material.refractiveIndex : material.refractiveIndex;
+    const eta = relativeIndex(entering, material.refractiveIndex);
     const refracted = refract(ray.direction, n, eta, frame.childDirection);
     const rough = material.roughness > 0;
     if (!refracted) {

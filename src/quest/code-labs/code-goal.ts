@@ -1,7 +1,36 @@
 import { z } from 'zod';
 import { wholeNumberIn } from '../../scene/scene-schema-parts.ts';
 import { localizedTextSchema } from '../localized-text.ts';
+import { MIRROR_EDGES } from './mirror-edges.ts';
 import { RAY_SPHERE_EDGES } from './ray-sphere-edges.ts';
+import { REFRACTION_EDGES } from './refraction-edges.ts';
+
+/** What every lab's goal holds besides its `lab` and its cases. */
+const labFields = {
+  function: z
+    .string()
+    .regex(/^[A-Za-z_$][\w$]*$/)
+    .describe('The name the learner’s function must have.'),
+  signature: z.string().min(1).max(200).describe('The call as the contract shows it, e.g. "hitSphere(origin, direction, center, radius)".'),
+  contract: localizedTextSchema.describe('What comes in, what must come out, the units.'),
+  skeleton: localizedTextSchema.describe('The starting code: the function with its steps as comments, per language like any level text.'),
+};
+
+/** The cases of a lab whose named edge cases are `edges`. */
+const casesOf = <const Edges extends readonly [string, ...string[]]>(edges: Edges) =>
+  z.strictObject({
+    edges: z.array(z.enum(edges)).min(1).describe('The named edge cases, graded first and named in the result.'),
+    random: wholeNumberIn([0, 1000]).describe('How many seeded random cases follow them.'),
+    seed: wholeNumberIn([0, 2 ** 31 - 1]),
+  });
+
+/** One lab: its name, which is the grader (it knows the tracer's own function), and the edge cases it knows. */
+const labGoal = <const Lab extends string, const Edges extends readonly [string, ...string[]]>(lab: Lab, edges: Edges) =>
+  z.strictObject({
+    lab: z.literal(lab).describe('Which of the tracer’s functions the learner writes; it is the reference and knows the cases.'),
+    ...labFields,
+    cases: casesOf(edges),
+  });
 
 /**
  * A code lab's goal (spec/code-labs.md §1): write one function of the tracer, with its
@@ -12,21 +41,7 @@ import { RAY_SPHERE_EDGES } from './ray-sphere-edges.ts';
  */
 export const codeGoalSchema = z
   .strictObject({
-    code: z.strictObject({
-      lab: z.literal('ray-sphere').describe('Which of the tracer’s functions the learner writes; it is the reference and knows the cases.'),
-      function: z
-        .string()
-        .regex(/^[A-Za-z_$][\w$]*$/)
-        .describe('The name the learner’s function must have.'),
-      signature: z.string().min(1).max(200).describe('The call as the contract shows it, e.g. "hitSphere(origin, direction, center, radius)".'),
-      contract: localizedTextSchema.describe('What comes in, what must come out, the units.'),
-      skeleton: z.string().min(1).max(4000).describe('The starting code: the function with its steps as comments.'),
-      cases: z.strictObject({
-        edges: z.array(z.enum(RAY_SPHERE_EDGES)).min(1).describe('The named edge cases, graded first and named in the result.'),
-        random: wholeNumberIn([0, 1000]).describe('How many seeded random cases follow them.'),
-        seed: wholeNumberIn([0, 2 ** 31 - 1]),
-      }),
-    }),
+    code: z.discriminatedUnion('lab', [labGoal('ray-sphere', RAY_SPHERE_EDGES), labGoal('mirror', MIRROR_EDGES), labGoal('refraction', REFRACTION_EDGES)]),
   })
   .transform((goal) => ({ kind: 'code' as const, ...goal }));
 

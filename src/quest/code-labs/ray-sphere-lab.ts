@@ -4,6 +4,7 @@ import { intersectUnitSphere } from '../../tracer/shapes/sphere.ts';
 import { FOUND, REACH, unitSpan } from '../../tracer/shapes/unit-span.ts';
 import type { LabCase, Tolerance, Vec3 } from './code-lab-grading.ts';
 import type { RaySphereEdge } from './ray-sphere-edges.ts';
+import { randomDirection, v } from './lab-vectors.ts';
 
 /**
  * The first code lab: ray–sphere intersection (Shirley & Marschner, "Fundamentals of
@@ -16,9 +17,7 @@ import type { RaySphereEdge } from './ray-sphere-edges.ts';
  * t is a distance along a unit direction; 1e-6 of it (or 1e-6 m for t below 1) is far below
  * anything a picture shows, and far above the rounding of either form of the formula.
  */
-export const RAY_SPHERE_TOLERANCE: Tolerance = { relative: 1e-6 };
-
-const v = (x: number, y: number, z: number): Vec3 => ({ x, y, z });
+export const RAY_SPHERE_TOLERANCE: Tolerance = { answer: 'number', relative: 1e-6 };
 
 /** Each edge case: origin, unit direction, centre, radius. The tangent ray's discriminant is exactly 0 in both forms of the formula. */
 const EDGE_CASES: Record<RaySphereEdge, [Vec3, Vec3, Vec3, number]> = {
@@ -49,14 +48,6 @@ export function tracerHitSphere(origin: Vec3, direction: Vec3, center: Vec3, rad
 function edgeCase(kind: RaySphereEdge): LabCase {
   const args = EDGE_CASES[kind];
   return { kind, args, expected: tracerHitSphere(...args) };
-}
-
-/** A direction uniform over the sphere of directions (Archimedes: z uniform in [-1, 1]). */
-function randomDirection(random: RandomStream): Vec3 {
-  const z = 2 * random.next() - 1;
-  const phi = 2 * Math.PI * random.next();
-  const r = Math.sqrt(1 - z * z);
-  return v(r * Math.cos(phi), r * Math.sin(phi), z);
 }
 
 /**

@@ -1,5 +1,5 @@
 import { msg, str } from '@lit/localize';
-import type { CaseFailure, Vec3 } from '../../../quest/code-labs/code-lab-grading.ts';
+import { describeValue, type CaseFailure, type LabAnswer, type Tolerance, type Vec3 } from '../../../quest/code-labs/code-lab-grading.ts';
 
 /** A kind of case as the result list names it: the misconception its edge case tests. */
 export function caseKindName(kind: string): string {
@@ -16,41 +16,107 @@ export function caseKindName(kind: string): string {
       return msg('a ray that just touches the sphere');
     case 'off-centre':
       return msg('a sphere whose centre is not at (0, 0, 0)');
+    case 'mirror-slanted':
+      return msg('a ray at 45° onto a floor');
+    case 'mirror-head-on':
+      return msg('a ray straight onto the mirror');
+    case 'mirror-grazing':
+      return msg('a ray that grazes the mirror');
+    case 'mirror-tilted':
+      return msg('a mirror tilted along no axis');
+    case 'into-glass-slanted':
+      return msg('a ray at 45° from air into glass');
+    case 'into-glass-straight':
+      return msg('a ray straight into the glass');
+    case 'out-of-glass-slanted':
+      return msg('a ray from inside the glass out into the air');
+    case 'total-internal-reflection':
+      return msg('a ray inside the glass beyond the critical angle');
+    case 'into-diamond':
+      return msg('a ray into diamond, through a surface tilted along no axis');
     case 'random':
-      return msg('random rays and spheres');
+      return msg('random cases');
     default:
       return kind;
   }
 }
 
 const numberText = (value: number) => String(Number(value.toPrecision(6)));
-const vectorText = (v: Vec3) => `(${numberText(v.x)}, ${numberText(v.y)}, ${numberText(v.z)})`;
 
-/** The case's input, spelled out: origin, direction, centre and radius. */
-export function caseInput(args: unknown[]): string {
-  const [origin, direction, center, radius] = args as [Vec3, Vec3, Vec3, number];
-  return `origin ${vectorText(origin)}, direction ${vectorText(direction)}, center ${vectorText(center)}, radius ${numberText(radius)}`;
+/** A value of a case's input spelled out: numbers to 6 digits, vectors and colours as (x, y, z), objects and lists by their parts. */
+function valueText(value: unknown): string {
+  if (typeof value === 'number') return numberText(value);
+  if (Array.isArray(value)) return `[${value.map(valueText).join(', ')}]`;
+  if (typeof value !== 'object' || value === null) return String(value);
+  const parts = value as Record<string, unknown>;
+  if (['x', 'y', 'z'].every((key) => typeof parts[key] === 'number')) return describeValue(value);
+  if (['r', 'g', 'b'].every((key) => typeof parts[key] === 'number')) return describeValue(value);
+  return `{ ${Object.entries(parts)
+    .map(([key, part]) => `${key}: ${valueText(part)}`)
+    .join(', ')} }`;
+}
+
+/** The case's input, spelled out by the names the signature gives the arguments: "origin (0, 0, -5), direction (0, 0, 1), …". */
+export function caseInput(signature: string, args: unknown[]): string {
+  const names =
+    /\(([^)]*)\)/
+      .exec(signature)?.[1]
+      ?.split(',')
+      .map((name) => name.trim()) ?? [];
+  return args.map((arg, index) => `${names[index] ?? `#${index + 1}`} ${valueText(arg)}`).join(', ');
+}
+
+/** An answer in words: null as what "none" means in this lab, a number as the distance t, anything else spelled out. */
+function answerText(lab: string, answer: LabAnswer): string {
+  if (answer === null) return lab === 'refraction' ? msg('null (total internal reflection)') : msg('null (no hit)');
+  return typeof answer === 'number' ? `t = ${numberText(answer)}` : describeValue(answer);
+}
+
+/** What a lab's function must return, said when it returned something else. */
+function answerKindText(tolerance: Tolerance): string {
+  switch (tolerance.answer) {
+    case 'number':
+      return msg('return a number or null');
+    case 'vector':
+    case 'direction':
+      return msg('return a vector such as vec(x, y, z)');
+    case 'colour':
+      return msg('return a colour such as { r: 0.5, g: 0.2, b: 0.1 }');
+    case 'boolean':
+      return msg('return true or false');
+  }
 }
 
 /** What was expected and what came back, in words. */
-export function failureText(failure: CaseFailure): string {
-  const expected = failure.labCase.expected;
-  const expectedText = expected === null ? msg('null (no hit)') : `t = ${numberText(expected)}`;
+export function failureText(failure: CaseFailure, lab: string, tolerance: Tolerance): string {
+  const expectedText = answerText(lab, failure.labCase.expected);
+  const gotText = failure.gotValue === null ? failure.got : answerText(lab, failure.gotValue);
   switch (failure.reason) {
     case 'threw': {
       const message = failure.message ?? '';
       return failure.line ? msg(str`Your function threw ${message} at line ${failure.line}.`) : msg(str`Your function threw ${message}.`);
     }
     case 'wrong-type':
-      return msg(str`Expected ${expectedText}, got ${failure.got}: return a number or null.`);
+      return msg(str`Expected ${expectedText}, got ${failure.got}: ${answerKindText(tolerance)}.`);
     case 'not-a-number':
       return msg(str`Expected ${expectedText}, got ${failure.got}: is something under a square root negative, or divided by 0?`);
+    case 'not-unit': {
+      const value = failure.gotValue as Vec3;
+      const size = numberText(Math.hypot(value.x, value.y, value.z));
+      return msg(str`Expected ${expectedText}, got ${gotText}: the right way, but of length ${size} instead of 1.`);
+    }
     case 'expected-hit':
-      return msg(str`Expected ${expectedText}, got null: the ray does hit the sphere.`);
+      return lab === 'refraction'
+        ? msg(str`Expected ${expectedText}, got null: here the ray is not totally reflected, it goes through.`)
+        : msg(str`Expected ${expectedText}, got null: the ray does hit the sphere.`);
     case 'expected-miss':
-      return msg(str`Expected ${expectedText}, got t = ${failure.got}: only a hit in front of the ray’s origin (t > 0) counts.`);
+      return lab === 'refraction'
+        ? msg(str`Expected ${expectedText}, got ${gotText}: here the ray cannot leave the glass.`)
+        : msg(str`Expected ${expectedText}, got t = ${failure.got}: only a hit in front of the ray’s origin (t > 0) counts.`);
     case 'wrong-value':
-      return msg(str`Expected ${expectedText}, got t = ${failure.got}.`);
+      return typeof failure.gotValue === 'number'
+        ? msg(str`Expected ${expectedText}, got t = ${failure.got}.`)
+        : msg(str`Expected ${expectedText}, got ${gotText}.`);
   }
 }
 

@@ -3,9 +3,9 @@ import { msg, str } from '@lit/localize';
 import type { EditorView } from 'codemirror';
 import { css, html, nothing, type PropertyValues } from 'lit';
 import type { CodeGoal } from '../../../quest/code-labs/code-goal.ts';
-import { gradeLab, type LabReport } from '../../../quest/code-labs/code-lab-grading.ts';
+import { gradeLab, type LabReport, type Tolerance } from '../../../quest/code-labs/code-lab-grading.ts';
 import { labCases } from '../../../quest/code-labs/lab-cases.ts';
-import type { Locale } from '../../../quest/localized-text.ts';
+import { LOCALES, localize, type Locale } from '../../../quest/localized-text.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
 import { gameStyles, taskPanelStyles } from '../game-styles.ts';
 import { levelText } from '../level-text.ts';
@@ -16,7 +16,7 @@ import { savedCode, saveCode } from './code-drafts.ts';
 import { LabSandbox, RUN_LIMIT_MS, type SandboxResult } from './lab-sandbox.ts';
 
 /** What the result area shows: nothing yet, a run under way, a graded run, or why a run gave no answers. */
-type RunState = { kind: 'idle' } | { kind: 'running' } | { kind: 'graded'; report: LabReport } | Exclude<SandboxResult, { kind: 'ran' }>;
+type RunState = { kind: 'idle' } | { kind: 'running' } | { kind: 'graded'; report: LabReport; tolerance: Tolerance } | Exclude<SandboxResult, { kind: 'ran' }>;
 
 /**
  * The last run's result per lab, for this visit: the task card shows a new panel once the task
@@ -96,9 +96,13 @@ export class RtCodeLab extends LocalizedElement {
     const place = this.renderRoot.querySelector<HTMLElement>('.editor');
     if (!this.goal || !place) return;
     if (this.editor && !changed.has('goal') && !changed.has('locale')) return;
-    const { lab, skeleton } = this.goal.code;
-    // A new language keeps the code being written; a new lab starts from its own.
-    this.code = this.editor && !changed.has('goal') ? this.editor.state.doc.toString() : (savedCode(lab) ?? skeleton);
+    const { lab, skeleton: skeletonText } = this.goal.code;
+    const skeletons = LOCALES.map((locale) => localize(skeletonText, locale));
+    const skeleton = localize(skeletonText, this.locale);
+    // A new language keeps the code being written (the skeleton untouched: in the new
+    // language); a new lab starts from its own.
+    const written = this.editor && !changed.has('goal') ? this.editor.state.doc.toString() : savedCode(lab);
+    this.code = written === null || skeletons.includes(written) ? skeleton : written;
     this.editor?.destroy();
     this.editor = createCodeEditor({
       parent: place,
@@ -107,7 +111,7 @@ export class RtCodeLab extends LocalizedElement {
       syntaxError: msg('Syntax error: the browser cannot run this line as it is.'),
       onChange: (code) => {
         this.code = code;
-        saveCode(lab, code === skeleton ? null : code);
+        saveCode(lab, skeletons.includes(code) ? null : code);
       },
     });
   }
@@ -160,12 +164,13 @@ export class RtCodeLab extends LocalizedElement {
       case 'no-function':
         return html`<p class="fail">${msg(str`There is no function named ${state.name} in your code.`)}</p>`;
       case 'graded':
-        return this.report(state.report);
+        return this.report(state.report, state.tolerance);
     }
   }
 
-  private report(report: LabReport) {
+  private report(report: LabReport, tolerance: Tolerance) {
     const failure = report.firstFailure;
+    const code = this.goal?.code;
     return html`
       <p class=${failure ? 'fail' : ''}>${msg(str`${report.passed} of ${report.total} cases pass.`)}</p>
       <ul>
@@ -175,11 +180,11 @@ export class RtCodeLab extends LocalizedElement {
         )}
       </ul>
       ${
-        failure
+        failure && code
           ? html`<p>
             <strong>${msg(str`First failing case: case ${failure.index + 1}, ${caseKindName(failure.labCase.kind)}.`)}</strong><br />
-            <code>${caseInput(failure.labCase.args)}</code><br />
-            ${failureText(failure)}
+            <code>${caseInput(code.signature, failure.labCase.args)}</code><br />
+            ${failureText(failure, code.lab, tolerance)}
           </p>`
           : nothing
       }
@@ -206,7 +211,7 @@ export class RtCodeLab extends LocalizedElement {
       return;
     }
     const report = gradeLab(cases, result.outcomes, tolerance);
-    this.state = { kind: 'graded', report };
+    this.state = { kind: 'graded', report, tolerance };
     lastRuns.set(goal.code.lab, this.state);
     const failure = report.firstFailure;
     this.host.value?.graded({ lab: goal.code.lab, passed: report.passed, total: report.total, failed: failure?.labCase.kind ?? null });
@@ -214,7 +219,7 @@ export class RtCodeLab extends LocalizedElement {
 
   private reset(goal: CodeGoal): void {
     if (!this.editor || !confirm(msg('Replace your code with the skeleton? Your code is lost.'))) return;
-    replaceCode(this.editor, goal.code.skeleton);
+    replaceCode(this.editor, localize(goal.code.skeleton, this.locale));
   }
 }
 
