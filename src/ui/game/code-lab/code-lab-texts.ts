@@ -1,4 +1,5 @@
 import { msg, str } from '@lit/localize';
+import type { CodeLab } from '../../../quest/code-labs/code-goal.ts';
 import type { CaseFailure, Vec3 } from '../../../quest/code-labs/code-lab-grading.ts';
 
 /** A kind of case as the result list names it: the misconception its edge case tests. */
@@ -19,21 +20,57 @@ export function caseKindName(kind: string): string {
     case 'random':
       return msg('random rays and spheres');
     default:
-      return kind;
+      return boxCaseKindName(kind) ?? kind;
+  }
+}
+
+/** The slab test lab's kinds of case (ray-box-edges.ts). */
+function boxCaseKindName(kind: string): string | null {
+  switch (kind) {
+    case 'box-hit-from-outside':
+      return msg('a ray from outside that hits the box');
+    case 'box-miss':
+      return msg('a ray that misses the box');
+    case 'box-behind':
+      return msg('a box behind the ray’s origin');
+    case 'inside-box':
+      return msg('a ray that starts inside the box');
+    case 'negative-direction':
+      return msg('a ray going toward −x, −y and −z');
+    case 'parallel-inside-slab':
+      return msg('a ray parallel to a slab, inside it');
+    case 'parallel-outside-slab':
+      return msg('a ray parallel to a slab, outside it');
+    case 'in-face-plane':
+      return msg('a ray that runs exactly in the plane of a face');
+    case 'touches-edge':
+      return msg('a ray that just touches an edge of the box');
+    case 'random-box':
+      return msg('random rays and boxes');
+    default:
+      return null;
   }
 }
 
 const numberText = (value: number) => String(Number(value.toPrecision(6)));
 const vectorText = (v: Vec3) => `(${numberText(v.x)}, ${numberText(v.y)}, ${numberText(v.z)})`;
 
-/** The case's input, spelled out: origin, direction, centre and radius. */
-export function caseInput(args: unknown[]): string {
-  const [origin, direction, center, radius] = args as [Vec3, Vec3, Vec3, number];
-  return `origin ${vectorText(origin)}, direction ${vectorText(direction)}, center ${vectorText(center)}, radius ${numberText(radius)}`;
+/** The case's input, spelled out: the arguments by the names the lab's function gives them. */
+export function caseInput(lab: CodeLab, args: unknown[]): string {
+  switch (lab) {
+    case 'ray-sphere': {
+      const [origin, direction, center, radius] = args as [Vec3, Vec3, Vec3, number];
+      return `origin ${vectorText(origin)}, direction ${vectorText(direction)}, center ${vectorText(center)}, radius ${numberText(radius)}`;
+    }
+    case 'ray-box': {
+      const [origin, direction, boxMin, boxMax] = args as [Vec3, Vec3, Vec3, Vec3];
+      return `origin ${vectorText(origin)}, direction ${vectorText(direction)}, boxMin ${vectorText(boxMin)}, boxMax ${vectorText(boxMax)}`;
+    }
+  }
 }
 
 /** What was expected and what came back, in words. */
-export function failureText(failure: CaseFailure): string {
+export function failureText(failure: CaseFailure, lab: CodeLab): string {
   const expected = failure.labCase.expected;
   const expectedText = expected === null ? msg('null (no hit)') : `t = ${numberText(expected)}`;
   switch (failure.reason) {
@@ -44,11 +81,18 @@ export function failureText(failure: CaseFailure): string {
     case 'wrong-type':
       return msg(str`Expected ${expectedText}, got ${failure.got}: return a number or null.`);
     case 'not-a-number':
-      return msg(str`Expected ${expectedText}, got ${failure.got}: is something under a square root negative, or divided by 0?`);
+      return lab === 'ray-box'
+        ? msg(str`Expected ${expectedText}, got ${failure.got}: 0 · Infinity is NaN in JavaScript, and every comparison with NaN is false.`)
+        : msg(str`Expected ${expectedText}, got ${failure.got}: is something under a square root negative, or divided by 0?`);
     case 'expected-hit':
-      return msg(str`Expected ${expectedText}, got null: the ray does hit the sphere.`);
+      return lab === 'ray-box'
+        ? msg(str`Expected ${expectedText}, got null: the ray does hit the box.`)
+        : msg(str`Expected ${expectedText}, got null: the ray does hit the sphere.`);
     case 'expected-miss':
-      return msg(str`Expected ${expectedText}, got t = ${failure.got}: only a hit in front of the ray’s origin (t > 0) counts.`);
+      if (lab === 'ray-sphere') return msg(str`Expected ${expectedText}, got t = ${failure.got}: only a hit in front of the ray’s origin (t > 0) counts.`);
+      return failure.labCase.kind === 'in-face-plane'
+        ? msg(str`Expected ${expectedText}, got t = ${failure.got}: a ray exactly in the plane of a face counts as a miss here.`)
+        : msg(str`Expected ${expectedText}, got t = ${failure.got}: the ray is never inside all three slabs at once in front of its origin.`);
     case 'wrong-value':
       return msg(str`Expected ${expectedText}, got t = ${failure.got}.`);
   }

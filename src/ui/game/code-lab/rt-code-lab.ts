@@ -2,10 +2,10 @@ import { ContextConsumer } from '@lit/context';
 import { msg, str } from '@lit/localize';
 import type { EditorView } from 'codemirror';
 import { css, html, nothing, type PropertyValues } from 'lit';
-import type { CodeGoal } from '../../../quest/code-labs/code-goal.ts';
+import type { CodeGoal, CodeLab } from '../../../quest/code-labs/code-goal.ts';
 import { gradeLab, type LabReport } from '../../../quest/code-labs/code-lab-grading.ts';
 import { labCases } from '../../../quest/code-labs/lab-cases.ts';
-import type { Locale } from '../../../quest/localized-text.ts';
+import { localize, type Locale } from '../../../quest/localized-text.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
 import { gameStyles } from '../game-styles.ts';
 import { levelText } from '../level-text.ts';
@@ -103,9 +103,12 @@ export class RtCodeLab extends LocalizedElement {
     const place = this.renderRoot.querySelector<HTMLElement>('.editor');
     if (!this.goal || !place) return;
     if (this.editor && !changed.has('goal') && !changed.has('locale')) return;
-    const { lab, skeleton } = this.goal.code;
-    // A new language keeps the code being written; a new lab starts from its own.
-    this.code = this.editor && !changed.has('goal') ? this.editor.state.doc.toString() : (savedCode(lab) ?? skeleton);
+    const lab = this.goal.code.lab;
+    const skeleton = localize(this.goal.code.skeleton, this.locale);
+    // A new language keeps the code being written (an untouched skeleton becomes that language's); a new lab starts from its own.
+    const before = changed.get('locale') as Locale | undefined;
+    const untouched = before !== undefined && this.code === localize(this.goal.code.skeleton, before);
+    this.code = this.editor && !changed.has('goal') ? (untouched ? skeleton : this.editor.state.doc.toString()) : (savedCode(lab) ?? skeleton);
     this.editor?.destroy();
     this.editor = createCodeEditor({
       parent: place,
@@ -139,12 +142,12 @@ export class RtCodeLab extends LocalizedElement {
           <button class="primary" ?disabled=${this.state.kind === 'running'} @click=${() => void this.run(goal)}>${msg('Run tests')}</button>
           <button @click=${() => this.reset(goal)}>${msg('Reset to skeleton')}</button>
         </div>
-        <div role="status" aria-live="polite">${this.result()}</div>
+        <div role="status" aria-live="polite">${this.result(goal)}</div>
       </section>
     `;
   }
 
-  private result() {
+  private result(goal: CodeGoal) {
     const state = this.state;
     const seconds = RUN_LIMIT_MS / 1000;
     switch (state.kind) {
@@ -167,11 +170,11 @@ export class RtCodeLab extends LocalizedElement {
       case 'no-function':
         return html`<p class="fail">${msg(str`There is no function named ${state.name} in your code.`)}</p>`;
       case 'graded':
-        return this.report(state.report);
+        return this.report(state.report, goal.code.lab);
     }
   }
 
-  private report(report: LabReport) {
+  private report(report: LabReport, lab: CodeLab) {
     const failure = report.firstFailure;
     return html`
       <p class=${failure ? 'fail' : ''}>${msg(str`${report.passed} of ${report.total} cases pass.`)}</p>
@@ -185,8 +188,8 @@ export class RtCodeLab extends LocalizedElement {
         failure
           ? html`<p>
             <strong>${msg(str`First failing case: case ${failure.index + 1}, ${caseKindName(failure.labCase.kind)}.`)}</strong><br />
-            <code>${caseInput(failure.labCase.args)}</code><br />
-            ${failureText(failure)}
+            <code>${caseInput(lab, failure.labCase.args)}</code><br />
+            ${failureText(failure, lab)}
           </p>`
           : nothing
       }
@@ -221,7 +224,7 @@ export class RtCodeLab extends LocalizedElement {
 
   private reset(goal: CodeGoal): void {
     if (!this.editor || !confirm(msg('Replace your code with the skeleton? Your code is lost.'))) return;
-    replaceCode(this.editor, goal.code.skeleton);
+    replaceCode(this.editor, localize(goal.code.skeleton, this.locale));
   }
 }
 
