@@ -35,6 +35,18 @@ export const codeGoalSchema = z
     code: z.discriminatedUnion('lab', [
       z.strictObject({ lab: z.literal('ray-sphere').describe('Ray–sphere intersection (ray-sphere-lab.ts).'), ...labFields, cases: casesOf(RAY_SPHERE_EDGES) }),
       z.strictObject({ lab: z.literal('ray-box').describe('The AABB slab test (ray-box-lab.ts).'), ...labFields, cases: casesOf(RAY_BOX_EDGES) }),
+      z.strictObject({
+        lab: z.literal('pixel-samples').describe('Jittered samples in a pixel, graded statistically (pixel-samples-lab.ts).'),
+        ...labFields,
+        cases: z.strictObject({
+          sizes: z
+            .array(wholeNumberIn([1, 256]).refine((n) => Number.isInteger(Math.sqrt(n)), 'a square: 1, 4, 9, 16…'))
+            .min(1)
+            .describe('The numbers of samples n the runs ask for, in turn; each a square.'),
+          runs: wholeNumberIn([50, 1000]).describe('How many seeded runs; enough points for the χ² test.'),
+          seed: wholeNumberIn([0, 2 ** 31 - 1]),
+        }),
+      }),
     ]),
   })
   .transform((goal) => ({ kind: 'code' as const, ...goal }));

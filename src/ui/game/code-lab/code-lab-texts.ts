@@ -66,6 +66,8 @@ export function caseInput(lab: CodeLab, args: unknown[]): string {
       const [origin, direction, boxMin, boxMax] = args as [Vec3, Vec3, Vec3, Vec3];
       return `origin ${vectorText(origin)}, direction ${vectorText(direction)}, boxMin ${vectorText(boxMin)}, boxMax ${vectorText(boxMax)}`;
     }
+    case 'pixel-samples':
+      return `n = ${String(args[0])}`;
   }
 }
 
