@@ -4,8 +4,8 @@ import type { RandomRun, SampleFailure, StatisticsReport } from '../../../quest/
 
 const numberText = (value: number, digits = 3) => String(Number(value.toPrecision(digits)));
 
-/** A p-value as a learner can read it: 0.65, 0.0012, or "below 10⁻¹⁰" for the ones a biased function gets. */
-const pText = (p: number) => (p < 1e-10 ? '< 10⁻¹⁰' : numberText(p, 2));
+/** A p-value as a learner can read it: "p = 0.65", "p = 0.0012", or "p < 10⁻¹⁰" for the ones a biased function gets. */
+const pText = (p: number) => (p < 1e-10 ? 'p < 10⁻¹⁰' : `p = ${numberText(p, 2)}`);
 
 /**
  * The result of a statistically graded run (code-lab-statistics.ts), spelled out: what was
@@ -15,7 +15,7 @@ export function statisticsReport(report: StatisticsReport, runs: readonly Random
   const test = report.test;
   const failure = report.firstFailure;
   const chi = test
-    ? msg(str`χ² = ${numberText(test.value)} with ${test.degrees} degrees of freedom, p = ${pText(test.p)} (below ${test.significance} fails).`)
+    ? msg(str`χ² = ${numberText(test.value)} with ${test.degrees} degrees of freedom, ${pText(test.p)} (below ${test.significance} fails).`)
     : '';
   if (!failure && test) {
     return html`<p>${msg(str`${report.runs} runs, ${report.points} points: all in the pixel, one in every cell, the same for the same random, and spread evenly within their cells.`)} ${chi}</p>`;
