@@ -2,6 +2,7 @@ import { z } from 'zod';
 import { wholeNumberIn } from '../../scene/scene-schema-parts.ts';
 import { localizedTextSchema } from '../localized-text.ts';
 import { MIRROR_EDGES } from './mirror-edges.ts';
+import { RAY_BOX_EDGES } from './ray-box-edges.ts';
 import { RAY_SPHERE_EDGES } from './ray-sphere-edges.ts';
 import { REFRACTION_EDGES } from './refraction-edges.ts';
 
@@ -13,7 +14,7 @@ const labFields = {
     .describe('The name the learner’s function must have.'),
   signature: z.string().min(1).max(200).describe('The call as the contract shows it, e.g. "hitSphere(origin, direction, center, radius)".'),
   contract: localizedTextSchema.describe('What comes in, what must come out, the units.'),
-  skeleton: localizedTextSchema.describe('The starting code: the function with its steps as comments, per language like any level text.'),
+  skeleton: localizedTextSchema.describe('The starting code: the function with its steps as comments, per language (`{ "en": …, "nl": … }`) or one string.'),
 };
 
 /** The cases of a lab whose named edge cases are `edges`. */
@@ -41,9 +42,29 @@ const labGoal = <const Lab extends string, const Edges extends readonly [string,
  */
 export const codeGoalSchema = z
   .strictObject({
-    code: z.discriminatedUnion('lab', [labGoal('ray-sphere', RAY_SPHERE_EDGES), labGoal('mirror', MIRROR_EDGES), labGoal('refraction', REFRACTION_EDGES)]),
+    code: z.discriminatedUnion('lab', [
+      labGoal('ray-sphere', RAY_SPHERE_EDGES),
+      labGoal('mirror', MIRROR_EDGES),
+      labGoal('refraction', REFRACTION_EDGES),
+      labGoal('ray-box', RAY_BOX_EDGES),
+      z.strictObject({
+        lab: z.literal('pixel-samples').describe('Jittered samples in a pixel, graded statistically (pixel-samples-lab.ts).'),
+        ...labFields,
+        cases: z.strictObject({
+          sizes: z
+            .array(wholeNumberIn([1, 256]).refine((n) => Number.isInteger(Math.sqrt(n)), 'a square: 1, 4, 9, 16…'))
+            .min(1)
+            .describe('The numbers of samples n the runs ask for, in turn; each a square.'),
+          runs: wholeNumberIn([50, 1000]).describe('How many seeded runs; enough points for the χ² test.'),
+          seed: wholeNumberIn([0, 2 ** 31 - 1]),
+        }),
+      }),
+    ]),
   })
   .transform((goal) => ({ kind: 'code' as const, ...goal }));
 
 /** Done once a run of the learner's function passes every case. */
 export type CodeGoal = z.output<typeof codeGoalSchema>;
+
+/** The labs there are: which of the tracer's functions the learner writes. */
+export type CodeLab = CodeGoal['code']['lab'];

@@ -1,19 +1,31 @@
 import type { CodeGoal } from './code-goal.ts';
 import type { LabCase, Tolerance } from './code-lab-grading.ts';
+import type { RandomRun } from './code-lab-statistics.ts';
 import { MIRROR_TOLERANCE, mirrorCases } from './mirror-lab.ts';
-import { REFRACTION_TOLERANCE, refractionCases } from './refraction-lab.ts';
+import { PIXEL_SAMPLES_SIGNIFICANCE, pixelSampleRuns } from './pixel-samples-lab.ts';
+import { RAY_BOX_TOLERANCE, rayBoxCases } from './ray-box-lab.ts';
 import { RAY_SPHERE_TOLERANCE, raySphereCases } from './ray-sphere-lab.ts';
+import { REFRACTION_TOLERANCE, refractionCases } from './refraction-lab.ts';
 
-/** The cases a code goal is graded on, and the tolerance its answers are compared within: its lab's grader, as the level asks. */
-export function labCases(goal: CodeGoal): { cases: LabCase[]; tolerance: Tolerance } {
+/**
+ * How a code goal is graded, as its lab says: cases compared one by one with the tracer's
+ * answers within a tolerance (code-lab-grading.ts), or runs of a random function tested as a
+ * sample at a significance (code-lab-statistics.ts).
+ */
+export type LabGrading = { kind: 'cases'; cases: LabCase[]; tolerance: Tolerance } | { kind: 'statistics'; runs: RandomRun[]; significance: number };
+
+export function labCases(goal: CodeGoal): LabGrading {
   const code = goal.code;
-  const { random, seed } = code.cases;
   switch (code.lab) {
     case 'ray-sphere':
-      return { cases: raySphereCases(code.cases.edges, random, seed), tolerance: RAY_SPHERE_TOLERANCE };
+      return { kind: 'cases', cases: raySphereCases(code.cases.edges, code.cases.random, code.cases.seed), tolerance: RAY_SPHERE_TOLERANCE };
     case 'mirror':
-      return { cases: mirrorCases(code.cases.edges, random, seed), tolerance: MIRROR_TOLERANCE };
+      return { kind: 'cases', cases: mirrorCases(code.cases.edges, code.cases.random, code.cases.seed), tolerance: MIRROR_TOLERANCE };
     case 'refraction':
-      return { cases: refractionCases(code.cases.edges, random, seed), tolerance: REFRACTION_TOLERANCE };
+      return { kind: 'cases', cases: refractionCases(code.cases.edges, code.cases.random, code.cases.seed), tolerance: REFRACTION_TOLERANCE };
+    case 'ray-box':
+      return { kind: 'cases', cases: rayBoxCases(code.cases.edges, code.cases.random, code.cases.seed), tolerance: RAY_BOX_TOLERANCE };
+    case 'pixel-samples':
+      return { kind: 'statistics', runs: pixelSampleRuns(code.cases.sizes, code.cases.runs, code.cases.seed), significance: PIXEL_SAMPLES_SIGNIFICANCE };
   }
 }

@@ -37,7 +37,35 @@ export function caseKindName(kind: string): string {
     case 'random':
       return msg('random cases');
     default:
-      return kind;
+      return boxCaseKindName(kind) ?? kind;
+  }
+}
+
+/** The slab test lab's kinds of case (ray-box-edges.ts). */
+function boxCaseKindName(kind: string): string | null {
+  switch (kind) {
+    case 'box-hit-from-outside':
+      return msg('a ray from outside that hits the box');
+    case 'box-miss':
+      return msg('a ray that misses the box');
+    case 'box-behind':
+      return msg('a box behind the ray’s origin');
+    case 'inside-box':
+      return msg('a ray that starts inside the box');
+    case 'negative-direction':
+      return msg('a ray going toward −x, −y and −z');
+    case 'parallel-inside-slab':
+      return msg('a ray parallel to a slab, inside it');
+    case 'parallel-outside-slab':
+      return msg('a ray parallel to a slab, outside it');
+    case 'in-face-plane':
+      return msg('a ray that runs exactly in the plane of a face');
+    case 'touches-edge':
+      return msg('a ray that just touches an edge of the box');
+    case 'random-box':
+      return msg('random rays and boxes');
+    default:
+      return null;
   }
 }
 
@@ -99,20 +127,25 @@ export function failureText(failure: CaseFailure, lab: string, tolerance: Tolera
     case 'wrong-type':
       return msg(str`Expected ${expectedText}, got ${failure.got}: ${answerKindText(tolerance)}.`);
     case 'not-a-number':
-      return msg(str`Expected ${expectedText}, got ${failure.got}: is something under a square root negative, or divided by 0?`);
+      return lab === 'ray-box'
+        ? msg(str`Expected ${expectedText}, got ${failure.got}: 0 · Infinity is NaN in JavaScript, and every comparison with NaN is false.`)
+        : msg(str`Expected ${expectedText}, got ${failure.got}: is something under a square root negative, or divided by 0?`);
     case 'not-unit': {
       const value = failure.gotValue as Vec3;
       const size = numberText(Math.hypot(value.x, value.y, value.z));
       return msg(str`Expected ${expectedText}, got ${gotText}: the right way, but of length ${size} instead of 1.`);
     }
     case 'expected-hit':
-      return lab === 'refraction'
-        ? msg(str`Expected ${expectedText}, got null: here the ray is not totally reflected, it goes through.`)
+      if (lab === 'refraction') return msg(str`Expected ${expectedText}, got null: here the ray is not totally reflected, it goes through.`);
+      return lab === 'ray-box'
+        ? msg(str`Expected ${expectedText}, got null: the ray does hit the box.`)
         : msg(str`Expected ${expectedText}, got null: the ray does hit the sphere.`);
     case 'expected-miss':
-      return lab === 'refraction'
-        ? msg(str`Expected ${expectedText}, got ${gotText}: here the ray cannot leave the glass.`)
-        : msg(str`Expected ${expectedText}, got t = ${failure.got}: only a hit in front of the ray’s origin (t > 0) counts.`);
+      if (lab === 'refraction') return msg(str`Expected ${expectedText}, got ${gotText}: here the ray cannot leave the glass.`);
+      if (lab !== 'ray-box') return msg(str`Expected ${expectedText}, got t = ${failure.got}: only a hit in front of the ray’s origin (t > 0) counts.`);
+      return failure.labCase.kind === 'in-face-plane'
+        ? msg(str`Expected ${expectedText}, got t = ${failure.got}: a ray exactly in the plane of a face counts as a miss here.`)
+        : msg(str`Expected ${expectedText}, got t = ${failure.got}: the ray is never inside all three slabs at once in front of its origin.`);
     case 'wrong-value':
       return typeof failure.gotValue === 'number'
         ? msg(str`Expected ${expectedText}, got t = ${failure.got}.`)

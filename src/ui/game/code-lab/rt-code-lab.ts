@@ -4,6 +4,7 @@ import type { EditorView } from 'codemirror';
 import { css, html, nothing, type PropertyValues } from 'lit';
 import type { CodeGoal } from '../../../quest/code-labs/code-goal.ts';
 import { gradeLab, type LabReport, type Tolerance } from '../../../quest/code-labs/code-lab-grading.ts';
+import { gradeSamples, sampleTally, type RandomRun, type StatisticsReport } from '../../../quest/code-labs/code-lab-statistics.ts';
 import { labCases } from '../../../quest/code-labs/lab-cases.ts';
 import { LOCALES, localize, type Locale } from '../../../quest/localized-text.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
@@ -11,12 +12,18 @@ import { gameStyles, taskPanelStyles } from '../game-styles.ts';
 import { levelText } from '../level-text.ts';
 import { createCodeEditor, replaceCode } from './code-editor.ts';
 import { codeLabHostContext } from './code-lab-host.ts';
+import { statisticsReport } from './code-lab-statistics-report.ts';
 import { caseInput, caseKindName, failureText, vectorLibrary } from './code-lab-texts.ts';
 import { savedCode, saveCode } from './code-drafts.ts';
 import { LabSandbox, RUN_LIMIT_MS, type SandboxResult } from './lab-sandbox.ts';
 
 /** What the result area shows: nothing yet, a run under way, a graded run, or why a run gave no answers. */
-type RunState = { kind: 'idle' } | { kind: 'running' } | { kind: 'graded'; report: LabReport; tolerance: Tolerance } | Exclude<SandboxResult, { kind: 'ran' }>;
+type RunState =
+  | { kind: 'idle' }
+  | { kind: 'running' }
+  | { kind: 'graded'; report: LabReport; tolerance: Tolerance }
+  | { kind: 'sampled'; report: StatisticsReport; runs: RandomRun[] }
+  | Exclude<SandboxResult, { kind: 'ran' }>;
 
 /**
  * The last run's result per lab, for this visit: the task card shows a new panel once the task
@@ -165,6 +172,8 @@ export class RtCodeLab extends LocalizedElement {
         return html`<p class="fail">${msg(str`There is no function named ${state.name} in your code.`)}</p>`;
       case 'graded':
         return this.report(state.report, state.tolerance);
+      case 'sampled':
+        return statisticsReport(state.report, state.runs);
     }
   }
 
@@ -193,14 +202,11 @@ export class RtCodeLab extends LocalizedElement {
 
   private async run(goal: CodeGoal): Promise<void> {
     this.state = { kind: 'running' };
-    const { cases, tolerance } = labCases(goal);
+    const grading = labCases(goal);
     let result: SandboxResult;
     try {
-      result = await this.sandbox.run(
-        this.code,
-        goal.code.function,
-        cases.map((labCase) => labCase.args),
-      );
+      const args = grading.kind === 'cases' ? grading.cases.map((labCase) => labCase.args) : grading.runs.map((run) => run.args);
+      result = await this.sandbox.run(this.code, goal.code.function, args);
     } catch (error) {
       this.sandbox.close();
       result = { kind: 'failed', message: String(error), line: null };
@@ -210,7 +216,15 @@ export class RtCodeLab extends LocalizedElement {
       lastRuns.set(goal.code.lab, result);
       return;
     }
-    const report = gradeLab(cases, result.outcomes, tolerance);
+    if (grading.kind === 'statistics') {
+      const report = gradeSamples(grading.runs, result.outcomes, grading.significance);
+      this.state = { kind: 'sampled', report, runs: grading.runs };
+      lastRuns.set(goal.code.lab, this.state);
+      this.host.value?.graded({ lab: goal.code.lab, ...sampleTally(report) });
+      return;
+    }
+    const { tolerance } = grading;
+    const report = gradeLab(grading.cases, result.outcomes, tolerance);
     this.state = { kind: 'graded', report, tolerance };
     lastRuns.set(goal.code.lab, this.state);
     const failure = report.firstFailure;
