@@ -21,6 +21,7 @@ import { pointsOf, PROGRESS_KIND, PROGRESS_VERSION, type LevelProgress, type Pro
 import { levelBadgesEarned, pointsFor, starsEarned } from './scoring.ts';
 import type { Stars } from './challenge-par.ts';
 import { matchScore } from './challenge-closeness.ts';
+import { codeRunEvent } from './code-run-event.ts';
 import { holdsAll, mergeProgress } from './progress-merge.ts';
 import { reconcileLevels } from './progress-reconcile.ts';
 
@@ -314,6 +315,7 @@ export class QuestEngine {
     const levelId = this.active?.level.id ?? null;
     if (action.type === 'render.started') this.append({ type: 'render.started', level: levelId });
     if (action.type === 'challenge.compared') this.append(comparisonEvent(this.active, action));
+    if (action.type === 'code.graded') this.append(codeRunEvent(this.active?.level ?? null, action));
     if (action.type === 'render.finished') {
       this.append({ type: 'render.finished', level: levelId, ms: action.ms });
       this.award({ kind: 'first-render' });
