@@ -5,6 +5,7 @@ import type { ExportInput } from '../../src/classroom/export-context.ts';
 import { exportCsv } from '../../src/classroom/export-csv.ts';
 import { buildExport, exportJson } from '../../src/classroom/export-json.ts';
 import { exportXapi } from '../../src/classroom/export-xapi.ts';
+import { summarizeCodeLabs } from '../../src/classroom/dashboard-code-labs.ts';
 import { readLog, type TaskAttempt } from '../../src/classroom/task-attempts.ts';
 import type { LoggedEvent } from '../../src/quest/event-log.ts';
 import { newProgress } from '../../src/quest/progress.ts';
@@ -93,6 +94,33 @@ describe('a code lab in the exports', () => {
       306,
       'sphere-behind inside-sphere -',
       true,
+    ]);
+  });
+});
+
+describe('the dashboard’s code lab table', () => {
+  /** A learner who solved it after failing on sphere-behind twice, one who stopped at inside-sphere, one who never ran it. */
+  const solver: LoggedEvent[] = [...events.slice(0, 3), run(2000, 250, 'sphere-behind'), run(2500, 250, 'sphere-behind'), run(3000, 306, null)];
+  const stopper: LoggedEvent[] = [...events.slice(0, 3), run(2000, 300, 'inside-sphere'), run(3000, 250, 'sphere-behind')];
+  const looker: LoggedEvent[] = events.slice(0, 3);
+
+  it('counts the students who ran and who solved each lab, and the first failing kinds, most common first', () => {
+    const records = [solver, stopper, looker].map((log) => {
+      const read = readExportFile('p.json', exportJson(input(log)));
+      if (!read.ok) throw new Error(read.reason);
+      return read.record;
+    });
+    expect(summarizeCodeLabs(records)).toEqual([
+      {
+        level: LEVEL,
+        task: TASK,
+        learners: 2,
+        solved: 1,
+        failing: [
+          { kind: 'sphere-behind', runs: 3 },
+          { kind: 'inside-sphere', runs: 1 },
+        ],
+      },
     ]);
   });
 });

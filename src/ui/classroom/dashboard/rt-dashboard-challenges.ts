@@ -5,6 +5,8 @@ import type { ClassRecord } from '../../../classroom/dashboard-record.ts';
 import { MATCH_SCORE } from '../../../quest/challenge-closeness.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
 import { tableStyles } from './rt-dashboard-chart-styles.ts';
+// The code labs' table, shown under this one on a level's page, is defined with it: the page is at its size limit.
+import './rt-dashboard-code-labs.ts';
 
 /**
  * @summary How close the class got in a level's challenges (classroom/dashboard-challenges.ts):

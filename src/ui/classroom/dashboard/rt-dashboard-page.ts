@@ -352,6 +352,7 @@ export class RtDashboardPage extends LocalizedElement {
       <rt-dashboard-completion .rows=${rows} caption=${msg(str`Completion per task in ${title}`)}></rt-dashboard-completion>
       ${this.renderQuizzes(level.level, title)}
       <rt-dashboard-challenges .records=${this.shown} level=${level.level} .taskName=${(task: string) => names.task(level.level, task)}></rt-dashboard-challenges>
+      <rt-dashboard-code-labs .records=${this.shown} level=${level.level} .taskName=${(task: string) => names.task(level.level, task)}></rt-dashboard-code-labs>
       <h3>${msg('Where students got stuck')}</h3>
       <p class="rule">${stuckRule()}</p>
       <rt-dashboard-stuck
