@@ -34,6 +34,18 @@ const PROBE = `function hitSphere() {
   throw new Error('opened [' + opened.join(', ') + ']');
 }`;
 
+// "t < 0 accepted": the near root, wherever it lies.
+const BEHIND = `function hitSphere(origin, direction, center, radius) {
+  const oc = sub(origin, center);
+  const b = dot(oc, direction);
+  const d = b * b - (dot(oc, oc) - radius * radius);
+  return d < 0 ? null : -b - Math.sqrt(d);
+}`;
+
+type ShownCase = { points: { mark: string }[]; shapes: unknown[] } | null;
+const shownCase = (page: Page) =>
+  page.locator('rt-scene-view').evaluate((element) => (element as unknown as { labView: { labCase: { shown: ShownCase } } }).labView.labCase.shown);
+
 const ENDLESS = `function hitSphere() {
   while (true) {}
 }`;
@@ -80,9 +92,16 @@ test('a code lab grades a correct function, and hostile code reaches nothing and
   expect(Date.now() - started).toBeLessThan(1500);
   await expect(result).toContainText('Your function did not return within 2 s on case 1. Is there a loop that never ends?');
 
+  // The first failing case is drawn in the 3D view: its sphere, the tracer's hit and the learner's.
+  await typeCode(page, BEHIND);
+  await run.click();
+  await expect(result).toContainText('First failing case: case 3, a sphere behind the ray’s origin.');
+  expect(await shownCase(page)).toMatchObject({ points: [{ mark: 'got' }], shapes: [{ kind: 'sphere' }] });
+
   await typeCode(page, CORRECT);
   await run.click();
   await expect(result).toContainText('306 of 306 cases pass.');
+  expect(await shownCase(page)).toBeNull();
   await expectStatus(page, TITLE, 'done');
   // The code is kept for the next visit.
   expect(await page.evaluate(() => localStorage.getItem('rtq.code-lab.ray-sphere'))).toContain('const oc = sub(origin, center);');

@@ -5,6 +5,7 @@ import type { SurveyAnswers } from './survey-answers.ts';
 import type { ConceptTestAnswers } from './concept-test/concept-answers.ts';
 import { CONCEPT_COLUMNS } from './concept-test/concept-columns.ts';
 import { CHALLENGE_COLUMNS } from './challenge-columns.ts';
+import { CODE_LAB_COLUMNS } from './code-lab-columns.ts';
 import { hintsOpened, type TaskAttempt } from './task-attempts.ts';
 
 /**
@@ -159,6 +160,7 @@ export const ATTEMPT_COLUMNS: readonly AttemptColumn[] = [
   countColumn('explanation_opens', 'explanationOpens'),
   countColumn('points', 'points'),
   ...CHALLENGE_COLUMNS,
+  ...CODE_LAB_COLUMNS,
   ownerColumn('app_version', 'appVersion', false),
   {
     // A number, not text: a text cell starting with "-" would get the apostrophe that keeps formulas out (csv-text.ts).

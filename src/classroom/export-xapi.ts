@@ -2,6 +2,7 @@ import type { LoggedEvent } from '../quest/event-log.ts';
 import { fnv1a } from './assignment-id.ts';
 import { hintsOpened, readLog } from './task-attempts.ts';
 import type { ChallengeTries } from './challenge-attempt.ts';
+import type { CodeRuns } from './code-lab-attempt.ts';
 import { assignmentLabel, exportOwner, type ExportInput } from './export-context.ts';
 import { isoAt, isoDuration } from './iso-duration.ts';
 import { NO_OPTION_TEXTS, optionId, type OptionText } from './quiz-options.ts';
@@ -105,6 +106,7 @@ export function exportXapi(input: ExportInput): XapiStatement[] {
         [EXTENSIONS.hintsOpened]: hintsOpened(attempt),
         [EXTENSIONS.explanationOpens]: attempt.explanationOpens,
         ...challengeExtensions(attempt.challenge),
+        ...codeExtensions(attempt.code),
       },
     };
     add(attempt.how === 'skipped' ? VERBS.skipped : VERBS.completed, activities.task(attempt.level, attempt.task), attempt.completedAt, result, attempt.level);
@@ -184,5 +186,17 @@ function challengeExtensions(tries: ChallengeTries | undefined): Record<string, 
     [EXTENSIONS.challengeRays]: tries.rays,
     [EXTENSIONS.challengeScores]: tries.scores.join(' '),
     ...(tries.stars === null ? {} : { [EXTENSIONS.challengeStars]: tries.stars }),
+  };
+}
+
+/** A code lab's runs as the CSV's code_* columns (a run with no failing case is `-`). */
+function codeExtensions(runs: CodeRuns | undefined): Record<string, string | number | boolean> {
+  if (!runs) return {};
+  return {
+    [EXTENSIONS.codeRuns]: runs.runs,
+    [EXTENSIONS.codePassed]: runs.passed,
+    [EXTENSIONS.codeTotal]: runs.total,
+    [EXTENSIONS.codeFailing]: runs.failing.map((kind) => kind ?? '-').join(' '),
+    [EXTENSIONS.codeSolved]: runs.solved,
   };
 }

@@ -1,6 +1,7 @@
 import type { EventLogData, HowCompleted, LoggedEvent } from '../quest/event-log.ts';
 import type { TaskKind } from '../quest/goal.ts';
 import { addComparison, type ChallengeTries } from './challenge-attempt.ts';
+import { addCodeRun, type CodeRuns } from './code-lab-attempt.ts';
 
 /**
  * A learner's event log read back as task attempts and level visits: what the dashboard
@@ -57,6 +58,8 @@ export interface TaskAttempt {
   explanationOpens: number;
   /** A challenge task's tries in this attempt (challenge-attempt.ts); absent for other tasks and in logs before they were recorded. */
   challenge?: ChallengeTries;
+  /** A code lab task's runs in this attempt (code-lab-attempt.ts); absent for other tasks and in logs before they were recorded. */
+  code?: CodeRuns;
 }
 
 export interface LevelVisit {
@@ -217,6 +220,13 @@ export function readLog(log: EventLogData): ReadLog {
       case 'challenge.compared': {
         const attempt = event.level === null || event.task === undefined ? undefined : openAttempts.get(key(event.level, event.task))?.attempt;
         if (attempt) attempt.challenge = addComparison(attempt.challenge, event);
+        break;
+      }
+      case 'code.graded': {
+        // A run is a move towards the task: an optional code lab's attempt starts at its first.
+        if (event.level !== null && event.task !== undefined) touch(event.level, event.task, event.t);
+        const attempt = event.level === null || event.task === undefined ? undefined : openAttempts.get(key(event.level, event.task))?.attempt;
+        if (attempt) attempt.code = addCodeRun(attempt.code, event);
         break;
       }
       case 'quiz.answered': {

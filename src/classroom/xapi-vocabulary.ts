@@ -75,4 +75,10 @@ export const EXTENSIONS = {
   challengeRays: `${XAPI_BASE}/extensions/challenge-rays`,
   challengeScores: `${XAPI_BASE}/extensions/challenge-scores`,
   challengeStars: `${XAPI_BASE}/extensions/challenge-stars`,
+  /** A code lab's runs, as the CSV's code_* columns (code-lab-attempt.ts). */
+  codeRuns: `${XAPI_BASE}/extensions/code-runs`,
+  codePassed: `${XAPI_BASE}/extensions/code-passed`,
+  codeTotal: `${XAPI_BASE}/extensions/code-total`,
+  codeFailing: `${XAPI_BASE}/extensions/code-failing`,
+  codeSolved: `${XAPI_BASE}/extensions/code-solved`,
 } as const;

@@ -119,6 +119,21 @@ export const loggedEventSchema = z.discriminatedUnion('type', [
     task: task.optional(),
     score: z.number().min(0).max(100).optional(),
   }),
+  /**
+   * A code lab's Run tests graded (issue 43; logs from then on): the lab, the cases passed of
+   * how many, the first failing case's kind (null: all passed), and the open level's code task.
+   */
+  z.strictObject({
+    t,
+    id,
+    type: z.literal('code.graded'),
+    level: level.nullable(),
+    task: task.optional(),
+    lab: z.string().min(1).max(ID_MAX),
+    passed: z.int().min(0),
+    total: z.int().min(1),
+    failed: z.string().min(1).max(ID_MAX).nullable(),
+  }),
   /** The tab was hidden or shown again: active time is the time in between hidden ones. */
   z.strictObject({ t, id, type: z.literal('tab.hidden') }),
   z.strictObject({ t, id, type: z.literal('tab.visible') }),

@@ -19,6 +19,7 @@ import { pointsOf, type Progress, type QuestSettings } from './progress.ts';
 import { levelBadgesEarned, pointsFor, starsEarned } from './scoring.ts';
 import type { Stars } from './challenge-par.ts';
 import { comparisonEvent } from './challenge-progress.ts';
+import { codeRunEvent } from './code-run-event.ts';
 import { KeptProgress, type QuestListener } from './kept-progress.ts';
 import { levelViewOf, type LevelView, type ViewSources } from './level-view.ts';
 
@@ -167,6 +168,7 @@ export class QuestEngine {
     const levelId = this.active?.level.id ?? null;
     if (action.type === 'render.started') this.kept.append({ type: 'render.started', level: levelId });
     if (action.type === 'challenge.compared') this.kept.append(comparisonEvent(this.active, action));
+    if (action.type === 'code.graded') this.kept.append(codeRunEvent(this.active?.level ?? null, action));
     if (action.type === 'render.finished') {
       this.kept.append({ type: 'render.finished', level: levelId, ms: action.ms });
       this.kept.award({ kind: 'first-render' });

@@ -19,6 +19,7 @@ import type { PixelTrace } from '../tracer/ray-tree.ts';
 import type { Store } from '../lab-state/store.ts';
 import type { Vec3 } from '../scene/scene.ts';
 import { CameraScreen } from './camera-screen.ts';
+import { CaseOverlay } from './case-overlay.ts';
 import { DistributionGizmos } from './distribution-gizmos.ts';
 import type { Animator } from './frame-scheduler.ts';
 import type { GizmoMode } from './gizmo-modes.ts';
@@ -95,6 +96,8 @@ export class LabView {
   private readonly lightGizmos: LightGizmos;
   private readonly cameraScreen: CameraScreen;
   private readonly distribution: DistributionGizmos;
+  /** A code lab's failing case, drawn and framed (case-overlay.ts); browser tests read `labCase.shown`. */
+  readonly labCase = new CaseOverlay({ frame: (points) => this.navigation.showPoints(points), drawn: () => this.requestRender(), store: this.store });
   private readonly grid: GridHelper;
   private readonly listeners: { [K in keyof LabViewEvents]: Set<Listener<LabViewEvents[K]>> } = {
     rayHover: new Set(),
@@ -181,6 +184,7 @@ export class LabView {
       this.lightGizmos.group,
       this.cameraScreen.rig,
       this.distribution.group,
+      this.labCase.group,
       this.selection.outline,
       this.selection.helper,
     );
@@ -343,6 +347,7 @@ export class LabView {
       this.lightGizmos.group,
       this.cameraScreen.rig,
       this.distribution.group,
+      this.labCase.group,
       this.selection.outline,
       this.selection.helper,
     ];
@@ -399,6 +404,7 @@ export class LabView {
     this.lightGizmos.dispose();
     this.cameraScreen.dispose();
     this.distribution.dispose();
+    this.labCase.dispose();
     this.grid.dispose();
     this.drawing.dispose();
   }

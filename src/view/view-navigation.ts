@@ -128,6 +128,14 @@ export class ViewNavigation {
     this.flight.glide(framingPoseAbove(points, VIEW_FOV, this.camera.aspect, direction, this.visibleShare()));
   }
 
+  /** Glides to where every one of `points` fits the view, looking from where the view looks now. */
+  showPoints(points: readonly Vec3[]): void {
+    if (points.length === 0) return;
+    const pose = this.controls.pose;
+    const direction = pose.position.clone().sub(pose.target).normalize();
+    this.flight.glide(framingPoseAbove(points, VIEW_FOV, this.camera.aspect, direction, this.visibleShare()));
+  }
+
   /** How much of the canvas's bottom (CSS px) panels over the view cover: framing fits what it shows into the part above. */
   setCoveredBottom(px: number): void {
     this.coveredBottom = Math.max(0, px);

@@ -65,6 +65,7 @@ const attempts: TaskAttempt[] = [
     quizChoice: null,
     explanationOpens: 8,
     challenge: { renders: 21, changes: 22, rays: 23, scores: [24, 25.5], stars: 3 },
+    code: { runs: 31, passed: 32, total: 33, failing: ['sphere-behind', null], solved: true },
   },
   {
     level: '02-shadows',

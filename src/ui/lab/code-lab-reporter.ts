@@ -1,9 +1,14 @@
 import type { Store } from '../../lab-state/store.ts';
+import type { LabView } from '../../view/lab-view.ts';
 import type { CodeLabHost } from '../game/code-lab/code-lab-host.ts';
 
-/** The lab's side of a code lab: each graded run goes to the store as code.graded, where the quest engine checks the goal. */
-export function codeLabReporter(store: () => Store): CodeLabHost {
+/**
+ * The lab's side of a code lab: each graded run goes to the store as code.graded, where the
+ * quest engine checks the goal; a failing case is drawn in the lab's 3D view (when it has one).
+ */
+export function codeLabReporter(store: () => Store, view: () => Pick<LabView, 'labCase'> | null): CodeLabHost {
   return {
     graded: ({ lab, passed, total, failed }) => store().dispatch({ type: 'code.graded', lab, passed, total, failed }),
+    showCase: (drawing) => view()?.labCase.show(drawing),
   };
 }

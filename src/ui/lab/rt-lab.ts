@@ -100,7 +100,7 @@ export class RtLab extends LocalizedElement {
     this.sharedScene = null;
     this.services = this.createServices();
     this.storeProvider = new ContextProvider(this, { context: storeContext, initialValue: this.services.store });
-    providePictures(this, () => ({ services: this.services, levelScene: this.level()?.scene }));
+    providePictures(this, () => ({ services: this.services, levelScene: this.level()?.scene, view: this.labView() }));
     new GuideHostController(this);
     new ViewCoverController(this, () => ({
       view: this.sceneView(),

@@ -32,6 +32,7 @@ import './rt-dashboard-times.ts';
 import '../../controls/rt-theme-toggle.ts';
 import './rt-dashboard-quiz.ts';
 import './rt-dashboard-challenges.ts';
+import './rt-dashboard-code-labs.ts';
 import { researchDownloads, type ClassCsvKind } from './dashboard-research-files.ts';
 import { summarizeQuizzes, type QuizSummary } from '../../../classroom/dashboard-quiz.ts';
 import { keepClassMinutes } from '../teacher-minutes.ts';
@@ -314,6 +315,7 @@ export class RtDashboardPage extends LocalizedElement {
       <rt-dashboard-completion .rows=${rows} caption=${msg(str`Completion per task in ${title}`)}></rt-dashboard-completion>
       ${this.renderQuizzes(level.level, title)}
       <rt-dashboard-challenges .records=${this.shown} level=${level.level} .taskName=${(task: string) => names.task(level.level, task)}></rt-dashboard-challenges>
+      <rt-dashboard-code-labs .records=${this.shown} level=${level.level} .taskName=${(task: string) => names.task(level.level, task)}></rt-dashboard-code-labs>
       <h3>${msg('Where students got stuck')}</h3>
       <p class="rule">${stuckRule()}</p>
       <rt-dashboard-stuck

@@ -6,6 +6,8 @@ import type { CodeGoal } from '../../../quest/code-labs/code-goal.ts';
 import { gradeLab, type LabReport, type Tolerance } from '../../../quest/code-labs/code-lab-grading.ts';
 import { gradeSamples, sampleTally, type RandomRun, type StatisticsReport } from '../../../quest/code-labs/code-lab-statistics.ts';
 import { labCases } from '../../../quest/code-labs/lab-cases.ts';
+import { drawFailingCase } from '../../../quest/code-labs/lab-drawings.ts';
+import { CASE_MARK_COLORS } from '../../../quest/code-labs/case-drawing.ts';
 import { LOCALES, localize, type Locale } from '../../../quest/localized-text.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
 import { gameStyles, taskPanelStyles } from '../game-styles.ts';
@@ -89,6 +91,8 @@ export class RtCodeLab extends LocalizedElement {
   }
 
   override disconnectedCallback(): void {
+    // The case belongs to this task: another task, or none, leaves the view to itself.
+    this.host.value?.showCase(null);
     super.disconnectedCallback();
     this.sandbox.close();
     this.editor?.destroy();
@@ -96,7 +100,16 @@ export class RtCodeLab extends LocalizedElement {
   }
 
   protected override willUpdate(changed: PropertyValues): void {
-    if (changed.has('goal') && this.goal) this.state = lastRuns.get(this.goal.code.lab) ?? { kind: 'idle' };
+    if (changed.has('goal') && this.goal) {
+      this.state = lastRuns.get(this.goal.code.lab) ?? { kind: 'idle' };
+      this.drawCase(this.goal);
+    }
+  }
+
+  /** The last run's first failing case in the 3D view, or none (it passed, gave no answers, or there was no run). */
+  private drawCase(goal: CodeGoal): void {
+    const failure = this.state.kind === 'graded' ? this.state.report.firstFailure : null;
+    this.host.value?.showCase(failure ? drawFailingCase(goal, failure) : null);
   }
 
   protected override updated(changed: PropertyValues): void {
@@ -194,10 +207,20 @@ export class RtCodeLab extends LocalizedElement {
             <strong>${msg(str`First failing case: case ${failure.index + 1}, ${caseKindName(failure.labCase.kind)}.`)}</strong><br />
             <code>${caseInput(code.signature, failure.labCase.args)}</code><br />
             ${failureText(failure, code.lab, tolerance)}
-          </p>`
+          </p>
+          ${this.legend()}`
           : nothing
       }
     `;
+  }
+
+  /** What the 3D view shows of the failing case, with the two answers' colours and shapes. */
+  private legend() {
+    const swatch = (mark: 'expected' | 'got', shape: string) => html`<span aria-hidden="true" style="color: ${CASE_MARK_COLORS[mark]}">${shape}</span>`;
+    return html`<p class="legend">
+      ${msg('Drawn in the 3D view: the case’s ray and object;')} ${swatch('expected', '●')} ${msg('expected: the tracer’s answer;')} ${swatch('got', '◆')}
+      ${msg('got: your function’s answer.')}
+    </p>`;
   }
 
   private async run(goal: CodeGoal): Promise<void> {
@@ -214,6 +237,7 @@ export class RtCodeLab extends LocalizedElement {
     if (result.kind !== 'ran') {
       this.state = result;
       lastRuns.set(goal.code.lab, result);
+      this.drawCase(goal);
       return;
     }
     if (grading.kind === 'statistics') {
@@ -227,6 +251,7 @@ export class RtCodeLab extends LocalizedElement {
     const report = gradeLab(grading.cases, result.outcomes, tolerance);
     this.state = { kind: 'graded', report, tolerance };
     lastRuns.set(goal.code.lab, this.state);
+    this.drawCase(goal);
     const failure = report.firstFailure;
     this.host.value?.graded({ lab: goal.code.lab, passed: report.passed, total: report.total, failed: failure?.labCase.kind ?? null });
   }
