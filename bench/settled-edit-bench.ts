@@ -38,7 +38,7 @@ function freeLabLargest(shininess: number): Scene {
   };
 }
 
-type Tracer = Pick<ScreenTracer, 'setBudget' | 'update' | 'subscribe' | 'dispose'>;
+type Tracer = Pick<ScreenTracer, 'setBudget' | 'update' | 'subscribe' | 'dispose' | 'onError'>;
 type TracerClass = new (pool: RenderPool, loadMeshes: (names: string[]) => Promise<MeshLibrary>) => Tracer;
 
 function published(tracer: Tracer, scene: Scene): Promise<ScreenRays> {
@@ -55,9 +55,14 @@ const pause = (ms: number) => new Promise((done) => setTimeout(done, ms));
 const budget = { rays: EDIT_RAY_BUDGET, keepPixel: null };
 let shininess = 10;
 
-/** One edit `delay` ms into the settled screen: ms from the edit to its screen. */
-async function editDuringSettled(Tracer: TracerClass, pool: RenderPool, delay: number): Promise<number> {
+/** A run whose edit's screen had not come after this long counts as this long; its errors are said. */
+const GIVE_UP_MS = 30_000;
+
+/** One edit `delay` ms into the settled screen: ms from the edit to its screen, and the errors meanwhile. */
+async function editDuringSettled(Tracer: TracerClass, pool: RenderPool, delay: number): Promise<{ ms: number; errors: string[] }> {
   const tracer = new Tracer(pool, () => Promise.resolve(new Map()));
+  const errors: string[] = [];
+  tracer.onError = (error) => errors.push(error.message);
   try {
     const before = freeLabLargest(shininess++);
     tracer.setBudget(budget);
@@ -71,8 +76,8 @@ async function editDuringSettled(Tracer: TracerClass, pool: RenderPool, delay: n
     const shown = published(tracer, edited);
     tracer.setBudget(budget);
     tracer.update(edited);
-    await shown;
-    return performance.now() - start;
+    await Promise.race([shown, pause(GIVE_UP_MS)]);
+    return { ms: Math.min(GIVE_UP_MS, performance.now() - start), errors };
   } finally {
     tracer.dispose();
     // Whatever the worker still does for the disposed tracer ends before the next run.
@@ -91,9 +96,9 @@ for (let pair = 0; pair < pairs; pair++) {
   const order = pair % 2 === 0 ? variants : [...variants].reverse();
   const line: string[] = [];
   for (const [name, Tracer, pool] of order) {
-    const ms = await editDuringSettled(Tracer, pool, delay);
+    const { ms, errors } = await editDuringSettled(Tracer, pool, delay);
     times.get(name)!.push(ms);
-    line.push(`${name}: ${ms.toFixed(0)} ms`);
+    line.push(`${name}: ${ms >= GIVE_UP_MS ? 'not shown in 30 s' : `${ms.toFixed(0)} ms`}${errors.length > 0 ? ` (${errors.join('; ')})` : ''}`);
   }
   console.log(`pair ${pair + 1}, edit ${delay} ms into the settled screen: ${line.join(', ')}`);
 }
