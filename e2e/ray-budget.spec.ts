@@ -105,6 +105,13 @@ test('with the free lab’s largest settings the view draws a budget of the rays
   ])
     await typeInto(page, label, value);
   const note = page.getByTestId('ray-thinning');
+  // The rays of the last setting typed: a screen of the ones before has more than 20,000 too.
+  await expect
+    .poll(() => view.evaluate((element) => (element as unknown as { labView: { probes: ViewProbes } }).labView.probes.drawnRaysScene?.settings.timeSamples), {
+      message: 'the rays of the last setting are drawn',
+      timeout: 60_000,
+    })
+    .toBe(4);
   // Every ray of the heavy screen, once the edits have stopped.
   await expect.poll(() => drawnRays(page), { message: 'the whole screen is drawn once the settings are in', timeout: 60_000 }).toBeGreaterThan(20_000);
   await expect(note).toBeEmpty();

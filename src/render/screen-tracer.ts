@@ -7,6 +7,7 @@ import type { InlineScreenTracer } from './inline-screen-tracer.ts';
 import { DEFAULT_SEED } from './render-job.ts';
 import type { RenderPool } from './render-pool.ts';
 import type { ScreenRays } from './screen-rays.ts';
+import { settledSlices } from './settled-slices.ts';
 import type { RayBudget } from '../../workers/protocol.ts';
 
 /**
@@ -45,6 +46,10 @@ export type ScreenRaysListener = (rays: ScreenRays) => void;
  *   replacement cost up to 2 traces plus the dropped one's lost pixels during a drag (p95
  *   131–195 ms against the ≤ 100 ms goal in the slider benchmark). A worker's screen that
  *   comes back after a newer scene was traced inline is not published.
+ * - Except the full screen traced once a budget ends (setBudget): it goes in slices, one
+ *   request at a time (settled-slices.ts), and a newer scene or budget stops it between two
+ *   slices, unpublished; the edit that brought it turns the budget on again, so the full
+ *   screen would only be thinned again. Finished, it is the screen traced in one go, to the bit.
  *
  * The pool is the caller's: give the tracer its own (one worker is enough, e.g.
  * `createBrowserRenderPool(1)`), so traces never wait behind a full render's tiles, and
@@ -72,6 +77,8 @@ export class ScreenTracer {
   private budget: RayBudget | null = null;
   /** The budget the last trace in the worker was started with. */
   private startedWith: RayBudget | null = null;
+  /** Whether a budget was ever set: a full trace is then the settled screen, made in slices. */
+  private budgeted = false;
 
   constructor(
     private readonly pool: ScreenTracePool,
@@ -119,6 +126,7 @@ export class ScreenTracer {
   setBudget(budget: RayBudget | null): void {
     if (sameBudget(budget, this.budget)) return;
     this.budget = budget;
+    if (budget) this.budgeted = true;
     const scene = this.scene;
     if (!scene || this.disposed || this.startedWith === null || sameBudget(budget, this.startedWith)) return;
     this.pending = { scene, update: ++this.updates };
@@ -195,13 +203,18 @@ export class ScreenTracer {
       const [columns, rows] = scene.camera.pixels;
       const traces = new Array<PixelTrace>(columns * rows);
       const budget = (this.startedWith = this.budget);
+      const settled = budget === null && this.budgeted;
+      // Request sizes, in screen order: the settled screen's slices, or blocks of PIXELS_PER_REQUEST.
+      const sizes = settled ? settledSlices(scene, this.latest, PIXELS_PER_REQUEST) : [];
+      // Only the settled screen gives way, between slices, to what came after it.
+      const overtaken = () => settled && this.pending !== null;
       let next = 0;
       let failed = false;
       // REQUESTS_IN_FLIGHT lanes, each requesting the next block of pixels when its last one is back.
       const lane = async () => {
-        while (next < traces.length && !this.disposed && !failed) {
+        while (next < traces.length && !this.disposed && !failed && !overtaken()) {
           const first = next;
-          const count = Math.min(PIXELS_PER_REQUEST, traces.length - first);
+          const count = Math.min(sizes.shift() ?? PIXELS_PER_REQUEST, traces.length - first);
           next += count;
           try {
             const share = budget && { rays: Math.ceil((budget.rays * count) / traces.length), keepPixel: budget.keepPixel };
@@ -213,8 +226,10 @@ export class ScreenTracer {
           }
         }
       };
-      await Promise.all(Array.from({ length: Math.min(REQUESTS_IN_FLIGHT, Math.ceil(traces.length / PIXELS_PER_REQUEST)) }, lane));
-      if (this.disposed) return;
+      // A slice at a time: what overtakes the settled screen waits for one slice at most.
+      const lanes = settled ? 1 : Math.min(REQUESTS_IN_FLIGHT, Math.ceil(traces.length / PIXELS_PER_REQUEST));
+      await Promise.all(Array.from({ length: lanes }, lane));
+      if (this.disposed || overtaken()) return;
       rays = { columns, rows, traces, scene };
     } catch (error) {
       // Not for a scene already replaced: a newer one is waiting or was traced.
