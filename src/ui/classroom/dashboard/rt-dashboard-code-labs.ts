@@ -1,9 +1,9 @@
 import { msg } from '@lit/localize';
-import { css, html, nothing } from 'lit';
+import { html, nothing } from 'lit';
 import { summarizeCodeLabs } from '../../../classroom/dashboard-code-labs.ts';
 import type { ClassRecord } from '../../../classroom/dashboard-record.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
-import { tableStyles } from './rt-dashboard-chart-styles.ts';
+import { namedRowsTableStyles, tableStyles } from './rt-dashboard-chart-styles.ts';
 
 /**
  * @summary What the class made of a level's code labs (classroom/dashboard-code-labs.ts): per
@@ -13,18 +13,7 @@ import { tableStyles } from './rt-dashboard-chart-styles.ts';
  */
 export class RtDashboardCodeLabs extends LocalizedElement {
   static override properties = { records: { attribute: false }, level: {}, taskName: { attribute: false } };
-  static override styles = [
-    tableStyles,
-    css`
-      table {
-        width: 100%;
-      }
-      th:first-child {
-        text-align: left;
-        font-weight: normal;
-      }
-    `,
-  ];
+  static override styles = [tableStyles, namedRowsTableStyles];
 
   declare records: readonly ClassRecord[];
   declare level: string;
