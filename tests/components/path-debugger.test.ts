@@ -10,21 +10,13 @@ import type { LabAction } from '../../src/lab-state/lab-action.ts';
 import { labPaths } from '../../src/tracer/lab-paths.ts';
 import type { RayFocus } from '../../src/view/ray-focus.ts';
 import '../../src/ui/lab/debugger/rt-path-debugger.ts';
-import { matte, sceneFrom, tracerSceneFrom } from '../support/test-scene.ts';
+import { PATH_BALL_SCENE_FILE, pathBallScene } from '../support/path-ball-scene.ts';
+import { sceneFrom } from '../support/test-scene.ts';
 import { mount, unmountAll } from './mount.ts';
 
 afterEach(unmountAll);
 
-const file = {
-  camera: { position: [0, 1, 3.5], target: [0, 0.5, 0], fov: 45, pixels: [4, 4] },
-  settings: { integrator: 'path', background: [0.2, 0.2, 0.2], maxDepth: 4, pathSamples: 16 },
-  objects: [
-    { id: 'floor', shape: 'plane', scale: [3, 1, 3], material: matte([0.7, 0.7, 0.7]) },
-    { id: 'ball', shape: 'sphere', position: [0, 0.5, 0], scale: [0.5, 0.5, 0.5], material: matte([0.8, 0.3, 0.3]) },
-  ],
-  lights: [{ id: 'panel', type: 'area', position: [0, 2, 0], size: [0.5, 0.5], color: [1, 1, 1], intensity: 5, samples: 1 }],
-};
-const paths = labPaths(tracerSceneFrom(file), 2, 2, 1);
+const paths = labPaths(pathBallScene(), 2, 2, 1);
 
 async function debuggerOnPixel() {
   const focuses: (RayFocus | null)[] = [];
@@ -32,7 +24,7 @@ async function debuggerOnPixel() {
   let traced!: () => void;
   const tracing = new Promise<void>((resolve) => (traced = resolve));
   const element = await mount('rt-path-debugger', {
-    settings: sceneFrom(file).settings,
+    settings: sceneFrom(PATH_BALL_SCENE_FILE).settings,
     tracePaths: async () => {
       traced();
       return paths;

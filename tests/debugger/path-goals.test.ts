@@ -1,17 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { findPathVertex, pathRayOf } from '../../src/debugger/path-goals.ts';
 import { labPaths } from '../../src/tracer/lab-paths.ts';
-import { matte, tracerSceneFrom } from '../support/test-scene.ts';
+import { pathBallScene } from '../support/path-ball-scene.ts';
 
-const scene = tracerSceneFrom({
-  camera: { position: [0, 1, 3.5], target: [0, 0.5, 0], fov: 45, pixels: [4, 4] },
-  settings: { integrator: 'path', background: [0.2, 0.2, 0.2], maxDepth: 4, pathSamples: 16 },
-  objects: [
-    { id: 'floor', shape: 'plane', scale: [3, 1, 3], material: matte([0.7, 0.7, 0.7]) },
-    { id: 'ball', shape: 'sphere', position: [0, 0.5, 0], scale: [0.5, 0.5, 0.5], material: matte([0.8, 0.3, 0.3]) },
-  ],
-  lights: [{ id: 'panel', type: 'area', position: [0, 2, 0], size: [0.5, 0.5], color: [1, 1, 1], intensity: 5, samples: 1 }],
-});
+const scene = pathBallScene();
 
 describe('the path debugger’s steps as the quest engine sees them', () => {
   it('reports no ray at the camera, then the ray that arrived at each vertex', () => {

@@ -6,17 +6,9 @@ import { LOBE_SIZE } from '../../src/view/sampling-lobe.ts';
 import { RAY_COLOR_KEY_INDEX } from '../../src/view/ray-palette.ts';
 import { focusedRays } from '../../src/view/ray-focus.ts';
 import { DEFAULT_RAY_VIEW } from '../../src/lab-state/lab-state.ts';
-import { matte, tracerSceneFrom } from '../support/test-scene.ts';
+import { pathBallScene } from '../support/path-ball-scene.ts';
 
-const scene = tracerSceneFrom({
-  camera: { position: [0, 1, 3.5], target: [0, 0.5, 0], fov: 45, pixels: [4, 4] },
-  settings: { integrator: 'path', background: [0.2, 0.2, 0.2], maxDepth: 4, pathSamples: 16 },
-  objects: [
-    { id: 'floor', shape: 'plane', scale: [3, 1, 3], material: matte([0.7, 0.7, 0.7]) },
-    { id: 'ball', shape: 'sphere', position: [0, 0.5, 0], scale: [0.5, 0.5, 0.5], material: matte([0.8, 0.3, 0.3]) },
-  ],
-  lights: [{ id: 'panel', type: 'area', position: [0, 2, 0], size: [0.5, 0.5], color: [1, 1, 1], intensity: 5, samples: 1 }],
-});
+const scene = pathBallScene();
 const paths = labPaths(scene, 2, 2, 1, 5);
 const rows = paths.paths.map((path) => pathRows(path, { russianRoulette: false }));
 const trees = pathTrees(
