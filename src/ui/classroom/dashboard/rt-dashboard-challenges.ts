@@ -1,9 +1,8 @@
 import { msg, str } from '@lit/localize';
 import { html, nothing } from 'lit';
 import { reachedMatch, summarizeChallenges } from '../../../classroom/dashboard-challenges.ts';
-import type { ClassRecord } from '../../../classroom/dashboard-record.ts';
 import { MATCH_SCORE } from '../../../quest/challenge-closeness.ts';
-import { LocalizedElement } from '../../controls/localized-element.ts';
+import { LevelTableElement } from './level-table-element.ts';
 import { namedRowsTableStyles, tableStyles } from './rt-dashboard-chart-styles.ts';
 
 /**
@@ -12,21 +11,8 @@ import { namedRowsTableStyles, tableStyles } from './rt-dashboard-chart-styles.t
  * matched it themselves with how many stars, and the last score of those who stopped
  * without a match. Nothing when the level has no challenge anyone rendered in.
  */
-export class RtDashboardChallenges extends LocalizedElement {
-  static override properties = { records: { attribute: false }, level: {}, taskName: { attribute: false } };
+export class RtDashboardChallenges extends LevelTableElement {
   static override styles = [tableStyles, namedRowsTableStyles];
-
-  declare records: readonly ClassRecord[];
-  declare level: string;
-  /** A task's title in the page's language, from its id (the id itself when none is given). */
-  declare taskName: (task: string) => string;
-
-  constructor() {
-    super();
-    this.records = [];
-    this.level = '';
-    this.taskName = (task) => task;
-  }
 
   override render() {
     const challenges = summarizeChallenges(this.records).filter((challenge) => challenge.level === this.level);

@@ -1,8 +1,7 @@
 import { msg } from '@lit/localize';
 import { html, nothing } from 'lit';
 import { summarizeCodeLabs } from '../../../classroom/dashboard-code-labs.ts';
-import type { ClassRecord } from '../../../classroom/dashboard-record.ts';
-import { LocalizedElement } from '../../controls/localized-element.ts';
+import { LevelTableElement } from './level-table-element.ts';
 import { namedRowsTableStyles, tableStyles } from './rt-dashboard-chart-styles.ts';
 
 /**
@@ -11,21 +10,8 @@ import { namedRowsTableStyles, tableStyles } from './rt-dashboard-chart-styles.t
  * often (the misconceptions), with the runs each was first to fail in. Nothing when no
  * student ran a code lab of the level.
  */
-export class RtDashboardCodeLabs extends LocalizedElement {
-  static override properties = { records: { attribute: false }, level: {}, taskName: { attribute: false } };
+export class RtDashboardCodeLabs extends LevelTableElement {
   static override styles = [tableStyles, namedRowsTableStyles];
-
-  declare records: readonly ClassRecord[];
-  declare level: string;
-  /** A task's title in the page's language, from its id (the id itself when none is given). */
-  declare taskName: (task: string) => string;
-
-  constructor() {
-    super();
-    this.records = [];
-    this.level = '';
-    this.taskName = (task) => task;
-  }
 
   override render() {
     const labs = summarizeCodeLabs(this.records).filter((lab) => lab.level === this.level);
