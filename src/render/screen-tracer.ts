@@ -26,6 +26,16 @@ export const PIXELS_PER_REQUEST = 64;
  */
 export const REQUESTS_IN_FLIGHT = 4;
 
+/**
+ * How many times a screen trace asks again for a block whose request failed, while that
+ * screen is still the newest (no other scene or budget came since). The pool fails a worker's
+ * requests when it replaces the worker, dead or silent past its deadline (render-pool.ts);
+ * under load a budgeted block once outlasted that deadline, and the view kept its thinned
+ * screen for good (docs/benchmark-log.md, "The settled screen in slices"). Bounded, so a
+ * scene that fails every worker is still reported, after at most this many tries more.
+ */
+export const TRACE_RETRIES = 2;
+
 /** What the tracer needs of a RenderPool (a test can pass a fake). */
 export type ScreenTracePool = Pick<RenderPool, 'setScene' | 'tracePixel' | 'tracePixels' | 'tracePaths'>;
 
@@ -50,6 +60,8 @@ export type ScreenRaysListener = (rays: ScreenRays) => void;
  *   request at a time (settled-slices.ts), and a newer scene or budget stops it between two
  *   slices, unpublished; the edit that brought it turns the budget on again, so the full
  *   screen would only be thinned again. Finished, it is the screen traced in one go, to the bit.
+ * - A block whose request fails (the pool replaced its worker) is asked again, TRACE_RETRIES
+ *   times at most per screen, while that screen is the newest; then the failure is reported.
  *
  * The pool is the caller's: give the tracer its own (one worker is enough, e.g.
  * `createBrowserRenderPool(1)`), so traces never wait behind a full render's tiles, and
@@ -210,19 +222,28 @@ export class ScreenTracer {
       const overtaken = () => settled && this.pending !== null;
       let next = 0;
       let failed = false;
+      let retriesLeft = TRACE_RETRIES;
+      // Only while nothing newer waits: a newer scene or budget is traced instead.
+      const mayRetry = () => retriesLeft > 0 && !failed && !this.disposed && update === this.updates;
       // REQUESTS_IN_FLIGHT lanes, each requesting the next block of pixels when its last one is back.
       const lane = async () => {
         while (next < traces.length && !this.disposed && !failed && !overtaken()) {
           const first = next;
           const count = Math.min(sizes.shift() ?? PIXELS_PER_REQUEST, traces.length - first);
           next += count;
-          try {
-            const share = budget && { rays: Math.ceil((budget.rays * count) / traces.length), keepPixel: budget.keepPixel };
-            const block = await this.pool.tracePixels(first, count, DEFAULT_SEED, share ?? undefined);
-            for (let i = 0; i < count; i++) traces[first + i] = block[i];
-          } catch (error) {
-            failed = true;
-            throw error;
+          const share = budget && { rays: Math.ceil((budget.rays * count) / traces.length), keepPixel: budget.keepPixel };
+          for (;;) {
+            try {
+              const block = await this.pool.tracePixels(first, count, DEFAULT_SEED, share ?? undefined);
+              for (let i = 0; i < count; i++) traces[first + i] = block[i];
+              break;
+            } catch (error) {
+              if (!mayRetry()) {
+                failed = true;
+                throw error;
+              }
+              retriesLeft--; // the same block again, of the pool's replacement worker
+            }
           }
         }
       };

@@ -4,7 +4,7 @@ import { DEFAULT_SEED } from '../../src/render/render-job.ts';
 import { RenderPool } from '../../src/render/render-pool.ts';
 import type { ScreenRays } from '../../src/render/screen-rays.ts';
 import { InlineScreenTracer } from '../../src/render/inline-screen-tracer.ts';
-import { PIXELS_PER_REQUEST, REQUESTS_IN_FLIGHT, ScreenTracer, type ScreenTracePool } from '../../src/render/screen-tracer.ts';
+import { PIXELS_PER_REQUEST, REQUESTS_IN_FLIGHT, ScreenTracer, TRACE_RETRIES, type ScreenTracePool } from '../../src/render/screen-tracer.ts';
 import { createNodeRenderPool, createNodeWorkerPort } from '../../src/cli/node-worker-port.ts';
 import { loadMeshesFromDisk } from '../../src/scene/load-meshes-node.ts';
 import type { MeshLibrary } from '../../src/scene/mesh-data.ts';
@@ -209,17 +209,22 @@ describe('ScreenTracer (fake pool)', () => {
     ]);
   });
 
-  it('reports a failed trace to onError once, and publishes nothing for that scene', async () => {
+  it('reports a trace that fails past its retries to onError once, and publishes nothing for that scene', async () => {
     // Twice as many blocks as may be in flight: none is asked for after the failure.
     tracer.update(sceneWithPixels(16, (2 * REQUESTS_IN_FLIGHT * PIXELS_PER_REQUEST) / 16));
     await vi.advanceTimersByTimeAsync(0);
-    const [first, second] = [...pool.pending];
-    first.reject(new Error('worker died'));
-    second.reject(new Error('worker died again'));
+    // Each failure is asked again until the screen's TRACE_RETRIES are spent.
+    for (let failure = 0; failure <= TRACE_RETRIES; failure++) {
+      const [block] = [...pool.pending];
+      block.reject(new Error(`worker died ${failure}`));
+      await vi.advanceTimersByTimeAsync(0);
+    }
+    const [other] = [...pool.pending];
+    other.reject(new Error('worker died again'));
     await vi.advanceTimersByTimeAsync(0);
     await pool.answerAll();
-    expect(errors.map((error) => error.message)).toEqual(['worker died']);
-    expect(pool.requests).toHaveLength(REQUESTS_IN_FLIGHT);
+    expect(errors.map((error) => error.message)).toEqual([`worker died ${TRACE_RETRIES}`]);
+    expect(pool.requests).toHaveLength(REQUESTS_IN_FLIGHT + TRACE_RETRIES);
     expect(published).toEqual([]);
   });
 
