@@ -89,7 +89,8 @@ export class CaseOverlay {
     for (const segment of drawing.segments) {
       const from = new Vector3(segment.from.x, segment.from.y, segment.from.z);
       const to = new Vector3(segment.to.x, segment.to.y, segment.to.z);
-      const material = this.own(new MeshBasicMaterial({ color: colorOf(segment.mark) }));
+      // Drawn over the scene, as the points are: a mirror case's reflected ray may point into the floor, a refraction's into the glass.
+      const material = this.own(new MeshBasicMaterial({ color: colorOf(segment.mark), depthTest: false, transparent: true }));
       const length = from.distanceTo(to);
       if (length === 0) continue;
       const direction = to.clone().sub(from).divideScalar(length);
@@ -97,11 +98,13 @@ export class CaseOverlay {
       const body = new Mesh(this.own(new CylinderGeometry(size * RAY_RADIUS, size * RAY_RADIUS, length - arrow, 8)), material);
       body.position.copy(from).addScaledVector(direction, (length - arrow) / 2);
       body.quaternion.setFromUnitVectors(up, direction);
+      body.renderOrder = 9;
       this.group.add(body);
       if (arrow > 0) {
         const head = new Mesh(this.own(new ConeGeometry(arrow / 2.5, arrow, 12)), material);
         head.position.copy(to).addScaledVector(direction, -arrow / 2);
         head.quaternion.setFromUnitVectors(up, direction);
+        head.renderOrder = 9;
         this.group.add(head);
       }
     }
