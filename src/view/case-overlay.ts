@@ -1,4 +1,5 @@
 import {
+  BoxGeometry,
   ConeGeometry,
   CylinderGeometry,
   type BufferGeometry,
@@ -13,7 +14,7 @@ import {
   SphereGeometry,
   Vector3,
 } from 'three';
-import { CASE_MARK_COLORS, caseDrawingExtent, type CaseDrawing, type CaseMark } from '../quest/code-labs/case-drawing.ts';
+import { CASE_MARK_COLORS, caseDrawingExtent, type CaseDrawing, type CaseShape, type SegmentMark } from '../quest/code-labs/case-drawing.ts';
 import type { Store } from '../lab-state/store.ts';
 import type { Vec3 } from '../scene/scene.ts';
 import { paletteNameFor, rayPalette } from './ray-palette.ts';
@@ -83,11 +84,13 @@ export class CaseOverlay {
     // The case's rays in the legend's colour for a camera ray, in the palette the ray options choose.
     const rayColor = rayPalette(paletteNameFor(this.view.store.state.rays.colorBlindPalette)).primary;
     const size = caseSize(drawing);
-    const colorOf = (mark: CaseMark) => (mark === 'ray' ? rayColor : CASE_MARK_COLORS[mark]);
+    // The normal belongs to the surface: in the outlines' colour, not in one of the answers'.
+    const colorOf = (mark: SegmentMark) => (mark === 'ray' ? rayColor : mark === 'normal' ? SHAPE_LINE_COLOR : CASE_MARK_COLORS[mark]);
     for (const segment of drawing.segments) {
       const from = new Vector3(segment.from.x, segment.from.y, segment.from.z);
       const to = new Vector3(segment.to.x, segment.to.y, segment.to.z);
-      const material = this.own(new MeshBasicMaterial({ color: colorOf(segment.mark) }));
+      // Drawn over the scene, as the points are: a mirror case's reflected ray may point into the floor, a refraction's into the glass.
+      const material = this.own(new MeshBasicMaterial({ color: colorOf(segment.mark), depthTest: false, transparent: true }));
       const length = from.distanceTo(to);
       if (length === 0) continue;
       const direction = to.clone().sub(from).divideScalar(length);
@@ -95,20 +98,22 @@ export class CaseOverlay {
       const body = new Mesh(this.own(new CylinderGeometry(size * RAY_RADIUS, size * RAY_RADIUS, length - arrow, 8)), material);
       body.position.copy(from).addScaledVector(direction, (length - arrow) / 2);
       body.quaternion.setFromUnitVectors(up, direction);
+      body.renderOrder = 9;
       this.group.add(body);
       if (arrow > 0) {
         const head = new Mesh(this.own(new ConeGeometry(arrow / 2.5, arrow, 12)), material);
         head.position.copy(to).addScaledVector(direction, -arrow / 2);
         head.quaternion.setFromUnitVectors(up, direction);
+        head.renderOrder = 9;
         this.group.add(head);
       }
     }
     for (const shape of drawing.shapes) {
       // A faint skin and darker lines: seen against the floor and the scene's own objects alike.
-      const sphere = this.own(new SphereGeometry(shape.radius, 24, 12));
-      const skin = new Mesh(sphere, this.own(new MeshBasicMaterial({ color: SHAPE_COLOR, transparent: true, opacity: 0.18, depthWrite: false })));
-      const outline = new LineSegments(this.own(new EdgesGeometry(sphere, 1)), this.own(new LineBasicMaterial({ color: SHAPE_LINE_COLOR })));
-      skin.position.set(shape.center.x, shape.center.y, shape.center.z);
+      const { geometry, center } = shapeGeometry(shape);
+      const skin = new Mesh(this.own(geometry), this.own(new MeshBasicMaterial({ color: SHAPE_COLOR, transparent: true, opacity: 0.18, depthWrite: false })));
+      const outline = new LineSegments(this.own(new EdgesGeometry(geometry, 1)), this.own(new LineBasicMaterial({ color: SHAPE_LINE_COLOR })));
+      skin.position.set(center.x, center.y, center.z);
       outline.position.copy(skin.position);
       this.group.add(skin, outline);
     }
@@ -141,4 +146,14 @@ function caseSize(drawing: CaseDrawing): number {
   let size = 0;
   for (const a of points) for (const b of points) size = Math.max(size, Math.hypot(a.x - b.x, a.y - b.y, a.z - b.z));
   return size || 1;
+}
+
+/** A shape's geometry around its centre: a sphere's latitude and longitude lines, a box's twelve edges. */
+function shapeGeometry(shape: CaseShape): { geometry: BufferGeometry; center: { x: number; y: number; z: number } } {
+  if (shape.kind === 'sphere') return { geometry: new SphereGeometry(shape.radius, 24, 12), center: shape.center };
+  const { min, max } = shape;
+  return {
+    geometry: new BoxGeometry(max.x - min.x, max.y - min.y, max.z - min.z),
+    center: { x: (min.x + max.x) / 2, y: (min.y + max.y) / 2, z: (min.z + max.z) / 2 },
+  };
 }

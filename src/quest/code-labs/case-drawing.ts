@@ -1,4 +1,4 @@
-import type { Vec3 } from './code-lab-grading.ts';
+import type { LabAnswer, Vec3 } from './code-lab-grading.ts';
 
 /**
  * A failing case as the 3D view draws it (issue 43: each wrong solution "fails on a named case
@@ -8,11 +8,14 @@ import type { Vec3 } from './code-lab-grading.ts';
  */
 export type CaseMark = 'ray' | 'expected' | 'got';
 
+/** A segment is one of the case's marks, or the surface's normal at the hit (drawn as the case's objects are). */
+export type SegmentMark = CaseMark | 'normal';
+
 export interface CaseSegment {
   from: Vec3;
   to: Vec3;
-  /** `ray`: the case's own ray; `expected`/`got`: a path that only one of the two answers takes. */
-  mark: CaseMark;
+  /** `ray`: the case's own ray; `expected`/`got`: a path that only one of the two answers takes; `normal`: the surface's normal. */
+  mark: SegmentMark;
   /** An arrowhead at `to`: the ray goes on that way. */
   arrow?: boolean;
 }
@@ -23,7 +26,7 @@ export interface CasePoint {
 }
 
 /** The objects the case is about, drawn as see-through outlines so the points inside them show. */
-export type CaseShape = { kind: 'sphere'; center: Vec3; radius: number };
+export type CaseShape = { kind: 'sphere'; center: Vec3; radius: number } | { kind: 'box'; min: Vec3; max: Vec3 };
 
 export interface CaseDrawing {
   segments: CaseSegment[];
@@ -33,10 +36,14 @@ export interface CaseDrawing {
 
 /** Every point a view must fit to show the whole case: the segments' ends, the points, the shapes' bounding boxes. */
 export function caseDrawingExtent(drawing: CaseDrawing): Vec3[] {
-  const corners = drawing.shapes.flatMap(({ center: c, radius: r }) => [
-    { x: c.x - r, y: c.y - r, z: c.z - r },
-    { x: c.x + r, y: c.y + r, z: c.z + r },
-  ]);
+  const corners = drawing.shapes.flatMap((shape) => {
+    if (shape.kind === 'box') return [shape.min, shape.max];
+    const { center: c, radius: r } = shape;
+    return [
+      { x: c.x - r, y: c.y - r, z: c.z - r },
+      { x: c.x + r, y: c.y + r, z: c.z + r },
+    ];
+  });
   return [...drawing.segments.flatMap((segment) => [segment.from, segment.to]), ...drawing.points.map((point) => point.at), ...corners];
 }
 
@@ -47,3 +54,64 @@ export function caseDrawingExtent(drawing: CaseDrawing): Vec3[] {
  * expected point, a diamond for the learner's), so colour is never the only cue.
  */
 export const CASE_MARK_COLORS: Readonly<Record<Exclude<CaseMark, 'ray'>, string>> = { expected: '#009E73', got: '#CC79A7' };
+
+const along = (origin: Vec3, direction: Vec3, t: number): Vec3 => ({
+  x: origin.x + t * direction.x,
+  y: origin.y + t * direction.y,
+  z: origin.z + t * direction.z,
+});
+
+/**
+ * A ray-and-object case (ray–sphere, ray–box): the ray from its origin on to `reach`, the
+ * tracer's hit (expected) and the learner's (got), each where its t puts it on the ray. A
+ * negative t the learner returned lies behind the origin: a `got` segment leads back to it,
+ * so that "t < 0 accepted" is seen as a hit behind the ray's start.
+ */
+export function drawHitsOnRay(origin: Vec3, direction: Vec3, reach: number, expected: number | null, got: number | null, shapes: CaseShape[]): CaseDrawing {
+  const drawing: CaseDrawing = { segments: [{ from: origin, to: along(origin, direction, reach), mark: 'ray', arrow: true }], points: [], shapes };
+  if (expected !== null) drawing.points.push({ at: along(origin, direction, expected), mark: 'expected' });
+  if (got !== null) {
+    drawing.points.push({ at: along(origin, direction, got), mark: 'got' });
+    if (got < 0) drawing.segments.push({ from: origin, to: along(origin, direction, got), mark: 'got' });
+  }
+  return drawing;
+}
+
+/** This kind of lab's answers are distances t (or null): anything else has no place on the ray. */
+export const distanceOf = (answer: LabAnswer): number | null => (typeof answer === 'number' ? answer : null);
+
+const HIT: Vec3 = { x: 0, y: 0, z: 0 };
+/** A learner's vector longer than this (in units of the unit directions) is drawn this long, so a wild answer does not shrink the rest out of sight. */
+const LONGEST_GOT = 2;
+
+/**
+ * A direction case (mirror, refraction), drawn at a hit point at the origin: the incoming
+ * direction d as a ray of length 1 arriving there, the surface's normal from `normal[0]` to
+ * `normal[1]`, and from the hit the tracer's outgoing direction (expected) and the learner's
+ * (got), each as an arrow with its mark's point at the tip. An answer that is null (no
+ * refracted ray) is not drawn; a learner's vector is drawn as long as they made it (up to
+ * LONGEST_GOT), so a direction of the wrong length shows as one.
+ */
+export function drawDirectionsAtHit(d: Vec3, normal: [Vec3, Vec3], expected: LabAnswer, got: LabAnswer): CaseDrawing {
+  const drawing: CaseDrawing = {
+    segments: [
+      { from: along(HIT, d, -1), to: HIT, mark: 'ray', arrow: true },
+      { from: normal[0], to: normal[1], mark: 'normal' },
+    ],
+    points: [],
+    shapes: [],
+  };
+  const outgoing = (answer: LabAnswer, mark: 'expected' | 'got') => {
+    if (!isVector(answer)) return;
+    const length = Math.hypot(answer.x, answer.y, answer.z);
+    if (length === 0) return;
+    const tip = along(HIT, answer, Math.min(1, LONGEST_GOT / length));
+    drawing.segments.push({ from: HIT, to: tip, mark, arrow: true });
+    drawing.points.push({ at: tip, mark });
+  };
+  outgoing(expected, 'expected');
+  outgoing(got, 'got');
+  return drawing;
+}
+
+const isVector = (answer: LabAnswer): answer is Vec3 => answer !== null && typeof answer === 'object' && 'x' in answer;

@@ -1,7 +1,10 @@
 import type { CaseDrawing } from './case-drawing.ts';
 import type { CodeGoal } from './code-goal.ts';
 import type { CaseFailure, LabCase } from './code-lab-grading.ts';
+import { drawMirrorCase } from './mirror-lab.ts';
+import { drawRayBoxCase } from './ray-box-lab.ts';
 import { drawRaySphereCase } from './ray-sphere-lab.ts';
+import { drawRefractionCase } from './refraction-lab.ts';
 
 /** A lab's hook for the 3D view: its failing case as rays, points and shapes (case-drawing.ts). */
 export type CaseDrawer = (labCase: LabCase, failure: CaseFailure | null) => CaseDrawing;
@@ -12,6 +15,9 @@ export type CaseDrawer = (labCase: LabCase, failure: CaseFailure | null) => Case
  */
 const DRAWERS: Partial<Record<CodeGoal['code']['lab'], CaseDrawer>> = {
   'ray-sphere': drawRaySphereCase,
+  mirror: drawMirrorCase,
+  refraction: drawRefractionCase,
+  'ray-box': drawRayBoxCase,
 };
 
 /** The first failing case of a run drawn as its lab draws it, or null when the lab draws none. */

@@ -1,7 +1,8 @@
 import { Vector3 } from 'three';
 import { reflect } from '../../tracer/fresnel.ts';
 import { RandomStream } from '../../tracer/sampler.ts';
-import type { LabCase, Tolerance, Vec3 } from './code-lab-grading.ts';
+import { drawDirectionsAtHit, type CaseDrawing } from './case-drawing.ts';
+import type { CaseFailure, LabCase, Tolerance, Vec3 } from './code-lab-grading.ts';
 import { dot, randomDirection, scaled, unit, v } from './lab-vectors.ts';
 import type { MirrorEdge } from './mirror-edges.ts';
 
@@ -52,4 +53,13 @@ export function mirrorCases(edges: readonly MirrorEdge[], count: number, seed: n
   const random = new RandomStream().reset(seed);
   const named = edges.map((kind): LabCase => ({ kind, args: EDGE_CASES[kind], expected: tracerReflect(...EDGE_CASES[kind]) }));
   return [...named, ...Array.from({ length: count }, () => randomCase(random))];
+}
+
+/**
+ * How a failing mirror case looks in 3D: d arriving at the mirror, the normal n it meets,
+ * and the tracer's reflected direction beside the learner's (drawDirectionsAtHit).
+ */
+export function drawMirrorCase(labCase: LabCase, failure: CaseFailure | null): CaseDrawing {
+  const [d, n] = labCase.args as [Vec3, Vec3];
+  return drawDirectionsAtHit(d, [v(0, 0, 0), n], labCase.expected, failure ? failure.gotValue : labCase.expected);
 }

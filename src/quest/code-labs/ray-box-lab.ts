@@ -2,7 +2,8 @@ import { Vector3 } from 'three';
 import { RandomStream } from '../../tracer/sampler.ts';
 import { intersectUnitBox } from '../../tracer/shapes/box.ts';
 import { FOUND, REACH, unitSpan } from '../../tracer/shapes/unit-span.ts';
-import type { LabCase, Tolerance, Vec3 } from './code-lab-grading.ts';
+import { distanceOf, drawHitsOnRay, type CaseDrawing } from './case-drawing.ts';
+import type { CaseFailure, LabCase, Tolerance, Vec3 } from './code-lab-grading.ts';
 import type { RayBoxEdge } from './ray-box-edges.ts';
 
 /**
@@ -123,4 +124,22 @@ function ambiguous(origin: Vec3, direction: Vec3, boxMin: Vec3, boxMax: Vec3): b
 export function rayBoxCases(edges: readonly RayBoxEdge[], count: number, seed: number): LabCase[] {
   const random = new RandomStream().reset(seed);
   return [...edges.map(edgeCase), ...Array.from({ length: count }, () => randomCase(random))];
+}
+
+/**
+ * How a failing ray–box case looks in 3D: the ray from its origin, on past the box; the box
+ * as a wireframe; the tracer's hit and the learner's on the ray (drawHitsOnRay).
+ */
+export function drawRayBoxCase(labCase: LabCase, failure: CaseFailure | null): CaseDrawing {
+  const [origin, direction, min, max] = labCase.args as [Vec3, Vec3, Vec3, Vec3];
+  const expected = distanceOf(labCase.expected);
+  const got = distanceOf(failure ? failure.gotValue : labCase.expected);
+  // Far enough to pass the box's farthest corner from the origin.
+  const corner = v(
+    Math.max(Math.abs(min.x - origin.x), Math.abs(max.x - origin.x)),
+    Math.max(Math.abs(min.y - origin.y), Math.abs(max.y - origin.y)),
+    Math.max(Math.abs(min.z - origin.z), Math.abs(max.z - origin.z)),
+  );
+  const reach = Math.max(Math.hypot(corner.x, corner.y, corner.z), expected ?? 0, got ?? 0) * 1.15;
+  return drawHitsOnRay(origin, direction, reach, expected, got, [{ kind: 'box', min, max }]);
 }

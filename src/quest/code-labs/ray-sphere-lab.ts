@@ -2,8 +2,8 @@ import { Vector3 } from 'three';
 import { RandomStream } from '../../tracer/sampler.ts';
 import { intersectUnitSphere } from '../../tracer/shapes/sphere.ts';
 import { FOUND, REACH, unitSpan } from '../../tracer/shapes/unit-span.ts';
-import type { CaseDrawing } from './case-drawing.ts';
-import type { CaseFailure, LabAnswer, LabCase, Tolerance, Vec3 } from './code-lab-grading.ts';
+import { distanceOf, drawHitsOnRay, type CaseDrawing } from './case-drawing.ts';
+import type { CaseFailure, LabCase, Tolerance, Vec3 } from './code-lab-grading.ts';
 import type { RaySphereEdge } from './ray-sphere-edges.ts';
 import { randomDirection, v } from './lab-vectors.ts';
 
@@ -90,31 +90,15 @@ export function raySphereCases(edges: readonly RaySphereEdge[], count: number, s
   return [...edges.map(edgeCase), ...Array.from({ length: count }, () => randomCase(random))];
 }
 
-const along = (origin: Vec3, direction: Vec3, t: number): Vec3 => v(origin.x + t * direction.x, origin.y + t * direction.y, origin.z + t * direction.z);
-
 /**
  * How a failing ray–sphere case looks in 3D: the ray from its origin, on past the sphere; the
- * sphere; the tracer's hit (expected) and the learner's (got), each where its t puts it on
- * the ray. A negative t the learner returned lies behind the origin: a `got` segment leads
- * back to it, so that "t < 0 accepted" is seen as a hit behind the ray's start.
+ * sphere; the tracer's hit and the learner's on the ray (drawHitsOnRay).
  */
 export function drawRaySphereCase(labCase: LabCase, failure: CaseFailure | null): CaseDrawing {
   const [origin, direction, center, radius] = labCase.args as [Vec3, Vec3, Vec3, number];
-  // This lab's answers are distances t (or null): anything else has no place on the ray.
-  const distance = (answer: LabAnswer): number | null => (typeof answer === 'number' ? answer : null);
-  const expected = distance(labCase.expected);
-  const got = distance(failure ? failure.gotValue : labCase.expected);
+  const expected = distanceOf(labCase.expected);
+  const got = distanceOf(failure ? failure.gotValue : labCase.expected);
   const toCentre = Math.hypot(center.x - origin.x, center.y - origin.y, center.z - origin.z);
   const reach = Math.max(toCentre + radius, expected ?? 0, got ?? 0) * 1.15;
-  const drawing: CaseDrawing = {
-    segments: [{ from: origin, to: along(origin, direction, reach), mark: 'ray', arrow: true }],
-    points: [],
-    shapes: [{ kind: 'sphere', center, radius }],
-  };
-  if (expected !== null) drawing.points.push({ at: along(origin, direction, expected), mark: 'expected' });
-  if (got !== null) {
-    drawing.points.push({ at: along(origin, direction, got), mark: 'got' });
-    if (got < 0) drawing.segments.push({ from: origin, to: along(origin, direction, got), mark: 'got' });
-  }
-  return drawing;
+  return drawHitsOnRay(origin, direction, reach, expected, got, [{ kind: 'sphere', center, radius }]);
 }

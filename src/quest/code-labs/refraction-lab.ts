@@ -1,8 +1,9 @@
 import { Vector3 } from 'three';
 import { refract, relativeIndex } from '../../tracer/fresnel.ts';
 import { RandomStream } from '../../tracer/sampler.ts';
-import type { LabCase, Tolerance, Vec3 } from './code-lab-grading.ts';
-import { dot, randomDirection, unit, v } from './lab-vectors.ts';
+import { drawDirectionsAtHit, type CaseDrawing } from './case-drawing.ts';
+import type { CaseFailure, LabCase, Tolerance, Vec3 } from './code-lab-grading.ts';
+import { dot, randomDirection, scaled, unit, v } from './lab-vectors.ts';
 import type { RefractionEdge } from './refraction-edges.ts';
 
 /**
@@ -79,4 +80,15 @@ export function refractionCases(edges: readonly RefractionEdge[], count: number,
   const random = new RandomStream().reset(seed);
   const named = edges.map((kind): LabCase => ({ kind, args: EDGE_CASES[kind], expected: tracerRefract(...EDGE_CASES[kind]) }));
   return [...named, ...Array.from({ length: count }, () => randomCase(random))];
+}
+
+/**
+ * How a failing refraction case looks in 3D: d arriving at the surface, the normal as a line
+ * through the hit on both sides (the glass's and the air's, as physics books draw it), and
+ * the tracer's refracted direction beside the learner's. On total internal reflection the
+ * tracer's answer is "no ray": only the learner's is drawn, if they gave one.
+ */
+export function drawRefractionCase(labCase: LabCase, failure: CaseFailure | null): CaseDrawing {
+  const [d, n] = labCase.args as [Vec3, Vec3, number];
+  return drawDirectionsAtHit(d, [scaled(n, -1), n], labCase.expected, failure ? failure.gotValue : labCase.expected);
 }
