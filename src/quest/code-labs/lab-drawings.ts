@@ -2,6 +2,7 @@ import type { CaseDrawing } from './case-drawing.ts';
 import type { CodeGoal } from './code-goal.ts';
 import type { CaseFailure, LabCase } from './code-lab-grading.ts';
 import { drawRaySphereCase } from './ray-sphere-lab.ts';
+import { drawShadowCase } from './shadow-lab.ts';
 
 /** A lab's hook for the 3D view: its failing case as rays, points and shapes (case-drawing.ts). */
 export type CaseDrawer = (labCase: LabCase, failure: CaseFailure | null) => CaseDrawing;
@@ -12,6 +13,7 @@ export type CaseDrawer = (labCase: LabCase, failure: CaseFailure | null) => Case
  */
 const DRAWERS: Partial<Record<CodeGoal['code']['lab'], CaseDrawer>> = {
   'ray-sphere': drawRaySphereCase,
+  shadow: drawShadowCase,
 };
 
 /** The first failing case of a run drawn as its lab draws it, or null when the lab draws none. */
