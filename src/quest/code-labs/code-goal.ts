@@ -5,6 +5,7 @@ import { MIRROR_EDGES } from './mirror-edges.ts';
 import { RAY_BOX_EDGES } from './ray-box-edges.ts';
 import { RAY_SPHERE_EDGES } from './ray-sphere-edges.ts';
 import { REFRACTION_EDGES } from './refraction-edges.ts';
+import { SHADOW_EDGES } from './shadow-edges.ts';
 
 /** What every lab's goal holds besides its `lab` and its cases. */
 const labFields = {
@@ -47,6 +48,7 @@ export const codeGoalSchema = z
       labGoal('mirror', MIRROR_EDGES),
       labGoal('refraction', REFRACTION_EDGES),
       labGoal('ray-box', RAY_BOX_EDGES),
+      labGoal('shadow', SHADOW_EDGES),
       z.strictObject({
         lab: z.literal('pixel-samples').describe('Jittered samples in a pixel, graded statistically (pixel-samples-lab.ts).'),
         ...labFields,

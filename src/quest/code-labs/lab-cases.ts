@@ -6,6 +6,7 @@ import { PIXEL_SAMPLES_SIGNIFICANCE, pixelSampleRuns } from './pixel-samples-lab
 import { RAY_BOX_TOLERANCE, rayBoxCases } from './ray-box-lab.ts';
 import { RAY_SPHERE_TOLERANCE, raySphereCases } from './ray-sphere-lab.ts';
 import { REFRACTION_TOLERANCE, refractionCases } from './refraction-lab.ts';
+import { SHADOW_TOLERANCE, shadowCases } from './shadow-lab.ts';
 
 /**
  * How a code goal is graded, as its lab says: cases compared one by one with the tracer's
@@ -25,6 +26,8 @@ export function labCases(goal: CodeGoal): LabGrading {
       return { kind: 'cases', cases: refractionCases(code.cases.edges, code.cases.random, code.cases.seed), tolerance: REFRACTION_TOLERANCE };
     case 'ray-box':
       return { kind: 'cases', cases: rayBoxCases(code.cases.edges, code.cases.random, code.cases.seed), tolerance: RAY_BOX_TOLERANCE };
+    case 'shadow':
+      return { kind: 'cases', cases: shadowCases(code.cases.edges, code.cases.random, code.cases.seed), tolerance: SHADOW_TOLERANCE };
     case 'pixel-samples':
       return { kind: 'statistics', runs: pixelSampleRuns(code.cases.sizes, code.cases.runs, code.cases.seed), significance: PIXEL_SAMPLES_SIGNIFICANCE };
   }

@@ -5,6 +5,7 @@ import { drawMirrorCase } from './mirror-lab.ts';
 import { drawRayBoxCase } from './ray-box-lab.ts';
 import { drawRaySphereCase } from './ray-sphere-lab.ts';
 import { drawRefractionCase } from './refraction-lab.ts';
+import { drawShadowCase } from './shadow-lab.ts';
 
 /** A lab's hook for the 3D view: its failing case as rays, points and shapes (case-drawing.ts). */
 export type CaseDrawer = (labCase: LabCase, failure: CaseFailure | null) => CaseDrawing;
@@ -18,6 +19,7 @@ const DRAWERS: Partial<Record<CodeGoal['code']['lab'], CaseDrawer>> = {
   mirror: drawMirrorCase,
   refraction: drawRefractionCase,
   'ray-box': drawRayBoxCase,
+  shadow: drawShadowCase,
 };
 
 /** The first failing case of a run drawn as its lab draws it, or null when the lab draws none. */

@@ -37,7 +37,7 @@ export function caseKindName(kind: string): string {
     case 'random':
       return msg('random cases');
     default:
-      return boxCaseKindName(kind) ?? kind;
+      return boxCaseKindName(kind) ?? shadowCaseKindName(kind) ?? kind;
   }
 }
 
@@ -64,6 +64,28 @@ function boxCaseKindName(kind: string): string | null {
       return msg('a ray that just touches an edge of the box');
     case 'random-box':
       return msg('random rays and boxes');
+    default:
+      return null;
+  }
+}
+
+/** The shadow-test lab's kinds of case (shadow-edges.ts). */
+function shadowCaseKindName(kind: string): string | null {
+  switch (kind) {
+    case 'blocked':
+      return msg('a sphere between the point and the light');
+    case 'nothing-in-the-way':
+      return msg('nothing between the point and the light');
+    case 'beyond-the-light':
+      return msg('a sphere beyond the light');
+    case 'behind-the-point':
+      return msg('a sphere behind the point');
+    case 'own-sphere':
+      return msg('a point on a sphere, lit by a light it faces');
+    case 'several-spheres':
+      return msg('several spheres, only the last one in the way');
+    case 'random-shadow':
+      return msg('random points, lights and spheres');
     default:
       return null;
   }
@@ -147,10 +169,20 @@ export function failureText(failure: CaseFailure, lab: string, tolerance: Tolera
         ? msg(str`Expected ${expectedText}, got t = ${failure.got}: a ray exactly in the plane of a face counts as a miss here.`)
         : msg(str`Expected ${expectedText}, got t = ${failure.got}: the ray is never inside all three slabs at once in front of its origin.`);
     case 'wrong-value':
+      if (lab === 'shadow') return shadowWrongText(failure.labCase.expected === true);
       return typeof failure.gotValue === 'number'
         ? msg(str`Expected ${expectedText}, got t = ${failure.got}.`)
         : msg(str`Expected ${expectedText}, got ${gotText}.`);
   }
+}
+
+/** Why a shadow test's true or false is wrong: what may block the light, and what may not. */
+function shadowWrongText(inShadow: boolean): string {
+  return inShadow
+    ? msg('Expected true, got false: a sphere is in the way between the point and the light.')
+    : msg(
+        'Expected false, got true: only a sphere hit at a t between 0 and the distance to the light blocks it; one behind the point or beyond the light does not.',
+      );
 }
 
 /** The lab's vector library, as the panel documents it (public/code-lab-sandbox.html defines it). */
