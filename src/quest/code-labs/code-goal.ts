@@ -2,6 +2,7 @@ import { z } from 'zod';
 import { wholeNumberIn } from '../../scene/scene-schema-parts.ts';
 import { localizedTextSchema } from '../localized-text.ts';
 import { MIRROR_EDGES } from './mirror-edges.ts';
+import { PHONG_EDGES } from './phong-edges.ts';
 import { RAY_BOX_EDGES } from './ray-box-edges.ts';
 import { RAY_SPHERE_EDGES } from './ray-sphere-edges.ts';
 import { REFRACTION_EDGES } from './refraction-edges.ts';
@@ -49,6 +50,7 @@ export const codeGoalSchema = z
       labGoal('refraction', REFRACTION_EDGES),
       labGoal('ray-box', RAY_BOX_EDGES),
       labGoal('shadow', SHADOW_EDGES),
+      labGoal('phong', PHONG_EDGES),
       z.strictObject({
         lab: z.literal('pixel-samples').describe('Jittered samples in a pixel, graded statistically (pixel-samples-lab.ts).'),
         ...labFields,

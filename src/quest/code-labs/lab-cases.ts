@@ -2,6 +2,7 @@ import type { CodeGoal } from './code-goal.ts';
 import type { LabCase, Tolerance } from './code-lab-grading.ts';
 import type { RandomRun } from './code-lab-statistics.ts';
 import { MIRROR_TOLERANCE, mirrorCases } from './mirror-lab.ts';
+import { PHONG_TOLERANCE, phongCases } from './phong-lab.ts';
 import { PIXEL_SAMPLES_SIGNIFICANCE, pixelSampleRuns } from './pixel-samples-lab.ts';
 import { RAY_BOX_TOLERANCE, rayBoxCases } from './ray-box-lab.ts';
 import { RAY_SPHERE_TOLERANCE, raySphereCases } from './ray-sphere-lab.ts';
@@ -28,6 +29,8 @@ export function labCases(goal: CodeGoal): LabGrading {
       return { kind: 'cases', cases: rayBoxCases(code.cases.edges, code.cases.random, code.cases.seed), tolerance: RAY_BOX_TOLERANCE };
     case 'shadow':
       return { kind: 'cases', cases: shadowCases(code.cases.edges, code.cases.random, code.cases.seed), tolerance: SHADOW_TOLERANCE };
+    case 'phong':
+      return { kind: 'cases', cases: phongCases(code.cases.edges, code.cases.random, code.cases.seed), tolerance: PHONG_TOLERANCE };
     case 'pixel-samples':
       return { kind: 'statistics', runs: pixelSampleRuns(code.cases.sizes, code.cases.runs, code.cases.seed), significance: PIXEL_SAMPLES_SIGNIFICANCE };
   }

@@ -34,6 +34,14 @@ export function caseKindName(kind: string): string {
       return msg('a ray inside the glass beyond the critical angle');
     case 'into-diamond':
       return msg('a ray into diamond, through a surface tilted along no axis');
+    case 'phong-light-behind':
+      return msg('a light behind the surface');
+    case 'phong-in-the-highlight':
+      return msg('an eye right in the highlight');
+    case 'phong-beside-the-highlight':
+      return msg('an eye beside the highlight');
+    case 'phong-coloured-light':
+      return msg('a coloured light on a tilted surface');
     case 'random':
       return msg('random cases');
     default:
