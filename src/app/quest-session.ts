@@ -14,6 +14,7 @@ import {
 } from '../quest/progress-store.ts';
 import { holdsAll } from '../quest/progress-merge.ts';
 import type { Progress } from '../quest/progress.ts';
+import { keepLabCode, keptLabCode, type CodeNotImported } from '../quest/progress-lab-code.ts';
 import { QuestEngine, type OpenLevelResult } from '../quest/quest-engine.ts';
 import { defaultScene } from '../scene/scene-defaults.ts';
 import { assignmentProgressKey } from '../classroom/assignment-id.ts';
@@ -69,7 +70,9 @@ export interface QuestSessionOptions {
 }
 
 export type ImportResult =
-  { ok: true; repaired: string[] } | { ok: false; reason: 'unreadable'; errors: Issue[] } | { ok: false; reason: 'not-saved'; kind: SaveProblemKind };
+  | { ok: true; repaired: string[]; code?: CodeNotImported }
+  | { ok: false; reason: 'unreadable'; errors: Issue[] }
+  | { ok: false; reason: 'not-saved'; kind: SaveProblemKind };
 
 export class QuestSession {
   readonly catalog: LevelCatalog;
@@ -274,20 +277,28 @@ export class QuestSession {
     this.changeContext({ ...this.contextNow, participantCode: code });
   }
 
-  /** The text of a progress file to download. */
+  /** The text of a progress file to download, with the learner's code of each code lab. */
   exportText(): string {
-    return exportProgress(this.engineNow.progress);
+    const code = keptLabCode(this.storage);
+    return exportProgress({ ...this.engineNow.progress, ...(Object.keys(code).length > 0 ? { code } : {}) });
   }
 
   /**
-   * Replaces the progress with an imported file's, its damaged parts left out (`repaired`).
+   * Replaces the progress with an imported file's, its damaged parts left out (`repaired`),
+   * and each lab's code with the file's (a lab's code that is refused stays as it was here).
    * Nothing changes when the file cannot be read or cannot be written to storage.
    */
   importText(text: string): ImportResult {
     const read = readProgressJson(text, new Date(this.clock.wallMs()).toISOString());
     if (!read.ok) return { ok: false, reason: 'unreadable', errors: read.errors };
-    const problem = this.replaceProgress(replacing(read.progress, this.engineNow.progress, this.clock));
-    return problem ? { ok: false, reason: 'not-saved', kind: problem } : { ok: true, repaired: read.repaired };
+    // The code is kept under keys of its own (progress-lab-code.ts), not in the saved progress.
+    const { code, ...progress } = read.progress;
+    const problem = this.replaceProgress(replacing(progress, this.engineNow.progress, this.clock));
+    if (problem) return { ok: false, reason: 'not-saved', kind: problem };
+    const refused = read.repaired.filter((note) => /^code[.:[]/.test(note));
+    const notImported = { refused: refused.map(labOfNote), notSaved: keepLabCode(this.storage, code ?? {}) };
+    const repaired = read.repaired.filter((note) => !refused.includes(note));
+    return refused.length + notImported.notSaved.length > 0 ? { ok: true, repaired, code: notImported } : { ok: true, repaired };
   }
 
   /** Forgets all progress (the UI has asked) and starts afresh on the map: a new attempt. Null when done, else why not. */
@@ -464,4 +475,9 @@ export class QuestSession {
   private notify(): void {
     for (const listener of [...this.listeners]) listener();
   }
+}
+
+/** The lab a salvage note on the file's code is about (`code.<lab>: …`), or '' for all of it. */
+function labOfNote(note: string): string {
+  return note.slice(0, note.indexOf(':')).replace(/^code\.?/, '');
 }

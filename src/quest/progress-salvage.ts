@@ -17,7 +17,9 @@ import { progressSchema, type Progress } from './progress.ts';
  * - the log's start time: the time of this repair;
  * - events out of time order: the fewest are left out that put the rest in order;
  * - fields this version does not know: left out;
- * - a `levels`, `badges` or `log` that is not one at all: left out whole.
+ * - a `levels`, `badges` or `log` that is not one at all: left out whole;
+ * - one lab's code that is not text or is too long: left out, and `code` that is not a
+ *   record at all: left out whole (the code kept in the browser stays as it is).
  *
  * The caller keeps the old text as a backup either way. Where mending does not converge,
  * `salvageProgress` returns null and the caller starts afresh.
@@ -101,6 +103,10 @@ function fixFor(draft: Record<string, unknown>, issue: Issue, nowIso: string): F
       return { at: [top], kind: 'set', value: null, note: 'left out' };
     case 'epoch':
       return { at: [top], kind: 'drop', note: 'left out' };
+    case 'code':
+      return typeof second === 'string'
+        ? { at: [top, second], kind: 'drop', note: 'code not imported' }
+        : { at: [top], kind: 'drop', note: 'code not imported' };
     case 'badges':
       return typeof second === 'number'
         ? { at: [top, second], kind: 'drop', note: 'left out' }

@@ -6,6 +6,7 @@ import { starsSchema } from './challenge-par.ts';
 import { eventLogSchema, HOW_COMPLETED, newEventLogData, randomSessionId, type QuestClock } from './event-log.ts';
 import { ID_MAX } from './kebab-id.ts';
 import { LOCALES } from './localized-text.ts';
+import { labCodeSchema } from './progress-lab-code.ts';
 
 /**
  * Everything a learner has achieved, saved between visits (progress-store.ts) and exported
@@ -67,6 +68,8 @@ export const progressSchema = z.strictObject({
   /** The level being played and its scene as the learner left it, to resume after a reload. */
   current: z.strictObject({ level: idKey(), scene: savedScene }).nullable(),
   log: eventLogSchema,
+  /** Exported files only (from issue 43 on): the learner's code per code lab (progress-lab-code.ts). */
+  code: labCodeSchema,
   /**
    * Set by a reset or an import, which replace the progress rather than add to it: tabs
    * merge progress of the same epoch and give way to a later one (progress-merge.ts).

@@ -12,6 +12,7 @@ import type { Assignment } from '../../classroom/assignment.ts';
 import type { SurveySubmission } from '../../classroom/survey-answers.ts';
 import { chooseLocale, currentLocale } from '../../i18n/locale.ts';
 import { issueText } from '../../i18n/issue-text.ts';
+import { labCodeImportText } from '../../i18n/lab-code-import-text.ts';
 import { contextDamageText, placesOf, progressProblemText, saveProblemReason, saveProblemText, surveyDamageText } from '../../i18n/progress-problem-text.ts';
 import { localNumbers } from '../../i18n/number-format.ts';
 import { shortList } from '../../i18n/short-list.ts';
@@ -335,7 +336,7 @@ export class QuestController implements ReactiveController {
   private imported(session: QuestSession, text: string, fileName: string): void {
     const result = session.importText(text);
     if (result.ok) {
-      this.host.toast(msg(str`Progress imported from ${fileName}.`) + leftOut(result.repaired));
+      this.host.toast(msg(str`Progress imported from ${fileName}.`) + leftOut(result.repaired) + labCodeImportText(result.code));
     } else if (result.reason === 'unreadable') {
       this.host.toast(
         msg(str`${fileName} is not a progress file this app can read, so nothing changed:\n${result.errors.slice(0, 3).map(issueText).join('\n')}`),

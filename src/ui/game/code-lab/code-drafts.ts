@@ -1,9 +1,9 @@
+import { LAB_CODE_KEY_PREFIX as PREFIX } from '../../../quest/progress-lab-code.ts';
+
 /**
  * The learner's code per lab, kept in this browser so that it survives a reload. A key of
- * its own beside the progress (`rtq.progress`): exporting it with the progress waits for the
- * classroom side of code labs.
+ * its own beside the progress (`rtq.progress`); the progress file carries it (progress-lab-code.ts).
  */
-const PREFIX = 'rtq.code-lab.';
 
 export function savedCode(lab: string): string | null {
   try {
