@@ -208,13 +208,13 @@ export class RtCodeLab extends LocalizedElement {
             <code>${caseInput(code.signature, failure.labCase.args)}</code><br />
             ${failureText(failure, code.lab, tolerance)}
           </p>
-          ${this.legend()}`
+          ${this.goal && drawFailingCase(this.goal, failure) ? this.legend() : nothing}`
           : nothing
       }
     `;
   }
 
-  /** What the 3D view shows of the failing case, with the two answers' colours and shapes. */
+  /** What the 3D view shows of the failing case, with the two answers' colours and shapes (only for a lab that draws its cases). */
   private legend() {
     const swatch = (mark: 'expected' | 'got', shape: string) => html`<span aria-hidden="true" style="color: ${CASE_MARK_COLORS[mark]}">${shape}</span>`;
     return html`<p class="legend">
