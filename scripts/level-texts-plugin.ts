@@ -1,6 +1,7 @@
 import { readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Plugin } from 'vite';
+import { LATER_TEXT_KEY } from '../src/quest/later-text-key.ts';
 
 /**
  * The level files as the browser gets them: one module per language,
@@ -10,10 +11,17 @@ import type { Plugin } from 'vite';
  * texts are most of the first load, and the two languages together were over its budget
  * (scripts/first-load.ts). A file that is not JSON is kept as it is, so that the game shows it
  * as broken, with its reason, instead of failing the build.
+ *
+ * The "Explain more" texts (a level's and each task's `more`) are a fifth of those texts and
+ * are read only when a learner opens one: they go to a second module per language,
+ * `virtual:level-more/<locale>`, loaded on that click, and stand in the level as
+ * `@later:<file>#<place>` (src/quest/later-text-key.ts; src/app/later-level-texts.ts).
  */
 
 const PREFIX = 'virtual:level-texts/';
 const RESOLVED = `\0${PREFIX}`;
+const MORE_PREFIX = 'virtual:level-more/';
+const MORE_RESOLVED = `\0${MORE_PREFIX}`;
 
 /** A localized text of a level file: an object of language codes with English among them. */
 function isLocalizedText(value: object): value is Record<string, string> {
@@ -29,30 +37,50 @@ export function inLanguage(value: unknown, locale: string): unknown {
   return Object.fromEntries(Object.entries(value).map(([key, item]) => [key, inLanguage(item, locale)]));
 }
 
-/** A level file's text in `locale`; a file that is not JSON stays as written. */
-export function levelTextIn(text: string, locale: string): string {
+/**
+ * A level file's text in `locale` with its "Explain more" texts taken out into `later`, each
+ * replaced by its key; a file that is not JSON stays as written.
+ */
+export function levelTextWithoutMore(name: string, text: string, locale: string, later: Record<string, string>): string {
+  let level: unknown;
   try {
-    return JSON.stringify(inLanguage(JSON.parse(text), locale));
+    level = inLanguage(JSON.parse(text), locale);
   } catch {
     return text;
   }
+  const takeMore = (owner: unknown, place: string) => {
+    if (typeof owner !== 'object' || owner === null) return;
+    const holder = owner as { more?: unknown };
+    if (typeof holder.more !== 'string') return;
+    const key = `${name}#${place}`;
+    later[key] = holder.more;
+    holder.more = `${LATER_TEXT_KEY}${key}`;
+  };
+  if (typeof level === 'object' && level !== null) {
+    const { intro, tasks } = level as { intro?: unknown; tasks?: unknown };
+    takeMore(intro, 'intro');
+    if (Array.isArray(tasks)) tasks.forEach((task, index) => takeMore(task, `task-${index}`));
+  }
+  return JSON.stringify(level);
 }
 
 export function levelTextsPlugin(folder = 'levels'): Plugin {
   return {
     name: 'level-texts',
-    resolveId: (id) => (id.startsWith(PREFIX) ? `\0${id}` : undefined),
+    resolveId: (id) => (id.startsWith(PREFIX) || id.startsWith(MORE_PREFIX) ? `\0${id}` : undefined),
     load(id) {
-      if (!id.startsWith(RESOLVED)) return undefined;
-      const locale = id.slice(RESOLVED.length);
+      const more = id.startsWith(MORE_RESOLVED);
+      if (!id.startsWith(RESOLVED) && !more) return undefined;
+      const locale = id.slice((more ? MORE_RESOLVED : RESOLVED).length);
       const names = readdirSync(folder).filter((name) => name === 'index.json' || name.endsWith('.level.json'));
       const texts: Record<string, string> = {};
+      const later: Record<string, string> = {};
       for (const name of names) {
         const path = join(folder, name);
         this.addWatchFile(path);
-        texts[name] = levelTextIn(readFileSync(path, 'utf8'), locale);
+        texts[name] = levelTextWithoutMore(name, readFileSync(path, 'utf8'), locale, later);
       }
-      return `export default ${JSON.stringify(texts)};`;
+      return `export default ${JSON.stringify(more ? later : texts)};`;
     },
   };
 }

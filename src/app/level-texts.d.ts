@@ -3,3 +3,9 @@ declare module 'virtual:level-texts/*' {
   const texts: Record<string, string>;
   export default texts;
 }
+
+/** scripts/level-texts-plugin.ts: the levels' "Explain more" texts in one language, by their keys. */
+declare module 'virtual:level-more/*' {
+  const texts: Record<string, string>;
+  export default texts;
+}

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { inLanguage, levelTextIn } from '../../scripts/level-texts-plugin.ts';
+import { inLanguage, levelTextWithoutMore } from '../../scripts/level-texts-plugin.ts';
+import { LATER_TEXT_KEY } from '../../src/quest/later-text-key.ts';
 
 /** The level files in one language: what a learner's browser loads (scripts/level-texts-plugin.ts). */
 describe('a level file in one language', () => {
@@ -21,7 +22,23 @@ describe('a level file in one language', () => {
   });
 
   it('keeps a file that is not JSON as written, so the game can say why it is broken', () => {
-    expect(levelTextIn('{ "version": 1, broken', 'nl')).toBe('{ "version": 1, broken');
-    expect(JSON.parse(levelTextIn(JSON.stringify(level), 'nl')).title).toBe('Schaduwen');
+    const later: Record<string, string> = {};
+    expect(levelTextWithoutMore('x.level.json', '{ "version": 1, broken', 'nl', later)).toBe('{ "version": 1, broken');
+    expect(JSON.parse(levelTextWithoutMore('x.level.json', JSON.stringify(level), 'nl', later)).title).toBe('Schaduwen');
+    expect(later).toEqual({});
+  });
+
+  it('takes the "Explain more" texts out to load later, each replaced by its key', () => {
+    const withMore = {
+      ...level,
+      intro: { text: 'Hi', more: { en: 'Why', nl: 'Waarom' } },
+      tasks: [{ ...level.tasks[0], more: { en: 'Deeper', nl: 'Dieper' } }, { id: 'b' }],
+    };
+    const later: Record<string, string> = {};
+    const shown = JSON.parse(levelTextWithoutMore('04.level.json', JSON.stringify(withMore), 'nl', later));
+    expect(shown.intro).toEqual({ text: 'Hi', more: `${LATER_TEXT_KEY}04.level.json#intro` });
+    expect(shown.tasks[0].more).toBe(`${LATER_TEXT_KEY}04.level.json#task-0`);
+    expect(shown.tasks[1]).toEqual({ id: 'b' });
+    expect(later).toEqual({ '04.level.json#intro': 'Waarom', '04.level.json#task-0': 'Dieper' });
   });
 });

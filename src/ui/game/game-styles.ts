@@ -1,5 +1,4 @@
-import { msg } from '@lit/localize';
-import { css, html, type TemplateResult } from 'lit';
+import { css } from 'lit';
 import { controlStyles } from '../controls/controls.css.ts';
 import { visuallyHiddenStyles } from '../controls/visually-hidden.css.ts';
 
@@ -104,12 +103,4 @@ export const taskPanelStyles = css`
 /** Sends a bubbling, composed event, so it reaches the lab through shadow roots. */
 export function fire<T>(from: HTMLElement, type: string, detail: T): void {
   from.dispatchEvent(new CustomEvent<T>(type, { detail, bubbles: true, composed: true }));
-}
-
-/** An "Explain more" toggle; `opened` hears when the learner opens it (the engine logs it). */
-export function explainMore(text: TemplateResult, opened: () => void): TemplateResult {
-  return html`<details class="more" @toggle=${(event: Event) => (event.target as HTMLDetailsElement).open && opened()}>
-    <summary>${msg('Explain more')}</summary>
-    <p>${text}</p>
-  </details>`;
 }

@@ -4,7 +4,8 @@ import { LocalizedElement } from '../controls/localized-element.ts';
 import type { Locale } from '../../quest/localized-text.ts';
 import type { LevelView } from '../../quest/level-view.ts';
 import { plainLevelText } from '../../quest/text-markup.ts';
-import { explainMore, fire, gameStyles } from './game-styles.ts';
+import { explainMore } from './explain-more.ts';
+import { fire, gameStyles } from './game-styles.ts';
 import { levelText } from './level-text.ts';
 import { QUEST_COMMAND, type QuestCommand } from './quest-command.ts';
 import './rt-task-card.ts';
@@ -155,7 +156,7 @@ export class RtQuestPanel extends LocalizedElement {
         <h2>${plainLevelText(level.title, this.locale)}</h2>
         <p class="muted level-points">${msg(str`${view.points} of ${view.maxPoints} points`)}</p>
         <p>${levelText(level.intro.text, this.locale)}</p>
-        ${level.intro.more ? explainMore(levelText(level.intro.more, this.locale), () => send({ kind: 'explain', task: 'intro' })) : nothing}
+        ${level.intro.more ? explainMore(level.intro.more, this.locale, () => send({ kind: 'explain', task: 'intro' })) : nothing}
       </header>
       ${view.passed ? this.celebration(view, send) : nothing}
       <ol aria-label=${msg('Tasks')}>

@@ -7,7 +7,8 @@ import type { Task } from '../../quest/level-schema.ts';
 import type { TaskView } from '../../quest/level-view.ts';
 import { plainLevelText } from '../../quest/text-markup.ts';
 import { figureUrl } from './figure-urls.ts';
-import { explainMore, fire, gameStyles } from './game-styles.ts';
+import { explainMore } from './explain-more.ts';
+import { fire, gameStyles } from './game-styles.ts';
 import { levelText } from './level-text.ts';
 import { predictionText } from './prediction-text.ts';
 import { foldedPrediction } from './prediction-summary.ts';
@@ -193,7 +194,7 @@ export class RtTaskCard extends LocalizedElement {
       ${checksLine(view, this.locale)}
       ${view.task.figure ? this.figure(view.task.figure) : nothing}
       <p>${levelText(view.task.text, this.locale)}</p>
-      ${view.task.more ? explainMore(levelText(view.task.more, this.locale), () => send({ kind: 'explain', task: id })) : nothing}
+      ${view.task.more ? explainMore(view.task.more, this.locale, () => send({ kind: 'explain', task: id })) : nothing}
       ${view.kind === 'quiz' ? html`<rt-quiz .task=${view} locale=${this.locale}></rt-quiz>` : nothing}
       ${view.task.goal.kind === 'challenge' ? html`<rt-challenge .goal=${view.task.goal} locale=${this.locale}></rt-challenge>` : nothing}
       ${view.task.goal.kind === 'code' && !finished ? codeLabPanel(view.task.goal, this.locale, this) : nothing}
