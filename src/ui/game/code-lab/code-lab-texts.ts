@@ -1,4 +1,5 @@
 import { msg, str } from '@lit/localize';
+import type { CodeLab } from '../../../quest/code-labs/code-goal.ts';
 import { describeValue, type CaseFailure, type LabAnswer, type Tolerance, type Vec3 } from '../../../quest/code-labs/code-lab-grading.ts';
 
 /** A kind of case as the result list names it: the misconception its edge case tests. */
@@ -125,7 +126,7 @@ export function caseInput(signature: string, args: unknown[]): string {
 }
 
 /** An answer in words: null as what "none" means in this lab, a number as the distance t, anything else spelled out. */
-function answerText(lab: string, answer: LabAnswer): string {
+function answerText(lab: CodeLab, answer: LabAnswer): string {
   if (answer === null) return lab === 'refraction' ? msg('null (total internal reflection)') : msg('null (no hit)');
   return typeof answer === 'number' ? `t = ${numberText(answer)}` : describeValue(answer);
 }
@@ -146,7 +147,7 @@ function answerKindText(tolerance: Tolerance): string {
 }
 
 /** What was expected and what came back, in words. */
-export function failureText(failure: CaseFailure, lab: string, tolerance: Tolerance): string {
+export function failureText(failure: CaseFailure, lab: CodeLab, tolerance: Tolerance): string {
   const expectedText = answerText(lab, failure.labCase.expected);
   const gotText = failure.gotValue === null ? failure.got : answerText(lab, failure.gotValue);
   switch (failure.reason) {
