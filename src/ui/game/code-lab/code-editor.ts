@@ -23,6 +23,9 @@ export function createCodeEditor(options: {
       basicSetup,
       javascript(),
       lintGutter(),
+      // The editor sits in the task column, about 250 px wide: long lines and the skeleton's
+      // step comments wrap instead of hiding past a sideways scroll.
+      EditorView.lineWrapping,
       linter((view) => syntaxErrors(view, options.syntaxError), { delay: 300 }),
       EditorView.contentAttributes.of({ 'aria-label': options.label }),
       EditorView.updateListener.of((update) => {
