@@ -216,7 +216,6 @@
 's3c56bca407a3d8a5': `Opnieuw renderen`,
 's3c5b3f1d809211a0': `zoek het dichtstbijzijnde raakpunt; niets geraakt: geef de achtergrond terug`,
 's3cf1e68a7de8106e': `kleur += kt·trace(gebroken straal) + kr·trace(weerkaatste straal)`,
-'s3cfd2db9b926e952': `De camera van de ray tracer`,
 's3d61510653070d75': `Math.sqrt, Math.abs en de rest van Math werken zoals altijd in JavaScript.`,
 's3da6f19823f5197d': str`er is geen veld ${0} in ${1} (wel: ${2})`,
 's3e0eb36de629ede3': str`Glansvlek van ${0}`,
