@@ -9,6 +9,7 @@ import { goalParts, kindOfGoal, type Goal } from './goal.ts';
 import { APP_ONLY_ACTION } from './lab-action-schema.ts';
 import { ALWAYS_SHOWN, partsOfTarget, type GuideTarget } from './lab-controls.ts';
 import type { Level } from './level-schema.ts';
+import { MOVABLE_CAMERA } from './movable-items.ts';
 import { problemWithPath } from './state-path.ts';
 import type { TaskEvidence } from './task-evidence-schema.ts';
 
@@ -42,6 +43,8 @@ export function levelRules(level: Level): Issue[] {
       'id',
     ),
     ...listedOnce(level.ui.panels, ['ui', 'panels']),
+    ...listedOnce(level.ui.movable ?? [], ['ui', 'movable']),
+    ...movableProblems(level),
     ...mandatoryCount(level),
     ...level.tasks.flatMap((_, index) => taskProblems(level, index, sample)),
     ...pixelPickingProblems(level),
@@ -203,6 +206,14 @@ function viewProblems(scene: Scene, view: DeclaredView, at: (string | number)[])
     problems.push({ path: [...at, 'frame'], reason: { code: 'pixelRaysWithoutPixel' } });
   }
   return problems;
+}
+
+/** `ui.movable` names things the starting scene has, or its camera. */
+function movableProblems(level: Level): Problem[] {
+  const names = [...level.scene.objects.map((thing) => thing.id), ...level.scene.lights.map((thing) => thing.id), MOVABLE_CAMERA];
+  return (level.ui.movable ?? []).flatMap((name, index) =>
+    names.includes(name) ? [] : [{ path: ['ui', 'movable', index], reason: { code: 'notAllowed', allowed: names, got: gotOf(name) } }],
+  );
 }
 
 /** Evidence names things the scene has, and a pixel its screen has. */

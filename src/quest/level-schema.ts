@@ -12,6 +12,7 @@ import { kebabId } from './kebab-id.ts';
 import { isGuideTarget, LAB_CONTROLS, UI_PANELS, type GuideTarget } from './lab-controls.ts';
 import { levelRules, MANDATORY_TASKS } from './level-rules.ts';
 import { localizedTextSchema } from './localized-text.ts';
+import { MOVABLE_CAMERA } from './movable-items.ts';
 import { readJson } from '../util/read-json.ts';
 
 /**
@@ -70,8 +71,15 @@ const uiSchema = z
       .strictObject({ debugger: localizedTextSchema.optional() })
       .optional()
       .describe('Panels every level with rays shows (the ray debugger), left out here, each with the reason why.'),
+    movable: z
+      .array(z.string().min(1))
+      .min(1)
+      .optional()
+      .describe(`The only scene items the gizmo, its keys and Delete may change: object or light ids, or "${MOVABLE_CAMERA}"; without it, all of them.`),
   })
   .superRefine((ui, context) => {
+    // Only the gizmo moves things: a lock without it would lock nothing the learner can reach.
+    if (ui.movable && !ui.panels.includes('gizmo')) context.addIssue(reasonIssue(['movable'], ui.movable, { code: 'panelNotListed', panel: 'gizmo' }));
     for (const panel of Object.keys(ui.hidden ?? {})) {
       if (ui.panels.some((shown) => shown === panel)) {
         context.addIssue(reasonIssue(['hidden', panel], panel, { code: 'panelShownAndHidden', panel }));

@@ -30,6 +30,7 @@ import { rasterSnapshot } from './raster-snapshot.ts';
 import type { RayLayer } from './ray-layer.ts';
 import { type MeshLoader, SceneSync } from './scene-sync.ts';
 import { SelectionGizmo } from './selection-gizmo.ts';
+import type { MovableItems } from '../quest/movable-items.ts';
 import type { ViewCommand } from './view-commands.ts';
 import { type RayHoverDetail, ViewInput } from './view-input.ts';
 import { rayPathPoints, rayPathPointsFromHit, raySegments } from './ray-path-points.ts';
@@ -439,16 +440,16 @@ export class LabView {
       });
     }
     if (!this.selection.dragging) this.selection.update(state);
+    // A newly selected locked item shows no handles: the learner reads why, however it was selected.
+    const locked = state.selection !== previous?.selection ? this.selection.lockedReason(state) : null;
+    if (locked) this.emit('note', locked);
     if (previous && state.scene !== previous.scene) this.drawing.sceneEdited();
     this.requestRender();
   }
 
-  /**
-   * The gizmo modes the page offers (a level's gizmo buttons; undefined: all). With none, a
-   * selection shows its outline but no handles: a level without move tools shows no arrows.
-   */
-  setGizmoModes(modes: readonly GizmoMode[] | undefined): void {
-    this.selection.setModes(modes, this.store.state);
+  /** What the page lets the gizmo do: the modes a level offers and the items it may change (ui.movable); undefined: all (selection-gizmo.ts). */
+  limitGizmo(modes: readonly GizmoMode[] | undefined, movable: MovableItems): void {
+    this.selection.setLimits(modes, movable, this.store.state);
     this.requestRender();
   }
 

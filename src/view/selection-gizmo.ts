@@ -2,6 +2,8 @@ import { BoxHelper, Group, type Object3D, type PerspectiveCamera } from 'three';
 import type { LabAction } from '../lab-state/lab-action.ts';
 import type { LabState } from '../lab-state/lab-state.ts';
 import { cameraChanges, lightChanges, objectChanges } from './gizmo-changes.ts';
+import { isLocked, type MovableItems } from '../quest/movable-items.ts';
+import { lockedNote } from './locked-note.ts';
 import { effectiveGizmoMode, gizmoModesFor, type GizmoMode } from './gizmo-modes.ts';
 import { TransformGizmo } from './transform-gizmo.ts';
 
@@ -38,6 +40,8 @@ export class SelectionGizmo {
   readonly outline = new BoxHelper(new Group(), SELECTION_COLOR);
   /** The gizmo modes the page offers (a level's gizmo buttons; undefined: all). */
   private offeredModes: readonly GizmoMode[] | undefined = undefined;
+  /** The items the page lets the gizmo change (a level's ui.movable; undefined: all). */
+  private movableItems: MovableItems = undefined;
 
   /** Made before the orbit controls: the gizmo's pointerdown must claim a drag before they see it. */
   constructor(
@@ -66,17 +70,35 @@ export class SelectionGizmo {
     return this.gizmo.hovering;
   }
 
-  /** Offers `modes` from now on (undefined: all). With none, a selection shows its outline but no handles: a level without move tools shows no arrows. */
-  setModes(modes: readonly GizmoMode[] | undefined, state: LabState): void {
+  /**
+   * Offers `modes` and lets the gizmo change only `movable` from now on (undefined: all). With
+   * no mode, or on a locked item, a selection shows its outline but no handles: a level without
+   * move tools shows no arrows, and a level's locked items none either.
+   */
+  setLimits(modes: readonly GizmoMode[] | undefined, movable: MovableItems, state: LabState): void {
     this.offeredModes = modes;
+    this.movableItems = movable;
     this.update(state);
+  }
+
+  /** Whether the page keeps the selection where it is: no handles, no key steps, no Delete. */
+  locks(state: LabState): boolean {
+    return isLocked(state.selection, this.movableItems);
+  }
+
+  /** Why the selection stays where it is, for the learner, or null when it is not locked. */
+  lockedReason(state: LabState): string | null {
+    const { selection } = state;
+    if (selection === null || this.movableItems === undefined || !this.locks(state)) return null;
+    return lockedNote(state.scene, selection, this.movableItems);
   }
 
   /** Puts the gizmo and the selection outline on the selection, in a mode it allows. */
   update(state: LabState): void {
     const target = this.selectedObject(state);
     const allowed = gizmoModesFor(state.selection, state.scene);
-    const handles = this.offeredModes === undefined || this.offeredModes.some((mode) => allowed.includes(mode));
+    const offered = this.offeredModes === undefined || this.offeredModes.some((mode) => allowed.includes(mode));
+    const handles = offered && !this.locks(state);
     this.gizmo.setSnapOption(state.gizmo.snap);
     this.gizmo.attach(handles ? target : null, effectiveGizmoMode(state.gizmo.mode, allowed), state.gizmo.space);
     this.outlineSelection(state, target);
@@ -89,10 +111,11 @@ export class SelectionGizmo {
 
   /**
    * The gizmo mode the arrow keys work in for the selection, or null when its handles are
-   * not shown (nothing selected, or a level without move tools): as the handles, the chosen
-   * mode when the selection and the page allow it.
+   * not shown (nothing selected, a level without move tools, a locked item): as the handles,
+   * the chosen mode when the selection and the page allow it.
    */
   nudgeMode(state: LabState): GizmoMode | null {
+    if (this.locks(state)) return null;
     const allowed = gizmoModesFor(state.selection, state.scene).filter((mode) => this.offeredModes?.includes(mode) ?? true);
     if (allowed.length === 0) return null;
     const mode = effectiveGizmoMode(state.gizmo.mode, gizmoModesFor(state.selection, state.scene));

@@ -104,6 +104,12 @@ export class ViewInput {
         return this.parts.help();
       case 'nudge':
         return this.nudge(command);
+      case 'delete':
+        return this.refuseLocked(state) ? undefined : this.apply(stateCommand(command, state));
+      case 'gizmo-mode':
+        // The mode is the page's, not the selection's: it changes, and a locked selection says why it shows no handles.
+        this.refuseLocked(state);
+        return this.apply(stateCommand(command, state));
       default:
         return this.apply(stateCommand(command, state));
     }
@@ -116,14 +122,23 @@ export class ViewInput {
     if (command?.note && !refused) this.parts.note(command.note);
   }
 
+  /** A locked selection (a level's ui.movable) stays: the learner reads why. Whether it was locked. */
+  private refuseLocked(state: LabState): boolean {
+    const reason = this.parts.selection.lockedReason(state);
+    if (reason) this.parts.note(reason);
+    return reason !== null;
+  }
+
   private arrowTarget(state: LabState): ArrowTarget {
-    if (this.parts.selection.nudgeMode(state)) return 'selection';
+    // The arrows try to move a locked selection too, so that they say why it stays.
+    if (this.parts.selection.nudgeMode(state) || this.parts.selection.locks(state)) return 'selection';
     return state.selectedPixel ? 'pixel' : 'view';
   }
 
   /** One key step of the selection in its gizmo mode, along the world axes nearest the viewer's. */
   private nudge(command: Extract<ViewCommand, { kind: 'nudge' }>): void {
     const state = this.store.state;
+    if (this.refuseLocked(state)) return;
     const mode = this.parts.selection.nudgeMode(state);
     const action = mode && nudgeAction(state, { mode, direction: command.direction, big: command.big }, viewAxesOf(this.camera));
     if (!mode || !action || this.parts.dispatch(action)) return;

@@ -132,6 +132,24 @@ describe('field messages read `path: reason`, like scene files', () => {
     ]);
   });
 
+  it('takes ui.movable: items of the scene or the camera, each once, with the gizmo shown', () => {
+    const ok = parseLevel(levelFile((level) => (level.ui = { panels: ['object', 'tracer', 'render', 'gizmo'], movable: ['ball', 'camera'] })));
+    expect(ok.ok && ok.level.ui.movable).toEqual(['ball', 'camera']);
+    // Without it, nothing is locked.
+    const open = parseLevel(levelFile());
+    expect(open.ok && open.level.ui.movable).toBeUndefined();
+    expect(errorsOf((level) => (level.ui = { panels: ['object', 'tracer', 'render', 'gizmo'], movable: ['box', 'ball', 'ball'] }))).toEqual([
+      'ui.movable[2]: "ball" is used more than once',
+      'ui.movable[0]: must be one of ball, lamp, camera, got "box"',
+    ]);
+    expect(errorsOf((level) => (level.ui = { panels: ['object', 'tracer', 'render'], movable: ['ball'] }))).toEqual([
+      'ui.movable: the gizmo panel is not in ui.panels',
+    ]);
+    expect(errorsOf((level) => (level.ui = { panels: ['object', 'tracer', 'render', 'gizmo'], movable: [] }))).toEqual([
+      'ui.movable: must have at least 1 items, got a list of 0 items',
+    ]);
+  });
+
   it('takes a reason for leaving the debugger out, but not for a panel it shows', () => {
     const reason = { en: 'Rays come in the next level.', nl: 'Stralen komen in het volgende level.' };
     const ok = parseLevel(levelFile((level) => ((level.ui as Json).hidden = { debugger: reason })));

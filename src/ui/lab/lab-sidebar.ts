@@ -10,11 +10,14 @@ import type { LevelPanels } from './level-panels.ts';
  * scene list, the selected light's or object's panel, the tracer, the rays, the BVH (loaded
  * on demand: its message when it could not be) and the file panel.
  */
-export function labSidebar(state: LabState, { panels, controls }: Pick<LevelPanels, 'panels' | 'controls'>): TemplateResult[] {
+export function labSidebar(state: LabState, { panels, controls, movable }: Pick<LevelPanels, 'panels' | 'controls' | 'movable'>): TemplateResult[] {
   const shows = (panel: UiPanel) => panels.has(panel);
   const panel = (name: UiPanel, part: TemplateResult) => (shows(name) ? part : nothing);
   return [
-    panel('scene-list', html`<rt-scene-list ?allow-editing=${shows('add-remove')} .shownControls=${controls('scene-list')}></rt-scene-list>`),
+    panel(
+      'scene-list',
+      html`<rt-scene-list ?allow-editing=${shows('add-remove')} .shownControls=${controls('scene-list')} .movable=${movable}></rt-scene-list>`,
+    ),
     state.selection?.kind === 'light' && shows('light')
       ? html`<rt-light-panel .shownControls=${controls('light')}></rt-light-panel>`
       : shows('object')

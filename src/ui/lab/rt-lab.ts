@@ -294,10 +294,10 @@ export class RtLab extends LocalizedElement {
     const session = this.game.session;
     const engine = session?.engine;
     const locale = session?.locale ?? 'en';
-    const { panels, controls, gizmo, viewLegend } = levelPanels(this.level());
+    const { panels, controls, gizmo, movable, viewLegend } = levelPanels(this.level());
     const shows = (panel: UiPanel) => panels.has(panel);
     const catalog = session?.catalog ?? { chapters: [], errors: [] };
-    const sidebar = labSidebar(state, { panels, controls });
+    const sidebar = labSidebar(state, { panels, controls, movable });
     return html`
       <header>
         <h1>${msg('Ray Tracer Quest')}</h1>
@@ -328,6 +328,7 @@ export class RtLab extends LocalizedElement {
       <main>
         <rt-scene-view
           .gizmoControls=${gizmo}
+          .movable=${movable}
           @ray-hover=${(event: CustomEvent<RayHoverDetail | null>) => (this.hover = event.detail)}
           @view-message=${(event: CustomEvent<string>) => this.toast(event.detail, 'error')}
           @view-ready=${this.onViewReady}

@@ -17,6 +17,7 @@ import { consumeStore } from './store-context.ts';
 import { itemName, shownName } from './scene-names.ts';
 import './rt-view-toolbar.ts';
 import { guideIds } from '../../quest/lab-controls.ts';
+import { isLocked, type MovableItems } from '../../quest/movable-items.ts';
 
 /** The 3D view's code (three.js), loaded after the lab's first render, with a few tries. */
 const labViewCode = new LazyModule(() => import('../../view/lab-view.ts'));
@@ -39,6 +40,7 @@ export class RtSceneView extends LocalizedElement {
   static override properties = {
     store: { attribute: false },
     gizmoControls: { attribute: false },
+    movable: { attribute: false },
     state: { state: true },
     atCamera: { state: true },
     helpOpen: { state: true },
@@ -110,6 +112,8 @@ export class RtSceneView extends LocalizedElement {
   declare store: Store | undefined;
   /** The gizmo buttons a level shows (rt-view-toolbar's `gizmoControls`; undefined: all). */
   declare gizmoControls: readonly string[] | undefined;
+  /** The only scene items the gizmo, its keys and Delete may change (a level's ui.movable; undefined: all). */
+  declare movable: MovableItems;
   declare private state: LabState | undefined;
   declare private atCamera: boolean;
   declare private helpOpen: boolean;
@@ -173,7 +177,7 @@ export class RtSceneView extends LocalizedElement {
       this.view = null;
     }
     if (!this.view && !this.viewProblem && this.store && this.isConnected && this.loadingFor !== this.store) void this.createView(this.store);
-    if (this.view && (changed.has('gizmoControls') || changed.has('store'))) this.view.setGizmoModes(this.gizmoControls?.filter(isGizmoMode));
+    if (this.view && (changed.has('gizmoControls') || changed.has('movable') || changed.has('store'))) this.limitGizmo(this.view);
   }
 
   override render() {
@@ -189,7 +193,7 @@ export class RtSceneView extends LocalizedElement {
       }
       <rt-view-toolbar
         .gizmo=${state?.gizmo}
-        .allowedModes=${state ? modesShown(state) : []}
+        .allowedModes=${state ? modesShown(state, this.movable) : []}
         .gizmoControls=${this.gizmoControls}
         ?at-camera=${this.atCamera}
         ?pixel-selected=${state?.selectedPixel != null}
@@ -227,6 +231,8 @@ export class RtSceneView extends LocalizedElement {
     if (this.view || !this.isConnected || this.store !== store) return;
     const view = new LabView(canvas, store);
     this.view = view;
+    // The level may have set its limits while the code loaded.
+    this.limitGizmo(view);
     this.viewProblem = '';
     this.viewCleanups.push(
       view.onRayHover((detail) => this.fire<RayHoverDetail | null>('ray-hover', detail)),
@@ -241,6 +247,10 @@ export class RtSceneView extends LocalizedElement {
     this.resize();
     this.requestUpdate();
     this.fire('view-ready', view);
+  }
+
+  private limitGizmo(view: LabView): void {
+    view.limitGizmo(this.gizmoControls?.filter(isGizmoMode), this.movable);
   }
 
   private showNote(text: string): void {
@@ -281,8 +291,9 @@ function thinningText({ shown, of }: Thinning): string {
   return msg(str`Showing ${counts.format(shown)} of ${counts.format(of)} rays while you edit.`);
 }
 
-/** Modes shown as available: all when nothing is selected (choosing a mode first is fine). */
-function modesShown(state: LabState) {
+/** Modes shown as available: all when nothing is selected (choosing a mode first is fine), none for a locked selection. */
+function modesShown(state: LabState, movable: MovableItems) {
+  if (isLocked(state.selection, movable)) return [];
   return state.selection ? gizmoModesFor(state.selection, state.scene) : GIZMO_MODES;
 }
 

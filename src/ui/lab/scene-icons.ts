@@ -34,6 +34,11 @@ export function cameraIcon(): TemplateResult {
   return icon(svg`<rect x="2" y="6" width="11" height="9" rx="1" fill="none" /><path d="M13 9l5-3v9l-5-3" fill="none" />`);
 }
 
+/** A padlock: an item the level keeps where it is (ui.movable). */
+export function lockIcon(): TemplateResult {
+  return icon(svg`<rect x="4.5" y="9" width="11" height="8" rx="1.5" fill="none" /><path d="M7 9V6.5a3 3 0 0 1 6 0V9" fill="none" />`);
+}
+
 function icon(body: SVGTemplateResult): TemplateResult {
   return html`<svg class="icon" viewBox="0 0 20 20" width="20" height="20" aria-hidden="true" stroke="currentColor" stroke-width="1.3" stroke-linejoin="round">${body}</svg>`;
 }

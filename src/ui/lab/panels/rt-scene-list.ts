@@ -1,12 +1,16 @@
 import { msg, str } from '@lit/localize';
 import { css, html, nothing, type PropertyValues, type TemplateResult } from 'lit';
+import { ifDefined } from 'lit/directives/if-defined.js';
 import { repeat } from 'lit/directives/repeat.js';
 import type { LabAction } from '../../../lab-state/lab-action.ts';
 import type { Selection } from '../../../lab-state/lab-state.ts';
 import { MESH_ASSET_NAMES } from '../../../scene/mesh-assets.ts';
 import type { LightType } from '../../../scene/scene.ts';
-import { cameraIcon, lightIcon, shapeIcon } from '../scene-icons.ts';
+import { isLocked, type MovableItems } from '../../../quest/movable-items.ts';
+import { lockedNote } from '../../../view/locked-note.ts';
+import { cameraIcon, lightIcon, lockIcon, shapeIcon } from '../scene-icons.ts';
 import { itemName, lightTypeName, lightTypeShortName, modelName, shapeKindName, shapeName, shownName } from '../scene-names.ts';
+import { visuallyHiddenStyles } from '../../controls/visually-hidden.css.ts';
 import { StorePanel } from './store-panel.ts';
 import { guideIds } from '../../../quest/lab-controls.ts';
 
@@ -28,18 +32,21 @@ const LIGHT_TYPES: LightType[] = ['point', 'spot', 'area'];
  * buttons for each shape, model and light type. Every change is a `selection.changed`,
  * `object.added`, `light.added`, `object.deleted` or `light.deleted` action on `store`.
  * `shownControls` (scene-list.objects, scene-list.lights) can leave out the objects or the
- * lights; the camera is always listed.
+ * lights; the camera is always listed. `movable` (a level's ui.movable) locks the other items:
+ * they carry a lock, cannot be deleted, and while one is selected the panel says why.
  */
 export class RtSceneList extends StorePanel<'scene-list'> {
   protected readonly controlPanel = 'scene-list';
   static override properties = {
     ...StorePanel.properties,
     allowEditing: { type: Boolean, attribute: 'allow-editing' },
+    movable: { attribute: false },
     adding: { state: true },
   };
 
   static override styles = [
     StorePanel.styles,
+    visuallyHiddenStyles,
     css`
       [role='listbox'] {
         display: grid;
@@ -91,6 +98,11 @@ export class RtSceneList extends StorePanel<'scene-list'> {
         font-size: 0.8125rem;
         opacity: 0.8;
       }
+      .locked-reason {
+        margin: 8px 0 0;
+        color: var(--rt-muted);
+        font-size: 0.8125rem;
+      }
       .actions {
         display: flex;
         gap: 8px;
@@ -134,6 +146,8 @@ export class RtSceneList extends StorePanel<'scene-list'> {
 
   /** Show Add and Delete (default true); the game's early levels switch them off. */
   declare allowEditing: boolean;
+  /** The only items that can be moved or deleted (undefined: all). */
+  declare movable: MovableItems;
   /** Whether the Add buttons are open. */
   declare private adding: boolean;
   /** Focus the selected row after the next render (after adding or deleting by keyboard). */
@@ -196,7 +210,8 @@ export class RtSceneList extends StorePanel<'scene-list'> {
   }
 
   private delete(selection: Selection): void {
-    if (!selection || selection.kind === 'camera') return;
+    // A locked item's reason is on show while it is selected.
+    if (!selection || selection.kind === 'camera' || isLocked(selection, this.movable)) return;
     this.focusSelected = true;
     this.send('edit', selection.kind === 'object' ? { type: 'object.deleted', id: selection.id } : { type: 'light.deleted', id: selection.id });
   }
@@ -214,18 +229,23 @@ export class RtSceneList extends StorePanel<'scene-list'> {
     const selected = this.selectedKey();
     // Roving tabindex: Tab lands on the selected row, or the first when nothing is selected.
     const tabStop = selected ?? this.items()[0]?.key;
-    const option = (key: string, icon: TemplateResult, name: string, kind: string, selection: Exclude<Selection, null>, guide: string) =>
-      html`<div
+    const reason = this.lockedReason();
+    const option = (key: string, icon: TemplateResult, name: string, kind: string, selection: Exclude<Selection, null>, guide: string) => {
+      const locked = isLocked(selection, this.movable);
+      return html`<div
         role="option"
         id=${key}
         data-key=${key}
         data-guide=${guide}
         tabindex=${key === tabStop ? 0 : -1}
         aria-selected=${key === selected ? 'true' : 'false'}
+        aria-describedby=${ifDefined(key === selected && reason ? 'locked-reason' : undefined)}
+        ?data-locked=${locked}
         @click=${() => this.select({ key, selection })}
       >
-        ${icon}<span class="name">${name}</span><span class="kind">${kind}</span>
+        ${icon}<span class="name">${name}</span><span class="kind">${kind}</span>${locked ? html`${lockIcon()}<span class="visually-hidden">${msg('locked')}</span>` : nothing}
       </div>`;
+    };
     const off = (type: LightType) => (scene.settings.lightTypes[type] ? '' : ` (${msg('off')})`);
     return html`
       <rt-panel-section heading=${msg('Scene')} name="scene">
@@ -275,15 +295,23 @@ export class RtSceneList extends StorePanel<'scene-list'> {
             ${option('camera', cameraIcon(), msg('Ray tracer camera'), '', { kind: 'camera' }, 'scene-list.item:camera')}
           </div>
         </div>
+        ${reason ? html`<p class="locked-reason" id="locked-reason" data-testid="locked-reason">${reason}</p>` : nothing}
         ${this.errorLine('list')}
         ${this.allowEditing ? this.editing() : nothing}
       </rt-panel-section>
     `;
   }
 
+  /** Why the selected item stays where it is (a level's ui.movable), or '' when it is free to move. */
+  private lockedReason(): string {
+    const selection = this.state?.selection ?? null;
+    if (!this.state || !selection || !this.movable || !isLocked(selection, this.movable)) return '';
+    return lockedNote(this.state.scene, selection, this.movable);
+  }
+
   private editing(): TemplateResult {
     const selection = this.state?.selection ?? null;
-    const deletable = selection !== null && selection.kind !== 'camera';
+    const deletable = selection !== null && selection.kind !== 'camera' && !isLocked(selection, this.movable);
     const label = deletable
       ? msg(str`Delete ${this.state ? itemName(this.state.scene, selection.id) : selection.id}`)
       : msg('Select an object or a light to delete it');
