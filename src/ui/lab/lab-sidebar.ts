@@ -16,7 +16,7 @@ export function labSidebar(state: LabState, { panels, controls, movable }: Pick<
   return [
     panel(
       'scene-list',
-      html`<rt-scene-list ?allow-editing=${shows('add-remove')} .shownControls=${controls('scene-list')} .movable=${movable}></rt-scene-list>`,
+      html`<rt-scene-list .allowEditing=${shows('add-remove')} .shownControls=${controls('scene-list')} .movable=${movable}></rt-scene-list>`,
     ),
     state.selection?.kind === 'light' && shows('light')
       ? html`<rt-light-panel .shownControls=${controls('light')}></rt-light-panel>`
