@@ -147,21 +147,28 @@ describe('the cosine-weighted bounce lab', () => {
     }
   });
 
-  it('draws the failing normal with its cosine lobe, the tracer’s directions and the learner’s', () => {
+  it('draws the failing normal upright with its cosine lobe, the tracer’s directions and the learner’s', () => {
     const wholeSphere = (_n: Vec3, random: () => number) => onSphere(random);
-    const { runs, report } = grade(wholeSphere);
-    const drawing = drawCosineBounceFailure(report, runs)!;
-    const failing = runs['run' in report.firstFailure! ? report.firstFailure.run : 0]!;
-    const n = failing.args[0];
-    expect(drawing.shapes).toEqual([{ kind: 'sphere', center: { x: n.x / 2, y: n.y / 2, z: n.z / 2 }, radius: 0.5 }]);
-    const side = (p: Vec3) => p.x * n.x + p.y * n.y + p.z * n.z;
-    const expected = drawing.points.filter((point) => point.mark === 'expected');
-    const got = drawing.points.filter((point) => point.mark === 'got');
-    expect(expected.length).toBeGreaterThan(0);
-    expect(expected.every((point) => side(point.at) >= 0)).toBe(true);
-    // About half of the whole sphere's directions lie below the surface: the picture shows them there.
-    expect(got.filter((point) => side(point.at) < 0).length).toBeGreaterThan(got.length / 4);
-    expect(drawing.segments.some((segment) => segment.mark === 'got' && side(segment.to) < 0)).toBe(true);
-    expect(drawCosineBounceFailure(grade(malley).report, runs)).toBeNull();
+    const noFrame = lifted(
+      Math.sqrt,
+      (r) => Math.sqrt(1 - r * r),
+      2 * Math.PI,
+      (_n, x, y, z) => vec(x, y, z),
+    );
+    for (const wrong of [wholeSphere, noFrame]) {
+      const { runs, report } = grade(wrong);
+      const drawing = drawCosineBounceFailure(report, runs)!;
+      expect(drawing.cloud).toBe(true);
+      expect(drawing.shapes).toEqual([{ kind: 'sphere', center: { x: 0, y: 0.5, z: 0 }, radius: 0.5 }]);
+      expect(drawing.segments[0]).toMatchObject({ from: { x: 0, y: 0, z: 0 }, to: { x: 0, y: 1.3, z: 0 }, mark: 'normal' });
+      const expected = drawing.points.filter((point) => point.mark === 'expected');
+      const got = drawing.points.filter((point) => point.mark === 'got');
+      expect(expected.length).toBeGreaterThan(0);
+      expect(expected.every((point) => point.at.y >= 0 && Math.abs(Math.hypot(point.at.x, point.at.y, point.at.z) - 1) < 1e-9)).toBe(true);
+      // Turned with their normal, the learner's directions keep their angle to it: many lie below the surface.
+      expect(got.filter((point) => point.at.y < 0).length).toBeGreaterThan(got.length / 4);
+      expect(drawing.segments.some((segment) => segment.mark === 'got' && segment.to.y < 0)).toBe(true);
+    }
+    expect(drawCosineBounceFailure(grade(malley).report, grade(malley).runs)).toBeNull();
   });
 });

@@ -1,11 +1,11 @@
-import { Vector3 } from 'three';
+import { Quaternion, Vector3 } from 'three';
 import { sampleHemisphere } from '../../tracer/hemisphere-sampling.ts';
 import { hashKey, RandomStream } from '../../tracer/sampler.ts';
 import type { CaseDrawing } from './case-drawing.ts';
 import type { CosineNormal } from './cosine-bounce-normals.ts';
 import type { Vec3 } from './code-lab-grading.ts';
 import type { DirectionReport, DirectionRun } from './direction-statistics.ts';
-import { scaled, unit, v } from './lab-vectors.ts';
+import { unit, v } from './lab-vectors.ts';
 
 /**
  * The cosine-weighted bounce lab (path-tracing chapter, level 23): the learner writes
@@ -49,14 +49,16 @@ export function tracerCosineDirection(normal: Vec3, random: () => number): Vec3 
 }
 
 /** How many directions of each kind the 3D view shows: enough to see where they crowd, few enough to see each. */
-const SHOWN = 60;
+const SHOWN = 50;
 
 /**
  * The failing normal drawn at the origin: the normal, the cosine lobe (the directions' density
  * cos θ / π as a polar plot is a sphere of diameter 1 touching the surface at the origin),
  * the tips of the learner's directions (got) and the tracer's for the same seeds (expected):
  * where they crowd, and on which side of the surface they lie, shows what went wrong. The
- * failing run's own direction is drawn as an arrow.
+ * failing run's own direction is drawn as an arrow. All of it is turned so that the normal
+ * points up (+y): the level's camera looks along −z, and a normal along ±z seen end-on would
+ * hide which side of the surface a direction lies on; turning keeps every angle to the normal.
  */
 export function drawCosineBounceFailure(report: DirectionReport, runs: readonly DirectionRun[]): CaseDrawing | null {
   const failure = report.firstFailure;
@@ -65,27 +67,29 @@ export function drawCosineBounceFailure(report: DirectionReport, runs: readonly 
   const group = runs.flatMap((run, index) => (run.kind === kind && run.repeats === undefined ? [index] : []));
   const normal = runs[group[0] ?? 0]?.args[0];
   if (!normal) return null;
+  const upright = new Quaternion().setFromUnitVectors(new Vector3(normal.x, normal.y, normal.z), new Vector3(0, 1, 0));
+  const turned = (direction: Vec3): Vec3 => {
+    const length = Math.hypot(direction.x, direction.y, direction.z);
+    // A learner's vector drawn at most 2 long, so a wild one does not shrink the rest out of sight.
+    const turnedVector = new Vector3(direction.x, direction.y, direction.z).multiplyScalar(length > 2 ? 2 / length : 1).applyQuaternion(upright);
+    return v(turnedVector.x, turnedVector.y, turnedVector.z);
+  };
   const origin = v(0, 0, 0);
   const drawing: CaseDrawing = {
-    segments: [{ from: origin, to: scaled(normal, 1.3), mark: 'normal', arrow: true }],
+    segments: [{ from: origin, to: v(0, 1.3, 0), mark: 'normal', arrow: true }],
     points: [],
-    shapes: [{ kind: 'sphere', center: scaled(normal, 0.5), radius: 0.5 }],
+    shapes: [{ kind: 'sphere', center: v(0, 0.5, 0), radius: 0.5 }],
+    cloud: true,
   };
   for (const index of group.slice(0, SHOWN)) {
     const run = runs[index]!;
     // The tracer's generator, not the sandbox's: other numbers for the seed, the same density.
     const stream = new RandomStream().reset(run.args[1].seededRandom);
-    drawing.points.push({ at: tracerCosineDirection(normal, () => stream.next()), mark: 'expected' });
+    drawing.points.push({ at: turned(tracerCosineDirection(normal, () => stream.next())), mark: 'expected' });
     const got = report.directions[index];
-    if (got) drawing.points.push({ at: tipOf(got), mark: 'got' });
+    if (got) drawing.points.push({ at: turned(got), mark: 'got' });
   }
   const failed = 'run' in failure ? report.directions[failure.run] : null;
-  if (failed) drawing.segments.push({ from: origin, to: tipOf(failed), mark: 'got', arrow: true });
+  if (failed) drawing.segments.push({ from: origin, to: turned(failed), mark: 'got', arrow: true });
   return drawing;
-}
-
-/** A learner's vector drawn at most 2 long, so a wild one does not shrink the rest out of sight. */
-function tipOf(direction: Vec3): Vec3 {
-  const length = Math.hypot(direction.x, direction.y, direction.z);
-  return length > 2 ? scaled(direction, 2 / length) : direction;
 }

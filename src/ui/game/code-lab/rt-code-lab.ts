@@ -239,7 +239,7 @@ export class RtCodeLab extends LocalizedElement {
   private directionLegend() {
     const swatch = (mark: 'expected' | 'got', shape: string) => html`<span aria-hidden="true" style="color: ${CASE_MARK_COLORS[mark]}">${shape}</span>`;
     return html`<p class="legend">
-      ${msg('Drawn in the 3D view: the normal and the cosine lobe, the sphere of diameter 1 on the surface;')} ${swatch('expected', '●')}
+      ${msg('Drawn in the 3D view, turned so that the normal points up: the normal and the cosine lobe, the sphere of diameter 1 on the surface;')} ${swatch('expected', '●')}
       ${msg('expected: the tips of the tracer’s directions;')} ${swatch('got', '◆')} ${msg('got: the tips of yours.')}
     </p>`;
   }
