@@ -74,7 +74,7 @@ export class RtCodeLab extends LocalizedElement {
         padding-left: 1.2em;
       }
       .fail {
-        color: var(--rt-error, #b00020);
+        color: var(--rt-danger);
       }
     `,
   ];
