@@ -1,5 +1,6 @@
 import { expect, test, type Page } from '@playwright/test';
 import { readFileSync } from 'node:fs';
+import { expectAccessible } from './support/axe.ts';
 import { collectErrors, expectStatus, levelsFolder, progressFile } from './support/game-steps.ts';
 
 // The path chapter's code lab (level 23): a random function graded as a sample in the browser's
@@ -58,10 +59,11 @@ test('the cosine-bounce lab grades a sample of directions and draws a failing on
   await typeCode(page, WHOLE_SPHERE);
   await run.click();
   await expect(result).toContainText('which goes into the surface');
-  await expect(result).toContainText('Drawn in the 3D view: the normal and the cosine lobe');
+  await expect(result).toContainText('Drawn in the 3D view, turned so that the normal points up: the normal and the cosine lobe');
   const drawn = await shownCase(page);
   expect(drawn?.shapes).toEqual([expect.objectContaining({ kind: 'sphere' })]);
   expect(drawn?.points.filter((point) => point.mark === 'got').length).toBeGreaterThan(10);
+  await expectAccessible(page, 'the cosine-bounce lab with a failing run');
 
   await typeCode(page, MALLEY);
   await run.click();
