@@ -1,3 +1,4 @@
+import { readFileSync } from 'node:fs';
 import { defineConfig, type Plugin } from 'vite';
 import { viteSingleFile } from 'vite-plugin-singlefile';
 import { levelTextsPlugin } from './scripts/level-texts-plugin.ts';
@@ -9,7 +10,8 @@ import { levelTextsPlugin } from './scripts/level-texts-plugin.ts';
  * from files next to it (browsers treat every file as its own origin). So everything goes
  * inside the page: the script inline (vite-plugin-singlefile), the models and icons as data
  * URLs, and the render worker as an inline worker (Vite's `?worker&inline`, started from a
- * blob). No service worker: file:// pages cannot register one, and nothing needs caching.
+ * blob), the code lab's sandbox page as the frame's `srcdoc`. No service worker: file://
+ * pages cannot register one, and nothing needs caching.
  */
 
 const WORKER_PORT = /src\/render\/web-worker-port\.ts$/;
@@ -28,6 +30,27 @@ function inlineRenderWorker(): Plugin {
   };
 }
 
+const SANDBOX_PORT = /src\/ui\/game\/code-lab\/lab-sandbox\.ts$/;
+const SANDBOX_SRC = "frame.src = 'code-lab-sandbox.html';";
+
+/**
+ * Gives the code lab's frame its page as text instead of a file beside index.html, which a
+ * stick may not hold. The frame stays sandboxed without allow-same-origin (an opaque origin),
+ * and the page's own policy (its <meta>) still holds in it: this build's page has none to pass on.
+ */
+function inlineCodeLabSandbox(): Plugin {
+  return {
+    name: 'inline-code-lab-sandbox',
+    enforce: 'pre',
+    transform(code, id) {
+      if (!SANDBOX_PORT.test(id)) return null;
+      if (!code.includes(SANDBOX_SRC)) this.error(`${id} no longer loads the sandbox as ${SANDBOX_SRC}: update vite.usb.config.ts`);
+      const page = readFileSync(new URL('public/code-lab-sandbox.html', import.meta.url), 'utf8');
+      return code.replace(SANDBOX_SRC, `frame.srcdoc = ${JSON.stringify(page)};`);
+    },
+  };
+}
+
 export default defineConfig({
   base: './',
   // A classic worker: a module worker from a blob is refused on a file:// page.
@@ -38,5 +61,5 @@ export default defineConfig({
     assetsInlineLimit: () => true,
     chunkSizeWarningLimit: 8000,
   },
-  plugins: [levelTextsPlugin(), inlineRenderWorker(), viteSingleFile()],
+  plugins: [levelTextsPlugin(), inlineRenderWorker(), inlineCodeLabSandbox(), viteSingleFile()],
 });

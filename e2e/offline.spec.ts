@@ -1,11 +1,13 @@
 import { expect, test } from '@playwright/test';
-import { existsSync } from 'node:fs';
-import { resolve } from 'node:path';
+import { copyFileSync, existsSync, mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
 import { PNG } from 'pngjs';
+import { progressFile } from './support/game-steps.ts';
 
 // The app without a network: after one visit the service worker has every file, so a
 // reload offline plays on (and the teacher's pages open); and the USB-stick build
-// (`npm run build:usb`) opened from disk, file://, draws its scene and ray traces.
+// (`npm run build:usb`) opened from disk, file://, draws its scene, ray traces and runs a code lab.
 
 test.use({ serviceWorkers: 'allow' });
 
@@ -79,5 +81,66 @@ test('the USB-stick build opens from file:// and draws its scene', async ({ page
   await window.getByRole('button', { name: 'Render', exact: true }).click();
   await expect(window.getByTestId('render-status')).toContainText(/Done in [\d.]+ (ms|s)/, { timeout: 90_000 });
   expect(colours(await window.getByRole('img', { name: 'The ray traced image' }).screenshot())).toBeGreaterThan(50);
+  expect(errors).toEqual([]);
+});
+
+// Every door the learner's code tries must be shut; the exception lists any that opened.
+const PROBE = `function hitSphere() {
+  const opened = [];
+  const tryIt = (name, open) => { try { open(); opened.push(name); } catch {} };
+  tryIt('localStorage', () => localStorage.getItem('rtq.progress'));
+  tryIt('document', () => document.title.length);
+  tryIt('fetch', () => { const request = new XMLHttpRequest(); request.open('GET', 'index.html', false); request.send(); });
+  tryIt('parent', () => parent.document);
+  throw new Error('opened [' + opened.join(', ') + ']');
+}`;
+
+const CORRECT = `function hitSphere(origin, direction, center, radius) {
+  const oc = sub(origin, center);
+  const b = dot(oc, direction);
+  const d = b * b - (dot(oc, oc) - radius * radius);
+  if (d < 0) return null;
+  const near = -b - Math.sqrt(d);
+  if (near > 0) return near;
+  const far = -b + Math.sqrt(d);
+  return far > 0 ? far : null;
+}`;
+
+test('the USB-stick build runs a code lab from its one file, sandboxed', async ({ page }) => {
+  // index.html alone, as the README says to copy it: the sandbox page must come from inside it.
+  const built = resolve(process.env.E2E_USB_DIST ?? 'dist-usb', 'index.html');
+  expect(existsSync(built), `${built} is missing: run npm run build:usb first`).toBe(true);
+  const file = join(mkdtempSync(join(tmpdir(), 'rtq-usb-')), 'index.html');
+  copyFileSync(built, file);
+  const errors: string[] = [];
+  page.on('pageerror', (error) => errors.push(error.message));
+  await page.addInitScript(
+    (saved) => {
+      if (window !== window.top || sessionStorage.getItem('seeded')) return;
+      sessionStorage.setItem('seeded', 'yes');
+      localStorage.setItem('rtq.progress', saved);
+    },
+    progressFile(['01-introduction']),
+  );
+  await page.goto(`file://${file}`);
+  const welcome = page.getByRole('button', { name: 'Got it' });
+  if (await welcome.count()) await welcome.click();
+  await page.locator('[data-command="levels"]').click();
+  await page.locator('rt-level-map [data-level="02-rays-from-the-camera"]').click();
+  await page.locator('rt-task-card[data-task="code-hit-sphere"] button.head').click();
+  const lab = page.locator('rt-code-lab');
+  const editor = lab.locator('.cm-content');
+  const result = lab.getByRole('status');
+  for (const [code, said] of [
+    [PROBE, 'Your function threw Error: opened [] at line 8.'],
+    [CORRECT, '306 of 306 cases pass.'],
+  ]) {
+    await editor.click();
+    await page.keyboard.press('ControlOrMeta+a');
+    await page.keyboard.insertText(code);
+    await lab.getByRole('button', { name: 'Run tests' }).click();
+    await expect(result).toContainText(said);
+  }
+  expect(await page.evaluate(() => localStorage.getItem('rtq.progress'))).toContain('01-introduction');
   expect(errors).toEqual([]);
 });

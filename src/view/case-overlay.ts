@@ -23,6 +23,7 @@ import { paletteNameFor, rayPalette } from './ray-palette.ts';
 const RAY_RADIUS = 0.008;
 const ARROW_LENGTH = 0.05;
 const POINT_RADIUS = 0.03;
+const CLOUD_POINT_RADIUS = 0.01;
 /** The case's objects: a light skin and dark lines, apart from the scene's own objects. */
 const SHAPE_COLOR = 0xdde3ea;
 const SHAPE_LINE_COLOR = 0x3b4450;
@@ -117,8 +118,9 @@ export class CaseOverlay {
       outline.position.copy(skin.position);
       this.group.add(skin, outline);
     }
+    const radius = size * (drawing.cloud ? CLOUD_POINT_RADIUS : POINT_RADIUS);
     for (const point of drawing.points) {
-      const geometry = point.mark === 'expected' ? new SphereGeometry(size * POINT_RADIUS, 16, 8) : new OctahedronGeometry(size * POINT_RADIUS * 1.4);
+      const geometry = point.mark === 'expected' ? new SphereGeometry(radius, 16, 8) : new OctahedronGeometry(radius * 1.4);
       // Drawn over everything, last (the transparent pass, after the rays): a hit on the far side of the sphere or behind an object still shows.
       const material = this.own(new MeshBasicMaterial({ color: CASE_MARK_COLORS[point.mark], depthTest: false, transparent: true }));
       const mesh = new Mesh(this.own(geometry), material);

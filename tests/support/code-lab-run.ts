@@ -2,6 +2,8 @@ import type { LabAction } from '../../src/lab-state/lab-action.ts';
 import type { CodeGoal } from '../../src/quest/code-labs/code-goal.ts';
 import { gradeLab, type LabOutcome } from '../../src/quest/code-labs/code-lab-grading.ts';
 import { gradeSamples, sampleTally } from '../../src/quest/code-labs/code-lab-statistics.ts';
+import { tracerCosineDirection } from '../../src/quest/code-labs/cosine-bounce-lab.ts';
+import { directionTally, gradeDirections } from '../../src/quest/code-labs/direction-statistics.ts';
 import { labCases } from '../../src/quest/code-labs/lab-cases.ts';
 import { tracerPixelSamples } from '../../src/quest/code-labs/pixel-samples-lab.ts';
 import { RandomStream } from '../../src/tracer/sampler.ts';
@@ -37,6 +39,13 @@ export function tracerRun(goal: CodeGoal): LabAction {
       grading.runs.map((run) => run.args),
     );
     return { type: 'code.graded', lab: goal.code.lab, ...sampleTally(gradeSamples(grading.runs, outcomes, grading.significance)) };
+  }
+  if (grading.kind === 'directions') {
+    const outcomes = runCases(
+      tracerCosineDirection,
+      grading.runs.map((run) => run.args),
+    );
+    return { type: 'code.graded', lab: goal.code.lab, ...directionTally(gradeDirections(grading.runs, outcomes, grading.significance), grading.normals) };
   }
   const { cases, tolerance } = grading;
   // Through a copy, as the sandbox sends them back: plain data, not the tracer's own objects.

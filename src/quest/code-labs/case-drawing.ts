@@ -32,6 +32,8 @@ export interface CaseDrawing {
   segments: CaseSegment[];
   points: CasePoint[];
   shapes: CaseShape[];
+  /** A cloud of many points (a random function's answers) is drawn with small ones, so that each shows and where they crowd. */
+  cloud?: boolean;
 }
 
 /** Every point a view must fit to show the whole case: the segments' ends, the points, the shapes' bounding boxes. */

@@ -1,6 +1,7 @@
 import { z } from 'zod';
 import { wholeNumberIn } from '../../scene/scene-schema-parts.ts';
 import { localizedTextSchema } from '../localized-text.ts';
+import { COSINE_NORMALS } from './cosine-bounce-normals.ts';
 import { MIRROR_EDGES } from './mirror-edges.ts';
 import { PHONG_EDGES } from './phong-edges.ts';
 import { RAY_BOX_EDGES } from './ray-box-edges.ts';
@@ -60,6 +61,15 @@ export const codeGoalSchema = z
             .min(1)
             .describe('The numbers of samples n the runs ask for, in turn; each a square.'),
           runs: wholeNumberIn([50, 1000]).describe('How many seeded runs; enough points for the χ² test.'),
+          seed: wholeNumberIn([0, 2 ** 31 - 1]),
+        }),
+      }),
+      z.strictObject({
+        lab: z.literal('cosine-bounce').describe('Cosine-weighted bounce directions, graded statistically (cosine-bounce-lab.ts).'),
+        ...labFields,
+        cases: z.strictObject({
+          normals: z.array(z.enum(COSINE_NORMALS)).min(1).describe('The normals the function is run with, by name; each a kind of case.'),
+          samples: wholeNumberIn([200, 2000]).describe('How many seeded runs per normal; enough directions for the χ² tests.'),
           seed: wholeNumberIn([0, 2 ** 31 - 1]),
         }),
       }),

@@ -1,7 +1,8 @@
 import { javascript } from '@codemirror/lang-javascript';
-import { syntaxTree } from '@codemirror/language';
+import { syntaxHighlighting, syntaxTree } from '@codemirror/language';
 import { linter, lintGutter, type Diagnostic } from '@codemirror/lint';
 import { basicSetup, EditorView } from 'codemirror';
+import { codeHighlightStyle } from './code-highlight.ts';
 
 /**
  * The code lab's editor: CodeMirror 6 with its basic setup (line numbers, JavaScript
@@ -22,6 +23,8 @@ export function createCodeEditor(options: {
     extensions: [
       basicSetup,
       javascript(),
+      // basicSetup's default style is only a fallback, so this one replaces it: readable in the dark theme too.
+      syntaxHighlighting(codeHighlightStyle),
       lintGutter(),
       // The editor sits in the task column, about 250 px wide: long lines and the skeleton's
       // step comments wrap instead of hiding past a sideways scroll.

@@ -46,7 +46,7 @@ export function caseKindName(kind: string): string {
     case 'random':
       return msg('random cases');
     default:
-      return boxCaseKindName(kind) ?? shadowCaseKindName(kind) ?? kind;
+      return boxCaseKindName(kind) ?? shadowCaseKindName(kind) ?? normalKindName(kind) ?? kind;
   }
 }
 
@@ -95,6 +95,22 @@ function shadowCaseKindName(kind: string): string | null {
       return msg('several spheres, only the last one in the way');
     case 'random-shadow':
       return msg('random points, lights and spheres');
+    default:
+      return null;
+  }
+}
+
+/** The cosine-bounce lab's normals (cosine-bounce-normals.ts). */
+function normalKindName(kind: string): string | null {
+  switch (kind) {
+    case 'normal-plus-z':
+      return msg('the normal (0, 0, 1)');
+    case 'normal-minus-z':
+      return msg('the normal (0, 0, −1)');
+    case 'normal-plus-y':
+      return msg('the normal (0, 1, 0), a floor’s');
+    case 'normal-slanted':
+      return msg('a normal along no axis');
     default:
       return null;
   }

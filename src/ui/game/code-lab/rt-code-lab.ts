@@ -5,6 +5,8 @@ import { css, html, nothing, type PropertyValues } from 'lit';
 import type { CodeGoal } from '../../../quest/code-labs/code-goal.ts';
 import { gradeLab, type LabReport, type Tolerance } from '../../../quest/code-labs/code-lab-grading.ts';
 import { gradeSamples, sampleTally, type RandomRun, type StatisticsReport } from '../../../quest/code-labs/code-lab-statistics.ts';
+import { drawCosineBounceFailure } from '../../../quest/code-labs/cosine-bounce-lab.ts';
+import { directionTally, gradeDirections, type DirectionReport, type DirectionRun } from '../../../quest/code-labs/direction-statistics.ts';
 import { labCases } from '../../../quest/code-labs/lab-cases.ts';
 import { drawFailingCase } from '../../../quest/code-labs/lab-drawings.ts';
 import { CASE_MARK_COLORS } from '../../../quest/code-labs/case-drawing.ts';
@@ -15,6 +17,7 @@ import { levelText } from '../level-text.ts';
 import { createCodeEditor, replaceCode } from './code-editor.ts';
 import { codeLabHostContext } from './code-lab-host.ts';
 import { statisticsReport } from './code-lab-statistics-report.ts';
+import { directionReport } from './direction-statistics-report.ts';
 import { caseInput, caseKindName, failureText, vectorLibrary } from './code-lab-texts.ts';
 import { savedCode, saveCode } from './code-drafts.ts';
 import { LabSandbox, RUN_LIMIT_MS, type SandboxResult } from './lab-sandbox.ts';
@@ -25,6 +28,7 @@ type RunState =
   | { kind: 'running' }
   | { kind: 'graded'; report: LabReport; tolerance: Tolerance }
   | { kind: 'sampled'; report: StatisticsReport; runs: RandomRun[] }
+  | { kind: 'directions'; report: DirectionReport; runs: DirectionRun[] }
   | Exclude<SandboxResult, { kind: 'ran' }>;
 
 /**
@@ -70,7 +74,7 @@ export class RtCodeLab extends LocalizedElement {
         padding-left: 1.2em;
       }
       .fail {
-        color: var(--rt-error, #b00020);
+        color: var(--rt-danger);
       }
     `,
   ];
@@ -108,8 +112,14 @@ export class RtCodeLab extends LocalizedElement {
 
   /** The last run's first failing case in the 3D view, or none (it passed, gave no answers, or there was no run). */
   private drawCase(goal: CodeGoal): void {
-    const failure = this.state.kind === 'graded' ? this.state.report.firstFailure : null;
-    this.host.value?.showCase(failure ? drawFailingCase(goal, failure) : null);
+    this.host.value?.showCase(this.caseDrawing(goal));
+  }
+
+  private caseDrawing(goal: CodeGoal) {
+    const state = this.state;
+    if (state.kind === 'directions') return drawCosineBounceFailure(state.report, state.runs);
+    const failure = state.kind === 'graded' ? state.report.firstFailure : null;
+    return failure ? drawFailingCase(goal, failure) : null;
   }
 
   protected override updated(changed: PropertyValues): void {
@@ -187,6 +197,8 @@ export class RtCodeLab extends LocalizedElement {
         return this.report(state.report, state.tolerance);
       case 'sampled':
         return statisticsReport(state.report, state.runs);
+      case 'directions':
+        return html`${directionReport(state.report, state.runs)} ${state.report.firstFailure ? this.directionLegend() : nothing}`;
     }
   }
 
@@ -223,6 +235,15 @@ export class RtCodeLab extends LocalizedElement {
     </p>`;
   }
 
+  /** What the 3D view shows of a failing run of directions (cosine-bounce-lab.ts). */
+  private directionLegend() {
+    const swatch = (mark: 'expected' | 'got', shape: string) => html`<span aria-hidden="true" style="color: ${CASE_MARK_COLORS[mark]}">${shape}</span>`;
+    return html`<p class="legend">
+      ${msg('Drawn in the 3D view, turned so that the normal points up: the normal and the cosine lobe, the sphere of diameter 1 on the surface;')} ${swatch('expected', '●')}
+      ${msg('expected: the tips of the tracer’s directions;')} ${swatch('got', '◆')} ${msg('got: the tips of yours.')}
+    </p>`;
+  }
+
   private async run(goal: CodeGoal): Promise<void> {
     this.state = { kind: 'running' };
     const grading = labCases(goal);
@@ -245,6 +266,14 @@ export class RtCodeLab extends LocalizedElement {
       this.state = { kind: 'sampled', report, runs: grading.runs };
       lastRuns.set(goal.code.lab, this.state);
       this.host.value?.graded({ lab: goal.code.lab, ...sampleTally(report) });
+      return;
+    }
+    if (grading.kind === 'directions') {
+      const report = gradeDirections(grading.runs, result.outcomes, grading.significance);
+      this.state = { kind: 'directions', report, runs: grading.runs };
+      lastRuns.set(goal.code.lab, this.state);
+      this.drawCase(goal);
+      this.host.value?.graded({ lab: goal.code.lab, ...directionTally(report, grading.normals) });
       return;
     }
     const { tolerance } = grading;

@@ -1,0 +1,74 @@
+import { expect, test, type Page } from '@playwright/test';
+import { readFileSync } from 'node:fs';
+import { expectAccessible } from './support/axe.ts';
+import { collectErrors, expectStatus, levelsFolder, progressFile } from './support/game-steps.ts';
+
+// The path chapter's code lab (level 23): a random function graded as a sample in the browser's
+// sandbox, 4004 runs within the time limit. A whole-sphere function is stopped on its first
+// direction into the surface, drawn in 3D; Malley's method passes and completes the task.
+
+const index = JSON.parse(readFileSync(new URL('index.json', levelsFolder), 'utf8')) as { chapters: { levels: string[] }[] };
+const order = index.chapters.flatMap((chapter) => chapter.levels);
+const LEVEL = '23-better-guesses';
+const TITLE = 'Code lab: cosine bounces';
+
+const MALLEY = `function cosineDirection(normal, random) {
+  const r = Math.sqrt(random()), phi = 2 * Math.PI * random();
+  const x = r * Math.cos(phi), y = r * Math.sin(phi), z = Math.sqrt(1 - r * r);
+  const helper = Math.abs(normal.x) > 0.9 ? vec(0, 1, 0) : vec(1, 0, 0);
+  const t = normalize(cross(helper, normal));
+  const b = cross(normal, t);
+  return add(add(scale(t, x), scale(b, y)), scale(normal, z));
+}`;
+
+const WHOLE_SPHERE = `function cosineDirection(normal, random) {
+  const z = 2 * random() - 1, r = Math.sqrt(1 - z * z), phi = 2 * Math.PI * random();
+  return vec(r * Math.cos(phi), r * Math.sin(phi), z);
+}`;
+
+type ShownCase = { points: { mark: string }[]; shapes: { kind: string }[] } | null;
+const shownCase = (page: Page) =>
+  page.locator('rt-scene-view').evaluate((element) => (element as unknown as { labView: { labCase: { shown: ShownCase } } }).labView.labCase.shown);
+
+async function typeCode(page: Page, code: string): Promise<void> {
+  await page.locator('rt-code-lab .cm-content').click();
+  await page.keyboard.press('ControlOrMeta+a');
+  await page.keyboard.insertText(code);
+}
+
+test('the cosine-bounce lab grades a sample of directions and draws a failing one', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.addInitScript(
+    (saved) => {
+      if (window !== window.top || sessionStorage.getItem('seeded')) return;
+      sessionStorage.setItem('seeded', 'yes');
+      localStorage.setItem('rtq.progress', saved);
+    },
+    progressFile(order.slice(0, order.indexOf(LEVEL))),
+  );
+  await page.goto('/');
+  const welcome = page.getByRole('button', { name: 'Got it' });
+  if (await welcome.count()) await welcome.click();
+  await page.locator('[data-command="levels"]').click();
+  await page.locator(`rt-level-map [data-level="${LEVEL}"]`).click();
+  await page.locator('rt-task-card[data-task="code-cosine-bounce"] button.head').click();
+  const lab = page.locator('rt-code-lab');
+  const run = lab.getByRole('button', { name: 'Run tests' });
+  const result = lab.getByRole('status');
+
+  await typeCode(page, WHOLE_SPHERE);
+  await run.click();
+  await expect(result).toContainText('which goes into the surface');
+  await expect(result).toContainText('Drawn in the 3D view, turned so that the normal points up: the normal and the cosine lobe');
+  const drawn = await shownCase(page);
+  expect(drawn?.shapes).toEqual([expect.objectContaining({ kind: 'sphere' })]);
+  expect(drawn?.points.filter((point) => point.mark === 'got').length).toBeGreaterThan(10);
+  await expectAccessible(page, 'the cosine-bounce lab with a failing run');
+
+  await typeCode(page, MALLEY);
+  await run.click();
+  await expect(result).toContainText('4004 runs: every direction of length 1, on the normal’s side, the same for the same random.');
+  expect(await shownCase(page)).toBeNull();
+  await expectStatus(page, TITLE, 'done');
+  expect(errors).toEqual([]);
+});
