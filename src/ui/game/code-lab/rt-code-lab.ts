@@ -64,6 +64,7 @@ export class RtCodeLab extends LocalizedElement {
       }
       .buttons {
         display: flex;
+        flex-wrap: wrap;
         gap: 6px;
         margin: 6px 0;
       }
