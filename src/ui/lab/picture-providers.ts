@@ -29,6 +29,7 @@ export function providePictures(
     initialValue: codeLabReporter(
       () => services().store,
       () => lab().view,
+      () => lab().levelScene,
     ),
   });
   let stop: (() => void) | null = null;

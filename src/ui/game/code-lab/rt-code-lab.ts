@@ -8,6 +8,7 @@ import { gradeSamples, sampleTally, type RandomRun, type StatisticsReport } from
 import { drawCosineBounceFailure } from '../../../quest/code-labs/cosine-bounce-lab.ts';
 import { directionTally, gradeDirections, type DirectionReport, type DirectionRun } from '../../../quest/code-labs/direction-statistics.ts';
 import { labCases } from '../../../quest/code-labs/lab-cases.ts';
+import { rendersWith } from '../../../quest/code-labs/lab-render/lab-functions.ts';
 import { drawFailingCase } from '../../../quest/code-labs/lab-drawings.ts';
 import { CASE_MARK_COLORS } from '../../../quest/code-labs/case-drawing.ts';
 import { LOCALES, localize, type Locale } from '../../../quest/localized-text.ts';
@@ -21,6 +22,7 @@ import { directionReport } from './direction-statistics-report.ts';
 import { caseInput, caseKindName, failureText, vectorLibrary } from './code-lab-texts.ts';
 import { savedCode, saveCode } from './code-drafts.ts';
 import { LabSandbox, RUN_LIMIT_MS, type SandboxResult } from './lab-sandbox.ts';
+import { labRenderPictures, renderLabPictures, type LabRenderState } from './lab-render-pictures.ts';
 
 /** What the result area shows: nothing yet, a run under way, a graded run, or why a run gave no answers. */
 type RunState =
@@ -45,7 +47,7 @@ const lastRuns = new Map<string, RunState>();
  * (lab-sandbox.ts). Loaded only when a level shows a code task.
  */
 export class RtCodeLab extends LocalizedElement {
-  static override properties = { goal: { attribute: false }, locale: {}, state: { state: true } };
+  static override properties = { goal: { attribute: false }, locale: {}, state: { state: true }, rendering: { state: true } };
   static override styles = [
     gameStyles,
     taskPanelStyles,
@@ -66,6 +68,7 @@ export class RtCodeLab extends LocalizedElement {
       }
       .buttons {
         display: flex;
+        flex-wrap: wrap;
         gap: 6px;
         margin: 6px 0;
       }
@@ -76,12 +79,32 @@ export class RtCodeLab extends LocalizedElement {
       .fail {
         color: var(--rt-danger);
       }
+      .pictures {
+        display: flex;
+        flex-wrap: wrap;
+        gap: 6px;
+      }
+      figure {
+        flex: 1 1 30%;
+        margin: 0;
+        min-width: 7rem;
+      }
+      canvas {
+        border: 1px solid var(--rt-border);
+        display: block;
+        image-rendering: pixelated;
+        width: 100%;
+      }
+      figcaption {
+        font-size: 0.85rem;
+      }
     `,
   ];
 
   declare goal: CodeGoal | null;
   declare locale: Locale;
   declare private state: RunState;
+  declare private rendering: LabRenderState;
   private readonly host = new ContextConsumer(this, { context: codeLabHostContext, subscribe: true });
   private readonly sandbox = new LabSandbox();
   private editor: EditorView | null = null;
@@ -92,6 +115,7 @@ export class RtCodeLab extends LocalizedElement {
     this.goal = null;
     this.locale = 'en';
     this.state = { kind: 'idle' };
+    this.rendering = { kind: 'idle' };
   }
 
   override disconnectedCallback(): void {
@@ -106,6 +130,7 @@ export class RtCodeLab extends LocalizedElement {
   protected override willUpdate(changed: PropertyValues): void {
     if (changed.has('goal') && this.goal) {
       this.state = lastRuns.get(this.goal.code.lab) ?? { kind: 'idle' };
+      this.rendering = { kind: 'idle' };
       this.drawCase(this.goal);
     }
   }
@@ -149,6 +174,8 @@ export class RtCodeLab extends LocalizedElement {
   override render() {
     const goal = this.goal;
     if (!goal) return nothing;
+    const busy = this.state.kind === 'running' || this.rendering.kind === 'rendering';
+    const canRender = rendersWith(goal.code.lab) && this.host.value?.levelScene();
     return html`
       <section class="card" aria-labelledby="code-lab-title">
         <h3 id="code-lab-title">${msg('Code lab')}</h3>
@@ -163,10 +190,12 @@ export class RtCodeLab extends LocalizedElement {
         </details>
         <div class="editor"></div>
         <div class="buttons">
-          <button class="primary" ?disabled=${this.state.kind === 'running'} @click=${() => void this.run(goal)}>${msg('Run tests')}</button>
+          <button class="primary" ?disabled=${busy} @click=${() => void this.run(goal)}>${msg('Run tests')}</button>
+          ${canRender ? html`<button ?disabled=${busy} @click=${() => void this.renderScene(goal)}>${msg('Render with my function')}</button>` : nothing}
           <button @click=${() => this.reset(goal)}>${msg('Reset to skeleton')}</button>
         </div>
         <div role="status" aria-live="polite">${this.result()}</div>
+        <div class="render" aria-live="polite">${labRenderPictures(this.rendering)}</div>
       </section>
     `;
   }
@@ -283,6 +312,20 @@ export class RtCodeLab extends LocalizedElement {
     this.drawCase(goal);
     const failure = report.firstFailure;
     this.host.value?.graded({ lab: goal.code.lab, passed: report.passed, total: report.total, failed: failure?.labCase.kind ?? null });
+  }
+
+  /** Renders the level's scene with the learner's function beside the tracer's (lab-render-pictures.ts); the code runs only in the sandbox. */
+  private async renderScene(goal: CodeGoal): Promise<void> {
+    const scene = this.host.value?.levelScene();
+    const grading = labCases(goal);
+    const lab = goal.code.lab;
+    if (!scene || grading.kind !== 'cases' || !rendersWith(lab)) return;
+    this.rendering = { kind: 'rendering' };
+    // Let the panel say so before the first pass keeps the page busy.
+    await this.updateComplete;
+    const rendered = await renderLabPictures(goal, lab, grading.tolerance, scene, this.code, this.sandbox);
+    // Another task opened meanwhile: these pictures are not of its lab.
+    if (this.goal === goal) this.rendering = rendered;
   }
 
   private reset(goal: CodeGoal): void {

@@ -1,0 +1,97 @@
+import { expect, test, type Locator, type Page } from '@playwright/test';
+import { expectAccessible } from './support/axe.ts';
+import { collectErrors, progressFile } from './support/game-steps.ts';
+
+// Render with my function (spec/code-labs.md §1): the ray–sphere lab's level rendered with a
+// correct hitSphere matches the tracer's picture pixel for pixel; one that takes the
+// discriminant's sign the wrong way round draws a different picture, and the difference shows.
+
+const LEVEL = '02-rays-from-the-camera';
+
+const CORRECT = `function hitSphere(origin, direction, center, radius) {
+  const oc = sub(origin, center);
+  const a = dot(direction, direction);
+  const b = 2 * dot(oc, direction);
+  const c = dot(oc, oc) - radius * radius;
+  const d = b * b - 4 * a * c;
+  if (d < 0) return null;
+  const near = (-b - Math.sqrt(d)) / (2 * a);
+  if (near > 0) return near;
+  const far = (-b + Math.sqrt(d)) / (2 * a);
+  return far > 0 ? far : null;
+}`;
+
+// The discriminant as 4ac − b²: a hit is taken for a miss and a miss for a hit.
+const SIGN_FLIPPED = CORRECT.replace('const d = b * b - 4 * a * c;', 'const d = 4 * a * c - b * b;');
+
+async function typeCode(page: Page, code: string): Promise<void> {
+  await page.locator('rt-code-lab .cm-content').click();
+  await page.keyboard.press('ControlOrMeta+a');
+  await page.keyboard.insertText(code);
+}
+
+/** A canvas's pixels as drawn: how many differ from black, and how many colours there are. */
+const drawn = (canvas: Locator) =>
+  canvas.evaluate((element) => {
+    const c = element as HTMLCanvasElement;
+    const data = c.getContext('2d')!.getImageData(0, 0, c.width, c.height).data;
+    let lit = 0;
+    const colours = new Set<number>();
+    for (let i = 0; i < data.length; i += 4) {
+      if (data[i] + data[i + 1] + data[i + 2] > 0) lit++;
+      colours.add((data[i] << 16) | (data[i + 1] << 8) | data[i + 2]);
+    }
+    return { lit, colours: colours.size, pixels: c.width * c.height };
+  });
+
+test('Render with my function draws the scene with the learner’s hitSphere beside the tracer’s, and the difference', async ({ page }) => {
+  const errors = collectErrors(page);
+  await page.addInitScript(
+    (saved) => {
+      if (window !== window.top || sessionStorage.getItem('seeded')) return;
+      sessionStorage.setItem('seeded', 'yes');
+      localStorage.setItem('rtq.progress', saved);
+    },
+    progressFile(['01-introduction']),
+  );
+  await page.goto('/');
+  const welcome = page.getByRole('button', { name: 'Got it' });
+  if (await welcome.count()) await welcome.click();
+  await page.locator('[data-command="levels"]').click();
+  await page.locator(`rt-level-map [data-level="${LEVEL}"]`).click();
+  await page.locator('rt-task-card[data-task="code-hit-sphere"] button.head').click();
+  const lab = page.locator('rt-code-lab');
+  const renderButton = lab.getByRole('button', { name: 'Render with my function' });
+  await expect(renderButton).toBeVisible();
+  const mine = lab.getByRole('img', { name: 'The level’s scene rendered with your function.' });
+  const reference = lab.getByRole('img', { name: 'The level’s scene rendered with the tracer’s own function, the reference.' });
+  const difference = lab.getByRole('img', { name: /^The difference between the two pictures/ });
+
+  await typeCode(page, CORRECT);
+  // Reached by keyboard: focus the button and press Enter.
+  await renderButton.focus();
+  await page.keyboard.press('Enter');
+  await expect(lab.getByText("No pixel differs: your function renders the scene as the tracer's does.")).toBeVisible();
+  const right = await drawn(mine);
+  // The scene is there: most pixels lit, in many colours (floor, ball, shading), and the same as the reference's.
+  expect(right.lit).toBeGreaterThan(right.pixels / 2);
+  expect(right.colours).toBeGreaterThan(50);
+  expect(await drawn(reference)).toEqual(right);
+  expect((await drawn(difference)).lit).toBe(0);
+  // The pictures, their captions and the count (the editor above them is the code lab spec's).
+  await expectAccessible(page, 'the three pictures', {
+    fromShadowDom: ['rt-lab', 'rt-quest-panel', 'rt-task-card[data-task="code-hit-sphere"]', 'rt-code-lab', '.render'],
+  });
+
+  await typeCode(page, SIGN_FLIPPED);
+  await renderButton.click();
+  await expect(lab.getByText(/^\d+ of 19200 pixels differ\.$/)).toBeVisible();
+  const caption = await lab.getByText(/^\d+ of 19200 pixels differ\.$/).textContent();
+  const differing = Number(caption!.split(' ')[0]);
+  expect(differing).toBeGreaterThan(500);
+  // The difference picture lights exactly the pixels the caption counts.
+  expect((await drawn(difference)).lit).toBe(differing);
+  expect((await drawn(reference)).colours).toBe(right.colours);
+  expect(await drawn(mine)).not.toEqual(right);
+  expect(errors).toEqual([]);
+});

@@ -1,0 +1,138 @@
+import { msg, str } from '@lit/localize';
+import { html, nothing } from 'lit';
+import { ref } from 'lit/directives/ref.js';
+import type { CodeGoal } from '../../../quest/code-labs/code-goal.ts';
+import type { Tolerance } from '../../../quest/code-labs/code-lab-grading.ts';
+import type { RenderLab } from '../../../quest/code-labs/lab-render/lab-functions.ts';
+import { labRenderScene } from '../../../quest/code-labs/lab-render/lab-render-scene.ts';
+import { DIFFERENCE_GAIN, pictureDifference } from '../../../quest/code-labs/lab-render/picture-difference.ts';
+import { renderWithLearner, type LabRenderResult } from '../../../quest/code-labs/lab-render/render-passes.ts';
+import type { Scene } from '../../../scene/scene.ts';
+import { toRgba8 } from '../../../tracer/quantize.ts';
+import { caseInput, failureText } from './code-lab-texts.ts';
+import type { LabSandbox, SandboxResult } from './lab-sandbox.ts';
+
+/**
+ * How long one batch of a render's calls may take in the sandbox: tens of thousands of calls
+ * (one per camera ray and sphere, and as many for shadow rays) where Run tests has a few
+ * hundred; copying them to the sandbox and back takes most of it (about 2.4 s for 30 000
+ * calls in headless Chromium on a shared 2-core machine).
+ */
+export const RENDER_LIMIT_MS = 10_000;
+
+/** The size of a lab render: small enough that every pass is quick, large enough to see the scene. */
+export const LAB_RENDER_WIDTH = 160;
+export const LAB_RENDER_HEIGHT = 120;
+
+/** What the pictures area shows: nothing yet, a render under way, the three pictures, or why there are none. */
+export type LabRenderState =
+  | { kind: 'idle' }
+  | { kind: 'rendering' }
+  | { kind: 'rendered'; mine: ImageData; reference: ImageData; difference: ImageData; differing: number }
+  | { kind: 'stopped'; message: string };
+
+/**
+ * Renders the level's scene with the learner's function (render-passes.ts): each batch of
+ * calls runs in the sandbox, like Run tests, with the same time limit.
+ */
+export async function renderLabPictures(
+  goal: CodeGoal,
+  lab: RenderLab,
+  tolerance: Tolerance,
+  scene: Scene,
+  code: string,
+  sandbox: LabSandbox,
+): Promise<LabRenderState> {
+  const result = await renderWithLearner(
+    labRenderScene(scene),
+    lab,
+    tolerance,
+    async (calls) => {
+      const ran = await sandbox.run(code, goal.code.function, calls, { eachCase: false, limitMs: RENDER_LIMIT_MS }).catch((error: unknown) => {
+        sandbox.close();
+        return { kind: 'failed' as const, message: String(error), line: null };
+      });
+      return ran.kind === 'ran' ? { outcomes: ran.outcomes } : { reason: ran };
+    },
+    LAB_RENDER_WIDTH,
+    LAB_RENDER_HEIGHT,
+  );
+  return pictures(result, goal, tolerance, scene);
+}
+
+function pictures(result: LabRenderResult, goal: CodeGoal, tolerance: Tolerance, scene: Scene): LabRenderState {
+  const seconds = RENDER_LIMIT_MS / 1000;
+  switch (result.kind) {
+    case 'rendered': {
+      const bytes = (rgb: Float32Array) => toRgba8(rgb, LAB_RENDER_WIDTH, LAB_RENDER_HEIGHT, scene.settings);
+      const mine = bytes(result.mine);
+      const reference = bytes(result.reference);
+      const { rgba, differing } = pictureDifference(mine, reference);
+      const image = (data: Uint8ClampedArray) => new ImageData(new Uint8ClampedArray(data), LAB_RENDER_WIDTH, LAB_RENDER_HEIGHT);
+      return { kind: 'rendered', mine: image(mine), reference: image(reference), difference: image(rgba), differing };
+    }
+    case 'bad-answer': {
+      const { failure } = result;
+      const call = caseInput(goal.code.signature, failure.labCase.args);
+      return {
+        kind: 'stopped',
+        message: msg(str`The render stopped at a call your function cannot answer: ${call}. ${failureText(failure, goal.code.lab, tolerance)}`),
+      };
+    }
+    case 'too-many-passes':
+      return {
+        kind: 'stopped',
+        message: msg(str`The render stopped after ${result.passes} passes: each pass still met calls of your function not asked before.`),
+      };
+    case 'no-answers': {
+      // The sandbox's answer, worded as Run tests words it.
+      const state = result.reason as Exclude<SandboxResult, { kind: 'ran' }>;
+      if (state.kind === 'timeout')
+        return { kind: 'stopped', message: msg(str`Your function did not return within ${seconds} s while rendering. Is there a loop that never ends?`) };
+      if (state.kind === 'no-function') return { kind: 'stopped', message: msg(str`There is no function named ${state.name} in your code.`) };
+      const message = state.line
+        ? msg(str`Your code could not run: ${state.message} at line ${state.line}.`)
+        : msg(str`Your code could not run: ${state.message}.`);
+      return { kind: 'stopped', message };
+    }
+  }
+}
+
+/** Paints an image on its canvas once the canvas is on the page. */
+const paint = (image: ImageData) =>
+  ref((canvas) => {
+    if (canvas instanceof HTMLCanvasElement) canvas.getContext('2d')?.putImageData(image, 0, 0);
+  });
+
+/** The three pictures side by side, each with a caption and a text alternative, and the one-line count of differing pixels. */
+export function labRenderPictures(state: LabRenderState) {
+  switch (state.kind) {
+    case 'idle':
+      return nothing;
+    case 'rendering':
+      return html`<p>${msg('Rendering the scene with your function…')}</p>`;
+    case 'stopped':
+      return html`<p class="fail">${state.message}</p>`;
+    case 'rendered': {
+      const total = LAB_RENDER_WIDTH * LAB_RENDER_HEIGHT;
+      const caption =
+        state.differing === 0
+          ? msg(str`No pixel differs: your function renders the scene as the tracer's does.`)
+          : msg(str`${state.differing} of ${total} pixels differ.`);
+      const figure = (image: ImageData, title: string, label: string) => html`
+        <figure>
+          <canvas width=${LAB_RENDER_WIDTH} height=${LAB_RENDER_HEIGHT} role="img" aria-label=${label} ${paint(image)}></canvas>
+          <figcaption>${title}</figcaption>
+        </figure>
+      `;
+      return html`
+        <div class="pictures">
+          ${figure(state.mine, msg('Your function'), msg('The level’s scene rendered with your function.'))}
+          ${figure(state.reference, msg('The tracer’s function'), msg('The level’s scene rendered with the tracer’s own function, the reference.'))}
+          ${figure(state.difference, msg(str`Difference ×${DIFFERENCE_GAIN}`), msg(str`The difference between the two pictures, ${DIFFERENCE_GAIN} times brighter: ${caption}`))}
+        </div>
+        <p class=${state.differing === 0 ? '' : 'fail'}>${caption}</p>
+      `;
+    }
+  }
+}
