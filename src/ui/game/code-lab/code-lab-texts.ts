@@ -1,5 +1,6 @@
 import { msg, str } from '@lit/localize';
 import type { CodeLab } from '../../../quest/code-labs/code-goal.ts';
+import { lightBehindSurface } from '../../../quest/code-labs/phong-lab.ts';
 import { describeValue, type CaseFailure, type LabAnswer, type Tolerance, type Vec3 } from '../../../quest/code-labs/code-lab-grading.ts';
 
 /** A kind of case as the result list names it: the misconception its edge case tests. */
@@ -179,6 +180,11 @@ export function failureText(failure: CaseFailure, lab: CodeLab, tolerance: Toler
         : msg(str`Expected ${expectedText}, got t = ${failure.got}: the ray is never inside all three slabs at once in front of its origin.`);
     case 'wrong-value':
       if (lab === 'shadow') return shadowWrongText(failure.labCase.expected === true);
+      if (lab === 'phong' && lightBehindSurface(failure.labCase)) {
+        return msg(
+          str`Expected ${expectedText}, got ${gotText}: the light is behind the surface here, L points below it (N·L < 0), so it adds nothing, no diffuse light and no highlight.`,
+        );
+      }
       return typeof failure.gotValue === 'number'
         ? msg(str`Expected ${expectedText}, got t = ${failure.got}.`)
         : msg(str`Expected ${expectedText}, got ${gotText}.`);
