@@ -470,7 +470,7 @@
 's87f09a6ef6bfb7b9': `Terug naar de vragen die bij de levels passen`,
 's884891b6131ca6c6': `Mediane actieve tijd van wie de opdracht voltooide`,
 's897e51a16e47a9c1': str`ongeveer ${0} min (tijd van 1 leerling)`,
-'s8a0734cd3456d637': str`Verwacht: ${0}, gekregen: t = ${1}. Alleen een snijpunt vóór het beginpunt van de straal (t &gt; 0) telt.`,
+'s8a0734cd3456d637': str`Verwacht: ${0}, gekregen: t = ${1}. Alleen een snijpunt vóór het beginpunt van de straal (t groter dan 0) telt.`,
 's8a3ed2d41ea944ab': `Pixel stap voor stap`,
 's8a40ffd6a6af1cb8': str`Je functie was na ${0} s nog niet klaar met geval ${1}. Zit er een lus in die nooit stopt?`,
 's8a75aa3216f1ce8c': `voor elke lamp (een vlaklamp: elk van zijn samples, met I gedeeld door hun aantal):`,
