@@ -1,5 +1,6 @@
+import { readdirSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
-import { collectErrors, expectStatus, progressFile } from './support/game-steps.ts';
+import { collectErrors, expectStatus, levelsFolder, progressFile } from './support/game-steps.ts';
 
 // The first code lab (issue 43): a correct hitSphere passes every case and completes the task;
 // the learner's code cannot reach the page, the stored progress or the network; an endless
@@ -49,6 +50,59 @@ const shownCase = (page: Page) =>
 const ENDLESS = `function hitSphere() {
   while (true) {}
 }`;
+
+// Lambert without the clamp: a light behind the surface gives a negative colour.
+const PHONG_NOT_CLAMPED = `function shade(point, normal, toEye, light, material) {
+  const L = normalize(sub(light.position, point));
+  const nDotL = dot(normal, L);
+  const R = sub(scale(normal, 2 * nDotL), L);
+  const highlight = material.specular * Math.pow(Math.max(dot(R, toEye), 0), material.shininess);
+  const channel = (lc, c) => light.intensity * lc * (material.diffuse * nDotL * c + highlight);
+  return { r: channel(light.color.r, material.color.r), g: channel(light.color.g, material.color.g), b: channel(light.color.b, material.color.b) };
+}`;
+
+// Uniform over the pixel, not stratified: some cells get two points, others none.
+const NOT_STRATIFIED = `function pixelSamples(n, random) {
+  const points = [];
+  for (let k = 0; k < n; k++) points.push({ x: random(), y: random() });
+  return points;
+}`;
+
+type DrawnCase = { segments: { label?: string; mark: string }[]; points: { mark: string }[]; shapes: { kind: string; fill?: string }[] } | null;
+/** The case the view shows (its declared `labCase.shown`), once the view has glided to it and drawn its last frame; and how many CSS pixels the case covers on the canvas then. */
+async function drawnCase(page: Page): Promise<{ shown: DrawnCase; covered: number }> {
+  type Probed = { labView: { labCase: { shown: DrawnCase }; probes: { idle: boolean; caseCoverage(): { mask: Uint8Array } } } };
+  await expect
+    .poll(() => page.locator('rt-scene-view').evaluate((element) => (element as unknown as Probed).labView.probes.idle), { timeout: 30_000 })
+    .toBe(true);
+  return page.locator('rt-scene-view').evaluate((element) => {
+    const view = (element as unknown as Probed).labView;
+    return { shown: view.labCase.shown, covered: view.probes.caseCoverage().mask.reduce((sum, covered) => sum + covered, 0) };
+  });
+}
+
+/** Every level but `level` passed, so that it is open. */
+const allPassedBut = (level: string) =>
+  progressFile(
+    readdirSync(levelsFolder)
+      .filter((name) => name.endsWith('.level.json'))
+      .map((name) => name.replace('.level.json', ''))
+      .filter((id) => id !== level),
+  );
+
+async function openCodeTask(page: Page, progress: string, level: string, taskId: string): Promise<void> {
+  await page.addInitScript((saved) => {
+    if (window !== window.top || sessionStorage.getItem('seeded')) return;
+    sessionStorage.setItem('seeded', 'yes');
+    localStorage.setItem('rtq.progress', saved);
+  }, progress);
+  await page.goto('/');
+  const welcome = page.getByRole('button', { name: 'Got it' });
+  if (await welcome.count()) await welcome.click();
+  await page.locator('[data-command="levels"]').click();
+  await page.locator(`rt-level-map [data-level="${level}"]`).click();
+  await page.locator(`rt-task-card[data-task="${taskId}"] button.head`).click();
+}
 
 async function typeCode(page: Page, code: string): Promise<void> {
   const editor = page.locator('rt-code-lab .cm-content');
@@ -105,5 +159,42 @@ test('a code lab grades a correct function, and hostile code reaches nothing and
   await expectStatus(page, TITLE, 'done');
   // The code is kept for the next visit.
   expect(await page.evaluate(() => localStorage.getItem('rtq.code-lab.ray-sphere'))).toContain('const oc = sub(origin, center);');
+  expect(errors).toEqual([]);
+});
+
+test('a Phong function whose cos is not clamped fails on the light behind the surface, drawn with N, L, V and R', async ({ page }) => {
+  const errors = collectErrors(page);
+  await openCodeTask(page, allPassedBut('03-shading'), '03-shading', 'code-shade');
+  const lab = page.locator('rt-code-lab');
+  await typeCode(page, PHONG_NOT_CLAMPED);
+  await lab.getByRole('button', { name: 'Run tests' }).click();
+  const result = lab.getByRole('status');
+  await expect(result).toContainText('First failing case: case 1, a light behind the surface.');
+  await expect(result).toContainText('the light is behind the surface here, L points below it (N·L < 0), so it adds nothing');
+  await expect(result).toContainText('Drawn in the 3D view: the point on a piece of its surface, with N: the normal;');
+  await expect(result).toContainText('Expected: (0, 0, 0); got: (-0.849');
+  const { shown, covered } = await drawnCase(page);
+  expect(shown?.segments.map((segment) => segment.label)).toEqual(['N', 'L', 'V', 'R']);
+  expect(shown?.points.map((point) => point.mark)).toEqual(['surface', 'light']);
+  expect(covered, 'CSS pixels the case covers on the canvas').toBeGreaterThan(500);
+  expect(errors).toEqual([]);
+});
+
+test('samples that are not stratified fail on a run, drawn as the pixel with its cells and the run’s points', async ({ page }) => {
+  const errors = collectErrors(page);
+  await openCodeTask(page, allPassedBut('11-anti-aliasing'), '11-anti-aliasing', 'code-jittered-samples');
+  const lab = page.locator('rt-code-lab');
+  await typeCode(page, NOT_STRATIFIED);
+  await lab.getByRole('button', { name: 'Run tests' }).click();
+  const result = lab.getByRole('status');
+  await expect(result).toContainText('so another cell has none. Each cell gets exactly one point.');
+  await expect(result).toContainText('Drawn in the 3D view: the pixel with its grid of cells and this run’s points;');
+  const { shown, covered } = await drawnCase(page);
+  const fills = shown?.shapes.map((shape) => shape.fill) ?? [];
+  expect(fills[0]).toBe('pixel');
+  expect(fills).toContain('crowded');
+  expect(fills).toContain('empty');
+  expect(shown?.points.every((point) => point.mark === 'sample')).toBe(true);
+  expect(covered, 'CSS pixels the pixel and its points cover on the canvas').toBeGreaterThan(5000);
   expect(errors).toEqual([]);
 });

@@ -1,8 +1,10 @@
 import {
   BoxGeometry,
+  BufferGeometry,
+  CanvasTexture,
   ConeGeometry,
+  DoubleSide,
   CylinderGeometry,
-  type BufferGeometry,
   EdgesGeometry,
   Group,
   LineBasicMaterial,
@@ -12,9 +14,21 @@ import {
   MeshBasicMaterial,
   OctahedronGeometry,
   SphereGeometry,
+  Sprite,
+  SpriteMaterial,
   Vector3,
 } from 'three';
-import { CASE_MARK_COLORS, caseDrawingExtent, type CaseDrawing, type CaseShape, type SegmentMark } from '../quest/code-labs/case-drawing.ts';
+import {
+  CASE_MARK_COLORS,
+  CELL_FILL_COLORS,
+  caseDrawingExtent,
+  SHADING_VECTOR_COLORS,
+  type CaseDrawing,
+  type CasePoint,
+  type CaseShape,
+  type QuadFill,
+  type SegmentMark,
+} from '../quest/code-labs/case-drawing.ts';
 import type { Store } from '../lab-state/store.ts';
 import type { Vec3 } from '../scene/scene.ts';
 import { paletteNameFor, rayPalette } from './ray-palette.ts';
@@ -24,9 +38,19 @@ const RAY_RADIUS = 0.008;
 const ARROW_LENGTH = 0.05;
 const POINT_RADIUS = 0.03;
 const CLOUD_POINT_RADIUS = 0.01;
+/** A pixel's grid lines and its samples: finer than the rays and the answers, as there are up to 64 of them. */
+const GRID_RADIUS = 0.003;
+const SAMPLE_RADIUS = 0.016;
+/** A vector's letter: its height, and how far beyond the arrow's tip it stands. */
+const LABEL_SIZE = 0.07;
+const LABEL_GAP = 0.04;
 /** The case's objects: a light skin and dark lines, apart from the scene's own objects. */
 const SHAPE_COLOR = 0xdde3ea;
 const SHAPE_LINE_COLOR = 0x3b4450;
+/** How see-through each kind of quad's skin is: the pixel hides the scene behind its samples; a cell's fill lets the grid show. */
+const QUAD_OPACITY: Readonly<Record<QuadFill, number>> = { surface: 0.45, pixel: 1, empty: 0.6, crowded: 0.6 };
+/** A piece of the shaded surface: a blue-grey, darker than the outlines' skin, so that it reads against a light floor. */
+const SURFACE_COLOR = 0x8fa3b8;
 
 const up = new Vector3(0, 1, 0);
 
@@ -40,12 +64,12 @@ const up = new Vector3(0, 1, 0);
 export class CaseOverlay {
   readonly group = new Group();
   private drawing: CaseDrawing | null = null;
-  private readonly owned: (BufferGeometry | Material)[] = [];
+  private readonly owned: (BufferGeometry | Material | CanvasTexture)[] = [];
 
   constructor(
     private readonly view: {
-      /** Glides the view to where these points fit. */
-      frame(points: readonly Vec3[]): void;
+      /** Glides the view to where these points fit, looking from `direction` (from the points toward the eye) when given. */
+      frame(points: readonly Vec3[], direction?: Vec3): void;
       /** Something drawn changed: a frame is due. */
       drawn(): void;
       /** The ray options' palette is read when a case is drawn. */
@@ -69,7 +93,8 @@ export class CaseOverlay {
   /** Draws `drawing` (replacing the case before) and frames it; null clears. */
   show(drawing: CaseDrawing | null): void {
     this.draw(drawing);
-    if (drawing) this.view.frame(this.extent);
+    const from = drawing?.lookFrom;
+    if (drawing) this.view.frame(this.extent, from && [from.x, from.y, from.z]);
     this.view.drawn();
   }
 
@@ -85,8 +110,12 @@ export class CaseOverlay {
     // The case's rays in the legend's colour for a camera ray, in the palette the ray options choose.
     const rayColor = rayPalette(paletteNameFor(this.view.store.state.rays.colorBlindPalette)).primary;
     const size = caseSize(drawing);
-    // The normal belongs to the surface: in the outlines' colour, not in one of the answers'.
-    const colorOf = (mark: SegmentMark) => (mark === 'ray' ? rayColor : mark === 'normal' ? SHAPE_LINE_COLOR : CASE_MARK_COLORS[mark]);
+    // The normal and the pixel's grid belong to the surface: in the outlines' colour, not in one of the answers'.
+    const colorOf = (mark: SegmentMark) => {
+      if (mark === 'ray') return rayColor;
+      if (mark === 'normal' || mark === 'grid') return SHAPE_LINE_COLOR;
+      return mark === 'expected' || mark === 'got' ? CASE_MARK_COLORS[mark] : SHADING_VECTOR_COLORS[mark];
+    };
     for (const segment of drawing.segments) {
       const from = new Vector3(segment.from.x, segment.from.y, segment.from.z);
       const to = new Vector3(segment.to.x, segment.to.y, segment.to.z);
@@ -96,7 +125,8 @@ export class CaseOverlay {
       if (length === 0) continue;
       const direction = to.clone().sub(from).divideScalar(length);
       const arrow = segment.arrow ? Math.min(size * ARROW_LENGTH, length / 2) : 0;
-      const body = new Mesh(this.own(new CylinderGeometry(size * RAY_RADIUS, size * RAY_RADIUS, length - arrow, 8)), material);
+      const radius = size * (segment.mark === 'grid' ? GRID_RADIUS : RAY_RADIUS);
+      const body = new Mesh(this.own(new CylinderGeometry(radius, radius, length - arrow, 8)), material);
       body.position.copy(from).addScaledVector(direction, (length - arrow) / 2);
       body.quaternion.setFromUnitVectors(up, direction);
       body.renderOrder = 9;
@@ -108,8 +138,13 @@ export class CaseOverlay {
         head.renderOrder = 9;
         this.group.add(head);
       }
+      if (segment.label) this.group.add(this.label(segment.label, colorOf(segment.mark), to.clone().addScaledVector(direction, size * LABEL_GAP), size));
     }
     for (const shape of drawing.shapes) {
+      if (shape.kind === 'quad') {
+        this.drawQuad(shape);
+        continue;
+      }
       // A faint skin and darker lines: seen against the floor and the scene's own objects alike.
       const { geometry, center } = shapeGeometry(shape);
       const skin = new Mesh(this.own(geometry), this.own(new MeshBasicMaterial({ color: SHAPE_COLOR, transparent: true, opacity: 0.18, depthWrite: false })));
@@ -120,14 +155,62 @@ export class CaseOverlay {
     }
     const radius = size * (drawing.cloud ? CLOUD_POINT_RADIUS : POINT_RADIUS);
     for (const point of drawing.points) {
-      const geometry = point.mark === 'expected' ? new SphereGeometry(radius, 16, 8) : new OctahedronGeometry(radius * 1.4);
+      const geometry =
+        point.mark === 'got' ? new OctahedronGeometry(radius * 1.4) : new SphereGeometry(point.mark === 'sample' ? size * SAMPLE_RADIUS : radius, 16, 8);
       // Drawn over everything, last (the transparent pass, after the rays): a hit on the far side of the sphere or behind an object still shows.
-      const material = this.own(new MeshBasicMaterial({ color: CASE_MARK_COLORS[point.mark], depthTest: false, transparent: true }));
+      const material = this.own(new MeshBasicMaterial({ color: pointColor(point.mark), depthTest: false, transparent: true }));
       const mesh = new Mesh(this.own(geometry), material);
       mesh.position.set(point.at.x, point.at.y, point.at.z);
       mesh.renderOrder = 10;
       this.group.add(mesh);
     }
+  }
+
+  /**
+   * A flat quad: its skin (over the scene, under the rays and points, so that a pixel hides
+   * what is behind it and its cells' fills lie on it) and, for the surface and the pixel, its
+   * outline.
+   */
+  private drawQuad(shape: Extract<CaseShape, { kind: 'quad' }>): void {
+    const [a, b, c, d] = shape.corners;
+    const geometry = this.own(new BufferGeometry().setFromPoints([a, b, c, a, c, d].map((p) => new Vector3(p.x, p.y, p.z))));
+    const color = shape.fill === 'empty' || shape.fill === 'crowded' ? CELL_FILL_COLORS[shape.fill] : shape.fill === 'pixel' ? 0xffffff : SURFACE_COLOR;
+    const opacity = QUAD_OPACITY[shape.fill];
+    const material = this.own(new MeshBasicMaterial({ color, transparent: true, opacity, depthTest: false, depthWrite: false, side: DoubleSide }));
+    const skin = new Mesh(geometry, material);
+    skin.renderOrder = shape.fill === 'pixel' ? 7 : 8;
+    this.group.add(skin);
+    if (shape.fill !== 'surface' && shape.fill !== 'pixel') return;
+    const edges = [a, b, b, c, c, d, d, a].map((p) => new Vector3(p.x, p.y, p.z));
+    const outline = new LineSegments(
+      this.own(new BufferGeometry().setFromPoints(edges)),
+      this.own(new LineBasicMaterial({ color: SHAPE_LINE_COLOR, depthTest: false })),
+    );
+    outline.renderOrder = 8;
+    this.group.add(outline);
+  }
+
+  /** A vector's letter at `at`, facing the eye, in the vector's colour on a light halo so that it reads on any background. */
+  private label(text: string, color: string | number, at: Vector3, size: number): Sprite {
+    const canvas = document.createElement('canvas');
+    canvas.width = canvas.height = 64;
+    const context = canvas.getContext('2d');
+    if (context) {
+      context.font = 'bold 48px sans-serif';
+      context.textAlign = 'center';
+      context.textBaseline = 'middle';
+      context.lineWidth = 8;
+      context.strokeStyle = 'white';
+      context.strokeText(text, 32, 34);
+      context.fillStyle = typeof color === 'number' ? `#${color.toString(16).padStart(6, '0')}` : color;
+      context.fillText(text, 32, 34);
+    }
+    const texture = this.own(new CanvasTexture(canvas));
+    const sprite = new Sprite(this.own(new SpriteMaterial({ map: texture, depthTest: false, transparent: true })));
+    sprite.position.copy(at);
+    sprite.scale.setScalar(size * LABEL_SIZE);
+    sprite.renderOrder = 11;
+    return sprite;
   }
 
   private clear(): void {
@@ -136,10 +219,16 @@ export class CaseOverlay {
     this.drawing = null;
   }
 
-  private own<T extends BufferGeometry | Material>(thing: T): T {
+  private own<T extends BufferGeometry | Material | CanvasTexture>(thing: T): T {
     this.owned.push(thing);
     return thing;
   }
+}
+
+/** A point's colour: the answers' own, the light's as its vector's, the shading point and the samples in the outlines' colour. */
+function pointColor(mark: CasePoint['mark']): string | number {
+  if (mark === 'expected' || mark === 'got') return CASE_MARK_COLORS[mark];
+  return mark === 'light' ? SHADING_VECTOR_COLORS.light : SHAPE_LINE_COLOR;
 }
 
 /** The largest distance between the case's points: what the rays' thickness and the points' size follow. */
@@ -151,7 +240,7 @@ function caseSize(drawing: CaseDrawing): number {
 }
 
 /** A shape's geometry around its centre: a sphere's latitude and longitude lines, a box's twelve edges. */
-function shapeGeometry(shape: CaseShape): { geometry: BufferGeometry; center: { x: number; y: number; z: number } } {
+function shapeGeometry(shape: Exclude<CaseShape, { kind: 'quad' }>): { geometry: BufferGeometry; center: { x: number; y: number; z: number } } {
   if (shape.kind === 'sphere') return { geometry: new SphereGeometry(shape.radius, 24, 12), center: shape.center };
   const { min, max } = shape;
   return {

@@ -98,7 +98,7 @@ export class LabView {
   private readonly cameraScreen: CameraScreen;
   private readonly distribution: DistributionGizmos;
   /** A code lab's failing case, drawn and framed (case-overlay.ts); browser tests read `labCase.shown`. */
-  readonly labCase = new CaseOverlay({ frame: (points) => this.navigation.showPoints(points), drawn: () => this.requestRender(), store: this.store });
+  readonly labCase = new CaseOverlay({ frame: (...framing) => this.navigation.showPoints(...framing), drawn: () => this.requestRender(), store: this.store });
   private readonly grid: GridHelper;
   private readonly listeners: { [K in keyof LabViewEvents]: Set<Listener<LabViewEvents[K]>> } = {
     rayHover: new Set(),
@@ -195,6 +195,7 @@ export class LabView {
       scene: this.scene,
       camera: this.camera,
       rayLayer: () => this.drawing.rayLayer,
+      caseLayer: this.labCase.group,
       allRaysDrawn: () => this.drawing.allRaysDrawn,
       idle: () => this.drawing.scheduler.idle,
       traceOf: (pixel) => this.traceOf(pixel),

@@ -128,11 +128,11 @@ export class ViewNavigation {
     this.flight.glide(framingPoseAbove(points, VIEW_FOV, this.camera.aspect, direction, this.visibleShare()));
   }
 
-  /** Glides to where every one of `points` fits the view, looking from where the view looks now. */
-  showPoints(points: readonly Vec3[]): void {
+  /** Glides to where every one of `points` fits the view, looking from `from` (a direction toward the eye) or else from where the view looks now. */
+  showPoints(points: readonly Vec3[], from?: Vec3): void {
     if (points.length === 0) return;
     const pose = this.controls.pose;
-    const direction = pose.position.clone().sub(pose.target).normalize();
+    const direction = from ? new Vector3(...from).normalize() : pose.position.clone().sub(pose.target).normalize();
     this.flight.glide(framingPoseAbove(points, VIEW_FOV, this.camera.aspect, direction, this.visibleShare()));
   }
 

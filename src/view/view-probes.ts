@@ -16,6 +16,8 @@ export interface ProbedView {
   readonly camera: PerspectiveCamera;
   /** The drawn rays, or null. */
   rayLayer(): RayLayer | null;
+  /** A code lab's failing case (case-overlay.ts), hidden when none is shown. */
+  readonly caseLayer: Object3D;
   /** Whether the last frame showed every instance of the ray layer (piecewise-rays.ts). */
   allRaysDrawn(): boolean;
   /** Whether no frame is coming until something changes (frame-scheduler.ts). */
@@ -101,19 +103,29 @@ export class ViewProbes {
    * covered or off screen counts as not shown.
    */
   rayCoverage(): { width: number; height: number; mask: Uint8Array } {
+    return this.coverage(this.view.rayLayer()?.object ?? null);
+  }
+
+  /** Where a code lab's failing case shows, as rayCoverage does for the rays: all 0 when no case is drawn. */
+  caseCoverage(): { width: number; height: number; mask: Uint8Array } {
+    const layer = this.view.caseLayer;
+    return layer.visible ? this.coverage(layer) : this.coverage(null);
+  }
+
+  /** Which CSS pixels drawing `layer` changes, from a frame with it and one without. */
+  private coverage(layer: Object3D | null): { width: number; height: number; mask: Uint8Array } {
     const { renderer, scene, camera } = this.view;
-    const rayLayer = this.view.rayLayer();
     const gl = renderer.getContext();
     const width = gl.drawingBufferWidth;
     const height = gl.drawingBufferHeight;
     const frames = [true, false].map((shown) => {
-      if (rayLayer) rayLayer.object.visible = shown;
+      if (layer) layer.visible = shown;
       renderer.render(scene, camera);
       const pixels = new Uint8Array(width * height * 4);
       gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
       return pixels;
     });
-    if (rayLayer) rayLayer.object.visible = true;
+    if (layer) layer.visible = true;
     this.view.requestRender();
     const ratio = renderer.getPixelRatio();
     const cssWidth = Math.round(width / ratio);

@@ -6,12 +6,14 @@ import { type ProbedView, ViewProbes } from '../../src/view/view-probes.ts';
 
 /**
  * A drawing buffer of 4 × 4 device pixels at 2 per CSS pixel (a 2 × 2 canvas): one buffer
- * pixel changes by white when the rays are drawn, another by 8 on each of R, G and B.
+ * pixel changes by white when the rays and a code lab's case are drawn, another by 8 on each
+ * of R, G and B.
  */
 function drawnTwice() {
   const width = 4;
   const height = 4;
   const layer = { object: new Group() } as unknown as RayLayer;
+  const caseLayer = new Group();
   let renders = 0;
   let requested = 0;
   const gl = {
@@ -20,7 +22,7 @@ function drawnTwice() {
     RGBA: 0,
     UNSIGNED_BYTE: 0,
     readPixels: (_x: number, _y: number, w: number, _h: number, _format: number, _type: number, pixels: Uint8Array) => {
-      if (!layer.object.visible) return;
+      if (!layer.object.visible || !caseLayer.visible) return;
       // Buffer rows run bottom-up: row 3 is the canvas's top, row 1 its bottom half.
       pixels.set([255, 255, 255], (3 * w + 0) * 4);
       pixels.set([8, 8, 8], (1 * w + 2) * 4);
@@ -32,6 +34,7 @@ function drawnTwice() {
     scene: new ThreeScene(),
     camera: new PerspectiveCamera(),
     rayLayer: () => layer,
+    caseLayer,
     allRaysDrawn: () => false,
     idle: () => true,
     traceOf: () => null,
@@ -43,7 +46,7 @@ function drawnTwice() {
     opaque: new Group(),
     requestRender: () => requested++,
   };
-  return { probes: new ViewProbes(view), layer, renders: () => renders, requested: () => requested };
+  return { probes: new ViewProbes(view), layer, caseLayer, renders: () => renders, requested: () => requested };
 }
 
 describe('the 3D view probes for browser tests', () => {
@@ -71,6 +74,16 @@ describe('the 3D view probes for browser tests', () => {
     expect(renders()).toBe(2);
     expect(layer.object.visible).toBe(true);
     expect(requested()).toBe(1);
+  });
+
+  it('mark where a code lab’s case shows the same way, and nothing while no case is shown', () => {
+    const { probes, caseLayer, renders } = drawnTwice();
+    expect([...probes.caseCoverage().mask]).toEqual([1, 0, 0, 0]);
+    expect(caseLayer.visible).toBe(true);
+    caseLayer.visible = false;
+    expect([...probes.caseCoverage().mask]).toEqual([0, 0, 0, 0]);
+    expect(caseLayer.visible).toBe(false);
+    expect(renders()).toBe(4);
   });
 
   it("project a declared view's points, null behind the eye, and say whether all rays were drawn", () => {

@@ -8,8 +8,15 @@ import type { LabAnswer, Vec3 } from './code-lab-grading.ts';
  */
 export type CaseMark = 'ray' | 'expected' | 'got';
 
-/** A segment is one of the case's marks, or the surface's normal at the hit (drawn as the case's objects are). */
-export type SegmentMark = CaseMark | 'normal';
+/**
+ * A segment is one of the case's marks, the surface's normal at the hit (drawn as the case's
+ * objects are), one of the shading vectors (toward the light L, toward the eye V, the
+ * mirror direction R), or a line of the pixel's grid of cells.
+ */
+export type SegmentMark = CaseMark | 'normal' | ShadingVector | 'grid';
+
+/** The shading vectors a Phong case draws besides the normal: L toward the light, V toward the eye, R the light's mirror direction. */
+export type ShadingVector = 'light' | 'eye' | 'mirror';
 
 export interface CaseSegment {
   from: Vec3;
@@ -18,15 +25,31 @@ export interface CaseSegment {
   mark: SegmentMark;
   /** An arrowhead at `to`: the ray goes on that way. */
   arrow?: boolean;
+  /** A name written at `to` (N, L, V, R: the textbook's letters, the same in every language). */
+  label?: string;
 }
 
+/**
+ * A point: the tracer's answer (`expected`), the learner's (`got`), a light, the point being
+ * shaded (`surface`), or one of the learner's samples in a pixel (`sample`).
+ */
 export interface CasePoint {
   at: Vec3;
-  mark: Exclude<CaseMark, 'ray'>;
+  mark: Exclude<CaseMark, 'ray'> | 'light' | 'surface' | 'sample';
 }
 
-/** The objects the case is about, drawn as see-through outlines so the points inside them show. */
-export type CaseShape = { kind: 'sphere'; center: Vec3; radius: number } | { kind: 'box'; min: Vec3; max: Vec3 };
+/**
+ * How a flat four-cornered shape is filled: a piece of the surface being shaded (see-through),
+ * the pixel (opaque, so the scene behind does not show through the samples), a cell of the
+ * pixel with no sample (`empty`) or with more than one (`crowded`).
+ */
+export type QuadFill = 'surface' | 'pixel' | 'empty' | 'crowded';
+
+/** The objects the case is about, drawn as see-through outlines so the points inside them show; flat quads by their corners, in order around. */
+export type CaseShape =
+  | { kind: 'sphere'; center: Vec3; radius: number }
+  | { kind: 'box'; min: Vec3; max: Vec3 }
+  | { kind: 'quad'; corners: [Vec3, Vec3, Vec3, Vec3]; fill: QuadFill };
 
 export interface CaseDrawing {
   segments: CaseSegment[];
@@ -34,12 +57,15 @@ export interface CaseDrawing {
   shapes: CaseShape[];
   /** A cloud of many points (a random function's answers) is drawn with small ones, so that each shows and where they crowd. */
   cloud?: boolean;
+  /** The direction from the case toward where it reads best (a flat pixel seen face on); without it the view keeps its direction. */
+  lookFrom?: Vec3;
 }
 
 /** Every point a view must fit to show the whole case: the segments' ends, the points, the shapes' bounding boxes. */
 export function caseDrawingExtent(drawing: CaseDrawing): Vec3[] {
   const corners = drawing.shapes.flatMap((shape) => {
     if (shape.kind === 'box') return [shape.min, shape.max];
+    if (shape.kind === 'quad') return shape.corners;
     const { center: c, radius: r } = shape;
     return [
       { x: c.x - r, y: c.y - r, z: c.z - r },
@@ -56,6 +82,16 @@ export function caseDrawingExtent(drawing: CaseDrawing): Vec3[] {
  * expected point, a diamond for the learner's), so colour is never the only cue.
  */
 export const CASE_MARK_COLORS: Readonly<Record<Exclude<CaseMark, 'ray'>, string>> = { expected: '#009E73', got: '#CC79A7' };
+
+/**
+ * The shading vectors' colours, from the same palette (Okabe & Ito): orange toward the light
+ * (the light's point too), blue toward the eye, sky blue for the mirror direction. Each arrow
+ * also carries its letter, so colour is never the only cue.
+ */
+export const SHADING_VECTOR_COLORS: Readonly<Record<ShadingVector, string>> = { light: '#E69F00', eye: '#0072B2', mirror: '#56B4E9' };
+
+/** A pixel's cells with no sample (sky blue) and with more than one (the learner's reddish purple), in the view and in the legend. */
+export const CELL_FILL_COLORS: Readonly<Record<'empty' | 'crowded', string>> = { empty: '#56B4E9', crowded: '#CC79A7' };
 
 const along = (origin: Vec3, direction: Vec3, t: number): Vec3 => ({
   x: origin.x + t * direction.x,

@@ -25,15 +25,20 @@ export interface Point {
   y: number;
 }
 
-/** The first thing that failed, as data: the panel spells it out in the learner's language. */
+/**
+ * The first thing that failed, as data: the panel spells it out in the learner's language.
+ * A failure of a run whose answer was n points carries them (copies, plain data), so that the
+ * 3D view can draw the run (pixel-samples-lab.ts); `uneven-within-cells` carries the points
+ * of the run with the most of them, where their places within the cells show best.
+ */
 export type SampleFailure =
   | { check: 'threw'; run: number; message: string; line: number | null }
   | { check: 'not-points'; run: number; got: string }
   | { check: 'wrong-count'; run: number; got: number; wanted: number }
-  | { check: 'outside-pixel'; run: number; point: Point }
-  | { check: 'two-in-a-cell'; run: number; cell: [column: number, row: number]; cells: number }
-  | { check: 'not-seeded'; run: number; repeats: number }
-  | { check: 'uneven-within-cells' };
+  | { check: 'outside-pixel'; run: number; point: Point; points: Point[] }
+  | { check: 'two-in-a-cell'; run: number; cell: [column: number, row: number]; cells: number; points: Point[] }
+  | { check: 'not-seeded'; run: number; repeats: number; points: Point[] }
+  | { check: 'uneven-within-cells'; run: number; points: Point[] };
 
 export interface StatisticsReport {
   runs: number;
@@ -55,7 +60,7 @@ function pointsOf(value: unknown, n: number, run: number): Point[] | SampleFailu
       return { check: 'not-points', run, got: describeKind(point) };
     }
   }
-  return value as Point[];
+  return (value as Point[]).map(({ x, y }) => ({ x, y }));
 }
 
 const describeKind = (value: unknown) => (value === null ? 'null' : Array.isArray(value) ? 'array' : typeof value);
@@ -64,11 +69,11 @@ const describeKind = (value: unknown) => (value === null ? 'null' : Array.isArra
 function checkRun(points: Point[], run: number): SampleFailure | null {
   const cells = Math.round(Math.sqrt(points.length));
   const outside = points.find(({ x, y }) => !(x >= 0 && x < 1 && y >= 0 && y < 1));
-  if (outside) return { check: 'outside-pixel', run, point: outside };
+  if (outside) return { check: 'outside-pixel', run, point: outside, points };
   const taken = new Set<number>();
   for (const { x, y } of points) {
     const cell = Math.floor(y * cells) * cells + Math.floor(x * cells);
-    if (taken.has(cell)) return { check: 'two-in-a-cell', run, cell: [cell % cells, Math.floor(cell / cells)], cells };
+    if (taken.has(cell)) return { check: 'two-in-a-cell', run, cell: [cell % cells, Math.floor(cell / cells)], cells, points };
     taken.add(cell);
   }
   return null;
@@ -95,7 +100,9 @@ export function gradeSamples(runs: readonly RandomRun[], outcomes: readonly LabO
   const points = answers.reduce((sum, list) => sum + list.length, 0);
   if (firstFailure) return { runs: runs.length, points, passedRuns, test: null, firstFailure };
   const test = withinCellTest(answers, significance);
-  return { runs: runs.length, points, passedRuns, test, firstFailure: test.p < significance ? { check: 'uneven-within-cells' } : null };
+  const largest = answers.reduce((best, list, run) => (list.length > answers[best]!.length ? run : best), 0);
+  const uneven: SampleFailure = { check: 'uneven-within-cells', run: largest, points: answers[largest]! };
+  return { runs: runs.length, points, passedRuns, test, firstFailure: test.p < significance ? uneven : null };
 }
 
 /** A run that repeats an earlier seed must give the same points: the function uses the random it is given, not Math.random. */
@@ -103,7 +110,7 @@ function sameAsRepeated(run: RandomRun, points: Point[], answers: Point[][], ind
   if (run.repeats === undefined) return null;
   const earlier = answers[run.repeats] ?? [];
   const same = earlier.length === points.length && earlier.every((point, at) => point.x === points[at]!.x && point.y === points[at]!.y);
-  return same ? null : { check: 'not-seeded', run: index, repeats: run.repeats };
+  return same ? null : { check: 'not-seeded', run: index, repeats: run.repeats, points };
 }
 
 /** χ² of the points' places within their cells over bins × bins bins; about 25 points a bin, 2 to 8 bins a side. */

@@ -2,6 +2,7 @@ import { Vector3 } from 'three';
 import { reflect } from '../../tracer/fresnel.ts';
 import { phongPower } from '../../tracer/phong-power.ts';
 import { RandomStream } from '../../tracer/sampler.ts';
+import type { CaseDrawing } from './case-drawing.ts';
 import type { LabCase, Rgb, Tolerance, Vec3 } from './code-lab-grading.ts';
 import { dot, randomDirection, scaled, unit, v } from './lab-vectors.ts';
 import type { PhongEdge } from './phong-edges.ts';
@@ -119,4 +120,53 @@ export function phongCases(edges: readonly PhongEdge[], count: number, seed: num
   const random = new RandomStream().reset(seed);
   const named = edges.map((kind): LabCase => ({ kind, args: EDGE_CASES[kind], expected: tracerPhong(...EDGE_CASES[kind]) }));
   return [...named, ...Array.from({ length: count }, () => randomCase(random))];
+}
+
+const plus = (a: Vec3, b: Vec3, s = 1): Vec3 => v(a.x + s * b.x, a.y + s * b.y, a.z + s * b.z);
+const cross = (a: Vec3, b: Vec3): Vec3 => v(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+const size = (a: Vec3) => Math.hypot(a.x, a.y, a.z);
+
+/** Whether the case's light is behind the surface (N·L ≤ 0): then it adds nothing, however the rest is computed. */
+export function lightBehindSurface(labCase: LabCase): boolean {
+  const [point, normal, , light] = labCase.args as [Vec3, Vec3, Vec3, PhongLight];
+  return dot(normal, plus(light.position, point, -1)) <= 0;
+}
+
+/**
+ * How a Phong case looks in 3D: the shading point on a square piece of its surface, and from
+ * it the normal N, L toward the light, V toward the eye and the mirror direction R = 2(N·L)N − L
+ * (Shirley & Marschner §4.5), all of one length, half the way to the light, each with its
+ * letter; the light itself at its place. A light behind the surface shows as L pointing below
+ * the square. The answers are colours, not places: the panel's legend shows them. Seen from
+ * the side of the plane of N and L, a little above the surface, where the angles read truest.
+ */
+export function drawPhongCase(labCase: LabCase): CaseDrawing {
+  const [point, normal, toEye, light] = labCase.args as [Vec3, Vec3, Vec3, PhongLight];
+  const toLight = plus(light.position, point, -1);
+  const reach = size(toLight) / 2;
+  const l = unit(toLight);
+  const mirror = plus(scaled(normal, 2 * dot(normal, l)), l, -1);
+  const arrow = (direction: Vec3, mark: 'normal' | 'light' | 'eye' | 'mirror', label: string) => ({
+    from: point,
+    to: plus(point, direction, reach),
+    mark,
+    arrow: true,
+    label,
+  });
+  // Two directions in the surface: any one across N, and N × that one.
+  const across = unit(cross(normal, Math.abs(normal.x) < 0.9 ? v(1, 0, 0) : v(0, 1, 0)));
+  const along = cross(normal, across);
+  const corner = (a: number, b: number) => plus(plus(point, across, a * reach), along, b * reach);
+  const side = cross(normal, l);
+  const flat = size(side) > 1e-3 ? unit(side) : across;
+  const facing = dot(flat, toEye) < 0 ? scaled(flat, -1) : flat;
+  return {
+    segments: [arrow(normal, 'normal', 'N'), arrow(l, 'light', 'L'), arrow(toEye, 'eye', 'V'), arrow(mirror, 'mirror', 'R')],
+    points: [
+      { at: point, mark: 'surface' },
+      { at: light.position, mark: 'light' },
+    ],
+    shapes: [{ kind: 'quad', corners: [corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1)], fill: 'surface' }],
+    lookFrom: unit(plus(facing, normal, 0.35)),
+  };
 }

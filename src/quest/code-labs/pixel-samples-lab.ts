@@ -1,6 +1,8 @@
 import { hashKey } from '../../tracer/sampler.ts';
 import { samplePosition } from '../../tracer/supersampling.ts';
-import type { Point, RandomRun } from './code-lab-statistics.ts';
+import type { CaseDrawing, CaseShape, CaseSegment, QuadFill } from './case-drawing.ts';
+import type { Point, RandomRun, SampleFailure } from './code-lab-statistics.ts';
+import { v } from './lab-vectors.ts';
 
 /**
  * The jittered samples lab (Cook, "Stochastic Sampling in Computer Graphics", ACM TOG 1986;
@@ -38,4 +40,51 @@ export function tracerPixelSamples(n: number, random: () => number): Point[] {
     const [x, y] = samplePosition('jittered', cells, index, 0, 0, seed, out);
     return { x, y };
   });
+}
+
+/** A point far outside the pixel is drawn this far outside at most, so that the pixel stays large enough to read. */
+const FARTHEST_OUTSIDE = 0.5;
+
+const clampOutside = (value: number) => Math.min(1 + FARTHEST_OUTSIDE, Math.max(-FARTHEST_OUTSIDE, value));
+
+/** The quad of the pixel's part from (x0, y0) to (x1, y1), in the plane z = 0 (1 m to the pixel). */
+const quad = (x0: number, y0: number, x1: number, y1: number, fill: QuadFill): CaseShape => ({
+  kind: 'quad',
+  corners: [v(x0, y0, 0), v(x1, y0, 0), v(x1, y1, 0), v(x0, y1, 0)],
+  fill,
+});
+
+/**
+ * A failing run drawn in 3D: the pixel as a 1 m square in the plane z = 0 (x to the right, y
+ * up), seen face on, with its √n × √n grid of cells; the run's points on it, each inside
+ * the pixel a small dot and each outside it marked as the learner's wrong answer (◆, drawn
+ * at most FARTHEST_OUTSIDE beyond the edge); the cells with no point and those with more
+ * than one filled, so that points not stratified show at a glance. Null for a failure that
+ * carries no points (the function threw or gave no n points).
+ */
+export function drawSampleRun(failure: SampleFailure): CaseDrawing | null {
+  if (!('points' in failure)) return null;
+  const points = failure.points;
+  const cells = Math.max(1, Math.round(Math.sqrt(points.length)));
+  const counts = new Array<number>(cells * cells).fill(0);
+  const drawing: CaseDrawing = { segments: [], points: [], shapes: [quad(0, 0, 1, 1, 'pixel')], lookFrom: v(0, 0, 1) };
+  for (const { x, y } of points) {
+    const inside = x >= 0 && x < 1 && y >= 0 && y < 1;
+    if (inside) counts[Math.floor(y * cells) * cells + Math.floor(x * cells)]!++;
+    drawing.points.push({ at: v(clampOutside(x), clampOutside(y), 0), mark: inside ? 'sample' : 'got' });
+  }
+  counts.forEach((count, cell) => {
+    if (count === 1) return;
+    const [column, row] = [cell % cells, Math.floor(cell / cells)];
+    drawing.shapes.push(quad(column / cells, row / cells, (column + 1) / cells, (row + 1) / cells, count === 0 ? 'empty' : 'crowded'));
+  });
+  for (let line = 1; line < cells; line++) {
+    const at = line / cells;
+    const grid: CaseSegment[] = [
+      { from: v(at, 0, 0), to: v(at, 1, 0), mark: 'grid' },
+      { from: v(0, at, 0), to: v(1, at, 0), mark: 'grid' },
+    ];
+    drawing.segments.push(...grid);
+  }
+  return drawing;
 }

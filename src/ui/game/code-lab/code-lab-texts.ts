@@ -1,6 +1,7 @@
 import { msg, str } from '@lit/localize';
 import type { CodeLab } from '../../../quest/code-labs/code-goal.ts';
 import { describeValue, type CaseFailure, type LabAnswer, type Tolerance, type Vec3 } from '../../../quest/code-labs/code-lab-grading.ts';
+import { LAB_WORDING } from './lab-failure-wording.ts';
 
 /** A kind of case as the result list names it: the misconception its edge case tests. */
 export function caseKindName(kind: string): string {
@@ -143,7 +144,7 @@ export function caseInput(signature: string, args: unknown[]): string {
 
 /** An answer in words: null as what "none" means in this lab, a number as the distance t, anything else spelled out. */
 function answerText(lab: CodeLab, answer: LabAnswer): string {
-  if (answer === null) return lab === 'refraction' ? msg('null (total internal reflection)') : msg('null (no hit)');
+  if (answer === null) return LAB_WORDING[lab]?.none?.() ?? msg('null (no hit)');
   return typeof answer === 'number' ? `t = ${numberText(answer)}` : describeValue(answer);
 }
 
@@ -162,10 +163,11 @@ function answerKindText(tolerance: Tolerance): string {
   }
 }
 
-/** What was expected and what came back, in words. */
+/** What was expected and what came back, in words: the lab's own wording where it has one (lab-failure-wording.ts), else the general one. */
 export function failureText(failure: CaseFailure, lab: CodeLab, tolerance: Tolerance): string {
   const expectedText = answerText(lab, failure.labCase.expected);
   const gotText = failure.gotValue === null ? failure.got : answerText(lab, failure.gotValue);
+  const wording = LAB_WORDING[lab];
   switch (failure.reason) {
     case 'threw': {
       const message = failure.message ?? '';
@@ -174,40 +176,27 @@ export function failureText(failure: CaseFailure, lab: CodeLab, tolerance: Toler
     case 'wrong-type':
       return msg(str`Expected ${expectedText}, got ${failure.got}: ${answerKindText(tolerance)}.`);
     case 'not-a-number':
-      return lab === 'ray-box'
-        ? msg(str`Expected ${expectedText}, got ${failure.got}: 0 · Infinity is NaN in JavaScript, and every comparison with NaN is false.`)
-        : msg(str`Expected ${expectedText}, got ${failure.got}: is something under a square root negative, or divided by 0?`);
+      return (
+        wording?.notANumber?.(expectedText, failure) ??
+        msg(str`Expected ${expectedText}, got ${failure.got}: is something under a square root negative, or divided by 0?`)
+      );
     case 'not-unit': {
       const value = failure.gotValue as Vec3;
       const size = numberText(Math.hypot(value.x, value.y, value.z));
       return msg(str`Expected ${expectedText}, got ${gotText}: the right way, but of length ${size} instead of 1.`);
     }
     case 'expected-hit':
-      if (lab === 'refraction') return msg(str`Expected ${expectedText}, got null: here the ray is not totally reflected, it goes through.`);
-      return lab === 'ray-box'
-        ? msg(str`Expected ${expectedText}, got null: the ray does hit the box.`)
-        : msg(str`Expected ${expectedText}, got null: the ray does hit the sphere.`);
+      return wording?.expectedHit?.(expectedText) ?? msg(str`Expected ${expectedText}, got ${gotText}.`);
     case 'expected-miss':
-      if (lab === 'refraction') return msg(str`Expected ${expectedText}, got ${gotText}: here the ray cannot leave the glass.`);
-      if (lab !== 'ray-box') return msg(str`Expected ${expectedText}, got t = ${failure.got}: only a hit in front of the ray’s origin (t > 0) counts.`);
-      return failure.labCase.kind === 'in-face-plane'
-        ? msg(str`Expected ${expectedText}, got t = ${failure.got}: a ray exactly in the plane of a face counts as a miss here.`)
-        : msg(str`Expected ${expectedText}, got t = ${failure.got}: the ray is never inside all three slabs at once in front of its origin.`);
+      return wording?.expectedMiss?.(expectedText, gotText, failure) ?? msg(str`Expected ${expectedText}, got ${gotText}.`);
     case 'wrong-value':
-      if (lab === 'shadow') return shadowWrongText(failure.labCase.expected === true);
-      return typeof failure.gotValue === 'number'
-        ? msg(str`Expected ${expectedText}, got t = ${failure.got}.`)
-        : msg(str`Expected ${expectedText}, got ${gotText}.`);
-  }
-}
-
-/** Why a shadow test's true or false is wrong: what may block the light, and what may not. */
-function shadowWrongText(inShadow: boolean): string {
-  return inShadow
-    ? msg('Expected true, got false: a sphere is in the way between the point and the light.')
-    : msg(
-        'Expected false, got true: only a sphere hit at a t between 0 and the distance to the light blocks it; one behind the point or beyond the light does not.',
+      return (
+        wording?.wrongValue?.(expectedText, gotText, failure) ??
+        (typeof failure.gotValue === 'number'
+          ? msg(str`Expected ${expectedText}, got t = ${failure.got}.`)
+          : msg(str`Expected ${expectedText}, got ${gotText}.`))
       );
+  }
 }
 
 /** The lab's vector library, as the panel documents it (public/code-lab-sandbox.html defines it). */

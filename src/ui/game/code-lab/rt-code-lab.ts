@@ -10,12 +10,13 @@ import { directionTally, gradeDirections, type DirectionReport, type DirectionRu
 import { labCases } from '../../../quest/code-labs/lab-cases.ts';
 import { rendersWith } from '../../../quest/code-labs/lab-render/lab-functions.ts';
 import { drawFailingCase } from '../../../quest/code-labs/lab-drawings.ts';
-import { CASE_MARK_COLORS } from '../../../quest/code-labs/case-drawing.ts';
+import { drawSampleRun } from '../../../quest/code-labs/pixel-samples-lab.ts';
 import { LOCALES, localize, type Locale } from '../../../quest/localized-text.ts';
 import { LocalizedElement } from '../../controls/localized-element.ts';
 import { gameStyles, taskPanelStyles } from '../game-styles.ts';
 import { levelText } from '../level-text.ts';
 import { createCodeEditor, replaceCode } from './code-editor.ts';
+import { caseLegend, directionLegend, runLegend } from './case-legend.ts';
 import { codeLabHostContext } from './code-lab-host.ts';
 import { statisticsReport } from './code-lab-statistics-report.ts';
 import { directionReport } from './direction-statistics-report.ts';
@@ -98,6 +99,14 @@ export class RtCodeLab extends LocalizedElement {
       figcaption {
         font-size: 0.85rem;
       }
+      .swatch {
+        display: inline-block;
+        width: 1em;
+        height: 1em;
+        margin-right: 0.25em;
+        vertical-align: -0.15em;
+        border: 1px solid var(--rt-border);
+      }
     `,
   ];
 
@@ -135,16 +144,17 @@ export class RtCodeLab extends LocalizedElement {
     }
   }
 
-  /** The last run's first failing case in the 3D view, or none (it passed, gave no answers, or there was no run). */
+  /** The last run's first failing case (or run of samples) in the 3D view, or none (it passed, gave no answers, or there was no run). */
   private drawCase(goal: CodeGoal): void {
-    this.host.value?.showCase(this.caseDrawing(goal));
+    this.host.value?.showCase(this.drawing(goal));
   }
 
-  private caseDrawing(goal: CodeGoal) {
+  private drawing(goal: CodeGoal) {
     const state = this.state;
+    if (state.kind === 'graded') return state.report.firstFailure && drawFailingCase(goal, state.report.firstFailure);
+    if (state.kind === 'sampled') return state.report.firstFailure && drawSampleRun(state.report.firstFailure);
     if (state.kind === 'directions') return drawCosineBounceFailure(state.report, state.runs);
-    const failure = state.kind === 'graded' ? state.report.firstFailure : null;
-    return failure ? drawFailingCase(goal, failure) : null;
+    return null;
   }
 
   protected override updated(changed: PropertyValues): void {
@@ -225,9 +235,9 @@ export class RtCodeLab extends LocalizedElement {
       case 'graded':
         return this.report(state.report, state.tolerance);
       case 'sampled':
-        return statisticsReport(state.report, state.runs);
+        return html`${statisticsReport(state.report, state.runs)} ${this.goal && this.drawing(this.goal) ? runLegend() : nothing}`;
       case 'directions':
-        return html`${directionReport(state.report, state.runs)} ${state.report.firstFailure ? this.directionLegend() : nothing}`;
+        return html`${directionReport(state.report, state.runs)} ${state.report.firstFailure ? directionLegend() : nothing}`;
     }
   }
 
@@ -249,28 +259,10 @@ export class RtCodeLab extends LocalizedElement {
             <code>${caseInput(code.signature, failure.labCase.args)}</code><br />
             ${failureText(failure, code.lab, tolerance)}
           </p>
-          ${this.goal && drawFailingCase(this.goal, failure) ? this.legend() : nothing}`
+          ${this.goal && drawFailingCase(this.goal, failure) ? caseLegend(this.goal.code.lab, failure) : nothing}`
           : nothing
       }
     `;
-  }
-
-  /** What the 3D view shows of the failing case, with the two answers' colours and shapes (only for a lab that draws its cases). */
-  private legend() {
-    const swatch = (mark: 'expected' | 'got', shape: string) => html`<span aria-hidden="true" style="color: ${CASE_MARK_COLORS[mark]}">${shape}</span>`;
-    return html`<p class="legend">
-      ${msg('Drawn in the 3D view: the case’s ray and object;')} ${swatch('expected', '●')} ${msg('expected: the tracer’s answer;')} ${swatch('got', '◆')}
-      ${msg('got: your function’s answer.')}
-    </p>`;
-  }
-
-  /** What the 3D view shows of a failing run of directions (cosine-bounce-lab.ts). */
-  private directionLegend() {
-    const swatch = (mark: 'expected' | 'got', shape: string) => html`<span aria-hidden="true" style="color: ${CASE_MARK_COLORS[mark]}">${shape}</span>`;
-    return html`<p class="legend">
-      ${msg('Drawn in the 3D view, turned so that the normal points up: the normal and the cosine lobe, the sphere of diameter 1 on the surface;')} ${swatch('expected', '●')}
-      ${msg('expected: the tips of the tracer’s directions;')} ${swatch('got', '◆')} ${msg('got: the tips of yours.')}
-    </p>`;
   }
 
   private async run(goal: CodeGoal): Promise<void> {
@@ -294,6 +286,7 @@ export class RtCodeLab extends LocalizedElement {
       const report = gradeSamples(grading.runs, result.outcomes, grading.significance);
       this.state = { kind: 'sampled', report, runs: grading.runs };
       lastRuns.set(goal.code.lab, this.state);
+      this.drawCase(goal);
       this.host.value?.graded({ lab: goal.code.lab, ...sampleTally(report) });
       return;
     }
