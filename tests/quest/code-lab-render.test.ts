@@ -202,6 +202,25 @@ describe('rendering a level with the learner’s function', () => {
   });
 });
 
+describe('a lab render on the page', () => {
+  it('lets timers and input run between bands of rows instead of holding the thread for a whole pass', async () => {
+    const scene = levelScene('02-rays-from-the-camera');
+    let turns = 0;
+    let rendering = true;
+    const count = () => {
+      if (!rendering) return;
+      turns++;
+      setTimeout(count, 0);
+    };
+    setTimeout(count, 0);
+    const result = await renderWithLearner(scene, 'ray-sphere', RAY_SPHERE_TOLERANCE, () => Promise.resolve({ reason: 'timeout' }), 160, 120);
+    rendering = false;
+    expect(result.kind).toBe('no-answers');
+    // The reference and the first pass: 2 × 120 rows in bands of 8, so the page had a turn about 30 times.
+    expect(turns).toBeGreaterThanOrEqual(20);
+  });
+});
+
 describe('the difference picture', () => {
   it('is black where the pictures agree and bright where they differ, and counts the pixels', () => {
     const mine = new Uint8ClampedArray([10, 20, 30, 255, 100, 100, 100, 255, 0, 0, 0, 255]);

@@ -32,19 +32,29 @@ const fromVector = (vector: Vector3): Vec3 => v(vector.x, vector.y, vector.z);
  * ray through each pixel's centre; each ray's colour clamped to 0..1, as the tracer does.
  * Returns linear RGB, row by row from the top, as the tracer's images.
  */
-export function renderLab(scene: LabRenderScene, functions: LabFunctions, width: number, height: number): Float32Array {
+export async function renderLab(scene: LabRenderScene, functions: LabFunctions, width: number, height: number): Promise<Float32Array> {
   const tracer = new LabTracer(scene, functions);
   const image = new Float32Array(width * height * 3);
   const direction = new Vector3();
   const eye = fromVector(scene.others.camera.eye);
-  for (let y = 0; y < height; y++)
+  for (let y = 0; y < height; y++) {
+    // A render runs on the page's thread (the learner's answers are already in a table), a
+    // pass up to a second on a slow laptop: between bands of rows the page handles its input.
+    if (y > 0 && y % ROWS_PER_TURN === 0) await nextTurn();
     for (let x = 0; x < width; x++) {
       scene.others.camera.direction(x + 0.5, y + 0.5, width, height, direction);
       const color = tracer.trace(eye, fromVector(direction), 0);
       image.set([color.r, color.g, color.b], (y * width + x) * 3);
     }
+  }
   return image;
 }
+
+/** Rows rendered before the page gets a turn: at 160 pixels a row, a band of a few milliseconds. */
+const ROWS_PER_TURN = 8;
+
+/** A macrotask's turn, so that input events and frames run between bands (a resolved promise would not let them). */
+const nextTurn = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
 
 class LabTracer {
   private readonly ray = new Ray();

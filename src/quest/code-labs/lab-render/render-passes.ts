@@ -45,7 +45,7 @@ export async function renderWithLearner(
   width: number,
   height: number,
 ): Promise<LabRenderResult> {
-  const reference = renderLab(
+  const reference = await renderLab(
     scene,
     labFunctions(null, () => null),
     width,
@@ -62,7 +62,7 @@ export async function renderWithLearner(
       missed.set(key, args);
       return referenceAnswer(lab, args);
     };
-    const mine = renderLab(scene, labFunctions(lab, lookUp), width, height);
+    const mine = await renderLab(scene, labFunctions(lab, lookUp), width, height);
     if (missed.size === 0) return { kind: 'rendered', mine, reference, passes: pass, calls: answers.size };
     const calls = [...missed.values()];
     const reply = await ask(calls);
