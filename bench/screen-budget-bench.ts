@@ -1,6 +1,6 @@
 /**
  * The lab's worker tracing the free lab's screen at its largest settings with the edit
- * budget (issue 38: EDIT_RAY_BUDGET rays of 108,836), as ScreenTracer asks for it while a
+ * budget (issue 38: HEAVY_EDIT_RAYS rays of 108,836), as ScreenTracer asks for it while a
  * slider moves: this checkout's render-core against another checkout's, in alternating
  * pairs, so that a busy machine's load falls on both alike. Prints each run and the
  * medians and 95th percentiles of wall and CPU time per screen.
@@ -12,7 +12,7 @@
 import { resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { defaultScene } from '../src/scene/scene-defaults.ts';
-import { EDIT_RAY_BUDGET } from '../src/view/ray-budget.ts';
+import { HEAVY_EDIT_RAYS } from '../src/view/ray-budget.ts';
 import type { PostResponse, RenderRequest, RenderResponse } from '../workers/protocol.ts';
 import { median } from './median.ts';
 
@@ -39,7 +39,7 @@ async function workerOf(checkout: string): Promise<() => { wall: number; cpu: nu
     const cpu = process.cpuUsage();
     const start = performance.now();
     // The whole screen in one request (ScreenTracer asks for 64 pixels at a time; this screen has 48).
-    handle({ type: 'trace-pixels', requestId: ++requestId, first: 0, count: columns * rows, seed: 1, budget: { rays: EDIT_RAY_BUDGET, keepPixel: null } });
+    handle({ type: 'trace-pixels', requestId: ++requestId, first: 0, count: columns * rows, seed: 1, budget: { rays: HEAVY_EDIT_RAYS, keepPixel: null } });
     const wall = performance.now() - start;
     const used = process.cpuUsage(cpu);
     const response = answer as RenderResponse | null;

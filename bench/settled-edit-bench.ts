@@ -19,7 +19,7 @@ import { ScreenTracer } from '../src/render/screen-tracer.ts';
 import type { MeshLibrary } from '../src/scene/mesh-data.ts';
 import { defaultScene } from '../src/scene/scene-defaults.ts';
 import type { Scene } from '../src/scene/scene.ts';
-import { EDIT_RAY_BUDGET } from '../src/view/ray-budget.ts';
+import { HEAVY_EDIT_RAYS } from '../src/view/ray-budget.ts';
 import { median } from './median.ts';
 
 const [otherModule, pairsArgument] = process.argv.slice(2);
@@ -52,7 +52,7 @@ function published(tracer: Tracer, scene: Scene): Promise<ScreenRays> {
 }
 
 const pause = (ms: number) => new Promise((done) => setTimeout(done, ms));
-const budget = { rays: EDIT_RAY_BUDGET, keepPixel: null };
+const budget = { rays: HEAVY_EDIT_RAYS, keepPixel: null };
 let shininess = 10;
 
 /** A run whose edit's screen had not come after this long counts as this long; its errors are said. */

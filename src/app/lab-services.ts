@@ -175,7 +175,12 @@ export class LabServices {
       this.layers.rays.setFocus(this.focus ?? this.pixelPaths);
       this.tracer.traceInline(new InlineScreenTracer());
     }
-    if (view.software && !this.budget) this.budget = new RayBudgetWhileEditing(() => this.applyBudget());
+    if (view.software && !this.budget)
+      this.budget = new RayBudgetWhileEditing(
+        () => this.applyBudget(),
+        undefined,
+        () => this.screenRays,
+      );
     this.view = view;
     view.setRayLayer(this.layers.rays);
     view.setBvhLayer(this.layers.boxes.object);

@@ -1,5 +1,6 @@
 import { type BurstTimer, browserTimer } from './burst-resolution.ts';
-import { EDIT_RAY_BUDGET } from './ray-budget.ts';
+import type { ScreenRays } from '../render/screen-rays.ts';
+import { editBudgetFor } from './ray-budget.ts';
 
 /**
  * How long after the last settled edit (a slider let go, a key pressed, a value typed) all
@@ -28,18 +29,24 @@ export class RayBudgetWhileEditing {
   private dragging = false;
   private settle: unknown = null;
 
-  /** `apply()` is called whenever `budget` changes. */
+  /**
+   * `apply()` is called whenever the budget starts or ends; `screen()` is the screen shown
+   * now, whose rays decide how many are drawn while it holds (editBudgetFor).
+   */
   constructor(
     private readonly apply: () => void,
     private readonly timer: BurstTimer = browserTimer,
+    private readonly screen: () => ScreenRays | null = () => null,
   ) {}
 
   /** The budget the next edit brings. */
-  readonly editBudget = EDIT_RAY_BUDGET;
+  get editBudget(): number {
+    return editBudgetFor(this.screen());
+  }
 
   /** The budget in force now, or null: all rays are drawn. */
   get budget(): number | null {
-    return this.editing ? EDIT_RAY_BUDGET : null;
+    return this.editing ? this.editBudget : null;
   }
 
   /** The scene or the ray options were changed now; `live` while the learner still drags the value. */

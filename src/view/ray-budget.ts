@@ -2,10 +2,10 @@
  * A budget for the rays the lab's 3D view draws while the learner edits. On a CPU rasterizer
  * (SwiftShader, llvmpipe) every drawn ray costs fill time, and the free lab's largest
  * settings draw tens of thousands of rays, seconds a frame there (docs/benchmark-log.md), so
- * the view froze while a slider moved. While the learner edits, the view draws about
- * EDIT_RAY_BUDGET of them, chosen by the rule of tracer/tree-budget.ts (whole trees, spread
- * over the screen, the chosen pixel's and every kind kept); once the edits stop, all of them
- * (RayBudgetWhileEditing).
+ * the view froze while a slider moved. While the learner edits, a screen of more than
+ * EDIT_RAY_BUDGET rays is drawn with about HEAVY_EDIT_RAYS of them, chosen by the rule of
+ * tracer/tree-budget.ts (whole trees, spread over the screen, the chosen pixel's and every
+ * kind kept); once the edits stop, all of them (RayBudgetWhileEditing).
  */
 import type { ScreenRays } from '../render/screen-rays.ts';
 import { type BudgetTrees, keptTrees, tracedRays } from '../tracer/tree-budget.ts';
@@ -14,14 +14,30 @@ import { RAY_COLOR_KEYS } from './ray-palette.ts';
 import type { DrawnRays } from './ray-visibility.ts';
 
 /**
- * The most rays (and cones) drawn per frame while the learner edits, on a CPU rasterizer.
- * On SwiftShader a frame of the lab's view at the coarse resolution of an edit
- * (BurstResolution) cost about 20 ms plus 0.035 ms per drawn ray, the see-through ribbons'
- * fill (docs/benchmark-log.md): 1,200 rays keep it near 60 ms. Every level's own
+ * The most rays (and cones) a screen may have to be drawn whole while the learner edits, on
+ * a CPU rasterizer. On SwiftShader a frame of the lab's view at the coarse resolution of an
+ * edit (BurstResolution) cost about 20 ms plus 0.035 ms per drawn ray, the see-through
+ * ribbons' fill (docs/benchmark-log.md): 1,200 rays keep it near 60 ms. Every level's own
  * screens draw fewer (at most 957, level 18's; tests/view/ray-budget.test.ts), so a teaching
  * view is never thinned.
  */
 export const EDIT_RAY_BUDGET = 1200;
+
+/**
+ * The rays (and cones) drawn per frame while the learner edits a screen that has more than
+ * EDIT_RAY_BUDGET: one that must be thinned anyway is thinned to this. A dragged slider asks
+ * for a frame every frame, and on SwiftShader the 1,200 rays were about half of the GPU
+ * process's work per frame of such a drag (hiding the rays halved it): the frames fell
+ * behind the steps, and a drag's step waited 159 ms for its frame at the 95th percentile
+ * (docs/benchmark-log.md). A third as many rays still show every kind and spread over the
+ * screen (tracer/tree-budget.ts).
+ */
+export const HEAVY_EDIT_RAYS = 400;
+
+/** How many rays `screen` is drawn with while the learner edits: all of a screen within EDIT_RAY_BUDGET, else HEAVY_EDIT_RAYS. */
+export function editBudgetFor(screen: ScreenRays | null): number {
+  return screen !== null && tracedRaysOf(screen) > EDIT_RAY_BUDGET ? HEAVY_EDIT_RAYS : EDIT_RAY_BUDGET;
+}
 
 /** How many rays are drawn (`shown`) of how many were traced (`of`) while a budget leaves some out. */
 export interface Thinning {
@@ -106,9 +122,14 @@ function flatTrees(flat: FlatRays): BudgetTrees & { start: Int32Array; end: Int3
 export function thinningOf(rays: ScreenRays | null, drawn: DrawnRays, thinnedHere: boolean, pixelChosen: boolean): Thinning | null {
   const sentFewer = !pixelChosen && rays !== null && rays.traces.some((trace) => trace.traced !== undefined);
   if (!rays || (!thinnedHere && !sentFewer)) return null;
+  return { shown: drawn.rays.count + drawn.cones.count, of: tracedRaysOf(rays) };
+}
+
+/** The rays `rays` traced, counting those a worker left out. */
+function tracedRaysOf(rays: ScreenRays): number {
   let traced = tracedCounts.get(rays);
   if (traced === undefined) tracedCounts.set(rays, (traced = tracedRays(rays.traces)));
-  return { shown: drawn.rays.count + drawn.cones.count, of: traced };
+  return traced;
 }
 
 /** Rays traced per screen (screens are never changed: a new trace is a new object). */

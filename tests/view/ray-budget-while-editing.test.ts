@@ -1,13 +1,19 @@
 import { describe, expect, it } from 'vitest';
-import { EDIT_RAY_BUDGET } from '../../src/view/ray-budget.ts';
+import type { ScreenRays } from '../../src/render/screen-rays.ts';
+import { EDIT_RAY_BUDGET, HEAVY_EDIT_RAYS } from '../../src/view/ray-budget.ts';
 import { HELD_MS, RayBudgetWhileEditing, SETTLE_MS } from '../../src/view/ray-budget-while-editing.ts';
 import { manualTimer } from '../support/manual-timer.ts';
+import { syntheticScreen } from '../support/ray-fixtures.ts';
 
 /** A RayBudgetWhileEditing on a manual clock, with the budgets it was applied with. */
-function watched() {
+function watched(screen: ScreenRays | null = null) {
   const timer = manualTimer();
   const applied: (number | null)[] = [];
-  const budget: RayBudgetWhileEditing = new RayBudgetWhileEditing(() => applied.push(budget.budget), timer);
+  const budget: RayBudgetWhileEditing = new RayBudgetWhileEditing(
+    () => applied.push(budget.budget),
+    timer,
+    () => screen,
+  );
   return { timer, applied, budget };
 }
 
@@ -60,6 +66,16 @@ describe('RayBudgetWhileEditing', () => {
     budget.edited(true);
     timer.advance(HELD_MS);
     expect(applied).toEqual([EDIT_RAY_BUDGET, null]);
+  });
+
+  it('holds a screen heavier than the edit budget to fewer rays, from the first edit', () => {
+    const { timer, applied, budget } = watched(syntheticScreen(3 * EDIT_RAY_BUDGET));
+    expect(budget.editBudget).toBe(HEAVY_EDIT_RAYS);
+    budget.edited(true);
+    expect(applied).toEqual([HEAVY_EDIT_RAYS]);
+    budget.edited(false);
+    timer.advance(SETTLE_MS);
+    expect(applied).toEqual([HEAVY_EDIT_RAYS, null]);
   });
 
   it('leaves nothing pending once disposed', () => {

@@ -14,7 +14,7 @@ import type { RayNode } from '../../src/tracer/ray-tree.ts';
 import { tracePixels } from '../../src/tracer/trace-pixel.ts';
 import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
 import { thinTraces } from '../../src/tracer/tree-budget.ts';
-import { EDIT_RAY_BUDGET, keptRays, thinningOf } from '../../src/view/ray-budget.ts';
+import { EDIT_RAY_BUDGET, editBudgetFor, HEAVY_EDIT_RAYS, keptRays, thinningOf } from '../../src/view/ray-budget.ts';
 import { flattenRays } from '../../src/view/flat-rays.ts';
 import { RAY_COLOR_KEYS } from '../../src/view/ray-palette.ts';
 import { type DrawnRays, type SegmentList, visibleRays } from '../../src/view/ray-visibility.ts';
@@ -40,6 +40,8 @@ function records(list: SegmentList) {
 
 const drawn = (rays: ScreenRays, selected: [number, number] | null = null): DrawnRays => visibleRays(rays, DEFAULT_RAY_VIEW, selected);
 const total = (rays: DrawnRays) => rays.rays.count + rays.cones.count;
+/** The rays a screen holds (not those a worker left out). */
+const tracedRaysSent = (rays: ScreenRays) => flattenRays(rays).count;
 
 /** `rays` drawn under `budget` as the ray pool draws them while the learner edits; null kept: all. */
 function drawnWithin(rays: ScreenRays, budget: number, keepPixel: number | null = null) {
@@ -110,6 +112,28 @@ describe('keptRays: the rays drawn while the learner edits', () => {
   it('keeps the same rays of the same screen every time', () => {
     const rays = screen(25, 25, (x) => [lensSample(1 + (x % 5))]);
     expect(records(drawnWithin(rays, 400, 3).drawn.rays)).toEqual(records(drawnWithin(rays, 400, 3).drawn.rays));
+  });
+});
+
+describe('editBudgetFor: how many rays an edited screen is drawn with', () => {
+  it('draws a screen within the edit budget whole, and thins a heavier one to a third of it', () => {
+    expect(HEAVY_EDIT_RAYS).toBeLessThan(EDIT_RAY_BUDGET);
+    const within = syntheticScreen(EDIT_RAY_BUDGET - 5);
+    expect(editBudgetFor(within)).toBe(EDIT_RAY_BUDGET);
+    expect(keptRays(flattenRays(within), editBudgetFor(within), null)).toBeNull();
+    expect(editBudgetFor(null)).toBe(EDIT_RAY_BUDGET);
+    const heavy = screen(20, 20, () => [lensSample(5)]);
+    expect(editBudgetFor(heavy)).toBe(HEAVY_EDIT_RAYS);
+    const { drawn: kept } = drawnWithin(heavy, editBudgetFor(heavy));
+    expect(total(kept)).toBeLessThanOrEqual(HEAVY_EDIT_RAYS + 11);
+    expect(total(kept)).toBeGreaterThan(HEAVY_EDIT_RAYS - 11);
+  });
+
+  it('counts the rays a worker left out: a screen it thinned stays heavy', () => {
+    const heavy = screen(20, 20, () => [lensSample(5)]);
+    const sent: ScreenRays = { ...heavy, traces: thinTraces(heavy.traces, HEAVY_EDIT_RAYS, null) };
+    expect(tracedRaysSent(sent)).toBeLessThanOrEqual(EDIT_RAY_BUDGET);
+    expect(editBudgetFor(sent)).toBe(HEAVY_EDIT_RAYS);
   });
 });
 
