@@ -30,7 +30,10 @@ export function createCodeEditor(options: {
       // step comments wrap instead of hiding past a sideways scroll.
       EditorView.lineWrapping,
       linter((view) => syntaxErrors(view, options.syntaxError), { delay: 300 }),
-      EditorView.contentAttributes.of({ 'aria-label': options.label }),
+      // The code area is reached by Tab as any editable element is; the explicit tabindex also
+      // tells accessibility checkers (axe's scrollable-region-focusable) that the scrolling box
+      // around it holds focusable content, which they do not infer from contenteditable.
+      EditorView.contentAttributes.of({ 'aria-label': options.label, tabindex: '0' }),
       EditorView.updateListener.of((update) => {
         if (update.docChanged) options.onChange(update.state.doc.toString());
       }),
