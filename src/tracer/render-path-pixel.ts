@@ -30,9 +30,10 @@ const inPixel: [number, number] = [0, 0];
 
 /**
  * The colour of pixel (x, y) in path mode (path-tracing spec §2): the mean of `paths` paths'
- * contributions, each started at a point of the pixel's square (a box filter): the pixel's
- * Owen-scrambled Sobol points (sobol-pixel-samples.ts), each uniform on its own but spread
- * evenly together, as Cycles and pbrt-v4 place pixel samples; through a uniform random point
+ * contributions, each started at a point of the pixel's square (a box filter): by default the
+ * pixel's Owen-scrambled Sobol points (sobol-pixel-samples.ts), each uniform on its own but
+ * spread evenly together, as Cycles and pbrt-v4 place pixel samples, or with `pixelSampling:
+ * "independent"` independent uniform random points; through a uniform random point
  * of the lens when it has an aperture, at a uniform random moment of the open shutter when
  * the scene asks for more than one time sample. With
  * `recorder`, every path is recorded there, and the mean of their contributions, summed in
@@ -75,13 +76,19 @@ export function addPathSamples(
   const { camera } = scene;
   const hasLens = camera.aperture > 0;
   const moving = scene.settings.timeSamples > 1;
+  const stratified = scene.settings.pixelSampling === 'stratified';
   const scramble = hashKey(seed, x, y, 0, PIXEL_SCRAMBLE_STREAM);
   const scrambleU = hashIn(scramble, 0);
   const scrambleV = hashIn(scramble, 1);
   for (let sample = from; sample < to; sample++) {
-    pixelSamplePoint(sample, scrambleU, scrambleV, inPixel);
-    camera.direction(x + inPixel[0], y + inPixel[1], width, height, direction);
     random.reset(hashKey(seed, x, y, sample, PIXEL_POSITION_STREAM));
+    // An independent point takes the stream's first two numbers; the lens and shutter draw next.
+    if (stratified) pixelSamplePoint(sample, scrambleU, scrambleV, inPixel);
+    else {
+      inPixel[0] = random.next();
+      inPixel[1] = random.next();
+    }
+    camera.direction(x + inPixel[0], y + inPixel[1], width, height, direction);
     let time = 0;
     if (hasLens) {
       camera.focalPoint(direction, focalPoint);
