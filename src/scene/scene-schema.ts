@@ -73,6 +73,10 @@ const settingsSchema = z
       .describe('Where the k times go: the same moments (i + ½)/k for every pixel, (i + ξ)/k per pixel sample, or k uniform ones.'),
     integrator: z.enum(['whitted', 'path']).default('whitted').describe("Which estimator renders the scene: Whitted's recursive tracer or a path tracer."),
     pathSamples: wholeNumberIn(LIMITS.pathSamples).default(16).describe('N: random paths per pixel (path mode).'),
+    pixelSampling: z
+      .enum(['stratified', 'independent'])
+      .default('stratified')
+      .describe("Where in the pixel each path starts (path mode): stratified, a pixel's paths spread evenly over it, or independent uniform random points."),
     bounceSampling: z.enum(['cosine', 'uniform']).default('cosine').describe('How a diffuse bounce picks its direction (path mode).'),
     lightSampling: z.boolean().default(true).describe('At each diffuse vertex, also a shadow ray to a point on each light (path mode).'),
     russianRoulette: z.boolean().default(false).describe('End paths at random, survivors weighted up, as well as at maxDepth (path mode).'),

@@ -73,6 +73,8 @@ export interface RenderSettings {
   integrator: Integrator;
   /** N: random paths per pixel (path mode). */
   pathSamples: number;
+  /** Where in the pixel each path starts (path mode): stratified points, or independent random ones. */
+  pixelSampling: PixelSampling;
   /** How a diffuse bounce picks its direction (path mode). */
   bounceSampling: BounceSampling;
   /** Next-event estimation: at each diffuse vertex, a shadow ray to a point on each light (path mode). */
@@ -84,6 +86,7 @@ export interface RenderSettings {
 }
 
 export type Integrator = 'whitted' | 'path';
+export type PixelSampling = 'stratified' | 'independent';
 export type BounceSampling = 'cosine' | 'uniform';
 
 export interface Material {

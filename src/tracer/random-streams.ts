@@ -17,8 +17,16 @@ import { LIMITS } from '../scene/scene-limits.ts';
  * fixed: changing one changes every image that draws from it (the golden images).
  */
 
-/** Sub-pixel positions of the jittered and random sample patterns (supersampling.ts). */
+/**
+ * Sub-pixel positions of the jittered and random sample patterns (supersampling.ts); in path
+ * mode, a path's lens point and shutter time (render-path-pixel.ts).
+ */
 export const PIXEL_POSITION_STREAM = 0x5a17;
+/**
+ * Path mode: a pixel's Owen-scrambling seeds for its stratified points (render-path-pixel.ts),
+ * keyed as its first sample's stream, as the scrambling is the same for all its samples.
+ */
+export const PIXEL_SCRAMBLE_STREAM = 0x5c4a;
 /** A pixel sample's jittered lens points (render-pixel.ts). */
 export const LENS_STREAM = 0x1e25;
 /** A pixel sample's shutter times (shutter-times.ts). */
@@ -34,6 +42,7 @@ export type StreamPlace = 'pixel sample' | 'hit';
 /** Every stream, with its place in the key. */
 export const RANDOM_STREAMS: readonly { name: string; stream: number; place: StreamPlace }[] = [
   { name: 'pixel position', stream: PIXEL_POSITION_STREAM, place: 'pixel sample' },
+  { name: 'pixel scramble', stream: PIXEL_SCRAMBLE_STREAM, place: 'pixel sample' },
   { name: 'lens', stream: LENS_STREAM, place: 'pixel sample' },
   { name: 'shutter time', stream: SHUTTER_TIME_STREAM, place: 'pixel sample' },
   { name: 'gloss', stream: GLOSS_STREAM, place: 'hit' },

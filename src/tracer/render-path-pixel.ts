@@ -3,8 +3,9 @@ import { PathIntegrator } from './path-integrator.ts';
 import type { PathRecorder } from './path-recorder.ts';
 import { Ray } from './ray.ts';
 import { concentricDisc } from './lights.ts';
-import { PIXEL_POSITION_STREAM } from './random-streams.ts';
-import { hashKey, RandomStream } from './sampler.ts';
+import { PIXEL_POSITION_STREAM, PIXEL_SCRAMBLE_STREAM } from './random-streams.ts';
+import { hashIn, hashKey, RandomStream } from './sampler.ts';
+import { pixelSamplePoint } from './sobol-pixel-samples.ts';
 import type { TracerScene } from './tracer-scene.ts';
 
 // One integrator per prepared scene, as for Whitted mode (render-pixel.ts).
@@ -25,12 +26,16 @@ const lensPoint = new Vector3();
 const primary = new Ray();
 const pathColor = new Vector3();
 const random = new RandomStream();
+const inPixel: [number, number] = [0, 0];
 
 /**
  * The colour of pixel (x, y) in path mode (path-tracing spec §2): the mean of `paths` paths'
- * contributions, each started at a uniform random point of the pixel's square (a box
- * filter), through a uniform random point of the lens when it has an aperture, at a uniform
- * random moment of the open shutter when the scene asks for more than one time sample. With
+ * contributions, each started at a point of the pixel's square (a box filter): by default the
+ * pixel's Owen-scrambled Sobol points (sobol-pixel-samples.ts), each uniform on its own but
+ * spread evenly together, as Cycles and pbrt-v4 place pixel samples, or with `pixelSampling:
+ * "independent"` independent uniform random points; through a uniform random point
+ * of the lens when it has an aperture, at a uniform random moment of the open shutter when
+ * the scene asks for more than one time sample. With
  * `recorder`, every path is recorded there, and the mean of their contributions, summed in
  * the same order, is this colour to the last bit.
  */
@@ -71,9 +76,19 @@ export function addPathSamples(
   const { camera } = scene;
   const hasLens = camera.aperture > 0;
   const moving = scene.settings.timeSamples > 1;
+  const stratified = scene.settings.pixelSampling === 'stratified';
+  const scramble = hashKey(seed, x, y, 0, PIXEL_SCRAMBLE_STREAM);
+  const scrambleU = hashIn(scramble, 0);
+  const scrambleV = hashIn(scramble, 1);
   for (let sample = from; sample < to; sample++) {
     random.reset(hashKey(seed, x, y, sample, PIXEL_POSITION_STREAM));
-    camera.direction(x + random.next(), y + random.next(), width, height, direction);
+    // An independent point takes the stream's first two numbers; the lens and shutter draw next.
+    if (stratified) pixelSamplePoint(sample, scrambleU, scrambleV, inPixel);
+    else {
+      inPixel[0] = random.next();
+      inPixel[1] = random.next();
+    }
+    camera.direction(x + inPixel[0], y + inPixel[1], width, height, direction);
     let time = 0;
     if (hasLens) {
       camera.focalPoint(direction, focalPoint);

@@ -195,7 +195,7 @@ describe('rules across fields (once every field is valid)', () => {
 
   it('checks state paths against the state the level starts in', () => {
     expect(errorsOf((level) => (level.tasks[2].goal = { state: 'scene.settings.supersample', op: '>=', value: 2 }))).toEqual([
-      'tasks[2].goal.state: no field "supersample" in scene.settings (it has shadows, maxDepth, background, supersampling, samplePattern, imageSize, dithering, encoding, lightTypes, timeSamples, timePattern, integrator, pathSamples, bounceSampling, lightSampling, russianRoulette, exposure)',
+      'tasks[2].goal.state: no field "supersample" in scene.settings (it has shadows, maxDepth, background, supersampling, samplePattern, imageSize, dithering, encoding, lightTypes, timeSamples, timePattern, integrator, pathSamples, pixelSampling, bounceSampling, lightSampling, russianRoulette, exposure)',
     ]);
     expect(errorsOf((level) => (level.tasks[2].goal = { event: 'render.finished', where: { 'scene.objects.color': [1, 0, 0] } }))).toEqual([
       'tasks[2].goal.where.scene.objects.color: scene.objects is a list: use [0], [id=…] or .length, not .color',

@@ -70,6 +70,7 @@ describe('defaults', () => {
           timePattern: 'jittered',
           integrator: 'whitted',
           pathSamples: 16,
+          pixelSampling: 'stratified',
           bounceSampling: 'cosine',
           lightSampling: true,
           russianRoulette: false,
