@@ -260,6 +260,7 @@
 's441d502d2cbf9abc': `Gekopieerd. Plak de code in het formulier van je docent (Ctrl+V).`,
 's441f5607aaf4798b': `Resultatencode kopiëren`,
 's442295f864bccf0a': `Terug naar de eerste stap (Home)`,
+'s44273cb5ce0e04c7': `Je code is niet uitgevoerd: de afgeschermde ruimte van het codelab (een aparte pagina die je code uitvoert) is niet geladen. Codelabs werken alleen als de app online is, of met het USB-bestand. Laad de pagina opnieuw om het nog eens te proberen.`,
 's44422f4bb83eecd1': `een straal evenwijdig aan een slab, erbuiten`,
 's44add38a493e53a5': str`${0} min`,
 's455c38380fad431f': `Begin met een kant-en-klare lijst:`,

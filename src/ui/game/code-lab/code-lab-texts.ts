@@ -212,3 +212,10 @@ export function vectorLibrary(): [call: string, meaning: string][] {
     ['mix(a, b, t)', msg('a + (b − a) · t')],
   ];
 }
+
+/** The sandbox page did not load: nothing of the learner's code ran, so nothing about it is said. */
+export function sandboxUnavailableText(): string {
+  return msg(
+    'Your code was not run: the code lab’s safe room (a separate page that runs your code) did not load. Code labs need the app online, or the USB file. Reload the page to try again.',
+  );
+}

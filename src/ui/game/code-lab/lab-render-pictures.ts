@@ -9,8 +9,8 @@ import { DIFFERENCE_GAIN, pictureDifference } from '../../../quest/code-labs/lab
 import { renderWithLearner, type LabRenderResult } from '../../../quest/code-labs/lab-render/render-passes.ts';
 import type { Scene } from '../../../scene/scene.ts';
 import { toRgba8 } from '../../../tracer/quantize.ts';
-import { caseInput, failureText } from './code-lab-texts.ts';
-import type { LabSandbox, SandboxResult } from './lab-sandbox.ts';
+import { caseInput, failureText, sandboxUnavailableText } from './code-lab-texts.ts';
+import { failedRun, type LabSandbox, type SandboxResult } from './lab-sandbox.ts';
 
 /**
  * How long one batch of a render's calls may take in the sandbox: tens of thousands of calls
@@ -50,7 +50,7 @@ export async function renderLabPictures(
     async (calls) => {
       const ran = await sandbox.run(code, goal.code.function, calls, { eachCase: false, limitMs: RENDER_LIMIT_MS }).catch((error: unknown) => {
         sandbox.close();
-        return { kind: 'failed' as const, message: String(error), line: null };
+        return failedRun(error);
       });
       return ran.kind === 'ran' ? { outcomes: ran.outcomes } : { reason: ran };
     },
@@ -90,6 +90,7 @@ function pictures(result: LabRenderResult, goal: CodeGoal, tolerance: Tolerance,
       if (state.kind === 'timeout')
         return { kind: 'stopped', message: msg(str`Your function did not return within ${seconds} s while rendering. Is there a loop that never ends?`) };
       if (state.kind === 'no-function') return { kind: 'stopped', message: msg(str`There is no function named ${state.name} in your code.`) };
+      if (state.kind === 'unavailable') return { kind: 'stopped', message: sandboxUnavailableText() };
       const message = state.line
         ? msg(str`Your code could not run: ${state.message} at line ${state.line}.`)
         : msg(str`Your code could not run: ${state.message}.`);

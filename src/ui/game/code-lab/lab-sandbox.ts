@@ -10,7 +10,19 @@ export type SandboxResult =
   | { kind: 'failed'; message: string; line: number | null }
   | { kind: 'no-function'; name: string }
   /** Stopped after RUN_LIMIT_MS, during case `caseIndex` (null: before the first case). */
-  | { kind: 'timeout'; caseIndex: number | null };
+  | { kind: 'timeout'; caseIndex: number | null }
+  /** The sandbox page did not load (offline: docs/code-labs.md, "Not yet"), so the code was not run at all. */
+  | { kind: 'unavailable' };
+
+/** The sandbox page did not say it was ready: the learner's code was never run. */
+export class SandboxNotLoaded extends Error {
+  override readonly name = 'SandboxNotLoaded';
+}
+
+/** What a run that threw before it had an answer came to: a sandbox that never loaded, or a failure of its own. */
+export function failedRun(error: unknown): Exclude<SandboxResult, { kind: 'ran' }> {
+  return error instanceof SandboxNotLoaded ? { kind: 'unavailable' } : { kind: 'failed', message: String(error), line: null };
+}
 
 type SandboxMessage =
   | { type: 'ready' }
@@ -86,7 +98,7 @@ export class LabSandbox {
       };
       window.addEventListener('message', listen);
       // A frame says nothing when its page is missing: a sandbox not ready in 10 s counts as not there.
-      setTimeout(() => reject(new Error('The code lab sandbox could not be loaded.')), 10_000);
+      setTimeout(() => reject(new SandboxNotLoaded('the code lab sandbox did not load')), 10_000);
       this.frame = frame;
       document.body.append(frame);
     });

@@ -20,9 +20,9 @@ import { caseLegend, directionLegend, runLegend } from './case-legend.ts';
 import { codeLabHostContext } from './code-lab-host.ts';
 import { statisticsReport } from './code-lab-statistics-report.ts';
 import { directionReport } from './direction-statistics-report.ts';
-import { caseInput, caseKindName, failureText, vectorLibrary } from './code-lab-texts.ts';
+import { caseInput, caseKindName, failureText, sandboxUnavailableText, vectorLibrary } from './code-lab-texts.ts';
 import { savedCode, saveCode } from './code-drafts.ts';
-import { LabSandbox, RUN_LIMIT_MS, type SandboxResult } from './lab-sandbox.ts';
+import { failedRun, LabSandbox, RUN_LIMIT_MS, type SandboxResult } from './lab-sandbox.ts';
 import { labRenderPictures, renderLabPictures, type LabRenderState } from './lab-render-pictures.ts';
 
 /** What the result area shows: nothing yet, a run under way, a graded run, or why a run gave no answers. */
@@ -232,6 +232,8 @@ export class RtCodeLab extends LocalizedElement {
         </p>`;
       case 'no-function':
         return html`<p class="fail">${msg(str`There is no function named ${state.name} in your code.`)}</p>`;
+      case 'unavailable':
+        return html`<p class="fail" role="alert">${sandboxUnavailableText()}</p>`;
       case 'graded':
         return this.report(state.report, state.tolerance);
       case 'sampled':
@@ -274,7 +276,7 @@ export class RtCodeLab extends LocalizedElement {
       result = await this.sandbox.run(this.code, goal.code.function, args);
     } catch (error) {
       this.sandbox.close();
-      result = { kind: 'failed', message: String(error), line: null };
+      result = failedRun(error);
     }
     if (result.kind !== 'ran') {
       this.state = result;
