@@ -52,8 +52,8 @@ export function tracerCosineDirection(normal: Vec3, random: () => number): Vec3 
 const SHOWN = 50;
 
 /**
- * The failing normal drawn at the origin: the normal, the cosine lobe (the directions' density
- * cos θ / π as a polar plot is a sphere of diameter 1 touching the surface at the origin),
+ * The failing normal drawn at the origin: the normal, the cosine lobe (cos θ as a polar plot,
+ * the directions' density cos θ / π times π: a sphere of diameter 1 touching the surface at the origin),
  * the tips of the learner's directions (got) and the tracer's for the same seeds (expected):
  * where they crowd, and on which side of the surface they lie, shows what went wrong. The
  * failing run's own direction is drawn as an arrow. All of it is turned so that the normal

@@ -135,7 +135,7 @@ export function lightBehindSurface(labCase: LabCase): boolean {
 /**
  * How a Phong case looks in 3D: the shading point on a square piece of its surface, and from
  * it the normal N, L toward the light, V toward the eye and the mirror direction R = 2(N·L)N − L
- * (Shirley & Marschner §4.5), all of one length, half the way to the light, each with its
+ * (Shirley & Marschner §10.2.1), all of one length, half the way to the light, each with its
  * letter; the light itself at its place. A light behind the surface shows as L pointing below
  * the square. The answers are colours, not places: the panel's legend shows them. Seen from
  * the side of the plane of N and L, a little above the surface, where the angles read truest.
