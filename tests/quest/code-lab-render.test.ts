@@ -7,6 +7,7 @@ import { pictureDifference } from '../../src/quest/code-labs/lab-render/picture-
 import { maxPasses, renderWithLearner, type LabRenderResult } from '../../src/quest/code-labs/lab-render/render-passes.ts';
 import { MIRROR_TOLERANCE } from '../../src/quest/code-labs/mirror-lab.ts';
 import { PHONG_TOLERANCE, type PhongLight, type PhongMaterial } from '../../src/quest/code-labs/phong-lab.ts';
+import { RAY_BOX_TOLERANCE } from '../../src/quest/code-labs/ray-box-lab.ts';
 import { RAY_SPHERE_TOLERANCE } from '../../src/quest/code-labs/ray-sphere-lab.ts';
 import { REFRACTION_TOLERANCE } from '../../src/quest/code-labs/refraction-lab.ts';
 import { SHADOW_TOLERANCE, type Sphere } from '../../src/quest/code-labs/shadow-lab.ts';
@@ -91,6 +92,26 @@ const inShadowWith =
       return roots.some((t) => anyT || (t > 0 && t < distance));
     });
 
+/**
+ * Kay & Kajiya's slab test (Shirley & Marschner §12.3.1): the entry t is the largest of the
+ * slabs' near ts, the exit the smallest far t; from inside, the exit. `noSwap`: each slab's
+ * ts taken as (min, max) in that order, wrong for a negative direction on that axis.
+ */
+const hitBoxWith =
+  (noSwap = false) =>
+  (origin: Vec3, direction: Vec3, boxMin: Vec3, boxMax: Vec3): number | null => {
+    let near = -Infinity;
+    let far = Infinity;
+    for (const axis of ['x', 'y', 'z'] as const) {
+      const t0 = (boxMin[axis] - origin[axis]) / direction[axis];
+      const t1 = (boxMax[axis] - origin[axis]) / direction[axis];
+      near = Math.max(near, noSwap ? t0 : Math.min(t0, t1));
+      far = Math.min(far, noSwap ? t1 : Math.max(t0, t1));
+    }
+    if (!(near <= far) || far <= 0) return null;
+    return near > 0 ? near : far;
+  };
+
 function levelScene(id: string) {
   const parsed = parseLevelJson(readFileSync(new URL(`../../levels/${id}.level.json`, import.meta.url), 'utf8'));
   if (!parsed.ok) throw new Error(`level ${id} does not parse`);
@@ -99,6 +120,7 @@ function levelScene(id: string) {
 
 const LEVELS: Record<RenderLab, { id: string; tolerance: Tolerance }> = {
   'ray-sphere': { id: '02-rays-from-the-camera', tolerance: RAY_SPHERE_TOLERANCE },
+  'ray-box': { id: '15-bounding-boxes', tolerance: RAY_BOX_TOLERANCE },
   phong: { id: '03-shading', tolerance: PHONG_TOLERANCE },
   shadow: { id: '04-shadows', tolerance: SHADOW_TOLERANCE },
   mirror: { id: '05-reflections', tolerance: MIRROR_TOLERANCE },
@@ -139,6 +161,7 @@ function differing(result: LabRenderResult, settings: Parameters<typeof toRgba8>
 
 const CORRECT: Record<RenderLab, (...args: never[]) => unknown> = {
   'ray-sphere': hitSphereWith(),
+  'ray-box': hitBoxWith(),
   phong: shadeWith(),
   shadow: inShadowWith(),
   mirror: reflectWith(),
@@ -147,6 +170,7 @@ const CORRECT: Record<RenderLab, (...args: never[]) => unknown> = {
 
 const WRONG: Record<RenderLab, (...args: never[]) => unknown> = {
   'ray-sphere': hitSphereWith(true),
+  'ray-box': hitBoxWith(true),
   phong: shadeWith(true),
   shadow: inShadowWith(true),
   mirror: reflectWith(1),

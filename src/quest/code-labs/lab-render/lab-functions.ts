@@ -2,16 +2,19 @@ import type { LabAnswer, Rgb, Vec3 } from '../code-lab-grading.ts';
 import type { CodeLab } from '../code-goal.ts';
 import { tracerReflect } from '../mirror-lab.ts';
 import { tracerPhong, type PhongLight, type PhongMaterial } from '../phong-lab.ts';
+import { tracerHitBox } from '../ray-box-lab.ts';
 import { tracerHitSphere } from '../ray-sphere-lab.ts';
 import { tracerRefract } from '../refraction-lab.ts';
 import type { Sphere } from '../shadow-lab.ts';
 
 /**
- * The five functions a lab render is made of, each with the contract of its lab: the sphere
- * test, the mirror direction, the refraction, the shade for one light, the shadow test.
+ * The six functions a lab render is made of, each with the contract of its lab: the sphere
+ * test, the box's slab test, the mirror direction, the refraction, the shade for one light,
+ * the shadow test.
  */
 export interface LabFunctions {
   hitSphere(origin: Vec3, direction: Vec3, center: Vec3, radius: number): number | null;
+  hitBox(origin: Vec3, direction: Vec3, boxMin: Vec3, boxMax: Vec3): number | null;
   reflect(d: Vec3, n: Vec3): Vec3;
   refract(d: Vec3, outward: Vec3, ior: number): Vec3 | null;
   shade(point: Vec3, normal: Vec3, toEye: Vec3, light: PhongLight, material: PhongMaterial): Rgb;
@@ -19,7 +22,7 @@ export interface LabFunctions {
 }
 
 /** The labs whose function a lab render can take in place of the tracer's. */
-export const RENDER_LABS = ['ray-sphere', 'mirror', 'refraction', 'phong', 'shadow'] as const satisfies readonly CodeLab[];
+export const RENDER_LABS = ['ray-sphere', 'ray-box', 'mirror', 'refraction', 'phong', 'shadow'] as const satisfies readonly CodeLab[];
 export type RenderLab = (typeof RENDER_LABS)[number];
 
 export const rendersWith = (lab: CodeLab): lab is RenderLab => (RENDER_LABS as readonly CodeLab[]).includes(lab);
@@ -27,6 +30,7 @@ export const rendersWith = (lab: CodeLab): lab is RenderLab => (RENDER_LABS as r
 /** Which of the five functions a lab's learner writes. */
 const SLOT: Record<RenderLab, keyof LabFunctions> = {
   'ray-sphere': 'hitSphere',
+  'ray-box': 'hitBox',
   mirror: 'reflect',
   refraction: 'refract',
   phong: 'shade',
@@ -43,6 +47,7 @@ const SLOT: Record<RenderLab, keyof LabFunctions> = {
 export function labFunctions(lab: RenderLab | null, answer: (args: unknown[]) => LabAnswer): LabFunctions {
   const functions: LabFunctions = {
     hitSphere: tracerHitSphere,
+    hitBox: tracerHitBox,
     reflect: tracerReflect,
     refract: tracerRefract,
     shade: tracerPhong,

@@ -8,7 +8,7 @@ import { dot, scaled, v } from '../lab-vectors.ts';
 import type { PhongMaterial } from '../phong-lab.ts';
 import type { Sphere } from '../shadow-lab.ts';
 import type { LabFunctions } from './lab-functions.ts';
-import type { LabRenderScene } from './lab-render-scene.ts';
+import type { LabBox, LabRenderScene } from './lab-render-scene.ts';
 
 /** The nearest hit of a ray: where, the outward unit normal there, and the material. */
 interface LabHit {
@@ -28,7 +28,8 @@ const fromVector = (vector: Vector3): Vec3 => v(vector.x, vector.y, vector.z);
  * (each light a point light, A = 1), the shadow lab's test per light, the mirror lab's
  * direction for every mirror hit and for glass's reflected ray, and the refraction lab's
  * direction (null: total internal reflection, all reflected) with Schlick's kr for glass.
- * Spheres are met by the ray–sphere lab's test; the other shapes by the tracer's own. One
+ * Spheres are met by the ray–sphere lab's test, boxes along the axes by the box lab's slab
+ * test (Kay & Kajiya 1986), the other shapes by the tracer's own. One
  * ray through each pixel's centre; each ray's colour clamped to 0..1, as the tracer does.
  * Returns linear RGB, row by row from the top, as the tracer's images.
  */
@@ -48,6 +49,26 @@ export async function renderLab(scene: LabRenderScene, functions: LabFunctions, 
     }
   }
   return image;
+}
+
+/**
+ * The outward normal of the box's face a point lies on: along the axis where the point is
+ * farthest out relative to the box's half-size (on a face that ratio is 1), toward its side.
+ */
+function faceNormal({ min, max }: LabBox, point: Vec3): Vec3 {
+  let axis: 'x' | 'y' | 'z' = 'x';
+  let outmost = -1;
+  let side = 1;
+  for (const a of ['x', 'y', 'z'] as const) {
+    const half = (max[a] - min[a]) / 2;
+    const offset = (point[a] - (min[a] + max[a]) / 2) / half;
+    if (Math.abs(offset) > outmost) {
+      outmost = Math.abs(offset);
+      axis = a;
+      side = Math.sign(offset) || 1;
+    }
+  }
+  return v(axis === 'x' ? side : 0, axis === 'y' ? side : 0, axis === 'z' ? side : 0);
 }
 
 /** Rows rendered before the page gets a turn: at 160 pixels a row, a band of a few milliseconds. */
@@ -80,7 +101,7 @@ class LabTracer {
     return { r: clamp(color.r), g: clamp(color.g), b: clamp(color.b) };
   }
 
-  /** The nearest hit: the tracer's shapes first, then each sphere by the sphere test (any t it gives nearer counts). */
+  /** The nearest hit: the tracer's shapes first, then each sphere by the sphere test and each box by the slab test (any t they give nearer counts). */
   private nearest(origin: Vec3, direction: Vec3): LabHit | null {
     const { ray, hit } = this;
     ray.set(this.vector.set(origin.x, origin.y, origin.z), new Vector3(direction.x, direction.y, direction.z));
@@ -94,6 +115,19 @@ class LabTracer {
         nearest = t;
         sphere = candidate;
       }
+    }
+    let box = null;
+    for (const candidate of this.scene.boxes) {
+      const t = this.functions.hitBox(origin, direction, candidate.min, candidate.max);
+      if (t !== null && t < nearest) {
+        nearest = t;
+        box = candidate;
+        sphere = null;
+      }
+    }
+    if (box) {
+      const point = along(origin, direction, nearest);
+      return { point, normal: faceNormal(box, point), material: box.material };
     }
     if (sphere) {
       const point = along(origin, direction, nearest);
@@ -136,7 +170,8 @@ class LabTracer {
   /**
    * Whether the light is hidden from a point: behind the surface (the shade is 0 there and no
    * shadow ray is cast, as in the tracer), or a shadow ray toward it is blocked by a sphere
-   * (the shadow test) or by one of the other shapes (the tracer's any-hit test).
+   * (the shadow test), by a box (the slab test, met at 0 < t < the distance, the shadow lab's
+   * rule) or by one of the other shapes (the tracer's any-hit test).
    */
   private lightBlocked(outside: Vec3, facing: Vec3, lightPosition: Vec3): boolean {
     const toLight = v(lightPosition.x - outside.x, lightPosition.y - outside.y, lightPosition.z - outside.z);
@@ -144,6 +179,7 @@ class LabTracer {
     if (distance === 0 || dot(toLight, facing) <= 0 || !this.scene.source.settings.shadows) return false;
     const unit = scaled(toLight, 1 / distance);
     if (this.functions.inShadow(outside, unit, distance, this.blockers)) return true;
+    if (this.scene.boxes.some(({ min, max }) => (this.functions.hitBox(outside, unit, min, max) ?? Infinity) < distance)) return true;
     const ray = this.ray.set(this.vector.set(outside.x, outside.y, outside.z), new Vector3(unit.x, unit.y, unit.z));
     ray.far = distance;
     return this.scene.others.occluders.some((occluders) => occluders.firstBlocker(ray, null, null) !== null);
