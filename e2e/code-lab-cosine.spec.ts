@@ -1,6 +1,7 @@
-import { expect, test, type Page } from '@playwright/test';
+import { expect, test } from '@playwright/test';
 import { readFileSync } from 'node:fs';
 import { expectAccessible } from './support/axe.ts';
+import { openCodeTask, shownCase, typeCode } from './support/code-lab-steps.ts';
 import { collectErrors, expectStatus, levelsFolder, progressFile } from './support/game-steps.ts';
 
 // The path chapter's code lab (level 23): a random function graded as a sample in the browser's
@@ -26,33 +27,9 @@ const WHOLE_SPHERE = `function cosineDirection(normal, random) {
   return vec(r * Math.cos(phi), r * Math.sin(phi), z);
 }`;
 
-type ShownCase = { points: { mark: string }[]; shapes: { kind: string }[] } | null;
-const shownCase = (page: Page) =>
-  page.locator('rt-scene-view').evaluate((element) => (element as unknown as { labView: { labCase: { shown: ShownCase } } }).labView.labCase.shown);
-
-async function typeCode(page: Page, code: string): Promise<void> {
-  await page.locator('rt-code-lab .cm-content').click();
-  await page.keyboard.press('ControlOrMeta+a');
-  await page.keyboard.insertText(code);
-}
-
 test('the cosine-bounce lab grades a sample of directions and draws a failing one', async ({ page }) => {
   const errors = collectErrors(page);
-  await page.addInitScript(
-    (saved) => {
-      if (window !== window.top || sessionStorage.getItem('seeded')) return;
-      sessionStorage.setItem('seeded', 'yes');
-      localStorage.setItem('rtq.progress', saved);
-    },
-    progressFile(order.slice(0, order.indexOf(LEVEL))),
-  );
-  await page.goto('/');
-  const welcome = page.getByRole('button', { name: 'Got it' });
-  if (await welcome.count()) await welcome.click();
-  await page.locator('[data-command="levels"]').click();
-  await page.locator(`rt-level-map [data-level="${LEVEL}"]`).click();
-  await page.locator('rt-task-card[data-task="code-cosine-bounce"] button.head').click();
-  const lab = page.locator('rt-code-lab');
+  const lab = await openCodeTask(page, progressFile(order.slice(0, order.indexOf(LEVEL))), LEVEL, 'code-cosine-bounce');
   const run = lab.getByRole('button', { name: 'Run tests' });
   const result = lab.getByRole('status');
 

@@ -1,5 +1,6 @@
-import { expect, test, type Locator, type Page } from '@playwright/test';
+import { expect, test, type Locator } from '@playwright/test';
 import { expectAccessible } from './support/axe.ts';
+import { openCodeTask, typeCode } from './support/code-lab-steps.ts';
 import { collectErrors, progressFile } from './support/game-steps.ts';
 
 // Render with my function (spec/code-labs.md §1): the ray–sphere lab's level rendered with a
@@ -24,12 +25,6 @@ const CORRECT = `function hitSphere(origin, direction, center, radius) {
 // The discriminant as 4ac − b²: a hit is taken for a miss and a miss for a hit.
 const SIGN_FLIPPED = CORRECT.replace('const d = b * b - 4 * a * c;', 'const d = 4 * a * c - b * b;');
 
-async function typeCode(page: Page, code: string): Promise<void> {
-  await page.locator('rt-code-lab .cm-content').click();
-  await page.keyboard.press('ControlOrMeta+a');
-  await page.keyboard.insertText(code);
-}
-
 /** A canvas's pixels as drawn: how many differ from black, and how many colours there are. */
 const drawn = (canvas: Locator) =>
   canvas.evaluate((element) => {
@@ -46,21 +41,7 @@ const drawn = (canvas: Locator) =>
 
 test('Render with my function draws the scene with the learner’s hitSphere beside the tracer’s, and the difference', async ({ page }) => {
   const errors = collectErrors(page);
-  await page.addInitScript(
-    (saved) => {
-      if (window !== window.top || sessionStorage.getItem('seeded')) return;
-      sessionStorage.setItem('seeded', 'yes');
-      localStorage.setItem('rtq.progress', saved);
-    },
-    progressFile(['01-introduction']),
-  );
-  await page.goto('/');
-  const welcome = page.getByRole('button', { name: 'Got it' });
-  if (await welcome.count()) await welcome.click();
-  await page.locator('[data-command="levels"]').click();
-  await page.locator(`rt-level-map [data-level="${LEVEL}"]`).click();
-  await page.locator('rt-task-card[data-task="code-hit-sphere"] button.head').click();
-  const lab = page.locator('rt-code-lab');
+  const lab = await openCodeTask(page, progressFile(['01-introduction']), LEVEL, 'code-hit-sphere');
   const renderButton = lab.getByRole('button', { name: 'Render with my function' });
   await expect(renderButton).toBeVisible();
   const mine = lab.getByRole('img', { name: 'The level’s scene rendered with your function.' });

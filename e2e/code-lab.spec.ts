@@ -1,6 +1,6 @@
-import { readdirSync } from 'node:fs';
 import { expect, test, type Page } from '@playwright/test';
-import { collectErrors, expectStatus, levelsFolder, progressFile } from './support/game-steps.ts';
+import { allPassedBut, openCodeTask, shownCase, typeCode } from './support/code-lab-steps.ts';
+import { collectErrors, expectStatus, progressFile } from './support/game-steps.ts';
 
 // The first code lab (issue 43): a correct hitSphere passes every case and completes the task;
 // the learner's code cannot reach the page, the stored progress or the network; an endless
@@ -43,10 +43,6 @@ const BEHIND = `function hitSphere(origin, direction, center, radius) {
   return d < 0 ? null : -b - Math.sqrt(d);
 }`;
 
-type ShownCase = { points: { mark: string }[]; shapes: unknown[] } | null;
-const shownCase = (page: Page) =>
-  page.locator('rt-scene-view').evaluate((element) => (element as unknown as { labView: { labCase: { shown: ShownCase } } }).labView.labCase.shown);
-
 const ENDLESS = `function hitSphere() {
   while (true) {}
 }`;
@@ -81,54 +77,9 @@ async function drawnCase(page: Page): Promise<{ shown: DrawnCase; covered: numbe
   });
 }
 
-/** Every level but `level` passed, so that it is open. */
-const allPassedBut = (level: string) =>
-  progressFile(
-    readdirSync(levelsFolder)
-      .filter((name) => name.endsWith('.level.json'))
-      .map((name) => name.replace('.level.json', ''))
-      .filter((id) => id !== level),
-  );
-
-async function openCodeTask(page: Page, progress: string, level: string, taskId: string): Promise<void> {
-  await page.addInitScript((saved) => {
-    if (window !== window.top || sessionStorage.getItem('seeded')) return;
-    sessionStorage.setItem('seeded', 'yes');
-    localStorage.setItem('rtq.progress', saved);
-  }, progress);
-  await page.goto('/');
-  const welcome = page.getByRole('button', { name: 'Got it' });
-  if (await welcome.count()) await welcome.click();
-  await page.locator('[data-command="levels"]').click();
-  await page.locator(`rt-level-map [data-level="${level}"]`).click();
-  await page.locator(`rt-task-card[data-task="${taskId}"] button.head`).click();
-}
-
-async function typeCode(page: Page, code: string): Promise<void> {
-  const editor = page.locator('rt-code-lab .cm-content');
-  await editor.click();
-  await page.keyboard.press('ControlOrMeta+a');
-  await page.keyboard.insertText(code);
-}
-
 test('a code lab grades a correct function, and hostile code reaches nothing and is stopped', async ({ page }) => {
   const errors = collectErrors(page);
-  await page.addInitScript(
-    (saved) => {
-      // Init scripts run in every frame: the sandbox's has no storage at all.
-      if (window !== window.top || sessionStorage.getItem('seeded')) return;
-      sessionStorage.setItem('seeded', 'yes');
-      localStorage.setItem('rtq.progress', saved);
-    },
-    progressFile(['01-introduction']),
-  );
-  await page.goto('/');
-  const welcome = page.getByRole('button', { name: 'Got it' });
-  if (await welcome.count()) await welcome.click();
-  await page.locator('[data-command="levels"]').click();
-  await page.locator(`rt-level-map [data-level="${LEVEL}"]`).click();
-  await page.locator('rt-task-card[data-task="code-hit-sphere"] button.head').click();
-  const lab = page.locator('rt-code-lab');
+  const lab = await openCodeTask(page, progressFile(['01-introduction']), LEVEL, 'code-hit-sphere');
   const run = lab.getByRole('button', { name: 'Run tests' });
   const result = lab.getByRole('status');
   await expect(lab.getByRole('textbox', { name: 'Your function: code editor' })).toBeVisible();

@@ -3,6 +3,7 @@ import { copyFileSync, existsSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { PNG } from 'pngjs';
+import { openCodeTask } from './support/code-lab-steps.ts';
 import { progressFile } from './support/game-steps.ts';
 
 // The app without a network: after one visit the service worker has every file, so a
@@ -114,21 +115,7 @@ test('the USB-stick build runs a code lab from its one file, sandboxed', async (
   copyFileSync(built, file);
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
-  await page.addInitScript(
-    (saved) => {
-      if (window !== window.top || sessionStorage.getItem('seeded')) return;
-      sessionStorage.setItem('seeded', 'yes');
-      localStorage.setItem('rtq.progress', saved);
-    },
-    progressFile(['01-introduction']),
-  );
-  await page.goto(`file://${file}`);
-  const welcome = page.getByRole('button', { name: 'Got it' });
-  if (await welcome.count()) await welcome.click();
-  await page.locator('[data-command="levels"]').click();
-  await page.locator('rt-level-map [data-level="02-rays-from-the-camera"]').click();
-  await page.locator('rt-task-card[data-task="code-hit-sphere"] button.head').click();
-  const lab = page.locator('rt-code-lab');
+  const lab = await openCodeTask(page, progressFile(['01-introduction']), '02-rays-from-the-camera', 'code-hit-sphere', `file://${file}`);
   const editor = lab.locator('.cm-content');
   const result = lab.getByRole('status');
   for (const [code, said] of [
