@@ -1,6 +1,6 @@
 import { expect, test, type Locator } from '@playwright/test';
 import { expectAccessible } from './support/axe.ts';
-import { openCodeTask, typeCode } from './support/code-lab-steps.ts';
+import { CORRECT_HIT_SPHERE as CORRECT, openCodeTask, typeCode } from './support/code-lab-steps.ts';
 import { collectErrors, progressFile } from './support/game-steps.ts';
 
 // Render with my function (spec/code-labs.md §1): the ray–sphere lab's level rendered with a
@@ -8,19 +8,6 @@ import { collectErrors, progressFile } from './support/game-steps.ts';
 // discriminant's sign the wrong way round draws a different picture, and the difference shows.
 
 const LEVEL = '02-rays-from-the-camera';
-
-const CORRECT = `function hitSphere(origin, direction, center, radius) {
-  const oc = sub(origin, center);
-  const a = dot(direction, direction);
-  const b = 2 * dot(oc, direction);
-  const c = dot(oc, oc) - radius * radius;
-  const d = b * b - 4 * a * c;
-  if (d < 0) return null;
-  const near = (-b - Math.sqrt(d)) / (2 * a);
-  if (near > 0) return near;
-  const far = (-b + Math.sqrt(d)) / (2 * a);
-  return far > 0 ? far : null;
-}`;
 
 // The discriminant as 4ac − b²: a hit is taken for a miss and a miss for a hit.
 const SIGN_FLIPPED = CORRECT.replace('const d = b * b - 4 * a * c;', 'const d = 4 * a * c - b * b;');

@@ -1,5 +1,5 @@
 import { expect, test, type Page } from '@playwright/test';
-import { allPassedBut, openCodeTask, shownCase, typeCode } from './support/code-lab-steps.ts';
+import { allPassedBut, CORRECT_HIT_SPHERE as CORRECT, openCodeTask, shownCase, typeCode } from './support/code-lab-steps.ts';
 import { collectErrors, expectStatus, progressFile } from './support/game-steps.ts';
 
 // The first code lab (issue 43): a correct hitSphere passes every case and completes the task;
@@ -8,19 +8,6 @@ import { collectErrors, expectStatus, progressFile } from './support/game-steps.
 
 const LEVEL = '02-rays-from-the-camera';
 const TITLE = 'Code lab: where does a ray hit the ball?';
-
-const CORRECT = `function hitSphere(origin, direction, center, radius) {
-  const oc = sub(origin, center);
-  const a = dot(direction, direction);
-  const b = 2 * dot(oc, direction);
-  const c = dot(oc, oc) - radius * radius;
-  const d = b * b - 4 * a * c;
-  if (d < 0) return null;
-  const near = (-b - Math.sqrt(d)) / (2 * a);
-  if (near > 0) return near;
-  const far = (-b + Math.sqrt(d)) / (2 * a);
-  return far > 0 ? far : null;
-}`;
 
 // Every door it tries must be shut; the exception (line 10) lists any that opened.
 const PROBE = `function hitSphere() {

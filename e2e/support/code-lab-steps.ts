@@ -6,6 +6,20 @@ import { levelsFolder, progressFile } from './game-steps.ts';
 // level opened from the map, its code task opened, code typed into the editor, and what the 3D
 // view draws of the failing case.
 
+/** A correct ray–sphere test (Shirley & Marschner §4.4.1) as a learner writes it: the nearest t > 0, or null. */
+export const CORRECT_HIT_SPHERE = `function hitSphere(origin, direction, center, radius) {
+  const oc = sub(origin, center);
+  const a = dot(direction, direction);
+  const b = 2 * dot(oc, direction);
+  const c = dot(oc, oc) - radius * radius;
+  const d = b * b - 4 * a * c;
+  if (d < 0) return null;
+  const near = (-b - Math.sqrt(d)) / (2 * a);
+  if (near > 0) return near;
+  const far = (-b + Math.sqrt(d)) / (2 * a);
+  return far > 0 ? far : null;
+}`;
+
 /** Every level but `level` passed, so that it is open. */
 export const allPassedBut = (level: string) =>
   progressFile(
