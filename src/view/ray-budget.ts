@@ -26,11 +26,10 @@ export const EDIT_RAY_BUDGET = 1200;
 /**
  * The rays (and cones) drawn per frame while the learner edits a screen that has more than
  * EDIT_RAY_BUDGET: one that must be thinned anyway is thinned to this. A dragged slider asks
- * for a frame every frame, and on SwiftShader the 1,200 rays were about half of the GPU
- * process's work per frame of such a drag (hiding the rays halved it): the frames fell
- * behind the steps, and a drag's step waited 159 ms for its frame at the 95th percentile
- * (docs/benchmark-log.md). A third as many rays still show every kind and spread over the
- * screen (tracer/tree-budget.ts).
+ * for a frame every frame, and on SwiftShader the rays were about half of the GPU process's
+ * work per frame of such a drag, so the frames fell behind the steps (figures:
+ * docs/benchmark-log.md, issue 38). A third as many rays still show every kind and spread
+ * over the screen (tracer/tree-budget.ts).
  */
 export const HEAVY_EDIT_RAYS = 400;
 
