@@ -56,6 +56,8 @@ async function openBoxLab(page: Page) {
 }
 
 test('a correct hitBox renders level 15 as the tracer does, from the level’s camera and from above', async ({ page }) => {
+  // Two views of 19 200 rays, each asked of the sandbox, then axe in two themes: about a minute on a busy 2-core machine.
+  test.slow();
   const errors = collectErrors(page);
   const { lab, renderButton, fromAbove, aboveMine, aboveDifference } = await openBoxLab(page);
 
