@@ -2,8 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { gradeLab, type LabCase, type LabOutcome, type Vec3 } from '../../src/quest/code-labs/code-lab-grading.ts';
 import { RAY_BOX_EDGES } from '../../src/quest/code-labs/ray-box-edges.ts';
 import { RAY_BOX_TOLERANCE, rayBoxCases, tracerHitBox } from '../../src/quest/code-labs/ray-box-lab.ts';
-
-type HitBox = (origin: Vec3, direction: Vec3, boxMin: Vec3, boxMax: Vec3) => unknown;
+import { slabTest, type HitBox } from '../support/slab-tests.ts';
 
 const AXES = ['x', 'y', 'z'] as const;
 
@@ -21,37 +20,6 @@ function outcomes(cases: LabCase[], hitBox: HitBox): LabOutcome[] {
 function grade(hitBox: HitBox, seed = 15) {
   const cases = rayBoxCases(RAY_BOX_EDGES, 300, seed);
   return gradeLab(cases, outcomes(cases, hitBox), RAY_BOX_TOLERANCE);
-}
-
-/** The textbook slab test (Shirley & Marschner §12.3.1) with Math.min/max, and the ways learners get it wrong. */
-function slabTest(
-  wrong: {
-    parallelMisses?: boolean;
-    parallelIgnored?: boolean;
-    nanThrough?: boolean;
-    acceptNegative?: boolean;
-    noInside?: boolean;
-    noSwap?: boolean;
-    touchMisses?: boolean;
-  } = {},
-): HitBox {
-  return (origin, direction, boxMin, boxMax) => {
-    let near = -Infinity;
-    let far = Infinity;
-    for (const axis of AXES) {
-      if (direction[axis] === 0 && wrong.parallelMisses) return null;
-      if (direction[axis] === 0 && wrong.parallelIgnored) continue;
-      const t0 = (boxMin[axis] - origin[axis]) / direction[axis];
-      const t1 = (boxMax[axis] - origin[axis]) / direction[axis];
-      near = Math.max(near, wrong.noSwap ? t0 : Math.min(t0, t1));
-      far = Math.min(far, wrong.noSwap ? t1 : Math.max(t0, t1));
-    }
-    // The NaN-blind version: NaN > x and NaN < 0 are both false, so NaN slips through to the answer.
-    if (wrong.acceptNegative) return near <= far ? near : null;
-    if (wrong.nanThrough ? near > far || far < 0 : wrong.touchMisses ? !(near < far) || far <= 0 : !(near <= far) || far <= 0) return null;
-    if (wrong.noInside) return near > 0 ? near : null;
-    return near > 0 ? near : far;
-  };
 }
 
 describe('the AABB slab test lab', () => {

@@ -7,6 +7,7 @@ import type { Rgb, Vec3 } from '../code-lab-grading.ts';
 import { dot, scaled, v } from '../lab-vectors.ts';
 import type { PhongMaterial } from '../phong-lab.ts';
 import type { Sphere } from '../shadow-lab.ts';
+import { levelCamera, type LabCamera } from './lab-camera.ts';
 import type { LabFunctions } from './lab-functions.ts';
 import type { LabBox, LabRenderScene } from './lab-render-scene.ts';
 
@@ -30,21 +31,26 @@ const fromVector = (vector: Vector3): Vec3 => v(vector.x, vector.y, vector.z);
  * direction (null: total internal reflection, all reflected) with Schlick's kr for glass.
  * Spheres are met by the ray–sphere lab's test, boxes along the axes by the box lab's slab
  * test (Kay & Kajiya 1986), the other shapes by the tracer's own. One
- * ray through each pixel's centre; each ray's colour clamped to 0..1, as the tracer does.
+ * ray through each pixel's centre, from the level's camera unless another is given; each
+ * ray's colour clamped to 0..1, as the tracer does.
  * Returns linear RGB, row by row from the top, as the tracer's images.
  */
-export async function renderLab(scene: LabRenderScene, functions: LabFunctions, width: number, height: number): Promise<Float32Array> {
+export async function renderLab(
+  scene: LabRenderScene,
+  functions: LabFunctions,
+  width: number,
+  height: number,
+  camera: LabCamera = levelCamera(scene),
+): Promise<Float32Array> {
   const tracer = new LabTracer(scene, functions);
   const image = new Float32Array(width * height * 3);
-  const direction = new Vector3();
-  const eye = fromVector(scene.others.camera.eye);
   for (let y = 0; y < height; y++) {
     // A render runs on the page's thread (the learner's answers are already in a table), a
     // pass up to a second on a slow laptop: between bands of rows the page handles its input.
     if (y > 0 && y % ROWS_PER_TURN === 0) await nextTurn();
     for (let x = 0; x < width; x++) {
-      scene.others.camera.direction(x + 0.5, y + 0.5, width, height, direction);
-      const color = tracer.trace(eye, fromVector(direction), 0);
+      const { origin, direction } = camera(x + 0.5, y + 0.5, width, height);
+      const color = tracer.trace(origin, direction, 0);
       image.set([color.r, color.g, color.b], (y * width + x) * 3);
     }
   }

@@ -1,5 +1,6 @@
 import { judge, type CaseFailure, type LabAnswer, type LabOutcome, type Tolerance } from '../code-lab-grading.ts';
 import { labFunctions, referenceAnswer, type RenderLab } from './lab-functions.ts';
+import type { LabCamera } from './lab-camera.ts';
 import { renderLab } from './lab-renderer.ts';
 import type { LabRenderScene } from './lab-render-scene.ts';
 
@@ -29,7 +30,8 @@ export const maxPasses = (maxDepth: number): number => maxDepth + 3;
  * function from a table of the learner's answers keyed by the call's arguments; a call not in
  * the table is noted and answered by the tracer's own function for now. The noted calls go
  * to the learner's function in one batch, their answers fill the table, and the next pass
- * renders again, until a pass meets no new call: that pass's image is the learner's.
+ * renders again, until a pass meets no new call: that pass's image is the learner's. The
+ * camera is the level's unless another is given (the box lab's view along an axis, axis-view.ts).
  *
  * Each answer is judged as Run tests judges it (code-lab-grading.ts `judge`, the lab's
  * tolerance): one the grader accepts goes into the table as the tracer's own answer, so a
@@ -44,12 +46,14 @@ export async function renderWithLearner(
   ask: AskLearner,
   width: number,
   height: number,
+  camera?: LabCamera,
 ): Promise<LabRenderResult> {
   const reference = await renderLab(
     scene,
     labFunctions(null, () => null),
     width,
     height,
+    camera,
   );
   const answers = new Map<string, LabAnswer>();
   const limit = maxPasses(scene.source.settings.maxDepth);
@@ -62,7 +66,7 @@ export async function renderWithLearner(
       missed.set(key, args);
       return referenceAnswer(lab, args);
     };
-    const mine = await renderLab(scene, labFunctions(lab, lookUp), width, height);
+    const mine = await renderLab(scene, labFunctions(lab, lookUp), width, height, camera);
     if (missed.size === 0) return { kind: 'rendered', mine, reference, passes: pass, calls: answers.size };
     const calls = [...missed.values()];
     const reply = await ask(calls);

@@ -1,14 +1,17 @@
 import { msg, str } from '@lit/localize';
-import { html, nothing } from 'lit';
+import { html, nothing, type TemplateResult } from 'lit';
 import { ref } from 'lit/directives/ref.js';
 import type { CodeGoal } from '../../../quest/code-labs/code-goal.ts';
 import type { Tolerance } from '../../../quest/code-labs/code-lab-grading.ts';
+import { topDownCamera } from '../../../quest/code-labs/lab-render/axis-view.ts';
+import type { LabCamera } from '../../../quest/code-labs/lab-render/lab-camera.ts';
 import type { RenderLab } from '../../../quest/code-labs/lab-render/lab-functions.ts';
 import { labRenderScene } from '../../../quest/code-labs/lab-render/lab-render-scene.ts';
 import { DIFFERENCE_GAIN, pictureDifference } from '../../../quest/code-labs/lab-render/picture-difference.ts';
 import { renderWithLearner, type LabRenderResult } from '../../../quest/code-labs/lab-render/render-passes.ts';
 import type { Scene } from '../../../scene/scene.ts';
 import { toRgba8 } from '../../../tracer/quantize.ts';
+import { axisViewLabels, axisViewTitle, axisViewWhy, levelViewLabels, viewsAlongAxis, type ViewLabels } from './axis-view-texts.ts';
 import { caseInput, failureText, sandboxUnavailableText } from './code-lab-texts.ts';
 import { failedRun, type LabSandbox, type SandboxResult } from './lab-sandbox.ts';
 
@@ -28,12 +31,15 @@ export const LAB_RENDER_HEIGHT = 120;
 export type LabRenderState =
   | { kind: 'idle' }
   | { kind: 'rendering' }
-  | { kind: 'rendered'; mine: ImageData; reference: ImageData; difference: ImageData; differing: number }
+  /** `alongAxis`: the box lab's second view, from straight above (axis-view.ts). */
+  | { kind: 'rendered'; mine: ImageData; reference: ImageData; difference: ImageData; differing: number; alongAxis?: LabRenderState }
   | { kind: 'stopped'; message: string };
 
 /**
  * Renders the level's scene with the learner's function (render-passes.ts): each batch of
- * calls runs in the sandbox, like Run tests, with the same time limit.
+ * calls runs in the sandbox, like Run tests, with the same time limit. The box lab renders it
+ * a second time from straight above (axis-view.ts), where every ray is parallel to two of a
+ * box's three slabs.
  */
 export async function renderLabPictures(
   goal: CodeGoal,
@@ -43,21 +49,28 @@ export async function renderLabPictures(
   code: string,
   sandbox: LabSandbox,
 ): Promise<LabRenderState> {
-  const result = await renderWithLearner(
-    labRenderScene(scene),
-    lab,
-    tolerance,
-    async (calls) => {
-      const ran = await sandbox.run(code, goal.code.function, calls, { eachCase: false, limitMs: RENDER_LIMIT_MS }).catch((error: unknown) => {
-        sandbox.close();
-        return failedRun(error);
-      });
-      return ran.kind === 'ran' ? { outcomes: ran.outcomes } : { reason: ran };
-    },
-    LAB_RENDER_WIDTH,
-    LAB_RENDER_HEIGHT,
-  );
-  return pictures(result, goal, tolerance, scene);
+  const labScene = labRenderScene(scene);
+  const render = async (camera?: LabCamera) => {
+    const result = await renderWithLearner(
+      labScene,
+      lab,
+      tolerance,
+      async (calls) => {
+        const ran = await sandbox.run(code, goal.code.function, calls, { eachCase: false, limitMs: RENDER_LIMIT_MS }).catch((error: unknown) => {
+          sandbox.close();
+          return failedRun(error);
+        });
+        return ran.kind === 'ran' ? { outcomes: ran.outcomes } : { reason: ran };
+      },
+      LAB_RENDER_WIDTH,
+      LAB_RENDER_HEIGHT,
+      camera,
+    );
+    return pictures(result, goal, tolerance, scene);
+  };
+  const level = await render();
+  if (level.kind !== 'rendered' || !viewsAlongAxis(lab)) return level;
+  return { ...level, alongAxis: await render(topDownCamera(labScene)) };
 }
 
 function pictures(result: LabRenderResult, goal: CodeGoal, tolerance: Tolerance, scene: Scene): LabRenderState {
@@ -105,8 +118,11 @@ const paint = (image: ImageData) =>
     if (canvas instanceof HTMLCanvasElement) canvas.getContext('2d')?.putImageData(image, 0, 0);
   });
 
-/** The three pictures side by side, each with a caption and a text alternative, and the one-line count of differing pixels. */
-export function labRenderPictures(state: LabRenderState) {
+/**
+ * The three pictures side by side, each with a caption and a text alternative, and the
+ * one-line count of differing pixels; then, in the box lab, the same for the view from above.
+ */
+export function labRenderPictures(state: LabRenderState, labels: ViewLabels = levelViewLabels()): TemplateResult | typeof nothing {
   switch (state.kind) {
     case 'idle':
       return nothing;
@@ -128,11 +144,20 @@ export function labRenderPictures(state: LabRenderState) {
       `;
       return html`
         <div class="pictures">
-          ${figure(state.mine, msg('Your function'), msg('The level’s scene rendered with your function.'))}
-          ${figure(state.reference, msg('The tracer’s function'), msg('The level’s scene rendered with the tracer’s own function, the reference.'))}
-          ${figure(state.difference, msg(str`Difference ×${DIFFERENCE_GAIN}`), msg(str`The difference between the two pictures, ${DIFFERENCE_GAIN} times brighter: ${caption}`))}
+          ${figure(state.mine, msg('Your function'), labels.mine)}
+          ${figure(state.reference, msg('The tracer’s function'), labels.reference)}
+          ${figure(state.difference, msg(str`Difference ×${DIFFERENCE_GAIN}`), msg(str`${labels.difference}, ${DIFFERENCE_GAIN} times brighter: ${caption}`))}
         </div>
         <p class=${state.differing === 0 ? '' : 'fail'}>${caption}</p>
+        ${
+          state.alongAxis
+            ? html`<section class="along-axis" aria-label=${axisViewTitle()}>
+              <h4>${axisViewTitle()}</h4>
+              <p>${axisViewWhy()}</p>
+              ${labRenderPictures(state.alongAxis, axisViewLabels())}
+            </section>`
+            : nothing
+        }
       `;
     }
   }
