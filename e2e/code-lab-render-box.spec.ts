@@ -28,7 +28,7 @@ test('Render with my function draws level 15’s boxes with the learner’s hitB
 
   await typeCode(page, CORRECT);
   await renderButton.click();
-  await expect(lab.getByText("No pixel differs: your function renders the scene as the tracer's does.")).toBeVisible();
+  await expect(lab.getByText('No pixel differs: your function renders the scene as the tracer’s does.')).toBeVisible();
 
   await typeCode(page, NO_SWAP);
   await renderButton.click();
