@@ -98,7 +98,11 @@ export class LabView {
   private readonly cameraScreen: CameraScreen;
   private readonly distribution: DistributionGizmos;
   /** A code lab's failing case, drawn and framed (case-overlay.ts); browser tests read `labCase.shown`. */
-  readonly labCase = new CaseOverlay({ frame: (...framing) => this.navigation.showPoints(...framing), drawn: () => this.requestRender(), store: this.store });
+  readonly labCase = new CaseOverlay({
+    frame: (...framing) => this.navigation.showPoints(...framing),
+    drawn: (shown) => this.drawing.setRaysAside(shown),
+    store: this.store,
+  });
   private readonly grid: GridHelper;
   private readonly listeners: { [K in keyof LabViewEvents]: Set<Listener<LabViewEvents[K]>> } = {
     rayHover: new Set(),
