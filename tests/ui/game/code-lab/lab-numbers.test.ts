@@ -81,6 +81,12 @@ describe('the code labs’ numbers', () => {
     expect(numbers.labValue(12345.678)).toBe('12345,7');
     expect(numbers.labValue({ x: 1, y: 2, z: Infinity })).toBe('(1; 2; Infinity)');
 
+    // The kinds of case that name a vector write it as the values beside them are written.
+    expect([texts.caseKindName('normal-plus-z'), texts.caseKindName('off-centre')]).toEqual([
+      'de normaal (0; 0; 1)',
+      'een bol met zijn middelpunt niet in (0; 0; 0)',
+    ]);
+
     const cosine = oneLine(words(direction.directionReport(unevenReport, runs)));
     expect(cosine).toContain('= 41,3 met 9 vrijheidsgraden, p = 0,000013 (onder 0,0013 ');
     const length = oneLine(words(direction.directionReport(tooLong, runs)));
