@@ -27,7 +27,7 @@ const NO_SWAP = CORRECT.replace('Math.min(t0, t1)', 't0').replace('Math.max(t0, 
 
 const PARALLEL_MISSES = CORRECT.replace("for (const a of ['x', 'y', 'z']) {", "for (const a of ['x', 'y', 'z']) {\n    if (direction[a] === 0) return null;");
 
-const SAME = "No pixel differs: your function renders the scene as the tracer's does.";
+const SAME = 'No pixel differs: your function renders the scene as the tracer’s does.';
 const DIFFER = /^\d+ of 19200 pixels differ\.$/;
 
 /** How many of a canvas's pixels are not black. */

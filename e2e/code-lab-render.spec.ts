@@ -39,7 +39,7 @@ test('Render with my function draws the scene with the learner’s hitSphere bes
   // Reached by keyboard: focus the button and press Enter.
   await renderButton.focus();
   await page.keyboard.press('Enter');
-  await expect(lab.getByText("No pixel differs: your function renders the scene as the tracer's does.")).toBeVisible();
+  await expect(lab.getByText('No pixel differs: your function renders the scene as the tracer’s does.')).toBeVisible();
   const right = await drawn(mine);
   // The scene is there: most pixels lit, in many colours (floor, ball, shading), and the same as the reference's.
   expect(right.lit).toBeGreaterThan(right.pixels / 2);

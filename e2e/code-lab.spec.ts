@@ -64,6 +64,14 @@ async function drawnCase(page: Page): Promise<{ shown: DrawnCase; covered: numbe
   });
 }
 
+/** How many CSS pixels of the canvas the scene's own rays cover, once the view has drawn its last frame. */
+async function raysCovered(page: Page): Promise<number> {
+  type Probed = { labView: { probes: { idle: boolean; rayCoverage(): { mask: Uint8Array } } } };
+  const view = page.locator('rt-scene-view');
+  await expect.poll(() => view.evaluate((element) => (element as unknown as Probed).labView.probes.idle), { timeout: 30_000 }).toBe(true);
+  return view.evaluate((element) => (element as unknown as Probed).labView.probes.rayCoverage().mask.reduce((sum, covered) => sum + covered, 0));
+}
+
 test('a code lab grades a correct function, and hostile code reaches nothing and is stopped', async ({ page }) => {
   const errors = collectErrors(page);
   const lab = await openCodeTask(page, progressFile(['01-introduction']), LEVEL, 'code-hit-sphere');
@@ -89,11 +97,15 @@ test('a code lab grades a correct function, and hostile code reaches nothing and
   await run.click();
   await expect(result).toContainText('First failing case: case 3, a sphere behind the ray’s origin.');
   expect(await shownCase(page)).toMatchObject({ points: [{ mark: 'got' }], shapes: [{ kind: 'sphere' }] });
+  // The scene's own rays stand aside while the case is drawn, so that its few rays read on their own.
+  expect(await raysCovered(page), 'CSS pixels the scene’s rays cover beside the case').toBe(0);
+  await page.screenshot({ path: 'test-results/screens/code-lab-case-without-rays.png' });
 
   await typeCode(page, CORRECT);
   await run.click();
   await expect(result).toContainText('306 of 306 cases pass.');
   expect(await shownCase(page)).toBeNull();
+  expect(await raysCovered(page), 'CSS pixels the scene’s rays cover once the case is gone').toBeGreaterThan(500);
   await expectStatus(page, TITLE, 'done');
   // The code is kept for the next visit.
   expect(await page.evaluate(() => localStorage.getItem('rtq.code-lab.ray-sphere'))).toContain('const oc = sub(origin, center);');

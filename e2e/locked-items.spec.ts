@@ -36,6 +36,13 @@ for (const [locale, reason] of [
     await expect.poll(async () => (await appState(page)).selection).toEqual({ kind: 'object', id: 'box' });
     await expect(page.locator('rt-scene-view').getByRole('status').filter({ hasText: reason })).toBeVisible();
     await expect(page.locator('rt-scene-list').getByText(reason)).toBeVisible();
+    // The note covers none of the view's pads and their captions.
+    const note = (await page.locator('rt-scene-view p.note[role="status"]').boundingBox())!;
+    const pads = await page
+      .locator('rt-view-toolbar .group.pad')
+      .evaluateAll((groups) => groups.map((group) => group.getBoundingClientRect().toJSON() as DOMRect));
+    expect(pads.length).toBe(3);
+    for (const pad of pads) expect(note.y + note.height <= pad.y || note.x + note.width <= pad.x || note.x >= pad.x + pad.width).toBe(true);
     await page.screenshot({ path: `test-results/screens/locked-box-${locale}.png` });
 
     const before = (await appState(page)).scene;

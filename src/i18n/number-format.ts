@@ -35,3 +35,11 @@ export function fieldNumber(value: number, decimals: number): string {
   }
   return format.format(value);
 }
+
+/**
+ * Numbers written one after another, as in a vector "(0.5, 1, 2)": joined by ", " in English
+ * and by "; " in Dutch, where the comma is the decimal sign ("(0,5; 1; 2)").
+ */
+export function numberList(texts: readonly string[]): string {
+  return texts.join(currentLocale() === 'nl' ? '; ' : ', ');
+}

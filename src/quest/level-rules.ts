@@ -9,7 +9,7 @@ import { goalParts, kindOfGoal, type Goal } from './goal.ts';
 import { APP_ONLY_ACTION } from './lab-action-schema.ts';
 import { ALWAYS_SHOWN, partsOfTarget, type GuideTarget } from './lab-controls.ts';
 import type { Level } from './level-schema.ts';
-import { MOVABLE_CAMERA } from './movable-items.ts';
+import { lockedItemMoved, MOVABLE_CAMERA } from './movable-items.ts';
 import { problemWithPath } from './state-path.ts';
 import type { TaskEvidence } from './task-evidence-schema.ts';
 
@@ -45,6 +45,7 @@ export function levelRules(level: Level): Issue[] {
     ...listedOnce(level.ui.panels, ['ui', 'panels']),
     ...listedOnce(level.ui.movable ?? [], ['ui', 'movable']),
     ...movableProblems(level),
+    ...lockedBySolutionProblems(level),
     ...mandatoryCount(level),
     ...level.tasks.flatMap((_, index) => taskProblems(level, index, sample)),
     ...pixelPickingProblems(level),
@@ -213,6 +214,17 @@ function movableProblems(level: Level): Problem[] {
   const names = [...level.scene.objects.map((thing) => thing.id), ...level.scene.lights.map((thing) => thing.id), MOVABLE_CAMERA];
   return (level.ui.movable ?? []).flatMap((name, index) =>
     names.includes(name) ? [] : [{ path: ['ui', 'movable', index], reason: { code: 'notAllowed', allowed: names, got: gotOf(name) } }],
+  );
+}
+
+/** "Show me" does what the learner could: a solution moves, turns, scales or deletes no item `ui.movable` locks. */
+function lockedBySolutionProblems(level: Level): Problem[] {
+  return level.tasks.flatMap((task, taskIndex) =>
+    (task.solution ?? []).flatMap((action, index) => {
+      const locked = lockedItemMoved(action, level.ui.movable);
+      const reason = `changes where "${locked}" is, which ui.movable locks: "show me" may only do what the learner can`;
+      return locked === null ? [] : [{ path: ['tasks', taskIndex, 'solution', index], reason }];
+    }),
   );
 }
 

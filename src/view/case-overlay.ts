@@ -70,8 +70,8 @@ export class CaseOverlay {
     private readonly view: {
       /** Glides the view to where these points fit, looking from `direction` (from the points toward the eye) when given. */
       frame(points: readonly Vec3[], direction?: Vec3): void;
-      /** Something drawn changed: a frame is due. */
-      drawn(): void;
+      /** A case was drawn (`shown`) or cleared: a frame is due, and the scene's own rays stand aside while a case is shown. */
+      drawn(shown: boolean): void;
       /** The ray options' palette is read when a case is drawn. */
       store: Pick<Store, 'state'>;
     },
@@ -95,7 +95,7 @@ export class CaseOverlay {
     this.draw(drawing);
     const from = drawing?.lookFrom;
     if (drawing) this.view.frame(this.extent, from && [from.x, from.y, from.z]);
-    this.view.drawn();
+    this.view.drawn(drawing !== null);
   }
 
   dispose(): void {

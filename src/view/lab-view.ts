@@ -33,7 +33,7 @@ import { SelectionGizmo } from './selection-gizmo.ts';
 import type { MovableItems } from '../quest/movable-items.ts';
 import type { ViewCommand } from './view-commands.ts';
 import { type RayHoverDetail, ViewInput } from './view-input.ts';
-import { rayPathPoints, rayPathPointsFromHit, raySegments } from './ray-path-points.ts';
+import { rayPathPoints, rayPathPointsFromHit, raySegmentsOnCanvas, type CanvasPoint } from './ray-path-points.ts';
 import { framedRaysPixel } from '../lab-state/framed-rays.ts';
 import { ViewProbes } from './view-probes.ts';
 import { ViewDrawing } from './view-drawing.ts';
@@ -98,7 +98,11 @@ export class LabView {
   private readonly cameraScreen: CameraScreen;
   private readonly distribution: DistributionGizmos;
   /** A code lab's failing case, drawn and framed (case-overlay.ts); browser tests read `labCase.shown`. */
-  readonly labCase = new CaseOverlay({ frame: (...framing) => this.navigation.showPoints(...framing), drawn: () => this.requestRender(), store: this.store });
+  readonly labCase = new CaseOverlay({
+    frame: (...framing) => this.navigation.showPoints(...framing),
+    drawn: (shown) => this.drawing.setRaysAside(shown),
+    store: this.store,
+  });
   private readonly grid: GridHelper;
   private readonly listeners: { [K in keyof LabViewEvents]: Set<Listener<LabViewEvents[K]>> } = {
     rayHover: new Set(),
@@ -372,14 +376,8 @@ export class LabView {
   }
 
   /** The chosen pixel's rays as segments on the canvas (CSS px), none without a pixel or its trace: where the pixel preview must not cover them (preview-place.ts). */
-  pixelRaySegments(): { from: { x: number; y: number }; to: { x: number; y: number } }[] {
-    const trace = this.selectedTrace();
-    if (!trace) return [];
-    return raySegments(trace).flatMap(([start, end]) => {
-      const from = this.projectToView(start);
-      const to = this.projectToView(end);
-      return from && to ? [{ from, to }] : [];
-    });
+  pixelRaySegments(): { from: CanvasPoint; to: CanvasPoint }[] {
+    return raySegmentsOnCanvas(this.selectedTrace(), (point) => this.projectToView(point));
   }
 
   /** Where a world point appears on the canvas (CSS px from its top-left), or null behind the eye. */

@@ -48,3 +48,19 @@ export function rayPathPointsFromHit(trace: PixelTrace): Vec3[] {
   trace.rays.forEach((root) => visit(root, true));
   return points;
 }
+
+/** A point on the canvas, in CSS px from its top-left. */
+export interface CanvasPoint {
+  x: number;
+  y: number;
+}
+
+/** The trace's rays as segments on the canvas (`project` gives a world point's place, null behind the eye); none without a trace. */
+export function raySegmentsOnCanvas(trace: PixelTrace | null, project: (point: Vec3) => CanvasPoint | null): { from: CanvasPoint; to: CanvasPoint }[] {
+  if (!trace) return [];
+  return raySegments(trace).flatMap(([start, end]) => {
+    const from = project(start);
+    const to = project(end);
+    return from && to ? [{ from, to }] : [];
+  });
+}

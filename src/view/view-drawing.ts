@@ -54,6 +54,8 @@ export class ViewDrawing {
   private sized = false;
   private frames = 0;
   private layer: RayLayer | null = null;
+  /** Whether the drawn rays stand aside for a drawing that must read on its own (setRaysAside). */
+  private raysAside = false;
   private removeRayAnimator: (() => void) | null = null;
   private bvh: Object3D | null = null;
 
@@ -80,9 +82,9 @@ export class ViewDrawing {
     return !this.pieces?.unfinished;
   }
 
-  /** The drawn rays, or null. */
+  /** The drawn rays, or null (also while they stand aside: none are drawn, hovered or counted). */
   get rayLayer(): RayLayer | null {
-    return this.layer;
+    return this.raysAside ? null : this.layer;
   }
 
   /** The acceleration boxes shown, or null. */
@@ -145,9 +147,21 @@ export class ViewDrawing {
     this.removeRayAnimator = null;
     this.layer = layer;
     if (layer) {
+      layer.object.visible = !this.raysAside;
       this.scene.add(layer.object);
       this.removeRayAnimator = this.scheduler.addAnimator((time) => layer.tick(time));
     }
+    this.requestRender();
+  }
+
+  /**
+   * Hides the drawn rays (`aside`) while something drawn over the scene must read on its own,
+   * a code lab's failing case: hundreds of the scene's rays cross its few; false shows them again.
+   */
+  setRaysAside(aside: boolean): void {
+    if (aside === this.raysAside) return;
+    this.raysAside = aside;
+    if (this.layer) this.layer.object.visible = !aside;
     this.requestRender();
   }
 
@@ -165,15 +179,16 @@ export class ViewDrawing {
   }
 
   private draw(changed: boolean): void {
-    if (!changed && this.pieces?.unfinished && this.layer) {
-      this.pieces.drawNext(this.camera, this.layer);
+    const layer = this.rayLayer;
+    if (!changed && this.pieces?.unfinished && layer) {
+      this.pieces.drawNext(this.camera, layer);
       if (this.pieces.unfinished) this.scheduler.requestMore();
       this.frames++;
       return;
     }
     this.hooks.beforeDraw();
     if (this.pieces) {
-      this.pieces.drawChanged(this.scene, this.camera, this.layer);
+      this.pieces.drawChanged(this.scene, this.camera, layer);
       if (this.pieces.unfinished) this.scheduler.requestMore();
     } else this.renderer.render(this.scene, this.camera);
     this.hooks.drawn();

@@ -107,9 +107,8 @@ export class ViewInput {
       case 'delete':
         return this.refuseLocked(state) ? undefined : this.apply(stateCommand(command, state));
       case 'gizmo-mode':
-        // The mode is the page's, not the selection's: it changes, and a locked selection says why it shows no handles.
-        this.refuseLocked(state);
-        return this.apply(stateCommand(command, state));
+        // A locked selection has no handles to switch: T, R and S say why, as a drag does, and leave the mode as it was.
+        return this.refuseLocked(state) ? undefined : this.apply(stateCommand(command, state));
       default:
         return this.apply(stateCommand(command, state));
     }

@@ -46,6 +46,14 @@ describe('the 3D view with level 32 (only the ball can move)', () => {
     expect(store.state.selection).toEqual({ kind: 'object', id: 'box' });
     await expect.element(page.getByText(REASON)).toBeVisible();
 
+    // T, R and S switch no gizmo mode on it: the box has no handles to switch.
+    const gizmo = store.state.gizmo;
+    for (const key of ['r', 's', 't']) {
+      await userEvent.keyboard(key);
+      expect(store.state.gizmo).toEqual(gizmo);
+    }
+    await expect.element(page.getByText(REASON)).toBeVisible();
+
     store.dispatch({ type: 'selection.changed', selection: { kind: 'object', id: 'ball' } });
     await expect.element(page.getByRole('button', { name: /^Move/ })).toHaveAttribute('aria-disabled', 'false');
     (canvas.element() as HTMLElement).focus();

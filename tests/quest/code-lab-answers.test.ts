@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { describeValue, judge, type LabAnswer, type Tolerance } from '../../src/quest/code-labs/code-lab-grading.ts';
+import { judge, type LabAnswer, type Tolerance } from '../../src/quest/code-labs/code-lab-grading.ts';
 
 /** Judges one answer against the tracer's `expected`. */
 const check = (tolerance: Tolerance, expected: LabAnswer, returned: unknown) => judge({ kind: 'edge', args: [], expected }, { returned }, tolerance, 0);
@@ -13,10 +13,10 @@ const v = (x: number, y: number, z: number) => ({ x, y, z });
 describe('a code lab’s kinds of answer', () => {
   it('compares a vector component by component, within its tolerance of the vector’s length', () => {
     expect(check(vector, v(1, 2, 3), v(1, 2, 3 + 1e-9))).toBeNull();
-    expect(check(vector, v(1, 2, 3), v(1, 2, 3.001))).toMatchObject({ reason: 'wrong-value', got: '(1, 2, 3.001)', gotValue: v(1, 2, 3.001) });
-    expect(check(vector, v(1, 2, 3), v(1, 2, NaN))).toMatchObject({ reason: 'not-a-number', got: '(1, 2, NaN)' });
+    expect(check(vector, v(1, 2, 3), v(1, 2, 3.001))).toMatchObject({ reason: 'wrong-value', got: v(1, 2, 3.001), gotValue: v(1, 2, 3.001) });
+    expect(check(vector, v(1, 2, 3), v(1, 2, NaN))).toMatchObject({ reason: 'not-a-number', got: v(1, 2, NaN) });
     expect(check(vector, v(1, 2, 3), { r: 1, g: 2, b: 3 })).toMatchObject({ reason: 'wrong-type' });
-    expect(check(vector, v(1, 2, 3), 3)).toMatchObject({ reason: 'wrong-type', got: '3' });
+    expect(check(vector, v(1, 2, 3), 3)).toMatchObject({ reason: 'wrong-type', got: 3 });
   });
 
   it('compares a direction by its angle, and asks for length 1', () => {
@@ -29,27 +29,20 @@ describe('a code lab’s kinds of answer', () => {
 
   it('takes null where the tracer’s answer is null, and only there', () => {
     expect(check(direction, null, null)).toBeNull();
-    expect(check(direction, null, v(0, 1, 0))).toMatchObject({ reason: 'expected-miss', got: '(0, 1, 0)' });
-    expect(check(direction, v(0, 1, 0), null)).toMatchObject({ reason: 'expected-hit', got: 'null' });
+    expect(check(direction, null, v(0, 1, 0))).toMatchObject({ reason: 'expected-miss', got: v(0, 1, 0) });
+    expect(check(direction, v(0, 1, 0), null)).toMatchObject({ reason: 'expected-hit', got: null });
   });
 
   it('compares a colour channel by channel, within its tolerance of the brightest', () => {
     expect(check(colour, { r: 0.5, g: 0.25, b: 2 }, { r: 0.5, g: 0.25, b: 2 + 1e-9 })).toBeNull();
-    expect(check(colour, { r: 0.5, g: 0.25, b: 2 }, { r: 0.5, g: 0.26, b: 2 })).toMatchObject({ reason: 'wrong-value', got: '(0.5, 0.26, 2)' });
+    expect(check(colour, { r: 0.5, g: 0.25, b: 2 }, { r: 0.5, g: 0.26, b: 2 })).toMatchObject({ reason: 'wrong-value', got: { r: 0.5, g: 0.26, b: 2 } });
     expect(check(colour, { r: 0.5, g: 0.25, b: 2 }, v(0.5, 0.25, 2))).toMatchObject({ reason: 'wrong-type' });
   });
 
   it('asks for exactly true or false', () => {
     expect(check(boolean, true, true)).toBeNull();
-    expect(check(boolean, true, false)).toMatchObject({ reason: 'wrong-value', got: 'false', gotValue: false });
-    expect(check(boolean, false, 0)).toMatchObject({ reason: 'wrong-type', got: '0' });
-    expect(check(boolean, false, null)).toMatchObject({ reason: 'wrong-type', got: 'null' });
-  });
-
-  it('spells values out for the learner', () => {
-    expect(describeValue(v(1 / 3, 0, -2))).toBe('(0.333333, 0, -2)');
-    expect(describeValue({ r: 1, g: 0.5, b: 0 })).toBe('(1, 0.5, 0)');
-    expect(describeValue({})).toBe('object');
-    expect(describeValue([1])).toBe('array');
+    expect(check(boolean, true, false)).toMatchObject({ reason: 'wrong-value', got: false, gotValue: false });
+    expect(check(boolean, false, 0)).toMatchObject({ reason: 'wrong-type', got: 0 });
+    expect(check(boolean, false, null)).toMatchObject({ reason: 'wrong-type', got: null });
   });
 });

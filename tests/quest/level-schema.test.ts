@@ -150,6 +150,34 @@ describe('field messages read `path: reason`, like scene files', () => {
     ]);
   });
 
+  it('has "show me" keep to ui.movable: a solution places and deletes only movable items, but may change a locked one’s other fields', () => {
+    const locking = (solution: Json[]) => (level: Json & { tasks: Json[] }) => {
+      level.ui = { panels: ['object', 'tracer', 'render', 'gizmo'], movable: ['ball'] };
+      level.tasks[3]!.solution = solution;
+    };
+    const allowed = [
+      { type: 'object.changed', id: 'ball', changes: { position: [1, 0.5, 0] } },
+      { type: 'material.changed', id: 'ball', changes: { color: [1, 0, 0] } },
+      { type: 'light.changed', id: 'lamp', changes: { intensity: 2 } },
+      { type: 'camera.changed', changes: { fov: 30 } },
+    ];
+    expect(parseLevel(levelFile(locking(allowed))).ok).toBe(true);
+    expect(
+      errorsOf(
+        locking([
+          { type: 'light.changed', id: 'lamp', changes: { position: [0, 4, 0] } },
+          { type: 'camera.changed', changes: { target: [0, 0, 0] } },
+          { type: 'light.deleted', id: 'lamp' },
+          { type: 'material.changed', id: 'ball', changes: { color: [1, 0, 0] } },
+        ]),
+      ),
+    ).toEqual([
+      'tasks[3].solution[0]: changes where "lamp" is, which ui.movable locks: "show me" may only do what the learner can',
+      'tasks[3].solution[1]: changes where "camera" is, which ui.movable locks: "show me" may only do what the learner can',
+      'tasks[3].solution[2]: changes where "lamp" is, which ui.movable locks: "show me" may only do what the learner can',
+    ]);
+  });
+
   it('takes a reason for leaving the debugger out, but not for a panel it shows', () => {
     const reason = { en: 'Rays come in the next level.', nl: 'Stralen komen in het volgende level.' };
     const ok = parseLevel(levelFile((level) => ((level.ui as Json).hidden = { debugger: reason })));

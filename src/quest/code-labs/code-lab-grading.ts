@@ -43,8 +43,8 @@ export interface CaseFailure {
   index: number;
   labCase: LabCase;
   reason: FailureReason;
-  /** What came back, as text a learner can read ("undefined", "NaN", "'5'", "4.2", "(1, 0, 0)"). */
-  got: string;
+  /** What came back, as the function returned it (the panel spells it out in the learner's language); undefined when it threw. */
+  got: unknown;
   /** The learner's answer, when it was of the kind asked for (to draw where their function said the ray goes). */
   gotValue: LabAnswer;
   /** For `threw`: the error's message and the learner's line, when known. */
@@ -82,19 +82,6 @@ const isVector = (value: unknown): value is Vec3 =>
 const isColour = (value: unknown): value is Rgb =>
   typeof value === 'object' && value !== null && ['r', 'g', 'b'].every((key) => typeof (value as Record<string, unknown>)[key] === 'number');
 
-const numberText = (value: number) => (Number.isNaN(value) ? 'NaN' : String(Number(value.toPrecision(6))));
-
-/** How a value came back, spelled out for the learner: numbers to 6 digits, vectors and colours as (x, y, z). */
-export function describeValue(value: unknown): string {
-  if (typeof value === 'string') return JSON.stringify(value);
-  if (typeof value === 'number') return numberText(value);
-  if (value === null || value === undefined || typeof value === 'boolean') return String(value);
-  if (Array.isArray(value)) return 'array';
-  if (isVector(value)) return `(${numberText(value.x)}, ${numberText(value.y)}, ${numberText(value.z)})`;
-  if (isColour(value)) return `(${numberText(value.r)}, ${numberText(value.g)}, ${numberText(value.b)})`;
-  return typeof value;
-}
-
 const length = (v: Vec3) => Math.hypot(v.x, v.y, v.z);
 
 /** The angle between two directions, in radians (atan2 of |a×b| and a·b: exact near 0, where acos is not). */
@@ -116,11 +103,11 @@ export function judge(labCase: LabCase, outcome: LabOutcome, tolerance: Toleranc
     index,
     labCase,
     reason,
-    got: reason === 'threw' ? '' : describeValue(got),
+    got,
     gotValue,
     ...extra,
   });
-  if ('threw' in outcome) return fail('threw', '', null, { message: outcome.threw, line: outcome.line });
+  if ('threw' in outcome) return fail('threw', undefined, null, { message: outcome.threw, line: outcome.line });
   const got = outcome.returned;
   const expected = labCase.expected;
   switch (tolerance.answer) {

@@ -35,7 +35,7 @@ export interface DirectionTest extends ChiSquare {
 /** The first thing that failed, as data: the panel spells it out in the learner's language. */
 export type DirectionFailure =
   | { check: 'threw'; run: number; message: string; line: number | null }
-  | { check: 'not-a-vector'; run: number; got: string }
+  | { check: 'not-a-vector'; run: number; got: unknown }
   | { check: 'not-unit'; run: number; direction: Vec3; length: number }
   | { check: 'below-surface'; run: number; direction: Vec3; cosTheta: number }
   | { check: 'not-seeded'; run: number; repeats: number }
@@ -65,11 +65,9 @@ const isFiniteVector = (value: unknown): value is Vec3 =>
   value !== null &&
   ['x', 'y', 'z'].every((key) => typeof (value as Record<string, unknown>)[key] === 'number' && Number.isFinite((value as Record<string, number>)[key]));
 
-const describeKind = (value: unknown) => (value === null ? 'null' : Array.isArray(value) ? 'array' : typeof value === 'object' ? 'object' : String(value));
-
 /** The checks of one run: a vector of finite numbers, of length 1, on the normal's side of the surface. */
 function checkRun(value: unknown, normal: Vec3, run: number): DirectionFailure | null {
-  if (!isFiniteVector(value)) return { check: 'not-a-vector', run, got: describeKind(value) };
+  if (!isFiniteVector(value)) return { check: 'not-a-vector', run, got: value };
   const direction = { x: value.x, y: value.y, z: value.z };
   const length = Math.hypot(direction.x, direction.y, direction.z);
   if (Math.abs(length - 1) > UNIT_LENGTH_TOLERANCE) return { check: 'not-unit', run, direction, length };

@@ -84,10 +84,13 @@ export class RtSceneView extends LocalizedElement {
       outline: 3px solid var(--rt-accent);
       outline-offset: -3px;
     }
+    /* Above the orbit, pan and zoom pads (rt-view-toolbar), whose captions a longer note
+       (a Dutch one, a long item name) covered at the bottom: the pads are three rows of
+       --rt-target with a caption, padding and border (about 1.6rem), 8px above the view's edge. */
     .note {
       position: absolute;
       left: 50%;
-      bottom: 12px;
+      bottom: calc(3 * var(--rt-target) + 2.5rem);
       max-width: calc(100% - 24px);
       margin: 0;
       padding: 4px 12px;

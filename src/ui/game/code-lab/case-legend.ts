@@ -1,9 +1,10 @@
 import { msg } from '@lit/localize';
 import { html, nothing, type TemplateResult } from 'lit';
 import { CASE_MARK_COLORS, CELL_FILL_COLORS, SHADING_VECTOR_COLORS } from '../../../quest/code-labs/case-drawing.ts';
-import { describeValue, type CaseFailure, type LabAnswer, type Rgb } from '../../../quest/code-labs/code-lab-grading.ts';
+import type { CaseFailure, LabAnswer, Rgb } from '../../../quest/code-labs/code-lab-grading.ts';
 import type { CodeLab } from '../../../quest/code-labs/code-goal.ts';
 import { linearToSrgb } from '../../../tracer/srgb.ts';
+import { labValue } from './lab-numbers.ts';
 
 /** A mark as the view draws it, in its colour; hidden from screen readers, as the words beside it say what it is. */
 const mark = (color: string, shape: string) => html`<span aria-hidden="true" style="color: ${color}">${shape}</span>`;
@@ -36,7 +37,7 @@ export function caseLegend(lab: CodeLab, failure: CaseFailure): TemplateResult {
       ${msg('Drawn in the 3D view: the point on a piece of its surface, with')} <strong>N</strong>: ${msg('the normal;')}
       ${letter(SHADING_VECTOR_COLORS.light, 'L')}: ${msg('toward the light (the orange ball);')} ${letter(SHADING_VECTOR_COLORS.eye, 'V')}: ${msg('toward the eye;')}
       ${letter(SHADING_VECTOR_COLORS.mirror, 'R')}: ${msg('L mirrored about the normal.')}<br />
-      ${msg('Expected:')} ${swatch(failure.labCase.expected, describeValue(failure.labCase.expected))}; ${msg('got:')} ${swatch(failure.gotValue, failure.got)}.
+      ${msg('Expected:')} ${swatch(failure.labCase.expected, labValue(failure.labCase.expected))}; ${msg('got:')} ${swatch(failure.gotValue, labValue(failure.got))}.
     </p>`;
   }
   return html`<p class="legend">

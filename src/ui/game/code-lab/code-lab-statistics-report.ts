@@ -1,11 +1,11 @@
 import { msg, str } from '@lit/localize';
 import { html, type TemplateResult } from 'lit';
 import type { RandomRun, SampleFailure, StatisticsReport } from '../../../quest/code-labs/code-lab-statistics.ts';
+import { numberList } from '../../../i18n/number-format.ts';
+import { labNumber } from './lab-numbers.ts';
 
-const numberText = (value: number, digits = 3) => String(Number(value.toPrecision(digits)));
-
-/** A p-value as a learner can read it: "p = 0.65", "p = 0.0012", or "p < 10⁻¹⁰" for the ones a biased function gets. */
-const pText = (p: number) => (p < 1e-10 ? 'p < 10⁻¹⁰' : `p = ${numberText(p, 2)}`);
+/** A p-value as a learner can read it: "p = 0.65", "p = 0.0012" (Dutch "p = 0,0012"), or "p < 10⁻¹⁰" for the ones a biased function gets. */
+const pText = (p: number) => (p < 1e-10 ? 'p < 10⁻¹⁰' : `p = ${labNumber(p, 2)}`);
 
 /**
  * The result of a statistically graded run (code-lab-statistics.ts), spelled out: what was
@@ -15,7 +15,7 @@ export function statisticsReport(report: StatisticsReport, runs: readonly Random
   const test = report.test;
   const failure = report.firstFailure;
   const chi = test
-    ? msg(str`χ² = ${numberText(test.value)} with ${test.degrees} degrees of freedom, ${pText(test.p)} (below ${test.significance} fails).`)
+    ? msg(str`χ² = ${labNumber(test.value, 3)} with ${test.degrees} degrees of freedom, ${pText(test.p)} (below ${labNumber(test.significance, 2)} fails).`)
     : '';
   if (!failure && test) {
     return html`<p>${msg(str`${report.runs} runs, ${report.points} points: all in the pixel, one in every cell, the same for the same random, and spread evenly within their cells.`)} ${chi}</p>`;
@@ -42,7 +42,7 @@ function failureText(failure: SampleFailure, runs: readonly RandomRun[]): string
     case 'wrong-count':
       return msg(str`Run ${run} (n = ${n}): got ${failure.got} points instead of ${failure.wanted}.`);
     case 'outside-pixel': {
-      const point = `(${numberText(failure.point.x, 6)}, ${numberText(failure.point.y, 6)})`;
+      const point = `(${numberList([labNumber(failure.point.x), labNumber(failure.point.y)])})`;
       return msg(str`Run ${run} (n = ${n}): the point ${point} lies outside the pixel. x and y go from 0 up to, not including, 1.`);
     }
     case 'two-in-a-cell': {

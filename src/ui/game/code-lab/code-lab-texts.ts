@@ -1,7 +1,9 @@
 import { msg, str } from '@lit/localize';
 import type { CodeLab } from '../../../quest/code-labs/code-goal.ts';
-import { describeValue, type CaseFailure, type LabAnswer, type Tolerance, type Vec3 } from '../../../quest/code-labs/code-lab-grading.ts';
+import type { CaseFailure, LabAnswer, Tolerance, Vec3 } from '../../../quest/code-labs/code-lab-grading.ts';
+import { numberList } from '../../../i18n/number-format.ts';
 import { LAB_WORDING } from './lab-failure-wording.ts';
+import { labNumber, labValue } from './lab-numbers.ts';
 
 /** A kind of case as the result list names it: the misconception its edge case tests. */
 export function caseKindName(kind: string): string {
@@ -117,16 +119,14 @@ function normalKindName(kind: string): string | null {
   }
 }
 
-const numberText = (value: number) => String(Number(value.toPrecision(6)));
-
 /** A value of a case's input spelled out: numbers to 6 digits, vectors and colours as (x, y, z), objects and lists by their parts. */
 function valueText(value: unknown): string {
-  if (typeof value === 'number') return numberText(value);
-  if (Array.isArray(value)) return `[${value.map(valueText).join(', ')}]`;
+  if (typeof value === 'number') return labNumber(value);
+  if (Array.isArray(value)) return `[${numberList(value.map(valueText))}]`;
   if (typeof value !== 'object' || value === null) return String(value);
   const parts = value as Record<string, unknown>;
-  if (['x', 'y', 'z'].every((key) => typeof parts[key] === 'number')) return describeValue(value);
-  if (['r', 'g', 'b'].every((key) => typeof parts[key] === 'number')) return describeValue(value);
+  if (['x', 'y', 'z'].every((key) => typeof parts[key] === 'number')) return labValue(value);
+  if (['r', 'g', 'b'].every((key) => typeof parts[key] === 'number')) return labValue(value);
   return `{ ${Object.entries(parts)
     .map(([key, part]) => `${key}: ${valueText(part)}`)
     .join(', ')} }`;
@@ -145,7 +145,7 @@ export function caseInput(signature: string, args: unknown[]): string {
 /** An answer in words: null as what "none" means in this lab, a number as the distance t, anything else spelled out. */
 function answerText(lab: CodeLab, answer: LabAnswer): string {
   if (answer === null) return LAB_WORDING[lab]?.none?.() ?? msg('null (no hit)');
-  return typeof answer === 'number' ? `t = ${numberText(answer)}` : describeValue(answer);
+  return typeof answer === 'number' ? `t = ${labNumber(answer)}` : labValue(answer);
 }
 
 /** What a lab's function must return, said when it returned something else. */
@@ -166,7 +166,7 @@ function answerKindText(tolerance: Tolerance): string {
 /** What was expected and what came back, in words: the lab's own wording where it has one (lab-failure-wording.ts), else the general one. */
 export function failureText(failure: CaseFailure, lab: CodeLab, tolerance: Tolerance): string {
   const expectedText = answerText(lab, failure.labCase.expected);
-  const gotText = failure.gotValue === null ? failure.got : answerText(lab, failure.gotValue);
+  const gotText = failure.gotValue === null ? labValue(failure.got) : answerText(lab, failure.gotValue);
   const wording = LAB_WORDING[lab];
   switch (failure.reason) {
     case 'threw': {
@@ -174,15 +174,15 @@ export function failureText(failure: CaseFailure, lab: CodeLab, tolerance: Toler
       return failure.line ? msg(str`Your function threw ${message} at line ${failure.line}.`) : msg(str`Your function threw ${message}.`);
     }
     case 'wrong-type':
-      return msg(str`Expected ${expectedText}, got ${failure.got}: ${answerKindText(tolerance)}.`);
+      return msg(str`Expected ${expectedText}, got ${labValue(failure.got)}: ${answerKindText(tolerance)}.`);
     case 'not-a-number':
       return (
         wording?.notANumber?.(expectedText, failure) ??
-        msg(str`Expected ${expectedText}, got ${failure.got}: is something under a square root negative, or divided by 0?`)
+        msg(str`Expected ${expectedText}, got ${labValue(failure.got)}: is something under a square root negative, or divided by 0?`)
       );
     case 'not-unit': {
       const value = failure.gotValue as Vec3;
-      const size = numberText(Math.hypot(value.x, value.y, value.z));
+      const size = labNumber(Math.hypot(value.x, value.y, value.z));
       return msg(str`Expected ${expectedText}, got ${gotText}: the right way, but of length ${size} instead of 1.`);
     }
     case 'expected-hit':
@@ -193,7 +193,7 @@ export function failureText(failure: CaseFailure, lab: CodeLab, tolerance: Toler
       return (
         wording?.wrongValue?.(expectedText, gotText, failure) ??
         (typeof failure.gotValue === 'number'
-          ? msg(str`Expected ${expectedText}, got t = ${failure.got}.`)
+          ? msg(str`Expected ${expectedText}, got t = ${labValue(failure.got)}.`)
           : msg(str`Expected ${expectedText}, got ${gotText}.`))
       );
   }

@@ -1,13 +1,11 @@
 import { msg, str } from '@lit/localize';
 import { html, type TemplateResult } from 'lit';
-import { describeValue } from '../../../quest/code-labs/code-lab-grading.ts';
 import type { DirectionFailure, DirectionReport, DirectionRun, DirectionTest } from '../../../quest/code-labs/direction-statistics.ts';
 import { caseKindName } from './code-lab-texts.ts';
+import { labNumber, labValue } from './lab-numbers.ts';
 
-const numberText = (value: number, digits = 3) => String(Number(value.toPrecision(digits)));
-
-/** A p-value as a learner can read it: "p = 0.65", "p = 0.0012", or "p < 10⁻¹⁰" for the ones a biased function gets. */
-const pText = (p: number) => (p < 1e-10 ? 'p < 10⁻¹⁰' : `p = ${numberText(p, 2)}`);
+/** A p-value as a learner can read it: "p = 0.65", "p = 0.0012" (Dutch "p = 0,0012"), or "p < 10⁻¹⁰" for the ones a biased function gets. */
+const pText = (p: number) => (p < 1e-10 ? 'p < 10⁻¹⁰' : `p = ${labNumber(p, 2)}`);
 
 const measureName = (test: DirectionTest) => (test.measure === 'cos-theta' ? 'cos θ' : 'φ');
 
@@ -17,7 +15,7 @@ const measureName = (test: DirectionTest) => (test.measure === 'cos-theta' ? 'co
  */
 export function directionReport(report: DirectionReport, runs: readonly DirectionRun[]): TemplateResult {
   const failure = report.firstFailure;
-  const significance = numberText(report.significance, 2);
+  const significance = labNumber(report.significance, 2);
   if (!failure) {
     const worst = report.tests.reduce((a, b) => (b.p < a.p ? b : a));
     return html`<p>
@@ -33,7 +31,7 @@ function failureText(failure: DirectionFailure, runs: readonly DirectionRun[], s
   if ('test' in failure) {
     const { test } = failure;
     const chi = msg(
-      str`χ² of ${measureName(test)} = ${numberText(test.value)} with ${test.degrees} degrees of freedom, ${pText(test.p)} (below ${significance} fails).`,
+      str`χ² of ${measureName(test)} = ${labNumber(test.value, 3)} with ${test.degrees} degrees of freedom, ${pText(test.p)} (below ${significance} fails).`,
     );
     const why =
       failure.check === 'uneven-cos-theta'
@@ -45,21 +43,21 @@ function failureText(failure: DirectionFailure, runs: readonly DirectionRun[], s
   }
   const run = failure.run + 1;
   const normal = runs[failure.run]?.args[0];
-  const where = normal ? msg(str`Run ${run}, normal ${describeValue(normal)}`) : msg(str`Run ${run}`);
+  const where = normal ? msg(str`Run ${run}, normal ${labValue(normal)}`) : msg(str`Run ${run}`);
   switch (failure.check) {
     case 'threw':
       return failure.line
         ? msg(str`${where}: your function threw ${failure.message} at line ${failure.line}.`)
         : msg(str`${where}: your function threw ${failure.message}.`);
     case 'not-a-vector':
-      return msg(str`${where}: got ${failure.got}, where a direction vec(x, y, z) of three numbers was expected.`);
+      return msg(str`${where}: got ${labValue(failure.got)}, where a direction vec(x, y, z) of three numbers was expected.`);
     case 'not-unit':
       return msg(
-        str`${where}: got ${describeValue(failure.direction)} of length ${numberText(failure.length, 6)}, where a direction of length 1 was expected. Normalize it, or check that the height is √(1 − r²).`,
+        str`${where}: got ${labValue(failure.direction)} of length ${labNumber(failure.length, 6)}, where a direction of length 1 was expected. Normalize it, or check that the height is √(1 − r²).`,
       );
     case 'below-surface':
       return msg(
-        str`${where}: got ${describeValue(failure.direction)}, which goes into the surface (cos θ = ${numberText(failure.cosTheta)} is below 0). Build the direction around the given normal, in its half of the sphere.`,
+        str`${where}: got ${labValue(failure.direction)}, which goes into the surface (cos θ = ${labNumber(failure.cosTheta, 3)} is below 0). Build the direction around the given normal, in its half of the sphere.`,
       );
     case 'not-seeded':
       return msg(str`${where} gets the same random as run ${failure.repeats + 1} but gave another direction. Use the random you are given, not Math.random.`);

@@ -2,6 +2,7 @@ import { msg, str } from '@lit/localize';
 import type { CodeLab } from '../../../quest/code-labs/code-goal.ts';
 import type { CaseFailure } from '../../../quest/code-labs/code-lab-grading.ts';
 import { lightBehindSurface } from '../../../quest/code-labs/phong-lab.ts';
+import { labValue } from './lab-numbers.ts';
 
 /**
  * What one lab says about its own failures, where the general wording (code-lab-texts.ts)
@@ -32,7 +33,7 @@ export const LAB_WORDING: Partial<Record<CodeLab, LabWording>> = {
   'ray-sphere': {
     expectedHit: (expectedText) => msg(str`Expected ${expectedText}, got null: the ray does hit the sphere.`),
     expectedMiss: (expectedText, _gotText, failure) =>
-      msg(str`Expected ${expectedText}, got t = ${failure.got}: only a hit in front of the ray’s origin (t > 0) counts.`),
+      msg(str`Expected ${expectedText}, got t = ${labValue(failure.got)}: only a hit in front of the ray’s origin (t > 0) counts.`),
   },
   refraction: {
     none: () => msg('null (total internal reflection)'),
@@ -41,12 +42,12 @@ export const LAB_WORDING: Partial<Record<CodeLab, LabWording>> = {
   },
   'ray-box': {
     notANumber: (expectedText, failure) =>
-      msg(str`Expected ${expectedText}, got ${failure.got}: 0 · Infinity is NaN in JavaScript, and every comparison with NaN is false.`),
+      msg(str`Expected ${expectedText}, got ${labValue(failure.got)}: 0 · Infinity is NaN in JavaScript, and every comparison with NaN is false.`),
     expectedHit: (expectedText) => msg(str`Expected ${expectedText}, got null: the ray does hit the box.`),
     expectedMiss: (expectedText, _gotText, failure) =>
       failure.labCase.kind === 'in-face-plane'
-        ? msg(str`Expected ${expectedText}, got t = ${failure.got}: a ray exactly in the plane of a face counts as a miss here.`)
-        : msg(str`Expected ${expectedText}, got t = ${failure.got}: the ray is never inside all three slabs at once in front of its origin.`),
+        ? msg(str`Expected ${expectedText}, got t = ${labValue(failure.got)}: a ray exactly in the plane of a face counts as a miss here.`)
+        : msg(str`Expected ${expectedText}, got t = ${labValue(failure.got)}: the ray is never inside all three slabs at once in front of its origin.`),
   },
   shadow: {
     wrongValue: (_expectedText, _gotText, failure) => shadowWrongText(failure.labCase.expected === true),

@@ -134,7 +134,7 @@ export function labRenderPictures(state: LabRenderState, labels: ViewLabels = le
       const total = LAB_RENDER_WIDTH * LAB_RENDER_HEIGHT;
       const caption =
         state.differing === 0
-          ? msg(str`No pixel differs: your function renders the scene as the tracer's does.`)
+          ? msg(str`No pixel differs: your function renders the scene as the tracer’s does.`)
           : msg(str`${state.differing} of ${total} pixels differ.`);
       const figure = (image: ImageData, title: string, label: string) => html`
         <figure>
