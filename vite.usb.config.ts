@@ -31,12 +31,14 @@ function inlineRenderWorker(): Plugin {
 }
 
 const SANDBOX_PORT = /src\/ui\/game\/code-lab\/lab-sandbox\.ts$/;
-const SANDBOX_SRC = "frame.src = 'code-lab-sandbox.html';";
+const SANDBOX_SRC = "frame.src = 'code-lab-sandbox-host.html';";
 
 /**
- * Gives the code lab's frame its page as text instead of a file beside index.html, which a
- * stick may not hold. The frame stays sandboxed without allow-same-origin (an opaque origin),
- * and the page's own policy (its <meta>) still holds in it: this build's page has none to pass on.
+ * Frames the code lab's sandbox page itself, as text, instead of the host page beside
+ * index.html, which a stick may not hold. The host page is there for the service worker and
+ * the app's policy (docs/code-labs.md), and this build has neither. The frame is sandboxed
+ * without allow-same-origin (an opaque origin), as the host frames it, and the page's own
+ * policy (its <meta>) holds in it: this build's page has none to pass on.
  */
 function inlineCodeLabSandbox(): Plugin {
   return {
@@ -44,9 +46,9 @@ function inlineCodeLabSandbox(): Plugin {
     enforce: 'pre',
     transform(code, id) {
       if (!SANDBOX_PORT.test(id)) return null;
-      if (!code.includes(SANDBOX_SRC)) this.error(`${id} no longer loads the sandbox as ${SANDBOX_SRC}: update vite.usb.config.ts`);
+      if (!code.includes(SANDBOX_SRC)) this.error(`${id} no longer loads the sandbox's host as ${SANDBOX_SRC}: update vite.usb.config.ts`);
       const page = readFileSync(new URL('public/code-lab-sandbox.html', import.meta.url), 'utf8');
-      return code.replace(SANDBOX_SRC, `frame.srcdoc = ${JSON.stringify(page)};`);
+      return code.replace(SANDBOX_SRC, `frame.sandbox.add('allow-scripts');\nframe.srcdoc = ${JSON.stringify(page)};`);
     },
   };
 }

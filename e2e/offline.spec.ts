@@ -3,11 +3,11 @@ import { copyFileSync, existsSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { PNG } from 'pngjs';
-import { openCodeTask } from './support/code-lab-steps.ts';
+import { openCodeTask, openCodeTaskHere, typeCode } from './support/code-lab-steps.ts';
 import { progressFile } from './support/game-steps.ts';
 
 // The app without a network: after one visit the service worker has every file, so a
-// reload offline plays on (and the teacher's pages open); and the USB-stick build
+// reload offline plays on (the teacher's pages open, a code lab runs); and the USB-stick build
 // (`npm run build:usb`) opened from disk, file://, draws its scene, ray traces and runs a code lab.
 
 test.use({ serviceWorkers: 'allow' });
@@ -107,6 +107,10 @@ const CORRECT = `function hitSphere(origin, direction, center, radius) {
   return far > 0 ? far : null;
 }`;
 
+const ENDLESS = `function hitSphere() {
+  while (true) {}
+}`;
+
 test('the USB-stick build runs a code lab from its one file, sandboxed', async ({ page }) => {
   // index.html alone, as the README says to copy it: the sandbox page must come from inside it.
   const built = resolve(process.env.E2E_USB_DIST ?? 'dist-usb', 'index.html');
@@ -129,5 +133,44 @@ test('the USB-stick build runs a code lab from its one file, sandboxed', async (
     await expect(result).toContainText(said);
   }
   expect(await page.evaluate(() => localStorage.getItem('rtq.progress'))).toContain('01-introduction');
+  expect(errors).toEqual([]);
+});
+
+test('after one visit a code lab runs offline: its sandbox page comes from the stored copy', async ({ page, context }) => {
+  const errors: string[] = [];
+  page.on('pageerror', (error) => errors.push(error.message));
+  await openCodeTask(page, progressFile(['01-introduction']), '02-rays-from-the-camera', 'code-hit-sphere', './');
+  // The worker is active (so every file is stored) and controls the page; the sandbox's host page and
+  // the sandbox page are among them (stored under a revision query, as Workbox keeps files without a hash in their name).
+  await expect.poll(() => page.evaluate(() => navigator.serviceWorker.controller !== null), { timeout: 30_000 }).toBe(true);
+  for (const stored of ['code-lab-sandbox-host.html', 'code-lab-sandbox.html'])
+    expect(await page.evaluate((file) => caches.match(file, { ignoreSearch: true }).then((found) => found?.ok ?? false), stored)).toBe(true);
+
+  await context.setOffline(true);
+  const sandboxPages: { file: string; fromStoredCopy: boolean; status: number }[] = [];
+  page.on('response', (response) => {
+    const file = new URL(response.url()).pathname.split('/').pop()!;
+    if (/^code-lab-.*\.html$/.test(file)) sandboxPages.push({ file, fromStoredCopy: response.fromServiceWorker(), status: response.status() });
+  });
+  await page.reload();
+  const lab = await openCodeTaskHere(page, '02-rays-from-the-camera', 'code-hit-sphere');
+  const result = lab.getByRole('status');
+  // The endless loop first: the time limit removes the frame, so the next runs need a new one, again from the copy.
+  for (const [code, said] of [
+    [ENDLESS, 'Your function did not return within 2 s on case 1. Is there a loop that never ends?'],
+    [PROBE, 'Your function threw Error: opened [] at line 8.'],
+    [CORRECT, '306 of 306 cases pass.'],
+  ]) {
+    await typeCode(page, code);
+    await lab.getByRole('button', { name: 'Run tests' }).click();
+    await expect(result).toContainText(said);
+  }
+  // Each frame: the host page (a frame of the app's origin, so the worker serves it), then the sandbox page it fetches.
+  const frameLoad = [
+    { file: 'code-lab-sandbox-host.html', fromStoredCopy: true, status: 200 },
+    { file: 'code-lab-sandbox.html', fromStoredCopy: true, status: 200 },
+  ];
+  expect(sandboxPages).toEqual([...frameLoad, ...frameLoad]);
+  await context.setOffline(false);
   expect(errors).toEqual([]);
 });

@@ -41,6 +41,11 @@ export async function openCodeTask(page: Page, progress: string, level: string, 
     localStorage.setItem('rtq.progress', saved);
   }, progress);
   await page.goto(url);
+  return openCodeTaskHere(page, level, taskId);
+}
+
+/** Opens `level` from the map of the page as it is now, and its code task `taskId`; returns the task's code lab. */
+export async function openCodeTaskHere(page: Page, level: string, taskId: string): Promise<Locator> {
   const welcome = page.getByRole('button', { name: 'Got it' });
   if (await welcome.count()) await welcome.click();
   await page.locator('[data-command="levels"]').click();

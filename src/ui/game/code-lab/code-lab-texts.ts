@@ -216,6 +216,6 @@ export function vectorLibrary(): [call: string, meaning: string][] {
 /** The sandbox page did not load: nothing of the learner's code ran, so nothing about it is said. */
 export function sandboxUnavailableText(): string {
   return msg(
-    'Your code was not run: the code lab’s safe room (a separate page that runs your code) did not load. Code labs need the app online, or the USB file. Reload the page to try again.',
+    'Your code was not run: the code lab’s safe room (a separate page that runs your code) did not load. Without a network it loads only if this browser keeps a copy of the app: the Menu says whether it does. Reload the page to try again.',
   );
 }

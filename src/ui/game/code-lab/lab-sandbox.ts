@@ -11,7 +11,7 @@ export type SandboxResult =
   | { kind: 'no-function'; name: string }
   /** Stopped after RUN_LIMIT_MS, during case `caseIndex` (null: before the first case). */
   | { kind: 'timeout'; caseIndex: number | null }
-  /** The sandbox page did not load (offline: docs/code-labs.md, "Not yet"), so the code was not run at all. */
+  /** The sandbox page did not load (offline with no stored copy of the app: docs/offline.md), so the code was not run at all. */
   | { kind: 'unavailable' };
 
 /** The sandbox page did not say it was ready: the learner's code was never run. */
@@ -34,9 +34,12 @@ type SandboxMessage =
 /**
  * Runs the learner's function in public/code-lab-sandbox.html, framed sandboxed without
  * allow-same-origin: an opaque origin, so neither the page nor the app's stored data can be
- * reached, and a policy of its own with no network. The code runs in a worker of that frame,
- * never on the page's thread; a run that takes too long is stopped by removing the frame,
- * which ends its worker, and the next run gets a new one. docs/code-labs.md says why this is safe.
+ * reached, and a policy of its own with no network. The app frames the host page
+ * public/code-lab-sandbox-host.html (same-origin, so the service worker serves it offline
+ * too), which frames the sandbox and passes the messages on; the USB build frames the
+ * sandbox itself (vite.usb.config.ts). The code runs in a worker of the sandbox, never on
+ * the page's thread; a run that takes too long is stopped by removing the frame, which ends
+ * its worker, and the next run gets a new one. docs/code-labs.md says why this is safe.
  */
 export class LabSandbox {
   private frame: HTMLIFrameElement | null = null;
@@ -85,8 +88,7 @@ export class LabSandbox {
   private open(): Promise<HTMLIFrameElement> {
     this.ready ??= new Promise((resolve, reject) => {
       const frame = document.createElement('iframe');
-      frame.sandbox.add('allow-scripts');
-      frame.src = 'code-lab-sandbox.html';
+      frame.src = 'code-lab-sandbox-host.html';
       frame.hidden = true;
       frame.tabIndex = -1;
       frame.setAttribute('aria-hidden', 'true');
