@@ -1,5 +1,5 @@
 import { readdirSync, readFileSync } from 'node:fs';
-import { join } from 'node:path';
+import { resolve } from 'node:path';
 import type { Plugin } from 'vite';
 import { LATER_TEXT_KEY } from '../src/quest/later-text-key.ts';
 
@@ -76,7 +76,8 @@ export function levelTextsPlugin(folder = 'levels'): Plugin {
       const texts: Record<string, string> = {};
       const later: Record<string, string> = {};
       for (const name of names) {
-        const path = join(folder, name);
+        // Absolute: in the dev server a watched file's relative path is resolved as an import of this module.
+        const path = resolve(folder, name);
         this.addWatchFile(path);
         texts[name] = levelTextWithoutMore(name, readFileSync(path, 'utf8'), locale, later);
       }
