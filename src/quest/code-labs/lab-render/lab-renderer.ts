@@ -4,6 +4,7 @@ import { schlickReflectance } from '../../../tracer/fresnel.ts';
 import { Hit } from '../../../tracer/hit.ts';
 import { Ray } from '../../../tracer/ray.ts';
 import type { Rgb, Vec3 } from '../code-lab-grading.ts';
+import type { Point } from '../code-lab-statistics.ts';
 import { dot, scaled, v } from '../lab-vectors.ts';
 import type { PhongMaterial } from '../phong-lab.ts';
 import type { Sphere } from '../shadow-lab.ts';
@@ -30,10 +31,18 @@ const fromVector = (vector: Vector3): Vec3 => v(vector.x, vector.y, vector.z);
  * direction (null: total internal reflection, all reflected) with Schlick's kr for glass.
  * Spheres are met by the ray–sphere lab's test, boxes along the axes by the box lab's slab
  * test (Kay & Kajiya 1986), the other shapes by the tracer's own. One
- * ray through each pixel's centre; each ray's colour clamped to 0..1, as the tracer does.
- * Returns linear RGB, row by row from the top, as the tracer's images.
+ * ray through each of the pixel's points (`pixelPoints`, offsets in [0, 1)² from its top-left
+ * corner; by default its centre), each ray's colour clamped to 0..1 and the pixel their
+ * average, as the tracer's supersampling does. Returns linear RGB, row by row from the top,
+ * as the tracer's images.
  */
-export async function renderLab(scene: LabRenderScene, functions: LabFunctions, width: number, height: number): Promise<Float32Array> {
+export async function renderLab(
+  scene: LabRenderScene,
+  functions: LabFunctions,
+  width: number,
+  height: number,
+  pixelPoints: (x: number, y: number) => readonly Point[] = () => PIXEL_CENTRE,
+): Promise<Float32Array> {
   const tracer = new LabTracer(scene, functions);
   const image = new Float32Array(width * height * 3);
   const direction = new Vector3();
@@ -43,13 +52,22 @@ export async function renderLab(scene: LabRenderScene, functions: LabFunctions, 
     // pass up to a second on a slow laptop: between bands of rows the page handles its input.
     if (y > 0 && y % ROWS_PER_TURN === 0) await nextTurn();
     for (let x = 0; x < width; x++) {
-      scene.others.camera.direction(x + 0.5, y + 0.5, width, height, direction);
-      const color = tracer.trace(eye, fromVector(direction), 0);
-      image.set([color.r, color.g, color.b], (y * width + x) * 3);
+      const points = pixelPoints(x, y);
+      const sum = { r: 0, g: 0, b: 0 };
+      for (const point of points) {
+        scene.others.camera.direction(x + point.x, y + point.y, width, height, direction);
+        const color = tracer.trace(eye, fromVector(direction), 0);
+        sum.r += color.r;
+        sum.g += color.g;
+        sum.b += color.b;
+      }
+      image.set([sum.r / points.length, sum.g / points.length, sum.b / points.length], (y * width + x) * 3);
     }
   }
   return image;
 }
+
+const PIXEL_CENTRE: readonly Point[] = [{ x: 0.5, y: 0.5 }];
 
 /**
  * The outward normal of the box's face a point lies on: along the axis where the point is
@@ -72,10 +90,10 @@ function faceNormal({ min, max }: LabBox, point: Vec3): Vec3 {
 }
 
 /** Rows rendered before the page gets a turn: at 160 pixels a row, a band of a few milliseconds. */
-const ROWS_PER_TURN = 8;
+export const ROWS_PER_TURN = 8;
 
 /** A macrotask's turn, so that input events and frames run between bands (a resolved promise would not let them). */
-const nextTurn = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
+export const nextTurn = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
 
 class LabTracer {
   private readonly ray = new Ray();
