@@ -57,7 +57,7 @@ test('the cosine-bounce lab grades a sample of directions and draws a failing on
 
 const UNIFORM = MALLEY.replace('const r = Math.sqrt(random())', 'const r = Math.sqrt(1 - (1 - random()) ** 2)');
 
-test('Render with my function in the cosine lab compares the pictures’ mean brightness and keeps the page responsive', async ({ page }) => {
+test('Render with my function in the cosine lab shows both pictures and compares their mean brightness', async ({ page }) => {
   const errors = collectErrors(page);
   const lab = await openCodeTask(page, progressFile(order.slice(0, order.indexOf(LEVEL))), LEVEL, 'code-cosine-bounce');
   const renderButton = lab.getByRole('button', { name: 'Render with my function' });

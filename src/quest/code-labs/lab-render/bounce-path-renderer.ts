@@ -18,7 +18,9 @@ export type Bounce = (normal: Vec3, random: () => number) => Vec3;
  * direction taken from `bounce` and weighted by the albedo alone: Lambert's f·cos θ / pdf
  * is the albedo exactly when the direction comes with density cos θ / π, the lab's contract.
  * A direction that does not come with that density is weighted as if it did, so the picture's
- * mean brightness shows it. `paths` paths per pixel, each through a uniform random point of
+ * mean brightness shows it. Area lights are emitters rays hit (area-emitter.ts); a point or
+ * spot light is a point sent its intensity over d² (no cone), reached only by light sampling.
+ * `paths` paths per pixel, each through a uniform random point of
  * the pixel; every random number of a path comes from its own stream keyed by (seed, x, y,
  * path), so two renders with different bounces share their other random numbers. Returns
  * the radiance as linear RGB, row by row from the top, as the tracer's images.
