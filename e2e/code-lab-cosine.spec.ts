@@ -49,3 +49,32 @@ test('the cosine-bounce lab grades a sample of directions and draws a failing on
   await expectStatus(page, TITLE, 'done');
   expect(errors).toEqual([]);
 });
+
+// Render with my function in the cosine lab: a path render of level 23 whose bounces take the
+// learner's directions, beside the tracer's. Noisy, so the pictures' mean brightness is
+// compared, not their pixels: Malley's method comes within the noise, uniform directions
+// weighted as cosine ones come out darker (docs/code-labs.md has the figures).
+
+const UNIFORM = MALLEY.replace('const r = Math.sqrt(random())', 'const r = Math.sqrt(1 - (1 - random()) ** 2)');
+
+test('Render with my function in the cosine lab shows both pictures and compares their mean brightness', async ({ page }) => {
+  const errors = collectErrors(page);
+  const lab = await openCodeTask(page, progressFile(order.slice(0, order.indexOf(LEVEL))), LEVEL, 'code-cosine-bounce');
+  const renderButton = lab.getByRole('button', { name: 'Render with my function' });
+  const brightness = lab.getByText(/^Mean brightness: your picture (\d\.\d{3}), the tracer’s (\d\.\d{3})\./);
+  const mine = lab.getByRole('img', { name: 'The level’s scene rendered with your function.' });
+
+  await typeCode(page, MALLEY);
+  await renderButton.click();
+  await expect(brightness).toContainText('as close as two noisy renders of the same density come', { timeout: 30_000 });
+  expect(await mine.evaluate((canvas) => [(canvas as HTMLCanvasElement).width, (canvas as HTMLCanvasElement).height])).toEqual([64, 64]);
+  await expect(lab.getByRole('img', { name: /^The difference between the two pictures/ })).toHaveCount(0);
+  await expectAccessible(page, 'the cosine lab with its pictures');
+
+  await typeCode(page, UNIFORM);
+  await renderButton.click();
+  await expect(brightness).toContainText('darker, more than the noise explains', { timeout: 30_000 });
+  const [, yours, tracers] = /your picture (\d\.\d{3}), the tracer’s (\d\.\d{3})/.exec((await brightness.textContent())!)!;
+  expect(Number(yours)).toBeLessThan(0.95 * Number(tracers));
+  expect(errors).toEqual([]);
+});

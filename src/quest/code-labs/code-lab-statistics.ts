@@ -50,8 +50,8 @@ export interface StatisticsReport {
   firstFailure: SampleFailure | null;
 }
 
-/** What one run's answer is: n finite points, or why not. */
-function pointsOf(value: unknown, n: number, run: number): Point[] | SampleFailure {
+/** What one run's answer is: n finite points, or why not (also how a render with the function reads one pixel's answer). */
+export function pointsOf(value: unknown, n: number, run: number): Point[] | SampleFailure {
   if (!Array.isArray(value)) return { check: 'not-points', run, got: describeKind(value) };
   if (value.length !== n) return { check: 'wrong-count', run, got: value.length, wanted: n };
   for (const point of value) {

@@ -60,7 +60,7 @@ const SURFACE_TOLERANCE = 1e-9;
 const COS_THETA_BINS = 10;
 const PHI_BINS = 8;
 
-const isFiniteVector = (value: unknown): value is Vec3 =>
+export const isFiniteVector = (value: unknown): value is Vec3 =>
   typeof value === 'object' &&
   value !== null &&
   ['x', 'y', 'z'].every((key) => typeof (value as Record<string, unknown>)[key] === 'number' && Number.isFinite((value as Record<string, number>)[key]));

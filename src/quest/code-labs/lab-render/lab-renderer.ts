@@ -4,6 +4,7 @@ import { schlickReflectance } from '../../../tracer/fresnel.ts';
 import { Hit } from '../../../tracer/hit.ts';
 import { Ray } from '../../../tracer/ray.ts';
 import type { Rgb, Vec3 } from '../code-lab-grading.ts';
+import type { Point } from '../code-lab-statistics.ts';
 import { dot, scaled, v } from '../lab-vectors.ts';
 import type { PhongMaterial } from '../phong-lab.ts';
 import type { Sphere } from '../shadow-lab.ts';
@@ -30,17 +31,18 @@ const fromVector = (vector: Vector3): Vec3 => v(vector.x, vector.y, vector.z);
  * direction for every mirror hit and for glass's reflected ray, and the refraction lab's
  * direction (null: total internal reflection, all reflected) with Schlick's kr for glass.
  * Spheres are met by the ray–sphere lab's test, boxes along the axes by the box lab's slab
- * test (Kay & Kajiya 1986), the other shapes by the tracer's own. One
- * ray through each pixel's centre, from the level's camera unless another is given; each
- * ray's colour clamped to 0..1, as the tracer does.
- * Returns linear RGB, row by row from the top, as the tracer's images.
+ * test (Kay & Kajiya 1986), the other shapes by the tracer's own. One ray through each of
+ * the pixel's points (`pixelPoints`, offsets in [0, 1)² from its top-left corner; by default
+ * its centre), from the level's camera unless another is given, each ray's colour clamped to
+ * 0..1 and the pixel their average, as the tracer's supersampling does. Returns linear RGB,
+ * row by row from the top, as the tracer's images.
  */
 export async function renderLab(
   scene: LabRenderScene,
   functions: LabFunctions,
   width: number,
   height: number,
-  camera: LabCamera = levelCamera(scene),
+  { camera = levelCamera(scene), pixelPoints = () => PIXEL_CENTRE }: LabRenderView = {},
 ): Promise<Float32Array> {
   const tracer = new LabTracer(scene, functions);
   const image = new Float32Array(width * height * 3);
@@ -49,13 +51,28 @@ export async function renderLab(
     // pass up to a second on a slow laptop: between bands of rows the page handles its input.
     if (y > 0 && y % ROWS_PER_TURN === 0) await nextTurn();
     for (let x = 0; x < width; x++) {
-      const { origin, direction } = camera(x + 0.5, y + 0.5, width, height);
-      const color = tracer.trace(origin, direction, 0);
-      image.set([color.r, color.g, color.b], (y * width + x) * 3);
+      const points = pixelPoints(x, y);
+      const sum = { r: 0, g: 0, b: 0 };
+      for (const point of points) {
+        const { origin, direction } = camera(x + point.x, y + point.y, width, height);
+        const color = tracer.trace(origin, direction, 0);
+        sum.r += color.r;
+        sum.g += color.g;
+        sum.b += color.b;
+      }
+      image.set([sum.r / points.length, sum.g / points.length, sum.b / points.length], (y * width + x) * 3);
     }
   }
   return image;
 }
+
+/** How a lab render looks at its scene: the camera (the level's by default) and the points of each pixel its rays go through (its centre by default). */
+export interface LabRenderView {
+  camera?: LabCamera;
+  pixelPoints?: (x: number, y: number) => readonly Point[];
+}
+
+const PIXEL_CENTRE: readonly Point[] = [{ x: 0.5, y: 0.5 }];
 
 /**
  * The outward normal of the box's face a point lies on: along the axis where the point is
@@ -78,10 +95,10 @@ function faceNormal({ min, max }: LabBox, point: Vec3): Vec3 {
 }
 
 /** Rows rendered before the page gets a turn: at 160 pixels a row, a band of a few milliseconds. */
-const ROWS_PER_TURN = 8;
+export const ROWS_PER_TURN = 8;
 
 /** A macrotask's turn, so that input events and frames run between bands (a resolved promise would not let them). */
-const nextTurn = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
+export const nextTurn = () => new Promise<void>((resolve) => setTimeout(resolve, 0));
 
 class LabTracer {
   private readonly ray = new Ray();

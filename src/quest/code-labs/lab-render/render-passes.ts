@@ -53,7 +53,7 @@ export async function renderWithLearner(
     labFunctions(null, () => null),
     width,
     height,
-    camera,
+    { camera },
   );
   const answers = new Map<string, LabAnswer>();
   const limit = maxPasses(scene.source.settings.maxDepth);
@@ -66,7 +66,7 @@ export async function renderWithLearner(
       missed.set(key, args);
       return referenceAnswer(lab, args);
     };
-    const mine = await renderLab(scene, labFunctions(lab, lookUp), width, height, camera);
+    const mine = await renderLab(scene, labFunctions(lab, lookUp), width, height, { camera });
     if (missed.size === 0) return { kind: 'rendered', mine, reference, passes: pass, calls: answers.size };
     const calls = [...missed.values()];
     const reply = await ask(calls);

@@ -4,11 +4,10 @@ import { ref } from 'lit/directives/ref.js';
 import type { CodeGoal } from '../../../quest/code-labs/code-goal.ts';
 import type { Tolerance } from '../../../quest/code-labs/code-lab-grading.ts';
 import { topDownCamera } from '../../../quest/code-labs/lab-render/axis-view.ts';
-import type { LabCamera } from '../../../quest/code-labs/lab-render/lab-camera.ts';
 import type { RenderLab } from '../../../quest/code-labs/lab-render/lab-functions.ts';
 import { labRenderScene } from '../../../quest/code-labs/lab-render/lab-render-scene.ts';
 import { DIFFERENCE_GAIN, pictureDifference } from '../../../quest/code-labs/lab-render/picture-difference.ts';
-import { renderWithLearner, type LabRenderResult } from '../../../quest/code-labs/lab-render/render-passes.ts';
+import { renderWithLearner, type AskLearner, type LabRenderResult } from '../../../quest/code-labs/lab-render/render-passes.ts';
 import type { Scene } from '../../../scene/scene.ts';
 import { toRgba8 } from '../../../tracer/quantize.ts';
 import { axisViewLabels, axisViewTitle, axisViewWhy, levelViewLabels, viewsAlongAxis, type ViewLabels } from './axis-view-texts.ts';
@@ -31,8 +30,11 @@ export const LAB_RENDER_HEIGHT = 120;
 export type LabRenderState =
   | { kind: 'idle' }
   | { kind: 'rendering' }
-  /** `alongAxis`: the box lab's second view, from straight above (axis-view.ts). */
-  | { kind: 'rendered'; mine: ImageData; reference: ImageData; difference: ImageData; differing: number; alongAxis?: LabRenderState }
+  /**
+   * `caption`: what the pictures show, under them (`agree`: nothing there points to a mistake); no difference picture where
+   * the renders are noisy. `alongAxis`: the box lab's second view, from straight above (axis-view.ts).
+   */
+  | { kind: 'rendered'; mine: ImageData; reference: ImageData; difference: ImageData | null; caption: string; agree: boolean; alongAxis?: LabRenderState }
   | { kind: 'stopped'; message: string };
 
 /**
@@ -50,39 +52,41 @@ export async function renderLabPictures(
   sandbox: LabSandbox,
 ): Promise<LabRenderState> {
   const labScene = labRenderScene(scene);
-  const render = async (camera?: LabCamera) => {
-    const result = await renderWithLearner(
-      labScene,
-      lab,
-      tolerance,
-      async (calls) => {
-        const ran = await sandbox.run(code, goal.code.function, calls, { eachCase: false, limitMs: RENDER_LIMIT_MS }).catch((error: unknown) => {
-          sandbox.close();
-          return failedRun(error);
-        });
-        return ran.kind === 'ran' ? { outcomes: ran.outcomes } : { reason: ran };
-      },
-      LAB_RENDER_WIDTH,
-      LAB_RENDER_HEIGHT,
-      camera,
-    );
-    return pictures(result, goal, tolerance, scene);
-  };
-  const level = await render();
+  const ask = askSandbox(goal, code, sandbox);
+  const level = pictures(await renderWithLearner(labScene, lab, tolerance, ask, LAB_RENDER_WIDTH, LAB_RENDER_HEIGHT), goal, tolerance, scene);
   if (level.kind !== 'rendered' || !viewsAlongAxis(lab)) return level;
-  return { ...level, alongAxis: await render(topDownCamera(labScene)) };
+  const fromAbove = await renderWithLearner(labScene, lab, tolerance, ask, LAB_RENDER_WIDTH, LAB_RENDER_HEIGHT, topDownCamera(labScene));
+  return { ...level, alongAxis: pictures(fromAbove, goal, tolerance, scene) };
+}
+
+/** Each batch of a render's calls run in the sandbox, like Run tests, with a render's time limit. */
+export const askSandbox =
+  (goal: CodeGoal, code: string, sandbox: LabSandbox): AskLearner =>
+  async (calls) => {
+    const ran = await sandbox.run(code, goal.code.function, calls, { eachCase: false, limitMs: RENDER_LIMIT_MS }).catch((error: unknown) => {
+      sandbox.close();
+      return failedRun(error);
+    });
+    return ran.kind === 'ran' ? { outcomes: ran.outcomes } : { reason: ran };
+  };
+
+/** Three RGBA pictures of one size as the pictures area shows them. */
+export function renderedPictures(mine: Uint8ClampedArray, reference: Uint8ClampedArray, difference: Uint8ClampedArray | null, width: number, height: number) {
+  const image = (data: Uint8ClampedArray) => new ImageData(new Uint8ClampedArray(data), width, height);
+  return { mine: image(mine), reference: image(reference), difference: difference && image(difference) };
 }
 
 function pictures(result: LabRenderResult, goal: CodeGoal, tolerance: Tolerance, scene: Scene): LabRenderState {
-  const seconds = RENDER_LIMIT_MS / 1000;
   switch (result.kind) {
     case 'rendered': {
       const bytes = (rgb: Float32Array) => toRgba8(rgb, LAB_RENDER_WIDTH, LAB_RENDER_HEIGHT, scene.settings);
       const mine = bytes(result.mine);
       const reference = bytes(result.reference);
       const { rgba, differing } = pictureDifference(mine, reference);
-      const image = (data: Uint8ClampedArray) => new ImageData(new Uint8ClampedArray(data), LAB_RENDER_WIDTH, LAB_RENDER_HEIGHT);
-      return { kind: 'rendered', mine: image(mine), reference: image(reference), difference: image(rgba), differing };
+      const total = LAB_RENDER_WIDTH * LAB_RENDER_HEIGHT;
+      const caption =
+        differing === 0 ? msg(str`No pixel differs: your function renders the scene as the tracer’s does.`) : msg(str`${differing} of ${total} pixels differ.`);
+      return { kind: 'rendered', ...renderedPictures(mine, reference, rgba, LAB_RENDER_WIDTH, LAB_RENDER_HEIGHT), caption, agree: differing === 0 };
     }
     case 'bad-answer': {
       const { failure } = result;
@@ -93,24 +97,31 @@ function pictures(result: LabRenderResult, goal: CodeGoal, tolerance: Tolerance,
       };
     }
     case 'too-many-passes':
-      return {
-        kind: 'stopped',
-        message: msg(str`The render stopped after ${result.passes} passes: each pass still met calls of your function not asked before.`),
-      };
-    case 'no-answers': {
-      // The sandbox's answer, worded as Run tests words it.
-      const state = result.reason as Exclude<SandboxResult, { kind: 'ran' }>;
-      if (state.kind === 'timeout')
-        return { kind: 'stopped', message: msg(str`Your function did not return within ${seconds} s while rendering. Is there a loop that never ends?`) };
-      if (state.kind === 'no-function') return { kind: 'stopped', message: msg(str`There is no function named ${state.name} in your code.`) };
-      if (state.kind === 'unavailable') return { kind: 'stopped', message: sandboxUnavailableText() };
-      const message = state.line
-        ? msg(str`Your code could not run: ${state.message} at line ${state.line}.`)
-        : msg(str`Your code could not run: ${state.message}.`);
-      return { kind: 'stopped', message };
-    }
+      return tooManyPasses(result.passes);
+    case 'no-answers':
+      return noAnswers(result.reason);
   }
 }
+
+/** Why a render has no answers from the sandbox, worded as Run tests words it. */
+export function noAnswers(reason: unknown): LabRenderState {
+  const state = reason as Exclude<SandboxResult, { kind: 'ran' }>;
+  const seconds = RENDER_LIMIT_MS / 1000;
+  if (state.kind === 'timeout')
+    return { kind: 'stopped', message: msg(str`Your function did not return within ${seconds} s while rendering. Is there a loop that never ends?`) };
+  if (state.kind === 'no-function') return { kind: 'stopped', message: msg(str`There is no function named ${state.name} in your code.`) };
+  if (state.kind === 'unavailable') return { kind: 'stopped', message: sandboxUnavailableText() };
+  const message = state.line
+    ? msg(str`Your code could not run: ${state.message} at line ${state.line}.`)
+    : msg(str`Your code could not run: ${state.message}.`);
+  return { kind: 'stopped', message };
+}
+
+/** The message of a render that stopped because each pass met calls not asked before. */
+export const tooManyPasses = (passes: number): LabRenderState => ({
+  kind: 'stopped',
+  message: msg(str`The render stopped after ${passes} passes: each pass still met calls of your function not asked before.`),
+});
 
 /** Paints an image on its canvas once the canvas is on the page. */
 const paint = (image: ImageData) =>
@@ -119,8 +130,8 @@ const paint = (image: ImageData) =>
   });
 
 /**
- * The three pictures side by side, each with a caption and a text alternative, and the
- * one-line count of differing pixels; then, in the box lab, the same for the view from above.
+ * The pictures side by side, each with a caption and a text alternative, and the line saying
+ * what they show; then, in the box lab, the same for the view from above.
  */
 export function labRenderPictures(state: LabRenderState, labels: ViewLabels = levelViewLabels()): TemplateResult | typeof nothing {
   switch (state.kind) {
@@ -131,14 +142,10 @@ export function labRenderPictures(state: LabRenderState, labels: ViewLabels = le
     case 'stopped':
       return html`<p class="fail">${state.message}</p>`;
     case 'rendered': {
-      const total = LAB_RENDER_WIDTH * LAB_RENDER_HEIGHT;
-      const caption =
-        state.differing === 0
-          ? msg(str`No pixel differs: your function renders the scene as the tracer’s does.`)
-          : msg(str`${state.differing} of ${total} pixels differ.`);
+      const { caption, difference } = state;
       const figure = (image: ImageData, title: string, label: string) => html`
         <figure>
-          <canvas width=${LAB_RENDER_WIDTH} height=${LAB_RENDER_HEIGHT} role="img" aria-label=${label} ${paint(image)}></canvas>
+          <canvas width=${image.width} height=${image.height} role="img" aria-label=${label} ${paint(image)}></canvas>
           <figcaption>${title}</figcaption>
         </figure>
       `;
@@ -146,9 +153,9 @@ export function labRenderPictures(state: LabRenderState, labels: ViewLabels = le
         <div class="pictures">
           ${figure(state.mine, msg('Your function'), labels.mine)}
           ${figure(state.reference, msg('The tracer’s function'), labels.reference)}
-          ${figure(state.difference, msg(str`Difference ×${DIFFERENCE_GAIN}`), msg(str`${labels.difference}, ${DIFFERENCE_GAIN} times brighter: ${caption}`))}
+          ${difference ? figure(difference, msg(str`Difference ×${DIFFERENCE_GAIN}`), msg(str`${labels.difference}, ${DIFFERENCE_GAIN} times brighter: ${caption}`)) : nothing}
         </div>
-        <p class=${state.differing === 0 ? '' : 'fail'}>${caption}</p>
+        <p class=${state.agree ? '' : 'fail'}>${caption}</p>
         ${
           state.alongAxis
             ? html`<section class="along-axis" aria-label=${axisViewTitle()}>

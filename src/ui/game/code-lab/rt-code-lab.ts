@@ -24,6 +24,7 @@ import { caseInput, caseKindName, failureText, sandboxUnavailableText, vectorLib
 import { savedCode, saveCode } from './code-drafts.ts';
 import { failedRun, LabSandbox, RUN_LIMIT_MS, type SandboxResult } from './lab-sandbox.ts';
 import { labRenderPictures, renderLabPictures, type LabRenderState } from './lab-render-pictures.ts';
+import { renderRandomLabPictures, rendersRandomly } from './random-lab-pictures.ts';
 
 /** What the result area shows: nothing yet, a run under way, a graded run, or why a run gave no answers. */
 type RunState =
@@ -185,7 +186,7 @@ export class RtCodeLab extends LocalizedElement {
     const goal = this.goal;
     if (!goal) return nothing;
     const busy = this.state.kind === 'running' || this.rendering.kind === 'rendering';
-    const canRender = rendersWith(goal.code.lab) && this.host.value?.levelScene();
+    const canRender = (rendersWith(goal.code.lab) || rendersRandomly(goal.code.lab)) && this.host.value?.levelScene();
     return html`
       <section class="card" aria-labelledby="code-lab-title">
         <h3 id="code-lab-title">${msg('Code lab')}</h3>
@@ -309,16 +310,20 @@ export class RtCodeLab extends LocalizedElement {
     this.host.value?.graded({ lab: goal.code.lab, passed: report.passed, total: report.total, failed: failure?.labCase.kind ?? null });
   }
 
-  /** Renders the level's scene with the learner's function beside the tracer's (lab-render-pictures.ts); the code runs only in the sandbox. */
+  /** Renders the level's scene with the learner's function beside the tracer's (lab-render-pictures.ts, random-lab-pictures.ts); the code runs only in the sandbox. */
   private async renderScene(goal: CodeGoal): Promise<void> {
     const scene = this.host.value?.levelScene();
     const grading = labCases(goal);
     const lab = goal.code.lab;
-    if (!scene || grading.kind !== 'cases' || !rendersWith(lab)) return;
+    if (!scene) return;
+    let render: (() => Promise<LabRenderState>) | null = null;
+    if (rendersRandomly(lab)) render = () => renderRandomLabPictures(goal, lab, scene, this.code, this.sandbox);
+    else if (grading.kind === 'cases' && rendersWith(lab)) render = () => renderLabPictures(goal, lab, grading.tolerance, scene, this.code, this.sandbox);
+    if (!render) return;
     this.rendering = { kind: 'rendering' };
     // Let the panel say so before the first pass keeps the page busy.
     await this.updateComplete;
-    const rendered = await renderLabPictures(goal, lab, grading.tolerance, scene, this.code, this.sandbox);
+    const rendered = await render();
     // Another task opened meanwhile: these pictures are not of its lab.
     if (this.goal === goal) this.rendering = rendered;
   }
