@@ -35,7 +35,7 @@ describe('the mirror lab', () => {
 
   it('fails a head-on ray that comes out as no direction at all', () => {
     const report = gradeFunction(mirrorCases(['mirror-head-on'], 0, 1), MIRROR_TOLERANCE, reflectWith(1));
-    expect(report.firstFailure).toMatchObject({ reason: 'wrong-value', got: '(0, 0, 0)' });
+    expect(report.firstFailure).toMatchObject({ reason: 'wrong-value', got: { x: 0, y: 0, z: 0 } });
   });
 
   it('fails a direction of the wrong length, and one right only for normals along an axis on the tilted case', () => {

@@ -209,14 +209,14 @@ describe('rendering a level with the learner’s function', () => {
 
   it('stops at an answer it cannot use, with that call as the grader words it', async () => {
     const { result } = await render('mirror', () => undefined);
-    expect(result).toMatchObject({ kind: 'bad-answer', failure: { reason: 'wrong-type', got: 'undefined' } });
+    expect(result).toMatchObject({ kind: 'bad-answer', failure: { reason: 'wrong-type', got: undefined } });
     const thrown = await render('ray-sphere', () => {
       throw new Error('oops');
     });
     expect(thrown.result).toMatchObject({ kind: 'bad-answer', failure: { reason: 'threw' } });
     // No total internal reflection: the glass block's steep rays come back as NaN.
     const noTir = await render('refraction', refractWith({ noTir: true }));
-    expect(noTir.result).toMatchObject({ kind: 'bad-answer', failure: { reason: 'not-a-number', got: '(NaN, NaN, NaN)' } });
+    expect(noTir.result).toMatchObject({ kind: 'bad-answer', failure: { reason: 'not-a-number', got: { x: NaN, y: NaN, z: NaN } } });
   });
 
   it('stops when the sandbox gives no answers', async () => {
