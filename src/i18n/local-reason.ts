@@ -99,6 +99,10 @@ export function localReason(reason: Reason): string {
       return msg('must include "screen-preview": a task picks a pixel, and the flat preview is where one is picked exactly');
     case 'pixelRaysWithoutPixel':
       return msg('"pixel-rays" needs the view to choose its pixel ("pixel": [column, row])');
+    case 'lockedItemMoved': {
+      const item = `"${reason.item}"`;
+      return msg(str`changes where ${item} is, which ui.movable locks: "show me" may only do what the learner can`);
+    }
     case 'noSuchTask': {
       const id = `"${reason.id}"`;
       return msg(str`no task ${id} in this level`);

@@ -812,6 +812,7 @@
 'se7759396d5861305': `Renderen met mijn functie`,
 'se7dbe9f0dcd4b207': `Voltooiing`,
 'se8226104f94b9edb': `een oog precies in de glansvlek`,
+'se83fe1ebd6130237': str`verandert waar ${0} staat, dat ui.movable vastzet: "Laat zien" mag alleen doen wat de leerling kan`,
 'se8651299a56c0369': str`Verwacht: ${0}, gekregen: t = ${1}. Een straal die precies in het vlak van een zijvlak loopt, telt hier als mis.`,
 'se86f41def016466a': str`${0}, ${1} keer zo helder: ${2}`,
 'se8c907c702eee0b0': str`${0} van de ${1} gevallen goed.`,

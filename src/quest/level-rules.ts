@@ -222,8 +222,7 @@ function lockedBySolutionProblems(level: Level): Problem[] {
   return level.tasks.flatMap((task, taskIndex) =>
     (task.solution ?? []).flatMap((action, index) => {
       const locked = lockedItemMoved(action, level.ui.movable);
-      const reason = `changes where "${locked}" is, which ui.movable locks: "show me" may only do what the learner can`;
-      return locked === null ? [] : [{ path: ['tasks', taskIndex, 'solution', index], reason }];
+      return locked === null ? [] : [{ path: ['tasks', taskIndex, 'solution', index], reason: { code: 'lockedItemMoved', item: locked } }];
     }),
   );
 }

@@ -83,6 +83,7 @@ export type Reason =
   | { code: 'guideNotGoalPixel'; target: string }
   | { code: 'previewRequired' }
   | { code: 'pixelRaysWithoutPixel' }
+  | { code: 'lockedItemMoved'; item: string }
   | { code: 'noSuchTask'; id: string }
   // The level index (src/quest/level-index.ts).
   | { code: 'notInAnyChapter'; id: string }
@@ -285,6 +286,8 @@ export function englishReason(reason: Reason): string {
       return 'must include "screen-preview": a task picks a pixel, and the flat preview is where one is picked exactly';
     case 'pixelRaysWithoutPixel':
       return '"pixel-rays" needs the view to choose its pixel ("pixel": [column, row])';
+    case 'lockedItemMoved':
+      return `changes where "${reason.item}" is, which ui.movable locks: "show me" may only do what the learner can`;
     case 'noSuchTask':
       return `no task "${reason.id}" in this level`;
     case 'notInAnyChapter':

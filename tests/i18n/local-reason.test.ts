@@ -63,6 +63,7 @@ const SAMPLES: { [Code in ReasonCode]: Extract<Reason, { code: Code }>[] } = {
   guideNotGoalPixel: [{ code: 'guideNotGoalPixel', target: 'screen.pixel:3,1' }],
   previewRequired: [{ code: 'previewRequired' }],
   pixelRaysWithoutPixel: [{ code: 'pixelRaysWithoutPixel' }],
+  lockedItemMoved: [{ code: 'lockedItemMoved', item: 'lamp' }],
   noSuchTask: [{ code: 'noSuchTask', id: 'no-such-task' }],
   notInAnyChapter: [{ code: 'notInAnyChapter', id: 'retired-level' }],
   noLevelFile: [{ code: 'noLevelFile', file: 'levels/03-shading.level.json' }],
