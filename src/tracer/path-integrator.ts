@@ -25,7 +25,8 @@ const INV_PI = 1 / Math.PI;
  * `settings.integrator: "path"`: from each camera ray one random path of bounces, whose
  * contributions estimate the rendering equation's integral without bias. Its loop follows
  * pbrt-v4's SimplePathIntegrator (§13.3): at each vertex, light the path sees directly,
- * then light sampling at a diffuse vertex, then one sampled bounce, then Russian roulette.
+ * then light sampling at a diffuse vertex, then one sampled bounce; then Russian roulette,
+ * where pbrt-v4's PathIntegrator (§13.4) has it, with Cycles' chance of going on.
  *
  * - Diffuse: Lambert's BRDF albedo/π with albedo min(1, kd·C); `ambient` is not used:
  *   indirect light is computed, not faked.
