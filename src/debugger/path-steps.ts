@@ -8,6 +8,7 @@
  */
 import type { Color } from '../scene/scene.ts';
 import type { PathEvent, PathVertex, RecordedPath } from '../tracer/path-recorder.ts';
+import { rouletteSurvival } from '../tracer/roulette-survival.ts';
 
 /** One vertex of a path, as the debugger shows it. */
 export interface PathVertexRow {
@@ -45,7 +46,8 @@ const ZERO: Color = [0, 0, 0];
 /**
  * The rows of `path`. The tracer records each vertex's throughput before Russian roulette
  * (path-integrator.ts): a path still going after vertex i (i ≥ 2 bounces) whose largest
- * channel β is below 1 survived with chance β and carries throughput/β on. Light samples
+ * channel β is below 1 survived with chance √β (rouletteSurvival) and carries throughput/√β
+ * on. Light samples
  * belong to the vertex where they were taken; the light seen directly at the last vertex is
  * what the contribution holds beyond them.
  */
@@ -59,7 +61,7 @@ export function pathRows(path: RecordedPath, settings: PathStepSettings): PathVe
     const factor = scattered ? divide(vertex.throughput, carried) : null;
     const largest = Math.max(...vertex.throughput);
     const goesOn = i < last && path.vertices[i + 1].event !== 'roulette-stop';
-    const survival = scattered && settings.russianRoulette && i >= 2 && largest < 1 && goesOn ? largest : null;
+    const survival = scattered && settings.russianRoulette && i >= 2 && largest < 1 && goesOn ? rouletteSurvival(largest) : null;
     const throughput = survival === null ? vertex.throughput : scale(vertex.throughput, 1 / survival);
     for (const sample of vertex.lightSamples) sum = add(sum, sample.added);
     const emitted = i === last ? subtract(path.contribution, sum) : ZERO;

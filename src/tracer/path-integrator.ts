@@ -13,6 +13,7 @@ import type { PathEvent, PathRecorder } from './path-recorder.ts';
 import type { PrimaryCandidates } from './primary-candidates.ts';
 import { PATH_BOUNCE_STREAM } from './random-streams.ts';
 import { Ray } from './ray.ts';
+import { rouletteSurvival } from './roulette-survival.ts';
 import { emptyRayStats, type RayStats } from './ray-tree.ts';
 import { hashIn, hashKey, RandomStream } from './sampler.ts';
 import type { TracerScene } from './tracer-scene.ts';
@@ -24,7 +25,8 @@ const INV_PI = 1 / Math.PI;
  * `settings.integrator: "path"`: from each camera ray one random path of bounces, whose
  * contributions estimate the rendering equation's integral without bias. Its loop follows
  * pbrt-v4's SimplePathIntegrator (§13.3): at each vertex, light the path sees directly,
- * then light sampling at a diffuse vertex, then one sampled bounce, then Russian roulette.
+ * then light sampling at a diffuse vertex, then one sampled bounce; then Russian roulette,
+ * where pbrt-v4's PathIntegrator (§13.4) has it, with Cycles' chance of going on.
  *
  * - Diffuse: Lambert's BRDF albedo/π with albedo min(1, kd·C); `ambient` is not used:
  *   indirect light is computed, not faked.
@@ -44,7 +46,7 @@ const INV_PI = 1 / Math.PI;
  *   light only (what Whitted mode's depth 0 shows), and the last bounce's ray still adds the
  *   emitter or background it meets.
  * - `russianRoulette`: from the second bounce on, a path whose throughput β has fallen below
- *   1 ends with probability q = 1 − max(β), and survivors carry β/(1 − q) (pbrt-v4 §13.2).
+ *   1 goes on with probability p = √max(β) and carries β/p on (roulette-survival.ts, Cycles' rule).
  *
  * Every random number is drawn from the bounce's own stream, keyed by (seed, pixel, sample,
  * sub-sample) and the bounce, in a fixed order, so `rt trace --paths` re-creates exactly the
@@ -201,14 +203,13 @@ export class PathIntegrator implements Estimator<PathRecorder> {
       if (event === 'glass-refract') this.stats.refract++;
       else this.stats.reflect++;
       if (settings.russianRoulette && bounces >= 2) {
-        const largest = Math.max(throughput.x, throughput.y, throughput.z);
-        if (largest < 1) {
-          const stop = 1 - largest;
-          if (random.next() < stop) {
+        const survival = rouletteSurvival(Math.max(throughput.x, throughput.y, throughput.z));
+        if (survival < 1) {
+          if (random.next() >= survival) {
             this.end(recorder, 'roulette-stop', hit.point, n, shape.id, null);
             break;
           }
-          throughput.divideScalar(1 - stop);
+          throughput.divideScalar(survival);
         }
       }
       // The next ray starts ε off the surface, on the side it leaves toward.

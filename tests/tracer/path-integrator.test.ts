@@ -129,6 +129,33 @@ describe('path mode: every strategy has the same expected picture', () => {
   }
 });
 
+describe('path mode: Russian roulette', () => {
+  it('lets a path of largest throughput β < 1 go on with chance √β, as Cycles does', () => {
+    // Uniform bounces and no light sampling: throughputs spread widely below 1. Over every
+    // vertex that faced the roulette, the paths it stopped number Σ(1 − √β) within the binomial
+    // noise; pbrt-v4's chance β would stop Σ(1 − β), many more.
+    const { recorder } = paths(room({ pathSamples: 4000, russianRoulette: true, bounceSampling: 'uniform', lightSampling: false }), 3, 6, 8);
+    let stopped = 0;
+    let expected = 0;
+    let variance = 0;
+    let expectedByBeta = 0;
+    for (const { vertices } of recorder.paths) {
+      vertices.forEach((vertex, i) => {
+        const largest = Math.max(...vertex.throughput);
+        if (i < 2 || vertex.direction === null || largest >= 1) return;
+        const survival = Math.sqrt(largest);
+        expected += 1 - survival;
+        variance += survival * (1 - survival);
+        expectedByBeta += 1 - largest;
+        if (vertices[i + 1]!.event === 'roulette-stop') stopped++;
+      });
+    }
+    expect(expected).toBeGreaterThan(500);
+    expect(Math.abs(stopped - expected)).toBeLessThan(4 * Math.sqrt(variance));
+    expect(expectedByBeta - expected).toBeGreaterThan(10 * Math.sqrt(variance));
+  });
+});
+
 describe('path mode: recorded paths', () => {
   it('average to the rendered pixel to the last bit', () => {
     const scene = room({ pathSamples: 32, russianRoulette: true });
