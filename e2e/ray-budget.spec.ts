@@ -136,10 +136,12 @@ test('with the free lab’s largest settings the view draws a budget of the rays
     await page.mouse.move(box.x + box.width * (0.1 + (0.8 * step) / 60), y);
     await page.waitForTimeout(16);
     if (step === 30) {
-      // Halfway: the note says how many rays are drawn of how many, and the canvas draws them.
-      await expect(note).toHaveText(/^Showing [\d,]+ of [\d,]+ rays while you edit\.$/);
-      const [shown, of] = (await note.textContent())!.match(/[\d,]+/g)!.map((count) => Number(count.replaceAll(',', '')));
-      expect(of, 'the note counts every ray traced').toBeGreaterThanOrEqual(all);
+      // Halfway: the note says how many rays are drawn, traced from one sample a pixel, and how many the screen had before; the canvas draws them.
+      await expect(note).toHaveText(
+        /^Showing [\d,]+ rays while you edit, each pixel traced from one of its samples \([\d,]+ rays before the edit\)\. All come back when you stop\.$/,
+      );
+      const [shown, before] = (await note.textContent())!.match(/[\d,]{2,}/g)!.map((count) => Number(count.replaceAll(',', '')));
+      expect(before, 'the note counts the screen traced whole before the drag').toBeGreaterThanOrEqual(all);
       expect(shown, 'a budget of them is drawn').toBeLessThan(all / 10);
       expect(await coveredPixels(page), 'the canvas draws the rays it keeps').toBeGreaterThan(500);
     }

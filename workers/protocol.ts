@@ -62,7 +62,7 @@ export interface TracePixelsRequest {
   first: number;
   count: number;
   seed: number;
-  /** Send, and record, only about this many rays, by the rule of tracer/tree-budget.ts (the lab while the learner edits); the colours are the full trace's. */
+  /** Send, and record, only about this many rays, by the rule of tracer/tree-budget.ts (the lab while the learner edits); the colours are the full trace's unless `oneSample`. */
   budget?: RayBudget;
 }
 
@@ -76,10 +76,15 @@ export interface TracePathsRequest {
   keep: number;
 }
 
-/** A budget for a block's ray trees: about `rays` rays, all of them for screen pixel `keepPixel` (y · columns + x, or null). */
+/**
+ * A budget for a block's ray trees: about `rays` rays, all of them for screen pixel `keepPixel`
+ * (y · columns + x, or null); with `oneSample`, every other pixel is traced from one of its
+ * supersamples alone, uncounted (tracer/trace-within-budget.ts).
+ */
 export interface RayBudget {
   rays: number;
   keepPixel: number | null;
+  oneSample?: boolean;
 }
 
 /** Drop the job's tiles that are still queued; the tile being rendered still finishes. */

@@ -84,7 +84,15 @@ export function createRenderHandler(post: PostResponse): (request: RenderRequest
       // A block's trees are copied into the page's memory as objects, a cost per ray on its main thread;
       // with a budget, only the trees it keeps are recorded at all.
       const traces = budget
-        ? tracePixelsWithinBudget(tracer, first, count, seed, budget.rays, budget.keepPixel === null ? null : budget.keepPixel - first)
+        ? tracePixelsWithinBudget(
+            tracer,
+            first,
+            count,
+            seed,
+            budget.rays,
+            budget.keepPixel === null ? null : budget.keepPixel - first,
+            budget.oneSample === true,
+          )
         : tracePixels(tracer, first, count, seed);
       post({ type: 'pixels-traced', requestId, traces }, []);
     } catch (error) {

@@ -265,7 +265,8 @@ export class LabServices {
     const rays = this.budget?.budget ?? null;
     const pixel = this.store.state.selectedPixel;
     const columns = this.store.state.scene.camera.pixels[0];
-    this.tracer.setBudget(rays === null ? null : { rays, keepPixel: pixel ? pixel[1] * columns + pixel[0] : null });
+    const oneSample = this.budget?.oneSample === true;
+    this.tracer.setBudget(rays === null ? null : { rays, keepPixel: pixel ? pixel[1] * columns + pixel[0] : null, oneSample });
     this.layers?.rays.setBudget(rays);
     this.afterRaysChanged();
   }

@@ -8,6 +8,7 @@ import { DEFAULT_SEED } from './render-job.ts';
 import type { RenderPool } from './render-pool.ts';
 import type { ScreenRays } from './screen-rays.ts';
 import { settledSlices } from './settled-slices.ts';
+import { countsEveryRay } from '../tracer/tree-budget.ts';
 import type { RayBudget } from '../../workers/protocol.ts';
 
 /**
@@ -78,6 +79,8 @@ export class ScreenTracer {
   private pending: { scene: Scene; update: number } | null = null;
   private running = false;
   private latest: ScreenRays | null = null;
+  /** The last published screen whose every ray was counted (not traced from one sample per pixel): what the settled screen's slices are sized by. */
+  private counted: ScreenRays | null = null;
   /** Whether `latest` was traced inline (then the ray debugger's pixel is too). */
   private latestInline = false;
   private inline: InlineScreenTracer | null = null;
@@ -130,7 +133,8 @@ export class ScreenTracer {
 
   /**
    * From now on a screen traced in the worker sends about `budget.rays` of its rays, all of
-   * pixel `budget.keepPixel`'s (tree-budget.ts; the colours stay the full trace's): its
+   * pixel `budget.keepPixel`'s (tree-budget.ts; the colours stay the full trace's unless
+   * `budget.oneSample`: then each other pixel is traced from one sample alone): its
    * trees are copied into the page's memory ray by ray, 0.3 s of the main thread for 27,784
    * rays on this project's machine, which held every slider step while the learner edited.
    * null: all rays again, and a screen traced with fewer is traced again in full.
@@ -217,7 +221,7 @@ export class ScreenTracer {
       const budget = (this.startedWith = this.budget);
       const settled = budget === null && this.budgeted;
       // Request sizes, in screen order: the settled screen's slices, or blocks of PIXELS_PER_REQUEST.
-      const sizes = settled ? settledSlices(scene, this.latest, PIXELS_PER_REQUEST) : [];
+      const sizes = settled ? settledSlices(scene, this.counted, PIXELS_PER_REQUEST) : [];
       // Only the settled screen gives way, between slices, to what came after it.
       const overtaken = () => settled && this.pending !== null;
       let next = 0;
@@ -231,7 +235,7 @@ export class ScreenTracer {
           const first = next;
           const count = Math.min(sizes.shift() ?? PIXELS_PER_REQUEST, traces.length - first);
           next += count;
-          const share = budget && { rays: Math.ceil((budget.rays * count) / traces.length), keepPixel: budget.keepPixel };
+          const share = budget && { ...budget, rays: Math.ceil((budget.rays * count) / traces.length) };
           for (;;) {
             try {
               const block = await this.pool.tracePixels(first, count, DEFAULT_SEED, share ?? undefined);
@@ -265,6 +269,7 @@ export class ScreenTracer {
     if (this.disposed || update < this.publishedUpdate) return;
     this.publishedUpdate = update;
     this.latest = rays;
+    if (countsEveryRay(rays.traces)) this.counted = rays;
     this.latestInline = inline;
     for (const listener of [...this.listeners]) {
       try {
@@ -281,5 +286,5 @@ export class ScreenTracer {
 }
 
 function sameBudget(a: RayBudget | null, b: RayBudget | null): boolean {
-  return a === b || (a !== null && b !== null && a.rays === b.rays && a.keepPixel === b.keepPixel);
+  return a === b || (a !== null && b !== null && a.rays === b.rays && a.keepPixel === b.keepPixel && a.oneSample === b.oneSample);
 }

@@ -1,5 +1,5 @@
 import type { Scene } from '../scene/scene.ts';
-import { tracedRays } from '../tracer/tree-budget.ts';
+import { countsEveryRay, tracedRays } from '../tracer/tree-budget.ts';
 import { estimateRender } from './render-estimate.ts';
 import type { ScreenRays } from './screen-rays.ts';
 
@@ -16,13 +16,13 @@ export const SLICE_RAYS = 4096;
 /**
  * The sizes, in pixels, of the slices of `scene`'s settled screen, in screen order: as many
  * pixels as stay within SLICE_RAYS (at least one, at most `most`), counted by the rays each
- * pixel traced in `previous`, the screen before (a budget sends how many it left out), or,
- * for a screen of another size, by render-estimate.ts's guess for the scene.
+ * pixel traced in `previous`, the last screen whose rays were all counted (a budget sends how
+ * many it left out), or, for a screen of another size, by render-estimate.ts's guess for the scene.
  */
 export function settledSlices(scene: Scene, previous: ScreenRays | null, most: number): number[] {
   const [columns, rows] = scene.camera.pixels;
   const pixels = columns * rows;
-  const counted = previous !== null && previous.columns === columns && previous.rows === rows;
+  const counted = previous !== null && previous.columns === columns && previous.rows === rows && countsEveryRay(previous.traces);
   const guess = estimateRender(scene, 1, 1).raysPerPixel;
   const sizes: number[] = [];
   let size = 0;

@@ -69,6 +69,12 @@ export interface PixelTrace {
   rays: RayNode[];
   /** Rays traced for the pixel, when a budget sent fewer of them in `rays` (tree-budget.ts). */
   traced?: number;
+  /**
+   * The one supersample traced, when the lab traced a heavy screen's pixel from it alone while
+   * the learner edits (trace-within-budget.ts): the colour is that sample's and `rays` some of
+   * its trees; the rays of the other samples were neither traced nor counted.
+   */
+  onlySample?: number;
 }
 
 /** Ray counts by kind, for `rt render --stats` and the benchmark. */

@@ -55,6 +55,7 @@ const times = new Float64Array(LIMITS.timeSamples[1]);
  * In path mode the pixel is the mean of its paths (render-path-pixel.ts); its ray tree is
  * not recorded here (a pixel's paths are: tracePaths).
  * @param s samples per side; the scene's supersampling (path mode: its pathSamples) unless a preview asks for 1 (path mode: s² paths)
+ * @param onlySample one of Whitted mode's s × s samples traced alone: the colour is that sample's, the tree has only its rays (trace-within-budget.ts)
  */
 export function renderPixel(
   scene: TracerScene,
@@ -66,6 +67,7 @@ export function renderPixel(
   out: Vector3,
   tree: PixelRecording | null,
   samplesPerPixel?: number,
+  onlySample?: number,
 ): Vector3 {
   if (scene.settings.integrator === 'path') return renderPathPixel(scene, x, y, width, height, seed, out, null, samplesPerPixel);
   // Whitted mode's samples are a square s × s.
@@ -84,8 +86,10 @@ export function renderPixel(
   // More than one ray per sample: the root is the pinhole ray, the rays are its children.
   const nested = lensRays * k > 1;
   const weight = 1 / (lensRays * k);
+  const firstSample = onlySample ?? 0;
+  const endSample = onlySample === undefined ? samples : onlySample + 1;
   out.set(0, 0, 0);
-  for (let sample = 0; sample < samples; sample++) {
+  for (let sample = firstSample; sample < endSample; sample++) {
     samplePosition(samplePattern, s, sample, x, y, seed, position);
     camera.direction(x + position[0], y + position[1], width, height, direction);
     integrator.startPixelSample(seed, x, y, sample);
@@ -125,5 +129,5 @@ export function renderPixel(
     tree?.sampleDone(sampleColor);
     out.add(sampleColor);
   }
-  return out.divideScalar(samples);
+  return out.divideScalar(endSample - firstSample);
 }

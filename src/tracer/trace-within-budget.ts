@@ -22,6 +22,13 @@ import { keptTrees } from './tree-budget.ts';
  * trees (about 1 in 70 with those settings), and records them. Every random number is keyed by its pixel
  * sample (estimator.ts) and a recorded tree's shadow rays find the nearest blocker
  * whatever was traced before (shadow-tester.ts), so a tree comes out the same in either pass.
+ *
+ * `oneSample` (a screen known to be heavy, while the learner edits): every pixel but
+ * `keepPixel` is traced with one of its supersamples only (middleSample), its colour that
+ * sample's, and the rule chooses among that sample's trees; its other samples are neither
+ * traced nor counted (PixelTrace.onlySample). Counting every ray only to leave nearly all of
+ * them out kept a core busy for the whole of a drag (docs/benchmark-log.md, issue 38). Path
+ * mode records no trees and is traced whole.
  */
 export function tracePixelsWithinBudget(
   scene: TracerScene,
@@ -30,15 +37,18 @@ export function tracePixelsWithinBudget(
   seed: number,
   budget: number,
   keepPixel: number | null,
+  oneSample = false,
 ): PixelTrace[] {
   const [width, height] = scene.source.camera.pixels;
   const at = (i: number): [number, number] => [(first + i) % width, Math.floor((first + i) / width)];
+  const sampled = oneSample && scene.settings.integrator !== 'path';
+  const only = (i: number): number | undefined => (sampled && i !== keepPixel ? middleSample(scene.settings.supersampling) : undefined);
   const tally = new TreeTally();
   const colors: [number, number, number][] = [];
   const color = new Vector3();
   for (let i = 0; i < count; i++) {
     tally.pixelNow = i;
-    renderPixel(scene, ...at(i), width, height, seed, color, tally);
+    renderPixel(scene, ...at(i), width, height, seed, color, tally, undefined, only(i));
     colors.push([Math.fround(color.x), Math.fround(color.y), Math.fround(color.z)]);
   }
   const keep = keptTrees(tally, budget, keepPixel);
@@ -59,14 +69,22 @@ export function tracePixelsWithinBudget(
     const trace: PixelTrace = { pixel: at(i), color: colors[i], rays: [] };
     if (sent[i] > 0) {
       const chosen = new ChosenTrees(tally, keep, firstTree[i]);
-      renderPixel(scene, ...at(i), width, height, seed, color, chosen);
+      renderPixel(scene, ...at(i), width, height, seed, color, chosen, undefined, only(i));
       assignContributions(chosen.roots, chosen.weights, chosen.unclampedSums, rootShare);
       trace.rays = chosen.roots;
     }
-    if (sent[i] < traced[i]) trace.traced = traced[i];
+    const sample = only(i);
+    // A pixel traced in part is not counted: its other samples' rays are unknown.
+    if (sample !== undefined) trace.onlySample = sample;
+    else if (sent[i] < traced[i]) trace.traced = traced[i];
     traces[i] = trace;
   }
   return traces;
+}
+
+/** The sample at the middle of a pixel's s × s grid (row by row), which oneSample traces. */
+export function middleSample(s: number): number {
+  return Math.floor(s / 2) * s + Math.floor(s / 2);
 }
 
 const carriedColor = new Vector3();

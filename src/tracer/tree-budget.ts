@@ -83,7 +83,12 @@ export function keptTrees(trees: BudgetTrees, budget: number, keepPixel: number 
   return keep;
 }
 
-/** Rays in the trees, with those a budget left out (PixelTrace.traced). */
+/** Whether every pixel of `traces` was traced whole, so tracedRays counts all of their rays (PixelTrace.onlySample). */
+export function countsEveryRay(traces: readonly PixelTrace[]): boolean {
+  return traces.every((trace) => trace.onlySample === undefined);
+}
+
+/** Rays in the trees, with those a budget left out (PixelTrace.traced); a pixel traced from one sample counts only its rays sent. */
 export function tracedRays(traces: readonly PixelTrace[]): number {
   let rays = 0;
   for (const trace of traces) rays += trace.traced ?? countRays(trace.rays);

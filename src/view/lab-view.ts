@@ -468,7 +468,7 @@ export class LabView {
   private drawn(): void {
     this.probes.frameDrawn(this.store.state.scene, this.screenRays?.scene ?? null);
     const thinning = this.drawing.rayLayer?.thinning ?? null;
-    if (thinning?.shown !== this.drawnThinning?.shown || thinning?.of !== this.drawnThinning?.of) {
+    if (thinning?.shown !== this.drawnThinning?.shown || thinning?.of !== this.drawnThinning?.of || thinning?.oneSample !== this.drawnThinning?.oneSample) {
       this.drawnThinning = thinning;
       this.emit('thinning', thinning);
     }

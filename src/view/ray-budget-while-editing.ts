@@ -1,6 +1,6 @@
 import { type BurstTimer, browserTimer } from './burst-resolution.ts';
 import type { ScreenRays } from '../render/screen-rays.ts';
-import { editBudgetFor } from './ray-budget.ts';
+import { editBudgetFor, tracesOneSample } from './ray-budget.ts';
 
 /**
  * How long after the last settled edit (a slider let go, a key pressed, a value typed) all
@@ -47,6 +47,11 @@ export class RayBudgetWhileEditing {
   /** The budget in force now, or null: all rays are drawn. */
   get budget(): number | null {
     return this.editing ? this.editBudget : null;
+  }
+
+  /** Whether the worker traces each pixel from one sample under the budget in force (ray-budget.ts). */
+  get oneSample(): boolean {
+    return this.editing && tracesOneSample(this.editBudget);
   }
 
   /** The scene or the ray options were changed now; `live` while the learner still drags the value. */

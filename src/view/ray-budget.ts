@@ -8,7 +8,7 @@
  * kind kept); once the edits stop, all of them (RayBudgetWhileEditing).
  */
 import type { ScreenRays } from '../render/screen-rays.ts';
-import { type BudgetTrees, keptTrees, tracedRays } from '../tracer/tree-budget.ts';
+import { type BudgetTrees, countsEveryRay, keptTrees, tracedRays } from '../tracer/tree-budget.ts';
 import type { FlatRays } from './flat-rays.ts';
 import { RAY_COLOR_KEYS } from './ray-palette.ts';
 import type { DrawnRays } from './ray-visibility.ts';
@@ -33,15 +33,34 @@ export const EDIT_RAY_BUDGET = 1200;
  */
 export const HEAVY_EDIT_RAYS = 400;
 
-/** How many rays `screen` is drawn with while the learner edits: all of a screen within EDIT_RAY_BUDGET, else HEAVY_EDIT_RAYS. */
+/**
+ * How many rays `screen` is drawn with while the learner edits: all of a screen within
+ * EDIT_RAY_BUDGET, else HEAVY_EDIT_RAYS. A screen traced from one sample per pixel was
+ * traced so because it was heavy (tracesOneSample).
+ */
 export function editBudgetFor(screen: ScreenRays | null): number {
-  return screen !== null && tracedRaysOf(screen) > EDIT_RAY_BUDGET ? HEAVY_EDIT_RAYS : EDIT_RAY_BUDGET;
+  return screen !== null && (!countsEveryRay(screen.traces) || tracedRaysOf(screen) > EDIT_RAY_BUDGET) ? HEAVY_EDIT_RAYS : EDIT_RAY_BUDGET;
 }
 
-/** How many rays are drawn (`shown`) of how many were traced (`of`) while a budget leaves some out. */
+/**
+ * Whether the worker traces each pixel from one of its samples, uncounted, under `budget`
+ * (workers/protocol.ts, RayBudget): for a heavy screen, where counting every ray only to
+ * draw HEAVY_EDIT_RAYS of them kept a core busy for the whole of a drag (docs/benchmark-log.md,
+ * issue 38). A lighter screen is traced whole and counted, as the levels' are.
+ */
+export function tracesOneSample(budget: number): boolean {
+  return budget === HEAVY_EDIT_RAYS;
+}
+
+/**
+ * How many rays are drawn (`shown`) of how many were traced (`of`) while a budget leaves some
+ * out; when the screen was traced from one sample per pixel (`oneSample`), nothing counted
+ * its rays, and `of` is the count of the last screen traced whole, before the edit (or null).
+ */
 export interface Thinning {
   shown: number;
-  of: number;
+  of: number | null;
+  oneSample: boolean;
 }
 
 /**
@@ -116,12 +135,25 @@ function flatTrees(flat: FlatRays): BudgetTrees & { start: Int32Array; end: Int3
  * What the view says while a budget leaves rays out: the rays drawn (rays plus cones) of the
  * rays the screen traced, whether the view left them out (`thinnedHere`) or the worker
  * already did (its traces say how many they had). Not while a chosen pixel is drawn alone: all
- * of its rays are kept. null: every ray traced is drawn (as the ray panel's rules say).
+ * of its rays are kept. null: every ray traced is drawn (as the ray panel's rules say). A
+ * screen traced from one sample per pixel is told with `before`'s count, the last screen
+ * whose rays were all counted.
  */
-export function thinningOf(rays: ScreenRays | null, drawn: DrawnRays, thinnedHere: boolean, pixelChosen: boolean): Thinning | null {
-  const sentFewer = !pixelChosen && rays !== null && rays.traces.some((trace) => trace.traced !== undefined);
-  if (!rays || (!thinnedHere && !sentFewer)) return null;
-  return { shown: drawn.rays.count + drawn.cones.count, of: tracedRaysOf(rays) };
+export function thinningOf(
+  rays: ScreenRays | null,
+  drawn: DrawnRays,
+  thinnedHere: boolean,
+  pixelChosen: boolean,
+  before: ScreenRays | null = null,
+): Thinning | null {
+  if (!rays || pixelChosen) return thinnedHere && rays ? thinned(rays, drawn) : null;
+  const shown = drawn.rays.count + drawn.cones.count;
+  if (!countsEveryRay(rays.traces)) return { shown, of: before && countsEveryRay(before.traces) ? tracedRaysOf(before) : null, oneSample: true };
+  return thinnedHere || rays.traces.some((trace) => trace.traced !== undefined) ? thinned(rays, drawn) : null;
+}
+
+function thinned(rays: ScreenRays, drawn: DrawnRays): Thinning {
+  return { shown: drawn.rays.count + drawn.cones.count, of: tracedRaysOf(rays), oneSample: false };
 }
 
 /** The rays `rays` traced, counting those a worker left out. */

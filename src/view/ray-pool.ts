@@ -20,6 +20,7 @@ import { createRayMaterial, FULLY_GROWN, type TravelUniform, type ViewHeightUnif
 import { DrawnRays, type RayStyle, type SegmentList, visibleRays } from './ray-visibility.ts';
 import { keptRays, type Thinning, thinningOf } from './ray-budget.ts';
 import { flattenRays } from './flat-rays.ts';
+import { countsEveryRay } from '../tracer/tree-budget.ts';
 import { RAY_COLOR_KEYS } from './ray-palette.ts';
 import { SamplingLobeMesh } from './sampling-lobe-mesh.ts';
 import { FLOATS_PER_CONE, FLOATS_PER_CYLINDER, InstanceBuffers } from './instance-buffers.ts';
@@ -106,6 +107,8 @@ export class RayPool implements RayLayer {
   private thinned: Thinning | null = null;
   /** The last update's inputs, to draw them again under another budget. */
   private lastUpdate: Parameters<RayPool['update']> | null = null;
+  /** The last screen whose every ray was counted: what the note counts while a screen is traced from one sample per pixel. */
+  private counted: ScreenRays | null = null;
 
   constructor() {
     this.object.name = 'rays';
@@ -196,7 +199,8 @@ export class RayPool implements RayLayer {
     // A chosen pixel is drawn alone and whole, as is the debugger's, which steps through each ray.
     const kept = !focus && !selectedPixel && rays && this.budget !== null ? keptRays(flattenRays(rays), this.budget, null) : null;
     const drawn = focus ? focusedRays(focus, options, this.drawn, this.style) : visibleRays(rays, options, selectedPixel, this.drawn, this.style, true, kept);
-    this.thinned = focus ? null : thinningOf(rays, drawn, kept !== null, selectedPixel !== null);
+    if (rays && countsEveryRay(rays.traces)) this.counted = rays;
+    this.thinned = focus ? null : thinningOf(rays, drawn, kept !== null, selectedPixel !== null, this.counted);
     this.writeCylinders(drawn.rays, focus?.paths ? PATH_DASHES_BY_KEY : DASHES_BY_KEY);
     this.lobe.show(focus?.lobe ?? null);
     this.writeCones(drawn.cones);

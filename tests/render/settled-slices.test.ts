@@ -101,6 +101,24 @@ describe('the settled screen in slices', () => {
     expect(firstSlice).toBe(Math.min(48, Math.floor(SLICE_RAYS / guess)));
   });
 
+  it('sizes the slices by the estimate after a screen traced from one sample per pixel, whose rays nobody counted', () => {
+    const scene = dearScene();
+    const guess = estimateRender(scene, 1, 1).raysPerPixel;
+    const sampled = countedScreen(scene, () => 2267);
+    for (const trace of sampled.traces) {
+      delete trace.traced;
+      trace.onlySample = 5;
+    }
+    expect(settledSlices(scene, sampled, 64)[0]).toBe(Math.min(48, Math.max(1, Math.floor(SLICE_RAYS / guess))));
+    expect(
+      settledSlices(
+        scene,
+        countedScreen(scene, () => 2267),
+        64,
+      )[0],
+    ).toBe(1);
+  });
+
   it('publishes, sliced in a worker, exactly the trees of the screen traced in one go', async () => {
     const scene = dearScene();
     const pool = createNodeRenderPool(1);

@@ -1,8 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
-import type { PixelTrace } from '../../src/tracer/ray-tree.ts';
+import type { PixelTrace, RayNode } from '../../src/tracer/ray-tree.ts';
 import { tracePixels } from '../../src/tracer/trace-pixel.ts';
-import { tracePixelsWithinBudget } from '../../src/tracer/trace-within-budget.ts';
+import { middleSample, tracePixelsWithinBudget } from '../../src/tracer/trace-within-budget.ts';
+import { integratorFor } from '../../src/tracer/render-pixel.ts';
 import { buildTracerScene, type TracerScene } from '../../src/tracer/tracer-scene.ts';
 import { thinTraces, tracedRays } from '../../src/tracer/tree-budget.ts';
 import { effectsScene as effectsSceneWith, type EffectsChanges } from '../support/effects-scene.ts';
@@ -71,6 +72,40 @@ describe('tracePixelsWithinBudget: only the trees a budget keeps are recorded', 
     expect(tracePixelsWithinBudget(scene, 6, 9, 7, 60, 4)).toEqual(recordedThenThinned(scene, 6, 9, 60, 4));
   });
 
+  for (const [name, scene] of [cases[0], cases[1], cases[5]]) {
+    it(`traces each pixel but the chosen one from its middle sample alone, uncounted, with oneSample: ${name}`, () => {
+      const [columns, rows] = scene.source.camera.pixels;
+      const pixels = columns * rows;
+      const s = scene.settings.supersampling;
+      const middle = middleSample(s);
+      const recorded = tracePixels(scene, 0, pixels, 7);
+      const keepPixel = pixels - 1;
+      // The middle sample's trees of every pixel (the chosen pixel's all), as the whole trace recorded them.
+      const ofMiddle = recorded.map((trace, p) => (p === keepPixel ? trace : { ...trace, rays: [trace.rays[middle]] }));
+      const budget = Math.ceil(tracedRays(ofMiddle) / 5);
+      const expected = thinTraces(ofMiddle, budget, keepPixel).map((trace, p): PixelTrace => {
+        if (p === keepPixel) return trace;
+        const { traced: _uncounted, ...rest } = trace;
+        return { ...rest, color: sampleColor(recorded[p].rays[middle]), onlySample: middle };
+      });
+      const sent = tracePixelsWithinBudget(scene, 0, pixels, 7, budget, keepPixel, true);
+      expect(sent).toEqual(expected);
+      expect(sent.filter((trace) => trace.rays.length > 0).length).toBeGreaterThan(1);
+      // Without a chosen pixel: the middle samples once (1/s² of the screen's camera rays), then only the kept trees among them again.
+      const primary = () => integratorFor(scene).stats.primary;
+      const cameraRays = (trace: () => void) => {
+        const start = primary();
+        trace();
+        return primary() - start;
+      };
+      const whole = cameraRays(() => tracePixels(scene, 0, pixels, 7));
+      const fifth = Math.ceil(tracedRays(recorded.map((trace) => ({ ...trace, rays: [trace.rays[middle]] }))) / 5);
+      const sampled = cameraRays(() => tracePixelsWithinBudget(scene, 0, pixels, 7, fifth, null, true));
+      expect(sampled).toBeGreaterThan(whole / s ** 2);
+      expect(sampled).toBeLessThan((2 * whole) / s ** 2);
+    });
+  }
+
   it('sends the colours alone in path mode, where a pixel records no tree', () => {
     const scene = effectsScene({ settings: { integrator: 'path', pathSamples: 2 } });
     const sent = tracePixelsWithinBudget(scene, 0, 20, 7, 10, null);
@@ -78,3 +113,8 @@ describe('tracePixelsWithinBudget: only the trees a budget keeps are recorded', 
     expect(sent.every((trace) => trace.rays.length === 0)).toBe(true);
   });
 });
+
+/** A sample's colour as a pixel traced from it alone has it: what its root carries (its pinhole ray, or its one camera ray), in 32-bit floats. */
+function sampleColor(root: RayNode): [number, number, number] {
+  return [Math.fround(root.color[0]), Math.fround(root.color[1]), Math.fround(root.color[2])];
+}

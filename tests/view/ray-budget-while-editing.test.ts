@@ -78,6 +78,17 @@ describe('RayBudgetWhileEditing', () => {
     expect(applied).toEqual([HEAVY_EDIT_RAYS, null]);
   });
 
+  it('has a heavy screen traced from one sample per pixel while the edits last, a lighter one whole', () => {
+    const heavy = watched(syntheticScreen(3 * EDIT_RAY_BUDGET)).budget;
+    expect(heavy.oneSample).toBe(false);
+    heavy.edited(true);
+    expect(heavy.oneSample).toBe(true);
+    heavy.letGo();
+    const light = watched(syntheticScreen(EDIT_RAY_BUDGET - 5)).budget;
+    light.edited(true);
+    expect(light.oneSample).toBe(false);
+  });
+
   it('leaves nothing pending once disposed', () => {
     const { timer, applied, budget } = watched();
     budget.edited(false);

@@ -14,7 +14,7 @@ import type { RayNode } from '../../src/tracer/ray-tree.ts';
 import { tracePixels } from '../../src/tracer/trace-pixel.ts';
 import { buildTracerScene } from '../../src/tracer/tracer-scene.ts';
 import { thinTraces } from '../../src/tracer/tree-budget.ts';
-import { EDIT_RAY_BUDGET, editBudgetFor, HEAVY_EDIT_RAYS, keptRays, thinningOf } from '../../src/view/ray-budget.ts';
+import { EDIT_RAY_BUDGET, editBudgetFor, HEAVY_EDIT_RAYS, keptRays, thinningOf, tracesOneSample } from '../../src/view/ray-budget.ts';
 import { flattenRays } from '../../src/view/flat-rays.ts';
 import { RAY_COLOR_KEYS } from '../../src/view/ray-palette.ts';
 import { type DrawnRays, type SegmentList, visibleRays } from '../../src/view/ray-visibility.ts';
@@ -47,6 +47,11 @@ const tracedRaysSent = (rays: ScreenRays) => flattenRays(rays).count;
 function drawnWithin(rays: ScreenRays, budget: number, keepPixel: number | null = null) {
   const kept = keptRays(flattenRays(rays), budget, keepPixel);
   return { kept, drawn: visibleRays(rays, DEFAULT_RAY_VIEW, null, undefined, undefined, true, kept) };
+}
+
+/** `rays` as the worker sends it traced from one sample per pixel: each pixel's first root alone, marked. */
+function oneSampleScreen(rays: ScreenRays): ScreenRays {
+  return { ...rays, traces: rays.traces.map((trace) => ({ ...trace, rays: trace.rays.slice(0, 1), onlySample: 0 })) };
 }
 
 /** A pixel sample that casts `lensRays` lens rays from one pinhole ray, each with a light ray. */
@@ -129,6 +134,14 @@ describe('editBudgetFor: how many rays an edited screen is drawn with', () => {
     expect(total(kept)).toBeGreaterThan(HEAVY_EDIT_RAYS - 11);
   });
 
+  it('keeps a screen traced from one sample per pixel heavy, however few rays it sent; only that budget traces so', () => {
+    const sampled = oneSampleScreen(syntheticScreen(EDIT_RAY_BUDGET - 5));
+    expect(tracedRaysSent(sampled)).toBeLessThan(EDIT_RAY_BUDGET);
+    expect(editBudgetFor(sampled)).toBe(HEAVY_EDIT_RAYS);
+    expect(tracesOneSample(HEAVY_EDIT_RAYS)).toBe(true);
+    expect(tracesOneSample(EDIT_RAY_BUDGET)).toBe(false);
+  });
+
   it('counts the rays a worker left out: a screen it thinned stays heavy', () => {
     const heavy = screen(20, 20, () => [lensSample(5)]);
     const sent: ScreenRays = { ...heavy, traces: thinTraces(heavy.traces, HEAVY_EDIT_RAYS, null) };
@@ -142,12 +155,24 @@ describe('thinningOf: what the view says', () => {
     const rays = screen(10, 10, () => [lensSample(5)]);
     expect(thinningOf(rays, drawn(rays), false, false)).toBeNull();
     const { drawn: within } = drawnWithin(rays, 200);
-    expect(thinningOf(rays, within, true, false)).toEqual({ shown: total(within), of: 100 * 11 });
+    expect(thinningOf(rays, within, true, false)).toEqual({ shown: total(within), of: 100 * 11, oneSample: false });
     const sent: ScreenRays = { ...rays, traces: thinTraces(rays.traces, 200, null) };
     const fromSent = drawn(sent);
-    expect(thinningOf(sent, fromSent, false, false)).toEqual({ shown: total(fromSent), of: 100 * 11 });
+    expect(thinningOf(sent, fromSent, false, false)).toEqual({ shown: total(fromSent), of: 100 * 11, oneSample: false });
     // A chosen pixel is drawn alone with all its rays: nothing to say.
     expect(thinningOf(sent, drawn(sent, [0, 0]), false, true)).toBeNull();
+  });
+
+  it('tells a screen traced from one sample per pixel by the count of the last screen traced whole, before the edit', () => {
+    const before = screen(10, 10, () => [lensSample(5), lensSample(5)]);
+    const sampled = oneSampleScreen(before);
+    const shown = drawn(sampled);
+    expect(total(shown)).toBe(100 * 11);
+    expect(thinningOf(sampled, shown, false, false, before)).toEqual({ shown: 100 * 11, of: 100 * 22, oneSample: true });
+    // No screen counted before (or only another traced from one sample): no count at all.
+    expect(thinningOf(sampled, shown, false, false, null)).toEqual({ shown: 100 * 11, of: null, oneSample: true });
+    expect(thinningOf(sampled, shown, false, false, sampled)).toEqual({ shown: 100 * 11, of: null, oneSample: true });
+    expect(thinningOf(sampled, drawn(sampled, [0, 0]), false, true, before)).toBeNull();
   });
 });
 

@@ -276,7 +276,11 @@ describe('RayPool budget', () => {
     pool.setBudget(1000);
     expect(pool.stats.rays).toBeGreaterThan(900);
     expect(pool.stats.rays).toBeLessThanOrEqual(1005);
-    expect(pool.thinning).toEqual({ shown: pool.stats.rays, of: all });
+    expect(pool.thinning).toEqual({ shown: pool.stats.rays, of: all, oneSample: false });
+    // A screen traced from one sample per pixel is told with the count of the screen before it.
+    const sampled = syntheticScreen(300);
+    pool.update({ ...sampled, traces: sampled.traces.map((trace) => ({ ...trace, onlySample: 0 })) }, options(), null);
+    expect(pool.thinning).toEqual({ shown: 300, of: all, oneSample: true });
     // A screen that fits is drawn whole under the budget too.
     pool.update(syntheticScreen(500), options(), null);
     expect(pool.thinning).toBeNull();

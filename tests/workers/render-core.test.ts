@@ -4,6 +4,7 @@ import type { RenderRequest, RenderResponse } from '../../workers/protocol.ts';
 import { defaultScene } from '../../src/scene/scene-defaults.ts';
 import type { RayNode } from '../../src/tracer/ray-tree.ts';
 import { sceneFrom } from '../support/test-scene.ts';
+import { middleSample } from '../../src/tracer/trace-within-budget.ts';
 
 const scene = defaultScene();
 const load = (sceneId: number, file = scene): RenderRequest => ({ type: 'load-scene', sceneId, scene: file, meshes: new Map() });
@@ -105,6 +106,23 @@ describe('the render worker core', () => {
     const sent = thinned.reduce((sum, trace) => sum + count(trace.rays), 0);
     expect(sent).toBeLessThan(full.reduce((sum, trace) => sum + count(trace.rays), 0) / 2);
     for (const i of [0, 1, 3]) expect(thinned[i].traced).toBe(count(full[i].rays));
+  });
+
+  it('traces a block from one sample per pixel when the budget says so, the chosen pixel whole, nothing counted', async () => {
+    const { handle, responses, settle } = worker();
+    const heavy = sceneFrom({ ...scene, camera: { ...scene.camera, aperture: 0.2, lensSamples: 4 }, settings: { ...scene.settings, supersampling: 4 } });
+    handle(load(1, heavy));
+    handle({ type: 'trace-pixels', requestId: 7, first: 4, count: 4, seed: 0 });
+    // Pixel 6 of the screen is the block's third.
+    handle({ type: 'trace-pixels', requestId: 8, first: 4, count: 4, seed: 0, budget: { rays: 200, keepPixel: 6, oneSample: true } });
+    await settle(3);
+    const [full, sampled] = responses.slice(1).map((r) => (r.type === 'pixels-traced' ? r.traces : []));
+    expect(sampled[2]).toEqual(full[2]);
+    for (const i of [0, 1, 3]) {
+      expect(sampled[i].onlySample).toBe(middleSample(4));
+      expect(sampled[i].traced).toBeUndefined();
+      expect(sampled[i].color).toEqual(full[i].rays[middleSample(4)].color!.map(Math.fround));
+    }
   });
 
   it('renders a queued tile with the scene that was current when it arrived', async () => {

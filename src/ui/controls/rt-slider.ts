@@ -36,6 +36,13 @@ export class RtSlider extends ControlElement {
   static override styles = [
     ControlElement.styles,
     css`
+      /* Its own stacking context, so that a drag repaints the slider alone: without it every
+         step (its thumb, its number) painted the whole scrolling column of panels again, a few
+         milliseconds of the page's main thread per step on this project's machine
+         (docs/benchmark-log.md, issue 38). It clips nothing: focus rings still show whole. */
+      :host {
+        isolation: isolate;
+      }
       /* The unit sits inside the field's box, so every field's right edge lines up; the box is
          a label, so a tap anywhere on it (its border, the unit) reaches the field. */
       .number {

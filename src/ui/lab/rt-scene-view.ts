@@ -289,9 +289,18 @@ const NOTE_MS = 4000;
 
 const counts = localNumbers();
 
-/** What the view says while it draws only some of the rays (it changes with every step: not announced). */
-function thinningText({ shown, of }: Thinning): string {
-  return msg(str`Showing ${counts.format(shown)} of ${counts.format(of)} rays while you edit.`);
+/**
+ * What the view says while it draws only some of the rays (it changes with every step: not
+ * announced). A heavy screen traced from one sample per pixel has no count of its own: the
+ * one told is the last screen's traced whole, before the edit.
+ */
+function thinningText({ shown, of, oneSample }: Thinning): string {
+  if (!oneSample && of !== null) return msg(str`Showing ${counts.format(shown)} of ${counts.format(of)} rays while you edit.`);
+  if (of === null)
+    return msg(str`Showing ${counts.format(shown)} rays while you edit, each pixel traced from one of its samples. All come back when you stop.`);
+  return msg(
+    str`Showing ${counts.format(shown)} rays while you edit, each pixel traced from one of its samples (${counts.format(of)} rays before the edit). All come back when you stop.`,
+  );
 }
 
 /** Modes shown as available: all when nothing is selected (choosing a mode first is fine), none for a locked selection. */
