@@ -23,12 +23,7 @@ for bounce in cosine uniform; do
       [ -n "${ROULETTE:-}" ] && [ "$roulette" != "$ROULETTE" ] && continue
       name=$(basename "$scene" .json)-$bounce-light-$light-roulette-$roulette
       variant="$variants/$name.json"
-      node -e '
-        const [from, to, bounce, light, roulette] = process.argv.slice(1);
-        const scene = JSON.parse(require("node:fs").readFileSync(from, "utf8"));
-        Object.assign(scene.settings, { bounceSampling: bounce, lightSampling: light === "true", russianRoulette: roulette === "true" });
-        require("node:fs").writeFileSync(to, JSON.stringify(scene, null, 2));
-      ' "$scene" "$variant" "$bounce" "$light" "$roulette"
+      node bench/strategy-variant.mjs "$scene" "$variant" "$bounce" "$light" "$roulette"
       for pair in $seeds; do
         for s in ${pair%/*} ${pair#*/}; do
           npm run -s rt -- render "$variant" --out "$variants/$name-$s.pfm" --samples "$spp" --seed "$s" --workers 2 --width "$W" --height "$H" >/dev/null

@@ -23,12 +23,7 @@ for bounce in cosine uniform; do
     for roulette in false true; do
       name=$(basename "$scene" .json)-$bounce-light-$light-roulette-$roulette
       variant="$variants/$name.json"
-      node -e '
-        const [from, to, bounce, light, roulette] = process.argv.slice(1);
-        const scene = JSON.parse(require("node:fs").readFileSync(from, "utf8"));
-        Object.assign(scene.settings, { bounceSampling: bounce, lightSampling: light === "true", russianRoulette: roulette === "true" });
-        require("node:fs").writeFileSync(to, JSON.stringify(scene, null, 2));
-      ' "$scene" "$variant" "$bounce" "$light" "$roulette"
+      node bench/strategy-variant.mjs "$scene" "$variant" "$bounce" "$light" "$roulette"
       if [ -z "$first" ]; then
         first=$(key "$variant")
       else

@@ -1,9 +1,9 @@
-import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { chiSquare, upperGamma } from '../../src/quest/code-labs/chi-square.ts';
 import { gradeSamples, sampleTally, type Point } from '../../src/quest/code-labs/code-lab-statistics.ts';
 import { PIXEL_SAMPLES_SIGNIFICANCE, pixelSampleRuns, tracerPixelSamples } from '../../src/quest/code-labs/pixel-samples-lab.ts';
 import { runCases } from '../support/code-lab-run.ts';
+import { sandboxRandomSource, sandboxSeededRandom } from '../support/sandbox-random.ts';
 
 type PixelSamples = (n: number, random: () => number) => unknown;
 
@@ -101,9 +101,8 @@ describe('the jittered samples lab', () => {
 
 describe('the sandbox page’s seeded random', () => {
   // The function as public/code-lab-sandbox.html defines it, run here: the numbers the learner's function gets.
-  const page = readFileSync(new URL('../../public/code-lab-sandbox.html', import.meta.url), 'utf8');
-  const source = /const seededRandom = \(seed\) => \{[\s\S]*?\n {2}\};\n/.exec(page)?.[0] ?? '';
-  const seededRandom = new Function(`${source}; return seededRandom;`)() as (seed: number) => () => number;
+  const source = sandboxRandomSource;
+  const seededRandom = sandboxSeededRandom;
 
   it('gives the same numbers for the same seed, uniform in [0, 1)', () => {
     expect(source).toContain('Math.imul');

@@ -6,6 +6,7 @@ import { labRenderScene } from '../../src/quest/code-labs/lab-render/lab-render-
 import type { AskLearner } from '../../src/quest/code-labs/lab-render/render-passes.ts';
 import { POINT_SETS, renderSamplesWithLearner } from '../../src/quest/code-labs/lab-render/samples-render.ts';
 import { parseLevelJson } from '../../src/quest/level-schema.ts';
+import { sandboxSeededRandom } from '../support/sandbox-random.ts';
 
 /*
  * Rendering with a random function: the samples lab's points per pixel and the cosine lab's
@@ -20,18 +21,6 @@ const levelScene = (id: string) => {
   return parsed.level.scene;
 };
 
-/** The sandbox's random for a seed (Mulberry32, as public/code-lab-sandbox.html makes it). */
-function seededRandom(seed: number): () => number {
-  let state = seed >>> 0;
-  return () => {
-    state = (state + 0x6d2b79f5) >>> 0;
-    let z = state;
-    z = Math.imul(z ^ (z >>> 15), z | 1);
-    z ^= z + Math.imul(z ^ (z >>> 7), z | 61);
-    return ((z ^ (z >>> 14)) >>> 0) / 4294967296;
-  };
-}
-
 /** The learner's function behind a sandbox: each call on copies of its arguments, a { seededRandom } made into a random; the batches counted. */
 function sandboxFor(learner: (...args: never[]) => unknown) {
   const batches: number[] = [];
@@ -40,7 +29,7 @@ function sandboxFor(learner: (...args: never[]) => unknown) {
     const outcomes = calls.map((args): LabOutcome => {
       try {
         const made = structuredClone(args).map((arg) =>
-          typeof arg === 'object' && arg !== null && 'seededRandom' in arg ? seededRandom(arg.seededRandom as number) : arg,
+          typeof arg === 'object' && arg !== null && 'seededRandom' in arg ? sandboxSeededRandom(arg.seededRandom as number) : arg,
         );
         return { returned: structuredClone(learner(...(made as never[]))) };
       } catch (error) {
