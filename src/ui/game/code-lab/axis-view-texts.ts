@@ -34,5 +34,5 @@ export const axisViewTitle = () => msg('Rays straight along an axis');
 /** Why the second view is there: the level's camera has no ray with a zero component. */
 export const axisViewWhy = () =>
   msg(
-    'The same scene from straight above. Every ray goes straight down, along −y: direction.x and direction.z are exactly 0, so each ray is parallel to the x slab and to the z slab. None of the level camera’s rays has a component of exactly 0, so only this view shows how your function treats a ray parallel to a slab.',
+    'The same scene from straight above. Every ray goes straight down, along −y: direction.x and direction.z are exactly 0, so each ray is parallel to the x slab and to the z slab. None of the level camera’s rays has a component of exactly 0, so only this view shows how your function treats a ray parallel to a slab (not one exactly in a face’s plane: only Run tests checks that).',
   );

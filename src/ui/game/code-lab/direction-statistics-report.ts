@@ -53,7 +53,7 @@ function failureText(failure: DirectionFailure, runs: readonly DirectionRun[], s
       return msg(str`${where}: got ${labValue(failure.got)}, where a direction vec(x, y, z) of three numbers was expected.`);
     case 'not-unit':
       return msg(
-        str`${where}: got ${labValue(failure.direction)} of length ${labNumber(failure.length, 6)}, where a direction of length 1 was expected. Normalize it, or check that the height is √(1 − r²).`,
+        str`${where}: got ${labValue(failure.direction)} of length ${labNumber(failure.length, 12)}, where a direction of length 1 was expected. Normalize it, or check that the height is √(1 − r²).`,
       );
     case 'below-surface':
       return msg(

@@ -6,8 +6,10 @@ import { labRenderScene } from '../../../quest/code-labs/lab-render/lab-render-s
 import { pictureDifference } from '../../../quest/code-labs/lab-render/picture-difference.ts';
 import { renderSamplesWithLearner, SAMPLES_PER_PIXEL } from '../../../quest/code-labs/lab-render/samples-render.ts';
 import type { Scene } from '../../../scene/scene.ts';
+import { fieldNumber } from '../../../i18n/number-format.ts';
 import { toRgba8 } from '../../../tracer/quantize.ts';
 import { askSandbox, LAB_RENDER_HEIGHT, LAB_RENDER_WIDTH, noAnswers, renderedPictures, tooManyPasses, type LabRenderState } from './lab-render-pictures.ts';
+import { labNumber, labValue } from './lab-numbers.ts';
 import type { LabSandbox } from './lab-sandbox.ts';
 
 /** The labs of a random function that render with it: their pictures differ in noise even when the function is right. */
@@ -36,7 +38,7 @@ export async function renderRandomLabPictures(goal: CodeGoal, lab: RandomRenderL
     const mine = bytes(result.mine);
     const reference = bytes(result.reference);
     const caption = msg(
-      'Compare the edges: with one random point in each of the 4 × 4 cells they are as smooth as the tracer’s (only the noise differs), points clumped together or not one per cell make them rougher and more stair-stepped, and points outside the pixel blur or shift them.',
+      'Compare the edges: with one random point in each of the 4 × 4 cells they are as smooth as the tracer’s (only the noise differs); points clumped together make them jagged, random points that are not one per cell make them noisier, and points outside the pixel blur or shift them.',
     );
     return {
       kind: 'rendered',
@@ -63,15 +65,20 @@ function cosinePictures(result: CosineRenderResult, scene: Scene, size: number):
       const mine = meanBrightness(result.mine, settings.exposure);
       const reference = meanBrightness(result.reference, settings.exposure);
       const ratio = mine / reference - 1;
-      const percent = Math.round(Math.abs(ratio) * 100);
-      const [mineText, referenceText] = [mine.toFixed(3), reference.toFixed(3)];
+      // One decimal, so that a difference just inside the noise band and one just outside it do not print alike.
+      const percent = fieldNumber(Math.abs(ratio) * 100, 1);
+      const [mineText, referenceText] = [fieldNumber(mine, 3), fieldNumber(reference, 3)];
       const brightness = msg(str`Mean brightness: your picture ${mineText}, the tracer’s ${referenceText}.`);
       const close = Math.abs(ratio) <= NOISE_RATIO;
       const verdict = close
         ? msg(str`They lie ${percent} % apart: as close as two noisy renders of the same density come.`)
         : ratio < 0
-          ? msg(str`Yours is ${percent} % darker, more than the noise explains: do your directions come with density cos θ / π?`)
-          : msg(str`Yours is ${percent} % brighter, more than the noise explains: do your directions come with density cos θ / π?`);
+          ? msg(
+              str`Yours is ${percent} % darker, more than the noise explains. This render weighs each of your directions by the albedo alone, which is right only for the density cos θ / π: do your directions have that density?`,
+            )
+          : msg(
+              str`Yours is ${percent} % brighter, more than the noise explains. This render weighs each of your directions by the albedo alone, which is right only for the density cos θ / π: do your directions have that density?`,
+            );
       const bytes = (rgb: Float32Array) => toRgba8(rgb, size, size, settings);
       return {
         kind: 'rendered',
@@ -82,9 +89,6 @@ function cosinePictures(result: CosineRenderResult, scene: Scene, size: number):
     }
   }
 }
-
-const numberText = (value: number) => String(Number(value.toPrecision(6)));
-const vectorText = ({ x, y, z }: { x: number; y: number; z: number }) => `(${numberText(x)}, ${numberText(y)}, ${numberText(z)})`;
 
 function pointSetFailureText(call: number, failure: SampleFailure): string {
   const n = SAMPLES_PER_PIXEL;
@@ -101,11 +105,12 @@ function pointSetFailureText(call: number, failure: SampleFailure): string {
 }
 
 function directionFailureText(result: Extract<CosineRenderResult, { kind: 'bad-answer' }>): string {
-  const normal = vectorText(result.normal);
+  const normal = labValue(result.normal);
   const problem = result.problem;
   if (problem.kind === 'not-unit') {
-    const direction = vectorText(problem.direction);
-    const length = numberText(problem.length);
+    const direction = labValue(problem.direction);
+    // 12 digits: the check allows 1e-9, and a length off by less than 5e-7 would print as 1 to 6 digits.
+    const length = labNumber(problem.length, 12);
     return msg(str`The render stopped: for the normal ${normal} your function returned ${direction}, of length ${length}. A direction must have length 1.`);
   }
   return problem.threw === null
