@@ -193,8 +193,8 @@ describe('LabServices: the lab wired apart from any page', () => {
 
     store.dispatch({ type: 'material.changed', id: 'red-ball', changes: { shininess: 80 } }, { live: true });
     await vi.advanceTimersByTimeAsync(1);
-    // More rays than the edit budget: held to the heavy screen's fewer.
-    expect(screenPool.budgets.slice(asked)).toEqual([{ rays: HEAVY_EDIT_RAYS, keepPixel: null }]);
+    // More rays than the edit budget: held to the heavy screen's fewer, each pixel traced from one of its samples.
+    expect(screenPool.budgets.slice(asked)).toEqual([{ rays: HEAVY_EDIT_RAYS, keepPixel: null, oneSample: true }]);
     expect(services.drawn.rays).toBeLessThanOrEqual(HEAVY_EDIT_RAYS + 50);
     expect(services.drawn.rays).toBeGreaterThan(HEAVY_EDIT_RAYS / 2);
     expect(calls).toContain('coarse true');
