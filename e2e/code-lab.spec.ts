@@ -148,3 +148,30 @@ test('samples that are not stratified fail on a run, drawn as the pixel with its
   expect(covered, 'CSS pixels the pixel and its points cover on the canvas').toBeGreaterThan(5000);
   expect(errors).toEqual([]);
 });
+
+// Memory without end: arrays of a million numbers each, kept, until the time limit or the worker's heap ends it.
+const HOARDER = `function hitSphere() {
+  const kept = [];
+  while (true) kept.push(new Array(1e6).fill(kept.length));
+}`;
+
+test('code that allocates without end is stopped, the page answering and the stored progress kept', async ({ page }) => {
+  const errors = collectErrors(page);
+  const lab = await openCodeTask(page, progressFile(['01-introduction']), LEVEL, 'code-hit-sphere');
+  const run = lab.getByRole('button', { name: 'Run tests' });
+  const result = lab.getByRole('status');
+
+  await typeCode(page, HOARDER);
+  await run.click();
+  // The page answers while the worker fills its heap.
+  expect(await page.evaluate(() => document.title.length)).toBeGreaterThan(0);
+  // Either the time limit removes the frame, or the worker's heap runs out first and the run says it could not go on.
+  await expect(result).toContainText(/Your function did not return within 2 s on case 1\.|Your code could not run: /, { timeout: 30_000 });
+  expect(await page.evaluate(() => localStorage.getItem('rtq.progress'))).toContain('01-introduction');
+
+  // The next run gets a new sandbox, and a correct function passes.
+  await typeCode(page, CORRECT);
+  await run.click();
+  await expect(result).toContainText('306 of 306 cases pass.');
+  expect(errors).toEqual([]);
+});
