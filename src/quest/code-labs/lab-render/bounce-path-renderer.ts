@@ -14,7 +14,8 @@ export type Bounce = (normal: Vec3, random: () => number) => Vec3;
 /**
  * A path render made for the cosine-bounce lab: Kajiya's path tracing as the tracer's path
  * mode does it (path-integrator.ts: pbrt-v4's SimplePathIntegrator, §13.3, with light
- * sampling at each diffuse vertex, §13.4), on diffuse surfaces only, with every bounce's
+ * sampling at each diffuse vertex, §13.4, when the scene asks for it; the cosine lab turns it
+ * off, cosine-render.ts), on diffuse surfaces only, with every bounce's
  * direction taken from `bounce` and weighted by the albedo alone: Lambert's f·cos θ / pdf
  * is the albedo exactly when the direction comes with density cos θ / π, the lab's contract.
  * A direction that does not come with that density is weighted as if it did, so the picture's
