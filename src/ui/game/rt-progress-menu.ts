@@ -7,7 +7,6 @@ import type { Locale } from '../../quest/localized-text.ts';
 import { damagedSavesList, damagedSavesStyles } from './damaged-saves-list.ts';
 import { askToConfirm, confirmDialog, confirmDialogStyles } from './confirm-dialog.ts';
 import { fire, gameStyles } from './game-styles.ts';
-import '../controls/rt-offline-status.ts';
 
 /** The detail of `progress-command`. */
 export type ProgressCommand =

@@ -20,7 +20,6 @@ import './panels/rt-ray-panel.ts';
 import './panels/rt-scene-list.ts';
 import './panels/rt-tracer-panel.ts';
 import './rt-guide-ring.ts';
-import './rt-ray-tooltip.ts';
 import './rt-scene-view.ts';
 import './rt-screen-preview.ts';
 
@@ -54,8 +53,9 @@ export function withRenderWindow(host: { requestUpdate(): void }, then: () => un
 
 /**
  * Parts the first screen never shows: the closing survey, the concept test, the end of an
- * assignment, the Menu's hand-in buttons and withdrawal, and the render window's side-by-side
- * comparison. They load once the lab is on
+ * assignment, the Menu's hand-in buttons, withdrawal and line about the offline copy, the
+ * tooltip of a ray pointed at in the 3D view (whose code loads after the first screen too),
+ * and the render window's side-by-side comparison. They load once the lab is on
  * the page, and the lab renders again as each is defined (the survey waits for its element:
  * survey-page.ts); one that cannot be loaded is said in the console and left out.
  */
@@ -63,6 +63,8 @@ const AFTER_FIRST_SCREEN = [
   () => import('../classroom/rt-survey-page.ts'),
   () => import('../classroom/rt-concept-test.ts'),
   () => import('../game/rt-withdraw.ts'),
+  () => import('../controls/rt-offline-status.ts'),
+  () => import('./rt-ray-tooltip.ts'),
   () => import('../game/rt-assignment-done.ts'),
   () => import('../classroom/rt-export-menu.ts'),
   () => import('./render-window/rt-image-compare.ts'),

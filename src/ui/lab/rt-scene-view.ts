@@ -6,12 +6,10 @@ import type { Store } from '../../lab-state/store.ts';
 import { GIZMO_MODES, gizmoModesFor, type GizmoMode } from '../../view/gizmo-modes.ts';
 import type { LabView, RayHoverDetail } from '../../view/lab-view.ts';
 import type { Thinning } from '../../view/ray-budget.ts';
-import { localNumbers } from '../../i18n/number-format.ts';
 import { lightsCounted, objectsCounted } from '../../i18n/counted.ts';
 import type { ViewCommand } from '../../view/view-commands.ts';
 import { LazyModule } from '../../util/lazy-module.ts';
 import '../controls/rt-load-problem.ts';
-import './rt-help-panel.ts';
 import { GuideHostController } from './guide-host.ts';
 import { consumeStore } from './store-context.ts';
 import { itemName, shownName } from './scene-names.ts';
@@ -19,8 +17,14 @@ import './rt-view-toolbar.ts';
 import { guideIds } from '../../quest/lab-controls.ts';
 import { isLocked, type MovableItems } from '../../quest/movable-items.ts';
 
-/** The 3D view's code (three.js), loaded after the lab's first render, with a few tries. */
-const labViewCode = new LazyModule(() => import('../../view/lab-view.ts'));
+/**
+ * The 3D view's code (three.js), loaded after the lab's first render, with a few tries; with
+ * it, two parts of the view the first screen can do without, so that their texts are not in
+ * its load either: the help dialog of the view's keys and gestures (closed until "?" or Help;
+ * opened before its code is there, it opens when that arrives) and the note while the view
+ * draws only some of the rays (ray-thinning-text.ts).
+ */
+const labViewCode = new LazyModule(() => Promise.all([import('../../view/lab-view.ts'), import('./ray-thinning-text.ts'), import('./rt-help-panel.ts')]));
 
 /**
  * @summary The lab's 3D view: a canvas filling the element's box, drawn by a LabView
@@ -128,6 +132,8 @@ export class RtSceneView extends LocalizedElement {
   declare private thinning: Thinning | null;
   private noteTimer: ReturnType<typeof setTimeout> | undefined;
   private view: LabView | null = null;
+  /** The words of `thinning` (ray-thinning-text.ts), loaded with the view's code. */
+  private thinningText: ((thinning: Thinning) => string) | null = null;
   /** The store a view is being made for while its code loads. */
   private loadingFor: Store | null = null;
   private unsubscribe: (() => void) | null = null;
@@ -204,7 +210,7 @@ export class RtSceneView extends LocalizedElement {
         @keydown=${this.onToolbarKey}
       ></rt-view-toolbar>
       <p class="note" role="status">${this.note}</p>
-      <p class="note thinning" data-testid="ray-thinning">${this.thinning ? thinningText(this.thinning) : ''}</p>
+      <p class="note thinning" data-testid="ray-thinning">${this.thinning && this.thinningText ? this.thinningText(this.thinning) : ''}</p>
       <rt-help-panel ?open=${this.helpOpen} @help-closed=${() => (this.helpOpen = false)}></rt-help-panel>
     `;
   }
@@ -221,9 +227,9 @@ export class RtSceneView extends LocalizedElement {
     const canvas = this.renderRoot.querySelector('canvas');
     if (!canvas) return;
     this.loadingFor = store;
-    let LabView: typeof import('../../view/lab-view.ts').LabView;
+    let modules;
     try {
-      ({ LabView } = await labViewCode.load());
+      modules = await labViewCode.load();
     } catch {
       this.viewProblem = labViewCode.problem;
       return;
@@ -232,6 +238,8 @@ export class RtSceneView extends LocalizedElement {
     }
     // The element may have left the page, or got another store, while the code loaded.
     if (this.view || !this.isConnected || this.store !== store) return;
+    const [{ LabView }, { thinningText }] = modules;
+    this.thinningText = thinningText;
     const view = new LabView(canvas, store);
     this.view = view;
     // The level may have set its limits while the code loaded.
@@ -286,22 +294,6 @@ export class RtSceneView extends LocalizedElement {
 
 /** How long a key's note stays up: long enough to read twice, gone before it clutters the view. */
 const NOTE_MS = 4000;
-
-const counts = localNumbers();
-
-/**
- * What the view says while it draws only some of the rays (it changes with every step: not
- * announced). A heavy screen traced from one sample per pixel has no count of its own: the
- * one told is the last screen's traced whole, before the edit.
- */
-function thinningText({ shown, of, oneSample }: Thinning): string {
-  if (!oneSample && of !== null) return msg(str`Showing ${counts.format(shown)} of ${counts.format(of)} rays while you edit.`);
-  if (of === null)
-    return msg(str`Showing ${counts.format(shown)} rays while you edit, each pixel traced from one of its samples. All come back when you stop.`);
-  return msg(
-    str`Showing ${counts.format(shown)} rays while you edit, each pixel traced from one of its samples (${counts.format(of)} rays before the edit). All come back when you stop.`,
-  );
-}
 
 /** Modes shown as available: all when nothing is selected (choosing a mode first is fine), none for a locked selection. */
 function modesShown(state: LabState, movable: MovableItems) {

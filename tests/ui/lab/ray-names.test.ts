@@ -13,6 +13,7 @@ import { areaRay, ray } from '../../support/ray-fixtures.ts';
 
 describe('names of rays', () => {
   let names: typeof import('../../../src/ui/lab/ray-names.ts');
+  let traced: typeof import('../../../src/ui/lab/traced-ray-text.ts');
   let debuggerText: typeof import('../../../src/ui/lab/debugger/debugger-text.ts');
   let speak: (locale: 'en' | 'nl') => Promise<void>;
   const base = defaultScene();
@@ -43,6 +44,7 @@ describe('names of rays', () => {
   beforeAll(async () => {
     speak = await standInPage();
     names = await import('../../../src/ui/lab/ray-names.ts');
+    traced = await import('../../../src/ui/lab/traced-ray-text.ts');
     debuggerText = await import('../../../src/ui/lab/debugger/debugger-text.ts');
   });
 
@@ -53,14 +55,14 @@ describe('names of rays', () => {
   it('call both rays toward a light shadow rays, one reaching the light and one blocked, in both languages', async () => {
     expect(names.rayColorKeyName('light')).toBe('Shadow ray — reaches the light');
     expect(names.rayColorKeyName('shadow')).toBe('Shadow ray — blocked');
-    expect(names.rayName(reached)).toBe('Shadow ray — reaches the light');
-    expect(names.rayName(areaRay('area-shadow'))).toBe('Shadow rays to an area light — all blocked (cone)');
+    expect(traced.rayName(reached)).toBe('Shadow ray — reaches the light');
+    expect(traced.rayName(areaRay('area-shadow'))).toBe('Shadow rays to an area light — all blocked (cone)');
     for (const key of ['light', 'shadow'] as const)
       expect(names.rayColorKeyHint(key)).toMatch(/^A shadow ray tests whether anything is between the point and a light\./);
     await speak('nl');
     expect(names.rayColorKeyName('light')).toBe('Schaduwstraal — bereikt de lamp');
     expect(names.rayColorKeyName('shadow')).toBe('Schaduwstraal — geblokkeerd');
-    expect(names.rayName(areaRay('area-light'))).toBe('Schaduwstralen naar een vlaklamp — bereiken hem allemaal (kegel)');
+    expect(traced.rayName(areaRay('area-light'))).toBe('Schaduwstralen naar een vlaklamp — bereiken hem allemaal (kegel)');
     // No "light ray" (lichtstraal) left for a ray toward a light, and one Dutch word for blocked.
     const dutch = RAY_COLOR_KEYS.flatMap((key) => [names.rayColorKeyName(key), names.rayColorKeyHint(key)]).join(' ');
     expect(dutch).not.toMatch(/lichtstra|tegengehouden/i);
@@ -70,24 +72,26 @@ describe('names of rays', () => {
   });
 
   it('name the direction to a light with Shadows off as not tested, never as a ray that reached it', async () => {
-    expect(names.rayName(untested)).toBe('Direction to the light — not tested, Shadows is off');
-    expect(names.rayName(areaRay('area-light', { untested: true }))).toBe('Directions to an area light — not tested, Shadows is off (cone)');
-    expect(names.rayTargetText(untested, 'untested', itemName)).toBe(
+    expect(traced.rayName(untested)).toBe('Direction to the light — not tested, Shadows is off');
+    expect(traced.rayName(areaRay('area-light', { untested: true }))).toBe('Directions to an area light — not tested, Shadows is off (cone)');
+    expect(traced.rayTargetText(untested, 'untested', itemName)).toBe(
       'Not tested: Shadows is off, so no shadow ray was cast and Lamp counts as reaching this point, even through an object.',
     );
-    expect(names.rayTargetText(reached, 'light', itemName)).toBe('Reaches Lamp: nothing is in the way');
-    expect(names.rayTargetText(blocked, 'shadow', itemName)).toBe('Blocked by Ball on its way to Lamp');
+    expect(traced.rayTargetText(reached, 'light', itemName)).toBe('Reaches Lamp: nothing is in the way');
+    expect(traced.rayTargetText(blocked, 'shadow', itemName)).toBe('Blocked by Ball on its way to Lamp');
     await speak('nl');
-    expect(names.rayName(untested)).toBe('Richting naar de lamp — niet getest, Schaduwen staat uit');
-    expect(names.rayTargetText(blocked, 'shadow', itemName)).toBe('Op weg naar Lamp geblokkeerd door Ball');
+    expect(traced.rayName(untested)).toBe('Richting naar de lamp — niet getest, Schaduwen staat uit');
+    expect(traced.rayTargetText(blocked, 'shadow', itemName)).toBe('Op weg naar Lamp geblokkeerd door Ball');
     await speak('en');
   });
 
   it('name the normal drawn at a hit, and what it stands for', async () => {
     const primary = ray('primary', { objectId: 'ball', normal: [0, 1, 0] });
     expect(names.rayColorKeyName('normal')).toBe('Normal');
-    expect(names.rayTargetText(primary, 'normal', itemName)).toBe('The normal at the hit on Ball: straight out of the surface, on the side the ray came from.');
-    expect(names.rayTargetText(primary, 'primary', itemName)).toBe('Hits Ball');
+    expect(traced.rayTargetText(primary, 'normal', itemName)).toBe(
+      'The normal at the hit on Ball: straight out of the surface, on the side the ray came from.',
+    );
+    expect(traced.rayTargetText(primary, 'primary', itemName)).toBe('Hits Ball');
     await speak('nl');
     expect(names.rayColorKeyName('normal')).toBe('Normaal');
     await speak('en');

@@ -6,7 +6,7 @@ import type { DarkReason } from '../../../debugger/why-dark.ts';
 import type { Scene } from '../../../scene/scene.ts';
 import type { RayNode } from '../../../tracer/ray-tree.ts';
 import { localNumbers } from '../../../i18n/number-format.ts';
-import { rayName } from '../ray-names.ts';
+import { rayName } from '../traced-ray-text.ts';
 import { itemName as sceneItemName } from '../scene-names.ts';
 
 const share = localNumbers({ maximumFractionDigits: 2 });
