@@ -59,6 +59,8 @@ export class RtSceneView extends LocalizedElement {
       display: block;
       min-height: 200px;
       overflow: hidden;
+      /* The toolbar's small-view rules (toolbar-small-view.css.ts) ask this box's size. */
+      container-type: size;
       /* Follows the theme (color-scheme on the page, light-dark() as in theme.css). */
       background: var(--rt-view-bg, linear-gradient(180deg, light-dark(#eef1f6, #2b323d) 0%, light-dark(#d3d9e2, #151a21) 100%));
     }

@@ -41,11 +41,14 @@ export class RtViewToolbar extends LocalizedElement {
 
   static override styles = [
     css`
+    /* No box of its own: its bars are placed in the 3D view's box (rt-scene-view, the size
+       container its small-view rules ask). A box as big as the view, drawn over the WebGL
+       canvas, was a layer of its own as big as the view, which the compositor blended anew
+       at every frame: on SwiftShader 8 ms of the GPU process's 39 per frame
+       (docs/benchmark-log.md, issue 38). Each bar is now a layer only as big as itself. */
     :host {
-      position: absolute;
-      inset: 0;
+      display: contents;
       pointer-events: none;
-      container-type: size;
       font-family: var(--rt-font);
       font-size: 0.8125rem;
       color: var(--rt-text);

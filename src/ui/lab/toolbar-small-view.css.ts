@@ -8,7 +8,7 @@ import { visuallyHidden } from '../controls/visually-hidden.css.ts';
  * screen readers and in their tooltips), at the right of the top row, and the gizmo's groups
  * wrap at its left; the orbit, pan and zoom pads fold behind one small button (a four-way
  * arrow), and the view still turns by dragging, pinching, the wheel and the keys. The
- * toolbar is a size container as big as the view; on a wider view it is laid out as before.
+ * 3D view (rt-scene-view) is the size container asked; on a wider view it is laid out as before.
  */
 export const smallViewToolbarStyles = css`
   /* The gizmo's groups (left) wrap among themselves; the camera and help buttons keep to the right. */
