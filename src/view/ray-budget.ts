@@ -26,12 +26,12 @@ export const EDIT_RAY_BUDGET = 1200;
 /**
  * The rays (and cones) drawn per frame while the learner edits a screen that has more than
  * EDIT_RAY_BUDGET: one that must be thinned anyway is thinned to this. A dragged slider asks
- * for a frame every frame, and on SwiftShader the rays were about half of the GPU process's
- * work per frame of such a drag, so the frames fell behind the steps (figures:
- * docs/benchmark-log.md, issue 38). A third as many rays still show every kind and spread
- * over the screen (tracer/tree-budget.ts).
+ * for a frame every frame, and SwiftShader draws each instance of an instanced draw as a draw
+ * of its own, about 33 µs a ray whatever the resolution: 400 rays added 8 ms to a 19 ms frame
+ * of the lab's view, 150 rays 3 ms (docs/benchmark-log.md, issue 38). A few whole trees
+ * still show every kind and spread over the screen (tracer/tree-budget.ts).
  */
-export const HEAVY_EDIT_RAYS = 400;
+export const HEAVY_EDIT_RAYS = 150;
 
 /**
  * How many rays `screen` is drawn with while the learner edits: all of a screen within
