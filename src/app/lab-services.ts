@@ -277,7 +277,7 @@ export class LabServices {
    */
   private afterRaysChanged(): void {
     this.view?.requestRender();
-    this.view?.holdCoarse(this.layers?.rays.thinning != null);
+    this.view?.holdCoarse(this.layers?.rays.thinning ? (this.budget?.budget ?? null) : null);
   }
 
   /**

@@ -17,6 +17,15 @@ export const BURST_GAP_MS = 300;
 export const BURST_SCALE = 0.5;
 
 /**
+ * The share a heavy screen's edits draw at (the rays thinned to HEAVY_EDIT_RAYS, ray-budget.ts):
+ * an eighth of the pixels. With the free lab's largest settings each step of a drag waited
+ * for SwiftShader's frame of the page, the view's part of it included; at this scale the
+ * drag's 95th percentile fell from 89–146 to 68–96 ms (docs/benchmark-log.md, issue 38). It
+ * is visibly coarser, so a lighter screen (every level's) keeps BURST_SCALE.
+ */
+export const HEAVY_BURST_SCALE = 0.35;
+
+/**
  * The 3D view's drawing resolution during a burst of edits, on a CPU rasterizer
  * (SwiftShader, llvmpipe). There a frame of the lab costs 80–105 ms at full size, about half
  * of it per pixel, so a dragged slider's rays reached the screen 0.35–0.5 s after each step.
@@ -27,17 +36,19 @@ export const BURST_SCALE = 0.5;
  * This is the adaptive degradation interactive viewers use (draw coarse while the user moves
  * things, sharp once they stop).
  *
- * While the rays are held to a budget (`hold`, view/ray-budget.ts) the view draws coarse from
- * the first edit and stays so between edits: there a sharp frame of 1,000 rays cost 120–250
- * ms on SwiftShader, and each switch between sharp and coarse waits for the frame before it, so steps a
- * few tenths of a second apart waited 0.2–1.2 s each. Let go, it is drawn sharp at once,
+ * While the rays are held to a budget (`hold`, view/ray-budget.ts) the view draws coarse (at
+ * the scale the hold asks) from the first edit and stays so between edits: there a sharp frame
+ * of 1,000 rays cost 120–250 ms on SwiftShader, and each switch between sharp and coarse waits
+ * for the frame before it, so steps a few tenths of a second apart waited 0.2–1.2 s each. Let go, it is drawn sharp at once,
  * with every ray (one frame).
  */
 export class BurstResolution {
   private lastEdit = -Infinity;
-  private reduced = false;
   private restore: unknown = null;
-  private held = false;
+  /** The scale a hold asks (`hold`), or null: not held. */
+  private held: number | null = null;
+  /** The share of the pixel ratio drawn now (1: full resolution). */
+  private scale = 1;
 
   /** `apply(scale)` redraws the view at `scale` × its pixel ratio (1: full resolution). */
   constructor(
@@ -47,7 +58,7 @@ export class BurstResolution {
 
   /** Whether the view draws at reduced resolution now. */
   get reducing(): boolean {
-    return this.reduced;
+    return this.scale !== 1;
   }
 
   /** The scene was edited now. */
@@ -55,32 +66,25 @@ export class BurstResolution {
     const now = this.timer.now();
     const inBurst = now - this.lastEdit < BURST_GAP_MS;
     this.lastEdit = now;
-    if (inBurst && !this.reduced) {
-      this.reduced = true;
-      this.apply(BURST_SCALE);
-    }
-    if (!this.reduced || this.held) return;
+    if (inBurst && !this.reducing) this.reduce(BURST_SCALE);
+    if (!this.reducing || this.held !== null) return;
     if (this.restore !== null) this.timer.clear(this.restore);
     this.restore = this.timer.set(() => this.settle(), BURST_GAP_MS);
   }
 
   /** Whether the view is held coarse (`hold`). */
   get holding(): boolean {
-    return this.held;
+    return this.held !== null;
   }
 
-  /** Draws coarse until let go (`held` false: then sharp at once). */
-  hold(held: boolean): void {
-    if (held === this.held) return;
-    this.held = held;
+  /** Draws at `scale` × the pixel ratio until let go (`null`: then sharp at once). */
+  hold(scale: number | null): void {
+    if (scale === this.held) return;
+    this.held = scale;
     if (this.restore !== null) this.timer.clear(this.restore);
     this.restore = null;
-    if (held && !this.reduced) {
-      this.reduced = true;
-      this.apply(BURST_SCALE);
-    } else if (!held && this.reduced) {
-      this.settle();
-    }
+    if (scale !== null && scale !== this.scale) this.reduce(scale);
+    else if (scale === null && this.reducing) this.settle();
   }
 
   dispose(): void {
@@ -88,9 +92,14 @@ export class BurstResolution {
     this.restore = null;
   }
 
+  private reduce(scale: number): void {
+    this.scale = scale;
+    this.apply(scale);
+  }
+
   private settle(): void {
     this.restore = null;
-    this.reduced = false;
+    this.scale = 1;
     this.apply(1);
   }
 }

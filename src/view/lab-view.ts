@@ -270,9 +270,9 @@ export class LabView {
     this.drawing.setRayLayer(layer);
   }
 
-  /** On a CPU rasterizer: draws coarse while `thinned` (the rays held to a budget), sharp at once after. */
-  holdCoarse(thinned: boolean): void {
-    this.drawing.holdCoarse(thinned);
+  /** On a CPU rasterizer: draws coarse while the drawn rays are thinned to `budget`, sharp at once after (null). */
+  holdCoarse(budget: number | null): void {
+    this.drawing.holdCoarse(budget);
   }
 
   /** Shows the acceleration boxes (BvhBoxes.object), replacing any before; null removes them. */

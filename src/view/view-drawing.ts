@@ -1,5 +1,6 @@
 import { LinearSRGBColorSpace, type Object3D, PerspectiveCamera, Scene as ThreeScene, Vector2, WebGLRenderer } from 'three';
-import { BurstResolution } from './burst-resolution.ts';
+import { BURST_SCALE, BurstResolution, HEAVY_BURST_SCALE } from './burst-resolution.ts';
+import { tracesOneSample } from './ray-budget.ts';
 import { type Animator, FrameScheduler } from './frame-scheduler.ts';
 import { PiecewiseRays } from './piecewise-rays.ts';
 import type { RayLayer } from './ray-layer.ts';
@@ -165,9 +166,12 @@ export class ViewDrawing {
     this.requestRender();
   }
 
-  /** On a CPU rasterizer: draws coarse while `thinned` (the rays held to a budget), sharp at once after. */
-  holdCoarse(thinned: boolean): void {
-    this.burst?.hold(thinned);
+  /**
+   * On a CPU rasterizer: draws coarse while the drawn rays are thinned to `budget`, coarser for
+   * a heavy screen's budget (tracesOneSample), sharp at once after (null).
+   */
+  holdCoarse(budget: number | null): void {
+    this.burst?.hold(budget === null ? null : tracesOneSample(budget) ? HEAVY_BURST_SCALE : BURST_SCALE);
   }
 
   /** Shows the acceleration boxes (BvhBoxes.object), replacing any before; null removes them. */

@@ -57,7 +57,7 @@ function fakeView(software = false) {
     setBvhLayer: () => void calls.push('bvh-layer'),
     requestRender: () => void calls.push('render'),
     software,
-    holdCoarse: (thinned) => void calls.push(`coarse ${thinned}`),
+    holdCoarse: (budget) => void calls.push(`coarse ${budget}`),
   };
   return { view, calls, rays: () => rays };
 }
@@ -197,14 +197,14 @@ describe('LabServices: the lab wired apart from any page', () => {
     expect(screenPool.budgets.slice(asked)).toEqual([{ rays: HEAVY_EDIT_RAYS, keepPixel: null, oneSample: true }]);
     expect(services.drawn.rays).toBeLessThanOrEqual(HEAVY_EDIT_RAYS + 50);
     expect(services.drawn.rays).toBeGreaterThan(HEAVY_EDIT_RAYS / 2);
-    expect(calls).toContain('coarse true');
+    expect(calls).toContain(`coarse ${HEAVY_EDIT_RAYS}`);
     // The learner lets go (on the value the drag reached: nothing changes); a moment later every ray, traced again, sharp.
     store.dispatch({ type: 'material.changed', id: 'red-ball', changes: { shininess: 80 } });
     await vi.advanceTimersByTimeAsync(SETTLE_MS);
     await vi.advanceTimersByTimeAsync(1);
     expect(screenPool.budgets.at(-1)).toBeUndefined();
     expect(services.drawn.rays).toBe(all);
-    expect(calls.at(-1)).toBe('coarse false');
+    expect(calls.at(-1)).toBe('coarse null');
   });
 
   it('disposes both pools', () => {

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { BURST_GAP_MS, BURST_SCALE, BurstResolution } from '../../src/view/burst-resolution.ts';
+import { BURST_GAP_MS, BURST_SCALE, BurstResolution, HEAVY_BURST_SCALE } from '../../src/view/burst-resolution.ts';
 import { manualTimer } from '../support/manual-timer.ts';
 
 /** A BurstResolution on a manual clock, with the scales it applied. */
@@ -42,7 +42,7 @@ describe('BurstResolution', () => {
   it('draws coarse from the first edit while held, between edits too, and sharp at once when let go', () => {
     const { timer, scales, resolution } = watched();
     resolution.edited();
-    resolution.hold(true);
+    resolution.hold(BURST_SCALE);
     expect(scales).toEqual([BURST_SCALE]);
     expect(resolution.holding).toBe(true);
     for (let step = 0; step < 5; step++) {
@@ -50,7 +50,7 @@ describe('BurstResolution', () => {
       resolution.edited();
     }
     expect(scales).toEqual([BURST_SCALE]);
-    resolution.hold(false);
+    resolution.hold(null);
     expect(scales).toEqual([BURST_SCALE, 1]);
     timer.advance(BURST_GAP_MS * 3);
     expect(scales).toEqual([BURST_SCALE, 1]);
@@ -62,11 +62,31 @@ describe('BurstResolution', () => {
     resolution.edited();
     timer.advance(16);
     resolution.edited();
-    resolution.hold(true);
+    resolution.hold(BURST_SCALE);
     timer.advance(BURST_GAP_MS * 2);
     expect(scales).toEqual([BURST_SCALE]);
-    resolution.hold(false);
+    resolution.hold(null);
     expect(scales).toEqual([BURST_SCALE, 1]);
+  });
+
+  it('holds a heavy screen coarser, from a burst already coarse too, and sharp at once when let go', () => {
+    const { timer, scales, resolution } = watched();
+    resolution.edited();
+    timer.advance(16);
+    resolution.edited();
+    resolution.hold(HEAVY_BURST_SCALE);
+    expect(HEAVY_BURST_SCALE).toBeLessThan(BURST_SCALE);
+    expect(scales).toEqual([BURST_SCALE, HEAVY_BURST_SCALE]);
+    // Edits while held, far apart or close together, leave the scale the hold asked.
+    for (const gap of [16, BURST_GAP_MS * 3, 16]) {
+      timer.advance(gap);
+      resolution.edited();
+      resolution.hold(HEAVY_BURST_SCALE);
+    }
+    expect(scales).toEqual([BURST_SCALE, HEAVY_BURST_SCALE]);
+    resolution.hold(null);
+    expect(scales).toEqual([BURST_SCALE, HEAVY_BURST_SCALE, 1]);
+    expect(resolution.reducing).toBe(false);
   });
 
   it('leaves nothing pending once disposed', () => {
