@@ -26,7 +26,7 @@ for bounce in cosine uniform; do
       node bench/strategy-variant.mjs "$scene" "$variant" "$bounce" "$light" "$roulette"
       for pair in $seeds; do
         for s in ${pair%/*} ${pair#*/}; do
-          npm run -s rt -- render "$variant" --out "$variants/$name-$s.pfm" --samples "$spp" --seed "$s" --workers 2 --width "$W" --height "$H" >/dev/null
+          npm run -s rt -- render "$variant" --out "$variants/$name-$s.pfm" --force --samples "$spp" --seed "$s" --workers 2 --width "$W" --height "$H" >/dev/null
         done
         echo "== $name, seeds $pair ($(uptime | sed 's/.*load average/load average/'))"
         python3 "$anchor/compare.py" --ours "$variants/$name-${pair%/*}.pfm" "$variants/$name-${pair#*/}.pfm" --ref "${ref[@]}" --size "$W" "$H" || true
