@@ -57,6 +57,13 @@ export class ObjectBvh {
   /** Nodes still to visit: a walk from the root holds at most one per level, one from an object's leaf twice that. */
   private readonly stack: Int32Array;
   private readonly starts: WalkStarts;
+  /**
+   * The tree is one leaf (up to ONE_LEAF_UP_TO objects): the ray walks do not test its box.
+   * It holds every object's box, so it only spares the objects' tests to a ray that misses
+   * the whole scene, and in a closed room such as the Cornell box no ray does: there it cost
+   * one slab test more per ray, of eight.
+   */
+  private readonly rootIsLeaf: boolean;
 
   constructor(objects: readonly Intersectable[]) {
     const nodes = Math.max(1, 2 * objects.length - 1);
@@ -99,6 +106,7 @@ export class ObjectBvh {
     if (objects.length > 0) build([...objects]);
     this.items.forEach(({ worldBounds: { min, max } }, i) => this.itemBoxes.set([min.x, min.y, min.z, max.x, max.y, max.z], i * 6));
     this.starts = new WalkStarts(this.link, this.count, this.items);
+    this.rootIsLeaf = this.count[0] > 0;
   }
 
   /** Its objects, in the order of its leaves. */
@@ -149,7 +157,7 @@ export class ObjectBvh {
     while (size > 0) {
       const node = stack[--size];
       // Tested when taken, against the nearest hit so far: farther boxes are skipped.
-      if (!rayMeetsBox(ray, boxes, node * 6, hit.t)) continue;
+      if ((node !== 0 || !this.rootIsLeaf) && !rayMeetsBox(ray, boxes, node * 6, hit.t)) continue;
       const n = count[node];
       if (n > 0) {
         for (let i = link[node], end = i + n; i < end; i++) {
@@ -217,7 +225,7 @@ export class ObjectBvh {
     let size = this.starts.fill(stack, from);
     while (size > 0) {
       const node = stack[--size];
-      if (!rayMeetsBox(ray, boxes, node * 6, tMax)) continue;
+      if ((node !== 0 || !this.rootIsLeaf) && !rayMeetsBox(ray, boxes, node * 6, tMax)) continue;
       const n = count[node];
       if (n > 0) {
         for (let i = link[node], end = i + n; i < end; i++) {
