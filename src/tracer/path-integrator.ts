@@ -82,6 +82,8 @@ export class PathIntegrator implements Estimator<PathRecorder> {
   private readonly added = new Vector3();
   /** The distance to the emitter nearestEmitter last found. */
   private emitterDistance = Infinity;
+  /** The vertex's shape when it is convex and was hit from outside: a ray leaving toward its outer side cannot meet it again. */
+  private leaving: Intersectable | null = null;
 
   constructor(private readonly scene: TracerScene) {
     this.emitterOf = scene.lights.map((light) => (light.type === 'area' ? new AreaEmitter(light) : null));
@@ -149,6 +151,7 @@ export class PathIntegrator implements Estimator<PathRecorder> {
         n.negate();
         ng.negate();
       }
+      this.leaving = shape.convex && entering ? shape : null;
       const material = shape.material;
       let event: PathEvent;
       let pdf: number | null = null;
@@ -293,9 +296,10 @@ export class PathIntegrator implements Estimator<PathRecorder> {
     this.stats.shadow++;
     const far = distance - 2 * epsilon;
     // Any blocker will do, not the nearest (pbrt-v4's Unoccluded, §7.1 and §13.4); the
-    // convex shapes first, as Whitted mode's shadow rays try them.
+    // convex shapes first, as Whitted mode's shadow rays try them. The vertex's own shape is
+    // skipped when the ray leaves its outside (sampleLights only casts toward that side).
     shadowRay.far = far;
-    for (const occluders of this.scene.occluders) if (occluders.firstBlocker(shadowRay, null, null, this.hit.shape) !== null) return false;
+    for (const occluders of this.scene.occluders) if (occluders.firstBlocker(shadowRay, this.leaving, null, this.hit.shape) !== null) return false;
     return this.nearestEmitter(shadowRay, far, emitter) === null;
   }
 
