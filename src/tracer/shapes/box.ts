@@ -29,12 +29,25 @@ export function intersectUnitBox(o: Vector3, d: Vector3, span: UnitSpan): boolea
   return true;
 }
 
-/** The outward normal of the face a point p of the unit cube lies on: the axis it lies farthest out on. */
-export function unitBoxNormal(p: Vector3, out: Vector3): Vector3 {
+/** The outward unit normals of the unit cube's faces, in the order unitBoxFace numbers them. */
+export const UNIT_BOX_FACE_NORMALS: readonly (readonly [number, number, number])[] = [
+  [1, 0, 0],
+  [-1, 0, 0],
+  [0, 1, 0],
+  [0, -1, 0],
+  [0, 0, 1],
+  [0, 0, -1],
+];
+
+/**
+ * The face of the unit cube a point p of its surface lies on, the axis it lies farthest out
+ * on: 0 +x, 1 −x, 2 +y, 3 −y, 4 +z, 5 −z (UNIT_BOX_FACE_NORMALS).
+ */
+export function unitBoxFace(p: Vector3): number {
   const ax = Math.abs(p.x);
   const ay = Math.abs(p.y);
   const az = Math.abs(p.z);
-  if (ax >= ay && ax >= az) return out.set(Math.sign(p.x), 0, 0);
-  if (ay >= az) return out.set(0, Math.sign(p.y), 0);
-  return out.set(0, 0, Math.sign(p.z));
+  if (ax >= ay && ax >= az) return p.x < 0 ? 1 : 0;
+  if (ay >= az) return p.y < 0 ? 3 : 2;
+  return p.z < 0 ? 5 : 4;
 }

@@ -16,6 +16,5 @@ export function intersectUnitPlane(o: Vector3, d: Vector3, span: UnitSpan): bool
   return true;
 }
 
-export function unitPlaneNormal(out: Vector3): Vector3 {
-  return out.set(0, 1, 0);
-}
+/** The unit plane's normal. */
+export const UNIT_PLANE_NORMAL: readonly [number, number, number] = [0, 1, 0];

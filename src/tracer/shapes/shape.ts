@@ -3,11 +3,11 @@ import type { Material, ShapeKind } from '../../scene/scene.ts';
 import type { Hit } from '../hit.ts';
 import type { Ray } from '../ray.ts';
 import { rayMeetsBox } from '../ray-box.ts';
-import { intersectUnitBox, unitBoxNormal } from './box.ts';
+import { intersectUnitBox, UNIT_BOX_FACE_NORMALS, unitBoxFace } from './box.ts';
 import { intersectUnitCylinder, unitCylinderNormal } from './cylinder.ts';
 import { intersectMesh, type MeshAccel, meshNormals } from './mesh-accel.ts';
 import { meshOccludes } from './mesh-occlusion.ts';
-import { intersectUnitPlane, unitPlaneNormal } from './plane.ts';
+import { intersectUnitPlane, UNIT_PLANE_NORMAL } from './plane.ts';
 import { intersectUnitSphere, unitSphereNormal } from './sphere.ts';
 import { FOUND, REACH, unitSpan } from './unit-span.ts';
 
@@ -45,6 +45,12 @@ export class Shape {
   // worldBounds as min x, y, z then max x, y, z: the slab test reads it per ray.
   private readonly bounds = new Float64Array(6);
   private readonly normalToWorld = new Matrix3();
+  /**
+   * A box's six faces' world normals (in unitBoxFace's order) or a plane's one, transformed
+   * and normalized once, as surface() did per hit: the same numbers to the bit, without a
+   * 3×3 product and a square root per hit. Empty for the curved kinds and meshes.
+   */
+  private readonly faceNormals: readonly Vector3[];
   /** The object-space offset per unit of time: world-to-object applied to −velocity; null if it stands still. */
   private readonly localVelocity: Vector3 | null;
 
@@ -62,6 +68,8 @@ export class Shape {
     const e = new Matrix4().copy(objectToWorld).invert().elements; // column-major
     this.m.set([e[0], e[4], e[8], e[12], e[1], e[5], e[9], e[13], e[2], e[6], e[10], e[14]]);
     this.normalToWorld.getNormalMatrix(objectToWorld);
+    const flatFaces = kind === 'box' ? UNIT_BOX_FACE_NORMALS : kind === 'plane' ? [UNIT_PLANE_NORMAL] : [];
+    this.faceNormals = flatFaces.map((normal) => new Vector3(...normal).applyMatrix3(this.normalToWorld).normalize());
     const objectBounds = accel ? accel.bounds : kind === 'plane' ? PLANE_BOUNDS : UNIT_BOUNDS;
     for (let i = 0; i < 8; i++) {
       corner
@@ -139,25 +147,25 @@ export class Shape {
     const geometric = hit.geometricNormal;
     switch (this.kind) {
       case 'sphere':
-        unitSphereNormal(hit.local, geometric);
+        unitSphereNormal(hit.local, geometric).applyMatrix3(this.normalToWorld).normalize();
         break;
       case 'box':
-        unitBoxNormal(hit.local, geometric);
+        geometric.copy(this.faceNormals[unitBoxFace(hit.local)]);
         break;
       case 'cylinder':
-        unitCylinderNormal(hit.local, geometric);
+        unitCylinderNormal(hit.local, geometric).applyMatrix3(this.normalToWorld).normalize();
         break;
       case 'plane':
-        unitPlaneNormal(geometric);
+        geometric.copy(this.faceNormals[0]);
         break;
       case 'mesh':
+        // Only a mesh's shading normal differs from its geometric one.
         meshNormals(this.accel!, hit, geometric, hit.normal);
+        geometric.applyMatrix3(this.normalToWorld).normalize();
+        hit.normal.applyMatrix3(this.normalToWorld).normalize();
+        return;
     }
-    geometric.applyMatrix3(this.normalToWorld).normalize();
-    // Only a mesh's shading normal differs from its geometric one; the others are the same
-    // vector transformed alike, so it is copied, not transformed a second time.
-    if (this.kind === 'mesh') hit.normal.applyMatrix3(this.normalToWorld).normalize();
-    else hit.normal.copy(geometric);
+    hit.normal.copy(geometric);
   }
 
   /** Whether the object-space ray o + t·d meets the shape for a t in (0, span[REACH]); the nearest such t goes to span[FOUND]. */
