@@ -12,7 +12,10 @@ const DISTANCE = 5;
 const RADIUS = 0.25;
 const START = -1;
 
-function centreRow(velocity: number, timeSamples: number, timePattern: TimePattern = 'jittered'): number[] {
+/** A square of side 2·RADIUS turned to face the camera: a plane moves as the other shapes do (its own test in plane.ts). */
+const FACING_SQUARE = { shape: 'plane', rotation: [90, 0, 0], scale: [2 * RADIUS, 1, 2 * RADIUS] };
+
+function centreRow(velocity: number, timeSamples: number, timePattern: TimePattern = 'jittered', shape: Record<string, unknown> = {}): number[] {
   const scene = tracerSceneFrom({
     camera: { position: [0, 0, DISTANCE], target: [0, 0, 0], fov: FOV },
     settings: { background: [0, 0, 0], timeSamples, timePattern },
@@ -24,6 +27,7 @@ function centreRow(velocity: number, timeSamples: number, timePattern: TimePatte
         velocity: [velocity, 0, 0],
         scale: [2 * RADIUS, 2 * RADIUS, 2 * RADIUS],
         material: matte([1, 1, 1], { ambient: 1, diffuse: 0 }),
+        ...shape,
       },
     ],
   });
@@ -66,6 +70,17 @@ describe('motion blur', () => {
     const [first, last] = litRange(centreRow(0, 16));
     expect(Math.abs(first - column(START - RADIUS))).toBeLessThanOrEqual(1);
     expect(Math.abs(last - column(START + RADIUS))).toBeLessThanOrEqual(1);
+  });
+
+  it('a moving plane covers the pixels from its start to its end, as a moving ball does', () => {
+    const row = centreRow(2, 16, 'jittered', FACING_SQUARE);
+    const [first, last] = litRange(row);
+    expect(Math.abs(first - column(START - RADIUS))).toBeLessThanOrEqual(1);
+    expect(Math.abs(last - column(START + 2 + RADIUS))).toBeLessThanOrEqual(1);
+    for (let x = first; x <= last; x++) expect(row[x]).toBeGreaterThan(0);
+    // Still, it covers only its own pixels.
+    const [stillFirst, stillLast] = litRange(centreRow(0, 16, 'jittered', FACING_SQUARE));
+    expect([Math.abs(stillFirst - column(START - RADIUS)), Math.abs(stillLast - column(START + RADIUS))].every((off) => off <= 1)).toBe(true);
   });
 
   for (const velocity of [2, -1.5]) {

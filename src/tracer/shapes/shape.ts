@@ -7,7 +7,7 @@ import { intersectUnitBox, UNIT_BOX_FACE_NORMALS, unitBoxFace } from './box.ts';
 import { intersectUnitCylinder, unitCylinderNormal } from './cylinder.ts';
 import { intersectMesh, type MeshAccel, meshNormals } from './mesh-accel.ts';
 import { meshOccludes } from './mesh-occlusion.ts';
-import { intersectUnitPlane, UNIT_PLANE_NORMAL } from './plane.ts';
+import { intersectPlacedPlane, UNIT_PLANE_NORMAL } from './plane.ts';
 import { intersectUnitSphere, unitSphereNormal } from './sphere.ts';
 import { FOUND, REACH, unitSpan } from './unit-span.ts';
 
@@ -98,10 +98,8 @@ export class Shape {
    * returns true.
    */
   intersect(ray: Ray, hit: Hit): boolean {
-    if (!rayMeetsBox(ray, this.bounds, 0, hit.t)) return false;
-    this.toLocal(ray);
     span[REACH] = hit.t;
-    if (!this.intersectLocal(localOrigin, localDirection, hit)) return false;
+    if (!this.meets(ray, hit)) return false;
     const t = span[FOUND];
     hit.t = t;
     hit.shape = this;
@@ -114,9 +112,10 @@ export class Shape {
    * than 0), exactly when `intersect` would record a hit, without finding the nearest one.
    */
   occludes(ray: Ray): boolean {
+    span[REACH] = ray.far;
+    if (this.kind === 'plane') return intersectPlacedPlane(this.m, this.localVelocity, ray, localOrigin, localDirection, span);
     if (!rayMeetsBox(ray, this.bounds, 0, ray.far)) return false;
     this.toLocal(ray);
-    span[REACH] = ray.far;
     switch (this.kind) {
       case 'sphere':
         return intersectUnitSphere(localOrigin, localDirection, span);
@@ -124,8 +123,6 @@ export class Shape {
         return intersectUnitBox(localOrigin, localDirection, span);
       case 'cylinder':
         return intersectUnitCylinder(localOrigin, localDirection, span);
-      case 'plane':
-        return intersectUnitPlane(localOrigin, localDirection, span);
       case 'mesh':
         return meshOccludes(this.accel!, localOrigin, localDirection, ray);
     }
@@ -168,19 +165,24 @@ export class Shape {
     hit.normal.copy(geometric);
   }
 
-  /** Whether the object-space ray o + t·d meets the shape for a t in (0, span[REACH]); the nearest such t goes to span[FOUND]. */
-  private intersectLocal(o: Vector3, d: Vector3, hit: Hit): boolean {
+  /**
+   * Whether the ray meets the shape at a t in (0, span[REACH]): the nearest such t goes to
+   * span[FOUND], the ray in object space to localOrigin and localDirection. A plane is tested
+   * without its world box (intersectPlacedPlane says why); the other kinds' boxes are tested first.
+   */
+  private meets(ray: Ray, hit: Hit): boolean {
+    if (this.kind === 'plane') return intersectPlacedPlane(this.m, this.localVelocity, ray, localOrigin, localDirection, span);
+    if (!rayMeetsBox(ray, this.bounds, 0, span[REACH])) return false;
+    this.toLocal(ray);
     switch (this.kind) {
       case 'sphere':
-        return intersectUnitSphere(o, d, span);
+        return intersectUnitSphere(localOrigin, localDirection, span);
       case 'box':
-        return intersectUnitBox(o, d, span);
+        return intersectUnitBox(localOrigin, localDirection, span);
       case 'cylinder':
-        return intersectUnitCylinder(o, d, span);
-      case 'plane':
-        return intersectUnitPlane(o, d, span);
+        return intersectUnitCylinder(localOrigin, localDirection, span);
       case 'mesh':
-        return intersectMesh(this.accel!, o, d, hit, span);
+        return intersectMesh(this.accel!, localOrigin, localDirection, hit, span);
     }
   }
 }
