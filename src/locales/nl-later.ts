@@ -450,6 +450,7 @@
 's6f611b26e216da14': `xAPI-statements, die zijn voor de learning record store van de school: sleep hier liever de JSON- of CSV-export van de leerling heen`,
 's6fcfdf926f11594e': `camera`,
 's6fdda648e3c4596e': `Stap door de stralen`,
+'s703efdd1d32167d1': str`Alle ${0} runs zijn elk op zich goed; samen zakken ze voor een χ²-toets.`,
 's705d19e8395a99a3': `mag niet leeg zijn`,
 's7099a76533f2e346': `Aan het tellen…`,
 's70c40f3a554ffaff': str`moet minstens ${0} zijn, maar is ${1}`,

@@ -2,6 +2,7 @@ import { msg, str } from '@lit/localize';
 import { html, type TemplateResult } from 'lit';
 import type { RandomRun, SampleFailure, StatisticsReport } from '../../../quest/code-labs/code-lab-statistics.ts';
 import { numberList } from '../../../i18n/number-format.ts';
+import { failedRunsLine } from './code-lab-texts.ts';
 import { labNumber } from './lab-numbers.ts';
 
 /** A p-value as a learner can read it: "p = 0.65", "p = 0.0012" (Dutch "p = 0,0012"), or "p < 10⁻¹⁰" for the ones a biased function gets. */
@@ -20,7 +21,7 @@ export function statisticsReport(report: StatisticsReport, runs: readonly Random
   if (!failure && test) {
     return html`<p>${msg(str`${report.runs} runs, ${report.points} points: all in the pixel, one in every cell, the same for the same random, and spread evenly within their cells.`)} ${chi}</p>`;
   }
-  return html`<p class="fail">${msg(str`${report.passedRuns} of ${report.runs} runs pass.`)}</p>
+  return html`<p class="fail">${failedRunsLine(report)}</p>
     <p>${failure ? failureText(failure, runs) : ''} ${failure?.check === 'uneven-within-cells' ? chi : ''}</p>`;
 }
 

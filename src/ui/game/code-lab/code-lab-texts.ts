@@ -219,3 +219,12 @@ export function sandboxUnavailableText(): string {
     'Your code was not run: the code lab’s safe room (a separate page that runs your code) did not load. Without a network it loads only if this browser keeps a copy of the app: the Menu says whether it does. Reload the page to try again.',
   );
 }
+
+/**
+ * The first line of a failed report: how many runs passed their own checks, or, when every one
+ * did, that only the χ² test over all of them failed (so "12 of 12 runs pass" does not stand in
+ * the failure's colour unexplained).
+ */
+export function failedRunsLine({ passedRuns, runs }: { passedRuns: number; runs: number }): string {
+  return passedRuns === runs ? msg(str`All ${runs} runs pass one by one; together they fail a χ² test.`) : msg(str`${passedRuns} of ${runs} runs pass.`);
+}

@@ -1,7 +1,7 @@
 import { msg, str } from '@lit/localize';
 import { html, type TemplateResult } from 'lit';
 import type { DirectionFailure, DirectionReport, DirectionRun, DirectionTest } from '../../../quest/code-labs/direction-statistics.ts';
-import { caseKindName } from './code-lab-texts.ts';
+import { caseKindName, failedRunsLine } from './code-lab-texts.ts';
 import { labNumber, labValue } from './lab-numbers.ts';
 
 /** A p-value as a learner can read it: "p = 0.65", "p = 0.0012" (Dutch "p = 0,0012"), or "p < 10⁻¹⁰" for the ones a biased function gets. */
@@ -23,7 +23,7 @@ export function directionReport(report: DirectionReport, runs: readonly Directio
       ${msg(str`cos θ and φ follow the cosine density for every normal (${report.tests.length} χ² tests, each failing below p = ${significance}; the lowest: ${pText(worst.p)}).`)}
     </p>`;
   }
-  return html`<p class="fail">${msg(str`${report.passedRuns} of ${report.runs} runs pass.`)}</p>
+  return html`<p class="fail">${failedRunsLine(report)}</p>
     <p>${failureText(failure, runs, significance)}</p>`;
 }
 

@@ -73,6 +73,9 @@ describe('the code labs’ numbers', () => {
     expect(oneLine(words(direction.directionReport(unevenReport, runs)))).toContain(
       'χ² of cos θ = 41.3 with 9 degrees of freedom, p = 0.000013 (below 0.0013 fails).',
     );
+    // Every run passed its own checks: the report says that only the test over all of them failed.
+    expect(oneLine(words(direction.directionReport(unevenReport, runs)))).toContain('All 4 runs pass one by one; together they fail a χ² test.');
+    expect(oneLine(words(direction.directionReport(tooLong, runs)))).toContain('0 of 1 runs pass.');
   });
 
   it('writes a decimal comma in Dutch, and separates a vector’s numbers with semicolons', async () => {
@@ -89,6 +92,7 @@ describe('the code labs’ numbers', () => {
 
     const cosine = oneLine(words(direction.directionReport(unevenReport, runs)));
     expect(cosine).toContain('= 41,3 met 9 vrijheidsgraden, p = 0,000013 (onder 0,0013 ');
+    expect(cosine).toContain('Alle 4 runs zijn elk op zich goed; samen zakken ze voor een χ²-toets.');
     const length = oneLine(words(direction.directionReport(tooLong, runs)));
     expect(length).toContain('(0,5; 0,25; 1,5)');
     expect(length).toContain('1,60078');
