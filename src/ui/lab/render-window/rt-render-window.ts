@@ -78,13 +78,21 @@ export class RtRenderWindow extends LocalizedElement {
   private readonly renderButton = createRef<HTMLButtonElement>();
   private readonly cancelButton = createRef<HTMLButtonElement>();
   private readonly compare = createRef<RtImageCompare>();
+  /**
+   * The image viewer, once its module has loaded: it loads after the first screen
+   * (lab-elements.ts), and a window opened and rendered before that holds an element that is
+   * not upgraded yet, without the viewer's methods. Upgraded later, it opens at 'fit'.
+   */
+  private get viewer(): RtImageCompare | undefined {
+    return customElements.get('rt-image-compare') ? this.compare.value : undefined;
+  }
   private readonly tracedCanvas = createRef<HTMLCanvasElement>();
   private readonly rasterCanvas = createRef<HTMLCanvasElement>();
 
   private readonly painter = new BandPainter(
     () => this.tracedCanvas.value,
     (image) => {
-      const compare = this.compare.value;
+      const compare = this.viewer;
       if (compare?.imageWidth === image.width && compare.imageHeight === image.height) return compare.tracedView;
       // Not the viewer's image (yet): all of it, no larger than the viewer's box.
       const shown = compare?.shownSize ?? image;
@@ -187,7 +195,7 @@ export class RtRenderWindow extends LocalizedElement {
     this.rasterNote = 'note' in picture ? picture.note : '';
     await this.updateComplete; // the canvases exist from here on
     // Every new render opens whole: a zoom into the last image means nothing for this one.
-    this.compare.value?.zoomToFit();
+    this.viewer?.zoomToFit();
     if (!('pixels' in picture)) return;
     void paintRasterPicture(picture.pixels, () => this.rasterCanvas.value, isCurrent).then((note) => {
       if (note && isCurrent()) this.rasterNote = note;
@@ -242,10 +250,10 @@ export class RtRenderWindow extends LocalizedElement {
     const action: Record<string, (() => void) | undefined> = {
       Escape: () => this.requestClose(),
       Enter: onControl ? undefined : () => void this.startRender(),
-      '+': () => this.compare.value?.zoomIn(),
-      '=': () => this.compare.value?.zoomIn(),
-      '-': () => this.compare.value?.zoomOut(),
-      '0': () => this.compare.value?.zoomToFit(),
+      '+': () => this.viewer?.zoomIn(),
+      '=': () => this.viewer?.zoomIn(),
+      '-': () => this.viewer?.zoomOut(),
+      '0': () => this.viewer?.zoomToFit(),
       c: () => this.contrast.toggle(),
     };
     const run = action[event.key];
