@@ -104,6 +104,22 @@ test('opening focuses Render; a render draws the picture and reports time and ra
   await expect(window).toBeHidden();
 });
 
+test('a render started before the image viewer has loaded finishes, and the viewer then opens whole', async ({ page }) => {
+  // The viewer's module loads after the first screen; on a slow machine a window can open and
+  // render before it has. Hold the module back to make that moment certain.
+  await page.route('**/rt-image-compare*', async (route) => {
+    await new Promise((resolve) => setTimeout(resolve, 4000));
+    await route.continue();
+  });
+  const window = await openRenderWindow(page);
+  expect(await page.evaluate(() => customElements.get('rt-image-compare') === undefined)).toBe(true);
+  await window.getByRole('button', { name: 'Render', exact: true }).click();
+  await page.keyboard.press('0'); // Fit, before the viewer can do it: nothing happens, and nothing throws
+  await expect(window.getByTestId('render-status')).toContainText(/Done in [\d.]+ (ms|s)/, { timeout: 60_000 });
+  await page.waitForFunction(() => customElements.get('rt-image-compare') !== undefined, null, { timeout: 30_000 });
+  expect(await window.locator('rt-image-compare').evaluate((viewer: RtImageCompare) => viewer.zoom)).toBe('fit');
+});
+
 test('Cancel stops a big render and says so', async ({ page }) => {
   const window = await openRenderWindow(page);
   await window.evaluate((element: RtRenderWindow) =>
