@@ -78,11 +78,7 @@ export class RtRenderWindow extends LocalizedElement {
   private readonly renderButton = createRef<HTMLButtonElement>();
   private readonly cancelButton = createRef<HTMLButtonElement>();
   private readonly compare = createRef<RtImageCompare>();
-  /**
-   * The image viewer, once its module has loaded: it loads after the first screen
-   * (lab-elements.ts), and a window opened and rendered before that holds an element that is
-   * not upgraded yet, without the viewer's methods. Upgraded later, it opens at 'fit'.
-   */
+  /** The image viewer once its module (loaded after the first screen) has upgraded it; it then opens at 'fit'. */
   private get viewer(): RtImageCompare | undefined {
     return customElements.get('rt-image-compare') ? this.compare.value : undefined;
   }
