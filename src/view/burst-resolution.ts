@@ -19,10 +19,9 @@ export const BURST_SCALE = 0.5;
 /**
  * The share a heavy screen's edits draw at (the rays thinned to HEAVY_EDIT_RAYS, ray-budget.ts):
  * an eighth of the pixels. With the free lab's largest settings each step of a drag waited
- * for SwiftShader's frame of the page, the view's part of it included; at this scale the
- * drag's 95th percentile fell from a median of 100 ms over seven runs to one of 74 over six
- * (docs/benchmark-log.md, issue 38). It is visibly coarser, so a lighter screen (every
- * level's) keeps BURST_SCALE.
+ * for SwiftShader's frame of the page, the view's part of it included, and this scale brought
+ * the drag's 95th percentile under 100 ms (figures: docs/benchmark-log.md, issue 38). It is
+ * visibly coarser, so a lighter screen (every level's) keeps BURST_SCALE.
  */
 export const HEAVY_BURST_SCALE = 0.35;
 
@@ -39,9 +38,9 @@ export const HEAVY_BURST_SCALE = 0.35;
  *
  * While the rays are held to a budget (`hold`, view/ray-budget.ts) the view draws coarse (at
  * the scale the hold asks) from the first edit and stays so between edits: there a sharp frame
- * of 1,000 rays cost 120–250 ms on SwiftShader, and each switch between sharp and coarse waits
- * for the frame before it, so steps a few tenths of a second apart waited 0.2–1.2 s each. Let
- * go, it is drawn sharp at once, with every ray (one frame).
+ * of many rays is slow on SwiftShader, and each switch between sharp and coarse waits for the
+ * frame before it, so steps a few tenths of a second apart waited far longer than a step
+ * (docs/benchmark-log.md, issue 38). Let go, it is drawn sharp at once, with every ray.
  */
 export class BurstResolution {
   private lastEdit = -Infinity;

@@ -44,8 +44,8 @@ export class RtViewToolbar extends LocalizedElement {
     /* No box of its own: its bars are placed in the 3D view's box (rt-scene-view, the size
        container its small-view rules ask). A box as big as the view, drawn over the WebGL
        canvas, was a layer of its own as big as the view, which the compositor blended anew
-       at every frame: on SwiftShader about 10 ms of the GPU process's 40 a frame
-       (docs/benchmark-log.md, issue 38). Each bar is now a layer only as big as itself. */
+       at every frame, a quarter of SwiftShader's frame (figures: docs/benchmark-log.md,
+       issue 38). Each bar is now a layer only as big as itself. */
     :host {
       display: contents;
       pointer-events: none;
